@@ -1,0 +1,120 @@
+// Euler-Bernoulli beam, semi-discretised on N nodes (MODEL.md sections 1-2).
+//
+//   mu y_tt = f - (EI y_xx)_xx        on x in [0, L],  units: SI (m, kg, s, N).
+//
+// Nodes x_i = i h, h = L/(N-1); lumped mass mu h (half at the two end nodes).
+// The stiffness comes from the strain energy U = (EI h / 2) sum_k w_k kappa_k^2
+// with one curvature kappa_k per node:
+//   standard  kappa_k = (y_{k-1} - 2 y_k + y_{k+1}) / h^2, w_k = 1 (interior nodes);
+//   mirror    kappa_k = 2 y_{k+-1} / h^2,                    w_k = 1/2 at a clamped end
+//             node and at the inner edge node of a clamped region (mirror ghost
+//             y_{k-1} = y_{k+1} with y_k = 0);
+//   none      at free and pinned end nodes.
+// Held nodes (clamped/pinned ends, nodes inside a clamped region) keep y = 0.
+// K = dU/dy is symmetric positive semi-definite, the 5-point stencil
+// EI/h^3 (1, -4, 6, -4, 1) in the interior, and its null space for a
+// free-free beam is exactly {1, x} (rigid translation and rotation).
+//
+// Everything here is plain numbers and arrays: no PETSc objects, so it can be
+// tested against formulas. The options reader is the only PETSc-facing part.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+enum class Support { Free = 0, Clamped = 1, Pinned = 2 };
+const char *SupportName(Support s);
+
+// What the user gave, kept for the record (HDF5 attributes); 0 when not given.
+struct BeamMaterialInput {
+  PetscReal youngs_modulus     = 0; // Pa
+  PetscReal density            = 0; // kg/m^3
+  PetscReal width              = 0; // m (b)
+  PetscReal thickness          = 0; // m (a, in the direction of motion)
+  PetscReal mass               = 0; // kg (M)
+  PetscReal youngs_over_density = 0; // N m / kg (E / rho)
+  std::string parameter_set;        // "E,rho,a,b" | "M,L,a,E/rho" | "EI,mu"
+};
+
+struct BeamParams {
+  PetscReal length = 1.1;  // m
+  PetscReal EI     = 0;    // N m^2, bending stiffness
+  PetscReal mu     = 0;    // kg/m, mass per length
+  PetscInt  nodes  = 41;   // number of grid nodes N (>= 5)
+  Support   left   = Support::Free; // support at x = 0
+  Support   right  = Support::Free; // support at x = L
+  bool      has_clamp = false;      // a clamped region [clamp_x0, clamp_x1] is held fixed
+  PetscReal clamp_x0 = 0, clamp_x1 = 0; // m
+  BeamMaterialInput input;
+};
+
+// Curvature kind at a node (see the file header).
+enum class Curvature : signed char { None = 0, Standard = 1, MirrorRight = 2, MirrorLeft = 3 };
+
+// The discrete operator: grid, node masses, held nodes and curvature terms.
+// Arrays have one entry per node (the beam is 1-D: replicated on every rank).
+struct BeamOperator {
+  PetscInt  N  = 0;   // nodes
+  PetscReal h  = 0;   // m, node spacing
+  PetscReal L  = 0;   // m
+  PetscReal EI = 0;   // N m^2
+  PetscReal mu = 0;   // kg/m
+  std::vector<PetscReal> mass;      // kg, lumped node mass
+  std::vector<char>      held;      // 1 where y is held at 0
+  std::vector<Curvature> curvature; // kind of curvature term at node k
+};
+
+// Builds the operator from the parameters. Throws nothing; invalid parameters
+// must have been refused by BeamParamsFromOptions / BeamParamsCheck.
+BeamOperator BeamOperatorBuild(const BeamParams &p);
+
+// Curvature kappa_k (1/m) at node k; y[i*stride] is node i, valid for i in k-1..k+1.
+PetscReal BeamCurvature(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt k);
+
+// d kappa_k / d y_i (1/m^2); zero unless |i - k| <= 1.
+PetscReal BeamCurvatureDerivative(const BeamOperator &op, PetscInt k, PetscInt i);
+
+// f_i = (K y)_i (N) for i in [i0, i1). y[i*stride] must be valid for
+// i in [max(0,i0-2), min(N,i1+2)): a ghosted local array indexed by global node.
+// f[i*fstride] receives the result; rows of held nodes are 0.
+void BeamStiffnessApply(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt i0, PetscInt i1, PetscReal *f, PetscInt fstride);
+
+// Row i of K restricted to the free (not held) nodes: at most 5 nonzeros
+// (columns and values, N/m); returns the count (0 for a held row).
+PetscInt BeamStiffnessRow(const BeamOperator &op, PetscInt i, PetscInt cols[5], PetscReal vals[5]);
+
+// Strain energy (J) of the curvature terms k in [k0, k1): sum over ranks gives U.
+PetscReal BeamStrainEnergy(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt k0, PetscInt k1);
+
+// Kinetic energy (J) of nodes [i0, i1) with velocities v[i*stride].
+PetscReal BeamKineticEnergy(const BeamOperator &op, const PetscReal *v, PetscInt stride, PetscInt i0, PetscInt i1);
+
+// Hat-function share of an impact point between its two neighbouring nodes:
+// the compression uses w*y_j + (1-w)*y_{j+1}.
+struct ImpactStencil {
+  PetscInt  j = 0; // left node
+  PetscReal w = 1; // weight of node j; node j+1 gets 1-w
+};
+ImpactStencil BeamImpactStencil(const BeamOperator &op, PetscReal x_imp);
+
+// Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K,
+// plus an extra stiffness k_extra (N/m) coupling mass m_extra (kg) to the stencil.
+PetscReal BeamMaxFrequencyBound(const BeamOperator &op, const ImpactStencil &s, PetscReal k_extra, PetscReal m_extra);
+
+// Lowest flexural angular frequency (rad/s) of the continuum beam with these end
+// supports (analytic beta L); with a clamped region the free span beyond its
+// inner edge is treated as clamped there. Used only to size default windows.
+PetscReal BeamFundamentalFrequencyEstimate(const BeamParams &p);
+
+// Reads -beam_* options (one PetscOptionsBegin block), converts the parameter
+// set to (EI, mu) and checks every range. comm: the communicator of the task.
+PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p);
+
+// Range and consistency checks, with messages naming the option and the value.
+PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p);
+
+} // namespace beamimpact
