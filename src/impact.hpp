@@ -1,0 +1,108 @@
+// One ball-beam impact as a PETSc TS problem (MODEL.md sections 2-3).
+//
+// State: the beam on a 1-D DMDA (y, v per node; or y only for alpha2) and the
+// ball (y_b, v_b; or y_b only) on a DMRedundant, packed in a DMComposite.
+// The ball starts touching the beam at x_imp with speed v_i; contact start,
+// maximum compression (loading -> unloading) and separation are events located
+// by rollback and re-stepping onto the root (so the integrator's own state is
+// on the event, not an interpolant), after which the integrator restarts. The
+// run continues for a post-contact window after each separation so that a
+// double impact is caught, and the ACOR is the ball's final speed.
+#pragma once
+
+#include "beam.hpp"
+#include "contact.hpp"
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+// -impact_* options.
+struct ImpactParams {
+  PetscReal x            = 0.55;  // m, impact point measured from the x = 0 end
+  PetscReal window       = -1;    // s, time simulated after each separation (< 0: 2 fundamental periods)
+  PetscReal max_time     = -1;    // s, cap on the simulated time (< 0: window + 100 contact times)
+  PetscReal event_tol    = 1e-10; // event indicators (c / c_scale, dc/dt / v_i) are located to this
+  PetscInt  max_contacts = 50;    // a run with more separate contacts stops with an error
+  PetscBool energy_check = PETSC_FALSE; // stop when the total energy grows beyond -impact_energy_growth_tol
+  PetscReal energy_growth_tol = 1e-3;   // relative to the incident kinetic energy
+  PetscBool check_unused_options = PETSC_FALSE; // not an option: the task asks for the check once the TS is set up
+};
+
+// What to record during the run (nothing by default): -monitor_* and -snapshot_times.
+struct MonitorRequest {
+  PetscBool              ball   = PETSC_FALSE; // ball position, velocity, compression, force per step
+  PetscBool              energy = PETSC_FALSE; // energy terms per step
+  std::vector<PetscReal> velocity_at;          // m, beam velocity at these points per step
+  std::vector<PetscReal> snapshot_times;       // s, beam displacement y(x) at these times (stepped onto exactly)
+  bool any() const { return ball || energy || !velocity_at.empty(); }
+};
+
+// Per-step time series (rank 0 holds them; only the requested ones are filled).
+struct ImpactSeries {
+  std::vector<PetscReal> time;                                           // s
+  std::vector<PetscReal> ball_y, ball_v, compression, force;             // m, m/s, m, N
+  std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated;     // J
+  std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
+  std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
+  std::vector<PetscReal> snapshot_time;                                  // s
+  std::vector<std::vector<PetscReal>> snapshot_y;                        // m, [snapshot][node]
+};
+
+enum class ContactEventKind { ContactStart = 0, MaxCompression = 1, Reload = 2, Separation = 3 };
+const char *ContactEventName(ContactEventKind k);
+
+struct ContactEvent {
+  ContactEventKind kind;
+  PetscReal        time;        // s
+  PetscReal        compression; // m
+  PetscReal        force;       // N
+};
+
+// The outcome of one impact (identical on every rank of the communicator).
+struct ImpactResult {
+  PetscReal x               = 0; // m
+  PetscReal acor            = 0; // -v_b,final / v_i
+  PetscReal acor_corrected  = 0; // acor * loss factor (linear spring); = acor for hysteresis
+  PetscReal contact_time    = 0; // s, duration of the first contact
+  PetscReal contact_time_total = 0; // s, summed over all contacts
+  PetscReal peak_force      = 0; // N
+  PetscReal max_compression = 0; // m
+  PetscInt  contacts        = 0; // separate contacts
+  PetscReal ball_final_velocity = 0; // m/s
+  PetscReal final_time      = 0; // s, simulated
+  PetscBool ended_in_contact = PETSC_FALSE; // the run hit -impact_max_time while touching
+  // Invariants at the end (relative to the incident kinetic energy / momentum).
+  PetscReal energy_error    = 0; // (E_end - E_0) / E_0, E including the ball's work W
+  PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i) (only meaningful free-free)
+  PetscReal angular_momentum_error = 0; // about x = 0, / (m_b v_i L)
+  PetscReal beam_kinetic_end = 0, beam_strain_end = 0, ball_dissipated_end = 0; // J
+  // Cost.
+  PetscInt  steps = 0, rejected_steps = 0, event_steps = 0; // accepted steps, rejected, extra steps to locate events
+  PetscInt  function_evals = 0, jacobian_evals = 0, jacobian_assemblies = 0, nonlinear_its = 0, linear_its = 0;
+  PetscReal wall_time = 0; // s, time stepping only
+  // Integrator.
+  std::string ts_type;
+  std::string formulation;      // explicit | imex | implicit | second-order
+  PetscReal   dt_stable = 0;    // s, explicit stability limit (0: not explicit)
+  PetscReal   dt_nominal = 0;   // s, the fixed step, or the initial step of an adaptive run
+  PetscReal   omega_max_bound = 0; // rad/s, Gershgorin bound used for dt_stable
+  std::vector<ContactEvent> events;
+  ImpactSeries series;
+};
+
+PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, ImpactParams *p);
+PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, MonitorRequest *m);
+
+// Runs one impact on comm (the DMDA is distributed over its ranks). The TS is
+// configured from the options database (no prefix): -ts_type and friends.
+PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams &ball, const ImpactParams &impact, const MonitorRequest &monitor, ImpactResult *result);
+
+// Imaginary-axis stability bound y* of an explicit Runge-Kutta tableau
+// (|R(iy)| <= 1 for 0 <= y <= y*); 0 when no y > 0 is stable (Euler, RK2).
+PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b);
+
+} // namespace beamimpact

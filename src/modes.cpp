@@ -1,0 +1,322 @@
+// Mode frequencies of the beam: SLEPc eigen-solve of K phi = omega^2 M phi over
+// the free nodes, and the continuum beta-L reference. See modes.hpp.
+#include "modes.hpp"
+
+#include <slepceps.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace beamimpact {
+
+PetscInt BeamFreeNodeCount(const BeamOperator &op)
+{
+  PetscInt n = 0;
+  for (char held : op.held) n += !held;
+  return n;
+}
+
+static PetscErrorCode ModesCountCheck(MPI_Comm comm, PetscInt count, PetscInt nfree)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", count);
+  PetscCheck(count <= nfree, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-modes_count %" PetscInt_FMT " is not allowed: the beam has %" PetscInt_FMT " free nodes, so at most %" PetscInt_FMT " modes exist (use 1..%" PetscInt_FMT " or more -beam_nodes)", count,
+             nfree, nfree, nfree);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamOperator *op)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Beam modes: eigen-solve of K phi = omega^2 M phi", "beamimpact");
+  PetscCall(PetscOptionsInt("-modes_count", "Number of modes to report, counted from omega = 0 (rigid modes included, reported as 0)", "", p->count, &p->count, NULL));
+  PetscOptionsEnd();
+  PetscCheck(p->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", p->count);
+  if (op) PetscCall(ModesCountCheck(comm, p->count, BeamFreeNodeCount(*op)));
+  PetscFunctionReturn(0);
+}
+
+// SLEPc must be initialised before its classes are used. A driver calls
+// SlepcInitialize itself; a program that only called PetscInitialize (the test
+// main) gets it here on first use, with SlepcFinalize run by PetscFinalize.
+// Without -dynamic_library_preload this does no communication.
+static PetscErrorCode ModesEnsureSlepc(void)
+{
+  PetscBool initialized;
+
+  PetscFunctionBeginUser;
+  PetscCall(SlepcInitialized(&initialized));
+  if (!initialized) {
+    PetscCall(SlepcInitializeNoArguments());
+    PetscCall(PetscRegisterFinalize(SlepcFinalize));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Deterministic pseudo-random number in [-1, 1) from an index (splitmix64), so the
+// Krylov start vector is the same whatever the number of ranks.
+static PetscReal HashUniform(PetscInt i)
+{
+  std::uint64_t z = static_cast<std::uint64_t>(i) + 0x9e3779b97f4a7c15ULL;
+  z               = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z               = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z               = z ^ (z >> 31);
+  return 2.0 * static_cast<PetscReal>(z >> 11) / 9007199254740992.0 - 1.0; // 2^53
+}
+
+PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt count, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
+{
+  Mat         K, M;
+  EPS         eps;
+  ST          st;
+  KSP         ksp;
+  PC          pc;
+  Vec         x, x0;
+  VecScatter  toall;
+  Vec         xall;
+  PetscInt    rstart, rend, nconv;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "BeamModesCompute: out must not be NULL");
+  PetscCheck(op.N >= 3 && op.EI > 0 && op.mu > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.N && (PetscInt)op.held.size() == op.N, comm, PETSC_ERR_ARG_WRONG,
+             "BeamModesCompute: the beam operator is not built (N = %" PetscInt_FMT ", EI = %g, mu = %g, L = %g)", op.N, (double)op.EI, (double)op.mu, (double)op.L);
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(ModesEnsureSlepc());
+
+  // Unknowns: the free nodes, in node order.
+  std::vector<PetscInt> free_nodes, free_index(op.N, -1);
+  for (PetscInt i = 0; i < op.N; ++i)
+    if (!op.held[i]) {
+      free_index[i] = (PetscInt)free_nodes.size();
+      free_nodes.push_back(i);
+    }
+  const PetscInt nfree = (PetscInt)free_nodes.size();
+  PetscCall(ModesCountCheck(comm, count, nfree));
+
+  // K (<= 5 nonzeros a row) and the diagonal lumped M, rows split with PetscSplitOwnership.
+  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 5, NULL, 4, NULL, &K));
+  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 1, NULL, 0, NULL, &M));
+  PetscCall(MatGetOwnershipRange(K, &rstart, &rend));
+  for (PetscInt r = rstart; r < rend; ++r) {
+    const PetscInt i = free_nodes[r];
+    PetscInt       cols[5];
+    PetscReal      vals[5];
+    const PetscInt n = BeamStiffnessRow(op, i, cols, vals);
+    for (PetscInt q = 0; q < n; ++q) cols[q] = free_index[cols[q]];
+    PetscCall(MatSetValues(K, 1, &r, n, cols, vals, INSERT_VALUES));
+    PetscCall(MatSetValue(M, r, r, op.mass[i], INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(MatSetOption(K, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+  PetscCall(MatSetOption(M, MAT_SPD, PETSC_TRUE));
+
+  // Natural frequency unit sqrt(EI/mu)/L^2 (rad/s): every flexural mode is > 3.5 of it.
+  const PetscReal unit = std::sqrt(op.EI / op.mu) / (op.L * op.L);
+
+  // Shift-and-invert at sigma = -unit^2 (below every eigenvalue, so K - sigma M is
+  // positive definite even with rigid modes): the wanted modes are those nearest sigma.
+  PetscCall(EPSCreate(comm, &eps));
+  PetscCall(EPSSetOptionsPrefix(eps, "modes_"));
+  PetscCall(EPSSetOperators(eps, K, M));
+  PetscCall(EPSSetProblemType(eps, EPS_GHEP));
+  PetscCall(EPSSetType(eps, EPSKRYLOVSCHUR));
+  PetscCall(EPSSetDimensions(eps, count, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
+  PetscCall(EPSSetTarget(eps, -unit * unit));
+  PetscCall(EPSSetTolerances(eps, 1e-12, 1000));
+  PetscCall(EPSGetST(eps, &st));
+  PetscCall(STSetType(st, STSINVERT));
+  PetscCall(STGetKSP(st, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(MatCreateVecs(K, &x, NULL));
+  PetscCall(VecDuplicate(x, &x0));
+  {
+    PetscScalar *a;
+    PetscCall(VecGetArray(x0, &a));
+    for (PetscInt r = rstart; r < rend; ++r) a[r - rstart] = 1.0 + 0.5 * HashUniform(r);
+    PetscCall(VecRestoreArray(x0, &a));
+    PetscCall(EPSSetInitialSpace(eps, 1, &x0));
+  }
+  PetscCall(EPSSetFromOptions(eps));
+  PetscCall(EPSSolve(eps));
+  PetscCall(EPSGetConverged(eps, &nconv));
+  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "BeamModesCompute: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " modes requested by -modes_count", nconv, count);
+
+  // Each eigenvalue is recomputed as the Rayleigh quotient omega^2 = 2 U(phi) / (phi^T M phi)
+  // with U the strain energy summed from the curvatures (a sum of squares, no
+  // cancellation). The eigenvalue from the solver carries an absolute round-off
+  // ~ eps ||M^-1 K|| ~ eps 16 EI/(mu h^4) (1e-4 (EI/mu)/L^4 at N = 641), which
+  // would blur the rigid modes and the fundamental on fine grids; the quotient's
+  // error is quadratic in the eigenvector error, so it is accurate to round-off
+  // in both. Every rank evaluates it on the same gathered vector.
+  std::vector<PetscReal>              lambda(count);
+  std::vector<std::vector<PetscReal>> phis(count, std::vector<PetscReal>(op.N, 0.0));
+  PetscCall(VecScatterCreateToAll(x, &toall, &xall));
+  for (PetscInt m = 0; m < count; ++m) {
+    PetscScalar kr;
+    PetscCall(EPSGetEigenpair(eps, m, &kr, NULL, x, NULL));
+    PetscCall(VecScatterBegin(toall, x, xall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(toall, x, xall, INSERT_VALUES, SCATTER_FORWARD));
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(xall, &a));
+    std::vector<PetscReal> &phi = phis[m];
+    for (PetscInt r = 0; r < nfree; ++r) phi[free_nodes[r]] = PetscRealPart(a[r]);
+    PetscCall(VecRestoreArrayRead(xall, &a));
+    // Mass-normalise, then fix the sign: first node above 1e-3 of the largest |phi| positive.
+    PetscReal mnorm = 0.0, amax = 0.0;
+    for (PetscInt i = 0; i < op.N; ++i) mnorm += op.mass[i] * phi[i] * phi[i];
+    mnorm = std::sqrt(mnorm);
+    PetscCheck(mnorm > 0, comm, PETSC_ERR_PLIB, "BeamModesCompute: eigenvector %" PetscInt_FMT " is zero", m);
+    for (PetscReal &v : phi) v /= mnorm;
+    for (PetscReal v : phi) amax = std::max(amax, std::abs(v));
+    for (PetscReal v : phi)
+      if (std::abs(v) > 1e-3 * amax) {
+        if (v < 0)
+          for (PetscReal &w : phi) w = -w;
+        break;
+      }
+    lambda[m] = 2.0 * BeamStrainEnergy(op, phi.data(), 1, 0, op.N); // phi^T M phi = 1
+    PetscCall(PetscInfo(eps, "mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2 = %.6e (EI/mu)/L^4\n", m, (double)PetscRealPart(kr), (double)lambda[m],
+                        (double)(lambda[m] / (unit * unit))));
+  }
+  PetscCall(VecScatterDestroy(&toall));
+  PetscCall(VecDestroy(&xall));
+
+  // Ascending (the solver's order, up to round-off among nearly equal modes).
+  std::vector<PetscInt> order(count);
+  for (PetscInt m = 0; m < count; ++m) order[m] = m;
+  std::stable_sort(order.begin(), order.end(), [&](PetscInt p, PetscInt q) { return lambda[p] < lambda[q]; });
+
+  out->omega.assign(count, 0.0);
+  out->frequency.assign(count, 0.0);
+  out->period.assign(count, 0.0);
+  out->rigid_count = 0;
+  if (shapes) shapes->resize(count);
+  for (PetscInt m = 0; m < count; ++m) {
+    if (shapes) (*shapes)[m] = std::move(phis[order[m]]);
+    const PetscReal w = std::sqrt(std::max<PetscReal>(lambda[order[m]], 0.0));
+    if (w < kModesRigidThreshold * unit) {
+      ++out->rigid_count;
+      continue; // reported as exactly 0, period 0
+    }
+    out->omega[m]     = w;
+    out->frequency[m] = w / (2.0 * PETSC_PI);
+    out->period[m]    = 2.0 * PETSC_PI / w;
+  }
+
+  PetscCall(VecDestroy(&x0));
+  PetscCall(VecDestroy(&x));
+  PetscCall(EPSDestroy(&eps));
+  PetscCall(MatDestroy(&M));
+  PetscCall(MatDestroy(&K));
+  PetscFunctionReturn(0);
+}
+
+PetscInt BeamModesRigidCount(Support left, Support right)
+{
+  if (left == Support::Free && right == Support::Free) return 2;
+  if ((left == Support::Free && right == Support::Pinned) || (left == Support::Pinned && right == Support::Free)) return 1;
+  return 0;
+}
+
+namespace {
+
+// The characteristic equations of a uniform beam, in a form bounded for large x.
+enum class BetaEquation { CosCoshPlusOne, CosCoshMinusOne, TanTanh, Sin };
+
+// f(x) and f'(x) for the equation (divided by cosh x where cosh appears).
+void BetaEquationEval(BetaEquation e, PetscReal x, PetscReal *f, PetscReal *df)
+{
+  const PetscReal s = std::sin(x), c = std::cos(x), t = std::tanh(x), sech = 1.0 / std::cosh(x);
+  switch (e) {
+  case BetaEquation::CosCoshMinusOne: // cos x cosh x = 1  ->  cos x - sech x = 0
+    *f  = c - sech;
+    *df = -s + sech * t;
+    break;
+  case BetaEquation::CosCoshPlusOne: // cos x cosh x = -1 ->  cos x + sech x = 0
+    *f  = c + sech;
+    *df = -s - sech * t;
+    break;
+  case BetaEquation::TanTanh: // tan x = tanh x -> sin x - cos x tanh x = 0
+    *f  = s - c * t;
+    *df = c + s * t - c * sech * sech;
+    break;
+  case BetaEquation::Sin:
+    *f  = s;
+    *df = c;
+    break;
+  }
+}
+
+} // namespace
+
+PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, PetscReal EI, PetscReal mu, PetscInt n_flexural, std::vector<PetscReal> *omega)
+{
+  // MODEL.md section 1 tables (beta_n L), n = 1, 2, ...
+  static const PetscReal free_free[]   = {4.73004, 7.85320, 10.99561, 14.13717};
+  static const PetscReal clamped_free[] = {1.87510, 4.69409, 7.85476, 10.99554};
+  static const PetscReal pinned_free[] = {3.92660, 7.06858, 10.21018};
+
+  PetscFunctionBeginUser;
+  PetscCheck(omega, PETSC_COMM_SELF, PETSC_ERR_ARG_NULL, "BeamModesAnalytic: omega must not be NULL");
+  PetscCheck(L > 0 && EI > 0 && mu > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "BeamModesAnalytic: need L > 0 (m), EI > 0 (N m^2), mu > 0 (kg/m); got L = %g, EI = %g, mu = %g", (double)L,
+             (double)EI, (double)mu);
+  PetscCheck(n_flexural >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "BeamModesAnalytic: n_flexural = %" PetscInt_FMT " is not allowed: it must be >= 0", n_flexural);
+
+  Support a = left, b = right;
+  if (static_cast<int>(a) > static_cast<int>(b)) std::swap(a, b); // Free < Clamped < Pinned
+  const PetscReal *table = nullptr;
+  PetscInt         ntable = 0;
+  BetaEquation     eq     = BetaEquation::Sin;
+  PetscReal        asym_a = 1.0, asym_b = 0.0; // asymptote beta_n L = (asym_a n + asym_b) pi
+  if ((a == Support::Free && b == Support::Free) || (a == Support::Clamped && b == Support::Clamped)) {
+    table  = free_free;
+    ntable = 4;
+    eq     = BetaEquation::CosCoshMinusOne;
+    asym_a = 1.0, asym_b = 0.5; // (2n+1) pi/2
+  } else if (a == Support::Free && b == Support::Clamped) {
+    table  = clamped_free;
+    ntable = 4;
+    eq     = BetaEquation::CosCoshPlusOne;
+    asym_a = 1.0, asym_b = -0.5; // (2n-1) pi/2
+  } else if ((a == Support::Free && b == Support::Pinned) || (a == Support::Clamped && b == Support::Pinned)) {
+    table  = pinned_free;
+    ntable = 3;
+    eq     = BetaEquation::TanTanh;
+    asym_a = 1.0, asym_b = 0.25; // (4n+1) pi/4
+  } else if (a == Support::Pinned && b == Support::Pinned) {
+    eq     = BetaEquation::Sin;
+    asym_a = 1.0, asym_b = 0.0; // n pi, exact
+  } else {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "BeamModesAnalytic: no beta-L reference for supports %s-%s", SupportName(left), SupportName(right));
+  }
+
+  const PetscReal unit = std::sqrt(EI / mu) / (L * L);
+  omega->assign(n_flexural, 0.0);
+  for (PetscInt n = 1; n <= n_flexural; ++n) {
+    const PetscReal guess = n <= ntable ? table[n - 1] : (asym_a * n + asym_b) * PETSC_PI;
+    PetscReal       x     = guess;
+    for (int it = 0; it < 50; ++it) {
+      PetscReal f, df;
+      BetaEquationEval(eq, x, &f, &df);
+      const PetscReal dx = f / df;
+      x -= dx;
+      if (std::abs(dx) <= 4 * PETSC_MACHINE_EPSILON * x) break;
+    }
+    PetscCheck(std::abs(x - guess) < 1e-3 * guess, PETSC_COMM_SELF, PETSC_ERR_PLIB, "BeamModesAnalytic: Newton left the root near beta L = %g (mode %" PetscInt_FMT ")", (double)guess, n);
+    (*omega)[n - 1] = x * x * unit;
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

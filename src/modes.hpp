@@ -1,0 +1,87 @@
+// Mode frequencies of the beam: the discrete modes from an eigen-solve of the
+// semi-discrete operator (MODEL.md section 2), and the continuum reference from
+// the beta-L tables (MODEL.md section 1).
+//
+// Discrete:   K phi = omega^2 M phi   over the free (not held) nodes,
+//   K the stiffness of beam.hpp (N/m), M = diag(op.mass) the lumped mass (kg),
+//   omega in rad/s. Held nodes (clamped/pinned ends, clamped region) are
+//   Dirichlet y = 0 and are not unknowns. Solved with SLEPc (GHEP, Krylov-Schur,
+//   shift-and-invert at a small negative target so the rigid modes, omega = 0,
+//   are found), on the communicator passed in; the result is replicated on
+//   every rank.
+// Continuum:  omega_n = (beta_n L)^2 sqrt(EI / (mu L^4))  for the n-th flexural
+//   mode of a uniform Euler-Bernoulli beam with the given end supports.
+//
+// Units: SI (m, kg, s, N); omega in rad/s, frequency in Hz, period in s.
+#pragma once
+
+#include "beam.hpp"
+
+#include <petscsys.h>
+
+#include <vector>
+
+namespace beamimpact {
+
+struct ModesParams {
+  PetscInt count = 4; // number of modes to report, rigid ones included (-modes_count)
+};
+
+// Reads -modes_count (one PetscOptionsBegin block, no prefix) and checks it is
+// >= 1 and, when op is given, <= the number of free nodes of op.
+// BeamModesCompute checks the upper bound again (with the same message).
+PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamOperator *op = nullptr);
+
+struct ModesResult {
+  std::vector<PetscReal> omega;     // rad/s, angular frequencies, ascending; rigid modes exactly 0
+  std::vector<PetscReal> frequency; // Hz, omega / (2 pi)
+  std::vector<PetscReal> period;    // s, 2 pi / omega (0 for rigid modes)
+  PetscInt               rigid_count = 0; // number of rigid modes among the reported ones
+};
+
+// Relative threshold for rigid modes: a computed mode is rigid (reported as
+// omega = 0) when omega < kModesRigidThreshold * sqrt(EI/mu) / L^2. The lowest
+// flexural mode of any supported beam of length <= L is above
+// 3.5 sqrt(EI/mu)/L^2 (clamped-free: 1.87510^2), so the gap is > 3000x. The rigid
+// omega evaluated as a Rayleigh quotient of the strain energy is < 1e-4 of that
+// unit up to N = 4001 (measured: 4e-5 at N = 4001, 1e-7 at N = 641).
+constexpr PetscReal kModesRigidThreshold = 1e-3;
+
+// Number of free (not held) nodes: the size of the eigenproblem.
+PetscInt BeamFreeNodeCount(const BeamOperator &op);
+
+// The first `count` modes (rigid ones included, counted from omega = 0 upward)
+// of the discrete beam op, on communicator comm (any number of ranks; the
+// result is the same on every rank). 1 <= count <= BeamFreeNodeCount(op).
+// shapes (optional): shapes[m][i] is mode m at node i (0 at held nodes), for all
+// N nodes on every rank, mass-normalised (sum_i m_i phi_i^2 = 1, units kg^-1/2),
+// sign fixed so that the first node with |phi_i| > 1e-3 max|phi| is positive.
+// Degenerate modes (the two free-free rigid modes) are an arbitrary
+// M-orthonormal basis of their space.
+// The EPS takes options with the prefix "modes_" (e.g. -modes_eps_view).
+PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt count, ModesResult *out,
+                                std::vector<std::vector<PetscReal>> *shapes = nullptr);
+
+// Rigid modes of a uniform beam with these end supports and no clamped region:
+// 2 for free-free (translation, rotation), 1 for pinned-free (rotation about
+// the pin), 0 otherwise.
+PetscInt BeamModesRigidCount(Support left, Support right);
+
+// Continuum reference: omega[n-1] = (beta_n L)^2 sqrt(EI/(mu L^4)) (rad/s) for the
+// flexural modes n = 1..n_flexural (rigid modes not included) of a uniform beam
+// of length L (m), EI (N m^2), mu (kg/m), with these end supports (order of
+// left/right does not matter; no clamped region).
+// beta_n L starts from the MODEL.md tables and, beyond them, from the asymptotic
+// formulas
+//   free-free, clamped-clamped:  (2n+1) pi/2   (table 4.73004, 7.85320, 10.99561, 14.13717)
+//   clamped-free:                (2n-1) pi/2   (table 1.87510, 4.69409, 7.85476, 10.99554)
+//   pinned-free, clamped-pinned: (4n+1) pi/4   (table 3.92660, 7.06858, 10.21018)
+//   pinned-pinned:                n pi         (exact)
+// and is then polished by Newton's method on the characteristic equation
+//   cos(bL) cosh(bL) = 1, cos(bL) cosh(bL) = -1, tan(bL) = tanh(bL)
+// respectively, to full double precision. Returns PETSC_ERR_SUP for supports
+// outside these combinations and PETSC_ERR_ARG_OUTOFRANGE for bad arguments.
+PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, PetscReal EI, PetscReal mu, PetscInt n_flexural,
+                                 std::vector<PetscReal> *omega);
+
+} // namespace beamimpact

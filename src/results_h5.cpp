@@ -1,0 +1,188 @@
+// HDF5 writing of impact results. See results_h5.hpp.
+#include "results_h5.hpp"
+
+#include <hdf5.h>
+
+namespace beamimpact {
+
+const std::vector<ResultColumn> &ImpactResultColumns()
+{
+  using R = ImpactResult;
+  static const std::vector<ResultColumn> cols = {
+    {"x", "m", false, [](const R &r) { return r.x; }},
+    {"acor", "1", false, [](const R &r) { return r.acor; }},
+    {"acor_corrected", "1", false, [](const R &r) { return r.acor_corrected; }},
+    {"contact_time", "s", false, [](const R &r) { return r.contact_time; }},
+    {"contact_time_total", "s", false, [](const R &r) { return r.contact_time_total; }},
+    {"peak_force", "N", false, [](const R &r) { return r.peak_force; }},
+    {"max_compression", "m", false, [](const R &r) { return r.max_compression; }},
+    {"contacts", "1", true, [](const R &r) { return (double)r.contacts; }},
+    {"ended_in_contact", "1", true, [](const R &r) { return (double)r.ended_in_contact; }},
+    {"ball_final_velocity", "m/s", false, [](const R &r) { return r.ball_final_velocity; }},
+    {"final_time", "s", false, [](const R &r) { return r.final_time; }},
+    {"energy_error", "1", false, [](const R &r) { return r.energy_error; }},
+    {"linear_momentum_error", "1", false, [](const R &r) { return r.linear_momentum_error; }},
+    {"angular_momentum_error", "1", false, [](const R &r) { return r.angular_momentum_error; }},
+    {"beam_kinetic_end", "J", false, [](const R &r) { return r.beam_kinetic_end; }},
+    {"beam_strain_end", "J", false, [](const R &r) { return r.beam_strain_end; }},
+    {"ball_dissipated_end", "J", false, [](const R &r) { return r.ball_dissipated_end; }},
+    {"steps", "1", true, [](const R &r) { return (double)r.steps; }},
+    {"rejected_steps", "1", true, [](const R &r) { return (double)r.rejected_steps; }},
+    {"event_steps", "1", true, [](const R &r) { return (double)r.event_steps; }},
+    {"function_evals", "1", true, [](const R &r) { return (double)r.function_evals; }},
+    {"jacobian_evals", "1", true, [](const R &r) { return (double)r.jacobian_evals; }},
+    {"jacobian_assemblies", "1", true, [](const R &r) { return (double)r.jacobian_assemblies; }},
+    {"nonlinear_its", "1", true, [](const R &r) { return (double)r.nonlinear_its; }},
+    {"linear_its", "1", true, [](const R &r) { return (double)r.linear_its; }},
+    {"wall_time", "s", false, [](const R &r) { return r.wall_time; }},
+    {"dt_nominal", "s", false, [](const R &r) { return r.dt_nominal; }},
+    {"dt_stable", "s", false, [](const R &r) { return r.dt_stable; }},
+  };
+  return cols;
+}
+
+static PetscErrorCode WriteStringAttr(hid_t loc, const char *name, const std::string &value)
+{
+  PetscFunctionBeginUser;
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.size() > 0 ? value.size() : 1);
+  H5Tset_strpad(type, H5T_STR_NULLTERM);
+  hid_t space = H5Screate(H5S_SCALAR);
+  if (H5Aexists(loc, name) > 0) H5Adelete(loc, name);
+  hid_t attr = H5Acreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name);
+  H5Awrite(attr, type, value.size() > 0 ? value.c_str() : "");
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Tclose(type);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WriteNumberAttr(hid_t loc, const char *name, double value)
+{
+  PetscFunctionBeginUser;
+  hid_t space = H5Screate(H5S_SCALAR);
+  if (H5Aexists(loc, name) > 0) H5Adelete(loc, name);
+  hid_t attr = H5Acreate2(loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name);
+  H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
+  H5Aclose(attr);
+  H5Sclose(space);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
+{
+  PetscFunctionBeginUser;
+  for (auto &kv : record.numbers) PetscCall(WriteNumberAttr((hid_t)loc, kv.first.c_str(), kv.second));
+  for (auto &kv : record.strings) PetscCall(WriteStringAttr((hid_t)loc, kv.first.c_str(), kv.second));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit)
+{
+  PetscFunctionBeginUser;
+  hsize_t dims[1] = {v.size()};
+  hid_t   space   = H5Screate_simple(1, dims, NULL);
+  hid_t   ds      = H5Dcreate2((hid_t)loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
+  if (!v.empty()) H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
+  H5Dclose(ds);
+  H5Sclose(space);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit)
+{
+  PetscFunctionBeginUser;
+  const size_t        nr = rows.size(), nc = nr ? rows[0].size() : 0;
+  std::vector<double> flat;
+  flat.reserve(nr * nc);
+  for (auto &r : rows) {
+    PetscCheck(r.size() == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB, "ragged rows for dataset %s", name);
+    flat.insert(flat.end(), r.begin(), r.end());
+  }
+  hsize_t dims[2] = {nr, nc};
+  hid_t   space   = H5Screate_simple(2, dims, NULL);
+  hid_t   ds      = H5Dcreate2((hid_t)loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
+  if (!flat.empty()) H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, flat.data());
+  if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
+  H5Dclose(ds);
+  H5Sclose(space);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
+    PetscCall(H5WriteAttributes(file, record));
+    hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    for (auto &col : ImpactResultColumns()) {
+      std::vector<double> v;
+      for (auto &r : results) v.push_back(col.get(r));
+      PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
+    }
+    H5Gclose(g);
+    if (!results.empty()) {
+      const ImpactResult &r = results[0];
+      {
+        hid_t               ge = H5Gcreate2(file, "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        std::vector<double> t, kind, c, f;
+        for (auto &e : r.events) {
+          t.push_back(e.time);
+          kind.push_back((double)e.kind);
+          c.push_back(e.compression);
+          f.push_back(e.force);
+        }
+        PetscCall(H5WriteDataset1D(ge, "time", t, "s"));
+        PetscCall(H5WriteDataset1D(ge, "kind", kind, "0 contact, 1 max_compression, 2 reload, 3 separation"));
+        PetscCall(H5WriteDataset1D(ge, "compression", c, "m"));
+        PetscCall(H5WriteDataset1D(ge, "force", f, "N"));
+        H5Gclose(ge);
+      }
+      const ImpactSeries &S = r.series;
+      if (!S.time.empty()) {
+        hid_t gs = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        PetscCall(H5WriteDataset1D(gs, "time", S.time, "s"));
+        auto opt = [&](const char *name, const std::vector<double> &v, const char *unit) -> PetscErrorCode {
+          PetscFunctionBeginUser;
+          if (!v.empty()) PetscCall(H5WriteDataset1D(gs, name, v, unit));
+          PetscFunctionReturn(0);
+        };
+        PetscCall(opt("ball_y", S.ball_y, "m"));
+        PetscCall(opt("ball_v", S.ball_v, "m/s"));
+        PetscCall(opt("compression", S.compression, "m"));
+        PetscCall(opt("force", S.force, "N"));
+        PetscCall(opt("ball_kinetic", S.ball_kinetic, "J"));
+        PetscCall(opt("ball_stored", S.ball_stored, "J"));
+        PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
+        PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
+        PetscCall(opt("beam_strain", S.beam_strain, "J"));
+        PetscCall(opt("total_energy", S.total_energy, "J"));
+        if (!S.velocity_at.empty()) PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
+        H5Gclose(gs);
+      }
+      if (!S.snapshot_time.empty()) {
+        hid_t               gn = H5Gcreate2(file, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        std::vector<double> x(beam.nodes);
+        for (PetscInt i = 0; i < beam.nodes; ++i) x[i] = beam.length * i / (beam.nodes - 1);
+        PetscCall(H5WriteDataset1D(gn, "x", x, "m"));
+        PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
+        PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
+        H5Gclose(gn);
+      }
+    }
+    H5Fclose(file);
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

@@ -1,0 +1,156 @@
+// Task drivers: option reading, runs, summaries and files. See tasks.hpp.
+#include "tasks.hpp"
+
+#include "modes.hpp"
+#include "options_util.hpp"
+
+#include <hdf5.h>
+#include <petscts.h>
+
+namespace beamimpact {
+
+static const char *const TaskNames[] = {"impact", "modes", "Task", "TASK_", nullptr};
+
+PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec)
+{
+  char        petsc_version[256];
+  std::string options;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscGetVersion(petsc_version, sizeof(petsc_version)));
+  PetscCall(OptionsAsString(&options));
+  rec->add("program", std::string("beamimpact ") + BEAMIMPACT_VERSION);
+  rec->add("petsc_version", petsc_version);
+  rec->add("options", options);
+  rec->add("beam_length", beam.length);
+  rec->add("beam_EI", beam.EI);
+  rec->add("beam_mu", beam.mu);
+  rec->add("beam_mass", beam.mu * beam.length);
+  rec->add("beam_nodes", (double)beam.nodes);
+  rec->add("beam_left", SupportName(beam.left));
+  rec->add("beam_right", SupportName(beam.right));
+  rec->add("beam_clamp_x0", beam.has_clamp ? beam.clamp_x0 : -1.0);
+  rec->add("beam_clamp_x1", beam.has_clamp ? beam.clamp_x1 : -1.0);
+  rec->add("beam_parameter_set", beam.input.parameter_set);
+  rec->add("beam_youngs_modulus", beam.input.youngs_modulus);
+  rec->add("beam_density", beam.input.density);
+  rec->add("beam_thickness", beam.input.thickness);
+  rec->add("beam_width", beam.input.width);
+  rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
+  if (ball) {
+    rec->add("ball_mass", ball->mass);
+    rec->add("ball_speed", ball->speed);
+    rec->add("ball_law", ContactLawName(ball->law));
+    if (ball->law == ContactLawKind::Linear) rec->add("ball_k", ball->k);
+    else {
+      rec->add("ball_k1", ball->k1);
+      rec->add("ball_m", ball->m);
+      rec->add("ball_n", ball->n);
+    }
+    rec->add("ball_loss_factor", ball->loss_factor);
+  }
+  if (impact) {
+    rec->add("impact_window", impact->window);
+    rec->add("impact_max_time", impact->max_time);
+    rec->add("impact_event_tol", impact->event_tol);
+  }
+  if (first) {
+    rec->add("ts_type", first->ts_type);
+    rec->add("formulation", first->formulation);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm,
+                        "x %.4f m  acor %.6f  acor_corrected %.6f  contact_time %.4e s  peak_force %.4e N  max_compression %.4e m  contacts %" PetscInt_FMT
+                        "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
+                        (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
+                        r.rejected_steps, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
+{
+  BeamParams     beam;
+  BallParams     ball;
+  ImpactParams   ip;
+  MonitorRequest mon;
+  ImpactResult   res;
+
+  PetscFunctionBeginUser;
+  PetscCall(BeamParamsFromOptions(comm, &beam));
+  PetscCall(BallParamsFromOptions(comm, &ball));
+  PetscCall(ImpactParamsFromOptions(comm, beam, &ip));
+  PetscCall(MonitorRequestFromOptions(comm, beam, &mon));
+  ip.check_unused_options = PETSC_TRUE;
+  PetscCall(ImpactRun(comm, beam, ball, ip, mon, &res));
+  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal, res.dt_stable > 0 ? "" : ""));
+  if (res.dt_stable > 0) PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s)\n", (double)res.dt_stable, (double)res.omega_max_bound));
+  PetscCall(ImpactPrintSummary(comm, res));
+  if (!output.empty()) {
+    RunRecord rec;
+    PetscCall(RunRecordBuild(beam, &ball, &ip, &res, &rec));
+    PetscCall(ResultsWriteImpactFile(comm, output, rec, {res}, beam));
+    PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
+{
+  BeamParams  beam;
+  ModesParams mp;
+  ModesResult modes;
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(BeamParamsFromOptions(comm, &beam));
+  PetscCall(ModesParamsFromOptions(comm, &mp));
+  PetscCall(OptionsCheckUnused(comm));
+  const BeamOperator op = BeamOperatorBuild(beam);
+  PetscCall(BeamModesCompute(comm, op, mp.count, &modes));
+  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)\n", (double)beam.length, SupportName(beam.left), SupportName(beam.right), beam.nodes));
+  for (size_t q = 0; q < modes.frequency.size(); ++q)
+    PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f%s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? "  (rigid)" : ""));
+  if (!output.empty() && rank == 0) {
+    RunRecord rec;
+    PetscCall(RunRecordBuild(beam, nullptr, nullptr, nullptr, &rec));
+    hid_t file = H5Fcreate(output.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file", output.c_str());
+    PetscCall(H5WriteAttributes(file, rec));
+    hid_t g = H5Gcreate2(file, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
+    PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
+    PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
+    H5Gclose(g);
+    H5Fclose(file);
+  }
+  if (!output.empty()) PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunTask(MPI_Comm comm)
+{
+  PetscEnum task = (PetscEnum)Task::Impact;
+  char      output[PETSC_MAX_PATH_LEN] = "";
+  PetscBool set_output;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "beamimpact: task and output", "beamimpact");
+  PetscCall(PetscOptionsEnum("-task", "What to compute", "", TaskNames, task, &task, NULL));
+  PetscCall(PetscOptionsString("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)", "", output, output, sizeof(output), &set_output));
+  PetscOptionsEnd();
+  std::string out = set_output ? output : std::string(TaskNames[task]) + ".h5";
+  if (out == "none") out.clear();
+  switch ((Task)task) {
+  case Task::Impact: PetscCall(TaskImpact(comm, out)); break;
+  case Task::Modes: PetscCall(TaskModes(comm, out)); break;
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

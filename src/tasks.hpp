@@ -1,0 +1,29 @@
+// The tasks the executable runs (-task impact|modes): each reads its modules'
+// options, runs on the communicator it is given, prints a summary on its
+// rank 0 and writes one HDF5 file.
+#pragma once
+
+#include "beam.hpp"
+#include "contact.hpp"
+#include "impact.hpp"
+#include "results_h5.hpp"
+
+#include <petscsys.h>
+
+namespace beamimpact {
+
+enum class Task { Impact = 0, Modes = 1 };
+
+// Reads -task and -output, dispatches.
+PetscErrorCode RunTask(MPI_Comm comm);
+
+PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output);
+PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output);
+
+// Parameters, integrator, options and versions as attributes for the results file.
+PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec);
+
+// One summary line of an impact.
+PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r);
+
+} // namespace beamimpact
