@@ -158,7 +158,7 @@ PetscReal BeamKineticEnergy(const BeamOperator &op, const PetscReal *v, PetscInt
 ImpactStencil BeamImpactStencil(const BeamOperator &op, PetscReal x_imp)
 {
   ImpactStencil   st;
-  const PetscReal s  = x_imp / op.h;
+  const PetscReal s  = std::min(std::max(x_imp, (PetscReal)0), op.L) / op.h;
   const PetscReal sr = std::round(s);
   PetscInt        j  = std::abs(s - sr) < 1e-9 ? static_cast<PetscInt>(sr) : static_cast<PetscInt>(std::floor(s));
   PetscReal       frac = std::abs(s - sr) < 1e-9 ? 0.0 : s - j;

@@ -102,7 +102,8 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
 PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams &ball, const ImpactParams &impact, const MonitorRequest &monitor, ImpactResult *result);
 
 // Imaginary-axis stability bound y* of an explicit Runge-Kutta tableau
-// (|R(iy)| <= 1 for 0 <= y <= y*); 0 when no y > 0 is stable (Euler, RK2).
+// (|R(iy)| <= 1 + 1e-12 for 0 <= y <= y*); 0 when that holds only for y < 0.05,
+// i.e. the scheme is unstable for undamped oscillation at any practical step (Euler, RK2).
 PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b);
 
 } // namespace beamimpact

@@ -31,7 +31,12 @@ int main(int argc, char **argv)
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     if (rank == 0) fprintf(stderr, "beamimpact: error: %s\n", specific && specific[0] ? specific : text);
     fflush(stderr);
-    MPI_Abort(PETSC_COMM_WORLD, 1);
+    PetscMPIInt size;
+    MPI_Comm_size(PETSC_COMM_WORLD, &size);
+    if (size > 1) MPI_Abort(PETSC_COMM_WORLD, 1); // other ranks may be stuck in a collective
+    PetscPopErrorHandler();
+    SlepcFinalize();
+    return 1;
   }
   if (!traceback) PetscCall(PetscPopErrorHandler());
   PetscCall(SlepcFinalize());

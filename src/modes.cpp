@@ -96,7 +96,8 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt 
   const PetscInt nfree = (PetscInt)free_nodes.size();
   PetscCall(ModesCountCheck(comm, count, nfree));
 
-  // K (<= 5 nonzeros a row) and the diagonal lumped M, rows split with PetscSplitOwnership.
+  // K (<= 5 nonzeros a row) and the diagonal lumped M; PETSC_DECIDE splits the rows
+  // as PetscSplitOwnership does.
   PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 5, NULL, 4, NULL, &K));
   PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 1, NULL, 0, NULL, &M));
   PetscCall(MatGetOwnershipRange(K, &rstart, &rend));

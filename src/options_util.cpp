@@ -28,7 +28,9 @@ PetscErrorCode OptionsCheckUnused(MPI_Comm comm)
     list += std::string(" -") + names[i];
     if (values[i]) list += std::string(" ") + values[i];
   }
+  const PetscInt nleft = n; // Restore zeroes n
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  n = nleft;
   if (n > 0) {
     if (allow) PetscCall(PetscPrintf(comm, "WARNING: %" PetscInt_FMT " option(s) set but not used:%s\n", n, list.c_str()));
     else

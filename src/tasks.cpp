@@ -109,9 +109,9 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(BeamParamsFromOptions(comm, &beam));
-  PetscCall(ModesParamsFromOptions(comm, &mp));
-  PetscCall(OptionsCheckUnused(comm));
   const BeamOperator op = BeamOperatorBuild(beam);
+  PetscCall(ModesParamsFromOptions(comm, &mp, &op));
+  PetscCall(OptionsCheckUnused(comm));
   PetscCall(BeamModesCompute(comm, op, mp.count, &modes));
   PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)\n", (double)beam.length, SupportName(beam.left), SupportName(beam.right), beam.nodes));
   for (size_t q = 0; q < modes.frequency.size(); ++q)
