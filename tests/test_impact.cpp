@@ -190,3 +190,36 @@ TEST(Monitors, SnapshotsAndPointVelocities)
     EXPECT_TRUE(r.series.force.empty()) << "only what was asked for is recorded";
   }
 }
+
+// Near the free tip of the 30 cm beam clamped at x = 0 the vibrating beam comes back and
+// strikes the ball again: the run continues after the first separation and counts it.
+TEST(DoubleImpact, ClampedThirtyCentimetreBeamNearTheTip)
+{
+  const BeamParams beam = AluminiumBeam(0.3, 41, Support::Clamped, Support::Free);
+  const BallParams ball = Superball();
+  ImpactParams     ip;
+  ip.x                 = 0.29;
+  const ImpactResult r = RunImpact(PETSC_COMM_WORLD, beam, ball, ip, {{"-ts_type", "cn"}, {"-ts_dt", "5e-6"}});
+  EXPECT_GE(r.contacts, 2);
+  PetscInt starts = 0, separations = 0;
+  double   last_sep = -1;
+  for (const ContactEvent &e : r.events) {
+    if (e.kind == ContactEventKind::ContactStart) {
+      starts++;
+      EXPECT_GT(e.time, last_sep) << "a contact starts only after the previous one ended";
+    }
+    if (e.kind == ContactEventKind::Separation) {
+      separations++;
+      last_sep = e.time;
+      EXPECT_NEAR(e.compression, 0.0, 1e-9) << "separation located at c = 0";
+    }
+  }
+  EXPECT_EQ(starts, r.contacts);
+  EXPECT_EQ(separations, r.contacts);
+  EXPECT_LT(r.contact_time, r.contact_time_total);
+  EXPECT_LT(std::abs(r.energy_error), 1e-9);
+  // Away from the tip the same beam gives a single contact.
+  ip.x                  = 0.15;
+  const ImpactResult r1 = RunImpact(PETSC_COMM_WORLD, beam, ball, ip, {{"-ts_type", "cn"}, {"-ts_dt", "5e-6"}});
+  EXPECT_EQ(r1.contacts, 1);
+}
