@@ -4,6 +4,7 @@
 #include "impact.hpp"
 
 #include "options_util.hpp"
+#include "ts_galpha2.hpp"
 
 #include <petscdmcomposite.h>
 #include <petscdmda.h>
@@ -805,6 +806,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   const PetscReal k_bound   = ball.law == ContactLawKind::Linear ? ball.k : std::max(ball.m, ball.n) * ball.k1 * std::pow(2 * c_scale, ball.m - 1);
   res->omega_max_bound      = BeamMaxFrequencyBound(P.op, P.stencil, k_bound, ball.mass);
 
+  PetscCall(TSGAlpha2Register()); // -ts_type alpha2: generalized-alpha with a consistent restart (ts_galpha2.hpp)
   PetscCall(TSCreate(comm, &ts));
   PetscCall(TSSetType(ts, type_opt));
   PetscCall(TSSetDM(ts, P.pack));
@@ -1101,9 +1103,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
         res->max_compression = std::max(res->max_compression, c);
         res->peak_force      = std::max(res->peak_force, F);
       }
-      // alpha2 carries its acceleration across the event (the force is continuous);
-      // its own restart would recompute it from backward differences.
-      if (rhs_changed && P.form != Formulation::SecondOrder) PetscCall(TSRestartStep(ts));
+      if (rhs_changed) PetscCall(TSRestartStep(ts));
       PetscCall(indicators(&g1));
     }
     t  = ts->ptime;
