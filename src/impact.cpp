@@ -674,6 +674,15 @@ PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscR
   return lo;
 }
 
+ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const ImpactParams &ip)
+{
+  ImpactTimes     t;
+  const PetscReal omega1 = BeamFundamentalFrequencyEstimate(beam);
+  t.window               = ip.window >= 0 ? ip.window : 2 * (2 * M_PI / omega1);
+  t.max_time             = ip.max_time > 0 ? ip.max_time : 4 * t.window + 100 * ContactTimeScale(ball);
+  return t;
+}
+
 PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, ImpactParams *p)
 {
   PetscFunctionBeginUser;
@@ -800,9 +809,9 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   const PetscReal t_contact = ContactTimeScale(ball);
   const PetscReal c_scale   = ContactCompressionScale(ball);
   const PetscReal v_scale   = ball.speed;
-  const PetscReal omega1    = BeamFundamentalFrequencyEstimate(beam);
-  const PetscReal window    = ip.window >= 0 ? ip.window : 2 * (2 * M_PI / omega1);
-  const PetscReal t_cap     = ip.max_time > 0 ? ip.max_time : 4 * window + 100 * t_contact;
+  const ImpactTimes times   = ImpactTimesOf(beam, ball, ip);
+  const PetscReal window    = times.window;
+  const PetscReal t_cap     = times.max_time;
   const PetscReal k_bound   = ball.law == ContactLawKind::Linear ? ball.k : std::max(ball.m, ball.n) * ball.k1 * std::pow(2 * c_scale, ball.m - 1);
   res->omega_max_bound      = BeamMaxFrequencyBound(P.op, P.stencil, k_bound, ball.mass);
 

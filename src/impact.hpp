@@ -94,6 +94,14 @@ struct ImpactResult {
   ImpactSeries series;
 };
 
+// The run's time rules: after each separation the run continues for `window`; it never
+// goes beyond `max_time` (s). Shared by ImpactRun and the modal reference.
+struct ImpactTimes {
+  PetscReal window   = 0; // s
+  PetscReal max_time = 0; // s
+};
+ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const ImpactParams &ip);
+
 PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, ImpactParams *p);
 PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, MonitorRequest *m);
 

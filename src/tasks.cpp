@@ -3,13 +3,14 @@
 
 #include "modes.hpp"
 #include "options_util.hpp"
+#include "sweep.hpp"
 
 #include <hdf5.h>
 #include <petscts.h>
 
 namespace beamimpact {
 
-static const char *const TaskNames[] = {"impact", "modes", "Task", "TASK_", nullptr};
+static const char *const TaskNames[] = {"impact", "modes", "sweep", "Task", "TASK_", nullptr};
 
 PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec)
 {
@@ -149,6 +150,7 @@ PetscErrorCode RunTask(MPI_Comm comm)
   switch ((Task)task) {
   case Task::Impact: PetscCall(TaskImpact(comm, out)); break;
   case Task::Modes: PetscCall(TaskModes(comm, out)); break;
+  case Task::Sweep: PetscCall(TaskSweep(comm, out)); break;
   }
   PetscFunctionReturn(0);
 }

@@ -1,0 +1,140 @@
+#!/usr/bin/env bash
+# -task sweep survives kill -9 and resumes without losing or recomputing rows:
+#   1. an uninterrupted 2-rank sweep is the reference;
+#   2. the same sweep is started in the background and, once its progress shows
+#      some but not all points done, mpiexec and its rank processes are killed
+#      with SIGKILL (by process id); the output file, if any, must still be a
+#      readable HDF5 file;
+#   3. rerunning the same command resumes: it reports A points already done
+#      (at least as many as were reported done before the kill: nothing lost),
+#      computes exactly the other N - A (nothing recomputed) and leaves a file
+#      identical to the reference (datasets but wall_time within 1e-12, every
+#      attribute but the command line 'options');
+#   4. a third run finds everything done; a changed parameter is refused with
+#      a message naming it; -sweep_restart starts over.
+#
+#   tests/sweep_resume.sh path/to/beamimpact scratch_dir [mpiexec]
+set -uo pipefail
+
+exe=${1:?usage: sweep_resume.sh beamimpact scratch_dir [mpiexec]}
+dir=${2:?usage: sweep_resume.sh beamimpact scratch_dir [mpiexec]}
+mpiexec=${3:-${MPIEXEC:-mpiexec}}
+exe=$(readlink -f "$exe")
+[[ -x "$exe" ]] || { echo "FAIL: $1 is not an executable"; exit 1; }
+mkdir -p "$dir" && cd "$dir" || exit 1
+rm -rf resume_*
+if [[ $(id -u) -eq 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}; fi
+
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+pass() { echo "ok:   $*"; }
+python=""
+for p in /usr/bin/python3 python3; do
+  if command -v "$p" >/dev/null && "$p" -c "import h5py, numpy" 2>/dev/null; then python=$p; break; fi
+done
+
+# Slow enough cases (~0.1 s each on one core) that the kill lands mid-sweep.
+N=24
+opts=(-task sweep -beam_nodes 21 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 2e-6 -sweep_x 0.05:1.05:$N
+      -rigid_loss_fraction 0.2 -sweep_progress_interval 0.02 -sweep_write_interval 0.1)
+
+same_file() {
+  if [[ -n "$python" ]]; then
+    "$python" - "$1" "$2" <<'PY'
+import sys, h5py, numpy as np
+a, b = h5py.File(sys.argv[1], "r"), h5py.File(sys.argv[2], "r")
+bad = []
+def walk(g, h, path):
+    if set(g.keys()) != set(h.keys()): bad.append("%s: members differ" % path)
+    for k in g:
+        if k not in h: continue
+        p = path.rstrip("/") + "/" + k
+        if isinstance(g[k], h5py.Group): walk(g[k], h[k], p)
+        elif p != "/results/wall_time":
+            x, y = g[k][()], h[k][()]
+            if x.shape != y.shape or (x.size and not np.all(np.abs(x - y) <= 1e-12 * np.maximum(1, np.abs(x)))):
+                bad.append("%s differs" % p)
+walk(a, b, "/")
+for k in set(a.attrs) | set(b.attrs):
+    if k != "options" and (k not in a.attrs or k not in b.attrs or a.attrs[k] != b.attrs[k]): bad.append("attribute %s differs" % k)
+for m in bad: print("   ", m)
+sys.exit(1 if bad else 0)
+PY
+  else
+    local g n # h5dump -m %.17g prints every dataset exactly: compare the text
+    for g in results sweep; do
+      for n in $(h5dump -H -g "/$g" "$1" | sed -nE 's/^ *DATASET "([^"]+)".*/\1/p'); do
+        [[ $g/$n == results/wall_time ]] && continue
+        cmp -s <(h5dump -m %.17g -d "/$g/$n" "$1" | tail -n +3) <(h5dump -m %.17g -d "/$g/$n" "$2" | tail -n +3) || { echo "    /$g/$n differs"; return 1; }
+      done
+    done
+  fi
+}
+readable() { if [[ -n "$python" ]]; then "$python" -c "import h5py,sys; f=h5py.File(sys.argv[1],'r'); f['results/acor'][()]" "$1"; else h5dump -d /results/acor "$1" >/dev/null; fi; }
+
+# 1. reference
+"$mpiexec" -n 2 "$exe" "${opts[@]}" -sweep_quiet -output resume_ref.h5 >resume_ref.log 2>&1 || { fail "reference sweep failed"; cat resume_ref.log; exit 1; }
+
+# 2. start, wait for some progress, kill -9
+setsid "$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_killed.log 2>&1 &
+launcher=$!
+seen=0
+for ((i = 0; i < 600; ++i)); do
+  seen=$(sed -nE 's/^sweep: ([0-9]+)\/[0-9]+ points.*/\1/p' resume_killed.log | tail -1)
+  seen=${seen:-0}
+  ((seen >= 4)) && break
+  kill -0 "$launcher" 2>/dev/null || break
+  sleep 0.02
+done
+# The launcher and everything below it (Open MPI puts each rank in its own
+# process group, so a process-group kill would miss them): kill -9 by pid.
+descendants() { local c; for c in $(ps -o pid= --ppid "$1"); do echo "$c"; descendants "$c"; done; }
+ranks=$(descendants "$launcher" | tr '\n' ' ')
+kill -9 "$launcher" $ranks 2>/dev/null
+wait "$launcher" 2>/dev/null
+for ((i = 0; i < 100; ++i)); do
+  alive=0
+  for p in $ranks; do kill -0 "$p" 2>/dev/null && alive=1; done
+  ((alive)) || break
+  sleep 0.05
+done
+if grep -q "^sweep: computed" resume_killed.log; then fail "the sweep finished before it could be killed (make the cases slower)"; fi
+if ((seen < 4)); then fail "no progress seen before the kill"; cat resume_killed.log; fi
+echo "      killed after progress reported $seen/$N points done (ranks: $ranks)"
+if [[ -e resume_k.h5 ]]; then
+  readable resume_k.h5 && pass "after kill -9 the output is a readable HDF5 file" || fail "after kill -9 the output is not readable"
+fi
+[[ -d resume_k.h5.parts ]] && pass "journal directory left for the resume" || fail "no journal directory after the kill"
+
+# 3. the same command again: resume
+"$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_resumed.log 2>&1 || { fail "resume failed"; cat resume_resumed.log; }
+already=$(sed -nE 's/^sweep: resuming .*: ([0-9]+) of [0-9]+ points already done, ([0-9]+) to compute/\1/p' resume_resumed.log)
+todo=$(sed -nE 's/^sweep: resuming .*: ([0-9]+) of [0-9]+ points already done, ([0-9]+) to compute/\2/p' resume_resumed.log)
+computed=$(sed -nE 's/^sweep: computed ([0-9]+) points? .*/\1/p' resume_resumed.log)
+echo "      resumed: ${already:-?} already done, ${todo:-?} to compute, ${computed:-?} computed"
+if [[ -z "$already" || -z "$computed" ]]; then
+  fail "resume did not report what it skipped and computed"; cat resume_resumed.log
+else
+  ((already >= seen)) && pass "nothing lost: $already on disk >= $seen reported done before the kill" || fail "lost rows: $already on disk < $seen reported done"
+  ((already < N)) && pass "the killed run was partial ($already/$N)" || fail "the killed run had finished all points"
+  ((computed == N - already && todo == N - already)) && pass "nothing recomputed: computed $computed = $N - $already" || fail "computed $computed, expected $((N - already))"
+fi
+[[ -d resume_k.h5.parts ]] && fail "journal directory not removed after completion"
+same_file resume_ref.h5 resume_k.h5 && pass "resumed file identical to the uninterrupted one" || fail "resumed file differs from the uninterrupted one"
+
+# 4. done, changed parameters, restart
+"$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_again.log 2>&1 && grep -q "all $N points were already done" resume_again.log \
+  && pass "third run: nothing to compute" || { fail "third run"; cat resume_again.log; }
+if "$exe" "${opts[@]}" -beam_nodes 23 -output resume_k.h5 >resume_changed.log 2>&1; then
+  fail "a changed parameter was accepted for resume"
+elif grep -q "different parameters" resume_changed.log && grep -q "option -beam_nodes: '21' in the file, '23' now" resume_changed.log && grep -q -- "-sweep_restart" resume_changed.log; then
+  pass "changed -beam_nodes refused: $(grep -m1 "beam_nodes" resume_changed.log | sed 's/^ *//')"
+else
+  fail "changed parameter: unclear message"; cat resume_changed.log
+fi
+same_file resume_ref.h5 resume_k.h5 || fail "the refused run modified the file"
+"$exe" "${opts[@]}" -beam_nodes 23 -sweep_x 0.3,0.6 -sweep_restart -sweep_quiet -output resume_k.h5 >resume_restart.log 2>&1 && readable resume_k.h5 \
+  && pass "-sweep_restart starts a new file" || { fail "-sweep_restart"; cat resume_restart.log; }
+
+if ((fails)); then echo "$fails check(s) failed"; exit 1; fi
+echo "all checks passed"
