@@ -460,12 +460,18 @@ PetscErrorCode CurrentCompression(ImpactProblem &P, TS ts, PetscReal *c, PetscRe
 struct StateMeasures {
   PetscReal ball_y = 0, ball_v = 0, c = 0, force = 0;
   PetscReal ball_kinetic = 0, ball_stored = 0, ball_work = 0, beam_kinetic = 0, beam_strain = 0;
-  PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0
+  PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
+  PetscReal beam_momentum = 0, beam_moment = 0;   // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
+  PetscReal segment_kinetic = 0;                  // J, monitored segment
   PetscReal total() const { return ball_kinetic + ball_work + beam_kinetic + beam_strain; }
 };
 
-PetscErrorCode MeasureState(ImpactProblem &P, TS ts, const std::vector<PetscReal> &points, StateMeasures *m, std::vector<PetscReal> *point_v)
+// Measures the current state; with a monitor request also the point velocities and the
+// segment's kinetic energy (one reduction for all).
+PetscErrorCode MeasureState(ImpactProblem &P, TS ts, const MonitorRequest *mon, StateMeasures *m, std::vector<PetscReal> *point_v)
 {
+  static const std::vector<PetscReal> none;
+  const std::vector<PetscReal>       &points = mon ? mon->velocity_at : none;
   Vec       X, V = nullptr;
   StateView s;
 
@@ -493,17 +499,24 @@ PetscErrorCode MeasureState(ImpactProblem &P, TS ts, const std::vector<PetscReal
     vstride = 2;
   }
   const PetscInt np = (PetscInt)points.size();
-  std::vector<PetscReal> sums(4 + np, 0.0);
+  std::vector<PetscReal> sums(5 + np, 0.0);
   sums[0] = BeamKineticEnergy(P.op, v, vstride, P.xs, P.xe);
   sums[1] = BeamStrainEnergy(P.op, s.beam, P.dof, P.xs, P.xe);
   for (PetscInt i = P.xs; i < P.xe; ++i) {
     sums[2] += P.op.mass[i] * v[i * vstride];
     sums[3] += P.op.mass[i] * i * P.op.h * v[i * vstride];
   }
+  if (mon && mon->segment) {
+    const PetscReal tol = 1e-9 * P.op.h;
+    for (PetscInt i = P.xs; i < P.xe; ++i) {
+      const PetscReal x = i * P.op.h;
+      if (x >= mon->segment_x0 - tol && x <= mon->segment_x1 + tol) sums[4] += 0.5 * P.op.mass[i] * v[i * vstride] * v[i * vstride];
+    }
+  }
   for (PetscInt q = 0; q < np; ++q) {
     const ImpactStencil st = BeamImpactStencil(P.op, points[q]);
-    if (st.j >= P.xs && st.j < P.xe) sums[4 + q] += st.w * v[st.j * vstride];
-    if (st.j + 1 >= P.xs && st.j + 1 < P.xe) sums[4 + q] += (1 - st.w) * v[(st.j + 1) * vstride];
+    if (st.j >= P.xs && st.j < P.xe) sums[5 + q] += st.w * v[st.j * vstride];
+    if (st.j + 1 >= P.xs && st.j + 1 < P.xe) sums[5 + q] += (1 - st.w) * v[(st.j + 1) * vstride];
   }
   if (P.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, P.comm));
   PetscReal cdot;
@@ -523,7 +536,10 @@ PetscErrorCode MeasureState(ImpactProblem &P, TS ts, const std::vector<PetscReal
   m->beam_strain      = sums[1];
   m->momentum         = sums[2] + P.ball.mass * ball_v;
   m->angular_momentum = sums[3] + P.ball.mass * P.x_imp * ball_v;
-  if (point_v) point_v->assign(sums.begin() + 4, sums.end());
+  m->beam_momentum    = sums[2];
+  m->beam_moment      = sums[3];
+  m->segment_kinetic  = sums[4];
+  if (point_v) point_v->assign(sums.begin() + 5, sums.end());
   PetscFunctionReturn(0);
 }
 
@@ -715,6 +731,8 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
   PetscReal pts[64], times[256];
   PetscInt  npts = 64, ntimes = 256;
   PetscBool setpts = PETSC_FALSE, settimes = PETSC_FALSE;
+  PetscReal seg[2] = {0, 0};
+  PetscInt  nseg   = 2;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Monitors: time series and snapshots, written only when asked", "beamimpact");
@@ -722,7 +740,15 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
   PetscCall(PetscOptionsBool("-monitor_energy", "Record ball kinetic, stored and dissipated energy and beam kinetic and strain energy at every step", "", m->energy, &m->energy, NULL));
   PetscCall(PetscOptionsRealArray("-monitor_velocity_at", "Record the beam velocity at these points x1,x2,... (m) at every step", "", pts, &npts, &setpts));
   PetscCall(PetscOptionsRealArray("-snapshot_times", "Record the beam displacement y(x) at these times t1,t2,... (s)", "", times, &ntimes, &settimes));
+  PetscCall(PetscOptionsRealArray("-monitor_segment", "Record the kinetic energy of the beam segment x0,x1 (m) at every step, and its peak", "", seg, &nseg, &m->segment));
+  PetscCall(PetscOptionsReal("-monitor_segment_until", "Take the segment's peak over t <= this (s); < 0: the whole run", "", m->segment_until, &m->segment_until, NULL));
   PetscOptionsEnd();
+  if (m->segment) {
+    PetscCheck(nseg == 2 && seg[0] >= 0 && seg[0] < seg[1] && seg[1] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-monitor_segment needs two points 0 <= x0 < x1 <= L = %g (m); got %" PetscInt_FMT " value(s) %g,%g", (double)beam.length, nseg, (double)seg[0], (double)(nseg > 1 ? seg[1] : 0));
+    m->segment_x0 = seg[0];
+    m->segment_x1 = seg[1];
+  }
   if (setpts) {
     for (PetscInt q = 0; q < npts; ++q)
       PetscCheck(pts[q] >= 0 && pts[q] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-monitor_velocity_at %g is not allowed: points must lie on the beam, 0 <= x <= %g (m)", (double)pts[q], (double)beam.length);
@@ -933,7 +959,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
 
   // Recording.
   StateMeasures m0;
-  PetscCall(MeasureState(P, ts, {}, &m0, nullptr));
+  PetscCall(MeasureState(P, ts, nullptr, &m0, nullptr));
   const PetscReal E0 = m0.total(), p0 = m0.momentum, L0 = m0.angular_momentum;
   ImpactSeries   &S  = res->series;
   S.velocity_at.assign(mon.velocity_at.size(), {});
@@ -942,7 +968,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
     if (!mon.any() && !ip.energy_check) PetscFunctionReturn(0);
     StateMeasures          m;
     std::vector<PetscReal> pv;
-    PetscCall(MeasureState(P, ts, mon.velocity_at, &m, &pv));
+    PetscCall(MeasureState(P, ts, &mon, &m, &pv));
     if (ip.energy_check) {
       const PetscReal growth = (m.total() - E0) / E0;
       PetscCheck(growth <= ip.energy_growth_tol, comm, PETSC_ERR_NOT_CONVERGED,
@@ -967,6 +993,13 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
       S.total_energy.push_back(m.total());
     }
     for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
+    if (mon.segment) {
+      S.segment_kinetic.push_back(m.segment_kinetic);
+      if ((mon.segment_until < 0 || t <= mon.segment_until * (1 + 1e-12)) && m.segment_kinetic > res->segment_kinetic_peak) {
+        res->segment_kinetic_peak      = m.segment_kinetic;
+        res->segment_kinetic_peak_time = t;
+      }
+    }
     PetscFunctionReturn(0);
   };
   size_t next_snapshot = 0;
@@ -1132,7 +1165,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
 
   // Outcome and invariants.
   StateMeasures m1;
-  PetscCall(MeasureState(P, ts, {}, &m1, nullptr));
+  PetscCall(MeasureState(P, ts, nullptr, &m1, nullptr));
   res->final_time             = t;
   res->ball_final_velocity    = m1.ball_v;
   res->acor                   = -m1.ball_v / ball.speed;
@@ -1143,9 +1176,32 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   res->beam_kinetic_end       = m1.beam_kinetic;
   res->beam_strain_end        = m1.beam_strain;
   res->ball_dissipated_end    = m1.ball_work - m1.ball_stored;
+  {
+    // Rigid-body part of the beam's motion about its centre of mass (held nodes never move).
+    PetscReal M = 0, Mx = 0, Mxx = 0;
+    for (PetscInt i = 0; i < P.op.N; ++i) {
+      if (P.op.held[i]) continue;
+      const PetscReal x = i * P.op.h;
+      M += P.op.mass[i];
+      Mx += P.op.mass[i] * x;
+      Mxx += P.op.mass[i] * x * x;
+    }
+    const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
+    const PetscReal L_cm = m1.beam_moment - x_cm * m1.beam_momentum;
+    const PetscReal Ein  = 0.5 * ball.mass * ball.speed * ball.speed;
+    const PetscReal Etr = m1.beam_momentum * m1.beam_momentum / (2 * M), Erot = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
+    const PetscReal ball_loss = ball.law == ContactLawKind::Linear ? (1 - ball.loss_factor * ball.loss_factor) * m1.ball_kinetic : res->ball_dissipated_end;
+    res->ball_loss_fraction   = ball_loss / Ein;
+    res->translation_fraction = Etr / Ein;
+    res->rotation_fraction    = Erot / Ein;
+    res->vibration_fraction   = (m1.beam_kinetic + m1.beam_strain - Etr - Erot) / Ein;
+  }
+  if (mon.segment && mon.segment_until > 0)
+    PetscCheck(t >= mon.segment_until * (1 - 1e-12), comm, PETSC_ERR_ARG_INCOMP, "-monitor_segment_until %g s is beyond the end of the run (%g s): raise -impact_window so the run lasts that long", (double)mon.segment_until, (double)t);
   res->steps                  = steps;
   res->event_steps            = event_steps;
   PetscCall(TSGetStepRejections(ts, &res->rejected_steps));
+  if (P.form != Formulation::Explicit) PetscCall(TSGetSNESFailures(ts, &res->failed_solves));
   res->function_evals      = P.n_func;
   res->jacobian_evals      = P.n_jac;
   res->jacobian_assemblies = std::max<PetscInt>(0, P.n_jac_assembled - 1);

@@ -38,7 +38,10 @@ struct MonitorRequest {
   PetscBool              energy = PETSC_FALSE; // energy terms per step
   std::vector<PetscReal> velocity_at;          // m, beam velocity at these points per step
   std::vector<PetscReal> snapshot_times;       // s, beam displacement y(x) at these times (stepped onto exactly)
-  bool any() const { return ball || energy || !velocity_at.empty(); }
+  PetscBool              segment = PETSC_FALSE; // kinetic energy of the beam segment [segment_x0, segment_x1]
+  PetscReal              segment_x0 = 0, segment_x1 = 0; // m
+  PetscReal              segment_until = -1;    // s, the segment's peak is taken over t <= this (< 0: whole run)
+  bool any() const { return ball || energy || !velocity_at.empty() || segment; }
 };
 
 // Per-step time series (rank 0 holds them; only the requested ones are filled).
@@ -48,6 +51,7 @@ struct ImpactSeries {
   std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated;     // J
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
   std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
+  std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
   std::vector<PetscReal> snapshot_time;                                  // s
   std::vector<std::vector<PetscReal>> snapshot_y;                        // m, [snapshot][node]
 };
@@ -80,8 +84,16 @@ struct ImpactResult {
   PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i) (only meaningful free-free)
   PetscReal angular_momentum_error = 0; // about x = 0, / (m_b v_i L)
   PetscReal beam_kinetic_end = 0, beam_strain_end = 0, ball_dissipated_end = 0; // J
+  // Where the incident kinetic energy went, as fractions of it, at the end of the run: lost
+  // in the ball (hysteresis; for the linear spring 1 - loss_factor^2 of the rebound energy),
+  // the beam's rigid translation P^2/2M and rotation L_cm^2/2I_cm about its centre of mass,
+  // and its vibration (the rest of the beam's energy). Meaningful for a free beam.
+  PetscReal ball_loss_fraction = 0, translation_fraction = 0, rotation_fraction = 0, vibration_fraction = 0;
+  // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
+  PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
   // Cost.
   PetscInt  steps = 0, rejected_steps = 0, event_steps = 0; // accepted steps, rejected, extra steps to locate events
+  PetscInt  failed_solves = 0; // nonlinear solves that failed (the step was retried smaller)
   PetscInt  function_evals = 0, jacobian_evals = 0, jacobian_assemblies = 0, nonlinear_its = 0, linear_its = 0;
   PetscReal wall_time = 0; // s, time stepping only
   // Integrator.

@@ -26,6 +26,13 @@ const std::vector<ResultColumn> &ImpactResultColumns()
     {"beam_kinetic_end", "J", false, [](const R &r) { return r.beam_kinetic_end; }},
     {"beam_strain_end", "J", false, [](const R &r) { return r.beam_strain_end; }},
     {"ball_dissipated_end", "J", false, [](const R &r) { return r.ball_dissipated_end; }},
+    {"ball_loss_fraction", "1", false, [](const R &r) { return r.ball_loss_fraction; }},
+    {"translation_fraction", "1", false, [](const R &r) { return r.translation_fraction; }},
+    {"rotation_fraction", "1", false, [](const R &r) { return r.rotation_fraction; }},
+    {"vibration_fraction", "1", false, [](const R &r) { return r.vibration_fraction; }},
+    {"segment_kinetic_peak", "J", false, [](const R &r) { return r.segment_kinetic_peak; }},
+    {"segment_kinetic_peak_time", "s", false, [](const R &r) { return r.segment_kinetic_peak_time; }},
+    {"failed_solves", "1", true, [](const R &r) { return (double)r.failed_solves; }},
     {"steps", "1", true, [](const R &r) { return (double)r.steps; }},
     {"rejected_steps", "1", true, [](const R &r) { return (double)r.rejected_steps; }},
     {"event_steps", "1", true, [](const R &r) { return (double)r.event_steps; }},
@@ -168,6 +175,7 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
         PetscCall(opt("beam_strain", S.beam_strain, "J"));
         PetscCall(opt("total_energy", S.total_energy, "J"));
         if (!S.velocity_at.empty()) PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
+        PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
         H5Gclose(gs);
       }
       if (!S.snapshot_time.empty()) {

@@ -223,3 +223,23 @@ TEST(DoubleImpact, ClampedThirtyCentimetreBeamNearTheTip)
   const ImpactResult r1 = RunImpact(PETSC_COMM_WORLD, beam, ball, ip, {{"-ts_type", "cn"}, {"-ts_dt", "5e-6"}});
   EXPECT_EQ(r1.contacts, 1);
 }
+
+// Where the incident energy went: ball loss + beam translation + rotation + vibration +
+// the ball's rebound kinetic energy add up to the incident energy; a rigid beam does not vibrate.
+TEST(EnergyPartition, FractionsAddUpAndRigidBeamDoesNotVibrate)
+{
+  const BallParams ball = Superball(ContactLawKind::Hysteresis);
+  ImpactParams     ip;
+  ip.x                   = 0.9;
+  const BeamParams flex  = AluminiumBeam(1.1, 41);
+  const ImpactResult r   = RunImpact(PETSC_COMM_WORLD, flex, ball, ip, {{"-ts_type", "cn"}, {"-ts_dt", "5e-6"}});
+  const double       sum = r.ball_loss_fraction + r.translation_fraction + r.rotation_fraction + r.vibration_fraction + r.acor * r.acor;
+  EXPECT_NEAR(sum, 1.0 + r.energy_error, 1e-12);
+  EXPECT_GT(r.vibration_fraction, 0.1) << "the flexible beam keeps a good part in vibration";
+  BeamParams stiff = flex;
+  stiff.EI *= 1e6;
+  ip.window              = 1e-3;
+  const ImpactResult rr  = RunImpact(PETSC_COMM_WORLD, stiff, ball, ip, {{"-ts_type", "cn"}, {"-ts_dt", "1e-6"}});
+  EXPECT_LT(std::abs(rr.vibration_fraction), 1e-3);
+  EXPECT_NEAR(rr.ball_loss_fraction + rr.translation_fraction + rr.rotation_fraction + rr.acor * rr.acor, 1.0, 2e-3);
+}
