@@ -14,7 +14,7 @@ PetscErrorCode OptionsAsString(std::string *all)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionsCheckUnused(MPI_Comm comm)
+PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes)
 {
   PetscInt    n;
   char      **names, **values;
@@ -24,13 +24,17 @@ PetscErrorCode OptionsCheckUnused(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-allow_unused_options", &allow, NULL));
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  PetscInt counted = 0;
   for (PetscInt i = 0; i < n; ++i) {
+    bool ignored = false;
+    for (auto &p : ignore_prefixes) ignored = ignored || std::string(names[i]).rfind(p, 0) == 0;
+    if (ignored) continue;
+    counted++;
     list += std::string(" -") + names[i];
     if (values[i]) list += std::string(" ") + values[i];
   }
-  const PetscInt nleft = n; // Restore zeroes n
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
-  n = nleft;
+  n = counted; // (Restore zeroes n)
   if (n > 0) {
     if (allow) PetscCall(PetscPrintf(comm, "WARNING: %" PetscInt_FMT " option(s) set but not used:%s\n", n, list.c_str()));
     else

@@ -5,6 +5,7 @@
 #include <petscsys.h>
 
 #include <string>
+#include <vector>
 
 namespace beamimpact {
 
@@ -14,6 +15,8 @@ PetscErrorCode OptionsAsString(std::string *all);
 // Errors out, naming them, when options were set but never read (a typo or an
 // option that the chosen task/integrator does not use). -allow_unused_options
 // turns the error into a warning.
-PetscErrorCode OptionsCheckUnused(MPI_Comm comm);
+// Options whose names start with one of ignore_prefixes (without the dash, e.g. "ts_")
+// are not reported: a task that legitimately does not use them says so itself.
+PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes = {});
 
 } // namespace beamimpact

@@ -1,6 +1,7 @@
 // Task drivers: option reading, runs, summaries and files. See tasks.hpp.
 #include "tasks.hpp"
 
+#include "modal_reference.hpp"
 #include "modes.hpp"
 #include "options_util.hpp"
 #include "sweep.hpp"
@@ -10,6 +11,7 @@
 
 namespace beamimpact {
 
+static const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
 static const char *const TaskNames[] = {"impact", "modes", "sweep", "Task", "TASK_", nullptr};
 
 PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec)
@@ -86,8 +88,18 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
   PetscCall(BallParamsFromOptions(comm, &ball));
   PetscCall(ImpactParamsFromOptions(comm, beam, &ip));
   PetscCall(MonitorRequestFromOptions(comm, beam, &mon));
-  ip.check_unused_options = PETSC_TRUE;
-  PetscCall(ImpactRun(comm, beam, ball, ip, mon, &res));
+  PetscEnum reference = (PetscEnum)0;
+  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
+  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
+  PetscOptionsEnd();
+  if (reference == 1) {
+    PetscCheck(!mon.any() && mon.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
+    PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
+    PetscCall(ModalReferenceRun(beam, ball, ip, &res));
+  } else {
+    ip.check_unused_options = PETSC_TRUE;
+    PetscCall(ImpactRun(comm, beam, ball, ip, mon, &res));
+  }
   PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal, res.dt_stable > 0 ? "" : ""));
   if (res.dt_stable > 0) PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s)\n", (double)res.dt_stable, (double)res.omega_max_bound));
   PetscCall(ImpactPrintSummary(comm, res));
