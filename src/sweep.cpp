@@ -216,10 +216,9 @@ const std::vector<SweepColumn> &SweepColumns()
 PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const SweepCase &base, PetscInt index, std::vector<double> *row, ImpactResult *result)
 {
   const SweepCase c = SweepCaseFor(plan, base, index);
-  MonitorRequest  none;
 
   PetscFunctionBeginUser;
-  PetscCall(ImpactRun(comm, c.beam, c.ball, c.impact, none, result));
+  PetscCall(ImpactRun(comm, c.beam, c.ball, c.impact, c.monitor, result));
   const ImpactResult &r = *result;
   // Rigid-body model, Eq. (11): uniform beam of mass M = mu L about its centre.
   const PetscReal M = c.beam.mu * c.beam.length, I_cm = M * c.beam.length * c.beam.length / 12.0;
@@ -952,6 +951,9 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   PetscCall(BeamParamsFromOptions(comm, &base.beam));
   PetscCall(BallParamsFromOptions(comm, &base.ball));
   PetscCall(SweepPlanFromOptions(comm, base.beam, &plan));
+  PetscCall(MonitorRequestFromOptions(comm, base.beam, &base.monitor));
+  PetscCheck(!(base.monitor.ball || base.monitor.energy || !base.monitor.velocity_at.empty() || !base.monitor.snapshot_times.empty()), comm, PETSC_ERR_ARG_INCOMP,
+             "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, -snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a column) works in a sweep");
   {
     // The other -impact_* options are shared by every case; the point is set
     // per case from -sweep_x, so -impact_x would be silently meaningless: refuse it

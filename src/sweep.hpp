@@ -64,14 +64,15 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, const BeamParams &beam, Sweep
 
 // The inputs of one case: the base parameters with the plan's axis values set.
 struct SweepCase {
-  BeamParams   beam;
-  BallParams   ball;
-  ImpactParams impact;
+  BeamParams     beam;
+  BallParams     ball;
+  ImpactParams   impact;
+  MonitorRequest monitor; // only -monitor_segment (its peak is a column); no time series in a sweep
 };
 SweepCase SweepCaseFor(const SweepPlan &plan, const SweepCase &base, PetscInt index);
 
 // The columns of a sweep row: case_index, every ImpactResultColumns() quantity,
-// rigid_acor (Eq. 11 with f = -rigid_loss_fraction, M = mu L, I_cm = M L^2/12,
+// rigid_acor (Eq. 11 with f given by -rigid_loss_fraction, M = mu L, I_cm = M L^2/12,
 // b_cm = |x - L/2|) and rigid_forced_loss_fraction (the f for which Eq. 11
 // gives acor_corrected).
 struct SweepColumn {
