@@ -899,13 +899,19 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   PetscCall(TSSetErrorIfStepFails(ts, PETSC_FALSE)); // failures are explained by check_step below
   PetscCall(TSSetUp(ts));
   if (ip.check_unused_options) PetscCall(OptionsCheckUnused(comm));
+  if (P.form != Formulation::Explicit) { // the last Newton solve's residual history explains a failure (check_step)
+    SNES snes;
+    PetscCall(TSGetSNES(ts, &snes));
+    PetscCall(SNESSetConvergenceHistory(snes, NULL, NULL, PETSC_DECIDE, PETSC_TRUE));
+  }
   PetscCheck(ts->ops->rollback, comm, PETSC_ERR_SUP,
              "-ts_type %s cannot roll back a step, so contact start, maximum compression and separation cannot be located as events; "
              "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2",
              res->ts_type.c_str());
 
   // Explicit stability: the imaginary-axis bound of the tableau over omega_max.
-  PetscBool fixed_step;
+  PetscBool   fixed_step;
+  std::string rk_type; // -ts_rk_type, for messages
   PetscCall(PetscObjectTypeCompare((PetscObject)adapt, TSADAPTNONE, &fixed_step));
   if (P.form == Formulation::Explicit) {
     PetscCheck(res->ts_type == TSRK, comm, PETSC_ERR_SUP, "-ts_type %s is explicit but not rk: only rk tableaus have a computed stability limit here; use -ts_type rk", res->ts_type.c_str());
@@ -915,6 +921,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
     const PetscReal ystar = RKImaginaryStabilityBound(s, A, b);
     TSRKType        rktype;
     PetscCall(TSRKGetType(ts, &rktype));
+    rk_type = rktype;
     PetscCheck(ystar > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-ts_rk_type %s is unstable for an undamped oscillation at any step (its stability region does not contain the imaginary axis); use -ts_rk_type 3bs, 4 or 5dp, or an implicit type (cn, bdf, alpha2)",
                rktype);
@@ -932,8 +939,30 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   PetscReal dt_nominal;
   PetscCall(TSGetTimeStep(ts, &dt_nominal));
   PetscCheck(dt_nominal > 0 && std::isfinite(dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)dt_nominal);
+  if (ip.report_setup) {
+    PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", res->ts_type.c_str(), res->formulation.c_str(), (double)dt_nominal, fixed_step ? "" : " (initial; adaptive)"));
+    if (res->dt_stable > 0) PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s)\n", (double)res->dt_stable, (double)res->omega_max_bound));
+  }
+  // Can the step or the tolerance resolve the contact? (docs/stability.md: T_r/400 verified to 1e-3 in the ACOR.)
+  // T_r: the contact time against the moving beam, the ball's mass reduced with the beam's (held nodes excluded):
+  // a ball heavier than the beam has a contact several times shorter than on a wall.
+  PetscReal beam_mass_free = 0;
+  for (PetscInt i = 0; i < P.op.N; ++i) beam_mass_free += P.op.held[i] ? 0.0 : P.op.mass[i];
+  const PetscReal t_resolve = t_contact * std::sqrt(beam_mass_free / (beam_mass_free + ball.mass));
   if (fixed_step && dt_nominal > dt_cap)
     PetscCall(PetscPrintf(comm, "WARNING: fixed step -ts_dt %g s is more than 1/8 of the contact time scale %g s: the contact is poorly resolved and events may be missed\n", (double)dt_nominal, (double)t_contact));
+  else if (fixed_step && dt_nominal > t_resolve / 100)
+    PetscCall(PetscPrintf(comm, "WARNING: fixed step -ts_dt %g s resolves the contact time scale %g s with only %.0f steps: errors of 1e-3 or more in the ACOR are possible; use -ts_dt <= %.2e (T_r/400)\n", (double)dt_nominal,
+                          (double)t_resolve, (double)(t_resolve / dt_nominal), (double)(t_resolve / 400)));
+  if (!fixed_step) {
+    PetscReal atol, rtol;
+    PetscCall(TSGetTolerances(ts, &atol, NULL, &rtol, NULL));
+    if (rtol > 1e-4 || atol > 1e-3 * c_scale)
+      PetscCall(PetscPrintf(comm,
+                            "WARNING: adaptive step with -ts_rtol %g -ts_atol %g cannot resolve the contact (compression scale %.3g m, contact time %.3g s): errors of 1e-3 or more in the ACOR are possible; "
+                            "use -ts_atol <= %.1e (1e-5 of the compression scale) and -ts_rtol <= 1e-6, or a fixed -ts_dt <= %.2e (T_r/400)\n",
+                            (double)rtol, (double)atol, (double)c_scale, (double)t_resolve, (double)(1e-5 * c_scale), (double)(t_resolve / 400)));
+  }
   res->dt_nominal = dt_nominal;
 
   // Initial state: beam at rest, ball touching at x_imp moving in +y.
@@ -963,6 +992,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   const PetscReal E0 = m0.total(), p0 = m0.momentum, L0 = m0.angular_momentum;
   ImpactSeries   &S  = res->series;
   S.velocity_at.assign(mon.velocity_at.size(), {});
+  S.velocity_at_x = mon.velocity_at;
   auto record = [&](PetscReal t) -> PetscErrorCode {
     PetscFunctionBeginUser;
     if (!mon.any() && !ip.energy_check) PetscFunctionReturn(0);
@@ -971,10 +1001,23 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
     PetscCall(MeasureState(P, ts, &mon, &m, &pv));
     if (ip.energy_check) {
       const PetscReal growth = (m.total() - E0) / E0;
-      PetscCheck(growth <= ip.energy_growth_tol, comm, PETSC_ERR_NOT_CONVERGED,
-                 "energy grew by %.3g of the incident kinetic energy at t = %g s (-ts_type %s, dt = %g s): the integrator is unstable or the step is too large for this grid/contact; "
-                 "with the %s law energy can only be %s",
-                 (double)growth, (double)t, res->ts_type.c_str(), (double)dt_nominal, ContactLawName(ball.law), ball.law == ContactLawKind::Linear ? "conserved" : "lost");
+      if (growth > ip.energy_growth_tol) {
+        // Name the likely cause from the formulation and the step actually taken.
+        const PetscReal dt_last = ts->ptime - ts->ptime_prev;
+        char            cause[512];
+        if (P.form == Formulation::Explicit && fixed_step)
+          PetscCall(PetscSNPrintf(cause, sizeof(cause), "the fixed step is %.3g x the stability limit dt_max = %g s computed for this grid and contact; use a smaller -ts_dt", (double)(dt_last / res->dt_stable), (double)res->dt_stable));
+        else if (P.form == Formulation::Explicit)
+          PetscCall(PetscSNPrintf(cause, sizeof(cause), "the error controller let the step reach the explicit stability limit dt_max = %g s; tighten -ts_rtol/-ts_atol or use a fixed -ts_dt below dt_max", (double)res->dt_stable));
+        else if (P.form == Formulation::IMEX)
+          PetscCall(PetscSNPrintf(cause, sizeof(cause), "-ts_type %s treats the contact force explicitly, and the step is too large for the contact stiffness (contact time scale %g s); reduce %s or use a fully implicit type (cn, bdf, alpha2)",
+                                  res->ts_type.c_str(), (double)t_contact, fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol"));
+        else
+          PetscCall(PetscSNPrintf(cause, sizeof(cause), "the %s does not resolve the contact (contact time scale %g s); reduce %s", fixed_step ? "step" : "tolerance", (double)t_contact, fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol"));
+        SETERRQ(comm, PETSC_ERR_NOT_CONVERGED, "energy grew by %.3g of the incident kinetic energy at t = %g s (-ts_type %s%s%s, %s step %g s): with the %s law energy can only be %s; likely cause: %s", (double)growth, (double)t,
+                res->ts_type.c_str(), rk_type.empty() ? "" : " -ts_rk_type ", rk_type.c_str(), fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(ball.law),
+                ball.law == ContactLawKind::Linear ? "conserved" : "lost", cause);
+      }
     }
     if (!mon.any()) PetscFunctionReturn(0);
     S.time.push_back(t);
@@ -1032,10 +1075,43 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
     TSConvergedReason reason;
     PetscFunctionBeginUser;
     PetscCall(TSGetConvergedReason(ts, &reason));
+    if (reason == TS_DIVERGED_NONLINEAR_SOLVE) {
+      // Explain the last Newton solve from its residual history (recorded since set-up).
+      SNES                snes;
+      PetscReal          *hist = nullptr, rtol;
+      PetscInt           *hits = nullptr, nh = 0, its = 0;
+      SNESConvergedReason sr;
+      PetscCall(TSGetSNES(ts, &snes));
+      PetscCall(SNESGetConvergenceHistory(snes, &hist, &hits, &nh));
+      PetscCall(SNESGetConvergedReason(snes, &sr));
+      PetscCall(SNESGetIterationNumber(snes, &its));
+      PetscCall(SNESGetTolerances(snes, NULL, &rtol, NULL, NULL, NULL));
+      const PetscReal f0 = nh > 0 ? hist[0] : 0, flast = nh > 0 ? hist[nh - 1] : 0;
+      PetscReal       fmax_after = 0, fmin_later = std::numeric_limits<PetscReal>::max();
+      for (PetscInt k = 1; k < nh; ++k) fmax_after = std::max(fmax_after, hist[k]);
+      for (PetscInt k = 2; k < nh; ++k) fmin_later = std::min(fmin_later, hist[k]);
+      // The first Newton step removed almost all of the residual (the problem is linear within a
+      // contact phase) and what is left is round-off: the next steps made no progress, or it is
+      // within 10x the round-off estimate eps omega_max^2 |u| of the stiffness term.
+      Vec X, V;
+      if (P.form == Formulation::SecondOrder) PetscCall(TS2GetSolution(ts, &X, &V));
+      else PetscCall(TSGetSolution(ts, &X));
+      PetscReal unorm;
+      PetscCall(VecNorm(X, NORM_2, &unorm));
+      const PetscReal floor_est = PETSC_MACHINE_EPSILON * res->omega_max_bound * res->omega_max_bound * unorm;
+      const bool      stalled   = nh >= 2 && f0 > 0 && hist[1] <= 1e-2 * f0 && ((nh >= 3 && fmin_later >= 0.1 * hist[1]) || flast <= 10 * floor_est);
+      if (stalled)
+        SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
+                "time stepping stopped at t = %g s with -ts_type %s: the Newton iteration stalled at a residual norm of %.2e after its first step reduced it from %.2e (SNES %s after %" PetscInt_FMT
+                " iterations): that is the round-off level of this grid (eps omega_max^2 |u| = %.1e with omega_max <= %.3g rad/s), above -snes_rtol %g x the initial norm, so the solve cannot converge; "
+                "set -snes_atol %.0e (ten times the stalled residual)",
+                (double)ts->ptime, res->ts_type.c_str(), (double)flast, (double)f0, SNESConvergedReasons[sr], its, (double)floor_est, (double)res->omega_max_bound, (double)rtol, (double)(10 * fmax_after));
+      SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
+              "time stepping stopped at t = %g s with -ts_type %s: the nonlinear (Newton) solve failed (SNES %s after %" PetscInt_FMT " iterations, residual norm %.2e from %.2e); reduce -ts_dt or check -snes_* and -ksp_* options (%s)",
+              (double)ts->ptime, res->ts_type.c_str(), SNESConvergedReasons[sr], its, (double)flast, (double)f0, TSConvergedReasons[reason]);
+    }
     if (reason < 0) {
-      const char *why = reason == TS_DIVERGED_NONLINEAR_SOLVE ? "the nonlinear (Newton) solve failed too often; check -snes_* and -ksp_* options or reduce -ts_dt"
-                        : reason == TS_DIVERGED_STEP_REJECTED ? "too many steps were rejected by the error controller; loosen -ts_rtol/-ts_atol or raise -ts_max_reject"
-                                                              : "the integrator diverged";
+      const char *why = reason == TS_DIVERGED_STEP_REJECTED ? "too many steps were rejected by the error controller; loosen -ts_rtol/-ts_atol or raise -ts_max_reject" : "the integrator diverged";
       SETERRQ(comm, PETSC_ERR_NOT_CONVERGED, "time stepping stopped at t = %g s with -ts_type %s: %s (%s)", (double)ts->ptime, res->ts_type.c_str(), why, TSConvergedReasons[reason]);
     }
     PetscFunctionReturn(0);
@@ -1126,6 +1202,16 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
         ContactSwitch(ball, &P.contact, ContactPhase::Loading, c);
         break;
       case ContactEventKind::Separation:
+        if (P.contact.phase == ContactPhase::Loading && ContactHasHysteresis(ball)) {
+          // The unloading branch was never applied: the ball would leave without its hysteresis loss.
+          char after[96] = "";
+          for (const ContactEvent &e : res->events)
+            if (e.kind == ContactEventKind::Reload) PetscCall(PetscSNPrintf(after, sizeof(after), " after the reload located at t = %g s", (double)e.time));
+          SETERRQ(comm, PETSC_ERR_PLIB,
+                  "the ball separated at t = %g s while the hysteretic law was still in its loading branch: the maximum-compression event was missed%s, so the unloading (lossy) branch was skipped and "
+                  "the result would be wrong; none is reported (-ts_type %s; a defect of the event location: a different -ts_dt changes whether it is hit)",
+                  (double)te, after, res->ts_type.c_str());
+        }
         ContactSwitch(ball, &P.contact, ContactPhase::Separated, c);
         if (res->contacts == 1) res->contact_time = te - contact_start;
         res->contact_time_total += te - contact_start;
@@ -1134,7 +1220,16 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
       case ContactEventKind::ContactStart:
         ContactSwitch(ball, &P.contact, ContactPhase::Loading, c);
         res->contacts++;
-        PetscCheck(res->contacts <= ip.max_contacts, comm, PETSC_ERR_NOT_CONVERGED, "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s: the ball is chattering on the beam", ip.max_contacts, (double)te);
+        if (res->contacts > ip.max_contacts) { // physical chatter, or an integration that went wrong? The energy tells.
+          StateMeasures mc;
+          PetscCall(MeasureState(P, ts, nullptr, &mc, nullptr));
+          const PetscReal growth = (mc.total() - E0) / E0;
+          if (growth > ip.energy_growth_tol)
+            SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
+                    "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s, and the energy has grown by %.3g of the incident kinetic energy: the integration is unstable or inaccurate (not a physical chatter); reduce %s",
+                    ip.max_contacts, (double)te, (double)growth, fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol");
+          SETERRQ(comm, PETSC_ERR_NOT_CONVERGED, "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s: the ball is chattering on the beam", ip.max_contacts, (double)te);
+        }
         contact_start = te;
         t_stop        = t_cap;
         break;
@@ -1166,6 +1261,9 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   // Outcome and invariants.
   StateMeasures m1;
   PetscCall(MeasureState(P, ts, nullptr, &m1, nullptr));
+  PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) && std::isfinite(m1.angular_momentum), comm, PETSC_ERR_FP,
+             "the solution is not finite (NaN/Inf) at the end of the run, t = %g s, with -ts_type %s: no result is reported; the step is unstable%s", (double)t, res->ts_type.c_str(),
+             res->dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
   res->final_time             = t;
   res->ball_final_velocity    = m1.ball_v;
   res->acor                   = -m1.ball_v / ball.speed;

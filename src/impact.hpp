@@ -30,6 +30,7 @@ struct ImpactParams {
   PetscBool energy_check = PETSC_FALSE; // stop when the total energy grows beyond -impact_energy_growth_tol
   PetscReal energy_growth_tol = 1e-3;   // relative to the incident kinetic energy
   PetscBool check_unused_options = PETSC_FALSE; // not an option: the task asks for the check once the TS is set up
+  PetscBool report_setup = PETSC_FALSE; // not an option: print the integrator, its step and stability limit before the run
 };
 
 // What to record during the run (nothing by default): -monitor_* and -snapshot_times.
@@ -50,6 +51,7 @@ struct ImpactSeries {
   std::vector<PetscReal> ball_y, ball_v, compression, force;             // m, m/s, m, N
   std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated;     // J
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
+  std::vector<PetscReal> velocity_at_x;                                  // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
   std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
   std::vector<PetscReal> snapshot_time;                                  // s

@@ -174,7 +174,10 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
         PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
         PetscCall(opt("beam_strain", S.beam_strain, "J"));
         PetscCall(opt("total_energy", S.total_energy, "J"));
-        if (!S.velocity_at.empty()) PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
+        if (!S.velocity_at.empty()) {
+          PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
+          PetscCall(H5WriteDataset1D(gs, "velocity_at_x", S.velocity_at_x, "m"));
+        }
         PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
         H5Gclose(gs);
       }

@@ -1,6 +1,7 @@
 // Task drivers: option reading, runs, summaries and files. See tasks.hpp.
 #include "tasks.hpp"
 
+#include "convergence.hpp"
 #include "modal_reference.hpp"
 #include "modes.hpp"
 #include "options_util.hpp"
@@ -12,7 +13,7 @@
 namespace beamimpact {
 
 static const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
-static const char *const TaskNames[] = {"impact", "modes", "sweep", "Task", "TASK_", nullptr};
+static const char *const TaskNames[] = {"impact", "modes", "sweep", "convergence", "Task", "TASK_", nullptr};
 
 PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec)
 {
@@ -69,9 +70,9 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(comm,
                         "x %.4f m  acor %.6f  acor_corrected %.6f  contact_time %.4e s  peak_force %.4e N  max_compression %.4e m  contacts %" PetscInt_FMT
-                        "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
+                        "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  failed %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
                         (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
-                        r.rejected_steps, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+                        r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   PetscFunctionReturn(0);
 }
 
@@ -96,12 +97,12 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
     PetscCheck(!mon.any() && mon.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
     PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
     PetscCall(ModalReferenceRun(beam, ball, ip, &res));
+    PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal));
   } else {
     ip.check_unused_options = PETSC_TRUE;
+    ip.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
     PetscCall(ImpactRun(comm, beam, ball, ip, mon, &res));
   }
-  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal, res.dt_stable > 0 ? "" : ""));
-  if (res.dt_stable > 0) PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s)\n", (double)res.dt_stable, (double)res.omega_max_bound));
   PetscCall(ImpactPrintSummary(comm, res));
   if (!output.empty()) {
     RunRecord rec;
@@ -163,6 +164,7 @@ PetscErrorCode RunTask(MPI_Comm comm)
   case Task::Impact: PetscCall(TaskImpact(comm, out)); break;
   case Task::Modes: PetscCall(TaskModes(comm, out)); break;
   case Task::Sweep: PetscCall(TaskSweep(comm, out)); break;
+  case Task::Convergence: PetscCall(TaskConvergence(comm, out)); break;
   }
   PetscFunctionReturn(0);
 }

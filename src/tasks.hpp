@@ -12,7 +12,7 @@
 
 namespace beamimpact {
 
-enum class Task { Impact = 0, Modes = 1, Sweep = 2 };
+enum class Task { Impact = 0, Modes = 1, Sweep = 2, Convergence = 3 };
 
 // Reads -task and -output, dispatches.
 PetscErrorCode RunTask(MPI_Comm comm);

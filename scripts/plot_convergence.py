@@ -1,0 +1,231 @@
+#!/usr/bin/env python3
+"""Work-precision and convergence diagrams from beamimpact -task convergence files.
+
+    scripts/plot_convergence.py conv161.h5 -o out/conv161
+    scripts/plot_convergence.py spatial.h5 -o out/spatial
+
+For a file with integrator configurations (/configs) it writes
+  PREFIX-work-precision.png  ACOR error against wall time (log-log), one curve per
+                             configuration; the leapfrog baseline in black; the
+                             target error (-convergence_target) as a dotted line;
+  PREFIX-convergence.png     ACOR error and contact-time error against the step
+                             (adaptive runs: the mean step), with reference slopes.
+For a file with a spatial study (/spatial) it writes
+  PREFIX-spatial.png         |A(h) - A(0)| against h for the ACOR, contact time and
+                             peak force (A(0): the Richardson limit), slope 2 shown.
+Failed runs are left out; ACOR errors at or below the file's error floor (the
+reference's own accuracy, -convergence_error_floor) are drawn hollow at the floor.
+"""
+import argparse
+import os
+import sys
+
+NEEDED = "numpy, h5py and matplotlib"
+DEBIAN_PACKAGES = "python3-numpy python3-h5py python3-matplotlib"
+
+
+def _imports():
+    global np, h5py, plt
+    import numpy as np  # noqa: F401
+    import h5py  # noqa: F401
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: F401
+
+
+try:
+    _imports()
+except ImportError as err:
+    # Another python (a venv, conda) may be first on PATH: try Debian's once.
+    system = "/usr/bin/python3"
+    if os.environ.get("BEAMIMPACT_PLOT_REEXEC") != "1" and os.path.exists(system) and os.path.realpath(sys.executable) != os.path.realpath(system):
+        os.environ["BEAMIMPACT_PLOT_REEXEC"] = "1"
+        os.execv(system, [system, os.path.abspath(__file__)] + sys.argv[1:])
+    sys.stderr.write(
+        "plot_convergence.py: needs %s (%s).\n"
+        "On Debian/Ubuntu: sudo apt-get install %s\n" % (NEEDED, err, DEBIAN_PACKAGES)
+    )
+    sys.exit(2)
+
+
+def attr(obj, name, default=None):
+    v = obj.attrs.get(name, default)
+    if isinstance(v, bytes):
+        v = v.decode()
+    if hasattr(v, "item"):
+        v = v.item()
+    return v
+
+
+def scene_title(f):
+    law = attr(f, "ball_law", "?")
+    return "N = %d, L = %g m, x = %g m, %s ball" % (int(attr(f, "beam_nodes", 0)), attr(f, "beam_length", 0), attr(f, "impact_x", 0), law)
+
+
+def configs(f):
+    names = [n for n in str(attr(f, "configs", "")).split(",") if n]
+    out = []
+    for n in names:
+        g = f["configs"][n]
+        d = {k: np.asarray(g[k][:], dtype=float) for k in g.keys()}
+        d["name"] = n
+        d["method"] = attr(g, "method", "ts")
+        d["expected_order"] = float(attr(g, "expected_order", 0) or 0)
+        d["order_lsq"] = float(attr(g, "order_acor_lsq", float("nan")))
+        out.append(d)
+    return out
+
+
+def plot_floored(ax, x, e, floor, lab, st):
+    """One curve; points at or below the floor (the reference's accuracy) drawn hollow at the floor."""
+    ok = np.isfinite(x) & np.isfinite(e)
+    if ok.sum() == 0:
+        return
+    x, e = x[ok], e[ok]
+    y = np.maximum(e, floor) if floor > 0 else e
+    ax.loglog(x, y, label=lab, **st)
+    low = e <= floor
+    if low.any():
+        ax.loglog(x[low], y[low], linestyle="none", marker=st.get("marker", "o"), markersize=st.get("markersize", 5) + 3,
+                  markerfacecolor="white", markeredgecolor=st["color"], zorder=st.get("zorder", 2) + 1)
+
+
+def style(i, d):
+    if d["method"] == "leapfrog":
+        return dict(color="black", marker="s", linewidth=2.4, markersize=6, zorder=5)
+    markers = "o^vD<>pPhX*"
+    cmap = plt.get_cmap("tab10")
+    return dict(color=cmap(i % 10), marker=markers[i % len(markers)], linewidth=1.4, markersize=5)
+
+
+def label(d):
+    lab = d["name"]
+    if np.isfinite(d["order_lsq"]):
+        lab += " (p = %.2f)" % d["order_lsq"]
+    return lab
+
+
+def work_precision(f, prefix):
+    floor = float(attr(f, "convergence_error_floor", 0))
+    target = float(attr(f, "convergence_target", 1e-6))
+    fig, ax = plt.subplots(figsize=(8, 6))
+    for i, d in enumerate(configs(f)):
+        ok = d["failed"] == 0
+        plot_floored(ax, d["wall_time"][ok], d["acor_error"][ok], floor, label(d), style(i, d))
+    ax.axhline(target, color="grey", linestyle=":", linewidth=1)
+    ax.text(ax.get_xlim()[0], target, " target %g" % target, va="bottom", ha="left", color="grey", fontsize=8)
+    if floor > 0:
+        ax.axhline(floor, color="grey", linestyle="-.", linewidth=0.8)
+        ax.text(ax.get_xlim()[0], floor, " error floor %g (reference accuracy): hollow = at or below" % floor, va="bottom", ha="left", color="grey", fontsize=7)
+    s = f["summary"].attrs if "summary" in f else {}
+    note = ""
+    if "baseline_over_best" in s:
+        note = "\nat the target: best PETSc %s %.2e s, leapfrog %.2e s, baseline/best = %.2f" % (
+            attr(f["summary"], "best_config"), attr(f["summary"], "best_time"), attr(f["summary"], "baseline_time"), attr(f["summary"], "baseline_over_best"))
+    ax.set_xlabel("wall time, time stepping only (s, minimum of repeats)")
+    ax.set_ylabel("ACOR error |acor - acor_ref|")
+    ax.set_title("Work-precision: %s\nreference: %s%s" % (scene_title(f), attr(f, "convergence_reference", "?"), note), fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, loc="best")
+    fig.tight_layout()
+    path = prefix + "-work-precision.png"
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def convergence(f, prefix):
+    floor = float(attr(f, "convergence_error_floor", 0))
+    cfgs = configs(f)
+    fig, axes = plt.subplots(1, 2, figsize=(13, 6))
+    for ax, err, name in ((axes[0], "acor_error", "ACOR error (absolute)"), (axes[1], "contact_time_error", "contact-time error (relative)")):
+        hs, es = [], []
+        fl = floor if err == "acor_error" else 0.0
+        for i, d in enumerate(cfgs):
+            ok = (d["failed"] == 0) & np.isfinite(d["step"]) & np.isfinite(d[err])
+            if ok.sum() == 0:
+                continue
+            plot_floored(ax, d["step"][ok], d[err][ok], fl, label(d) if err == "acor_error" else d["name"], style(i, d))
+            hs.extend(d["step"][ok])
+            es.extend(np.maximum(d[err][ok], max(fl, 1e-16)))
+        if hs:
+            # Reference slopes through a common anchor at the upper left.
+            h0, h1 = min(hs), max(hs)
+            e0, emin = max(es), max(min(es) / 3, 1e-16)
+            hh = np.geomspace(h0, h1, 20)
+            for p in (1, 2, 3, 4, 5):
+                ee = e0 * (hh / h1) ** p
+                ax.loglog(hh, ee, color="grey", linestyle="--", linewidth=0.8)
+                # label where the line leaves the plot (left end or bottom edge)
+                k = np.argmax(ee >= emin) if ee[0] < emin else 0
+                ax.text(hh[k], max(ee[k], emin), " %d" % p, color="grey", fontsize=8, va="bottom", clip_on=True)
+            ax.set_ylim(emin, e0 * 3)
+        ax.set_xlabel("step (s): fixed step, or mean step of adaptive runs")
+        ax.set_ylabel(name)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7, loc="upper left")
+    fig.suptitle("Convergence through the contact events: %s (dashed: slopes 1-5)" % scene_title(f), fontsize=10)
+    fig.tight_layout()
+    path = prefix + "-convergence.png"
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def spatial(f, prefix):
+    g = f["spatial"]
+    h = g["h"][:]
+    fig, ax = plt.subplots(figsize=(7, 5.5))
+    for q, lim, lab in (("acor", "acor_limit", "ACOR (absolute)"), ("contact_time", "contact_time_limit", "contact time (relative)"), ("peak_force", "peak_force_limit", "peak force (relative)")):
+        a = g[q][:]
+        a0 = float(attr(g, lim))
+        e = np.abs(a - a0) / (1.0 if q == "acor" else abs(a0))
+        ok = e > 0
+        ok[-1] = False  # the last level defines the limit
+        if ok.sum():
+            ax.loglog(h[ok], e[ok], marker="o", label="%s, p = %.2f" % (lab, float(attr(g, q + "_order_lsq"))))
+    ok = np.ones(len(h), bool)
+    ok[-1] = False
+    if ok.sum():
+        ax.loglog(h[ok], (h[ok] / h[0]) ** 2 * 1e-2, color="grey", linestyle="--", label="slope 2")
+    nodes = g["nodes"][:].astype(int)
+    ax.set_xlabel("grid spacing h (m)")
+    ax.set_ylabel("|A(h) - A(0)|, A(0) Richardson limit")
+    ax.set_title("Spatial convergence, N = %s\nlimit: ACOR %.8f, contact time %.6e s" % (",".join(map(str, nodes)), float(attr(g, "acor_limit")), float(attr(g, "contact_time_limit"))), fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = prefix + "-spatial.png"
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("file", help="HDF5 file written by beamimpact -task convergence")
+    ap.add_argument("-o", "--output", help="output prefix (default: the file name without .h5)")
+    a = ap.parse_args()
+    prefix = a.output or os.path.splitext(a.file)[0]
+    try:
+        f = h5py.File(a.file, "r")
+    except OSError as err:
+        sys.stderr.write("plot_convergence.py: cannot read %s: %s\n" % (a.file, err))
+        return 1
+    written = []
+    with f:
+        if attr(f, "task") != "convergence":
+            sys.stderr.write("plot_convergence.py: %s was not written by -task convergence\n" % a.file)
+            return 1
+        if "configs" in f:
+            written += [work_precision(f, prefix), convergence(f, prefix)]
+        if "spatial" in f:
+            written.append(spatial(f, prefix))
+    for p in written:
+        print("wrote %s" % p)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The stability study (issue 5): every stiff and extreme case against every advertised
+# integrator, each cell verified against a reference or a clear diagnosis; writes
+# out/stability.h5 and docs/stability.md. See scripts/stability_matrix.py.
+#
+#   scripts/run_stability.sh [path/to/beamimpact] [stability_matrix.py options ...]
+#   scripts/run_stability.sh build/dev/beamimpact --jobs 2 --cases k-1e+08,double
+#
+# Without an executable it uses build/release/beamimpact, else the first
+# build/*/beamimpact (build one with: cmake --preset release && cmake --build --preset release).
+# Takes about 15 minutes on 2 cores (the stiff grids with explicit RK dominate).
+# Exit status: 0 when no cell is wrong.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(dirname "$here")"
+exe=""
+if [[ $# -gt 0 && "$1" != -* ]]; then
+  exe="$1"
+  shift
+  [[ -x "$exe" && ! -d "$exe" ]] || { echo "run_stability.sh: $exe is not an executable" >&2; exit 2; }
+else
+  for c in "$root/build/release/beamimpact" "$root"/build/*/beamimpact; do
+    if [[ -x "$c" ]]; then exe="$c"; break; fi
+  done
+  [[ -n "$exe" ]] || { echo "run_stability.sh: no build/*/beamimpact; build it (cmake --preset release && cmake --build --preset release) or pass its path" >&2; exit 2; }
+fi
+exe="$(readlink -f "$exe")"
+
+# Debian's python has numpy and h5py; the script re-executes itself with it otherwise.
+python=python3
+if [[ -x /usr/bin/python3 ]] && /usr/bin/python3 -c "import numpy, h5py" 2>/dev/null; then python=/usr/bin/python3; fi
+
+if [[ $(id -u) -eq 0 ]]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
+fi
+cd "$root"
+echo "stability study with $exe"
+exec "$python" "$here/stability_matrix.py" --exe "$exe" "$@"
