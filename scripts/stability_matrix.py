@@ -664,6 +664,8 @@ def write_markdown(path, study_args, table, refs, integ, all_cases, counts, elap
                 row.append("%.1e" % m["energy_error"] if "energy_error" in m else st)
             add("| `%s` | %s |" % (cid, " | ".join(row)))
     add("")
+    add(DIAGNOSTICS)
+    add("")
     add(SAFE_WHERE)
     add("")
     add("## Reproducing")
@@ -680,6 +682,44 @@ def write_markdown(path, study_args, table, refs, integ, all_cases, counts, elap
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
+
+DIAGNOSTICS = """## What the program tells you
+
+Checked by `tests/stability_subset.sh` (CTest `stability_subset`, about 20 s): each fires where it must,
+and none fires on the default scene.
+
+**Before the run** (`-task impact`): the integrator, its step and, for explicit types, the stability limit
+
+    ts rk (explicit)  dt 2.276e-05 s
+    explicit stability limit dt_max 6.0596e-05 s (omega_max <= 4.6677e+04 rad/s)
+
+and a warning when the step or the tolerance cannot resolve the contact:
+
+    WARNING: fixed step -ts_dt 0.0001 s resolves the contact time scale 0.00439367 s with only 44 steps: errors of 1e-3 or more in the ACOR are possible; use -ts_dt <= 1.10e-05 (T_r/400)
+    WARNING: fixed step -ts_dt 0.001 s is more than 1/8 of the contact time scale ...: the contact is poorly resolved and events may be missed
+    WARNING: adaptive step with -ts_rtol 0.0001 -ts_atol 0.0001 cannot resolve the contact (compression scale 0.00145 m, contact time 0.00439 s): ...
+
+Refused before any step: a fixed explicit step above dt_max (`-ts_dt 2.5e-06 is above the stability limit
+dt_max = 2.42538e-06 s of -ts_type rk -ts_rk_type 4 on this grid (N = 201, ...); use -ts_dt <= 2.42538e-06,
+fewer nodes, or an implicit type`), RK tableaus unstable on the imaginary axis, types that cannot roll back a
+step, an impact point that is held.
+
+**During the run** (`-impact_energy_check`, on in the study): growth of the total energy beyond
+`-impact_energy_growth_tol` (1e-3 of the incident energy; it can only be conserved with the linear law and
+lost with the hysteretic one) stops the run naming the time, integrator, step and likely cause:
+
+    energy grew by 0.00106 of the incident kinetic energy at t = 0.000951014 s (-ts_type rk -ts_rk_type 5dp, adaptive, last step 4.84458e-05 s): with the linear law energy can only be conserved; likely cause: the error controller let the step reach the explicit stability limit dt_max = 2.13674e-05 s; tighten -ts_rtol/-ts_atol or use a fixed -ts_dt below dt_max
+
+(for ARKIMEX: the contact force is its explicit part; for implicit types: the step or tolerance does not
+resolve the contact). A NaN/Inf in the state stops the run at once; more than `-impact_max_contacts` contacts
+is called chatter only when the energy has not grown (otherwise: an unstable integration).
+
+**After the run**: PETSc's diverged reasons as a sentence — a failed Newton solve with its SNES reason,
+iterations and residuals; a Newton iteration stalled at round-off with the `-snes_atol` that fixes it; too
+many rejected steps. A separation in the hysteretic law's loading branch (a missed maximum compression) and
+a non-finite final state are refused rather than reported. The summary line counts `rejected` steps and
+`failed` solves.
+"""
 
 SAFE_WHERE = """## Which integrator is safe where
 
