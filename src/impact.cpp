@@ -617,6 +617,40 @@ PetscErrorCode GatherDisplacement(ImpactProblem &P, TS ts, std::vector<PetscReal
   PetscFunctionReturn(0);
 }
 
+// Newton on the acceleration-scaled residual cannot go below its round-off floor
+// ~ eps * omega_max^2 * max|y| (the 5-point stencil cancels terms of size omega_max^2 y),
+// which on fine grids, stiff beams or after long flights exceeds rtol * |F_0|. Accept a
+// residual within 100x that floor (after at least one iteration) instead of stalling.
+struct NewtonFloor {
+  ImpactProblem *P      = nullptr;
+  TS             ts     = nullptr;
+  PetscReal      omega2 = 0; // (rad/s)^2, bound on omega_max^2
+};
+
+PetscErrorCode ConvergedWithRoundoffFloor(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  NewtonFloor &nf = *static_cast<NewtonFloor *>(ctx);
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
+  if (*reason != SNES_CONVERGED_ITERATING || it < 1) PetscFunctionReturn(0);
+  ImpactProblem &P = *nf.P;
+  Vec            X, V, Xb, Xr;
+  if (P.form == Formulation::SecondOrder) PetscCall(TS2GetSolution(nf.ts, &X, &V));
+  else PetscCall(TSGetSolution(nf.ts, &X));
+  PetscCall(DMCompositeGetAccess(P.pack, X, &Xb, &Xr));
+  const PetscScalar *x;
+  PetscReal          ymax = 0;
+  PetscCall(VecGetArrayRead(Xb, &x));
+  for (PetscInt i = 0; i < P.xe - P.xs; ++i) ymax = std::max(ymax, std::abs(x[i * P.dof]));
+  PetscCall(VecRestoreArrayRead(Xb, &x));
+  PetscCall(DMCompositeRestoreAccess(P.pack, X, &Xb, &Xr));
+  if (P.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ymax, 1, MPIU_REAL, MPIU_MAX, P.comm));
+  const PetscReal floor = 100 * PETSC_MACHINE_EPSILON * nf.omega2 * ymax * std::sqrt((PetscReal)P.op.N);
+  if (fnorm <= floor) *reason = SNES_CONVERGED_FNORM_ABS;
+  PetscFunctionReturn(0);
+}
+
 Formulation FormulationOfType(const char *type)
 {
   auto is = [&](const char *t) { return std::string(type) == t; };
@@ -806,15 +840,19 @@ struct Indicators {
 };
 
 // Returns the event crossed between a and b (or -1), and the indicator to locate.
-int CrossedEvent(ContactPhase phase, const Indicators &a, const Indicators &b)
+// A step starts on an indicator that may sit within tol on the wrong side of zero (an
+// event located from its pre-event side): the start counts as "before" within that band,
+// so the next event of the new phase is never missed (e.g. a maximum compression right
+// after a reload of the hysteretic ball).
+int CrossedEvent(ContactPhase phase, const Indicators &a, const Indicators &b, PetscReal tol)
 {
   switch (phase) {
   case ContactPhase::Loading:
-    if (a.cdot > 0 && b.cdot <= 0) return static_cast<int>(ContactEventKind::MaxCompression);
-    if (a.c > 0 && b.c <= 0) return static_cast<int>(ContactEventKind::Separation); // only if dc/dt was missed
+    if (a.cdot > -tol && b.cdot <= 0 && !(a.cdot <= 0 && b.cdot >= a.cdot)) return static_cast<int>(ContactEventKind::MaxCompression);
+    if (a.c > -tol && b.c <= 0 && !(a.c <= 0 && b.c >= a.c)) return static_cast<int>(ContactEventKind::Separation); // only if dc/dt was missed
     return -1;
   case ContactPhase::Unloading: {
-    const bool sep = a.c > 0 && b.c <= 0, rel = a.cdot < 0 && b.cdot >= 0;
+    const bool sep = a.c > 0 && b.c <= 0, rel = a.cdot < tol && b.cdot >= 0 && !(a.cdot >= 0 && b.cdot <= a.cdot);
     if (sep && rel) { // the earlier root by linear interpolation
       const PetscReal ts = a.c / (a.c - b.c), tr = a.cdot / (a.cdot - b.cdot);
       return static_cast<int>(tr < ts ? ContactEventKind::Reload : ContactEventKind::Separation);
@@ -931,6 +969,17 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
     PetscCall(PetscStrcmp(type, type_opt, &same));
     PetscCheck(same, comm, PETSC_ERR_ARG_WRONG, "TS type changed from %s to %s after setup: set -ts_type on the command line or in an options file", type_opt, type);
     res->ts_type = type;
+  }
+  NewtonFloor newton_floor;
+  if (P.form != Formulation::Explicit) {
+    PetscBool user_test;
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_convergence_test", &user_test));
+    if (!user_test) {
+      SNES snes;
+      newton_floor = {&P, ts, res->omega_max_bound * res->omega_max_bound};
+      PetscCall(TSGetSNES(ts, &snes));
+      PetscCall(SNESSetConvergenceTest(snes, ConvergedWithRoundoffFloor, &newton_floor, NULL));
+    }
   }
   PetscCall(TSSetErrorIfStepFails(ts, PETSC_FALSE)); // failures are explained by check_step below
   PetscCall(TSSetUp(ts));
@@ -1174,7 +1223,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
     steps++;
     Indicators g1;
     PetscCall(indicators(&g1));
-    const int ev = CrossedEvent(P.contact.phase, g0, g1);
+    const int ev = CrossedEvent(P.contact.phase, g0, g1, ip.event_tol);
     if (ev >= 0) {
       // Locate: bracket [ta, tb] with the base of the last step at ta. Illinois
       // iterations re-step from the base onto the estimated root until the
