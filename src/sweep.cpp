@@ -976,6 +976,7 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
     SweepCase c                   = SweepCaseFor(plan, base, 0);
     c.impact.max_time             = 1e-9;
     c.impact.check_unused_options = PETSC_TRUE;
+    c.impact.report_setup         = plan.quiet ? PETSC_FALSE : PETSC_TRUE; // integrator, step, warnings: once
     PetscCall(ImpactRun(farm.group, c.beam, c.ball, c.impact, MonitorRequest(), &probe));
   }
 
