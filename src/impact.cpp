@@ -834,17 +834,9 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
 
 namespace {
 
-// Which event a step crossed, given the phase at its start (indicators scaled).
-struct Indicators {
-  PetscReal c = 0, cdot = 0; // scaled compression and rate
-};
+} // namespace
 
-// Returns the event crossed between a and b (or -1), and the indicator to locate.
-// A step starts on an indicator that may sit within tol on the wrong side of zero (an
-// event located from its pre-event side): the start counts as "before" within that band,
-// so the next event of the new phase is never missed (e.g. a maximum compression right
-// after a reload of the hysteretic ball).
-int CrossedEvent(ContactPhase phase, const Indicators &a, const Indicators &b, PetscReal tol)
+int ContactCrossedEvent(ContactPhase phase, const EventIndicators &a, const EventIndicators &b, PetscReal tol)
 {
   switch (phase) {
   case ContactPhase::Loading:
@@ -866,13 +858,60 @@ int CrossedEvent(ContactPhase phase, const Indicators &a, const Indicators &b, P
   return -1;
 }
 
-PetscReal IndicatorOf(ContactEventKind k, const Indicators &g)
+PetscReal ContactEventIndicator(ContactEventKind k, const EventIndicators &g)
 {
   return (k == ContactEventKind::MaxCompression || k == ContactEventKind::Reload) ? g.cdot : g.c;
 }
 
-// The side a located root must end on: true when the post-event value is <= 0.
-bool FallingEvent(ContactEventKind k) { return k == ContactEventKind::MaxCompression || k == ContactEventKind::Separation; }
+bool ContactEventFalling(ContactEventKind k) { return k == ContactEventKind::MaxCompression || k == ContactEventKind::Separation; }
+
+PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
+                                 ContactTimeline *tl, ImpactResult *res, bool *force_changed)
+{
+  PetscFunctionBeginUser;
+  *force_changed = true;
+  switch (kind) {
+  case ContactEventKind::MaxCompression:
+    *force_changed = ContactHasHysteresis(ball);
+    ContactSwitch(ball, state, ContactPhase::Unloading, c);
+    break;
+  case ContactEventKind::Reload:
+    *force_changed = ContactHasHysteresis(ball);
+    ContactSwitch(ball, state, ContactPhase::Loading, c);
+    break;
+  case ContactEventKind::Separation:
+    if (state->phase == ContactPhase::Loading && ContactHasHysteresis(ball)) {
+      // The unloading branch was never applied: the ball would leave without its hysteresis loss.
+      char after[96] = "";
+      for (const ContactEvent &e : res->events)
+        if (e.kind == ContactEventKind::Reload) PetscCall(PetscSNPrintf(after, sizeof(after), " after the reload located at t = %g s", (double)e.time));
+      SETERRQ(comm, PETSC_ERR_PLIB,
+              "the ball separated at t = %g s while the hysteretic law was still in its loading branch: the maximum-compression event was missed%s, so the unloading (lossy) branch was skipped and "
+              "the result would be wrong; none is reported (%s; a defect of the event location: a different step changes whether it is hit)",
+              (double)te, after, method);
+    }
+    ContactSwitch(ball, state, ContactPhase::Separated, c);
+    if (res->contacts == 1) res->contact_time = te - tl->contact_start;
+    res->contact_time_total += te - tl->contact_start;
+    tl->t_stop = std::min(times.max_time, te + times.window);
+    break;
+  case ContactEventKind::ContactStart:
+    ContactSwitch(ball, state, ContactPhase::Loading, c);
+    res->contacts++;
+    tl->contact_start = te;
+    tl->t_stop        = times.max_time;
+    break;
+  }
+  const PetscReal F = ContactForce(ball, *state, c);
+  res->events.push_back({kind, te, c, F});
+  if (kind == ContactEventKind::MaxCompression) {
+    res->max_compression = std::max(res->max_compression, c);
+    res->peak_force      = std::max(res->peak_force, F);
+  }
+  PetscFunctionReturn(0);
+}
+
+namespace {
 
 } // namespace
 
@@ -915,7 +954,6 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   const PetscReal c_scale   = ContactCompressionScale(ball);
   const PetscReal v_scale   = ball.speed;
   const ImpactTimes times   = ImpactTimesOf(beam, ball, ip);
-  const PetscReal window    = times.window;
   const PetscReal t_cap     = times.max_time;
   const PetscReal k_bound   = ball.law == ContactLawKind::Linear ? ball.k : std::max(ball.m, ball.n) * ball.k1 * std::pow(2 * c_scale, ball.m - 1);
   res->omega_max_bound      = BeamMaxFrequencyBound(P.op, P.stencil, k_bound, ball.mass);
@@ -1148,7 +1186,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   PetscCall(record(0.0));
   PetscCall(take_snapshots(0.0));
 
-  auto indicators = [&](Indicators *g) -> PetscErrorCode {
+  auto indicators = [&](EventIndicators *g) -> PetscErrorCode {
     PetscReal c, cd;
     PetscFunctionBeginUser;
     PetscCall(CurrentCompression(P, ts, &c, &cd));
@@ -1207,16 +1245,18 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
 
   // Event-driven time stepping.
   const double wall0   = MPI_Wtime();
-  PetscReal    t       = 0, t_stop = t_cap, contact_start = 0;
+  PetscReal       t = 0;
+  ContactTimeline timeline;
+  timeline.t_stop = t_cap;
   PetscReal    dt_next = dt_nominal;
-  Indicators   g0;
+  EventIndicators g0;
   PetscCall(indicators(&g0));
   res->contacts = 1;
   res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
   PetscInt event_steps = 0, steps = 0;
-  while (t < t_stop * (1 - 1e-14)) {
+  while (t < timeline.t_stop * (1 - 1e-14)) {
     // Land exactly on the stop time and on the next snapshot time.
-    PetscReal target = t_stop;
+    PetscReal target = timeline.t_stop;
     if (next_snapshot < mon.snapshot_times.size()) target = std::min(target, mon.snapshot_times[next_snapshot]);
     PetscReal dt = fixed_step ? dt_next : std::min(dt_next, dt_cap);
     if (t + dt > target) dt = target - t;
@@ -1224,16 +1264,16 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
     PetscCall(TSStep(ts));
     PetscCall(check_step());
     steps++;
-    Indicators g1;
+    EventIndicators g1;
     PetscCall(indicators(&g1));
-    const int ev = CrossedEvent(P.contact.phase, g0, g1, ip.event_tol);
+    const int ev = ContactCrossedEvent(P.contact.phase, g0, g1, ip.event_tol);
     if (ev >= 0) {
       // Locate: bracket [ta, tb] with the base of the last step at ta. Illinois
       // iterations re-step from the base onto the estimated root until the
       // indicator is within tolerance on the post-event side.
       const auto kind    = static_cast<ContactEventKind>(ev);
-      const bool falling = FallingEvent(kind);
-      PetscReal  ta = t, tb = ts->ptime, ga = IndicatorOf(kind, g0), gb = IndicatorOf(kind, g1);
+      const bool falling = ContactEventFalling(kind);
+      PetscReal  ta = t, tb = ts->ptime, ga = ContactEventIndicator(kind, g0), gb = ContactEventIndicator(kind, g1);
       const PetscReal step_len = tb - ta; // a located event is within 1e-4 of this: an O(1e-8 dt^2) local error at a C^0 force switch
       bool       at_post = true;
       int        side    = 0;
@@ -1257,9 +1297,9 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
         PetscCall(TSStep(ts));
         PetscCall(check_step());
         event_steps++;
-        Indicators gn;
+        EventIndicators gn;
         PetscCall(indicators(&gn));
-        const PetscReal gv   = IndicatorOf(kind, gn);
+        const PetscReal gv   = ContactEventIndicator(kind, gn);
         const bool      post = falling ? gv <= 0 : gv >= 0;
         if (post) {
           tb = ts->ptime;
@@ -1279,54 +1319,19 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
       PetscReal c, cd;
       PetscCall(CurrentCompression(P, ts, &c, &cd));
       const PetscReal te = ts->ptime;
-      bool            rhs_changed = true;
-      switch (kind) {
-      case ContactEventKind::MaxCompression:
-        rhs_changed = ContactHasHysteresis(ball);
-        ContactSwitch(ball, &P.contact, ContactPhase::Unloading, c);
-        break;
-      case ContactEventKind::Reload:
-        rhs_changed = ContactHasHysteresis(ball);
-        ContactSwitch(ball, &P.contact, ContactPhase::Loading, c);
-        break;
-      case ContactEventKind::Separation:
-        if (P.contact.phase == ContactPhase::Loading && ContactHasHysteresis(ball)) {
-          // The unloading branch was never applied: the ball would leave without its hysteresis loss.
-          char after[96] = "";
-          for (const ContactEvent &e : res->events)
-            if (e.kind == ContactEventKind::Reload) PetscCall(PetscSNPrintf(after, sizeof(after), " after the reload located at t = %g s", (double)e.time));
-          SETERRQ(comm, PETSC_ERR_PLIB,
-                  "the ball separated at t = %g s while the hysteretic law was still in its loading branch: the maximum-compression event was missed%s, so the unloading (lossy) branch was skipped and "
-                  "the result would be wrong; none is reported (-ts_type %s; a defect of the event location: a different -ts_dt changes whether it is hit)",
-                  (double)te, after, res->ts_type.c_str());
-        }
-        ContactSwitch(ball, &P.contact, ContactPhase::Separated, c);
-        if (res->contacts == 1) res->contact_time = te - contact_start;
-        res->contact_time_total += te - contact_start;
-        t_stop = std::min(t_cap, te + window);
-        break;
-      case ContactEventKind::ContactStart:
-        ContactSwitch(ball, &P.contact, ContactPhase::Loading, c);
-        res->contacts++;
-        if (res->contacts > ip.max_contacts) { // physical chatter, or an integration that went wrong? The energy tells.
-          StateMeasures mc;
-          PetscCall(MeasureState(P, ts, nullptr, &mc, nullptr));
-          const PetscReal growth = (mc.total() - E0) / E0;
-          if (growth > ip.energy_growth_tol)
-            SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
-                    "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s, and the energy has grown by %.3g of the incident kinetic energy: the integration is unstable or inaccurate (not a physical chatter); reduce %s",
-                    ip.max_contacts, (double)te, (double)growth, fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol");
-          SETERRQ(comm, PETSC_ERR_NOT_CONVERGED, "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s: the ball is chattering on the beam", ip.max_contacts, (double)te);
-        }
-        contact_start = te;
-        t_stop        = t_cap;
-        break;
-      }
-      const PetscReal F = ContactForce(ball, P.contact, c);
-      res->events.push_back({kind, te, c, F});
-      if (kind == ContactEventKind::MaxCompression) {
-        res->max_compression = std::max(res->max_compression, c);
-        res->peak_force      = std::max(res->peak_force, F);
+      bool            rhs_changed;
+      char            method[128];
+      PetscCall(PetscSNPrintf(method, sizeof(method), "-ts_type %s", res->ts_type.c_str()));
+      PetscCall(ContactEventApply(comm, kind, te, c, ball, times, method, &P.contact, &timeline, res, &rhs_changed));
+      if (kind == ContactEventKind::ContactStart && res->contacts > ip.max_contacts) { // physical chatter, or an integration gone wrong? The energy tells.
+        StateMeasures mc;
+        PetscCall(MeasureState(P, ts, nullptr, &mc, nullptr));
+        const PetscReal growth = (mc.total() - E0) / E0;
+        if (growth > ip.energy_growth_tol)
+          SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
+                  "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s, and the energy has grown by %.3g of the incident kinetic energy: the integration is unstable or inaccurate (not a physical chatter); reduce %s",
+                  ip.max_contacts, (double)te, (double)growth, fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol");
+        SETERRQ(comm, PETSC_ERR_NOT_CONVERGED, "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s: the ball is chattering on the beam", ip.max_contacts, (double)te);
       }
       if (rhs_changed) PetscCall(TSRestartStep(ts));
       PetscCall(indicators(&g1));
@@ -1342,8 +1347,8 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   res->wall_time = MPI_Wtime() - wall0;
   res->ended_in_contact = P.contact.phase != ContactPhase::Separated ? PETSC_TRUE : PETSC_FALSE;
   if (res->ended_in_contact) {
-    res->contact_time_total += t - contact_start;
-    if (res->contacts == 1) res->contact_time = t - contact_start;
+    res->contact_time_total += t - timeline.contact_start;
+    if (res->contacts == 1) res->contact_time = t - timeline.contact_start;
   }
 
   // Outcome and invariants.

@@ -119,6 +119,31 @@ ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const 
 PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, ImpactParams *p);
 PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, MonitorRequest *m);
 
+// Event-driven contact, shared by ImpactRun and the leapfrog baseline.
+// Scaled indicators: c / c_scale and (dc/dt) / v_i.
+struct EventIndicators {
+  PetscReal c = 0, cdot = 0;
+};
+// The event crossed between indicator values a (step start) and b (step end) in `phase`
+// (-1: none). A start within tol of zero on the wrong side (an event located from its
+// pre-event side) counts as before the crossing, so the next event is never missed.
+int ContactCrossedEvent(ContactPhase phase, const EventIndicators &a, const EventIndicators &b, PetscReal tol);
+// The indicator an event is located on, and whether it falls through zero.
+PetscReal ContactEventIndicator(ContactEventKind k, const EventIndicators &g);
+bool      ContactEventFalling(ContactEventKind k);
+// The run's contact bookkeeping between events.
+struct ContactTimeline {
+  PetscReal contact_start = 0; // s, start of the current (or last) contact
+  PetscReal t_stop        = 0; // s, the run ends here unless another contact starts
+};
+// Applies a located event at time te with compression c (m): switches the law's phase,
+// records the event, peak force and contact times, moves the stop time. *force_changed
+// tells whether the force law changed (the integrator must restart). A separation still in
+// the hysteretic loading branch (a missed maximum compression) is an error: the result would
+// lack the ball's loss. The caller checks -impact_max_contacts.
+PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
+                                 ContactTimeline *tl, ImpactResult *res, bool *force_changed);
+
 // Runs one impact on comm (the DMDA is distributed over its ranks). The TS is
 // configured from the options database (no prefix): -ts_type and friends.
 PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams &ball, const ImpactParams &impact, const MonitorRequest &monitor, ImpactResult *result);

@@ -90,34 +90,6 @@ struct LeapfrogProblem {
   }
 };
 
-// Scaled event indicators: c / c_scale and (dc/dt) / v_i.
-struct LeapfrogIndicators {
-  PetscReal c = 0, cdot = 0;
-};
-
-// The event crossed in a step that started in `phase` (-1: none); the same rules as ImpactRun.
-int LeapfrogCrossedEvent(ContactPhase phase, const LeapfrogIndicators &a, const LeapfrogIndicators &b)
-{
-  switch (phase) {
-  case ContactPhase::Loading:
-    if (a.cdot > 0 && b.cdot <= 0) return static_cast<int>(ContactEventKind::MaxCompression);
-    if (a.c > 0 && b.c <= 0) return static_cast<int>(ContactEventKind::Separation);
-    return -1;
-  case ContactPhase::Unloading: {
-    const bool sep = a.c > 0 && b.c <= 0, rel = a.cdot < 0 && b.cdot >= 0;
-    if (sep && rel) {
-      const PetscReal ts = a.c / (a.c - b.c), tr = a.cdot / (a.cdot - b.cdot);
-      return static_cast<int>(tr < ts ? ContactEventKind::Reload : ContactEventKind::Separation);
-    }
-    if (sep) return static_cast<int>(ContactEventKind::Separation);
-    if (rel) return static_cast<int>(ContactEventKind::Reload);
-    return -1;
-  }
-  case ContactPhase::Separated: return a.c < 0 && b.c >= 0 ? static_cast<int>(ContactEventKind::ContactStart) : -1;
-  }
-  return -1;
-}
-
 } // namespace
 
 PetscErrorCode LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p)
@@ -193,7 +165,7 @@ PetscErrorCode LeapfrogRun(const BeamParams &beam, const BallParams &ball, const
   LeapfrogState *cur = &S0, *nxt = &S1;
   const auto     m0  = P.Measure(*cur, ip.x);
 
-  auto indicators = [&](const LeapfrogState &s, PetscReal t, LeapfrogIndicators *g) -> PetscErrorCode {
+  auto indicators = [&](const LeapfrogState &s, PetscReal t, EventIndicators *g) -> PetscErrorCode {
     PetscFunctionBeginUser;
     g->c    = s.c / c_scale;
     g->cdot = P.CompressionRate(s) / v_scale;
@@ -202,26 +174,27 @@ PetscErrorCode LeapfrogRun(const BeamParams &beam, const BallParams &ball, const
   };
 
   const double wall0 = MPI_Wtime();
-  PetscReal    t = 0, t_stop = times.max_time, contact_start = 0;
+  PetscReal       t = 0;
+  ContactTimeline timeline;
+  timeline.t_stop = times.max_time;
   PetscInt     steps = 0, event_steps = 0;
-  LeapfrogIndicators g0, g1;
+  EventIndicators g0, g1;
   PetscCall(indicators(*cur, t, &g0));
   res->contacts = 1;
   res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
-  while (t < t_stop * (1 - 1e-14)) {
-    const PetscReal tau = std::min(dt, t_stop - t);
+  while (t < timeline.t_stop * (1 - 1e-14)) {
+    const PetscReal tau = std::min(dt, timeline.t_stop - t);
     P.Step(*cur, *nxt, tau);
     steps++;
     PetscCall(indicators(*nxt, t + tau, &g1));
     PetscReal   taken = tau;
-    const int   ev    = LeapfrogCrossedEvent(P.contact.phase, g0, g1);
+    const int   ev    = ContactCrossedEvent(P.contact.phase, g0, g1, ip.event_tol);
     if (ev >= 0) {
       // Locate: re-step from the saved start (cur) with step tn in (ta, tb) until the
       // indicator is within tolerance (Illinois iterations, as ImpactRun).
       const auto kind    = static_cast<ContactEventKind>(ev);
-      const bool falling = kind == ContactEventKind::MaxCompression || kind == ContactEventKind::Separation;
-      const bool use_c   = kind == ContactEventKind::ContactStart || kind == ContactEventKind::Separation;
-      auto       ind     = [&](const LeapfrogIndicators &g) { return use_c ? g.c : g.cdot; };
+      const bool falling = ContactEventFalling(kind);
+      auto       ind     = [&](const EventIndicators &g) { return ContactEventIndicator(kind, g); };
       PetscReal  ta = 0, tb = tau, ga = ind(g0), gb = ind(g1);
       bool       at_post = true;
       int        side    = 0;
@@ -262,36 +235,9 @@ PetscErrorCode LeapfrogRun(const BeamParams &beam, const BallParams &ball, const
       taken              = at_post ? tb : ta;
       const PetscReal te = t + taken;
       const PetscReal c  = nxt->c;
-      bool            force_changed = true;
-      switch (kind) {
-      case ContactEventKind::MaxCompression:
-        force_changed = ContactHasHysteresis(ball);
-        ContactSwitch(ball, &P.contact, ContactPhase::Unloading, c);
-        break;
-      case ContactEventKind::Reload:
-        force_changed = ContactHasHysteresis(ball);
-        ContactSwitch(ball, &P.contact, ContactPhase::Loading, c);
-        break;
-      case ContactEventKind::Separation:
-        ContactSwitch(ball, &P.contact, ContactPhase::Separated, c);
-        if (res->contacts == 1) res->contact_time = te - contact_start;
-        res->contact_time_total += te - contact_start;
-        t_stop = std::min(times.max_time, te + times.window);
-        break;
-      case ContactEventKind::ContactStart:
-        ContactSwitch(ball, &P.contact, ContactPhase::Loading, c);
-        res->contacts++;
-        PetscCheck(res->contacts <= ip.max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "leapfrog: more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s", ip.max_contacts, (double)te);
-        contact_start = te;
-        t_stop        = times.max_time;
-        break;
-      }
-      const PetscReal F = ContactForce(ball, P.contact, c);
-      res->events.push_back({kind, te, c, F});
-      if (kind == ContactEventKind::MaxCompression) {
-        res->max_compression = std::max(res->max_compression, c);
-        res->peak_force      = std::max(res->peak_force, F);
-      }
+      bool            force_changed;
+      PetscCall(ContactEventApply(PETSC_COMM_SELF, kind, te, c, ball, times, "leapfrog", &P.contact, &timeline, res, &force_changed));
+      PetscCheck(res->contacts <= ip.max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "leapfrog: more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s", ip.max_contacts, (double)te);
       if (force_changed) P.Force(*nxt, 0.0); // a of the new phase at the event state
       PetscCall(indicators(*nxt, te, &g1));
     }
@@ -302,8 +248,8 @@ PetscErrorCode LeapfrogRun(const BeamParams &beam, const BallParams &ball, const
   res->wall_time        = MPI_Wtime() - wall0;
   res->ended_in_contact = P.contact.phase != ContactPhase::Separated ? PETSC_TRUE : PETSC_FALSE;
   if (res->ended_in_contact) {
-    res->contact_time_total += t - contact_start;
-    if (res->contacts == 1) res->contact_time = t - contact_start;
+    res->contact_time_total += t - timeline.contact_start;
+    if (res->contacts == 1) res->contact_time = t - timeline.contact_start;
   }
 
   const auto m1               = P.Measure(*cur, ip.x);
