@@ -20,33 +20,16 @@ import argparse
 import os
 import sys
 
-NEEDED = "numpy, h5py and matplotlib"
-DEBIAN_PACKAGES = "python3-numpy python3-h5py python3-matplotlib"
 
 
-def _imports():
-    global np, h5py, plt
-    import numpy as np  # noqa: F401
-    import h5py  # noqa: F401
-    import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from debian_python import require  # noqa: E402
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # noqa: F401
+require(__file__, "numpy", "h5py", "matplotlib")
+import numpy as np  # noqa: E402
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
 
-
-try:
-    _imports()
-except ImportError as err:
-    # Another python (a venv, conda) may be first on PATH: try Debian's once.
-    system = "/usr/bin/python3"
-    if os.environ.get("BEAMIMPACT_PLOT_REEXEC") != "1" and os.path.exists(system) and os.path.realpath(sys.executable) != os.path.realpath(system):
-        os.environ["BEAMIMPACT_PLOT_REEXEC"] = "1"
-        os.execv(system, [system, os.path.abspath(__file__)] + sys.argv[1:])
-    sys.stderr.write(
-        "plot_convergence.py: needs %s (%s).\n"
-        "On Debian/Ubuntu: sudo apt-get install %s\n" % (NEEDED, err, DEBIAN_PACKAGES)
-    )
-    sys.exit(2)
 
 
 def attr(obj, name, default=None):

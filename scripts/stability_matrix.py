@@ -33,22 +33,14 @@ a usage or set-up problem.
 import os
 import sys
 
-NEEDED = "numpy and h5py"
-DEBIAN_PACKAGES = "python3-numpy python3-h5py"
 
-try:
-    import numpy as np
-    import h5py
-except ImportError as err:
-    # Another python (a venv, conda) may be first on PATH: try Debian's once.
-    system = "/usr/bin/python3"
-    if (os.environ.get("BEAMIMPACT_STABILITY_REEXEC") != "1" and os.path.exists(system)
-            and os.path.realpath(sys.executable) != os.path.realpath(system)):
-        os.environ["BEAMIMPACT_STABILITY_REEXEC"] = "1"
-        os.execv(system, [system, os.path.abspath(__file__)] + sys.argv[1:])
-    sys.stderr.write("stability_matrix.py: needs %s (%s).\nOn Debian/Ubuntu: sudo apt-get install %s\n"
-                     % (NEEDED, err, DEBIAN_PACKAGES))
-    sys.exit(2)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from debian_python import require  # noqa: E402
+
+require(__file__, "numpy", "h5py")
+import numpy as np  # noqa: E402
+import h5py  # noqa: E402
+
 
 import argparse
 import concurrent.futures
