@@ -4,6 +4,8 @@
 // masses, the impact stencil and the -beam_* options reader.
 #include "beam.hpp"
 
+#include "test_helpers.hpp"
+
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -18,18 +20,11 @@ using namespace beamimpact;
 
 namespace {
 
-constexpr PetscReal kE = 7e10, kRho = 2700, kWidth = 0.032, kThick = 0.006;
+
 
 BeamParams Aluminium(Support left, Support right, PetscInt nodes, PetscReal length = 1.1)
 {
-  BeamParams p;
-  p.length = length;
-  p.mu     = kRho * kThick * kWidth;
-  p.EI     = kE * kWidth * kThick * kThick * kThick / 12.0;
-  p.nodes  = nodes;
-  p.left   = left;
-  p.right  = right;
-  return p;
+  return test::AluminiumBeam(length, nodes, left, right); // the paper's 6 mm x 32 mm section
 }
 
 struct Config {

@@ -26,6 +26,18 @@ inline BeamParams AluminiumBeam(PetscReal length, PetscInt nodes = 41, Support l
   return p;
 }
 
+// A beam made rigid and heavy, clamped at both ends: a wall for the ball.
+inline BeamParams WallBeam(PetscReal EI, PetscReal mu, PetscInt nodes = 21)
+{
+  BeamParams p;
+  p.length = 1.1;
+  p.nodes  = nodes;
+  p.left = p.right = Support::Clamped;
+  p.EI             = EI; // N m^2
+  p.mu             = mu; // kg/m
+  return p;
+}
+
 inline BallParams Superball(ContactLawKind law = ContactLawKind::Linear)
 {
   BallParams b; // 42 g, 1 m/s, k = 2e4 N/m; hysteresis k1 = 2e4, m = 1, n = 1.768

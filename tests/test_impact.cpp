@@ -13,17 +13,7 @@ using namespace beamimpact::test;
 namespace {
 const std::vector<std::pair<std::string, std::string>> CN_FINE = {{"-ts_type", "cn"}, {"-ts_dt", "1e-6"}};
 
-// A beam made rigid and heavy, held at both ends: a wall.
-BeamParams Wall()
-{
-  BeamParams p;
-  p.length = 1.1;
-  p.nodes  = 21;
-  p.left = p.right = Support::Clamped;
-  p.EI             = 1e10;
-  p.mu             = 1e5;
-  return p;
-}
+BeamParams Wall() { return WallBeam(1e10, 1e5); }
 } // namespace
 
 TEST(WallLimit, LinearSpringContactTimeAndACOR)

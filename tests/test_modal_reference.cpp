@@ -46,12 +46,7 @@ TEST(ModalReference, MatchesATightRunToOneInABillion)
 
 TEST(ModalReference, WallLimit)
 {
-  BeamParams wall;
-  wall.length = 1.1;
-  wall.nodes  = 21;
-  wall.left = wall.right = Support::Clamped;
-  wall.EI                = 1e12;
-  wall.mu                = 1e7;
+  const BeamParams wall = WallBeam(1e12, 1e7);
   ImpactParams ip;
   ip.x                 = 0.55;
   const BallParams   b = Superball();

@@ -6,6 +6,8 @@
 //   mpiexec -n 2 ./test_modes
 #include "modes.hpp"
 
+#include "test_helpers.hpp"
+
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -16,18 +18,11 @@ using namespace beamimpact;
 
 namespace {
 
-constexpr PetscReal kE = 7e10, kRho = 2700, kWidth = 0.032, kThick = 0.006, kLength = 1.1;
+constexpr PetscReal kLength = 1.1; // m
 
 BeamParams Aluminium(Support left, Support right, PetscInt nodes)
 {
-  BeamParams p;
-  p.length = kLength;
-  p.mu     = kRho * kThick * kWidth;
-  p.EI     = kE * kWidth * kThick * kThick * kThick / 12.0;
-  p.nodes  = nodes;
-  p.left   = left;
-  p.right  = right;
-  return p;
+  return test::AluminiumBeam(kLength, nodes, left, right); // the paper's 6 mm x 32 mm section
 }
 
 // sqrt(EI/mu)/L^2 (rad/s): omega_n = (beta_n L)^2 times this.
