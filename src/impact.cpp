@@ -305,18 +305,17 @@ PetscErrorCode I2Function(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, void *
   PetscFunctionReturn(0);
 }
 
-// Assembles J = shift * D + [first order: [0 -I; (K + kc g g^T)/m 0]] or
-// [second order: (K + kc g g^T)/m], D the identity. kc: contact stiffness dF/dc
-// (0 when the contact is not in the implicit part). Pattern fixed from the start
-// (zeros kept), so the factorisation is symbolic once and numeric only when
-// (shift, kc) change: a constant Jacobian is factored once per contact phase.
+// Assembles J = shift * I + [first order: [0 -I; (K + kc g g^T)/m 0]] or
+// [second order: (K + kc g g^T)/m] entry by entry, with every entry of the final pattern
+// (contact coupling and held rows as explicit zeros). Called once, with shift = kc = 0, to
+// build the constant part J0 and fix the pattern; AssembleJacobian then updates J from J0.
 PetscErrorCode AssembleJacobianFull(ImpactProblem &P, PetscReal shift, PetscReal kc)
 {
   const bool           first = P.dof == 2;
   const ImpactStencil &st    = P.stencil;
   const PetscInt       cp[3] = {st.j, st.j + 1, -1}; // coupled dofs (node, node, ball)
   const PetscReal      g[3]  = {-st.w, -(1.0 - st.w), 1.0};
-  const PetscInt       dpos  = first ? 0 : 0;        // displacement component
+  const PetscInt       dpos  = 0;                    // displacement component (first in both forms)
   const PetscInt       dvel  = first ? 1 : 0;        // row component carrying the dynamics
 
   PetscFunctionBeginUser;
