@@ -38,7 +38,7 @@ ranks=${BENCH_RANKS:-"1 2"}
 repeat=${BENCH_REPEAT:-3}
 mpiexec=${MPIEXEC:-mpiexec}
 # Open MPI refuses to run as root without these; harmless elsewhere.
-if [[ $(id -u) -eq 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}; fi
+source "$(dirname "${BASH_SOURCE[0]}")/mpi-env.sh"
 
 defaults=(-beam_length 1.1 -beam_left free -beam_right free -ball_law linear
           -ts_type rk -ts_rk_type 4 -ts_adapt_type none

@@ -31,9 +31,7 @@ exe="$(readlink -f "$exe")"
 python=python3
 if [[ -x /usr/bin/python3 ]] && /usr/bin/python3 -c "import numpy, h5py" 2>/dev/null; then python=/usr/bin/python3; fi
 
-if [[ $(id -u) -eq 0 ]]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
-fi
+source "$here/mpi-env.sh"
 cd "$root"
 echo "stability study with $exe"
 exec "$python" "$here/stability_matrix.py" --exe "$exe" "$@"

@@ -33,12 +33,8 @@ command -v h5dump >/dev/null || { echo "FAIL: h5dump not found (Debian: apt-get 
 mkdir -p "$dir" && dir=$(readlink -f "$dir")
 cd "$(dirname "${BASH_SOURCE[0]}")/.." || exit 1
 rm -rf "${dir:?}"/*.h5 "${dir:?}"/*.h5.parts "${dir:?}"/*.log
-if [[ $(id -u) -eq 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}; fi
-export OMPI_MCA_rmaps_base_oversubscribe=${OMPI_MCA_rmaps_base_oversubscribe:-1}
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" # MPI env, fail/pass, $python
 
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-pass() { echo "ok:   $*"; }
 
 # run NAME RANKS OPTS_FILE [options...]: one run, output $dir/NAME.h5, log $dir/NAME.log
 run() {

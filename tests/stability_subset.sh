@@ -24,11 +24,8 @@ exe=$(readlink -f "$exe")
 mkdir -p "$dir" || exit 1
 dir=$(readlink -f "$dir")
 cd "$src" || exit 1 # options files name their bases relative to the repository root
-if [[ $(id -u) -eq 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}; fi
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" # MPI env, fail/pass, $python
 
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-pass() { echo "ok:   $*"; }
 
 # The paper's beam and superball, explicitly (independent of the options files).
 BEAM="-beam_length 1.1 -beam_youngs_modulus 7e10 -beam_density 2700 -beam_thickness 0.006 -beam_width 0.032 -beam_nodes 41"
@@ -141,10 +138,6 @@ run $BEAM $BALL -beam_length 0.3 -beam_left clamped -ball_mass 0.1 -impact_x 0.2
 if [[ $rc -eq 0 && "$(field contacts)" == 3 ]]; then pass "triple impact: 3 contacts"; else fail "triple impact: contacts '$(field contacts)': $out"; fi
 
 # --- a slice of the study script -------------------------------------------------------------------
-python=""
-for p in /usr/bin/python3 python3; do
-  if command -v "$p" >/dev/null && "$p" -c "import h5py, numpy" 2>/dev/null; then python=$p; break; fi
-done
 if [[ -n "$python" ]]; then
   log=$("$python" "$src/scripts/stability_matrix.py" --exe "$exe" --jobs 2 --quiet --cases default,heavy-rigid,pinned-point,dt-above \
         --integrators rk4,cn,rosw --h5 "$dir/slice.h5" --md "$dir/slice.md" --workdir "$dir/slice" 2>&1)

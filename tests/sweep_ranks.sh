@@ -23,17 +23,9 @@ exe=$(readlink -f "$exe")
 [[ -x "$exe" ]] || { echo "FAIL: $1 is not an executable"; exit 1; }
 mkdir -p "$dir" && cd "$dir" || exit 1
 rm -rf ranks_* edge_*
-if [[ $(id -u) -eq 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}; fi
-export OMPI_MCA_rmaps_base_oversubscribe=${OMPI_MCA_rmaps_base_oversubscribe:-1}
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" # MPI env, fail/pass, $python
 
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-pass() { echo "ok:   $*"; }
 
-python=""
-for p in /usr/bin/python3 python3; do
-  if command -v "$p" >/dev/null && "$p" -c "import h5py, numpy" 2>/dev/null; then python=$p; break; fi
-done
 
 # same_file A B [tol] [rows-only]: datasets equal within tol (wall_time skipped),
 # attributes equal except options (rows-only: /results only, no attributes).

@@ -23,15 +23,8 @@ exe=$(readlink -f "$exe")
 [[ -x "$exe" ]] || { echo "FAIL: $1 is not an executable"; exit 1; }
 mkdir -p "$dir" && cd "$dir" || exit 1
 rm -rf resume_*
-if [[ $(id -u) -eq 0 ]]; then export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}; fi
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" # MPI env, fail/pass, $python
 
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-pass() { echo "ok:   $*"; }
-python=""
-for p in /usr/bin/python3 python3; do
-  if command -v "$p" >/dev/null && "$p" -c "import h5py, numpy" 2>/dev/null; then python=$p; break; fi
-done
 
 # Slow enough cases (~0.1 s each on one core) that the kill lands mid-sweep.
 N=24
