@@ -1,6 +1,6 @@
 // Contact laws and the rigid-body formula against closed forms.
-#include "contact.hpp"
-#include "rigid.hpp"
+#include "model/contact.hpp"
+#include "model/rigid.hpp"
 
 #include <gtest/gtest.h>
 

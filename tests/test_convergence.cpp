@@ -3,8 +3,8 @@
 // (linear spring, coarse grid N = 21, to the first separation), the modal reference
 // against a tight-tolerance run, the order and Richardson formulas, and the
 // isolation of one configuration's options from the next.
-#include "convergence.hpp"
-#include "modal_reference.hpp"
+#include "studies/convergence.hpp"
+#include "solvers/modal_reference.hpp"
 #include "test_helpers.hpp"
 
 #include <cmath>

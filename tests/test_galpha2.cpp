@@ -15,7 +15,7 @@
 // type's own functions then fail, by design) and run
 // --gtest_filter='GAlpha2.Order*:GAlpha2.Events*' (numbers in the comments of
 // OrderWithRestartEvery7Steps and EventsLocateAtSecondOrder).
-#include "ts_galpha2.hpp"
+#include "solvers/ts_galpha2.hpp"
 
 #include <gtest/gtest.h>
 #include <petscts.h>

@@ -2,7 +2,7 @@
 // one impact with TS options pushed into the options database for its duration.
 #pragma once
 
-#include "impact.hpp"
+#include "run/impact.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // One impact through the PETSc TS problem, against closed forms and invariants:
 // the wall limit, the rigid-body limit (Eq. 11), energy and momentum, and the
 // same answer on 1 and 2 ranks. Runs at np1 and np2.
-#include "contact.hpp"
-#include "rigid.hpp"
+#include "model/contact.hpp"
+#include "model/rigid.hpp"
 #include "test_helpers.hpp"
 
 #include <cmath>

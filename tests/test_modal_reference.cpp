@@ -1,7 +1,7 @@
 // The exact modal reference against a tight-tolerance TS run of the same semi-discrete
 // model (to 1e-9), the wall and rigid-body limits, and energy conservation.
-#include "modal_reference.hpp"
-#include "rigid.hpp"
+#include "solvers/modal_reference.hpp"
+#include "model/rigid.hpp"
 #include "test_helpers.hpp"
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // L = 1.1 m. Runs at 1 and 2 MPI ranks: the solve is on PETSC_COMM_WORLD.
 //
 //   mpiexec -n 2 ./test_modes
-#include "modes.hpp"
+#include "solvers/modes.hpp"
 
 #include "test_helpers.hpp"
 

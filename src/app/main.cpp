@@ -7,7 +7,7 @@
 // The driver only initialises, dispatches the task and finalises. Errors are
 // reported as one plain message (the option, the value, what is allowed);
 // -error_traceback shows PETSc's full traceback instead.
-#include "tasks.hpp"
+#include "app/tasks.hpp"
 
 #include <slepcsys.h>
 

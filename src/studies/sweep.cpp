@@ -15,12 +15,12 @@
 // written with the same parameters, rewrites F with every row found, and
 // computes only the missing cases. At the end rank 0 gathers this run's rows
 // over MPI, writes the complete F and removes F.parts.
-#include "sweep.hpp"
+#include "studies/sweep.hpp"
 
-#include "options_util.hpp"
-#include "results_h5.hpp"
-#include "rigid.hpp"
-#include "tasks.hpp"
+#include "io/options_util.hpp"
+#include "io/results_h5.hpp"
+#include "model/rigid.hpp"
+#include "app/tasks.hpp"
 
 #include <hdf5.h>
 

@@ -6,7 +6,7 @@
 // of dc/ds (maximum compression). Roots are bracketed with steps that provably
 // cannot skip a crossing (a Taylor bound with |f''| <= sum_k |gamma_k a_k| w_k^2),
 // then bisected to round-off.
-#include "modal_reference.hpp"
+#include "solvers/modal_reference.hpp"
 
 #include <petscblaslapack.h>
 

@@ -17,7 +17,7 @@
 // Units: SI (m, kg, s, N); omega in rad/s, frequency in Hz, period in s.
 #pragma once
 
-#include "beam.hpp"
+#include "model/beam.hpp"
 
 #include <petscsys.h>
 

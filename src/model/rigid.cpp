@@ -1,5 +1,5 @@
 // Rigid-body collision model, Eq. (11) of the paper. See rigid.hpp.
-#include "rigid.hpp"
+#include "model/rigid.hpp"
 
 #include <cmath>
 #include <limits>

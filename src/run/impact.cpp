@@ -1,10 +1,10 @@
 // One ball-beam impact as a PETSc TS problem: DM layout, residuals and
 // Jacobians for each formulation, the event-driven contact, and the outcome.
 // See impact.hpp for the model and MODEL.md section 3 for the numerics.
-#include "impact.hpp"
+#include "run/impact.hpp"
 
-#include "options_util.hpp"
-#include "ts_galpha2.hpp"
+#include "io/options_util.hpp"
+#include "solvers/ts_galpha2.hpp"
 
 #include <petscdmcomposite.h>
 #include <petscdmda.h>

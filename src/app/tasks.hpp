@@ -3,10 +3,10 @@
 // rank 0 and writes one HDF5 file.
 #pragma once
 
-#include "beam.hpp"
-#include "contact.hpp"
-#include "impact.hpp"
-#include "results_h5.hpp"
+#include "model/beam.hpp"
+#include "model/contact.hpp"
+#include "run/impact.hpp"
+#include "io/results_h5.hpp"
 
 #include <petscsys.h>
 

@@ -4,7 +4,7 @@
 // HDF5 C API (the data are small: one row per impact, 1-D beam snapshots).
 #pragma once
 
-#include "impact.hpp"
+#include "run/impact.hpp"
 
 #include <functional>
 #include <string>

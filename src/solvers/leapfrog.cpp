@@ -1,6 +1,6 @@
 // Stormer-Verlet baseline of the semi-discrete impact: banded stiffness on plain
 // arrays, fixed step, events located by re-stepping. See leapfrog.hpp.
-#include "leapfrog.hpp"
+#include "solvers/leapfrog.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,8 +10,8 @@
 // double impact is caught, and the ACOR is the ball's final speed.
 #pragma once
 
-#include "beam.hpp"
-#include "contact.hpp"
+#include "model/beam.hpp"
+#include "model/contact.hpp"
 
 #include <petscsys.h>
 

@@ -39,9 +39,9 @@
 // does not use is an error (a typo).
 #pragma once
 
-#include "beam.hpp"
-#include "contact.hpp"
-#include "impact.hpp"
+#include "model/beam.hpp"
+#include "model/contact.hpp"
+#include "run/impact.hpp"
 
 #include <petscsys.h>
 

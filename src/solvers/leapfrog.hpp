@@ -26,9 +26,9 @@
 // stiffness), so dt_max = 2 / omega_max ~ h^2 / (2 sqrt(EI/mu)). Serial.
 #pragma once
 
-#include "beam.hpp"
-#include "contact.hpp"
-#include "impact.hpp"
+#include "model/beam.hpp"
+#include "model/contact.hpp"
+#include "run/impact.hpp"
 
 #include <petscsys.h>
 

@@ -10,7 +10,7 @@
 // 1e-14 / 4e-11 / 3e-9 at N = 41 / 161 / 641. Serial (the system is small and dense).
 #pragma once
 
-#include "impact.hpp"
+#include "run/impact.hpp"
 
 namespace beamimpact {
 

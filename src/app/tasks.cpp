@@ -1,11 +1,11 @@
 // Task drivers: option reading, runs, summaries and files. See tasks.hpp.
-#include "tasks.hpp"
+#include "app/tasks.hpp"
 
-#include "convergence.hpp"
-#include "modal_reference.hpp"
-#include "modes.hpp"
-#include "options_util.hpp"
-#include "sweep.hpp"
+#include "studies/convergence.hpp"
+#include "solvers/modal_reference.hpp"
+#include "solvers/modes.hpp"
+#include "io/options_util.hpp"
+#include "studies/sweep.hpp"
 
 #include <hdf5.h>
 #include <petscts.h>

@@ -1,6 +1,6 @@
 // Mode frequencies of the beam: SLEPc eigen-solve of K phi = omega^2 M phi over
 // the free nodes, and the continuum beta-L reference. See modes.hpp.
-#include "modes.hpp"
+#include "solvers/modes.hpp"
 
 #include <slepceps.h>
 

@@ -1,5 +1,5 @@
 // HDF5 writing of impact results. See results_h5.hpp.
-#include "results_h5.hpp"
+#include "io/results_h5.hpp"
 
 #include <hdf5.h>
 

@@ -16,9 +16,9 @@
 // the same command resumes where the last one stopped.
 #pragma once
 
-#include "beam.hpp"
-#include "contact.hpp"
-#include "impact.hpp"
+#include "model/beam.hpp"
+#include "model/contact.hpp"
+#include "run/impact.hpp"
 
 #include <petscsys.h>
 

@@ -1,6 +1,6 @@
 // Euler-Bernoulli beam operator on a uniform grid: supports, curvature terms,
 // stiffness action, energies and the -beam_* options. See beam.hpp.
-#include "beam.hpp"
+#include "model/beam.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
 // -task convergence: configurations, sequences, reference, runs, observed orders,
 // the spatial study and the HDF5 file. See convergence.hpp.
-#include "convergence.hpp"
+#include "studies/convergence.hpp"
 
-#include "leapfrog.hpp"
-#include "modal_reference.hpp"
-#include "options_util.hpp"
-#include "results_h5.hpp"
-#include "tasks.hpp"
+#include "solvers/leapfrog.hpp"
+#include "solvers/modal_reference.hpp"
+#include "io/options_util.hpp"
+#include "io/results_h5.hpp"
+#include "app/tasks.hpp"
 
 #include <hdf5.h>
 #include <petscts.h>

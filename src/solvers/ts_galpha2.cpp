@@ -13,7 +13,7 @@
 //   4. TSAdaptCheckStage / TSAdaptChoose; on rejection restore and retry.
 // Both nonlinear solves (step and shifted restart) use the TS's SNES with the
 // same residual: F(stage_time, Xp + D, Vp + shift_V D, Ap + shift_A D).
-#include "ts_galpha2.hpp"
+#include "solvers/ts_galpha2.hpp"
 
 #include <petsc/private/tsimpl.h>
 

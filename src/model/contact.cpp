@@ -1,5 +1,5 @@
 // Contact laws of the ball: force, stiffness, energy and phase switches. See contact.hpp.
-#include "contact.hpp"
+#include "model/contact.hpp"
 
 #include <cmath>
 
