@@ -2,6 +2,7 @@
 // Jacobians for each formulation, the event-driven contact, and the outcome.
 // See impact.hpp for the model and MODEL.md section 3 for the numerics.
 #include "run/impact.hpp"
+#include "run/scenario.hpp"
 
 #include "io/options_util.hpp"
 #include "solvers/ts_galpha2.hpp"
@@ -1410,5 +1411,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams
   PetscCall(DMDestroy(&P.red));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res) { return ImpactRun(comm, sc.beam, sc.ball, sc.impact, sc.monitor, res); }
 
 } // namespace beamimpact

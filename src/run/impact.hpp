@@ -147,6 +147,8 @@ PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal
 // Runs one impact on comm (the DMDA is distributed over its ranks). The TS is
 // configured from the options database (no prefix): -ts_type and friends.
 PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams &ball, const ImpactParams &impact, const MonitorRequest &monitor, ImpactResult *result);
+struct Scenario;
+PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &scenario, ImpactResult *result);
 
 // Imaginary-axis stability bound y* of an explicit Runge-Kutta tableau
 // (|R(iy)| <= 1 + 1e-12 for 0 <= y <= y*); 0 when that holds only for y < 0.05,

@@ -1,6 +1,7 @@
 // Stormer-Verlet baseline of the semi-discrete impact: banded stiffness on plain
 // arrays, fixed step, events located by re-stepping. See leapfrog.hpp.
 #include "solvers/leapfrog.hpp"
+#include "run/scenario.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -268,5 +269,7 @@ PetscErrorCode LeapfrogRun(const BeamParams &beam, const BallParams &ball, const
   res->function_evals         = P.n_force;
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode LeapfrogRun(const Scenario &sc, const LeapfrogParams &lp, ImpactResult *res) { return LeapfrogRun(sc.beam, sc.ball, sc.impact, lp, res); }
 
 } // namespace beamimpact

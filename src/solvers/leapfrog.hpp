@@ -51,5 +51,7 @@ PetscReal LeapfrogStableStep(const BeamParams &beam, const BallParams &ball, Pet
 // function_evals (force evaluations), wall_time (time stepping only)); ts_type is
 // "leapfrog", formulation "explicit". A step above the stability limit is refused.
 PetscErrorCode LeapfrogRun(const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, const LeapfrogParams &lp, ImpactResult *res);
+struct Scenario;
+PetscErrorCode LeapfrogRun(const Scenario &scenario, const LeapfrogParams &lp, ImpactResult *res);
 
 } // namespace beamimpact

@@ -7,6 +7,7 @@
 // cannot skip a crossing (a Taylor bound with |f''| <= sum_k |gamma_k a_k| w_k^2),
 // then bisected to round-off.
 #include "solvers/modal_reference.hpp"
+#include "run/scenario.hpp"
 
 #include <petscblaslapack.h>
 
@@ -428,5 +429,7 @@ PetscErrorCode ModalReferenceRun(const BeamParams &beam, const BallParams &ball,
   res->wall_time = MPI_Wtime() - wall0;
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res) { return ModalReferenceRun(sc.beam, sc.ball, sc.impact, res); }
 
 } // namespace beamimpact

@@ -20,5 +20,7 @@ namespace beamimpact {
 // rules as ImpactRun, so both see the same contacts. ts_type is set to "modal".
 // PETSC_ERR_SUP for the hysteretic law.
 PetscErrorCode ModalReferenceRun(const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, ImpactResult *res);
+struct Scenario;
+PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
 
 } // namespace beamimpact

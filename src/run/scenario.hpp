@@ -1,0 +1,20 @@
+// The scenario of one impact: what is struck (beam), by what (ball), how the run is
+// followed (impact rules) and what is recorded (monitors). Read once from the options
+// (io/scenario_options.hpp) and handed to every task, solver and study; a study varies
+// a copy of it per point.
+#pragma once
+
+#include "model/beam.hpp"
+#include "model/contact.hpp"
+#include "run/impact.hpp"
+
+namespace beamimpact {
+
+struct Scenario {
+  BeamParams     beam;    // -beam_*
+  BallParams     ball;    // -ball_*
+  ImpactParams   impact;  // -impact_*
+  MonitorRequest monitor; // -monitor_*, -snapshot_times (nothing by default)
+};
+
+} // namespace beamimpact
