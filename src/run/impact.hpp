@@ -68,8 +68,11 @@ struct ContactEvent {
   PetscReal        force;       // N
 };
 
-// The outcome of one impact (identical on every rank of the communicator).
-struct ImpactResult {
+// The result of one impact (identical on every rank of the communicator), in three parts
+// that travel separately: the physical outcome, what it cost, and how it was integrated;
+// plus the located events and the requested time series. ImpactResult derives from the
+// three so that a column reads r.acor or r.steps directly.
+struct ImpactOutcome {
   PetscReal x               = 0; // m
   PetscReal acor            = 0; // -v_b,final / v_i
   PetscReal acor_corrected  = 0; // acor * loss factor (linear spring); = acor for hysteresis
@@ -93,17 +96,24 @@ struct ImpactResult {
   PetscReal ball_loss_fraction = 0, translation_fraction = 0, rotation_fraction = 0, vibration_fraction = 0;
   // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
   PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
-  // Cost.
+};
+
+struct ImpactCost {
   PetscInt  steps = 0, rejected_steps = 0, event_steps = 0; // accepted steps, rejected, extra steps to locate events
   PetscInt  failed_solves = 0; // nonlinear solves that failed (the step was retried smaller)
   PetscInt  function_evals = 0, jacobian_evals = 0, jacobian_assemblies = 0, nonlinear_its = 0, linear_its = 0;
   PetscReal wall_time = 0; // s, time stepping only
-  // Integrator.
-  std::string ts_type;
-  std::string formulation;      // explicit | imex | implicit | second-order
+};
+
+struct IntegratorInfo {
+  std::string ts_type;          // -ts_type, or "leapfrog" / "modal"
+  std::string formulation;      // explicit | imex | implicit | second-order | exact
   PetscReal   dt_stable = 0;    // s, explicit stability limit (0: not explicit)
   PetscReal   dt_nominal = 0;   // s, the fixed step, or the initial step of an adaptive run
   PetscReal   omega_max_bound = 0; // rad/s, Gershgorin bound used for dt_stable
+};
+
+struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
   std::vector<ContactEvent> events;
   ImpactSeries series;
 };
