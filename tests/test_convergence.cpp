@@ -4,7 +4,7 @@
 // against a tight-tolerance run, the order and Richardson formulas, and the
 // isolation of one configuration's options from the next.
 #include "studies/convergence.hpp"
-#include "solvers/modal_reference.hpp"
+#include "run/modal_reference.hpp"
 #include "test_helpers.hpp"
 
 #include <cmath>
@@ -147,7 +147,7 @@ TEST(ModalReference, MatchesATightToleranceRun)
     ImpactParams ip;
     ip.x = x;
     ImpactResult modal;
-    ASSERT_EQ(ModalReferenceRun(beam, ball, ip, &modal), 0);
+    ASSERT_EQ(ModalReferenceRun(Scenario{beam, ball, ip, MonitorRequest()}, &modal), 0);
     const ImpactResult run = RunImpact(PETSC_COMM_WORLD, beam, ball, ip, {{"-ts_type", "rk"}, {"-ts_rk_type", "5dp"}, {"-ts_rtol", "1e-12"}, {"-ts_atol", "1e-15"}});
     EXPECT_NEAR(modal.acor, run.acor, 1e-9) << "x = " << x;
     EXPECT_NEAR(modal.contact_time, run.contact_time, 1e-9 * run.contact_time) << "x = " << x;

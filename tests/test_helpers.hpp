@@ -3,6 +3,8 @@
 #pragma once
 
 #include "run/impact.hpp"
+#include "run/scenario.hpp"
+#include "system/beam_system.hpp"
 
 #include <gtest/gtest.h>
 
@@ -45,13 +47,22 @@ inline BallParams Superball(ContactLawKind law = ContactLawKind::Linear)
   return b;
 }
 
+// The semi-discrete system of a beam (Euler-Bernoulli unless p.theory says otherwise).
+inline BeamSystem SystemOf(const BeamParams &p)
+{
+  BeamSystem  sys;
+  std::string why;
+  EXPECT_TRUE(BeamSystemBuild(p, &sys, &why)) << why;
+  return sys;
+}
+
 // Runs one impact with the given TS options set only for this run.
 inline ImpactResult RunImpact(MPI_Comm comm, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, const std::vector<std::pair<std::string, std::string>> &ts_options,
                               const MonitorRequest &mon = MonitorRequest())
 {
   for (auto &kv : ts_options) EXPECT_EQ(PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.empty() ? NULL : kv.second.c_str()), 0);
   ImpactResult r;
-  EXPECT_EQ(ImpactRun(comm, beam, ball, ip, mon, &r), 0) << "ImpactRun failed";
+  EXPECT_EQ(ImpactRun(comm, Scenario{beam, ball, ip, mon}, &r), 0) << "ImpactRun failed";
   for (auto &kv : ts_options) EXPECT_EQ(PetscOptionsClearValue(NULL, kv.first.c_str()), 0);
   return r;
 }

@@ -1,6 +1,6 @@
 // The exact modal reference against a tight-tolerance TS run of the same semi-discrete
 // model (to 1e-9), the wall and rigid-body limits, and energy conservation.
-#include "solvers/modal_reference.hpp"
+#include "run/modal_reference.hpp"
 #include "model/rigid.hpp"
 #include "test_helpers.hpp"
 
@@ -13,7 +13,7 @@ namespace {
 ImpactResult Modal(const BeamParams &beam, const BallParams &ball, const ImpactParams &ip)
 {
   ImpactResult r;
-  EXPECT_EQ(ModalReferenceRun(beam, ball, ip, &r), 0);
+  EXPECT_EQ(ModalReferenceRun(Scenario{beam, ball, ip, MonitorRequest()}, &r), 0);
   return r;
 }
 const std::vector<std::pair<std::string, std::string>> TIGHT = {{"-ts_type", "rk"}, {"-ts_rk_type", "5dp"}, {"-ts_rtol", "1e-13"}, {"-ts_atol", "1e-15"}};
@@ -79,6 +79,6 @@ TEST(ModalReference, RefusesTheHystereticLaw)
   ImpactParams ip;
   ImpactResult r;
   ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, NULL), 0);
-  EXPECT_NE(ModalReferenceRun(AluminiumBeam(1.1), Superball(ContactLawKind::Hysteresis), ip, &r), 0);
+  EXPECT_NE(ModalReferenceRun(Scenario{AluminiumBeam(1.1), Superball(ContactLawKind::Hysteresis), ip, MonitorRequest()}, &r), 0);
   ASSERT_EQ(PetscPopErrorHandler(), 0);
 }

@@ -34,9 +34,10 @@ void FlexuralErrors(Support left, Support right, PetscInt nodes, PetscInt n, std
 {
   const BeamParams   p     = Aluminium(left, right, nodes);
   const BeamOperator op    = BeamOperatorBuild(p);
+  const BeamSystem sys = test::SystemOf(p);
   const PetscInt     rigid = BeamModesRigidCount(left, right);
   ModesResult        r;
-  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, op, n + rigid, &r));
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, n + rigid, &r));
   ASSERT_EQ((size_t)(n + rigid), r.omega.size());
   ASSERT_EQ((size_t)(n + rigid), r.frequency.size());
   ASSERT_EQ((size_t)(n + rigid), r.period.size());
@@ -210,9 +211,10 @@ TEST(BeamModes, FreeFreeFundamentalNodes)
 {
   const BeamParams                    p  = Aluminium(Support::Free, Support::Free, 41);
   const BeamOperator                  op = BeamOperatorBuild(p);
+  const BeamSystem sys = test::SystemOf(p);
   ModesResult                         r;
   std::vector<std::vector<PetscReal>> shapes;
-  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, op, 3, &r, &shapes));
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 3, &r, &shapes));
   ASSERT_EQ(2, r.rigid_count);
   ASSERT_EQ(3u, shapes.size());
   const std::vector<PetscReal> &phi = shapes[2];
@@ -235,10 +237,11 @@ TEST(BeamModes, ShapesAreMOrthonormalEigenvectors)
 {
   for (const SupportCase &c : kCases) {
     const BeamOperator                  op    = BeamOperatorBuild(Aluminium(c.left, c.right, 41));
+    const BeamSystem sys = test::SystemOf(Aluminium(c.left, c.right, 41));
     const PetscInt                      count = 6;
     ModesResult                         r;
     std::vector<std::vector<PetscReal>> shapes;
-    ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, op, count, &r, &shapes));
+    ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, count, &r, &shapes));
     ASSERT_EQ((size_t)count, shapes.size());
     std::vector<PetscReal> f(op.N);
     for (PetscInt a = 0; a < count; ++a) {
@@ -301,9 +304,10 @@ TEST(BeamModes, ClampedRegionActsAsClampedEnd)
   p.clamp_x0   = 0.62;
   p.clamp_x1   = 0.72;
   const BeamOperator op = BeamOperatorBuild(p);
-  ASSERT_EQ(62, BeamFreeNodeCount(op));
+  const BeamSystem sys = test::SystemOf(p);
+  ASSERT_EQ(62, BeamFreeNodeCount(sys));
   ModesResult r;
-  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, op, 4, &r));
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 4, &r));
   EXPECT_EQ(0, r.rigid_count);
   std::vector<PetscReal> ref;
   ASSERT_EQ(0, BeamModesAnalytic(Support::Clamped, Support::Free, 0.62, p.EI, p.mu, 4, &ref));
@@ -319,8 +323,9 @@ TEST(BeamModes, ClampedRegionActsAsClampedEnd)
 TEST(BeamModes, AllModesOfASmallBeam)
 {
   const BeamOperator op = BeamOperatorBuild(Aluminium(Support::Free, Support::Free, 7));
+  const BeamSystem sys = test::SystemOf(Aluminium(Support::Free, Support::Free, 7));
   ModesResult        r;
-  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, op, 7, &r));
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 7, &r));
   EXPECT_EQ(2, r.rigid_count);
   const PetscReal bound = BeamMaxFrequencyBound(op, BeamImpactStencil(op, 0.0), 0.0, 0.0);
   for (int m = 2; m < 7; ++m) {
@@ -345,10 +350,11 @@ TEST(BeamModes, AllModesOfASmallBeam)
 TEST(BeamModes, ParallelMatchesSerialAndRanksAgree)
 {
   const BeamOperator                  op = BeamOperatorBuild(Aluminium(Support::Clamped, Support::Free, 81));
+  const BeamSystem sys = test::SystemOf(Aluminium(Support::Clamped, Support::Free, 81));
   ModesResult                         rw, rs;
   std::vector<std::vector<PetscReal>> sw, ss;
-  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, op, 5, &rw, &sw));
-  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_SELF, op, 5, &rs, &ss));
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 5, &rw, &sw));
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_SELF, sys, 5, &rs, &ss));
   for (int m = 0; m < 5; ++m) {
     EXPECT_NEAR(rs.omega[m], rw.omega[m], 1e-10 * rs.omega[m]);
     for (PetscInt i = 0; i < op.N; ++i) EXPECT_NEAR(ss[m][i], sw[m][i], 1e-8);
@@ -362,31 +368,33 @@ TEST(BeamModes, ParallelMatchesSerialAndRanksAgree)
 TEST(BeamModes, CountOutOfRangeIsRefused)
 {
   const BeamOperator op = BeamOperatorBuild(Aluminium(Support::Clamped, Support::Free, 6)); // 5 free nodes
+  const BeamSystem sys = test::SystemOf(Aluminium(Support::Clamped, Support::Free, 6));
   ModesResult        r;
   PetscCallVoid(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, BeamModesCompute(PETSC_COMM_WORLD, op, 0, &r));
-  EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, BeamModesCompute(PETSC_COMM_WORLD, op, 6, &r));
+  EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, BeamModesCompute(PETSC_COMM_WORLD, sys, 0, &r));
+  EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, BeamModesCompute(PETSC_COMM_WORLD, sys, 6, &r));
   PetscCallVoid(PetscPopErrorHandler());
-  EXPECT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, op, 5, &r));
+  EXPECT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 5, &r));
   EXPECT_EQ(5u, r.omega.size());
 }
 
 TEST(ModesParams, FromOptions)
 {
   const BeamOperator op = BeamOperatorBuild(Aluminium(Support::Free, Support::Free, 41));
+  const BeamSystem sys = test::SystemOf(Aluminium(Support::Free, Support::Free, 41));
   ModesParams        p;
   ASSERT_EQ(0, ModesParamsFromOptions(PETSC_COMM_WORLD, &p));
   EXPECT_EQ(4, p.count);
 
   ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-modes_count", "6"));
-  EXPECT_EQ(0, ModesParamsFromOptions(PETSC_COMM_WORLD, &p, &op));
+  EXPECT_EQ(0, ModesParamsFromOptions(PETSC_COMM_WORLD, &p, &sys));
   EXPECT_EQ(6, p.count);
 
   PetscCallVoid(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-modes_count", "0"));
   EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, ModesParamsFromOptions(PETSC_COMM_WORLD, &p));
   ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-modes_count", "42")); // 41 free nodes
-  EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, ModesParamsFromOptions(PETSC_COMM_WORLD, &p, &op));
+  EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, ModesParamsFromOptions(PETSC_COMM_WORLD, &p, &sys));
   PetscCallVoid(PetscPopErrorHandler());
   ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-modes_count"));
 }

@@ -2,7 +2,9 @@
 #include "app/tasks.hpp"
 
 #include "studies/convergence.hpp"
-#include "solvers/modal_reference.hpp"
+#include "run/modal_reference.hpp"
+#include "run/scenario.hpp"
+#include "solvers/rk_stability.hpp"
 #include "solvers/modes.hpp"
 #include "io/options_util.hpp"
 #include "studies/sweep.hpp"
@@ -96,12 +98,12 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
   if (reference == 1) {
     PetscCheck(!mon.any() && mon.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
     PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-    PetscCall(ModalReferenceRun(beam, ball, ip, &res));
+    PetscCall(ModalReferenceRun(Scenario{beam, ball, ip, mon}, &res));
     PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal));
   } else {
     ip.check_unused_options = PETSC_TRUE;
     ip.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
-    PetscCall(ImpactRun(comm, beam, ball, ip, mon, &res));
+    PetscCall(ImpactRun(comm, Scenario{beam, ball, ip, mon}, &res));
   }
   PetscCall(ImpactPrintSummary(comm, res));
   if (!output.empty()) {
@@ -123,7 +125,9 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(BeamParamsFromOptions(comm, &beam));
-  const BeamOperator op = BeamOperatorBuild(beam);
+  BeamSystem  op;
+  std::string why;
+  PetscCheck(BeamSystemBuild(beam, &op, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(ModesParamsFromOptions(comm, &mp, &op));
   PetscCall(OptionsCheckUnused(comm));
   PetscCall(BeamModesCompute(comm, op, mp.count, &modes));

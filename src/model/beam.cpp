@@ -155,16 +155,19 @@ PetscReal BeamKineticEnergy(const BeamOperator &op, const PetscReal *v, PetscInt
   return 0.5 * T;
 }
 
-ImpactStencil BeamImpactStencil(const BeamOperator &op, PetscReal x_imp)
+ImpactStencil BeamImpactStencil(const BeamOperator &op, PetscReal x_imp) { return GridImpactStencil(op.N, op.L, x_imp); }
+
+ImpactStencil GridImpactStencil(PetscInt N, PetscReal L, PetscReal x_imp)
 {
   ImpactStencil   st;
-  const PetscReal s  = std::min(std::max(x_imp, (PetscReal)0), op.L) / op.h;
+  const PetscReal h  = L / (N - 1);
+  const PetscReal s  = std::min(std::max(x_imp, (PetscReal)0), L) / h;
   const PetscReal sr = std::round(s);
   PetscInt        j  = std::abs(s - sr) < 1e-9 ? static_cast<PetscInt>(sr) : static_cast<PetscInt>(std::floor(s));
   PetscReal       frac = std::abs(s - sr) < 1e-9 ? 0.0 : s - j;
   j                    = std::max<PetscInt>(0, j);
-  if (j >= op.N - 1) { // at (or past) the x = L end: all weight on the last node
-    j    = op.N - 2;
+  if (j >= N - 1) { // at (or past) the x = L end: all weight on the last node
+    j    = N - 2;
     frac = 1.0;
   }
   st.j = j;

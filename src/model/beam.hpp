@@ -49,6 +49,7 @@ struct BeamParams {
   Support   right  = Support::Free; // support at x = L
   bool      has_clamp = false;      // a clamped region [clamp_x0, clamp_x1] is held fixed
   PetscReal clamp_x0 = 0, clamp_x1 = 0; // m
+  std::string theory = "euler";     // beam theory (model/beam_theory.hpp registry)
   BeamMaterialInput input;
 };
 
@@ -100,6 +101,8 @@ struct ImpactStencil {
   PetscReal w = 1; // weight of node j; node j+1 gets 1-w
 };
 ImpactStencil BeamImpactStencil(const BeamOperator &op, PetscReal x_imp);
+// The same on a grid of N nodes over [0, L] (m).
+ImpactStencil GridImpactStencil(PetscInt N, PetscReal L, PetscReal x_imp);
 
 // Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K,
 // plus an extra stiffness k_extra (N/m) coupling mass m_extra (kg) to the stencil.

@@ -12,6 +12,7 @@
 
 #include "model/beam.hpp"
 #include "model/contact.hpp"
+#include "solvers/stepper.hpp"
 
 #include <petscsys.h>
 
@@ -98,19 +99,10 @@ struct ImpactOutcome {
   PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
 };
 
-struct ImpactCost {
-  PetscInt  steps = 0, rejected_steps = 0, event_steps = 0; // accepted steps, rejected, extra steps to locate events
-  PetscInt  failed_solves = 0; // nonlinear solves that failed (the step was retried smaller)
-  PetscInt  function_evals = 0, jacobian_evals = 0, jacobian_assemblies = 0, nonlinear_its = 0, linear_its = 0;
-  PetscReal wall_time = 0; // s, time stepping only
-};
-
-struct IntegratorInfo {
-  std::string ts_type;          // -ts_type, or "leapfrog" / "modal"
-  std::string formulation;      // explicit | imex | implicit | second-order | exact
-  PetscReal   dt_stable = 0;    // s, explicit stability limit (0: not explicit)
-  PetscReal   dt_nominal = 0;   // s, the fixed step, or the initial step of an adaptive run
-  PetscReal   omega_max_bound = 0; // rad/s, Gershgorin bound used for dt_stable
+// The stepper's own counts, and the driver's.
+struct ImpactCost : StepperCounts {
+  PetscInt  steps = 0, event_steps = 0; // accepted steps; extra steps to locate events
+  PetscReal wall_time = 0;              // s, time stepping only
 };
 
 struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
@@ -129,40 +121,13 @@ ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const 
 PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, ImpactParams *p);
 PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, MonitorRequest *m);
 
-// Event-driven contact, shared by ImpactRun and the leapfrog baseline.
-// Scaled indicators: c / c_scale and (dc/dt) / v_i.
-struct EventIndicators {
-  PetscReal c = 0, cdot = 0;
-};
-// The event crossed between indicator values a (step start) and b (step end) in `phase`
-// (-1: none). A start within tol of zero on the wrong side (an event located from its
-// pre-event side) counts as before the crossing, so the next event is never missed.
-int ContactCrossedEvent(ContactPhase phase, const EventIndicators &a, const EventIndicators &b, PetscReal tol);
-// The indicator an event is located on, and whether it falls through zero.
-PetscReal ContactEventIndicator(ContactEventKind k, const EventIndicators &g);
-bool      ContactEventFalling(ContactEventKind k);
-// The run's contact bookkeeping between events.
-struct ContactTimeline {
-  PetscReal contact_start = 0; // s, start of the current (or last) contact
-  PetscReal t_stop        = 0; // s, the run ends here unless another contact starts
-};
-// Applies a located event at time te with compression c (m): switches the law's phase,
-// records the event, peak force and contact times, moves the stop time. *force_changed
-// tells whether the force law changed (the integrator must restart). A separation still in
-// the hysteretic loading branch (a missed maximum compression) is an error: the result would
-// lack the ball's loss. The caller checks -impact_max_contacts.
-PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
-                                 ContactTimeline *tl, ImpactResult *res, bool *force_changed);
-
 // Runs one impact on comm (the DMDA is distributed over its ranks). The TS is
 // configured from the options database (no prefix): -ts_type and friends.
-PetscErrorCode ImpactRun(MPI_Comm comm, const BeamParams &beam, const BallParams &ball, const ImpactParams &impact, const MonitorRequest &monitor, ImpactResult *result);
 struct Scenario;
 PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &scenario, ImpactResult *result);
 
-// Imaginary-axis stability bound y* of an explicit Runge-Kutta tableau
-// (|R(iy)| <= 1 + 1e-12 for 0 <= y <= y*); 0 when that holds only for y < 0.05,
-// i.e. the scheme is unstable for undamped oscillation at any practical step (Euler, RK2).
-PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b);
+// The same impact with the hand-written leapfrog baseline (solvers/leapfrog.hpp), serial.
+struct LeapfrogParams;
+PetscErrorCode LeapfrogRun(const Scenario &scenario, const LeapfrogParams &lp, ImpactResult *result);
 
 } // namespace beamimpact

@@ -10,7 +10,7 @@
 
 namespace beamimpact {
 
-PetscInt BeamFreeNodeCount(const BeamOperator &op)
+PetscInt BeamFreeNodeCount(const BeamSystem &op)
 {
   PetscInt n = 0;
   for (char held : op.held) n += !held;
@@ -27,7 +27,7 @@ static PetscErrorCode ModesCountCheck(MPI_Comm comm, PetscInt count, PetscInt nf
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamOperator *op)
+PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamSystem *op)
 {
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Beam modes: eigen-solve of K phi = omega^2 M phi", "beamimpact");
@@ -66,7 +66,7 @@ static PetscReal HashUniform(PetscInt i)
   return 2.0 * static_cast<PetscReal>(z >> 11) / 9007199254740992.0 - 1.0; // 2^53
 }
 
-PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt count, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
+PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
 {
   Mat         K, M;
   EPS         eps;
@@ -81,14 +81,14 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt 
 
   PetscFunctionBeginUser;
   PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "BeamModesCompute: out must not be NULL");
-  PetscCheck(op.N >= 3 && op.EI > 0 && op.mu > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.N && (PetscInt)op.held.size() == op.N, comm, PETSC_ERR_ARG_WRONG,
-             "BeamModesCompute: the beam operator is not built (N = %" PetscInt_FMT ", EI = %g, mu = %g, L = %g)", op.N, (double)op.EI, (double)op.mu, (double)op.L);
+  PetscCheck(op.ndof >= 3 && op.frequency_unit > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.ndof && (PetscInt)op.held.size() == op.ndof, comm, PETSC_ERR_ARG_WRONG,
+             "BeamModesCompute: the beam system is not built (%" PetscInt_FMT " dofs, frequency unit %g rad/s, L = %g)", op.ndof, (double)op.frequency_unit, (double)op.L);
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(ModesEnsureSlepc());
 
   // Unknowns: the free nodes, in node order.
-  std::vector<PetscInt> free_nodes, free_index(op.N, -1);
-  for (PetscInt i = 0; i < op.N; ++i)
+  std::vector<PetscInt> free_nodes, free_index(op.ndof, -1);
+  for (PetscInt i = 0; i < op.ndof; ++i)
     if (!op.held[i]) {
       free_index[i] = (PetscInt)free_nodes.size();
       free_nodes.push_back(i);
@@ -98,16 +98,17 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt 
 
   // K (<= 5 nonzeros a row) and the diagonal lumped M; PETSC_DECIDE splits the rows
   // as PetscSplitOwnership does.
-  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 5, NULL, 4, NULL, &K));
+  const PetscInt         width = 2 * op.bw + 1;
+  std::vector<PetscInt>  cols(width);
+  std::vector<PetscReal> vals(width);
+  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, width, NULL, width - 1, NULL, &K));
   PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 1, NULL, 0, NULL, &M));
   PetscCall(MatGetOwnershipRange(K, &rstart, &rend));
   for (PetscInt r = rstart; r < rend; ++r) {
     const PetscInt i = free_nodes[r];
-    PetscInt       cols[5];
-    PetscReal      vals[5];
-    const PetscInt n = BeamStiffnessRow(op, i, cols, vals);
+    const PetscInt n = BeamSystemStiffnessRow(op, i, cols.data(), vals.data());
     for (PetscInt q = 0; q < n; ++q) cols[q] = free_index[cols[q]];
-    PetscCall(MatSetValues(K, 1, &r, n, cols, vals, INSERT_VALUES));
+    PetscCall(MatSetValues(K, 1, &r, n, cols.data(), vals.data(), INSERT_VALUES));
     PetscCall(MatSetValue(M, r, r, op.mass[i], INSERT_VALUES));
   }
   PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
@@ -119,7 +120,7 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt 
   PetscCall(MatSetOption(M, MAT_SPD, PETSC_TRUE));
 
   // Natural frequency unit sqrt(EI/mu)/L^2 (rad/s): every flexural mode is > 3.5 of it.
-  const PetscReal unit = std::sqrt(op.EI / op.mu) / (op.L * op.L);
+  const PetscReal unit = op.frequency_unit;
 
   // Shift-and-invert at sigma = -unit^2 (below every eigenvalue, so K - sigma M is
   // positive definite even with rigid modes): the wanted modes are those nearest sigma.
@@ -161,7 +162,7 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt 
   // error is quadratic in the eigenvector error, so it is accurate to round-off
   // in both. Every rank evaluates it on the same gathered vector.
   std::vector<PetscReal>              lambda(count);
-  std::vector<std::vector<PetscReal>> phis(count, std::vector<PetscReal>(op.N, 0.0));
+  std::vector<std::vector<PetscReal>> phis(count, std::vector<PetscReal>(op.ndof, 0.0));
   PetscCall(VecScatterCreateToAll(x, &toall, &xall));
   for (PetscInt m = 0; m < count; ++m) {
     PetscScalar kr;
@@ -175,7 +176,7 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt 
     PetscCall(VecRestoreArrayRead(xall, &a));
     // Mass-normalise, then fix the sign: first node above 1e-3 of the largest |phi| positive.
     PetscReal mnorm = 0.0, amax = 0.0;
-    for (PetscInt i = 0; i < op.N; ++i) mnorm += op.mass[i] * phi[i] * phi[i];
+    for (PetscInt i = 0; i < op.ndof; ++i) mnorm += op.mass[i] * phi[i] * phi[i];
     mnorm = std::sqrt(mnorm);
     PetscCheck(mnorm > 0, comm, PETSC_ERR_PLIB, "BeamModesCompute: eigenvector %" PetscInt_FMT " is zero", m);
     for (PetscReal &v : phi) v /= mnorm;
@@ -186,7 +187,7 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt 
           for (PetscReal &w : phi) w = -w;
         break;
       }
-    lambda[m] = 2.0 * BeamStrainEnergy(op, phi.data(), 1, 0, op.N); // phi^T M phi = 1
+    lambda[m] = 2.0 * BeamSystemStrainEnergy(op, phi.data(), op.fields, 0, op.ndof); // phi^T M phi = 1
     PetscCall(PetscInfo(eps, "mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2 = %.6e (EI/mu)/L^4\n", m, (double)PetscRealPart(kr), (double)lambda[m],
                         (double)(lambda[m] / (unit * unit))));
   }

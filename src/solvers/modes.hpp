@@ -3,7 +3,7 @@
 // the beta-L tables (MODEL.md section 1).
 //
 // Discrete:   K phi = omega^2 M phi   over the free (not held) nodes,
-//   K the stiffness of beam.hpp (N/m), M = diag(op.mass) the lumped mass (kg),
+//   K the stiffness of the system (system/beam_system.hpp, N/m), M = diag(mass) the lumped mass (kg),
 //   omega in rad/s. Held nodes (clamped/pinned ends, clamped region) are
 //   Dirichlet y = 0 and are not unknowns. Solved with SLEPc (GHEP, Krylov-Schur,
 //   shift-and-invert at a small negative target so the rigid modes, omega = 0,
@@ -17,7 +17,7 @@
 // Units: SI (m, kg, s, N); omega in rad/s, frequency in Hz, period in s.
 #pragma once
 
-#include "model/beam.hpp"
+#include "system/beam_system.hpp"
 
 #include <petscsys.h>
 
@@ -32,7 +32,7 @@ struct ModesParams {
 // Reads -modes_count (one PetscOptionsBegin block, no prefix) and checks it is
 // >= 1 and, when op is given, <= the number of free nodes of op.
 // BeamModesCompute checks the upper bound again (with the same message).
-PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamOperator *op = nullptr);
+PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamSystem *op = nullptr);
 
 struct ModesResult {
   std::vector<PetscReal> omega;     // rad/s, angular frequencies, ascending; rigid modes exactly 0
@@ -51,7 +51,7 @@ struct ModesResult {
 constexpr PetscReal kModesRigidThreshold = 1e-3;
 
 // Number of free (not held) nodes: the size of the eigenproblem.
-PetscInt BeamFreeNodeCount(const BeamOperator &op);
+PetscInt BeamFreeNodeCount(const BeamSystem &op);
 
 // The first `count` modes (rigid ones included, counted from omega = 0 upward)
 // of the discrete beam op, on communicator comm (any number of ranks; the
@@ -62,7 +62,7 @@ PetscInt BeamFreeNodeCount(const BeamOperator &op);
 // Degenerate modes (the two free-free rigid modes) are an arbitrary
 // M-orthonormal basis of their space.
 // The EPS takes options with the prefix "modes_" (e.g. -modes_eps_view).
-PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamOperator &op, PetscInt count, ModesResult *out,
+PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out,
                                 std::vector<std::vector<PetscReal>> *shapes = nullptr);
 
 // Rigid modes of a uniform beam with these end supports and no clamped region:

@@ -3,7 +3,9 @@
 #include "studies/convergence.hpp"
 
 #include "solvers/leapfrog.hpp"
-#include "solvers/modal_reference.hpp"
+#include "run/modal_reference.hpp"
+#include "run/scenario.hpp"
+#include "solvers/rk_stability.hpp"
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
 #include "app/tasks.hpp"
@@ -127,7 +129,10 @@ PetscErrorCode ReadSequence(MPI_Comm comm, PetscOptions o, const ConvergenceConf
 PetscErrorCode StableStep(const ConvergenceConfig &cfg, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, PetscReal *dt)
 {
   PetscFunctionBeginUser;
-  const PetscReal lf = LeapfrogStableStep(beam, ball, ip.x); // 2 / omega_max
+  BeamSystem  sys;
+  std::string why;
+  PetscCheck(BeamSystemBuild(beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
+  const PetscReal lf = LeapfrogStableStep(sys, BeamSystemCoupling(sys, ip.x), ball); // 2 / omega_max
   if (cfg.method == "leapfrog") {
     *dt = lf;
     PetscFunctionReturn(0);
@@ -162,9 +167,9 @@ PetscErrorCode RunInPushedOptions(MPI_Comm comm, const ConvergenceConfig &cfg, c
     LeapfrogParams lp;
     PetscCall(LeapfrogParamsFromOptions(comm, &lp));
     PetscCall(OptionsCheckUnused(comm));
-    PetscCall(LeapfrogRun(beam, ball, ip, lp, res));
+    PetscCall(LeapfrogRun(Scenario{beam, ball, ip, MonitorRequest()}, lp, res));
   } else {
-    PetscCall(ImpactRun(comm, beam, ball, ip, MonitorRequest(), res));
+    PetscCall(ImpactRun(comm, Scenario{beam, ball, ip, MonitorRequest()}, res));
   }
   PetscFunctionReturn(0);
 }
@@ -448,7 +453,7 @@ PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan 
   *ref              = ConvergenceReference();
   const double wall = MPI_Wtime();
   if (plan.reference == ConvergenceReferenceKind::Modal) {
-    PetscCall(ModalReferenceRun(beam, ball, ip, &ref->result));
+    PetscCall(ModalReferenceRun(Scenario{beam, ball, ip, MonitorRequest()}, &ref->result));
     ref->method = "modal";
   } else {
     ConvergenceConfig cfg;

@@ -16,6 +16,7 @@
 // computes only the missing cases. At the end rank 0 gathers this run's rows
 // over MPI, writes the complete F and removes F.parts.
 #include "studies/sweep.hpp"
+#include "run/scenario.hpp"
 
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
@@ -218,7 +219,7 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const SweepCas
   const SweepCase c = SweepCaseFor(plan, base, index);
 
   PetscFunctionBeginUser;
-  PetscCall(ImpactRun(comm, c.beam, c.ball, c.impact, c.monitor, result));
+  PetscCall(ImpactRun(comm, Scenario{c.beam, c.ball, c.impact, c.monitor}, result));
   const ImpactResult &r = *result;
   // Rigid-body model, Eq. (11): uniform beam of mass M = mu L about its centre.
   const PetscReal M = c.beam.mu * c.beam.length, I_cm = M * c.beam.length * c.beam.length / 12.0;
@@ -977,7 +978,7 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
     c.impact.max_time             = 1e-9;
     c.impact.check_unused_options = PETSC_TRUE;
     c.impact.report_setup         = plan.quiet ? PETSC_FALSE : PETSC_TRUE; // integrator, step, warnings: once
-    PetscCall(ImpactRun(farm.group, c.beam, c.ball, c.impact, MonitorRequest(), &probe));
+    PetscCall(ImpactRun(farm.group, Scenario{c.beam, c.ball, c.impact, MonitorRequest()}, &probe));
   }
 
   S.output = output;

@@ -1,0 +1,138 @@
+// Contact events: which one a step crossed, the indicator it is located on, the bracketed
+// location on any stepper, and its application to the contact law and the outcome.
+// See events.hpp.
+#include "run/events.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace beamimpact {
+
+static const char *const EventNames[] = {"contact", "max_compression", "reload", "separation"};
+const char *ContactEventName(ContactEventKind k) { return EventNames[static_cast<int>(k)]; }
+
+int ContactCrossedEvent(ContactPhase phase, const EventIndicators &a, const EventIndicators &b, PetscReal tol)
+{
+  switch (phase) {
+  case ContactPhase::Loading:
+    if (a.cdot > -tol && b.cdot <= 0 && !(a.cdot <= 0 && b.cdot >= a.cdot)) return static_cast<int>(ContactEventKind::MaxCompression);
+    if (a.c > -tol && b.c <= 0 && !(a.c <= 0 && b.c >= a.c)) return static_cast<int>(ContactEventKind::Separation); // only if dc/dt was missed
+    return -1;
+  case ContactPhase::Unloading: {
+    const bool sep = a.c > 0 && b.c <= 0, rel = a.cdot < tol && b.cdot >= 0 && !(a.cdot >= 0 && b.cdot <= a.cdot);
+    if (sep && rel) { // the earlier root by linear interpolation
+      const PetscReal ts = a.c / (a.c - b.c), tr = a.cdot / (a.cdot - b.cdot);
+      return static_cast<int>(tr < ts ? ContactEventKind::Reload : ContactEventKind::Separation);
+    }
+    if (sep) return static_cast<int>(ContactEventKind::Separation);
+    if (rel) return static_cast<int>(ContactEventKind::Reload);
+    return -1;
+  }
+  case ContactPhase::Separated: return a.c < 0 && b.c >= 0 ? static_cast<int>(ContactEventKind::ContactStart) : -1;
+  }
+  return -1;
+}
+
+PetscReal ContactEventIndicator(ContactEventKind k, const EventIndicators &g)
+{
+  return (k == ContactEventKind::MaxCompression || k == ContactEventKind::Reload) ? g.cdot : g.c;
+}
+
+bool ContactEventFalling(ContactEventKind k) { return k == ContactEventKind::MaxCompression || k == ContactEventKind::Separation; }
+
+PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
+                                 ContactTimeline *tl, ImpactResult *res, bool *force_changed)
+{
+  PetscFunctionBeginUser;
+  *force_changed = true;
+  switch (kind) {
+  case ContactEventKind::MaxCompression:
+    *force_changed = ContactHasHysteresis(ball);
+    ContactSwitch(ball, state, ContactPhase::Unloading, c);
+    break;
+  case ContactEventKind::Reload:
+    *force_changed = ContactHasHysteresis(ball);
+    ContactSwitch(ball, state, ContactPhase::Loading, c);
+    break;
+  case ContactEventKind::Separation:
+    if (state->phase == ContactPhase::Loading && ContactHasHysteresis(ball)) {
+      // The unloading branch was never applied: the ball would leave without its hysteresis loss.
+      char after[96] = "";
+      for (const ContactEvent &e : res->events)
+        if (e.kind == ContactEventKind::Reload) PetscCall(PetscSNPrintf(after, sizeof(after), " after the reload located at t = %g s", (double)e.time));
+      SETERRQ(comm, PETSC_ERR_PLIB,
+              "the ball separated at t = %g s while the hysteretic law was still in its loading branch: the maximum-compression event was missed%s, so the unloading (lossy) branch was skipped and "
+              "the result would be wrong; none is reported (%s; a defect of the event location: a different step changes whether it is hit)",
+              (double)te, after, method);
+    }
+    ContactSwitch(ball, state, ContactPhase::Separated, c);
+    if (res->contacts == 1) res->contact_time = te - tl->contact_start;
+    res->contact_time_total += te - tl->contact_start;
+    tl->t_stop = std::min(times.max_time, te + times.window);
+    break;
+  case ContactEventKind::ContactStart:
+    ContactSwitch(ball, state, ContactPhase::Loading, c);
+    res->contacts++;
+    tl->contact_start = te;
+    tl->t_stop        = times.max_time;
+    break;
+  }
+  const PetscReal F = ContactForce(ball, *state, c);
+  res->events.push_back({kind, te, c, F});
+  if (kind == ContactEventKind::MaxCompression) {
+    res->max_compression = std::max(res->max_compression, c);
+    res->peak_force      = std::max(res->peak_force, F);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta, PetscReal ga, PetscReal gb, PetscReal tol, const std::function<PetscErrorCode(EventIndicators *)> &indicators,
+                           PetscInt *event_steps)
+{
+  const bool      falling  = ContactEventFalling(kind);
+  PetscReal       tb       = stepper.Time();
+  const PetscReal step_len = tb - ta; // a located event is within 1e-4 of this: an O(1e-8 dt^2) local error at a C^0 force switch
+  bool            at_post  = true;
+  int             side     = 0;
+
+  PetscFunctionBeginUser;
+  for (int it = 0;; ++it) {
+    if (at_post && std::abs(gb) <= tol) break;
+    if (!at_post && std::abs(ga) <= tol) break; // on the root from the pre-event side: as good
+    PetscCheck(it < 100, stepper.Comm(), PETSC_ERR_NOT_CONVERGED, "event %s could not be located in [%g, %g] s with %s (indicator %g -> %g)", ContactEventName(kind), (double)ta, (double)tb,
+               stepper.Method().c_str(), (double)ga, (double)gb);
+    PetscReal tn = tb - gb * (tb - ta) / (gb - ga);
+    if (!(tn > ta && tn < tb)) tn = 0.5 * (ta + tb);
+    // Never re-step by a vanishing amount (implicit second-order schemes are ill-conditioned
+    // there): a bracket this narrow is located; take the post side.
+    const PetscReal min_step = 1e-4 * step_len;
+    if (tn - ta < min_step) tn = std::min(tb, ta + min_step);
+    if (tb - ta <= 2 * min_step) {
+      if (at_post) break;
+      tn = tb;
+    }
+    if (at_post) PetscCall(stepper.RollBack());
+    PetscCall(stepper.Step(tn - ta));
+    (*event_steps)++;
+    EventIndicators gn;
+    PetscCall(indicators(&gn));
+    const PetscReal gv   = ContactEventIndicator(kind, gn);
+    const bool      post = falling ? gv <= 0 : gv >= 0;
+    if (post) {
+      tb = stepper.Time();
+      gb = gv;
+      if (side == 1) ga *= 0.5; // Illinois
+      side    = 1;
+      at_post = true;
+    } else {
+      ta = stepper.Time();
+      ga = gv;
+      if (side == -1) gb *= 0.5;
+      side    = -1;
+      at_post = false;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

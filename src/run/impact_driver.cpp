@@ -1,0 +1,173 @@
+// The impact driver: one phase loop for every stepper. It builds the scenario's system once,
+// creates the stepper (PETSc TS, or the leapfrog baseline), steps it onto the stop time and
+// the snapshot times, locates and applies every contact event, records what was asked, and
+// measures the outcome.
+//
+//   loop: step -> did the step cross an event? -> locate it (events.cpp) -> apply it
+//         (phase switch, stop time) -> restart the stepper if the force law changed
+//   until `window` after the last separation (or -impact_max_time).
+#include "run/events.hpp"
+#include "run/impact.hpp"
+#include "run/monitors.hpp"
+#include "run/outcome.hpp"
+#include "run/scenario.hpp"
+#include "solvers/leapfrog.hpp"
+#include "solvers/ts_stepper.hpp"
+
+#include <cmath>
+#include <memory>
+
+namespace beamimpact {
+
+namespace {
+
+// Everything one run holds apart from its stepper: built once per scenario.
+struct ImpactSetup {
+  BeamSystem      sys;
+  ContactCoupling g;
+  ContactScales   scales;
+  ContactState    contact; // touching, loading: the phase the stepper's force law reads
+};
+
+PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *s)
+{
+  std::string why;
+
+  PetscFunctionBeginUser;
+  PetscCheck(BeamSystemBuild(sc.beam, &s->sys, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
+  s->g       = BeamSystemCoupling(s->sys, sc.impact.x);
+  s->scales  = ContactScalesOf(s->sys, sc.ball);
+  s->contact = ContactState();
+  PetscFunctionReturn(0);
+}
+
+// A located event applied; an error when contacts exceed -impact_max_contacts (chatter, or
+// an integration gone wrong: the energy tells).
+PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ImpactTimes &times, ContactEventKind kind, PetscReal E0, ContactState *contact, ContactTimeline *tl,
+                          ImpactResult *res)
+{
+  PetscReal c, cd;
+  bool      changed;
+
+  PetscFunctionBeginUser;
+  PetscCall(st.Compression(&c, &cd));
+  const PetscReal te = st.Time();
+  PetscCall(ContactEventApply(st.Comm(), kind, te, c, sc.ball, times, st.Method().c_str(), contact, tl, res, &changed));
+  if (kind == ContactEventKind::ContactStart && res->contacts > sc.impact.max_contacts) {
+    StateMeasures m;
+    PetscCall(MeasureState(st, ctx, nullptr, &m, nullptr));
+    const PetscReal growth = (m.total() - E0) / E0;
+    PetscCheck(growth <= sc.impact.energy_growth_tol, st.Comm(), PETSC_ERR_NOT_CONVERGED,
+               "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s, and the energy has grown by %.3g of the incident kinetic energy: the integration is unstable or inaccurate (not a physical chatter); reduce %s",
+               sc.impact.max_contacts, (double)te, (double)growth, st.StepOption().c_str());
+    SETERRQ(st.Comm(), PETSC_ERR_NOT_CONVERGED, "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s: the ball is chattering on the beam", sc.impact.max_contacts, (double)te);
+  }
+  if (changed) PetscCall(st.Restart());
+  PetscFunctionReturn(0);
+}
+
+// Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
+// stepper reads.
+PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, ImpactResult *res)
+{
+  const ImpactParams &ip    = sc.impact;
+  const ImpactTimes   times = ImpactTimesOf(sc.beam, sc.ball, ip);
+  StateMeasures       m0, m1;
+
+  PetscFunctionBeginUser;
+  PetscCall(MeasureState(st, ctx, nullptr, &m0, nullptr));
+  ImpactRecorder rec(st, ctx, sc.monitor, ip, m0.total(), res);
+  PetscCall(rec.Record(0.0));
+  PetscCall(rec.Snapshots(0.0));
+  auto indicators = [&](EventIndicators *g) -> PetscErrorCode {
+    PetscReal c, cd;
+    PetscFunctionBeginUser;
+    PetscCall(st.Compression(&c, &cd));
+    PetscCheck(std::isfinite(c) && std::isfinite(cd), st.Comm(), PETSC_ERR_FP, "the solution is not finite (NaN/Inf) at t = %g s with %s: the step is unstable%s", (double)st.Time(), st.Method().c_str(),
+               res->dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+    g->c    = c / scales.compression;
+    g->cdot = cd / scales.speed;
+    PetscFunctionReturn(0);
+  };
+  const double    wall0 = MPI_Wtime();
+  PetscReal       t     = 0;
+  ContactTimeline timeline;
+  timeline.t_stop = times.max_time;
+  EventIndicators g0, g1;
+  PetscCall(indicators(&g0));
+  res->contacts = 1;
+  res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
+  while (t < timeline.t_stop * (1 - 1e-14)) {
+    const PetscReal target = std::min(timeline.t_stop, rec.NextSnapshot()); // land exactly on both
+    PetscReal       dt;
+    PetscCall(st.NextStep(&dt));
+    if (t + dt > target) dt = target - t;
+    PetscCall(st.Step(dt));
+    res->steps++;
+    PetscCall(indicators(&g1));
+    const int ev = ContactCrossedEvent(contact->phase, g0, g1, ip.event_tol);
+    if (ev >= 0) {
+      const auto kind = static_cast<ContactEventKind>(ev);
+      PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol, indicators, &res->event_steps));
+      PetscCall(ApplyEvent(st, ctx, sc, times, kind, m0.total(), contact, &timeline, res));
+      PetscCall(indicators(&g1));
+    }
+    t  = st.Time();
+    g0 = g1;
+    PetscCall(rec.Record(t));
+    PetscCall(rec.Snapshots(t));
+  }
+  res->wall_time        = MPI_Wtime() - wall0;
+  res->ended_in_contact = contact->phase != ContactPhase::Separated ? PETSC_TRUE : PETSC_FALSE;
+  if (res->ended_in_contact) {
+    res->contact_time_total += t - timeline.contact_start;
+    if (res->contacts == 1) res->contact_time = t - timeline.contact_start;
+  }
+  PetscCall(MeasureState(st, ctx, nullptr, &m1, nullptr));
+  PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) && std::isfinite(m1.angular_momentum), st.Comm(), PETSC_ERR_FP,
+             "the solution is not finite (NaN/Inf) at the end of the run, t = %g s, with %s: no result is reported; the step is unstable%s", (double)t, st.Method().c_str(),
+             res->dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+  ImpactOutcomeFinish(ctx, m0, m1, t, res);
+  if (sc.monitor.segment && sc.monitor.segment_until > 0)
+    PetscCheck(t >= sc.monitor.segment_until * (1 - 1e-12), st.Comm(), PETSC_ERR_ARG_INCOMP, "-monitor_segment_until %g s is beyond the end of the run (%g s): raise -impact_window so the run lasts that long",
+               (double)sc.monitor.segment_until, (double)t);
+  PetscCall(st.Counts(res));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
+{
+  ImpactSetup              s;
+  std::unique_ptr<Stepper> st;
+  TSStepperSettings        set;
+
+  PetscFunctionBeginUser;
+  *res   = ImpactResult();
+  res->x = sc.impact.x;
+  PetscCall(ImpactSetupBuild(comm, sc, &s));
+  set.check_unused_options = sc.impact.check_unused_options;
+  set.report_setup         = sc.impact.report_setup;
+  PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, &st, res));
+  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
+  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, res));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode LeapfrogRun(const Scenario &sc, const LeapfrogParams &lp, ImpactResult *res)
+{
+  ImpactSetup              s;
+  std::unique_ptr<Stepper> st;
+
+  PetscFunctionBeginUser;
+  *res   = ImpactResult();
+  res->x = sc.impact.x;
+  PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s));
+  PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, &st, res));
+  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
+  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, res));
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

@@ -1,0 +1,82 @@
+// The impact's rules and monitors from the options (-impact_*, -monitor_*, -snapshot_times)
+// and the run's time rules. See impact.hpp.
+#include "run/impact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace beamimpact {
+
+ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const ImpactParams &ip)
+{
+  ImpactTimes     t;
+  const PetscReal omega1 = BeamFundamentalFrequencyEstimate(beam);
+  t.window               = ip.window >= 0 ? ip.window : 2 * (2 * M_PI / omega1);
+  t.max_time             = ip.max_time > 0 ? ip.max_time : 4 * t.window + 100 * ContactTimeScale(ball);
+  return t;
+}
+
+PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, ImpactParams *p)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Impact: where the ball strikes and how long to follow it", "beamimpact");
+  PetscCall(PetscOptionsReal("-impact_x", "Impact point, metres from the x = 0 end", "", p->x, &p->x, NULL));
+  PetscCall(PetscOptionsReal("-impact_window", "Time followed after each separation (s); < 0: two fundamental periods of the beam", "", p->window, &p->window, NULL));
+  PetscCall(PetscOptionsReal("-impact_max_time", "Cap on the simulated time (s); < 0: 4 windows + 100 contact times", "", p->max_time, &p->max_time, NULL));
+  PetscCall(PetscOptionsReal("-impact_event_tol", "Events are located until |indicator| (c/c_scale or dc/dt/v_i) is below this", "", p->event_tol, &p->event_tol, NULL));
+  PetscCall(PetscOptionsInt("-impact_max_contacts", "Stop with an error after this many separate contacts", "", p->max_contacts, &p->max_contacts, NULL));
+  PetscCall(PetscOptionsBool("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol", "", p->energy_check, &p->energy_check, NULL));
+  PetscCall(PetscOptionsReal("-impact_energy_growth_tol", "Allowed energy growth, relative to the incident kinetic energy", "", p->energy_growth_tol, &p->energy_growth_tol, NULL));
+  PetscOptionsEnd();
+  PetscCheck(p->x >= 0 && p->x <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_x %g is not allowed: the impact point must lie on the beam, 0 <= x <= L = %g (m)", (double)p->x, (double)beam.length);
+  {
+    const BeamOperator  op = BeamOperatorBuild(beam);
+    const ImpactStencil st = BeamImpactStencil(op, p->x);
+    const bool          on_held = (st.w > 0 && op.held[st.j]) && (st.w < 1 ? op.held[st.j + 1] : true);
+    const bool          on_held_right = st.w == 0 && op.held[st.j + 1];
+    PetscCheck(!(on_held || on_held_right), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-impact_x %g is not allowed: that point is held fixed (a clamped or pinned support or inside -beam_clamp); strike a point that can move", (double)p->x);
+  }
+  PetscCheck(p->event_tol > 0 && p->event_tol < 1e-2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_event_tol %g is not allowed: use a value in (0, 1e-2)", (double)p->event_tol);
+  PetscCheck(p->max_contacts >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_max_contacts %" PetscInt_FMT " is not allowed: at least 1", p->max_contacts);
+  PetscCheck(p->energy_growth_tol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_energy_growth_tol %g is not allowed: it must be > 0", (double)p->energy_growth_tol);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, MonitorRequest *m)
+{
+  PetscReal pts[64], times[256];
+  PetscInt  npts = 64, ntimes = 256;
+  PetscBool setpts = PETSC_FALSE, settimes = PETSC_FALSE;
+  PetscReal seg[2] = {0, 0};
+  PetscInt  nseg   = 2;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Monitors: time series and snapshots, written only when asked", "beamimpact");
+  PetscCall(PetscOptionsBool("-monitor_ball", "Record ball position, velocity, compression and force at every step", "", m->ball, &m->ball, NULL));
+  PetscCall(PetscOptionsBool("-monitor_energy", "Record ball kinetic, stored and dissipated energy and beam kinetic and strain energy at every step", "", m->energy, &m->energy, NULL));
+  PetscCall(PetscOptionsRealArray("-monitor_velocity_at", "Record the beam velocity at these points x1,x2,... (m) at every step", "", pts, &npts, &setpts));
+  PetscCall(PetscOptionsRealArray("-snapshot_times", "Record the beam displacement y(x) at these times t1,t2,... (s)", "", times, &ntimes, &settimes));
+  PetscCall(PetscOptionsRealArray("-monitor_segment", "Record the kinetic energy of the beam segment x0,x1 (m) at every step, and its peak", "", seg, &nseg, &m->segment));
+  PetscCall(PetscOptionsReal("-monitor_segment_until", "Take the segment's peak over t <= this (s); < 0: the whole run", "", m->segment_until, &m->segment_until, NULL));
+  PetscOptionsEnd();
+  if (m->segment) {
+    PetscCheck(nseg == 2 && seg[0] >= 0 && seg[0] < seg[1] && seg[1] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-monitor_segment needs two points 0 <= x0 < x1 <= L = %g (m); got %" PetscInt_FMT " value(s) %g,%g", (double)beam.length, nseg, (double)seg[0], (double)(nseg > 1 ? seg[1] : 0));
+    m->segment_x0 = seg[0];
+    m->segment_x1 = seg[1];
+  }
+  if (setpts) {
+    for (PetscInt q = 0; q < npts; ++q)
+      PetscCheck(pts[q] >= 0 && pts[q] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-monitor_velocity_at %g is not allowed: points must lie on the beam, 0 <= x <= %g (m)", (double)pts[q], (double)beam.length);
+    m->velocity_at.assign(pts, pts + npts);
+  }
+  if (settimes) {
+    for (PetscInt q = 0; q < ntimes; ++q) PetscCheck(times[q] >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-snapshot_times %g is not allowed: times must be >= 0 (s)", (double)times[q]);
+    m->snapshot_times.assign(times, times + ntimes);
+    std::sort(m->snapshot_times.begin(), m->snapshot_times.end());
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

@@ -1,0 +1,64 @@
+// Measures of the current state of a stepper. See measures.hpp.
+#include "run/measures.hpp"
+
+namespace beamimpact {
+
+PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m, std::vector<PetscReal> *point_v)
+{
+  static const std::vector<PetscReal> none;
+  const std::vector<PetscReal>       &points = mon ? mon->velocity_at : none;
+  const BeamSystem                   &S      = *ctx.sys;
+  const PetscInt                      F      = S.fields;
+  StateView                           sv;
+
+  PetscFunctionBeginUser;
+  PetscCall(stepper.ViewBegin(&sv));
+  const PetscInt         np = (PetscInt)points.size();
+  std::vector<PetscReal> sums(5 + np, 0.0);
+  sums[0] = BeamSystemKineticEnergy(S, sv.v, sv.v_stride, sv.d0, sv.d1);
+  sums[1] = BeamSystemStrainEnergy(S, sv.y, sv.y_stride, sv.d0, sv.d1);
+  // Translational dofs (field 0) of the owned nodes.
+  auto vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
+  const PetscInt n0 = sv.d0 / F, n1 = sv.d1 / F;
+  for (PetscInt i = n0; i < n1; ++i) {
+    const PetscReal mi = S.mass[S.Dof(i)];
+    sums[2] += mi * vel(i);
+    sums[3] += mi * S.NodeX(i) * vel(i);
+  }
+  if (mon && mon->segment) {
+    const PetscReal tol = 1e-9 * S.h;
+    for (PetscInt i = n0; i < n1; ++i) {
+      const PetscReal x = S.NodeX(i);
+      if (x >= mon->segment_x0 - tol && x <= mon->segment_x1 + tol) sums[4] += 0.5 * S.mass[S.Dof(i)] * vel(i) * vel(i);
+    }
+  }
+  for (PetscInt q = 0; q < np; ++q) {
+    const ImpactStencil st = GridImpactStencil(S.nodes, S.L, points[q]);
+    if (st.j >= n0 && st.j < n1) sums[5 + q] += st.w * vel(st.j);
+    if (st.j + 1 >= n0 && st.j + 1 < n1) sums[5 + q] += (1 - st.w) * vel(st.j + 1);
+  }
+  m->ball_y = sv.ball_y;
+  m->ball_v = sv.ball_v;
+  PetscCall(stepper.ViewEnd(&sv));
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(stepper.Comm(), &size));
+  if (size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, stepper.Comm()));
+  PetscReal cdot;
+  PetscCall(stepper.Compression(&m->c, &cdot));
+  const BallParams &ball = *ctx.ball;
+  m->force               = ContactForce(ball, *ctx.contact, m->c);
+  m->ball_kinetic        = 0.5 * ball.mass * m->ball_v * m->ball_v;
+  m->ball_stored         = ContactStoredEnergy(ball, *ctx.contact, m->c);
+  m->ball_work           = ContactWork(ball, *ctx.contact, m->c);
+  m->beam_kinetic        = sums[0];
+  m->beam_strain         = sums[1];
+  m->momentum            = sums[2] + ball.mass * m->ball_v;
+  m->angular_momentum    = sums[3] + ball.mass * ctx.g->x * m->ball_v;
+  m->beam_momentum       = sums[2];
+  m->beam_moment         = sums[3];
+  m->segment_kinetic     = sums[4];
+  if (point_v) point_v->assign(sums.begin() + 5, sums.end());
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

@@ -1,0 +1,34 @@
+// Energies, momenta, point velocities and the contact of the current state of any stepper
+// (identical on every rank: one reduction for all).
+#pragma once
+
+#include "run/impact.hpp"
+#include "solvers/stepper.hpp"
+#include "system/beam_system.hpp"
+
+#include <vector>
+
+namespace beamimpact {
+
+struct StateMeasures {
+  PetscReal ball_y = 0, ball_v = 0, c = 0, force = 0;                                      // m, m/s, m, N
+  PetscReal ball_kinetic = 0, ball_stored = 0, ball_work = 0, beam_kinetic = 0, beam_strain = 0; // J
+  PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
+  PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
+  PetscReal segment_kinetic = 0;                // J, the monitored segment
+  PetscReal total() const { return ball_kinetic + ball_work + beam_kinetic + beam_strain; }
+};
+
+// What a measurement needs besides the state.
+struct MeasureContext {
+  const BeamSystem      *sys     = nullptr;
+  const ContactCoupling *g       = nullptr;
+  const BallParams      *ball    = nullptr;
+  const ContactState    *contact = nullptr;
+};
+
+// Measures the current state; with a monitor request also the point velocities (m/s, at
+// mon->velocity_at) and the segment's kinetic energy.
+PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m, std::vector<PetscReal> *point_v);
+
+} // namespace beamimpact

@@ -1,0 +1,67 @@
+// Recording during a run. See monitors.hpp.
+#include "run/monitors.hpp"
+
+namespace beamimpact {
+
+ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactResult *res)
+  : stepper_(stepper), ctx_(ctx), mon_(mon), ip_(ip), E0_(E0), res_(res)
+{
+  res->series.velocity_at.assign(mon.velocity_at.size(), {});
+  res->series.velocity_at_x = mon.velocity_at;
+}
+
+PetscErrorCode ImpactRecorder::Record(PetscReal t)
+{
+  StateMeasures          m;
+  std::vector<PetscReal> pv;
+  ImpactSeries          &S = res_->series;
+
+  PetscFunctionBeginUser;
+  if (!mon_.any() && !ip_.energy_check) PetscFunctionReturn(0);
+  PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
+  if (ip_.energy_check) {
+    const PetscReal growth = (m.total() - E0_) / E0_;
+    PetscCheck(growth <= ip_.energy_growth_tol, stepper_.Comm(), PETSC_ERR_NOT_CONVERGED, "energy grew by %.3g of the incident kinetic energy at t = %g s %s", (double)growth, (double)t,
+               stepper_.EnergyGrowthCause().c_str());
+  }
+  if (!mon_.any()) PetscFunctionReturn(0);
+  S.time.push_back(t);
+  if (mon_.ball) {
+    S.ball_y.push_back(m.ball_y);
+    S.ball_v.push_back(m.ball_v);
+    S.compression.push_back(m.c);
+    S.force.push_back(m.force);
+  }
+  if (mon_.energy) {
+    S.ball_kinetic.push_back(m.ball_kinetic);
+    S.ball_stored.push_back(m.ball_stored);
+    S.ball_dissipated.push_back(m.ball_work - m.ball_stored);
+    S.beam_kinetic.push_back(m.beam_kinetic);
+    S.beam_strain.push_back(m.beam_strain);
+    S.total_energy.push_back(m.total());
+  }
+  for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
+  if (mon_.segment) {
+    S.segment_kinetic.push_back(m.segment_kinetic);
+    if ((mon_.segment_until < 0 || t <= mon_.segment_until * (1 + 1e-12)) && m.segment_kinetic > res_->segment_kinetic_peak) {
+      res_->segment_kinetic_peak      = m.segment_kinetic;
+      res_->segment_kinetic_peak_time = t;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
+{
+  PetscFunctionBeginUser;
+  while (next_ < mon_.snapshot_times.size() && mon_.snapshot_times[next_] <= t * (1 + 1e-12) + 1e-15) {
+    std::vector<PetscReal> y;
+    PetscCall(stepper_.GatherDisplacement(&y));
+    res_->series.snapshot_time.push_back(mon_.snapshot_times[next_]);
+    res_->series.snapshot_y.push_back(y);
+    ++next_;
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

@@ -1,0 +1,35 @@
+// What a run records while it steps, only when asked (-monitor_*, -snapshot_times,
+// -impact_energy_check): per-step series, snapshots stepped onto exactly, the segment's
+// kinetic-energy peak, and the energy-growth stop.
+#pragma once
+
+#include "run/measures.hpp"
+
+#include <limits>
+
+namespace beamimpact {
+
+class ImpactRecorder {
+public:
+  ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactResult *res);
+  // The series at time t (s), and the energy check.
+  PetscErrorCode Record(PetscReal t);
+  // Every snapshot due by time t.
+  PetscErrorCode Snapshots(PetscReal t);
+  // The time (s) of the next snapshot; infinity when none is left.
+  PetscReal NextSnapshot() const
+  {
+    return next_ < mon_.snapshot_times.size() ? mon_.snapshot_times[next_] : std::numeric_limits<PetscReal>::infinity();
+  }
+
+private:
+  Stepper              &stepper_;
+  const MeasureContext &ctx_;
+  const MonitorRequest &mon_;
+  const ImpactParams   &ip_;
+  PetscReal             E0_;
+  ImpactResult         *res_;
+  size_t                next_ = 0;
+};
+
+} // namespace beamimpact

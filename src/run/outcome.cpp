@@ -1,0 +1,41 @@
+// The outcome of a run. See outcome.hpp.
+#include "run/outcome.hpp"
+
+namespace beamimpact {
+
+void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, const StateMeasures &m1, PetscReal t, ImpactResult *res)
+{
+  const BallParams &ball = *ctx.ball;
+  const BeamSystem &S    = *ctx.sys;
+  res->final_time             = t;
+  res->ball_final_velocity    = m1.ball_v;
+  res->acor                   = -m1.ball_v / ball.speed;
+  res->acor_corrected         = ball.law == ContactLawKind::Linear ? res->acor * ball.loss_factor : res->acor;
+  res->energy_error           = (m1.total() - m0.total()) / m0.total();
+  res->linear_momentum_error  = (m1.momentum - m0.momentum) / (ball.mass * ball.speed);
+  res->angular_momentum_error = (m1.angular_momentum - m0.angular_momentum) / (ball.mass * ball.speed * S.L);
+  res->beam_kinetic_end       = m1.beam_kinetic;
+  res->beam_strain_end        = m1.beam_strain;
+  res->ball_dissipated_end    = m1.ball_work - m1.ball_stored;
+  // Rigid-body part of the beam's motion about its centre of mass (held nodes never move).
+  PetscReal M = 0, Mx = 0, Mxx = 0;
+  for (PetscInt i = 0; i < S.nodes; ++i) {
+    const PetscInt d = S.Dof(i);
+    if (S.held[d]) continue;
+    const PetscReal x = S.NodeX(i);
+    M += S.mass[d];
+    Mx += S.mass[d] * x;
+    Mxx += S.mass[d] * x * x;
+  }
+  const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
+  const PetscReal L_cm = m1.beam_moment - x_cm * m1.beam_momentum;
+  const PetscReal Ein  = 0.5 * ball.mass * ball.speed * ball.speed;
+  const PetscReal Etr = m1.beam_momentum * m1.beam_momentum / (2 * M), Erot = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
+  const PetscReal ball_loss = ball.law == ContactLawKind::Linear ? (1 - ball.loss_factor * ball.loss_factor) * m1.ball_kinetic : res->ball_dissipated_end;
+  res->ball_loss_fraction   = ball_loss / Ein;
+  res->translation_fraction = Etr / Ein;
+  res->rotation_fraction    = Erot / Ein;
+  res->vibration_fraction   = (m1.beam_kinetic + m1.beam_strain - Etr - Erot) / Ein;
+}
+
+} // namespace beamimpact

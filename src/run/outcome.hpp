@@ -1,0 +1,15 @@
+// The outcome of a run from its first and last states: ACOR, invariants, and where the
+// incident energy went (ball loss, the beam's rigid translation and rotation about its
+// centre of mass, vibration).
+#pragma once
+
+#include "run/measures.hpp"
+
+namespace beamimpact {
+
+// Fills the outcome fields of *res (final_time, ball_final_velocity, acor(_corrected),
+// energy and momentum errors, end energies, energy partition) from the measures m0 at
+// t = 0 and m1 at the end time t (s).
+void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, const StateMeasures &m1, PetscReal t, ImpactResult *res);
+
+} // namespace beamimpact

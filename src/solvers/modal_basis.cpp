@@ -1,0 +1,206 @@
+// Modal tools of the semi-discrete system. See modal_basis.hpp.
+#include "solvers/modal_basis.hpp"
+
+#include <petscblaslapack.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace beamimpact {
+
+extern "C" void dgbsv_(const int *n, const int *kl, const int *ku, const int *nrhs, double *ab, const int *ldab, int *ipiv, double *b, const int *ldb, int *info);
+
+ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, PetscReal ball_mass, PetscReal k)
+{
+  ModalSystem S;
+  S.sys = &sys;
+  S.k   = k;
+  for (PetscInt d = 0; d < sys.ndof; ++d) {
+    if (sys.held[d]) continue;
+    S.dof.push_back(d);
+    S.mass.push_back(sys.mass[d]);
+    S.g.push_back(d == g.dof[0] ? -g.w[0] : (d == g.dof[1] ? -g.w[1] : 0.0));
+  }
+  S.dof.push_back(-1);
+  S.mass.push_back(ball_mass);
+  S.g.push_back(1.0);
+  S.n = (PetscInt)S.dof.size();
+  return S;
+}
+
+
+// syev's eigenvectors are accurate only to eps * lambda_max / gap: with the h^-4 spread of
+// the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
+// shifted by its eigenvalue, with a banded LU of A - sigma I (the ball is ordered next to
+// its two nodes, so A is banded with 3 sub- and super-diagonals), then modified
+// Gram-Schmidt, bring each vector to round-off relative to its own eigenvalue.
+static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
+{
+  const int n = (int)S.n, kl = (int)S.sys->bw + 1, ku = kl, ldab = 2 * kl + ku + 1, one = 1;
+
+  PetscFunctionBeginUser;
+  // Band order: beam dofs in node order with the ball right after the later of its nodes.
+  std::vector<PetscInt> dof_of_node(S.sys->ndof, -1);
+  for (PetscInt d = 0; d < n - 1; ++d) dof_of_node[S.dof[d]] = d;
+  PetscInt after = -1;
+  for (PetscInt d = 0; d < n - 1; ++d)
+    if (S.g[d] != 0.0) after = d;
+  std::vector<int> pos(n); // dof -> band position
+  {
+    int p = 0;
+    if (after < 0) pos[n - 1] = p++;
+    for (PetscInt d = 0; d < n - 1; ++d) {
+      pos[d] = p++;
+      if (d == after) pos[n - 1] = p++;
+    }
+  }
+  // Entries of A = M^{-1/2} K_p M^{-1/2} as (row dof, col dof, value).
+  struct Entry {
+    PetscInt r, c;
+    PetscReal v;
+  };
+  std::vector<Entry>     entries;
+  std::vector<PetscInt>  cols(2 * S.sys->bw + 1);
+  std::vector<PetscReal> vals(2 * S.sys->bw + 1);
+  for (PetscInt d = 0; d < n - 1; ++d) {
+    const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
+    for (PetscInt q = 0; q < nc; ++q) {
+      const PetscInt c = dof_of_node[cols[q]];
+      entries.push_back({d, c, vals[q] / std::sqrt(S.mass[d] * S.mass[c])});
+    }
+  }
+  if (contact)
+    for (PetscInt r = 0; r < n; ++r)
+      for (PetscInt c = 0; c < n; ++c)
+        if (S.g[r] != 0.0 && S.g[c] != 0.0) entries.push_back({r, c, S.k * S.g[r] * S.g[c] / std::sqrt(S.mass[r] * S.mass[c])});
+  const PetscReal        scale = *std::max_element(lambda.begin(), lambda.end());
+  std::vector<double>    ab((size_t)ldab * n), x(n);
+  std::vector<int>       ipiv(n);
+  for (PetscInt k = 0; k < n; ++k) {
+    PetscReal sigma = lambda[k] - 1e-14 * scale; // just below: never exactly singular
+    PetscReal *phi  = &B->Phi[k * n];
+    for (int it = 0; it < 2; ++it) {
+      std::fill(ab.begin(), ab.end(), 0.0);
+      for (const Entry &e : entries) {
+        const int i = pos[e.r], j = pos[e.c];
+        ab[(size_t)(kl + ku + i - j) + (size_t)j * ldab] += e.v;
+      }
+      for (int i = 0; i < n; ++i) ab[(size_t)(kl + ku) + (size_t)i * ldab] -= sigma;
+      for (PetscInt d = 0; d < n; ++d) x[pos[d]] = phi[d];
+      int info;
+      dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), x.data(), &n, &info);
+      PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbsv failed (info %d)", info);
+      if (info > 0) break; // exactly singular: the vector is already exact
+      PetscReal nrm = 0;
+      for (int i = 0; i < n; ++i) nrm += x[i] * x[i];
+      nrm = std::sqrt(nrm);
+      PetscReal sgn = 0; // keep the orientation
+      for (PetscInt d = 0; d < n; ++d) sgn += x[pos[d]] * phi[d];
+      for (PetscInt d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[pos[d]] / nrm;
+    }
+  }
+  // Modified Gram-Schmidt (cleans up (near-)degenerate pairs such as the rigid modes).
+  for (PetscInt k = 0; k < n; ++k) {
+    PetscReal *phi = &B->Phi[k * n];
+    for (PetscInt l = 0; l < k; ++l) {
+      const PetscReal *psi = &B->Phi[l * n];
+      PetscReal        dot = 0;
+      for (PetscInt d = 0; d < n; ++d) dot += phi[d] * psi[d];
+      for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * psi[d];
+    }
+    PetscReal nrm = 0;
+    for (PetscInt d = 0; d < n; ++d) nrm += phi[d] * phi[d];
+    nrm = std::sqrt(nrm);
+    for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B)
+{
+  const PetscInt         n = S.n;
+  std::vector<PetscReal> A(n * n, 0.0), w(n);
+
+  std::vector<PetscInt>  cols(2 * S.sys->bw + 1);
+  std::vector<PetscReal> vals(2 * S.sys->bw + 1);
+
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> dof_of_node(S.sys->ndof, -1);
+  for (PetscInt d = 0; d < n - 1; ++d) dof_of_node[S.dof[d]] = d;
+  for (PetscInt d = 0; d < n - 1; ++d) {
+    const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
+    for (PetscInt q = 0; q < nc; ++q) A[d + dof_of_node[cols[q]] * n] += vals[q];
+  }
+  if (contact)
+    for (PetscInt r = 0; r < n; ++r)
+      for (PetscInt c = 0; c < n; ++c) A[r + c * n] += S.k * S.g[r] * S.g[c];
+  for (PetscInt r = 0; r < n; ++r)
+    for (PetscInt c = 0; c < n; ++c) A[r + c * n] /= std::sqrt(S.mass[r] * S.mass[c]);
+  {
+    PetscBLASInt bn, lwork, info;
+    PetscCall(PetscBLASIntCast(n, &bn));
+    PetscCall(PetscBLASIntCast(std::max<PetscInt>(1, 8 * n), &lwork));
+    std::vector<PetscReal> work(lwork);
+    PetscCallBLAS("LAPACKsyev", LAPACKsyev_("V", "U", &bn, A.data(), &bn, w.data(), work.data(), &lwork, &info));
+    PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK syev failed (info %d)", (int)info);
+  }
+  B->Phi = A;
+  B->omega.assign(n, 0.0);
+  B->gamma.assign(n, 0.0);
+  PetscCall(RefineBasis(S, contact, w, B));
+  // Refine each eigenvalue by its Rayleigh quotient in the energy form (a sum of squares:
+  // accurate relative to the mode itself, where syev's is only relative to the largest).
+  std::vector<PetscReal> shape(S.sys->ndof);
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal *phi = &B->Phi[k * n];
+    std::fill(shape.begin(), shape.end(), 0.0);
+    PetscReal norm = 0, c = 0;
+    for (PetscInt d = 0; d < n; ++d) {
+      const PetscReal q = phi[d] / std::sqrt(S.mass[d]);
+      if (d < n - 1) shape[S.dof[d]] = q;
+      norm += S.mass[d] * q * q;
+      c += S.g[d] * q;
+    }
+    PetscReal twoU = 2 * BeamSystemStrainEnergy(*S.sys, shape.data(), S.sys->fields, 0, S.sys->ndof);
+    if (contact) twoU += S.k * c * c;
+    B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
+    B->gamma[k] = c;
+  }
+  PetscFunctionReturn(0);
+}
+
+bool ModalFirstCrossing(const ModalPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)
+{
+  const PetscReal bound = std::max(ph.Bound(p + 2), 1e-300);
+  PetscReal       s     = 0.0;
+  PetscReal       f     = sign * ph.Derivative(s, p);
+  // Leave a root we start on (the previous event) towards the side of the search.
+  int guard = 0;
+  while (f <= 0 && s < s_end && guard++ < 1000) {
+    s = std::min(s_end, s + s_min * (1 << std::min(guard, 20)));
+    f = sign * ph.Derivative(s, p);
+  }
+  if (f <= 0) return false;
+  while (s < s_end) {
+    const PetscReal fd   = sign * ph.Derivative(s, p + 1);
+    PetscReal       step = fd >= 0 ? std::sqrt(2 * f / bound) : (fd + std::sqrt(fd * fd + 2 * bound * f)) / bound;
+    step                 = std::max(step, s_min);
+    const PetscReal sn   = std::min(s_end, s + step);
+    const PetscReal fn   = sign * ph.Derivative(sn, p);
+    if (fn <= 0) { // bracketed: bisect to round-off, return the post side
+      PetscReal a = s, b = sn;
+      for (int it = 0; it < 200 && b - a > 4 * std::numeric_limits<PetscReal>::epsilon() * b; ++it) {
+        const PetscReal m = 0.5 * (a + b);
+        (sign * ph.Derivative(m, p) > 0 ? a : b) = m;
+      }
+      *root = b;
+      return true;
+    }
+    s = sn;
+    f = fn;
+  }
+  return false;
+}
+
+} // namespace beamimpact

@@ -1,0 +1,132 @@
+// Exact free and in-contact vibration of the semi-discrete system (system/beam_system.hpp)
+// with a linear spring: between events the beam + ball system is linear, M q'' + K_p q = 0
+// with K_p = K + k g g^T in contact and K_p = K when separated (q: free beam dofs and the
+// ball). A symmetric eigen-decomposition of M^{-1/2} K_p M^{-1/2} (LAPACK syev, refined by
+// banded inverse iteration) gives q(t) in closed form in each phase,
+//   q(t0 + s) = M^{-1/2} Phi z(s),  z_k(s) = z_k cos(w_k s) + zdot_k sin(w_k s) / w_k,
+// and events are the first sign changes of c(s) = g^T q (separation, re-contact) and of
+// dc/ds (maximum compression), bracketed with steps that provably cannot skip a crossing (a
+// Taylor bound with |f''| <= sum_k |gamma_k a_k| w_k^2) and bisected to round-off. Serial
+// (the system is small and dense). Used by the exact reference (run/modal_reference.hpp).
+#pragma once
+
+#include "system/beam_system.hpp"
+
+#include <petscsys.h>
+
+#include <vector>
+
+namespace beamimpact {
+
+// The free degrees of freedom: beam dofs that are not held, then the ball.
+struct ModalSystem {
+  const BeamSystem      *sys = nullptr;
+  std::vector<PetscInt>  dof;  // free dof -> beam dof (the last is the ball: -1)
+  std::vector<PetscReal> mass; // kg, per free dof
+  std::vector<PetscReal> g;    // dc/dq per free dof
+  PetscInt               n = 0;
+  PetscReal              k = 0; // N/m, the contact spring
+};
+ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, PetscReal ball_mass, PetscReal k);
+
+// One phase's eigen-decomposition of M^{-1/2} K_p M^{-1/2}.
+struct ModalBasis {
+  std::vector<PetscReal> omega; // rad/s, per mode
+  std::vector<PetscReal> Phi;   // n x n, column-major: Phi[r + k n] (orthonormal eigenvectors)
+  std::vector<PetscReal> gamma; // g^T M^{-1/2} Phi_k: contribution of mode k to c
+};
+// The basis in contact (K + k g g^T) or separated (K).
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B);
+
+// A phase's solution from its start: modal coordinates and velocities.
+struct ModalPhase {
+  const ModalSystem *S = nullptr;
+  const ModalBasis  *B = nullptr;
+  std::vector<PetscReal> z, zd; // modal displacement and velocity at s = 0
+
+  void From(const std::vector<PetscReal> &q, const std::vector<PetscReal> &qd)
+  {
+    const PetscInt n = S->n;
+    z.assign(n, 0.0);
+    zd.assign(n, 0.0);
+    for (PetscInt k = 0; k < n; ++k)
+      for (PetscInt d = 0; d < n; ++d) {
+        const PetscReal m = std::sqrt(S->mass[d]) * B->Phi[d + k * n];
+        z[k] += m * q[d];
+        zd[k] += m * qd[d];
+      }
+  }
+  // Modal displacement and velocity at s.
+  void At(PetscReal s, std::vector<PetscReal> &zs, std::vector<PetscReal> &zds) const
+  {
+    const PetscInt n = S->n;
+    zs.resize(n);
+    zds.resize(n);
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscReal w = B->omega[k];
+      if (w == 0.0) {
+        zs[k]  = z[k] + zd[k] * s;
+        zds[k] = zd[k];
+      } else {
+        const PetscReal cs = std::cos(w * s), sn = std::sin(w * s);
+        zs[k]  = z[k] * cs + zd[k] * sn / w;
+        zds[k] = -z[k] * w * sn + zd[k] * cs;
+      }
+    }
+  }
+  // d^p c / ds^p at s for p = 0..3.
+  PetscReal Derivative(PetscReal s, int p) const
+  {
+    PetscReal v = 0;
+    for (PetscInt k = 0; k < S->n; ++k) {
+      const PetscReal w = B->omega[k], gk = B->gamma[k];
+      if (gk == 0.0) continue;
+      if (w == 0.0) {
+        v += gk * (p == 0 ? z[k] + zd[k] * s : p == 1 ? zd[k] : 0.0);
+        continue;
+      }
+      const PetscReal cs = std::cos(w * s), sn = std::sin(w * s), a = z[k], b = zd[k] / w;
+      // f = a cos + b sin; derivatives rotate by 90 degrees and scale by w.
+      switch (p) {
+      case 0: v += gk * (a * cs + b * sn); break;
+      case 1: v += gk * w * (-a * sn + b * cs); break;
+      case 2: v += gk * w * w * (-a * cs - b * sn); break;
+      default: v += gk * w * w * w * (a * sn - b * cs); break;
+      }
+    }
+    return v;
+  }
+  // Upper bound on |d^p c / ds^p| over all s (p >= 1 for oscillating modes).
+  PetscReal Bound(int p) const
+  {
+    PetscReal b = 0;
+    for (PetscInt k = 0; k < S->n; ++k) {
+      const PetscReal w = B->omega[k];
+      if (w == 0.0) continue;
+      b += std::abs(B->gamma[k]) * std::hypot(z[k], zd[k] / w) * std::pow(w, p);
+    }
+    return b;
+  }
+  void State(PetscReal s, std::vector<PetscReal> &q, std::vector<PetscReal> &qd) const
+  {
+    std::vector<PetscReal> zs, zds;
+    At(s, zs, zds);
+    const PetscInt n = S->n;
+    q.assign(n, 0.0);
+    qd.assign(n, 0.0);
+    for (PetscInt d = 0; d < n; ++d) {
+      const PetscReal im = 1.0 / std::sqrt(S->mass[d]);
+      for (PetscInt k = 0; k < n; ++k) {
+        q[d] += im * B->Phi[d + k * n] * zs[k];
+        qd[d] += im * B->Phi[d + k * n] * zds[k];
+      }
+    }
+  }
+};
+
+// First s in (0, s_end] where sign * c^(p)(s) goes from > 0 to <= 0; returns false if none.
+// Steps are safe: with f = sign c^(p), f' and |f''| <= bound, f cannot reach 0 within
+// the step unless the step is the minimum one.
+bool ModalFirstCrossing(const ModalPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root);
+
+} // namespace beamimpact

@@ -1,0 +1,61 @@
+// One small interface over every time stepper of the impact (the PETSc TS stepper, the
+// leapfrog baseline): the run driver (run/impact_driver.cpp) steps, rolls back, restarts
+// and reads the state through it, and owns the event location, the contact phases and the
+// outcome. A stepper evaluates the contact force with the ContactState the driver owns
+// (given at creation) and calls Restart() when the driver switched its phase.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+// Read access to the current state: beam dof d (node-major, system/beam_system.hpp) is
+// y[(d / fields) * stride + d % fields] for d in the owned range widened by the ghost width,
+// and v[...] likewise for owned d; the ball's values are the same on every rank.
+struct StateView {
+  const PetscReal *y = nullptr, *v = nullptr;
+  PetscInt         y_stride = 1, v_stride = 1; // per node
+  PetscInt         d0 = 0, d1 = 0;             // owned dofs
+  PetscReal        ball_y = 0, ball_v = 0;     // m, m/s
+};
+
+// What the stepper itself counted.
+struct StepperCounts {
+  PetscInt rejected_steps = 0; // rejected by the error controller
+  PetscInt failed_solves  = 0; // nonlinear solves that failed (the step was retried smaller)
+  PetscInt function_evals = 0, jacobian_evals = 0, jacobian_assemblies = 0, nonlinear_its = 0, linear_its = 0;
+};
+
+// How the run is integrated (set when the stepper is created).
+struct IntegratorInfo {
+  std::string ts_type;             // -ts_type, or "leapfrog" / "modal"
+  std::string formulation;         // explicit | imex | implicit | second-order | exact
+  PetscReal   dt_stable = 0;       // s, explicit stability limit (0: not explicit)
+  PetscReal   dt_nominal = 0;      // s, the fixed step, or the initial step of an adaptive run
+  PetscReal   omega_max_bound = 0; // rad/s, Gershgorin bound used for dt_stable
+};
+
+class Stepper {
+public:
+  virtual ~Stepper() = default;
+  virtual MPI_Comm       Comm() const   = 0;
+  virtual std::string    Method() const = 0; // for messages: "-ts_type cn", "leapfrog"
+  virtual std::string    StepOption() const = 0; // what sets its step: "-ts_dt", "-ts_rtol/-ts_atol", "-leapfrog_dt"
+  virtual PetscReal      Time() const   = 0; // s
+  virtual PetscErrorCode Step(PetscReal dt) = 0;   // one step from the current state; a failed step is an error that says why
+  virtual PetscErrorCode RollBack() = 0;           // back to the start of the last step
+  virtual PetscErrorCode Restart() = 0;            // the force law changed at the current state
+  virtual PetscErrorCode NextStep(PetscReal *dt) = 0; // the step it takes next (fixed, or the adaptive suggestion within its cap)
+  virtual PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) = 0; // m, m/s at the current state (every rank)
+  virtual PetscErrorCode ViewBegin(StateView *v) = 0;
+  virtual PetscErrorCode ViewEnd(StateView *v)   = 0;
+  virtual PetscErrorCode GatherDisplacement(std::vector<PetscReal> *y) = 0; // rank 0: deflection per node (m)
+  virtual PetscErrorCode Counts(StepperCounts *n) = 0;
+  // Why the energy may have grown at the current step (the likely cause, for the error message).
+  virtual std::string EnergyGrowthCause() const = 0;
+};
+
+} // namespace beamimpact

@@ -1,0 +1,186 @@
+// The TS Jacobian J = shift I + d(residual)/du of the implicit, IMEX and second-order forms:
+//   first order   [[shift I, -I], [(K + kc g g^T)/m, shift I]]  (ball rows alike)
+//   second order  shift_A I + (K + kc g g^T)/m
+// K from the system's band, kc = dF/dc of the contact law in its current phase. The constant
+// part J0 is assembled once with the final pattern (contact entries as explicit zeros); a
+// change of shift or contact stiffness copies it, shifts the diagonal and adds the 3x3
+// contact block, so the LU is redone only when one of them changes.
+#include "solvers/ts_problem.hpp"
+
+#include <petscdm.h>
+
+#include <map>
+
+namespace beamimpact {
+
+namespace {
+
+// The coupling vector (dc/du over the coupled beam dofs and the ball) and its columns.
+struct CouplingBlock {
+  PetscInt  cols[3];
+  PetscReal g[3];
+};
+CouplingBlock CouplingBlockOf(const TSProblem &P)
+{
+  CouplingBlock b;
+  for (PetscInt q = 0; q < 2; ++q) {
+    b.cols[q] = P.L.DofIndex(P.g.dof[q], false);
+    b.g[q]    = -P.g.w[q];
+  }
+  b.cols[2] = P.L.BallIndex(0);
+  b.g[2]    = 1.0;
+  return b;
+}
+
+PetscErrorCode SetRow(Mat J, PetscInt r, const std::map<PetscInt, PetscScalar> &row)
+{
+  std::vector<PetscInt>    cols;
+  std::vector<PetscScalar> vals;
+
+  PetscFunctionBeginUser;
+  for (auto &e : row) {
+    cols.push_back(e.first);
+    vals.push_back(e.second);
+  }
+  PetscCall(MatSetValues(J, 1, &r, (PetscInt)cols.size(), cols.data(), vals.data(), INSERT_VALUES));
+  PetscFunctionReturn(0);
+}
+
+// Every entry of the pattern, with shift = kc = 0: the constant part J0.
+PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J)
+{
+  const BeamSystem   &S     = *P.sys;
+  const TSLayout     &L     = P.L;
+  const bool          first = L.dof == 2 * L.fields;
+  const CouplingBlock cb    = CouplingBlockOf(P);
+  const PetscInt      width = 2 * S.bw + 1;
+  std::vector<PetscInt>  cols(width);
+  std::vector<PetscReal> vals(width);
+
+  PetscFunctionBeginUser;
+  for (PetscInt d = L.D0(); d < L.D1(); ++d) {
+    std::map<PetscInt, PetscScalar> row;
+    const PetscInt                  ry = L.DofIndex(d, false), rv = L.DofIndex(d, first);
+    if (first) {
+      PetscScalar v[2] = {0.0, S.held[d] ? 0.0 : -1.0};
+      PetscInt    c[2] = {ry, rv};
+      PetscCall(MatSetValues(J, 1, &ry, 2, c, v, INSERT_VALUES));
+    }
+    row[rv] = 0.0;
+    const PetscInt n = BeamSystemStiffnessRow(S, d, cols.data(), vals.data());
+    for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], false)] += vals[q] / S.mass[d];
+    for (PetscInt p = 0; p < 2; ++p)
+      if (P.g.dof[p] == d)
+        for (PetscInt q = 0; q < 3; ++q) row[cb.cols[q]] += 0.0;
+    PetscCall(SetRow(J, rv, row));
+  }
+  if (L.rank == 0) {
+    const PetscInt by = L.BallIndex(0), bv = L.BallIndex(first ? 1 : 0);
+    if (first) {
+      PetscScalar v[2] = {0.0, -1.0};
+      PetscInt    c[2] = {by, bv};
+      PetscCall(MatSetValues(J, 1, &by, 2, c, v, INSERT_VALUES));
+    }
+    std::map<PetscInt, PetscScalar> row;
+    row[bv] = 0.0;
+    for (PetscInt q = 0; q < 3; ++q) row[cb.cols[q]] += 0.0;
+    PetscCall(SetRow(J, bv, row));
+  }
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+// J = J0 + shift I + kc g g^T / m: a copy of the constant part (same pattern: a memcpy),
+// a diagonal shift, and the 3x3 contact block added on the rows that own it.
+PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal kc)
+{
+  const TSLayout     &L     = P.L;
+  const bool          first = L.dof == 2 * L.fields;
+  const CouplingBlock cb    = CouplingBlockOf(P);
+
+  PetscFunctionBeginUser;
+  P.count.assembled++;
+  PetscCall(MatCopy(P.jac.J0, P.jac.J, SAME_NONZERO_PATTERN));
+  PetscCall(MatShift(P.jac.J, shift));
+  if (kc != 0.0)
+    for (PetscInt p = 0; p < 3; ++p) {
+      const bool     ball = p == 2;
+      const PetscInt d    = ball ? -1 : P.g.dof[p];
+      if (ball ? L.rank != 0 : !(d / L.fields >= L.xs && d / L.fields < L.xe)) continue;
+      if (!ball && P.sys->held[d]) continue;
+      const PetscInt  row = ball ? L.BallIndex(first ? 1 : 0) : L.DofIndex(d, first);
+      const PetscReal m   = ball ? P.ball.mass : P.sys->mass[d];
+      PetscScalar     vals[3];
+      for (PetscInt q = 0; q < 3; ++q) vals[q] = kc * cb.g[p] * cb.g[q] / m;
+      PetscCall(MatSetValues(P.jac.J, 1, &row, 3, cb.cols, vals, ADD_VALUES));
+    }
+  PetscCall(MatAssemblyBegin(P.jac.J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P.jac.J, MAT_FINAL_ASSEMBLY));
+  P.jac.shift = shift;
+  P.jac.kc    = kc;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift)
+{
+  PetscReal kc = 0;
+
+  PetscFunctionBeginUser;
+  P.count.jac++;
+  if (P.jac.contact && P.contact->phase != ContactPhase::Separated) {
+    TSStateRead s;
+    PetscReal   c;
+    PetscCall(TSStateReadBegin(P.L, X, &s));
+    PetscCall(TSCompression(P, s.beam, P.L.dof, s.ball[0], &c));
+    PetscCall(TSStateReadEnd(P.L, X, &s));
+    kc = ContactStiffness(P.ball, *P.contact, c);
+  }
+  if (shift != P.jac.shift || kc != P.jac.kc) PetscCall(AssembleJacobian(P, shift, kc));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode TSIJacobianBeam(TS ts, PetscReal t, Vec U, Vec Udot, PetscReal shift, Mat A, Mat B, void *ctx)
+{
+  PetscFunctionBeginUser;
+  PetscCall(UpdateJacobian(*static_cast<TSProblem *>(ctx), U, shift));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J, Mat B, void *ctx)
+{
+  PetscFunctionBeginUser;
+  PetscCall(UpdateJacobian(*static_cast<TSProblem *>(ctx), X, shiftA));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSJacobianCreate(TSProblem &P)
+{
+  Vec      U;
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(P.L.pack, &U));
+  PetscCall(VecGetLocalSize(U, &n));
+  PetscCall(VecDestroy(&U));
+  const PetscInt width = 2 * P.sys->bw + 1;
+  PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 7, NULL, width + 3, NULL, &P.jac.J));
+  PetscCall(MatSetOption(P.jac.J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatSetOption(P.jac.J, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
+  PetscCall(AssembleConstantPart(P, P.jac.J)); // fixes the pattern (coupling entries as zeros)
+  PetscCall(MatDuplicate(P.jac.J, MAT_COPY_VALUES, &P.jac.J0));
+  P.jac.shift = -1; // the first real assembly happens at the first solve
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSJacobianDestroy(TSProblem &P)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&P.jac.J));
+  PetscCall(MatDestroy(&P.jac.J0));
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

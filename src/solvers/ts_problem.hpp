@@ -1,0 +1,114 @@
+// Internal to the PETSc TS stepper (solvers/ts_*.cpp): the formulation chosen from the TS
+// type, the DM layout of the state, the Jacobian cache and the callback counters. The
+// physics comes from the system (system/beam_system.hpp) and the ball's contact law.
+//
+// State on a DMComposite of a 1-D DMDA (the beam: per node the deflection fields, then,
+// in first-order form, their velocities) and a DMRedundant on rank 0 (the ball: y_b, then
+// v_b in first-order form).
+#pragma once
+
+#include "model/contact.hpp"
+#include "system/beam_system.hpp"
+
+#include <petscts.h>
+
+#include <vector>
+
+namespace beamimpact {
+
+enum class Formulation { Explicit, IMEX, Implicit, SecondOrder };
+const char *FormulationName(Formulation f);
+Formulation FormulationOfType(const char *ts_type);
+
+// Where every unknown lives.
+struct TSLayout {
+  MPI_Comm    comm = MPI_COMM_NULL;
+  PetscMPIInt size = 1, rank = 0;
+  PetscInt    nodes  = 0;
+  PetscInt    fields = 1;  // beam dofs per node
+  PetscInt    dof    = 2;  // DMDA components per node: fields (second-order form) or 2 fields
+  DM          pack = nullptr, da = nullptr, red = nullptr;
+  PetscInt    xs = 0, xe = 0;              // owned nodes
+  std::vector<PetscInt> node_owner_start;  // first node of each rank
+  std::vector<PetscInt> rstart;            // first composite global index of each rank
+
+  PetscInt NodeIndex(PetscInt node, PetscInt comp) const; // composite global index
+  PetscInt BallIndex(PetscInt comp) const;
+  PetscInt DofIndex(PetscInt d, bool velocity) const { return NodeIndex(d / fields, (velocity ? fields : 0) + d % fields); }
+  PetscInt D0() const { return xs * fields; } // owned beam dofs [D0, D1)
+  PetscInt D1() const { return xe * fields; }
+};
+PetscErrorCode TSLayoutCreate(MPI_Comm comm, PetscInt nodes, PetscInt fields, PetscInt ghost_nodes, bool first_order, TSLayout *L);
+PetscErrorCode TSLayoutDestroy(TSLayout *L);
+
+// The Jacobian J = shift I + d(rhs)/du, reassembled only when the shift or the contact
+// stiffness changes; J0 (no shift, no contact) is assembled once and copied.
+struct JacobianCache {
+  Mat       J = nullptr, J0 = nullptr;
+  PetscReal shift = -1, kc = -1;
+  bool      contact = false; // the contact force is in the implicit part
+};
+
+struct TSCounters {
+  PetscInt func = 0, jac = 0, assembled = 0;
+};
+
+// Everything the TS callbacks need.
+struct TSProblem {
+  const BeamSystem *sys = nullptr;
+  ContactCoupling   g;
+  BallParams        ball;
+  ContactState     *contact = nullptr; // owned by the run driver
+  Formulation       form    = Formulation::Explicit;
+  TSLayout          L;
+  JacobianCache     jac;
+  TSCounters        count;
+};
+
+// Read access to a composite vector: beam values by global node (ghosted by the system's
+// width), the ball's values on every rank.
+struct TSStateRead {
+  const PetscScalar *beam = nullptr; // beam[node * dof + comp]
+  PetscScalar        ball[2] = {0, 0};
+  Vec                Ub = nullptr, Ur = nullptr;
+  const PetscScalar *arr = nullptr;
+  bool               local = false;
+};
+PetscErrorCode TSStateReadBegin(const TSLayout &L, Vec U, TSStateRead *s);
+PetscErrorCode TSStateReadEnd(const TSLayout &L, Vec U, TSStateRead *s);
+
+// Write access to the owned part of a composite vector.
+struct TSStateWrite {
+  PetscScalar *beam = nullptr; // beam[node * dof + comp] for owned nodes
+  PetscScalar *ball = nullptr; // nullptr on ranks other than 0
+  Vec          Fb = nullptr, Fr = nullptr;
+  PetscScalar *arr = nullptr, *rarr = nullptr;
+};
+PetscErrorCode TSStateWriteBegin(const TSLayout &L, Vec F, TSStateWrite *o);
+PetscErrorCode TSStateWriteEnd(const TSLayout &L, Vec F, TSStateWrite *o);
+
+// c = y_b - g^T y (comp 0 of each field block: the deflection) or its rate (the velocity
+// block), from a beam array with node stride `stride` starting at the block; summed over ranks.
+PetscErrorCode TSCompression(const TSProblem &P, const PetscScalar *beam, PetscInt stride, PetscScalar ball_value, PetscReal *c);
+
+// The residuals (ts_residuals.cpp) and Jacobians (ts_jacobian.cpp) for each formulation.
+PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx);
+PetscErrorCode TSRHSContact(TS ts, PetscReal t, Vec U, Vec G, void *ctx);
+PetscErrorCode TSIFunctionBeam(TS ts, PetscReal t, Vec U, Vec Udot, Vec G, void *ctx);
+PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, void *ctx);
+PetscErrorCode TSIJacobianBeam(TS ts, PetscReal t, Vec U, Vec Udot, PetscReal shift, Mat A, Mat B, void *ctx);
+PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J, Mat B, void *ctx);
+PetscErrorCode TSJacobianCreate(TSProblem &P);
+PetscErrorCode TSJacobianDestroy(TSProblem &P);
+
+// Diagnostics (ts_diagnostics.cpp): a Newton convergence test that accepts the residual's
+// round-off floor, and the explanation of a failed step.
+struct NewtonFloor {
+  TSProblem *P      = nullptr;
+  TS         ts     = nullptr;
+  PetscReal  omega2 = 0; // (rad/s)^2, bound on omega_max^2
+};
+PetscErrorCode TSConvergedWithRoundoffFloor(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx);
+PetscErrorCode TSCheckStep(const TSProblem &P, TS ts, const char *ts_type, PetscReal omega_max);
+
+} // namespace beamimpact

@@ -1,0 +1,476 @@
+// The PETSc TS stepper: set-up of the TS for the formulation of its type, and the Stepper
+// interface over it. See ts_stepper.hpp; residuals, Jacobians and diagnostics are in
+// ts_residuals.cpp, ts_jacobian.cpp and ts_diagnostics.cpp.
+#include "solvers/ts_stepper.hpp"
+
+#include "io/options_util.hpp"
+#include "solvers/rk_stability.hpp"
+#include "solvers/ts_galpha2.hpp"
+#include "solvers/ts_problem.hpp"
+
+#include <petscdmcomposite.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace beamimpact {
+
+namespace {
+
+// Types whose steps can be rolled back, so that events can be located (PETSc 3.18).
+bool TypeCanRollBack(const char *type)
+{
+  for (const char *t : {TSRK, TSTHETA, TSCN, TSBEULER, TSBDF, TSARKIMEX, TSROSW, TSALPHA, TSALPHA2, TSIRK})
+    if (!std::strcmp(t, type)) return true;
+  return false;
+}
+
+class TSStepper : public Stepper {
+public:
+  TSProblem      P;
+  TS             ts = nullptr;
+  Vec            U = nullptr, V = nullptr; // V: velocities of the second-order form
+  bool           fixed_step = true;
+  PetscReal      dt_nominal = 0, dt_cap = 0; // s
+  ContactScales  scales;
+  IntegratorInfo info;
+  std::string    rk_type; // -ts_rk_type, for messages
+  NewtonFloor    newton_floor;
+  // The open view (ViewBegin/ViewEnd).
+  TSStateRead        view_x;
+  Vec                view_X = nullptr, view_Vb = nullptr, view_Vr = nullptr;
+  const PetscScalar *view_varr = nullptr;
+
+  ~TSStepper() override
+  {
+    TSDestroy(&ts);
+    VecDestroy(&U);
+    VecDestroy(&V);
+    TSJacobianDestroy(P);
+    TSLayoutDestroy(&P.L);
+  }
+  MPI_Comm    Comm() const override { return P.L.comm; }
+  std::string Method() const override { return "-ts_type " + info.ts_type; }
+  std::string StepOption() const override { return fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol"; }
+  PetscReal   Time() const override
+  {
+    PetscReal t = 0;
+    TSGetTime(ts, &t);
+    return t;
+  }
+  PetscErrorCode Step(PetscReal dt) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(TSSetTimeStep(ts, dt));
+    PetscCall(TSStep(ts));
+    PetscCall(TSCheckStep(P, ts, info.ts_type.c_str(), info.omega_max_bound));
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode RollBack() override { return TSRollBack(ts); }
+  PetscErrorCode Restart() override { return TSRestartStep(ts); }
+  PetscErrorCode NextStep(PetscReal *dt) override
+  {
+    PetscFunctionBeginUser;
+    if (fixed_step) *dt = dt_nominal;
+    else {
+      PetscCall(TSGetTimeStep(ts, dt));
+      *dt = std::min(*dt, dt_cap);
+    }
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode Solution(Vec *X, Vec *Vel) const
+  {
+    PetscFunctionBeginUser;
+    *Vel = nullptr;
+    if (P.form == Formulation::SecondOrder) PetscCall(TS2GetSolution(ts, X, Vel));
+    else PetscCall(TSGetSolution(ts, X));
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) override;
+  PetscErrorCode ViewBegin(StateView *v) override;
+  PetscErrorCode ViewEnd(StateView *v) override;
+  PetscErrorCode GatherDisplacement(std::vector<PetscReal> *y) override;
+  PetscErrorCode Counts(StepperCounts *n) override;
+  std::string    EnergyGrowthCause() const override;
+};
+
+// Compression and its rate from the owned values (no ghost scatter), summed over ranks.
+PetscErrorCode TSStepper::Compression(PetscReal *c, PetscReal *cdot)
+{
+  const TSLayout    &L  = P.L;
+  const PetscInt     nf = L.fields;
+  Vec                X, Vel, Xb, Xr, Vb = nullptr, Vr = nullptr;
+  const PetscScalar *x, *xr, *v = nullptr, *vr = nullptr;
+  PetscReal          vals[2] = {0, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(Solution(&X, &Vel));
+  PetscCall(DMCompositeGetAccess(L.pack, X, &Xb, &Xr));
+  PetscCall(VecGetArrayRead(Xb, &x));
+  PetscCall(VecGetArrayRead(Xr, &xr));
+  if (Vel) {
+    PetscCall(DMCompositeGetAccess(L.pack, Vel, &Vb, &Vr));
+    PetscCall(VecGetArrayRead(Vb, &v));
+    PetscCall(VecGetArrayRead(Vr, &vr));
+  }
+  // Deflection block and velocity block of the owned nodes, by global node.
+  const PetscScalar *bx = x - L.xs * L.dof, *bv = Vel ? v - L.xs * nf : bx + nf;
+  const PetscInt     vstride = Vel ? nf : L.dof;
+  if (L.rank == 0) {
+    vals[0] = xr[0];
+    vals[1] = Vel ? vr[0] : xr[1];
+  }
+  for (PetscInt q = 0; q < 2; ++q) {
+    const PetscInt d = P.g.dof[q], node = d / nf, f = d % nf;
+    if (node < L.xs || node >= L.xe) continue;
+    vals[0] -= P.g.w[q] * bx[node * L.dof + f];
+    vals[1] -= P.g.w[q] * bv[node * vstride + f];
+  }
+  if (Vel) {
+    PetscCall(VecRestoreArrayRead(Vr, &vr));
+    PetscCall(VecRestoreArrayRead(Vb, &v));
+    PetscCall(DMCompositeRestoreAccess(L.pack, Vel, &Vb, &Vr));
+  }
+  PetscCall(VecRestoreArrayRead(Xr, &xr));
+  PetscCall(VecRestoreArrayRead(Xb, &x));
+  PetscCall(DMCompositeRestoreAccess(L.pack, X, &Xb, &Xr));
+  if (L.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, vals, 2, MPIU_REAL, MPIU_SUM, L.comm));
+  *c    = vals[0];
+  *cdot = vals[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::ViewBegin(StateView *sv)
+{
+  const TSLayout &L = P.L;
+  Vec             Vel;
+
+  PetscFunctionBeginUser;
+  PetscCall(Solution(&view_X, &Vel));
+  PetscCall(TSStateReadBegin(L, view_X, &view_x));
+  sv->y        = view_x.beam;
+  sv->y_stride = L.dof;
+  sv->d0       = L.D0();
+  sv->d1       = L.D1();
+  sv->ball_y   = view_x.ball[0];
+  if (Vel) {
+    const PetscScalar *vr;
+    PetscScalar        ball_v;
+    PetscCall(DMCompositeGetAccess(L.pack, Vel, &view_Vb, &view_Vr));
+    PetscCall(VecGetArrayRead(view_Vb, &view_varr));
+    PetscCall(VecGetArrayRead(view_Vr, &vr));
+    ball_v = L.rank == 0 ? vr[0] : 0.0;
+    PetscCall(VecRestoreArrayRead(view_Vr, &vr));
+    if (L.size > 1) PetscCallMPI(MPI_Bcast(&ball_v, 1, MPIU_SCALAR, 0, L.comm));
+    sv->v        = view_varr - L.xs * L.fields;
+    sv->v_stride = L.fields;
+    sv->ball_v   = ball_v;
+  } else {
+    sv->v        = view_x.beam + L.fields;
+    sv->v_stride = L.dof;
+    sv->ball_v   = view_x.ball[1];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::ViewEnd(StateView *sv)
+{
+  Vec X, Vel;
+
+  PetscFunctionBeginUser;
+  PetscCall(Solution(&X, &Vel));
+  if (Vel) {
+    PetscCall(VecRestoreArrayRead(view_Vb, &view_varr));
+    PetscCall(DMCompositeRestoreAccess(P.L.pack, Vel, &view_Vb, &view_Vr));
+  }
+  PetscCall(TSStateReadEnd(P.L, view_X, &view_x));
+  *sv = StateView();
+  PetscFunctionReturn(0);
+}
+
+// Deflection y(x) on rank 0 (gathered in natural node order).
+PetscErrorCode TSStepper::GatherDisplacement(std::vector<PetscReal> *y)
+{
+  const TSLayout &L = P.L;
+  Vec             X, Vel, Xb, Xr, y0, yall;
+  VecScatter      sc;
+
+  PetscFunctionBeginUser;
+  PetscCall(Solution(&X, &Vel));
+  PetscCall(DMCompositeGetAccess(L.pack, X, &Xb, &Xr));
+  const PetscInt n = L.xe - L.xs;
+  PetscCall(VecCreateMPI(L.comm, n, PETSC_DETERMINE, &y0));
+  {
+    const PetscScalar *x;
+    PetscScalar       *o;
+    PetscCall(VecGetArrayRead(Xb, &x));
+    PetscCall(VecGetArray(y0, &o));
+    for (PetscInt i = 0; i < n; ++i) o[i] = x[i * L.dof];
+    PetscCall(VecRestoreArray(y0, &o));
+    PetscCall(VecRestoreArrayRead(Xb, &x));
+  }
+  PetscCall(DMCompositeRestoreAccess(L.pack, X, &Xb, &Xr));
+  PetscCall(VecScatterCreateToZero(y0, &sc, &yall));
+  PetscCall(VecScatterBegin(sc, y0, yall, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(sc, y0, yall, INSERT_VALUES, SCATTER_FORWARD));
+  if (L.rank == 0) {
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(yall, &a));
+    y->assign(a, a + L.nodes);
+    PetscCall(VecRestoreArrayRead(yall, &a));
+  }
+  PetscCall(VecScatterDestroy(&sc));
+  PetscCall(VecDestroy(&yall));
+  PetscCall(VecDestroy(&y0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::Counts(StepperCounts *n)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TSGetStepRejections(ts, &n->rejected_steps));
+  if (P.form != Formulation::Explicit) {
+    PetscCall(TSGetSNESFailures(ts, &n->failed_solves));
+    PetscCall(TSGetSNESIterations(ts, &n->nonlinear_its));
+    PetscCall(TSGetKSPIterations(ts, &n->linear_its));
+  }
+  n->function_evals      = P.count.func;
+  n->jacobian_evals      = P.count.jac;
+  n->jacobian_assemblies = P.count.assembled;
+  PetscFunctionReturn(0);
+}
+
+std::string TSStepper::EnergyGrowthCause() const
+{
+  PetscReal t = 0, tp = 0;
+  TSGetTime(ts, &t);
+  TSGetPrevTime(ts, &tp);
+  const PetscReal dt_last = t - tp;
+  char            cause[512];
+  const char     *reduce = fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol";
+  if (P.form == Formulation::Explicit && fixed_step)
+    PetscSNPrintf(cause, sizeof(cause), "the fixed step is %.3g x the stability limit dt_max = %g s computed for this grid and contact; use a smaller -ts_dt", (double)(dt_last / info.dt_stable), (double)info.dt_stable);
+  else if (P.form == Formulation::Explicit)
+    PetscSNPrintf(cause, sizeof(cause), "the error controller let the step reach the explicit stability limit dt_max = %g s; tighten -ts_rtol/-ts_atol or use a fixed -ts_dt below dt_max", (double)info.dt_stable);
+  else if (P.form == Formulation::IMEX)
+    PetscSNPrintf(cause, sizeof(cause), "-ts_type %s treats the contact force explicitly, and the step is too large for the contact stiffness (contact time scale %g s); reduce %s or use a fully implicit type (cn, bdf, alpha2)",
+                  info.ts_type.c_str(), (double)scales.time, reduce);
+  else PetscSNPrintf(cause, sizeof(cause), "the %s does not resolve the contact (contact time scale %g s); reduce %s", fixed_step ? "step" : "tolerance", (double)scales.time, reduce);
+  char text[700];
+  PetscSNPrintf(text, sizeof(text), "(-ts_type %s%s%s, %s step %g s): with the %s law energy can only be %s; likely cause: %s", info.ts_type.c_str(), rk_type.empty() ? "" : " -ts_rk_type ", rk_type.c_str(),
+                fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(P.ball.law), P.ball.law == ContactLawKind::Linear ? "conserved" : "lost", cause);
+  return text;
+}
+
+// The TS with the callbacks of the formulation and direct solves of the (banded) Jacobian.
+PetscErrorCode CreateTS(TSStepper &S, const char *type)
+{
+  TSProblem &P = S.P;
+
+  PetscFunctionBeginUser;
+  PetscCall(TSGAlpha2Register()); // -ts_type alpha2: generalized-alpha with a consistent restart (ts_galpha2.hpp)
+  PetscCall(TSCreate(P.L.comm, &S.ts));
+  PetscCall(TSSetType(S.ts, type));
+  PetscCall(TSSetDM(S.ts, P.L.pack));
+  PetscCall(TSSetProblemType(S.ts, TS_NONLINEAR));
+  PetscCall(DMCreateGlobalVector(P.L.pack, &S.U));
+  switch (P.form) {
+  case Formulation::Explicit: PetscCall(TSSetRHSFunction(S.ts, NULL, TSRHSExplicit, &P)); break;
+  case Formulation::IMEX:
+    PetscCall(TSJacobianCreate(P));
+    PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P));
+    PetscCall(TSSetIJacobian(S.ts, P.jac.J, P.jac.J, TSIJacobianBeam, &P));
+    PetscCall(TSSetRHSFunction(S.ts, NULL, TSRHSContact, &P));
+    break;
+  case Formulation::Implicit:
+    PetscCall(TSJacobianCreate(P));
+    PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P));
+    PetscCall(TSSetIJacobian(S.ts, P.jac.J, P.jac.J, TSIJacobianBeam, &P));
+    break;
+  case Formulation::SecondOrder:
+    PetscCall(TSJacobianCreate(P));
+    PetscCall(TSSetI2Function(S.ts, NULL, TSI2FunctionBeam, &P));
+    PetscCall(TSSetI2Jacobian(S.ts, P.jac.J, P.jac.J, TSI2JacobianBeam, &P));
+    break;
+  }
+  if (P.form != Formulation::Explicit) {
+    SNES snes;
+    KSP  ksp;
+    PC   pc;
+    PetscCall(TSGetSNES(S.ts, &snes));
+    PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCSetType(pc, PCLU));
+    if (P.L.size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Defaults that options override (a step resolving the contact, capped so one step cannot
+// hold two events), then the options, then what the run needs of the solver.
+PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettings &set)
+{
+  TSAdapt adapt;
+
+  PetscFunctionBeginUser;
+  S.dt_cap = S.scales.time / 8;
+  PetscCall(TSSetTimeStep(S.ts, S.scales.time / 200));
+  PetscCall(TSSetMaxTime(S.ts, 1e30)); // the run driver decides when to stop
+  PetscCall(TSSetMaxSteps(S.ts, PETSC_MAX_INT));
+  PetscCall(TSSetExactFinalTime(S.ts, TS_EXACTFINALTIME_MATCHSTEP));
+  PetscCall(TSGetAdapt(S.ts, &adapt));
+  PetscCall(TSAdaptSetStepLimits(adapt, PETSC_DEFAULT, S.dt_cap));
+  PetscCall(TSSetFromOptions(S.ts));
+  TSType    now;
+  PetscBool same, fixed;
+  PetscCall(TSGetType(S.ts, &now));
+  PetscCall(PetscStrcmp(now, type, &same));
+  PetscCheck(same, S.P.L.comm, PETSC_ERR_ARG_WRONG, "TS type changed from %s to %s after setup: set -ts_type on the command line or in an options file", type, now);
+  S.info.ts_type = now;
+  PetscCall(PetscObjectTypeCompare((PetscObject)adapt, TSADAPTNONE, &fixed));
+  S.fixed_step = fixed;
+  if (S.P.form != Formulation::Explicit) {
+    PetscBool user_test;
+    SNES      snes;
+    PetscCall(TSGetSNES(S.ts, &snes));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-snes_convergence_test", &user_test));
+    S.newton_floor = {&S.P, S.ts, S.info.omega_max_bound * S.info.omega_max_bound};
+    if (!user_test) PetscCall(SNESSetConvergenceTest(snes, TSConvergedWithRoundoffFloor, &S.newton_floor, NULL));
+  }
+  PetscCall(TSSetErrorIfStepFails(S.ts, PETSC_FALSE)); // failures are explained by TSCheckStep
+  PetscCall(TSSetUp(S.ts));
+  if (set.check_unused_options) PetscCall(OptionsCheckUnused(S.P.L.comm));
+  if (S.P.form != Formulation::Explicit) { // the last Newton solve's residual history explains a failure
+    SNES snes;
+    PetscCall(TSGetSNES(S.ts, &snes));
+    PetscCall(SNESSetConvergenceHistory(snes, NULL, NULL, PETSC_DECIDE, PETSC_TRUE));
+  }
+  PetscCheck(TypeCanRollBack(now), S.P.L.comm, PETSC_ERR_SUP,
+             "-ts_type %s cannot roll back a step, so contact start, maximum compression and separation cannot be located as events; "
+             "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2",
+             now);
+  PetscFunctionReturn(0);
+}
+
+// Explicit stability: the imaginary-axis bound of the rk tableau over omega_max.
+PetscErrorCode ExplicitStability(TSStepper &S)
+{
+  const MPI_Comm comm = S.P.L.comm;
+
+  PetscFunctionBeginUser;
+  if (S.P.form != Formulation::Explicit) PetscFunctionReturn(0);
+  PetscCheck(S.info.ts_type == TSRK, comm, PETSC_ERR_SUP, "-ts_type %s is explicit but not rk: only rk tableaus have a computed stability limit here; use -ts_type rk", S.info.ts_type.c_str());
+  PetscInt         s;
+  const PetscReal *A, *b;
+  TSRKType         rktype;
+  PetscCall(TSRKGetTableau(S.ts, &s, &A, &b, NULL, NULL, NULL, NULL, NULL));
+  PetscCall(TSRKGetType(S.ts, &rktype));
+  S.rk_type             = rktype;
+  const PetscReal ystar = RKImaginaryStabilityBound(s, A, b);
+  PetscCheck(ystar > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-ts_rk_type %s is unstable for an undamped oscillation at any step (its stability region does not contain the imaginary axis); use -ts_rk_type 3bs, 4 or 5dp, or an implicit type (cn, bdf, alpha2)", rktype);
+  S.info.dt_stable = ystar / S.info.omega_max_bound;
+  PetscReal dt;
+  PetscBool dt_set;
+  PetscCall(TSGetTimeStep(S.ts, &dt));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_dt", &dt_set));
+  if (!dt_set) PetscCall(TSSetTimeStep(S.ts, std::min(dt, 0.9 * S.info.dt_stable)));
+  else if (S.fixed_step)
+    PetscCheck(dt <= S.info.dt_stable, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s); use -ts_dt <= %g, fewer nodes, or an implicit type",
+               (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound, (double)S.info.dt_stable);
+  PetscFunctionReturn(0);
+}
+
+// The integrator, its step and stability limit; and whether the step or the tolerance can
+// resolve the contact (docs/stability.md: T_r/400 verified to 1e-3 in the ACOR). Said once,
+// by the run that reports its set-up (not by every case of a sweep or study).
+PetscErrorCode ReportSetup(TSStepper &S)
+{
+  const MPI_Comm   comm = S.P.L.comm;
+  const PetscReal  T = S.scales.time, dt = S.dt_nominal;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", S.info.ts_type.c_str(), S.info.formulation.c_str(), (double)dt, S.fixed_step ? "" : " (initial; adaptive)"));
+  if (S.info.dt_stable > 0) PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s)\n", (double)S.info.dt_stable, (double)S.info.omega_max_bound));
+  if (S.fixed_step && dt > S.dt_cap)
+    PetscCall(PetscPrintf(comm, "WARNING: fixed step -ts_dt %g s is more than 1/8 of the contact time scale %g s: the contact is poorly resolved and events may be missed\n", (double)dt, (double)T));
+  else if (S.fixed_step && dt > T / 100)
+    PetscCall(PetscPrintf(comm, "WARNING: fixed step -ts_dt %g s resolves the contact time scale %g s with only %.0f steps: errors of 1e-3 or more in the ACOR are possible; use -ts_dt <= %.2e (T_r/400)\n", (double)dt, (double)T,
+                          (double)(T / dt), (double)(T / 400)));
+  if (!S.fixed_step) {
+    PetscReal atol, rtol;
+    PetscCall(TSGetTolerances(S.ts, &atol, NULL, &rtol, NULL));
+    if (rtol > 1e-4 || atol > 1e-3 * S.scales.compression)
+      PetscCall(PetscPrintf(comm,
+                            "WARNING: adaptive step with -ts_rtol %g -ts_atol %g cannot resolve the contact (compression scale %.3g m, contact time %.3g s): errors of 1e-3 or more in the ACOR are possible; "
+                            "use -ts_atol <= %.1e (1e-5 of the compression scale) and -ts_rtol <= 1e-6, or a fixed -ts_dt <= %.2e (T_r/400)\n",
+                            (double)rtol, (double)atol, (double)S.scales.compression, (double)T, (double)(1e-5 * S.scales.compression), (double)(T / 400)));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Beam at rest, ball touching at the impact point moving in +y at `speed`.
+PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed)
+{
+  const TSLayout &L = S.P.L;
+  TSStateWrite    o;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(S.U));
+  PetscCall(TSStateWriteBegin(L, S.U, &o));
+  if (o.ball) o.ball[0] = 0; // position: just touching
+  if (o.ball && S.P.form != Formulation::SecondOrder) o.ball[1] = speed;
+  PetscCall(TSStateWriteEnd(L, S.U, &o));
+  if (S.P.form == Formulation::SecondOrder) {
+    PetscCall(VecDuplicate(S.U, &S.V));
+    PetscCall(VecZeroEntries(S.V));
+    PetscCall(TSStateWriteBegin(L, S.V, &o));
+    if (o.ball) o.ball[0] = speed;
+    PetscCall(TSStateWriteEnd(L, S.V, &o));
+    PetscCall(TS2SetSolution(S.ts, S.U, S.V));
+  } else PetscCall(TSSetSolution(S.ts, S.U));
+  PetscCall(TSSetTime(S.ts, 0.0));
+  PetscCall(TSSetStepNumber(S.ts, 0));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
+                               const TSStepperSettings &set, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+{
+  auto      S             = std::make_unique<TSStepper>();
+  char      type[256]     = TSRK;
+  PetscBool flg;
+
+  PetscFunctionBeginUser;
+  // The formulation depends on the TS type: read it before building the problem.
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_type", type, sizeof(type), &flg));
+  TSProblem &P          = S->P;
+  P.sys                 = &sys;
+  P.g                   = g;
+  P.ball                = ball;
+  P.contact             = contact;
+  P.form                = FormulationOfType(type);
+  P.jac.contact         = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
+  S->scales             = scales;
+  S->info.formulation   = FormulationName(P.form);
+  S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass);
+  PetscCall(TSLayoutCreate(comm, sys.nodes, sys.fields, sys.GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
+  PetscCall(CreateTS(*S, type));
+  PetscCall(ConfigureTS(*S, type, set));
+  PetscCall(ExplicitStability(*S));
+  PetscCall(TSGetTimeStep(S->ts, &S->dt_nominal));
+  PetscCheck(S->dt_nominal > 0 && std::isfinite(S->dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);
+  S->info.dt_nominal = S->dt_nominal;
+  if (set.report_setup) PetscCall(ReportSetup(*S));
+  PetscCall(SetInitialState(*S, ball.speed));
+  *info = S->info;
+  *stepper = std::move(S);
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

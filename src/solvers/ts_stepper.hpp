@@ -1,0 +1,28 @@
+// The PETSc TS stepper of the impact: any -ts_type that can roll back a step, in the
+// formulation its type needs (explicit RHS, IMEX split, fully implicit, second-order form
+// for alpha2; solvers/ts_problem.hpp), behind the Stepper interface (solvers/stepper.hpp).
+// The TS is configured from the options database (no prefix), after the program's defaults:
+// a step of T_r/200 (explicit rk: at most 0.9 of its stability limit), adaptive steps capped
+// at T_r/8 so one step cannot hold two events, LU (MUMPS in parallel) for the linear solves.
+#pragma once
+
+#include "model/contact.hpp"
+#include "solvers/stepper.hpp"
+#include "system/beam_system.hpp"
+
+#include <memory>
+
+namespace beamimpact {
+
+struct TSStepperSettings {
+  bool check_unused_options = false; // an option set but not used by the TS set-up is an error
+  bool report_setup         = false; // print the integrator, its step and stability limit, and resolution warnings
+};
+
+// Creates the stepper at t = 0 with the beam at rest and the ball touching it at the impact
+// point, moving at the ball's speed; fills *info. contact (owned by the caller) is the
+// contact law's state the residuals use.
+PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
+                               const TSStepperSettings &settings, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
+
+} // namespace beamimpact

@@ -1,0 +1,90 @@
+// The semi-discrete system of one scenario, built once and consumed by every solver (the
+// PETSc TS residuals and Jacobians, the leapfrog baseline, the modal reference, the modes
+// solver): none of them assembles anything of its own.
+//
+//   M y'' = -K y + g F(c),   m_b y_b'' = -F(c),   c = y_b - g_beam^T y,
+//
+// M the lumped masses (diagonal, per dof), K = B^T W B the stiffness from the theory's
+// strain terms (banded: half-bandwidth bw dofs), held dofs (rows and columns of K zero, no
+// force), and the contact coupling g: the hat-function share of the impact point between
+// its two neighbouring nodes (held dofs get no share). Dofs are node-major: dof = node x
+// fields + field; field 0 is the transverse deflection (m). Plain arrays only.
+#pragma once
+
+#include "model/beam_theory.hpp"
+#include "model/contact.hpp"
+
+#include <petscsys.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+struct BeamSystem {
+  PetscInt  nodes = 0, fields = 1, ndof = 0;
+  PetscReal L = 0, h = 0;                  // m, length and node spacing
+  std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof
+  std::vector<char>       held;            // 1 where the dof is held at 0
+  std::vector<StrainTerm> strain;          // U = 1/2 sum weight (b . y)^2, sorted by owner dof
+  std::vector<PetscInt>   strain_begin;    // terms owned by dof d: [strain_begin[d], strain_begin[d+1])
+  PetscInt                bw = 0;          // half-bandwidth of K (dofs)
+  PetscInt                reach = 0;       // max |dof - owner| over the strain terms
+  std::vector<PetscReal>  band;            // N/m: K(i, i+o-bw) = band[(2 bw + 1) i + o]
+  PetscReal               frequency_unit = 0; // rad/s, sqrt(EI/mu)/L^2
+
+  PetscInt  Dof(PetscInt node, PetscInt field = 0) const { return node * fields + field; }
+  PetscReal NodeX(PetscInt node) const { return node * h; }
+  // Ghost width (nodes) a distributed state needs for K y and the strain energy.
+  PetscInt  GhostNodes() const { return (std::max(bw, 2 * reach) + fields - 1) / fields; }
+};
+
+// Builds the system of the beam with its theory (BeamParams::theory). Returns false with
+// *why when the theory is unknown.
+bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why);
+
+// The ball's coupling to the beam: c = y_b - (w[0] y[dof[0]] + w[1] y[dof[1]]); the force F
+// acts as +w[q] F on dof[q] and -F on the ball. Weights of held dofs are 0.
+struct ContactCoupling {
+  PetscInt  dof[2] = {0, 0};
+  PetscReal w[2]   = {0, 0};
+  PetscReal x      = 0; // m, the impact point
+};
+ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp);
+
+// f_i = (K y)_i (N) for dofs i in [d0, d1), in the factored form B^T W B y. y holds dof d at
+// y[(d / fields) * node_stride + d % fields], valid for d within 2 reach of [d0, d1) (a ghosted
+// array indexed by global node); f likewise with out_stride. Rows of held dofs are 0.
+void BeamSystemStiffnessApply(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt out_stride);
+
+// The nonzeros of row i of K (at most 2 bw + 1; columns of held dofs left out); returns the count.
+PetscInt BeamSystemStiffnessRow(const BeamSystem &sys, PetscInt i, PetscInt *cols, PetscReal *vals);
+
+// Strain energy (J) of the terms owned by dofs [d0, d1) (a sum of squares); y as above.
+PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1);
+
+// Kinetic energy (J) of dofs [d0, d1); v as y above.
+PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
+
+// Mass (kg) of the translational dofs that are not held.
+PetscReal BeamSystemFreeMass(const BeamSystem &sys);
+
+// Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K plus a
+// contact stiffness k_extra (N/m) through the coupling to a ball of mass m_extra (kg).
+PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra);
+
+} // namespace beamimpact
+
+namespace beamimpact {
+
+// Scales of the contact against this beam, shared by every solver's defaults and checks.
+struct ContactScales {
+  PetscReal time        = 0; // s, contact time T_r against the beam's free mass (the ball's mass reduced with the beam's)
+  PetscReal compression = 0; // m, v_i sqrt(m_b / k_eff)
+  PetscReal speed       = 0; // m/s, the incident speed
+  PetscReal stiffness   = 0; // N/m, bound on dF/dc over the contact (stability bounds)
+};
+ContactScales ContactScalesOf(const BeamSystem &sys, const BallParams &ball);
+
+} // namespace beamimpact
