@@ -40,14 +40,14 @@ import matplotlib.pyplot as plt  # noqa: E402
 import argparse  # noqa: E402
 import glob  # noqa: E402
 
-# MODEL.md section 1: beta L of the first flexural modes.
+# docs/model.md section 1: beta L of the first flexural modes.
 BETA_L = {
     "clamped-free": [1.87510, 4.69409, 7.85476, 10.99554],
     "free-free": [4.73004, 7.85320, 10.99561, 14.13717],
     "pinned-free": [3.92660, 7.06858, 10.21018],
 }
-MEASURED_PLATEAU = (0.45, 0.02)  # MODEL.md section 4: measured ACOR over the central section, 6 mm beams
-END_ZONE = 0.15  # m: MODEL.md, the ACOR is independent of the point more than ~15 cm from an end
+MEASURED_PLATEAU = (0.45, 0.02)  # docs/model.md section 11: measured ACOR over the central section, 6 mm beams
+END_ZONE = 0.15  # m: docs/model.md section 11, the ACOR is independent of the point more than ~15 cm from an end
 
 SUMMARY = []
 MISSING = []
