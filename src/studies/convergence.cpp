@@ -6,6 +6,7 @@
 #include "solvers/modal_reference.hpp"
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
+#include "io/text.hpp"
 #include "app/tasks.hpp"
 
 #include <hdf5.h>
@@ -28,12 +29,6 @@ const char *const ReferenceNames[] = {"modal", "run", "ConvergenceReferenceKind"
 
 // The -convergence_* keys a configuration file may hold (removed from the run's database).
 const char *const ConfigKeys[] = {"-convergence_dt", "-convergence_dt_stable", "-convergence_tol", "-convergence_order", "-convergence_atol_factor", "-convergence_name", "-convergence_method"};
-
-std::string Trim(const std::string &s)
-{
-  const size_t a = s.find_first_not_of(" \t\r\n#"), b = s.find_last_not_of(" \t\r\n");
-  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-}
 
 std::string BaseName(const std::string &path)
 {
@@ -63,7 +58,7 @@ std::string FileDescription(const std::string &file)
     const size_t a = line.find_first_not_of(" \t");
     if (a == std::string::npos) continue;
     if (line[a] != '#') break;
-    const std::string t = Trim(line);
+    const std::string t = CommentText(line);
     if (!t.empty()) text += (text.empty() ? "" : " ") + t;
   }
   return text;
@@ -216,11 +211,8 @@ PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const Co
   PetscCall(PetscOptionsDestroy(&o));
   *run_err = ierr;
   if (ierr) {
-    const char *text;
-    char       *specific = nullptr;
-    PetscErrorMessage(ierr, &text, &specific);
     run->failed  = true;
-    run->message = specific && specific[0] ? specific : text;
+    run->message = LastErrorMessage(ierr);
   }
   PetscFunctionReturn(0);
 }

@@ -19,6 +19,7 @@
 
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
+#include "io/text.hpp"
 #include "model/rigid.hpp"
 #include "app/tasks.hpp"
 
@@ -67,12 +68,6 @@ std::vector<PetscReal> SweepPlan::CaseValues(PetscInt index) const
     index /= n;
   }
   return v;
-}
-
-static std::string Trim(const std::string &s)
-{
-  const size_t a = s.find_first_not_of(" \t\n"), b = s.find_last_not_of(" \t\n");
-  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
 static bool ParseReal(const std::string &text, PetscReal *v)
@@ -924,15 +919,6 @@ static PetscErrorCode StorePoll(SweepStore &S, const SweepPlan &plan, PetscInt d
     S.write_cost = S.last_write - now; // reading the journals included
   }
   PetscFunctionReturn(0);
-}
-
-// The message of the last PETSc error.
-static std::string LastErrorMessage(PetscErrorCode ierr)
-{
-  const char *text     = nullptr;
-  char       *specific = nullptr;
-  PetscErrorMessage(ierr, &text, &specific);
-  return specific && specific[0] ? specific : text ? text : "unknown error";
 }
 
 PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
