@@ -5,6 +5,7 @@
 #include "solvers/modal_reference.hpp"
 #include "solvers/modes.hpp"
 #include "io/options_util.hpp"
+#include "io/scenario_options.hpp"
 #include "studies/sweep.hpp"
 
 #include <hdf5.h>
@@ -78,36 +79,30 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
 
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 {
-  BeamParams     beam;
-  BallParams     ball;
-  ImpactParams   ip;
-  MonitorRequest mon;
-  ImpactResult   res;
+  Scenario     sc;
+  ImpactResult res;
 
   PetscFunctionBeginUser;
-  PetscCall(BeamParamsFromOptions(comm, &beam));
-  PetscCall(BallParamsFromOptions(comm, &ball));
-  PetscCall(ImpactParamsFromOptions(comm, beam, &ip));
-  PetscCall(MonitorRequestFromOptions(comm, beam, &mon));
+  PetscCall(ScenarioFromOptions(comm, &sc));
   PetscEnum reference = (PetscEnum)0;
   PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
   PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
   PetscOptionsEnd();
   if (reference == 1) {
-    PetscCheck(!mon.any() && mon.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
+    PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
     PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-    PetscCall(ModalReferenceRun(beam, ball, ip, &res));
+    PetscCall(ModalReferenceRun(sc, &res));
     PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal));
   } else {
-    ip.check_unused_options = PETSC_TRUE;
-    ip.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
-    PetscCall(ImpactRun(comm, beam, ball, ip, mon, &res));
+    sc.impact.check_unused_options = PETSC_TRUE;
+    sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
+    PetscCall(ImpactRun(comm, sc, &res));
   }
   PetscCall(ImpactPrintSummary(comm, res));
   if (!output.empty()) {
     RunRecord rec;
-    PetscCall(RunRecordBuild(beam, &ball, &ip, &res, &rec));
-    PetscCall(ResultsWriteImpactFile(comm, output, rec, {res}, beam));
+    PetscCall(RunRecordBuild(sc.beam, &sc.ball, &sc.impact, &res, &rec));
+    PetscCall(ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam));
     PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   }
   PetscFunctionReturn(0);

@@ -6,6 +6,7 @@
 #include "solvers/modal_reference.hpp"
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
+#include "io/scenario_options.hpp"
 #include "io/text.hpp"
 #include "app/tasks.hpp"
 
@@ -708,15 +709,16 @@ PetscErrorCode WriteConvergenceFile(MPI_Comm comm, const std::string &path, cons
 
 PetscErrorCode TaskConvergence(MPI_Comm comm, const std::string &output)
 {
-  BeamParams      beam;
-  BallParams      ball;
-  ImpactParams    ip;
+  Scenario        sc;
+  ScenarioReading how;
   ConvergencePlan plan;
 
   PetscFunctionBeginUser;
-  PetscCall(BeamParamsFromOptions(comm, &beam));
-  PetscCall(BallParamsFromOptions(comm, &ball));
-  PetscCall(ImpactParamsFromOptions(comm, beam, &ip));
+  how.monitors = false; // the runs record no time series
+  PetscCall(ScenarioFromOptions(comm, how, &sc));
+  const BeamParams   &beam = sc.beam;
+  const BallParams   &ball = sc.ball;
+  const ImpactParams &ip   = sc.impact;
   PetscCall(ConvergencePlanFromOptions(comm, ball, &plan));
   {
     PetscBool has;

@@ -19,6 +19,7 @@
 
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
+#include "io/scenario_options.hpp"
 #include "io/text.hpp"
 #include "model/rigid.hpp"
 #include "app/tasks.hpp"
@@ -934,24 +935,32 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCheck(!output.empty(), comm, PETSC_ERR_ARG_WRONG, "-task sweep writes its results to a file: give -output FILE.h5 (not 'none')");
-  PetscCall(BeamParamsFromOptions(comm, &base.beam));
-  PetscCall(BallParamsFromOptions(comm, &base.ball));
-  PetscCall(SweepPlanFromOptions(comm, base.beam, &plan));
-  PetscCall(MonitorRequestFromOptions(comm, base.beam, &base.monitor));
-  PetscCheck(!(base.monitor.ball || base.monitor.energy || !base.monitor.velocity_at.empty() || !base.monitor.snapshot_times.empty()), comm, PETSC_ERR_ARG_INCOMP,
-             "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, -snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a column) works in a sweep");
   {
     // The other -impact_* options are shared by every case; the point is set
     // per case from -sweep_x, so -impact_x would be silently meaningless: refuse it
     // (like any other unused option). Read the options with a valid point in its place.
-    char      given[256] = "", x0[64];
-    PetscBool has;
-    PetscCall(PetscOptionsGetString(NULL, NULL, "-impact_x", given, sizeof(given), &has));
-    PetscCheck(!has, comm, PETSC_ERR_ARG_INCOMP, "-impact_x %s has no effect with -task sweep: the impact points come from -sweep_x; remove -impact_x", given);
-    std::snprintf(x0, sizeof(x0), "%.17g", (double)plan.axes[0].values[0]);
-    PetscCall(PetscOptionsSetValue(NULL, "-impact_x", x0));
-    PetscCall(ImpactParamsFromOptions(comm, base.beam, &base.impact));
+    char            given[256] = "";
+    PetscBool       has        = PETSC_FALSE;
+    Scenario        sc;
+    ScenarioReading how;
+    how.after_bodies = [&](const Scenario &bodies) -> PetscErrorCode {
+      char x0[64];
+      PetscFunctionBeginUser;
+      PetscCall(SweepPlanFromOptions(comm, bodies.beam, &plan));
+      PetscCall(PetscOptionsGetString(NULL, NULL, "-impact_x", given, sizeof(given), &has));
+      std::snprintf(x0, sizeof(x0), "%.17g", (double)plan.axes[0].values[0]);
+      PetscCall(PetscOptionsSetValue(NULL, "-impact_x", x0));
+      PetscFunctionReturn(0);
+    };
+    PetscCall(ScenarioFromOptions(comm, how, &sc));
     PetscCall(PetscOptionsClearValue(NULL, "-impact_x"));
+    base.beam    = sc.beam;
+    base.ball    = sc.ball;
+    base.impact  = sc.impact;
+    base.monitor = sc.monitor;
+    PetscCheck(!(base.monitor.ball || base.monitor.energy || !base.monitor.velocity_at.empty() || !base.monitor.snapshot_times.empty()), comm, PETSC_ERR_ARG_INCOMP,
+               "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, -snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a column) works in a sweep");
+    PetscCheck(!has, comm, PETSC_ERR_ARG_INCOMP, "-impact_x %s has no effect with -task sweep: the impact points come from -sweep_x; remove -impact_x", given);
   }
   PetscCall(TaskFarmCreate(comm, plan.ranks_per_case, &farm));
 
