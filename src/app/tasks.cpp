@@ -16,56 +16,6 @@ namespace beamimpact {
 static const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
 static const char *const TaskNames[] = {"impact", "modes", "sweep", "convergence", "Task", "TASK_", nullptr};
 
-PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec)
-{
-  char        petsc_version[256];
-  std::string options;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscGetVersion(petsc_version, sizeof(petsc_version)));
-  PetscCall(OptionsAsString(&options));
-  rec->add("program", std::string("beamimpact ") + BEAMIMPACT_VERSION);
-  rec->add("petsc_version", petsc_version);
-  rec->add("options", options);
-  rec->add("beam_length", beam.length);
-  rec->add("beam_EI", beam.EI);
-  rec->add("beam_mu", beam.mu);
-  rec->add("beam_mass", beam.mu * beam.length);
-  rec->add("beam_nodes", (double)beam.nodes);
-  rec->add("beam_left", SupportName(beam.left));
-  rec->add("beam_right", SupportName(beam.right));
-  rec->add("beam_clamp_x0", beam.has_clamp ? beam.clamp_x0 : -1.0);
-  rec->add("beam_clamp_x1", beam.has_clamp ? beam.clamp_x1 : -1.0);
-  rec->add("beam_parameter_set", beam.input.parameter_set);
-  rec->add("beam_youngs_modulus", beam.input.youngs_modulus);
-  rec->add("beam_density", beam.input.density);
-  rec->add("beam_thickness", beam.input.thickness);
-  rec->add("beam_width", beam.input.width);
-  rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
-  if (ball) {
-    rec->add("ball_mass", ball->mass);
-    rec->add("ball_speed", ball->speed);
-    rec->add("ball_law", ContactLawName(ball->law));
-    if (ball->law == ContactLawKind::Linear) rec->add("ball_k", ball->k);
-    else {
-      rec->add("ball_k1", ball->k1);
-      rec->add("ball_m", ball->m);
-      rec->add("ball_n", ball->n);
-    }
-    rec->add("ball_loss_factor", ball->loss_factor);
-  }
-  if (impact) {
-    rec->add("impact_window", impact->window);
-    rec->add("impact_max_time", impact->max_time);
-    rec->add("impact_event_tol", impact->event_tol);
-  }
-  if (first) {
-    rec->add("ts_type", first->ts_type);
-    rec->add("formulation", first->formulation);
-  }
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
@@ -101,7 +51,7 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
   PetscCall(ImpactPrintSummary(comm, res));
   if (!output.empty()) {
     RunRecord rec;
-    PetscCall(RunRecordBuild(sc.beam, &sc.ball, &sc.impact, &res, &rec));
+    PetscCall(RunRecordBuild(sc, &res, &rec));
     PetscCall(ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam));
     PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   }
@@ -127,7 +77,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
     PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f%s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? "  (rigid)" : ""));
   if (!output.empty() && rank == 0) {
     RunRecord rec;
-    PetscCall(RunRecordBuild(beam, nullptr, nullptr, nullptr, &rec));
+    PetscCall(RunRecordBuild(beam, &rec));
     hid_t file = H5Fcreate(output.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file", output.c_str());
     PetscCall(H5WriteAttributes(file, rec));

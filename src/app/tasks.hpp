@@ -20,9 +20,6 @@ PetscErrorCode RunTask(MPI_Comm comm);
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output);
 PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output);
 
-// Parameters, integrator, options and versions as attributes for the results file.
-PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec);
-
 // One summary line of an impact.
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r);
 

@@ -4,6 +4,7 @@
 // HDF5 C API (the data are small: one row per impact, 1-D beam snapshots).
 #pragma once
 
+#include "io/run_record.hpp"
 #include "run/impact.hpp"
 
 #include <functional>
@@ -21,15 +22,6 @@ struct ResultColumn {
   std::function<double(const ImpactResult &)> get;
 };
 const std::vector<ResultColumn> &ImpactResultColumns();
-
-// Root attributes recorded with the results: every parameter, the integrator,
-// the full options and the version.
-struct RunRecord {
-  std::vector<std::pair<std::string, double>>      numbers;
-  std::vector<std::pair<std::string, std::string>> strings;
-  void add(const std::string &k, double v) { numbers.emplace_back(k, v); }
-  void add(const std::string &k, const std::string &v) { strings.emplace_back(k, v); }
-};
 
 // Writes a new file (replacing any): root attributes, /results, and for the
 // first result its /events, /series and /snapshots when they hold data.

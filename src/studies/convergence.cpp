@@ -6,9 +6,9 @@
 #include "solvers/modal_reference.hpp"
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
+#include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
-#include "app/tasks.hpp"
 
 #include <hdf5.h>
 #include <petscts.h>
@@ -729,7 +729,7 @@ PetscErrorCode TaskConvergence(MPI_Comm comm, const std::string &output)
   }
   PetscCall(OptionsCheckUnused(comm));
   RunRecord record;
-  PetscCall(RunRecordBuild(beam, &ball, &ip, nullptr, &record));
+  PetscCall(RunRecordBuild(sc, nullptr, &record));
   const ImpactTimes times = ImpactTimesOf(beam, ball, ip);
   record.add("task", "convergence");
   record.add("impact_x", ip.x);

@@ -19,10 +19,10 @@
 
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
+#include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
 #include "model/rigid.hpp"
-#include "app/tasks.hpp"
 
 #include <hdf5.h>
 
@@ -185,9 +185,9 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, const BeamParams &beam, Sweep
 // Case runner
 // ---------------------------------------------------------------------------
 
-SweepCase SweepCaseFor(const SweepPlan &plan, const SweepCase &base, PetscInt index)
+Scenario SweepCaseFor(const SweepPlan &plan, const Scenario &base, PetscInt index)
 {
-  SweepCase                    c = base;
+  Scenario                     c = base;
   const std::vector<PetscReal> v = plan.CaseValues(index);
   for (size_t k = 0; k < plan.axes.size(); ++k) {
     if (plan.axes[k].name == "x") c.impact.x = v[k];
@@ -209,9 +209,9 @@ const std::vector<SweepColumn> &SweepColumns()
   return cols;
 }
 
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const SweepCase &base, PetscInt index, std::vector<double> *row, ImpactResult *result)
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const Scenario &base, PetscInt index, std::vector<double> *row, ImpactResult *result)
 {
-  const SweepCase c = SweepCaseFor(plan, base, index);
+  const Scenario c = SweepCaseFor(plan, base, index);
 
   PetscFunctionBeginUser;
   PetscCall(ImpactRun(comm, c.beam, c.ball, c.impact, c.monitor, result));
@@ -925,7 +925,7 @@ static PetscErrorCode StorePoll(SweepStore &S, const SweepPlan &plan, PetscInt d
 PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
 {
   PetscMPIInt rank, size;
-  SweepCase   base;
+  Scenario    base;
   SweepPlan   plan;
   TaskFarm    farm;
   SweepStore  S;
@@ -941,7 +941,6 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
     // (like any other unused option). Read the options with a valid point in its place.
     char            given[256] = "";
     PetscBool       has        = PETSC_FALSE;
-    Scenario        sc;
     ScenarioReading how;
     how.after_bodies = [&](const Scenario &bodies) -> PetscErrorCode {
       char x0[64];
@@ -952,12 +951,8 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
       PetscCall(PetscOptionsSetValue(NULL, "-impact_x", x0));
       PetscFunctionReturn(0);
     };
-    PetscCall(ScenarioFromOptions(comm, how, &sc));
+    PetscCall(ScenarioFromOptions(comm, how, &base));
     PetscCall(PetscOptionsClearValue(NULL, "-impact_x"));
-    base.beam    = sc.beam;
-    base.ball    = sc.ball;
-    base.impact  = sc.impact;
-    base.monitor = sc.monitor;
     PetscCheck(!(base.monitor.ball || base.monitor.energy || !base.monitor.velocity_at.empty() || !base.monitor.snapshot_times.empty()), comm, PETSC_ERR_ARG_INCOMP,
                "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, -snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a column) works in a sweep");
     PetscCheck(!has, comm, PETSC_ERR_ARG_INCOMP, "-impact_x %s has no effect with -task sweep: the impact points come from -sweep_x; remove -impact_x", given);
@@ -968,7 +963,7 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   // first point and steps 1 ns, so that bad or unused options stop the sweep
   // here with one message, and the file can record the integrator.
   if (farm.group != MPI_COMM_NULL && rank < plan.ranks_per_case) {
-    SweepCase c                   = SweepCaseFor(plan, base, 0);
+    Scenario c                    = SweepCaseFor(plan, base, 0);
     c.impact.max_time             = 1e-9;
     c.impact.check_unused_options = PETSC_TRUE;
     c.impact.report_setup         = plan.quiet ? PETSC_FALSE : PETSC_TRUE; // integrator, step, warnings: once
@@ -985,7 +980,7 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
     std::string options, columns;
     PetscCall(OptionsAsString(&options));
     for (auto &c : SweepColumns()) columns += (columns.empty() ? "" : ",") + c.name;
-    PetscCall(RunRecordBuild(base.beam, &base.ball, &base.impact, &probe, &S.record));
+    PetscCall(RunRecordBuild(base, &probe, &S.record));
     S.record.add("task", "sweep");
     S.record.add("sweep_x", plan.x_spec);
     S.record.add("sweep_axes", "x");

@@ -19,6 +19,7 @@
 #include "model/beam.hpp"
 #include "model/contact.hpp"
 #include "run/impact.hpp"
+#include "run/scenario.hpp"
 
 #include <petscsys.h>
 
@@ -62,14 +63,9 @@ bool SweepParsePoints(const std::string &spec, std::vector<PetscReal> *values, s
 // checks every point against the beam (on it, and not a held point).
 PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, const BeamParams &beam, SweepPlan *plan);
 
-// The inputs of one case: the base parameters with the plan's axis values set.
-struct SweepCase {
-  BeamParams     beam;
-  BallParams     ball;
-  ImpactParams   impact;
-  MonitorRequest monitor; // only -monitor_segment (its peak is a column); no time series in a sweep
-};
-SweepCase SweepCaseFor(const SweepPlan &plan, const SweepCase &base, PetscInt index);
+// The inputs of one case: the base scenario with the plan's axis values set (its monitor
+// holds only -monitor_segment, whose peak is a column; no time series in a sweep).
+Scenario SweepCaseFor(const SweepPlan &plan, const Scenario &base, PetscInt index);
 
 // The columns of a sweep row: case_index, every ImpactResultColumns() quantity,
 // rigid_acor (Eq. 11 with f given by -rigid_loss_fraction, M = mu L, I_cm = M L^2/12,
@@ -83,7 +79,7 @@ struct SweepColumn {
 const std::vector<SweepColumn> &SweepColumns();
 
 // Runs case `index` on comm (all its ranks) and returns its row on every rank.
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const SweepCase &base, PetscInt index, std::vector<double> *row, ImpactResult *result);
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const Scenario &base, PetscInt index, std::vector<double> *row, ImpactResult *result);
 
 // Dynamic load balancing without a coordinator rank: world rank 0 exposes two
 // counters (next task, tasks done) in an MPI window; the leader of each group
