@@ -17,6 +17,7 @@
 // over MPI, writes the complete F and removes F.parts.
 #include "studies/sweep.hpp"
 
+#include "io/impact_point.hpp"
 #include "io/options_util.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
@@ -160,17 +161,10 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, const BeamParams &beam, Sweep
   std::string why;
   PetscCheck(SweepParsePoints(plan->x_spec, &x.values, &why), comm, PETSC_ERR_ARG_WRONG, "-sweep_x %s is not allowed: %s", plan->x_spec.c_str(), why.c_str());
   PetscCheck(!x.values.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_x %s gives no impact points: a sweep needs at least one (count >= 1 in start:stop:count)", plan->x_spec.c_str());
-  const BeamOperator op = BeamOperatorBuild(beam);
   for (size_t k = 0; k < x.values.size(); ++k) {
-    const PetscReal xv = x.values[k];
-    PetscCheck(xv >= 0 && xv <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_x point %d, x = %g, is not allowed: the impact point must lie on the beam, 0 <= x <= L = %g (m)", (int)k, (double)xv,
-               (double)beam.length);
-    // The same test as -impact_x (ImpactParamsFromOptions).
-    const ImpactStencil st            = BeamImpactStencil(op, xv);
-    const bool          on_held       = (st.w > 0 && op.held[st.j]) && (st.w < 1 ? op.held[st.j + 1] : true);
-    const bool          on_held_right = st.w == 0 && op.held[st.j + 1];
-    PetscCheck(!(on_held || on_held_right), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-sweep_x point %d, x = %g, is not allowed: that point is held fixed (a clamped or pinned support or inside -beam_clamp); sweep only points that can move", (int)k, (double)xv);
+    char what[128];
+    PetscCall(PetscSNPrintf(what, sizeof(what), "-sweep_x point %d, x = %g,", (int)k, (double)x.values[k]));
+    PetscCall(ImpactPointCheck(comm, beam, x.values[k], what));
   }
   plan->axes = {x};
   PetscCheck(plan->ranks_per_case >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_ranks_per_case %" PetscInt_FMT " is not allowed: at least 1", plan->ranks_per_case);
