@@ -1,20 +1,60 @@
-// Task drivers: option reading, runs, summaries and files. See tasks.hpp.
+// Task drivers and the table -task chooses from. See tasks.hpp.
 #include "app/tasks.hpp"
 
-#include "studies/convergence.hpp"
+#include "io/options_util.hpp"
+#include "io/results_h5.hpp"
+#include "io/run_record.hpp"
+#include "io/scenario_options.hpp"
 #include "solvers/modal_reference.hpp"
 #include "solvers/modes.hpp"
-#include "io/options_util.hpp"
-#include "io/scenario_options.hpp"
+#include "studies/convergence.hpp"
 #include "studies/sweep.hpp"
 
-#include <hdf5.h>
-#include <petscts.h>
+#include <vector>
 
 namespace beamimpact {
 
-static const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
-static const char *const TaskNames[] = {"impact", "modes", "sweep", "convergence", "Task", "TASK_", nullptr};
+namespace {
+
+// The tasks, in the order -help lists them; the first is the default.
+struct TaskEntry {
+  const char *name;
+  PetscErrorCode (*run)(MPI_Comm comm, const std::string &output);
+};
+const TaskEntry Tasks[] = {
+  {"impact", TaskImpact},
+  {"modes", TaskModes},
+  {"sweep", TaskSweep},
+  {"convergence", TaskConvergence},
+};
+
+const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
+
+// -reference: PETSC_TRUE for the exact modal solution instead of the PETSc TS.
+PetscErrorCode ImpactReferenceFromOptions(MPI_Comm comm, PetscBool *modal)
+{
+  PetscEnum reference = (PetscEnum)0;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
+  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
+  PetscOptionsEnd();
+  *modal = reference == 1 ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+// The exact modal solution: no integrator, so neither monitors nor integrator options.
+PetscErrorCode ImpactRunModal(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
+  PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
+  PetscCall(ModalReferenceRun(sc, res));
+  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res->ts_type.c_str(), res->formulation.c_str(), (double)res->dt_nominal));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
 
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
 {
@@ -31,19 +71,13 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 {
   Scenario     sc;
   ImpactResult res;
+  PetscBool    modal;
 
   PetscFunctionBeginUser;
   PetscCall(ScenarioFromOptions(comm, &sc));
-  PetscEnum reference = (PetscEnum)0;
-  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
-  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
-  PetscOptionsEnd();
-  if (reference == 1) {
-    PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
-    PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-    PetscCall(ModalReferenceRun(sc, &res));
-    PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal));
-  } else {
+  PetscCall(ImpactReferenceFromOptions(comm, &modal));
+  if (modal) PetscCall(ImpactRunModal(comm, sc, &res));
+  else {
     sc.impact.check_unused_options = PETSC_TRUE;
     sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
     PetscCall(ImpactRun(comm, sc, &res));
@@ -63,10 +97,8 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   BeamParams  beam;
   ModesParams mp;
   ModesResult modes;
-  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(BeamParamsFromOptions(comm, &beam));
   const BeamOperator op = BeamOperatorBuild(beam);
   PetscCall(ModesParamsFromOptions(comm, &mp, &op));
@@ -75,42 +107,32 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)\n", (double)beam.length, SupportName(beam.left), SupportName(beam.right), beam.nodes));
   for (size_t q = 0; q < modes.frequency.size(); ++q)
     PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f%s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? "  (rigid)" : ""));
-  if (!output.empty() && rank == 0) {
+  if (!output.empty()) {
     RunRecord rec;
     PetscCall(RunRecordBuild(beam, &rec));
-    hid_t file = H5Fcreate(output.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file", output.c_str());
-    PetscCall(H5WriteAttributes(file, rec));
-    hid_t g = H5Gcreate2(file, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
-    PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
-    PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
-    H5Gclose(g);
-    H5Fclose(file);
+    PetscCall(ResultsWriteModesFile(comm, output, rec, modes));
+    PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   }
-  if (!output.empty()) PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode RunTask(MPI_Comm comm)
 {
-  PetscEnum task = (PetscEnum)Task::Impact;
-  char      output[PETSC_MAX_PATH_LEN] = "";
-  PetscBool set_output;
+  std::vector<const char *> names;
+  PetscEnum                 task                       = (PetscEnum)0;
+  char                      output[PETSC_MAX_PATH_LEN] = "";
+  PetscBool                 set_output;
 
   PetscFunctionBeginUser;
+  for (const TaskEntry &t : Tasks) names.push_back(t.name);
+  names.insert(names.end(), {"Task", "TASK_", nullptr}); // PetscOptionsEnum's list: names, type, prefix
   PetscOptionsBegin(comm, NULL, "beamimpact: task and output", "beamimpact");
-  PetscCall(PetscOptionsEnum("-task", "What to compute", "", TaskNames, task, &task, NULL));
+  PetscCall(PetscOptionsEnum("-task", "What to compute", "", names.data(), task, &task, NULL));
   PetscCall(PetscOptionsString("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)", "", output, output, sizeof(output), &set_output));
   PetscOptionsEnd();
-  std::string out = set_output ? output : std::string(TaskNames[task]) + ".h5";
+  std::string out = set_output ? output : std::string(Tasks[task].name) + ".h5";
   if (out == "none") out.clear();
-  switch ((Task)task) {
-  case Task::Impact: PetscCall(TaskImpact(comm, out)); break;
-  case Task::Modes: PetscCall(TaskModes(comm, out)); break;
-  case Task::Sweep: PetscCall(TaskSweep(comm, out)); break;
-  case Task::Convergence: PetscCall(TaskConvergence(comm, out)); break;
-  }
+  PetscCall(Tasks[task].run(comm, out));
   PetscFunctionReturn(0);
 }
 
