@@ -15,20 +15,16 @@ using namespace beamimpact::test;
 
 namespace {
 
-struct Scene {
-  BeamParams   beam;
-  BallParams   ball;
-  ImpactParams ip;
-};
+using Scene = Scenario;
 
 // The default beam on a coarse grid, struck at its centre, followed to the first separation.
 Scene Coarse()
 {
   Scene s;
-  s.beam      = AluminiumBeam(1.1, 21);
-  s.ball      = Superball();
-  s.ip.x      = 0.55;
-  s.ip.window = 0;
+  s.beam          = AluminiumBeam(1.1, 21);
+  s.ball          = Superball();
+  s.impact.x      = 0.55;
+  s.impact.window = 0;
   return s;
 }
 
@@ -49,9 +45,9 @@ ConvergenceOrder StudyOrder(const std::string &text, std::vector<ConvergenceRun>
   ConvergenceConfig    cfg;
   EXPECT_EQ(ConvergenceConfigLoad(PETSC_COMM_WORLD, "", text, &cfg), 0) << text;
   ConvergenceReference ref;
-  EXPECT_EQ(ConvergenceReferenceCompute(PETSC_COMM_WORLD, plan, s.beam, s.ball, s.ip, &ref), 0);
+  EXPECT_EQ(ConvergenceReferenceCompute(PETSC_COMM_WORLD, plan, s, &ref), 0);
   std::vector<ConvergenceRun> runs;
-  EXPECT_EQ(ConvergenceRunConfig(PETSC_COMM_WORLD, plan, cfg, s.beam, s.ball, s.ip, ref, &runs), 0);
+  EXPECT_EQ(ConvergenceRunConfig(PETSC_COMM_WORLD, plan, cfg, s, ref, &runs), 0);
   EXPECT_EQ((PetscInt)runs.size(), cfg.seq.count);
   for (auto &r : runs) {
     EXPECT_FALSE(r.failed) << text << ": level " << r.level << ": " << r.message;
@@ -183,10 +179,10 @@ TEST(ConvergenceOptions, ATypoInAConfigurationFailsItsRunNamingTheOption)
   ConvergenceConfig     cfg;
   ASSERT_EQ(ConvergenceConfigLoad(PETSC_COMM_WORLD, "", "-ts_type cn -ts_theta_thetaa 0.5 -convergence_dt 1e-4,2,1", &cfg), 0);
   ConvergenceReference ref;
-  ASSERT_EQ(ConvergenceReferenceCompute(PETSC_COMM_WORLD, plan, s.beam, s.ball, s.ip, &ref), 0);
+  ASSERT_EQ(ConvergenceReferenceCompute(PETSC_COMM_WORLD, plan, s, &ref), 0);
   std::vector<ConvergenceRun> runs;
   ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, NULL), 0);
-  const PetscErrorCode ierr = ConvergenceRunConfig(PETSC_COMM_WORLD, plan, cfg, s.beam, s.ball, s.ip, ref, &runs);
+  const PetscErrorCode ierr = ConvergenceRunConfig(PETSC_COMM_WORLD, plan, cfg, s, ref, &runs);
   ASSERT_EQ(PetscPopErrorHandler(), 0);
   ASSERT_EQ(ierr, 0) << "a failing level is recorded, not fatal";
   ASSERT_EQ(runs.size(), 1u);

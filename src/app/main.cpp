@@ -8,6 +8,7 @@
 // reported as one plain message (the option, the value, what is allowed);
 // -error_traceback shows PETSc's full traceback instead.
 #include "app/tasks.hpp"
+#include "io/text.hpp"
 
 #include <slepcsys.h>
 
@@ -24,12 +25,10 @@ int main(int argc, char **argv)
   if (!traceback) PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   PetscErrorCode ierr = beamimpact::RunTask(PETSC_COMM_WORLD);
   if (ierr) {
-    const char *text;
-    char       *specific = nullptr;
-    PetscErrorMessage(ierr, &text, &specific);
-    PetscMPIInt rank;
+    const std::string msg = beamimpact::LastErrorMessage(ierr);
+    PetscMPIInt       rank;
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-    if (rank == 0) fprintf(stderr, "beamimpact: error: %s\n", specific && specific[0] ? specific : text);
+    if (rank == 0) fprintf(stderr, "beamimpact: error: %s\n", msg.c_str());
     fflush(stderr);
     PetscMPIInt size;
     MPI_Comm_size(PETSC_COMM_WORLD, &size);

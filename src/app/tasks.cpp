@@ -1,71 +1,60 @@
-// Task drivers: option reading, runs, summaries and files. See tasks.hpp.
+// Task drivers and the table -task chooses from. See tasks.hpp.
 #include "app/tasks.hpp"
 
-#include "studies/convergence.hpp"
+#include "base/options_util.hpp"
+#include "io/results_h5.hpp"
+#include "io/run_record.hpp"
+#include "io/scenario_options.hpp"
 #include "run/modal_reference.hpp"
-#include "run/scenario.hpp"
-#include "solvers/rk_stability.hpp"
 #include "solvers/modes.hpp"
-#include "io/options_util.hpp"
+#include "studies/convergence.hpp"
 #include "studies/sweep.hpp"
 
-#include <hdf5.h>
-#include <petscts.h>
+#include <vector>
 
 namespace beamimpact {
 
-static const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
-static const char *const TaskNames[] = {"impact", "modes", "sweep", "convergence", "Task", "TASK_", nullptr};
+namespace {
 
-PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec)
+// The tasks, in the order -help lists them; the first is the default.
+struct TaskEntry {
+  const char *name;
+  PetscErrorCode (*run)(MPI_Comm comm, const std::string &output);
+};
+const TaskEntry Tasks[] = {
+  {"impact", TaskImpact},
+  {"modes", TaskModes},
+  {"sweep", TaskSweep},
+  {"convergence", TaskConvergence},
+};
+
+const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
+
+// -reference: PETSC_TRUE for the exact modal solution instead of the PETSc TS.
+PetscErrorCode ImpactReferenceFromOptions(MPI_Comm comm, PetscBool *modal)
 {
-  char        petsc_version[256];
-  std::string options;
+  PetscEnum reference = (PetscEnum)0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscGetVersion(petsc_version, sizeof(petsc_version)));
-  PetscCall(OptionsAsString(&options));
-  rec->add("program", std::string("beamimpact ") + BEAMIMPACT_VERSION);
-  rec->add("petsc_version", petsc_version);
-  rec->add("options", options);
-  rec->add("beam_length", beam.length);
-  rec->add("beam_EI", beam.EI);
-  rec->add("beam_mu", beam.mu);
-  rec->add("beam_mass", beam.mu * beam.length);
-  rec->add("beam_nodes", (double)beam.nodes);
-  rec->add("beam_left", SupportName(beam.left));
-  rec->add("beam_right", SupportName(beam.right));
-  rec->add("beam_clamp_x0", beam.has_clamp ? beam.clamp_x0 : -1.0);
-  rec->add("beam_clamp_x1", beam.has_clamp ? beam.clamp_x1 : -1.0);
-  rec->add("beam_parameter_set", beam.input.parameter_set);
-  rec->add("beam_youngs_modulus", beam.input.youngs_modulus);
-  rec->add("beam_density", beam.input.density);
-  rec->add("beam_thickness", beam.input.thickness);
-  rec->add("beam_width", beam.input.width);
-  rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
-  if (ball) {
-    rec->add("ball_mass", ball->mass);
-    rec->add("ball_speed", ball->speed);
-    rec->add("ball_law", ContactLawName(ball->law));
-    if (ball->law == ContactLawKind::Linear) rec->add("ball_k", ball->k);
-    else {
-      rec->add("ball_k1", ball->k1);
-      rec->add("ball_m", ball->m);
-      rec->add("ball_n", ball->n);
-    }
-    rec->add("ball_loss_factor", ball->loss_factor);
-  }
-  if (impact) {
-    rec->add("impact_window", impact->window);
-    rec->add("impact_max_time", impact->max_time);
-    rec->add("impact_event_tol", impact->event_tol);
-  }
-  if (first) {
-    rec->add("ts_type", first->ts_type);
-    rec->add("formulation", first->formulation);
-  }
+  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
+  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
+  PetscOptionsEnd();
+  *modal = reference == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(0);
 }
+
+// The exact modal solution: no integrator, so neither monitors nor integrator options.
+PetscErrorCode ImpactRunModal(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
+  PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
+  PetscCall(ModalReferenceRun(sc, res));
+  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res->ts_type.c_str(), res->formulation.c_str(), (double)res->dt_nominal));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
 
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
 {
@@ -80,36 +69,24 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
 
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 {
-  BeamParams     beam;
-  BallParams     ball;
-  ImpactParams   ip;
-  MonitorRequest mon;
-  ImpactResult   res;
+  Scenario     sc;
+  ImpactResult res;
+  PetscBool    modal;
 
   PetscFunctionBeginUser;
-  PetscCall(BeamParamsFromOptions(comm, &beam));
-  PetscCall(BallParamsFromOptions(comm, &ball));
-  PetscCall(ImpactParamsFromOptions(comm, beam, &ip));
-  PetscCall(MonitorRequestFromOptions(comm, beam, &mon));
-  PetscEnum reference = (PetscEnum)0;
-  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
-  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
-  PetscOptionsEnd();
-  if (reference == 1) {
-    PetscCheck(!mon.any() && mon.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
-    PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-    PetscCall(ModalReferenceRun(Scenario{beam, ball, ip, mon}, &res));
-    PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res.ts_type.c_str(), res.formulation.c_str(), (double)res.dt_nominal));
-  } else {
-    ip.check_unused_options = PETSC_TRUE;
-    ip.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
-    PetscCall(ImpactRun(comm, Scenario{beam, ball, ip, mon}, &res));
+  PetscCall(ScenarioFromOptions(comm, &sc));
+  PetscCall(ImpactReferenceFromOptions(comm, &modal));
+  if (modal) PetscCall(ImpactRunModal(comm, sc, &res));
+  else {
+    sc.impact.check_unused_options = PETSC_TRUE;
+    sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
+    PetscCall(ImpactRun(comm, sc, &res));
   }
   PetscCall(ImpactPrintSummary(comm, res));
   if (!output.empty()) {
     RunRecord rec;
-    PetscCall(RunRecordBuild(beam, &ball, &ip, &res, &rec));
-    PetscCall(ResultsWriteImpactFile(comm, output, rec, {res}, beam));
+    PetscCall(RunRecordBuild(sc, &res, &rec));
+    PetscCall(ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam));
     PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   }
   PetscFunctionReturn(0);
@@ -120,10 +97,8 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   BeamParams  beam;
   ModesParams mp;
   ModesResult modes;
-  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(BeamParamsFromOptions(comm, &beam));
   BeamSystem  op;
   std::string why;
@@ -134,42 +109,32 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)\n", (double)beam.length, SupportName(beam.left), SupportName(beam.right), beam.nodes));
   for (size_t q = 0; q < modes.frequency.size(); ++q)
     PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f%s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? "  (rigid)" : ""));
-  if (!output.empty() && rank == 0) {
+  if (!output.empty()) {
     RunRecord rec;
-    PetscCall(RunRecordBuild(beam, nullptr, nullptr, nullptr, &rec));
-    hid_t file = H5Fcreate(output.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file", output.c_str());
-    PetscCall(H5WriteAttributes(file, rec));
-    hid_t g = H5Gcreate2(file, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
-    PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
-    PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
-    H5Gclose(g);
-    H5Fclose(file);
+    PetscCall(RunRecordBuild(beam, &rec));
+    PetscCall(ResultsWriteModesFile(comm, output, rec, modes));
+    PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   }
-  if (!output.empty()) PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode RunTask(MPI_Comm comm)
 {
-  PetscEnum task = (PetscEnum)Task::Impact;
-  char      output[PETSC_MAX_PATH_LEN] = "";
-  PetscBool set_output;
+  std::vector<const char *> names;
+  PetscEnum                 task                       = (PetscEnum)0;
+  char                      output[PETSC_MAX_PATH_LEN] = "";
+  PetscBool                 set_output;
 
   PetscFunctionBeginUser;
+  for (const TaskEntry &t : Tasks) names.push_back(t.name);
+  names.insert(names.end(), {"Task", "TASK_", nullptr}); // PetscOptionsEnum's list: names, type, prefix
   PetscOptionsBegin(comm, NULL, "beamimpact: task and output", "beamimpact");
-  PetscCall(PetscOptionsEnum("-task", "What to compute", "", TaskNames, task, &task, NULL));
+  PetscCall(PetscOptionsEnum("-task", "What to compute", "", names.data(), task, &task, NULL));
   PetscCall(PetscOptionsString("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)", "", output, output, sizeof(output), &set_output));
   PetscOptionsEnd();
-  std::string out = set_output ? output : std::string(TaskNames[task]) + ".h5";
+  std::string out = set_output ? output : std::string(Tasks[task].name) + ".h5";
   if (out == "none") out.clear();
-  switch ((Task)task) {
-  case Task::Impact: PetscCall(TaskImpact(comm, out)); break;
-  case Task::Modes: PetscCall(TaskModes(comm, out)); break;
-  case Task::Sweep: PetscCall(TaskSweep(comm, out)); break;
-  case Task::Convergence: PetscCall(TaskConvergence(comm, out)); break;
-  }
+  PetscCall(Tasks[task].run(comm, out));
   PetscFunctionReturn(0);
 }
 

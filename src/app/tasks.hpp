@@ -1,27 +1,21 @@
-// The tasks the executable runs (-task impact|modes): each reads its modules'
-// options, runs on the communicator it is given, prints a summary on its
-// rank 0 and writes one HDF5 file.
+// The tasks the executable runs (-task impact|modes|sweep|convergence): each reads its
+// modules' options, runs on the communicator it is given, prints a summary on its rank 0
+// and writes one HDF5 file. The sweep and the convergence study live in src/studies.
 #pragma once
 
-#include "model/beam.hpp"
-#include "model/contact.hpp"
 #include "run/impact.hpp"
-#include "io/results_h5.hpp"
 
 #include <petscsys.h>
 
+#include <string>
+
 namespace beamimpact {
 
-enum class Task { Impact = 0, Modes = 1, Sweep = 2, Convergence = 3 };
-
-// Reads -task and -output, dispatches.
+// Reads -task and -output (default <task>.h5; "none": no file) and runs the task.
 PetscErrorCode RunTask(MPI_Comm comm);
 
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output);
 PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output);
-
-// Parameters, integrator, options and versions as attributes for the results file.
-PetscErrorCode RunRecordBuild(const BeamParams &beam, const BallParams *ball, const ImpactParams *impact, const ImpactResult *first, RunRecord *rec);
 
 // One summary line of an impact.
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r);

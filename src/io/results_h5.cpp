@@ -196,4 +196,23 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank != 0) PetscFunctionReturn(0);
+  hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file", path.c_str());
+  PetscCall(H5WriteAttributes(file, record));
+  hid_t g = H5Gcreate2(file, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
+  PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
+  PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
+  H5Gclose(g);
+  H5Fclose(file);
+  PetscFunctionReturn(0);
+}
+
 } // namespace beamimpact

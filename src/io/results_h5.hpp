@@ -1,10 +1,12 @@
 // HDF5 output of impacts: the columns of the result table (shared by the
 // summary line, the file and later sweeps), run attributes, time series and
-// snapshots. Files are written by rank 0 of the task's communicator with the
+// snapshots; and of a beam's modes. Files are written by rank 0 of the task's communicator with the
 // HDF5 C API (the data are small: one row per impact, 1-D beam snapshots).
 #pragma once
 
+#include "io/run_record.hpp"
 #include "run/impact.hpp"
+#include "solvers/modes.hpp"
 
 #include <functional>
 #include <string>
@@ -22,18 +24,13 @@ struct ResultColumn {
 };
 const std::vector<ResultColumn> &ImpactResultColumns();
 
-// Root attributes recorded with the results: every parameter, the integrator,
-// the full options and the version.
-struct RunRecord {
-  std::vector<std::pair<std::string, double>>      numbers;
-  std::vector<std::pair<std::string, std::string>> strings;
-  void add(const std::string &k, double v) { numbers.emplace_back(k, v); }
-  void add(const std::string &k, const std::string &v) { strings.emplace_back(k, v); }
-};
-
 // Writes a new file (replacing any): root attributes, /results, and for the
 // first result its /events, /series and /snapshots when they hold data.
 PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam);
+
+// Writes a new file (replacing any) on rank 0 of comm: root attributes and /modes with
+// the frequency (Hz), period (s) and omega (rad/s) of each mode.
+PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes);
 
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);

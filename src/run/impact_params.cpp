@@ -1,6 +1,7 @@
 // The impact's rules and monitors from the options (-impact_*, -monitor_*, -snapshot_times)
 // and the run's time rules. See impact.hpp.
 #include "run/impact.hpp"
+#include "run/impact_point.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -28,14 +29,10 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscCall(PetscOptionsBool("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol", "", p->energy_check, &p->energy_check, NULL));
   PetscCall(PetscOptionsReal("-impact_energy_growth_tol", "Allowed energy growth, relative to the incident kinetic energy", "", p->energy_growth_tol, &p->energy_growth_tol, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->x >= 0 && p->x <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_x %g is not allowed: the impact point must lie on the beam, 0 <= x <= L = %g (m)", (double)p->x, (double)beam.length);
   {
-    const BeamOperator  op = BeamOperatorBuild(beam);
-    const ImpactStencil st = BeamImpactStencil(op, p->x);
-    const bool          on_held = (st.w > 0 && op.held[st.j]) && (st.w < 1 ? op.held[st.j + 1] : true);
-    const bool          on_held_right = st.w == 0 && op.held[st.j + 1];
-    PetscCheck(!(on_held || on_held_right), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-impact_x %g is not allowed: that point is held fixed (a clamped or pinned support or inside -beam_clamp); strike a point that can move", (double)p->x);
+    char what[64];
+    PetscCall(PetscSNPrintf(what, sizeof(what), "-impact_x %g", (double)p->x));
+    PetscCall(ImpactPointCheck(comm, beam, p->x, what));
   }
   PetscCheck(p->event_tol > 0 && p->event_tol < 1e-2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_event_tol %g is not allowed: use a value in (0, 1e-2)", (double)p->event_tol);
   PetscCheck(p->max_contacts >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_max_contacts %" PetscInt_FMT " is not allowed: at least 1", p->max_contacts);

@@ -3,7 +3,7 @@
 // ts_residuals.cpp, ts_jacobian.cpp and ts_diagnostics.cpp.
 #include "solvers/ts_stepper.hpp"
 
-#include "io/options_util.hpp"
+#include "base/options_util.hpp"
 #include "solvers/rk_stability.hpp"
 #include "solvers/ts_galpha2.hpp"
 #include "solvers/ts_problem.hpp"

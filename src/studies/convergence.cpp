@@ -6,9 +6,11 @@
 #include "run/modal_reference.hpp"
 #include "run/scenario.hpp"
 #include "solvers/rk_stability.hpp"
-#include "io/options_util.hpp"
+#include "base/options_util.hpp"
 #include "io/results_h5.hpp"
-#include "app/tasks.hpp"
+#include "io/run_record.hpp"
+#include "io/scenario_options.hpp"
+#include "io/text.hpp"
 
 #include <hdf5.h>
 #include <petscts.h>
@@ -30,12 +32,6 @@ const char *const ReferenceNames[] = {"modal", "run", "ConvergenceReferenceKind"
 
 // The -convergence_* keys a configuration file may hold (removed from the run's database).
 const char *const ConfigKeys[] = {"-convergence_dt", "-convergence_dt_stable", "-convergence_tol", "-convergence_order", "-convergence_atol_factor", "-convergence_name", "-convergence_method"};
-
-std::string Trim(const std::string &s)
-{
-  const size_t a = s.find_first_not_of(" \t\r\n#"), b = s.find_last_not_of(" \t\r\n");
-  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-}
 
 std::string BaseName(const std::string &path)
 {
@@ -65,7 +61,7 @@ std::string FileDescription(const std::string &file)
     const size_t a = line.find_first_not_of(" \t");
     if (a == std::string::npos) continue;
     if (line[a] != '#') break;
-    const std::string t = Trim(line);
+    const std::string t = CommentText(line);
     if (!t.empty()) text += (text.empty() ? "" : " ") + t;
   }
   return text;
@@ -126,13 +122,13 @@ PetscErrorCode ReadSequence(MPI_Comm comm, PetscOptions o, const ConvergenceConf
 
 // Explicit stability limit (s) of a configuration: Stormer-Verlet 2/omega_max, or
 // y*/omega_max of the rk tableau selected by the run's options (as ImpactRun computes it).
-PetscErrorCode StableStep(const ConvergenceConfig &cfg, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, PetscReal *dt)
+PetscErrorCode StableStep(const ConvergenceConfig &cfg, const Scenario &sc, PetscReal *dt)
 {
   PetscFunctionBeginUser;
   BeamSystem  sys;
   std::string why;
-  PetscCheck(BeamSystemBuild(beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  const PetscReal lf = LeapfrogStableStep(sys, BeamSystemCoupling(sys, ip.x), ball); // 2 / omega_max
+  PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
+  const PetscReal lf = LeapfrogStableStep(sys, BeamSystemCoupling(sys, sc.impact.x), sc.ball); // 2 / omega_max
   if (cfg.method == "leapfrog") {
     *dt = lf;
     PetscFunctionReturn(0);
@@ -158,18 +154,19 @@ PetscErrorCode StableStep(const ConvergenceConfig &cfg, const BeamParams &beam, 
 }
 
 // One run of one level in the (pushed) database of the configuration.
-PetscErrorCode RunInPushedOptions(MPI_Comm comm, const ConvergenceConfig &cfg, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip_in, ImpactResult *res)
+PetscErrorCode RunInPushedOptions(MPI_Comm comm, const ConvergenceConfig &cfg, const Scenario &sc_in, ImpactResult *res)
 {
   PetscFunctionBeginUser;
-  ImpactParams ip         = ip_in;
-  ip.check_unused_options = PETSC_TRUE;
+  Scenario sc                    = sc_in;
+  sc.impact.check_unused_options = PETSC_TRUE;
+  sc.monitor                     = MonitorRequest(); // no time series
   if (cfg.method == "leapfrog") {
     LeapfrogParams lp;
     PetscCall(LeapfrogParamsFromOptions(comm, &lp));
     PetscCall(OptionsCheckUnused(comm));
-    PetscCall(LeapfrogRun(Scenario{beam, ball, ip, MonitorRequest()}, lp, res));
+    PetscCall(LeapfrogRun(sc, lp, res));
   } else {
-    PetscCall(ImpactRun(comm, Scenario{beam, ball, ip, MonitorRequest()}, res));
+    PetscCall(ImpactRun(comm, sc, res));
   }
   PetscFunctionReturn(0);
 }
@@ -185,8 +182,7 @@ std::string Format(const char *fmt, double v)
 // step or tolerance, pushed for the run, popped and destroyed after it (even on
 // failure). Sets run->level, dt, rtol, atol; the outcome goes to *res and the run's
 // error code (0 on success) to *run_err, with run->failed and run->message on failure.
-PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, PetscInt level, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, ConvergenceRun *run,
-                            ImpactResult *res, PetscErrorCode *run_err)
+PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, PetscInt level, const Scenario &sc, ConvergenceRun *run, ImpactResult *res, PetscErrorCode *run_err)
 {
   PetscOptions o;
 
@@ -202,7 +198,7 @@ PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const Co
   case ConvergenceSequenceKind::Step: run->dt = v; break;
   case ConvergenceSequenceKind::StableFraction: {
     PetscReal dts = 0;
-    ierr          = StableStep(cfg, beam, ball, ip, &dts);
+    ierr          = StableStep(cfg, sc, &dts);
     run->dt       = v * dts;
   } break;
   case ConvergenceSequenceKind::Tolerance:
@@ -216,16 +212,13 @@ PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const Co
       if (!ierr) ierr = PetscOptionsSetValue(o, "-ts_atol", Format("%.17g", run->atol).c_str());
     } else ierr = PetscOptionsSetValue(o, dtkey, Format("%.17g", run->dt).c_str());
   }
-  if (!ierr) ierr = RunInPushedOptions(comm, cfg, beam, ball, ip, res);
+  if (!ierr) ierr = RunInPushedOptions(comm, cfg, sc, res);
   PetscCall(PetscOptionsPop());
   PetscCall(PetscOptionsDestroy(&o));
   *run_err = ierr;
   if (ierr) {
-    const char *text;
-    char       *specific = nullptr;
-    PetscErrorMessage(ierr, &text, &specific);
     run->failed  = true;
-    run->message = specific && specific[0] ? specific : text;
+    run->message = LastErrorMessage(ierr);
   }
   PetscFunctionReturn(0);
 }
@@ -447,13 +440,13 @@ PetscErrorCode ConvergencePlanFromOptions(MPI_Comm comm, const BallParams &ball,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan &plan, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, ConvergenceReference *ref)
+PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &sc, ConvergenceReference *ref)
 {
   PetscFunctionBeginUser;
   *ref              = ConvergenceReference();
   const double wall = MPI_Wtime();
   if (plan.reference == ConvergenceReferenceKind::Modal) {
-    PetscCall(ModalReferenceRun(Scenario{beam, ball, ip, MonitorRequest()}, &ref->result));
+    PetscCall(ModalReferenceRun(sc, &ref->result));
     ref->method = "modal";
   } else {
     ConvergenceConfig cfg;
@@ -464,7 +457,7 @@ PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan 
     for (PetscInt k = 0; k < cfg.seq.count; ++k) {
       ConvergenceRun run;
       PetscErrorCode err;
-      PetscCall(RunLevelOnce(comm, p, cfg, k, beam, ball, ip, &run, &run.result, &err));
+      PetscCall(RunLevelOnce(comm, p, cfg, k, sc, &run, &run.result, &err));
       PetscCheck(!err, comm, PETSC_ERR_NOT_CONVERGED, "the reference configuration %s failed at level %" PetscInt_FMT ": %s", plan.reference_file.c_str(), k, run.message.c_str());
       acor.push_back(run.result.acor);
       tc.push_back(run.result.contact_time);
@@ -492,8 +485,8 @@ PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<ConvergenceConfig> &cfgs, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip,
-                                     const ConvergenceReference &ref, std::vector<std::vector<ConvergenceRun>> *all)
+PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<ConvergenceConfig> &cfgs, const Scenario &sc, const ConvergenceReference &ref,
+                                     std::vector<std::vector<ConvergenceRun>> *all)
 {
   std::vector<std::vector<PetscReal>> spent(cfgs.size());
 
@@ -513,7 +506,7 @@ PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan,
         ImpactResult   res;
         PetscErrorCode err;
         const double   w0 = MPI_Wtime();
-        PetscCall(RunLevelOnce(comm, plan, cfgs[c], k, beam, ball, ip, &run, &res, &err));
+        PetscCall(RunLevelOnce(comm, plan, cfgs[c], k, sc, &run, &res, &err));
         spent[c][k] += MPI_Wtime() - w0;
         if (err) continue;
         if (r == 0) {
@@ -535,29 +528,28 @@ PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ConvergenceRunConfig(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, const ConvergenceReference &ref,
-                                    std::vector<ConvergenceRun> *runs)
+PetscErrorCode ConvergenceRunConfig(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, const Scenario &sc, const ConvergenceReference &ref, std::vector<ConvergenceRun> *runs)
 {
   std::vector<std::vector<ConvergenceRun>> all;
 
   PetscFunctionBeginUser;
-  PetscCall(ConvergenceRunConfigs(comm, plan, {cfg}, beam, ball, ip, ref, &all));
+  PetscCall(ConvergenceRunConfigs(comm, plan, {cfg}, sc, ref, &all));
   *runs = all[0];
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ConvergenceSpatialStudy(MPI_Comm comm, const ConvergencePlan &plan, const BeamParams &beam_in, const BallParams &ball, const ImpactParams &ip, ConvergenceSpatial *sp)
+PetscErrorCode ConvergenceSpatialStudy(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &base, ConvergenceSpatial *sp)
 {
   PetscFunctionBeginUser;
   *sp = ConvergenceSpatial();
   for (PetscInt N : plan.spatial_nodes) {
-    BeamParams beam = beam_in;
-    beam.nodes      = N;
-    PetscCall(BeamParamsCheck(comm, beam));
+    Scenario sc   = base;
+    sc.beam.nodes = N;
+    PetscCall(BeamParamsCheck(comm, sc.beam));
     ConvergenceReference ref;
-    PetscCall(ConvergenceReferenceCompute(comm, plan, beam, ball, ip, &ref));
+    PetscCall(ConvergenceReferenceCompute(comm, plan, sc, &ref));
     sp->nodes.push_back(N);
-    sp->h.push_back(beam.length / (N - 1));
+    sp->h.push_back(sc.beam.length / (N - 1));
     sp->acor.push_back(ref.result.acor);
     sp->contact_time.push_back(ref.result.contact_time);
     sp->peak_force.push_back(ref.result.peak_force);
@@ -592,6 +584,138 @@ PetscErrorCode ConvergenceSpatialStudy(MPI_Comm comm, const ConvergencePlan &pla
 
 namespace {
 
+// ---------------------------------------------------------------------------
+// The HDF5 file
+// ---------------------------------------------------------------------------
+
+// /reference: the reference's outcome and its estimated error (attributes).
+PetscErrorCode WriteReference(hid_t file, const ConvergenceReference &ref)
+{
+  RunRecord           r;
+  const ImpactResult &R = ref.result;
+
+  PetscFunctionBeginUser;
+  r.add("method", ref.method);
+  r.add("acor", R.acor);
+  r.add("acor_corrected", R.acor_corrected);
+  r.add("contact_time", R.contact_time);
+  r.add("peak_force", R.peak_force);
+  r.add("max_compression", R.max_compression);
+  r.add("contacts", (double)R.contacts);
+  r.add("final_time", R.final_time);
+  r.add("energy_error", R.energy_error);
+  r.add("acor_error_estimate", ref.acor_error);
+  r.add("contact_time_error_estimate", ref.contact_time_error);
+  r.add("peak_force_error_estimate", ref.peak_force_error);
+  r.add("observed_order", ref.observed_order);
+  r.add("wall_time", ref.wall_time);
+  hid_t g = H5Gcreate2(file, "reference", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCall(H5WriteAttributes(g, r));
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+// One column per quantity of a configuration's runs, one row per level.
+PetscErrorCode WriteConfigRuns(hid_t g, const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs)
+{
+  auto col = [&](const char *name, const char *unit, auto get) -> PetscErrorCode {
+    std::vector<double> v;
+    PetscFunctionBeginUser;
+    for (auto &r : runs) v.push_back((double)get(r));
+    PetscCall(H5WriteDataset1D(g, name, v, unit));
+    PetscFunctionReturn(0);
+  };
+
+  PetscFunctionBeginUser;
+  PetscCall(col("level", "", [](const ConvergenceRun &r) { return (double)r.level; }));
+  PetscCall(col("dt", "s (tol runs: initial step)", [](const ConvergenceRun &r) { return r.dt; }));
+  PetscCall(col("rtol", "", [](const ConvergenceRun &r) { return r.rtol; }));
+  PetscCall(col("atol", "", [](const ConvergenceRun &r) { return r.atol; }));
+  PetscCall(col("mean_step", "s", [](const ConvergenceRun &r) { return r.mean_step; }));
+  PetscCall(col("step", "s (dt, or mean_step for tol runs)", [&](const ConvergenceRun &r) { return r.failed ? NaN : ConvergenceStepOf(cfg, r); }));
+  PetscCall(col("failed", "", [](const ConvergenceRun &r) { return r.failed ? 1.0 : 0.0; }));
+  PetscCall(col("acor", "", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.acor; }));
+  PetscCall(col("acor_error", "absolute", [](const ConvergenceRun &r) { return r.acor_error; }));
+  PetscCall(col("contact_time_error", "relative", [](const ConvergenceRun &r) { return r.contact_time_error; }));
+  PetscCall(col("peak_force_error", "relative", [](const ConvergenceRun &r) { return r.peak_force_error; }));
+  PetscCall(col("max_compression_error", "relative", [](const ConvergenceRun &r) { return r.max_compression_error; }));
+  PetscCall(col("energy_error", "|E_end - E_0| / E_0", [](const ConvergenceRun &r) { return r.energy_error; }));
+  PetscCall(col("contacts", "", [](const ConvergenceRun &r) { return (double)r.result.contacts; }));
+  PetscCall(col("wall_time", "s, minimum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.wall_time; }));
+  PetscCall(col("wall_time_max", "s, maximum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.wall_time_max; }));
+  PetscCall(col("steps", "", [](const ConvergenceRun &r) { return (double)r.result.steps; }));
+  PetscCall(col("rejected_steps", "", [](const ConvergenceRun &r) { return (double)r.result.rejected_steps; }));
+  PetscCall(col("event_steps", "", [](const ConvergenceRun &r) { return (double)r.result.event_steps; }));
+  PetscCall(col("function_evals", "", [](const ConvergenceRun &r) { return (double)r.result.function_evals; }));
+  PetscCall(col("jacobian_evals", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_evals; }));
+  PetscCall(col("jacobian_assemblies", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_assemblies; }));
+  PetscCall(col("nonlinear_its", "", [](const ConvergenceRun &r) { return (double)r.result.nonlinear_its; }));
+  PetscCall(col("linear_its", "linear solves (preonly LU: one per solve)", [](const ConvergenceRun &r) { return (double)r.result.linear_its; }));
+  PetscFunctionReturn(0);
+}
+
+// /configs/<name>: the configuration (attributes), its runs and its observed orders.
+PetscErrorCode WriteConfig(hid_t gc, size_t index, const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs, PetscReal error_floor)
+{
+  RunRecord a;
+
+  PetscFunctionBeginUser;
+  hid_t g = H5Gcreate2(gc, cfg.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create group /configs/%s", cfg.name.c_str());
+  a.add("index", (double)index);
+  a.add("file", cfg.file);
+  a.add("description", cfg.description);
+  a.add("method", cfg.method);
+  a.add("options", cfg.options);
+  a.add("sequence", ConvergenceSequenceName(cfg.seq.kind));
+  a.add("sequence_first", cfg.seq.first);
+  a.add("sequence_divisor", cfg.seq.divisor);
+  a.add("sequence_count", (double)cfg.seq.count);
+  a.add("expected_order", cfg.expected_order);
+  a.add("atol_factor", cfg.atol_factor);
+  const ConvergenceOrder oa = ConvergenceOrderOf(cfg, runs, error_floor, &ConvergenceRun::acor_error);
+  const ConvergenceOrder ot = ConvergenceOrderOf(cfg, runs, error_floor, &ConvergenceRun::contact_time_error);
+  const ConvergenceOrder op = ConvergenceOrderOf(cfg, runs, error_floor, &ConvergenceRun::peak_force_error);
+  a.add("order_acor_lsq", oa.lsq);
+  a.add("order_contact_time_lsq", ot.lsq);
+  a.add("order_peak_force_lsq", op.lsq);
+  PetscCall(H5WriteAttributes(g, a));
+  PetscCall(WriteConfigRuns(g, cfg, runs));
+  PetscCall(H5WriteDataset1D(g, "order_acor_pairwise", oa.pairwise, "between level k-1 and k"));
+  PetscCall(H5WriteDataset1D(g, "order_contact_time_pairwise", ot.pairwise, "between level k-1 and k"));
+  PetscCall(H5WriteDataset1D(g, "order_peak_force_pairwise", op.pairwise, "between level k-1 and k"));
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+// /spatial: the reference at each N, the Richardson orders and the continuum limit.
+PetscErrorCode WriteSpatial(hid_t file, const ConvergencePlan &plan, const ConvergenceSpatial &sp)
+{
+  RunRecord a;
+
+  PetscFunctionBeginUser;
+  hid_t               g = H5Gcreate2(file, "spatial", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<double> nodes(sp.nodes.begin(), sp.nodes.end());
+  PetscCall(H5WriteDataset1D(g, "nodes", nodes, ""));
+  PetscCall(H5WriteDataset1D(g, "h", sp.h, "m"));
+  PetscCall(H5WriteDataset1D(g, "acor", sp.acor, ""));
+  PetscCall(H5WriteDataset1D(g, "contact_time", sp.contact_time, "s"));
+  PetscCall(H5WriteDataset1D(g, "peak_force", sp.peak_force, "N"));
+  PetscCall(H5WriteDataset1D(g, "acor_order", sp.acor_order, "Richardson, from the three levels ending here"));
+  PetscCall(H5WriteDataset1D(g, "contact_time_order", sp.contact_time_order, "Richardson, from the three levels ending here"));
+  PetscCall(H5WriteDataset1D(g, "peak_force_order", sp.peak_force_order, "Richardson, from the three levels ending here"));
+  a.add("acor_limit", sp.acor_limit);
+  a.add("contact_time_limit", sp.contact_time_limit);
+  a.add("peak_force_limit", sp.peak_force_limit);
+  a.add("acor_order_lsq", sp.acor_order_lsq);
+  a.add("contact_time_order_lsq", sp.contact_time_order_lsq);
+  a.add("peak_force_order_lsq", sp.peak_force_order_lsq);
+  a.add("reference", plan.reference == ConvergenceReferenceKind::Modal ? std::string("modal") : plan.reference_file);
+  PetscCall(H5WriteAttributes(g, a));
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode WriteConvergenceFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ConvergencePlan &plan, const ConvergenceReference *ref, const std::vector<std::vector<ConvergenceRun>> &all,
                                     const RunRecord &summary, const ConvergenceSpatial *sp)
 {
@@ -603,117 +727,186 @@ PetscErrorCode WriteConvergenceFile(MPI_Comm comm, const std::string &path, cons
   hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
   PetscCall(H5WriteAttributes(file, record));
-  if (ref) {
-    RunRecord r;
-    const ImpactResult &R = ref->result;
-    r.add("method", ref->method);
-    r.add("acor", R.acor);
-    r.add("acor_corrected", R.acor_corrected);
-    r.add("contact_time", R.contact_time);
-    r.add("peak_force", R.peak_force);
-    r.add("max_compression", R.max_compression);
-    r.add("contacts", (double)R.contacts);
-    r.add("final_time", R.final_time);
-    r.add("energy_error", R.energy_error);
-    r.add("acor_error_estimate", ref->acor_error);
-    r.add("contact_time_error_estimate", ref->contact_time_error);
-    r.add("peak_force_error_estimate", ref->peak_force_error);
-    r.add("observed_order", ref->observed_order);
-    r.add("wall_time", ref->wall_time);
-    hid_t g = H5Gcreate2(file, "reference", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCall(H5WriteAttributes(g, r));
-    H5Gclose(g);
-  }
+  if (ref) PetscCall(WriteReference(file, *ref));
   if (!plan.configs.empty()) {
     hid_t gc = H5Gcreate2(file, "configs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    for (size_t c = 0; c < plan.configs.size(); ++c) {
-      const ConvergenceConfig           &cfg  = plan.configs[c];
-      const std::vector<ConvergenceRun> &runs = all[c];
-      hid_t                              g    = H5Gcreate2(gc, cfg.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-      PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create group /configs/%s", cfg.name.c_str());
-      RunRecord a;
-      a.add("index", (double)c);
-      a.add("file", cfg.file);
-      a.add("description", cfg.description);
-      a.add("method", cfg.method);
-      a.add("options", cfg.options);
-      a.add("sequence", ConvergenceSequenceName(cfg.seq.kind));
-      a.add("sequence_first", cfg.seq.first);
-      a.add("sequence_divisor", cfg.seq.divisor);
-      a.add("sequence_count", (double)cfg.seq.count);
-      a.add("expected_order", cfg.expected_order);
-      a.add("atol_factor", cfg.atol_factor);
-      const ConvergenceOrder oa = ConvergenceOrderOf(cfg, runs, plan.error_floor, &ConvergenceRun::acor_error);
-      const ConvergenceOrder ot = ConvergenceOrderOf(cfg, runs, plan.error_floor, &ConvergenceRun::contact_time_error);
-      const ConvergenceOrder op = ConvergenceOrderOf(cfg, runs, plan.error_floor, &ConvergenceRun::peak_force_error);
-      a.add("order_acor_lsq", oa.lsq);
-      a.add("order_contact_time_lsq", ot.lsq);
-      a.add("order_peak_force_lsq", op.lsq);
-      PetscCall(H5WriteAttributes(g, a));
-      auto col = [&](const char *name, const char *unit, auto get) -> PetscErrorCode {
-        std::vector<double> v;
-        PetscFunctionBeginUser;
-        for (auto &r : runs) v.push_back((double)get(r));
-        PetscCall(H5WriteDataset1D(g, name, v, unit));
-        PetscFunctionReturn(0);
-      };
-      PetscCall(col("level", "", [](const ConvergenceRun &r) { return (double)r.level; }));
-      PetscCall(col("dt", "s (tol runs: initial step)", [](const ConvergenceRun &r) { return r.dt; }));
-      PetscCall(col("rtol", "", [](const ConvergenceRun &r) { return r.rtol; }));
-      PetscCall(col("atol", "", [](const ConvergenceRun &r) { return r.atol; }));
-      PetscCall(col("mean_step", "s", [](const ConvergenceRun &r) { return r.mean_step; }));
-      PetscCall(col("step", "s (dt, or mean_step for tol runs)", [&](const ConvergenceRun &r) { return r.failed ? NaN : ConvergenceStepOf(cfg, r); }));
-      PetscCall(col("failed", "", [](const ConvergenceRun &r) { return r.failed ? 1.0 : 0.0; }));
-      PetscCall(col("acor", "", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.acor; }));
-      PetscCall(col("acor_error", "absolute", [](const ConvergenceRun &r) { return r.acor_error; }));
-      PetscCall(col("contact_time_error", "relative", [](const ConvergenceRun &r) { return r.contact_time_error; }));
-      PetscCall(col("peak_force_error", "relative", [](const ConvergenceRun &r) { return r.peak_force_error; }));
-      PetscCall(col("max_compression_error", "relative", [](const ConvergenceRun &r) { return r.max_compression_error; }));
-      PetscCall(col("energy_error", "|E_end - E_0| / E_0", [](const ConvergenceRun &r) { return r.energy_error; }));
-      PetscCall(col("contacts", "", [](const ConvergenceRun &r) { return (double)r.result.contacts; }));
-      PetscCall(col("wall_time", "s, minimum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.wall_time; }));
-      PetscCall(col("wall_time_max", "s, maximum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.wall_time_max; }));
-      PetscCall(col("steps", "", [](const ConvergenceRun &r) { return (double)r.result.steps; }));
-      PetscCall(col("rejected_steps", "", [](const ConvergenceRun &r) { return (double)r.result.rejected_steps; }));
-      PetscCall(col("event_steps", "", [](const ConvergenceRun &r) { return (double)r.result.event_steps; }));
-      PetscCall(col("function_evals", "", [](const ConvergenceRun &r) { return (double)r.result.function_evals; }));
-      PetscCall(col("jacobian_evals", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_evals; }));
-      PetscCall(col("jacobian_assemblies", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_assemblies; }));
-      PetscCall(col("nonlinear_its", "", [](const ConvergenceRun &r) { return (double)r.result.nonlinear_its; }));
-      PetscCall(col("linear_its", "linear solves (preonly LU: one per solve)", [](const ConvergenceRun &r) { return (double)r.result.linear_its; }));
-      PetscCall(H5WriteDataset1D(g, "order_acor_pairwise", oa.pairwise, "between level k-1 and k"));
-      PetscCall(H5WriteDataset1D(g, "order_contact_time_pairwise", ot.pairwise, "between level k-1 and k"));
-      PetscCall(H5WriteDataset1D(g, "order_peak_force_pairwise", op.pairwise, "between level k-1 and k"));
-      H5Gclose(g);
-    }
+    for (size_t c = 0; c < plan.configs.size(); ++c) PetscCall(WriteConfig(gc, c, plan.configs[c], all[c], plan.error_floor));
     H5Gclose(gc);
     hid_t gs = H5Gcreate2(file, "summary", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     PetscCall(H5WriteAttributes(gs, summary));
     H5Gclose(gs);
   }
-  if (sp && !sp->nodes.empty()) {
-    hid_t               g = H5Gcreate2(file, "spatial", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    std::vector<double> nodes(sp->nodes.begin(), sp->nodes.end());
-    PetscCall(H5WriteDataset1D(g, "nodes", nodes, ""));
-    PetscCall(H5WriteDataset1D(g, "h", sp->h, "m"));
-    PetscCall(H5WriteDataset1D(g, "acor", sp->acor, ""));
-    PetscCall(H5WriteDataset1D(g, "contact_time", sp->contact_time, "s"));
-    PetscCall(H5WriteDataset1D(g, "peak_force", sp->peak_force, "N"));
-    PetscCall(H5WriteDataset1D(g, "acor_order", sp->acor_order, "Richardson, from the three levels ending here"));
-    PetscCall(H5WriteDataset1D(g, "contact_time_order", sp->contact_time_order, "Richardson, from the three levels ending here"));
-    PetscCall(H5WriteDataset1D(g, "peak_force_order", sp->peak_force_order, "Richardson, from the three levels ending here"));
-    RunRecord a;
-    a.add("acor_limit", sp->acor_limit);
-    a.add("contact_time_limit", sp->contact_time_limit);
-    a.add("peak_force_limit", sp->peak_force_limit);
-    a.add("acor_order_lsq", sp->acor_order_lsq);
-    a.add("contact_time_order_lsq", sp->contact_time_order_lsq);
-    a.add("peak_force_order_lsq", sp->peak_force_order_lsq);
-    a.add("reference", plan.reference == ConvergenceReferenceKind::Modal ? std::string("modal") : plan.reference_file);
-    PetscCall(H5WriteAttributes(g, a));
-    H5Gclose(g);
-  }
+  if (sp && !sp->nodes.empty()) PetscCall(WriteSpatial(file, plan, *sp));
   H5Fclose(file);
+  PetscFunctionReturn(0);
+}
+
+// ---------------------------------------------------------------------------
+// The task
+// ---------------------------------------------------------------------------
+
+// The scenario and the plan. The integrators come from the configuration files only.
+PetscErrorCode ConvergenceReadOptions(MPI_Comm comm, Scenario *sc, ConvergencePlan *plan)
+{
+  ScenarioReading how;
+  PetscBool       has;
+
+  PetscFunctionBeginUser;
+  how.monitors = false; // the runs record no time series: -monitor_* is reported unused
+  PetscCall(ScenarioFromOptions(comm, how, sc));
+  PetscCall(ConvergencePlanFromOptions(comm, sc->ball, plan));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_type", &has));
+  PetscCheck(!has, comm, PETSC_ERR_ARG_WRONG,
+             "-ts_type is not used by -task convergence: the integrators come from the -convergence_configs files; options common to every run go in a file given with -convergence_common_options FILE "
+             "(a scene file that sets an integrator, such as options/base/default-scene.opts, cannot be used here)");
+  PetscCall(OptionsCheckUnused(comm));
+  PetscFunctionReturn(0);
+}
+
+// The file's root attributes: the scenario, its effective times and the plan.
+PetscErrorCode ConvergenceRecordBuild(const Scenario &sc, const ConvergencePlan &plan, RunRecord *record)
+{
+  std::string names;
+
+  PetscFunctionBeginUser;
+  PetscCall(RunRecordBuild(sc, nullptr, record));
+  const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+  record->add("task", "convergence");
+  record->add("impact_x", sc.impact.x);
+  record->add("impact_window_effective", times.window);
+  record->add("impact_max_time_effective", times.max_time);
+  record->add("convergence_reference", plan.reference == ConvergenceReferenceKind::Modal ? std::string("modal") : plan.reference_file);
+  record->add("convergence_repeats", (double)plan.repeats);
+  record->add("convergence_repeat_budget", plan.repeat_budget);
+  record->add("convergence_target", plan.target);
+  record->add("convergence_error_floor", plan.error_floor);
+  record->add("convergence_common_options", plan.common_file);
+  for (auto &c : plan.configs) names += (names.empty() ? "" : ",") + c.name;
+  record->add("configs", names);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PrintReference(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceReference &ref)
+{
+  const ImpactResult &R = ref.result;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "reference (%s, %.3f s): acor %.14f  contact_time %.12e s  peak_force %.10e N  contacts %" PetscInt_FMT "  final_time %.6e s  energy_error %.1e\n", ref.method.c_str(), (double)ref.wall_time,
+                        (double)R.acor, (double)R.contact_time, (double)R.peak_force, R.contacts, (double)R.final_time, (double)R.energy_error));
+  if (plan.reference == ConvergenceReferenceKind::Run)
+    PetscCall(PetscPrintf(comm, "  its own error (Richardson over its last three levels, observed order %.2f): acor %.1e, contact_time %.1e (rel), peak_force %.1e (rel)\n", (double)ref.observed_order, (double)ref.acor_error,
+                          (double)ref.contact_time_error, (double)ref.peak_force_error));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PrintOrders(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<std::vector<ConvergenceRun>> &all)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "\nobserved orders (against the step; tol runs: the mean step), errors > %g:\n  %-14s %-8s %-26s %-10s %-10s %-10s\n", (double)plan.error_floor, "config", "expected", "acor pairwise", "acor lsq",
+                        "t_c lsq", "F_max lsq"));
+  for (size_t c = 0; c < plan.configs.size(); ++c) {
+    const auto &cfg = plan.configs[c];
+    const auto  oa  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::acor_error);
+    const auto  ot  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::contact_time_error);
+    const auto  op  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::peak_force_error);
+    PetscCall(PetscPrintf(comm, "  %-14s %-8s %-26s %-10.2f %-10.2f %-10.2f\n", cfg.name.c_str(), cfg.expected_order > 0 ? Format("%g", cfg.expected_order).c_str() : "-", OrderText(oa).c_str(), (double)oa.lsq,
+                          (double)ot.lsq, (double)op.lsq));
+  }
+  PetscFunctionReturn(0);
+}
+
+// The fastest level of one configuration that reaches the target (-1: none).
+PetscInt FastestAtTarget(const std::vector<ConvergenceRun> &runs, PetscReal target, PetscReal *t)
+{
+  PetscInt lv = -1;
+  *t          = 0;
+  for (auto &r : runs)
+    if (!r.failed && r.acor_error <= target && (lv < 0 || r.result.wall_time < *t)) {
+      lv = r.level;
+      *t = r.result.wall_time;
+    }
+  return lv;
+}
+
+// The smallest ACOR error of a configuration's runs (NaN when all failed).
+PetscReal SmallestError(const std::vector<ConvergenceRun> &runs)
+{
+  PetscReal m = NaN;
+  for (auto &r : runs)
+    if (!r.failed && !(r.acor_error >= m)) m = r.acor_error;
+  return m;
+}
+
+// The cost of each configuration at -convergence_target, the best PETSc configuration
+// against the leapfrog baseline; the same numbers go to *summary for the file.
+PetscErrorCode PrintCostAtTarget(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<std::vector<ConvergenceRun>> &all, RunRecord *summary)
+{
+  PetscInt  best = -1, base = -1;
+  PetscReal best_t = 0, base_t = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "\ncost at ACOR error <= %g (fastest level that reaches it; wall time = minimum of up to %" PetscInt_FMT " runs, time stepping only):\n", (double)plan.target, plan.repeats));
+  for (size_t c = 0; c < plan.configs.size(); ++c) {
+    const auto &cfg = plan.configs[c];
+    PetscReal   t;
+    PetscInt    lv = FastestAtTarget(all[c], plan.target, &t);
+    if (lv < 0) {
+      PetscCall(PetscPrintf(comm, "  %-14s does not reach it (smallest error %.2e)\n", cfg.name.c_str(), (double)SmallestError(all[c])));
+      continue;
+    }
+    const auto &r = all[c][lv];
+    PetscCall(PetscPrintf(comm, "  %-14s %.3e s  level %" PetscInt_FMT "  %s  acor_err %.2e  steps %" PetscInt_FMT "\n", cfg.name.c_str(), (double)t, lv,
+                          cfg.seq.kind == ConvergenceSequenceKind::Tolerance ? Format("rtol %.2e", r.rtol).c_str() : Format("dt %.3e", r.dt).c_str(), (double)r.acor_error, r.result.steps));
+    summary->add("time_at_target_" + cfg.name, t);
+    if (cfg.method == "leapfrog") {
+      if (base < 0 || t < base_t) base = (PetscInt)c, base_t = t;
+    } else if (best < 0 || t < best_t) best = (PetscInt)c, best_t = t;
+  }
+  summary->add("target", plan.target);
+  if (best >= 0) {
+    summary->add("best_config", plan.configs[best].name);
+    summary->add("best_time", best_t);
+  }
+  if (base >= 0) {
+    summary->add("baseline_config", plan.configs[base].name);
+    summary->add("baseline_time", base_t);
+  }
+  if (best >= 0 && base >= 0) {
+    summary->add("baseline_over_best", base_t / best_t);
+    PetscCall(PetscPrintf(comm, "best PETSc configuration at ACOR error <= %g: %s, %.3e s; baseline %s: %.3e s; baseline/best = %.2f (best/baseline = %.2f)\n", (double)plan.target, plan.configs[best].name.c_str(), (double)best_t,
+                          plan.configs[base].name.c_str(), (double)base_t, (double)(base_t / best_t), (double)(best_t / base_t)));
+  }
+  PetscFunctionReturn(0);
+}
+
+// The temporal study: reference, every configuration's runs, orders, cost at the target.
+PetscErrorCode TemporalStudy(MPI_Comm comm, const Scenario &sc, const ConvergencePlan &plan, ConvergenceReference *ref, std::vector<std::vector<ConvergenceRun>> *all, RunRecord *summary)
+{
+  const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "convergence study: N = %" PetscInt_FMT ", x = %g m, %s law, window %g s after separation, %" PetscInt_FMT " repeat(s) per level (fewer once a level took -convergence_repeat_budget)\n", sc.beam.nodes,
+                        (double)sc.impact.x, ContactLawName(sc.ball.law), (double)times.window, plan.repeats));
+  PetscCall(ConvergenceReferenceCompute(comm, plan, sc, ref));
+  PetscCall(PrintReference(comm, plan, *ref));
+  PetscCall(ConvergenceRunConfigs(comm, plan, plan.configs, sc, *ref, all));
+  PetscCall(PrintOrders(comm, plan, *all));
+  PetscCall(PrintCostAtTarget(comm, plan, *all, summary));
+  PetscFunctionReturn(0);
+}
+
+// The spatial study, with its continuum limit and observed orders.
+PetscErrorCode SpatialStudy(MPI_Comm comm, const Scenario &sc, const ConvergencePlan &plan, ConvergenceSpatial *sp)
+{
+  std::string o;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "\nspatial study (reference %s at each N):\n", plan.reference == ConvergenceReferenceKind::Modal ? "modal" : plan.reference_file.c_str()));
+  PetscCall(ConvergenceSpatialStudy(comm, plan, sc, sp));
+  PetscCall(PetscPrintf(comm, "  continuum limit (Richardson, last three N): acor %.10f  contact_time %.8e s  peak_force %.6e N\n", (double)sp->acor_limit, (double)sp->contact_time_limit, (double)sp->peak_force_limit));
+  for (size_t k = 2; k < sp->acor_order.size(); ++k) o += Format(" %.3f", sp->acor_order[k]);
+  PetscCall(PetscPrintf(comm, "  observed spatial order: acor (triples)%s; least squares: acor %.3f, contact_time %.3f, peak_force %.3f\n", o.c_str(), (double)sp->acor_order_lsq, (double)sp->contact_time_order_lsq,
+                        (double)sp->peak_force_order_lsq));
   PetscFunctionReturn(0);
 }
 
@@ -721,122 +914,18 @@ PetscErrorCode WriteConvergenceFile(MPI_Comm comm, const std::string &path, cons
 
 PetscErrorCode TaskConvergence(MPI_Comm comm, const std::string &output)
 {
-  BeamParams      beam;
-  BallParams      ball;
-  ImpactParams    ip;
-  ConvergencePlan plan;
-
-  PetscFunctionBeginUser;
-  PetscCall(BeamParamsFromOptions(comm, &beam));
-  PetscCall(BallParamsFromOptions(comm, &ball));
-  PetscCall(ImpactParamsFromOptions(comm, beam, &ip));
-  PetscCall(ConvergencePlanFromOptions(comm, ball, &plan));
-  {
-    PetscBool has;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_type", &has));
-    PetscCheck(!has, comm, PETSC_ERR_ARG_WRONG,
-               "-ts_type is not used by -task convergence: the integrators come from the -convergence_configs files; options common to every run go in a file given with -convergence_common_options FILE "
-               "(a scene file that sets an integrator, such as options/base/default-scene.opts, cannot be used here)");
-  }
-  PetscCall(OptionsCheckUnused(comm));
-  RunRecord record;
-  PetscCall(RunRecordBuild(beam, &ball, &ip, nullptr, &record));
-  const ImpactTimes times = ImpactTimesOf(beam, ball, ip);
-  record.add("task", "convergence");
-  record.add("impact_x", ip.x);
-  record.add("impact_window_effective", times.window);
-  record.add("impact_max_time_effective", times.max_time);
-  record.add("convergence_reference", plan.reference == ConvergenceReferenceKind::Modal ? std::string("modal") : plan.reference_file);
-  record.add("convergence_repeats", (double)plan.repeats);
-  record.add("convergence_repeat_budget", plan.repeat_budget);
-  record.add("convergence_target", plan.target);
-  record.add("convergence_error_floor", plan.error_floor);
-  record.add("convergence_common_options", plan.common_file);
-  std::string names;
-  for (auto &c : plan.configs) names += (names.empty() ? "" : ",") + c.name;
-  record.add("configs", names);
-
+  Scenario                                 sc;
+  ConvergencePlan                          plan;
+  RunRecord                                record, summary;
   ConvergenceReference                     ref;
   std::vector<std::vector<ConvergenceRun>> all;
-  RunRecord                                summary;
-  if (!plan.configs.empty()) {
-    PetscCall(PetscPrintf(comm, "convergence study: N = %" PetscInt_FMT ", x = %g m, %s law, window %g s after separation, %" PetscInt_FMT " repeat(s) per level (fewer once a level took -convergence_repeat_budget)\n", beam.nodes, (double)ip.x, ContactLawName(ball.law),
-                          (double)times.window, plan.repeats));
-    PetscCall(ConvergenceReferenceCompute(comm, plan, beam, ball, ip, &ref));
-    const ImpactResult &R = ref.result;
-    PetscCall(PetscPrintf(comm, "reference (%s, %.3f s): acor %.14f  contact_time %.12e s  peak_force %.10e N  contacts %" PetscInt_FMT "  final_time %.6e s  energy_error %.1e\n", ref.method.c_str(), (double)ref.wall_time,
-                          (double)R.acor, (double)R.contact_time, (double)R.peak_force, R.contacts, (double)R.final_time, (double)R.energy_error));
-    if (plan.reference == ConvergenceReferenceKind::Run)
-      PetscCall(PetscPrintf(comm, "  its own error (Richardson over its last three levels, observed order %.2f): acor %.1e, contact_time %.1e (rel), peak_force %.1e (rel)\n", (double)ref.observed_order, (double)ref.acor_error,
-                            (double)ref.contact_time_error, (double)ref.peak_force_error));
-    PetscCall(ConvergenceRunConfigs(comm, plan, plan.configs, beam, ball, ip, ref, &all));
-    // Orders.
-    PetscCall(PetscPrintf(comm, "\nobserved orders (against the step; tol runs: the mean step), errors > %g:\n  %-14s %-8s %-26s %-10s %-10s %-10s\n", (double)plan.error_floor, "config", "expected", "acor pairwise", "acor lsq",
-                          "t_c lsq", "F_max lsq"));
-    for (size_t c = 0; c < plan.configs.size(); ++c) {
-      const auto &cfg = plan.configs[c];
-      const auto  oa  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::acor_error);
-      const auto  ot  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::contact_time_error);
-      const auto  op  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::peak_force_error);
-      PetscCall(PetscPrintf(comm, "  %-14s %-8s %-26s %-10.2f %-10.2f %-10.2f\n", cfg.name.c_str(), cfg.expected_order > 0 ? Format("%g", cfg.expected_order).c_str() : "-", OrderText(oa).c_str(), (double)oa.lsq,
-                            (double)ot.lsq, (double)op.lsq));
-    }
-    // Cost at the target.
-    PetscCall(PetscPrintf(comm, "\ncost at ACOR error <= %g (fastest level that reaches it; wall time = minimum of up to %" PetscInt_FMT " runs, time stepping only):\n", (double)plan.target, plan.repeats));
-    PetscInt  best = -1, base = -1;
-    PetscReal best_t = 0, base_t = 0;
-    for (size_t c = 0; c < plan.configs.size(); ++c) {
-      const auto &cfg = plan.configs[c];
-      PetscInt    lv  = -1;
-      PetscReal   t   = 0;
-      for (auto &r : all[c])
-        if (!r.failed && r.acor_error <= plan.target && (lv < 0 || r.result.wall_time < t)) {
-          lv = r.level;
-          t  = r.result.wall_time;
-        }
-      if (lv < 0) {
-        PetscCall(PetscPrintf(comm, "  %-14s does not reach it (smallest error %.2e)\n", cfg.name.c_str(),
-                              (double)[&] {
-                                PetscReal m = NaN;
-                                for (auto &r : all[c])
-                                  if (!r.failed && !(r.acor_error >= m)) m = r.acor_error;
-                                return m;
-                              }()));
-        continue;
-      }
-      const auto &r = all[c][lv];
-      PetscCall(PetscPrintf(comm, "  %-14s %.3e s  level %" PetscInt_FMT "  %s  acor_err %.2e  steps %" PetscInt_FMT "\n", cfg.name.c_str(), (double)t, lv,
-                            cfg.seq.kind == ConvergenceSequenceKind::Tolerance ? Format("rtol %.2e", r.rtol).c_str() : Format("dt %.3e", r.dt).c_str(), (double)r.acor_error, r.result.steps));
-      summary.add("time_at_target_" + cfg.name, t);
-      if (cfg.method == "leapfrog") {
-        if (base < 0 || t < base_t) base = (PetscInt)c, base_t = t;
-      } else if (best < 0 || t < best_t) best = (PetscInt)c, best_t = t;
-    }
-    summary.add("target", plan.target);
-    if (best >= 0) {
-      summary.add("best_config", plan.configs[best].name);
-      summary.add("best_time", best_t);
-    }
-    if (base >= 0) {
-      summary.add("baseline_config", plan.configs[base].name);
-      summary.add("baseline_time", base_t);
-    }
-    if (best >= 0 && base >= 0) {
-      summary.add("baseline_over_best", base_t / best_t);
-      PetscCall(PetscPrintf(comm, "best PETSc configuration at ACOR error <= %g: %s, %.3e s; baseline %s: %.3e s; baseline/best = %.2f (best/baseline = %.2f)\n", (double)plan.target, plan.configs[best].name.c_str(), (double)best_t,
-                            plan.configs[base].name.c_str(), (double)base_t, (double)(base_t / best_t), (double)(best_t / base_t)));
-    }
-  }
-  ConvergenceSpatial sp;
-  if (!plan.spatial_nodes.empty()) {
-    PetscCall(PetscPrintf(comm, "\nspatial study (reference %s at each N):\n", plan.reference == ConvergenceReferenceKind::Modal ? "modal" : plan.reference_file.c_str()));
-    PetscCall(ConvergenceSpatialStudy(comm, plan, beam, ball, ip, &sp));
-    PetscCall(PetscPrintf(comm, "  continuum limit (Richardson, last three N): acor %.10f  contact_time %.8e s  peak_force %.6e N\n", (double)sp.acor_limit, (double)sp.contact_time_limit, (double)sp.peak_force_limit));
-    std::string o;
-    for (size_t k = 2; k < sp.acor_order.size(); ++k) o += Format(" %.3f", sp.acor_order[k]);
-    PetscCall(PetscPrintf(comm, "  observed spatial order: acor (triples)%s; least squares: acor %.3f, contact_time %.3f, peak_force %.3f\n", o.c_str(), (double)sp.acor_order_lsq, (double)sp.contact_time_order_lsq,
-                          (double)sp.peak_force_order_lsq));
-  }
+  ConvergenceSpatial                       sp;
+
+  PetscFunctionBeginUser;
+  PetscCall(ConvergenceReadOptions(comm, &sc, &plan));
+  PetscCall(ConvergenceRecordBuild(sc, plan, &record));
+  if (!plan.configs.empty()) PetscCall(TemporalStudy(comm, sc, plan, &ref, &all, &summary));
+  if (!plan.spatial_nodes.empty()) PetscCall(SpatialStudy(comm, sc, plan, &sp));
   if (!output.empty()) {
     PetscCall(WriteConvergenceFile(comm, output, record, plan, plan.configs.empty() ? nullptr : &ref, all, summary, &sp));
     PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));

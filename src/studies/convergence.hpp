@@ -42,6 +42,7 @@
 #include "model/beam.hpp"
 #include "model/contact.hpp"
 #include "run/impact.hpp"
+#include "run/scenario.hpp"
 
 #include <petscsys.h>
 
@@ -142,18 +143,18 @@ ConvergenceOrder ConvergenceObservedOrder(const std::vector<PetscReal> &h, const
 // Returns false when the differences do not decrease (no asymptotic behaviour).
 bool ConvergenceRichardson(PetscReal A1, PetscReal A2, PetscReal A3, PetscReal r, PetscReal *p, PetscReal *A0);
 
-// Computes the reference for the scene (modal or a run of the reference configuration).
-PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan &plan, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, ConvergenceReference *ref);
+// Computes the reference for the scenario (modal or a run of the reference configuration).
+// Here and below the scenario's monitors are not used: the runs record no time series.
+PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &sc, ConvergenceReference *ref);
 
 // Runs every level of every configuration plan.repeats times (interleaved: all levels
 // once, then again; a level is not repeated once its runs took plan.repeat_budget),
 // keeps the minimum wall time, and measures each run against ref. A failing level is
 // recorded (failed, message) and the others run. all[c][k]: configuration c, level k.
-PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<ConvergenceConfig> &cfgs, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip,
-                                     const ConvergenceReference &ref, std::vector<std::vector<ConvergenceRun>> *all);
+PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<ConvergenceConfig> &cfgs, const Scenario &sc, const ConvergenceReference &ref,
+                                     std::vector<std::vector<ConvergenceRun>> *all);
 // The same for one configuration.
-PetscErrorCode ConvergenceRunConfig(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip,
-                                    const ConvergenceReference &ref, std::vector<ConvergenceRun> *runs);
+PetscErrorCode ConvergenceRunConfig(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, const Scenario &sc, const ConvergenceReference &ref, std::vector<ConvergenceRun> *runs);
 
 // Observed order of one configuration's runs for one error (e.g. &ConvergenceRun::acor_error)
 // against ConvergenceStepOf; failed runs are left out.
@@ -171,7 +172,7 @@ struct ConvergenceSpatial {
   PetscReal acor_limit = 0, contact_time_limit = 0, peak_force_limit = 0;   // extrapolated from the last three
   PetscReal acor_order_lsq = 0, contact_time_order_lsq = 0, peak_force_order_lsq = 0; // fit of |A(h) - limit|
 };
-PetscErrorCode ConvergenceSpatialStudy(MPI_Comm comm, const ConvergencePlan &plan, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, ConvergenceSpatial *sp);
+PetscErrorCode ConvergenceSpatialStudy(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &sc, ConvergenceSpatial *sp);
 
 // -task convergence: reads the options, runs the study, prints the tables and the
 // cost at -convergence_target against the leapfrog baseline, writes -output.

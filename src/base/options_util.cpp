@@ -1,5 +1,5 @@
 // Options database helpers. See options_util.hpp.
-#include "io/options_util.hpp"
+#include "base/options_util.hpp"
 
 namespace beamimpact {
 

@@ -1,0 +1,63 @@
+// The record of a run. See run_record.hpp.
+#include "io/run_record.hpp"
+
+#include "base/options_util.hpp"
+
+namespace beamimpact {
+
+PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
+{
+  char        petsc_version[256];
+  std::string options;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscGetVersion(petsc_version, sizeof(petsc_version)));
+  PetscCall(OptionsAsString(&options));
+  rec->add("program", std::string("beamimpact ") + BEAMIMPACT_VERSION);
+  rec->add("petsc_version", petsc_version);
+  rec->add("options", options);
+  rec->add("beam_length", beam.length);
+  rec->add("beam_EI", beam.EI);
+  rec->add("beam_mu", beam.mu);
+  rec->add("beam_mass", beam.mu * beam.length);
+  rec->add("beam_nodes", (double)beam.nodes);
+  rec->add("beam_left", SupportName(beam.left));
+  rec->add("beam_right", SupportName(beam.right));
+  rec->add("beam_clamp_x0", beam.has_clamp ? beam.clamp_x0 : -1.0);
+  rec->add("beam_clamp_x1", beam.has_clamp ? beam.clamp_x1 : -1.0);
+  rec->add("beam_parameter_set", beam.input.parameter_set);
+  rec->add("beam_youngs_modulus", beam.input.youngs_modulus);
+  rec->add("beam_density", beam.input.density);
+  rec->add("beam_thickness", beam.input.thickness);
+  rec->add("beam_width", beam.input.width);
+  rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, RunRecord *rec)
+{
+  const BallParams &ball = sc.ball;
+
+  PetscFunctionBeginUser;
+  PetscCall(RunRecordBuild(sc.beam, rec));
+  rec->add("ball_mass", ball.mass);
+  rec->add("ball_speed", ball.speed);
+  rec->add("ball_law", ContactLawName(ball.law));
+  if (ball.law == ContactLawKind::Linear) rec->add("ball_k", ball.k);
+  else {
+    rec->add("ball_k1", ball.k1);
+    rec->add("ball_m", ball.m);
+    rec->add("ball_n", ball.n);
+  }
+  rec->add("ball_loss_factor", ball.loss_factor);
+  rec->add("impact_window", sc.impact.window);
+  rec->add("impact_max_time", sc.impact.max_time);
+  rec->add("impact_event_tol", sc.impact.event_tol);
+  if (first) {
+    rec->add("ts_type", first->ts_type);
+    rec->add("formulation", first->formulation);
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

@@ -1,0 +1,30 @@
+// The record kept with every results file, as root attributes: program and PETSc versions,
+// the full options, every parameter of the scenario and the integrator of its first run.
+#pragma once
+
+#include "run/impact.hpp"
+#include "run/scenario.hpp"
+
+#include <petscsys.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace beamimpact {
+
+// Named numbers and strings, in the order they were added.
+struct RunRecord {
+  std::vector<std::pair<std::string, double>>      numbers;
+  std::vector<std::pair<std::string, std::string>> strings;
+  void add(const std::string &k, double v) { numbers.emplace_back(k, v); }
+  void add(const std::string &k, const std::string &v) { strings.emplace_back(k, v); }
+};
+
+// Program, PETSc version, options and the beam's parameters (a task on the beam alone).
+PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec);
+
+// The same plus the ball, the impact rules and, given a first result, its integrator.
+PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, RunRecord *rec);
+
+} // namespace beamimpact

@@ -1,0 +1,601 @@
+// The store of a sweep's rows: journals, atomic rewrites, signature and resume. See sweep_store.hpp.
+#include "studies/sweep_store.hpp"
+
+#include "io/results_h5.hpp"
+
+#include <hdf5.h>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <set>
+#include <sstream>
+
+namespace beamimpact {
+
+// ---------------------------------------------------------------------------
+// Journal: per-leader append-only files of self-checking records
+// ---------------------------------------------------------------------------
+
+namespace {
+
+uint64_t Fnv1a(const void *data, size_t n, uint64_t h = 1469598103934665603ULL)
+{
+  const unsigned char *p = static_cast<const unsigned char *>(data);
+  for (size_t i = 0; i < n; ++i) {
+    h ^= p[i];
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+const char     JournalMagic[8] = {'B', 'I', 'S', 'W', 'J', 'N', 'L', '1'};
+const uint32_t RecordMagic     = 0x574f5253u;
+
+struct JournalHeader {
+  char     magic[8];
+  uint64_t signature;
+  uint32_t ncols;
+  uint32_t reserved;
+  uint64_t check; // Fnv1a of the fields above
+};
+
+size_t RecordBytes(uint32_t ncols) { return 2 * sizeof(uint32_t) + ncols * sizeof(double) + sizeof(uint64_t); }
+
+bool WriteAll(int fd, const void *data, size_t n)
+{
+  const char *p = static_cast<const char *>(data);
+  while (n > 0) {
+    const ssize_t w = ::write(fd, p, n);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    p += w;
+    n -= (size_t)w;
+  }
+  return true;
+}
+
+bool ParseJournalName(const char *name, int *run, int *rank)
+{
+  char tail[8] = "";
+  return std::sscanf(name, "run%d-rank%d.%7s", run, rank, tail) == 3 && std::string(tail) == "bin";
+}
+
+// ---------------------------------------------------------------------------
+// Parameter signature: what must be equal for a resume
+// ---------------------------------------------------------------------------
+
+// Options that do not change any number in the file.
+bool OptionIsVolatile(const std::string &name)
+{
+  static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_progress_interval", "sweep_write_interval", "error_traceback", "allow_unused_options", "help", "version"};
+  static const char *const           prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_", "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view", "snes_view", "ksp_view"};
+  if (exact.count(name)) return true;
+  for (const char *p : prefix)
+    if (name.compare(0, std::strlen(p), p) == 0) return true;
+  return false;
+}
+
+// "-name value -name2 -name3 value3 ..." (PetscOptionsGetAll, sorted) -> name -> value.
+std::map<std::string, std::string> ParseOptions(const std::string &all)
+{
+  std::map<std::string, std::string> m;
+  std::stringstream                  ss(all);
+  std::string                        tok, name;
+  auto is_name = [](const std::string &t) { return t.size() > 1 && t[0] == '-' && (std::isalpha((unsigned char)t[1]) || t[1] == '_'); };
+  while (ss >> tok) {
+    if (is_name(tok)) {
+      name    = tok.substr(1);
+      m[name] = "";
+    } else if (!name.empty()) m[name] += (m[name].empty() ? "" : " ") + tok;
+  }
+  return m;
+}
+
+// Attributes that change while a sweep runs, or with options that do not matter.
+bool AttributeIsVolatile(const std::string &key) { return key == "options" || key == "sweep_cases_done" || key == "sweep_complete"; }
+
+SweepAttributes SignatureMaps(const RunRecord &rec)
+{
+  SweepAttributes m;
+  for (auto &kv : rec.numbers)
+    if (!AttributeIsVolatile(kv.first)) m.num[kv.first] = kv.second;
+  for (auto &kv : rec.strings)
+    if (!AttributeIsVolatile(kv.first)) m.str[kv.first] = kv.second;
+  return m;
+}
+
+uint64_t SignatureHash(const SweepAttributes &m)
+{
+  uint64_t h = Fnv1a("beamimpact-sweep", 16);
+  for (auto &kv : m.num) {
+    h = Fnv1a(kv.first.data(), kv.first.size(), h);
+    h = Fnv1a(&kv.second, sizeof(double), h);
+  }
+  for (auto &kv : m.str) {
+    h = Fnv1a(kv.first.data(), kv.first.size() + 1, h);
+    h = Fnv1a(kv.second.data(), kv.second.size() + 1, h);
+  }
+  return h;
+}
+
+std::string ShortValue(const std::string &s) { return s.size() > 60 ? s.substr(0, 57) + "..." : s; }
+
+// Human-readable differences between the stored and the current signature.
+std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &now)
+{
+  std::vector<std::string> d;
+  char                     buf[512];
+  std::set<std::string>    keys;
+  for (auto &kv : file.num) keys.insert(kv.first);
+  for (auto &kv : now.num) keys.insert(kv.first);
+  for (auto &k : keys) {
+    if (AttributeIsVolatile(k)) continue;
+    const auto a = file.num.find(k), b = now.num.find(k);
+    if (a != file.num.end() && b != now.num.end() && (a->second == b->second || (std::isnan(a->second) && std::isnan(b->second)))) continue;
+    std::snprintf(buf, sizeof(buf), "%s: %s in the file, %s now", k.c_str(), a == file.num.end() ? "absent" : std::to_string(a->second).c_str(), b == now.num.end() ? "absent" : std::to_string(b->second).c_str());
+    if (a != file.num.end() && b != now.num.end()) std::snprintf(buf, sizeof(buf), "%s: %.10g in the file, %.10g now", k.c_str(), a->second, b->second);
+    d.push_back(buf);
+  }
+  keys.clear();
+  for (auto &kv : file.str) keys.insert(kv.first);
+  for (auto &kv : now.str) keys.insert(kv.first);
+  for (auto &k : keys) {
+    if (AttributeIsVolatile(k)) continue;
+    const auto a = file.str.find(k), b = now.str.find(k);
+    if (a != file.str.end() && b != now.str.end() && a->second == b->second) continue;
+    if (k == "sweep_checked_options" && a != file.str.end() && b != now.str.end()) {
+      const auto            fo = ParseOptions(a->second), no = ParseOptions(b->second);
+      std::set<std::string> names;
+      for (auto &kv : fo) names.insert(kv.first);
+      for (auto &kv : no) names.insert(kv.first);
+      for (auto &n : names) {
+        const auto x = fo.find(n), y = no.find(n);
+        if (x != fo.end() && y != no.end() && x->second == y->second) continue;
+        std::snprintf(buf, sizeof(buf), "option -%s: %s in the file, %s now", n.c_str(), x == fo.end() ? "not set" : ("'" + x->second + "'").c_str(), y == no.end() ? "not set" : ("'" + y->second + "'").c_str());
+        d.push_back(buf);
+      }
+      continue;
+    }
+    std::snprintf(buf, sizeof(buf), "%s: %s in the file, %s now", k.c_str(), a == file.str.end() ? "absent" : ("'" + ShortValue(a->second) + "'").c_str(), b == now.str.end() ? "absent" : ("'" + ShortValue(b->second) + "'").c_str());
+    d.push_back(buf);
+  }
+  std::string out;
+  for (size_t i = 0; i < d.size() && i < 12; ++i) out += "\n  " + d[i];
+  if (d.size() > 12) out += "\n  ... (" + std::to_string(d.size() - 12) + " more)";
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// HDF5: atomic rewrite and read-back
+// ---------------------------------------------------------------------------
+
+std::string DirName(const std::string &path)
+{
+  const size_t s = path.find_last_of('/');
+  return s == std::string::npos ? std::string(".") : s == 0 ? std::string("/") : path.substr(0, s);
+}
+
+bool FsyncPath(const std::string &path, bool dir)
+{
+  const int fd = ::open(path.c_str(), (dir ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ::fsync(fd) == 0 || (dir && errno == EINVAL);
+  ::close(fd);
+  return ok;
+}
+
+// Silences HDF5's own error printing in a scope (we report errors ourselves).
+struct H5Quiet {
+  H5E_auto2_t func;
+  void       *data;
+  H5Quiet()
+  {
+    H5Eget_auto2(H5E_DEFAULT, &func, &data);
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  }
+  ~H5Quiet() { H5Eset_auto2(H5E_DEFAULT, func, data); }
+};
+
+herr_t CollectAttribute(hid_t loc, const char *name, const H5A_info_t *, void *op)
+{
+  SweepAttributes   *m     = static_cast<SweepAttributes *>(op);
+  hid_t       a     = H5Aopen(loc, name, H5P_DEFAULT);
+  hid_t       t     = H5Aget_type(a);
+  hid_t       s     = H5Aget_space(a);
+  H5T_class_t cls   = H5Tget_class(t);
+  hssize_t    count = H5Sget_simple_extent_npoints(s);
+  if ((cls == H5T_FLOAT || cls == H5T_INTEGER) && count == 1) {
+    double v = 0;
+    if (H5Aread(a, H5T_NATIVE_DOUBLE, &v) >= 0) m->num[name] = v;
+  } else if (cls == H5T_STRING && count == 1) {
+    if (H5Tis_variable_str(t) > 0) {
+      char *p  = nullptr;
+      hid_t mt = H5Tcopy(H5T_C_S1);
+      H5Tset_size(mt, H5T_VARIABLE);
+      if (H5Aread(a, mt, &p) >= 0 && p) {
+        m->str[name] = p;
+        H5free_memory(p);
+      }
+      H5Tclose(mt);
+    } else {
+      std::vector<char> buf(H5Tget_size(t) + 1, 0);
+      if (H5Aread(a, t, buf.data()) >= 0) m->str[name] = std::string(buf.data());
+    }
+  }
+  H5Sclose(s);
+  H5Tclose(t);
+  H5Aclose(a);
+  return 0;
+}
+
+bool ReadDataset(hid_t g, const char *name, std::vector<double> *v)
+{
+  if (H5Lexists(g, name, H5P_DEFAULT) <= 0) return false;
+  hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
+  if (ds < 0) return false;
+  hid_t          s = H5Dget_space(ds);
+  const hssize_t n = H5Sget_simple_extent_npoints(s);
+  v->assign((size_t)std::max<hssize_t>(0, n), 0.0);
+  const bool ok = n <= 0 || H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v->data()) >= 0;
+  H5Sclose(s);
+  H5Dclose(ds);
+  return ok;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// Journal files and checked options
+// ---------------------------------------------------------------------------
+
+std::string SweepJournalName(const std::string &output, int run, int rank)
+{
+  char name[64];
+  std::snprintf(name, sizeof(name), ".parts/run%06d-rank%06d.bin", run, rank);
+  return output + name;
+}
+
+void SweepJournalWriter::Warn(const char *what)
+{
+  if (!failed) {
+    int rank;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    std::fprintf(stderr, "beamimpact: warning: rank %d cannot %s the sweep journal %s (%s): its points are kept in memory and written at the end, but would be computed again after a crash (is -output on a filesystem every rank sees?)\n", rank, what, path.c_str(), std::strerror(errno));
+  }
+  failed = true;
+  if (fd >= 0) ::close(fd);
+  fd = -1;
+}
+
+PetscErrorCode SweepJournalWriter::Append(const std::vector<double> &row)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(row.size() == ncols, PETSC_COMM_SELF, PETSC_ERR_PLIB, "sweep row has %zu columns, the journal %u", row.size(), ncols);
+  if (failed) PetscFunctionReturn(0);
+  if (fd < 0) {
+    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
+    if (fd < 0) {
+      Warn("create");
+      PetscFunctionReturn(0);
+    }
+    JournalHeader h;
+    std::memset(&h, 0, sizeof(h));
+    std::memcpy(h.magic, JournalMagic, sizeof(h.magic));
+    h.signature = signature;
+    h.ncols     = ncols;
+    h.check     = Fnv1a(&h, offsetof(JournalHeader, check));
+    if (!WriteAll(fd, &h, sizeof(h))) {
+      Warn("write");
+      PetscFunctionReturn(0);
+    }
+  }
+  std::vector<char> rec(RecordBytes(ncols));
+  uint32_t          head[2] = {RecordMagic, ncols};
+  std::memcpy(rec.data(), head, sizeof(head));
+  std::memcpy(rec.data() + sizeof(head), row.data(), ncols * sizeof(double));
+  const uint64_t check = Fnv1a(rec.data(), rec.size() - sizeof(uint64_t));
+  std::memcpy(rec.data() + rec.size() - sizeof(uint64_t), &check, sizeof(check));
+  // One write() per record: a kill leaves whole records and at most one cut one.
+  if (!WriteAll(fd, rec.data(), rec.size())) Warn("write");
+  PetscFunctionReturn(0);
+}
+
+void SweepJournalWriter::Close()
+{
+  if (fd >= 0) ::close(fd);
+  fd = -1;
+}
+
+SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, PetscInt *added)
+{
+  if (stopped) return Ok;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return Missing;
+  struct stat st;
+  if (::fstat(fd, &st) != 0) {
+    ::close(fd);
+    return Missing;
+  }
+  std::vector<char> data((size_t)std::max<off_t>(0, st.st_size - offset));
+  size_t            got = 0;
+  while (got < data.size()) {
+    const ssize_t r = ::pread(fd, data.data() + got, data.size() - got, offset + (off_t)got);
+    if (r <= 0) break;
+    got += (size_t)r;
+  }
+  ::close(fd);
+  data.resize(got);
+  size_t pos = 0;
+  if (!header_ok) {
+    if (data.size() < sizeof(JournalHeader)) return Ok; // not yet written
+    JournalHeader h;
+    std::memcpy(&h, data.data(), sizeof(h));
+    if (std::memcmp(h.magic, JournalMagic, sizeof(h.magic)) != 0 || h.check != Fnv1a(&h, offsetof(JournalHeader, check))) {
+      stopped = true;
+      return Ok;
+    }
+    signature = h.signature;
+    if (h.signature != expected_signature || h.ncols != ncols) return WrongParameters;
+    header_ok = true;
+    pos       = sizeof(JournalHeader);
+  }
+  const size_t rb = RecordBytes(ncols);
+  while (pos + rb <= data.size()) {
+    const char *r = data.data() + pos;
+    uint32_t    head[2];
+    uint64_t    check;
+    std::memcpy(head, r, sizeof(head));
+    std::memcpy(&check, r + rb - sizeof(uint64_t), sizeof(check));
+    if (head[0] != RecordMagic || head[1] != ncols || check != Fnv1a(r, rb - sizeof(uint64_t))) {
+      stopped = true;
+      break;
+    }
+    std::vector<double> row(ncols);
+    std::memcpy(row.data(), r + sizeof(head), ncols * sizeof(double));
+    const double idx = row[0];
+    if (!(idx >= 0 && idx < ncases && idx == std::floor(idx))) {
+      stopped = true;
+      break;
+    }
+    if (rows->emplace((PetscInt)idx, std::move(row)).second && added) ++*added;
+    pos += rb;
+  }
+  offset += (off_t)pos;
+  return Ok;
+}
+
+std::string SweepCheckedOptions(const std::string &all)
+{
+  std::string out;
+  for (auto &kv : ParseOptions(all)) {
+    if (OptionIsVolatile(kv.first)) continue;
+    out += "-" + kv.first + (kv.second.empty() ? "" : " " + kv.second) + " ";
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// The store
+// ---------------------------------------------------------------------------
+
+void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std::vector<SweepColumn> &columns, const RunRecord &record, SweepStore *S)
+{
+  S->output         = output;
+  S->parts          = output + ".parts";
+  S->plan           = plan;
+  S->columns        = columns;
+  S->record         = record;
+  S->ncases         = plan.cases();
+  S->ncols          = (uint32_t)columns.size();
+  S->signature      = SignatureMaps(record);
+  S->signature_hash = SignatureHash(S->signature);
+}
+
+static PetscErrorCode StoreWrite(SweepStore &S)
+{
+  const std::string tmp = S.output + ".tmp";
+  const double      t0  = MPI_Wtime();
+
+  PetscFunctionBeginUser;
+  {
+    H5Quiet quiet;
+    hid_t   file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (directory missing or not writable?)", S.output.c_str(), tmp.c_str());
+    RunRecord rec = S.record;
+    rec.add("sweep_cases_done", (double)S.rows.size());
+    rec.add("sweep_complete", (double)((PetscInt)S.rows.size() == S.ncases));
+    PetscCall(H5WriteAttributes(file, rec));
+    hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const auto &cols = S.columns;
+    for (size_t c = 0; c < cols.size(); ++c) {
+      std::vector<double> v;
+      v.reserve(S.rows.size());
+      for (auto &kv : S.rows) v.push_back(kv.second[c]);
+      PetscCall(H5WriteDataset1D(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
+    }
+    H5Gclose(g);
+    // The plan: every axis's value for every case (also those not yet done).
+    hid_t gp = H5Gcreate2(file, "sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    for (size_t k = 0; k < S.plan.axes.size(); ++k) {
+      std::vector<double> v(S.ncases);
+      for (PetscInt i = 0; i < S.ncases; ++i) v[i] = S.plan.CaseValues(i)[k];
+      PetscCall(H5WriteDataset1D(gp, S.plan.axes[k].type->column, v, S.plan.axes[k].type->unit));
+    }
+    H5Gclose(gp);
+    PetscCheck(H5Fclose(file) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing %s failed (disk full?)", S.output.c_str(), tmp.c_str());
+  }
+  PetscCheck(FsyncPath(tmp, false), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: fsync of %s failed (%s)", S.output.c_str(), tmp.c_str(), std::strerror(errno));
+  PetscCheck(std::rename(tmp.c_str(), S.output.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename %s onto it (%s)", S.output.c_str(), tmp.c_str(), std::strerror(errno));
+  FsyncPath(DirName(S.output), true);
+  S.rows_written = (PetscInt)S.rows.size();
+  S.last_write   = MPI_Wtime();
+  S.write_cost   = S.last_write - t0;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WrongParameters(const SweepStore &S, const std::string &what, const std::string &diff)
+{
+  PetscFunctionBeginUser;
+  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+          "-output %s: %s was written by a sweep with different parameters, so it cannot be resumed:%s\n"
+          "Rerun with the same options to resume it, add -sweep_restart to discard it and start over, or choose another -output.",
+          S.output.c_str(), what.c_str(), diff.c_str());
+  PetscFunctionReturn(0);
+}
+
+// Loads the rows of an existing output file after checking its parameters.
+static PetscErrorCode StoreLoadFile(SweepStore &S)
+{
+  struct stat st;
+
+  PetscFunctionBeginUser;
+  if (::stat(S.output.c_str(), &st) != 0) PetscFunctionReturn(0);
+  H5Quiet quiet;
+  PetscCheck(H5Fis_hdf5(S.output.c_str()) > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "-output %s exists and is not an HDF5 file; add -sweep_restart to overwrite it or choose another -output", S.output.c_str());
+  hid_t file = H5Fopen(S.output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s exists but cannot be opened as HDF5; add -sweep_restart to overwrite it or choose another -output", S.output.c_str());
+  SweepAttributes a;
+  H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, NULL, CollectAttribute, &a);
+  if (a.str["task"] != "sweep") {
+    H5Fclose(file);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s holds no sweep (it was written by -task %s); add -sweep_restart to overwrite it or choose another -output", S.output.c_str(),
+            a.str["task"].empty() ? "impact or modes" : a.str["task"].c_str());
+  }
+  SweepAttributes stored;
+  for (auto &kv : a.num)
+    if (!AttributeIsVolatile(kv.first)) stored.num[kv.first] = kv.second;
+  for (auto &kv : a.str)
+    if (!AttributeIsVolatile(kv.first)) stored.str[kv.first] = kv.second;
+  if (SignatureHash(stored) != S.signature_hash) {
+    H5Fclose(file);
+    PetscCall(WrongParameters(S, "the file", SignatureDiff(stored, S.signature)));
+  }
+  hid_t g = H5Gopen2(file, "results", H5P_DEFAULT);
+  PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s has no /results group; add -sweep_restart to overwrite it", S.output.c_str());
+  const auto                      &cols = S.columns;
+  std::vector<std::vector<double>> data(cols.size());
+  for (size_t c = 0; c < cols.size(); ++c) {
+    const bool ok = ReadDataset(g, cols[c].name.c_str(), &data[c]);
+    PetscCheck(ok && data[c].size() == data[0].size(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/%s is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str(),
+               cols[c].name.c_str());
+  }
+  H5Gclose(g);
+  H5Fclose(file);
+  for (size_t r = 0; r < data[0].size(); ++r) {
+    const double idx = data[0][r];
+    if (!(idx >= 0 && idx < S.ncases && idx == std::floor(idx))) continue;
+    std::vector<double> row(cols.size());
+    for (size_t c = 0; c < cols.size(); ++c) row[c] = data[c][r];
+    S.rows.emplace((PetscInt)idx, std::move(row));
+  }
+  PetscFunctionReturn(0);
+}
+
+static void RemoveJournals(const SweepStore &S, bool also_lock)
+{
+  DIR *d = ::opendir(S.parts.c_str());
+  if (!d) return;
+  std::vector<std::string> names;
+  while (dirent *e = ::readdir(d)) {
+    int run, rank;
+    if (ParseJournalName(e->d_name, &run, &rank)) names.push_back(e->d_name);
+  }
+  ::closedir(d);
+  for (auto &n : names) ::unlink((S.parts + "/" + n).c_str());
+  if (also_lock) {
+    ::unlink((S.parts + "/lock").c_str());
+    ::rmdir(S.parts.c_str());
+  }
+}
+
+PetscErrorCode SweepStoreOpen(SweepStore &S, int *run)
+{
+  PetscFunctionBeginUser;
+  if (::mkdir(S.parts.c_str(), 0755) != 0) PetscCheck(errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the journal directory %s (%s)", S.output.c_str(), S.parts.c_str(), std::strerror(errno));
+  S.lock_fd = ::open((S.parts + "/lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  PetscCheck(S.lock_fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s/lock (%s)", S.output.c_str(), S.parts.c_str(), std::strerror(errno));
+  PetscCheck(::flock(S.lock_fd, LOCK_EX | LOCK_NB) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s/lock is held); wait for it or choose another -output",
+             S.output.c_str(), S.parts.c_str());
+  if (S.plan.restart) {
+    RemoveJournals(S, false);
+    ::unlink(S.output.c_str());
+  } else PetscCall(StoreLoadFile(S));
+  // Journals of earlier runs (killed before they finished).
+  *run = 0;
+  DIR *d = ::opendir(S.parts.c_str());
+  PetscCheck(d, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot read %s", S.output.c_str(), S.parts.c_str());
+  std::vector<std::string> names;
+  while (dirent *e = ::readdir(d)) {
+    int r, rank;
+    if (ParseJournalName(e->d_name, &r, &rank)) {
+      names.push_back(e->d_name);
+      *run = std::max(*run, r);
+    }
+  }
+  ::closedir(d);
+  std::sort(names.begin(), names.end());
+  for (auto &n : names) {
+    SweepJournalReader j;
+    j.path = S.parts + "/" + n;
+    if (j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, nullptr) == SweepJournalReader::WrongParameters)
+      PetscCall(WrongParameters(S, "the journal " + j.path, "\n  (its parameter signature differs from the current one)"));
+  }
+  // One file holding everything found; only then are the old journals redundant.
+  PetscCall(StoreWrite(S));
+  RemoveJournals(S, false);
+  *run += 1;
+  PetscFunctionReturn(0);
+}
+
+void SweepStoreFollow(SweepStore &S, int run, const std::vector<PetscMPIInt> &leaders)
+{
+  for (PetscMPIInt r : leaders) {
+    SweepJournalReader j;
+    j.path = SweepJournalName(S.output, run, r);
+    S.live.push_back(j);
+  }
+}
+
+PetscErrorCode SweepStoreRefresh(SweepStore &S)
+{
+  const double now = MPI_Wtime();
+
+  PetscFunctionBeginUser;
+  // Live rewrites cost rank 0 at most ~5% of its time.
+  const double interval = std::max(S.plan.write_interval, 20 * S.write_cost);
+  if (now - S.last_write >= interval) {
+    PetscInt added = 0;
+    for (auto &j : S.live) j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &added);
+    if ((PetscInt)S.rows.size() != S.rows_written) PetscCall(StoreWrite(S));
+    S.last_write = MPI_Wtime();
+    S.write_cost = S.last_write - now; // reading the journals included
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SweepStoreClose(SweepStore &S)
+{
+  PetscFunctionBeginUser;
+  PetscCheck((PetscInt)S.rows.size() == S.ncases, PETSC_COMM_SELF, PETSC_ERR_PLIB, "sweep ended with %zu of %" PetscInt_FMT " rows", S.rows.size(), S.ncases);
+  PetscCall(StoreWrite(S));
+  RemoveJournals(S, true);
+  ::close(S.lock_fd);
+  S.lock_fd = -1;
+  PetscFunctionReturn(0);
+}
+
+
+} // namespace beamimpact

@@ -1,0 +1,119 @@
+// The store of a sweep's rows for -output F: per-leader journals, the atomic rewrite of F,
+// the parameter signature a resume must match, and the resume from F and the journals.
+//
+// On disk, for -output F:
+//   F          the results: root attributes (parameters, options, progress) and
+//              /results/<column> with one row per finished case, ordered by
+//              case index, and /sweep/<axis> with every case's axis values;
+//              rewritten only as F.tmp + fsync + rename(), so F is always a
+//              complete HDF5 file (readable by h5py/h5dump at any time).
+//   F.parts/   while a sweep runs: lock (flock by rank 0: one sweep per file),
+//              run<R>-rank<r>.bin, the journal of the group leader on world rank
+//              r in run (attempt) R: a header with the parameter signature, then
+//              one self-checking record per finished case, appended with a
+//              single write(). A record cut by kill -9 fails its checksum and is
+//              ignored (that case is simply computed again).
+// A rerun of the same command reads F and the journals, checks that they were
+// written with the same parameters, rewrites F with every row found, and
+// computes only the missing cases. At the end rank 0 gathers this run's rows
+// over MPI, writes the complete F and removes F.parts.
+#pragma once
+
+#include "io/run_record.hpp"
+#include "studies/sweep_plan.hpp"
+
+#include <petscsys.h>
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+// One column of a sweep row.
+struct SweepColumn {
+  std::string name;
+  std::string unit;
+  bool        timing; // differs from run to run (wall_time): excluded from identity checks
+};
+
+// The journal of the group leader on world rank `rank` in run (attempt) `run` of -output.
+std::string SweepJournalName(const std::string &output, int run, int rank);
+
+// Appends rows to one journal file (opened on the first row). A journal that cannot be
+// written is not fatal (one warning): the row is also kept in memory and gathered at the
+// end; only a resume after a crash would lose it.
+struct SweepJournalWriter {
+  std::string path;
+  uint64_t    signature = 0;
+  uint32_t    ncols     = 0;
+  int         fd        = -1;
+  bool        failed    = false; // warned once; the rows still reach the file at the end
+
+  PetscErrorCode Append(const std::vector<double> &row);
+  void           Close();
+  void           Warn(const char *what);
+};
+
+// Reads the complete, valid records of one journal file, from where it stopped
+// last time (a record still being written is read next time).
+struct SweepJournalReader {
+  std::string path;
+  off_t       offset    = 0;
+  bool        header_ok = false;
+  bool        stopped   = false; // a bad record: ignore the rest of the file
+  uint64_t    signature = 0;
+
+  enum Status { Ok, Missing, WrongParameters };
+  Status ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, PetscInt *added);
+};
+
+// Root attributes by name (what the parameter signature is made of).
+struct SweepAttributes {
+  std::map<std::string, double>      num;
+  std::map<std::string, std::string> str;
+};
+
+// Rank 0's view of the output: the record, the rows known so far, the journals of the
+// current run and the live rewrites.
+struct SweepStore {
+  std::string                             output, parts; // F and F.parts
+  SweepPlan                               plan;          // its axes fill /sweep; -sweep_restart
+  std::vector<SweepColumn>                columns;
+  RunRecord                               record; // without the progress attributes
+  SweepAttributes                         signature;
+  uint64_t                                signature_hash = 0;
+  uint32_t                                ncols          = 0;
+  PetscInt                                ncases         = 0;
+  std::map<PetscInt, std::vector<double>> rows;
+  std::vector<SweepJournalReader>         live; // this run's journals
+  int                                     lock_fd = -1;
+  PetscInt                                rows_written = -1;
+  double                                  last_write = 0, write_cost = 0; // s (MPI_Wtime), s
+};
+
+// The options that decide a sweep's numbers, "-name value ..." (recorded as
+// sweep_checked_options, part of the signature): all but -output, the progress and
+// restart options, and logging, monitoring and viewing options.
+std::string SweepCheckedOptions(const std::string &all);
+
+// Rank 0: the store of `output` for the plan, its row columns and its record (whose
+// attributes, all but the volatile ones, make the parameter signature).
+void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std::vector<SweepColumn> &columns, const RunRecord &record, SweepStore *S);
+// Rank 0: locks the output, loads what is done (file and journals; an error when they
+// were written with other parameters), rewrites the file with all of it, drops the old
+// journals. Returns this run's number (for the journal names).
+PetscErrorCode SweepStoreOpen(SweepStore &S, int *run);
+// Rank 0: follows the journals of this run's group leaders (world ranks).
+void SweepStoreFollow(SweepStore &S, int run, const std::vector<PetscMPIInt> &leaders);
+// Rank 0 while cases remain: rewrites the file with the rows journaled so far once
+// -sweep_write_interval has passed (and at most ~5% of its time).
+PetscErrorCode SweepStoreRefresh(SweepStore &S);
+// Rank 0 at the end: the complete file (every case must have its row); removes the
+// journals and the lock.
+PetscErrorCode SweepStoreClose(SweepStore &S);
+
+} // namespace beamimpact
