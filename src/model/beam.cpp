@@ -226,6 +226,8 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   PetscCheck(p.length > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_length %g is not allowed: the length must be > 0 (m)", (double)p.length);
   PetscCheck(p.EI > 0 && std::isfinite(p.EI), comm, PETSC_ERR_ARG_OUTOFRANGE, "bending stiffness EI = %g is not allowed: it must be > 0 (N m^2)", (double)p.EI);
   PetscCheck(p.mu > 0 && std::isfinite(p.mu), comm, PETSC_ERR_ARG_OUTOFRANGE, "mass per length mu = %g is not allowed: it must be > 0 (kg/m)", (double)p.mu);
+  PetscCheck(p.damping_mass >= 0 && std::isfinite(p.damping_mass), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_damping_mass %g is not allowed: alpha must be >= 0 (1/s)", (double)p.damping_mass);
+  PetscCheck(p.damping_stiffness >= 0 && std::isfinite(p.damping_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_damping_stiffness %g is not allowed: beta must be >= 0 (s)", (double)p.damping_stiffness);
   PetscCheck(p.nodes >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_nodes %" PetscInt_FMT " is not allowed: at least 5 nodes are needed", p.nodes);
   if (p.has_clamp) {
     PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -263,6 +265,8 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
   PetscCall(PetscOptionsInt("-beam_nodes", "Number of grid nodes N (>= 5)", "", p->nodes, &p->nodes, NULL));
   PetscCall(PetscOptionsEnum("-beam_left", "Support at x = 0", "", SupportNames, left, &left, NULL));
   PetscCall(PetscOptionsEnum("-beam_right", "Support at x = L", "", SupportNames, right, &right, NULL));
+  PetscCall(PetscOptionsReal("-beam_damping_mass", "Rayleigh damping alpha (1/s): C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "", p->damping_mass, &p->damping_mass, NULL));
+  PetscCall(PetscOptionsReal("-beam_damping_stiffness", "Rayleigh damping beta (s)", "", p->damping_stiffness, &p->damping_stiffness, NULL));
   PetscCall(PetscOptionsRealArray("-beam_clamp", "Clamped region x0,x1 (m) held fixed (a handle in a vice)", "", clamp, &nclamp, &setclamp));
   PetscOptionsEnd();
 

@@ -50,6 +50,8 @@ struct BeamParams {
   bool      has_clamp = false;      // a clamped region [clamp_x0, clamp_x1] is held fixed
   PetscReal clamp_x0 = 0, clamp_x1 = 0; // m
   std::string theory = "euler";     // beam theory (model/beam_theory.hpp registry)
+  PetscReal damping_mass      = 0;  // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
+  PetscReal damping_stiffness = 0;  // s,   beta
   BeamMaterialInput input;
 };
 

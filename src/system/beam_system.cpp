@@ -26,6 +26,8 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S.held           = std::move(d.held);
   S.strain         = std::move(d.strain);
   S.frequency_unit = d.frequency_unit;
+  S.damping_mass      = p.damping_mass;
+  S.damping_stiffness = p.damping_stiffness;
   std::stable_sort(S.strain.begin(), S.strain.end(), [](const StrainTerm &a, const StrainTerm &b) { return a.owner < b.owner; });
   S.strain_begin.assign(S.ndof + 1, 0);
   for (const StrainTerm &t : S.strain) S.strain_begin[t.owner + 1]++;

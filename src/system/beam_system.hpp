@@ -33,10 +33,13 @@ struct BeamSystem {
   PetscInt                reach = 0;       // max |dof - owner| over the strain terms
   std::vector<PetscReal>  band;            // N/m: K(i, i+o-bw) = band[(2 bw + 1) i + o]
   PetscReal               frequency_unit = 0; // rad/s, sqrt(EI/mu)/L^2
+  PetscReal               damping_mass = 0;      // 1/s, alpha: C = alpha M + beta K (Rayleigh)
+  PetscReal               damping_stiffness = 0; // s,   beta
 
   PetscInt  Dof(PetscInt node, PetscInt field = 0) const { return node * fields + field; }
   PetscReal NodeX(PetscInt node) const { return node * h; }
   // Ghost width (nodes) a distributed state needs for K y and the strain energy.
+  bool      Damped() const { return damping_mass > 0 || damping_stiffness > 0; }
   PetscInt  GhostNodes() const { return (std::max(bw, 2 * reach) + fields - 1) / fields; }
 };
 
