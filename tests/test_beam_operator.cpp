@@ -2,6 +2,7 @@
 // symmetry and null space of K, the 5-point stencil EI/h^3 (1,-4,6,-4,1) and the
 // ghost-node rows at the ends, fourth differences of polynomials, energies,
 // masses, the impact stencil and the -beam_* options reader.
+#include "io/beam_options.hpp"
 #include "model/beam.hpp"
 
 #include "test_helpers.hpp"

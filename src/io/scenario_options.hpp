@@ -2,6 +2,7 @@
 // monitors, read once, in that order (the order of -help and of the checks).
 #pragma once
 
+#include "io/beam_options.hpp"
 #include "run/scenario.hpp"
 
 #include <petscsys.h>

@@ -15,9 +15,12 @@
 // EI/h^3 (1, -4, 6, -4, 1) in the interior, and its null space for a
 // free-free beam is exactly {1, x} (rigid translation and rotation).
 //
-// Everything here is plain numbers and arrays: no PETSc objects, so it can be
-// tested against formulas. The options reader is the only PETSc-facing part.
+// Everything here is plain numbers and arrays: no PETSc objects, so it can be tested against
+// formulas. The -beam_* options are read by io/beam_options.hpp. EI and mu may vary along the
+// beam (model/section.hpp): EI_k at node k weights its curvature term, mu(x_i) h its mass.
 #pragma once
+
+#include "model/section.hpp"
 
 #include <petscsys.h>
 
@@ -28,6 +31,7 @@ namespace beamimpact {
 
 enum class Support { Free = 0, Clamped = 1, Pinned = 2 };
 const char *SupportName(Support s);
+extern const char *const SupportNames[]; // PETSc enum list: names, type, prefix, nullptr
 
 // What the user gave, kept for the record (HDF5 attributes); 0 when not given.
 struct BeamMaterialInput {
@@ -37,13 +41,16 @@ struct BeamMaterialInput {
   PetscReal thickness          = 0; // m (a, in the direction of motion)
   PetscReal mass               = 0; // kg (M)
   PetscReal youngs_over_density = 0; // N m / kg (E / rho)
-  std::string parameter_set;        // "E,rho,a,b" | "M,L,a,E/rho" | "EI,mu"
+  std::string parameter_set;        // "E,rho,a,b" | "M,L,a,E/rho" | "EI,mu" | "profile" | "table"
 };
 
 struct BeamParams {
   PetscReal length = 1.1;  // m
-  PetscReal EI     = 0;    // N m^2, bending stiffness
-  PetscReal mu     = 0;    // kg/m, mass per length
+  PetscReal EI     = 0;    // N m^2, bending stiffness (uniform; with a profile or table, its mean)
+  PetscReal mu     = 0;    // kg/m, mass per length (uniform; with a profile or table, mass / L)
+  PetscReal kGA    = 0;    // N, shear stiffness kappa G A of a uniform section (0: unknown)
+  PetscReal rhoI   = 0;    // kg m, rotary inertia per length rho I of a uniform section (0: unknown)
+  BeamSection section;     // where the section varies (profile or table); source Uniform: the scalars above
   PetscInt  nodes  = 41;   // number of grid nodes N (>= 5)
   Support   left   = Support::Free; // support at x = 0
   Support   right  = Support::Free; // support at x = L
@@ -55,6 +62,14 @@ struct BeamParams {
   BeamMaterialInput input;
 };
 
+// The section at x (m): the uniform scalars or the profile/table rows.
+SectionProperties BeamSectionAt(const BeamParams &p, PetscReal x);
+
+// How each node is held: not, clamped (held with zero slope: clamped end, inside a clamped
+// region) or pinned (y = 0 only).
+enum class NodeHold : signed char { None = 0, Clamp = 1, Pin = 2 };
+std::vector<NodeHold> BeamNodeHolds(const BeamParams &p);
+
 // Curvature kind at a node (see the file header).
 enum class Curvature : signed char { None = 0, Standard = 1, MirrorRight = 2, MirrorLeft = 3 };
 
@@ -64,9 +79,10 @@ struct BeamOperator {
   PetscInt  N  = 0;   // nodes
   PetscReal h  = 0;   // m, node spacing
   PetscReal L  = 0;   // m
-  PetscReal EI = 0;   // N m^2
+  PetscReal EI = 0;   // N m^2 (uniform or mean: scales only)
   PetscReal mu = 0;   // kg/m
-  std::vector<PetscReal> mass;      // kg, lumped node mass
+  std::vector<PetscReal> EI_node;   // N m^2, bending stiffness at node k (weights the curvature term k)
+  std::vector<PetscReal> mass;      // kg, lumped node mass mu(x_i) h (half at the ends)
   std::vector<char>      held;      // 1 where y is held at 0
   std::vector<Curvature> curvature; // kind of curvature term at node k
 };
@@ -114,12 +130,5 @@ PetscReal BeamMaxFrequencyBound(const BeamOperator &op, const ImpactStencil &s, 
 // supports (analytic beta L); with a clamped region the free span beyond its
 // inner edge is treated as clamped there. Used only to size default windows.
 PetscReal BeamFundamentalFrequencyEstimate(const BeamParams &p);
-
-// Reads -beam_* options (one PetscOptionsBegin block), converts the parameter
-// set to (EI, mu) and checks every range. comm: the communicator of the task.
-PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p);
-
-// Range and consistency checks, with messages naming the option and the value.
-PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p);
 
 } // namespace beamimpact

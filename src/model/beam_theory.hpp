@@ -8,8 +8,9 @@
 // Writing U as squares keeps energies free of cancellation and makes K symmetric positive
 // semi-definite by construction, with the rigid motions in its null space whenever every
 // term annihilates them. A theory is a function registered by name (BeamTheoryFind):
-// Euler-Bernoulli is model/euler_bernoulli.cpp; a Timoshenko beam (two fields per node,
-// bending and shear terms) is one more file and one more line in the registry.
+// Euler-Bernoulli is model/euler_bernoulli.cpp, Timoshenko (two fields per node, bending and
+// shear terms) model/timoshenko.cpp: a new theory is one more file and one more line in the
+// registry (kTheories in model/beam_theory.cpp).
 #pragma once
 
 #include "model/beam.hpp"
@@ -47,5 +48,7 @@ std::vector<const char *> BeamTheoryNames();
 
 // Euler-Bernoulli (model/euler_bernoulli.cpp): one field, the curvature terms of beam.hpp.
 void EulerBernoulliBuild(const BeamParams &p, BeamDiscretization *d);
+// Timoshenko (model/timoshenko.cpp): deflection and rotation per node, bending and shear terms.
+void TimoshenkoBuild(const BeamParams &p, BeamDiscretization *d);
 
 } // namespace beamimpact

@@ -26,49 +26,24 @@ void EulerBernoulliBuild(const BeamParams &p, BeamDiscretization *d)
       t.n      = 3;
       t.dof[0] = k - 1, t.dof[1] = k, t.dof[2] = k + 1;
       t.b[0] = ih2, t.b[1] = -2.0 * ih2, t.b[2] = ih2;
-      t.weight = op.EI * op.h;
+      t.weight = op.EI_node[k] * op.h;
       break;
     case Curvature::MirrorRight:
       t.n      = 1;
       t.dof[0] = k + 1;
       t.b[0]   = 2.0 * ih2;
-      t.weight = 0.5 * op.EI * op.h;
+      t.weight = 0.5 * op.EI_node[k] * op.h;
       break;
     case Curvature::MirrorLeft:
       t.n      = 1;
       t.dof[0] = k - 1;
       t.b[0]   = 2.0 * ih2;
-      t.weight = 0.5 * op.EI * op.h;
+      t.weight = 0.5 * op.EI_node[k] * op.h;
       break;
     default: continue;
     }
     d->strain.push_back(t);
   }
-}
-
-namespace {
-struct TheoryEntry {
-  const char     *name;
-  BeamTheoryBuild build;
-};
-// The registry: one line per theory.
-const TheoryEntry kTheories[] = {
-  {"euler", EulerBernoulliBuild},
-};
-} // namespace
-
-BeamTheoryBuild BeamTheoryFind(const char *name)
-{
-  for (const TheoryEntry &e : kTheories)
-    if (!std::strcmp(e.name, name)) return e.build;
-  return nullptr;
-}
-
-std::vector<const char *> BeamTheoryNames()
-{
-  std::vector<const char *> names;
-  for (const TheoryEntry &e : kTheories) names.push_back(e.name);
-  return names;
 }
 
 } // namespace beamimpact

@@ -1,0 +1,85 @@
+// Section properties along the beam. See section.hpp.
+#include "model/section.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace beamimpact {
+
+const char *SectionSourceName(SectionSource s)
+{
+  switch (s) {
+  case SectionSource::Profile: return "profile";
+  case SectionSource::Table: return "table";
+  default: return "uniform";
+  }
+}
+
+PetscReal RoundArea(PetscReal D, PetscReal d) { return M_PI * (D * D - d * d) / 4.0; }
+PetscReal RoundSecondMoment(PetscReal D, PetscReal d) { return M_PI * (D * D * D * D - d * d * d * d) / 64.0; }
+
+PetscReal CowperRound(PetscReal nu, PetscReal m)
+{
+  const PetscReal q = (1 + m * m) * (1 + m * m);
+  return 6 * (1 + nu) * q / ((7 + 6 * nu) * q + (20 + 12 * nu) * m * m);
+}
+
+PetscReal CowperRectangle(PetscReal nu) { return 10 * (1 + nu) / (12 + 11 * nu); }
+
+// Index j of the row interval [x_j, x_{j+1}] holding x, and the fraction t in it.
+template <class Row>
+static void Locate(const std::vector<Row> &rows, PetscReal x, size_t *j, PetscReal *t)
+{
+  const size_t n = rows.size();
+  if (n == 1 || x <= rows.front().x) {
+    *j = 0, *t = 0;
+    return;
+  }
+  if (x >= rows.back().x) {
+    *j = n - 2, *t = 1;
+    return;
+  }
+  const auto it = std::upper_bound(rows.begin(), rows.end(), x, [](PetscReal v, const Row &r) { return v < r.x; });
+  *j            = (size_t)(it - rows.begin()) - 1;
+  *t            = (x - rows[*j].x) / (rows[*j + 1].x - rows[*j].x);
+}
+
+static SectionProperties RoundProperties(const SectionMaterial &m, PetscReal D, PetscReal d)
+{
+  SectionProperties p;
+  const PetscReal   A = RoundArea(D, d), I = RoundSecondMoment(D, d);
+  p.EI                = m.E * I;
+  p.mu                = m.rho * A;
+  p.rhoI              = m.rho * I;
+  const PetscReal k   = m.kappa > 0 ? m.kappa : CowperRound(m.nu, d / D);
+  p.kGA               = k * m.G * A;
+  return p;
+}
+
+SectionProperties SectionAt(const BeamSection &s, PetscReal x)
+{
+  size_t    j;
+  PetscReal t;
+  if (s.source == SectionSource::Profile) {
+    Locate(s.profile, x, &j, &t);
+    const ProfileRow &a = s.profile[j], &b = s.profile[std::min(j + 1, s.profile.size() - 1)];
+    return RoundProperties(s.material, (1 - t) * a.D + t * b.D, (1 - t) * a.d + t * b.d);
+  }
+  Locate(s.table, x, &j, &t);
+  const SectionProperties &a = s.table[j].s, &b = s.table[std::min(j + 1, s.table.size() - 1)].s;
+  SectionProperties        p;
+  p.EI   = (1 - t) * a.EI + t * b.EI;
+  p.mu   = (1 - t) * a.mu + t * b.mu;
+  p.kGA  = (1 - t) * a.kGA + t * b.kGA;
+  p.rhoI = (1 - t) * a.rhoI + t * b.rhoI;
+  return p;
+}
+
+PetscReal SectionLength(const BeamSection &s)
+{
+  if (s.source == SectionSource::Profile) return s.profile.back().x - s.profile.front().x;
+  if (s.source == SectionSource::Table) return s.table.back().x - s.table.front().x;
+  return 0;
+}
+
+} // namespace beamimpact

@@ -1,0 +1,72 @@
+// Sections of a beam along its length: what a bat, a racket frame or the paper's strip is
+// made of at each point, as plain numbers (docs/bats.md).
+//
+//   round solid    A = pi D^2/4,         I = pi D^4/64
+//   round hollow   A = pi (D^2 - d^2)/4, I = pi (D^4 - d^4)/64   (outer D, inner d)
+//   EI = E I,  mu = rho A,  kappa G A,  rho I  (the last two for a Timoshenko beam)
+//
+// A section comes from one of three sources: the uniform options (scalars in BeamParams),
+// a profile of round sections (rows x D [d], diameters linear between rows, E, rho, G from
+// the material), or a table of properties (rows x EI mu [kappaGA rhoI], each linear between
+// rows) for frames that are not round. The files are read by io/section_file.hpp; here the
+// rows are only evaluated.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+enum class SectionSource { Uniform = 0, Profile = 1, Table = 2 };
+const char *SectionSourceName(SectionSource s);
+
+// Properties of the section at one point.
+struct SectionProperties {
+  PetscReal EI   = 0; // N m^2, bending stiffness
+  PetscReal mu   = 0; // kg/m, mass per length
+  PetscReal kGA  = 0; // N, shear stiffness kappa G A (0: unknown)
+  PetscReal rhoI = 0; // kg m, rotary inertia per length rho I (0: unknown)
+};
+
+struct ProfileRow {
+  PetscReal x = 0, D = 0, d = 0; // m: position, outer and inner diameter (d = 0: solid)
+};
+struct PropertiesRow {
+  PetscReal        x = 0;
+  SectionProperties s;
+};
+
+// Material of a round profile. kappa = 0 picks Cowper's coefficient for each section.
+struct SectionMaterial {
+  PetscReal E = 0, rho = 0; // Pa, kg/m^3
+  PetscReal G     = 0;      // Pa, shear modulus (0: not given; Timoshenko needs it)
+  PetscReal nu    = 0.3;    // Poisson's ratio (Cowper's formula)
+  PetscReal kappa = 0;      // shear coefficient; 0: by section (Cowper)
+};
+
+// A section varying along the beam: rows sorted by strictly increasing x, the first at x = 0.
+struct BeamSection {
+  SectionSource              source = SectionSource::Uniform;
+  std::string                file;              // where the rows came from (for the record)
+  std::vector<ProfileRow>    profile;           // source Profile
+  std::vector<PropertiesRow> table;             // source Table
+  bool                       table_has_shear = false; // the table gives kappaGA and rhoI
+  SectionMaterial            material;          // source Profile
+};
+
+// Round sections (m^2, m^4).
+PetscReal RoundArea(PetscReal D, PetscReal d);
+PetscReal RoundSecondMoment(PetscReal D, PetscReal d);
+// Cowper's shear coefficient of a round tube with inner/outer ratio m = d/D (m = 0: solid,
+// 6(1+nu)/(7+6nu)) and of a solid rectangle, 10(1+nu)/(12+11nu).
+PetscReal CowperRound(PetscReal nu, PetscReal m);
+PetscReal CowperRectangle(PetscReal nu);
+
+// Properties at x (m) of a Profile or Table section (x clamped to the rows' span).
+SectionProperties SectionAt(const BeamSection &s, PetscReal x);
+// The span (m) of the rows: last x minus first x.
+PetscReal SectionLength(const BeamSection &s);
+
+} // namespace beamimpact
