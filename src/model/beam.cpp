@@ -22,6 +22,15 @@ SectionProperties BeamSectionAt(const BeamParams &p, PetscReal x)
   return s;
 }
 
+SectionProperties BeamSectionMean(const BeamParams &p, PetscReal a, PetscReal b)
+{
+  if (p.section.source == SectionSource::Uniform) return BeamSectionAt(p, a);
+  SectionProperties s = SectionIntegral(p.section, a, b);
+  const PetscReal   w = 1.0 / (b - a);
+  s.EI *= w, s.mu *= w, s.kGA *= w, s.rhoI *= w;
+  return s;
+}
+
 std::vector<NodeHold> BeamNodeHolds(const BeamParams &p)
 {
   const PetscInt        N = p.nodes;
@@ -52,12 +61,13 @@ BeamOperator BeamOperatorBuild(const BeamParams &p)
   const PetscInt N = op.N;
   op.mass.resize(N);
   op.EI_node.resize(N);
-  for (PetscInt i = 0; i < N; ++i) {
-    const SectionProperties s = BeamSectionAt(p, i * op.h);
+  for (PetscInt i = 0; i < N; ++i) { // cell [x_i - h/2, x_i + h/2] within the beam
+    const PetscReal         a = std::max<PetscReal>(0, (i - 0.5) * op.h), b = std::min(op.L, (i + 0.5) * op.h);
+    const SectionProperties s = BeamSectionMean(p, a, b);
     op.mass[i]                = s.mu * op.h;
     op.EI_node[i]             = s.EI;
   }
-  op.mass[0] *= 0.5;
+  op.mass[0] *= 0.5; // = mean mu over the half cell x (h/2)
   op.mass[N - 1] *= 0.5;
 
   const std::vector<NodeHold> hold = BeamNodeHolds(p);

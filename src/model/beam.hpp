@@ -64,6 +64,8 @@ struct BeamParams {
 
 // The section at x (m): the uniform scalars or the profile/table rows.
 SectionProperties BeamSectionAt(const BeamParams &p, PetscReal x);
+// The mean section over [a, b] (m): the uniform scalars, or the cell integrals / (b - a).
+SectionProperties BeamSectionMean(const BeamParams &p, PetscReal a, PetscReal b);
 
 // How each node is held: not, clamped (held with zero slope: clamped end, inside a clamped
 // region) or pinned (y = 0 only).
@@ -81,8 +83,8 @@ struct BeamOperator {
   PetscReal L  = 0;   // m
   PetscReal EI = 0;   // N m^2 (uniform or mean: scales only)
   PetscReal mu = 0;   // kg/m
-  std::vector<PetscReal> EI_node;   // N m^2, bending stiffness at node k (weights the curvature term k)
-  std::vector<PetscReal> mass;      // kg, lumped node mass mu(x_i) h (half at the ends)
+  std::vector<PetscReal> EI_node;   // N m^2, mean EI over node k's cell [x_k - h/2, x_k + h/2] (weights curvature term k)
+  std::vector<PetscReal> mass;      // kg, lumped node mass: the integral of mu over node i's cell (mu h, half at the ends)
   std::vector<char>      held;      // 1 where y is held at 0
   std::vector<Curvature> curvature; // kind of curvature term at node k
 };

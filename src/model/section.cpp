@@ -75,6 +75,30 @@ SectionProperties SectionAt(const BeamSection &s, PetscReal x)
   return p;
 }
 
+SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b)
+{
+  std::vector<PetscReal> cuts{a};
+  auto                   add_knot = [&](PetscReal x) {
+    if (x > a && x < b) cuts.push_back(x);
+  };
+  if (s.source == SectionSource::Profile)
+    for (const ProfileRow &r : s.profile) add_knot(r.x);
+  else
+    for (const PropertiesRow &r : s.table) add_knot(r.x);
+  cuts.push_back(b);
+  static const PetscReal gx[3] = {-0.7745966692414834, 0.0, 0.7745966692414834}, gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  SectionProperties      sum;
+  for (size_t j = 0; j + 1 < cuts.size(); ++j) {
+    const PetscReal c = 0.5 * (cuts[j] + cuts[j + 1]), r = 0.5 * (cuts[j + 1] - cuts[j]);
+    for (int g = 0; g < 3; ++g) {
+      const SectionProperties q = SectionAt(s, c + r * gx[g]);
+      const PetscReal         w = r * gw[g];
+      sum.EI += w * q.EI, sum.mu += w * q.mu, sum.kGA += w * q.kGA, sum.rhoI += w * q.rhoI;
+    }
+  }
+  return sum;
+}
+
 PetscReal SectionLength(const BeamSection &s)
 {
   if (s.source == SectionSource::Profile) return s.profile.back().x - s.profile.front().x;

@@ -66,6 +66,11 @@ PetscReal CowperRectangle(PetscReal nu);
 
 // Properties at x (m) of a Profile or Table section (x clamped to the rows' span).
 SectionProperties SectionAt(const BeamSection &s, PetscReal x);
+// Integrals over [a, b] (m) of each property of a Profile or Table section (EI in N m^3, mu in
+// kg, ...): 3-point Gauss on each piece between rows, exact for the polynomial properties of a
+// profile (degree <= 4) and a table (degree 1). The discrete beams use cell integrals rather
+// than point values, so that steps in the section (a knob, a wall change) keep second order.
+SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b);
 // The span (m) of the rows: last x minus first x.
 PetscReal SectionLength(const BeamSection &s);
 

@@ -9,8 +9,8 @@
 //
 //   U = 1/2 sum_e h [ EI_e ((psi_i+1 - psi_i)/h)^2 + kGA_e ((w_i+1 - w_i)/h - (psi_i + psi_i+1)/2)^2 ]
 //
-// with the section at the element midpoint, and lumped masses rho A h and rho I h shared half
-// to each end node of an element. Free ends need nothing (natural conditions); a clamped node
+// with the element's mean section (exact integrals of the profile), and lumped masses rho A h
+// and rho I h shared half to each end node of an element. Free ends need nothing (natural conditions); a clamped node
 // holds w and psi, a pinned node w only. The frequencies converge at second order in h, and
 // the fastest wave is a shear or bar wave: omega_max ~ 2 sqrt(E/rho)/h, an explicit step limit
 // that grows like h rather than h^2.
@@ -35,7 +35,7 @@ void TimoshenkoBuild(const BeamParams &p, BeamDiscretization *d)
     d->held[2 * i + 1] = hold[i] == NodeHold::Clamp;
   }
   for (PetscInt e = 0; e < N - 1; ++e) {
-    const SectionProperties s = BeamSectionAt(p, (e + 0.5) * h);
+    const SectionProperties s = BeamSectionMean(p, e * h, (e + 1) * h);
     const PetscInt          w0 = 2 * e, p0 = 2 * e + 1, w1 = 2 * e + 2, p1 = 2 * e + 3;
     d->mass[w0] += 0.5 * s.mu * h;
     d->mass[w1] += 0.5 * s.mu * h;
