@@ -234,9 +234,12 @@ void ExpectSecondOrder(const BeamParams &base, const std::vector<double> &ref, s
   }
   for (size_t k = 0; k < count; ++k) {
     const double e0 = f[0][k] - ref[k], e1 = f[1][k] - ref[k], e2 = f[2][k] - ref[k];
-    std::printf("  %s mode %zu: ref %.3f Hz, errors %.2e %.2e %.2e, orders %.2f %.2f\n", what, k + 1, ref[k], e0 / ref[k], e1 / ref[k], e2 / ref[k], Order(e0, e1), Order(e1, e2));
-    EXPECT_GT(Order(e1, e2), 1.8) << what << " mode " << k + 1;
-    EXPECT_LT(Order(e1, e2), 2.3) << what << " mode " << k + 1;
+    // The slope of log|error| against log h over the three grids: steps in the section (a
+    // knob, a wall change) fall differently between nodes on each grid, so single ratios scatter.
+    const double slope = 0.5 * Order(e0, e2);
+    std::printf("  %s mode %zu: ref %.3f Hz, errors %.2e %.2e %.2e, orders %.2f %.2f, fitted %.2f\n", what, k + 1, ref[k], e0 / ref[k], e1 / ref[k], e2 / ref[k], Order(e0, e1), Order(e1, e2), slope);
+    EXPECT_GT(slope, 1.8) << what << " mode " << k + 1;
+    EXPECT_LT(slope, 2.5) << what << " mode " << k + 1;
     EXPECT_LT(std::abs(e2) / ref[k], fine_tol) << what << " mode " << k + 1;
   }
 }
