@@ -251,6 +251,20 @@ TEST(BallPresets, BaseballOnAWall)
   }
 }
 
+// The same characterisation without the table (e = 0.546 at every speed): only the unloading
+// time changes with e, so the contact time follows v^(-(m-1)/(m+1)) exactly. Printed for docs/balls.md.
+TEST(BallPresets, BaseballFixedCorOnAWall)
+{
+  const BallParams b = Characterised(0.145, 1.84, 0.546, 0.78e-3, 26.8);
+  PetscPrintf(PETSC_COMM_WORLD, "baseball with a fixed e = 0.546 (-ball_cor 0.546 instead of the table; k1 = %.4g N/m^1.84):\n", (double)b.k1);
+  for (double v : {1.0, 11.0, 26.8, 45.0, 67.0}) {
+    const WallBounce w = BounceOnWall(b, v);
+    EXPECT_NEAR(w.cor, 0.546, 1e-6);
+    EXPECT_NEAR(w.contact_time / (0.78e-3 * std::pow(v / 26.8, -0.84 / 2.84)), 1.0, 2e-6);
+    PetscPrintf(PETSC_COMM_WORLD, "| %.1f | %.3f ms (RK4 on the wall %.3f ms) |\n", v, 1e3 * (double)ContactWallTime(b, v), 1e3 * w.contact_time);
+  }
+}
+
 TEST(BallPresets, SoftballOnAWall)
 {
   const BallParams b = BallFromFile("options/balls/softball.opts");
