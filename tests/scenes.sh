@@ -13,6 +13,8 @@
 #   * energy (hysteretic ball, Crank-Nicolson): energy balance within 1e-5 of the incident;
 #   * racket-energy: the four energy fractions and the rebound acor^2 sum to 1 within 1e-6;
 #     the handle's peak kinetic energy is positive and inside the 30 ms window;
+#   * baseball (options/balls/baseball.opts on the default beam): energy balance, the first
+#     contact's e from the COR table, k1 from the characterisation;
 #   * waves, snapshots, the 10 mm and hysteretic sweeps, racket snapshots: they run and write
 #     what the plots read (series shapes, snapshot times), with numbers in a sane range.
 # The long versions (every point, fine grids) run from scripts/run_paper.sh, not here.
@@ -159,6 +161,15 @@ if run racket-energy 1 options/scenes/racket-energy.opts; then
   check "racket-energy: fractions + acor^2 - 1 = $sum (within 1e-6)" 's < 1e-6 && s > -1e-6' s="$sum"
   check "racket-energy: handle peak kinetic energy $(col "$f" /results/segment_kinetic_peak) J at $(col "$f" /results/segment_kinetic_peak_time) s, inside 30 ms" \
     'p > 0 && t > 0 && t <= 0.03' p="$(col "$f" /results/segment_kinetic_peak)" t="$(col "$f" /results/segment_kinetic_peak_time)"
+fi
+
+# --- baseball (not a paper scene): the characterised ball with its e(v) table -------------------
+if run baseball 1 options/scenes/baseball.opts; then
+  f="$dir/baseball.h5"
+  check "baseball: energy balance $(col "$f" /results/energy_error) within 1e-5" 'e < 1e-5 && e > -1e-5' e="$(col "$f" /results/energy_error)"
+  check "baseball: first contact at 40 m/s with e(40) = 0.5126 from the table ($(col "$f" /events/approach_speed | head -1), $(col "$f" /events/cor | head -1))" \
+    'v == 40 && e > 0.5125 && e < 0.5127' v="$(col "$f" /events/approach_speed | head -1)" e="$(col "$f" /events/cor | head -1)"
+  check "baseball: k1 $(attr "$f" ball_k1) N/m^1.84 from 0.78 ms at 26.8 m/s (3.078e8)" 'k > 3.07e8 && k < 3.085e8' k="$(attr "$f" ball_k1)"
 fi
 
 # every scene file was run above

@@ -142,17 +142,23 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
       const ImpactResult &r = results[0];
       {
         hid_t               ge = H5Gcreate2(file, "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        std::vector<double> t, kind, c, f;
+        std::vector<double> t, kind, c, f, va, cor, n;
         for (auto &e : r.events) {
           t.push_back(e.time);
           kind.push_back((double)e.kind);
           c.push_back(e.compression);
           f.push_back(e.force);
+          va.push_back(e.approach_speed);
+          cor.push_back(e.cor);
+          n.push_back(e.n);
         }
         PetscCall(H5WriteDataset1D(ge, "time", t, "s"));
         PetscCall(H5WriteDataset1D(ge, "kind", kind, "0 contact, 1 max_compression, 2 reload, 3 separation"));
         PetscCall(H5WriteDataset1D(ge, "compression", c, "m"));
         PetscCall(H5WriteDataset1D(ge, "force", f, "N"));
+        PetscCall(H5WriteDataset1D(ge, "approach_speed", va, "m/s (contact starts; 0 on other events)"));
+        PetscCall(H5WriteDataset1D(ge, "cor", cor, "1, wall COR used for this contact (contact starts; 0 on other events)"));
+        PetscCall(H5WriteDataset1D(ge, "n", n, "1, unloading exponent used for this contact (contact starts; 0 on other events and for the linear law)"));
         H5Gclose(ge);
       }
       const ImpactSeries &S = r.series;

@@ -48,6 +48,12 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
     rec->add("ball_k1", ball.k1);
     rec->add("ball_m", ball.m);
     rec->add("ball_n", ball.n);
+    if (ball.cor > 0) rec->add("ball_cor", ball.cor);
+    if (ball.contact_time > 0) {
+      rec->add("ball_contact_time", ball.contact_time);
+      rec->add("ball_test_speed", ball.test_speed);
+    }
+    if (!ball.cor_table.empty()) rec->add("ball_cor_table", ball.cor_table.file);
   }
   rec->add("ball_loss_factor", ball.loss_factor);
   rec->add("impact_window", sc.impact.window);

@@ -40,7 +40,16 @@ PetscReal ContactEventIndicator(ContactEventKind k, const EventIndicators &g)
 
 bool ContactEventFalling(ContactEventKind k) { return k == ContactEventKind::MaxCompression || k == ContactEventKind::Separation; }
 
-PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
+ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, PetscReal te, PetscReal c, PetscReal v)
+{
+  ContactEvent e{ContactEventKind::ContactStart, te, c, ContactForce(ball, s, c)};
+  e.approach_speed = v;
+  e.cor            = BallCorAt(ball, v);
+  e.n              = ball.law == ContactLawKind::Linear ? 0.0 : ContactUnloadingExponent(ball, s);
+  return e;
+}
+
+PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
                                  ContactTimeline *tl, ImpactResult *res, bool *force_changed)
 {
   PetscFunctionBeginUser;
@@ -71,6 +80,7 @@ PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal
     tl->t_stop = std::min(times.max_time, te + times.window);
     break;
   case ContactEventKind::ContactStart:
+    if (ball.law == ContactLawKind::Hysteresis && !ball.cor_table.empty()) state->n = BallExponentAt(ball, cdot); // this contact's e(v_approach)
     ContactSwitch(ball, state, ContactPhase::Loading, c);
     res->contacts++;
     tl->contact_start = te;
@@ -78,7 +88,8 @@ PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal
     break;
   }
   const PetscReal F = ContactForce(ball, *state, c);
-  res->events.push_back({kind, te, c, F});
+  if (kind == ContactEventKind::ContactStart) res->events.push_back(ContactStartEvent(ball, *state, te, c, cdot));
+  else res->events.push_back({kind, te, c, F});
   if (kind == ContactEventKind::MaxCompression) {
     res->max_compression = std::max(res->max_compression, c);
     res->peak_force      = std::max(res->peak_force, F);

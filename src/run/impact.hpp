@@ -67,6 +67,11 @@ struct ContactEvent {
   PetscReal        time;        // s
   PetscReal        compression; // m
   PetscReal        force;       // N
+  // Contact start only (0 on the other events): the approach speed dc/dt at the impact point
+  // (m/s), and the wall coefficient of restitution e and unloading exponent n the hysteretic
+  // law uses for this contact (from -ball_cor_table at that speed, else the ball's fixed
+  // ones; the linear law: e = 1, n = 0).
+  PetscReal        approach_speed = 0, cor = 0, n = 0;
 };
 
 // The result of one impact (identical on every rank of the communicator), in three parts

@@ -38,6 +38,7 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
   s->g       = BeamSystemCoupling(s->sys, sc.impact.x);
   s->scales  = ContactScalesOf(s->sys, sc.ball);
   s->contact = ContactState();
+  s->contact.n = BallExponentAt(sc.ball, sc.ball.speed); // the first contact approaches at v_i (the beam is at rest)
   PetscFunctionReturn(0);
 }
 
@@ -52,7 +53,7 @@ PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario
   PetscFunctionBeginUser;
   PetscCall(st.Compression(&c, &cd));
   const PetscReal te = st.Time();
-  PetscCall(ContactEventApply(st.Comm(), kind, te, c, sc.ball, times, st.Method().c_str(), contact, tl, res, &changed));
+  PetscCall(ContactEventApply(st.Comm(), kind, te, c, cd, sc.ball, times, st.Method().c_str(), contact, tl, res, &changed));
   if (kind == ContactEventKind::ContactStart && res->contacts > sc.impact.max_contacts) {
     StateMeasures m;
     PetscCall(MeasureState(st, ctx, nullptr, &m, nullptr));
@@ -96,7 +97,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   EventIndicators g0, g1;
   PetscCall(indicators(&g0));
   res->contacts = 1;
-  res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
+  res->events.push_back(ContactStartEvent(sc.ball, *contact, 0.0, 0.0, sc.ball.speed));
   while (t < timeline.t_stop * (1 - 1e-14)) {
     const PetscReal target = std::min(timeline.t_stop, rec.NextSnapshot()); // land exactly on both
     PetscReal       dt;
