@@ -7,6 +7,7 @@
 #pragma once
 
 #include "run/impact.hpp"
+#include "system/beam_system.hpp"
 
 namespace beamimpact {
 
@@ -18,5 +19,9 @@ struct Scenario;
 // rules as ImpactRun, so both see the same contacts. ts_type is "modal".
 // PETSC_ERR_SUP for the hysteretic law.
 PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
+
+// The same on a system already built (any number of fields per node); the scenario gives the
+// ball, the impact rules and the time scales (its beam is not rebuilt).
+PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSystem &sys, ImpactResult *res);
 
 } // namespace beamimpact

@@ -30,43 +30,45 @@ ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, Pe
 }
 
 
-// syev's eigenvectors are accurate only to eps * lambda_max / gap: with the h^-4 spread of
-// the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
-// shifted by its eigenvalue, with a banded LU of A - sigma I (the ball is ordered next to
-// its two nodes, so A is banded with 3 sub- and super-diagonals), then modified
-// Gram-Schmidt, bring each vector to round-off relative to its own eigenvalue.
-static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
-{
-  const int n = (int)S.n, kl = (int)S.sys->bw + 1, ku = kl, ldab = 2 * kl + ku + 1, one = 1;
+namespace {
 
-  PetscFunctionBeginUser;
-  // Band order: beam dofs in node order with the ball right after the later of its nodes.
-  std::vector<PetscInt> dof_of_node(S.sys->ndof, -1);
-  for (PetscInt d = 0; d < n - 1; ++d) dof_of_node[S.dof[d]] = d;
-  PetscInt after = -1;
+// An entry of A = M^{-1/2} K_p M^{-1/2}: (row free dof, column free dof, value).
+struct BandEntry {
+  PetscInt  r, c;
+  PetscReal v;
+};
+
+// Band order of the free dofs: beam dofs in dof order with the ball right after the later of
+// the dofs it touches, so A is banded with kl = ku = bw + 1 sub- and super-diagonals.
+std::vector<int> BandOrder(const ModalSystem &S)
+{
+  const PetscInt n     = S.n;
+  PetscInt       after = -1;
   for (PetscInt d = 0; d < n - 1; ++d)
     if (S.g[d] != 0.0) after = d;
-  std::vector<int> pos(n); // dof -> band position
-  {
-    int p = 0;
-    if (after < 0) pos[n - 1] = p++;
-    for (PetscInt d = 0; d < n - 1; ++d) {
-      pos[d] = p++;
-      if (d == after) pos[n - 1] = p++;
-    }
+  std::vector<int> pos(n); // free dof -> band position
+  int              p = 0;
+  if (after < 0) pos[n - 1] = p++;
+  for (PetscInt d = 0; d < n - 1; ++d) {
+    pos[d] = p++;
+    if (d == after) pos[n - 1] = p++;
   }
-  // Entries of A = M^{-1/2} K_p M^{-1/2} as (row dof, col dof, value).
-  struct Entry {
-    PetscInt r, c;
-    PetscReal v;
-  };
-  std::vector<Entry>     entries;
+  return pos;
+}
+
+// The nonzeros of A, from the rows of K and, in contact, the spring k g g^T.
+std::vector<BandEntry> BandEntries(const ModalSystem &S, bool contact)
+{
+  const PetscInt         n = S.n;
+  std::vector<PetscInt>  free_of_dof(S.sys->ndof, -1);
+  std::vector<BandEntry> entries;
   std::vector<PetscInt>  cols(2 * S.sys->bw + 1);
   std::vector<PetscReal> vals(2 * S.sys->bw + 1);
+  for (PetscInt d = 0; d < n - 1; ++d) free_of_dof[S.dof[d]] = d;
   for (PetscInt d = 0; d < n - 1; ++d) {
     const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
     for (PetscInt q = 0; q < nc; ++q) {
-      const PetscInt c = dof_of_node[cols[q]];
+      const PetscInt c = free_of_dof[cols[q]];
       entries.push_back({d, c, vals[q] / std::sqrt(S.mass[d] * S.mass[c])});
     }
   }
@@ -74,37 +76,47 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
     for (PetscInt r = 0; r < n; ++r)
       for (PetscInt c = 0; c < n; ++c)
         if (S.g[r] != 0.0 && S.g[c] != 0.0) entries.push_back({r, c, S.k * S.g[r] * S.g[c] / std::sqrt(S.mass[r] * S.mass[c])});
-  const PetscReal        scale = *std::max_element(lambda.begin(), lambda.end());
-  std::vector<double>    ab((size_t)ldab * n), x(n);
-  std::vector<int>       ipiv(n);
-  for (PetscInt k = 0; k < n; ++k) {
-    PetscReal sigma = lambda[k] - 1e-14 * scale; // just below: never exactly singular
-    PetscReal *phi  = &B->Phi[k * n];
-    for (int it = 0; it < 2; ++it) {
-      std::fill(ab.begin(), ab.end(), 0.0);
-      for (const Entry &e : entries) {
-        const int i = pos[e.r], j = pos[e.c];
-        ab[(size_t)(kl + ku + i - j) + (size_t)j * ldab] += e.v;
-      }
-      for (int i = 0; i < n; ++i) ab[(size_t)(kl + ku) + (size_t)i * ldab] -= sigma;
-      for (PetscInt d = 0; d < n; ++d) x[pos[d]] = phi[d];
-      int info;
-      dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), x.data(), &n, &info);
-      PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbsv failed (info %d)", info);
-      if (info > 0) break; // exactly singular: the vector is already exact
-      PetscReal nrm = 0;
-      for (int i = 0; i < n; ++i) nrm += x[i] * x[i];
-      nrm = std::sqrt(nrm);
-      PetscReal sgn = 0; // keep the orientation
-      for (PetscInt d = 0; d < n; ++d) sgn += x[pos[d]] * phi[d];
-      for (PetscInt d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[pos[d]] / nrm;
+  return entries;
+}
+
+// Two steps of inverse iteration on phi (unit length, orientation kept) with the banded LU of
+// A - sigma I (LAPACK dgbsv; ab of leading dimension 2 kl + ku + 1).
+PetscErrorCode InverseIterate(const std::vector<BandEntry> &entries, const std::vector<int> &pos, int kl, PetscReal sigma, PetscReal *phi)
+{
+  const int           n = (int)pos.size(), ku = kl, ldab = 2 * kl + ku + 1, one = 1;
+  std::vector<double> ab((size_t)ldab * n), x(n);
+  std::vector<int>    ipiv(n);
+
+  PetscFunctionBeginUser;
+  for (int it = 0; it < 2; ++it) {
+    std::fill(ab.begin(), ab.end(), 0.0);
+    for (const BandEntry &e : entries) {
+      const int i = pos[e.r], j = pos[e.c];
+      ab[(size_t)(kl + ku + i - j) + (size_t)j * ldab] += e.v;
     }
+    for (int i = 0; i < n; ++i) ab[(size_t)(kl + ku) + (size_t)i * ldab] -= sigma;
+    for (int d = 0; d < n; ++d) x[pos[d]] = phi[d];
+    int info;
+    dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), x.data(), &n, &info);
+    PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbsv failed (info %d)", info);
+    if (info > 0) break; // exactly singular: the vector is already exact
+    PetscReal nrm = 0;
+    for (int i = 0; i < n; ++i) nrm += x[i] * x[i];
+    nrm = std::sqrt(nrm);
+    PetscReal sgn = 0; // keep the orientation
+    for (int d = 0; d < n; ++d) sgn += x[pos[d]] * phi[d];
+    for (int d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[pos[d]] / nrm;
   }
-  // Modified Gram-Schmidt (cleans up (near-)degenerate pairs such as the rigid modes).
+  PetscFunctionReturn(0);
+}
+
+// Modified Gram-Schmidt on the columns of Phi (n x n), in order.
+void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
+{
   for (PetscInt k = 0; k < n; ++k) {
-    PetscReal *phi = &B->Phi[k * n];
+    PetscReal *phi = &Phi[k * n];
     for (PetscInt l = 0; l < k; ++l) {
-      const PetscReal *psi = &B->Phi[l * n];
+      const PetscReal *psi = &Phi[l * n];
       PetscReal        dot = 0;
       for (PetscInt d = 0; d < n; ++d) dot += phi[d] * psi[d];
       for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * psi[d];
@@ -114,6 +126,26 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
     nrm = std::sqrt(nrm);
     for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
   }
+}
+
+} // namespace
+
+// syev's eigenvectors are accurate only to eps * lambda_max / gap: with the h^-4 spread of
+// the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
+// shifted by its eigenvalue, with a banded LU of A - sigma I, then modified Gram-Schmidt
+// (which cleans up (near-)degenerate pairs such as the rigid modes), bring each vector to
+// round-off relative to its own eigenvalue.
+static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
+{
+  const PetscInt               n       = S.n;
+  const int                    kl      = (int)S.sys->bw + 1;
+  const std::vector<int>       pos     = BandOrder(S);
+  const std::vector<BandEntry> entries = BandEntries(S, contact);
+  const PetscReal              scale   = *std::max_element(lambda.begin(), lambda.end());
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < n; ++k) PetscCall(InverseIterate(entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
+  GramSchmidt(n, B->Phi);
   PetscFunctionReturn(0);
 }
 
