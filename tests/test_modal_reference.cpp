@@ -82,3 +82,31 @@ TEST(ModalReference, RefusesTheHystereticLaw)
   EXPECT_NE(ModalReferenceRun(Scenario{AluminiumBeam(1.1), Superball(ContactLawKind::Hysteresis), ip, MonitorRequest()}, &r), 0);
   ASSERT_EQ(PetscPopErrorHandler(), 0);
 }
+
+// Two fields a node (field 1 an uncoupled copy of the beam, masses x3, that the ball does not
+// touch): the reference on the two-field system is the one-field reference, single and double
+// contacts alike; the coupling goes through the deflection dofs, not node indices.
+TEST(ModalReference, TwoFieldSystemGivesTheOneFieldResult)
+{
+  struct Case {
+    BeamParams beam;
+    double     x;
+  };
+  for (const Case &c : {Case{AluminiumBeam(1.1, 41), 0.9}, Case{AluminiumBeam(0.3, 41, Support::Clamped, Support::Free), 0.29}}) {
+    ImpactParams ip;
+    ip.x                 = c.x;
+    const Scenario   sc  = {c.beam, Superball(), ip, MonitorRequest()};
+    const BeamSystem one = SystemOf(c.beam);
+    ImpactResult     r1, r2;
+    ASSERT_EQ(ModalReferenceRunSystem(sc, one, &r1), 0);
+    ASSERT_EQ(ModalReferenceRunSystem(sc, TwoFieldCopies(one, 3.0), &r2), 0);
+    EXPECT_EQ(r1.contacts, r2.contacts) << "x = " << c.x;
+    EXPECT_EQ(r1.events.size(), r2.events.size());
+    EXPECT_NEAR(r1.acor, r2.acor, 1e-11);
+    EXPECT_NEAR(r1.contact_time, r2.contact_time, 1e-11 * r1.contact_time);
+    EXPECT_NEAR(r1.contact_time_total, r2.contact_time_total, 1e-11 * r1.contact_time_total);
+    EXPECT_NEAR(r1.peak_force, r2.peak_force, 1e-11 * r1.peak_force);
+    EXPECT_NEAR(r1.beam_kinetic_end + r1.beam_strain_end, r2.beam_kinetic_end + r2.beam_strain_end, 1e-10 * (r1.beam_kinetic_end + r1.beam_strain_end));
+    EXPECT_LT(std::abs(r2.energy_error), 1e-10);
+  }
+}

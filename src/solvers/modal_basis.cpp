@@ -39,7 +39,7 @@ struct BandEntry {
 };
 
 // Band order of the free dofs: beam dofs in dof order with the ball right after the later of
-// the dofs it touches, so A is banded with kl = ku = bw + 1 sub- and super-diagonals.
+// the dofs it touches (its two nodes' deflections, fields apart).
 std::vector<int> BandOrder(const ModalSystem &S)
 {
   const PetscInt n     = S.n;
@@ -110,6 +110,20 @@ PetscErrorCode InverseIterate(const std::vector<BandEntry> &entries, const std::
   PetscFunctionReturn(0);
 }
 
+// Half-bandwidth of A in the band order: a beam entry straddling the ball is one further
+// apart than in K (bw + 1); the ball's own entries reach back over the free dofs between
+// the first and the last dof it touches, plus one.
+int BandHalfWidth(const ModalSystem &S)
+{
+  PetscInt first = -1, last = -1;
+  for (PetscInt d = 0; d < S.n - 1; ++d)
+    if (S.g[d] != 0.0) {
+      if (first < 0) first = d;
+      last = d;
+    }
+  return (int)std::max(S.sys->bw, last - first) + 1;
+}
+
 // Modified Gram-Schmidt on the columns of Phi (n x n), in order.
 void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
 {
@@ -138,7 +152,7 @@ void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
 static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
 {
   const PetscInt               n       = S.n;
-  const int                    kl      = (int)S.sys->bw + 1;
+  const int                    kl      = BandHalfWidth(S);
   const std::vector<int>       pos     = BandOrder(S);
   const std::vector<BandEntry> entries = BandEntries(S, contact);
   const PetscReal              scale   = *std::max_element(lambda.begin(), lambda.end());
@@ -158,11 +172,11 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   std::vector<PetscReal> vals(2 * S.sys->bw + 1);
 
   PetscFunctionBeginUser;
-  std::vector<PetscInt> dof_of_node(S.sys->ndof, -1);
-  for (PetscInt d = 0; d < n - 1; ++d) dof_of_node[S.dof[d]] = d;
+  std::vector<PetscInt> free_of_dof(S.sys->ndof, -1);
+  for (PetscInt d = 0; d < n - 1; ++d) free_of_dof[S.dof[d]] = d;
   for (PetscInt d = 0; d < n - 1; ++d) {
     const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
-    for (PetscInt q = 0; q < nc; ++q) A[d + dof_of_node[cols[q]] * n] += vals[q];
+    for (PetscInt q = 0; q < nc; ++q) A[d + free_of_dof[cols[q]] * n] += vals[q];
   }
   if (contact)
     for (PetscInt r = 0; r < n; ++r)

@@ -18,7 +18,8 @@
 
 namespace beamimpact {
 
-// The free degrees of freedom: beam dofs that are not held, then the ball.
+// The free degrees of freedom: beam dofs that are not held (any number of fields per node;
+// the ball touches the dofs of ContactCoupling), then the ball.
 struct ModalSystem {
   const BeamSystem      *sys = nullptr;
   std::vector<PetscInt>  dof;  // free dof -> beam dof (the last is the ball: -1)

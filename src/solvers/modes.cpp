@@ -1,5 +1,5 @@
 // Mode frequencies of the beam: SLEPc eigen-solve of K phi = omega^2 M phi over
-// the free nodes, and the continuum beta-L reference. See modes.hpp.
+// the free dofs, and the continuum beta-L reference. See modes.hpp.
 #include "solvers/modes.hpp"
 
 #include <slepceps.h>
@@ -10,7 +10,7 @@
 
 namespace beamimpact {
 
-PetscInt BeamFreeNodeCount(const BeamSystem &op)
+PetscInt BeamFreeDofCount(const BeamSystem &op)
 {
   PetscInt n = 0;
   for (char held : op.held) n += !held;
@@ -22,7 +22,7 @@ static PetscErrorCode ModesCountCheck(MPI_Comm comm, PetscInt count, PetscInt nf
   PetscFunctionBeginUser;
   PetscCheck(count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", count);
   PetscCheck(count <= nfree, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-modes_count %" PetscInt_FMT " is not allowed: the beam has %" PetscInt_FMT " free nodes, so at most %" PetscInt_FMT " modes exist (use 1..%" PetscInt_FMT " or more -beam_nodes)", count,
+             "-modes_count %" PetscInt_FMT " is not allowed: the beam has %" PetscInt_FMT " free dofs, so at most %" PetscInt_FMT " modes exist (use 1..%" PetscInt_FMT " or more -beam_nodes)", count,
              nfree, nfree, nfree);
   PetscFunctionReturn(0);
 }
@@ -34,7 +34,7 @@ PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamS
   PetscCall(PetscOptionsInt("-modes_count", "Number of modes to report, counted from omega = 0 (rigid modes included, reported as 0)", "", p->count, &p->count, NULL));
   PetscOptionsEnd();
   PetscCheck(p->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", p->count);
-  if (op) PetscCall(ModesCountCheck(comm, p->count, BeamFreeNodeCount(*op)));
+  if (op) PetscCall(ModesCountCheck(comm, p->count, BeamFreeDofCount(*op)));
   PetscFunctionReturn(0);
 }
 
@@ -159,8 +159,9 @@ static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, P
   PetscFunctionReturn(0);
 }
 
-// Mass-normalises phi (over every dof) and fixes its sign: the first node above 1e-3 of the
-// largest |phi| is positive. Returns the mass norm before scaling (0: a zero vector).
+// Mass-normalises phi (over every dof) and fixes its sign: the deflection (field 0) of the
+// first node above 1e-3 of the largest |phi| is positive; failing that (a mode of the other
+// fields only), the first dof above it. Returns the mass norm before scaling (0: a zero vector).
 static PetscReal ModeNormalise(const BeamSystem &op, std::vector<PetscReal> &phi)
 {
   PetscReal mnorm = 0.0, amax = 0.0;
@@ -169,12 +170,13 @@ static PetscReal ModeNormalise(const BeamSystem &op, std::vector<PetscReal> &phi
   if (!(mnorm > 0)) return mnorm;
   for (PetscReal &v : phi) v /= mnorm;
   for (PetscReal v : phi) amax = std::max(amax, std::abs(v));
-  for (PetscReal v : phi)
-    if (std::abs(v) > 1e-3 * amax) {
-      if (v < 0)
-        for (PetscReal &w : phi) w = -w;
-      break;
-    }
+  PetscInt first = -1;
+  for (PetscInt i = 0; i < op.nodes && first < 0; ++i)
+    if (std::abs(phi[op.Dof(i)]) > 1e-3 * amax) first = op.Dof(i);
+  for (PetscInt d = 0; d < op.ndof && first < 0; ++d)
+    if (std::abs(phi[d]) > 1e-3 * amax) first = d;
+  if (phi[first] < 0)
+    for (PetscReal &w : phi) w = -w;
   return mnorm;
 }
 
@@ -219,6 +221,15 @@ static PetscErrorCode ModesExtract(MPI_Comm comm, EPS eps, const BeamSystem &op,
   PetscFunctionReturn(0);
 }
 
+// The deflection (field 0) at the nodes of a vector over the dofs.
+static std::vector<PetscReal> DeflectionField(const BeamSystem &op, std::vector<PetscReal> &&phi)
+{
+  if (op.fields == 1) return std::move(phi);
+  std::vector<PetscReal> w(op.nodes);
+  for (PetscInt i = 0; i < op.nodes; ++i) w[i] = phi[op.Dof(i)];
+  return w;
+}
+
 // The result in ascending order (the solver's, up to round-off among nearly equal modes);
 // modes below kModesRigidThreshold of the frequency unit are rigid: omega, period 0.
 static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lambda, std::vector<std::vector<PetscReal>> &phis, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
@@ -234,7 +245,7 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
   for (PetscInt m = 0; m < count; ++m) {
-    if (shapes) (*shapes)[m] = std::move(phis[order[m]]);
+    if (shapes) (*shapes)[m] = DeflectionField(op, std::move(phis[order[m]]));
     const PetscReal w = std::sqrt(std::max<PetscReal>(lambda[order[m]], 0.0));
     if (w < kModesRigidThreshold * op.frequency_unit) {
       ++out->rigid_count;
