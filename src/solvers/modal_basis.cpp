@@ -163,16 +163,13 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B)
+// The dense A = M^{-1/2} K_p M^{-1/2} (column-major, n x n) of a phase.
+static std::vector<PetscReal> ModalMatrix(const ModalSystem &S, bool contact)
 {
   const PetscInt         n = S.n;
-  std::vector<PetscReal> A(n * n, 0.0), w(n);
-
-  std::vector<PetscInt>  cols(2 * S.sys->bw + 1);
+  std::vector<PetscReal> A(n * n, 0.0);
+  std::vector<PetscInt>  cols(2 * S.sys->bw + 1), free_of_dof(S.sys->ndof, -1);
   std::vector<PetscReal> vals(2 * S.sys->bw + 1);
-
-  PetscFunctionBeginUser;
-  std::vector<PetscInt> free_of_dof(S.sys->ndof, -1);
   for (PetscInt d = 0; d < n - 1; ++d) free_of_dof[S.dof[d]] = d;
   for (PetscInt d = 0; d < n - 1; ++d) {
     const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
@@ -183,6 +180,78 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
       for (PetscInt c = 0; c < n; ++c) A[r + c * n] += S.k * S.g[r] * S.g[c];
   for (PetscInt r = 0; r < n; ++r)
     for (PetscInt c = 0; c < n; ++c) A[r + c * n] /= std::sqrt(S.mass[r] * S.mass[c]);
+  return A;
+}
+
+// Separated and damped: the ball (undamped) must be a mode of its own, not a mix with the
+// beam's rigid modes (damped by alpha) that share omega = 0. The ball's row of A is zero, so
+// e_ball is an exact eigenvector: it replaces the member of the zero cluster (lambda below
+// (1e-3 frequency unit)^2) nearest to it, and the rest of the cluster is made orthogonal to it.
+static void IsolateBall(const ModalSystem &S, const std::vector<PetscReal> &lambda, ModalBasis *B)
+{
+  const PetscInt  n = S.n, ball = n - 1;
+  const PetscReal zero = std::pow(1e-3 * S.sys->frequency_unit, 2);
+  PetscInt        kb   = -1;
+  for (PetscInt k = 0; k < n; ++k)
+    if (lambda[k] <= zero && (kb < 0 || std::abs(B->Phi[ball + k * n]) > std::abs(B->Phi[ball + kb * n]))) kb = k;
+  if (kb < 0) return;
+  for (PetscInt d = 0; d < n; ++d) B->Phi[d + kb * n] = d == ball ? 1.0 : 0.0;
+  for (PetscInt k = 0; k < n; ++k) {
+    if (k == kb || lambda[k] > zero) continue;
+    PetscReal *phi = &B->Phi[k * n], nrm = 0;
+    phi[ball]      = 0.0;
+    for (PetscInt l = 0; l < k; ++l) { // against the cluster's earlier members (Gram-Schmidt)
+      if (l == kb || lambda[l] > zero) continue;
+      PetscReal dot = 0;
+      for (PetscInt d = 0; d < n; ++d) dot += phi[d] * B->Phi[d + l * n];
+      for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * B->Phi[d + l * n];
+    }
+    for (PetscInt d = 0; d < n; ++d) nrm += phi[d] * phi[d];
+    nrm = std::sqrt(nrm);
+    for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
+  }
+}
+
+// Each mode's omega as its Rayleigh quotient in the energy form (a sum of squares: accurate
+// relative to the mode itself, where syev's is only relative to the largest), its share gamma
+// of c, and its decay rate sigma = phi^T C phi / 2 (C = alpha M + beta K on the beam dofs:
+// alpha/2 + beta omega^2/2 for a beam mode, alpha/2 for its rigid modes, 0 for the ball).
+static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
+{
+  const PetscInt         n = S.n;
+  const BeamSystem      &sys = *S.sys;
+  std::vector<PetscReal> shape(sys.ndof);
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal *phi = &B->Phi[k * n];
+    std::fill(shape.begin(), shape.end(), 0.0);
+    PetscReal norm = 0, c = 0, beam_norm = 0;
+    for (PetscInt d = 0; d < n; ++d) {
+      const PetscReal q = phi[d] / std::sqrt(S.mass[d]);
+      if (d < n - 1) shape[S.dof[d]] = q;
+      norm += S.mass[d] * q * q;
+      c += S.g[d] * q;
+      if (d < n - 1) beam_norm += S.mass[d] * q * q;
+    }
+    PetscReal twoU = 2 * BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof);
+    B->rate[k]     = sys.Damped() ? 0.5 * (sys.damping_mass * beam_norm + sys.damping_stiffness * twoU) / norm : 0.0;
+    if (contact) twoU += S.k * c * c;
+    B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
+    B->gamma[k] = c;
+  }
+}
+
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B)
+{
+  const PetscInt         n = S.n;
+  const BeamSystem      &sys = *S.sys;
+  std::vector<PetscReal> A, w(n);
+
+  PetscFunctionBeginUser;
+  PetscCheck(!(contact && sys.Damped()), PETSC_COMM_SELF, PETSC_ERR_SUP,
+             "-beam_damping_mass %g and -beam_damping_stiffness %g: in contact the damping is not proportional (the ball and the contact spring carry none), so the coupled "
+             "modes have no closed form; the exact modal solution needs both 0 (use a tight TS run as the reference)",
+             (double)sys.damping_mass, (double)sys.damping_stiffness);
+  A = ModalMatrix(S, contact);
   {
     PetscBLASInt bn, lwork, info;
     PetscCall(PetscBLASIntCast(n, &bn));
@@ -194,26 +263,51 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   B->Phi = A;
   B->omega.assign(n, 0.0);
   B->gamma.assign(n, 0.0);
+  B->rate.assign(n, 0.0);
   PetscCall(RefineBasis(S, contact, w, B));
-  // Refine each eigenvalue by its Rayleigh quotient in the energy form (a sum of squares:
-  // accurate relative to the mode itself, where syev's is only relative to the largest).
-  std::vector<PetscReal> shape(S.sys->ndof);
-  for (PetscInt k = 0; k < n; ++k) {
-    const PetscReal *phi = &B->Phi[k * n];
-    std::fill(shape.begin(), shape.end(), 0.0);
-    PetscReal norm = 0, c = 0;
-    for (PetscInt d = 0; d < n; ++d) {
-      const PetscReal q = phi[d] / std::sqrt(S.mass[d]);
-      if (d < n - 1) shape[S.dof[d]] = q;
-      norm += S.mass[d] * q * q;
-      c += S.g[d] * q;
-    }
-    PetscReal twoU = 2 * BeamSystemStrainEnergy(*S.sys, shape.data(), S.sys->fields, 0, S.sys->ndof);
-    if (contact) twoU += S.k * c * c;
-    B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
-    B->gamma[k] = c;
-  }
+  if (!contact && sys.Damped()) IsolateBall(S, w, B);
+  ModalQuotients(S, contact, B);
   PetscFunctionReturn(0);
+}
+
+// Mode k of a phase: q'' + 2 sigma q' + w^2 q = 0 from (z, zd) at s = 0, in closed form
+//   q(s) = E(s) [z (c + sigma S) + zd S],  q'(s) = E(s) [zd (c - sigma S) - w^2 z S],
+// E = exp(-sigma s); with w_d = sqrt(w^2 - sigma^2) (underdamped) c = cos(w_d s), S =
+// sin(w_d s)/w_d; critically damped c = 1, S = s; with mu = sqrt(sigma^2 - w^2) (overdamped,
+// and rigid modes with alpha) c = cosh(mu s), S = sinh(mu s)/mu, in exponentials that neither
+// overflow nor cancel.
+void ModalModeAt(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal s, PetscReal *q, PetscReal *qd)
+{
+  PetscReal Ec, ES; // E c and E S
+  if (w > sigma) {
+    const PetscReal wd = std::sqrt((w - sigma) * (w + sigma)), E = std::exp(-sigma * s);
+    Ec                 = E * std::cos(wd * s);
+    ES                 = E * std::sin(wd * s) / wd;
+  } else if (w == sigma) {
+    Ec = std::exp(-sigma * s);
+    ES = s * Ec;
+  } else {
+    const PetscReal mu = std::sqrt((sigma - w) * (sigma + w)), slow = std::exp(-w * w / (sigma + mu) * s); // exp((mu - sigma) s)
+    Ec                 = 0.5 * (slow + std::exp(-(sigma + mu) * s));
+    ES                 = -slow * std::expm1(-2 * mu * s) / (2 * mu);
+  }
+  *q  = z * (Ec + sigma * ES) + zd * ES;
+  *qd = zd * (Ec - sigma * ES) - w * w * z * ES;
+}
+
+// Bound on |q^(p)(s)| over s >= 0 for mode k above. The energy q'^2 + w^2 q^2 never grows
+// (its rate is -4 sigma q'^2), so with u = (w q, q'), |u| <= R = hypot(w z, zd), and q^(p) =
+// l_p . u with l_0 = (1/w, 0), l_1 = (0, 1), l_{p+2} = -2 sigma l_{p+1} - w^2 l_p. A rigid
+// mode (w = 0) has q' = zd exp(-2 sigma s): |q^(p)| <= |zd| (2 sigma)^(p-1), p >= 1.
+PetscReal ModalModeBound(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, int p)
+{
+  if (w == 0.0) return p == 0 ? std::abs(z) + (sigma > 0 ? std::abs(zd) / (2 * sigma) : PETSC_INFINITY) : std::abs(zd) * std::pow(2 * sigma, p - 1);
+  PetscReal l[2] = {1 / w, 0}, m[2] = {0, 1};
+  for (int i = 0; i < p; ++i) {
+    const PetscReal n0 = -2 * sigma * m[0] - w * w * l[0], n1 = -2 * sigma * m[1] - w * w * l[1];
+    l[0] = m[0], l[1] = m[1], m[0] = n0, m[1] = n1;
+  }
+  return std::hypot(l[0], l[1]) * std::hypot(w * z, zd);
 }
 
 bool ModalFirstCrossing(const ModalPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)
