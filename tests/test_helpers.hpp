@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,6 +55,44 @@ inline BeamSystem SystemOf(const BeamParams &p)
   std::string why;
   EXPECT_TRUE(BeamSystemBuild(p, &sys, &why)) << why;
   return sys;
+}
+
+// A hand-made two-field system: field 0 is the one-field system a, field 1 an uncoupled copy
+// of it with every mass times mass_factor (no strain term couples the fields), dof = 2 node +
+// field. Its modes are those of a and those of a with omega / sqrt(mass_factor); a ball
+// striking it touches field 0 only, so it must see exactly the system a.
+inline BeamSystem TwoFieldCopies(const BeamSystem &a, PetscReal mass_factor)
+{
+  EXPECT_EQ(1, a.fields);
+  BeamSystem s = a; // L, h, nodes, frequency unit, damping
+  s.fields     = 2;
+  s.ndof       = 2 * a.ndof;
+  s.bw         = 2 * a.bw;
+  s.reach      = 2 * a.reach;
+  s.mass.assign(s.ndof, 0.0);
+  s.held.assign(s.ndof, 0);
+  s.strain.clear();
+  for (PetscInt f = 0; f < 2; ++f) {
+    for (PetscInt d = 0; d < a.ndof; ++d) {
+      s.mass[2 * d + f] = (f ? mass_factor : 1.0) * a.mass[d];
+      s.held[2 * d + f] = a.held[d];
+    }
+    for (StrainTerm t : a.strain) {
+      for (PetscInt q = 0; q < t.n; ++q) t.dof[q] = 2 * t.dof[q] + f;
+      t.owner = 2 * t.owner + f;
+      s.strain.push_back(t);
+    }
+  }
+  std::stable_sort(s.strain.begin(), s.strain.end(), [](const StrainTerm &x, const StrainTerm &y) { return x.owner < y.owner; });
+  s.strain_begin.assign(s.ndof + 1, 0);
+  for (const StrainTerm &t : s.strain) s.strain_begin[t.owner + 1]++;
+  for (PetscInt d = 0; d < s.ndof; ++d) s.strain_begin[d + 1] += s.strain_begin[d];
+  const PetscInt wa = 2 * a.bw + 1, ws = 2 * s.bw + 1;
+  s.band.assign((size_t)ws * s.ndof, 0.0);
+  for (PetscInt f = 0; f < 2; ++f)
+    for (PetscInt i = 0; i < a.ndof; ++i)
+      for (PetscInt o = -a.bw; o <= a.bw; ++o) s.band[(size_t)ws * (2 * i + f) + (2 * o + s.bw)] = a.band[(size_t)wa * i + (o + a.bw)];
+  return s;
 }
 
 // Runs one impact with the given TS options set only for this run.

@@ -2,6 +2,8 @@
 // model (to 1e-9), the wall and rigid-body limits, and energy conservation.
 #include "run/modal_reference.hpp"
 #include "model/rigid.hpp"
+#include "solvers/modal_basis.hpp"
+#include "solvers/modes.hpp"
 #include "test_helpers.hpp"
 
 #include <cmath>
@@ -80,5 +82,181 @@ TEST(ModalReference, RefusesTheHystereticLaw)
   ImpactResult r;
   ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, NULL), 0);
   EXPECT_NE(ModalReferenceRun(Scenario{AluminiumBeam(1.1), Superball(ContactLawKind::Hysteresis), ip, MonitorRequest()}, &r), 0);
+  ASSERT_EQ(PetscPopErrorHandler(), 0);
+}
+
+// Two fields a node (field 1 an uncoupled copy of the beam, masses x3, that the ball does not
+// touch): the reference on the two-field system is the one-field reference, single and double
+// contacts alike; the coupling goes through the deflection dofs, not node indices.
+TEST(ModalReference, TwoFieldSystemGivesTheOneFieldResult)
+{
+  struct Case {
+    BeamParams beam;
+    double     x;
+  };
+  for (const Case &c : {Case{AluminiumBeam(1.1, 41), 0.9}, Case{AluminiumBeam(0.3, 41, Support::Clamped, Support::Free), 0.29}}) {
+    ImpactParams ip;
+    ip.x                 = c.x;
+    const Scenario   sc  = {c.beam, Superball(), ip, MonitorRequest()};
+    const BeamSystem one = SystemOf(c.beam);
+    ImpactResult     r1, r2;
+    ASSERT_EQ(ModalReferenceRunSystem(sc, one, &r1), 0);
+    ASSERT_EQ(ModalReferenceRunSystem(sc, TwoFieldCopies(one, 3.0), &r2), 0);
+    EXPECT_EQ(r1.contacts, r2.contacts) << "x = " << c.x;
+    EXPECT_EQ(r1.events.size(), r2.events.size());
+    EXPECT_NEAR(r1.acor, r2.acor, 1e-11);
+    EXPECT_NEAR(r1.contact_time, r2.contact_time, 1e-11 * r1.contact_time);
+    EXPECT_NEAR(r1.contact_time_total, r2.contact_time_total, 1e-11 * r1.contact_time_total);
+    EXPECT_NEAR(r1.peak_force, r2.peak_force, 1e-11 * r1.peak_force);
+    EXPECT_NEAR(r1.beam_kinetic_end + r1.beam_strain_end, r2.beam_kinetic_end + r2.beam_strain_end, 1e-10 * (r1.beam_kinetic_end + r1.beam_strain_end));
+    EXPECT_LT(std::abs(r2.energy_error), 1e-10);
+  }
+}
+
+namespace {
+// One mode of mass m (a hand-made one-dof modal system): x'' + 2 sigma x' + w^2 x = 0.
+struct OneMode {
+  ModalSystem S;
+  ModalBasis  B;
+  ModalPhase  ph;
+  OneMode(PetscReal m, PetscReal w, PetscReal sigma, PetscReal x0, PetscReal v0)
+  {
+    S.n    = 1;
+    S.mass = {m};
+    S.g    = {1.0};
+    S.dof  = {-1};
+    B.omega = {w};
+    B.Phi   = {1.0};
+    B.gamma = {1.0 / std::sqrt(m)};
+    B.rate  = {sigma};
+    ph.S    = &S;
+    ph.B    = &B;
+    ph.From({x0}, {v0});
+  }
+  PetscReal X(PetscReal t) const
+  {
+    std::vector<PetscReal> q, qd;
+    ph.State(t, q, qd);
+    return q[0];
+  }
+};
+} // namespace
+
+// A damped mode against the closed forms of x'' + 2 zeta w x' + w^2 x = 0: underdamped,
+// critically damped, overdamped, and a rigid mode with alpha (x'' + alpha x' = 0); c(s) = x
+// and its derivatives (against central differences of the next lower one); the bound on the
+// derivatives holds over the whole motion.
+TEST(ModalPhaseDamped, OneModeMatchesTheClosedForm)
+{
+  const PetscReal m = 0.3, w = 50.0, x0 = 2e-3, v0 = -0.4;
+  struct Case {
+    const char *name;
+    PetscReal   w, zeta;
+  };
+  for (const Case &c : {Case{"under", w, 0.05}, Case{"critical", w, 1.0}, Case{"over", w, 3.0}, Case{"rigid", 0.0, 0.0}}) {
+    const PetscReal alpha = 7.0, sigma = c.w > 0 ? c.zeta * c.w : alpha / 2;
+    const OneMode   one(m, c.w, sigma, x0, v0);
+    auto            exact = [&](PetscReal t) {
+      if (c.w == 0) return x0 + v0 * (1 - std::exp(-alpha * t)) / alpha;
+      if (c.zeta < 1) {
+        const PetscReal wd = c.w * std::sqrt(1 - c.zeta * c.zeta);
+        return std::exp(-sigma * t) * (x0 * std::cos(wd * t) + (v0 + sigma * x0) / wd * std::sin(wd * t));
+      }
+      if (c.zeta == 1) return std::exp(-c.w * t) * (x0 + (v0 + c.w * x0) * t);
+      const PetscReal rp = -sigma + c.w * std::sqrt(c.zeta * c.zeta - 1), rm = -sigma - c.w * std::sqrt(c.zeta * c.zeta - 1);
+      const PetscReal cp = (v0 - rm * x0) / (rp - rm);
+      return cp * std::exp(rp * t) + (x0 - cp) * std::exp(rm * t);
+    };
+    const PetscReal amp = std::hypot(x0, v0 / std::max(c.w, alpha));
+    PetscReal       peak[4] = {0, 0, 0, 0};
+    for (PetscReal t = 0; t <= 0.5; t += 1e-3) {
+      EXPECT_NEAR(exact(t), one.X(t), 1e-13 * amp) << c.name << " t = " << t;
+      EXPECT_NEAR(exact(t), one.ph.Derivative(t, 0), 1e-13 * amp) << c.name; // c = g x = x
+      const PetscReal dt = 1e-6;
+      for (int p = 1; p <= 3; ++p) {
+        const PetscReal fd = (one.ph.Derivative(t + dt, p - 1) - one.ph.Derivative(std::max(t - dt, 0.0), p - 1)) / (t > 0 ? 2 * dt : dt);
+        EXPECT_NEAR(fd, one.ph.Derivative(t, p), 1e-5 * one.ph.Bound(p) + (t > 0 ? 0 : 1e-5 * one.ph.Bound(p + 1))) << c.name << " p = " << p << " t = " << t;
+      }
+      for (int p = 0; p < 4; ++p) peak[p] = std::max(peak[p], std::abs(one.ph.Derivative(t, p)));
+    }
+    for (int p = 1; p < 4; ++p) EXPECT_LE(peak[p], one.ph.Bound(p) * (1 + 1e-12)) << c.name << " p = " << p;
+  }
+}
+
+// With no damping the damped propagator is the undamped one: x0 cos + v0 sin / w, to round-off,
+// and its bound is the undamped hypot(x0, v0/w) w^p.
+TEST(ModalPhaseDamped, ZeroDampingIsTheUndampedSolution)
+{
+  const PetscReal w = 80.0, z = 1.5e-3, zd = 0.7;
+  for (PetscReal s : {0.0, 1e-3, 0.037, 0.4}) {
+    PetscReal q, qd;
+    ModalModeAt(w, 0.0, z, zd, s, &q, &qd);
+    EXPECT_NEAR(z * std::cos(w * s) + zd * std::sin(w * s) / w, q, 1e-15);
+    EXPECT_NEAR(-z * w * std::sin(w * s) + zd * std::cos(w * s), qd, 1e-13);
+  }
+  for (int p = 0; p < 4; ++p) EXPECT_NEAR(std::hypot(z, zd / w) * std::pow(w, p), ModalModeBound(w, 0.0, z, zd, p), 1e-13 * std::pow(w, p));
+}
+
+// A damped beam in free vibration (Rayleigh alpha, beta), through the separated basis of the
+// system: started in its third mode (shape from the SLEPc modes solver) it stays in it and
+// decays as exp(-zeta w t) (cos w_d t + zeta w / w_d sin w_d t) with zeta = alpha/(2 w) + beta w/2;
+// a free-free beam moving rigidly slows as exp(-alpha t) while the ball, not touching, stays at rest.
+TEST(ModalPhaseDamped, BeamModeDecaysWithItsRayleighRatio)
+{
+  BeamParams beam        = AluminiumBeam(1.1, 41, Support::Clamped, Support::Free);
+  beam.damping_mass      = 3.0;
+  beam.damping_stiffness = 2e-5;
+  const BeamSystem                    sys = SystemOf(beam);
+  ModesResult                         modes;
+  std::vector<std::vector<PetscReal>> shapes;
+  ASSERT_EQ(BeamModesCompute(PETSC_COMM_SELF, sys, 3, &modes, &shapes), 0);
+  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, 1.0), 0.042, 2e4);
+  ModalBasis        B;
+  ASSERT_EQ(ModalBasisBuild(S, false, &B), 0);
+  const PetscReal w = modes.omega[2], zeta = beam.damping_mass / (2 * w) + beam.damping_stiffness * w / 2, wd = w * std::sqrt(1 - zeta * zeta);
+  std::vector<PetscReal> q(S.n, 0.0), qd(S.n, 0.0), qt, qdt;
+  for (PetscInt d = 0; d + 1 < S.n; ++d) q[d] = 1e-3 * shapes[2][S.dof[d]];
+  ModalPhase ph;
+  ph.S = &S;
+  ph.B = &B;
+  ph.From(q, qd);
+  for (PetscReal t : {1e-3, 0.02, 0.3}) {
+    ph.State(t, qt, qdt);
+    const PetscReal decay = std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
+    PetscReal       dev = 0, amax = 0;
+    for (PetscInt d = 0; d + 1 < S.n; ++d) dev = std::max(dev, std::abs(qt[d] - decay * q[d])), amax = std::max(amax, std::abs(q[d]));
+    EXPECT_LT(dev, 1e-8 * amax) << "t = " << t;
+    EXPECT_EQ(0.0, qt[S.n - 1]);
+  }
+
+  beam.left = Support::Free; // free-free: two rigid modes and the ball share omega = 0
+  const BeamSystem  ff  = SystemOf(beam);
+  const ModalSystem Sff = ModalSystemBuild(ff, BeamSystemCoupling(ff, 0.9), 0.042, 2e4);
+  ASSERT_EQ(ModalBasisBuild(Sff, false, &B), 0);
+  std::vector<PetscReal> v(Sff.n, 0.2);
+  v[Sff.n - 1] = 0.0;
+  ph.S         = &Sff;
+  ph.From(std::vector<PetscReal>(Sff.n, 0.0), v);
+  const PetscReal t = 0.25, a = beam.damping_mass;
+  ph.State(t, qt, qdt);
+  for (PetscInt d = 0; d + 1 < Sff.n; ++d) {
+    EXPECT_NEAR(0.2 * std::exp(-a * t), qdt[d], 1e-10 * 0.2);
+    EXPECT_NEAR(0.2 * (1 - std::exp(-a * t)) / a, qt[d], 1e-10 * 0.2 / a);
+  }
+  EXPECT_NEAR(0.0, qt[Sff.n - 1], 1e-15);
+  EXPECT_NEAR(0.0, qdt[Sff.n - 1], 1e-15);
+}
+
+// In contact the ball and the spring carry no damping: no closed form, so the reference
+// refuses a damped beam and names the options.
+TEST(ModalReference, RefusesADampedBeam)
+{
+  BeamParams beam   = AluminiumBeam(1.1, 41);
+  beam.damping_mass = 1.0;
+  ImpactParams ip;
+  ip.x = 0.9;
+  ImpactResult r;
+  ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, NULL), 0);
+  EXPECT_EQ(PETSC_ERR_SUP, ModalReferenceRun(Scenario{beam, Superball(), ip, MonitorRequest()}, &r));
   ASSERT_EQ(PetscPopErrorHandler(), 0);
 }

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -305,7 +306,7 @@ TEST(BeamModes, ClampedRegionActsAsClampedEnd)
   p.clamp_x1   = 0.72;
   const BeamOperator op = BeamOperatorBuild(p);
   const BeamSystem sys = test::SystemOf(p);
-  ASSERT_EQ(62, BeamFreeNodeCount(sys));
+  ASSERT_EQ(62, BeamFreeDofCount(sys));
   ModesResult r;
   ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 4, &r));
   EXPECT_EQ(0, r.rigid_count);
@@ -397,4 +398,34 @@ TEST(ModesParams, FromOptions)
   EXPECT_EQ(PETSC_ERR_ARG_OUTOFRANGE, ModesParamsFromOptions(PETSC_COMM_WORLD, &p, &sys));
   PetscCallVoid(PetscPopErrorHandler());
   ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-modes_count"));
+}
+
+// Two fields a node (a hand-made system: field 1 an uncoupled copy of the beam with masses
+// x3): the modes are those of the one-field beam and those of the copy at omega / sqrt(3),
+// counted over free dofs; a mode of the beam has the one-field shape as its deflection, a
+// mode of the copy has no deflection.
+TEST(BeamModes, TwoFieldSystemHasTheModesOfBothFields)
+{
+  const BeamSystem one = test::SystemOf(Aluminium(Support::Clamped, Support::Free, 41));
+  const BeamSystem two = test::TwoFieldCopies(one, 3.0);
+  EXPECT_EQ(2 * BeamFreeDofCount(one), BeamFreeDofCount(two));
+  ModesResult                         r1, r2;
+  std::vector<std::vector<PetscReal>> s1, s2;
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, one, 6, &r1, &s1));
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, two, 6, &r2, &s2));
+  std::vector<std::pair<PetscReal, PetscInt>> expect; // omega, one-field mode (-1: the copy's)
+  for (PetscInt m = 0; m < 6; ++m) expect.push_back({r1.omega[m], m}), expect.push_back({r1.omega[m] / std::sqrt(3.0), -1});
+  std::sort(expect.begin(), expect.end());
+  EXPECT_EQ(0, r2.rigid_count);
+  for (PetscInt m = 0; m < 6; ++m) {
+    EXPECT_NEAR(expect[m].first, r2.omega[m], 1e-10 * expect[m].first) << "mode " << m;
+    ASSERT_EQ((size_t)one.nodes, s2[m].size());
+    PetscReal dev = 0, amax = 0;
+    for (PetscInt i = 0; i < one.nodes; ++i) {
+      const PetscReal ref = expect[m].second >= 0 ? s1[expect[m].second][i] : 0.0;
+      dev                 = std::max(dev, std::abs(s2[m][i] - ref));
+      amax                = std::max(amax, std::abs(ref));
+    }
+    EXPECT_LT(dev, 1e-7 * std::max(amax, 1.0)) << "mode " << m;
+  }
 }

@@ -54,6 +54,21 @@ PetscErrorCode ImpactRunModal(MPI_Comm comm, const Scenario &sc, ImpactResult *r
   PetscFunctionReturn(0);
 }
 
+// The task's file, when -output names one (not 'none'): its run record, the file, and a line
+// saying where it went.
+template <class Record, class Write>
+PetscErrorCode TaskWriteOutput(MPI_Comm comm, const std::string &output, Record record, Write write)
+{
+  RunRecord rec;
+
+  PetscFunctionBeginUser;
+  if (output.empty()) PetscFunctionReturn(0);
+  PetscCall(record(&rec));
+  PetscCall(write(rec));
+  PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
@@ -83,12 +98,8 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
     PetscCall(ImpactRun(comm, sc, &res));
   }
   PetscCall(ImpactPrintSummary(comm, res));
-  if (!output.empty()) {
-    RunRecord rec;
-    PetscCall(RunRecordBuild(sc, &res, &rec));
-    PetscCall(ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam));
-    PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
-  }
+  PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
+                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam); }));
   PetscFunctionReturn(0);
 }
 
@@ -97,11 +108,11 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   BeamParams  beam;
   ModesParams mp;
   ModesResult modes;
+  BeamSystem  op;
+  std::string why;
 
   PetscFunctionBeginUser;
   PetscCall(BeamParamsFromOptions(comm, &beam));
-  BeamSystem  op;
-  std::string why;
   PetscCheck(BeamSystemBuild(beam, &op, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(ModesParamsFromOptions(comm, &mp, &op));
   PetscCall(OptionsCheckUnused(comm));
@@ -109,12 +120,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)\n", (double)beam.length, SupportName(beam.left), SupportName(beam.right), beam.nodes));
   for (size_t q = 0; q < modes.frequency.size(); ++q)
     PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f%s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? "  (rigid)" : ""));
-  if (!output.empty()) {
-    RunRecord rec;
-    PetscCall(RunRecordBuild(beam, &rec));
-    PetscCall(ResultsWriteModesFile(comm, output, rec, modes));
-    PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
-  }
+  PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(beam, rec); }, [&](const RunRecord &rec) { return ResultsWriteModesFile(comm, output, rec, modes); }));
   PetscFunctionReturn(0);
 }
 

@@ -11,99 +11,98 @@
 
 namespace beamimpact {
 
-PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
+namespace {
+
+// The exact solution as it advances: time, free-dof displacements and velocities (the ball
+// last), and the fixed data of the run.
+struct ModalRun {
+  const ModalSystem *S = nullptr;
+  const BallParams  *ball = nullptr;
+  PetscReal          t_cap = 0, s_min = 0; // s: -impact_max_time; the smallest search step
+  PetscReal          t = 0;
+  std::vector<PetscReal> q, qd;
+};
+
+// Energy (J) of the state: kinetic (beam and ball), strain, and the spring's in contact.
+PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, const std::vector<PetscReal> &qd, bool in_contact)
 {
-  const BeamParams   &beam = sc.beam;
-  const BallParams   &ball = sc.ball;
-  const ImpactParams &ip   = sc.impact;
-  BeamSystem          sys;
-  std::string         why;
-  ModalBasis          contact_basis, free_basis;
+  const BeamSystem      &sys = *S.sys;
+  std::vector<PetscReal> shape(sys.ndof, 0.0);
+  PetscReal              T = 0, c = 0;
+  for (PetscInt d = 0; d < S.n; ++d) {
+    T += 0.5 * S.mass[d] * qd[d] * qd[d];
+    c += S.g[d] * q[d];
+    if (S.dof[d] >= 0) shape[S.dof[d]] = q[d];
+  }
+  return T + BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof) + (in_contact ? 0.5 * S.k * c * c : 0.0);
+}
+
+// The maximum compressions of a contact phase: dc/dt falling through 0 before the separation
+// at s_sep, each followed by a skip to where dc/dt rises again (a local minimum).
+void ModalMaxCompressions(const ModalRun &run, const ModalPhase &ph, PetscReal s_sep, ImpactResult *res)
+{
+  PetscReal  s = 0, s_max;
+  ModalPhase rate = ph;
+  while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, run.s_min, &s_max)) {
+    s += s_max;
+    const PetscReal c = ph.Derivative(s, 0);
+    res->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, run.ball->k * c});
+    res->max_compression = std::max(res->max_compression, c);
+    // Continue after this maximum: restart the search from the state at s.
+    std::vector<PetscReal> qs, qds;
+    ph.State(s, qs, qds);
+    rate.From(qs, qds);
+    PetscReal s_min_c;
+    if (!ModalFirstCrossing(rate, 1, -1.0, s_sep - s, run.s_min, &s_min_c)) break;
+    s += s_min_c;
+    ph.State(s, qs, qds);
+    rate.From(qs, qds);
+  }
+}
+
+// A contact phase from run.t to the separation (c falling through 0).
+PetscErrorCode ModalContactPhase(ModalRun &run, const ModalPhase &ph, ImpactResult *res)
+{
+  PetscReal s_sep;
 
   PetscFunctionBeginUser;
-  PetscCheck(ball.law == ContactLawKind::Linear, PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "-reference modal needs -ball_law linear (the hysteretic law is nonlinear: use a tight run of a high-order integrator as the reference)");
-  const double wall0 = MPI_Wtime();
-  *res               = ImpactResult();
-  res->x             = ip.x;
-  res->ts_type       = "modal";
-  res->formulation   = "exact";
-  PetscCheck(BeamSystemBuild(beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ball.k);
-  PetscCall(ModalBasisBuild(S, true, &contact_basis));
-  PetscCall(ModalBasisBuild(S, false, &free_basis));
+  PetscCheck(ModalFirstCrossing(ph, 0, +1.0, run.t_cap - run.t, run.s_min, &s_sep), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
+             "modal reference: the ball is still in contact at -impact_max_time %g s", (double)run.t_cap);
+  ModalMaxCompressions(run, ph, s_sep, res);
+  ph.State(s_sep, run.q, run.qd);
+  run.t += s_sep;
+  res->events.push_back({ContactEventKind::Separation, run.t, 0.0, 0.0});
+  PetscFunctionReturn(0);
+}
 
-  const ImpactTimes times  = ImpactTimesOf(beam, ball, ip);
-  const PetscReal   t_cap  = times.max_time;
-  const PetscReal   s_min  = 1e-13 * ContactTimeScale(ball);
-  const PetscReal   E0     = 0.5 * ball.mass * ball.speed * ball.speed;
-  std::vector<PetscReal> q(S.n, 0.0), qd(S.n, 0.0);
-  qd[S.n - 1]         = ball.speed;
-  PetscReal  t        = 0;
-  bool       touching = true;
-  ModalPhase ph;
-  res->contacts = 1;
-  res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
-  auto energy = [&](bool in_contact) {
-    std::vector<PetscReal> shape(sys.ndof, 0.0);
-    PetscReal              T = 0, c = 0;
-    for (PetscInt d = 0; d < S.n; ++d) {
-      T += 0.5 * S.mass[d] * qd[d] * qd[d];
-      c += S.g[d] * q[d];
-      if (S.dof[d] >= 0) shape[S.dof[d]] = q[d];
-    }
-    return T + BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof) + (in_contact ? 0.5 * S.k * c * c : 0.0);
-  };
-  for (;;) {
-    ph.S = &S;
-    ph.B = touching ? &contact_basis : &free_basis;
-    ph.From(q, qd);
-    if (touching) {
-      PetscReal s_sep;
-      PetscCheck(ModalFirstCrossing(ph, 0, +1.0, t_cap - t, s_min, &s_sep), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "modal reference: the ball is still in contact at -impact_max_time %g s", (double)t_cap);
-      // Maximum compressions: dc/dt falling through 0 before the separation.
-      PetscReal s = 0, s_max;
-      ModalPhase rate = ph;
-      while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, s_min, &s_max)) {
-        s += s_max;
-        const PetscReal c = ph.Derivative(s, 0);
-        res->events.push_back({ContactEventKind::MaxCompression, t + s, c, ball.k * c});
-        res->max_compression = std::max(res->max_compression, c);
-        // Continue after this maximum: restart the search from the state at s.
-        std::vector<PetscReal> qs, qds;
-        ph.State(s, qs, qds);
-        rate.From(qs, qds);
-        // Skip to where dc/dt rises again (a local minimum), then look for the next maximum.
-        PetscReal s_min_c;
-        if (!ModalFirstCrossing(rate, 1, -1.0, s_sep - s, s_min, &s_min_c)) break;
-        s += s_min_c;
-        ph.State(s, qs, qds);
-        rate.From(qs, qds);
-      }
-      ph.State(s_sep, q, qd);
-      t += s_sep;
-      res->events.push_back({ContactEventKind::Separation, t, 0.0, 0.0});
-      touching = false;
-    } else {
-      const PetscReal t_stop = std::min(t_cap, t + times.window);
-      PetscReal       s_con;
-      if (ModalFirstCrossing(ph, 0, -1.0, t_stop - t, s_min, &s_con)) {
-        ph.State(s_con, q, qd);
-        t += s_con;
-        res->contacts++;
-        PetscCheck(res->contacts <= ip.max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "modal reference: more than -impact_max_contacts %" PetscInt_FMT " contacts", ip.max_contacts);
-        res->events.push_back({ContactEventKind::ContactStart, t, 0.0, 0.0});
-        touching = true;
-      } else {
-        ph.State(t_stop - t, q, qd);
-        t = t_stop;
-        break;
-      }
-    }
+// A separated phase from run.t to the next contact (c rising through 0) or to t_stop, the end
+// of the window after the separation; *contact tells which.
+PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_stop, PetscInt max_contacts, ImpactResult *res, bool *contact)
+{
+  PetscReal s_con;
+
+  PetscFunctionBeginUser;
+  *contact = ModalFirstCrossing(ph, 0, -1.0, t_stop - run.t, run.s_min, &s_con);
+  if (!*contact) {
+    ph.State(t_stop - run.t, run.q, run.qd);
+    run.t = t_stop;
+    PetscFunctionReturn(0);
   }
-  // Contact times from the event list.
-  PetscReal start = 0;
-  bool      first = true;
+  ph.State(s_con, run.q, run.qd);
+  run.t += s_con;
+  res->contacts++;
+  PetscCheck(res->contacts <= max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "modal reference: more than -impact_max_contacts %" PetscInt_FMT " contacts", max_contacts);
+  res->events.push_back({ContactEventKind::ContactStart, run.t, 0.0, 0.0});
+  PetscFunctionReturn(0);
+}
+
+// The outcome from the events and the final state: contact times, force, ACOR, energies.
+void ModalOutcome(const ModalRun &run, PetscReal E0, ImpactResult *res)
+{
+  const ModalSystem &S    = *run.S;
+  const BallParams  &ball = *run.ball;
+  PetscReal          start = 0;
+  bool               first = true;
   for (const ContactEvent &e : res->events) {
     if (e.kind == ContactEventKind::ContactStart) start = e.time;
     if (e.kind == ContactEventKind::Separation) {
@@ -113,22 +112,79 @@ PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
     }
   }
   res->peak_force          = ball.k * res->max_compression;
-  res->final_time          = t;
-  res->ball_final_velocity = qd[S.n - 1];
-  res->acor                = -qd[S.n - 1] / ball.speed;
+  res->final_time          = run.t;
+  res->ball_final_velocity = run.qd[S.n - 1];
+  res->acor                = -run.qd[S.n - 1] / ball.speed;
   res->acor_corrected      = res->acor * ball.loss_factor;
-  res->energy_error        = (energy(false) - E0) / E0;
-  {
-    std::vector<PetscReal> shape(sys.ndof, 0.0);
-    PetscReal              T = 0;
-    for (PetscInt d = 0; d + 1 < S.n; ++d) {
-      T += 0.5 * S.mass[d] * qd[d] * qd[d];
-      shape[S.dof[d]] = q[d];
-    }
-    res->beam_kinetic_end = T;
-    res->beam_strain_end  = BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof);
+  res->energy_error        = (ModalEnergy(S, run.q, run.qd, false) - E0) / E0;
+  std::vector<PetscReal> shape(S.sys->ndof, 0.0);
+  PetscReal              T = 0;
+  for (PetscInt d = 0; d + 1 < S.n; ++d) {
+    T += 0.5 * S.mass[d] * run.qd[d] * run.qd[d];
+    shape[S.dof[d]] = run.q[d];
   }
+  res->beam_kinetic_end = T;
+  res->beam_strain_end  = BeamSystemStrainEnergy(*S.sys, shape.data(), S.sys->fields, 0, S.sys->ndof);
+}
+
+} // namespace
+
+PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, ImpactResult *res)
+{
+  const BallParams   &ball = sc.ball;
+  const ImpactParams &ip   = sc.impact;
+  ModalBasis          contact_basis, free_basis;
+  ModalRun            run;
+  ModalPhase          ph;
+  bool                touching = true;
+
+  PetscFunctionBeginUser;
+  PetscCheck(ball.law == ContactLawKind::Linear, PETSC_COMM_SELF, PETSC_ERR_SUP,
+             "-reference modal needs -ball_law linear (the hysteretic law is nonlinear: use a tight run of a high-order integrator as the reference)");
+  const double wall0 = MPI_Wtime();
+  *res               = ImpactResult();
+  res->x             = ip.x;
+  res->ts_type       = "modal";
+  res->formulation   = "exact";
+  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ball.k);
+  PetscCall(ModalBasisBuild(S, true, &contact_basis));
+  PetscCall(ModalBasisBuild(S, false, &free_basis));
+
+  const ImpactTimes times = ImpactTimesOf(sc.beam, ball, ip);
+  run.S                   = &S;
+  run.ball                = &ball;
+  run.t_cap               = times.max_time;
+  run.s_min               = 1e-13 * ContactTimeScale(ball);
+  run.q.assign(S.n, 0.0);
+  run.qd.assign(S.n, 0.0);
+  run.qd[S.n - 1] = ball.speed;
+  res->contacts   = 1;
+  res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
+  for (;;) {
+    ph.S = &S;
+    ph.B = touching ? &contact_basis : &free_basis;
+    ph.From(run.q, run.qd);
+    if (touching) {
+      PetscCall(ModalContactPhase(run, ph, res));
+      touching = false;
+    } else {
+      PetscCall(ModalFreePhase(run, ph, std::min(run.t_cap, run.t + times.window), ip.max_contacts, res, &touching));
+      if (!touching) break;
+    }
+  }
+  ModalOutcome(run, 0.5 * ball.mass * ball.speed * ball.speed, res);
   res->wall_time = MPI_Wtime() - wall0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
+{
+  BeamSystem  sys;
+  std::string why;
+
+  PetscFunctionBeginUser;
+  PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
+  PetscCall(ModalReferenceRunSystem(sc, sys, res));
   PetscFunctionReturn(0);
 }
 

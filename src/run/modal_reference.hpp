@@ -7,6 +7,7 @@
 #pragma once
 
 #include "run/impact.hpp"
+#include "system/beam_system.hpp"
 
 namespace beamimpact {
 
@@ -16,7 +17,14 @@ struct Scenario;
 // peak_force, max_compression, contacts, events, ball_final_velocity, final_time,
 // energy_error, beam energies at the end) for the linear law; the same window and cap
 // rules as ImpactRun, so both see the same contacts. ts_type is "modal".
-// PETSC_ERR_SUP for the hysteretic law.
+// PETSC_ERR_SUP for the hysteretic law, and for a damped beam (-beam_damping_mass,
+// -beam_damping_stiffness): the separated phases are damped exactly, mode by mode
+// (solvers/modal_basis.hpp), but in contact the ball and the spring carry no damping, the
+// damping is not proportional and the coupled modes have no real closed form.
 PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
+
+// The same on a system already built (any number of fields per node); the scenario gives the
+// ball, the impact rules and the time scales (its beam is not rebuilt).
+PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSystem &sys, ImpactResult *res);
 
 } // namespace beamimpact

@@ -30,43 +30,45 @@ ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, Pe
 }
 
 
-// syev's eigenvectors are accurate only to eps * lambda_max / gap: with the h^-4 spread of
-// the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
-// shifted by its eigenvalue, with a banded LU of A - sigma I (the ball is ordered next to
-// its two nodes, so A is banded with 3 sub- and super-diagonals), then modified
-// Gram-Schmidt, bring each vector to round-off relative to its own eigenvalue.
-static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
-{
-  const int n = (int)S.n, kl = (int)S.sys->bw + 1, ku = kl, ldab = 2 * kl + ku + 1, one = 1;
+namespace {
 
-  PetscFunctionBeginUser;
-  // Band order: beam dofs in node order with the ball right after the later of its nodes.
-  std::vector<PetscInt> dof_of_node(S.sys->ndof, -1);
-  for (PetscInt d = 0; d < n - 1; ++d) dof_of_node[S.dof[d]] = d;
-  PetscInt after = -1;
+// An entry of A = M^{-1/2} K_p M^{-1/2}: (row free dof, column free dof, value).
+struct BandEntry {
+  PetscInt  r, c;
+  PetscReal v;
+};
+
+// Band order of the free dofs: beam dofs in dof order with the ball right after the later of
+// the dofs it touches (its two nodes' deflections, fields apart).
+std::vector<int> BandOrder(const ModalSystem &S)
+{
+  const PetscInt n     = S.n;
+  PetscInt       after = -1;
   for (PetscInt d = 0; d < n - 1; ++d)
     if (S.g[d] != 0.0) after = d;
-  std::vector<int> pos(n); // dof -> band position
-  {
-    int p = 0;
-    if (after < 0) pos[n - 1] = p++;
-    for (PetscInt d = 0; d < n - 1; ++d) {
-      pos[d] = p++;
-      if (d == after) pos[n - 1] = p++;
-    }
+  std::vector<int> pos(n); // free dof -> band position
+  int              p = 0;
+  if (after < 0) pos[n - 1] = p++;
+  for (PetscInt d = 0; d < n - 1; ++d) {
+    pos[d] = p++;
+    if (d == after) pos[n - 1] = p++;
   }
-  // Entries of A = M^{-1/2} K_p M^{-1/2} as (row dof, col dof, value).
-  struct Entry {
-    PetscInt r, c;
-    PetscReal v;
-  };
-  std::vector<Entry>     entries;
+  return pos;
+}
+
+// The nonzeros of A, from the rows of K and, in contact, the spring k g g^T.
+std::vector<BandEntry> BandEntries(const ModalSystem &S, bool contact)
+{
+  const PetscInt         n = S.n;
+  std::vector<PetscInt>  free_of_dof(S.sys->ndof, -1);
+  std::vector<BandEntry> entries;
   std::vector<PetscInt>  cols(2 * S.sys->bw + 1);
   std::vector<PetscReal> vals(2 * S.sys->bw + 1);
+  for (PetscInt d = 0; d < n - 1; ++d) free_of_dof[S.dof[d]] = d;
   for (PetscInt d = 0; d < n - 1; ++d) {
     const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
     for (PetscInt q = 0; q < nc; ++q) {
-      const PetscInt c = dof_of_node[cols[q]];
+      const PetscInt c = free_of_dof[cols[q]];
       entries.push_back({d, c, vals[q] / std::sqrt(S.mass[d] * S.mass[c])});
     }
   }
@@ -74,37 +76,61 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
     for (PetscInt r = 0; r < n; ++r)
       for (PetscInt c = 0; c < n; ++c)
         if (S.g[r] != 0.0 && S.g[c] != 0.0) entries.push_back({r, c, S.k * S.g[r] * S.g[c] / std::sqrt(S.mass[r] * S.mass[c])});
-  const PetscReal        scale = *std::max_element(lambda.begin(), lambda.end());
-  std::vector<double>    ab((size_t)ldab * n), x(n);
-  std::vector<int>       ipiv(n);
-  for (PetscInt k = 0; k < n; ++k) {
-    PetscReal sigma = lambda[k] - 1e-14 * scale; // just below: never exactly singular
-    PetscReal *phi  = &B->Phi[k * n];
-    for (int it = 0; it < 2; ++it) {
-      std::fill(ab.begin(), ab.end(), 0.0);
-      for (const Entry &e : entries) {
-        const int i = pos[e.r], j = pos[e.c];
-        ab[(size_t)(kl + ku + i - j) + (size_t)j * ldab] += e.v;
-      }
-      for (int i = 0; i < n; ++i) ab[(size_t)(kl + ku) + (size_t)i * ldab] -= sigma;
-      for (PetscInt d = 0; d < n; ++d) x[pos[d]] = phi[d];
-      int info;
-      dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), x.data(), &n, &info);
-      PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbsv failed (info %d)", info);
-      if (info > 0) break; // exactly singular: the vector is already exact
-      PetscReal nrm = 0;
-      for (int i = 0; i < n; ++i) nrm += x[i] * x[i];
-      nrm = std::sqrt(nrm);
-      PetscReal sgn = 0; // keep the orientation
-      for (PetscInt d = 0; d < n; ++d) sgn += x[pos[d]] * phi[d];
-      for (PetscInt d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[pos[d]] / nrm;
+  return entries;
+}
+
+// Two steps of inverse iteration on phi (unit length, orientation kept) with the banded LU of
+// A - sigma I (LAPACK dgbsv; ab of leading dimension 2 kl + ku + 1).
+PetscErrorCode InverseIterate(const std::vector<BandEntry> &entries, const std::vector<int> &pos, int kl, PetscReal sigma, PetscReal *phi)
+{
+  const int           n = (int)pos.size(), ku = kl, ldab = 2 * kl + ku + 1, one = 1;
+  std::vector<double> ab((size_t)ldab * n), x(n);
+  std::vector<int>    ipiv(n);
+
+  PetscFunctionBeginUser;
+  for (int it = 0; it < 2; ++it) {
+    std::fill(ab.begin(), ab.end(), 0.0);
+    for (const BandEntry &e : entries) {
+      const int i = pos[e.r], j = pos[e.c];
+      ab[(size_t)(kl + ku + i - j) + (size_t)j * ldab] += e.v;
     }
+    for (int i = 0; i < n; ++i) ab[(size_t)(kl + ku) + (size_t)i * ldab] -= sigma;
+    for (int d = 0; d < n; ++d) x[pos[d]] = phi[d];
+    int info;
+    dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), x.data(), &n, &info);
+    PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbsv failed (info %d)", info);
+    if (info > 0) break; // exactly singular: the vector is already exact
+    PetscReal nrm = 0;
+    for (int i = 0; i < n; ++i) nrm += x[i] * x[i];
+    nrm = std::sqrt(nrm);
+    PetscReal sgn = 0; // keep the orientation
+    for (int d = 0; d < n; ++d) sgn += x[pos[d]] * phi[d];
+    for (int d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[pos[d]] / nrm;
   }
-  // Modified Gram-Schmidt (cleans up (near-)degenerate pairs such as the rigid modes).
+  PetscFunctionReturn(0);
+}
+
+// Half-bandwidth of A in the band order: a beam entry straddling the ball is one further
+// apart than in K (bw + 1); the ball's own entries reach back over the free dofs between
+// the first and the last dof it touches, plus one.
+int BandHalfWidth(const ModalSystem &S)
+{
+  PetscInt first = -1, last = -1;
+  for (PetscInt d = 0; d < S.n - 1; ++d)
+    if (S.g[d] != 0.0) {
+      if (first < 0) first = d;
+      last = d;
+    }
+  return (int)std::max(S.sys->bw, last - first) + 1;
+}
+
+// Modified Gram-Schmidt on the columns of Phi (n x n), in order.
+void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
+{
   for (PetscInt k = 0; k < n; ++k) {
-    PetscReal *phi = &B->Phi[k * n];
+    PetscReal *phi = &Phi[k * n];
     for (PetscInt l = 0; l < k; ++l) {
-      const PetscReal *psi = &B->Phi[l * n];
+      const PetscReal *psi = &Phi[l * n];
       PetscReal        dot = 0;
       for (PetscInt d = 0; d < n; ++d) dot += phi[d] * psi[d];
       for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * psi[d];
@@ -114,29 +140,118 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
     nrm = std::sqrt(nrm);
     for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
   }
+}
+
+} // namespace
+
+// syev's eigenvectors are accurate only to eps * lambda_max / gap: with the h^-4 spread of
+// the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
+// shifted by its eigenvalue, with a banded LU of A - sigma I, then modified Gram-Schmidt
+// (which cleans up (near-)degenerate pairs such as the rigid modes), bring each vector to
+// round-off relative to its own eigenvalue.
+static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
+{
+  const PetscInt               n       = S.n;
+  const int                    kl      = BandHalfWidth(S);
+  const std::vector<int>       pos     = BandOrder(S);
+  const std::vector<BandEntry> entries = BandEntries(S, contact);
+  const PetscReal              scale   = *std::max_element(lambda.begin(), lambda.end());
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < n; ++k) PetscCall(InverseIterate(entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
+  GramSchmidt(n, B->Phi);
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B)
+// The dense A = M^{-1/2} K_p M^{-1/2} (column-major, n x n) of a phase.
+static std::vector<PetscReal> ModalMatrix(const ModalSystem &S, bool contact)
 {
   const PetscInt         n = S.n;
-  std::vector<PetscReal> A(n * n, 0.0), w(n);
-
-  std::vector<PetscInt>  cols(2 * S.sys->bw + 1);
+  std::vector<PetscReal> A(n * n, 0.0);
+  std::vector<PetscInt>  cols(2 * S.sys->bw + 1), free_of_dof(S.sys->ndof, -1);
   std::vector<PetscReal> vals(2 * S.sys->bw + 1);
-
-  PetscFunctionBeginUser;
-  std::vector<PetscInt> dof_of_node(S.sys->ndof, -1);
-  for (PetscInt d = 0; d < n - 1; ++d) dof_of_node[S.dof[d]] = d;
+  for (PetscInt d = 0; d < n - 1; ++d) free_of_dof[S.dof[d]] = d;
   for (PetscInt d = 0; d < n - 1; ++d) {
     const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
-    for (PetscInt q = 0; q < nc; ++q) A[d + dof_of_node[cols[q]] * n] += vals[q];
+    for (PetscInt q = 0; q < nc; ++q) A[d + free_of_dof[cols[q]] * n] += vals[q];
   }
   if (contact)
     for (PetscInt r = 0; r < n; ++r)
       for (PetscInt c = 0; c < n; ++c) A[r + c * n] += S.k * S.g[r] * S.g[c];
   for (PetscInt r = 0; r < n; ++r)
     for (PetscInt c = 0; c < n; ++c) A[r + c * n] /= std::sqrt(S.mass[r] * S.mass[c]);
+  return A;
+}
+
+// Separated and damped: the ball (undamped) must be a mode of its own, not a mix with the
+// beam's rigid modes (damped by alpha) that share omega = 0. The ball's row of A is zero, so
+// e_ball is an exact eigenvector: it replaces the member of the zero cluster (lambda below
+// (1e-3 frequency unit)^2) nearest to it, and the rest of the cluster is made orthogonal to it.
+static void IsolateBall(const ModalSystem &S, const std::vector<PetscReal> &lambda, ModalBasis *B)
+{
+  const PetscInt  n = S.n, ball = n - 1;
+  const PetscReal zero = std::pow(1e-3 * S.sys->frequency_unit, 2);
+  PetscInt        kb   = -1;
+  for (PetscInt k = 0; k < n; ++k)
+    if (lambda[k] <= zero && (kb < 0 || std::abs(B->Phi[ball + k * n]) > std::abs(B->Phi[ball + kb * n]))) kb = k;
+  if (kb < 0) return;
+  for (PetscInt d = 0; d < n; ++d) B->Phi[d + kb * n] = d == ball ? 1.0 : 0.0;
+  for (PetscInt k = 0; k < n; ++k) {
+    if (k == kb || lambda[k] > zero) continue;
+    PetscReal *phi = &B->Phi[k * n], nrm = 0;
+    phi[ball]      = 0.0;
+    for (PetscInt l = 0; l < k; ++l) { // against the cluster's earlier members (Gram-Schmidt)
+      if (l == kb || lambda[l] > zero) continue;
+      PetscReal dot = 0;
+      for (PetscInt d = 0; d < n; ++d) dot += phi[d] * B->Phi[d + l * n];
+      for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * B->Phi[d + l * n];
+    }
+    for (PetscInt d = 0; d < n; ++d) nrm += phi[d] * phi[d];
+    nrm = std::sqrt(nrm);
+    for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
+  }
+}
+
+// Each mode's omega as its Rayleigh quotient in the energy form (a sum of squares: accurate
+// relative to the mode itself, where syev's is only relative to the largest), its share gamma
+// of c, and its decay rate sigma = phi^T C phi / 2 (C = alpha M + beta K on the beam dofs:
+// alpha/2 + beta omega^2/2 for a beam mode, alpha/2 for its rigid modes, 0 for the ball).
+static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
+{
+  const PetscInt         n = S.n;
+  const BeamSystem      &sys = *S.sys;
+  std::vector<PetscReal> shape(sys.ndof);
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal *phi = &B->Phi[k * n];
+    std::fill(shape.begin(), shape.end(), 0.0);
+    PetscReal norm = 0, c = 0, beam_norm = 0;
+    for (PetscInt d = 0; d < n; ++d) {
+      const PetscReal q = phi[d] / std::sqrt(S.mass[d]);
+      if (d < n - 1) shape[S.dof[d]] = q;
+      norm += S.mass[d] * q * q;
+      c += S.g[d] * q;
+      if (d < n - 1) beam_norm += S.mass[d] * q * q;
+    }
+    PetscReal twoU = 2 * BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof);
+    B->rate[k]     = sys.Damped() ? 0.5 * (sys.damping_mass * beam_norm + sys.damping_stiffness * twoU) / norm : 0.0;
+    if (contact) twoU += S.k * c * c;
+    B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
+    B->gamma[k] = c;
+  }
+}
+
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B)
+{
+  const PetscInt         n = S.n;
+  const BeamSystem      &sys = *S.sys;
+  std::vector<PetscReal> A, w(n);
+
+  PetscFunctionBeginUser;
+  PetscCheck(!(contact && sys.Damped()), PETSC_COMM_SELF, PETSC_ERR_SUP,
+             "-beam_damping_mass %g and -beam_damping_stiffness %g: in contact the damping is not proportional (the ball and the contact spring carry none), so the coupled "
+             "modes have no closed form; the exact modal solution needs both 0 (use a tight TS run as the reference)",
+             (double)sys.damping_mass, (double)sys.damping_stiffness);
+  A = ModalMatrix(S, contact);
   {
     PetscBLASInt bn, lwork, info;
     PetscCall(PetscBLASIntCast(n, &bn));
@@ -148,26 +263,51 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   B->Phi = A;
   B->omega.assign(n, 0.0);
   B->gamma.assign(n, 0.0);
+  B->rate.assign(n, 0.0);
   PetscCall(RefineBasis(S, contact, w, B));
-  // Refine each eigenvalue by its Rayleigh quotient in the energy form (a sum of squares:
-  // accurate relative to the mode itself, where syev's is only relative to the largest).
-  std::vector<PetscReal> shape(S.sys->ndof);
-  for (PetscInt k = 0; k < n; ++k) {
-    const PetscReal *phi = &B->Phi[k * n];
-    std::fill(shape.begin(), shape.end(), 0.0);
-    PetscReal norm = 0, c = 0;
-    for (PetscInt d = 0; d < n; ++d) {
-      const PetscReal q = phi[d] / std::sqrt(S.mass[d]);
-      if (d < n - 1) shape[S.dof[d]] = q;
-      norm += S.mass[d] * q * q;
-      c += S.g[d] * q;
-    }
-    PetscReal twoU = 2 * BeamSystemStrainEnergy(*S.sys, shape.data(), S.sys->fields, 0, S.sys->ndof);
-    if (contact) twoU += S.k * c * c;
-    B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
-    B->gamma[k] = c;
-  }
+  if (!contact && sys.Damped()) IsolateBall(S, w, B);
+  ModalQuotients(S, contact, B);
   PetscFunctionReturn(0);
+}
+
+// Mode k of a phase: q'' + 2 sigma q' + w^2 q = 0 from (z, zd) at s = 0, in closed form
+//   q(s) = E(s) [z (c + sigma S) + zd S],  q'(s) = E(s) [zd (c - sigma S) - w^2 z S],
+// E = exp(-sigma s); with w_d = sqrt(w^2 - sigma^2) (underdamped) c = cos(w_d s), S =
+// sin(w_d s)/w_d; critically damped c = 1, S = s; with mu = sqrt(sigma^2 - w^2) (overdamped,
+// and rigid modes with alpha) c = cosh(mu s), S = sinh(mu s)/mu, in exponentials that neither
+// overflow nor cancel.
+void ModalModeAt(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal s, PetscReal *q, PetscReal *qd)
+{
+  PetscReal Ec, ES; // E c and E S
+  if (w > sigma) {
+    const PetscReal wd = std::sqrt((w - sigma) * (w + sigma)), E = std::exp(-sigma * s);
+    Ec                 = E * std::cos(wd * s);
+    ES                 = E * std::sin(wd * s) / wd;
+  } else if (w == sigma) {
+    Ec = std::exp(-sigma * s);
+    ES = s * Ec;
+  } else {
+    const PetscReal mu = std::sqrt((sigma - w) * (sigma + w)), slow = std::exp(-w * w / (sigma + mu) * s); // exp((mu - sigma) s)
+    Ec                 = 0.5 * (slow + std::exp(-(sigma + mu) * s));
+    ES                 = -slow * std::expm1(-2 * mu * s) / (2 * mu);
+  }
+  *q  = z * (Ec + sigma * ES) + zd * ES;
+  *qd = zd * (Ec - sigma * ES) - w * w * z * ES;
+}
+
+// Bound on |q^(p)(s)| over s >= 0 for mode k above. The energy q'^2 + w^2 q^2 never grows
+// (its rate is -4 sigma q'^2), so with u = (w q, q'), |u| <= R = hypot(w z, zd), and q^(p) =
+// l_p . u with l_0 = (1/w, 0), l_1 = (0, 1), l_{p+2} = -2 sigma l_{p+1} - w^2 l_p. A rigid
+// mode (w = 0) has q' = zd exp(-2 sigma s): |q^(p)| <= |zd| (2 sigma)^(p-1), p >= 1.
+PetscReal ModalModeBound(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, int p)
+{
+  if (w == 0.0) return p == 0 ? std::abs(z) + (sigma > 0 ? std::abs(zd) / (2 * sigma) : PETSC_INFINITY) : std::abs(zd) * std::pow(2 * sigma, p - 1);
+  PetscReal l[2] = {1 / w, 0}, m[2] = {0, 1};
+  for (int i = 0; i < p; ++i) {
+    const PetscReal n0 = -2 * sigma * m[0] - w * w * l[0], n1 = -2 * sigma * m[1] - w * w * l[1];
+    l[0] = m[0], l[1] = m[1], m[0] = n0, m[1] = n1;
+  }
+  return std::hypot(l[0], l[1]) * std::hypot(w * z, zd);
 }
 
 bool ModalFirstCrossing(const ModalPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)

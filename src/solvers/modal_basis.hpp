@@ -4,6 +4,8 @@
 // ball). A symmetric eigen-decomposition of M^{-1/2} K_p M^{-1/2} (LAPACK syev, refined by
 // banded inverse iteration) gives q(t) in closed form in each phase,
 //   q(t0 + s) = M^{-1/2} Phi z(s),  z_k(s) = z_k cos(w_k s) + zdot_k sin(w_k s) / w_k,
+// or, with Rayleigh damping in a separated phase, the exact damped solution of each mode
+// (ModalModeAt),
 // and events are the first sign changes of c(s) = g^T q (separation, re-contact) and of
 // dc/ds (maximum compression), bracketed with steps that provably cannot skip a crossing (a
 // Taylor bound with |f''| <= sum_k |gamma_k a_k| w_k^2) and bisected to round-off. Serial
@@ -18,7 +20,8 @@
 
 namespace beamimpact {
 
-// The free degrees of freedom: beam dofs that are not held, then the ball.
+// The free degrees of freedom: beam dofs that are not held (any number of fields per node;
+// the ball touches the dofs of ContactCoupling), then the ball.
 struct ModalSystem {
   const BeamSystem      *sys = nullptr;
   std::vector<PetscInt>  dof;  // free dof -> beam dof (the last is the ball: -1)
@@ -34,15 +37,26 @@ struct ModalBasis {
   std::vector<PetscReal> omega; // rad/s, per mode
   std::vector<PetscReal> Phi;   // n x n, column-major: Phi[r + k n] (orthonormal eigenvectors)
   std::vector<PetscReal> gamma; // g^T M^{-1/2} Phi_k: contribution of mode k to c
+  std::vector<PetscReal> rate;  // 1/s, sigma_k = zeta_k omega_k: z_k'' + 2 sigma_k z_k' + omega_k^2 z_k = 0
 };
-// The basis in contact (K + k g g^T) or separated (K).
+// The basis in contact (K + k g g^T) or separated (K). With Rayleigh damping C = alpha M +
+// beta K on the beam dofs (BeamSystem::damping_mass, damping_stiffness) the separated basis
+// decouples it exactly (sigma = alpha/2 + beta omega^2/2 a beam mode, alpha/2 a rigid one, 0
+// the ball's); in contact it does not (the ball and the spring are undamped): PETSC_ERR_SUP.
 PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B);
+
+// Mode (omega w, rate sigma) from z, zd at s = 0: z and z' at s, exact for every damping
+// (under-, critically and overdamped, rigid). Bound: sup over s >= 0 of |d^p z / ds^p|.
+void      ModalModeAt(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal s, PetscReal *q, PetscReal *qd);
+PetscReal ModalModeBound(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, int p);
 
 // A phase's solution from its start: modal coordinates and velocities.
 struct ModalPhase {
   const ModalSystem *S = nullptr;
   const ModalBasis  *B = nullptr;
   std::vector<PetscReal> z, zd; // modal displacement and velocity at s = 0
+
+  bool Damped(PetscInt k) const { return !B->rate.empty() && B->rate[k] > 0; }
 
   void From(const std::vector<PetscReal> &q, const std::vector<PetscReal> &qd)
   {
@@ -64,7 +78,8 @@ struct ModalPhase {
     zds.resize(n);
     for (PetscInt k = 0; k < n; ++k) {
       const PetscReal w = B->omega[k];
-      if (w == 0.0) {
+      if (Damped(k)) ModalModeAt(w, B->rate[k], z[k], zd[k], s, &zs[k], &zds[k]);
+      else if (w == 0.0) {
         zs[k]  = z[k] + zd[k] * s;
         zds[k] = zd[k];
       } else {
@@ -81,6 +96,13 @@ struct ModalPhase {
     for (PetscInt k = 0; k < S->n; ++k) {
       const PetscReal w = B->omega[k], gk = B->gamma[k];
       if (gk == 0.0) continue;
+      if (Damped(k)) { // q'' = -2 sigma q' - w^2 q, and on
+        PetscReal d[4];
+        ModalModeAt(w, B->rate[k], z[k], zd[k], s, &d[0], &d[1]);
+        for (int i = 2; i <= p; ++i) d[i] = -2 * B->rate[k] * d[i - 1] - w * w * d[i - 2];
+        v += gk * d[p];
+        continue;
+      }
       if (w == 0.0) {
         v += gk * (p == 0 ? z[k] + zd[k] * s : p == 1 ? zd[k] : 0.0);
         continue;
@@ -102,6 +124,10 @@ struct ModalPhase {
     PetscReal b = 0;
     for (PetscInt k = 0; k < S->n; ++k) {
       const PetscReal w = B->omega[k];
+      if (Damped(k)) {
+        b += std::abs(B->gamma[k]) * ModalModeBound(w, B->rate[k], z[k], zd[k], p);
+        continue;
+      }
       if (w == 0.0) continue;
       b += std::abs(B->gamma[k]) * std::hypot(z[k], zd[k] / w) * std::pow(w, p);
     }

@@ -1,5 +1,5 @@
 // Mode frequencies of the beam: SLEPc eigen-solve of K phi = omega^2 M phi over
-// the free nodes, and the continuum beta-L reference. See modes.hpp.
+// the free dofs, and the continuum beta-L reference. See modes.hpp.
 #include "solvers/modes.hpp"
 
 #include <slepceps.h>
@@ -10,7 +10,7 @@
 
 namespace beamimpact {
 
-PetscInt BeamFreeNodeCount(const BeamSystem &op)
+PetscInt BeamFreeDofCount(const BeamSystem &op)
 {
   PetscInt n = 0;
   for (char held : op.held) n += !held;
@@ -22,7 +22,7 @@ static PetscErrorCode ModesCountCheck(MPI_Comm comm, PetscInt count, PetscInt nf
   PetscFunctionBeginUser;
   PetscCheck(count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", count);
   PetscCheck(count <= nfree, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-modes_count %" PetscInt_FMT " is not allowed: the beam has %" PetscInt_FMT " free nodes, so at most %" PetscInt_FMT " modes exist (use 1..%" PetscInt_FMT " or more -beam_nodes)", count,
+             "-modes_count %" PetscInt_FMT " is not allowed: the beam has %" PetscInt_FMT " free dofs, so at most %" PetscInt_FMT " modes exist (use 1..%" PetscInt_FMT " or more -beam_nodes)", count,
              nfree, nfree, nfree);
   PetscFunctionReturn(0);
 }
@@ -34,7 +34,7 @@ PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamS
   PetscCall(PetscOptionsInt("-modes_count", "Number of modes to report, counted from omega = 0 (rigid modes included, reported as 0)", "", p->count, &p->count, NULL));
   PetscOptionsEnd();
   PetscCheck(p->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", p->count);
-  if (op) PetscCall(ModesCountCheck(comm, p->count, BeamFreeNodeCount(*op)));
+  if (op) PetscCall(ModesCountCheck(comm, p->count, BeamFreeDofCount(*op)));
   PetscFunctionReturn(0);
 }
 
@@ -66,135 +66,175 @@ static PetscReal HashUniform(PetscInt i)
   return 2.0 * static_cast<PetscReal>(z >> 11) / 9007199254740992.0 - 1.0; // 2^53
 }
 
-PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
+// The eigenproblem over the free dofs: K and the diagonal lumped M, distributed by rows.
+struct ModesProblem {
+  std::vector<PetscInt> free_dofs;  // free row -> dof, in dof order
+  std::vector<PetscInt> free_index; // dof -> free row (-1 for held dofs)
+  Mat                   K = nullptr, M = nullptr;
+  PetscInt              rstart = 0, rend = 0; // rows owned by this rank
+};
+
+static PetscErrorCode ModesProblemDestroy(ModesProblem *pb)
 {
-  Mat         K, M;
-  EPS         eps;
-  ST          st;
-  KSP         ksp;
-  PC          pc;
-  Vec         x, x0;
-  VecScatter  toall;
-  Vec         xall;
-  PetscInt    rstart, rend, nconv;
-  PetscMPIInt size;
-
   PetscFunctionBeginUser;
-  PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "BeamModesCompute: out must not be NULL");
-  PetscCheck(op.ndof >= 3 && op.frequency_unit > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.ndof && (PetscInt)op.held.size() == op.ndof, comm, PETSC_ERR_ARG_WRONG,
-             "BeamModesCompute: the beam system is not built (%" PetscInt_FMT " dofs, frequency unit %g rad/s, L = %g)", op.ndof, (double)op.frequency_unit, (double)op.L);
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCall(ModesEnsureSlepc());
+  PetscCall(MatDestroy(&pb->M));
+  PetscCall(MatDestroy(&pb->K));
+  PetscFunctionReturn(0);
+}
 
-  // Unknowns: the free nodes, in node order.
-  std::vector<PetscInt> free_nodes, free_index(op.ndof, -1);
+// Numbers the free dofs and assembles K (at most 2 bw + 1 nonzeros a row) and M; PETSC_DECIDE
+// splits the rows as PetscSplitOwnership does.
+static PetscErrorCode ModesProblemAssemble(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesProblem *pb)
+{
+  PetscFunctionBeginUser;
+  pb->free_index.assign(op.ndof, -1);
   for (PetscInt i = 0; i < op.ndof; ++i)
     if (!op.held[i]) {
-      free_index[i] = (PetscInt)free_nodes.size();
-      free_nodes.push_back(i);
+      pb->free_index[i] = (PetscInt)pb->free_dofs.size();
+      pb->free_dofs.push_back(i);
     }
-  const PetscInt nfree = (PetscInt)free_nodes.size();
+  const PetscInt nfree = (PetscInt)pb->free_dofs.size();
   PetscCall(ModesCountCheck(comm, count, nfree));
 
-  // K (<= 5 nonzeros a row) and the diagonal lumped M; PETSC_DECIDE splits the rows
-  // as PetscSplitOwnership does.
   const PetscInt         width = 2 * op.bw + 1;
   std::vector<PetscInt>  cols(width);
   std::vector<PetscReal> vals(width);
-  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, width, NULL, width - 1, NULL, &K));
-  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 1, NULL, 0, NULL, &M));
-  PetscCall(MatGetOwnershipRange(K, &rstart, &rend));
-  for (PetscInt r = rstart; r < rend; ++r) {
-    const PetscInt i = free_nodes[r];
+  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, width, NULL, width - 1, NULL, &pb->K));
+  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, nfree, nfree, 1, NULL, 0, NULL, &pb->M));
+  PetscCall(MatGetOwnershipRange(pb->K, &pb->rstart, &pb->rend));
+  for (PetscInt r = pb->rstart; r < pb->rend; ++r) {
+    const PetscInt i = pb->free_dofs[r];
     const PetscInt n = BeamSystemStiffnessRow(op, i, cols.data(), vals.data());
-    for (PetscInt q = 0; q < n; ++q) cols[q] = free_index[cols[q]];
-    PetscCall(MatSetValues(K, 1, &r, n, cols.data(), vals.data(), INSERT_VALUES));
-    PetscCall(MatSetValue(M, r, r, op.mass[i], INSERT_VALUES));
+    for (PetscInt q = 0; q < n; ++q) cols[q] = pb->free_index[cols[q]];
+    PetscCall(MatSetValues(pb->K, 1, &r, n, cols.data(), vals.data(), INSERT_VALUES));
+    PetscCall(MatSetValue(pb->M, r, r, op.mass[i], INSERT_VALUES));
   }
-  PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(MatSetOption(K, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
-  PetscCall(MatSetOption(M, MAT_SPD, PETSC_TRUE));
+  PetscCall(MatAssemblyBegin(pb->K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyBegin(pb->M, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pb->K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pb->M, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetOption(pb->K, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(MatSetOption(pb->K, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+  PetscCall(MatSetOption(pb->M, MAT_SPD, PETSC_TRUE));
+  PetscFunctionReturn(0);
+}
 
-  // Natural frequency unit sqrt(EI/mu)/L^2 (rad/s): every flexural mode is > 3.5 of it.
-  const PetscReal unit = op.frequency_unit;
+// Shift-and-invert at sigma = -unit^2 (below every eigenvalue, so K - sigma M is positive
+// definite even with rigid modes): the wanted modes are those nearest sigma. The Krylov start
+// vector is a hash of the free row, the same whatever the number of ranks.
+static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, PetscInt count, PetscReal unit, EPS *eps)
+{
+  PetscMPIInt size;
+  ST          st;
+  KSP         ksp;
+  PC          pc;
+  Vec         x0;
+  PetscScalar *a;
 
-  // Shift-and-invert at sigma = -unit^2 (below every eigenvalue, so K - sigma M is
-  // positive definite even with rigid modes): the wanted modes are those nearest sigma.
-  PetscCall(EPSCreate(comm, &eps));
-  PetscCall(EPSSetOptionsPrefix(eps, "modes_"));
-  PetscCall(EPSSetOperators(eps, K, M));
-  PetscCall(EPSSetProblemType(eps, EPS_GHEP));
-  PetscCall(EPSSetType(eps, EPSKRYLOVSCHUR));
-  PetscCall(EPSSetDimensions(eps, count, PETSC_DEFAULT, PETSC_DEFAULT));
-  PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
-  PetscCall(EPSSetTarget(eps, -unit * unit));
-  PetscCall(EPSSetTolerances(eps, 1e-12, 1000));
-  PetscCall(EPSGetST(eps, &st));
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(EPSCreate(comm, eps));
+  PetscCall(EPSSetOptionsPrefix(*eps, "modes_"));
+  PetscCall(EPSSetOperators(*eps, pb.K, pb.M));
+  PetscCall(EPSSetProblemType(*eps, EPS_GHEP));
+  PetscCall(EPSSetType(*eps, EPSKRYLOVSCHUR));
+  PetscCall(EPSSetDimensions(*eps, count, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(EPSSetWhichEigenpairs(*eps, EPS_TARGET_MAGNITUDE));
+  PetscCall(EPSSetTarget(*eps, -unit * unit));
+  PetscCall(EPSSetTolerances(*eps, 1e-12, 1000));
+  PetscCall(EPSGetST(*eps, &st));
   PetscCall(STSetType(st, STSINVERT));
   PetscCall(STGetKSP(st, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  PetscCall(MatCreateVecs(K, &x, NULL));
-  PetscCall(VecDuplicate(x, &x0));
-  {
-    PetscScalar *a;
-    PetscCall(VecGetArray(x0, &a));
-    for (PetscInt r = rstart; r < rend; ++r) a[r - rstart] = 1.0 + 0.5 * HashUniform(r);
-    PetscCall(VecRestoreArray(x0, &a));
-    PetscCall(EPSSetInitialSpace(eps, 1, &x0));
-  }
-  PetscCall(EPSSetFromOptions(eps));
-  PetscCall(EPSSolve(eps));
-  PetscCall(EPSGetConverged(eps, &nconv));
-  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "BeamModesCompute: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " modes requested by -modes_count", nconv, count);
+  PetscCall(MatCreateVecs(pb.K, &x0, NULL));
+  PetscCall(VecGetArray(x0, &a));
+  for (PetscInt r = pb.rstart; r < pb.rend; ++r) a[r - pb.rstart] = 1.0 + 0.5 * HashUniform(r);
+  PetscCall(VecRestoreArray(x0, &a));
+  PetscCall(EPSSetInitialSpace(*eps, 1, &x0));
+  PetscCall(VecDestroy(&x0)); // the EPS keeps its own reference
+  PetscCall(EPSSetFromOptions(*eps));
+  PetscFunctionReturn(0);
+}
 
-  // Each eigenvalue is recomputed as the Rayleigh quotient omega^2 = 2 U(phi) / (phi^T M phi)
-  // with U the strain energy summed from the curvatures (a sum of squares, no
-  // cancellation). The eigenvalue from the solver carries an absolute round-off
-  // ~ eps ||M^-1 K|| ~ eps 16 EI/(mu h^4) (1e-4 (EI/mu)/L^4 at N = 641), which
-  // would blur the rigid modes and the fundamental on fine grids; the quotient's
-  // error is quadratic in the eigenvector error, so it is accurate to round-off
-  // in both. Every rank evaluates it on the same gathered vector.
-  std::vector<PetscReal>              lambda(count);
-  std::vector<std::vector<PetscReal>> phis(count, std::vector<PetscReal>(op.ndof, 0.0));
+// Mass-normalises phi (over every dof) and fixes its sign: the deflection (field 0) of the
+// first node above 1e-3 of the largest |phi| is positive; failing that (a mode of the other
+// fields only), the first dof above it. Returns the mass norm before scaling (0: a zero vector).
+static PetscReal ModeNormalise(const BeamSystem &op, std::vector<PetscReal> &phi)
+{
+  PetscReal mnorm = 0.0, amax = 0.0;
+  for (PetscInt i = 0; i < op.ndof; ++i) mnorm += op.mass[i] * phi[i] * phi[i];
+  mnorm = std::sqrt(mnorm);
+  if (!(mnorm > 0)) return mnorm;
+  for (PetscReal &v : phi) v /= mnorm;
+  for (PetscReal v : phi) amax = std::max(amax, std::abs(v));
+  PetscInt first = -1;
+  for (PetscInt i = 0; i < op.nodes && first < 0; ++i)
+    if (std::abs(phi[op.Dof(i)]) > 1e-3 * amax) first = op.Dof(i);
+  for (PetscInt d = 0; d < op.ndof && first < 0; ++d)
+    if (std::abs(phi[d]) > 1e-3 * amax) first = d;
+  if (phi[first] < 0)
+    for (PetscReal &w : phi) w = -w;
+  return mnorm;
+}
+
+// The converged eigenvectors on every rank (phis[m][dof], mass-normalised, 0 at held dofs) and
+// each eigenvalue recomputed as the Rayleigh quotient omega^2 = 2 U(phi) / (phi^T M phi), with
+// U the strain energy summed from the strain terms (a sum of squares, no cancellation). The
+// solver's eigenvalue carries an absolute round-off ~ eps ||M^-1 K|| ~ eps 16 EI/(mu h^4)
+// (1e-4 (EI/mu)/L^4 at N = 641), which would blur the rigid modes and the fundamental on fine
+// grids; the quotient's error is quadratic in the eigenvector error, so it is accurate to
+// round-off in both. Every rank evaluates it on the same gathered vector.
+static PetscErrorCode ModesExtract(MPI_Comm comm, EPS eps, const BeamSystem &op, const ModesProblem &pb, PetscInt count, std::vector<PetscReal> *lambda,
+                                   std::vector<std::vector<PetscReal>> *phis)
+{
+  const PetscInt nfree = (PetscInt)pb.free_dofs.size();
+  const PetscReal unit = op.frequency_unit;
+  Vec            x, xall;
+  VecScatter     toall;
+
+  PetscFunctionBeginUser;
+  lambda->assign(count, 0.0);
+  phis->assign(count, std::vector<PetscReal>(op.ndof, 0.0));
+  PetscCall(MatCreateVecs(pb.K, &x, NULL));
   PetscCall(VecScatterCreateToAll(x, &toall, &xall));
   for (PetscInt m = 0; m < count; ++m) {
-    PetscScalar kr;
+    PetscScalar        kr;
+    const PetscScalar *a;
+    std::vector<PetscReal> &phi = (*phis)[m];
     PetscCall(EPSGetEigenpair(eps, m, &kr, NULL, x, NULL));
     PetscCall(VecScatterBegin(toall, x, xall, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecScatterEnd(toall, x, xall, INSERT_VALUES, SCATTER_FORWARD));
-    const PetscScalar *a;
     PetscCall(VecGetArrayRead(xall, &a));
-    std::vector<PetscReal> &phi = phis[m];
-    for (PetscInt r = 0; r < nfree; ++r) phi[free_nodes[r]] = PetscRealPart(a[r]);
+    for (PetscInt r = 0; r < nfree; ++r) phi[pb.free_dofs[r]] = PetscRealPart(a[r]);
     PetscCall(VecRestoreArrayRead(xall, &a));
-    // Mass-normalise, then fix the sign: first node above 1e-3 of the largest |phi| positive.
-    PetscReal mnorm = 0.0, amax = 0.0;
-    for (PetscInt i = 0; i < op.ndof; ++i) mnorm += op.mass[i] * phi[i] * phi[i];
-    mnorm = std::sqrt(mnorm);
-    PetscCheck(mnorm > 0, comm, PETSC_ERR_PLIB, "BeamModesCompute: eigenvector %" PetscInt_FMT " is zero", m);
-    for (PetscReal &v : phi) v /= mnorm;
-    for (PetscReal v : phi) amax = std::max(amax, std::abs(v));
-    for (PetscReal v : phi)
-      if (std::abs(v) > 1e-3 * amax) {
-        if (v < 0)
-          for (PetscReal &w : phi) w = -w;
-        break;
-      }
-    lambda[m] = 2.0 * BeamSystemStrainEnergy(op, phi.data(), op.fields, 0, op.ndof); // phi^T M phi = 1
-    PetscCall(PetscInfo(eps, "mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2 = %.6e (EI/mu)/L^4\n", m, (double)PetscRealPart(kr), (double)lambda[m],
-                        (double)(lambda[m] / (unit * unit))));
+    PetscCheck(ModeNormalise(op, phi) > 0, comm, PETSC_ERR_PLIB, "BeamModesCompute: eigenvector %" PetscInt_FMT " is zero", m);
+    (*lambda)[m] = 2.0 * BeamSystemStrainEnergy(op, phi.data(), op.fields, 0, op.ndof); // phi^T M phi = 1
+    PetscCall(PetscInfo(eps, "mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2 = %.6e (EI/mu)/L^4\n", m, (double)PetscRealPart(kr), (double)(*lambda)[m],
+                        (double)((*lambda)[m] / (unit * unit))));
   }
   PetscCall(VecScatterDestroy(&toall));
   PetscCall(VecDestroy(&xall));
+  PetscCall(VecDestroy(&x));
+  PetscFunctionReturn(0);
+}
 
-  // Ascending (the solver's order, up to round-off among nearly equal modes).
+// The deflection (field 0) at the nodes of a vector over the dofs.
+static std::vector<PetscReal> DeflectionField(const BeamSystem &op, std::vector<PetscReal> &&phi)
+{
+  if (op.fields == 1) return std::move(phi);
+  std::vector<PetscReal> w(op.nodes);
+  for (PetscInt i = 0; i < op.nodes; ++i) w[i] = phi[op.Dof(i)];
+  return w;
+}
+
+// The result in ascending order (the solver's, up to round-off among nearly equal modes);
+// modes below kModesRigidThreshold of the frequency unit are rigid: omega, period 0.
+static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lambda, std::vector<std::vector<PetscReal>> &phis, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
+{
+  const PetscInt        count = (PetscInt)lambda.size();
   std::vector<PetscInt> order(count);
   for (PetscInt m = 0; m < count; ++m) order[m] = m;
   std::stable_sort(order.begin(), order.end(), [&](PetscInt p, PetscInt q) { return lambda[p] < lambda[q]; });
@@ -205,9 +245,9 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
   for (PetscInt m = 0; m < count; ++m) {
-    if (shapes) (*shapes)[m] = std::move(phis[order[m]]);
+    if (shapes) (*shapes)[m] = DeflectionField(op, std::move(phis[order[m]]));
     const PetscReal w = std::sqrt(std::max<PetscReal>(lambda[order[m]], 0.0));
-    if (w < kModesRigidThreshold * unit) {
+    if (w < kModesRigidThreshold * op.frequency_unit) {
       ++out->rigid_count;
       continue; // reported as exactly 0, period 0
     }
@@ -215,12 +255,30 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
     out->frequency[m] = w / (2.0 * PETSC_PI);
     out->period[m]    = 2.0 * PETSC_PI / w;
   }
+}
 
-  PetscCall(VecDestroy(&x0));
-  PetscCall(VecDestroy(&x));
+PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
+{
+  ModesProblem                        pb;
+  EPS                                 eps;
+  PetscInt                            nconv;
+  std::vector<PetscReal>              lambda;
+  std::vector<std::vector<PetscReal>> phis;
+
+  PetscFunctionBeginUser;
+  PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "BeamModesCompute: out must not be NULL");
+  PetscCheck(op.ndof >= 3 && op.frequency_unit > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.ndof && (PetscInt)op.held.size() == op.ndof, comm, PETSC_ERR_ARG_WRONG,
+             "BeamModesCompute: the beam system is not built (%" PetscInt_FMT " dofs, frequency unit %g rad/s, L = %g)", op.ndof, (double)op.frequency_unit, (double)op.L);
+  PetscCall(ModesEnsureSlepc());
+  PetscCall(ModesProblemAssemble(comm, op, count, &pb));
+  PetscCall(ModesSolverCreate(comm, pb, count, op.frequency_unit, &eps));
+  PetscCall(EPSSolve(eps));
+  PetscCall(EPSGetConverged(eps, &nconv));
+  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "BeamModesCompute: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " modes requested by -modes_count", nconv, count);
+  PetscCall(ModesExtract(comm, eps, op, pb, count, &lambda, &phis));
+  ModesReport(op, lambda, phis, out, shapes);
   PetscCall(EPSDestroy(&eps));
-  PetscCall(MatDestroy(&M));
-  PetscCall(MatDestroy(&K));
+  PetscCall(ModesProblemDestroy(&pb));
   PetscFunctionReturn(0);
 }
 

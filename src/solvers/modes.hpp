@@ -2,14 +2,14 @@
 // semi-discrete operator (MODEL.md section 2), and the continuum reference from
 // the beta-L tables (MODEL.md section 1).
 //
-// Discrete:   K phi = omega^2 M phi   over the free (not held) nodes,
-//   K the stiffness of the system (system/beam_system.hpp, N/m), M = diag(mass) the lumped mass (kg),
-//   omega in rad/s. Held nodes (clamped/pinned ends, clamped region) are
-//   Dirichlet y = 0 and are not unknowns. Solved with SLEPc (GHEP, Krylov-Schur,
+// Discrete:   K phi = omega^2 M phi   over the free (not held) dofs, any number of fields
+//   per node, K the stiffness of the system (system/beam_system.hpp), M = diag(mass) the
+//   lumped mass per dof, omega in rad/s. Held dofs (clamped/pinned ends, clamped region)
+//   are Dirichlet y = 0 and are not unknowns. Solved with SLEPc (GHEP, Krylov-Schur,
 //   shift-and-invert at a small negative target so the rigid modes, omega = 0,
 //   are found), on the communicator passed in; the result is replicated on
 //   every rank. Each omega^2 is then the Rayleigh quotient 2 U(phi)/(phi^T M phi)
-//   with U the strain energy (a sum of squared curvatures), which stays accurate
+//   with U the strain energy (a sum of squared strains), which stays accurate
 //   where eps ||M^-1 K|| would blur the solver's own eigenvalue (fine grids).
 // Continuum:  omega_n = (beta_n L)^2 sqrt(EI / (mu L^4))  for the n-th flexural
 //   mode of a uniform Euler-Bernoulli beam with the given end supports.
@@ -30,7 +30,7 @@ struct ModesParams {
 };
 
 // Reads -modes_count (one PetscOptionsBegin block, no prefix) and checks it is
-// >= 1 and, when op is given, <= the number of free nodes of op.
+// >= 1 and, when op is given, <= the number of free dofs of op.
 // BeamModesCompute checks the upper bound again (with the same message).
 PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamSystem *op = nullptr);
 
@@ -50,15 +50,16 @@ struct ModesResult {
 // at N = 641).
 constexpr PetscReal kModesRigidThreshold = 1e-3;
 
-// Number of free (not held) nodes: the size of the eigenproblem.
-PetscInt BeamFreeNodeCount(const BeamSystem &op);
+// Number of free (not held) dofs: the size of the eigenproblem.
+PetscInt BeamFreeDofCount(const BeamSystem &op);
 
 // The first `count` modes (rigid ones included, counted from omega = 0 upward)
 // of the discrete beam op, on communicator comm (any number of ranks; the
-// result is the same on every rank). 1 <= count <= BeamFreeNodeCount(op).
-// shapes (optional): shapes[m][i] is mode m at node i (0 at held nodes), for all
-// N nodes on every rank, mass-normalised (sum_i m_i phi_i^2 = 1, units kg^-1/2),
-// sign fixed so that the first node with |phi_i| > 1e-3 max|phi| is positive.
+// result is the same on every rank). 1 <= count <= BeamFreeDofCount(op).
+// shapes (optional): shapes[m][i] is the deflection (field 0) of mode m at node i (0 at
+// held dofs), for all N nodes on every rank; the mode is mass-normalised over all its dofs
+// (sum_d m_d phi_d^2 = 1, units kg^-1/2 for a deflection), sign fixed so that the first node
+// with |phi_i| > 1e-3 max_d |phi_d| is positive.
 // Degenerate modes (the two free-free rigid modes) are an arbitrary
 // M-orthonormal basis of their space.
 // The EPS takes options with the prefix "modes_" (e.g. -modes_eps_view).

@@ -245,6 +245,45 @@ PetscErrorCode RebuildAcceleration(TS ts, PetscReal t0, PetscReal h, PetscBool *
   PetscFunctionReturn(0);
 }
 
+// The stage of a step of size h from t0: predictor A_{n+1} = A_n at the alpha level, then the
+// solve for the unknown D = X_alpha - Xp; *ok false when the solve or the stage check fails.
+static PetscErrorCode StageSolve(TS ts, PetscReal t0, PetscReal h, PetscBool *ok)
+{
+  GAlpha2        *ga = Data(ts);
+  const PetscReal am = ga->alpha_m, af = ga->alpha_f, g = ga->gamma, b = ga->beta;
+
+  PetscFunctionBeginUser;
+  ga->stage_time = t0 + af * h;
+  ga->shift_V    = g / (b * h);
+  ga->shift_A    = am / (af * b * h * h);
+  PetscCall(VecCopy(ga->X0, ga->Xp));
+  PetscCall(VecAXPBYPCZ(ga->Xp, af * h, 0.5 * af * h * h, 1.0, ga->V0, ga->A0));
+  PetscCall(VecWAXPY(ga->Vp, af * h, ga->A0, ga->V0));
+  PetscCall(VecCopy(ga->A0, ga->Ap));
+  PetscCall(TSPreStage(ts, ga->stage_time));
+  PetscCall(SolveForD(ts, ok));
+  PetscCall(TSPostStage(ts, ga->stage_time, 0, &ga->Xs));
+  PetscCall(TSAdaptCheckStage(ts->adapt, ts, ga->stage_time, ga->Xs, ok));
+  PetscFunctionReturn(0);
+}
+
+// A_{n+1} from D, then V_{n+1}, X_{n+1} (the TS solution) from the Newmark formulas.
+static PetscErrorCode NewmarkUpdate(TS ts, PetscReal h)
+{
+  GAlpha2        *ga = Data(ts);
+  Vec             X = ts->vec_sol, V = ts->vec_dot;
+  const PetscReal af = ga->alpha_f, g = ga->gamma, b = ga->beta;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecWAXPY(ga->A, 1 / (af * b * h * h), ga->D, ga->A0));
+  PetscCall(VecCopy(ga->V0, V));
+  PetscCall(VecAXPBYPCZ(V, h * (1 - g), h * g, 1.0, ga->A0, ga->A));
+  PetscCall(VecCopy(ga->X0, X));
+  PetscCall(VecAXPY(X, h, ga->V0));
+  PetscCall(VecAXPBYPCZ(X, h * h * (0.5 - b), h * h * b, 1.0, ga->A0, ga->A));
+  PetscFunctionReturn(0);
+}
+
 // ---------------------------------------------------------------- TS methods
 
 PetscErrorCode TSStep_GAlpha2(TS ts)
@@ -267,34 +306,14 @@ PetscErrorCode TSStep_GAlpha2(TS ts)
 
   while (!ts->reason) {
     const PetscReal h  = ts->time_step;
-    const PetscReal am = ga->alpha_m, af = ga->alpha_f, g = ga->gamma, b = ga->beta;
     PetscBool       ok = PETSC_TRUE, accept = PETSC_TRUE;
     PetscReal       next_h = h;
 
     PetscCheck(h > 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: time step %g must be positive", (double)h);
     if (restart) PetscCall(RebuildAcceleration(ts, t0, h, &ok));
+    if (ok) PetscCall(StageSolve(ts, t0, h, &ok));
     if (ok) {
-      // Predictor A_{n+1} = A_n at the alpha level; unknown D = X_alpha - Xp.
-      ga->stage_time = t0 + af * h;
-      ga->shift_V    = g / (b * h);
-      ga->shift_A    = am / (af * b * h * h);
-      PetscCall(VecCopy(ga->X0, ga->Xp));
-      PetscCall(VecAXPBYPCZ(ga->Xp, af * h, 0.5 * af * h * h, 1.0, ga->V0, ga->A0));
-      PetscCall(VecWAXPY(ga->Vp, af * h, ga->A0, ga->V0));
-      PetscCall(VecCopy(ga->A0, ga->Ap));
-      PetscCall(TSPreStage(ts, ga->stage_time));
-      PetscCall(SolveForD(ts, &ok));
-      PetscCall(TSPostStage(ts, ga->stage_time, 0, &ga->Xs));
-      PetscCall(TSAdaptCheckStage(ts->adapt, ts, ga->stage_time, ga->Xs, &ok));
-    }
-    if (ok) {
-      // A_{n+1}, then V_{n+1}, X_{n+1} from the Newmark formulas.
-      PetscCall(VecWAXPY(ga->A, 1 / (af * b * h * h), ga->D, ga->A0));
-      PetscCall(VecCopy(ga->V0, V));
-      PetscCall(VecAXPBYPCZ(V, h * (1 - g), h * g, 1.0, ga->A0, ga->A));
-      PetscCall(VecCopy(ga->X0, X));
-      PetscCall(VecAXPY(X, h, ga->V0));
-      PetscCall(VecAXPBYPCZ(X, h * h * (0.5 - b), h * h * b, 1.0, ga->A0, ga->A));
+      PetscCall(NewmarkUpdate(ts, h));
       ga->t0 = t0;
       ga->h  = h;
       ga->have_step = PETSC_TRUE; // for the error estimate inside TSAdaptChoose

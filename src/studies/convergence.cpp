@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -596,14 +597,9 @@ PetscErrorCode WriteReference(hid_t file, const ConvergenceReference &ref)
 
   PetscFunctionBeginUser;
   r.add("method", ref.method);
-  r.add("acor", R.acor);
-  r.add("acor_corrected", R.acor_corrected);
-  r.add("contact_time", R.contact_time);
-  r.add("peak_force", R.peak_force);
-  r.add("max_compression", R.max_compression);
-  r.add("contacts", (double)R.contacts);
-  r.add("final_time", R.final_time);
-  r.add("energy_error", R.energy_error);
+  for (const char *name : {"acor", "acor_corrected", "contact_time", "peak_force", "max_compression", "contacts", "final_time", "energy_error"})
+    for (const ResultColumn &c : ImpactResultColumns()) // the outcome as the result table has it
+      if (std::strcmp(c.name, name) == 0) r.add(name, c.get(R));
   r.add("acor_error_estimate", ref.acor_error);
   r.add("contact_time_error_estimate", ref.contact_time_error);
   r.add("peak_force_error_estimate", ref.peak_force_error);
