@@ -8,6 +8,8 @@
 # Output: $OUT/{conv161,conv641,spatial}.{h5,log} and *-work-precision.png,
 # *-convergence.png, spatial-spatial.png (OUT defaults to out/convergence).
 # Usage: scripts/study_convergence.sh [extra beamimpact options, e.g. -convergence_repeats 9]
+#        scripts/study_convergence.sh damped [extra options]: only the damped beam
+#          (options/convergence/study-damped.opts, Rayleigh damping, run reference) at N = 161
 #   BUILD_DIR=dir  use an existing build (default: build/release, configured and built here)
 # Timings are minima over repeats; run it on an otherwise idle machine.
 set -euo pipefail
@@ -33,6 +35,11 @@ run() { # run LOG command...: echo the command, run it, keep its output
 # measured ~4e-11 (N = 161) and ~3e-9 (N = 641) in the ACOR (docs/convergence.md): errors
 # below these are not used in the order fits.
 declare -A FLOOR=([161]=1e-10 [641]=1e-8)
+if [ "${1:-}" = damped ]; then
+  shift
+  run "$OUT/damped161.log" "$EXE" -options_file options/convergence/study-damped.opts -beam_nodes 161 -output "$OUT/damped161.h5" "$@"
+  exit 0
+fi
 for N in 161 641; do
   run "$OUT/conv$N.log" "$EXE" -options_file options/convergence/study-default.opts -beam_nodes "$N" \
     -convergence_error_floor "${FLOOR[$N]}" -output "$OUT/conv$N.h5" "$@"
