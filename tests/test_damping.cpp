@@ -207,8 +207,14 @@ TEST(DampingOff, ZeroDampingIsTheUndampedRun)
   const ImpactResult r0 = RunImpact(PETSC_COMM_WORLD, p, Superball(), ip, cn, mon);
   const ImpactResult r1 = RunImpact(PETSC_COMM_WORLD, Damped(p, 0.0, 0.0), Superball(), ip, cn, mon);
   const ImpactResult r2 = RunImpact(PETSC_COMM_WORLD, Damped(p, 0.0, 1e-13), Superball(), ip, cn, mon);
+  PetscMPIInt size;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
   EXPECT_EQ(r0.acor, r1.acor);
-  EXPECT_EQ(r0.energy_error, r1.energy_error);
+  if (size == 1) {
+    EXPECT_EQ(r0.energy_error, r1.energy_error);
+  } else { // the parallel LU (MUMPS) repeats a run only to round-off
+    EXPECT_NEAR(r0.energy_error, r1.energy_error, 1e-13);
+  }
   EXPECT_EQ(r0.steps, r1.steps);
   EXPECT_EQ(r0.jacobian_assemblies, r1.jacobian_assemblies);
   EXPECT_EQ(r1.beam_dissipated_end, 0.0);
