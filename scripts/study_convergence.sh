@@ -13,6 +13,10 @@
 #                  STUDY=baseball: the baseball preset at 40 m/s on the default beam (a
 #                  hysteretic ball: Richardson-checked tight reference, error floor 1e-7);
 #                  writes $OUT/baseball-conv{161,641}.*, no spatial study, no targets.
+#                  STUDY=damped: the Rayleigh-damped default beam (tight-run reference).
+#                  STUDY=r161: the R161 bat struck by the baseball, Euler-Bernoulli and
+#                  Timoshenko at N = 85, 169, 337, 673; prints the explicit step limits
+#                  (they shrink like h^2 and like h: docs/bats.md).
 # Timings are minima over repeats; run it on an otherwise idle machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -39,6 +43,25 @@ run() { # run LOG command...: echo the command, run it, keep its output
 declare -A FLOOR=([161]=1e-10 [641]=1e-8)
 STUDY=${STUDY:-default}
 [ -f "options/convergence/study-$STUDY.opts" ] || { echo "study_convergence.sh: no options/convergence/study-$STUDY.opts (STUDY=$STUDY)" >&2; exit 2; }
+if [ "$STUDY" = r161 ]; then
+  # The R161 bat, both theories, on grids doubling from 85 nodes: the explicit step limit (level
+  # L0 of leapfrog and rk4) shrinks like h^2 for Euler-Bernoulli and like h for Timoshenko.
+  for th in euler timoshenko; do
+    for N in 85 169 337 673; do
+      run "$OUT/r161-$th-conv$N.log" "$EXE" -options_file options/convergence/study-r161.opts -beam_theory "$th" -beam_nodes "$N" \
+        -convergence_error_floor 1e-7 -output "$OUT/r161-$th-conv$N.h5" "$@"
+    done
+  done
+  echo
+  echo "explicit step limits (level L0 steps; wall time):"
+  for th in euler timoshenko; do
+    for N in 85 169 337 673; do
+      grep -E '^  (leapfrog|rk4) +L0 ' "$OUT/r161-$th-conv$N.log" | awk -v th="$th" -v N="$N" '{ printf "  %-10s N = %3d  %-8s dt %s  steps %s  wall %s s
+", th, N, $1, $4, $17, $14 }'
+    done
+  done
+  exit 0
+fi
 if [ "$STUDY" != default ]; then
   # Another study scene: its tight reference is good to ~1e-8 (printed in the log), so errors
   # below 1e-7 are left out of the order fits.

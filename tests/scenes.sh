@@ -11,6 +11,7 @@
 #   * racket: clamped over 62-72 cm the contact lasts >= 8% longer than with the handle free,
 #     at 25 and 30 cm from the tip;
 #   * energy (hysteretic ball, Crank-Nicolson): energy balance within 1e-5 of the incident;
+#   * damped-ringing (Rayleigh damping, RK4): balance incl. the dissipated energy within 1e-6;
 #   * racket-energy: the four energy fractions and the rebound acor^2 sum to 1 within 1e-6;
 #     the handle's peak kinetic energy is positive and inside the 30 ms window;
 #   * baseball (options/balls/baseball.opts on the default beam): energy balance, the first
@@ -145,6 +146,12 @@ if run energy 1 options/scenes/energy.opts -impact_window 0.004 -impact_max_time
 fi
 
 # --- racket: clamped handle -> longer contact than the free racket ------------------------------
+if run damped-ringing 1 options/scenes/damped-ringing.opts -impact_window 0.05; then
+  f="$dir/damped-ringing.h5"
+  check "damped-ringing (RK4): balance incl. the dissipated energy $(col "$f" /results/energy_error) within 1e-6" 'e < 1e-6 && e > -1e-6' e="$(col "$f" /results/energy_error)"
+  check "damped-ringing: damping took $(col "$f" /results/damping_fraction) of the incident energy in 54 ms (0.02-0.2), series beam_dissipated ($(dims "$f" /series/beam_dissipated))" \
+    'd > 0.02 && d < 0.2 && n == t' d="$(col "$f" /results/damping_fraction)" n="$(dims "$f" /series/beam_dissipated)" t="$(dims "$f" /series/time)"
+fi
 if run racket-free 2 options/scenes/racket-acor.opts -sweep_x 0.25,0.3 -sweep_quiet &&
    run racket-clamped 2 options/scenes/racket-acor.opts -beam_clamp 0.62,0.72 -sweep_x 0.25,0.3 -sweep_quiet; then
   ratios=$(paste <(col "$dir/racket-clamped.h5" /results/contact_time) <(col "$dir/racket-free.h5" /results/contact_time) | awk '{ printf "%s%.3f", (NR > 1 ? "," : ""), $1 / $2 }')

@@ -79,6 +79,8 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
                         "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  failed %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
                         (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
                         r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  if (r.beam_dissipated_end > 0) // a damped beam
+    PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of the incident energy); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
   PetscFunctionReturn(0);
 }
 

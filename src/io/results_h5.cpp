@@ -137,6 +137,15 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
       for (auto &r : results) v.push_back(col.get(r));
       PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
     }
+    if (beam.damping_mass > 0 || beam.damping_stiffness > 0) { // the beam's Rayleigh damping: one more energy term
+      std::vector<double> d, f;
+      for (auto &r : results) {
+        d.push_back(r.beam_dissipated_end);
+        f.push_back(r.damping_fraction);
+      }
+      PetscCall(H5WriteDataset1D(g, "beam_dissipated_end", d, "J"));
+      PetscCall(H5WriteDataset1D(g, "damping_fraction", f, "1"));
+    }
     H5Gclose(g);
     if (!results.empty()) {
       const ImpactResult &r = results[0];
@@ -179,6 +188,7 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
         PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
         PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
         PetscCall(opt("beam_strain", S.beam_strain, "J"));
+        PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
         PetscCall(opt("total_energy", S.total_energy, "J"));
         if (!S.velocity_at.empty()) {
           PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));

@@ -52,6 +52,7 @@ struct ImpactSeries {
   std::vector<PetscReal> ball_y, ball_v, compression, force;             // m, m/s, m, N
   std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated;     // J
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
+  std::vector<PetscReal> beam_dissipated;                                // J, by the beam's damping (damped beams only)
   std::vector<PetscReal> velocity_at_x;                                  // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
   std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
@@ -95,6 +96,9 @@ struct ImpactOutcome {
   PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i) (only meaningful free-free)
   PetscReal angular_momentum_error = 0; // about x = 0, / (m_b v_i L)
   PetscReal beam_kinetic_end = 0, beam_strain_end = 0, ball_dissipated_end = 0; // J
+  // Damped beams only (Rayleigh damping): the energy the beam's damping dissipated by the end
+  // (J; it is in energy_error's E), and as a fraction of the incident kinetic energy.
+  PetscReal beam_dissipated_end = 0, damping_fraction = 0;
   // Where the incident kinetic energy went, as fractions of it, at the end of the run: lost
   // in the ball (hysteresis; for the linear spring 1 - loss_factor^2 of the rebound energy),
   // the beam's rigid translation P^2/2M and rotation L_cm^2/2I_cm about its centre of mass,

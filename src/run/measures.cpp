@@ -57,6 +57,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   m->beam_momentum       = sums[2];
   m->beam_moment         = sums[3];
   m->segment_kinetic     = sums[4];
+  m->beam_dissipated     = stepper.Dissipated();
   if (point_v) point_v->assign(sums.begin() + 5, sums.end());
   PetscFunctionReturn(0);
 }

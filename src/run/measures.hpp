@@ -16,7 +16,9 @@ struct StateMeasures {
   PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
   PetscReal segment_kinetic = 0;                // J, the monitored segment
-  PetscReal total() const { return ball_kinetic + ball_work + beam_kinetic + beam_strain; }
+  PetscReal beam_dissipated = 0;                // J, dissipated by the beam's damping since t = 0 (0 when undamped)
+  // The conserved total: with the linear spring and an undamped beam, a constant.
+  PetscReal total() const { return ball_kinetic + ball_work + beam_kinetic + beam_strain + beam_dissipated; }
 };
 
 // What a measurement needs besides the state.

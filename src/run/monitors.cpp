@@ -39,6 +39,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
     S.beam_kinetic.push_back(m.beam_kinetic);
     S.beam_strain.push_back(m.beam_strain);
     S.total_energy.push_back(m.total());
+    if (ctx_.sys->Damped()) S.beam_dissipated.push_back(m.beam_dissipated);
   }
   for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
   if (mon_.segment) {

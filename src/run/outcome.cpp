@@ -36,6 +36,10 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   res->translation_fraction = Etr / Ein;
   res->rotation_fraction    = Erot / Ein;
   res->vibration_fraction   = (m1.beam_kinetic + m1.beam_strain - Etr - Erot) / Ein;
+  if (S.Damped()) {
+    res->beam_dissipated_end = m1.beam_dissipated;
+    res->damping_fraction    = m1.beam_dissipated / Ein;
+  }
 }
 
 } // namespace beamimpact

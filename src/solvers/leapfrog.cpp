@@ -13,6 +13,7 @@ namespace {
 // need no branches (dof d is y[d + bw]).
 struct LeapfrogState {
   std::vector<PetscReal> y, v, a;           // m, m/s, m/s^2 (per dof)
+  std::vector<PetscReal> vh;                // m/s, damped beam: the half-step velocity that led to this state
   PetscReal              yb = 0, vb = 0, ab = 0; // ball: m, m/s, m/s^2
   PetscReal              c = 0, F = 0;      // compression (m) and force (N) at this state
 };
@@ -30,6 +31,11 @@ public:
   LeapfrogState          A, B;
   LeapfrogState         *cur = &A, *other = &B; // after a step, *other holds the state before it
   PetscInt               n_force = 0;
+  // Damped beam (see leapfrog.hpp): y + beta vh (padded like y), and the dissipated energy
+  // with the rate P = v^T C v and dP/dt now and at the start of the last step.
+  bool                   damped = false;
+  std::vector<PetscReal> yw, cv;
+  PetscReal              dissipated = 0, rate = 0, rate_dot = 0, dissipated_prev = 0, rate_prev = 0, rate_dot_prev = 0;
 
   PetscReal CompressionOf(const LeapfrogState &s) const { return s.yb - (g.w[0] * s.y[g.dof[0] + bw] + g.w[1] * s.y[g.dof[1] + bw]); }
 
@@ -58,6 +64,41 @@ public:
     s.vb += half_kick * s.ab;
   }
 
+  // Force() of the damped scheme: a = M^{-1} (-K (y + beta vh) + g F) - alpha v, the alpha part
+  // trapezoidal: v = (v + half_kick f) / (1 + half_kick alpha).
+  void ForceDamped(LeapfrogState &s, PetscReal half_kick)
+  {
+    const PetscInt   W = 2 * bw + 1;
+    const PetscReal  alpha = sys->damping_mass, beta = sys->damping_stiffness;
+    PetscReal       *a = s.a.data(), *v = s.v.data();
+    n_force++;
+    for (PetscInt i = 0; i < n; ++i) yw[i + bw] = s.y[i + bw] + beta * s.vh[i];
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscReal *r   = band.data() + W * i;
+      const PetscReal *yi  = yw.data() + i;
+      PetscReal        sum = 0;
+      for (PetscInt o = 0; o < W; ++o) sum += r[o] * yi[o];
+      a[i] = -sum;
+    }
+    s.c = CompressionOf(s);
+    s.F = ContactForce(ball, *contact, s.c);
+    for (PetscInt q = 0; q < 2; ++q) a[g.dof[q]] += gm[q] * s.F;
+    for (PetscInt i = 0; i < n; ++i) {
+      v[i] = (v[i] + half_kick * a[i]) / (1 + half_kick * alpha);
+      a[i] -= alpha * v[i];
+    }
+    s.ab = -s.F / ball.mass;
+    s.vb += half_kick * s.ab;
+  }
+  // P = v^T C v and dP/dt = 2 a^T C v at the current state.
+  void DissipationRateNow()
+  {
+    BeamSystemDampingApply(*sys, cur->v.data(), sys->fields, 0, n, cv.data(), sys->fields);
+    rate     = BeamSystemDissipationRate(*sys, cur->v.data(), sys->fields, 0, n);
+    rate_dot = 0;
+    for (PetscInt i = 0; i < n; ++i) rate_dot += 2 * cur->a[i] * cv[i];
+  }
+
   MPI_Comm    Comm() const override { return PETSC_COMM_SELF; }
   std::string Method() const override { return "leapfrog"; }
   std::string StepOption() const override { return "-leapfrog_dt"; }
@@ -74,23 +115,42 @@ public:
     }
     other->vb = cur->vb + h2 * cur->ab;
     other->yb = cur->yb + tau * other->vb;
-    Force(*other, h2);
+    if (damped) {
+      other->vh = other->v;
+      ForceDamped(*other, h2);
+    } else Force(*other, h2);
     std::swap(cur, other);
     t_prev = t;
     t += tau;
+    if (damped) { // Hermite (corrected trapezoidal) rule on P over the step, as the TS stepper
+      dissipated_prev = dissipated;
+      rate_prev       = rate;
+      rate_dot_prev   = rate_dot;
+      DissipationRateNow();
+      dissipated += 0.5 * tau * (rate_prev + rate) + tau * tau / 12 * (rate_dot_prev - rate_dot);
+    }
     return 0;
   }
   PetscErrorCode RollBack() override
   {
     std::swap(cur, other);
     t = t_prev;
+    if (damped) {
+      dissipated = dissipated_prev;
+      rate       = rate_prev;
+      rate_dot   = rate_dot_prev;
+    }
     return 0;
   }
   PetscErrorCode Restart() override
   {
-    Force(*cur, 0.0); // the acceleration of the new phase at the event state
+    if (damped) { // the acceleration of the new phase at the event state
+      ForceDamped(*cur, 0.0);
+      DissipationRateNow();
+    } else Force(*cur, 0.0);
     return 0;
   }
+  PetscReal Dissipated() const override { return dissipated; }
   PetscErrorCode NextStep(PetscReal *tau) override
   {
     *tau = dt;
@@ -153,7 +213,11 @@ PetscErrorCode LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p)
 
 PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball)
 {
-  return 2.0 / BeamSystemMaxFrequencyBound(sys, g, ContactScalesOf(sys, ball).stiffness, ball.mass);
+  const PetscReal w = BeamSystemMaxFrequencyBound(sys, g, ContactScalesOf(sys, ball).stiffness, ball.mass);
+  if (!sys.Damped()) return 2.0 / w;
+  // (2/w)(sqrt(1 + zeta^2) - zeta) with zeta = beta w/2, written without the cancellation.
+  const PetscReal zeta = 0.5 * sys.damping_stiffness * w;
+  return 2.0 / (w * (std::sqrt(1 + zeta * zeta) + zeta));
 }
 
 PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
@@ -178,12 +242,12 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
   info->ts_type         = "leapfrog";
   info->formulation     = "explicit";
   info->dt_stable       = S->dt_stable;
-  info->omega_max_bound = 2.0 / S->dt_stable;
+  info->omega_max_bound = sys.Damped() ? BeamSystemMaxFrequencyBound(sys, g, ContactScalesOf(sys, ball).stiffness, ball.mass) : 2.0 / S->dt_stable;
   S->dt                 = lp.dt > 0 ? lp.dt : lp.dt_fraction * S->dt_stable;
   PetscCheck(std::isfinite(S->dt) && S->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-leapfrog_dt %g is not allowed: the step must be > 0 (s)", (double)S->dt);
   PetscCheck(S->dt <= S->dt_stable, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "-leapfrog_dt %g is above the Stormer-Verlet stability limit dt_max = 2/omega_max = %g s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s); use -leapfrog_dt <= %g or fewer nodes",
-             (double)S->dt, (double)S->dt_stable, sys.nodes, (double)info->omega_max_bound, (double)S->dt_stable);
+             "-leapfrog_dt %g is above the Stormer-Verlet stability limit dt_max = %s = %g s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s); use -leapfrog_dt <= %g or fewer nodes",
+             (double)S->dt, sys.Damped() ? "(2/omega_max)(sqrt(1 + zeta^2) - zeta), zeta = beta omega_max/2" : "2/omega_max", (double)S->dt_stable, sys.nodes, (double)info->omega_max_bound, (double)S->dt_stable);
   PetscCheck(S->dt <= scales.time / 8, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-leapfrog_dt %g is more than 1/8 of the contact time scale %g s: events could be missed; use a smaller step", (double)S->dt,
              (double)scales.time);
   info->dt_nominal = S->dt;
@@ -193,8 +257,15 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
     s->v.assign(sys.ndof, 0.0);
     s->a.assign(sys.ndof, 0.0);
   }
-  S->A.vb = ball.speed;
-  S->Force(S->A, 0.0);
+  S->A.vb     = ball.speed;
+  S->damped   = sys.Damped();
+  if (S->damped) {
+    for (LeapfrogState *s : {&S->A, &S->B}) s->vh.assign(sys.ndof, 0.0);
+    S->yw.assign(sys.ndof + 2 * sys.bw, 0.0);
+    S->cv.assign(sys.ndof, 0.0);
+    S->ForceDamped(S->A, 0.0);
+    S->DissipationRateNow();
+  } else S->Force(S->A, 0.0);
   S->n_force = 0;
   *stepper   = std::move(S);
   PetscFunctionReturn(0);

@@ -13,6 +13,21 @@
 // Stability: Stormer-Verlet is stable for omega_max dt < 2; omega_max is the same
 // Gershgorin bound as the TS stepper's (BeamSystemMaxFrequencyBound with the contact
 // stiffness), so dt_max = 2 / omega_max ~ h^2 / (2 sqrt(EI/mu)). Serial.
+//
+// Rayleigh damping C = alpha M + beta K (only when the beam is damped; the undamped path is
+// the scheme above, unchanged): the force at the end of a step is evaluated with the
+// half-step velocity v_{n+1/2} = (y_{n+1} - y_n)/tau for the beta K part (explicit, as the
+// central-difference scheme of structural dynamics) and trapezoidally for the diagonal alpha
+// M part (v_{n+1} = (v_{n+1/2} + tau/2 f_{n+1}) / (1 + tau alpha/2)). On a mode
+// y'' + 2 zeta w y' + w^2 y = 0 the scheme is
+//   (1 + a) y_{n+1} - (2 - b - tau^2 w^2) y_n + (1 - a - b) y_{n-1} = 0,  a = tau alpha/2, b = tau beta w^2,
+// whose roots lie in the unit circle (Jury) iff tau^2 w^2 + 2 tau beta w^2 <= 4, i.e.
+//   tau <= (2/w)(sqrt(1 + zeta_b^2) - zeta_b),  zeta_b = beta w/2,
+// decreasing in w, so the mode w = omega_max sets dt_max; the alpha part does not limit the
+// step. (Had alpha been lagged too, zeta_b would be the full zeta = alpha/(2w) + beta w/2.)
+// The lagged beta term makes the damping force first-order accurate (relative error
+// ~ tau beta w^2 / 2 = tau zeta_b w on a mode); the alpha part and the undamped scheme are
+// second order.
 #pragma once
 
 #include "model/contact.hpp"
@@ -31,7 +46,8 @@ struct LeapfrogParams {
 
 PetscErrorCode LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p);
 
-// Stability limit 2 / omega_max (s) of Stormer-Verlet on this system and ball struck through g.
+// Stability limit (s) of Stormer-Verlet on this system and ball struck through g: 2 / omega_max,
+// or (2/omega_max)(sqrt(1 + zeta^2) - zeta), zeta = beta omega_max / 2, with damping.
 PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball);
 
 // Creates the stepper at t = 0 (beam at rest, ball touching, moving at its speed); fills

@@ -7,21 +7,28 @@
 
 namespace beamimpact {
 
-PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b)
+namespace {
+
+// |R(z)| of the explicit tableau.
+double RKAmplification(PetscInt s, const PetscReal *A, const PetscReal *b, std::complex<double> z)
 {
   using cplx = std::complex<double>;
-  auto amp   = [&](double y) {
-    const cplx         z(0.0, y);
-    std::vector<cplx>  k(s);
-    cplx               R = 1.0;
-    for (PetscInt i = 0; i < s; ++i) {
-      cplx sum = 0.0;
-      for (PetscInt j = 0; j < i; ++j) sum += A[i * s + j] * k[j];
-      k[i] = 1.0 + z * sum;
-      R += z * b[i] * k[i];
-    }
-    return std::abs(R);
-  };
+  std::vector<cplx> k(s);
+  cplx              R = 1.0;
+  for (PetscInt i = 0; i < s; ++i) {
+    cplx sum = 0.0;
+    for (PetscInt j = 0; j < i; ++j) sum += A[i * s + j] * k[j];
+    k[i] = 1.0 + z * sum;
+    R += z * b[i] * k[i];
+  }
+  return std::abs(R);
+}
+
+} // namespace
+
+PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b)
+{
+  auto amp = [&](double y) { return RKAmplification(s, A, b, std::complex<double>(0.0, y)); };
   // Growth per step allowed: 1e-12 (1e-4 over 1e8 steps). RK2's |R(iy)| = 1 + y^4/8 + ...
   // exceeds it from y = 1.7e-3: such a method is reported unstable at any practical step.
   const double tol = 1e-12, dy = 1e-3;
@@ -32,6 +39,38 @@ PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscR
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (lo + hi);
     (amp(mid) <= 1.0 + tol ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+PetscReal RKDampedStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b, PetscReal omega_max, PetscReal alpha, PetscReal beta)
+{
+  using cplx = std::complex<double>;
+  // The modes sampled at K frequencies up to omega_max (the growth of a mode varies smoothly
+  // with w); each gives two eigenvalues, complex (zeta < 1) or real (overdamped).
+  const int         K = 256;
+  std::vector<cplx> lam;
+  for (int k = 1; k <= K; ++k) {
+    const double w = omega_max * k / K, zeta = alpha / (2 * w) + beta * w / 2;
+    const cplx   r = std::sqrt(cplx(zeta * zeta - 1.0, 0.0));
+    lam.push_back(w * (-zeta + r));
+    lam.push_back(w * (-zeta - r));
+  }
+  const double tol    = 1e-12;
+  auto         stable = [&](double dt) {
+    for (const cplx &l : lam)
+      if (RKAmplification(s, A, b, dt * l) > 1.0 + tol) return false;
+    return true;
+  };
+  // Scan up from 0 in steps of 0.01/omega_max (the undamped bounds are 1.7-3.4/omega_max), then refine.
+  const double dd = 0.01 / omega_max;
+  double       dt = 0.0;
+  while (dt < 50.0 / omega_max && stable(dt + dd)) dt += dd;
+  if (dt < 0.05 / omega_max) return 0.0;
+  double lo = dt, hi = dt + dd;
+  for (int it = 0; it < 50; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (stable(mid) ? lo : hi) = mid;
   }
   return lo;
 }

@@ -11,4 +11,9 @@ namespace beamimpact {
 // i.e. the scheme is unstable for undamped oscillation at any practical step (Euler, RK2).
 PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b);
 
+// The largest step dt (s) such that the tableau is stable (|R(dt lambda)| <= 1 + 1e-12) on every
+// Rayleigh-damped mode of frequency w in (0, omega_max]: lambda = -zeta w +- w sqrt(zeta^2 - 1),
+// zeta = alpha/(2 w) + beta w/2 (alpha in 1/s, beta in s). 0 when unstable at any practical step.
+PetscReal RKDampedStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b, PetscReal omega_max, PetscReal alpha, PetscReal beta);
+
 } // namespace beamimpact

@@ -56,6 +56,9 @@ public:
   virtual PetscErrorCode Counts(StepperCounts *n) = 0;
   // Why the energy may have grown at the current step (the likely cause, for the error message).
   virtual std::string EnergyGrowthCause() const = 0;
+  // Energy (J) dissipated by the beam's damping C since t = 0, the integral of v^T C v over the
+  // steps taken (undone by RollBack); the same on every rank. 0 for an undamped beam.
+  virtual PetscReal Dissipated() const { return 0; }
 };
 
 } // namespace beamimpact

@@ -1,9 +1,11 @@
 // The TS Jacobian J = shift I + d(residual)/du of the implicit, IMEX and second-order forms:
-//   first order   [[shift I, -I], [(K + kc g g^T)/m, shift I]]  (ball rows alike)
-//   second order  shift_A I + (K + kc g g^T)/m
-// K from the system's band, kc = dF/dc of the contact law in its current phase. The constant
-// part J0 is assembled once with the final pattern (contact entries as explicit zeros); a
-// change of shift or contact stiffness copies it, shifts the diagonal and adds the 3x3
+//   first order   [[shift I, -I], [(K + kc g g^T)/m, shift I + C/m]]  (ball rows alike)
+//   second order  shift_A I + shift_V C/m + (K + kc g g^T)/m
+// K from the system's band, C/m = alpha I + beta K/m on the free dofs (only for a damped beam:
+// the undamped pattern and values are unchanged), kc = dF/dc of the contact law in its current
+// phase. The constant part J0 is assembled once with the final pattern (contact entries as
+// explicit zeros); a change of shift (shift_V) or contact stiffness copies it, shifts the
+// diagonal, adds shift_V Jd (second order, damped; Jd = C/m on J0's pattern) and the 3x3
 // contact block, so the LU is redone only when one of them changes.
 #include "solvers/ts_problem.hpp"
 
@@ -46,8 +48,9 @@ PetscErrorCode SetRow(Mat J, PetscInt r, const std::map<PetscInt, PetscScalar> &
   PetscFunctionReturn(0);
 }
 
-// Every entry of the pattern, with shift = kc = 0: the constant part J0.
-PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J)
+// Every entry of the pattern, with shift = kc = 0: the constant part J0. With damping_only
+// (second order, damped beam) the same pattern holds Jd = C/m instead.
+PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = false)
 {
   const BeamSystem   &S     = *P.sys;
   const TSLayout     &L     = P.L;
@@ -67,8 +70,17 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J)
       PetscCall(MatSetValues(J, 1, &ry, 2, c, v, INSERT_VALUES));
     }
     row[rv] = 0.0;
-    const PetscInt n = BeamSystemStiffnessRow(S, d, cols.data(), vals.data());
-    for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], false)] += vals[q] / S.mass[d];
+    const PetscInt  n     = BeamSystemStiffnessRow(S, d, cols.data(), vals.data());
+    const PetscReal kfac  = damping_only ? S.damping_stiffness : 1.0; // K/m, or its beta K/m part of C/m
+    for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], false)] += kfac * vals[q] / S.mass[d];
+    if (S.Damped() && !S.held[d]) {
+      if (damping_only) row[rv] += S.damping_mass;
+      else if (first) { // d(C v/m)/dv in the velocity columns
+        row[rv] += S.damping_mass;
+        if (S.damping_stiffness != 0.0)
+          for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], true)] += S.damping_stiffness * vals[q] / S.mass[d];
+      }
+    }
     for (PetscInt p = 0; p < 2; ++p)
       if (P.g.dof[p] == d)
         for (PetscInt q = 0; q < 3; ++q) row[cb.cols[q]] += 0.0;
@@ -93,7 +105,7 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J)
 
 // J = J0 + shift I + kc g g^T / m: a copy of the constant part (same pattern: a memcpy),
 // a diagonal shift, and the 3x3 contact block added on the rows that own it.
-PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal kc)
+PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal shiftV, PetscReal kc)
 {
   const TSLayout     &L     = P.L;
   const bool          first = L.dof == 2 * L.fields;
@@ -102,6 +114,7 @@ PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal kc)
   PetscFunctionBeginUser;
   P.count.assembled++;
   PetscCall(MatCopy(P.jac.J0, P.jac.J, SAME_NONZERO_PATTERN));
+  if (P.jac.Jd) PetscCall(MatAXPY(P.jac.J, shiftV, P.jac.Jd, SAME_NONZERO_PATTERN));
   PetscCall(MatShift(P.jac.J, shift));
   if (kc != 0.0)
     for (PetscInt p = 0; p < 3; ++p) {
@@ -117,12 +130,14 @@ PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal kc)
     }
   PetscCall(MatAssemblyBegin(P.jac.J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P.jac.J, MAT_FINAL_ASSEMBLY));
-  P.jac.shift = shift;
-  P.jac.kc    = kc;
+  P.jac.shift  = shift;
+  P.jac.shiftV = shiftV;
+  P.jac.kc     = kc;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift)
+// shiftV matters only with Jd (second order, damped); otherwise it is passed as 0.
+PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift, PetscReal shiftV)
 {
   PetscReal kc = 0;
 
@@ -136,7 +151,7 @@ PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift)
     PetscCall(TSStateReadEnd(P.L, X, &s));
     kc = ContactStiffness(P.ball, *P.contact, c);
   }
-  if (shift != P.jac.shift || kc != P.jac.kc) PetscCall(AssembleJacobian(P, shift, kc));
+  if (shift != P.jac.shift || kc != P.jac.kc || shiftV != P.jac.shiftV) PetscCall(AssembleJacobian(P, shift, shiftV, kc));
   PetscFunctionReturn(0);
 }
 
@@ -145,14 +160,16 @@ PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift)
 PetscErrorCode TSIJacobianBeam(TS ts, PetscReal t, Vec U, Vec Udot, PetscReal shift, Mat A, Mat B, void *ctx)
 {
   PetscFunctionBeginUser;
-  PetscCall(UpdateJacobian(*static_cast<TSProblem *>(ctx), U, shift));
+  PetscCall(UpdateJacobian(*static_cast<TSProblem *>(ctx), U, shift, 0.0));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J, Mat B, void *ctx)
 {
+  TSProblem &P = *static_cast<TSProblem *>(ctx);
+
   PetscFunctionBeginUser;
-  PetscCall(UpdateJacobian(*static_cast<TSProblem *>(ctx), X, shiftA));
+  PetscCall(UpdateJacobian(P, X, shiftA, P.jac.Jd ? shiftV : 0.0));
   PetscFunctionReturn(0);
 }
 
@@ -165,12 +182,17 @@ PetscErrorCode TSJacobianCreate(TSProblem &P)
   PetscCall(DMCreateGlobalVector(P.L.pack, &U));
   PetscCall(VecGetLocalSize(U, &n));
   PetscCall(VecDestroy(&U));
-  const PetscInt width = 2 * P.sys->bw + 1;
+  const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields; // first order, damped: K/m also in the velocity columns
+  const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
   PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 7, NULL, width + 3, NULL, &P.jac.J));
   PetscCall(MatSetOption(P.jac.J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(MatSetOption(P.jac.J, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
   PetscCall(AssembleConstantPart(P, P.jac.J)); // fixes the pattern (coupling entries as zeros)
   PetscCall(MatDuplicate(P.jac.J, MAT_COPY_VALUES, &P.jac.J0));
+  if (P.sys->Damped() && P.L.dof == P.L.fields) { // second order: Jd = C/m on the same pattern
+    PetscCall(MatDuplicate(P.jac.J, MAT_DO_NOT_COPY_VALUES, &P.jac.Jd));
+    PetscCall(AssembleConstantPart(P, P.jac.Jd, true));
+  }
   P.jac.shift = -1; // the first real assembly happens at the first solve
   PetscFunctionReturn(0);
 }
@@ -180,6 +202,7 @@ PetscErrorCode TSJacobianDestroy(TSProblem &P)
   PetscFunctionBeginUser;
   PetscCall(MatDestroy(&P.jac.J));
   PetscCall(MatDestroy(&P.jac.J0));
+  PetscCall(MatDestroy(&P.jac.Jd));
   PetscFunctionReturn(0);
 }
 

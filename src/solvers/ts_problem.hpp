@@ -43,9 +43,11 @@ PetscErrorCode TSLayoutDestroy(TSLayout *L);
 
 // The Jacobian J = shift I + d(rhs)/du, reassembled only when the shift or the contact
 // stiffness changes; J0 (no shift, no contact) is assembled once and copied.
+// With damping, the first-order J0 holds C/m in the velocity columns too; the second-order
+// form adds shift_V Jd with Jd = C/m on J0's pattern (shift_V = dV/dX of the method).
 struct JacobianCache {
-  Mat       J = nullptr, J0 = nullptr;
-  PetscReal shift = -1, kc = -1;
+  Mat       J = nullptr, J0 = nullptr, Jd = nullptr;
+  PetscReal shift = -1, kc = -1, shiftV = -1;
   bool      contact = false; // the contact force is in the implicit part
 };
 
@@ -63,6 +65,7 @@ struct TSProblem {
   TSLayout          L;
   JacobianCache     jac;
   TSCounters        count;
+  std::vector<PetscScalar> work; // damped residuals: y + beta v over the ghosted nodes; owned accelerations
 };
 
 // Read access to a composite vector: beam values by global node (ghosted by the system's
@@ -98,6 +101,10 @@ PetscErrorCode TSIFunctionBeam(TS ts, PetscReal t, Vec U, Vec Udot, Vec G, void 
 PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, void *ctx);
 PetscErrorCode TSIJacobianBeam(TS ts, PetscReal t, Vec U, Vec Udot, PetscReal shift, Mat A, Mat B, void *ctx);
 PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J, Mat B, void *ctx);
+// Damped beam: the dissipation rate P = v^T C v (W) and its time derivative dP/dt = 2 a^T C v
+// (W/s) at the state (X, and V for the second-order form, else nullptr), a the acceleration of
+// the residual (contact force of the current phase); summed over ranks.
+PetscErrorCode TSDissipationRate(TSProblem &P, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot);
 PetscErrorCode TSJacobianCreate(TSProblem &P);
 PetscErrorCode TSJacobianDestroy(TSProblem &P);
 

@@ -1,23 +1,36 @@
 // The TS residuals of the impact, one per formulation (ts_problem.hpp):
-//   explicit      du/dt = [v; -(K y - g F)/m; v_b; -F/m_b]
-//   IMEX          G(u, u') = [y' - v; v' + K y/m; y_b' - v_b; v_b'] = [0; g F/m; 0; -F/m_b]
-//   implicit      G(u, u') = [y' - v; v' + (K y - g F)/m; y_b' - v_b; v_b' + F/m_b] = 0
-//   second order  G(x, x', x'') = [a + (K y - g F)/m; a_b + F/m_b] = 0
-// with K, m and g from the system and F the contact law at the compression c = y_b - g^T y.
+//   explicit      du/dt = [v; -(K y + C v - g F)/m; v_b; -F/m_b]
+//   IMEX          G(u, u') = [y' - v; v' + (K y + C v)/m; y_b' - v_b; v_b'] = [0; g F/m; 0; -F/m_b]
+//   implicit      G(u, u') = [y' - v; v' + (K y + C v - g F)/m; y_b' - v_b; v_b' + F/m_b] = 0
+//   second order  G(x, x', x'') = [a + (K y + C y' - g F)/m; a_b + F/m_b] = 0
+// with K, m and g from the system, C = alpha M + beta K its Rayleigh damping (left out, at no
+// cost, when alpha = beta = 0) and F the contact law at the compression c = y_b - g^T y.
 #include "solvers/ts_problem.hpp"
 
 #include <petscdmcomposite.h>
 
+#include <algorithm>
+
 namespace beamimpact {
 
-// out = (K y - g F)/m for the owned dofs (0 where held); y and out are beam arrays by global
-// node with node strides ys and os (pointing at the field block to read or write).
-static void BeamAcceleration(const TSProblem &P, const PetscScalar *y, PetscInt ys, PetscReal F, PetscScalar *out, PetscInt os)
+// out = (K y + C v - g F)/m for the owned dofs (0 where held); y, v and out are beam arrays by
+// global node with node strides ys, vs and os (pointing at the field block to read or write).
+// v (ghosted like y) is given for a damped beam only; without it the undamped path runs
+// unchanged. C v = alpha M v + beta K v enters as K (y + beta v) + alpha M v: one stiffness
+// application in the factored form, so beta-damping keeps rigid motion force-free.
+static void BeamAcceleration(TSProblem &P, const PetscScalar *y, PetscInt ys, const PetscScalar *v, PetscInt vs, PetscReal F, PetscScalar *out, PetscInt os)
 {
-  const BeamSystem &S = *P.sys;
-  const TSLayout   &L = P.L;
-  const PetscInt    nf = L.fields;
-  BeamSystemStiffnessApply(S, y, ys, L.D0(), L.D1(), out, os);
+  const BeamSystem &S     = *P.sys;
+  const TSLayout   &L     = P.L;
+  const PetscInt    nf    = L.fields;
+  const PetscReal   alpha = v ? S.damping_mass : 0.0, beta = v ? S.damping_stiffness : 0.0;
+  if (beta != 0.0) {
+    const PetscInt gn = S.GhostNodes(), n0 = std::max<PetscInt>(0, L.xs - gn), n1 = std::min(L.nodes, L.xe + gn);
+    P.work.resize((size_t)((n1 - n0) * nf));
+    for (PetscInt i = n0; i < n1; ++i)
+      for (PetscInt f = 0; f < nf; ++f) P.work[(i - n0) * nf + f] = y[i * ys + f] + beta * v[i * vs + f];
+    BeamSystemStiffnessApply(S, P.work.data() - n0 * nf, nf, L.D0(), L.D1(), out, os);
+  } else BeamSystemStiffnessApply(S, y, ys, L.D0(), L.D1(), out, os);
   if (F != 0.0)
     for (PetscInt q = 0; q < 2; ++q) {
       const PetscInt d = P.g.dof[q], node = d / nf;
@@ -27,6 +40,9 @@ static void BeamAcceleration(const TSProblem &P, const PetscScalar *y, PetscInt 
     PetscScalar &o = out[(d / nf) * os + d % nf];
     o              = S.held[d] ? 0.0 : o / S.mass[d];
   }
+  if (alpha != 0.0)
+    for (PetscInt d = L.D0(); d < L.D1(); ++d)
+      if (!S.held[d]) out[(d / nf) * os + d % nf] += alpha * v[(d / nf) * vs + d % nf];
 }
 
 PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
@@ -44,7 +60,7 @@ PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
   PetscCall(TSCompression(P, s.beam, dof, s.ball[0], &c));
   const PetscReal F = ContactForce(P.ball, *P.contact, c);
   PetscCall(TSStateWriteBegin(L, G, &o));
-  BeamAcceleration(P, s.beam, dof, F, o.beam + nf, dof);
+  BeamAcceleration(P, s.beam, dof, P.sys->Damped() ? s.beam + nf : nullptr, dof, F, o.beam + nf, dof);
   for (PetscInt d = L.D0(); d < L.D1(); ++d) {
     const PetscInt k = (d / nf) * dof + d % nf;
     o.beam[k + nf]   = -o.beam[k + nf];
@@ -116,7 +132,7 @@ PetscErrorCode TSIFunctionBeam(TS ts, PetscReal t, Vec U, Vec Udot, Vec G, void 
   PetscCall(VecGetArrayRead(Udr, &udr));
   const PetscScalar *udot = ud - dof * L.xs;
   PetscCall(TSStateWriteBegin(L, G, &o));
-  BeamAcceleration(P, s.beam, dof, F, o.beam + nf, dof);
+  BeamAcceleration(P, s.beam, dof, P.sys->Damped() ? s.beam + nf : nullptr, dof, F, o.beam + nf, dof);
   for (PetscInt d = L.D0(); d < L.D1(); ++d) {
     const PetscInt k = (d / nf) * dof + d % nf;
     o.beam[k + nf] += udot[k + nf];
@@ -139,7 +155,8 @@ PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, 
   TSProblem         &P = *static_cast<TSProblem *>(ctx);
   const TSLayout    &L = P.L;
   const PetscInt     nf = L.fields;
-  TSStateRead        s;
+  const bool         damped = P.sys->Damped();
+  TSStateRead        s, sv;
   TSStateWrite       o;
   PetscReal          c;
   const PetscScalar *ab, *ar;
@@ -148,6 +165,7 @@ PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, 
   PetscFunctionBeginUser;
   P.count.func++;
   PetscCall(TSStateReadBegin(L, X, &s));
+  if (damped) PetscCall(TSStateReadBegin(L, V, &sv)); // ghosted velocities for C x
   PetscCall(TSCompression(P, s.beam, nf, s.ball[0], &c));
   const PetscReal F = ContactForce(P.ball, *P.contact, c);
   PetscCall(DMCompositeGetAccess(L.pack, A, &Ab, &Ar));
@@ -155,14 +173,43 @@ PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, 
   PetscCall(VecGetArrayRead(Ar, &ar));
   const PetscScalar *acc = ab - nf * L.xs;
   PetscCall(TSStateWriteBegin(L, G, &o));
-  BeamAcceleration(P, s.beam, nf, F, o.beam, nf);
+  BeamAcceleration(P, s.beam, nf, damped ? sv.beam : nullptr, nf, F, o.beam, nf);
   for (PetscInt d = L.D0(); d < L.D1(); ++d) o.beam[d] += acc[d];
   if (o.ball) o.ball[0] = ar[0] + F / P.ball.mass;
   PetscCall(TSStateWriteEnd(L, G, &o));
   PetscCall(VecRestoreArrayRead(Ar, &ar));
   PetscCall(VecRestoreArrayRead(Ab, &ab));
   PetscCall(DMCompositeRestoreAccess(L.pack, A, &Ab, &Ar));
+  if (damped) PetscCall(TSStateReadEnd(L, V, &sv));
   PetscCall(TSStateReadEnd(L, X, &s));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSDissipationRate(TSProblem &P, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot)
+{
+  const BeamSystem &S  = *P.sys;
+  const TSLayout   &L  = P.L;
+  const PetscInt    nf = L.fields, dof = L.dof, nown = L.D1() - L.D0();
+  TSStateRead       s, sv;
+  PetscReal         c, sums[2] = {0, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(TSStateReadBegin(L, X, &s));
+  if (V) PetscCall(TSStateReadBegin(L, V, &sv));
+  const PetscScalar *v  = V ? sv.beam : s.beam + nf;
+  const PetscInt     vs = V ? nf : dof;
+  PetscCall(TSCompression(P, s.beam, dof, s.ball[0], &c));
+  const PetscReal        F = ContactForce(P.ball, *P.contact, c);
+  std::vector<PetscReal> acc(nown), cv(nown); // -a and C v of the owned dofs
+  BeamAcceleration(P, s.beam, dof, v, vs, F, acc.data() - L.D0(), nf);
+  BeamSystemDampingApply(S, v, vs, L.D0(), L.D1(), cv.data() - L.D0(), nf);
+  sums[0] = BeamSystemDissipationRate(S, v, vs, L.D0(), L.D1());
+  for (PetscInt k = 0; k < nown; ++k) sums[1] -= 2 * acc[k] * cv[k];
+  if (V) PetscCall(TSStateReadEnd(L, V, &sv));
+  PetscCall(TSStateReadEnd(L, X, &s));
+  if (L.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPIU_REAL, MPIU_SUM, L.comm));
+  *rate     = sums[0];
+  *rate_dot = sums[1];
   PetscFunctionReturn(0);
 }
 

@@ -37,6 +37,11 @@ public:
   IntegratorInfo info;
   std::string    rk_type; // -ts_rk_type, for messages
   NewtonFloor    newton_floor;
+  // Damped beam: the dissipated energy D and the rate P = v^T C v, dP/dt at the current state
+  // and at the start of the last step (restored by RollBack). See DissipationStep.
+  bool      damped = false;
+  PetscReal dissipated = 0, rate = 0, rate_dot = 0;
+  PetscReal dissipated_prev = 0, rate_prev = 0, rate_dot_prev = 0;
   // The open view (ViewBegin/ViewEnd).
   TSStateRead        view_x;
   Vec                view_X = nullptr, view_Vb = nullptr, view_Vr = nullptr;
@@ -61,14 +66,55 @@ public:
   }
   PetscErrorCode Step(PetscReal dt) override
   {
+    const PetscReal t0 = Time();
+
     PetscFunctionBeginUser;
     PetscCall(TSSetTimeStep(ts, dt));
     PetscCall(TSStep(ts));
     PetscCall(TSCheckStep(P, ts, info.ts_type.c_str(), info.omega_max_bound));
+    if (damped) PetscCall(DissipationStep(Time() - t0));
     PetscFunctionReturn(0);
   }
-  PetscErrorCode RollBack() override { return TSRollBack(ts); }
-  PetscErrorCode Restart() override { return TSRestartStep(ts); }
+  PetscErrorCode RollBack() override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(TSRollBack(ts));
+    if (damped) {
+      dissipated = dissipated_prev;
+      rate       = rate_prev;
+      rate_dot   = rate_dot_prev;
+    }
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode Restart() override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(TSRestartStep(ts));
+    if (damped) PetscCall(DissipationRateNow(&rate, &rate_dot)); // the new phase's acceleration
+    PetscFunctionReturn(0);
+  }
+  PetscReal      Dissipated() const override { return dissipated; }
+  PetscErrorCode DissipationRateNow(PetscReal *r, PetscReal *rdot)
+  {
+    Vec X, Vel;
+
+    PetscFunctionBeginUser;
+    PetscCall(Solution(&X, &Vel));
+    PetscCall(TSDissipationRate(P, X, Vel, r, rdot));
+    PetscFunctionReturn(0);
+  }
+  // D over the step of length h just taken, by the corrected trapezoidal (Hermite) rule on
+  // P = v^T C v: h/2 (P0 + P1) + h^2/12 (P0' - P1'), exact for cubics, O(h^5) per step.
+  PetscErrorCode DissipationStep(PetscReal h)
+  {
+    PetscFunctionBeginUser;
+    dissipated_prev = dissipated;
+    rate_prev       = rate;
+    rate_dot_prev   = rate_dot;
+    PetscCall(DissipationRateNow(&rate, &rate_dot));
+    dissipated += 0.5 * h * (rate_prev + rate) + h * h / 12 * (rate_dot_prev - rate_dot);
+    PetscFunctionReturn(0);
+  }
   PetscErrorCode NextStep(PetscReal *dt) override
   {
     PetscFunctionBeginUser;
@@ -371,7 +417,10 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   const PetscReal ystar = RKImaginaryStabilityBound(s, A, b);
   PetscCheck(ystar > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-ts_rk_type %s is unstable for an undamped oscillation at any step (its stability region does not contain the imaginary axis); use -ts_rk_type 3bs, 4 or 5dp, or an implicit type (cn, bdf, alpha2)", rktype);
-  S.info.dt_stable = ystar / S.info.omega_max_bound;
+  const BeamSystem &sys = *S.P.sys;
+  // Damped: the largest step with every mode's eigenvalues -zeta w +- w sqrt(zeta^2 - 1),
+  // zeta = alpha/(2w) + beta w/2, w <= omega_max, in the stability region (rk_stability.hpp).
+  S.info.dt_stable = sys.Damped() ? RKDampedStabilityBound(s, A, b, S.info.omega_max_bound, sys.damping_mass, sys.damping_stiffness) : ystar / S.info.omega_max_bound;
   PetscReal dt;
   PetscBool dt_set;
   PetscCall(TSGetTimeStep(S.ts, &dt));
@@ -379,8 +428,8 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   if (!dt_set) PetscCall(TSSetTimeStep(S.ts, std::min(dt, 0.9 * S.info.dt_stable)));
   else if (S.fixed_step)
     PetscCheck(dt <= S.info.dt_stable, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s); use -ts_dt <= %g, fewer nodes, or an implicit type",
-               (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound, (double)S.info.dt_stable);
+               "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s%s); use -ts_dt <= %g, fewer nodes, or an implicit type",
+               (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound, sys.Damped() ? ", with the beam's Rayleigh damping" : "", (double)S.info.dt_stable);
   PetscFunctionReturn(0);
 }
 
@@ -468,6 +517,8 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   S->info.dt_nominal = S->dt_nominal;
   if (set.report_setup) PetscCall(ReportSetup(*S));
   PetscCall(SetInitialState(*S, ball.speed));
+  S->damped = sys.Damped();
+  if (S->damped) PetscCall(S->DissipationRateNow(&S->rate, &S->rate_dot));
   *info = S->info;
   *stepper = std::move(S);
   PetscFunctionReturn(0);

@@ -154,6 +154,26 @@ PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupli
   return std::sqrt(lam);
 }
 
+void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt os)
+{
+  const PetscInt  F = sys.fields;
+  const PetscReal a = sys.damping_mass, b = sys.damping_stiffness;
+  if (b != 0.0) BeamSystemStiffnessApply(sys, v, ns, d0, d1, f, os);
+  for (PetscInt d = d0; d < d1; ++d) {
+    PetscReal &fd = f[(d / F) * os + d % F];
+    fd            = sys.held[d] ? 0.0 : (b != 0.0 ? b * fd : 0.0) + a * sys.mass[d] * v[(d / F) * ns + d % F];
+  }
+}
+
+PetscReal BeamSystemDissipationRate(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1)
+{
+  const PetscReal a = sys.damping_mass, b = sys.damping_stiffness;
+  PetscReal       r = 0.0;
+  if (a != 0.0) r += 2 * a * BeamSystemKineticEnergy(sys, v, ns, d0, d1);
+  if (b != 0.0) r += 2 * b * BeamSystemStrainEnergy(sys, v, ns, d0, d1);
+  return r;
+}
+
 ContactScales ContactScalesOf(const BeamSystem &sys, const BallParams &ball)
 {
   // A ball heavier than the beam has a contact several times shorter than on a wall:

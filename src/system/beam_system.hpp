@@ -77,6 +77,17 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 // contact stiffness k_extra (N/m) through the coupling to a ball of mass m_extra (kg).
 PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra);
 
+// Rayleigh damping C = alpha M + beta K (BeamSystem::damping_mass, damping_stiffness).
+// f_i = (C v)_i (N) for dofs i in [d0, d1): alpha m_i v_i + beta (K v)_i with K v in the factored
+// form of BeamSystemStiffnessApply (so C annihilates rigid motion when alpha = 0); v and f as
+// y and f there (v valid within 2 reach of [d0, d1) when beta != 0). Rows of held dofs are 0.
+void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt out_stride);
+
+// Dissipation rate v^T C v (W) of the dofs [d0, d1) and the strain terms they own: alpha sum m v^2
+// + beta sum_k weight_k (b_k . v)^2, a sum of squares (>= 0 by construction, no cancellation);
+// sums over a partition of the dofs add up to the whole. v as y of BeamSystemStrainEnergy.
+PetscReal BeamSystemDissipationRate(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
+
 } // namespace beamimpact
 
 namespace beamimpact {
