@@ -84,6 +84,17 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
   PetscFunctionReturn(0);
 }
 
+// One line on the beam as a rigid body: what a scale and a balance measure.
+PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
+{
+  const BeamRigidBody b = BeamRigidBodyOf(beam);
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "beam: %s section%s%s, mass %.4f kg, centre of mass %.4f m from x = 0, moment of inertia %.5f kg m^2 about it, %.5f kg m^2 about x = 0\n",
+                        SectionSourceName(beam.section.source), beam.section.file.empty() ? "" : " ", beam.section.file.c_str(), (double)b.mass, (double)b.x_cm, (double)b.inertia_cm,
+                        (double)b.inertia_end));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 {
   Scenario     sc;
@@ -92,6 +103,7 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 
   PetscFunctionBeginUser;
   PetscCall(ScenarioFromOptions(comm, &sc));
+  PetscCall(PrintBeamBody(comm, sc.beam));
   PetscCall(ImpactReferenceFromOptions(comm, &modal));
   if (modal) PetscCall(ImpactRunModal(comm, sc, &res));
   else {
@@ -111,6 +123,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   ModesParams mp;
   ModesResult modes;
   BeamSystem  op;
+  std::vector<std::vector<PetscReal>> shapes;
   std::string why;
 
   PetscFunctionBeginUser;
@@ -118,11 +131,17 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCheck(BeamSystemBuild(beam, &op, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(ModesParamsFromOptions(comm, &mp, &op));
   PetscCall(OptionsCheckUnused(comm));
-  PetscCall(BeamModesCompute(comm, op, mp.count, &modes));
-  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)\n", (double)beam.length, SupportName(beam.left), SupportName(beam.right), beam.nodes));
-  for (size_t q = 0; q < modes.frequency.size(); ++q)
-    PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f%s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? "  (rigid)" : ""));
-  PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(beam, rec); }, [&](const RunRecord &rec) { return ResultsWriteModesFile(comm, output, rec, modes); }));
+  PetscCall(BeamModesCompute(comm, op, mp.count, &modes, &shapes));
+  PetscCall(PrintBeamBody(comm, beam));
+  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)  nodes (m)\n", (double)beam.length, beam.theory.c_str(),
+                        SupportName(beam.left), SupportName(beam.right), beam.nodes));
+  for (size_t q = 0; q < modes.frequency.size(); ++q) {
+    std::string nodes;
+    if (modes.omega[q] != 0)
+      for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1))) nodes += " " + std::to_string(x).substr(0, 6);
+    PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f %s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
+  }
+  PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(beam, rec); }, [&](const RunRecord &rec) { return ResultsWriteModesFile(comm, output, rec, modes, shapes, beam); }));
   PetscFunctionReturn(0);
 }
 

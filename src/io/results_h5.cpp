@@ -212,7 +212,34 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes)
+// /beam: node positions and the section there (EI, mu; D and d of a profile).
+static PetscErrorCode H5WriteBeamSection(hid_t file, const BeamParams &beam)
+{
+  const PetscInt         N = beam.nodes;
+  const PetscReal        h = beam.length / (N - 1);
+  std::vector<PetscReal> x(N), EI(N), mu(N), D, d;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < N; ++i) {
+    const SectionProperties s = BeamSectionAt(beam, i * h);
+    x[i] = i * h, EI[i] = s.EI, mu[i] = s.mu;
+  }
+  hid_t g = H5Gcreate2(file, "beam", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCall(H5WriteDataset1D(g, "x", x, "m"));
+  PetscCall(H5WriteDataset1D(g, "EI", EI, "N m^2"));
+  PetscCall(H5WriteDataset1D(g, "mu", mu, "kg/m"));
+  if (beam.section.source == SectionSource::Profile) {
+    x.clear();
+    for (const ProfileRow &r : beam.section.profile) x.push_back(r.x), D.push_back(r.D), d.push_back(r.d);
+    PetscCall(H5WriteDataset1D(g, "profile_x", x, "m"));
+    PetscCall(H5WriteDataset1D(g, "profile_D", D, "m"));
+    PetscCall(H5WriteDataset1D(g, "profile_d", d, "m"));
+  }
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
+                                     const BeamParams &beam)
 {
   PetscMPIInt rank;
 
@@ -226,7 +253,12 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
   PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
   PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
   PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
+  PetscCall(H5WriteDataset2D(g, "shapes", shapes, "1 (deflection, normalised over all dofs)"));
+  const PetscReal h = beam.length / (beam.nodes - 1);
+  for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m, ++k)
+    PetscCall(H5WriteDataset1D(g, k == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
   H5Gclose(g);
+  PetscCall(H5WriteBeamSection(file, beam));
   H5Fclose(file);
   PetscFunctionReturn(0);
 }

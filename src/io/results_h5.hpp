@@ -28,9 +28,13 @@ const std::vector<ResultColumn> &ImpactResultColumns();
 // first result its /events, /series and /snapshots when they hold data.
 PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam);
 
-// Writes a new file (replacing any) on rank 0 of comm: root attributes and /modes with
-// the frequency (Hz), period (s) and omega (rad/s) of each mode.
-PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes);
+// Writes a new file (replacing any) on rank 0 of comm: root attributes; /modes with the
+// frequency (Hz), period (s) and omega (rad/s) of each mode, the deflection shapes (one row per
+// mode over the nodes /beam/x) and the nodes of the first two flexible modes (nodes_1, nodes_2,
+// m); /beam with the node positions and the section there (EI, mu; the profile's D and d when
+// the beam has one), for plots of the bat with its modes (scripts/plot_bat.py).
+PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
+                                     const BeamParams &beam);
 
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);

@@ -19,7 +19,14 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_length", beam.length);
   rec->add("beam_EI", beam.EI);
   rec->add("beam_mu", beam.mu);
-  rec->add("beam_mass", beam.mu * beam.length);
+  const BeamRigidBody body = BeamRigidBodyOf(beam);
+  rec->add("beam_mass", body.mass);
+  rec->add("beam_center_of_mass", body.x_cm);
+  rec->add("beam_inertia_cm", body.inertia_cm);
+  rec->add("beam_inertia_end", body.inertia_end);
+  rec->add("beam_theory", beam.theory);
+  rec->add("beam_section", SectionSourceName(beam.section.source));
+  if (!beam.section.file.empty()) rec->add("beam_section_file", beam.section.file);
   rec->add("beam_nodes", (double)beam.nodes);
   rec->add("beam_left", SupportName(beam.left));
   rec->add("beam_right", SupportName(beam.right));

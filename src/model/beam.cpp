@@ -31,6 +31,21 @@ SectionProperties BeamSectionMean(const BeamParams &p, PetscReal a, PetscReal b)
   return s;
 }
 
+BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
+{
+  SectionMoments m;
+  if (p.section.source == SectionSource::Uniform) {
+    const PetscReal L = p.length;
+    m.m0 = p.mu * L, m.m1 = p.mu * L * L / 2, m.m2 = p.mu * L * L * L / 3, m.j = p.rhoI * L;
+  } else m = SectionMomentsOf(p.section, 0, p.length);
+  BeamRigidBody b;
+  b.mass        = m.m0;
+  b.x_cm        = m.m1 / m.m0;
+  b.inertia_end = m.m2 + m.j;
+  b.inertia_cm  = m.m2 - m.m1 * m.m1 / m.m0 + m.j;
+  return b;
+}
+
 std::vector<NodeHold> BeamNodeHolds(const BeamParams &p)
 {
   const PetscInt        N = p.nodes;

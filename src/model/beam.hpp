@@ -67,6 +67,17 @@ SectionProperties BeamSectionAt(const BeamParams &p, PetscReal x);
 // The mean section over [a, b] (m): the uniform scalars, or the cell integrals / (b - a).
 SectionProperties BeamSectionMean(const BeamParams &p, PetscReal a, PetscReal b);
 
+// The beam as a rigid body, from its sections (exact integrals): what a scale, a balance point
+// and a pendulum measure. The moments of inertia are about a transverse axis and include the
+// sections' own rotary inertia (int rho I) where the section knows it.
+struct BeamRigidBody {
+  PetscReal mass        = 0; // kg
+  PetscReal x_cm        = 0; // m, centre of mass from x = 0
+  PetscReal inertia_cm  = 0; // kg m^2, about the centre of mass
+  PetscReal inertia_end = 0; // kg m^2, about the x = 0 end (the knob of a bat)
+};
+BeamRigidBody BeamRigidBodyOf(const BeamParams &p);
+
 // How each node is held: not, clamped (held with zero slope: clamped end, inside a clamped
 // region) or pinned (y = 0 only).
 enum class NodeHold : signed char { None = 0, Clamp = 1, Pin = 2 };

@@ -75,7 +75,9 @@ SectionProperties SectionAt(const BeamSection &s, PetscReal x)
   return p;
 }
 
-SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b)
+// 3-point Gauss on each piece of [a, b] between rows: f(x, properties at x, weight).
+template <class F>
+static void SectionQuadrature(const BeamSection &s, PetscReal a, PetscReal b, F f)
 {
   std::vector<PetscReal> cuts{a};
   auto                   add_knot = [&](PetscReal x) {
@@ -87,16 +89,28 @@ SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b
     for (const PropertiesRow &r : s.table) add_knot(r.x);
   cuts.push_back(b);
   static const PetscReal gx[3] = {-0.7745966692414834, 0.0, 0.7745966692414834}, gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-  SectionProperties      sum;
   for (size_t j = 0; j + 1 < cuts.size(); ++j) {
     const PetscReal c = 0.5 * (cuts[j] + cuts[j + 1]), r = 0.5 * (cuts[j + 1] - cuts[j]);
-    for (int g = 0; g < 3; ++g) {
-      const SectionProperties q = SectionAt(s, c + r * gx[g]);
-      const PetscReal         w = r * gw[g];
-      sum.EI += w * q.EI, sum.mu += w * q.mu, sum.kGA += w * q.kGA, sum.rhoI += w * q.rhoI;
-    }
+    for (int g = 0; g < 3; ++g) f(c + r * gx[g], SectionAt(s, c + r * gx[g]), r * gw[g]);
   }
+}
+
+SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b)
+{
+  SectionProperties sum;
+  SectionQuadrature(s, a, b, [&](PetscReal, const SectionProperties &q, PetscReal w) {
+    sum.EI += w * q.EI, sum.mu += w * q.mu, sum.kGA += w * q.kGA, sum.rhoI += w * q.rhoI;
+  });
   return sum;
+}
+
+SectionMoments SectionMomentsOf(const BeamSection &s, PetscReal a, PetscReal b)
+{
+  SectionMoments m;
+  SectionQuadrature(s, a, b, [&](PetscReal x, const SectionProperties &q, PetscReal w) {
+    m.m0 += w * q.mu, m.m1 += w * q.mu * x, m.m2 += w * q.mu * x * x, m.j += w * q.rhoI;
+  });
+  return m;
 }
 
 PetscReal SectionLength(const BeamSection &s)

@@ -71,6 +71,12 @@ SectionProperties SectionAt(const BeamSection &s, PetscReal x);
 // profile (degree <= 4) and a table (degree 1). The discrete beams use cell integrals rather
 // than point values, so that steps in the section (a knob, a wall change) keep second order.
 SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b);
+// Mass moments over [a, b]: m0 = int mu (kg), m1 = int mu x (kg m), m2 = int mu x^2 (kg m^2),
+// and j = int rho I (kg m^2, the sections' own rotary inertia); exact as SectionIntegral.
+struct SectionMoments {
+  PetscReal m0 = 0, m1 = 0, m2 = 0, j = 0;
+};
+SectionMoments SectionMomentsOf(const BeamSection &s, PetscReal a, PetscReal b);
 // The span (m) of the rows: last x minus first x.
 PetscReal SectionLength(const BeamSection &s);
 

@@ -282,6 +282,16 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   PetscFunctionReturn(0);
 }
 
+std::vector<PetscReal> ModeNodes(const std::vector<PetscReal> &w, PetscReal h)
+{
+  std::vector<PetscReal> x;
+  for (size_t i = 0; i + 1 < w.size(); ++i) {
+    if (w[i] == 0.0 && i > 0 && w[i - 1] * w[i + 1] < 0) x.push_back(h * i); // a node on a grid node
+    if (w[i] * w[i + 1] < 0) x.push_back(h * (i + w[i] / (w[i] - w[i + 1])));
+  }
+  return x;
+}
+
 PetscInt BeamModesRigidCount(Support left, Support right)
 {
   if (left == Support::Free && right == Support::Free) return 2;

@@ -34,6 +34,10 @@ struct ModesParams {
 // BeamModesCompute checks the upper bound again (with the same message).
 PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamSystem *op = nullptr);
 
+// Nodes of a mode (m): the points strictly between free nodes where its deflection shape
+// (one value per node, spacing h) changes sign, by linear interpolation. A tap test finds them.
+std::vector<PetscReal> ModeNodes(const std::vector<PetscReal> &shape, PetscReal h);
+
 struct ModesResult {
   std::vector<PetscReal> omega;     // rad/s, angular frequencies, ascending; rigid modes exactly 0
   std::vector<PetscReal> frequency; // Hz, omega / (2 pi)
