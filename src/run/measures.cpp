@@ -24,6 +24,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     const PetscReal mi = S.mass[S.Dof(i)];
     sums[2] += mi * vel(i);
     sums[3] += mi * S.NodeX(i) * vel(i);
+    if (F > 1) sums[3] += S.mass[S.Dof(i, 1)] * sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
   }
   if (mon && mon->segment) {
     const PetscReal tol = 1e-9 * S.h;

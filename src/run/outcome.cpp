@@ -17,7 +17,8 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   res->beam_kinetic_end       = m1.beam_kinetic;
   res->beam_strain_end        = m1.beam_strain;
   res->ball_dissipated_end    = m1.ball_work - m1.ball_stored;
-  // Rigid-body part of the beam's motion about its centre of mass (held nodes never move).
+  // Rigid-body part of the beam's motion about its centre of mass (held nodes never move); a
+  // rigid rotation of a Timoshenko beam also turns its sections (psi = theta).
   PetscReal M = 0, Mx = 0, Mxx = 0;
   for (PetscInt i = 0; i < S.nodes; ++i) {
     const PetscInt d = S.Dof(i);
@@ -26,6 +27,7 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
     M += S.mass[d];
     Mx += S.mass[d] * x;
     Mxx += S.mass[d] * x * x;
+    if (S.fields > 1 && !S.held[S.Dof(i, 1)]) Mxx += S.mass[S.Dof(i, 1)]; // rotary inertia of a Timoshenko section
   }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
   const PetscReal L_cm = m1.beam_moment - x_cm * m1.beam_momentum;
