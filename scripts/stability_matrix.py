@@ -123,6 +123,8 @@ BASE = {
     "-ball_mass": 0.042, "-ball_speed": 1.0, "-ball_law": "linear", "-ball_k": 2e4,
     "-impact_x": 0.55,
 }
+# A bat from options/bats/ replaces the strip: the uniform section's options are removed.
+BAT = {"-beam_length": None, "-beam_youngs_modulus": None, "-beam_density": None, "-beam_thickness": None, "-beam_width": None}
 HYST = {"-ball_law": "hysteresis", "-ball_k": None, "-ball_k1": 2e4, "-ball_m": 1.0, "-ball_n": 1.768}
 
 
@@ -176,6 +178,8 @@ class Case:
     def beam_mass_free(self):
         """Mass of the beam that can move (kg): the clamped region excluded."""
         p = self.params
+        if "-beam_profile" in p or "-beam_properties" in p:
+            return section_mass(p)  # the bats of options/bats/ are free at both ends
         L = float(p["-beam_length"])
         if "-beam_mu" in p:
             mu = float(p["-beam_mu"])
@@ -201,9 +205,32 @@ class Case:
         return list(dict.fromkeys(out))
 
 
+def section_mass(p):
+    """Mass (kg) of a beam given by -beam_profile (rows x D [d], with -beam_density) or
+    -beam_properties (rows x EI mu ...): the rows' diameters or mu linear between rows."""
+    path = p.get("-beam_profile") or p.get("-beam_properties")
+    rows = [[float(v) for v in line.split("#", 1)[0].split()] for line in open(os.path.join(ROOT, path))]
+    rows = [r for r in rows if r]
+    mass = 0.0
+    for a, b in zip(rows[:-1], rows[1:]):
+        n = 64  # Simpson on each piece: exact for the quadratic rho A of a linear profile
+        xs = [a[0] + (b[0] - a[0]) * k / n for k in range(n + 1)]
+        def f(x):
+            t = (x - a[0]) / (b[0] - a[0])
+            if "-beam_properties" in p:
+                return (1 - t) * a[2] + t * b[2]
+            D = (1 - t) * a[1] + t * b[1]
+            d = (1 - t) * (a[2] if len(a) > 2 else 0.0) + t * (b[2] if len(b) > 2 else 0.0)
+            return float(p["-beam_density"]) * math.pi * (D * D - d * d) / 4
+        h = (b[0] - a[0]) / n
+        mass += h / 3 * sum((1 if k in (0, n) else 4 if k % 2 else 2) * f(x) for k, x in enumerate(xs))
+    return mass
+
+
 def preset(path):
-    """The options of a ball preset file (options/balls/*.opts) as {option: value}, so that a
-    matrix row runs the preset's own numbers (no nested -options_file in those files)."""
+    """The options of a ball or bat preset file (options/balls/*.opts, options/bats/*.opts) as
+    {option: value}, so that a matrix row runs the preset's own numbers (no nested -options_file
+    in those files)."""
     out = {}
     with open(os.path.join(ROOT, path)) as f:
         for line in f:
@@ -309,6 +336,20 @@ def cases():
         Case("baseball-preset", "baseball preset (options/balls/baseball.opts: e(v) table, 0.78 ms at 26.8 m/s) at 40 m/s, x = 0.9 m",
              dict(preset("options/balls/baseball.opts"), **{"-ball_k": None, "-ball_speed": 40.0, "-impact_x": 0.9}),
              checks=("energy_bound",), why="a ball law is finished only when the studies run it too"),
+        # Real bats (options/bats/): a varying section replaces the strip (its options removed).
+        # The Timoshenko bat's fastest waves are shear and bar waves (limit ~ h, not h^2), and the
+        # hollow bat's knob is a thick ring next to a thin handle (a step in EI of 11x).
+        Case("r161-euler", "R161 wood bat (profile), Euler-Bernoulli, N = 169, baseball preset at 40 m/s, x = 0.7 m",
+             {**BAT, **preset("options/bats/r161.opts"), **preset("options/balls/baseball.opts"),
+              **{"-ball_k": None, "-beam_theory": "euler", "-beam_nodes": 169, "-impact_x": 0.7}},
+             checks=("energy_bound",), why="a beam model is finished only when the studies run it too"),
+        Case("r161-timoshenko", "R161 wood bat, Timoshenko (two dofs per node), N = 169, baseball preset at 40 m/s, x = 0.7 m",
+             {**BAT, **preset("options/bats/r161.opts"), **preset("options/balls/baseball.opts"),
+              **{"-ball_k": None, "-beam_theory": "timoshenko", "-beam_nodes": 169, "-impact_x": 0.7}},
+             checks=("energy_bound",)),
+        Case("aluminium-timoshenko", "hollow aluminium bat, Timoshenko, N = 337, superball (linear) at 1 m/s, x = 0.8 m",
+             {**BAT, **preset("options/bats/aluminium-bat.opts"), **{"-beam_theory": "timoshenko", "-beam_nodes": 337, "-impact_x": 0.8}},
+             why="hollow sections with a step at the knob; the exact modal solution as reference"),
         Case("double", "double impact: 30 cm clamped at x = 0, x = 29 cm",
              {"-beam_length": 0.3, "-beam_left": "clamped", "-impact_x": 0.29}),
         Case("triple", "triple impact: 30 cm clamped at x = 0, 100 g ball, x = 29.5 cm",

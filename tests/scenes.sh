@@ -16,6 +16,8 @@
 #     the handle's peak kinetic energy is positive and inside the 30 ms window;
 #   * baseball (options/balls/baseball.opts on the default beam): energy balance, the first
 #     contact's e from the COR table, k1 from the characterisation;
+#   * r161-modes: the R161 bat's mass, centre of mass, fundamental and first-mode nodes against
+#     the published bat; r161-acor: e_A at 70 cm by the baseball at 40 m/s near 0.2;
 #   * waves, snapshots, the 10 mm and hysteretic sweeps, racket snapshots: they run and write
 #     what the plots read (series shapes, snapshot times), with numbers in a sane range.
 # The long versions (every point, fine grids) run from scripts/run_paper.sh, not here.
@@ -177,6 +179,20 @@ if run baseball 1 options/scenes/baseball.opts; then
   check "baseball: first contact at 40 m/s with e(40) = 0.5126 from the table ($(col "$f" /events/approach_speed | head -1), $(col "$f" /events/cor | head -1))" \
     'v == 40 && e > 0.5125 && e < 0.5127' v="$(col "$f" /events/approach_speed | head -1)" e="$(col "$f" /events/cor | head -1)"
   check "baseball: k1 $(attr "$f" ball_k1) N/m^1.84 from 0.78 ms at 26.8 m/s (3.078e8)" 'k > 3.07e8 && k < 3.085e8' k="$(attr "$f" ball_k1)"
+fi
+
+# --- real bats (options/bats/): the R161 tap test and an impact at the sweet spot ---------------
+if run r161-modes 1 options/scenes/r161-modes.opts; then
+  f="$dir/r161-modes.h5"
+  check "r161-modes: mass $(attr "$f" beam_mass) kg (profile: 0.869), centre of mass $(attr "$f" beam_center_of_mass) m (0.561)" \
+    'm > 0.868 && m < 0.870 && c > 0.560 && c < 0.562' m="$(attr "$f" beam_mass)" c="$(attr "$f" beam_center_of_mass)"
+  check "r161-modes: fundamental $(col "$f" /modes/frequency | sed -n 3p) Hz within 8% of Nathan's 165 Hz (Timoshenko)" 'f > 152 && f < 178' f="$(col "$f" /modes/frequency | sed -n 3p)"
+  check "r161-modes: first-mode nodes $(col "$f" /modes/nodes_1 | paste -sd,) m near 0.17 and 0.68 (published)" \
+    'split(n, a, ",") == 2 && a[1] > 0.15 && a[1] < 0.19 && a[2] > 0.66 && a[2] < 0.70' n="$(col "$f" /modes/nodes_1 | paste -sd,)"
+fi
+if run r161-acor 1 options/scenes/r161-acor.opts -sweep_x 0.7 -sweep_quiet; then
+  f="$dir/r161-acor.h5"
+  check "r161-acor: e_A $(col "$f" /results/acor) at 70 cm (Nathan's wood bat: about 0.2), one contact" 'a > 0.15 && a < 0.25 && n == 1' a="$(col "$f" /results/acor)" n="$(col "$f" /results/contacts)"
 fi
 
 # every scene file was run above
