@@ -6,6 +6,8 @@
 // (RK4 on m_b c'' = -F(c), the loading/unloading switch and the separation bisected onto
 // their roots), independent of the closed forms that produced k1 and n, and of the program's
 // steppers and event locator.
+#include "io/ball_options.hpp"
+#include "io/cor_table_file.hpp"
 #include "model/contact.hpp"
 #include "model/cor_table.hpp"
 #include "test_helpers.hpp"

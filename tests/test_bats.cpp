@@ -2,6 +2,7 @@
 // baseball preset (options/balls/baseball.opts) at 40 m/s, Euler-Bernoulli and Timoshenko:
 // invariants, ranks, integrators, and the exact modal reference.
 #include "io/beam_options.hpp"
+#include "io/ball_options.hpp"
 #include "run/modal_reference.hpp"
 
 #include "test_helpers.hpp"

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "io/beam_options.hpp"
+#include "io/ball_options.hpp"
 #include "run/scenario.hpp"
 
 #include <petscsys.h>

@@ -23,6 +23,7 @@ namespace beamimpact {
 
 enum class ContactLawKind { Linear = 0, Hysteresis = 1 };
 const char *ContactLawName(ContactLawKind k);
+extern const char *const ContactLawNames[]; // PETSc enum list: names, type, prefix, nullptr
 
 struct BallParams {
   PetscReal      mass        = 0.042; // kg
@@ -102,7 +103,5 @@ PetscReal ContactWallTime(const BallParams &b, PetscReal v);
 //   k1 = (m+1)/2 m_b v^2 (tau_1 / tau)^(m+1),  tau_1 = (I(m+1) + I(n+1)/e) / v.
 PetscReal BallK1FromContactTime(PetscReal mass, PetscReal m, PetscReal e, PetscReal tau, PetscReal v);
 
-// Reads -ball_* options; checks ranges with messages naming option and value.
-PetscErrorCode BallParamsFromOptions(MPI_Comm comm, BallParams *b);
 
 } // namespace beamimpact

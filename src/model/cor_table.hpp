@@ -1,13 +1,12 @@
 // A ball's coefficient of restitution as a table of the approach speed, e(v): rows
 // "v e" (m/s, 1), '#' starts a comment, blank lines are skipped. Linear interpolation
 // between rows, constant beyond the first and last row. Read by -ball_cor_table
-// (model/contact.cpp); the hysteretic law takes its unloading exponent n from e at the
+// (io/ball_options.cpp, file read by io/cor_table_file.cpp); the hysteretic law takes its unloading exponent n from e at the
 // start of each contact (docs/model.md, section 2).
 #pragma once
 
 #include <petscsys.h>
 
-#include <istream>
 #include <string>
 #include <vector>
 
@@ -20,11 +19,5 @@ struct CorTable {
   bool      empty() const { return v.empty(); }
   PetscReal operator()(PetscReal speed) const; // e at this approach speed
 };
-
-// Parses the rows of `in` (named `name` in messages). On a bad row returns false with *why
-// naming the file, the line and what is allowed.
-bool CorTableParse(std::istream &in, const std::string &name, CorTable *t, std::string *why);
-// Reads the file at `path` (false with *why if it cannot be opened or a row is bad).
-bool CorTableRead(const std::string &path, CorTable *t, std::string *why);
 
 } // namespace beamimpact
