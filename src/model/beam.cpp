@@ -38,6 +38,7 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
     const PetscReal L = p.length;
     m.m0 = p.mu * L, m.m1 = p.mu * L * L / 2, m.m2 = p.mu * L * L * L / 3, m.j = p.rhoI * L;
   } else m = SectionMomentsOf(p.section, 0, p.length);
+  if (p.theory != "timoshenko") m.j = 0; // an Euler-Bernoulli beam's sections do not spin
   BeamRigidBody b;
   b.mass        = m.m0;
   b.x_cm        = m.m1 / m.m0;

@@ -68,8 +68,9 @@ SectionProperties BeamSectionAt(const BeamParams &p, PetscReal x);
 SectionProperties BeamSectionMean(const BeamParams &p, PetscReal a, PetscReal b);
 
 // The beam as a rigid body, from its sections (exact integrals): what a scale, a balance point
-// and a pendulum measure. The moments of inertia are about a transverse axis and include the
-// sections' own rotary inertia (int rho I) where the section knows it.
+// and a pendulum measure. The moments of inertia are about a transverse axis; a Timoshenko
+// beam's include the sections' own rotary inertia (int rho I), as its dynamics do (for a bat
+// about 0.1% of the total).
 struct BeamRigidBody {
   PetscReal mass        = 0; // kg
   PetscReal x_cm        = 0; // m, centre of mass from x = 0

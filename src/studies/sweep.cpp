@@ -40,9 +40,10 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const Scenario
   PetscFunctionBeginUser;
   PetscCall(ImpactRun(comm, c, result));
   const ImpactResult &r = *result;
-  // Rigid-body model, Eq. (11): uniform beam of mass M = mu L about its centre.
-  const PetscReal M = c.beam.mu * c.beam.length, I_cm = M * c.beam.length * c.beam.length / 12.0;
-  const PetscReal M_e = RigidEffectiveMass(M, I_cm, std::abs(r.x - 0.5 * c.beam.length));
+  // Rigid-body model, Eq. (11), with the beam's own mass, centre of mass and inertia (for the
+  // paper's uniform beam: M = mu L, I_cm = M L^2 / 12 about its centre).
+  const BeamRigidBody body = BeamRigidBodyOf(c.beam);
+  const PetscReal     M_e  = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(r.x - body.x_cm));
   row->clear();
   row->push_back((double)index);
   for (auto &rc : ImpactResultColumns()) row->push_back(rc.get(r));
