@@ -56,8 +56,7 @@ if [ "$STUDY" = r161 ]; then
   echo "explicit step limits (level L0 steps; wall time):"
   for th in euler timoshenko; do
     for N in 85 169 337 673; do
-      grep -E '^  (leapfrog|rk4) +L0 ' "$OUT/r161-$th-conv$N.log" | awk -v th="$th" -v N="$N" '{ printf "  %-10s N = %3d  %-8s dt %s  steps %s  wall %s s
-", th, N, $1, $4, $17, $14 }'
+      grep -E '^  (leapfrog|rk4) +L0 ' "$OUT/r161-$th-conv$N.log" | awk -v th="$th" -v N="$N" '{ printf "  %-10s N = %3d  %-8s dt %s  steps %s  wall %s s\n", th, N, $1, $4, $17, $14 }'
     done
   done
   exit 0
