@@ -233,3 +233,22 @@ TEST(EnergyPartition, FractionsAddUpAndRigidBeamDoesNotVibrate)
   EXPECT_LT(std::abs(rr.vibration_fraction), 1e-3);
   EXPECT_NEAR(rr.ball_loss_fraction + rr.translation_fraction + rr.rotation_fraction + rr.acor * rr.acor, 1.0, 2e-3);
 }
+
+// Option lists have no fixed length: 300 snapshot times and 200 velocity points are all kept
+// (they were silently cut at 256 and 64).
+TEST(Monitors, ListsOfAnyLength)
+{
+  std::string times, points;
+  for (int k = 0; k < 300; ++k) times += (k ? "," : "") + std::to_string(1e-5 * k);
+  for (int k = 0; k < 200; ++k) points += (k ? "," : "") + std::to_string(1.1 * k / 199);
+  ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-snapshot_times", times.c_str()));
+  ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-monitor_velocity_at", points.c_str()));
+  MonitorRequest m;
+  EXPECT_EQ(0, MonitorRequestFromOptions(PETSC_COMM_WORLD, AluminiumBeam(1.1, 41), &m));
+  ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-snapshot_times"));
+  ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-monitor_velocity_at"));
+  ASSERT_EQ(300u, m.snapshot_times.size());
+  ASSERT_EQ(200u, m.velocity_at.size());
+  EXPECT_NEAR(2.99e-3, m.snapshot_times.back(), 1e-15);
+  EXPECT_NEAR(1.1, m.velocity_at.back(), 1e-6);
+}

@@ -46,4 +46,18 @@ PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode OptionsListLength(const char *name, PetscInt *n)
+{
+  const char *value = nullptr;
+  PetscBool   set   = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsFindPair(NULL, NULL, name, &value, &set));
+  *n = 0;
+  if (set && value && *value) {
+    *n = 1;
+    for (const char *c = value; *c; ++c) *n += *c == ',';
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace beamimpact

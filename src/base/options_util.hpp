@@ -17,6 +17,10 @@ PetscErrorCode OptionsAsString(std::string *all);
 // turns the error into a warning.
 // Options whose names start with one of ignore_prefixes (without the dash, e.g. "ts_")
 // are not reported: a task that legitimately does not use them says so itself.
+// The number of comma-separated values given to option `name` (0 when it is not given): the
+// size to allocate before PetscOptionsRealArray, so that lists have no fixed limit.
+PetscErrorCode OptionsListLength(const char *name, PetscInt *n);
+
 PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes = {});
 
 } // namespace beamimpact

@@ -1,6 +1,8 @@
 // The impact's rules and monitors from the options (-impact_*, -monitor_*, -snapshot_times)
 // and the run's time rules. See impact.hpp.
 #include "run/impact.hpp"
+
+#include "base/options_util.hpp"
 #include "run/impact_point.hpp"
 
 #include <algorithm>
@@ -42,18 +44,20 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
 
 PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, MonitorRequest *m)
 {
-  PetscReal pts[64], times[256];
-  PetscInt  npts = 64, ntimes = 256;
+  PetscInt  npts = 0, ntimes = 0; // lists of any length: sized from the options first
   PetscBool setpts = PETSC_FALSE, settimes = PETSC_FALSE;
   PetscReal seg[2] = {0, 0};
   PetscInt  nseg   = 2;
 
   PetscFunctionBeginUser;
+  PetscCall(OptionsListLength("-monitor_velocity_at", &npts));
+  PetscCall(OptionsListLength("-snapshot_times", &ntimes));
+  std::vector<PetscReal> pts(std::max<PetscInt>(npts, 1), 0.0), times(std::max<PetscInt>(ntimes, 1), 0.0);
   PetscOptionsBegin(comm, NULL, "Monitors: time series and snapshots, written only when asked", "beamimpact");
   PetscCall(PetscOptionsBool("-monitor_ball", "Record ball position, velocity, compression and force at every step", "", m->ball, &m->ball, NULL));
   PetscCall(PetscOptionsBool("-monitor_energy", "Record ball kinetic, stored and dissipated energy and beam kinetic and strain energy at every step", "", m->energy, &m->energy, NULL));
-  PetscCall(PetscOptionsRealArray("-monitor_velocity_at", "Record the beam velocity at these points x1,x2,... (m) at every step", "", pts, &npts, &setpts));
-  PetscCall(PetscOptionsRealArray("-snapshot_times", "Record the beam displacement y(x) at these times t1,t2,... (s)", "", times, &ntimes, &settimes));
+  PetscCall(PetscOptionsRealArray("-monitor_velocity_at", "Record the beam velocity at these points x1,x2,... (m) at every step (any number; none by default)", "", pts.data(), &npts, &setpts));
+  PetscCall(PetscOptionsRealArray("-snapshot_times", "Record the beam displacement y(x) at these times t1,t2,... (s) (any number; none by default)", "", times.data(), &ntimes, &settimes));
   PetscCall(PetscOptionsRealArray("-monitor_segment", "Record the kinetic energy of the beam segment x0,x1 (m) at every step, and its peak", "", seg, &nseg, &m->segment));
   PetscCall(PetscOptionsReal("-monitor_segment_until", "Take the segment's peak over t <= this (s); < 0: the whole run", "", m->segment_until, &m->segment_until, NULL));
   PetscOptionsEnd();
@@ -66,11 +70,11 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
   if (setpts) {
     for (PetscInt q = 0; q < npts; ++q)
       PetscCheck(pts[q] >= 0 && pts[q] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-monitor_velocity_at %g is not allowed: points must lie on the beam, 0 <= x <= %g (m)", (double)pts[q], (double)beam.length);
-    m->velocity_at.assign(pts, pts + npts);
+    m->velocity_at.assign(pts.begin(), pts.begin() + npts);
   }
   if (settimes) {
     for (PetscInt q = 0; q < ntimes; ++q) PetscCheck(times[q] >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-snapshot_times %g is not allowed: times must be >= 0 (s)", (double)times[q]);
-    m->snapshot_times.assign(times, times + ntimes);
+    m->snapshot_times.assign(times.begin(), times.begin() + ntimes);
     std::sort(m->snapshot_times.begin(), m->snapshot_times.end());
   }
   PetscFunctionReturn(0);
