@@ -71,7 +71,7 @@ PetscErrorCode TaskWriteOutput(MPI_Comm comm, const std::string &output, Record 
 
 } // namespace
 
-PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
+PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(comm,
@@ -81,6 +81,15 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r)
                         r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   if (r.beam_dissipated_end > 0) // a damped beam
     PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of the incident energy); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
+  if (sc.swing.Swings())
+    PetscCall(PetscPrintf(comm, "swinging bat (V_cm %g m/s, Omega %g rad/s): batted-ball speed %.4f m/s, collision efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
+                          (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs, (double)r.collision_efficiency, (double)r.bat_speed_end,
+                          (double)r.bat_angular_velocity_end));
+  if (sc.beam.has_pivot) {
+    const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
+    PetscCall(PetscPrintf(comm, "pivot at %.4f m: I_p %.5f kg m^2, recoil factor r %.6f, e_A %.6f, BBCOR = e_A (1 + r) + r = %.6f\n", (double)sc.beam.pivot_x, (double)rig.inertia_pivot,
+                          (double)r.recoil_factor, (double)r.collision_efficiency, (double)r.bbcor));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -111,7 +120,7 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
     sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
     PetscCall(ImpactRun(comm, sc, &res));
   }
-  PetscCall(ImpactPrintSummary(comm, res));
+  PetscCall(ImpactPrintSummary(comm, sc, res));
   PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
                             [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam); }));
   PetscFunctionReturn(0);

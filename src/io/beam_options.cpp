@@ -32,7 +32,7 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscEnum left = (PetscEnum)p->left, right = (PetscEnum)p->right;
   PetscReal clamp[2] = {0, 0};
   PetscInt  nclamp   = 2;
-  PetscBool setclamp = PETSC_FALSE;
+  PetscBool setclamp = PETSC_FALSE, setpivot = PETSC_FALSE;
   const std::string theories = "Beam theory: " + TheoryList();
 
   PetscFunctionBeginUser;
@@ -56,6 +56,7 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(PetscOptionsEnum("-beam_left", "Support at x = 0", "", SupportNames, left, &left, NULL));
   PetscCall(PetscOptionsEnum("-beam_right", "Support at x = L", "", SupportNames, right, &right, NULL));
   PetscCall(PetscOptionsRealArray("-beam_clamp", "Clamped region x0,x1 (m) held fixed (a handle in a vice)", "", clamp, &nclamp, &setclamp));
+  PetscCall(PetscOptionsReal("-beam_pivot", "Pivot x_p (m): an interior point held at y = 0, free to rotate (a test rig; on the nearest node)", "", p->pivot_x, &p->pivot_x, &setpivot));
   PetscCall(PetscOptionsReal("-beam_damping_mass", "Rayleigh damping alpha (1/s): C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "", p->damping_mass, &p->damping_mass, NULL));
   PetscCall(PetscOptionsReal("-beam_damping_stiffness", "Rayleigh damping beta (s)", "", p->damping_stiffness, &p->damping_stiffness, NULL));
   PetscOptionsEnd();
@@ -64,6 +65,7 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   p->right  = (Support)right;
   p->theory = o->theory;
   PetscCheck(BeamTheoryFind(o->theory), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: use one of %s", o->theory, TheoryList().c_str());
+  p->has_pivot = setpivot;
   if (setclamp) {
     PetscCheck(nclamp == 2, comm, PETSC_ERR_ARG_WRONG, "-beam_clamp takes two numbers x0,x1 (m); got %" PetscInt_FMT, nclamp);
     p->has_clamp = true;
@@ -194,6 +196,17 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   PetscCheck(p.damping_stiffness >= 0 && std::isfinite(p.damping_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_damping_stiffness %g is not allowed: beta must be >= 0 (s)", (double)p.damping_stiffness);
   PetscCheck(p.nodes >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_nodes %" PetscInt_FMT " is not allowed: at least 5 nodes are needed", p.nodes);
   PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: use one of %s", p.theory.c_str(), TheoryList().c_str());
+  if (p.has_pivot) {
+    PetscCheck(p.pivot_x > 0 && p.pivot_x < p.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_pivot %g is not allowed: the pivot must be inside the beam, 0 < x_p < L = %g (m)", (double)p.pivot_x,
+               (double)p.length);
+    PetscCheck(p.left != Support::Clamped && p.right != Support::Clamped, comm, PETSC_ERR_ARG_INCOMP,
+               "-beam_pivot %g with a clamped end (-beam_%s clamped) is not allowed: a pivoted bat is free at both ends (or pinned)", (double)p.pivot_x, p.left == Support::Clamped ? "left" : "right");
+    PetscCheck(!(p.has_clamp && p.pivot_x >= p.clamp_x0 && p.pivot_x <= p.clamp_x1), comm, PETSC_ERR_ARG_INCOMP, "-beam_pivot %g is not allowed: it lies inside the clamped region -beam_clamp %g,%g",
+               (double)p.pivot_x, (double)p.clamp_x0, (double)p.clamp_x1);
+    const PetscInt k = BeamPivotNode(p);
+    PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes", (double)p.pivot_x,
+               (double)(p.length / (p.nodes - 1)));
+  }
   if (p.has_clamp) {
     PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-beam_clamp %g,%g is not allowed: need 0 <= x0 < x1 <= L = %g (m)", (double)p.clamp_x0, (double)p.clamp_x1, (double)p.length);
@@ -218,6 +231,12 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
   else PetscCall(BeamUniformSection(comm, o, p));
   PetscCall(TimoshenkoCheck(comm, o, *p));
   PetscCall(BeamParamsCheck(comm, *p));
+  if (p->has_pivot) { // the pivot sits on a node: say where when that moves it
+    const PetscReal h = p->length / (p->nodes - 1), xk = BeamPivotNode(*p) * h;
+    if (std::abs(xk - p->pivot_x) > 1e-9 * h)
+      PetscCall(PetscPrintf(comm, "note: -beam_pivot %g is placed on the nearest node, x_p = %.6g m (h = %.3g m); choose -beam_nodes to put it exactly\n", (double)p->pivot_x, (double)xk, (double)h));
+    p->pivot_x = xk;
+  }
   PetscFunctionReturn(0);
 }
 

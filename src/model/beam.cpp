@@ -47,6 +47,12 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
   return b;
 }
 
+PetscInt BeamPivotNode(const BeamParams &p)
+{
+  const PetscReal h = p.length / (p.nodes - 1);
+  return std::min<PetscInt>(p.nodes - 1, std::max<PetscInt>(0, (PetscInt)std::lround(p.pivot_x / h)));
+}
+
 std::vector<NodeHold> BeamNodeHolds(const BeamParams &p)
 {
   const PetscInt        N = p.nodes;
@@ -54,6 +60,7 @@ std::vector<NodeHold> BeamNodeHolds(const BeamParams &p)
   std::vector<NodeHold> hold(N, NodeHold::None);
   if (p.left == Support::Pinned) hold[0] = NodeHold::Pin;
   if (p.right == Support::Pinned) hold[N - 1] = NodeHold::Pin;
+  if (p.has_pivot) hold[BeamPivotNode(p)] = NodeHold::Pin; // y = 0, free rotation
   if (p.left == Support::Clamped) hold[0] = NodeHold::Clamp;
   if (p.right == Support::Clamped) hold[N - 1] = NodeHold::Clamp;
   if (p.has_clamp) {

@@ -56,6 +56,8 @@ struct BeamParams {
   Support   right  = Support::Free; // support at x = L
   bool      has_clamp = false;      // a clamped region [clamp_x0, clamp_x1] is held fixed
   PetscReal clamp_x0 = 0, clamp_x1 = 0; // m
+  bool      has_pivot = false;      // an interior point pinned (y = 0, free rotation): a test rig's pivot
+  PetscReal pivot_x   = 0;          // m, on a node (BeamPivotNode)
   std::string theory = "euler";     // beam theory (model/beam_theory.hpp registry)
   PetscReal damping_mass      = 0;  // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
   PetscReal damping_stiffness = 0;  // s,   beta
@@ -78,6 +80,9 @@ struct BeamRigidBody {
   PetscReal inertia_end = 0; // kg m^2, about the x = 0 end (the knob of a bat)
 };
 BeamRigidBody BeamRigidBodyOf(const BeamParams &p);
+
+// The node of the pivot (has_pivot): the nearest to pivot_x.
+PetscInt BeamPivotNode(const BeamParams &p);
 
 // How each node is held: not, clamped (held with zero slope: clamped end, inside a clamped
 // region) or pinned (y = 0 only).

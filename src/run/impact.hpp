@@ -104,6 +104,12 @@ struct ImpactOutcome {
   // the beam's rigid translation P^2/2M and rotation L_cm^2/2I_cm about its centre of mass,
   // and its vibration (the rest of the beam's energy). Meaningful for a free beam.
   PetscReal ball_loss_fraction = 0, translation_fraction = 0, rotation_fraction = 0, vibration_fraction = 0;
+  // The bat in play: the batted-ball speed (m/s, away from the bat, lab frame), the collision
+  // efficiency q = (bbs - V(x)) / (v_ball + V(x)) (= acor for a bat at rest), the bat's
+  // recoil: its centre-of-mass speed (m/s, toward the ball) and angular velocity (rad/s) at the
+  // end; with -beam_pivot the rigid rig's recoil factor r and BBCOR = e_A (1 + r) + r (0 without).
+  PetscReal bbs = 0, collision_efficiency = 0, bat_speed_end = 0, bat_angular_velocity_end = 0;
+  PetscReal recoil_factor = 0, bbcor = 0;
   // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
   PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
 };

@@ -26,7 +26,10 @@ struct ImpactSetup {
   BeamSystem      sys;
   ContactCoupling g;
   ContactScales   scales;
-  ContactState    contact; // touching, loading: the phase the stepper's force law reads
+  ContactState    contact;  // touching, loading: the phase the stepper's force law reads
+  PetscReal       V_x = 0;  // m/s, the swinging bat's speed toward the ball at the impact point
+  PetscReal       approach = 0;            // m/s, v_ball + V_x: the first contact's approach speed
+  std::vector<PetscReal> beam_velocity;    // per dof at t = 0 (empty: at rest)
 };
 
 PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *s)
@@ -35,10 +38,21 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
 
   PetscFunctionBeginUser;
   PetscCheck(BeamSystemBuild(sc.beam, &s->sys, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  s->g       = BeamSystemCoupling(s->sys, sc.impact.x);
-  s->scales  = ContactScalesOf(s->sys, sc.ball);
-  s->contact = ContactState();
-  s->contact.n = BallExponentAt(sc.ball, sc.ball.speed); // the first contact approaches at v_i (the beam is at rest)
+  s->g        = BeamSystemCoupling(s->sys, sc.impact.x);
+  s->approach = sc.ball.speed;
+  if (sc.swing.Swings()) { // the bat moves rigidly toward the ball (-y): V(x) = V_cm + Omega (x - x_cm)
+    const BeamRigidBody body = BeamRigidBodyOf(sc.beam);
+    s->V_x                   = SwingSpeedAt(sc.swing, body, sc.impact.x);
+    s->approach              = sc.ball.speed + s->V_x;
+    PetscCheck(s->approach > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_speed %g, -bat_angular_velocity %g: the bat moves at %g m/s at x = %g m, so ball (-ball_speed %g) and bat do not approach",
+               (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x, (double)sc.ball.speed);
+    s->beam_velocity = BeamSystemRigidVelocity(s->sys, -(sc.swing.bat_speed - sc.swing.bat_angular_velocity * body.x_cm), -sc.swing.bat_angular_velocity);
+  }
+  BallParams approaching = sc.ball; // the contact's scales are those of the approach speed
+  approaching.speed      = s->approach;
+  s->scales              = ContactScalesOf(s->sys, approaching);
+  s->contact             = ContactState();
+  s->contact.n           = BallExponentAt(sc.ball, s->approach); // the first contact's exponent, from its approach speed
   PetscFunctionReturn(0);
 }
 
@@ -69,7 +83,7 @@ PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario
 
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
 // stepper reads.
-PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, ImpactResult *res)
+PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, PetscReal approach, ImpactResult *res)
 {
   const ImpactParams &ip    = sc.impact;
   const ImpactTimes   times = ImpactTimesOf(sc.beam, sc.ball, ip);
@@ -97,7 +111,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   EventIndicators g0, g1;
   PetscCall(indicators(&g0));
   res->contacts = 1;
-  res->events.push_back(ContactStartEvent(sc.ball, *contact, 0.0, 0.0, sc.ball.speed));
+  res->events.push_back(ContactStartEvent(sc.ball, *contact, 0.0, 0.0, approach));
   while (t < timeline.t_stop * (1 - 1e-14)) {
     const PetscReal target = std::min(timeline.t_stop, rec.NextSnapshot()); // land exactly on both
     PetscReal       dt;
@@ -150,9 +164,10 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
   PetscCall(ImpactSetupBuild(comm, sc, &s));
   set.check_unused_options = sc.impact.check_unused_options;
   set.report_setup         = sc.impact.report_setup;
-  PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, &st, res));
+  PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &st, res));
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
-  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, res));
+  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
+  ImpactBatOutcome(sc, s.V_x, res);
   PetscFunctionReturn(0);
 }
 
@@ -165,9 +180,10 @@ PetscErrorCode LeapfrogRun(const Scenario &sc, const LeapfrogParams &lp, ImpactR
   *res   = ImpactResult();
   res->x = sc.impact.x;
   PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s));
-  PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, &st, res));
+  PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &st, res));
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
-  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, res));
+  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
+  ImpactBatOutcome(sc, s.V_x, res);
   PetscFunctionReturn(0);
 }
 

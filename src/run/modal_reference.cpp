@@ -1,6 +1,8 @@
 // The exact modal reference of one impact. See modal_reference.hpp.
 #include "run/modal_reference.hpp"
 
+#include "run/outcome.hpp"
+
 #include "run/scenario.hpp"
 #include "solvers/modal_basis.hpp"
 
@@ -158,6 +160,14 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   run.q.assign(S.n, 0.0);
   run.qd.assign(S.n, 0.0);
   run.qd[S.n - 1] = ball.speed;
+  PetscReal V_x   = 0; // a swinging bat: its rigid motion toward the ball (-y)
+  if (sc.swing.Swings()) {
+    const BeamRigidBody          body = BeamRigidBodyOf(sc.beam);
+    const std::vector<PetscReal> v0   = BeamSystemRigidVelocity(sys, -(sc.swing.bat_speed - sc.swing.bat_angular_velocity * body.x_cm), -sc.swing.bat_angular_velocity);
+    for (PetscInt d = 0; d + 1 < S.n; ++d) run.qd[d] = v0[S.dof[d]];
+    V_x = SwingSpeedAt(sc.swing, body, ip.x);
+  }
+  const PetscReal E0 = sc.swing.Swings() ? ModalEnergy(S, run.q, run.qd, false) : 0.5 * ball.mass * ball.speed * ball.speed;
   res->contacts   = 1;
   res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
   for (;;) {
@@ -172,7 +182,8 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
       if (!touching) break;
     }
   }
-  ModalOutcome(run, 0.5 * ball.mass * ball.speed * ball.speed, res);
+  ModalOutcome(run, E0, res);
+  ImpactBatOutcome(sc, V_x, res);
   res->wall_time = MPI_Wtime() - wall0;
   PetscFunctionReturn(0);
 }

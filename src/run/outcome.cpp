@@ -38,9 +38,22 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   res->translation_fraction = Etr / Ein;
   res->rotation_fraction    = Erot / Ein;
   res->vibration_fraction   = (m1.beam_kinetic + m1.beam_strain - Etr - Erot) / Ein;
+  res->bat_speed_end            = -m1.beam_momentum / M; // toward the ball (-y)
+  res->bat_angular_velocity_end = I_cm > 0 ? -L_cm / I_cm : 0;
   if (S.Damped()) {
     res->beam_dissipated_end = m1.beam_dissipated;
     res->damping_fraction    = m1.beam_dissipated / Ein;
+  }
+}
+
+void ImpactBatOutcome(const Scenario &sc, PetscReal V_x, ImpactResult *res)
+{
+  res->bbs                  = -res->ball_final_velocity;
+  res->collision_efficiency = SwingCollisionEfficiency(res->bbs, sc.ball.speed, V_x);
+  if (sc.beam.has_pivot) {
+    const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, res->x);
+    res->recoil_factor = rig.recoil_factor;
+    res->bbcor         = PivotBBCOR(rig, res->collision_efficiency);
   }
 }
 

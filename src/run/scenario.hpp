@@ -6,15 +6,20 @@
 
 #include "model/beam.hpp"
 #include "model/contact.hpp"
+#include "model/swing.hpp"
 #include "run/impact.hpp"
 
 namespace beamimpact {
 
 struct Scenario {
+  Scenario() = default;
+  Scenario(BeamParams b, BallParams l, ImpactParams i, MonitorRequest m = MonitorRequest(), SwingParams s = SwingParams()) : beam(b), ball(l), impact(i), monitor(m), swing(s) { }
+
   BeamParams     beam;    // -beam_*
   BallParams     ball;    // -ball_*
   ImpactParams   impact;  // -impact_*
   MonitorRequest monitor; // -monitor_*, -snapshot_times (nothing by default)
+  SwingParams    swing;   // -bat_speed, -bat_angular_velocity (a bat at rest by default)
 };
 
 } // namespace beamimpact

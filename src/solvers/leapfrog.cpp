@@ -221,7 +221,7 @@ PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, co
 }
 
 PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+                                     const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
   auto S = std::make_unique<LeapfrogStepper>();
 
@@ -258,6 +258,7 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
     s->a.assign(sys.ndof, 0.0);
   }
   S->A.vb     = ball.speed;
+  if (!beam_velocity.empty()) S->A.v = beam_velocity; // a swinging bat: a rigid motion (no force)
   S->damped   = sys.Damped();
   if (S->damped) {
     for (LeapfrogState *s : {&S->A, &S->B}) s->vh.assign(sys.ndof, 0.0);

@@ -54,6 +54,6 @@ PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, co
 // *info (ts_type "leapfrog", formulation "explicit", dt_stable, dt_nominal). A step above the
 // stability limit or above 1/8 of the contact time is refused.
 PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
+                                     const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 } // namespace beamimpact

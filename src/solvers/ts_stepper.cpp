@@ -461,10 +461,12 @@ PetscErrorCode ReportSetup(TSStepper &S)
   PetscFunctionReturn(0);
 }
 
-// Beam at rest, ball touching at the impact point moving in +y at `speed`.
-PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed)
+// Beam undeformed with the velocities `beam_velocity` (per dof; empty: at rest), ball
+// touching at the impact point moving in +y at `speed`.
+PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed, const std::vector<PetscReal> &beam_velocity)
 {
-  const TSLayout &L = S.P.L;
+  const TSLayout &L  = S.P.L;
+  const PetscInt  nf = L.fields;
   TSStateWrite    o;
 
   PetscFunctionBeginUser;
@@ -472,12 +474,16 @@ PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed)
   PetscCall(TSStateWriteBegin(L, S.U, &o));
   if (o.ball) o.ball[0] = 0; // position: just touching
   if (o.ball && S.P.form != Formulation::SecondOrder) o.ball[1] = speed;
+  if (!beam_velocity.empty() && S.P.form != Formulation::SecondOrder)
+    for (PetscInt d = L.D0(); d < L.D1(); ++d) o.beam[(d / nf) * L.dof + nf + d % nf] = beam_velocity[d];
   PetscCall(TSStateWriteEnd(L, S.U, &o));
   if (S.P.form == Formulation::SecondOrder) {
     PetscCall(VecDuplicate(S.U, &S.V));
     PetscCall(VecZeroEntries(S.V));
     PetscCall(TSStateWriteBegin(L, S.V, &o));
     if (o.ball) o.ball[0] = speed;
+    if (!beam_velocity.empty())
+      for (PetscInt d = L.D0(); d < L.D1(); ++d) o.beam[(d / nf) * L.dof + d % nf] = beam_velocity[d];
     PetscCall(TSStateWriteEnd(L, S.V, &o));
     PetscCall(TS2SetSolution(S.ts, S.U, S.V));
   } else PetscCall(TSSetSolution(S.ts, S.U));
@@ -489,7 +495,7 @@ PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed)
 } // namespace
 
 PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
-                               const TSStepperSettings &set, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+                               const TSStepperSettings &set, const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
   auto      S             = std::make_unique<TSStepper>();
   char      type[256]     = TSRK;
@@ -516,7 +522,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   PetscCheck(S->dt_nominal > 0 && std::isfinite(S->dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);
   S->info.dt_nominal = S->dt_nominal;
   if (set.report_setup) PetscCall(ReportSetup(*S));
-  PetscCall(SetInitialState(*S, ball.speed));
+  PetscCall(SetInitialState(*S, ball.speed, beam_velocity));
   S->damped = sys.Damped();
   if (S->damped) PetscCall(S->DissipationRateNow(&S->rate, &S->rate_dot));
   *info = S->info;

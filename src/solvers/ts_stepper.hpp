@@ -23,6 +23,6 @@ struct TSStepperSettings {
 // point, moving at the ball's speed; fills *info. contact (owned by the caller) is the
 // contact law's state the residuals use.
 PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
-                               const TSStepperSettings &settings, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
+                               const TSStepperSettings &settings, const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 } // namespace beamimpact

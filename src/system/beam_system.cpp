@@ -128,6 +128,17 @@ PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, Pet
   return 0.5 * T;
 }
 
+std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope)
+{
+  std::vector<PetscReal> v(sys.ndof, 0.0);
+  for (PetscInt i = 0; i < sys.nodes; ++i)
+    for (PetscInt f = 0; f < sys.fields; ++f) {
+      const PetscInt d = sys.Dof(i, f);
+      if (!sys.held[d]) v[d] = f == 0 ? v0 + slope * sys.NodeX(i) : slope;
+    }
+  return v;
+}
+
 PetscReal BeamSystemFreeMass(const BeamSystem &sys)
 {
   PetscReal M = 0;

@@ -70,6 +70,11 @@ PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, Pets
 // Kinetic energy (J) of dofs [d0, d1); v as y above.
 PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
 
+// Velocities (per dof) of the rigid motion with deflection velocity v0 + slope x (m/s) and,
+// for a beam with rotation dofs, section spin `slope` (rad/s): a free motion (K annihilates
+// it). Held dofs get 0.
+std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope);
+
 // Mass (kg) of the translational dofs that are not held.
 PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 

@@ -1,0 +1,40 @@
+// A swinging bat (docs/bats.md, "The bat in play"): before the impact the bat moves rigidly
+// toward the ball, its centre of mass at V_cm and turning at Omega about it (positive when the
+// larger-x end, the barrel, moves faster toward the ball):
+//
+//   V(x) = V_cm + Omega (x - x_cm)                       (m/s, toward the ball)
+//
+// A rigid motion is a free motion of the beam (K annihilates it), so with the ball coming at
+// v_ball the contact starts at the approach speed v_ball + V(x_imp) and, for a free bat, the
+// batted-ball speed obeys BBS = e_A v_ball + (1 + e_A) V(x), e_A the ACOR of the bat at rest
+// hit at the approach speed: a test of the run, which integrates the swinging state itself.
+// Plain numbers: the options are read in io/, the state is set by the steppers.
+#pragma once
+
+#include "model/beam.hpp"
+
+#include <petscsys.h>
+
+namespace beamimpact {
+
+struct SwingParams {
+  PetscReal bat_speed            = 0; // m/s, V_cm toward the ball
+  PetscReal bat_angular_velocity = 0; // rad/s, Omega about the centre of mass
+  bool      Swings() const { return bat_speed != 0 || bat_angular_velocity != 0; }
+};
+
+// The bat's speed toward the ball at x (m/s).
+PetscReal SwingSpeedAt(const SwingParams &s, const BeamRigidBody &body, PetscReal x);
+
+// The collision efficiency q = (BBS - V(x)) / (v_ball + V(x)) (the ACOR of the bat at rest).
+PetscReal SwingCollisionEfficiency(PetscReal bbs, PetscReal v_ball, PetscReal V_x);
+
+// The rigid pivoted bat (a certification rig): I_p about the pivot (kg m^2), the recoil factor
+// r = m_b (x - x_p)^2 / I_p, and the bat-ball COR of the measured e_A, BBCOR = e_A (1 + r) + r.
+struct PivotRig {
+  PetscReal inertia_pivot = 0, recoil_factor = 0;
+};
+PivotRig  PivotRigOf(const BeamRigidBody &body, PetscReal x_pivot, PetscReal ball_mass, PetscReal x_imp);
+PetscReal PivotBBCOR(const PivotRig &rig, PetscReal e_A);
+
+} // namespace beamimpact
