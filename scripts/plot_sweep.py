@@ -200,9 +200,7 @@ def plot_curves(args, path, f, column, names, vary):
     other = names[1 - vary]
     u0, u1, z, s = grid_of(f, names, column)
     xs, cs = (u0, u1) if vary == 0 else (u1, u0)
-    if vary == 1:
-        z, s = z, s
-    else:
+    if vary == 0:  # rows of z, s: one per value of the other axis
         z, s = z.T, s.T
     fig, ax = plt.subplots(figsize=(8, 5))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
