@@ -1,13 +1,28 @@
 #!/usr/bin/env bash
-# Sweep throughput benchmark (not a test): the default scene's ACOR sweep
-# (1.1 m free-free aluminium beam, 111 points 1 cm apart, RK4 at a fixed step)
-# at 1 and 2 MPI ranks; prints points per second and the parallel efficiency
-#   E(P) = rate(P) / (P * rate(1)).
+# Sweep benchmarks (not tests). Two modes:
 #
 #   scripts/bench_sweep.sh [path/to/beamimpact] [beamimpact options ...]
 #
+# throughput: the default scene's ACOR sweep (1.1 m free-free aluminium beam, 111 points
+# 1 cm apart, RK4 at a fixed step) at 1 and 2 MPI ranks; prints points per second and the
+# parallel efficiency E(P) = rate(P) / (P * rate(1)).
+#
+#   scripts/bench_sweep.sh --farm [path/to/beamimpact] [beamimpact options ...]
+#
+# the farm's overhead: a two-axis sweep of 10 000 cheap points (11-node beam, 2 ms window
+# after the contact: ~5 ms a point) on all local cores (nproc), and the same with a quarter
+# of the points; prints, per point, the compute time and the farm's overhead (hand-out from
+# the counter, journal appends, rank 0's live rewrites of the file, idle ranks at the end)
+# from the program's own summary, with the set-up before the farm (every point's options
+# read and checked, the probe, the store) per point, and checks that this overhead stays
+# below 5% of the compute and that it does not grow with the point count (its share of the
+# compute at 10 000 points within 25% of that at 2 500: a total cost linear in the points).
+# The share, not the milliseconds, is compared: on a shared machine the compute per point
+# and the overhead both move with whatever else runs. Environment: BENCH_FARM_POINTS (default "2500 10000"; each a multiple of 100),
+# BENCH_FARM_RANKS (default: nproc).
+#
 # Options given after the executable are appended to the defaults (the last
-# value of an option wins). Environment:
+# value of an option wins). Environment of the throughput mode:
 #   BENCH_RANKS   rank counts to run (default "1 2")
 #   BENCH_REPEAT  runs per rank count, interleaved (default 3); the median and
 #                 the best rate are reported (other jobs on the machine make
@@ -20,6 +35,11 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
+farm=0
+if [[ ${1:-} == --farm ]]; then
+  farm=1
+  shift
+fi
 exe=""
 if [[ $# -gt 0 && -x "$1" && ! -d "$1" ]]; then
   exe="$1"
@@ -40,11 +60,57 @@ mpiexec=${MPIEXEC:-mpiexec}
 # Open MPI refuses to run as root without these; harmless elsewhere.
 source "$(dirname "${BASH_SOURCE[0]}")/mpi-env.sh"
 
+work="$(mktemp -d "${TMPDIR:-/tmp}/bench_sweep.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+
+if ((farm)); then
+  np=${BENCH_FARM_RANKS:-$(nproc)}
+  farm_opts=(-beam_length 1.1 -beam_left free -beam_right free -beam_youngs_modulus 7e10 -beam_density 2700 -beam_thickness 0.006 -beam_width 0.032
+             -beam_nodes 11 -ball_law linear -ball_mass 0.042 -ball_speed 1 -ball_k 2e4 -ball_loss_factor 0.85 -impact_window 0.002
+             -ts_type rk -ts_rk_type 4 -ts_adapt_type none -sweep_progress_interval 1e9)
+  echo "executable: $exe"
+  echo "options:    ${farm_opts[*]} $*"
+  echo "machine:    $(nproc) cores, $(uname -n); ranks: $np"
+  declare -A cost over comp share
+  status=0
+  for n in ${BENCH_FARM_POINTS:-2500 10000}; do
+    log="$work/farm$n.log"
+    # shellcheck disable=SC2086
+    if ! "$mpiexec" ${MPIEXEC_FLAGS:-} -n "$np" "$exe" -task sweep "${farm_opts[@]}" -sweep "impact_x=0:1.1:$((n / 100)),ball_speed=0.5:4:100" "$@" -sweep_restart -output "$work/farm$n.h5" >"$log" 2>&1; then
+      echo "bench_sweep.sh: the $n-point sweep failed:" >&2
+      cat "$log" >&2
+      exit 1
+    fi
+    grep -E "^sweep: (computed|ranks busy|per point)" "$log" | sed "s/^sweep: /  $n points: /"
+    line=$(grep -E "^sweep: per point" "$log")
+    elapsed=$(sed -nE 's/^sweep: computed [0-9]+ points in ([0-9.eE+-]+) s.*/\1/p' "$log")
+    cost[$n]=$(awk -v t="$elapsed" -v p="$np" -v n="$n" 'BEGIN {printf "%.4g", 1e3 * t * p / n}')
+    comp[$n]=$(sed -nE 's/.*per point: compute ([0-9.eE+-]+) ms;.*/\1/p' <<<"$line")
+    farm_ms=$(sed -nE 's/.*farm overhead ([0-9.eE+-]+) ms .*/\1/p' <<<"$line")
+    setup=$(sed -nE 's/.*set-up ([0-9.eE+-]+) s$/\1/p' <<<"$line")
+    over[$n]=$(awk -v f="$farm_ms" -v s="$setup" -v p="$np" -v n="$n" 'BEGIN {printf "%.4g", f + 1e3 * s * p / n}')
+  done
+  echo
+  printf "%8s  %18s  %18s  %26s  %12s\n" points "rank-ms per point" "compute ms/point" "overhead ms/point (+set-up)" "overhead %"
+  first=""
+  for n in ${BENCH_FARM_POINTS:-2500 10000}; do
+    pct=$(awk -v o="${over[$n]}" -v c="${comp[$n]}" 'BEGIN {printf "%.2f", 100 * o / c}')
+    share[$n]=$pct
+    printf "%8s  %18s  %18s  %26s  %12s\n" "$n" "${cost[$n]}" "${comp[$n]}" "${over[$n]}" "$pct"
+    awk -v o="$pct" 'BEGIN {exit !(o < 5)}' || { echo "  overhead $pct% at $n points: above 5%"; status=1; }
+    [[ -z $first ]] && first=$n
+  done
+  last=$n
+  ratio=$(awk -v a="${share[$first]}" -v b="${share[$last]}" 'BEGIN {printf "%.3f", b / a}')
+  echo "overhead share at $last points / at $first points: $ratio (linear total cost: 1; allowed below 1.25)"
+  awk -v r="$ratio" 'BEGIN {exit !(r < 1.25)}' || { echo "  the overhead per point grows with the point count"; status=1; }
+  ((status)) || echo "farm overhead below 5% and linear in the point count"
+  exit $status
+fi
+
 defaults=(-beam_length 1.1 -beam_left free -beam_right free -ball_law linear
           -ts_type rk -ts_rk_type 4 -ts_adapt_type none
           -sweep_x 0:1.1:111 -sweep_progress_interval 1e9)
-work="$(mktemp -d "${TMPDIR:-/tmp}/bench_sweep.XXXXXX")"
-trap 'rm -rf "$work"' EXIT
 
 echo "executable: $exe"
 echo "options:    ${defaults[*]} $*"

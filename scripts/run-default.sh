@@ -11,5 +11,5 @@ cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)"
 mkdir -p out
 mpirun -n "$(nproc)" build/release/beamimpact -options_file options/default.opts -output out/default.h5 "$@"
-scripts/plot_acor.py out/default.h5 -o out/default.png
+scripts/plot_sweep.py out/default.h5 -o out/default.png
 echo "plot: out/default.png"

@@ -137,6 +137,14 @@ if run acor-10mm 2 options/scenes/acor-10mm.opts -sweep_x 0.45,0.55 -sweep_quiet
   check "acor-10mm 1.1 m free: ACOR x 0.85 $lo-$hi in 0.64-0.69 (the 6 mm beam: 0.50)" 'lo > 0.64 && hi < 0.69' lo="$lo" hi="$hi"
 fi
 
+# --- acor-thickness-map: a two-axis sweep; its 6 mm row is the acor-6mm scene's, bit for bit ---
+if run acor-thickness-map 2 options/scenes/acor-thickness-map.opts -sweep "impact_x=0.5,beam_thickness=6e-3;10e-3" -sweep_quiet; then
+  a6=$(col "$dir/acor-thickness-map.h5" /results/acor_corrected | sed -n 1p) a10=$(col "$dir/acor-thickness-map.h5" /results/acor_corrected | sed -n 2p)
+  ref=$(paste <(col "$dir/acor-free.h5" /results/x) <(col "$dir/acor-free.h5" /results/acor_corrected) | awk '$1 == 0.5 { print $2 }')
+  check "acor-thickness-map: at 0.5 m, 6 mm: $a6 = acor-6mm's $ref exactly" 'a == r' a="$a6" r="${ref:-nan}"
+  check "acor-thickness-map: at 0.5 m the 10 mm beam's ACOR $a10 > the 6 mm beam's $a6" 'b > a' a="$a6" b="$a10"
+fi
+
 # --- snapshots and energy -----------------------------------------------------------------------
 if run snapshots 1 options/scenes/snapshots.opts -beam_nodes 41 -impact_x 0.9; then
   check "snapshots: y at 3 times on 41 nodes ($(dims "$dir/snapshots.h5" /snapshots/y))" 's == "3,41"' s="$(dims "$dir/snapshots.h5" /snapshots/y)"

@@ -8,9 +8,15 @@
 #   * a row equals -task impact at that point;
 #   * more ranks than points, one point, -sweep_ranks_per_case 2 (round-off
 #     close to 1 rank per case) and the plot script work;
-#   * zero points, a point off the beam or on a held point, bad syntax,
-#     too many ranks per case, a misspelled option, -output none: each stops
-#     before any work with its message; -impact_x is refused (the points come from -sweep_x).
+#   * zero points, bad syntax, an axis that is no option of the program, a value its
+#     option does not allow, too many ranks per case, a misspelled option, -output none:
+#     each stops before any work with its message; an axis's option also given (-impact_x
+#     with -sweep_x) is overridden by the axis, with a note;
+#   * a 2-axis sweep (-sweep impact_x=...,beam_thickness=...) at 1 and 2 ranks: every row
+#     equals -task impact with the same option values, bit for bit (wall_time aside);
+#   * a sweep across a clamped region and off the beam completes: those rows have status 2
+#     or 3, a reason naming -impact_x and NaN numbers, the exit status is 2, a rerun
+#     recomputes nothing and -sweep_retry_failed recomputes exactly the failed points.
 #
 #   tests/sweep_ranks.sh path/to/beamimpact scratch_dir [mpiexec]
 set -uo pipefail
@@ -50,6 +56,8 @@ def walk(g, h, path):
             x, y = g[k][()], h[k][()]
             if x.shape != y.shape:
                 bad.append("%s: shape %s vs %s" % (p, x.shape, y.shape))
+            elif x.dtype.kind in "OSU":
+                if not np.array_equal(x, y): bad.append("%s: text differs" % p)
             elif x.size and not np.all((np.abs(x - y) <= tol * np.maximum(1, np.abs(x))) | (np.isnan(x) & np.isnan(y))):
                 bad.append("%s: max difference %g" % (p, np.nanmax(np.abs(x - y))))
 walk(a, b, "/")
@@ -131,15 +139,18 @@ if same_file ranks_1.h5 edge_rpc2.h5 1e-9 rows; then pass "-sweep_ranks_per_case
 
 # --- errors, each before any work ---------------------------------------------
 run_fails edge_zero "gives no impact points" "$exe" -task sweep "${opts[@]}" -sweep_x 0:1:0 -output edge_zero.h5
-run_fails edge_outside "-sweep_x point 2, x = 1.2" "$exe" -task sweep "${opts[@]}" -sweep_x 0.2,0.5,1.2 -output edge_outside.h5
-run_fails edge_negative "must lie on the beam" "$mpiexec" -n 2 "$exe" -task sweep "${opts[@]}" -sweep_x -0.1:0.5:4 -output edge_negative.h5
-run_fails edge_held "is held fixed" "$exe" -task sweep "${opts[@]}" -beam_left clamped -sweep_x 0:1.1:12 -output edge_held.h5
 run_fails edge_syntax "a range is start:stop:count" "$exe" -task sweep "${opts[@]}" -sweep_x 0:1.1 -output edge_syntax.h5
-run_fails edge_nox "-task sweep needs the impact points" "$exe" -task sweep "${opts[@]}" -output edge_nox.h5
-# -impact_x has no effect in a sweep: refused with a message naming it.
-if ! "$exe" -task sweep "${loud[@]}" -sweep_x 0.2,0.7 -impact_x 0.3 -output edge_impact_x.h5 >edge_impact_x.log 2>&1 \
-  && grep -q -- "-impact_x 0.3 has no effect with -task sweep" edge_impact_x.log; then
-  pass "-impact_x with -sweep_x: refused"
+run_fails edge_nox "-task sweep needs its axes" "$exe" -task sweep "${opts[@]}" -output edge_nox.h5
+run_fails edge_noopt "-bogus_speed is not an option of this program" "$mpiexec" -n 2 "$exe" -task sweep "${opts[@]}" -sweep "impact_x=0.3;0.5,bogus_speed=1;2" -output edge_noopt.h5
+run_fails edge_range "point 1 (impact_x = 0.3 m, ball_speed = -1 m/s): -ball_speed -1. is not allowed" "$exe" -task sweep "${opts[@]}" -sweep "impact_x=0.3;0.5,ball_speed=2;-1" -output edge_range.h5
+run_fails edge_int "point 1 (beam_nodes = 21.5): Input string 21.5 has no integer value" "$exe" -task sweep -ts_type rk -ts_rk_type 4 -ts_adapt_type none -sweep "beam_nodes=21;21.5" -output edge_int.h5
+run_fails edge_spec "the fourth field of start:stop:count:log must be 'log'" "$exe" -task sweep "${opts[@]}" -sweep "ball_speed=1:4:3:lin" -output edge_spec.h5
+run_fails edge_twice "both vary impact_x" "$exe" -task sweep "${opts[@]}" -sweep_x 0.2 -sweep "impact_x=0.3" -output edge_twice.h5
+run_fails edge_reserved "belongs to the task or the sweep itself" "$exe" -task sweep "${opts[@]}" -sweep "sweep_quiet=1" -output edge_reserved.h5
+# An option an axis varies, also given (e.g. by a scene's options file): the axis overrides it, and says so.
+if "$exe" -task sweep "${loud[@]}" -sweep_x 0.2,0.7 -impact_x 0.3 -output edge_impact_x.h5 >edge_impact_x.log 2>&1 \
+  && grep -q -- "the axis impact_x overrides -impact_x 0.3 given in the options" edge_impact_x.log && same_file edge_more_ranks.h5 edge_impact_x.h5 1e-12 rows; then
+  pass "-impact_x with -sweep_x: overridden by the axis (announced), rows as without it"
 else
   fail "-impact_x with -sweep_x"; cat edge_impact_x.log
 fi
@@ -147,9 +158,78 @@ run_fails edge_rpc "-sweep_ranks_per_case 3 is not allowed with 2 MPI ranks" "$m
 run_fails edge_typo "-ts_rk_typo" "$mpiexec" -n 2 "$exe" -task sweep "${opts[@]}" -sweep_x 0.1,0.2 -ts_rk_typo 4 -output edge_typo.h5
 run_fails edge_none "give -output FILE.h5" "$exe" -task sweep "${opts[@]}" -sweep_x 0.1,0.2 -output none
 
-# --- the plot script ----------------------------------------------------------
+# --- a 2-axis sweep: every row equals -task impact with the same option values -----
+ax2=(-sweep "impact_x=0.3;0.55;1.02,beam_thickness=5e-3;6.5e-3")
+"$mpiexec" -n 1 "$exe" -task sweep "${opts[@]}" "${ax2[@]}" -output ax2_1.h5 >ax2_1.log 2>&1 || { fail "2-axis sweep, 1 rank"; cat ax2_1.log; }
+"$mpiexec" -n 2 "$exe" -task sweep "${opts[@]}" "${ax2[@]}" -output ax2_2.h5 >ax2_2.log 2>&1 || { fail "2-axis sweep, 2 ranks"; cat ax2_2.log; }
+if [[ -n "$python" ]]; then
+  k=0
+  for x in 0.3 0.55 1.02; do
+    for a in 5e-3 6.5e-3; do
+      "$exe" -task impact "${loud[@]:0:8}" -impact_x $x -beam_thickness $a -output ax2_impact_$k.h5 >ax2_impact_$k.log 2>&1 || fail "-task impact -impact_x $x -beam_thickness $a"
+      k=$((k + 1))
+    done
+  done
+  "$python" - ax2_1.h5 ax2_2.h5 ax2_impact_{0..5}.h5 <<'PY' && pass "2-axis sweep (3 x 2 points) at 1 and 2 ranks: every row equals -task impact bit for bit (wall_time aside)" || fail "2-axis sweep rows differ from -task impact"
+import sys, h5py, numpy as np
+one, two = (h5py.File(p, "r") for p in sys.argv[1:3])
+imps = [h5py.File(p, "r")["results"] for p in sys.argv[3:9]]
+xs, aa = [0.3, 0.55, 1.02], [5e-3, 6.5e-3]
+for f in (one, two):
+    r = f["results"]
+    assert list(f["sweep/impact_x"][()]) == [x for x in xs for a in aa], f["sweep/impact_x"][()]
+    assert list(f["sweep/beam_thickness"][()]) == [a for x in xs for a in aa]
+    assert r["impact_x"].attrs["unit"] in (b"m", "m") and r["beam_thickness"].attrs["unit"] in (b"m", "m")
+    assert np.all(r["status"][()] == 0) and all(s in (b"", "") for s in r["reason"][()])
+    for i, imp in enumerate(imps):
+        assert r["impact_x"][i] == xs[i // 2] and r["beam_thickness"][i] == aa[i % 2]
+        for k in imp:
+            if k == "wall_time": continue
+            a, b = imp[k][0], r[k][i]
+            assert a == b or (np.isnan(a) and np.isnan(b)), (f.filename, i, k, a, b)
+PY
+fi
+
+# --- across a clamped region and off the beam: failed rows, exit status 2 --------
+fx=(-beam_clamp 0,0.2 -sweep "impact_x=-0.1;0.1;0.5;1.2,ball_speed=1;2")
+"$mpiexec" -n 2 "$exe" -task sweep "${loud[@]}" "${fx[@]}" -output fail_2.h5 >fail_2.log 2>&1
+rc=$?
+if ((rc == 2)) && grep -q "^sweep: 6 of 8 points failed: 4 with status 2 (impact point off the beam), 2 with status 3 (impact point held fixed)" fail_2.log; then
+  pass "clamped region and off-beam points: completed, exit status 2, summary: $(grep -o '6 of 8 points failed' fail_2.log)"
+else
+  fail "clamped/off-beam sweep: exit status $rc"; cat fail_2.log
+fi
+if [[ -n "$python" ]]; then
+  "$python" - fail_2.h5 <<'PY' && pass "failed rows: status 2/3, reason names -impact_x and its value, numbers NaN; the others computed" || fail "failed rows of fail_2.h5"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], "r"); r = f["results"]
+st, reason, x = r["status"][()], [s.decode() if isinstance(s, bytes) else s for s in r["reason"][()]], r["impact_x"][()]
+assert f.attrs["sweep_complete"] == 1 and len(st) == 8
+assert list(st) == [2, 2, 3, 3, 0, 0, 2, 2], st
+for i in range(8):
+    if st[i] == 0:
+        assert reason[i] == "" and np.isfinite(r["acor"][i]), i
+    else:
+        assert reason[i].startswith("-impact_x %g is not allowed" % x[i]) or reason[i].startswith("-impact_x %g. is not allowed" % x[i]), reason[i]
+        assert ("held fixed" in reason[i]) == (st[i] == 3) and np.isnan(r["acor"][i]) and np.isnan(r["x"][i]), (i, reason[i])
+PY
+fi
+"$exe" -task sweep "${loud[@]}" "${fx[@]}" -output fail_2.h5 >fail_again.log 2>&1
+rc=$?
+((rc == 2)) && grep -q "all 8 points were already done; nothing to compute" fail_again.log && pass "rerun: nothing recomputed (the failed points neither), exit status 2" || { fail "rerun of the failing sweep (exit $rc)"; cat fail_again.log; }
+"$exe" -task sweep "${loud[@]}" "${fx[@]}" -sweep_retry_failed -output fail_2.h5 >fail_retry.log 2>&1
+rc=$?
+((rc == 2)) && grep -q "resuming fail_2.h5: 2 of 8 points already done, 6 to compute" fail_retry.log && grep -q "^sweep: computed 6 points" fail_retry.log \
+  && pass "-sweep_retry_failed: computes exactly the 6 failed points again" || { fail "-sweep_retry_failed (exit $rc)"; cat fail_retry.log; }
+
+# --- the plot scripts -----------------------------------------------------------
 if [[ -n "$python" ]] && "$python" -c "import matplotlib" 2>/dev/null; then
-  if "$python" "$src/scripts/plot_acor.py" ranks_1.h5 edge_more_ranks.h5 -o ranks_plot.png >ranks_plot.log 2>&1 && [[ -s ranks_plot.png ]]; then pass "plot_acor.py: two files on one PNG"; else fail "plot_acor.py"; cat ranks_plot.log; fi
+  if "$python" "$src/scripts/plot_sweep.py" ax2_2.h5 acor -o ax2_curves.png >ax2_curves.log 2>&1 && [[ -s ax2_curves.png ]]; then pass "plot_sweep.py: 2 axes, curves"; else fail "plot_sweep.py curves"; cat ax2_curves.log; fi
+  if "$python" "$src/scripts/plot_sweep.py" fail_2.h5 acor --map -o fail_map.png >fail_map.log 2>&1 && [[ -s fail_map.png ]]; then pass "plot_sweep.py: 2-D map with failed points marked"; else fail "plot_sweep.py map"; cat fail_map.log; fi
+  if "$python" "$src/scripts/plot_sweep.py" ranks_1.h5 -o ranks_sweep.png >ranks_sweep.log 2>&1 && [[ -s ranks_sweep.png ]]; then pass "plot_sweep.py: one axis"; else fail "plot_sweep.py one axis"; cat ranks_sweep.log; fi
+fi
+if [[ -n "$python" ]] && "$python" -c "import matplotlib" 2>/dev/null; then
+  if "$python" "$src/scripts/plot_sweep.py" ranks_1.h5 edge_more_ranks.h5 -o ranks_plot.png >ranks_plot.log 2>&1 && [[ -s ranks_plot.png ]]; then pass "plot_sweep.py: two files on one PNG (the ACOR figure)"; else fail "plot_sweep.py two files"; cat ranks_plot.log; fi
 fi
 
 if ((fails)); then echo "$fails check(s) failed"; exit 1; fi

@@ -9,6 +9,7 @@
 // -error_traceback shows PETSc's full traceback instead.
 #include "app/tasks.hpp"
 #include "io/text.hpp"
+#include "studies/sweep.hpp"
 
 #include <slepcsys.h>
 
@@ -39,5 +40,5 @@ int main(int argc, char **argv)
   }
   if (!traceback) PetscCall(PetscPopErrorHandler());
   PetscCall(SlepcFinalize());
-  return 0;
+  return beamimpact::SweepExitStatus(); // 2: a sweep completed with failed points
 }

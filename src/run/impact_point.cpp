@@ -3,15 +3,22 @@
 
 namespace beamimpact {
 
-PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal x, const char *what)
+ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x)
 {
-  PetscFunctionBeginUser;
-  PetscCheck(x >= 0 && x <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s is not allowed: the impact point must lie on the beam, 0 <= x <= L = %g (m)", what, (double)beam.length);
+  if (!(x >= 0 && x <= beam.length)) return ImpactPointWhere::OffBeam;
   const BeamOperator  op            = BeamOperatorBuild(beam);
   const ImpactStencil st            = BeamImpactStencil(op, x);
   const bool          on_held       = (st.w > 0 && op.held[st.j]) && (st.w < 1 ? op.held[st.j + 1] : true);
   const bool          on_held_right = st.w == 0 && op.held[st.j + 1];
-  PetscCheck(!(on_held || on_held_right), comm, PETSC_ERR_ARG_OUTOFRANGE,
+  return on_held || on_held_right ? ImpactPointWhere::Held : ImpactPointWhere::Movable;
+}
+
+PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal x, const char *what)
+{
+  PetscFunctionBeginUser;
+  const ImpactPointWhere where = ImpactPointLocate(beam, x);
+  PetscCheck(where != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s is not allowed: the impact point must lie on the beam, 0 <= x <= L = %g (m)", what, (double)beam.length);
+  PetscCheck(where != ImpactPointWhere::Held, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "%s is not allowed: that point is held fixed (a clamped or pinned support or inside -beam_clamp); strike a point that can move", what);
   PetscFunctionReturn(0);
 }

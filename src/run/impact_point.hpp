@@ -8,6 +8,10 @@
 
 namespace beamimpact {
 
+// Where x (m) lies: on the beam and free to move, off the beam, or on a held point.
+enum class ImpactPointWhere { Movable, OffBeam, Held };
+ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x);
+
 // Errors out on comm when x (m) is off the beam or held fixed. `what` names the value in
 // the message, which reads "<what> is not allowed: ...", e.g. "-impact_x 0.2" (formatted
 // with PetscSNPrintf, so numbers read as in PETSc's other messages).

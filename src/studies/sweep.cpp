@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <map>
 
 namespace beamimpact {
 
@@ -20,35 +22,71 @@ namespace beamimpact {
 // Case runner
 // ---------------------------------------------------------------------------
 
-const std::vector<SweepColumn> &SweepColumns()
+std::vector<SweepColumn> SweepColumns(const SweepPlan &plan)
 {
-  static const std::vector<SweepColumn> cols = [] {
-    std::vector<SweepColumn> c;
-    c.push_back({"case_index", "1", false});
-    for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time"});
-    c.push_back({"rigid_acor", "1", false});
-    c.push_back({"rigid_forced_loss_fraction", "1", false});
-    return c;
-  }();
-  return cols;
+  std::vector<SweepColumn> c;
+  c.push_back({"case_index", "1", false});
+  for (const SweepAxis &a : plan.axes) c.push_back({a.name, a.unit, false});
+  c.push_back({"status", "1", false});
+  for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time"});
+  c.push_back({"rigid_acor", "1", false});
+  c.push_back({"rigid_forced_loss_fraction", "1", false});
+  return c;
 }
 
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const Scenario &base, PetscInt index, std::vector<double> *row, ImpactResult *result)
+int SweepStatusOfError(PetscErrorCode ierr)
 {
-  const Scenario c = SweepCaseFor(plan, base, index);
+  switch (ierr) {
+  case PETSC_ERR_NOT_CONVERGED:
+    return SweepNotConverged;
+  case PETSC_ERR_FP:
+    return SweepNotFinite;
+  case PETSC_ERR_ARG_OUTOFRANGE:
+  case PETSC_ERR_ARG_WRONG:
+  case PETSC_ERR_ARG_INCOMP:
+  case PETSC_ERR_SUP:
+    return SweepRefused;
+  default:
+    return SweepFailedOther;
+  }
+}
+
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result)
+{
+  Scenario       c;
+  int            status = SweepOk;
+  PetscErrorCode ierr   = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(ImpactRun(comm, c, result));
-  const ImpactResult &r = *result;
-  // Rigid-body model, Eq. (11), with the beam's own mass, centre of mass and inertia (for the
-  // paper's uniform beam: M = mu L, I_cm = M L^2 / 12 about its centre).
-  const BeamRigidBody body = BeamRigidBodyOf(c.beam);
-  const PetscReal     M_e  = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(r.x - body.x_cm));
+  // The case's options stay set while it runs (the integrator reads its own from them).
+  ierr = SweepCaseScenario(comm, plan, index, true, &c, &status, reason);
+  if (!ierr && status == SweepOk) {
+    ierr = ImpactRun(comm, c, result);
+    if (ierr) {
+      status = SweepStatusOfError(ierr);
+      *reason = SweepErrorReason(ierr);
+      ierr    = 0;
+    }
+  }
+  PetscCall(SweepCaseOptionsClear(plan));
+  PetscCall(ierr);
+  const double                 nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<PetscReal> v   = plan.CaseValues(index);
   row->clear();
   row->push_back((double)index);
-  for (auto &rc : ImpactResultColumns()) row->push_back(rc.get(r));
-  row->push_back(RigidACOR(c.ball.mass, M_e, plan.rigid_loss_fraction));
-  row->push_back(RigidForcedLossFraction(c.ball.mass, M_e, r.acor_corrected));
+  row->insert(row->end(), v.begin(), v.end());
+  row->push_back((double)status);
+  if (status == SweepOk) {
+    const ImpactResult &r = *result;
+    // Rigid-body model, Eq. (11), with the beam's own mass, centre of mass and inertia (for the
+    // paper's uniform beam: M = mu L, I_cm = M L^2 / 12 about its centre).
+    const BeamRigidBody body = BeamRigidBodyOf(c.beam);
+    const PetscReal     M_e  = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(r.x - body.x_cm));
+    for (auto &rc : ImpactResultColumns()) row->push_back(rc.get(r));
+    row->push_back(RigidACOR(c.ball.mass, M_e, plan.rigid_loss_fraction));
+    row->push_back(RigidForcedLossFraction(c.ball.mass, M_e, r.acor_corrected));
+    reason->clear();
+  } else row->resize(row->size() + ImpactResultColumns().size() + 2, nan);
   PetscFunctionReturn(0);
 }
 
@@ -58,6 +96,8 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const Scenario
 
 namespace {
 
+int g_exit_status = 0; // SweepExitStatus()
+
 // Rank 0's progress lines.
 struct SweepProgress {
   PetscInt ncases = 0, already = 0, todo = 0; // cases: all, done before this run, to compute
@@ -65,11 +105,13 @@ struct SweepProgress {
 };
 
 // What this rank did: the rows it computed as a group leader (gathered on rank 0 at
-// the end), their number, and its time in cases (load balance: busy / farm time).
+// the end) and the reasons of those that failed, their number, and its time in cases
+// (load balance: busy / farm time) and in the farm's own work (hand-out, journal, rewrites).
 struct SweepShare {
-  std::vector<double> rows;
-  PetscInt            computed = 0;
-  double              busy     = 0; // s
+  std::vector<double>             rows;
+  std::map<PetscInt, std::string> reasons;
+  PetscInt                        computed = 0, failed = 0, shown = 0;
+  double                          busy = 0, journal = 0, handout = 0; // s
 };
 
 std::string Points(PetscInt n) { return std::to_string((long long)n) + (n == 1 ? " point" : " points"); }
@@ -84,67 +126,108 @@ std::string FormatDuration(double s)
   return buf;
 }
 
-// The base scenario and the plan (read after the beam and ball, against which its points
-// are checked). The other -impact_* options are shared by every case, but an axis's own
-// option (-impact_x) would be silently meaningless: it is refused (like any other unused
-// option), and the rest is read with the axis's first point in its place.
-PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan)
+// The plan, and every case's scenario read before any work, as the case runner reads it:
+// a value its option does not allow stops the sweep here with the option's own message
+// (an impact point off the beam or held fixed does not: that case becomes a failed row).
+// *base is the scenario of the first case that can run; *candidates the first few such
+// cases (for the probe).
+PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, std::vector<PetscInt> *candidates)
 {
-  ScenarioReading how;
+  PetscBool help = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  how.after_bodies = [&](const Scenario &bodies) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    PetscCall(SweepPlanFromOptions(comm, bodies, plan));
-    for (const SweepAxis &a : plan->axes) {
-      const std::string opt = std::string("-") + a.type->name;
-      char              given[256] = "", first[64];
-      PetscBool         has;
-      PetscCall(PetscOptionsGetString(NULL, NULL, opt.c_str(), given, sizeof(given), &has));
-      PetscCheck(!has, comm, PETSC_ERR_ARG_INCOMP, "%s %s has no effect with -task sweep: the %s come from -sweep_%s; remove %s", opt.c_str(), given, a.type->points, a.type->column, opt.c_str());
-      std::snprintf(first, sizeof(first), "%.17g", (double)a.values[0]);
-      PetscCall(PetscOptionsSetValue(NULL, opt.c_str(), first));
+  PetscCall(SweepPlanFromOptions(comm, plan));
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  const PetscInt n = help ? 1 : plan->cases(); // -help: print the options once
+  candidates->clear();
+  for (PetscInt i = 0; i < n; ++i) {
+    Scenario       c;
+    int            status;
+    std::string    reason;
+    PetscErrorCode ierr = SweepCaseScenario(comm, *plan, i, true, &c, &status, &reason);
+    PetscCall(SweepCaseOptionsClear(*plan));
+    if (ierr) {
+      const std::string msg = LastErrorMessage(ierr);
+      SETERRQ(comm, ierr, "-task sweep point %" PetscInt_FMT " (%s): %s", i, SweepCaseText(*plan, i, false).c_str(), msg.c_str());
     }
-    PetscFunctionReturn(0);
-  };
-  PetscCall(ScenarioFromOptions(comm, how, base));
-  for (const SweepAxis &a : plan->axes) PetscCall(PetscOptionsClearValue(NULL, (std::string("-") + a.type->name).c_str()));
+    if (status != SweepOk) continue;
+    if (candidates->empty()) *base = c;
+    if (candidates->size() < 8) candidates->push_back(i);
+  }
+  PetscCheck(!candidates->empty() || help, comm, PETSC_ERR_ARG_OUTOFRANGE, "-task sweep: no point of the sweep can run: every impact point is off the beam or held fixed (point 0: %s)",
+             SweepCaseText(*plan, 0, true).c_str());
   const MonitorRequest &m = base->monitor;
   PetscCheck(!(m.ball || m.energy || !m.velocity_at.empty() || !m.snapshot_times.empty()), comm, PETSC_ERR_ARG_INCOMP,
              "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, -snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a column) works in a sweep");
   PetscFunctionReturn(0);
 }
 
-// A probe on rank 0's group before any work: sets up the integrator for the
-// first point and steps 1 ns, so that bad or unused options stop the sweep
-// here with one message, and the file can record the integrator.
-PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const Scenario &base, ImpactResult *probe)
+// A probe on rank 0's group before any work: sets up the integrator for the first case that
+// can run and steps 1 ns, so that bad or unused options stop the sweep here with one
+// message, an axis that no part of the program reads is refused, and the file can record
+// the integrator. A case whose set-up fails (e.g. an explicit step above its stability
+// limit at that point) hands the probe to the next of the candidates.
+PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std::vector<PetscInt> &candidates, ImpactResult *probe)
 {
+  PetscErrorCode first_ierr = 0;
+  std::string    first_msg;
+  PetscInt       first_case = -1;
+
   PetscFunctionBeginUser;
-  if (farm.group != MPI_COMM_NULL && farm.world_rank < plan.ranks_per_case) {
-    Scenario c                    = SweepCaseFor(plan, base, 0);
+  if (farm.group == MPI_COMM_NULL || farm.world_rank >= plan.ranks_per_case) PetscFunctionReturn(0);
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    Scenario    c;
+    int         status;
+    std::string reason;
+    PetscCall(SweepCaseScenario(farm.group, plan, candidates[k], true, &c, &status, &reason));
     c.impact.max_time             = 1e-9;
-    c.impact.check_unused_options = PETSC_TRUE;
-    c.impact.report_setup         = plan.quiet ? PETSC_FALSE : PETSC_TRUE; // integrator, step, warnings: once
+    c.impact.check_unused_options = PETSC_FALSE; // below, once the axes are checked
+    c.impact.report_setup         = plan.quiet || k > 0 ? PETSC_FALSE : PETSC_TRUE; // integrator, step, warnings: once
     c.monitor                     = MonitorRequest();
-    PetscCall(ImpactRun(farm.group, c, probe));
+    PetscErrorCode ierr           = ImpactRun(farm.group, c, probe);
+    if (ierr) {
+      if (!first_ierr) {
+        first_ierr = ierr;
+        first_msg  = LastErrorMessage(ierr);
+        first_case = candidates[k];
+      }
+      PetscCall(SweepCaseOptionsClear(plan));
+      continue;
+    }
+    for (const SweepAxis &a : plan.axes) {
+      PetscBool used = PETSC_FALSE;
+      PetscCall(PetscOptionsUsed(NULL, a.name.c_str(), &used)); // the database keeps names without the dash
+      PetscCheck(used, farm.group, PETSC_ERR_ARG_WRONG,
+                 "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is a numeric option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt",
+                 a.name == "impact_x" && !plan.sweep_x.empty() ? "-sweep_x:" : "-sweep", a.name.c_str(), a.spec.c_str(), a.name.c_str());
+    }
+    PetscCall(OptionsCheckUnused(farm.group));
+    PetscCall(SweepCaseOptionsClear(plan));
+    PetscFunctionReturn(0);
   }
-  PetscFunctionReturn(0);
+  SETERRQ(farm.group, first_ierr, "-task sweep: the first %zu points that can run all failed to start; point %" PetscInt_FMT " (%s): %s", candidates.size(), first_case, SweepCaseText(plan, first_case, true).c_str(),
+          first_msg.c_str());
 }
 
 // The file's root attributes: the scenario, the probe's integrator and the plan.
 PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, const ImpactResult &probe, RunRecord *rec)
 {
-  std::string options, columns, axes;
+  std::string options, columns, axes, units;
 
   PetscFunctionBeginUser;
   PetscCall(OptionsAsString(&options));
-  for (auto &c : SweepColumns()) columns += (columns.empty() ? "" : ",") + c.name;
-  for (auto &a : plan.axes) axes += (axes.empty() ? "" : ",") + std::string(a.type->column);
+  for (auto &c : SweepColumns(plan)) columns += (columns.empty() ? "" : ",") + c.name;
+  for (auto &a : plan.axes) {
+    axes += (axes.empty() ? "" : ",") + a.name;
+    units += (units.empty() ? "" : ",") + a.unit;
+  }
   PetscCall(RunRecordBuild(base, &probe, rec));
   rec->add("task", "sweep");
-  for (auto &a : plan.axes) rec->add(std::string("sweep_") + a.type->column, a.spec);
+  if (!plan.sweep.empty()) rec->add("sweep", plan.sweep);
+  if (!plan.sweep_x.empty()) rec->add("sweep_x", plan.sweep_x);
   rec->add("sweep_axes", axes);
+  rec->add("sweep_axis_units", units);
+  for (auto &a : plan.axes) rec->add("sweep_count_" + a.name, (double)a.values.size());
   rec->add("sweep_ranks_per_case", (double)plan.ranks_per_case);
   rec->add("rigid_loss_fraction", plan.rigid_loss_fraction);
   rec->add("sweep_cases_total", (double)plan.cases());
@@ -164,7 +247,7 @@ PetscErrorCode SweepStart(const TaskFarm &farm, const std::string &output, const
     RunRecord                record;
     std::vector<PetscMPIInt> leaders;
     PetscCall(SweepRecordBuild(base, plan, probe, &record));
-    SweepStoreInit(output, plan, SweepColumns(), record, S);
+    SweepStoreInit(output, plan, SweepColumns(plan), record, S);
     PetscCall(SweepStoreOpen(*S, run));
     for (PetscInt i = 0; i < S->ncases; ++i)
       if (!S->rows.count(i)) todo->push_back(i);
@@ -187,12 +270,16 @@ PetscErrorCode SweepAnnounce(const TaskFarm &farm, const SweepPlan &plan, const 
   PetscFunctionBeginUser;
   if (farm.world_rank != 0 || plan.quiet) PetscFunctionReturn(0);
   for (auto &a : plan.axes) {
-    char text[128]; // PetscPrintf would write 0 as "0."
-    std::snprintf(text, sizeof(text), "%s from %g to %g %s", a.type->column, (double)*std::min_element(a.values.begin(), a.values.end()), (double)*std::max_element(a.values.begin(), a.values.end()), a.type->unit);
-    range += (range.empty() ? "" : ", ") + std::string(text);
+    char              text[256]; // PetscPrintf would write 0 as "0."
+    const std::string unit = a.unit.empty() || a.unit == "1" ? "" : " " + a.unit;
+    std::snprintf(text, sizeof(text), "%s from %g to %g%s (%zu)", a.name.c_str(), (double)*std::min_element(a.values.begin(), a.values.end()), (double)*std::max_element(a.values.begin(), a.values.end()),
+                  unit.c_str(), a.values.size());
+    range += (range.empty() ? "" : " x ") + std::string(text);
   }
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: %s, %s, on %d rank(s): %" PetscInt_FMT " group(s) of %" PetscInt_FMT "%s; ts %s (%s)\n", Points(P.ncases).c_str(), range.c_str(), farm.world_size, farm.groups,
                         plan.ranks_per_case, farm.world_size % plan.ranks_per_case ? " (the ranks left over stay idle)" : "", probe.ts_type.c_str(), probe.formulation.c_str()));
+  for (auto &a : plan.axes)
+    if (a.overrides) PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: the axis %s overrides -%s %s given in the options\n", a.name.c_str(), a.name.c_str(), a.given.c_str()));
   if (P.already && P.todo)
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: resuming %s: %" PetscInt_FMT " of %" PetscInt_FMT " points already done, %" PetscInt_FMT " to compute\n", output.c_str(), P.already, P.ncases, P.todo));
   std::fflush(PETSC_STDOUT);
@@ -218,40 +305,45 @@ PetscErrorCode SweepPoll(SweepStore &S, SweepProgress &P, const SweepPlan &plan,
   PetscFunctionReturn(0);
 }
 
-// The farm: each group takes the next pending case; its leader journals the row and
-// keeps it for the gather at the end.
-PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const Scenario &base, const std::vector<PetscInt> &todo, int run, const std::string &output, SweepStore &S, SweepProgress &P, SweepShare *mine)
+// The farm: each group takes the next pending case; its leader journals the row (a failed
+// case too) and keeps it for the gather at the end.
+PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::vector<PetscInt> &todo, int run, const std::string &output, SweepStore &S, SweepProgress &P, SweepShare *mine)
 {
   SweepJournalWriter journal;
   const PetscMPIInt  rank = farm.world_rank;
+  const int          show = 20; // failure lines per rank
 
   PetscFunctionBeginUser;
   journal.path      = SweepJournalName(output, run, rank);
   journal.signature = S.signature_hash;
   PetscCallMPI(MPI_Bcast(&journal.signature, 1, MPI_UINT64_T, 0, farm.world));
-  journal.ncols = (uint32_t)SweepColumns().size();
+  journal.ncols = (uint32_t)SweepColumns(plan).size();
   auto run_case = [&](MPI_Comm group, PetscInt t) -> PetscErrorCode {
     const PetscInt      index = todo[t];
     std::vector<double> row;
+    std::string         reason;
     ImpactResult        result;
     PetscFunctionBeginUser;
-    const double   tc   = MPI_Wtime();
-    PetscErrorCode ierr = SweepCaseRun(group, plan, base, index, &row, &result);
-    mine->busy += MPI_Wtime() - tc;
-    if (ierr) {
-      const std::string msg = LastErrorMessage(ierr);
-      // main() reports errors of world rank 0 only: other group leaders say it here.
-      if (rank != 0 && farm.group_rank == 0) {
-        std::fprintf(stderr, "beamimpact: error: sweep point %" PetscInt_FMT " (%s) on rank %d: %s\n", index, SweepCaseText(plan, index, false).c_str(), rank, msg.c_str());
-        std::fflush(stderr);
-      }
-      SETERRQ(PETSC_COMM_SELF, ierr, "sweep point %" PetscInt_FMT " (%s): %s", index, SweepCaseText(plan, index, true).c_str(), msg.c_str());
-    }
+    const double tc = MPI_Wtime();
+    PetscCall(SweepCaseRun(group, plan, index, &row, &reason, &result));
+    const double tj = MPI_Wtime();
+    mine->busy += tj - tc;
     if (farm.group_rank == 0) {
-      PetscCall(journal.Append(row));
+      const int status = (int)row[1 + plan.axes.size()];
+      if (status != SweepOk) {
+        ++mine->failed;
+        mine->reasons[index] = reason;
+        if (mine->shown < show) {
+          std::fprintf(stderr, "sweep: point %" PetscInt_FMT " (%s) failed, status %d (%s): %s\n", index, SweepCaseText(plan, index, false).c_str(), status, SweepStatusName(status), reason.c_str());
+          if (++mine->shown == show) std::fprintf(stderr, "sweep: further failed points of rank %d are not shown (see /results/status and /results/reason)\n", rank);
+          std::fflush(stderr);
+        }
+      }
+      PetscCall(journal.Append(row, reason));
       mine->rows.insert(mine->rows.end(), row.begin(), row.end());
       ++mine->computed;
     }
+    mine->journal += MPI_Wtime() - tj;
     PetscFunctionReturn(0);
   };
   auto between = [&](PetscInt done) -> PetscErrorCode { return SweepPoll(S, P, plan, done); };
@@ -260,43 +352,69 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const Scenar
   PetscFunctionReturn(0);
 }
 
-// Rank 0 gathers this run's rows over MPI (the journals need not be visible there) and
-// writes the complete file.
-PetscErrorCode SweepGather(MPI_Comm comm, const std::vector<double> &mine, SweepStore &S)
+// Rank 0 gathers this run's rows and reasons over MPI (the journals need not be visible
+// there) and writes the complete file.
+PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
 {
   PetscMPIInt              rank, size;
   std::vector<double>      all;
-  PetscMPIInt              n = (PetscMPIInt)mine.size();
-  std::vector<PetscMPIInt> counts, displs;
+  std::vector<char>        text, all_text;
+  std::vector<PetscMPIInt> counts, displs, tcounts, tdispls;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));
+  // Reasons as "index\treason\n" lines (a reason is one line).
+  for (auto &kv : mine.reasons) {
+    const std::string line = std::to_string((long long)kv.first) + "\t" + kv.second + "\n";
+    text.insert(text.end(), line.begin(), line.end());
+  }
+  PetscMPIInt n = (PetscMPIInt)mine.rows.size(), nt = (PetscMPIInt)text.size();
   counts.resize(size);
   displs.resize(size);
+  tcounts.resize(size);
+  tdispls.resize(size);
   PetscCallMPI(MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Gather(&nt, 1, MPI_INT, tcounts.data(), 1, MPI_INT, 0, comm));
   if (rank == 0) {
-    size_t total = 0;
+    size_t total = 0, ttotal = 0;
     for (PetscMPIInt r = 0; r < size; ++r) {
-      displs[r] = (PetscMPIInt)total;
+      displs[r]  = (PetscMPIInt)total;
+      tdispls[r] = (PetscMPIInt)ttotal;
       total += counts[r];
+      ttotal += tcounts[r];
     }
     all.resize(total);
+    all_text.resize(ttotal);
   }
-  PetscCallMPI(MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Gatherv(mine.rows.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Gatherv(text.data(), nt, MPI_CHAR, all_text.data(), tcounts.data(), tdispls.data(), MPI_CHAR, 0, comm));
   if (rank == 0) {
     for (size_t p = 0; p + S.ncols <= all.size(); p += S.ncols) S.rows[(PetscInt)all[p]] = std::vector<double>(all.begin() + p, all.begin() + p + S.ncols);
+    size_t p = 0;
+    while (p < all_text.size()) {
+      size_t tab = p, end = p;
+      while (tab < all_text.size() && all_text[tab] != '\t') ++tab;
+      end = tab;
+      while (end < all_text.size() && all_text[end] != '\n') ++end;
+      if (tab < end) S.reasons[(PetscInt)std::strtoll(std::string(all_text.begin() + p, all_text.begin() + tab).c_str(), nullptr, 10)] = std::string(all_text.begin() + tab + 1, all_text.begin() + end);
+      p = end + 1;
+    }
     PetscCall(SweepStoreClose(S));
   }
   PetscFunctionReturn(0);
 }
 
-// Rank 0: what was computed, how fast, and how evenly the ranks were loaded.
-PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P, double t0, double farm_time, const std::string &output)
+// Rank 0: what was computed, how fast, how evenly the ranks were loaded and what the farm
+// cost (journal appends on the leaders; rank 0's hand-outs, progress and rewrites), and
+// how many points of the file failed (printed also with -sweep_quiet). Every rank learns
+// the number of failed points (the exit status).
+PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P, double setup, double t0, double farm_time, const std::string &output, const SweepStore &S, PetscInt *failed_total)
 {
   PetscMPIInt rank, size;
-  PetscInt    computed = mine.computed;
-  double      busy_sum = 0, busy_min = 0;
+  PetscInt    computed = mine.computed, failed = 0;
+  double      busy_sum = 0, busy_min = 0, journal_sum = 0, handout_sum = 0;
+  std::string by_status;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -304,20 +422,51 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
   PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : &computed, &computed, 1, MPIU_INT, MPI_SUM, 0, comm));
   PetscCallMPI(MPI_Reduce(&mine.busy, &busy_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
   PetscCallMPI(MPI_Reduce(&mine.busy, &busy_min, 1, MPI_DOUBLE, MPI_MIN, 0, comm));
-  const double elapsed = MPI_Wtime() - t0;
-  if (rank != 0 || plan.quiet) PetscFunctionReturn(0);
-  if (P.todo == 0) PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: all %" PetscInt_FMT " points were already done; nothing to compute\n", P.ncases));
-  else {
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: computed %s in %.3f s (%.4g points/s) on %d rank(s), %" PetscInt_FMT " already done\n", Points(computed).c_str(), elapsed, computed / elapsed, size, P.already));
-    // Load balance: the share of the farm's time the ranks spent in cases
-    // (below 100%: waiting for the last cases, journaling, live rewrites).
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: ranks busy %.1f%% of the time on average, %.1f%% the least busy\n", 100 * busy_sum / (size * farm_time), 100 * busy_min / farm_time));
+  PetscCallMPI(MPI_Reduce(&mine.journal, &journal_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
+  PetscCallMPI(MPI_Reduce(&mine.handout, &handout_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
+  if (rank == 0 && S.status_column >= 0) {
+    std::map<int, PetscInt> count;
+    for (auto &kv : S.rows) {
+      const double st = kv.second[S.status_column];
+      if (st != 0) {
+        ++failed;
+        ++count[(int)st];
+      }
+    }
+    for (auto &kv : count) by_status += (by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " + std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
   }
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s (%s)\n", output.c_str(), Points(P.ncases).c_str()));
+  PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
+  *failed_total        = failed;
+  const double elapsed = MPI_Wtime() - t0;
+  if (rank != 0) PetscFunctionReturn(0);
+  if (!plan.quiet) {
+    if (P.todo == 0) PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: all %" PetscInt_FMT " points were already done; nothing to compute\n", P.ncases));
+    else {
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: computed %s in %.3f s (%.4g points/s) on %d rank(s), %" PetscInt_FMT " already done\n", Points(computed).c_str(), elapsed, computed / elapsed, size, P.already));
+      // Load balance: the share of the farm's time the ranks spent in cases
+      // (below 100%: waiting for the last cases, journaling, live rewrites).
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: ranks busy %.1f%% of the time on average, %.1f%% the least busy\n", 100 * busy_sum / (size * farm_time), 100 * busy_min / farm_time));
+      // The farm's own cost per point: the rest of the ranks' time (hand-out, waiting for
+      // the counter, journal, rank 0's progress lines and rewrites, the last cases' tail).
+      // (hand-out: the counter and the broadcast in a group; journal: the leaders' appends;
+      // rewrites: rank 0's live rewrites of the file; the rest: waiting for the last cases).
+      if (computed > 0)
+        PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                              "sweep: per point: compute %.4g ms; farm overhead %.4g ms (%.2f%% of the ranks' time): hand-out %.4g ms, journal %.4g ms, rewrites %.4g ms (%d), idle at the end %.4g ms; set-up %.3f s\n",
+                              1e3 * busy_sum / computed, 1e3 * (size * farm_time - busy_sum) / computed, 100 * (size * farm_time - busy_sum) / (size * farm_time), 1e3 * handout_sum / computed,
+                              1e3 * journal_sum / computed, 1e3 * S.write_total / computed, S.writes, 1e3 * (size * farm_time - busy_sum - handout_sum - journal_sum - S.write_total) / computed, setup));
+    }
+  }
+  if (failed)
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points failed: %s; their rows have status != 0, the reason in /results/reason and NaN numbers\n", failed, P.ncases,
+                           by_status.c_str()));
+  if (!plan.quiet) PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s (%s)\n", output.c_str(), Points(P.ncases).c_str()));
   PetscFunctionReturn(0);
 }
 
 } // namespace
+
+int SweepExitStatus() { return g_exit_status; }
 
 PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
 {
@@ -326,16 +475,19 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   TaskFarm              farm;
   SweepStore            store;
   ImpactResult          probe;
-  std::vector<PetscInt> todo;
+  std::vector<PetscInt> todo, candidates;
   int                   run = 0;
   SweepProgress         progress;
   SweepShare            mine;
+  PetscInt              failed = 0;
 
   PetscFunctionBeginUser;
+  g_exit_status        = 0;
+  const double t_setup = MPI_Wtime();
   PetscCheck(!output.empty(), comm, PETSC_ERR_ARG_WRONG, "-task sweep writes its results to a file: give -output FILE.h5 (not 'none')");
-  PetscCall(SweepReadOptions(comm, &base, &plan));
+  PetscCall(SweepReadOptions(comm, &base, &plan, &candidates));
   PetscCall(TaskFarmCreate(comm, plan.ranks_per_case, &farm));
-  PetscCall(SweepProbe(farm, plan, base, &probe));
+  PetscCall(SweepProbe(farm, plan, candidates, &probe));
   PetscCall(SweepStart(farm, output, base, plan, probe, &store, &todo, &run));
   progress.ncases  = plan.cases();
   progress.todo    = (PetscInt)todo.size();
@@ -343,11 +495,13 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   PetscCall(SweepAnnounce(farm, plan, probe, progress, output));
   const double t0  = MPI_Wtime();
   progress.t_start = progress.last = t0;
-  PetscCall(SweepRunCases(farm, plan, base, todo, run, output, store, progress, &mine));
+  PetscCall(SweepRunCases(farm, plan, todo, run, output, store, progress, &mine));
   const double farm_time = MPI_Wtime() - t0;
+  mine.handout           = farm.handout;
   PetscCall(TaskFarmDestroy(&farm));
-  PetscCall(SweepGather(comm, mine.rows, store));
-  PetscCall(SweepReport(comm, plan, mine, progress, t0, farm_time, output));
+  PetscCall(SweepGather(comm, mine, store));
+  PetscCall(SweepReport(comm, plan, mine, progress, t0 - t_setup, t0, farm_time, output, store, &failed));
+  g_exit_status = failed ? 2 : 0;
   PetscFunctionReturn(0);
 }
 

@@ -1,13 +1,14 @@
-// -task sweep: the outcome of many impacts (ACOR against impact point, and
-// later other parameters), farmed out over MPI ranks, in one HDF5 file.
+// -task sweep: the outcome of many impacts (ACOR against impact point, ball speed, beam
+// thickness, grid size, ...: any numeric option), farmed out over MPI ranks, in one HDF5 file.
 //
-//   mpirun -n 4 beamimpact -task sweep -sweep_x 0:1.1:111 -output acor.h5
+//   mpirun -n 4 beamimpact -task sweep -sweep "impact_x=0:1.1:111,beam_thickness=4e-3;6e-3" -output acor.h5
 //
 // Four parts, kept apart:
-//   * the plan (sweep_plan.hpp): which cases exist, a product of axes taken from
-//     a registry (now only the impact point x);
+//   * the plan (sweep_plan.hpp): which cases exist, the product of axes, each an option
+//     of the program, and the scenario of a case (the options read with its values set);
 //   * the case runner (here): case index -> one row of numbers (ImpactRun on a
-//     group communicator, plus the rigid-body columns of Eq. 11);
+//     group communicator, plus the rigid-body columns of Eq. 11); a case whose run
+//     fails is a row too, with a status code, its reason and NaN numbers;
 //   * the farm (sweep_farm.hpp): hands out case indices to groups of ranks with
 //     dynamic load balancing, through an MPI-3 atomic counter on world rank 0
 //     (no dedicated coordinator rank);
@@ -30,17 +31,25 @@
 
 namespace beamimpact {
 
-// The columns of a sweep row: case_index, every ImpactResultColumns() quantity,
-// rigid_acor (Eq. 11 with f given by -rigid_loss_fraction, M = mu L, I_cm = M L^2/12,
+// The columns of a sweep row: case_index, one per axis (named after its option), status
+// (SweepStatus), every ImpactResultColumns() quantity, rigid_acor (Eq. 11 with f given by -rigid_loss_fraction, M = mu L, I_cm = M L^2/12,
 // b_cm = |x - L/2|) and rigid_forced_loss_fraction (the f for which Eq. 11
 // gives acor_corrected).
-const std::vector<SweepColumn> &SweepColumns();
+std::vector<SweepColumn> SweepColumns(const SweepPlan &plan);
 
-// Runs case `index` on comm (all its ranks) and returns its row on every rank.
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, const Scenario &base, PetscInt index, std::vector<double> *row, ImpactResult *result);
+// Runs case `index` on comm (all its ranks) and returns its row on every rank; a case that
+// fails gives a row with its status, NaN numbers and *reason (the error's first line).
+// Errors out only when the case's scenario cannot be read (checked before any work).
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result);
+
+// The status of a failed run from its PETSc error code (SweepStatus).
+int SweepStatusOfError(PetscErrorCode ierr);
 
 // -task sweep: reads the options, runs the plan (resuming from -output when it
 // holds part of the same sweep) and writes -output.
+// The sweep's points that failed end it with a nonzero exit status: the program's exit
+// status after TaskSweep (0, or 2 when some points of the file failed).
 PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output);
+int            SweepExitStatus();
 
 } // namespace beamimpact

@@ -70,15 +70,19 @@ PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<
   PetscCallMPI(MPI_Barrier(farm.world));
   if (farm.group != MPI_COMM_NULL) {
     for (;;) {
-      int64_t t = -1;
+      int64_t      t  = -1;
+      const double h0 = MPI_Wtime();
       if (farm.group_rank == 0) {
         PetscCall(FarmFetchAdd(farm, FarmNext, 1, &t));
         if (t >= ntasks) t = -1;
       }
       if (farm.group_size > 1) PetscCallMPI(MPI_Bcast(&t, 1, MPI_INT64_T, 0, farm.group));
+      farm.handout += MPI_Wtime() - h0;
       if (t < 0) break;
       PetscCall(run(farm.group, (PetscInt)t));
+      const double h1 = MPI_Wtime();
       if (farm.group_rank == 0) PetscCall(FarmFetchAdd(farm, FarmDone, 1, &done));
+      farm.handout += MPI_Wtime() - h1;
       if (farm.world_rank == 0) PetscCall(between((PetscInt)done + 1));
     }
   }

@@ -19,6 +19,7 @@ struct TaskFarm {
   PetscInt    ranks_per_case = 1, groups = 1;
   MPI_Win     win = MPI_WIN_NULL;
   void       *base = nullptr; // the counters (world rank 0 only)
+  double      handout = 0;     // s this rank spent taking tasks from the counter and passing them on
 };
 PetscErrorCode TaskFarmCreate(MPI_Comm world, PetscInt ranks_per_case, TaskFarm *farm);
 // Runs tasks 0..ntasks-1: run(group, task) on every rank of the group that

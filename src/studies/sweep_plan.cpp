@@ -1,9 +1,10 @@
-// The plan of a sweep: the axes registry, point lists, the -sweep_* options and the
-// scenario of each case. See sweep_plan.hpp.
+// The plan of a sweep: axes, point lists, the -sweep* options and the scenario of each
+// case. See sweep_plan.hpp.
 #include "studies/sweep_plan.hpp"
 
-#include "run/impact_point.hpp"
+#include "io/scenario_options.hpp"
 #include "io/text.hpp"
+#include "run/impact_point.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -11,45 +12,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace beamimpact {
-
-// ---------------------------------------------------------------------------
-// The axes a sweep can vary
-// ---------------------------------------------------------------------------
-
-namespace {
-
-// impact_x: the impact point (m), on the beam and not held.
-void ImpactXSet(Scenario &sc, PetscReal x) { sc.impact.x = x; }
-
-PetscErrorCode ImpactXCheck(MPI_Comm comm, const Scenario &sc, PetscReal x, PetscInt index)
-{
-  char what[128];
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(what, sizeof(what), "-sweep_x point %d, x = %g,", (int)index, (double)x));
-  PetscCall(ImpactPointCheck(comm, sc.beam, x, what));
-  PetscFunctionReturn(0);
-}
-
-std::string ImpactXExample(const Scenario &sc)
-{
-  char text[64];
-  if (PetscSNPrintf(text, sizeof(text), "0:%g:111", (double)sc.beam.length)) return "0:1:11";
-  return text;
-}
-
-} // namespace
-
-const std::vector<SweepAxisType> &SweepAxisTypes()
-{
-  static const std::vector<SweepAxisType> types = {
-    {"impact_x", "x", "m", "impact points", ImpactXSet, ImpactXCheck, ImpactXExample},
-  };
-  return types;
-}
 
 // ---------------------------------------------------------------------------
 // Cases and points
@@ -74,29 +41,6 @@ std::vector<PetscReal> SweepPlan::CaseValues(PetscInt index) const
   return v;
 }
 
-Scenario SweepCaseFor(const SweepPlan &plan, const Scenario &base, PetscInt index)
-{
-  Scenario                     c = base;
-  const std::vector<PetscReal> v = plan.CaseValues(index);
-  for (size_t k = 0; k < plan.axes.size(); ++k) plan.axes[k].type->set(c, v[k]);
-  return c;
-}
-
-std::string SweepCaseText(const SweepPlan &plan, PetscInt index, bool petsc_format)
-{
-  const std::vector<PetscReal> v = plan.CaseValues(index);
-  std::string                  text;
-  for (size_t k = 0; k < plan.axes.size(); ++k) {
-    const SweepAxisType &t = *plan.axes[k].type;
-    char                 one[128];
-    if (petsc_format) {
-      if (PetscSNPrintf(one, sizeof(one), "%s = %g %s", t.column, (double)v[k], t.unit)) one[0] = '\0';
-    } else std::snprintf(one, sizeof(one), "%s = %g %s", t.column, (double)v[k], t.unit);
-    text += (k ? ", " : "") + std::string(one);
-  }
-  return text;
-}
-
 static bool ParseReal(const std::string &text, PetscReal *v)
 {
   const std::string t = Trim(text);
@@ -109,23 +53,34 @@ static bool ParseReal(const std::string &text, PetscReal *v)
   return true;
 }
 
-// "start:stop:count", both ends included.
+
+static std::string Round15(double raw)
+{
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.15g", raw);
+  return text;
+}
+
+// "start:stop:count[:log]", both ends included.
 static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, std::string *why, const std::string &unit)
 {
   std::vector<std::string> parts;
   std::stringstream        ss(spec);
   std::string              p;
-  while (std::getline(ss, p, ':')) parts.push_back(p);
-  if (parts.size() != 3) {
-    *why = "a range is start:stop:count (three numbers separated by ':')";
+  const std::string        u = unit.empty() ? "" : " (" + unit + ")";
+  while (std::getline(ss, p, ':')) parts.push_back(Trim(p));
+  if (!spec.empty() && spec.back() == ':') parts.push_back("");
+  const bool log = parts.size() == 4 && parts[3] == "log";
+  if (parts.size() != 3 && !log) {
+    *why = parts.size() == 4 ? "the fourth field of start:stop:count:log must be 'log', not '" + parts[3] + "'" : "a range is start:stop:count or start:stop:count:log (numbers separated by ':')";
     return false;
   }
   PetscReal a, b;
   if (!ParseReal(parts[0], &a) || !ParseReal(parts[1], &b)) {
-    *why = "start and stop of start:stop:count must be numbers (" + unit + ")";
+    *why = "start and stop of start:stop:count must be numbers" + u;
     return false;
   }
-  const std::string c = Trim(parts[2]);
+  const std::string c = parts[2];
   char             *end;
   errno        = 0;
   const long n = c.empty() ? -1 : std::strtol(c.c_str(), &end, 10);
@@ -133,35 +88,125 @@ static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, 
     *why = "count of start:stop:count must be a whole number >= 0";
     return false;
   }
+  if (log && !((a > 0 && b > 0) || (a < 0 && b < 0))) {
+    *why = "start and stop of start:stop:count:log must be of one sign and not 0 (equal ratios between points)";
+    return false;
+  }
   // Rounded to 15 significant digits, so that 0:1.1:111 gives exactly the
   // doubles of 0, 0.01, ..., 1.1 (what -impact_x 0.55 gives), not 1 ulp off.
   for (long k = 0; k < n; ++k) {
-    const double raw = k == n - 1 && n > 1 ? b : a + (double)k * ((b - a) / (double)std::max(1L, n - 1));
-    char         text[64];
-    std::snprintf(text, sizeof(text), "%.15g", raw);
-    values->push_back(std::strtod(text, nullptr));
+    const double s   = (double)k / (double)std::max(1L, n - 1);
+    const double raw = k == n - 1 && n > 1 ? b : log ? a * std::pow(b / a, s) : a + (double)k * ((b - a) / (double)std::max(1L, n - 1));
+    values->push_back(std::strtod(Round15(raw).c_str(), nullptr));
   }
   return true;
 }
 
-bool SweepParsePoints(const std::string &spec_in, std::vector<PetscReal> *values, std::string *why, const std::string &unit)
+bool SweepParsePoints(const std::string &spec_in, std::vector<PetscReal> *values, std::string *why, const std::string &unit, const std::string &separators)
 {
   const std::string spec = Trim(spec_in);
+  const std::string u    = unit.empty() ? "" : " (" + unit + ")";
   values->clear();
   if (spec.find(':') != std::string::npos) return ParseRange(spec, values, why, unit);
-  std::stringstream ss(spec);
-  std::string       p;
-  while (std::getline(ss, p, ',')) {
+  std::string one;
+  const char  sep = separators.empty() ? ',' : separators[0];
+  for (size_t i = 0; i <= spec.size(); ++i) {
+    if (i < spec.size() && separators.find(spec[i]) == std::string::npos) {
+      one += spec[i];
+      continue;
+    }
     PetscReal v;
-    if (!ParseReal(p, &v)) {
-      *why = "'" + Trim(p) + "' is not a number; a list is x1,x2,... (" + unit + ")";
+    if (Trim(one).empty()) {
+      *why = std::string("empty entry in the list (values separated by '") + sep + "')";
+      return false;
+    }
+    if (!ParseReal(one, &v)) {
+      *why = "'" + Trim(one) + "' is not a number; a list is v1" + sep + "v2" + sep + "..." + u;
       return false;
     }
     values->push_back(v);
+    one.clear();
   }
-  if (!spec.empty() && spec.back() == ',') {
-    *why = "empty entry at the end of the list";
-    return false;
+  return true;
+}
+
+std::string SweepOptionUnit(const std::string &name)
+{
+  static const std::map<std::string, std::string> units = {
+    {"impact_x", "m"}, {"impact_window", "s"}, {"impact_max_time", "s"}, {"impact_event_tol", "1"}, {"impact_max_contacts", "1"}, {"impact_energy_growth_tol", "1"},
+    {"ball_mass", "kg"}, {"ball_speed", "m/s"}, {"ball_k", "N/m"}, {"ball_k1", "N/m^m"}, {"ball_m", "1"}, {"ball_n", "1"}, {"ball_cor", "1"}, {"ball_contact_time", "s"},
+    {"ball_test_speed", "m/s"}, {"ball_loss_factor", "1"}, {"beam_length", "m"}, {"beam_thickness", "m"}, {"beam_width", "m"}, {"beam_youngs_modulus", "Pa"},
+    {"beam_density", "kg/m^3"}, {"beam_mass", "kg"}, {"beam_youngs_over_density", "N m/kg"}, {"beam_EI", "N m^2"}, {"beam_mu", "kg/m"}, {"beam_shear_modulus", "Pa"},
+    {"beam_shear_coefficient", "1"}, {"beam_poisson", "1"}, {"beam_nodes", "1"}, {"beam_damping_mass", "1/s"}, {"beam_damping_stiffness", "s"}, {"ts_dt", "s"},
+    {"ts_rtol", "1"}, {"ts_atol", "1"}, {"ts_alpha_radius", "1"}, {"leapfrog_dt", "s"}, {"leapfrog_dt_fraction", "1"}, {"monitor_segment_until", "s"},
+  };
+  const auto it = units.find(name);
+  return it == units.end() ? "" : it->second;
+}
+
+// Options that belong to the task or the sweep itself, not to an impact.
+static bool ReservedAxis(const std::string &name)
+{
+  static const std::set<std::string> exact = {"task", "output", "options_file", "help", "version", "rigid_loss_fraction", "reference", "allow_unused_options", "error_traceback"};
+  return exact.count(name) || name.compare(0, 5, "sweep") == 0;
+}
+
+static bool NameOk(const std::string &n)
+{
+  if (n.empty() || !(std::isalpha((unsigned char)n[0]))) return false;
+  for (char c : n)
+    if (!(std::isalnum((unsigned char)c) || c == '_')) return false;
+  return true;
+}
+
+bool SweepParseAxes(const std::string &text, std::vector<SweepAxis> *axes, std::string *why)
+{
+  std::vector<std::string> items;
+  std::string              one;
+  for (size_t i = 0; i <= text.size(); ++i) {
+    if (i == text.size() || text[i] == ',') {
+      items.push_back(Trim(one));
+      one.clear();
+    } else one += text[i];
+  }
+  for (const std::string &item : items) {
+    const size_t eq = item.find('=');
+    if (item.empty() || eq == std::string::npos) {
+      *why = item.empty() ? "an empty axis (axes are NAME=SPEC separated by ',')" : "'" + item + "' is not NAME=SPEC (e.g. impact_x=0:1.1:111 or ball_speed=10;20;30)";
+      return false;
+    }
+    SweepAxis a;
+    a.name = Trim(item.substr(0, eq));
+    if (!a.name.empty() && a.name[0] == '-') a.name = a.name.substr(1);
+    a.spec = Trim(item.substr(eq + 1));
+    a.unit = SweepOptionUnit(a.name);
+    if (!NameOk(a.name)) {
+      *why = "'" + a.name + "' is not an option name (letters, digits and '_', without the dash)";
+      return false;
+    }
+    if (ReservedAxis(a.name)) {
+      *why = "-" + a.name + " belongs to the task or the sweep itself, not to an impact: it cannot be an axis";
+      return false;
+    }
+    for (const SweepAxis &b : *axes)
+      if (b.name == a.name) {
+        *why = a.name + " is given twice";
+        return false;
+      }
+    if (a.spec.empty()) {
+      *why = a.name + " has no values: " + a.name + "=start:stop:count, start:stop:count:log or v1;v2;...";
+      return false;
+    }
+    std::string w;
+    if (!SweepParsePoints(a.spec, &a.values, &w, a.unit, ";")) {
+      *why = a.name + "=" + a.spec + ": " + w;
+      return false;
+    }
+    if (a.values.empty()) {
+      *why = a.name + "=" + a.spec + " gives no values: a sweep needs at least one (count >= 1 in start:stop:count)";
+      return false;
+    }
+    axes->push_back(a);
   }
   return true;
 }
@@ -170,58 +215,180 @@ bool SweepParsePoints(const std::string &spec_in, std::vector<PetscReal> *values
 // Options
 // ---------------------------------------------------------------------------
 
-// One axis from its -sweep_<column> value: parsed, every point checked against the base.
-static PetscErrorCode SweepAxisRead(MPI_Comm comm, const Scenario &base, const SweepAxisType &t, const char *given, SweepPlan *plan)
+PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
 {
-  SweepAxis   axis;
-  std::string why;
-
-  PetscFunctionBeginUser;
-  axis.type = &t;
-  axis.spec = Trim(given);
-  PetscCheck(!axis.spec.empty(), comm, PETSC_ERR_ARG_WRONG, "-sweep_%s needs a value: start:stop:count (both ends included) or x1,x2,... (%s), e.g. -sweep_%s %s", t.column, t.unit, t.column,
-             t.example(base).c_str());
-  PetscCheck(SweepParsePoints(axis.spec, &axis.values, &why, t.unit), comm, PETSC_ERR_ARG_WRONG, "-sweep_%s %s is not allowed: %s", t.column, axis.spec.c_str(), why.c_str());
-  PetscCheck(!axis.values.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_%s %s gives no %s: a sweep needs at least one (count >= 1 in start:stop:count)", t.column, axis.spec.c_str(), t.points);
-  for (size_t k = 0; k < axis.values.size(); ++k) PetscCall(t.check(comm, base, axis.values[k], (PetscInt)k));
-  plan->axes.push_back(axis);
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, const Scenario &base, SweepPlan *plan)
-{
-  const std::vector<SweepAxisType> &types = SweepAxisTypes();
-  std::vector<std::vector<char>>    given(types.size(), std::vector<char>(1 << 20, 0));
-  std::vector<PetscBool>            set(types.size(), PETSC_FALSE);
+  std::vector<char> sweep(1 << 20, 0), sweep_x(1 << 20, 0);
+  PetscBool         set_sweep = PETSC_FALSE, set_x = PETSC_FALSE;
+  std::string       why;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Sweep: many impacts farmed out over MPI ranks (-task sweep)", "beamimpact");
-  for (size_t a = 0; a < types.size(); ++a) {
-    std::string help = std::string(types[a].points) + " (" + types[a].unit + "): start:stop:count (both ends included) or x1,x2,...";
-    help[0]          = (char)std::toupper((unsigned char)help[0]);
-    PetscCall(PetscOptionsString((std::string("-sweep_") + types[a].column).c_str(), help.c_str(), "", given[a].data(), given[a].data(), given[a].size(), &set[a]));
-  }
+  PetscCall(PetscOptionsString("-sweep", "Axes NAME=SPEC[,NAME=SPEC...]: NAME a numeric option without its dash (impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ...), SPEC start:stop:count, start:stop:count:log or v1;v2;...; the cases are their product, the last axis varying fastest",
+                               "", sweep.data(), sweep.data(), sweep.size(), &set_sweep));
+  PetscCall(PetscOptionsString("-sweep_x", "Impact points (m), shorthand for -sweep impact_x=SPEC: start:stop:count (both ends included) or x1,x2,...", "", sweep_x.data(), sweep_x.data(), sweep_x.size(), &set_x));
   PetscCall(PetscOptionsInt("-sweep_ranks_per_case", "Ranks that solve one impact together (the beam's DMDA is distributed over them)", "", plan->ranks_per_case, &plan->ranks_per_case, NULL));
   PetscCall(PetscOptionsReal("-rigid_loss_fraction", "Loss fraction f of the rigid-body model, Eq. (11), for the rigid_acor column", "", plan->rigid_loss_fraction, &plan->rigid_loss_fraction, NULL));
   PetscCall(PetscOptionsBool("-sweep_quiet", "No progress or summary lines (errors are still reported)", "", plan->quiet, &plan->quiet, NULL));
   PetscCall(PetscOptionsBool("-sweep_restart", "Discard an existing -output file and its journal and start the sweep over", "", plan->restart, &plan->restart, NULL));
+  PetscCall(PetscOptionsBool("-sweep_retry_failed", "On resuming, compute again the points that failed (status != 0) instead of keeping their rows", "", plan->retry_failed, &plan->retry_failed, NULL));
   PetscCall(PetscOptionsReal("-sweep_progress_interval", "Seconds between progress lines on rank 0", "", plan->progress_interval, &plan->progress_interval, NULL));
   PetscCall(PetscOptionsReal("-sweep_write_interval", "Minimum seconds between rewrites of -output while the sweep runs (0: as often as a 5% cost cap on rank 0 allows)", "", plan->write_interval,
                              &plan->write_interval, NULL));
   PetscOptionsEnd();
 
   plan->axes.clear();
-  for (size_t a = 0; a < types.size(); ++a)
-    if (set[a]) PetscCall(SweepAxisRead(comm, base, types[a], given[a].data(), plan));
-  const SweepAxisType &t = types[0]; // the axis every sweep has had so far
-  PetscCheck(!plan->axes.empty(), comm, PETSC_ERR_ARG_WRONG, "-task sweep needs the %s: -sweep_%s start:stop:count (both ends included) or -sweep_%s x1,x2,... (%s), e.g. -sweep_%s %s", t.points, t.column,
-             t.column, t.unit, t.column, t.example(base).c_str());
+  plan->sweep   = set_sweep ? Trim(sweep.data()) : "";
+  plan->sweep_x = set_x ? Trim(sweep_x.data()) : "";
+  PetscCheck(set_sweep || set_x, comm, PETSC_ERR_ARG_WRONG,
+             "-task sweep needs its axes: -sweep \"NAME=SPEC[,NAME=SPEC...]\" (e.g. -sweep \"impact_x=0:1.1:23,ball_speed=10;20;30\"), or the impact points alone: -sweep_x start:stop:count or -sweep_x x1,x2,... (m)");
+  if (set_x) {
+    SweepAxis a;
+    a.name = "impact_x";
+    a.unit = "m";
+    a.spec = plan->sweep_x;
+    PetscCheck(!a.spec.empty(), comm, PETSC_ERR_ARG_WRONG, "-sweep_x needs a value: start:stop:count (both ends included) or x1,x2,... (m), e.g. -sweep_x 0:1.1:111");
+    PetscCheck(SweepParsePoints(a.spec, &a.values, &why, "m"), comm, PETSC_ERR_ARG_WRONG, "-sweep_x %s is not allowed: %s", a.spec.c_str(), why.c_str());
+    PetscCheck(!a.values.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_x %s gives no impact points: a sweep needs at least one (count >= 1 in start:stop:count)", a.spec.c_str());
+    plan->axes.push_back(a);
+  }
+  if (set_sweep) {
+    std::vector<SweepAxis> more;
+    PetscCheck(!plan->sweep.empty(), comm, PETSC_ERR_ARG_WRONG, "-sweep needs a value: \"NAME=SPEC[,NAME=SPEC...]\", e.g. -sweep \"impact_x=0:1.1:23,ball_speed=10;20;30\"");
+    PetscCheck(SweepParseAxes(plan->sweep, &more, &why), comm, PETSC_ERR_ARG_WRONG, "-sweep \"%s\" is not allowed: %s", plan->sweep.c_str(), why.c_str());
+    for (const SweepAxis &a : more)
+      PetscCheck(!(set_x && a.name == "impact_x"), comm, PETSC_ERR_ARG_INCOMP, "-sweep \"%s\" and -sweep_x %s both vary impact_x: give the impact points once", plan->sweep.c_str(), plan->sweep_x.c_str());
+    plan->axes.insert(plan->axes.end(), more.begin(), more.end());
+  }
+  double n = 1;
+  for (const SweepAxis &a : plan->axes) n *= (double)a.values.size();
+  PetscCheck(n <= 1e9, comm, PETSC_ERR_ARG_OUTOFRANGE, "the sweep has %.3g points (the product of its axes): at most 1e9 are allowed", n);
+  // An axis's own option given too (a scene's options file sets -beam_thickness, say): the
+  // axis overrides it at every case (the announcement says so), and it is put back after.
+  for (SweepAxis &a : plan->axes) {
+    std::vector<char> given(1 << 16, 0);
+    PetscBool         has;
+    PetscCall(PetscOptionsGetString(NULL, NULL, ("-" + a.name).c_str(), given.data(), given.size(), &has));
+    a.overrides = has == PETSC_TRUE;
+    a.given     = has ? given.data() : "";
+  }
   PetscCheck(plan->ranks_per_case >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_ranks_per_case %" PetscInt_FMT " is not allowed: at least 1", plan->ranks_per_case);
   PetscCheck(plan->rigid_loss_fraction >= 0 && plan->rigid_loss_fraction < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-rigid_loss_fraction %g is not allowed: a fraction of the incident energy, 0 <= f < 1",
              (double)plan->rigid_loss_fraction);
   PetscCheck(plan->progress_interval > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_progress_interval %g is not allowed: it must be > 0 (s)", (double)plan->progress_interval);
   PetscCheck(plan->write_interval >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_write_interval %g is not allowed: it must be >= 0 (s)", (double)plan->write_interval);
   PetscFunctionReturn(0);
+}
+
+// ---------------------------------------------------------------------------
+// The scenario of a case
+// ---------------------------------------------------------------------------
+
+PetscErrorCode SweepCaseOptionsSet(const SweepPlan &plan, PetscInt index)
+{
+  const std::vector<PetscReal> v = plan.CaseValues(index);
+
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < plan.axes.size(); ++k) {
+    const std::string opt = "-" + plan.axes[k].name;
+    char              text[64];
+    std::snprintf(text, sizeof(text), "%.17g", (double)v[k]); // exact; 21 for a whole number
+    // Cleared first: a new entry, so that "used" says whether this case's reading used it.
+    PetscCall(PetscOptionsClearValue(NULL, opt.c_str()));
+    PetscCall(PetscOptionsSetValue(NULL, opt.c_str(), text));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SweepCaseOptionsClear(const SweepPlan &plan)
+{
+  PetscFunctionBeginUser;
+  for (const SweepAxis &a : plan.axes) {
+    PetscCall(PetscOptionsClearValue(NULL, ("-" + a.name).c_str()));
+    if (a.overrides) PetscCall(PetscOptionsSetValue(NULL, ("-" + a.name).c_str(), a.given.empty() ? NULL : a.given.c_str()));
+  }
+  PetscFunctionReturn(0);
+}
+
+std::string SweepErrorReason(PetscErrorCode ierr)
+{
+  std::string msg = LastErrorMessage(ierr);
+  const size_t nl = msg.find('\n');
+  if (nl != std::string::npos) msg = msg.substr(0, nl);
+  msg = Trim(msg);
+  if (msg.size() > 400) msg = msg.substr(0, 397) + "...";
+  return msg;
+}
+
+PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason)
+{
+  ScenarioReading how;
+  bool            bodies_read = false;
+  BeamParams      beam;
+
+  PetscFunctionBeginUser;
+  *status = SweepOk;
+  reason->clear();
+  PetscCall(SweepCaseOptionsSet(plan, index));
+  how.monitors    = monitors;
+  how.after_bodies = [&](const Scenario &bodies) -> PetscErrorCode {
+    bodies_read = true;
+    beam        = bodies.beam;
+    return 0;
+  };
+  *sc                 = Scenario();
+  PetscErrorCode ierr = ScenarioFromOptions(comm, how, sc);
+  if (ierr) {
+    // The impact point of this case may be off the beam or held fixed (e.g. across a
+    // clamped region): a failed case, not a bad option.
+    PetscReal x = ImpactParams().x;
+    PetscBool set;
+    if (bodies_read && !PetscOptionsGetReal(NULL, NULL, "-impact_x", &x, &set)) {
+      const ImpactPointWhere where = ImpactPointLocate(beam, x);
+      if (where != ImpactPointWhere::Movable) {
+        *status = where == ImpactPointWhere::OffBeam ? SweepOffBeam : SweepHeldPoint;
+        *reason = SweepErrorReason(ierr);
+        PetscFunctionReturn(0);
+      }
+    }
+    return ierr;
+  }
+  PetscFunctionReturn(0);
+}
+
+std::string SweepCaseText(const SweepPlan &plan, PetscInt index, bool petsc_format)
+{
+  const std::vector<PetscReal> v = plan.CaseValues(index);
+  std::string                  text;
+  for (size_t k = 0; k < plan.axes.size(); ++k) {
+    const SweepAxis &a = plan.axes[k];
+    const std::string unit = a.unit.empty() || a.unit == "1" ? "" : " " + a.unit;
+    char              one[256];
+    if (petsc_format) {
+      if (PetscSNPrintf(one, sizeof(one), "%s = %g%s", a.name.c_str(), (double)v[k], unit.c_str())) one[0] = '\0';
+    } else std::snprintf(one, sizeof(one), "%s = %g%s", a.name.c_str(), (double)v[k], unit.c_str());
+    text += (k ? ", " : "") + std::string(one);
+  }
+  return text;
+}
+
+const char *SweepStatusName(int status)
+{
+  switch (status) {
+  case SweepOk:
+    return "ok";
+  case SweepOffBeam:
+    return "impact point off the beam";
+  case SweepHeldPoint:
+    return "impact point held fixed";
+  case SweepRefused:
+    return "refused by the run's set-up";
+  case SweepNotConverged:
+    return "run stopped (not converged)";
+  case SweepNotFinite:
+    return "solution not finite";
+  default:
+    return "run failed";
+  }
 }
 
 } // namespace beamimpact

@@ -1,5 +1,6 @@
-// The plan of a sweep (-sweep_* options): which cases exist, as the product of named axes
-// taken from a registry, each varying one parameter of the scenario.
+// The plan of a sweep (-sweep, -sweep_x and the other -sweep_* options): which cases
+// exist, as the product of axes, each varying one numeric option of the program, and the
+// scenario of each case, read from the options with the case's values set.
 #pragma once
 
 #include "run/scenario.hpp"
@@ -11,34 +12,40 @@
 
 namespace beamimpact {
 
-// A parameter a sweep can vary: one entry of SweepAxisTypes(). A new axis is one entry there.
-struct SweepAxisType {
-  const char *name;   // the option it varies, without the dash ("impact_x"); refused in a sweep
-  const char *column; // its column in /results and /sweep; its points come from -sweep_<column> ("x")
-  const char *unit;   // of its values ("m")
-  const char *points; // what its values are called in messages ("impact points")
-  void (*set)(Scenario &sc, PetscReal value); // sets the value in a case's scenario
-  // Errors out when the value (the index-th of -sweep_<column>, from 0) is not allowed in sc.
-  PetscErrorCode (*check)(MPI_Comm comm, const Scenario &sc, PetscReal value, PetscInt index);
-  std::string (*example)(const Scenario &sc); // a typical -sweep_<column> value, for messages
-};
-const std::vector<SweepAxisType> &SweepAxisTypes();
-
-// One swept parameter: its type, its option as given and its values.
+// One swept option: its name, its unit (when known), its text as given and its values.
 struct SweepAxis {
-  const SweepAxisType   *type = nullptr;
-  std::string            spec;   // -sweep_<column> as given (recorded in the file)
+  std::string            name;   // the option without its dash ("impact_x"); also its column
+  std::string            unit;   // of its values ("m"; "" when not known)
+  std::string            spec;   // the SPEC as given (start:stop:count[:log] or a list)
   std::vector<PetscReal> values; // in the given order
+  bool                   overrides = false; // -NAME was also given (options file or command line): the axis wins
+  std::string            given;             // its value there, restored after each case
 };
 
-// -sweep_* options and -rigid_loss_fraction. The cases are the product of the
-// axes with the last axis varying fastest; case indices number them from 0.
+// What became of a case: 0 ok, else a documented code (docs/sweep.md).
+enum SweepStatus {
+  SweepOk           = 0,
+  SweepFailedOther  = 1, // the run returned an error not listed below
+  SweepOffBeam      = 2, // the impact point is off the beam
+  SweepHeldPoint    = 3, // the impact point is held fixed (clamped/pinned end, -beam_clamp)
+  SweepRefused      = 4, // the run's set-up refused the values (e.g. an explicit step above its stability limit)
+  SweepNotConverged = 5, // the run stopped: a solve or event location failed, energy grew, the ball chattered
+  SweepNotFinite    = 6, // the solution became NaN/Inf (an unstable step)
+};
+const char *SweepStatusName(int status);
+
+// -sweep, -sweep_x, -sweep_ranks_per_case, -rigid_loss_fraction and the farm's options.
+// The cases are the product of the axes in the order written (-sweep_x first), the first
+// varying slowest and the last fastest; case indices number them from 0.
 struct SweepPlan {
-  std::vector<SweepAxis> axes;                     // those given, in registry order (now: x)
+  std::vector<SweepAxis> axes;
+  std::string            sweep;                    // -sweep as given ("" if not)
+  std::string            sweep_x;                  // -sweep_x as given ("" if not)
   PetscInt               ranks_per_case = 1;       // ranks solving one impact together (DMDA distributed over them)
   PetscReal              rigid_loss_fraction = 0;  // f of Eq. (11) for the rigid_acor column (dimensionless)
   PetscBool              quiet = PETSC_FALSE;      // no progress or summary lines
   PetscBool              restart = PETSC_FALSE;    // discard an existing -output file and its journal
+  PetscBool              retry_failed = PETSC_FALSE; // a resume computes failed cases again
   PetscReal              progress_interval = 2;    // s, at most one progress line per interval
   PetscReal              write_interval = 5;       // s, minimum time between live rewrites of the file
 
@@ -47,21 +54,38 @@ struct SweepPlan {
   std::vector<PetscReal> CaseValues(PetscInt index) const;
 };
 
-// Parses a list of points: "start:stop:count" (count points from start to stop,
-// both included, like numpy.linspace) or "x1,x2,...". Returns false with a
-// reason in *why (which names the unit) when the text is not of either form.
-bool SweepParsePoints(const std::string &spec, std::vector<PetscReal> *values, std::string *why, const std::string &unit = "m");
+// The unit of an option's values ("m" for impact_x), "" when not known.
+std::string SweepOptionUnit(const std::string &name);
 
-// Reads -sweep_<column> of every registered axis, -sweep_ranks_per_case, -sweep_quiet,
-// -sweep_restart, -sweep_progress_interval, -sweep_write_interval and -rigid_loss_fraction;
-// checks every point against the base scenario (the impact point: on the beam, not held).
-PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, const Scenario &base, SweepPlan *plan);
+// Parses the values of one axis: "start:stop:count" (count points from start to stop, both
+// included, like numpy.linspace), "start:stop:count:log" (geometric: equal ratios, start and
+// stop of one sign, not 0) or a list separated by any of `separators`. Values are rounded to
+// 15 significant digits. Returns false with a reason in *why (which names the unit).
+bool SweepParsePoints(const std::string &spec, std::vector<PetscReal> *values, std::string *why, const std::string &unit = "m", const std::string &separators = ",;");
 
-// The scenario of case `index`: the base with the plan's axis values set.
-Scenario SweepCaseFor(const SweepPlan &plan, const Scenario &base, PetscInt index);
+// Parses -sweep "NAME=SPEC[,NAME=SPEC...]" into axes (lists in SPEC separated by ';').
+bool SweepParseAxes(const std::string &text, std::vector<SweepAxis> *axes, std::string *why);
 
-// The values of case `index`, "x = 0.3 m" (axes separated by ", "), formatted as C's printf
+// Reads the -sweep* options and -rigid_loss_fraction, and checks their form (no scenario yet).
+PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan);
+
+// Sets the options of case `index` in the options database (-NAME value for every axis),
+// and puts back what was there before (nothing, or the value an options file gave).
+PetscErrorCode SweepCaseOptionsSet(const SweepPlan &plan, PetscInt index);
+PetscErrorCode SweepCaseOptionsClear(const SweepPlan &plan);
+
+// The scenario of case `index`: the options read as -task impact reads them, with the
+// case's values set (and left set: the run reads the integrator's from the database; clear
+// them with SweepCaseOptionsClear). An impact point off the beam or held fixed is not an
+// error: *status says so (SweepOffBeam, SweepHeldPoint) and *reason has the option's message;
+// any other error is returned. monitors: read the -monitor_* options too.
+PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason);
+
+// The values of case `index`, "impact_x = 0.3 m, ball_speed = 2 m/s", formatted as C's printf
 // does (petsc_format false) or as PETSc's messages do (true: 1 reads "1.").
 std::string SweepCaseText(const SweepPlan &plan, PetscInt index, bool petsc_format);
+
+// The first line of the message of the error just raised (LastErrorMessage), for `reason`.
+std::string SweepErrorReason(PetscErrorCode ierr);
 
 } // namespace beamimpact

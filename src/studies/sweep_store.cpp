@@ -38,8 +38,9 @@ uint64_t Fnv1a(const void *data, size_t n, uint64_t h = 1469598103934665603ULL)
   return h;
 }
 
-const char     JournalMagic[8] = {'B', 'I', 'S', 'W', 'J', 'N', 'L', '1'};
+const char     JournalMagic[8] = {'B', 'I', 'S', 'W', 'J', 'N', 'L', '2'};
 const uint32_t RecordMagic     = 0x574f5253u;
+const uint32_t ReasonMax       = 4096; // bytes of a record's reason text
 
 struct JournalHeader {
   char     magic[8];
@@ -49,7 +50,8 @@ struct JournalHeader {
   uint64_t check; // Fnv1a of the fields above
 };
 
-size_t RecordBytes(uint32_t ncols) { return 2 * sizeof(uint32_t) + ncols * sizeof(double) + sizeof(uint64_t); }
+// A record: magic, reason length, the row's numbers, the reason's bytes, the checksum.
+size_t RecordBytes(uint32_t ncols, uint32_t reason) { return 2 * sizeof(uint32_t) + ncols * sizeof(double) + reason + sizeof(uint64_t); }
 
 bool WriteAll(int fd, const void *data, size_t n)
 {
@@ -79,7 +81,7 @@ bool ParseJournalName(const char *name, int *run, int *rank)
 // Options that do not change any number in the file.
 bool OptionIsVolatile(const std::string &name)
 {
-  static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_progress_interval", "sweep_write_interval", "error_traceback", "allow_unused_options", "help", "version"};
+  static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_retry_failed", "sweep_progress_interval", "sweep_write_interval", "error_traceback", "allow_unused_options", "help", "version"};
   static const char *const           prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_", "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view", "snes_view", "ksp_view"};
   if (exact.count(name)) return true;
   for (const char *p : prefix)
@@ -279,7 +281,7 @@ void SweepJournalWriter::Warn(const char *what)
   fd = -1;
 }
 
-PetscErrorCode SweepJournalWriter::Append(const std::vector<double> &row)
+PetscErrorCode SweepJournalWriter::Append(const std::vector<double> &row, const std::string &reason_in)
 {
   PetscFunctionBeginUser;
   PetscCheck(row.size() == ncols, PETSC_COMM_SELF, PETSC_ERR_PLIB, "sweep row has %zu columns, the journal %u", row.size(), ncols);
@@ -301,10 +303,12 @@ PetscErrorCode SweepJournalWriter::Append(const std::vector<double> &row)
       PetscFunctionReturn(0);
     }
   }
-  std::vector<char> rec(RecordBytes(ncols));
-  uint32_t          head[2] = {RecordMagic, ncols};
+  const std::string reason = reason_in.substr(0, ReasonMax);
+  std::vector<char> rec(RecordBytes(ncols, (uint32_t)reason.size()));
+  uint32_t          head[2] = {RecordMagic, (uint32_t)reason.size()};
   std::memcpy(rec.data(), head, sizeof(head));
   std::memcpy(rec.data() + sizeof(head), row.data(), ncols * sizeof(double));
+  std::memcpy(rec.data() + sizeof(head) + ncols * sizeof(double), reason.data(), reason.size());
   const uint64_t check = Fnv1a(rec.data(), rec.size() - sizeof(uint64_t));
   std::memcpy(rec.data() + rec.size() - sizeof(uint64_t), &check, sizeof(check));
   // One write() per record: a kill leaves whole records and at most one cut one.
@@ -318,7 +322,8 @@ void SweepJournalWriter::Close()
   fd = -1;
 }
 
-SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, PetscInt *added)
+SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, std::map<PetscInt, std::string> *reasons,
+                                                      PetscInt *added)
 {
   if (stopped) return Ok;
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
@@ -351,14 +356,19 @@ SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signatu
     header_ok = true;
     pos       = sizeof(JournalHeader);
   }
-  const size_t rb = RecordBytes(ncols);
-  while (pos + rb <= data.size()) {
+  while (pos + RecordBytes(ncols, 0) <= data.size()) {
     const char *r = data.data() + pos;
     uint32_t    head[2];
     uint64_t    check;
     std::memcpy(head, r, sizeof(head));
+    if (head[0] != RecordMagic || head[1] > ReasonMax) {
+      stopped = true;
+      break;
+    }
+    const size_t rb = RecordBytes(ncols, head[1]);
+    if (pos + rb > data.size()) break; // not yet written in full: read next time
     std::memcpy(&check, r + rb - sizeof(uint64_t), sizeof(check));
-    if (head[0] != RecordMagic || head[1] != ncols || check != Fnv1a(r, rb - sizeof(uint64_t))) {
+    if (check != Fnv1a(r, rb - sizeof(uint64_t))) {
       stopped = true;
       break;
     }
@@ -369,7 +379,10 @@ SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signatu
       stopped = true;
       break;
     }
-    if (rows->emplace((PetscInt)idx, std::move(row)).second && added) ++*added;
+    if (rows->emplace((PetscInt)idx, std::move(row)).second) {
+      if (head[1]) (*reasons)[(PetscInt)idx] = std::string(r + sizeof(head) + ncols * sizeof(double), head[1]);
+      if (added) ++*added;
+    }
     pos += rb;
   }
   offset += (off_t)pos;
@@ -401,6 +414,50 @@ void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std:
   S->ncols          = (uint32_t)columns.size();
   S->signature      = SignatureMaps(record);
   S->signature_hash = SignatureHash(S->signature);
+  S->status_column  = -1;
+  for (size_t c = 0; c < columns.size(); ++c)
+    if (columns[c].name == "status") S->status_column = (int)c;
+}
+
+// A 1-D dataset of variable-length UTF-8 strings.
+static bool WriteStrings(hid_t g, const char *name, const std::vector<std::string> &v)
+{
+  std::vector<const char *> p;
+  for (auto &s : v) p.push_back(s.c_str());
+  const hsize_t n = v.size();
+  hid_t         t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  hid_t s  = H5Screate_simple(1, &n, NULL);
+  hid_t d  = H5Dcreate2(g, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  bool  ok = d >= 0 && (n == 0 || H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
+  if (d >= 0) H5Dclose(d);
+  H5Sclose(s);
+  H5Tclose(t);
+  return ok;
+}
+
+static bool ReadStrings(hid_t g, const char *name, std::vector<std::string> *v)
+{
+  v->clear();
+  if (H5Lexists(g, name, H5P_DEFAULT) <= 0) return false;
+  hid_t d = H5Dopen2(g, name, H5P_DEFAULT);
+  if (d < 0) return false;
+  hid_t          s = H5Dget_space(d);
+  const hssize_t n = H5Sget_simple_extent_npoints(s);
+  hid_t          t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  std::vector<char *> p((size_t)std::max<hssize_t>(0, n), nullptr);
+  bool                ok = n >= 0 && (n == 0 || H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
+  if (ok && n > 0) {
+    for (char *c : p) v->push_back(c ? c : "");
+    H5Dvlen_reclaim(t, s, H5P_DEFAULT, p.data());
+  }
+  H5Tclose(t);
+  H5Sclose(s);
+  H5Dclose(d);
+  return ok;
 }
 
 static PetscErrorCode StoreWrite(SweepStore &S)
@@ -425,13 +482,20 @@ static PetscErrorCode StoreWrite(SweepStore &S)
       for (auto &kv : S.rows) v.push_back(kv.second[c]);
       PetscCall(H5WriteDataset1D(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
     }
+    std::vector<std::string> reasons;
+    reasons.reserve(S.rows.size());
+    for (auto &kv : S.rows) {
+      const auto it = S.reasons.find(kv.first);
+      reasons.push_back(it == S.reasons.end() ? std::string() : it->second);
+    }
+    PetscCheck(WriteStrings(g, "reason", reasons), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write /results/reason to %s", S.output.c_str(), tmp.c_str());
     H5Gclose(g);
     // The plan: every axis's value for every case (also those not yet done).
     hid_t gp = H5Gcreate2(file, "sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     for (size_t k = 0; k < S.plan.axes.size(); ++k) {
       std::vector<double> v(S.ncases);
       for (PetscInt i = 0; i < S.ncases; ++i) v[i] = S.plan.CaseValues(i)[k];
-      PetscCall(H5WriteDataset1D(gp, S.plan.axes[k].type->column, v, S.plan.axes[k].type->unit));
+      PetscCall(H5WriteDataset1D(gp, S.plan.axes[k].name.c_str(), v, S.plan.axes[k].unit.c_str()));
     }
     H5Gclose(gp);
     PetscCheck(H5Fclose(file) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing %s failed (disk full?)", S.output.c_str(), tmp.c_str());
@@ -492,14 +556,18 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
     PetscCheck(ok && data[c].size() == data[0].size(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/%s is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str(),
                cols[c].name.c_str());
   }
+  std::vector<std::string> reasons;
+  const bool               reasons_ok = ReadStrings(g, "reason", &reasons) && reasons.size() == data[0].size();
   H5Gclose(g);
   H5Fclose(file);
+  PetscCheck(reasons_ok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/reason is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str());
   for (size_t r = 0; r < data[0].size(); ++r) {
     const double idx = data[0][r];
     if (!(idx >= 0 && idx < S.ncases && idx == std::floor(idx))) continue;
     std::vector<double> row(cols.size());
     for (size_t c = 0; c < cols.size(); ++c) row[c] = data[c][r];
     S.rows.emplace((PetscInt)idx, std::move(row));
+    if (!reasons[r].empty()) S.reasons[(PetscInt)idx] = reasons[r];
   }
   PetscFunctionReturn(0);
 }
@@ -550,9 +618,17 @@ PetscErrorCode SweepStoreOpen(SweepStore &S, int *run)
   for (auto &n : names) {
     SweepJournalReader j;
     j.path = S.parts + "/" + n;
-    if (j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, nullptr) == SweepJournalReader::WrongParameters)
+    if (j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr) == SweepJournalReader::WrongParameters)
       PetscCall(WrongParameters(S, "the journal " + j.path, "\n  (its parameter signature differs from the current one)"));
   }
+  // -sweep_retry_failed: the failed cases are computed again (their rows are dropped).
+  if (S.plan.retry_failed && S.status_column >= 0)
+    for (auto it = S.rows.begin(); it != S.rows.end();) {
+      if (it->second[S.status_column] != 0) {
+        S.reasons.erase(it->first);
+        it = S.rows.erase(it);
+      } else ++it;
+    }
   // One file holding everything found; only then are the old journals redundant.
   PetscCall(StoreWrite(S));
   RemoveJournals(S, false);
@@ -578,10 +654,12 @@ PetscErrorCode SweepStoreRefresh(SweepStore &S)
   const double interval = std::max(S.plan.write_interval, 20 * S.write_cost);
   if (now - S.last_write >= interval) {
     PetscInt added = 0;
-    for (auto &j : S.live) j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &added);
+    for (auto &j : S.live) j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, &added);
     if ((PetscInt)S.rows.size() != S.rows_written) PetscCall(StoreWrite(S));
     S.last_write = MPI_Wtime();
     S.write_cost = S.last_write - now; // reading the journals included
+    S.write_total += S.write_cost;
+    ++S.writes;
   }
   PetscFunctionReturn(0);
 }

@@ -4,14 +4,15 @@
 // On disk, for -output F:
 //   F          the results: root attributes (parameters, options, progress) and
 //              /results/<column> with one row per finished case, ordered by
-//              case index, and /sweep/<axis> with every case's axis values;
+//              case index (failed cases too: status != 0, their text in
+//              /results/reason), and /sweep/<axis> with every case's axis values;
 //              rewritten only as F.tmp + fsync + rename(), so F is always a
 //              complete HDF5 file (readable by h5py/h5dump at any time).
 //   F.parts/   while a sweep runs: lock (flock by rank 0: one sweep per file),
 //              run<R>-rank<r>.bin, the journal of the group leader on world rank
 //              r in run (attempt) R: a header with the parameter signature, then
-//              one self-checking record per finished case, appended with a
-//              single write(). A record cut by kill -9 fails its checksum and is
+//              one self-checking record per finished case (its numbers and its
+//              reason text), appended with a single write(). A record cut by kill -9 fails its checksum and is
 //              ignored (that case is simply computed again).
 // A rerun of the same command reads F and the journals, checks that they were
 // written with the same parameters, rewrites F with every row found, and
@@ -53,7 +54,7 @@ struct SweepJournalWriter {
   int         fd        = -1;
   bool        failed    = false; // warned once; the rows still reach the file at the end
 
-  PetscErrorCode Append(const std::vector<double> &row);
+  PetscErrorCode Append(const std::vector<double> &row, const std::string &reason);
   void           Close();
   void           Warn(const char *what);
 };
@@ -68,7 +69,7 @@ struct SweepJournalReader {
   uint64_t    signature = 0;
 
   enum Status { Ok, Missing, WrongParameters };
-  Status ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, PetscInt *added);
+  Status ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, std::map<PetscInt, std::string> *reasons, PetscInt *added);
 };
 
 // Root attributes by name (what the parameter signature is made of).
@@ -89,10 +90,14 @@ struct SweepStore {
   uint32_t                                ncols          = 0;
   PetscInt                                ncases         = 0;
   std::map<PetscInt, std::vector<double>> rows;
+  std::map<PetscInt, std::string>         reasons; // of the failed rows (status != 0)
+  int                                     status_column = -1; // index of "status" in columns
   std::vector<SweepJournalReader>         live; // this run's journals
   int                                     lock_fd = -1;
   PetscInt                                rows_written = -1;
   double                                  last_write = 0, write_cost = 0; // s (MPI_Wtime), s
+  int                                     writes      = 0;                // live rewrites (SweepStoreRefresh) so far
+  double                                  write_total = 0;                // s, their time, reading the journals included
 };
 
 // The options that decide a sweep's numbers, "-name value ..." (recorded as
@@ -104,8 +109,9 @@ std::string SweepCheckedOptions(const std::string &all);
 // attributes, all but the volatile ones, make the parameter signature).
 void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std::vector<SweepColumn> &columns, const RunRecord &record, SweepStore *S);
 // Rank 0: locks the output, loads what is done (file and journals; an error when they
-// were written with other parameters), rewrites the file with all of it, drops the old
-// journals. Returns this run's number (for the journal names).
+// were written with other parameters), with -sweep_retry_failed forgets the failed rows,
+// rewrites the file with all of it, drops the old journals. Returns this run's number
+// (for the journal names).
 PetscErrorCode SweepStoreOpen(SweepStore &S, int *run);
 // Rank 0: follows the journals of this run's group leaders (world ranks).
 void SweepStoreFollow(SweepStore &S, int run, const std::vector<PetscMPIInt> &leaders);
