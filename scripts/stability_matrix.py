@@ -143,7 +143,7 @@ class Case:
     def __init__(self, cid, title, params, expect="result", accept=None, per_int=None, checks=(),
                  timeout=300, ranks=1, why="", modal_reference=True):
         self.id, self.title, self.expect, self.why = cid, title, expect, why
-        self.modal_reference = modal_reference  # False: tight runs are the reference (e.g. a damped beam)
+        self.modal_reference = modal_reference  # False: tight runs are the reference
         self.params = dict(BASE)
         for k, v in params.items():
             if v is None:
@@ -377,19 +377,20 @@ def cases():
                            "-beam_EI": 1e10, "-beam_mu": 1e5, "-beam_nodes": 21, "-beam_left": "clamped", "-beam_right": "clamped"}),
              checks=("wall", "energy_bound")),
         Case("mpi2", "default impact on 2 MPI ranks, x = 0.9 m", {"-impact_x": 0.9}, ranks=2),
-        # Rayleigh damping C = alpha M + beta K (references: tight runs, the modal solution being
-        # undamped). Light: zeta = 0.006 + 0.00016 at the fundamental. Heavy beta: the grid-scale
+        # Rayleigh damping C = alpha M + beta K (reference: the exact modal solution, its contact
+        # phases in the damped first-order modes). Light: zeta = 0.006 + 0.00016 at the
+        # fundamental. Heavy beta: the grid-scale
         # modes are overdamped (beta omega_max / 2 = 2.3), their fast eigenvalue ~ -beta omega_max^2
         # sets the explicit limit (RK4: 1.34e-5 s, 1/4.5 of the undamped 6.1e-5 s): explicit types
         # are step-limited, implicit ones are not; above the damped limit a fixed RK step is refused.
         Case("damped", "Rayleigh damping alpha = 2 1/s, beta = 2e-6 s, x = 0.9 m",
-             {"-beam_damping_mass": 2.0, "-beam_damping_stiffness": 2e-6, "-impact_x": 0.9}, modal_reference=False,
+             {"-beam_damping_mass": 2.0, "-beam_damping_stiffness": 2e-6, "-impact_x": 0.9},
              why="light damping: every integrator right, no diagnostic"),
         Case("damped-beta", "heavy stiffness damping beta = 1e-4 s (grid modes overdamped), x = 0.9 m",
-             {"-beam_damping_stiffness": 1e-4, "-impact_x": 0.9}, modal_reference=False,
+             {"-beam_damping_stiffness": 1e-4, "-impact_x": 0.9},
              why="explicit RK step-limited by beta omega_max^2: its default step follows the damped limit (RK4 1.34e-5 s instead of 6.1e-5 s)"),
         Case("damped-beta-above", "beta = 1e-4 s, every type at 1.02 x RK4's damped limit",
-             {"-beam_damping_stiffness": 1e-4, "-impact_x": 0.9}, modal_reference=False,
+             {"-beam_damping_stiffness": 1e-4, "-impact_x": 0.9},
              per_int={"rk4": "-ts_dt {1.02*dtmax_rk4}", "rk5dp": "-ts_adapt_type none -ts_dt {1.02*dtmax_rk5dp}", "*": "-ts_dt {1.02*dtmax_rk4}"},
              accept={"rk4": ["stability"], "rk5dp": ["stability"]},
              why="fixed-step RK refused naming the damped dt_max; implicit types run at that step"),

@@ -247,16 +247,16 @@ TEST(ModalPhaseDamped, BeamModeDecaysWithItsRayleighRatio)
   EXPECT_NEAR(0.0, qdt[Sff.n - 1], 1e-15);
 }
 
-// In contact the ball and the spring carry no damping: no closed form, so the reference
-// refuses a damped beam and names the options.
-TEST(ModalReference, RefusesADampedBeam)
+// A damped beam in contact: the damped first-order modes (solvers/modal_damped.hpp) carry the
+// reference; tests/test_modal_damped.cpp checks it against TS runs.
+TEST(ModalReference, AcceptsADampedBeam)
 {
   BeamParams beam   = AluminiumBeam(1.1, 41);
   beam.damping_mass = 1.0;
   ImpactParams ip;
   ip.x = 0.9;
   ImpactResult r;
-  ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, NULL), 0);
-  EXPECT_EQ(PETSC_ERR_SUP, ModalReferenceRun(Scenario{beam, Superball(), ip, MonitorRequest()}, &r));
-  ASSERT_EQ(PetscPopErrorHandler(), 0);
+  EXPECT_EQ(0, ModalReferenceRun(Scenario{beam, Superball(), ip, MonitorRequest()}, &r));
+  EXPECT_GT(r.damping_fraction, 0.0);
+  EXPECT_LT(std::abs(r.energy_error), 1e-10);
 }

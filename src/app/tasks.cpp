@@ -37,7 +37,7 @@ PetscErrorCode ImpactReferenceFromOptions(MPI_Comm comm, PetscBool *modal)
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
-  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
+  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring, Rayleigh damping allowed; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
   PetscOptionsEnd();
   *modal = reference == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(0);

@@ -5,6 +5,7 @@
 
 #include "run/scenario.hpp"
 #include "solvers/modal_basis.hpp"
+#include "solvers/modal_damped.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,10 +42,11 @@ PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, con
 
 // The maximum compressions of a contact phase: dc/dt falling through 0 before the separation
 // at s_sep, each followed by a skip to where dc/dt rises again (a local minimum).
-void ModalMaxCompressions(const ModalRun &run, const ModalPhase &ph, PetscReal s_sep, ImpactResult *res)
+template <class Phase>
+void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep, ImpactResult *res)
 {
-  PetscReal  s = 0, s_max;
-  ModalPhase rate = ph;
+  PetscReal s = 0, s_max;
+  Phase     rate = ph;
   while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, run.s_min, &s_max)) {
     s += s_max;
     const PetscReal c = ph.Derivative(s, 0);
@@ -63,7 +65,8 @@ void ModalMaxCompressions(const ModalRun &run, const ModalPhase &ph, PetscReal s
 }
 
 // A contact phase from run.t to the separation (c falling through 0).
-PetscErrorCode ModalContactPhase(ModalRun &run, const ModalPhase &ph, ImpactResult *res)
+template <class Phase>
+PetscErrorCode ModalContactPhase(ModalRun &run, const Phase &ph, ImpactResult *res)
 {
   PetscReal s_sep;
 
@@ -98,8 +101,9 @@ PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_s
   PetscFunctionReturn(0);
 }
 
-// The outcome from the events and the final state: contact times, force, ACOR, energies.
-void ModalOutcome(const ModalRun &run, PetscReal E0, ImpactResult *res)
+// The outcome from the events and the final state: contact times, force, ACOR, energies (D:
+// dissipated by the beam's damping).
+void ModalOutcome(const ModalRun &run, PetscReal E0, PetscReal D, ImpactResult *res)
 {
   const ModalSystem &S    = *run.S;
   const BallParams  &ball = *run.ball;
@@ -118,7 +122,11 @@ void ModalOutcome(const ModalRun &run, PetscReal E0, ImpactResult *res)
   res->ball_final_velocity = run.qd[S.n - 1];
   res->acor                = -run.qd[S.n - 1] / ball.speed;
   res->acor_corrected      = res->acor * ball.loss_factor;
-  res->energy_error        = (ModalEnergy(S, run.q, run.qd, false) - E0) / E0;
+  res->energy_error        = (ModalEnergy(S, run.q, run.qd, false) + D - E0) / E0;
+  if (S.sys->Damped()) {
+    res->beam_dissipated_end = D;
+    res->damping_fraction    = D / E0;
+  }
   std::vector<PetscReal> shape(S.sys->ndof, 0.0);
   PetscReal              T = 0;
   for (PetscInt d = 0; d + 1 < S.n; ++d) {
@@ -149,7 +157,15 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   res->ts_type       = "modal";
   res->formulation   = "exact";
   const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ball.k);
-  PetscCall(ModalBasisBuild(S, true, &contact_basis));
+  // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
+  // which also give the dissipated energy of every phase exactly.
+  const bool       damped = sys.Damped();
+  ModalDampedBasis damped_contact, damped_free;
+  PetscReal        D = 0;
+  if (damped) {
+    PetscCall(ModalDampedBasisBuild(S, true, &damped_contact));
+    PetscCall(ModalDampedBasisBuild(S, false, &damped_free));
+  } else PetscCall(ModalBasisBuild(S, true, &contact_basis));
   PetscCall(ModalBasisBuild(S, false, &free_basis));
 
   const ImpactTimes times = ImpactTimesOf(sc.beam, ball, ip);
@@ -170,19 +186,28 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   const PetscReal E0 = sc.swing.Swings() ? ModalEnergy(S, run.q, run.qd, false) : 0.5 * ball.mass * ball.speed * ball.speed;
   res->contacts   = 1;
   res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
-  for (;;) {
+  for (bool more = true; more;) {
+    const PetscReal  t0 = run.t;
+    ModalDampedPhase dph;
+    if (damped) {
+      dph.S = &S;
+      dph.B = touching ? &damped_contact : &damped_free;
+      dph.From(run.q, run.qd);
+    }
     ph.S = &S;
     ph.B = touching ? &contact_basis : &free_basis;
-    ph.From(run.q, run.qd);
+    if (!(damped && touching)) ph.From(run.q, run.qd);
     if (touching) {
-      PetscCall(ModalContactPhase(run, ph, res));
+      if (damped) PetscCall(ModalContactPhase(run, dph, res));
+      else PetscCall(ModalContactPhase(run, ph, res));
       touching = false;
     } else {
       PetscCall(ModalFreePhase(run, ph, std::min(run.t_cap, run.t + times.window), ip.max_contacts, res, &touching));
-      if (!touching) break;
+      more = touching;
     }
+    if (damped) D += dph.Dissipated(run.t - t0);
   }
-  ModalOutcome(run, E0, res);
+  ModalOutcome(run, E0, D, res);
   ImpactBatOutcome(sc, V_x, res);
   res->wall_time = MPI_Wtime() - wall0;
   PetscFunctionReturn(0);

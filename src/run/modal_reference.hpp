@@ -17,10 +17,12 @@ struct Scenario;
 // peak_force, max_compression, contacts, events, ball_final_velocity, final_time,
 // energy_error, beam energies at the end) for the linear law; the same window and cap
 // rules as ImpactRun, so both see the same contacts. ts_type is "modal".
-// PETSC_ERR_SUP for the hysteretic law, and for a damped beam (-beam_damping_mass,
+// PETSC_ERR_SUP for the hysteretic law. A damped beam (-beam_damping_mass,
 // -beam_damping_stiffness): the separated phases are damped exactly, mode by mode
-// (solvers/modal_basis.hpp), but in contact the ball and the spring carry no damping, the
-// damping is not proportional and the coupled modes have no real closed form.
+// (solvers/modal_basis.hpp); in contact, where the ball and the spring carry no damping and
+// it is not proportional, the damped first-order modes of solvers/modal_damped.hpp (refused,
+// PETSC_ERR_NOT_CONVERGED, if their eigenvectors are too ill-conditioned); the dissipated
+// energy is beam_dissipated_end and is in energy_error.
 PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
 
 // The same on a system already built (any number of fields per node); the scenario gives the
