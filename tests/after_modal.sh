@@ -8,7 +8,7 @@
 #   * the racket scenes: free, pinned handle, clamped 62-72 cm (sweeps), snapshots, energy
 #     (segment peak);
 #   * the profile bat R161 with the baseball at 40 m/s at 0.7 m, Euler-Bernoulli and Timoshenko;
-#   * a damped beam (Rayleigh), and 2 ranks.
+#   * a damped beam (Rayleigh), and 2 ranks; the printed fallback where modal is not possible.
 # The ACOR is the ball's speed after its last contact: when there is only one, it is the same
 # number on both paths (the free flight does not change it); after a re-contact the two differ
 # by the integrator's error over the free flight (set per case below).
@@ -85,6 +85,13 @@ st=$("$python" -c "import h5py,sys; print(int(sum(h5py.File(sys.argv[1])['result
 read -r s_time s_modal <<<"$st"
 if [[ $s_modal -lt $((s_time / 5)) ]]; then pass "clamped sweep: $s_modal steps with modal against $s_time with time"
 else fail "clamped sweep: $s_modal steps with modal against $s_time with time (expected < 1/5)"; fi
+
+# Where the beam does not allow it (beyond the dense decomposition's size) the default falls
+# back to time integration and says why (given explicitly: an error, tests/cli_bad_input.cmake).
+out=$("$exe" -beam_nodes 3100 -ts_type cn -ts_dt 1e-5 -impact_max_time 2e-5 -output none 2>&1)
+if grep -q "note: the free vibration after separation is integrated in time (-impact_after time): the beam has 3100 free dofs" <<<"$out"; then
+  pass "fallback to time integration is printed with its reason"
+else fail "fallback to time integration: no reason printed: $out"; fi
 
 [[ $fails -eq 0 ]] && echo "all after-separation checks passed" || echo "$fails check(s) failed"
 exit $((fails > 0))
