@@ -7,7 +7,8 @@
 // by rollback and re-stepping onto the root (so the integrator's own state is
 // on the event, not an interpolant), after which the integrator restarts. The
 // run continues for a post-contact window after each separation so that a
-// double impact is caught, and the ACOR is the ball's final speed.
+// double impact is caught (by default not stepped: the beam's exact free vibration in its
+// modes, run/free_flight.hpp), and the ACOR is the ball's final speed.
 #pragma once
 
 #include "model/beam.hpp"

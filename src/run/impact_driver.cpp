@@ -105,6 +105,7 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
   if (!modes) PetscCall(BeamModesShared(sys, &modes));
   PetscCall(StepperGatherState(st, sys, &s0));
   const PetscReal t0 = st.Time();
+  if (series) PetscCall(rec.Record(t0)); // the separation itself, as a stepped run records it
   FreeFlightStart(modes, g, t0, s0, &ff);
   PetscReal pair[2] = {0, 0};
   if (FreeFlightFirstContact(ff, t_stop - t0, s_min, &root)) pair[0] = 1, pair[1] = root;
