@@ -45,6 +45,8 @@ set(cases
   "-ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 1e-3|-ts_dt 0.001 is above the stability limit dt_max"
   "-ts_type euler|-ts_type euler cannot roll back a step"
   "-ts_type ssp|-ts_type ssp cannot roll back a step"
+  "-impact_after sometimes|sometimes"
+  "-beam_nodes 3100 -ts_type cn -ts_dt 1e-5 -impact_after modal|-impact_after modal is not possible: the beam has 3100 free dofs"
   "-task juggle|juggle"
   "${HYST} -ball_cor 1.2|-ball_cor 1.2 is not allowed: the rigid-wall coefficient of restitution e must be in \\(0, 1."
   "${HYST} -ball_cor 0|-ball_cor 0\\.? is not allowed"

@@ -7,7 +7,8 @@
 // by rollback and re-stepping onto the root (so the integrator's own state is
 // on the event, not an interpolant), after which the integrator restarts. The
 // run continues for a post-contact window after each separation so that a
-// double impact is caught, and the ACOR is the ball's final speed.
+// double impact is caught (by default not stepped: the beam's exact free vibration in its
+// modes, run/free_flight.hpp), and the ACOR is the ball's final speed.
 #pragma once
 
 #include "model/beam.hpp"
@@ -21,8 +22,15 @@
 
 namespace beamimpact {
 
+// How the run follows the beam and the ball after a separation (-impact_after): integrated in
+// time by the stepper, or the exact free vibration in the beam's modes (run/free_flight.hpp).
+enum class ImpactAfter { Time = 0, Modal = 1 };
+const char *ImpactAfterName(ImpactAfter a);
+
 // -impact_* options.
 struct ImpactParams {
+  ImpactAfter after     = ImpactAfter::Modal; // modal wherever the beam allows it (else time, saying why)
+  PetscBool after_set   = PETSC_FALSE;        // -impact_after was given: modal where it cannot be is an error
   PetscReal x            = 0.55;  // m, impact point measured from the x = 0 end
   PetscReal window       = -1;    // s, time simulated after each separation (< 0: 2 fundamental periods)
   PetscReal max_time     = -1;    // s, cap on the simulated time (< 0: window + 100 contact times)

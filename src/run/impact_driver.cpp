@@ -6,7 +6,11 @@
 //   loop: step -> did the step cross an event? -> locate it (events.cpp) -> apply it
 //         (phase switch, stop time) -> restart the stepper if the force law changed
 //   until `window` after the last separation (or -impact_max_time).
+// After a separation, with -impact_after modal (the default where the beam allows it), the
+// free vibration is not stepped: run/free_flight.cpp finds the next contact, if any, in closed
+// form, and the stepper is put on the exact state there (and restarted) or at the window's end.
 #include "run/events.hpp"
+#include "run/free_flight.hpp"
 #include "run/impact.hpp"
 #include "run/monitors.hpp"
 #include "run/outcome.hpp"
@@ -81,6 +85,67 @@ PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario
   PetscFunctionReturn(0);
 }
 
+// Whether this run follows the free vibration in modes: -impact_after modal (the default)
+// where the beam allows it; with the default, a beam that does not is integrated in time and
+// the reason printed (once per process); asked for explicitly, it is an error.
+PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const BeamSystem &sys, bool *modal)
+{
+  static bool said = false;
+  std::string why;
+
+  PetscFunctionBeginUser;
+  *modal = ip.after == ImpactAfter::Modal;
+  if (!*modal || BeamModesAvailable(sys, &why)) PetscFunctionReturn(0);
+  PetscCheck(!ip.after_set, comm, PETSC_ERR_SUP, "-impact_after modal is not possible: %s; use -impact_after time", why.c_str());
+  if (!said) PetscCall(PetscPrintf(comm, "note: the free vibration after separation is integrated in time (-impact_after time): %s\n", why.c_str()));
+  said   = true;
+  *modal = false;
+  PetscFunctionReturn(0);
+}
+
+// The free flight after a separation at the stepper's time, in closed form, up to t_stop (the
+// window's end) or the next contact (*again): the stepper is left on the exact state there.
+// With series monitors the state is recorded from the modes every dt_sample and at the
+// snapshot times (so the outputs cover the same times as a stepped run).
+PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const ContactCoupling &g, ImpactRecorder &rec, bool series, PetscReal dt_sample, PetscReal t_stop, PetscReal s_min,
+                                 std::shared_ptr<const BeamModes> &modes, bool *again)
+{
+  FullState  s0, s;
+  FreeFlight ff;
+  PetscReal  root = 0, found = 0;
+  *again = false;
+
+  PetscFunctionBeginUser;
+  if (!modes) PetscCall(BeamModesShared(sys, &modes));
+  PetscCall(StepperGatherState(st, sys, &s0));
+  const PetscReal t0 = st.Time();
+  if (series) PetscCall(rec.Record(t0)); // the separation itself, as a stepped run records it
+  FreeFlightStart(modes, g, t0, s0, &ff);
+  PetscReal pair[2] = {0, 0};
+  if (FreeFlightFirstContact(ff, t_stop - t0, s_min, &root)) pair[0] = 1, pair[1] = root;
+  PetscCallMPI(MPI_Bcast(pair, 2, MPIU_REAL, 0, st.Comm())); // one decision on every rank
+  found                 = pair[0];
+  root                  = pair[1];
+  *again                = found != 0;
+  const PetscReal t_end = *again ? t0 + root : t_stop;
+  if (series || rec.NextSnapshot() < t_end) {
+    const PetscReal dt = series && dt_sample > 0 ? std::max(dt_sample, (t_end - t0) / 4000) : PETSC_INFINITY;
+    for (PetscInt k = 1;; ++k) {
+      const PetscReal ts = t0 + k * dt, tn = std::min(ts, rec.NextSnapshot());
+      if (!(tn < t_end * (1 - 1e-14))) break;
+      FreeFlightState(ff, tn - t0, &s);
+      PetscCall(st.SetState(tn, s));
+      if (series) PetscCall(rec.Record(tn));
+      PetscCall(rec.Snapshots(tn));
+      if (tn < ts) --k; // a snapshot first: the sample is still due
+    }
+  }
+  FreeFlightState(ff, t_end - t0, &s);
+  PetscCall(st.SetState(t_end, s));
+  PetscCall(st.Restart());
+  PetscFunctionReturn(0);
+}
+
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
 // stepper reads.
 PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, PetscReal approach, ImpactResult *res)
@@ -112,6 +177,9 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   PetscCall(indicators(&g0));
   res->contacts = 1;
   res->events.push_back(ContactStartEvent(sc.ball, *contact, 0.0, 0.0, approach));
+  bool                             after_modal;
+  std::shared_ptr<const BeamModes> modes;
+  PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
   while (t < timeline.t_stop * (1 - 1e-14)) {
     const PetscReal target = std::min(timeline.t_stop, rec.NextSnapshot()); // land exactly on both
     PetscReal       dt;
@@ -125,6 +193,13 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
       const auto kind = static_cast<ContactEventKind>(ev);
       PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol, indicators, &res->event_steps));
       PetscCall(ApplyEvent(st, ctx, sc, times, kind, m0.total(), contact, &timeline, res));
+      if (kind == ContactEventKind::Separation && after_modal) {
+        PetscReal dt_sample;
+        bool      again = false;
+        PetscCall(st.NextStep(&dt_sample));
+        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, rec, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, modes, &again));
+        if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, m0.total(), contact, &timeline, res));
+      }
       PetscCall(indicators(&g1));
     }
     t  = st.Time();

@@ -151,6 +151,20 @@ public:
     return 0;
   }
   PetscReal Dissipated() const override { return dissipated; }
+  PetscErrorCode SetState(PetscReal t_new, const FullState &s) override
+  {
+    for (PetscInt i = 0; i < n; ++i) {
+      cur->y[i + bw] = s.y[i];
+      cur->v[i]      = s.v[i];
+    }
+    if (damped) cur->vh = cur->v; // the exact velocity stands for the half-step one
+    cur->yb = s.ball_y;
+    cur->vb = s.ball_v;
+    cur->c  = CompressionOf(*cur);
+    t = t_prev = t_new;
+    if (damped) dissipated = dissipated_prev = s.dissipated;
+    return 0;
+  }
   PetscErrorCode NextStep(PetscReal *tau) override
   {
     *tau = dt;

@@ -29,6 +29,21 @@ ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, Pe
   return S;
 }
 
+ModalSystem ModalSystemBeamOnly(const BeamSystem &sys)
+{
+  ModalSystem S;
+  S.sys  = &sys;
+  S.ball = false;
+  for (PetscInt d = 0; d < sys.ndof; ++d) {
+    if (sys.held[d]) continue;
+    S.dof.push_back(d);
+    S.mass.push_back(sys.mass[d]);
+    S.g.push_back(0.0);
+  }
+  S.n = (PetscInt)S.dof.size();
+  return S;
+}
+
 
 namespace {
 
@@ -42,16 +57,16 @@ struct BandEntry {
 // the dofs it touches (its two nodes' deflections, fields apart).
 std::vector<int> BandOrder(const ModalSystem &S)
 {
-  const PetscInt n     = S.n;
+  const PetscInt n     = S.n, nb = S.BeamDofs();
   PetscInt       after = -1;
-  for (PetscInt d = 0; d < n - 1; ++d)
+  for (PetscInt d = 0; d < nb; ++d)
     if (S.g[d] != 0.0) after = d;
   std::vector<int> pos(n); // free dof -> band position
   int              p = 0;
-  if (after < 0) pos[n - 1] = p++;
-  for (PetscInt d = 0; d < n - 1; ++d) {
+  if (S.ball && after < 0) pos[n - 1] = p++;
+  for (PetscInt d = 0; d < nb; ++d) {
     pos[d] = p++;
-    if (d == after) pos[n - 1] = p++;
+    if (S.ball && d == after) pos[n - 1] = p++;
   }
   return pos;
 }
@@ -64,8 +79,8 @@ std::vector<BandEntry> BandEntries(const ModalSystem &S, bool contact)
   std::vector<BandEntry> entries;
   std::vector<PetscInt>  cols(2 * S.sys->bw + 1);
   std::vector<PetscReal> vals(2 * S.sys->bw + 1);
-  for (PetscInt d = 0; d < n - 1; ++d) free_of_dof[S.dof[d]] = d;
-  for (PetscInt d = 0; d < n - 1; ++d) {
+  for (PetscInt d = 0; d < S.BeamDofs(); ++d) free_of_dof[S.dof[d]] = d;
+  for (PetscInt d = 0; d < S.BeamDofs(); ++d) {
     const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
     for (PetscInt q = 0; q < nc; ++q) {
       const PetscInt c = free_of_dof[cols[q]];
@@ -116,7 +131,7 @@ PetscErrorCode InverseIterate(const std::vector<BandEntry> &entries, const std::
 int BandHalfWidth(const ModalSystem &S)
 {
   PetscInt first = -1, last = -1;
-  for (PetscInt d = 0; d < S.n - 1; ++d)
+  for (PetscInt d = 0; d < S.BeamDofs(); ++d)
     if (S.g[d] != 0.0) {
       if (first < 0) first = d;
       last = d;
@@ -170,8 +185,8 @@ static std::vector<PetscReal> ModalMatrix(const ModalSystem &S, bool contact)
   std::vector<PetscReal> A(n * n, 0.0);
   std::vector<PetscInt>  cols(2 * S.sys->bw + 1), free_of_dof(S.sys->ndof, -1);
   std::vector<PetscReal> vals(2 * S.sys->bw + 1);
-  for (PetscInt d = 0; d < n - 1; ++d) free_of_dof[S.dof[d]] = d;
-  for (PetscInt d = 0; d < n - 1; ++d) {
+  for (PetscInt d = 0; d < S.BeamDofs(); ++d) free_of_dof[S.dof[d]] = d;
+  for (PetscInt d = 0; d < S.BeamDofs(); ++d) {
     const PetscInt nc = BeamSystemStiffnessRow(*S.sys, S.dof[d], cols.data(), vals.data());
     for (PetscInt q = 0; q < nc; ++q) A[d + free_of_dof[cols[q]] * n] += vals[q];
   }
@@ -227,10 +242,10 @@ static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
     PetscReal norm = 0, c = 0, beam_norm = 0;
     for (PetscInt d = 0; d < n; ++d) {
       const PetscReal q = phi[d] / std::sqrt(S.mass[d]);
-      if (d < n - 1) shape[S.dof[d]] = q;
+      if (d < S.BeamDofs()) shape[S.dof[d]] = q;
       norm += S.mass[d] * q * q;
       c += S.g[d] * q;
-      if (d < n - 1) beam_norm += S.mass[d] * q * q;
+      if (d < S.BeamDofs()) beam_norm += S.mass[d] * q * q;
     }
     PetscReal twoU = 2 * BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof);
     B->rate[k]     = sys.Damped() ? 0.5 * (sys.damping_mass * beam_norm + sys.damping_stiffness * twoU) / norm : 0.0;
@@ -265,7 +280,7 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   B->gamma.assign(n, 0.0);
   B->rate.assign(n, 0.0);
   PetscCall(RefineBasis(S, contact, w, B));
-  if (!contact && sys.Damped()) IsolateBall(S, w, B);
+  if (!contact && sys.Damped() && S.ball) IsolateBall(S, w, B);
   ModalQuotients(S, contact, B);
   PetscFunctionReturn(0);
 }

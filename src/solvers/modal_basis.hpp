@@ -29,8 +29,13 @@ struct ModalSystem {
   std::vector<PetscReal> g;    // dc/dq per free dof
   PetscInt               n = 0;
   PetscReal              k = 0; // N/m, the contact spring
+  bool                   ball = true; // false: the beam alone (ModalSystemBeamOnly), no ball dof
+  PetscInt BeamDofs() const { return ball ? n - 1 : n; }
 };
 ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, PetscReal ball_mass, PetscReal k);
+// The beam alone (free beam dofs, g = 0): its separated basis (ModalBasisBuild, contact false)
+// is the beam's modes, K phi = w^2 M phi, shared by every ball and impact point (solvers/beam_modes.hpp).
+ModalSystem ModalSystemBeamOnly(const BeamSystem &sys);
 
 // One phase's eigen-decomposition of M^{-1/2} K_p M^{-1/2}.
 struct ModalBasis {

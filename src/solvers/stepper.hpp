@@ -22,6 +22,13 @@ struct StateView {
   PetscReal        ball_y = 0, ball_v = 0;     // m, m/s
 };
 
+// The whole state, the same on every rank: beam dof d (node-major, held dofs 0) at y[d], v[d];
+// the ball; and the energy dissipated by the beam's damping since t = 0 (J).
+struct FullState {
+  std::vector<PetscReal> y, v;          // m (or rad), m/s (or rad/s)
+  PetscReal              ball_y = 0, ball_v = 0, dissipated = 0;
+};
+
 // What the stepper itself counted.
 struct StepperCounts {
   PetscInt rejected_steps = 0; // rejected by the error controller
@@ -59,6 +66,10 @@ public:
   // Energy (J) dissipated by the beam's damping C since t = 0, the integral of v^T C v over the
   // steps taken (undone by RollBack); the same on every rank. 0 for an undamped beam.
   virtual PetscReal Dissipated() const { return 0; }
+  // Replaces the current state by s at time t (the exact free vibration after a separation,
+  // run/free_flight.hpp). Each rank takes its owned part. The caller calls Restart() before
+  // stepping on from it; reading it (views, measures) needs nothing more. Not undone by RollBack.
+  virtual PetscErrorCode SetState(PetscReal t, const FullState &s) = 0;
 };
 
 } // namespace beamimpact

@@ -134,6 +134,7 @@ public:
     PetscFunctionReturn(0);
   }
   PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) override;
+  PetscErrorCode SetState(PetscReal t, const FullState &s) override;
   PetscErrorCode ViewBegin(StateView *v) override;
   PetscErrorCode ViewEnd(StateView *v) override;
   PetscErrorCode GatherDisplacement(std::vector<PetscReal> *y) override;
@@ -184,6 +185,38 @@ PetscErrorCode TSStepper::Compression(PetscReal *c, PetscReal *cdot)
   if (L.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, vals, 2, MPIU_REAL, MPIU_SUM, L.comm));
   *c    = vals[0];
   *cdot = vals[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::SetState(PetscReal t, const FullState &s)
+{
+  const TSLayout &L  = P.L;
+  const PetscInt  nf = L.fields;
+  Vec             X, Vel;
+  TSStateWrite    w;
+
+  PetscFunctionBeginUser;
+  PetscCall(Solution(&X, &Vel));
+  PetscCall(TSStateWriteBegin(L, X, &w));
+  for (PetscInt node = L.xs; node < L.xe; ++node)
+    for (PetscInt f = 0; f < nf; ++f) {
+      w.beam[node * L.dof + f] = s.y[node * nf + f];
+      if (!Vel) w.beam[node * L.dof + nf + f] = s.v[node * nf + f];
+    }
+  if (w.ball) {
+    w.ball[0] = s.ball_y;
+    if (!Vel) w.ball[1] = s.ball_v;
+  }
+  PetscCall(TSStateWriteEnd(L, X, &w));
+  if (Vel) {
+    PetscCall(TSStateWriteBegin(L, Vel, &w));
+    for (PetscInt node = L.xs; node < L.xe; ++node)
+      for (PetscInt f = 0; f < nf; ++f) w.beam[node * L.dof + f] = s.v[node * nf + f];
+    if (w.ball) w.ball[0] = s.ball_v;
+    PetscCall(TSStateWriteEnd(L, Vel, &w));
+  }
+  PetscCall(TSSetTime(ts, t));
+  if (damped) dissipated = dissipated_prev = s.dissipated;
   PetscFunctionReturn(0);
 }
 
