@@ -203,6 +203,18 @@ if run r161-acor 1 options/scenes/r161-acor.opts -sweep_x 0.7 -sweep_quiet; then
   check "r161-acor: e_A $(col "$f" /results/acor) at 70 cm (Nathan's wood bat: about 0.2), one contact" 'a > 0.15 && a < 0.25 && n == 1' a="$(col "$f" /results/acor)" n="$(col "$f" /results/contacts)"
 fi
 
+if run r161-swing 1 options/scenes/r161-swing.opts -sweep_x 0.73 -sweep_quiet; then
+  f="$dir/r161-swing.h5"
+  check "r161-swing: BBS $(col "$f" /results/bbs) m/s at 73 cm (Nathan's game case; the sweep's peak: 43.2), q $(col "$f" /results/collision_efficiency)" \
+    'b > 42 && b < 44.5 && q > 0.1 && q < 0.2' b="$(col "$f" /results/bbs)" q="$(col "$f" /results/collision_efficiency)"
+fi
+if run bbcor 1 options/scenes/bbcor.opts -sweep_x 0.73 -sweep_quiet; then
+  f="$dir/bbcor.h5"
+  check "bbcor: R161 pivoted at 15 cm, BBCOR $(col "$f" /results/bbcor) at 73 cm (0.45; = e_A (1 + r) + r with r $(col "$f" /results/recoil_factor))" \
+    'b > 0.43 && b < 0.47 && d < 1e-12 && d > -1e-12' b="$(col "$f" /results/bbcor)" \
+    d="$(paste <(col "$f" /results/bbcor) <(col "$f" /results/collision_efficiency) <(col "$f" /results/recoil_factor) | awk '{ print $1 - ($2 * (1 + $3) + $3) }')"
+fi
+
 # every scene file was run above
 for f in options/scenes/*.opts; do
   grep -q -- "$f" "$self" || fail "$f is not exercised by tests/scenes.sh"
