@@ -215,6 +215,12 @@ if run bbcor 1 options/scenes/bbcor.opts -sweep_x 0.73 -sweep_quiet; then
     d="$(paste <(col "$f" /results/bbcor) <(col "$f" /results/collision_efficiency) <(col "$f" /results/recoil_factor) | awk '{ print $1 - ($2 * (1 + $3) + $3) }')"
 fi
 
+if run r161-bbs-map 1 options/scenes/r161-bbs-map.opts -sweep "impact_x=0.72;0.74,ball_speed=20;50" -sweep_quiet; then
+  f="$dir/r161-bbs-map.h5"
+  check "r161-bbs-map: 2 x 2 points, BBS $(col "$f" /results/bbs | paste -sd,) m/s rising with the ball speed at each point" \
+    'split(b, a, ",") == 4 && a[2] > a[1] && a[4] > a[3] && a[1] > 38 && a[4] < 47' b="$(col "$f" /results/bbs | paste -sd,)"
+fi
+
 # every scene file was run above
 for f in options/scenes/*.opts; do
   grep -q -- "$f" "$self" || fail "$f is not exercised by tests/scenes.sh"
