@@ -20,7 +20,10 @@ ModalComplex Phi1(ModalComplex mu, PetscReal s)
 
 } // namespace
 
-PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDampedBasis *B)
+namespace {
+
+// The undamped coupled modes, mass-scaled (U, U^T M) and split into flexible and rigid.
+PetscErrorCode UndampedModes(const ModalSystem &S, bool contact, ModalDampedBasis *B)
 {
   const BeamSystem &sys = *S.sys;
   const PetscInt    n   = S.n;
@@ -33,7 +36,6 @@ PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDa
   undamped.damping_stiffness = 0;
   S0.sys                     = &undamped;
   PetscCall(ModalBasisBuild(S0, contact, &MB));
-
   *B       = ModalDampedBasis();
   B->n     = n;
   B->U.assign(n * n, 0.0);
@@ -56,29 +58,40 @@ PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDa
     } else grigid = std::max(grigid, std::abs(MB.gamma[k]));
   }
   B->rigid_gamma = gmax > 0 ? grigid / gmax : 0;
+  PetscFunctionReturn(0);
+}
 
-  // Chat = U^T C U (the beam dofs; the ball carries no damping), symmetrized.
+// Chat = U^T C U (the beam dofs; the ball carries no damping), symmetrized.
+void ModalDampingMatrix(const ModalSystem &S, ModalDampedBasis *B)
+{
+  const BeamSystem      &sys = *S.sys;
+  const PetscInt         n   = S.n;
+  std::vector<PetscReal> shape(sys.ndof), f(sys.ndof);
   B->Chat.assign(n * n, 0.0);
-  {
-    std::vector<PetscReal> shape(sys.ndof), f(sys.ndof);
-    for (PetscInt k = 0; k < n && sys.Damped(); ++k) {
-      std::fill(shape.begin(), shape.end(), 0.0);
-      for (PetscInt d = 0; d + 1 < n; ++d) shape[S.dof[d]] = B->U[d + k * n];
-      BeamSystemDampingApply(sys, shape.data(), sys.fields, 0, sys.ndof, f.data(), sys.fields);
-      for (PetscInt j = 0; j < n; ++j) {
-        PetscReal v = 0;
-        for (PetscInt d = 0; d + 1 < n; ++d) v += B->U[d + j * n] * f[S.dof[d]];
-        B->Chat[j + k * n] = v;
-      }
+  for (PetscInt k = 0; k < n && sys.Damped(); ++k) {
+    std::fill(shape.begin(), shape.end(), 0.0);
+    for (PetscInt d = 0; d + 1 < n; ++d) shape[S.dof[d]] = B->U[d + k * n];
+    BeamSystemDampingApply(sys, shape.data(), sys.fields, 0, sys.ndof, f.data(), sys.fields);
+    for (PetscInt j = 0; j < n; ++j) {
+      PetscReal v = 0;
+      for (PetscInt d = 0; d + 1 < n; ++d) v += B->U[d + j * n] * f[S.dof[d]];
+      B->Chat[j + k * n] = v;
     }
-    for (PetscInt k = 0; k < n; ++k)
-      for (PetscInt j = 0; j < k; ++j) B->Chat[j + k * n] = B->Chat[k + j * n] = 0.5 * (B->Chat[j + k * n] + B->Chat[k + j * n]);
   }
+  for (PetscInt k = 0; k < n; ++k)
+    for (PetscInt j = 0; j < k; ++j) B->Chat[j + k * n] = B->Chat[k + j * n] = 0.5 * (B->Chat[j + k * n] + B->Chat[k + j * n]);
+}
 
-  // The state matrix on y = [Omega_f z_f ; z'].
-  const PetscInt nf = (PetscInt)B->flex.size(), m = nf + n;
-  B->m              = m;
-  std::vector<PetscReal> A((size_t)m * m, 0.0), wr(m), wi(m), VR((size_t)m * m);
+// The state matrix on y = [Omega_f z_f ; z'] and its eigen-decomposition (LAPACK geev): one
+// term per real eigenvalue or conjugate pair (consecutive, Im > 0 first). VR: the real
+// eigenvector matrix.
+PetscErrorCode StateEigen(ModalDampedBasis *B, std::vector<PetscReal> *VR)
+{
+  const PetscInt n = B->n, nf = (PetscInt)B->flex.size(), m = nf + n;
+  PetscFunctionBeginUser;
+  B->m = m;
+  std::vector<PetscReal> A((size_t)m * m, 0.0), wr(m), wi(m);
+  VR->assign((size_t)m * m, 0.0);
   for (PetscInt i = 0; i < nf; ++i) A[i + (nf + B->flex[i]) * m] = B->omega[B->flex[i]];
   for (PetscInt k = 0; k < n; ++k) {
     for (PetscInt l = 0; l < n; ++l) A[nf + k + (nf + l) * m] = -B->Chat[k + l * n];
@@ -89,7 +102,7 @@ PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDa
     PetscCall(PetscBLASIntCast(m, &bm));
     PetscCall(PetscBLASIntCast(std::max<PetscInt>(1, 8 * m), &lwork));
     std::vector<PetscReal> work(lwork), vl(1);
-    PetscCallBLAS("LAPACKgeev", LAPACKgeev_("N", "V", &bm, A.data(), &bm, wr.data(), wi.data(), vl.data(), &one, VR.data(), &bm, work.data(), &lwork, &info));
+    PetscCallBLAS("LAPACKgeev", LAPACKgeev_("N", "V", &bm, A.data(), &bm, wr.data(), wi.data(), vl.data(), &one, VR->data(), &bm, work.data(), &lwork, &info));
     PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK geev failed (info %d)", (int)info);
   }
   PetscReal lmax = 0;
@@ -100,17 +113,20 @@ PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDa
     PetscCheck(wr[j] <= 1e-9 * lmax, PETSC_COMM_SELF, PETSC_ERR_PLIB, "damped modal basis: eigenvalue %g%+gi with a positive real part", (double)wr[j], (double)wi[j]);
     wr[j] = std::min<PetscReal>(wr[j], 0.0);
   }
-
-  // One term per real eigenvalue or conjugate pair (LAPACK: consecutive, Im > 0 first).
   for (PetscInt j = 0; j < m; ++j) {
     B->lambda.push_back(ModalComplex(wr[j], wi[j]));
     B->col.push_back(j);
-    for (PetscInt i = 0; i < m; ++i) B->V.push_back(wi[j] != 0 ? ModalComplex(VR[i + j * m], VR[i + (j + 1) * m]) : ModalComplex(VR[i + j * m], 0));
+    for (PetscInt i = 0; i < m; ++i) B->V.push_back(wi[j] != 0 ? ModalComplex((*VR)[i + j * m], (*VR)[i + (j + 1) * m]) : ModalComplex((*VR)[i + j * m], 0));
     if (wi[j] != 0) ++j;
   }
-  const PetscInt r = (PetscInt)B->lambda.size();
+  PetscFunctionReturn(0);
+}
 
-  // The inverse of the real eigenvector matrix and its condition number.
+// The inverse of the real eigenvector matrix and its condition number (refused above the limit).
+PetscErrorCode StateInverse(const BeamSystem &sys, bool contact, const std::vector<PetscReal> &VR, ModalDampedBasis *B)
+{
+  const PetscInt m = B->m;
+  PetscFunctionBeginUser;
   B->Vinv = VR;
   {
     PetscBLASInt              bm, info, lwork;
@@ -137,29 +153,46 @@ PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDa
              "-beam_damping_mass %g, -beam_damping_stiffness %g: the eigenvector matrix of the damped %s system has condition number %.3g (> %.0e; a mode close to critical "
              "damping): the exact modal reference would not be trustworthy (use a tight TS run as the reference)",
              (double)sys.damping_mass, (double)sys.damping_stiffness, contact ? "in-contact" : "separated", (double)B->cond, (double)kModalDampedMaxCondition);
+  PetscFunctionReturn(0);
+}
 
-  // Each term's share of c, and the dissipation forms of the velocity parts.
+// Each term's share of c, and the dissipation forms of the velocity parts.
+void TermForms(const BeamSystem &sys, ModalDampedBasis *B)
+{
+  const PetscInt n = B->n, m = B->m, nf = (PetscInt)B->flex.size(), r = (PetscInt)B->lambda.size();
   B->Gamma.assign(r, 0.0);
   for (PetscInt j = 0; j < r; ++j)
     for (PetscInt i = 0; i < nf; ++i) B->Gamma[j] += B->gamma[B->flex[i]] / B->omega[B->flex[i]] * B->V[i + j * m];
   B->G1.assign(r * r, 0.0);
   B->G2.assign(r * r, 0.0);
-  if (sys.Damped()) {
-    std::vector<ModalComplex> Cw((size_t)n * r, 0.0);
-    for (PetscInt k = 0; k < r; ++k)
-      for (PetscInt i = 0; i < n; ++i)
-        for (PetscInt l = 0; l < n; ++l) Cw[i + k * n] += B->Chat[i + l * n] * B->V[nf + l + k * m];
-    for (PetscInt k = 0; k < r; ++k)
-      for (PetscInt j = 0; j < r; ++j) {
-        ModalComplex g1 = 0, g2 = 0;
-        for (PetscInt i = 0; i < n; ++i) {
-          g1 += B->V[nf + i + j * m] * Cw[i + k * n];
-          g2 += B->V[nf + i + j * m] * std::conj(Cw[i + k * n]);
-        }
-        B->G1[j + k * r] = g1;
-        B->G2[j + k * r] = g2;
+  if (!sys.Damped()) return;
+  std::vector<ModalComplex> Cw((size_t)n * r, 0.0);
+  for (PetscInt k = 0; k < r; ++k)
+    for (PetscInt i = 0; i < n; ++i)
+      for (PetscInt l = 0; l < n; ++l) Cw[i + k * n] += B->Chat[i + l * n] * B->V[nf + l + k * m];
+  for (PetscInt k = 0; k < r; ++k)
+    for (PetscInt j = 0; j < r; ++j) {
+      ModalComplex g1 = 0, g2 = 0;
+      for (PetscInt i = 0; i < n; ++i) {
+        g1 += B->V[nf + i + j * m] * Cw[i + k * n];
+        g2 += B->V[nf + i + j * m] * std::conj(Cw[i + k * n]);
       }
-  }
+      B->G1[j + k * r] = g1;
+      B->G2[j + k * r] = g2;
+    }
+}
+
+} // namespace
+
+PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDampedBasis *B)
+{
+  std::vector<PetscReal> VR;
+  PetscFunctionBeginUser;
+  PetscCall(UndampedModes(S, contact, B));
+  ModalDampingMatrix(S, B);
+  PetscCall(StateEigen(B, &VR));
+  PetscCall(StateInverse(*S.sys, contact, VR, B));
+  TermForms(*S.sys, B);
   PetscFunctionReturn(0);
 }
 
