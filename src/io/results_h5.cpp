@@ -127,94 +127,113 @@ PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vect
   PetscFunctionReturn(0);
 }
 
+// /results: one row per result; a damped beam's energy term besides.
+static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results, const BeamParams &beam)
+{
+  PetscFunctionBeginUser;
+  hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  for (auto &col : ImpactResultColumns()) {
+    std::vector<double> v;
+    for (auto &r : results) v.push_back(col.get(r));
+    PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
+  }
+  if (beam.damping_mass > 0 || beam.damping_stiffness > 0) { // the beam's Rayleigh damping: one more energy term
+    std::vector<double> d, f;
+    for (auto &r : results) {
+      d.push_back(r.beam_dissipated_end);
+      f.push_back(r.damping_fraction);
+    }
+    PetscCall(H5WriteDataset1D(g, "beam_dissipated_end", d, "J"));
+    PetscCall(H5WriteDataset1D(g, "damping_fraction", f, "1"));
+  }
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+// /events of one run.
+static PetscErrorCode H5WriteEvents(hid_t file, const ImpactResult &r)
+{
+  PetscFunctionBeginUser;
+  hid_t               ge = H5Gcreate2(file, "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<double> t, kind, c, f, va, cor, n;
+  for (auto &e : r.events) {
+    t.push_back(e.time);
+    kind.push_back((double)e.kind);
+    c.push_back(e.compression);
+    f.push_back(e.force);
+    va.push_back(e.approach_speed);
+    cor.push_back(e.cor);
+    n.push_back(e.n);
+  }
+  PetscCall(H5WriteDataset1D(ge, "time", t, "s"));
+  PetscCall(H5WriteDataset1D(ge, "kind", kind, "0 contact, 1 max_compression, 2 reload, 3 separation"));
+  PetscCall(H5WriteDataset1D(ge, "compression", c, "m"));
+  PetscCall(H5WriteDataset1D(ge, "force", f, "N"));
+  PetscCall(H5WriteDataset1D(ge, "approach_speed", va, "m/s (contact starts; 0 on other events)"));
+  PetscCall(H5WriteDataset1D(ge, "cor", cor, "1, wall COR used for this contact (contact starts; 0 on other events)"));
+  PetscCall(H5WriteDataset1D(ge, "n", n, "1, unloading exponent used for this contact (contact starts; 0 on other events and for the linear law)"));
+  H5Gclose(ge);
+  PetscFunctionReturn(0);
+}
+
+// /series (the requested ones only) and /snapshots of one run.
+static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const BeamParams &beam)
+{
+  PetscFunctionBeginUser;
+  if (!S.time.empty()) {
+    hid_t gs = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCall(H5WriteDataset1D(gs, "time", S.time, "s"));
+    auto opt = [&](const char *name, const std::vector<double> &v, const char *unit) -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      if (!v.empty()) PetscCall(H5WriteDataset1D(gs, name, v, unit));
+      PetscFunctionReturn(0);
+    };
+    PetscCall(opt("ball_y", S.ball_y, "m"));
+    PetscCall(opt("ball_v", S.ball_v, "m/s"));
+    PetscCall(opt("compression", S.compression, "m"));
+    PetscCall(opt("force", S.force, "N"));
+    PetscCall(opt("ball_kinetic", S.ball_kinetic, "J"));
+    PetscCall(opt("ball_stored", S.ball_stored, "J"));
+    PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
+    PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
+    PetscCall(opt("beam_strain", S.beam_strain, "J"));
+    PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
+    PetscCall(opt("total_energy", S.total_energy, "J"));
+    if (!S.velocity_at.empty()) {
+      PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
+      PetscCall(H5WriteDataset1D(gs, "velocity_at_x", S.velocity_at_x, "m"));
+    }
+    PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
+    H5Gclose(gs);
+  }
+  if (!S.snapshot_time.empty()) {
+    hid_t               gn = H5Gcreate2(file, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    std::vector<double> x(beam.nodes);
+    for (PetscInt i = 0; i < beam.nodes; ++i) x[i] = beam.length * i / (beam.nodes - 1);
+    PetscCall(H5WriteDataset1D(gn, "x", x, "m"));
+    PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
+    PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
+    H5Gclose(gn);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam)
 {
   PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
-    PetscCall(H5WriteAttributes(file, record));
-    hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    for (auto &col : ImpactResultColumns()) {
-      std::vector<double> v;
-      for (auto &r : results) v.push_back(col.get(r));
-      PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
-    }
-    if (beam.damping_mass > 0 || beam.damping_stiffness > 0) { // the beam's Rayleigh damping: one more energy term
-      std::vector<double> d, f;
-      for (auto &r : results) {
-        d.push_back(r.beam_dissipated_end);
-        f.push_back(r.damping_fraction);
-      }
-      PetscCall(H5WriteDataset1D(g, "beam_dissipated_end", d, "J"));
-      PetscCall(H5WriteDataset1D(g, "damping_fraction", f, "1"));
-    }
-    H5Gclose(g);
-    if (!results.empty()) {
-      const ImpactResult &r = results[0];
-      {
-        hid_t               ge = H5Gcreate2(file, "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        std::vector<double> t, kind, c, f, va, cor, n;
-        for (auto &e : r.events) {
-          t.push_back(e.time);
-          kind.push_back((double)e.kind);
-          c.push_back(e.compression);
-          f.push_back(e.force);
-          va.push_back(e.approach_speed);
-          cor.push_back(e.cor);
-          n.push_back(e.n);
-        }
-        PetscCall(H5WriteDataset1D(ge, "time", t, "s"));
-        PetscCall(H5WriteDataset1D(ge, "kind", kind, "0 contact, 1 max_compression, 2 reload, 3 separation"));
-        PetscCall(H5WriteDataset1D(ge, "compression", c, "m"));
-        PetscCall(H5WriteDataset1D(ge, "force", f, "N"));
-        PetscCall(H5WriteDataset1D(ge, "approach_speed", va, "m/s (contact starts; 0 on other events)"));
-        PetscCall(H5WriteDataset1D(ge, "cor", cor, "1, wall COR used for this contact (contact starts; 0 on other events)"));
-        PetscCall(H5WriteDataset1D(ge, "n", n, "1, unloading exponent used for this contact (contact starts; 0 on other events and for the linear law)"));
-        H5Gclose(ge);
-      }
-      const ImpactSeries &S = r.series;
-      if (!S.time.empty()) {
-        hid_t gs = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        PetscCall(H5WriteDataset1D(gs, "time", S.time, "s"));
-        auto opt = [&](const char *name, const std::vector<double> &v, const char *unit) -> PetscErrorCode {
-          PetscFunctionBeginUser;
-          if (!v.empty()) PetscCall(H5WriteDataset1D(gs, name, v, unit));
-          PetscFunctionReturn(0);
-        };
-        PetscCall(opt("ball_y", S.ball_y, "m"));
-        PetscCall(opt("ball_v", S.ball_v, "m/s"));
-        PetscCall(opt("compression", S.compression, "m"));
-        PetscCall(opt("force", S.force, "N"));
-        PetscCall(opt("ball_kinetic", S.ball_kinetic, "J"));
-        PetscCall(opt("ball_stored", S.ball_stored, "J"));
-        PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
-        PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
-        PetscCall(opt("beam_strain", S.beam_strain, "J"));
-        PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
-        PetscCall(opt("total_energy", S.total_energy, "J"));
-        if (!S.velocity_at.empty()) {
-          PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
-          PetscCall(H5WriteDataset1D(gs, "velocity_at_x", S.velocity_at_x, "m"));
-        }
-        PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
-        H5Gclose(gs);
-      }
-      if (!S.snapshot_time.empty()) {
-        hid_t               gn = H5Gcreate2(file, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        std::vector<double> x(beam.nodes);
-        for (PetscInt i = 0; i < beam.nodes; ++i) x[i] = beam.length * i / (beam.nodes - 1);
-        PetscCall(H5WriteDataset1D(gn, "x", x, "m"));
-        PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
-        PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
-        H5Gclose(gn);
-      }
-    }
-    H5Fclose(file);
+  if (rank != 0) PetscFunctionReturn(0);
+  hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
+  PetscCall(H5WriteAttributes(file, record));
+  PetscCall(H5WriteResults(file, results, beam));
+  if (!results.empty()) {
+    PetscCall(H5WriteEvents(file, results[0]));
+    PetscCall(H5WriteSeries(file, results[0].series, beam));
   }
+  H5Fclose(file);
   PetscFunctionReturn(0);
 }
 
