@@ -13,13 +13,52 @@
 
 #include <slepcsys.h>
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
 static const char help[] = "beamimpact: a ball striking a flexible beam (R. Cross, Am. J. Phys. 67, 692 (1999)).\n"
-                           "  -task impact|modes, -output FILE.h5, and the -beam_, -ball_, -impact_, -monitor_, -modes_ and -ts_ options below.\n"
+                           "  -task impact|modes|sweep|convergence, -output FILE.h5, and the -beam_, -ball_, -bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
+                           "  -convergence_, -leapfrog_ and -ts_ options below (-help lists them all and runs nothing).\n"
                            "  Example: mpirun -n 2 beamimpact -options_file options/default.opts\n\n";
+
+// Every -options_file named on the command line, and those they include, must be readable:
+// said plainly here, before PETSc would stop with a traceback and an MPI abort. Returns the
+// first missing one ("" if none).
+static std::string MissingOptionsFile(int argc, char **argv)
+{
+  std::vector<std::string> todo;
+  for (int i = 1; i + 1 < argc; ++i)
+    if (!std::strcmp(argv[i], "-options_file")) todo.push_back(argv[i + 1]);
+  for (size_t k = 0; k < todo.size() && k < 1000; ++k) {
+    std::ifstream in(todo[k]);
+    if (!in) return todo[k];
+    std::string line;
+    while (std::getline(in, line)) {
+      std::istringstream words(line.substr(0, line.find('#')));
+      std::string        name, value;
+      if (words >> name >> value && name == "-options_file") todo.push_back(value);
+    }
+  }
+  return "";
+}
 
 int main(int argc, char **argv)
 {
   PetscBool traceback = PETSC_FALSE;
+
+  const std::string missing = MissingOptionsFile(argc, argv);
+  if (!missing.empty()) {
+    const char *rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (!rank || !std::strcmp(rank, "0"))
+      fprintf(stderr, "beamimpact: error: -options_file %s: cannot open the file (%s); options files are read relative to the working directory (run from the repository root)\n", missing.c_str(),
+              std::strerror(errno));
+    return 1;
+  }
 
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-error_traceback", &traceback, NULL));

@@ -9,6 +9,11 @@
 #include "solvers/modes.hpp"
 #include "studies/convergence.hpp"
 #include "studies/sweep.hpp"
+#include "studies/sweep_plan.hpp"
+#include "solvers/leapfrog.hpp"
+
+#include <petscts.h>
+#include <unistd.h>
 
 #include <vector>
 
@@ -154,6 +159,57 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscFunctionReturn(0);
 }
 
+// -help: every option of every task (each reader prints its block), then nothing is run or
+// written. The readers' own checks are skipped (their errors ignored): defaults may not make
+// a runnable sweep, and that is not what -help is asked.
+PetscErrorCode PrintAllOptions(MPI_Comm comm)
+{
+  Scenario        sc;
+  PetscBool       modal;
+  ModesParams     mp;
+  SweepPlan       plan;
+  ConvergencePlan cp;
+  LeapfrogParams  lp;
+  TS              ts;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  (void)ScenarioFromOptions(comm, &sc);
+  (void)ImpactReferenceFromOptions(comm, &modal);
+  (void)ModesParamsFromOptions(comm, &mp, nullptr);
+  (void)SweepPlanFromOptions(comm, &plan);
+  (void)ConvergencePlanFromOptions(comm, sc.ball, &cp);
+  (void)LeapfrogParamsFromOptions(comm, &lp);
+  if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), from the program's default rk4
+    (void)TSSetType(ts, TSRK);
+    (void)TSSetFromOptions(ts);
+    (void)TSDestroy(&ts);
+  }
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscPrintf(comm, "\n-help lists every option of every task above, with its default; nothing was run or written.\n"
+                              "Not in the blocks above: -allow_unused_options (unused options become a warning), -error_traceback (PETSc's full traceback on errors),\n"
+                              "-output_overwrite (let -output replace a file another task wrote).\n"));
+  PetscFunctionReturn(0);
+}
+
+// -output: refused before any work if it cannot be written (empty name, missing or read-only
+// directory) or if it would replace a file another task wrote (without -output_overwrite).
+PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *task)
+{
+  PetscBool overwrite = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  if (out.empty()) PetscFunctionReturn(0);
+  PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_overwrite", &overwrite, NULL));
+  const size_t      slash = out.find_last_of('/');
+  const std::string dir   = slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
+  PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", out.c_str(), dir.c_str());
+  std::string other;
+  PetscCall(ResultsFileTask(out, &other));
+  PetscCheck(other.empty() || other == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", out.c_str(), other.c_str(), task);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RunTask(MPI_Comm comm)
 {
   std::vector<const char *> names;
@@ -167,9 +223,18 @@ PetscErrorCode RunTask(MPI_Comm comm)
   PetscOptionsBegin(comm, NULL, "beamimpact: task and output", "beamimpact");
   PetscCall(PetscOptionsEnum("-task", "What to compute", "", names.data(), task, &task, NULL));
   PetscCall(PetscOptionsString("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)", "", output, output, sizeof(output), &set_output));
+  PetscCall(PetscOptionsBool("-output_overwrite", "Let -output replace a file another task wrote", "", PETSC_FALSE, NULL, NULL));
   PetscOptionsEnd();
+  PetscBool help = PETSC_FALSE;
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (help) {
+    PetscCall(PrintAllOptions(comm));
+    PetscFunctionReturn(0);
+  }
+  PetscCheck(!set_output || output[0], comm, PETSC_ERR_ARG_WRONG, "-output needs a file name (or 'none' to write nothing); it was given empty");
   std::string out = set_output ? output : std::string(Tasks[task].name) + ".h5";
   if (out == "none") out.clear();
+  PetscCall(OutputCheck(comm, out, Tasks[task].name));
   PetscCall(Tasks[task].run(comm, out));
   PetscFunctionReturn(0);
 }

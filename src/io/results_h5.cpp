@@ -2,6 +2,7 @@
 #include "io/results_h5.hpp"
 
 #include <hdf5.h>
+#include <unistd.h>
 
 namespace beamimpact {
 
@@ -81,6 +82,37 @@ static PetscErrorCode WriteNumberAttr(hid_t loc, const char *name, double value)
   H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
   H5Aclose(attr);
   H5Sclose(space);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ResultsFileTask(const std::string &path, std::string *task)
+{
+  PetscFunctionBeginUser;
+  task->clear();
+  if (access(path.c_str(), F_OK) != 0) PetscFunctionReturn(0);
+  H5E_auto2_t func;
+  void       *data;
+  H5Eget_auto2(H5E_DEFAULT, &func, &data);
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL); // not HDF5, or no attribute: no message
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file >= 0) {
+    hid_t a = H5Aopen(file, "task", H5P_DEFAULT);
+    if (a >= 0) {
+      hid_t type = H5Aget_type(a);
+      if (H5Tis_variable_str(type) > 0) {
+        char *s = nullptr;
+        if (H5Aread(a, type, &s) >= 0 && s) *task = s;
+        if (s) H5free_memory(s);
+      } else {
+        std::vector<char> buf(H5Tget_size(type) + 1, 0);
+        if (H5Aread(a, type, buf.data()) >= 0) *task = buf.data();
+      }
+      H5Tclose(type);
+      H5Aclose(a);
+    }
+    H5Fclose(file);
+  }
+  H5Eset_auto2(H5E_DEFAULT, func, data);
   PetscFunctionReturn(0);
 }
 

@@ -36,6 +36,10 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
 PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
                                      const BeamParams &beam);
 
+// The -task that wrote the HDF5 file at path (its root attribute "task"), or "" when the file
+// does not exist, is not HDF5 or has no such attribute.
+PetscErrorCode ResultsFileTask(const std::string &path, std::string *task);
+
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);
 PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);

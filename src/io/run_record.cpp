@@ -3,7 +3,37 @@
 
 #include "base/options_util.hpp"
 
+#include <hdf5.h>
+#include <slepcsys.h>
+
+#include <ctime>
+
 namespace beamimpact {
+
+// Where and when the file was made: the task, the source's commit, the date (UTC), the host,
+// the ranks and the versions of the libraries beside PETSc's.
+static PetscErrorCode RunProvenance(RunRecord *rec)
+{
+  char        task[64] = "impact", host[256] = "", slepc[256] = "", date[64] = "";
+  PetscMPIInt size;
+  unsigned    maj, min, rel;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-task", task, sizeof task, NULL));
+  PetscCall(PetscGetHostName(host, sizeof host));
+  PetscCall(SlepcGetVersion(slepc, sizeof slepc));
+  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
+  H5get_libversion(&maj, &min, &rel);
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  rec->add("task", task);
+  rec->add("git", BEAMIMPACT_GIT);
+  rec->add("date", date);
+  rec->add("host", host);
+  rec->add("ranks", (double)size);
+  rec->add("slepc_version", slepc);
+  rec->add("hdf5_version", std::to_string(maj) + "." + std::to_string(min) + "." + std::to_string(rel));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
 {
@@ -14,6 +44,7 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   PetscCall(PetscGetVersion(petsc_version, sizeof(petsc_version)));
   PetscCall(OptionsAsString(&options));
   rec->add("program", std::string("beamimpact ") + BEAMIMPACT_VERSION);
+  PetscCall(RunProvenance(rec));
   rec->add("petsc_version", petsc_version);
   rec->add("options", options);
   rec->add("beam_length", beam.length);

@@ -106,7 +106,10 @@ std::map<std::string, std::string> ParseOptions(const std::string &all)
 }
 
 // Attributes that change while a sweep runs, or with options that do not matter.
-bool AttributeIsVolatile(const std::string &key) { return key == "options" || key == "sweep_cases_done" || key == "sweep_complete"; }
+bool AttributeIsVolatile(const std::string &key)
+{
+  return key == "options" || key == "sweep_cases_done" || key == "sweep_complete" || key == "date" || key == "host" || key == "ranks" || key == "git";
+}
 
 SweepAttributes SignatureMaps(const RunRecord &rec)
 {
