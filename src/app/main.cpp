@@ -47,6 +47,27 @@ static std::string MissingOptionsFile(int argc, char **argv)
   return "";
 }
 
+// PETSc's parse errors ("Input string 41.5 has no integer value ...") do not say which option:
+// find the option given that value and say it.
+static std::string OptionOfParseError(const std::string &msg)
+{
+  const std::string head = "Input string ";
+  if (msg.compare(0, head.size(), head) != 0) return msg;
+  const std::string value = msg.substr(head.size(), msg.find(' ', head.size()) - head.size());
+  char             *all   = nullptr;
+  if (PetscOptionsGetAll(NULL, &all) || !all) return msg;
+  std::istringstream words(all);
+  std::string        w, name, found;
+  while (words >> w) {
+    if (w.size() > 1 && w[0] == '-' && !std::isdigit((unsigned char)w[1]) && w[1] != '.') name = w;
+    else if (w == value && !name.empty()) found = name;
+  }
+  PetscFree(all);
+  if (found.empty()) return msg;
+  const bool integer = msg.find("integer") != std::string::npos;
+  return found + " " + value + " is not allowed: it must be " + (integer ? "a whole number" : "a number") + " (" + msg + ")";
+}
+
 int main(int argc, char **argv)
 {
   PetscBool traceback = PETSC_FALSE;
@@ -65,7 +86,7 @@ int main(int argc, char **argv)
   if (!traceback) PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   PetscErrorCode ierr = beamimpact::RunTask(PETSC_COMM_WORLD);
   if (ierr) {
-    const std::string msg = beamimpact::LastErrorMessage(ierr);
+    const std::string msg = OptionOfParseError(beamimpact::LastErrorMessage(ierr));
     PetscMPIInt       rank;
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     if (rank == 0) fprintf(stderr, "beamimpact: error: %s\n", msg.c_str());

@@ -150,10 +150,10 @@ PetscErrorCode BeamUniformSection(MPI_Comm comm, const BeamOptionValues &o, Beam
     in.thickness           = o.a;
     in.parameter_set       = "M,L,a,E/rho";
   } else {
-    PetscCheck(o.E > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_youngs_modulus %g is not allowed: it must be > 0 (Pa)", (double)o.E);
-    PetscCheck(o.rho > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_density %g is not allowed: it must be > 0 (kg/m^3)", (double)o.rho);
-    PetscCheck(o.a > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_thickness %g is not allowed: it must be > 0 (m)", (double)o.a);
-    PetscCheck(o.b > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_width %g is not allowed: it must be > 0 (m)", (double)o.b);
+    PetscCheck(o.E > 0 && std::isfinite(o.E), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_youngs_modulus %g is not allowed: it must be > 0 (Pa)", (double)o.E);
+    PetscCheck(o.rho > 0 && std::isfinite(o.rho), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_density %g is not allowed: it must be > 0 (kg/m^3)", (double)o.rho);
+    PetscCheck(o.a > 0 && std::isfinite(o.a), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_thickness %g is not allowed: it must be > 0 (m)", (double)o.a);
+    PetscCheck(o.b > 0 && std::isfinite(o.b), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_width %g is not allowed: it must be > 0 (m)", (double)o.b);
     p->mu             = o.rho * o.a * o.b;
     p->EI             = o.E * o.b * o.a * o.a * o.a / 12.0;
     p->rhoI           = o.rho * o.b * o.a * o.a * o.a / 12.0;
@@ -189,7 +189,7 @@ PetscErrorCode TimoshenkoCheck(MPI_Comm comm, const BeamOptionValues &o, const B
 PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
 {
   PetscFunctionBeginUser;
-  PetscCheck(p.length > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_length %g is not allowed: the length must be > 0 (m)", (double)p.length);
+  PetscCheck(p.length > 0 && std::isfinite(p.length), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_length %g is not allowed: the length must be finite and > 0 (m)", (double)p.length);
   PetscCheck(p.EI > 0 && std::isfinite(p.EI), comm, PETSC_ERR_ARG_OUTOFRANGE, "bending stiffness EI = %g is not allowed: it must be > 0 (N m^2)", (double)p.EI);
   PetscCheck(p.mu > 0 && std::isfinite(p.mu), comm, PETSC_ERR_ARG_OUTOFRANGE, "mass per length mu = %g is not allowed: it must be > 0 (kg/m)", (double)p.mu);
   PetscCheck(p.damping_mass >= 0 && std::isfinite(p.damping_mass), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_damping_mass %g is not allowed: alpha must be >= 0 (1/s)", (double)p.damping_mass);

@@ -42,7 +42,7 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscOptionsEnd();
   {
     char what[64];
-    PetscCall(PetscSNPrintf(what, sizeof(what), "-impact_x %g", (double)p->x));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "-impact_x %.12g", (double)p->x));
     PetscCall(ImpactPointCheck(comm, beam, p->x, what));
   }
   PetscCheck(p->event_tol > 0 && p->event_tol < 1e-2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_event_tol %g is not allowed: use a value in (0, 1e-2)", (double)p->event_tol);

@@ -17,7 +17,7 @@ PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal
 {
   PetscFunctionBeginUser;
   const ImpactPointWhere where = ImpactPointLocate(beam, x);
-  PetscCheck(where != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s is not allowed: the impact point must lie on the beam, 0 <= x <= L = %g (m)", what, (double)beam.length);
+  PetscCheck(where != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s is not allowed: the impact point must lie on the beam, 0 <= x <= L = %.12g (m)", what, (double)beam.length);
   PetscCheck(where != ImpactPointWhere::Held, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "%s is not allowed: that point is held fixed (a clamped or pinned support or inside -beam_clamp); strike a point that can move", what);
   PetscFunctionReturn(0);

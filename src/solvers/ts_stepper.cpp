@@ -550,6 +550,12 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   PetscCall(TSLayoutCreate(comm, sys.nodes, sys.fields, sys.GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
   PetscCall(CreateTS(*S, type));
   PetscCall(ConfigureTS(*S, type, set));
+  {
+    PetscReal atol, rtol;
+    PetscCall(TSGetTolerances(S->ts, &atol, NULL, &rtol, NULL));
+    PetscCheck(atol >= 0 && rtol >= 0 && std::isfinite(atol) && std::isfinite(rtol), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-ts_atol %g, -ts_rtol %g are not allowed: the error tolerances must be finite and >= 0", (double)atol, (double)rtol);
+  }
   PetscCall(ExplicitStability(*S));
   PetscCall(TSGetTimeStep(S->ts, &S->dt_nominal));
   PetscCheck(S->dt_nominal > 0 && std::isfinite(S->dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);
