@@ -1,22 +1,21 @@
 // The modal integrator, registered as the PETSc TS type "modal" (-ts_type modal), as
 // ts_galpha2.cpp registers alpha2. The beam's linear flow is exact over every step, in its
 // modes (solvers/beam_modes.hpp: K phi = w^2 M phi on the free dofs, exact rigid modes, each
-// mode's exact Rayleigh-damped rotation); the ball and the contact force enter by splitting:
-//
-//   order 2 (Strang):  S(h) = kick(h/2) o [beam flow(h) + ball drift(h)] o kick(h/2)
-//   order 4 (Yoshida): S(w1 h) S(w0 h) S(w1 h),  w1 = 1/(2 - 2^(1/3)),  w0 = 1 - 2 w1 < 0
-//
-// (-ts_modal_order 2|4). The kick adds tau F gamma_k to each modal velocity and -tau F/m_b to
-// the ball's, F the contact law at c = y_b - sum_k gamma_k z_k, gamma_k = g^T M^{-1/2} phi_k
-// (the coupling's modal row). The negative substep of order 4 is fine: the beam's flow is
-// exact backwards too. Both are symmetric compositions of exact flows, so the order is 2 or 4
-// for any smooth force law inside a contact phase (the driver locates the phase switches and
-// restarts there). No stability limit from the beam: each mode's rotation is exact.
+// mode's exact Rayleigh-damped rotation); the contact force enters as a polynomial in time over
+// each step, for which the beam's modes and the ball are integrated exactly (an exponential
+// collocation method): order 2 (-ts_modal_order 2): F linear through F(t0) and F(t0 + h);
+// order 4 (the default): F quadratic through its values at t0, t0 + h/2, t0 + h. The unknown
+// force values satisfy F_i = F(c(t_i)), c(t_i) = c_free(t_i) - sum_j W_ij F_j (W from the
+// modes' responses, sum_k gamma_k^2 ..., and the ball's), solved by Newton (1 or 2 unknowns);
+// gamma_k = g^T M^{-1/2} phi_k is the coupling's modal row. No stability limit from the beam.
+// (A Strang splitting, impulse kicks around the exact flow, was tried first and dropped: the
+// kicks leave O(h F gamma_k) in every unresolved mode at each step end, so the compression
+// rate depends on the path of steps and the event locator failed at maximum compression.)
 //
 // State: the TS keeps (z, zd, y_b, v_b) in modal coordinates, the same on every rank (a serial
 // modal state, computed redundantly; the physical Vec stays distributed on the DMDA). A step
-// costs O(modes): 3 (order 2: 2) kicks and flows of O(n) each, the flows from cached 2x2
-// propagators of the step lengths in use. The physical vector TSGetSolution returns is
+// costs O(modes), from weights cached per step length (one sin/cos per undamped mode for
+// each new length: the nominal step and the event location's steps). The physical vector TSGetSolution returns is
 // written from the modes only when it is read (TSModalSyncSolution, O(n^2 / ranks): the dense
 // modes); the driver's per-step read, the compression, is answered from the modal state
 // (TSModalCompression, O(n)), and so is the damped beam's dissipation rate. A write into the
