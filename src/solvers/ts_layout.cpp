@@ -178,7 +178,7 @@ Formulation FormulationOfType(const char *type)
 {
   auto is = [&](const char *t) { return std::string(type) == t; };
   if (is(TSALPHA2)) return Formulation::SecondOrder;
-  if (is(TSRK) || is(TSEULER) || is(TSSSP) || is(TSGLEE) || is(TSMPRK) || is(TSBASICSYMPLECTIC)) return Formulation::Explicit;
+  if (is(TSRK) || is(TSEULER) || is(TSSSP) || is(TSGLEE) || is(TSMPRK) || is(TSBASICSYMPLECTIC) || is("modal")) return Formulation::Explicit;
   if (is(TSARKIMEX) || is(TSEIMEX) || is(TSMIMEX)) return Formulation::IMEX;
   return Formulation::Implicit;
 }

@@ -6,6 +6,7 @@
 #include "base/options_util.hpp"
 #include "solvers/rk_stability.hpp"
 #include "solvers/ts_galpha2.hpp"
+#include "solvers/ts_modal.hpp"
 #include "solvers/ts_problem.hpp"
 
 #include <petscdmcomposite.h>
@@ -21,7 +22,7 @@ namespace {
 // Types whose steps can be rolled back, so that events can be located (PETSc 3.18).
 bool TypeCanRollBack(const char *type)
 {
-  for (const char *t : {TSRK, TSTHETA, TSCN, TSBEULER, TSBDF, TSARKIMEX, TSROSW, TSALPHA, TSALPHA2, TSIRK})
+  for (const char *t : {TSRK, TSTHETA, TSCN, TSBEULER, TSBDF, TSARKIMEX, TSROSW, TSALPHA, TSALPHA2, TSIRK, TSMODAL})
     if (!std::strcmp(t, type)) return true;
   return false;
 }
@@ -96,9 +97,12 @@ public:
   PetscReal      Dissipated() const override { return dissipated; }
   PetscErrorCode DissipationRateNow(PetscReal *r, PetscReal *rdot)
   {
-    Vec X, Vel;
+    Vec       X, Vel;
+    PetscBool modal;
 
     PetscFunctionBeginUser;
+    PetscCall(TSModalDissipationRate(ts, r, rdot, &modal)); // -ts_type modal: from its modes, O(modes)
+    if (modal) PetscFunctionReturn(0);
     PetscCall(Solution(&X, &Vel));
     PetscCall(TSDissipationRate(P, X, Vel, r, rdot));
     PetscFunctionReturn(0);
@@ -129,6 +133,7 @@ public:
   {
     PetscFunctionBeginUser;
     *Vel = nullptr;
+    PetscCall(TSModalSyncSolution(ts)); // -ts_type modal: the physical state of its modes, when read
     if (P.form == Formulation::SecondOrder) PetscCall(TS2GetSolution(ts, X, Vel));
     else PetscCall(TSGetSolution(ts, X));
     PetscFunctionReturn(0);
@@ -150,8 +155,11 @@ PetscErrorCode TSStepper::Compression(PetscReal *c, PetscReal *cdot)
   Vec                X, Vel, Xb, Xr, Vb = nullptr, Vr = nullptr;
   const PetscScalar *x, *xr, *v = nullptr, *vr = nullptr;
   PetscReal          vals[2] = {0, 0};
+  PetscBool          modal;
 
   PetscFunctionBeginUser;
+  PetscCall(TSModalCompression(ts, c, cdot, &modal)); // -ts_type modal: from its modes, O(modes)
+  if (modal) PetscFunctionReturn(0);
   PetscCall(Solution(&X, &Vel));
   PetscCall(DMCompositeGetAccess(L.pack, X, &Xb, &Xr));
   PetscCall(VecGetArrayRead(Xb, &x));
@@ -328,7 +336,9 @@ std::string TSStepper::EnergyGrowthCause() const
   const PetscReal dt_last = t - tp;
   char            cause[512];
   const char     *reduce = fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol";
-  if (P.form == Formulation::Explicit && fixed_step)
+  if (TSModalIsType(info.ts_type.c_str()))
+    PetscSNPrintf(cause, sizeof(cause), "the modal splitting step does not resolve the contact (contact time scale %g s; the beam itself has no step limit); reduce -ts_dt or use -ts_modal_order 4", (double)scales.time);
+  else if (P.form == Formulation::Explicit && fixed_step)
     PetscSNPrintf(cause, sizeof(cause), "the fixed step is %.3g x the stability limit dt_max = %g s computed for this grid and contact; use a smaller -ts_dt", (double)(dt_last / info.dt_stable), (double)info.dt_stable);
   else if (P.form == Formulation::Explicit)
     PetscSNPrintf(cause, sizeof(cause), "the error controller let the step reach the explicit stability limit dt_max = %g s; tighten -ts_rtol/-ts_atol or use a fixed -ts_dt below dt_max", (double)info.dt_stable);
@@ -349,6 +359,7 @@ PetscErrorCode CreateTS(TSStepper &S, const char *type)
 
   PetscFunctionBeginUser;
   PetscCall(TSGAlpha2Register()); // -ts_type alpha2: generalized-alpha with a consistent restart (ts_galpha2.hpp)
+  PetscCall(TSModalRegister());   // -ts_type modal: exact beam flow in its modes, contact by splitting (ts_modal.hpp)
   PetscCall(TSCreate(P.L.comm, &S.ts));
   PetscCall(TSSetType(S.ts, type));
   PetscCall(TSSetDM(S.ts, P.L.pack));
@@ -428,7 +439,7 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   }
   PetscCheck(TypeCanRollBack(now), S.P.L.comm, PETSC_ERR_SUP,
              "-ts_type %s cannot roll back a step, so contact start, maximum compression and separation cannot be located as events; "
-             "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2",
+             "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, modal",
              now);
   PetscFunctionReturn(0);
 }
@@ -439,7 +450,7 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   const MPI_Comm comm = S.P.L.comm;
 
   PetscFunctionBeginUser;
-  if (S.P.form != Formulation::Explicit) PetscFunctionReturn(0);
+  if (S.P.form != Formulation::Explicit || TSModalIsType(S.info.ts_type.c_str())) PetscFunctionReturn(0); // modal: no limit from the beam
   PetscCheck(S.info.ts_type == TSRK, comm, PETSC_ERR_SUP, "-ts_type %s is explicit but not rk: only rk tableaus have a computed stability limit here; use -ts_type rk", S.info.ts_type.c_str());
   PetscInt         s;
   const PetscReal *A, *b;
@@ -546,6 +557,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   P.jac.contact         = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
   S->scales             = scales;
   S->info.formulation   = FormulationName(P.form);
+  if (TSModalIsType(type)) S->info.formulation = "modal splitting"; // explicit right-hand side, exact beam flow
   S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass);
   PetscCall(TSLayoutCreate(comm, sys.nodes, sys.fields, sys.GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
   PetscCall(CreateTS(*S, type));

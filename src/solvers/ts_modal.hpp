@@ -1,0 +1,48 @@
+// The modal integrator, registered as the PETSc TS type "modal" (-ts_type modal), as
+// ts_galpha2.cpp registers alpha2. The beam's linear flow is exact over every step, in its
+// modes (solvers/beam_modes.hpp: K phi = w^2 M phi on the free dofs, exact rigid modes, each
+// mode's exact Rayleigh-damped rotation); the contact force enters as a polynomial in time over
+// each step, for which the beam's modes and the ball are integrated exactly (an exponential
+// collocation method): order 2 (-ts_modal_order 2): F linear through F(t0) and F(t0 + h);
+// order 4 (the default): F quadratic through its values at t0, t0 + h/2, t0 + h. The unknown
+// force values satisfy F_i = F(c(t_i)), c(t_i) = c_free(t_i) - sum_j W_ij F_j (W from the
+// modes' responses, sum_k gamma_k^2 ..., and the ball's), solved by Newton (1 or 2 unknowns);
+// gamma_k = g^T M^{-1/2} phi_k is the coupling's modal row. No stability limit from the beam.
+// (A Strang splitting, impulse kicks around the exact flow, was tried first and dropped: the
+// kicks leave O(h F gamma_k) in every unresolved mode at each step end, so the compression
+// rate depends on the path of steps and the event locator failed at maximum compression.)
+//
+// State: the TS keeps (z, zd, y_b, v_b) in modal coordinates, the same on every rank (a serial
+// modal state, computed redundantly; the physical Vec stays distributed on the DMDA). A step
+// costs O(modes), from weights cached per step length (one sin/cos per undamped mode for
+// each new length: the nominal step and the event location's steps). The physical vector TSGetSolution returns is
+// written from the modes only when it is read (TSModalSyncSolution, O(n^2 / ranks): the dense
+// modes); the driver's per-step read, the compression, is answered from the modal state
+// (TSModalCompression, O(n)), and so is the damped beam's dissipation rate. A write into the
+// physical vector from outside (the initial state, SetState after a free flight) is detected
+// (object state and an O(N) comparison with the last written copy) and projected on the
+// modes at the next step (O(n^2), once).
+//
+// Requires the beamimpact problem in its explicit form (TSSetRHSFunction with TSRHSExplicit,
+// ts_problem.hpp; FormulationOfType gives it) and a beam whose modes are available
+// (BeamModesAvailable: at most BeamModesMaxDofs free dofs, proportional damping).
+#pragma once
+
+#include <petscts.h>
+
+#define TSMODAL "modal"
+
+namespace beamimpact {
+
+PetscErrorCode TSModalRegister();
+bool           TSModalIsType(const char *type);
+
+// Hooks for the TS stepper; for any other TS type they do nothing (*done = false).
+// The physical state of TSGetSolution's vector, written from the modal state if stale.
+PetscErrorCode TSModalSyncSolution(TS ts);
+// c = y_b - g^T y and its rate from the modal state (every rank).
+PetscErrorCode TSModalCompression(TS ts, PetscReal *c, PetscReal *cdot, PetscBool *done);
+// Damped beam: P = v^T C v = sum_k 2 sigma_k zd_k^2 and dP/dt = 2 a^T C v at the current state.
+PetscErrorCode TSModalDissipationRate(TS ts, PetscReal *rate, PetscReal *rate_dot, PetscBool *done);
+
+} // namespace beamimpact
