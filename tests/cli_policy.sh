@@ -6,6 +6,8 @@
 #     note, not an error (an unknown option of the program's own stays an error);
 #   * -output: an empty name, a missing directory, and a file another task wrote are refused
 #     before any work (the last unless -output_overwrite);
+#   * -ts_monitor and -ts_view work (the driver steps the TS itself); -ts_max_steps and
+#     -ts_max_time, which it cannot honour, are refused naming -impact_max_time;
 #   * a missing -options_file (also one included by another file) is one plain line, no
 #     PETSc traceback, no MPI abort;
 #   * every results file records its provenance: task, git, date, host, ranks, library versions.
@@ -33,6 +35,14 @@ if [[ $rc -eq 0 ]] && grep -q "note: 1 PETSc solver option(s) set but not used b
 else fail "options/impact.opts -ts_type cn: exit $rc: $out"; fi
 out=$("$exe" -options_file options/impact.opts -beam_thicknes 0.01 -output none 2>&1); rc=$?
 if [[ $rc -ne 0 ]] && grep -q "option(s) set but not used by this task and integrator: -beam_thicknes 0.01" <<<"$out"; then pass "a misspelt program option is still an error"; else fail "-beam_thicknes: exit $rc: $out"; fi
+
+# PETSc's own habits: monitors and viewers work, options the driver cannot honour are refused
+out=$("$exe" -options_file options/impact.opts -impact_window 0 -ts_monitor -ts_view -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && grep -q "^1 TS dt" <<<"$out" && grep -q "TS Object" <<<"$out" && pass "-ts_monitor and -ts_view print" || fail "-ts_monitor/-ts_view: exit $rc"
+for o in "-ts_max_steps 100" "-ts_max_time 1e-3"; do
+  out=$("$exe" -options_file options/impact.opts $o -output none 2>&1); rc=$?
+  [[ $rc -ne 0 ]] && grep -q -- "${o%% *} is not used here: .* use -impact_max_time" <<<"$out" && pass "$o refused, naming what to use" || fail "$o: exit $rc: $out"
+done
 
 # -output
 out=$("$exe" -output "" 2>&1); rc=$?

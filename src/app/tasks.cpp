@@ -180,7 +180,7 @@ PetscErrorCode PrintAllOptions(MPI_Comm comm)
   (void)SweepPlanFromOptions(comm, &plan);
   (void)ConvergencePlanFromOptions(comm, sc.ball, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
-  if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), from the program's default rk4
+  if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);
     (void)TSDestroy(&ts);

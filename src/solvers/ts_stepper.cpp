@@ -41,6 +41,7 @@ public:
   // Damped beam: the dissipated energy D and the rate P = v^T C v, dP/dt at the current state
   // and at the start of the last step (restored by RollBack). See DissipationStep.
   bool      damped = false;
+  bool      monitored = false; // -ts_monitor (or any TS monitor) given: called after each step
   PetscReal dissipated = 0, rate = 0, rate_dot = 0;
   PetscReal dissipated_prev = 0, rate_prev = 0, rate_dot_prev = 0;
   // The open view (ViewBegin/ViewEnd).
@@ -50,6 +51,7 @@ public:
 
   ~TSStepper() override
   {
+    if (ts) TSViewFromOptions(ts, NULL, "-ts_view"); // at the end, as TSSolve would
     TSDestroy(&ts);
     VecDestroy(&U);
     VecDestroy(&V);
@@ -73,6 +75,13 @@ public:
     PetscCall(TSSetTimeStep(ts, dt));
     PetscCall(TSStep(ts));
     PetscCall(TSCheckStep(P, ts, info.ts_type.c_str(), info.omega_max_bound));
+    if (monitored) { // -ts_monitor and friends: the driver calls TSStep itself, so it calls the monitors too
+      Vec      U;
+      PetscInt step;
+      PetscCall(TSGetSolution(ts, &U));
+      PetscCall(TSGetStepNumber(ts, &step));
+      PetscCall(TSMonitor(ts, step, Time(), U));
+    }
     if (damped) PetscCall(DissipationStep(Time() - t0));
     PetscFunctionReturn(0);
   }
@@ -557,12 +566,22 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   P.jac.contact         = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
   S->scales             = scales;
   S->info.formulation   = FormulationName(P.form);
-  if (TSModalIsType(type)) S->info.formulation = "modal splitting"; // explicit right-hand side, exact beam flow
+  if (TSModalIsType(type)) S->info.formulation = "modal (exact beam flow, polynomial contact force)"; // explicit right-hand side, exact beam flow
   S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass);
   PetscCall(TSLayoutCreate(comm, sys.nodes, sys.fields, sys.GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
   PetscCall(CreateTS(*S, type));
   PetscCall(ConfigureTS(*S, type, set));
   {
+    PetscBool max_steps = PETSC_FALSE, max_time = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_steps", &max_steps));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_time", &max_time));
+    PetscCheck(!max_steps && !max_time, comm, PETSC_ERR_ARG_INCOMP,
+               "%s is not used here: the run's end is set by its events (the window after the last separation); use -impact_max_time (s) to cap the simulated time or -impact_window to shorten it",
+               max_steps ? "-ts_max_steps" : "-ts_max_time");
+    char *all = nullptr; // any -ts_monitor* option: TSSetFromOptions installed a monitor
+    PetscCall(PetscOptionsGetAll(NULL, &all));
+    S->monitored = all && std::strstr(all, "-ts_monitor");
+    PetscCall(PetscFree(all));
     PetscReal atol, rtol;
     PetscCall(TSGetTolerances(S->ts, &atol, NULL, &rtol, NULL));
     PetscCheck(atol >= 0 && rtol >= 0 && std::isfinite(atol) && std::isfinite(rtol), comm, PETSC_ERR_ARG_OUTOFRANGE,
