@@ -32,7 +32,9 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscEnum left = (PetscEnum)p->left, right = (PetscEnum)p->right;
   PetscReal clamp[2] = {0, 0};
   PetscInt  nclamp   = 2;
-  PetscBool setclamp = PETSC_FALSE, setpivot = PETSC_FALSE;
+  PetscBool setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE;
+  PetscReal grip[2]  = {0, 0};
+  PetscInt  ngrip    = 2;
   const std::string theories = "Beam theory: " + TheoryList();
 
   PetscFunctionBeginUser;
@@ -59,6 +61,10 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(PetscOptionsReal("-beam_pivot", "Pivot x_p (m): an interior point held at y = 0, free to rotate (a test rig; on the nearest node)", "", p->pivot_x, &p->pivot_x, &setpivot));
   PetscCall(PetscOptionsReal("-beam_damping_mass", "Rayleigh damping alpha (1/s): C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "", p->damping_mass, &p->damping_mass, NULL));
   PetscCall(PetscOptionsReal("-beam_damping_stiffness", "Rayleigh damping beta (s)", "", p->damping_stiffness, &p->damping_stiffness, NULL));
+  PetscCall(PetscOptionsRealArray("-grip", "The hands: grip x_a,x_b (m), a spring-damper per metre of handle tying it to the swing's rigid frame (a free beam)", "", grip, &ngrip, &setgrip));
+  PetscCall(PetscOptionsReal("-grip_stiffness", "Grip stiffness k' (N/m per m of handle): force -k' (y - v_f t) per metre", "", p->grip.stiffness, &p->grip.stiffness, NULL));
+  PetscCall(PetscOptionsReal("-grip_damping", "Grip damping c' (N s/m per m of handle): force -c' (v - v_f) per metre", "", p->grip.damping, &p->grip.damping, NULL));
+  PetscCall(PetscOptionsReal("-grip_mass", "Mass of the hands (kg), spread over the grip's translational dofs", "", p->grip.mass, &p->grip.mass, NULL));
   PetscOptionsEnd();
 
   p->left   = (Support)left;
@@ -66,6 +72,12 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   p->theory = o->theory;
   PetscCheck(BeamTheoryFind(o->theory), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: use one of %s", o->theory, TheoryList().c_str());
   p->has_pivot = setpivot;
+  if (setgrip) {
+    PetscCheck(ngrip == 2, comm, PETSC_ERR_ARG_WRONG, "-grip takes two numbers x_a,x_b (m); got %" PetscInt_FMT, ngrip);
+    p->grip.on  = true;
+    p->grip.x_a = grip[0];
+    p->grip.x_b = grip[1];
+  }
   if (setclamp) {
     PetscCheck(nclamp == 2, comm, PETSC_ERR_ARG_WRONG, "-beam_clamp takes two numbers x0,x1 (m); got %" PetscInt_FMT, nclamp);
     p->has_clamp = true;
@@ -206,6 +218,22 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
     const PetscInt k = BeamPivotNode(p);
     PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes", (double)p.pivot_x,
                (double)(p.length / (p.nodes - 1)));
+  }
+  if (p.grip.on) {
+    const BeamGrip &g = p.grip;
+    PetscCheck(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b, comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = %g (m)",
+               (double)g.x_a, (double)g.x_b, (double)p.length);
+    PetscCheck(g.stiffness >= 0 && std::isfinite(g.stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_stiffness %g is not allowed: it must be >= 0 (N/m per m)", (double)g.stiffness);
+    PetscCheck(g.damping >= 0 && std::isfinite(g.damping), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_damping %g is not allowed: it must be >= 0 (N s/m per m)", (double)g.damping);
+    PetscCheck(g.mass >= 0 && std::isfinite(g.mass), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_mass %g is not allowed: it must be >= 0 (kg)", (double)g.mass);
+    PetscCheck(p.left != Support::Clamped && p.right != Support::Clamped, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a clamped end (-beam_%s clamped) is not allowed: the hands hold a free bat",
+               (double)g.x_a, (double)g.x_b, p.left == Support::Clamped ? "left" : "right");
+    PetscCheck(p.left != Support::Pinned && p.right != Support::Pinned, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a pinned end (-beam_%s pinned) is not allowed: the hands hold a free bat",
+               (double)g.x_a, (double)g.x_b, p.left == Support::Pinned ? "left" : "right");
+    PetscCheck(!p.has_clamp, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a clamped region (-beam_clamp %g,%g) is not allowed: the hands hold a free bat", (double)g.x_a, (double)g.x_b, (double)p.clamp_x0,
+               (double)p.clamp_x1);
+    PetscCheck(!p.has_pivot, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a pivot (-beam_pivot %g) is not allowed: the hands hold a free bat (the pivot is the certification rig's)", (double)g.x_a,
+               (double)g.x_b, (double)p.pivot_x);
   }
   if (p.has_clamp) {
     PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -37,6 +37,10 @@ const std::vector<ResultColumn> &ImpactResultColumns()
     {"bat_angular_velocity_end", "rad/s", false, [](const R &r) { return r.bat_angular_velocity_end; }},
     {"recoil_factor", "1", false, [](const R &r) { return r.recoil_factor; }},
     {"bbcor", "1", false, [](const R &r) { return r.bbcor; }},
+    {"grip_force_peak", "N", false, [](const R &r) { return r.grip_force_peak; }},
+    {"grip_force_peak_time", "s", false, [](const R &r) { return r.grip_force_peak_time; }},
+    {"grip_stored_end", "J", false, [](const R &r) { return r.grip_stored_end; }},
+    {"hand_work_end", "J", false, [](const R &r) { return r.hand_work_end; }},
     {"segment_kinetic_peak", "J", false, [](const R &r) { return r.segment_kinetic_peak; }},
     {"segment_kinetic_peak_time", "s", false, [](const R &r) { return r.segment_kinetic_peak_time; }},
     {"failed_solves", "1", true, [](const R &r) { return (double)r.failed_solves; }},
@@ -236,6 +240,10 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
       PetscCall(H5WriteDataset1D(gs, "velocity_at_x", S.velocity_at_x, "m"));
     }
     PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
+    PetscCall(opt("grip_force", S.grip_force, "N"));
+    PetscCall(opt("grip_moment", S.grip_moment, "N m"));
+    PetscCall(opt("grip_stored", S.grip_stored, "J"));
+    PetscCall(opt("hand_work", S.hand_work, "J"));
     H5Gclose(gs);
   }
   if (!S.snapshot_time.empty()) {

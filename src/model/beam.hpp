@@ -44,6 +44,17 @@ struct BeamMaterialInput {
   std::string parameter_set;        // "E,rho,a,b" | "M,L,a,E/rho" | "EI,mu" | "profile" | "table"
 };
 
+// The hands (-grip x_a,x_b): a spring-damper per unit length over [x_a, x_b] tying the handle's
+// deflection to the swing's rigid frame, and an optional hand mass spread over the same span
+// (model/grip.hpp: the per-dof weights; system/beam_system.hpp: where it enters).
+struct BeamGrip {
+  bool      on = false;
+  PetscReal x_a = 0, x_b = 0;  // m
+  PetscReal stiffness = 0;     // N/m per m of handle
+  PetscReal damping   = 0;     // N s/m per m
+  PetscReal mass      = 0;     // kg, the hands (added to the translational dofs of the grip)
+};
+
 struct BeamParams {
   PetscReal length = 1.1;  // m
   PetscReal EI     = 0;    // N m^2, bending stiffness (uniform; with a profile or table, its mean)
@@ -61,6 +72,7 @@ struct BeamParams {
   std::string theory = "euler";     // beam theory (model/beam_theory.hpp registry)
   PetscReal damping_mass      = 0;  // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
   PetscReal damping_stiffness = 0;  // s,   beta
+  BeamGrip  grip;                   // the hands on the handle (none by default)
   BeamMaterialInput input;
 };
 

@@ -51,7 +51,8 @@ struct MonitorRequest {
   PetscBool              segment = PETSC_FALSE; // kinetic energy of the beam segment [segment_x0, segment_x1]
   PetscReal              segment_x0 = 0, segment_x1 = 0; // m
   PetscReal              segment_until = -1;    // s, the segment's peak is taken over t <= this (< 0: whole run)
-  bool any() const { return ball || energy || !velocity_at.empty() || segment; }
+  PetscBool              grip = PETSC_FALSE;   // the force of the bat on the hands and its moment, the grip's energies per step (-grip)
+  bool any() const { return ball || energy || !velocity_at.empty() || segment || grip; }
 };
 
 // Per-step time series (rank 0 holds them; only the requested ones are filled).
@@ -64,6 +65,7 @@ struct ImpactSeries {
   std::vector<PetscReal> velocity_at_x;                                  // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
   std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
+  std::vector<PetscReal> grip_force, grip_moment, grip_stored, hand_work; // N, N m about x = 0, J, J (-monitor_grip)
   std::vector<PetscReal> snapshot_time;                                  // s
   std::vector<std::vector<PetscReal>> snapshot_y;                        // m, [snapshot][node]
 };
@@ -120,6 +122,10 @@ struct ImpactOutcome {
   PetscReal recoil_factor = 0, bbcor = 0;
   // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
   PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
+  // With -grip: the peak force of the bat on the hands (N, largest |sum over the grip| over the
+  // steps taken) and when (s), and at the end the grip's stored energy and the work the hands
+  // have done on the bat (J; the grip's damper is in beam_dissipated_end).
+  PetscReal grip_force_peak = 0, grip_force_peak_time = 0, grip_stored_end = 0, hand_work_end = 0;
 };
 
 // The stepper's own counts, and the driver's.

@@ -52,6 +52,12 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
                (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x, (double)sc.ball.speed);
     s->beam_velocity = BeamSystemRigidVelocity(s->sys, -(sc.swing.bat_speed - sc.swing.bat_angular_velocity * body.x_cm), -sc.swing.bat_angular_velocity);
   }
+  if (s->sys.Gripped()) { // the hands hold the handle to the swing's rigid frame (at rest: a fixed frame)
+    BeamSystem &S = s->sys;
+    if (!s->beam_velocity.empty()) S.grip_v = s->beam_velocity;
+    const std::vector<PetscReal> zero(S.ndof, 0.0);
+    S.grip_drive0 = BeamSystemGripDrive(S, zero.data(), S.fields, S.grip_v.data(), S.fields, 0, S.ndof) + sc.ball.mass * BeamSystemGripFrameAt(S, s->g) * sc.ball.speed;
+  }
   BallParams approaching = sc.ball; // the contact's scales are those of the approach speed
   approaching.speed      = s->approach;
   s->scales              = ContactScalesOf(s->sys, approaching);

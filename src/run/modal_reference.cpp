@@ -149,6 +149,8 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   bool                touching = true;
 
   PetscFunctionBeginUser;
+  PetscCheck(!sys.Gripped(), PETSC_COMM_SELF, PETSC_ERR_SUP,
+             "-reference modal with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal reference; use a tight TS run as the reference");
   PetscCheck(ball.law == ContactLawKind::Linear, PETSC_COMM_SELF, PETSC_ERR_SUP,
              "-reference modal needs -ball_law linear (the hysteretic law is nonlinear: use a tight run of a high-order integrator as the reference)");
   const double wall0 = MPI_Wtime();

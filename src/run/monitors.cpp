@@ -1,6 +1,8 @@
 // Recording during a run. See monitors.hpp.
 #include "run/monitors.hpp"
 
+#include <cmath>
+
 namespace beamimpact {
 
 ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactResult *res)
@@ -17,8 +19,12 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   ImpactSeries          &S = res_->series;
 
   PetscFunctionBeginUser;
-  if (!mon_.any() && !ip_.energy_check) PetscFunctionReturn(0);
+  if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped()) PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
+  if (ctx_.sys->Gripped() && std::abs(m.grip_force) > res_->grip_force_peak) { // the hands' peak force, always
+    res_->grip_force_peak      = std::abs(m.grip_force);
+    res_->grip_force_peak_time = t;
+  }
   if (ip_.energy_check) {
     const PetscReal growth = (m.total() - E0_) / E0_;
     PetscCheck(growth <= ip_.energy_growth_tol, stepper_.Comm(), PETSC_ERR_NOT_CONVERGED, "energy grew by %.3g of the incident kinetic energy at t = %g s %s", (double)growth, (double)t,
@@ -42,6 +48,12 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
     if (ctx_.sys->Damped()) S.beam_dissipated.push_back(m.beam_dissipated);
   }
   for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
+  if (mon_.grip && ctx_.sys->Gripped()) {
+    S.grip_force.push_back(m.grip_force);
+    S.grip_moment.push_back(m.grip_moment);
+    S.grip_stored.push_back(m.grip_stored);
+    S.hand_work.push_back(m.hand_work);
+  }
   if (mon_.segment) {
     S.segment_kinetic.push_back(m.segment_kinetic);
     if ((mon_.segment_until < 0 || t <= mon_.segment_until * (1 + 1e-12)) && m.segment_kinetic > res_->segment_kinetic_peak) {

@@ -40,6 +40,8 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   res->vibration_fraction   = (m1.beam_kinetic + m1.beam_strain - Etr - Erot) / Ein;
   res->bat_speed_end            = -m1.beam_momentum / M; // toward the ball (-y)
   res->bat_angular_velocity_end = I_cm > 0 ? -L_cm / I_cm : 0;
+  res->grip_stored_end = m1.grip_stored;
+  res->hand_work_end   = m1.hand_work;
   if (S.Damped()) {
     res->beam_dissipated_end = m1.beam_dissipated;
     res->damping_fraction    = m1.beam_dissipated / Ein;

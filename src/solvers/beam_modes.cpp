@@ -118,6 +118,10 @@ PetscInt                                     n_computed = 0, n_reused = 0;
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 {
   PetscInt n = 0;
+  if (sys.Gripped()) { // the frame's drive is a forcing in time, and the grip's damper not proportional
+    if (why) *why = "the beam is held by the hands (-grip: a time-dependent drive of the swing's frame and a non-proportional damper), which the free-vibration modes do not include";
+    return false;
+  }
   for (PetscInt d = 0; d < sys.ndof; ++d) n += sys.held[d] ? 0 : 1;
   if (n > BeamModesMaxDofs) {
     if (why) *why = "the beam has " + std::to_string(n) + " free dofs, above the " + std::to_string(BeamModesMaxDofs) + " of the dense modal decomposition";

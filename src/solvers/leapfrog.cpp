@@ -34,6 +34,8 @@ public:
   // Damped beam (see leapfrog.hpp): y + beta vh (padded like y), and the dissipated energy
   // with the rate P = v^T C v and dP/dt now and at the start of the last step.
   bool                   damped = false;
+  bool                   gripped = false; // the hands (BeamSystem::grip_*)
+  PetscReal              tf = 0;          // s, the time of the state Force()/ForceDamped() evaluate
   std::vector<PetscReal> yw, cv;
   PetscReal              dissipated = 0, rate = 0, rate_dot = 0, dissipated_prev = 0, rate_prev = 0, rate_dot_prev = 0;
 
@@ -52,6 +54,7 @@ public:
       PetscReal        sum = 0;
       for (PetscInt o = 0; o < W; ++o) sum += r[o] * yi[o];
       a[i] = -sum;
+      if (gripped) a[i] += sys->grip_k[i] * sys->grip_v[i] * tf / sys->mass[i]; // the frame's drive
       v[i] += half_kick * a[i];
     }
     s.c = CompressionOf(s);
@@ -79,13 +82,16 @@ public:
       PetscReal        sum = 0;
       for (PetscInt o = 0; o < W; ++o) sum += r[o] * yi[o];
       a[i] = -sum;
+      if (gripped) // the grip: beta K without its spring, the frame's drive, the damper's frame part
+        a[i] += (beta * sys->grip_k[i] * s.vh[i] + sys->grip_k[i] * sys->grip_v[i] * tf + sys->grip_c[i] * sys->grip_v[i]) / sys->mass[i];
     }
     s.c = CompressionOf(s);
     s.F = ContactForce(ball, *contact, s.c);
     for (PetscInt q = 0; q < 2; ++q) a[g.dof[q]] += gm[q] * s.F;
-    for (PetscInt i = 0; i < n; ++i) {
-      v[i] = (v[i] + half_kick * a[i]) / (1 + half_kick * alpha);
-      a[i] -= alpha * v[i];
+    for (PetscInt i = 0; i < n; ++i) { // the grip's damper c_i/m_i is trapezoidal with alpha
+      const PetscReal ai = gripped ? alpha + sys->grip_c[i] / sys->mass[i] : alpha;
+      v[i]               = (v[i] + half_kick * a[i]) / (1 + half_kick * ai);
+      a[i] -= ai * v[i];
     }
     s.ab = -s.F / ball.mass;
     s.vb += half_kick * s.ab;
@@ -115,6 +121,7 @@ public:
     }
     other->vb = cur->vb + h2 * cur->ab;
     other->yb = cur->yb + tau * other->vb;
+    tf = t + tau;
     if (damped) {
       other->vh = other->v;
       ForceDamped(*other, h2);
@@ -144,6 +151,7 @@ public:
   }
   PetscErrorCode Restart() override
   {
+    tf = t;
     if (damped) { // the acceleration of the new phase at the event state
       ForceDamped(*cur, 0.0);
       DissipationRateNow();
@@ -230,6 +238,7 @@ PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, co
   const PetscReal w = BeamSystemMaxFrequencyBound(sys, g, ContactScalesOf(sys, ball).stiffness, ball.mass);
   if (!sys.Damped()) return 2.0 / w;
   // (2/w)(sqrt(1 + zeta^2) - zeta) with zeta = beta w/2, written without the cancellation.
+  // The mass-like dampers (alpha, the grip's c_i/m_i) are trapezoidal: no bound of their own.
   const PetscReal zeta = 0.5 * sys.damping_stiffness * w;
   return 2.0 / (w * (std::sqrt(1 + zeta * zeta) + zeta));
 }
@@ -274,6 +283,7 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
   S->A.vb     = ball.speed;
   if (!beam_velocity.empty()) S->A.v = beam_velocity; // a swinging bat: a rigid motion (no force)
   S->damped   = sys.Damped();
+  S->gripped  = sys.Gripped();
   if (S->damped) {
     for (LeapfrogState *s : {&S->A, &S->B}) s->vh.assign(sys.ndof, 0.0);
     S->yw.assign(sys.ndof + 2 * sys.bw, 0.0);

@@ -74,9 +74,11 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = fal
     const PetscReal kfac  = damping_only ? S.damping_stiffness : 1.0; // K/m, or its beta K/m part of C/m
     for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], false)] += kfac * vals[q] / S.mass[d];
     if (S.Damped() && !S.held[d]) {
-      if (damping_only) row[rv] += S.damping_mass;
+      // the grip's damper c_d, and beta K without the grip's spring k_d (on the band's diagonal)
+      const PetscReal grip = S.Gripped() ? (S.grip_c[d] - S.damping_stiffness * S.grip_k[d]) / S.mass[d] : 0.0;
+      if (damping_only) row[rv] += S.damping_mass + grip;
       else if (first) { // d(C v/m)/dv in the velocity columns
-        row[rv] += S.damping_mass;
+        row[rv] += S.damping_mass + grip;
         if (S.damping_stiffness != 0.0)
           for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], true)] += S.damping_stiffness * vals[q] / S.mass[d];
       }

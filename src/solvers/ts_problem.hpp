@@ -104,7 +104,7 @@ PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscRe
 // Damped beam: the dissipation rate P = v^T C v (W) and its time derivative dP/dt = 2 a^T C v
 // (W/s) at the state (X, and V for the second-order form, else nullptr), a the acceleration of
 // the residual (contact force of the current phase); summed over ranks.
-PetscErrorCode TSDissipationRate(TSProblem &P, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot);
+PetscErrorCode TSDissipationRate(TSProblem &P, PetscReal t, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot);
 PetscErrorCode TSJacobianCreate(TSProblem &P);
 PetscErrorCode TSJacobianDestroy(TSProblem &P);
 

@@ -18,7 +18,9 @@ namespace beamimpact {
 // v (ghosted like y) is given for a damped beam only; without it the undamped path runs
 // unchanged. C v = alpha M v + beta K v enters as K (y + beta v) + alpha M v: one stiffness
 // application in the factored form, so beta-damping keeps rigid motion force-free.
-static void BeamAcceleration(TSProblem &P, const PetscScalar *y, PetscInt ys, const PetscScalar *v, PetscInt vs, PetscReal F, PetscScalar *out, PetscInt os)
+// With a grip (BeamSystem::grip_*): K y holds its springs k_i y_i; added here are the frame's
+// drive -k_i v_f,i t and the dampers c_i (v_i - v_f,i) (and beta K leaves the springs out).
+static void BeamAcceleration(TSProblem &P, PetscReal t, const PetscScalar *y, PetscInt ys, const PetscScalar *v, PetscInt vs, PetscReal F, PetscScalar *out, PetscInt os)
 {
   const BeamSystem &S     = *P.sys;
   const TSLayout   &L     = P.L;
@@ -31,6 +33,15 @@ static void BeamAcceleration(TSProblem &P, const PetscScalar *y, PetscInt ys, co
       for (PetscInt f = 0; f < nf; ++f) P.work[(i - n0) * nf + f] = y[i * ys + f] + beta * v[i * vs + f];
     BeamSystemStiffnessApply(S, P.work.data() - n0 * nf, nf, L.D0(), L.D1(), out, os);
   } else BeamSystemStiffnessApply(S, y, ys, L.D0(), L.D1(), out, os);
+  if (S.Gripped())
+    for (PetscInt d = L.D0(); d < L.D1(); ++d) {
+      PetscScalar &o = out[(d / nf) * os + d % nf];
+      o -= S.grip_k[d] * S.grip_v[d] * t;
+      if (v) {
+        const PetscScalar vd = v[(d / nf) * vs + d % nf];
+        o += S.grip_c[d] * (vd - S.grip_v[d]) - beta * S.grip_k[d] * vd;
+      }
+    }
   if (F != 0.0)
     for (PetscInt q = 0; q < 2; ++q) {
       const PetscInt d = P.g.dof[q], node = d / nf;
@@ -60,7 +71,7 @@ PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
   PetscCall(TSCompression(P, s.beam, dof, s.ball[0], &c));
   const PetscReal F = ContactForce(P.ball, *P.contact, c);
   PetscCall(TSStateWriteBegin(L, G, &o));
-  BeamAcceleration(P, s.beam, dof, P.sys->Damped() ? s.beam + nf : nullptr, dof, F, o.beam + nf, dof);
+  BeamAcceleration(P, t, s.beam, dof, P.sys->Damped() ? s.beam + nf : nullptr, dof, F, o.beam + nf, dof);
   for (PetscInt d = L.D0(); d < L.D1(); ++d) {
     const PetscInt k = (d / nf) * dof + d % nf;
     o.beam[k + nf]   = -o.beam[k + nf];
@@ -132,7 +143,7 @@ PetscErrorCode TSIFunctionBeam(TS ts, PetscReal t, Vec U, Vec Udot, Vec G, void 
   PetscCall(VecGetArrayRead(Udr, &udr));
   const PetscScalar *udot = ud - dof * L.xs;
   PetscCall(TSStateWriteBegin(L, G, &o));
-  BeamAcceleration(P, s.beam, dof, P.sys->Damped() ? s.beam + nf : nullptr, dof, F, o.beam + nf, dof);
+  BeamAcceleration(P, t, s.beam, dof, P.sys->Damped() ? s.beam + nf : nullptr, dof, F, o.beam + nf, dof);
   for (PetscInt d = L.D0(); d < L.D1(); ++d) {
     const PetscInt k = (d / nf) * dof + d % nf;
     o.beam[k + nf] += udot[k + nf];
@@ -173,7 +184,7 @@ PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, 
   PetscCall(VecGetArrayRead(Ar, &ar));
   const PetscScalar *acc = ab - nf * L.xs;
   PetscCall(TSStateWriteBegin(L, G, &o));
-  BeamAcceleration(P, s.beam, nf, damped ? sv.beam : nullptr, nf, F, o.beam, nf);
+  BeamAcceleration(P, t, s.beam, nf, damped ? sv.beam : nullptr, nf, F, o.beam, nf);
   for (PetscInt d = L.D0(); d < L.D1(); ++d) o.beam[d] += acc[d];
   if (o.ball) o.ball[0] = ar[0] + F / P.ball.mass;
   PetscCall(TSStateWriteEnd(L, G, &o));
@@ -185,7 +196,7 @@ PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSDissipationRate(TSProblem &P, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot)
+PetscErrorCode TSDissipationRate(TSProblem &P, PetscReal t, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot)
 {
   const BeamSystem &S  = *P.sys;
   const TSLayout   &L  = P.L;
@@ -201,7 +212,7 @@ PetscErrorCode TSDissipationRate(TSProblem &P, Vec X, Vec V, PetscReal *rate, Pe
   PetscCall(TSCompression(P, s.beam, dof, s.ball[0], &c));
   const PetscReal        F = ContactForce(P.ball, *P.contact, c);
   std::vector<PetscReal> acc(nown), cv(nown); // -a and C v of the owned dofs
-  BeamAcceleration(P, s.beam, dof, v, vs, F, acc.data() - L.D0(), nf);
+  BeamAcceleration(P, t, s.beam, dof, v, vs, F, acc.data() - L.D0(), nf);
   BeamSystemDampingApply(S, v, vs, L.D0(), L.D1(), cv.data() - L.D0(), nf);
   sums[0] = BeamSystemDissipationRate(S, v, vs, L.D0(), L.D1());
   for (PetscInt k = 0; k < nown; ++k) sums[1] -= 2 * acc[k] * cv[k];

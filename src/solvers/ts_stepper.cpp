@@ -113,7 +113,7 @@ public:
     PetscCall(TSModalDissipationRate(ts, r, rdot, &modal)); // -ts_type modal: from its modes, O(modes)
     if (modal) PetscFunctionReturn(0);
     PetscCall(Solution(&X, &Vel));
-    PetscCall(TSDissipationRate(P, X, Vel, r, rdot));
+    PetscCall(TSDissipationRate(P, Time(), X, Vel, r, rdot));
     PetscFunctionReturn(0);
   }
   // D over the step of length h just taken, by the corrected trapezoidal (Hermite) rule on
@@ -473,7 +473,7 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   const BeamSystem &sys = *S.P.sys;
   // Damped: the largest step with every mode's eigenvalues -zeta w +- w sqrt(zeta^2 - 1),
   // zeta = alpha/(2w) + beta w/2, w <= omega_max, in the stability region (rk_stability.hpp).
-  S.info.dt_stable = sys.Damped() ? RKDampedStabilityBound(s, A, b, S.info.omega_max_bound, sys.damping_mass, sys.damping_stiffness) : ystar / S.info.omega_max_bound;
+  S.info.dt_stable = sys.Damped() ? RKDampedStabilityBound(s, A, b, S.info.omega_max_bound, sys.damping_mass + BeamSystemGripRate(sys), sys.damping_stiffness) : ystar / S.info.omega_max_bound;
   PetscReal dt;
   PetscBool dt_set;
   PetscCall(TSGetTimeStep(S.ts, &dt));

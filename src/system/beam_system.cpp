@@ -2,6 +2,8 @@
 // beam_system.hpp.
 #include "system/beam_system.hpp"
 
+#include "model/grip.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,6 +54,22 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
         S.band[(size_t)width * i + (j - i + S.bw)] += t.weight * (t.b[a] * t.b[b]); // symmetric to the bit
       }
     }
+  if (p.grip.on) { // the hands: k_i on the diagonal of K, c_i in C, the hand mass on the dofs
+    const std::vector<PetscReal> w    = GripNodeWeights(p.grip, S.nodes, S.L);
+    const PetscReal              span = p.grip.x_b - p.grip.x_a;
+    S.grip_k.assign(S.ndof, 0.0);
+    S.grip_c.assign(S.ndof, 0.0);
+    S.grip_v.assign(S.ndof, 0.0);
+    for (PetscInt i = 0; i < S.nodes; ++i) {
+      const PetscInt d = S.Dof(i);
+      if (S.held[d] || w[i] == 0.0) continue;
+      S.grip_k[d] = p.grip.stiffness * w[i];
+      S.grip_c[d] = p.grip.damping * w[i];
+      S.mass[d] += p.grip.mass * w[i] / span;
+      S.band[(size_t)width * d + S.bw] += S.grip_k[d];
+      S.grip_damping += S.grip_c[d];
+    }
+  }
   return true;
 }
 
@@ -86,6 +104,9 @@ void BeamSystemStiffnessApply(const BeamSystem &sys, const PetscReal *y, PetscIn
     for (PetscInt q = 0; q < t.n; ++q)
       if (t.dof[q] >= d0 && t.dof[q] < d1) fi(t.dof[q]) += t.b[q] * e;
   }
+  if (sys.Gripped())
+    for (PetscInt d = d0; d < d1; ++d)
+      if (sys.grip_k[d] != 0.0) fi(d) += sys.grip_k[d] * yi(d);
   for (PetscInt d = d0; d < d1; ++d)
     if (sys.held[d]) fi(d) = 0.0;
 }
@@ -171,8 +192,10 @@ void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt 
   const PetscReal a = sys.damping_mass, b = sys.damping_stiffness;
   if (b != 0.0) BeamSystemStiffnessApply(sys, v, ns, d0, d1, f, os);
   for (PetscInt d = d0; d < d1; ++d) {
-    PetscReal &fd = f[(d / F) * os + d % F];
-    fd            = sys.held[d] ? 0.0 : (b != 0.0 ? b * fd : 0.0) + a * sys.mass[d] * v[(d / F) * ns + d % F];
+    PetscReal      &fd = f[(d / F) * os + d % F];
+    const PetscReal vd = v[(d / F) * ns + d % F];
+    fd                 = sys.held[d] ? 0.0 : (b != 0.0 ? b * fd : 0.0) + a * sys.mass[d] * vd;
+    if (sys.Gripped() && !sys.held[d]) fd += sys.grip_c[d] * (vd - sys.grip_v[d]) - b * sys.grip_k[d] * vd; // beta damps the beam's K only
   }
 }
 
@@ -182,6 +205,59 @@ PetscReal BeamSystemDissipationRate(const BeamSystem &sys, const PetscReal *v, P
   PetscReal       r = 0.0;
   if (a != 0.0) r += 2 * a * BeamSystemKineticEnergy(sys, v, ns, d0, d1);
   if (b != 0.0) r += 2 * b * BeamSystemStrainEnergy(sys, v, ns, d0, d1);
+  if (sys.grip_damping > 0) {
+    const PetscInt F = sys.fields;
+    for (PetscInt d = d0; d < d1; ++d) {
+      const PetscReal u = v[(d / F) * ns + d % F] - sys.grip_v[d];
+      r += sys.grip_c[d] * u * u;
+    }
+  }
+  return r;
+}
+
+PetscReal BeamSystemGripEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt ns, PetscInt d0, PetscInt d1, PetscReal t)
+{
+  const PetscInt F = sys.fields;
+  PetscReal      U = 0.0;
+  if (!sys.Gripped()) return 0.0;
+  for (PetscInt d = d0; d < d1; ++d) {
+    const PetscReal u = y[(d / F) * ns + d % F] - sys.grip_v[d] * t;
+    U += sys.grip_k[d] * u * u;
+  }
+  return 0.5 * U;
+}
+
+void BeamSystemGripForce(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal t, PetscReal *force, PetscReal *moment)
+{
+  const PetscInt F = sys.fields;
+  if (!sys.Gripped()) return;
+  for (PetscInt d = d0; d < d1; ++d) {
+    if (sys.grip_k[d] == 0.0 && sys.grip_c[d] == 0.0) continue;
+    const PetscReal f = sys.grip_k[d] * (y[(d / F) * ys + d % F] - sys.grip_v[d] * t) + sys.grip_c[d] * (v[(d / F) * vs + d % F] - sys.grip_v[d]);
+    *force += f;
+    *moment += sys.NodeX(d / F) * f;
+  }
+}
+
+PetscReal BeamSystemGripDrive(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1)
+{
+  const PetscInt F = sys.fields;
+  PetscReal      Q = 0.0;
+  if (!sys.Gripped()) return 0.0;
+  for (PetscInt d = d0; d < d1; ++d) Q += sys.grip_v[d] * sys.mass[d] * (v[(d / F) * vs + d % F] + sys.damping_mass * y[(d / F) * ys + d % F]);
+  return Q;
+}
+
+PetscReal BeamSystemGripFrameAt(const BeamSystem &sys, const ContactCoupling &g)
+{
+  return sys.Gripped() ? g.w[0] * sys.grip_v[g.dof[0]] + g.w[1] * sys.grip_v[g.dof[1]] : 0.0;
+}
+
+PetscReal BeamSystemGripRate(const BeamSystem &sys)
+{
+  PetscReal r = 0.0;
+  if (sys.Gripped())
+    for (PetscInt d = 0; d < sys.ndof; ++d) r = std::max(r, sys.grip_c[d] / sys.mass[d]);
   return r;
 }
 

@@ -35,11 +35,23 @@ struct BeamSystem {
   PetscReal               frequency_unit = 0; // rad/s, sqrt(EI/mu)/L^2
   PetscReal               damping_mass = 0;      // 1/s, alpha: C = alpha M + beta K (Rayleigh)
   PetscReal               damping_stiffness = 0; // s,   beta
+  // The hands (BeamParams::grip; empty vectors without a grip): per dof the grip's spring k_i
+  // (N/m, also on the diagonal of band and in K y), damper c_i (N s/m, in C v beside the
+  // Rayleigh terms) and the velocity of the swing's rigid frame v_f,i (m/s, set by the driver:
+  // zero for a bat at rest). The force of the hands on dof i is
+  //   -k_i (y_i - v_f,i t) - c_i (v_i - v_f,i).
+  // grip_drive0: r^T M v + m_b r_b v_b + alpha r^T M y at t = 0 (r = v_f; the hands' work is its
+  // change, BeamSystemGripDrive).
+  std::vector<PetscReal>  grip_k, grip_c, grip_v;
+  PetscReal               grip_damping = 0;      // N s/m, sum of c_i (> 0: the grip damps)
+  PetscReal               grip_drive0 = 0;       // kg m^2/s^2
+
+  bool      Gripped() const { return !grip_k.empty(); }
 
   PetscInt  Dof(PetscInt node, PetscInt field = 0) const { return node * fields + field; }
   PetscReal NodeX(PetscInt node) const { return node * h; }
   // Ghost width (nodes) a distributed state needs for K y and the strain energy.
-  bool      Damped() const { return damping_mass > 0 || damping_stiffness > 0; }
+  bool      Damped() const { return damping_mass > 0 || damping_stiffness > 0 || grip_damping > 0; }
   PetscInt  GhostNodes() const { return (std::max(bw, 2 * reach) + fields - 1) / fields; }
 };
 
@@ -92,6 +104,21 @@ void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt 
 // + beta sum_k weight_k (b_k . v)^2, a sum of squares (>= 0 by construction, no cancellation);
 // sums over a partition of the dofs add up to the whole. v as y of BeamSystemStrainEnergy.
 PetscReal BeamSystemDissipationRate(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
+
+// The grip (BeamSystem::grip_*), for dofs [d0, d1); y, v as for BeamSystemStrainEnergy.
+// Stored energy 1/2 sum k_i (y_i - v_f,i t)^2 (J).
+PetscReal BeamSystemGripEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal t);
+// The force of the beam on the hands, sum k_i (y_i - v_f,i t) + c_i (v_i - v_f,i) (N), and its
+// moment about x = 0, sum x_i (...) (N m), added to *force and *moment.
+void BeamSystemGripForce(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal t, PetscReal *force, PetscReal *moment);
+// The beam's share of the hands' drive Q = r^T M v + alpha r^T M y (r = v_f), whose change
+// (with the ball's m_b r_b v_b) is the work the hands do on the bat: for a free beam K r = 0,
+// so dQ/dt = r^T F_hands (docs/model.md, "The hands").
+PetscReal BeamSystemGripDrive(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1);
+// The frame's velocity at the ball's impact point, r_b = g^T v_f (m/s; 0 without a grip).
+PetscReal BeamSystemGripFrameAt(const BeamSystem &sys, const ContactCoupling &g);
+// Largest c_i/m_i (1/s) over the grip (0 without one): the stability bounds treat it as alpha.
+PetscReal BeamSystemGripRate(const BeamSystem &sys);
 
 } // namespace beamimpact
 
