@@ -11,7 +11,8 @@ frequencies, and the nodes of the first two (where a tap excites nothing: /modes
 nodes_2). The title gives the theory, the mass and the moments of inertia the file records.
 
 With --sweep (a -task sweep file of the same bat, e.g. a swinging bat) a third panel draws the
-batted-ball speed (or --column) against the impact point and marks the three sweet spots: the
+batted-ball speed (or --column) against the impact point, the peak force on the hands when the
+sweep had them (-grip; right axis), and marks the three sweet spots: the
 maximum of the curve (refined by a parabola through the best three points), the barrel node of
 the fundamental (the largest of nodes_1), and the centre of percussion about the pivot or the
 hands x_p (--pivot, m from x = 0): x_cop = x_p + I_p / (M (x_cm - x_p)), I_p = I_cm + M (x_cm - x_p)^2,
@@ -63,6 +64,13 @@ def sweet_spots(ax, a, info, nodes_1):
         print("sweet spot: %s at %.4f m" % (name, xs))
     ax.set_ylabel(a.column + (" (m/s)" if a.column == "bbs" else ""))
     ax.legend(fontsize=8, loc="lower left")
+    with h5py.File(a.sweep, "r") as f:  # the hands, when the sweep had them
+        hands = f["results/grip_force_peak"][:][ok][order] if "grip_force_peak" in f["results"] else None
+    if hands is not None and np.any(hands > 0):
+        ax2 = ax.twinx()
+        ax2.plot(x, hands, color="0.5", lw=1, ls=":", label="peak force on the hands")
+        ax2.set_ylabel("peak force on the hands (N)", color="0.4")
+        ax2.legend(fontsize=8, loc="lower right")
 
 
 def main():

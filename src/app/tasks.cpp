@@ -90,6 +90,9 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
     PetscCall(PetscPrintf(comm, "swinging bat (V_cm %g m/s, Omega %g rad/s): batted-ball speed %.4f m/s, collision efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
                           (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs, (double)r.collision_efficiency, (double)r.bat_speed_end,
                           (double)r.bat_angular_velocity_end));
+  if (sc.beam.grip.on)
+    PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
+                          (double)sc.beam.grip.x_b, (double)r.grip_force_peak, (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
   if (sc.beam.has_pivot) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
     PetscCall(PetscPrintf(comm, "pivot at %.4f m: I_p %.5f kg m^2, recoil factor r %.6f, e_A %.6f, BBCOR = e_A (1 + r) + r = %.6f\n", (double)sc.beam.pivot_x, (double)rig.inertia_pivot,

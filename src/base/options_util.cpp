@@ -14,7 +14,7 @@ PetscErrorCode OptionsAsString(std::string *all)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes)
+PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes, bool strict_solver_options)
 {
   PetscInt    n;
   char      **names, **values;
@@ -36,7 +36,7 @@ PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> 
     std::string item = std::string(" -") + names[i] + (values[i] ? std::string(" ") + values[i] : std::string());
     bool        petsc = false;
     for (const char *p : petsc_prefixes) petsc = petsc || std::string(names[i]).rfind(p, 0) == 0;
-    if (petsc) {
+    if (petsc && !strict_solver_options) {
       noted++;
       notes += item;
       continue;

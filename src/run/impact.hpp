@@ -40,6 +40,7 @@ struct ImpactParams {
   PetscReal energy_growth_tol = 1e-3;   // relative to the incident kinetic energy
   PetscBool check_unused_options = PETSC_FALSE; // not an option: the task asks for the check once the TS is set up
   PetscBool report_setup = PETSC_FALSE; // not an option: print the integrator, its step and stability limit before the run
+  PetscBool strict_solver_options = PETSC_FALSE; // not an option: left-over PETSc solver options are errors (a study's configuration)
 };
 
 // What to record during the run (nothing by default): -monitor_* and -snapshot_times.

@@ -245,6 +245,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
   PetscCall(ImpactSetupBuild(comm, sc, &s));
   set.check_unused_options = sc.impact.check_unused_options;
   set.report_setup         = sc.impact.report_setup;
+  set.strict_solver_options = sc.impact.strict_solver_options;
   PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &st, res));
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
   PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));

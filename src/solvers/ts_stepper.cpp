@@ -440,7 +440,7 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   }
   PetscCall(TSSetErrorIfStepFails(S.ts, PETSC_FALSE)); // failures are explained by TSCheckStep
   PetscCall(TSSetUp(S.ts));
-  if (set.check_unused_options) PetscCall(OptionsCheckUnused(S.P.L.comm));
+  if (set.check_unused_options) PetscCall(OptionsCheckUnused(S.P.L.comm, {}, set.strict_solver_options));
   if (S.P.form != Formulation::Explicit) { // the last Newton solve's residual history explains a failure
     SNES snes;
     PetscCall(TSGetSNES(S.ts, &snes));

@@ -17,6 +17,7 @@ namespace beamimpact {
 struct TSStepperSettings {
   bool check_unused_options = false; // an option set but not used by the TS set-up is an error
   bool report_setup         = false; // print the integrator, its step and stability limit, and resolution warnings
+  bool strict_solver_options = false; // with check_unused_options: left-over PETSc solver options are errors too, not notes
 };
 
 // Creates the stepper at t = 0 with the beam at rest and the ball touching it at the impact

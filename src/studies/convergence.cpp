@@ -160,11 +160,12 @@ PetscErrorCode RunInPushedOptions(MPI_Comm comm, const ConvergenceConfig &cfg, c
   PetscFunctionBeginUser;
   Scenario sc                    = sc_in;
   sc.impact.check_unused_options = PETSC_TRUE;
+  sc.impact.strict_solver_options = PETSC_TRUE; // a configuration runs as written: a misspelt -ts_ option fails its runs
   sc.monitor                     = MonitorRequest(); // no time series
   if (cfg.method == "leapfrog") {
     LeapfrogParams lp;
     PetscCall(LeapfrogParamsFromOptions(comm, &lp));
-    PetscCall(OptionsCheckUnused(comm));
+    PetscCall(OptionsCheckUnused(comm, {}, true));
     PetscCall(LeapfrogRun(sc, lp, res));
   } else {
     PetscCall(ImpactRun(comm, sc, res));
