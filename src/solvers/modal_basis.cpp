@@ -325,37 +325,4 @@ PetscReal ModalModeBound(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd
   return std::hypot(l[0], l[1]) * std::hypot(w * z, zd);
 }
 
-bool ModalFirstCrossing(const ModalPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)
-{
-  const PetscReal bound = std::max(ph.Bound(p + 2), 1e-300);
-  PetscReal       s     = 0.0;
-  PetscReal       f     = sign * ph.Derivative(s, p);
-  // Leave a root we start on (the previous event) towards the side of the search.
-  int guard = 0;
-  while (f <= 0 && s < s_end && guard++ < 1000) {
-    s = std::min(s_end, s + s_min * (1 << std::min(guard, 20)));
-    f = sign * ph.Derivative(s, p);
-  }
-  if (f <= 0) return false;
-  while (s < s_end) {
-    const PetscReal fd   = sign * ph.Derivative(s, p + 1);
-    PetscReal       step = fd >= 0 ? std::sqrt(2 * f / bound) : (fd + std::sqrt(fd * fd + 2 * bound * f)) / bound;
-    step                 = std::max(step, s_min);
-    const PetscReal sn   = std::min(s_end, s + step);
-    const PetscReal fn   = sign * ph.Derivative(sn, p);
-    if (fn <= 0) { // bracketed: bisect to round-off, return the post side
-      PetscReal a = s, b = sn;
-      for (int it = 0; it < 200 && b - a > 4 * std::numeric_limits<PetscReal>::epsilon() * b; ++it) {
-        const PetscReal m = 0.5 * (a + b);
-        (sign * ph.Derivative(m, p) > 0 ? a : b) = m;
-      }
-      *root = b;
-      return true;
-    }
-    s = sn;
-    f = fn;
-  }
-  return false;
-}
-
 } // namespace beamimpact

@@ -75,41 +75,6 @@ struct ModalDampedPhase {
   PetscReal Dissipated(PetscReal s) const;
 };
 
-// ModalFirstCrossing (modal_basis.hpp) for any phase with Derivative(s, p) and Bound(p): the
-// same safe-step bracketing and bisection.
-template <class Phase>
-bool ModalFirstCrossingOf(const Phase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)
-{
-  const PetscReal bound = std::max(ph.Bound(p + 2), 1e-300);
-  PetscReal       s     = 0.0;
-  PetscReal       f     = sign * ph.Derivative(s, p);
-  int             guard = 0;
-  while (f <= 0 && s < s_end && guard++ < 1000) {
-    s = std::min(s_end, s + s_min * (1 << std::min(guard, 20)));
-    f = sign * ph.Derivative(s, p);
-  }
-  if (f <= 0) return false;
-  while (s < s_end) {
-    const PetscReal fd   = sign * ph.Derivative(s, p + 1);
-    PetscReal       step = fd >= 0 ? std::sqrt(2 * f / bound) : (fd + std::sqrt(fd * fd + 2 * bound * f)) / bound;
-    step                 = std::max(step, s_min);
-    const PetscReal sn   = std::min(s_end, s + step);
-    const PetscReal fn   = sign * ph.Derivative(sn, p);
-    if (fn <= 0) {
-      PetscReal a = s, b = sn;
-      for (int it = 0; it < 200 && b - a > 4 * std::numeric_limits<PetscReal>::epsilon() * b; ++it) {
-        const PetscReal mid = 0.5 * (a + b);
-        (sign * ph.Derivative(mid, p) > 0 ? a : b) = mid;
-      }
-      *root = b;
-      return true;
-    }
-    s = sn;
-    f = fn;
-  }
-  return false;
-}
-
 inline bool ModalFirstCrossing(const ModalDampedPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)
 {
   return ModalFirstCrossingOf(ph, p, sign, s_end, s_min, root);
