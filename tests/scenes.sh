@@ -75,7 +75,7 @@ check() {
 # stats: min max mean of the numbers on stdin
 stats() { awk 'NR == 1 { lo = hi = $1 } { s += $1; if ($1 < lo) lo = $1; if ($1 > hi) hi = $1 } END { printf "%.6g %.6g %.6g\n", lo, hi, s / NR }'; }
 
-# --- modes: periods against (beta L)^2 sqrt(EI/(mu L^4)) (MODEL.md tables) ------------------
+# --- modes: periods against (beta L)^2 sqrt(EI/(mu L^4)) (the beta L tables of docs/model.md) ------------------
 # modes_check NAME RIGID TOL1 TOL BETA1 BETA2 BETA3 BETA4: relative errors of the first four
 # flexural periods; prints the largest, for the convergence check
 modes_check() {

@@ -1,4 +1,4 @@
-// The semi-discrete beam operator of beam.hpp against formulas (MODEL.md section 2):
+// The semi-discrete beam operator of beam.hpp against formulas (docs/model.md):
 // symmetry and null space of K, the 5-point stencil EI/h^3 (1,-4,6,-4,1) and the
 // ghost-node rows at the ends, fourth differences of polynomials, energies,
 // masses, the impact stencil and the -beam_* options reader.

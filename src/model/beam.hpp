@@ -1,4 +1,4 @@
-// Euler-Bernoulli beam, semi-discretised on N nodes (MODEL.md sections 1-2).
+// Euler-Bernoulli beam, semi-discretised on N nodes (docs/model.md).
 //
 //   mu y_tt = f - (EI y_xx)_xx        on x in [0, L],  units: SI (m, kg, s, N).
 //

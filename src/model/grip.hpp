@@ -1,4 +1,4 @@
-// The hands on the handle (issue 13, MODEL.md section 7 "The hand"): a distributed spring-damper
+// The hands on the handle (docs/model.md, "The hands"): a distributed spring-damper
 // over [x_a, x_b] tying the handle's deflection to the swing's rigid frame. On the grid each node
 // of the grip carries the share of the span that its dual cell [x_i - h/2, x_i + h/2] covers
 // (the shares add up to x_b - x_a), so node i gets the spring k_i = k' w_i (N/m), the damper

@@ -1,4 +1,4 @@
-// Rigid-body model of the collision (MODEL.md, Eq. 11): the beam as a rigid
+// Rigid-body model of the collision (docs/model.md: Eq. 11 of the paper): the beam as a rigid
 // body of mass M (kg) and moment of inertia I_cm (kg m^2), struck at distance
 // b_cm (m) from its centre of mass, hand force neglected.
 //   M_e = M / (1 + M b_cm^2 / I_cm),  R = m_b / M_e,
