@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <deque>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,50 +56,67 @@ void ModeForced(PetscReal w, PetscReal sg, int m, PetscReal t, PetscReal *rz, Pe
   *rv = Pd + hv;
 }
 
+// 1/i!, i < 24.
+const std::array<PetscReal, 24> kInvFact = [] {
+  std::array<PetscReal, 24> f;
+  f[0] = 1.0;
+  for (int i = 1; i < 24; ++i) f[i] = f[i - 1] / i;
+  return f;
+}();
+
 // An undamped mode over t, x = w t: cos x, sin x and the functions of the forced responses
 // from rest, sinc = sin x / x, f2 = (1 - cos x)/x^2, f3 = (x - sin x)/x^3, g4 = (x^2 - 2(1 - cos x))/x^4,
-// by their series below x = 0.5 (no cancellation; exact for a rigid mode, x = 0).
+// from cos x, sin x and omc = 1 - cos x (given without cancellation), by their series below
+// x = 0.5 (no cancellation; exact for a rigid mode, x = 0).
 struct UndampedForced {
   PetscReal c, sn, sinc, f2, f3, g4;
-  UndampedForced(PetscReal w, PetscReal t)
+  UndampedForced(PetscReal x, PetscReal cx, PetscReal sx, PetscReal omc) : c(cx), sn(sx)
   {
-    const PetscReal x = w * t, x2 = x * x;
-    c  = std::cos(x);
-    sn = std::sin(x);
+    const PetscReal x2 = x * x;
     if (x < 0.5) {
       // sum_j (-1)^j x^(2j) / (2j + p)!, p = 1, 2, 3, 4; 9 terms: x^18/18! < 1e-21
-      static const std::vector<PetscReal> ifact = [] {
-        std::vector<PetscReal> f(24, 1.0);
-        for (int i = 1; i < 24; ++i) f[i] = f[i - 1] / i;
-        return f;
-      }();
+      // (stopped once a term is below 1e-20 of the sum's leading term: it no longer changes it)
       PetscReal s1 = 0, s2 = 0, s3 = 0, s4 = 0, xp = 1;
       for (int j = 0; j < 9; ++j, xp *= -x2) {
-        s1 += xp * ifact[2 * j + 1];
-        s2 += xp * ifact[2 * j + 2];
-        s3 += xp * ifact[2 * j + 3];
-        s4 += xp * ifact[2 * j + 4];
+        s1 += xp * kInvFact[2 * j + 1];
+        s2 += xp * kInvFact[2 * j + 2];
+        s3 += xp * kInvFact[2 * j + 3];
+        s4 += xp * kInvFact[2 * j + 4];
+        if (std::abs(xp) * kInvFact[2 * j + 1] < 1e-20) break;
       }
       sinc = s1, f2 = s2, f3 = s3, g4 = 2 * s4;
     } else {
-      const PetscReal hs = std::sin(0.5 * x), omc = 2 * hs * hs; // 1 - cos x
-      sinc = sn / x;
-      f2   = omc / x2;
-      f3   = (x - sn) / (x2 * x);
-      g4   = (x2 - 2 * omc) / (x2 * x2);
+      const PetscReal ix = 1 / x, ix2 = ix * ix;
+      sinc = sn * ix;
+      f2   = omc * ix2;
+      f3   = (x - sn) * (ix2 * ix);
+      g4   = (x2 - 2 * omc) * (ix2 * ix2);
     }
   }
 };
 
-// Everything a step of length h needs, per mode, cached by h. The force over the step is the
-// polynomial through its values at the nodes tau_j h (order 2: 0, 1; order 4: 0, 1/2, 1),
-// F(s) = sum_j F_j l_j(s/h).
+// cos, sin and 1 - cos of 2y from cos y and sin y (no cancellation: 1 - cos 2y = 2 sin^2 y).
+inline void TrigDoubled(PetscReal cy, PetscReal sy, PetscReal *c, PetscReal *s, PetscReal *omc)
+{
+  *omc = 2 * sy * sy;
+  *c   = 1 - *omc;
+  *s   = 2 * sy * cy;
+}
+// 1 - cos y from cos y and sin y without cancellation.
+inline PetscReal OneMinusCos(PetscReal cy, PetscReal sy) { return cy > 0 ? sy * sy / (1 + cy) : 1 - cy; }
+
+// Everything a step of length h needs, per mode (arrays over the modes k), cached by h. The
+// force over the step is the polynomial through its values at the nodes tau_j h (order 2: 0,
+// 1; order 4: 0, 1/2, 1), F(s) = sum_j F_j l_j(s/h). The coupling gamma_k is folded in where
+// the step uses it with a weight.
 struct StepWeights {
   PetscReal              h = 0;
-  std::vector<PetscReal> a;      // 4 per mode: the exact free propagator over h
-  std::vector<PetscReal> am;     // 2 per mode: its first row over h/2 (order 4)
-  std::vector<PetscReal> rz, rv; // [j n + k]: mode k's displacement and velocity at h forced by l_j
-  PetscReal              W[3][3] = {{0}}; // dc(tau_i h) / dF_j (beam and ball), i >= 1
+  unsigned long          used = 0;            // last use (least recently used slot is refilled)
+  std::vector<PetscReal> a0, a1, a2, a3;      // the exact free propagator over h: [z, zd] -> [a0 z + a1 zd, a2 z + a3 zd]
+  std::vector<PetscReal> gm0, gm1;            // gamma times its first row over h/2 (order 4)
+  std::vector<PetscReal> g0, g1;              // gamma times its first row over h
+  std::vector<PetscReal> R[3], V[3];          // gamma times mode k's displacement and velocity at h forced by l_j
+  PetscReal              W[3][3] = {{0}};     // dc(tau_i h) / dF_j (beam and ball), i >= 1
   PetscReal              by[3] = {0}, bv[3] = {0}; // ball's displacement and velocity at h per unit F_j (times m_b)
 };
 constexpr size_t kWeightsCache = 8; // the nominal step and a few event steps
@@ -113,10 +130,14 @@ struct ModalTS {
   std::vector<PetscReal>           gamma, omega, sigma;        // per mode
   std::vector<PetscReal>           isqm;                       // 1/sqrt(m) per free dof
   std::vector<PetscInt>            free_of;                    // beam dof -> free dof (-1: held)
-  std::deque<StepWeights>          weights;
-  // The modal state and the start of the last step (rollback).
+  std::vector<StepWeights>         weights;                    // at most kWeightsCache slots
+  unsigned long                    uses = 0;
+  // The modal state and the start of the last step (rollback); the compression c = y_b -
+  // gamma . z and its rate at the current state (c_valid) and at the start of the last step.
   std::vector<PetscReal> z, zd, z0, zd0;
   PetscReal              yb = 0, vb = 0, yb0 = 0, vb0 = 0;
+  PetscReal              c = 0, cd = 0, c0 = 0, cd0 = 0;
+  bool                   c_valid = false;
   bool                   have_modal = false, have_step = false;
   // The physical vector ts->vec_sol: whether it holds the modal state (phys_valid), the
   // object and state it had when last written or projected, and a copy of that content.
@@ -125,7 +146,8 @@ struct ModalTS {
   PetscObjectState vec_state  = 0;
   Vec              Xc = nullptr, all = nullptr;
   VecScatter       gather = nullptr;
-  PetscInt         projections = 0, syncs = 0, newton_fail = 0;
+  std::vector<PetscReal> sy, sv;                                // Project's scaled state
+  PetscInt         projections = 0, syncs = 0, kept = 0, newton_fail = 0, weight_sets = 0;
 };
 
 ModalTS *Data(TS ts) { return static_cast<ModalTS *>(ts->data); }
@@ -136,86 +158,122 @@ const PetscReal kTau2[2] = {0, 1}, kTau4[3] = {0, 0.5, 1};
 const PetscReal kL2[2][3] = {{1, -1, 0}, {0, 1, 0}};
 const PetscReal kL4[3][3] = {{1, -3, 2}, {0, 4, -4}, {0, -1, 2}};
 
-const StepWeights &WeightsOf(ModalTS &m, PetscReal h)
+// The weights of a step of length h into W (its arrays sized already), for s = StageCount
+// nodes (a template: the small loops over nodes and powers unroll into registers).
+template <PetscInt s>
+void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W)
 {
-  for (const StepWeights &w : m.weights)
-    if (w.h == h) return w;
-  const PetscInt   s    = StageCount(m.order), n = m.n;
-  const PetscReal *tau  = m.order == 2 ? kTau2 : kTau4;
-  const PetscReal(*L)[3] = m.order == 2 ? nullptr : kL4;
-  auto Lc               = [&](PetscInt j, PetscInt q) { return L ? L[j][q] : kL2[j][q]; };
-  StepWeights      W;
+  const PetscInt   n    = m.n;
+  const PetscReal *tau  = s == 2 ? kTau2 : kTau4;
+  auto             Lc   = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
+  const PetscReal  mb   = m.P->ball.mass;
+  PetscReal        coef[3][3] = {{0}}; // l_j(s/h) = sum_q coef[j][q] s^q
+  PetscReal        hq[3] = {1, h, h * h};
+  PetscReal        Wacc[3][3] = {{0}}; // W.W, accumulated here (not through memory the stores below may alias)
   W.h = h;
-  W.a.resize(4 * (size_t)n);
-  W.am.resize(2 * (size_t)n);
-  W.rz.assign((size_t)s * n, 0.0);
-  W.rv.assign((size_t)s * n, 0.0);
-  const PetscReal mb = m.P->ball.mass;
-  PetscReal       coef[3][3] = {{0}}; // l_j(s/h) = sum_q coef[j][q] s^q
+  for (PetscInt i = 0; i < 3; ++i) W.by[i] = W.bv[i] = 0;
   for (PetscInt j = 0; j < s; ++j)
-    for (PetscInt q = 0; q < s; ++q) coef[j][q] = Lc(j, q) / std::pow(h, (PetscReal)q);
+    for (PetscInt q = 0; q < s; ++q) coef[j][q] = Lc(j, q) / hq[q];
   for (PetscInt k = 0; k < n; ++k) {
-    const PetscReal w = m.omega[k], sg = m.sigma[k], g2 = m.gamma[k] * m.gamma[k];
-    if (sg == 0.0) { // undamped (rigid modes included): closed forms in x = w t, one sin and cos per time
+    const PetscReal w = m.omega[k], sg = m.sigma[k], gk = m.gamma[k], g2 = gk * gk;
+    if (sg == 0.0) { // undamped (rigid modes included): closed forms in x = w t, one sincos per mode
+      // The trigonometric functions at the last node (h) and, for order 4, at h/2, from one sincos.
+      PetscReal cx[3], sx[3], omc[3];
+      if (s == 3) {
+        const PetscReal y = 0.5 * w * h, cy = std::cos(y), sy = std::sin(y);
+        cx[1] = cy, sx[1] = sy, omc[1] = OneMinusCos(cy, sy);
+        TrigDoubled(cy, sy, &cx[2], &sx[2], &omc[2]);
+      } else {
+        const PetscReal y = 0.5 * w * h, cy = std::cos(y), sy = std::sin(y);
+        TrigDoubled(cy, sy, &cx[1], &sx[1], &omc[1]);
+      }
       for (PetscInt i = 1; i < s; ++i) {
         const PetscReal t = tau[i] * h;
-        UndampedForced  u(w, t);
+        UndampedForced  u(w * t, cx[i], sx[i], omc[i]);
         const PetscReal rz[3] = {t * t * u.f2, t * t * t * u.f3, t * t * t * t * u.g4}, rv[3] = {t * u.sinc, t * t * u.f2, 2 * t * t * t * u.f3};
         if (i == s - 1) {
-          PetscReal *a = &W.a[4 * k];
-          a[0] = u.c, a[1] = t * u.sinc, a[2] = -w * u.sn, a[3] = u.c;
-        } else W.am[2 * k] = u.c, W.am[2 * k + 1] = t * u.sinc;
+          W.a0[k] = u.c, W.a1[k] = t * u.sinc, W.a2[k] = -w * u.sn, W.a3[k] = u.c;
+          W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
+        } else W.gm0[k] = gk * u.c, W.gm1[k] = gk * (t * u.sinc);
         for (PetscInt j = 0; j < s; ++j) {
-          PetscReal z = 0, v = 0;
+          PetscReal zz = 0, v = 0;
           for (PetscInt q = 0; q < s; ++q) {
-            z += coef[j][q] * rz[q];
+            zz += coef[j][q] * rz[q];
             v += coef[j][q] * rv[q];
           }
-          W.W[i][j] += g2 * z;
+          Wacc[i][j] += g2 * zz;
           if (i == s - 1) {
-            W.rz[j * n + k] = z;
-            W.rv[j * n + k] = v;
+            W.R[j][k] = gk * zz;
+            W.V[j][k] = gk * v;
           }
         }
       }
       continue;
     }
-    ModalModeAt(w, sg, 1.0, 0.0, h, &W.a[4 * k], &W.a[4 * k + 2]);
-    ModalModeAt(w, sg, 0.0, 1.0, h, &W.a[4 * k + 1], &W.a[4 * k + 3]);
+    ModalModeAt(w, sg, 1.0, 0.0, h, &W.a0[k], &W.a2[k]);
+    ModalModeAt(w, sg, 0.0, 1.0, h, &W.a1[k], &W.a3[k]);
+    W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
     if (s == 3) {
-      PetscReal dummy;
-      ModalModeAt(w, sg, 1.0, 0.0, 0.5 * h, &W.am[2 * k], &dummy);
-      ModalModeAt(w, sg, 0.0, 1.0, 0.5 * h, &W.am[2 * k + 1], &dummy);
+      PetscReal dummy, am0, am1;
+      ModalModeAt(w, sg, 1.0, 0.0, 0.5 * h, &am0, &dummy);
+      ModalModeAt(w, sg, 0.0, 1.0, 0.5 * h, &am1, &dummy);
+      W.gm0[k] = gk * am0, W.gm1[k] = gk * am1;
     }
+    PetscReal Rk[3] = {0, 0, 0}, Vk[3] = {0, 0, 0};
     for (PetscInt q = 0; q < s; ++q) { // the monomial (s/h)^q
       PetscReal rz, rv;
-      const PetscReal hq = std::pow(h, (PetscReal)q);
       ModeForced(w, sg, (int)q, h, &rz, &rv);
       for (PetscInt j = 0; j < s; ++j) {
-        W.rz[j * n + k] += Lc(j, q) * rz / hq;
-        W.rv[j * n + k] += Lc(j, q) * rv / hq;
+        Rk[j] += Lc(j, q) * rz / hq[q];
+        Vk[j] += Lc(j, q) * rv / hq[q];
       }
       for (PetscInt i = 1; i < s; ++i) {
         PetscReal rzi = rz, rvi;
         if (tau[i] != 1.0) ModeForced(w, sg, (int)q, tau[i] * h, &rzi, &rvi);
-        for (PetscInt j = 0; j < s; ++j) W.W[i][j] += g2 * Lc(j, q) * rzi / hq;
+        for (PetscInt j = 0; j < s; ++j) Wacc[i][j] += g2 * Lc(j, q) * rzi / hq[q];
       }
     }
+    for (PetscInt j = 0; j < s; ++j) W.R[j][k] = gk * Rk[j], W.V[j][k] = gk * Vk[j];
   }
   // The ball: y_b'' = -F/m_b; int_0^t (t - u) u^q du = t^(q+2)/((q+1)(q+2)), int_0^t u^q du = t^(q+1)/(q+1).
   for (PetscInt q = 0; q < s; ++q) {
-    const PetscReal hq = std::pow(h, (PetscReal)q);
     for (PetscInt j = 0; j < s; ++j) {
-      W.by[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq;
-      W.bv[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 1) / (q + 1) / hq;
-      for (PetscInt i = 1; i < s; ++i) W.W[i][j] += Lc(j, q) * std::pow(tau[i] * h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq / mb;
+      W.by[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q];
+      W.bv[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 1) / (q + 1) / hq[q];
+      for (PetscInt i = 1; i < s; ++i) Wacc[i][j] += Lc(j, q) * std::pow(tau[i] * h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q] / mb;
     }
   }
-  m.weights.push_front(std::move(W));
-  while (m.weights.size() > kWeightsCache) m.weights.pop_back();
-  return m.weights.front();
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < 3; ++j) W.W[i][j] = Wacc[i][j];
 }
 
+// The weights of a step of length h: from the cache, else computed into the least recently
+// used slot (its arrays reused: no allocation once the cache is full).
+const StepWeights &WeightsOf(ModalTS &m, PetscReal h)
+{
+  ++m.uses;
+  for (StepWeights &w : m.weights)
+    if (w.h == h) {
+      w.used = m.uses;
+      return w;
+    }
+  StepWeights *W;
+  if (m.weights.size() < kWeightsCache) {
+    m.weights.reserve(kWeightsCache); // no reallocation: references handed out stay valid until refilled
+    m.weights.emplace_back();
+    W                 = &m.weights.back();
+    const size_t n    = (size_t)m.n;
+    for (std::vector<PetscReal> *v : {&W->a0, &W->a1, &W->a2, &W->a3, &W->gm0, &W->gm1, &W->g0, &W->g1}) v->assign(n, 0.0);
+    for (int j = 0; j < 3; ++j) W->R[j].assign(n, 0.0), W->V[j].assign(n, 0.0);
+  } else W = &*std::min_element(m.weights.begin(), m.weights.end(), [](const StepWeights &a, const StepWeights &b) { return a.used < b.used; });
+  if (m.order == 2) WeightsCompute<2>(m, h, *W);
+  else WeightsCompute<3>(m, h, *W);
+  W->used = m.uses;
+  m.weight_sets++;
+  return *W;
+}
+
+// c = y_b - gamma . z and its rate, from the modal state.
 PetscReal ModalCompression(const ModalTS &m, PetscReal *cdot)
 {
   PetscReal c = m.yb, cd = m.vb;
@@ -227,26 +285,49 @@ PetscReal ModalCompression(const ModalTS &m, PetscReal *cdot)
   return c;
 }
 
-// One step of length h (exponential collocation on the force; see ts_modal.hpp).
+// The compression and its rate at the current modal state (cached until the state changes).
+PetscReal CompressionNow(ModalTS &m, PetscReal *cdot)
+{
+  if (!m.c_valid) {
+    m.c       = ModalCompression(m, &m.cd);
+    m.c_valid = true;
+  }
+  if (cdot) *cdot = m.cd;
+  return m.c;
+}
+
+// One step of length h (exponential collocation on the force; see ts_modal.hpp). O(modes),
+// one pass over the modes for the free compression at the nodes and one for the update (which
+// also gives the compression at the step's end).
 void StepBy(ModalTS &m, PetscReal h)
 {
-  TSProblem        &P  = *m.P;
-  const bool        in = P.contact->phase != ContactPhase::Separated;
-  const StepWeights &W = WeightsOf(m, h);
-  const PetscInt    s  = StageCount(m.order), n = m.n;
-  const PetscReal  *tau = m.order == 2 ? kTau2 : kTau4;
-  PetscReal         F[3] = {0, 0, 0};
+  TSProblem         &P  = *m.P;
+  const bool         in = P.contact->phase != ContactPhase::Separated;
+  const StepWeights &W  = WeightsOf(m, h);
+  const PetscInt     s  = StageCount(m.order), n = m.n;
+  const PetscReal   *tau = m.order == 2 ? kTau2 : kTau4;
+  PetscReal         *z = m.z.data(), *zd = m.zd.data();
+  PetscReal          F[3] = {0, 0, 0};
   if (in) {
     // Free compression at the stage times, then F_i = F(c_i) with c_i = cfree_i - sum_j W_ij F_j.
     PetscReal cfree[3] = {0, 0, 0};
     for (PetscInt i = 1; i < s; ++i) cfree[i] = m.yb + m.vb * tau[i] * h;
-    for (PetscInt k = 0; k < n; ++k) {
-      const PetscReal gk = m.gamma[k], z = m.z[k], zd = m.zd[k];
-      if (s == 3) cfree[1] -= gk * (W.am[2 * k] * z + W.am[2 * k + 1] * zd);
-      cfree[s - 1] -= gk * (W.a[4 * k] * z + W.a[4 * k + 1] * zd);
+    if (s == 3) {
+      const PetscReal *gm0 = W.gm0.data(), *gm1 = W.gm1.data(), *g0 = W.g0.data(), *g1 = W.g1.data();
+      PetscReal        c1 = cfree[1], c2 = cfree[2];
+      for (PetscInt k = 0; k < n; ++k) {
+        c1 -= gm0[k] * z[k] + gm1[k] * zd[k];
+        c2 -= g0[k] * z[k] + g1[k] * zd[k];
+      }
+      cfree[1] = c1, cfree[2] = c2;
+    } else {
+      const PetscReal *g0 = W.g0.data(), *g1 = W.g1.data();
+      PetscReal        c1 = cfree[1];
+      for (PetscInt k = 0; k < n; ++k) c1 -= g0[k] * z[k] + g1[k] * zd[k];
+      cfree[1] = c1;
     }
     P.count.func++;
-    F[0] = ContactForce(P.ball, *P.contact, ModalCompression(m, nullptr));
+    F[0] = ContactForce(P.ball, *P.contact, CompressionNow(m, nullptr));
     for (PetscInt i = 1; i < s; ++i) F[i] = F[0];
     const PetscInt nu = s - 1; // unknowns F_1 .. F_{s-1}
     PetscReal dprev = PETSC_MAX_REAL;
@@ -278,22 +359,48 @@ void StepBy(ModalTS &m, PetscReal h)
       if (it == 49) m.newton_fail++;
     }
   }
-  for (PetscInt k = 0; k < n; ++k) {
-    const PetscReal *a = &W.a[4 * k], z = m.z[k], zd = m.zd[k];
-    PetscReal        zn = a[0] * z + a[1] * zd, zdn = a[2] * z + a[3] * zd;
-    if (in)
-      for (PetscInt j = 0; j < s; ++j) {
-        zn += m.gamma[k] * F[j] * W.rz[j * n + k];
-        zdn += m.gamma[k] * F[j] * W.rv[j * n + k];
-      }
-    m.z[k]  = zn;
-    m.zd[k] = zdn;
-  }
+  // The ball first (the compression at the end needs it).
   m.yb += m.vb * h;
   for (PetscInt j = 0; j < s; ++j) {
     m.yb -= F[j] * W.by[j] / P.ball.mass;
     m.vb -= F[j] * W.bv[j] / P.ball.mass;
   }
+  const PetscReal *a0 = W.a0.data(), *a1 = W.a1.data(), *a2 = W.a2.data(), *a3 = W.a3.data(), *gamma = m.gamma.data();
+  PetscReal        c = m.yb, cd = m.vb;
+  if (!in) // free flight of the ball: the beam's modes free
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscReal zk = z[k], zdk = zd[k], zn = a0[k] * zk + a1[k] * zdk, zdn = a2[k] * zk + a3[k] * zdk;
+      z[k]  = zn;
+      zd[k] = zdn;
+      c -= gamma[k] * zn;
+      cd -= gamma[k] * zdn;
+    }
+  else if (s == 3) {
+    const PetscReal *R0 = W.R[0].data(), *R1 = W.R[1].data(), *R2 = W.R[2].data(), *V0 = W.V[0].data(), *V1 = W.V[1].data(), *V2 = W.V[2].data();
+    const PetscReal  F0 = F[0], F1 = F[1], F2 = F[2];
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscReal zk = z[k], zdk = zd[k];
+      const PetscReal zn = a0[k] * zk + a1[k] * zdk + F0 * R0[k] + F1 * R1[k] + F2 * R2[k], zdn = a2[k] * zk + a3[k] * zdk + F0 * V0[k] + F1 * V1[k] + F2 * V2[k];
+      z[k]  = zn;
+      zd[k] = zdn;
+      c -= gamma[k] * zn;
+      cd -= gamma[k] * zdn;
+    }
+  } else {
+    const PetscReal *R0 = W.R[0].data(), *R1 = W.R[1].data(), *V0 = W.V[0].data(), *V1 = W.V[1].data();
+    const PetscReal  F0 = F[0], F1 = F[1];
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscReal zk = z[k], zdk = zd[k];
+      const PetscReal zn = a0[k] * zk + a1[k] * zdk + F0 * R0[k] + F1 * R1[k], zdn = a2[k] * zk + a3[k] * zdk + F0 * V0[k] + F1 * V1[k];
+      z[k]  = zn;
+      zd[k] = zdn;
+      c -= gamma[k] * zn;
+      cd -= gamma[k] * zdn;
+    }
+  }
+  m.c       = c;
+  m.cd      = cd;
+  m.c_valid = true;
 }
 
 // Collective: whether any rank says so.
@@ -320,8 +427,10 @@ PetscErrorCode Project(TS ts)
   if (!m.gather) PetscCall(VecScatterCreateToAll(X, &m.gather, &m.all));
   PetscCall(VecScatterBegin(m.gather, X, m.all, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(m.gather, X, m.all, INSERT_VALUES, SCATTER_FORWARD));
-  const PetscScalar     *u;
-  std::vector<PetscReal> sy(n), sv(n);
+  const PetscScalar *u;
+  m.sy.resize(n);
+  m.sv.resize(n);
+  PetscReal *sy = m.sy.data(), *sv = m.sv.data();
   PetscCall(VecGetArrayRead(m.all, &u));
   for (PetscInt i = 0; i < n; ++i) {
     const PetscInt  d = m.modes->S.dof[i], node = d / nf, f = d % nf;
@@ -337,17 +446,36 @@ PetscErrorCode Project(TS ts)
   const PetscReal *Phi  = m.modes->B.Phi.data();
   bool             rest = true; // the beam at rest and undeformed (the start of an impact): z = 0, no O(n^2) work
   for (PetscInt i = 0; i < n && rest; ++i) rest = sy[i] == 0.0 && sv[i] == 0.0;
-  for (PetscInt k = 0; k < n && !rest; ++k) {
-    const PetscReal *phi = Phi + (size_t)k * n;
-    PetscReal        a = 0, b = 0;
-    for (PetscInt i = 0; i < n; ++i) {
-      a += phi[i] * sy[i];
-      b += phi[i] * sv[i];
+  if (!rest) {
+    // Two dot products per mode, four modes at a time (eight independent sums, each in the
+    // order of the plain loop: the same values).
+    PetscInt k = 0;
+    for (; k + 4 <= n; k += 4) {
+      const PetscReal *p0 = Phi + (size_t)k * n, *p1 = p0 + n, *p2 = p1 + n, *p3 = p2 + n;
+      PetscReal        a0 = 0, a1 = 0, a2 = 0, a3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0;
+      for (PetscInt i = 0; i < n; ++i) {
+        const PetscReal y = sy[i], v = sv[i];
+        a0 += p0[i] * y, b0 += p0[i] * v;
+        a1 += p1[i] * y, b1 += p1[i] * v;
+        a2 += p2[i] * y, b2 += p2[i] * v;
+        a3 += p3[i] * y, b3 += p3[i] * v;
+      }
+      m.z[k] = a0, m.z[k + 1] = a1, m.z[k + 2] = a2, m.z[k + 3] = a3;
+      m.zd[k] = b0, m.zd[k + 1] = b1, m.zd[k + 2] = b2, m.zd[k + 3] = b3;
     }
-    m.z[k]  = a;
-    m.zd[k] = b;
+    for (; k < n; ++k) {
+      const PetscReal *phi = Phi + (size_t)k * n;
+      PetscReal        a = 0, b = 0;
+      for (PetscInt i = 0; i < n; ++i) {
+        a += phi[i] * sy[i];
+        b += phi[i] * sv[i];
+      }
+      m.z[k]  = a;
+      m.zd[k] = b;
+    }
   }
   m.have_modal = true;
+  m.c_valid    = false;
   m.projections++;
   // The vector is the truth it was projected from: keep it as the written copy.
   if (!m.Xc) PetscCall(VecDuplicate(X, &m.Xc));
@@ -358,8 +486,44 @@ PetscErrorCode Project(TS ts)
   PetscFunctionReturn(0);
 }
 
+// Whether X differs from the written copy Xc by round-off only: per kind of entry (beam
+// displacements, beam velocities, ball), max |X - Xc| <= kRoundOff max |Xc|. The O(n^2)
+// round trip of the modal state through the physical one (a free flight of zero length, when
+// the window ends at the separation: the driver reads the state, projects it on the modes,
+// propagates it by 0 and writes it back) changes the entries by ~ n eps of their kind's
+// magnitude; a real change of state is many orders above. Collective, O(N / ranks).
+constexpr PetscReal kRoundOff = 1e-11;
+PetscErrorCode SameToRoundOff(const ModalTS &m, Vec X, Vec Xc, bool *same)
+{
+  const TSLayout    &L = m.P->L;
+  const PetscScalar *x, *xc;
+  PetscInt           nloc;
+  PetscReal          v[6] = {0, 0, 0, 0, 0, 0}; // max |X - Xc| and max |Xc| for the three kinds
+
+  PetscFunctionBeginUser;
+  PetscInt nc;
+  PetscCall(VecGetLocalSize(X, &nloc));
+  PetscCall(VecGetLocalSize(Xc, &nc));
+  if (nc != nloc) v[0] = PETSC_INFINITY, nloc = 0; // another layout: not the same
+  PetscCall(VecGetArrayRead(X, &x));
+  PetscCall(VecGetArrayRead(Xc, &xc));
+  const PetscInt nbeam = (L.xe - L.xs) * L.dof; // the owned beam block, then (rank 0) the ball
+  for (PetscInt i = 0; i < nloc; ++i) {
+    const int kind = i >= nbeam ? 2 : ((i % L.dof) < L.fields ? 0 : 1);
+    v[kind]        = std::max(v[kind], (PetscReal)std::abs(x[i] - xc[i]));
+    v[3 + kind]    = std::max(v[3 + kind], (PetscReal)std::abs(xc[i]));
+  }
+  PetscCall(VecRestoreArrayRead(Xc, &xc));
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, v, 6, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)X)));
+  *same = true;
+  for (int kind = 0; kind < 3; ++kind) *same = *same && v[kind] <= kRoundOff * v[3 + kind];
+  PetscFunctionReturn(0);
+}
+
 // Makes the modal state authoritative: projects the physical vector if it was replaced or
-// written from outside since the modal state last matched it. Collective.
+// written from outside since the modal state last matched it (unless the write changed it
+// by round-off only: then the modal state is kept). Collective.
 PetscErrorCode Reconcile(TS ts)
 {
   ModalTS         &m = *Data(ts);
@@ -374,11 +538,12 @@ PetscErrorCode Reconcile(TS ts)
   PetscCall(AnyRank(PetscObjectComm((PetscObject)ts), !m.have_modal || id != m.vec_id || st != m.vec_state, &stale));
   if (!stale) PetscFunctionReturn(0);
   if (m.have_modal && m.phys_valid) { // touched, maybe only read: compare with what it held
-    PetscBool same = PETSC_FALSE;
-    PetscCall(VecEqual(X, m.Xc, &same)); // collective
+    bool same;
+    PetscCall(SameToRoundOff(m, X, m.Xc, &same)); // collective
     if (same) {
       m.vec_id    = id;
-      m.vec_state = st;
+      m.vec_state = st; // the vector keeps what was written (within round-off of the modal state)
+      m.kept++;
       PetscFunctionReturn(0);
     }
   }
@@ -406,20 +571,35 @@ PetscErrorCode Sync(TS ts)
       i0 = std::min(i0, m.free_of[d]);
       i1 = std::max(i1, m.free_of[d] + 1);
     }
-  std::vector<PetscReal> y(std::max<PetscInt>(i1 - i0, 0), 0.0), v(y.size(), 0.0);
-  const PetscReal       *Phi = m.modes->B.Phi.data();
-  for (PetscInt k = 0; k < n; ++k) {
+  const PetscInt ni = std::max<PetscInt>(i1 - i0, 0);
+  m.sy.assign(ni, 0.0);
+  m.sv.assign(ni, 0.0);
+  PetscReal       *y = m.sy.data(), *v = m.sv.data();
+  const PetscReal *Phi = m.modes->B.Phi.data() + i0;
+  // y += phi_k z_k over the modes, four at a time (each entry summed in the order of the
+  // plain loop over k: the same values).
+  PetscInt k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const PetscReal *p0 = Phi + (size_t)k * n, *p1 = p0 + n, *p2 = p1 + n, *p3 = p2 + n;
+    const PetscReal  z0 = m.z[k], z1 = m.z[k + 1], z2 = m.z[k + 2], z3 = m.z[k + 3];
+    const PetscReal  d0 = m.zd[k], d1 = m.zd[k + 1], d2 = m.zd[k + 2], d3 = m.zd[k + 3];
+    for (PetscInt i = 0; i < ni; ++i) {
+      y[i] = (((y[i] + p0[i] * z0) + p1[i] * z1) + p2[i] * z2) + p3[i] * z3;
+      v[i] = (((v[i] + p0[i] * d0) + p1[i] * d1) + p2[i] * d2) + p3[i] * d3;
+    }
+  }
+  for (; k < n; ++k) {
     const PetscReal *phi = Phi + (size_t)k * n, zk = m.z[k], zdk = m.zd[k];
-    for (PetscInt i = i0; i < i1; ++i) {
-      y[i - i0] += phi[i] * zk;
-      v[i - i0] += phi[i] * zdk;
+    for (PetscInt i = 0; i < ni; ++i) {
+      y[i] += phi[i] * zk;
+      v[i] += phi[i] * zdk;
     }
   }
   PetscCall(TSStateWriteBegin(L, X, &o));
   for (PetscInt d = L.D0(); d < L.D1(); ++d) {
-    const PetscInt i = m.free_of[d], k = (d / nf) * L.dof + d % nf;
-    o.beam[k]        = i < 0 ? 0.0 : m.isqm[i] * y[i - i0];
-    o.beam[k + nf]   = i < 0 ? 0.0 : m.isqm[i] * v[i - i0];
+    const PetscInt i = m.free_of[d], kk = (d / nf) * L.dof + d % nf;
+    o.beam[kk]       = i < 0 ? 0.0 : m.isqm[i] * y[i - i0];
+    o.beam[kk + nf]  = i < 0 ? 0.0 : m.isqm[i] * v[i - i0];
   }
   if (o.ball) {
     o.ball[0] = m.yb;
@@ -444,10 +624,11 @@ PetscErrorCode TSStep_Modal(TS ts)
 
   PetscFunctionBeginUser;
   PetscCall(Reconcile(ts));
-  m.z0        = m.z;
-  m.zd0       = m.zd;
+  m.z0.assign(m.z.begin(), m.z.end()); // no allocation after the first step
+  m.zd0.assign(m.zd.begin(), m.zd.end());
   m.yb0       = m.yb;
   m.vb0       = m.vb;
+  m.c0        = CompressionNow(m, &m.cd0);
   m.have_step = true;
   StepBy(m, h);
   m.phys_valid = false;
@@ -461,10 +642,13 @@ PetscErrorCode TSRollBack_Modal(TS ts)
 
   PetscFunctionBeginUser;
   PetscCheck(m.have_step, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER, "TS modal: no completed step to roll back");
-  m.z          = m.z0;
-  m.zd         = m.zd0;
+  m.z.swap(m.z0); // the step's end is not needed again
+  m.zd.swap(m.zd0);
   m.yb         = m.yb0;
   m.vb         = m.vb0;
+  m.c          = m.c0;
+  m.cd         = m.cd0;
+  m.c_valid    = true;
   m.have_step  = false;
   m.phys_valid = false; // the vector (if it was written after the step) holds the step's end
   PetscFunctionReturn(0);
@@ -495,7 +679,7 @@ PetscErrorCode Compression_Modal(TS ts, PetscReal *c, PetscReal *cdot)
 {
   PetscFunctionBeginUser;
   PetscCall(Reconcile(ts));
-  *c = ModalCompression(*Data(ts), cdot);
+  *c = CompressionNow(*Data(ts), cdot);
   PetscFunctionReturn(0);
 }
 
@@ -506,7 +690,7 @@ PetscErrorCode DissipationRate_Modal(TS ts, PetscReal *rate, PetscReal *rate_dot
   PetscFunctionBeginUser;
   PetscCall(Reconcile(ts));
   const TSProblem &P = *m.P;
-  const PetscReal  F = ContactForce(P.ball, *P.contact, ModalCompression(m, nullptr));
+  const PetscReal  F = ContactForce(P.ball, *P.contact, CompressionNow(m, nullptr));
   PetscReal        r = 0, rd = 0;
   for (PetscInt k = 0; k < m.n; ++k) {
     const PetscReal s2 = 2 * m.sigma[k], zdd = -m.omega[k] * m.omega[k] * m.z[k] - s2 * m.zd[k] + m.gamma[k] * F;
@@ -562,15 +746,19 @@ PetscErrorCode TSSetUp_Modal(TS ts)
     for (int q = 0; q < 2; ++q)
       if (S.dof[i] == g.dof[q]) gw[i] += g.w[q] * m.isqm[i];
   }
+  // O(n): only the (at most two) coupled dofs have gw != 0 (the other terms of the dot product are zeros).
+  std::vector<PetscInt> coupled;
+  for (PetscInt i = 0; i < n; ++i)
+    if (gw[i] != 0.0) coupled.push_back(i);
   m.gamma.assign(n, 0.0);
   for (PetscInt k = 0; k < n; ++k) {
     const PetscReal *phi = &B.Phi[(size_t)k * n];
     PetscReal        c   = 0;
-    for (PetscInt i = 0; i < n; ++i) c += phi[i] * gw[i];
+    for (PetscInt i : coupled) c += phi[i] * gw[i];
     m.gamma[k] = c;
   }
   m.weights.clear();
-  m.have_modal = m.have_step = m.phys_valid = false;
+  m.have_modal = m.have_step = m.phys_valid = m.c_valid = false;
   PetscFunctionReturn(0);
 }
 
@@ -598,8 +786,8 @@ PetscErrorCode TSView_Modal(TS ts, PetscViewer viewer)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (ascii)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  Modal (beamimpact): exact beam flow in %" PetscInt_FMT " modes, contact force by %s collocation (order %" PetscInt_FMT "); %" PetscInt_FMT " projections, %" PetscInt_FMT " syncs of the physical state, %" PetscInt_FMT " unconverged force solves\n",
-                                     m.n, m.order == 2 ? "trapezoidal" : "3-point Lobatto", m.order, m.projections, m.syncs, m.newton_fail));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  Modal (beamimpact): exact beam flow in %" PetscInt_FMT " modes, contact force by %s collocation (order %" PetscInt_FMT "); %" PetscInt_FMT " step lengths weighted, %" PetscInt_FMT " projections, %" PetscInt_FMT " syncs of the physical state, %" PetscInt_FMT " writes kept (round-off), %" PetscInt_FMT " unconverged force solves\n",
+                                     m.n, m.order == 2 ? "trapezoidal" : "3-point Lobatto", m.order, m.weight_sets, m.projections, m.syncs, m.kept, m.newton_fail));
   PetscFunctionReturn(0);
 }
 

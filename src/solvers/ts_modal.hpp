@@ -14,14 +14,19 @@
 //
 // State: the TS keeps (z, zd, y_b, v_b) in modal coordinates, the same on every rank (a serial
 // modal state, computed redundantly; the physical Vec stays distributed on the DMDA). A step
-// costs O(modes), from weights cached per step length (one sin/cos per undamped mode for
-// each new length: the nominal step and the event location's steps). The physical vector TSGetSolution returns is
+// costs O(modes) in two passes over the modes (no allocation), from weights cached per step
+// length in a few reused slots (least recently used refilled; one sincos per undamped mode for
+// each new length: the nominal step and the event location's steps; the coupling gamma_k
+// folded into the weights). The compression at the step's end comes out of the update pass and
+// is kept until the state changes. The physical vector TSGetSolution returns is
 // written from the modes only when it is read (TSModalSyncSolution, O(n^2 / ranks): the dense
 // modes); the driver's per-step read, the compression, is answered from the modal state
-// (TSModalCompression, O(n)), and so is the damped beam's dissipation rate. A write into the
-// physical vector from outside (the initial state, SetState after a free flight) is detected
-// (object state and an O(N) comparison with the last written copy) and projected on the
-// modes at the next step (O(n^2), once).
+// (TSModalCompression, O(1) after a step), and so is the damped beam's dissipation rate. A write
+// into the physical vector from outside (the initial state, SetState after a free flight) is
+// detected (object state and an O(N) comparison with the last written copy) and projected on
+// the modes at the next step (O(n^2), once), unless it changed the vector by round-off only
+// (max |change| <= 1e-11 of each kind's largest entry: the round trip through a free flight of
+// zero length when the window ends at the separation), which keeps the modal state.
 //
 // Requires the beamimpact problem in its explicit form (TSSetRHSFunction with TSRHSExplicit,
 // ts_problem.hpp; FormulationOfType gives it) and a beam whose modes are available
