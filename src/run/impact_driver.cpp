@@ -199,7 +199,8 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
       const auto kind = static_cast<ContactEventKind>(ev);
       PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol, indicators, &res->event_steps));
       PetscCall(ApplyEvent(st, ctx, sc, times, kind, m0.total(), contact, &timeline, res));
-      if (kind == ContactEventKind::Separation && after_modal) {
+      // The free flight, unless the window is already over (-impact_window 0: nothing to follow).
+      if (kind == ContactEventKind::Separation && after_modal && timeline.t_stop > st.Time() * (1 + 1e-14)) {
         PetscReal dt_sample;
         bool      again = false;
         PetscCall(st.NextStep(&dt_sample));
