@@ -11,6 +11,10 @@
 #   * a missing -options_file (also one included by another file) is one plain line, no
 #     PETSc traceback, no MPI abort;
 #   * every results file records its provenance: task, git, date, host, ranks, library versions.
+#   * -log_view lists the program's stages (set-up, contact, free flight, output);
+#   * a sweep whose runs -impact_max_time cuts off in contact gives failed rows (status 7);
+#   * a run expected to take long prints its cost first (-impact_cost_warn), progress lines
+#     (-impact_progress), and a sweep of more than 1e6 points announces its set-up cost.
 #
 #   tests/cli_policy.sh path/to/beamimpact scratch_dir
 set -uo pipefail
@@ -54,6 +58,43 @@ out=$("$exe" -output "$dir/sweep.h5" 2>&1); rc=$?
 [[ $rc -ne 0 ]] && grep -q -- "holds the results of -task sweep: -task impact will not replace them" <<<"$out" && pass "-task impact does not overwrite a sweep's file" || fail "overwrite: exit $rc: $out"
 "$exe" -output "$dir/sweep.h5" -output_overwrite >/dev/null 2>&1 && pass "-output_overwrite lets it" || fail "-output_overwrite refused"
 "$exe" -output "$dir/sweep.h5" >/dev/null 2>&1 && pass "an impact file is replaced by the next impact (same task)" || fail "same-task overwrite refused"
+
+# -log_view shows the program's stages (set-up, contact, free flight, output)
+out=$("$exe" -options_file options/impact.opts -log_view -output "$dir/logview.h5" 2>&1); rc=$?
+miss=""
+for st in "beamimpact: set-up" "beamimpact: contact" "beamimpact: free flight" "beamimpact: output"; do
+  grep -qE "^ *[0-9]+: +$st:? " <<<"$out" || miss+=" '$st'"
+done
+[[ $rc -eq 0 && -z $miss ]] && pass "-log_view lists the stages set-up, contact, free flight, output" || fail "-log_view: exit $rc, stages missing:$miss"
+
+# cost: an estimate before a long run, progress lines during it, a huge sweep's set-up announced
+out=$(timeout 5 "$exe" -beam_nodes 4001 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 5e-9 -output none 2>&1)
+grep -q "^cost: at least 1.63e+07 steps (0.0815 s stepped / dt 5e-09 s, -ts_dt) on 4001 nodes: expected [0-9.e+]* s of wall time .*to shorten it: a larger -ts_dt, fewer -beam_nodes.*an implicit -ts_type" <<<"$out" \
+  && pass "a long run (4001 nodes, rk4 at 5e-9 s) prints its cost first" || fail "no cost estimate before a long run: $out"
+out=$("$exe" -output none 2>&1)
+! grep -q "^cost:\|^progress:" <<<"$out" && pass "the default run prints no cost or progress line" || fail "the default run: $out"
+out=$("$exe" -impact_cost_warn 1e-9 -impact_progress 1e-9 -output none 2>&1)
+grep -q "^cost: at least [0-9.e+]* steps .* the explicit stability limit) on 41 nodes" <<<"$out" && grep -q "^progress: t = [0-9.e-]* s simulated (the run stops by [0-9.e-]* s), [0-9]* steps" <<<"$out" \
+  && pass "-impact_cost_warn and -impact_progress set when the cost and progress lines appear" || fail "cost/progress lines: $out"
+out=$(timeout 5 "$exe" -task sweep -sweep_x 0:1.1:1000001 -output "$dir/huge.h5" 2>&1)
+grep -q "^sweep: 1000001 points planned: checking every point's options takes about [0-9.e+]* s" <<<"$out" && pass "a sweep of 1e6 points announces its set-up cost" || fail "huge sweep: $out"
+rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"
+
+# a compression beyond the ball's radius is flagged (the presets give the radius)
+out=$("$exe" -options_file options/base/superball-linear.opts -ball_speed 1e6 -output "$dir/absurd.h5" 2>&1); rc=$?
+flag=$(h5dump -d /results/compression_beyond_radius "$dir/absurd.h5" 2>/dev/null | sed -nE 's/^ *\(0\): *([0-9.]+).*/\1/p')
+if [[ $rc -eq 0 ]] && grep -q "^warning: the maximum compression 124[01] m is beyond the ball's radius (-ball_radius 0.018 m" <<<"$out" && [[ $flag == 1* ]]; then
+  pass "-ball_speed 1e6: the 1240 m compression is flagged (summary and compression_beyond_radius)"
+else fail "-ball_speed 1e6: exit $rc, flag '$flag': $out"; fi
+out=$("$exe" -options_file options/base/superball-linear.opts -output none 2>&1)
+! grep -q "beyond the ball's radius" <<<"$out" && pass "no flag at 1 m/s" || fail "flag at 1 m/s: $out"
+
+# a contact cut short by -impact_max_time: an error for one impact (tests/cli_bad_input.cmake),
+# a failed row (status 7) in a sweep, never a number
+out=$("$exe" -task sweep -sweep_x 0.5,0.6 -impact_max_time 1e-3 -output "$dir/cut.h5" 2>&1); rc=$?
+if [[ $rc -eq 2 ]] && grep -q "sweep: 2 of 2 points failed: 2 with status 7 (cut off in contact by -impact_max_time)" <<<"$out" && grep -q "status 7 .*: the run was cut off in contact: -impact_max_time 0.001 s ended it" <<<"$out"; then
+  pass "a sweep cut off in contact: failed rows with status 7 and the reason"
+else fail "sweep with -impact_max_time 1e-3: exit $rc: $out"; fi
 
 # missing options files
 for f in "$dir/nosuch.opts" "$dir/includes.opts"; do

@@ -429,3 +429,32 @@ TEST(BeamModes, TwoFieldSystemHasTheModesOfBothFields)
     EXPECT_LT(dev, 1e-7 * std::max(amax, 1.0)) << "mode " << m;
   }
 }
+
+// The rigid modes the held dofs allow, for any supports (the count BeamModesCompute checks its
+// lowest modes against): free-free 2, a pin or a pivot 1, a clamped end or region 0; and every
+// computed set at a moderate N passes that check with exactly that many rigid modes.
+TEST(BeamModes, RigidCountFromTheHeldDofs)
+{
+  struct Case {
+    Support  left, right;
+    PetscInt rigid;
+  };
+  for (const Case &c : {Case{Support::Free, Support::Free, 2}, Case{Support::Pinned, Support::Free, 1}, Case{Support::Free, Support::Pinned, 1}, Case{Support::Clamped, Support::Free, 0},
+                        Case{Support::Pinned, Support::Pinned, 0}}) {
+    const BeamSystem sys = test::SystemOf(Aluminium(c.left, c.right, 41));
+    EXPECT_EQ(c.rigid, BeamSystemRigidCount(sys)) << SupportName(c.left) << "-" << SupportName(c.right);
+    EXPECT_EQ(BeamModesRigidCount(c.left, c.right), BeamSystemRigidCount(sys));
+    ModesResult r;
+    ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 4, &r));
+    EXPECT_EQ(c.rigid, r.rigid_count);
+  }
+  BeamParams pivot = Aluminium(Support::Free, Support::Free, 41);
+  pivot.has_pivot  = true;
+  pivot.pivot_x    = 0.2;
+  EXPECT_EQ(1, BeamSystemRigidCount(test::SystemOf(pivot)));
+  BeamParams clamp = Aluminium(Support::Free, Support::Free, 41);
+  clamp.has_clamp  = true;
+  clamp.clamp_x0   = 0.0;
+  clamp.clamp_x1   = 0.1;
+  EXPECT_EQ(0, BeamSystemRigidCount(test::SystemOf(clamp)));
+}

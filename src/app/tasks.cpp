@@ -6,6 +6,7 @@
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
 #include "run/modal_reference.hpp"
+#include "run/outcome.hpp"
 #include "solvers/modes.hpp"
 #include "studies/convergence.hpp"
 #include "studies/sweep.hpp"
@@ -43,6 +44,9 @@ PetscErrorCode ImpactReferenceFromOptions(MPI_Comm comm, PetscBool *modal)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
   PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring, Rayleigh damping allowed; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
+  PetscReal max_gb = ModalReferenceMemoryLimit() / 1e9;
+  PetscCall(PetscOptionsReal("-reference_max_memory", "-reference modal: refuse a beam whose dense modal matrices need more than this (GB; default half of the physical memory)", "", max_gb, &max_gb, NULL));
+  PetscCheck(max_gb > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-reference_max_memory %g is not allowed: it must be > 0 (GB)", (double)max_gb);
   PetscOptionsEnd();
   *modal = reference == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(0);
@@ -68,6 +72,7 @@ PetscErrorCode TaskWriteOutput(MPI_Comm comm, const std::string &output, Record 
 
   PetscFunctionBeginUser;
   if (output.empty()) PetscFunctionReturn(0);
+  ImpactStageScope stage(ImpactStage::Output);
   PetscCall(record(&rec));
   PetscCall(write(rec));
   PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
@@ -84,6 +89,8 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                         "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  failed %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
                         (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
                         r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  const std::string absurd = CompressionBeyondRadiusText(sc, r);
+  if (!absurd.empty()) PetscCall(PetscPrintf(comm, "%s\n", absurd.c_str()));
   if (r.beam_dissipated_end > 0) // a damped beam
     PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of the incident energy); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
   if (sc.swing.Swings())
@@ -128,6 +135,8 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
     sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
     PetscCall(ImpactRun(comm, sc, &res));
   }
+  const std::string cut = ImpactCutOffReason(sc, res); // no number from a contact cut short
+  PetscCheck(cut.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", cut.c_str());
   PetscCall(ImpactPrintSummary(comm, sc, res));
   PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
                             [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam); }));

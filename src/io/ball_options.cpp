@@ -70,6 +70,7 @@ PetscErrorCode BallParamsFromOptions(MPI_Comm comm, BallParams *b)
 {
   PetscEnum law = (PetscEnum)b->law;
   PetscBool setk = PETSC_FALSE, setk1 = PETSC_FALSE, setm = PETSC_FALSE, setn = PETSC_FALSE;
+  PetscBool set_radius = PETSC_FALSE;
   BallCharacterisation ch;
 
   PetscFunctionBeginUser;
@@ -87,12 +88,14 @@ PetscErrorCode BallParamsFromOptions(MPI_Comm comm, BallParams *b)
   PetscCall(PetscOptionsReal("-ball_test_speed", "Speed (m/s) at which -ball_contact_time (and -ball_cor) were measured against a rigid wall", "", ch.test_speed, &ch.test_speed, &ch.set_vt));
   PetscCall(PetscOptionsString("-ball_cor_table", "File of rows 'v e': wall COR against approach speed (m/s); n follows e(v) at each contact start (instead of -ball_n, -ball_cor)", "", ch.table,
                                ch.table, sizeof(ch.table), &ch.set_table));
+  PetscCall(PetscOptionsReal("-ball_radius", "Ball radius (m): a compression beyond it is flagged as physically absurd (default: none, no check)", "", b->radius, &b->radius, &set_radius));
   PetscCall(PetscOptionsReal("-ball_loss_factor", "Factor applied to the ACOR for ball losses (reported as acor_corrected)", "", b->loss_factor, &b->loss_factor, NULL));
   PetscOptionsEnd();
   b->law = (ContactLawKind)law;
 
   PetscCheck(b->mass > 0 && std::isfinite(b->mass), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ball_mass %g is not allowed: it must be > 0 (kg)", (double)b->mass);
   PetscCheck(b->speed > 0 && std::isfinite(b->speed), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ball_speed %g is not allowed: it must be > 0 (m/s)", (double)b->speed);
+  PetscCheck(!set_radius || (b->radius > 0 && std::isfinite(b->radius)), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ball_radius %g is not allowed: it must be > 0 (m)", (double)b->radius);
   PetscCheck(b->loss_factor > 0 && b->loss_factor <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-ball_loss_factor %g is not allowed: it must be in (0, 1]", (double)b->loss_factor);
   if (b->law == ContactLawKind::Linear) {
     PetscCheck(!(setk1 || setm || setn || ch.any()), comm, PETSC_ERR_ARG_INCOMP, "%s is a hysteresis parameter but -ball_law is linear: use -ball_k, or -ball_law hysteresis",

@@ -19,6 +19,7 @@ const std::vector<ResultColumn> &ImpactResultColumns()
     {"max_compression", "m", false, [](const R &r) { return r.max_compression; }},
     {"contacts", "1", true, [](const R &r) { return (double)r.contacts; }},
     {"ended_in_contact", "1", true, [](const R &r) { return (double)r.ended_in_contact; }},
+    {"compression_beyond_radius", "1", true, [](const R &r) { return (double)r.compression_beyond_radius; }},
     {"ball_final_velocity", "m/s", false, [](const R &r) { return r.ball_final_velocity; }},
     {"final_time", "s", false, [](const R &r) { return r.final_time; }},
     {"energy_error", "1", false, [](const R &r) { return r.energy_error; }},

@@ -81,6 +81,7 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   rec->add("ball_mass", ball.mass);
   rec->add("ball_speed", ball.speed);
   rec->add("ball_law", ContactLawName(ball.law));
+  if (ball.radius > 0) rec->add("ball_radius", ball.radius);
   if (ball.law == ContactLawKind::Linear) rec->add("ball_k", ball.k);
   else {
     rec->add("ball_k1", ball.k1);

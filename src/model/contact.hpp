@@ -34,6 +34,7 @@ struct BallParams {
   PetscReal      m           = 1.0;   // loading exponent
   PetscReal      n           = 1.768; // unloading exponent
   PetscReal      loss_factor = 0.85;  // ACOR correction for ball losses (linear spring)
+  PetscReal      radius      = 0;     // m, -ball_radius: a compression beyond it is flagged (0: not given, no check)
   // The characterisation k1 and n were derived from (0: not given): the rigid-wall
   // coefficient of restitution e and contact time tau (s, contact to separation) at the test
   // speed (m/s). With a table, cor is the table's e at the test speed.

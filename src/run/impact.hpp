@@ -40,6 +40,9 @@ struct ImpactParams {
   PetscReal energy_growth_tol = 1e-3;   // relative to the incident kinetic energy
   PetscBool check_unused_options = PETSC_FALSE; // not an option: the task asks for the check once the TS is set up
   PetscBool report_setup = PETSC_FALSE; // not an option: print the integrator, its step and stability limit before the run
+  // With report_setup: a cost estimate before a run expected to take more than cost_warn s of
+  // wall time, and a progress line every `progress` s of wall time (0: none).
+  PetscReal cost_warn = 30, progress = 10; // s, -impact_cost_warn, -impact_progress
   PetscBool strict_solver_options = PETSC_FALSE; // not an option: left-over PETSc solver options are errors (a study's configuration)
 };
 
@@ -102,6 +105,7 @@ struct ImpactOutcome {
   PetscReal ball_final_velocity = 0; // m/s
   PetscReal final_time      = 0; // s, simulated
   PetscBool ended_in_contact = PETSC_FALSE; // the run hit -impact_max_time while touching
+  PetscBool compression_beyond_radius = PETSC_FALSE; // max_compression > -ball_radius (given): physically absurd
   // Invariants at the end (relative to the incident kinetic energy / momentum).
   PetscReal energy_error    = 0; // (E_end - E_0) / E_0, E including the ball's work W
   PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i) (only meaningful free-free)
@@ -150,6 +154,27 @@ ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const 
 
 PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, ImpactParams *p);
 PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, MonitorRequest *m);
+
+// PETSc log stages of the program, for -log_view: "beamimpact: set-up" (the system and the
+// stepper), "beamimpact: contact" (steps while the ball touches), "beamimpact: free flight"
+// (after a separation: the modal free flight, or the steps of -impact_after time),
+// "beamimpact: output" (the results file). Registered on first use. A scope pushes a stage and
+// pops it when it ends (also on an error return, so a sweep's failed points keep the stack
+// balanced); Switch changes the stage it holds, End pops it early.
+enum class ImpactStage { Setup, Contact, FreeFlight, Output };
+class ImpactStageScope {
+public:
+  explicit ImpactStageScope(ImpactStage s) { Switch(s); }
+  ~ImpactStageScope();
+  void Switch(ImpactStage s);
+  void End(); // pops the stage now
+  ImpactStageScope(const ImpactStageScope &)            = delete;
+  ImpactStageScope &operator=(const ImpactStageScope &) = delete;
+
+private:
+  bool        pushed_ = false;
+  ImpactStage stage_  = ImpactStage::Setup;
+};
 
 // Runs one impact on comm (the DMDA is distributed over its ranks). The TS is
 // configured from the options database (no prefix): -ts_type and friends.

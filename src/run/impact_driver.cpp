@@ -25,6 +25,41 @@ namespace beamimpact {
 
 namespace {
 
+PetscLogStage ImpactStageId(ImpactStage s)
+{
+  static PetscLogStage ids[4];
+  static bool          registered = false;
+  if (!registered) {
+    const char *names[4] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output"};
+    for (int k = 0; k < 4; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
+    registered = true;
+  }
+  return ids[static_cast<int>(s)];
+}
+
+} // namespace
+
+ImpactStageScope::~ImpactStageScope()
+{
+  if (pushed_) (void)PetscLogStagePop();
+}
+
+void ImpactStageScope::End()
+{
+  if (pushed_) (void)PetscLogStagePop();
+  pushed_ = false;
+}
+
+void ImpactStageScope::Switch(ImpactStage s)
+{
+  if (pushed_ && s == stage_) return;
+  if (pushed_) (void)PetscLogStagePop();
+  pushed_ = PetscLogStagePush(ImpactStageId(s)) == 0;
+  stage_  = s;
+}
+
+namespace {
+
 // Everything one run holds apart from its stepper: built once per scenario.
 struct ImpactSetup {
   BeamSystem      sys;
@@ -152,6 +187,38 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
   PetscFunctionReturn(0);
 }
 
+// The cost model of a stepped run (measured on the development machine, 2 cores, with
+// fixed steps at -beam_nodes 2001 to 20001, docs/model.md "Cost"): wall time per step = per node x dofs,
+// explicit types (rk, ...) kCostNodeStepExplicit, the others kCostNodeStepImplicit.
+constexpr double kCostNodeStepExplicit = 6e-8; // s, rk 4: 5.9e-8 at N = 2001, 5.8e-8 at N = 4001
+constexpr double kCostNodeStepImplicit = 1e-7; // s, cn (banded LU): 7.7e-8 at N = 2001, 9.6e-8 at N = 20001
+
+// Before the run (-task impact): the steps the run will take at least and their expected wall
+// time, printed when above -impact_cost_warn, with what to change. The stepped time is the
+// contact (T_r), and the window after it when the free flight is stepped too; the step is
+// the fixed step, or an explicit adaptive type's stability limit (a bound: accuracy may ask
+// for smaller steps); an implicit adaptive run has no estimate.
+PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info)
+{
+  PetscFunctionBeginUser;
+  const ImpactTimes times  = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+  const bool        modal  = sc.impact.after == ImpactAfter::Modal && BeamModesAvailable(sys, nullptr);
+  const PetscReal   T      = std::min<PetscReal>(times.max_time, modal ? scales.time : scales.time + times.window);
+  const PetscReal   dt     = info.fixed_step ? info.dt_nominal : info.dt_stable;
+  if (!(dt > 0) || sc.impact.cost_warn <= 0) PetscFunctionReturn(0);
+  const bool      explicit_type = info.dt_stable > 0;
+  const double    steps         = T / dt;
+  const double    per_step      = (explicit_type ? kCostNodeStepExplicit : kCostNodeStepImplicit) * sys.nodes * sys.fields;
+  const double    seconds       = steps * per_step;
+  if (seconds <= sc.impact.cost_warn) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(comm,
+                        "cost: at least %.3g steps (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
+                        steps, (double)T, (double)dt, info.fixed_step ? "-ts_dt" : "the explicit stability limit", sys.nodes, seconds, per_step,
+                        info.fixed_step ? "a larger -ts_dt" : "looser -ts_rtol/-ts_atol",
+                        explicit_type ? " (the explicit limit grows as h^2)" : "", explicit_type ? ", or an implicit -ts_type (cn, alpha2, bdf) whose step is not bound by the stability limit" : ""));
+  PetscFunctionReturn(0);
+}
+
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
 // stepper reads.
 PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, PetscReal approach, ImpactResult *res)
@@ -186,9 +253,17 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   bool                             after_modal;
   std::shared_ptr<const BeamModes> modes;
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
+  ImpactStageScope stage(ImpactStage::Contact);
+  double           last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {
+    if (ip.report_setup && ip.progress > 0 && MPI_Wtime() - last_progress >= ip.progress) { // a long single impact
+      last_progress = MPI_Wtime();
+      PetscCall(PetscPrintf(st.Comm(), "progress: t = %.4g s simulated (the run stops by %.4g s), %" PetscInt_FMT " steps, %" PetscInt_FMT " contact(s), %.0f s of wall time\n", (double)t,
+                            (double)timeline.t_stop, res->steps + res->event_steps, res->contacts, last_progress - wall0));
+    }
     const PetscReal target = std::min(timeline.t_stop, rec.NextSnapshot()); // land exactly on both
     PetscReal       dt;
+    stage.Switch(contact->phase != ContactPhase::Separated ? ImpactStage::Contact : ImpactStage::FreeFlight);
     PetscCall(st.NextStep(&dt));
     if (t + dt > target) dt = target - t;
     PetscCall(st.Step(dt));
@@ -204,6 +279,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
         PetscReal dt_sample;
         bool      again = false;
         PetscCall(st.NextStep(&dt_sample));
+        stage.Switch(ImpactStage::FreeFlight);
         PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, rec, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, modes, &again));
         if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, m0.total(), contact, &timeline, res));
       }
@@ -243,14 +319,18 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
   PetscFunctionBeginUser;
   *res   = ImpactResult();
   res->x = sc.impact.x;
+  ImpactStageScope stage(ImpactStage::Setup);
   PetscCall(ImpactSetupBuild(comm, sc, &s));
   set.check_unused_options = sc.impact.check_unused_options;
   set.report_setup         = sc.impact.report_setup;
   set.strict_solver_options = sc.impact.strict_solver_options;
   PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &st, res));
+  stage.End(); // ImpactDrive holds the contact and free-flight stages
+  if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys, s.scales, *res));
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
   PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
   ImpactBatOutcome(sc, s.V_x, res);
+  ImpactPlausibility(sc, res);
   PetscFunctionReturn(0);
 }
 
@@ -267,6 +347,7 @@ PetscErrorCode LeapfrogRun(const Scenario &sc, const LeapfrogParams &lp, ImpactR
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
   PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
   ImpactBatOutcome(sc, s.V_x, res);
+  ImpactPlausibility(sc, res);
   PetscFunctionReturn(0);
 }
 

@@ -38,6 +38,8 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscCall(PetscOptionsReal("-impact_event_tol", "Events are located until |indicator| (c/c_scale or dc/dt/v_i) is below this", "", p->event_tol, &p->event_tol, NULL));
   PetscCall(PetscOptionsInt("-impact_max_contacts", "Stop with an error after this many separate contacts", "", p->max_contacts, &p->max_contacts, NULL));
   PetscCall(PetscOptionsBool("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol", "", p->energy_check, &p->energy_check, NULL));
+  PetscCall(PetscOptionsReal("-impact_cost_warn", "-task impact: print the expected cost before a run expected to take more than this (s of wall time)", "", p->cost_warn, &p->cost_warn, NULL));
+  PetscCall(PetscOptionsReal("-impact_progress", "-task impact: a progress line every this many seconds of wall time (0: none)", "", p->progress, &p->progress, NULL));
   PetscCall(PetscOptionsReal("-impact_energy_growth_tol", "Allowed energy growth, relative to the incident kinetic energy", "", p->energy_growth_tol, &p->energy_growth_tol, NULL));
   PetscOptionsEnd();
   {
@@ -47,6 +49,7 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   }
   PetscCheck(p->event_tol > 0 && p->event_tol < 1e-2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_event_tol %g is not allowed: use a value in (0, 1e-2)", (double)p->event_tol);
   PetscCheck(p->max_contacts >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_max_contacts %" PetscInt_FMT " is not allowed: at least 1", p->max_contacts);
+  PetscCheck(p->cost_warn >= 0 && p->progress >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_cost_warn %g, -impact_progress %g are not allowed: they must be >= 0 (s)", (double)p->cost_warn, (double)p->progress);
   PetscCheck(p->energy_growth_tol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-impact_energy_growth_tol %g is not allowed: it must be > 0", (double)p->energy_growth_tol);
   PetscFunctionReturn(0);
 }

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace beamimpact {
 
 namespace {
@@ -139,6 +141,13 @@ void ModalOutcome(const ModalRun &run, PetscReal E0, PetscReal D, ImpactResult *
 
 } // namespace
 
+static PetscInt ModalReferenceFreeDofs(const BeamSystem &sys)
+{
+  PetscInt n = 0;
+  for (PetscInt d = 0; d < sys.ndof; ++d) n += sys.held[d] ? 0 : 1;
+  return n;
+}
+
 PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, ImpactResult *res)
 {
   const BallParams   &ball = sc.ball;
@@ -153,6 +162,13 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
              "-reference modal with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal reference; use a tight TS run as the reference");
   PetscCheck(ball.law == ContactLawKind::Linear, PETSC_COMM_SELF, PETSC_ERR_SUP,
              "-reference modal needs -ball_law linear (the hysteretic law is nonlinear: use a tight run of a high-order integrator as the reference)");
+  {
+    const double need = ModalReferenceMemory(sys), limit = ModalReferenceMemoryLimit();
+    PetscCheck(need <= limit, PETSC_COMM_SELF, PETSC_ERR_MEM,
+               "-reference modal with N = %" PetscInt_FMT " nodes (%" PetscInt_FMT " free dofs) would need about %.3g GB for its dense %s matrices, above the limit of %.3g GB "
+               "(-reference_max_memory, default half of the physical memory); reduce -beam_nodes, or use a tight TS run as the reference",
+               sys.nodes, ModalReferenceFreeDofs(sys), need / 1e9, sys.Damped() ? "damped first-order" : "modal", limit / 1e9);
+  }
   const double wall0 = MPI_Wtime();
   *res               = ImpactResult();
   res->x             = ip.x;
@@ -211,6 +227,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   }
   ModalOutcome(run, E0, D, res);
   ImpactBatOutcome(sc, V_x, res);
+  ImpactPlausibility(sc, res);
   res->wall_time = MPI_Wtime() - wall0;
   PetscFunctionReturn(0);
 }
@@ -224,6 +241,21 @@ PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
   PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(ModalReferenceRunSystem(sc, sys, res));
   PetscFunctionReturn(0);
+}
+
+double ModalReferenceMemory(const BeamSystem &sys)
+{
+  const double n = ModalReferenceFreeDofs(sys) + 1.0; // and the ball
+  return (sys.Damped() ? 32.0 : 4.0) * n * n * sizeof(PetscReal);
+}
+
+double ModalReferenceMemoryLimit()
+{
+  PetscReal gb  = 0;
+  PetscBool set = PETSC_FALSE;
+  if (!PetscOptionsGetReal(NULL, NULL, "-reference_max_memory", &gb, &set) && set) return gb * 1e9;
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? 0.5 * (double)pages * (double)page : 8e9;
 }
 
 } // namespace beamimpact

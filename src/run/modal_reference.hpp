@@ -29,4 +29,13 @@ PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
 // ball, the impact rules and the time scales (its beam is not rebuilt).
 PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSystem &sys, ImpactResult *res);
 
+// Memory (bytes) the modal reference's dense matrices need on a system: n = free beam dofs + 1
+// (the ball); undamped 4 n^2 doubles (the contact and separated bases, the dense matrix and its
+// copy), damped 32 n^2 (the first-order state matrices of size 2n and their inverses on top).
+double ModalReferenceMemory(const BeamSystem &sys);
+
+// The limit (bytes) ModalReferenceRunSystem refuses beyond: -reference_max_memory (GB, 1e9
+// bytes) if given, else half of the physical memory (sysconf), else 8 GB.
+double ModalReferenceMemoryLimit();
+
 } // namespace beamimpact

@@ -1,6 +1,8 @@
 // The outcome of a run. See outcome.hpp.
 #include "run/outcome.hpp"
 
+#include <cstdio>
+
 namespace beamimpact {
 
 void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, const StateMeasures &m1, PetscReal t, ImpactResult *res)
@@ -57,6 +59,39 @@ void ImpactBatOutcome(const Scenario &sc, PetscReal V_x, ImpactResult *res)
     res->recoil_factor = rig.recoil_factor;
     res->bbcor         = PivotBBCOR(rig, res->collision_efficiency);
   }
+}
+
+void ImpactPlausibility(const Scenario &sc, ImpactResult *res)
+{
+  res->compression_beyond_radius = sc.ball.radius > 0 && res->max_compression > sc.ball.radius ? PETSC_TRUE : PETSC_FALSE;
+}
+
+std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r)
+{
+  if (!r.compression_beyond_radius) return "";
+  char msg[400];
+  std::snprintf(msg, sizeof msg,
+                "warning: the maximum compression %.4g m is beyond the ball's radius (-ball_radius %g m, %.3g times it): physically absurd, the contact law is used far outside its range "
+                "(check -ball_speed %g m/s and the stiffness)",
+                (double)r.max_compression, (double)sc.ball.radius, (double)(r.max_compression / sc.ball.radius), (double)sc.ball.speed);
+  return msg;
+}
+
+std::string ImpactCutOffReason(const Scenario &sc, const ImpactResult &r)
+{
+  if (!r.ended_in_contact) return "";
+  const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+  PetscReal         start = 0;
+  for (const ContactEvent &e : r.events)
+    if (e.kind == ContactEventKind::ContactStart) start = e.time;
+  char cap[160], msg[640];
+  if (sc.impact.max_time > 0) std::snprintf(cap, sizeof cap, "-impact_max_time %g s", (double)sc.impact.max_time);
+  else std::snprintf(cap, sizeof cap, "the default cap on the simulated time (%g s: 4 windows + 100 contact times)", (double)times.max_time);
+  std::snprintf(msg, sizeof msg,
+                "the run was cut off in contact: %s ended it at t = %g s while the ball was still touching the beam (contact %d began at t = %g s), so it has no ACOR, "
+                "peak force or compression; raise -impact_max_time (the run needs the contact's end plus -impact_window %g s: more than %g s), or leave it unset",
+                cap, (double)r.final_time, (int)r.contacts, (double)start, (double)times.window, (double)(r.final_time + times.window));
+  return msg;
 }
 
 } // namespace beamimpact

@@ -18,4 +18,16 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
 // with a pivot, the rig's recoil factor and BBCOR.
 void ImpactBatOutcome(const Scenario &sc, PetscReal V_x, ImpactResult *res);
 
+// Flags of physically absurd outcomes: compression_beyond_radius (max_compression beyond
+// -ball_radius, when given). CompressionBeyondRadiusText: the summary's warning line (empty if
+// not flagged), naming both values.
+void        ImpactPlausibility(const Scenario &sc, ImpactResult *res);
+std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r);
+
+// A run that reached its cap on the simulated time (-impact_max_time, or its default) while
+// the ball was still in contact has no outcome (its ACOR, peak force and compression are of a
+// contact cut short): the message naming the option, the time reached, when the contact began
+// and what to raise; empty if the run ended with the ball separated.
+std::string ImpactCutOffReason(const Scenario &sc, const ImpactResult &r);
+
 } // namespace beamimpact

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 namespace beamimpact {
 
@@ -279,6 +280,17 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "BeamModesCompute: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " modes requested by -modes_count", nconv, count);
   PetscCall(ModesExtract(comm, eps, op, pb, count, &lambda, &phis));
   ModesReport(op, lambda, phis, out, shapes);
+  {
+    const PetscInt want = std::min(count, BeamSystemRigidCount(op));
+    if (out->rigid_count < want) {
+      std::string found;
+      for (PetscInt m = 0; m < want; ++m) found += (m ? ", " : "") + std::to_string(out->frequency[m]);
+      SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
+              "the modes at N = %" PetscInt_FMT " are not resolved: the held dofs allow %" PetscInt_FMT " rigid mode(s) at 0 Hz, but the lowest %" PetscInt_FMT
+              " found are at %s Hz (the stiffness's round-off, its largest eigenvalue ~N^4 times the fundamental's, blurs the rigid motions, rounded up to flexural modes); reduce -beam_nodes (the paper's beam is resolved up to about N = 15000)",
+              op.nodes, want, want, found.c_str());
+    }
+  }
   PetscCall(EPSDestroy(&eps));
   PetscCall(ModesProblemDestroy(&pb));
   PetscFunctionReturn(0);
@@ -292,6 +304,59 @@ std::vector<PetscReal> ModeNodes(const std::vector<PetscReal> &w, PetscReal h)
     if (w[i] * w[i + 1] < 0) x.push_back(h * (i + w[i] / (w[i] - w[i + 1])));
   }
   return x;
+}
+
+PetscInt BeamSystemRigidCount(const BeamSystem &op)
+{
+  // The rigid motions the held dofs leave: (a, b) with a + b x_i = 0 at every held deflection
+  // and b = 0 at every held rotation.
+  bool      any = false, independent = false;
+  PetscReal a0 = 0, b0 = 0; // the first constraint row (a0, b0) on (a, b)
+  for (PetscInt i = 0; i < op.nodes && !independent; ++i)
+    for (PetscInt f = 0; f < std::min<PetscInt>(op.fields, 2) && !independent; ++f) {
+      if (!op.held[op.Dof(i, f)]) continue;
+      const PetscReal a = f == 0 ? 1.0 : 0.0, b = f == 0 ? op.NodeX(i) : 1.0;
+      if (!any) any = true, a0 = a, b0 = b;
+      else independent = a0 * b - b0 * a != 0;
+    }
+  if (independent) return 0;
+  std::vector<std::pair<PetscReal, PetscReal>> basis; // (a, b) of each candidate
+  if (any) basis.push_back({-b0, a0});
+  else basis = {{1.0, 0.0}, {0.0, 1.0}};
+  // A candidate is rigid only if it strains nothing (an Euler-Bernoulli clamp holds the
+  // rotation through its mirrored curvature, not a held dof): the count is the number of
+  // eigenvalues of the strain energy over the mass on the candidates' span below the rigid
+  // threshold.
+  const auto motion = [&](PetscReal a, PetscReal b) {
+    std::vector<PetscReal> v(op.ndof, 0.0);
+    for (PetscInt i = 0; i < op.nodes; ++i) {
+      v[op.Dof(i)] = a + b * op.NodeX(i);
+      if (op.fields > 1) v[op.Dof(i, 1)] = b;
+    }
+    for (PetscInt d = 0; d < op.ndof; ++d)
+      if (op.held[d]) v[d] = 0.0;
+    return v;
+  };
+  const size_t                        k = basis.size();
+  std::vector<std::vector<PetscReal>> v;
+  for (auto &ab : basis) v.push_back(motion(ab.first, ab.second));
+  PetscReal A[2][2] = {{0, 0}, {0, 0}}, B[2][2] = {{0, 0}, {0, 0}};
+  for (size_t p = 0; p < k; ++p)
+    for (size_t q = p; q < k; ++q) {
+      std::vector<PetscReal> sum(op.ndof);
+      for (PetscInt d = 0; d < op.ndof; ++d) sum[d] = v[p][d] + v[q][d], B[p][q] += op.mass[d] * v[p][d] * v[q][d];
+      const PetscReal Us = BeamSystemStrainEnergy(op, sum.data(), op.fields, 0, op.ndof);
+      const PetscReal Up = BeamSystemStrainEnergy(op, v[p].data(), op.fields, 0, op.ndof), Uq = BeamSystemStrainEnergy(op, v[q].data(), op.fields, 0, op.ndof);
+      A[p][q] = p == q ? 2 * Up : Us - Up - Uq; // the bilinear form of 2 U
+      A[q][p] = A[p][q], B[q][p] = B[p][q];
+    }
+  const PetscReal zero = std::pow(kModesRigidThreshold * op.frequency_unit, 2);
+  if (k == 1) return A[0][0] <= zero * B[0][0] ? 1 : 0;
+  // det(A - l B) = 0: l^2 det B - l (a00 b11 + a11 b00 - 2 a01 b01) + det A = 0
+  const PetscReal qa = B[0][0] * B[1][1] - B[0][1] * B[0][1], qb = -(A[0][0] * B[1][1] + A[1][1] * B[0][0] - 2 * A[0][1] * B[0][1]), qc = A[0][0] * A[1][1] - A[0][1] * A[0][1];
+  const PetscReal disc = std::sqrt(std::max<PetscReal>(0.0, qb * qb - 4 * qa * qc));
+  const PetscReal l1 = (-qb - disc) / (2 * qa), l2 = (-qb + disc) / (2 * qa);
+  return (l1 <= zero ? 1 : 0) + (l2 <= zero ? 1 : 0);
 }
 
 PetscInt BeamModesRigidCount(Support left, Support right)

@@ -70,6 +70,18 @@ PetscInt BeamFreeDofCount(const BeamSystem &op);
 PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out,
                                 std::vector<std::vector<PetscReal>> *shapes = nullptr);
 
+// Rigid modes the held dofs allow, for any supports, clamped region or pivot: 2 (w = a + b x,
+// and psi = b for a second field) minus the rank of the constraints the held dofs put on
+// (a, b): a held deflection at x gives a + b x = 0, a held rotation b = 0.
+PetscInt BeamSystemRigidCount(const BeamSystem &op);
+
+// BeamModesCompute checks that its lowest min(count, BeamSystemRigidCount(op)) modes are rigid
+// (below kModesRigidThreshold): on very fine grids (measured for the paper's free-free and
+// pinned-free beams: resolved at N = 15001, not at N >= 17001; docs/model.md) the round-off of the stiffness, whose largest
+// eigenvalue is ~N^4 times the fundamental's, turns them into modes at a fraction of a hertz
+// or loses them; the run is then refused (PETSC_ERR_NOT_CONVERGED) naming N, the expected
+// count and the frequencies found, instead of reporting them as flexural modes.
+
 // Rigid modes of a uniform beam with these end supports and no clamped region:
 // 2 for free-free (translation, rotation), 1 for pinned-free (rotation about
 // the pin), 0 otherwise.

@@ -430,6 +430,7 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   S.info.ts_type = now;
   PetscCall(PetscObjectTypeCompare((PetscObject)adapt, TSADAPTNONE, &fixed));
   S.fixed_step = fixed;
+  S.info.fixed_step = fixed;
   if (S.P.form != Formulation::Explicit) {
     PetscBool user_test;
     SNES      snes;

@@ -8,6 +8,7 @@
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
 #include "model/rigid.hpp"
+#include "run/outcome.hpp"
 #include "studies/sweep_farm.hpp"
 
 #include <algorithm>
@@ -66,6 +67,9 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
       status = SweepStatusOfError(ierr);
       *reason = SweepErrorReason(ierr);
       ierr    = 0;
+    } else if (result->ended_in_contact) { // a contact cut short by -impact_max_time: no number
+      status  = SweepCutInContact;
+      *reason = ImpactCutOffReason(c, *result);
     }
   }
   PetscCall(SweepCaseOptionsClear(plan));
@@ -140,7 +144,13 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   const PetscInt n = help ? 1 : plan->cases(); // -help: print the options once
   candidates->clear();
+  const double t0 = MPI_Wtime();
   for (PetscInt i = 0; i < n; ++i) {
+    if (i == 1000 && n > 1000000) { // a huge plan: its set-up (every point's options read and checked) is announced
+      const double per = (MPI_Wtime() - t0) / i;
+      PetscCall(PetscPrintf(comm, "sweep: %" PetscInt_FMT " points planned: checking every point's options takes about %.3g s (%.2g ms a point) before the first run; fewer points (a coarser -sweep_x or -sweep) shorten it\n",
+                            n, per * (double)n, per * 1e3));
+    }
     Scenario       c;
     int            status;
     std::string    reason;

@@ -386,6 +386,8 @@ const char *SweepStatusName(int status)
     return "run stopped (not converged)";
   case SweepNotFinite:
     return "solution not finite";
+  case SweepCutInContact:
+    return "cut off in contact by -impact_max_time";
   default:
     return "run failed";
   }

@@ -31,6 +31,7 @@ enum SweepStatus {
   SweepRefused      = 4, // the run's set-up refused the values (e.g. an explicit step above its stability limit)
   SweepNotConverged = 5, // the run stopped: a solve or event location failed, energy grew, the ball chattered
   SweepNotFinite    = 6, // the solution became NaN/Inf (an unstable step)
+  SweepCutInContact = 7, // the run reached -impact_max_time with the ball still in contact
 };
 const char *SweepStatusName(int status);
 
