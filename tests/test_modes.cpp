@@ -1,5 +1,5 @@
 // Mode frequencies of the discrete beam (BeamModesCompute, SLEPc) against the
-// continuum beta-L reference (BeamModesAnalytic, MODEL.md section 1), for the
+// continuum beta-L reference (BeamModesAnalytic, docs/model.md), for the
 // paper's aluminium beam: E = 7e10 Pa, rho = 2700 kg/m^3, b = 32 mm, a = 6 mm,
 // L = 1.1 m. Runs at 1 and 2 MPI ranks: the solve is on PETSC_COMM_WORLD.
 //
@@ -77,7 +77,7 @@ const SupportCase kCases[] = {
 
 } // namespace
 
-// beta L recovered from BeamModesAnalytic equals the MODEL.md tables (5 decimals),
+// beta L recovered from BeamModesAnalytic equals the tables of docs/model.md (5 decimals),
 // whichever end carries which support.
 TEST(ModesAnalytic, MatchesModelTables)
 {

@@ -1,4 +1,4 @@
-// Ball-beam contact laws (MODEL.md section 1), as plain functions of the
+// Ball-beam contact laws (docs/model.md), as plain functions of the
 // compression c = y_ball - y_beam(x_imp) (m). Force F (N) acts only in contact:
 //   linear      F = k c
 //   hysteresis  F = k1 c^m while compressing, F = k2 c^n while expanding,

@@ -1,5 +1,5 @@
 // After a separation: the exact free vibration of the beam and the free flight of the ball
-// (MODEL.md section 8), instead of integrating them in time (-impact_after modal).
+// (docs/model.md, "After separation"), instead of integrating them in time (-impact_after modal).
 //
 // The state at the separation is projected on the beam's modes (solvers/beam_modes.hpp,
 // computed once per beam), so that in closed form

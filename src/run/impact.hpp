@@ -1,4 +1,4 @@
-// One ball-beam impact as a PETSc TS problem (MODEL.md sections 2-3).
+// One ball-beam impact as a PETSc TS problem (docs/model.md).
 //
 // State: the beam on a 1-D DMDA (y, v per node; or y only for alpha2) and the
 // ball (y_b, v_b; or y_b only) on a DMRedundant, packed in a DMComposite.

@@ -399,7 +399,7 @@ void BetaEquationEval(BetaEquation e, PetscReal x, PetscReal *f, PetscReal *df)
 
 PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, PetscReal EI, PetscReal mu, PetscInt n_flexural, std::vector<PetscReal> *omega)
 {
-  // MODEL.md section 1 tables (beta_n L), n = 1, 2, ...
+  // the beta_n L tables of docs/model.md, n = 1, 2, ...
   static const PetscReal free_free[]   = {4.73004, 7.85320, 10.99561, 14.13717};
   static const PetscReal clamped_free[] = {1.87510, 4.69409, 7.85476, 10.99554};
   static const PetscReal pinned_free[] = {3.92660, 7.06858, 10.21018};

@@ -1,6 +1,6 @@
 // Mode frequencies of the beam: the discrete modes from an eigen-solve of the
-// semi-discrete operator (MODEL.md section 2), and the continuum reference from
-// the beta-L tables (MODEL.md section 1).
+// semi-discrete operator (docs/model.md), and the continuum reference from
+// the beta-L tables (docs/model.md).
 //
 // Discrete:   K phi = omega^2 M phi   over the free (not held) dofs, any number of fields
 //   per node, K the stiffness of the system (system/beam_system.hpp), M = diag(mass) the
@@ -91,7 +91,7 @@ PetscInt BeamModesRigidCount(Support left, Support right);
 // flexural modes n = 1..n_flexural (rigid modes not included) of a uniform beam
 // of length L (m), EI (N m^2), mu (kg/m), with these end supports (order of
 // left/right does not matter; no clamped region).
-// beta_n L starts from the MODEL.md tables and, beyond them, from the asymptotic
+// beta_n L starts from the tables of docs/model.md and, beyond them, from the asymptotic
 // formulas
 //   free-free, clamped-clamped:  (2n+1) pi/2   (table 4.73004, 7.85320, 10.99561, 14.13717)
 //   clamped-free:                (2n-1) pi/2   (table 1.87510, 4.69409, 7.85476, 10.99554)
