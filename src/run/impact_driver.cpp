@@ -219,13 +219,37 @@ PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamS
   PetscFunctionReturn(0);
 }
 
+// The end of a run at time t: the contact still open (if any) closed, the final measures
+// (refused when not finite), the outcome, and the stepper's counts.
+PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ContactState &contact, const ContactTimeline &timeline, const StateMeasures &m0, PetscReal t,
+                            ImpactResult *res)
+{
+  StateMeasures m1;
+  PetscFunctionBeginUser;
+  res->ended_in_contact = contact.phase != ContactPhase::Separated ? PETSC_TRUE : PETSC_FALSE;
+  if (res->ended_in_contact) {
+    res->contact_time_total += t - timeline.contact_start;
+    if (res->contacts == 1) res->contact_time = t - timeline.contact_start;
+  }
+  PetscCall(MeasureState(st, ctx, nullptr, &m1, nullptr));
+  PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) && std::isfinite(m1.angular_momentum), st.Comm(), PETSC_ERR_FP,
+             "the solution is not finite (NaN/Inf) at the end of the run, t = %g s, with %s: no result is reported; the step is unstable%s", (double)t, st.Method().c_str(),
+             res->dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+  ImpactOutcomeFinish(ctx, m0, m1, t, res);
+  if (sc.monitor.segment && sc.monitor.segment_until > 0)
+    PetscCheck(t >= sc.monitor.segment_until * (1 - 1e-12), st.Comm(), PETSC_ERR_ARG_INCOMP, "-monitor_segment_until %g s is beyond the end of the run (%g s): raise -impact_window so the run lasts that long",
+               (double)sc.monitor.segment_until, (double)t);
+  PetscCall(st.Counts(res));
+  PetscFunctionReturn(0);
+}
+
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
 // stepper reads.
 PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, PetscReal approach, ImpactResult *res)
 {
   const ImpactParams &ip    = sc.impact;
   const ImpactTimes   times = ImpactTimesOf(sc.beam, sc.ball, ip);
-  StateMeasures       m0, m1;
+  StateMeasures       m0;
 
   PetscFunctionBeginUser;
   PetscCall(MeasureState(st, ctx, nullptr, &m0, nullptr));
@@ -290,21 +314,8 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     PetscCall(rec.Record(t));
     PetscCall(rec.Snapshots(t));
   }
-  res->wall_time        = MPI_Wtime() - wall0;
-  res->ended_in_contact = contact->phase != ContactPhase::Separated ? PETSC_TRUE : PETSC_FALSE;
-  if (res->ended_in_contact) {
-    res->contact_time_total += t - timeline.contact_start;
-    if (res->contacts == 1) res->contact_time = t - timeline.contact_start;
-  }
-  PetscCall(MeasureState(st, ctx, nullptr, &m1, nullptr));
-  PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) && std::isfinite(m1.angular_momentum), st.Comm(), PETSC_ERR_FP,
-             "the solution is not finite (NaN/Inf) at the end of the run, t = %g s, with %s: no result is reported; the step is unstable%s", (double)t, st.Method().c_str(),
-             res->dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
-  ImpactOutcomeFinish(ctx, m0, m1, t, res);
-  if (sc.monitor.segment && sc.monitor.segment_until > 0)
-    PetscCheck(t >= sc.monitor.segment_until * (1 - 1e-12), st.Comm(), PETSC_ERR_ARG_INCOMP, "-monitor_segment_until %g s is beyond the end of the run (%g s): raise -impact_window so the run lasts that long",
-               (double)sc.monitor.segment_until, (double)t);
-  PetscCall(st.Counts(res));
+  res->wall_time = MPI_Wtime() - wall0;
+  PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, m0, t, res));
   PetscFunctionReturn(0);
 }
 

@@ -299,72 +299,72 @@ PetscReal CompressionNow(ModalTS &m, PetscReal *cdot)
 // One step of length h (exponential collocation on the force; see ts_modal.hpp). O(modes),
 // one pass over the modes for the free compression at the nodes and one for the update (which
 // also gives the compression at the step's end).
-void StepBy(ModalTS &m, PetscReal h)
+// The stage compressions the modes would give without the step's force (c_i at tau_i h).
+static void FreeStageCompressions(const ModalTS &m, const StepWeights &W, PetscInt s, PetscReal h, const PetscReal *tau, PetscReal cfree[3])
 {
-  TSProblem         &P  = *m.P;
-  const bool         in = P.contact->phase != ContactPhase::Separated;
-  const StepWeights &W  = WeightsOf(m, h);
-  const PetscInt     s  = StageCount(m.order), n = m.n;
-  const PetscReal   *tau = m.order == 2 ? kTau2 : kTau4;
-  PetscReal         *z = m.z.data(), *zd = m.zd.data();
-  PetscReal          F[3] = {0, 0, 0};
-  if (in) {
-    // Free compression at the stage times, then F_i = F(c_i) with c_i = cfree_i - sum_j W_ij F_j.
-    PetscReal cfree[3] = {0, 0, 0};
-    for (PetscInt i = 1; i < s; ++i) cfree[i] = m.yb + m.vb * tau[i] * h;
-    if (s == 3) {
-      const PetscReal *gm0 = W.gm0.data(), *gm1 = W.gm1.data(), *g0 = W.g0.data(), *g1 = W.g1.data();
-      PetscReal        c1 = cfree[1], c2 = cfree[2];
-      for (PetscInt k = 0; k < n; ++k) {
-        c1 -= gm0[k] * z[k] + gm1[k] * zd[k];
-        c2 -= g0[k] * z[k] + g1[k] * zd[k];
-      }
-      cfree[1] = c1, cfree[2] = c2;
-    } else {
-      const PetscReal *g0 = W.g0.data(), *g1 = W.g1.data();
-      PetscReal        c1 = cfree[1];
-      for (PetscInt k = 0; k < n; ++k) c1 -= g0[k] * z[k] + g1[k] * zd[k];
-      cfree[1] = c1;
+  const PetscReal *z = m.z.data(), *zd = m.zd.data();
+  const PetscInt   n = m.n;
+  for (PetscInt i = 1; i < s; ++i) cfree[i] = m.yb + m.vb * tau[i] * h;
+  if (s == 3) {
+    const PetscReal *gm0 = W.gm0.data(), *gm1 = W.gm1.data(), *g0 = W.g0.data(), *g1 = W.g1.data();
+    PetscReal        c1 = cfree[1], c2 = cfree[2];
+    for (PetscInt k = 0; k < n; ++k) {
+      c1 -= gm0[k] * z[k] + gm1[k] * zd[k];
+      c2 -= g0[k] * z[k] + g1[k] * zd[k];
+    }
+    cfree[1] = c1, cfree[2] = c2;
+  } else {
+    const PetscReal *g0 = W.g0.data(), *g1 = W.g1.data();
+    PetscReal        c1 = cfree[1];
+    for (PetscInt k = 0; k < n; ++k) c1 -= g0[k] * z[k] + g1[k] * zd[k];
+    cfree[1] = c1;
+  }
+}
+
+// The stage forces F_i = F(c_i), c_i = cfree_i - sum_j W_ij F_j: Newton on the 1 or 2 unknowns.
+static void StageForces(ModalTS &m, const StepWeights &W, PetscInt s, const PetscReal cfree[3], PetscReal F[3])
+{
+  TSProblem &P = *m.P;
+  P.count.func++;
+  F[0] = ContactForce(P.ball, *P.contact, CompressionNow(m, nullptr));
+  for (PetscInt i = 1; i < s; ++i) F[i] = F[0];
+  const PetscInt nu = s - 1; // unknowns F_1 .. F_{s-1}
+  PetscReal dprev = PETSC_MAX_REAL;
+  for (int it = 0; it < 50; ++it) {
+    PetscReal r[2], J[2][2], c[3];
+    for (PetscInt i = 1; i < s; ++i) {
+      c[i] = cfree[i];
+      for (PetscInt j = 0; j < s; ++j) c[i] -= W.W[i][j] * F[j];
+      const PetscReal k = ContactStiffness(P.ball, *P.contact, c[i]);
+      r[i - 1]          = F[i] - ContactForce(P.ball, *P.contact, c[i]);
+      for (PetscInt l = 1; l < s; ++l) J[i - 1][l - 1] = (i == l ? 1.0 : 0.0) + k * W.W[i][l];
     }
     P.count.func++;
-    F[0] = ContactForce(P.ball, *P.contact, CompressionNow(m, nullptr));
-    for (PetscInt i = 1; i < s; ++i) F[i] = F[0];
-    const PetscInt nu = s - 1; // unknowns F_1 .. F_{s-1}
-    PetscReal dprev = PETSC_MAX_REAL;
-    for (int it = 0; it < 50; ++it) {
-      PetscReal r[2], J[2][2], c[3];
-      for (PetscInt i = 1; i < s; ++i) {
-        c[i] = cfree[i];
-        for (PetscInt j = 0; j < s; ++j) c[i] -= W.W[i][j] * F[j];
-        const PetscReal k = ContactStiffness(P.ball, *P.contact, c[i]);
-        r[i - 1]          = F[i] - ContactForce(P.ball, *P.contact, c[i]);
-        for (PetscInt l = 1; l < s; ++l) J[i - 1][l - 1] = (i == l ? 1.0 : 0.0) + k * W.W[i][l];
-      }
-      P.count.func++;
-      PetscReal d[2];
-      if (nu == 1) d[0] = r[0] / J[0][0];
-      else {
-        const PetscReal det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-        d[0]                = (J[1][1] * r[0] - J[0][1] * r[1]) / det;
-        d[1]                = (J[0][0] * r[1] - J[1][0] * r[0]) / det;
-      }
-      PetscReal dmax = 0, fmax = std::abs(F[0]);
-      for (PetscInt i = 0; i < nu; ++i) {
-        F[i + 1] -= d[i];
-        dmax = std::max(dmax, std::abs(d[i]));
-        fmax = std::max(fmax, std::abs(F[i + 1]));
-      }
-      if (!(dmax > 1e-14 * fmax) || (it > 2 && dmax >= dprev)) break; // converged, or at round-off
-      dprev = dmax;
-      if (it == 49) m.newton_fail++;
+    PetscReal d[2];
+    if (nu == 1) d[0] = r[0] / J[0][0];
+    else {
+      const PetscReal det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+      d[0]                = (J[1][1] * r[0] - J[0][1] * r[1]) / det;
+      d[1]                = (J[0][0] * r[1] - J[1][0] * r[0]) / det;
     }
+    PetscReal dmax = 0, fmax = std::abs(F[0]);
+    for (PetscInt i = 0; i < nu; ++i) {
+      F[i + 1] -= d[i];
+      dmax = std::max(dmax, std::abs(d[i]));
+      fmax = std::max(fmax, std::abs(F[i + 1]));
+    }
+    if (!(dmax > 1e-14 * fmax) || (it > 2 && dmax >= dprev)) break; // converged, or at round-off
+    dprev = dmax;
+    if (it == 49) m.newton_fail++;
   }
-  // The ball first (the compression at the end needs it).
-  m.yb += m.vb * h;
-  for (PetscInt j = 0; j < s; ++j) {
-    m.yb -= F[j] * W.by[j] / P.ball.mass;
-    m.vb -= F[j] * W.bv[j] / P.ball.mass;
-  }
+}
+
+// The modes over the step with the stage forces (none in free flight), and the compression and
+// its rate at the end (the ball has moved first).
+static void AdvanceModes(ModalTS &m, const StepWeights &W, PetscInt s, bool in, const PetscReal F[3])
+{
+  PetscReal       *z = m.z.data(), *zd = m.zd.data();
+  const PetscInt   n = m.n;
   const PetscReal *a0 = W.a0.data(), *a1 = W.a1.data(), *a2 = W.a2.data(), *a3 = W.a3.data(), *gamma = m.gamma.data();
   PetscReal        c = m.yb, cd = m.vb;
   if (!in) // free flight of the ball: the beam's modes free
@@ -401,6 +401,28 @@ void StepBy(ModalTS &m, PetscReal h)
   m.c       = c;
   m.cd      = cd;
   m.c_valid = true;
+}
+
+void StepBy(ModalTS &m, PetscReal h)
+{
+  TSProblem         &P  = *m.P;
+  const bool         in = P.contact->phase != ContactPhase::Separated;
+  const StepWeights &W  = WeightsOf(m, h);
+  const PetscInt     s  = StageCount(m.order);
+  const PetscReal   *tau = m.order == 2 ? kTau2 : kTau4;
+  PetscReal          F[3] = {0, 0, 0};
+  if (in) {
+    PetscReal cfree[3] = {0, 0, 0};
+    FreeStageCompressions(m, W, s, h, tau, cfree);
+    StageForces(m, W, s, cfree, F);
+  }
+  // The ball first (the compression at the end needs it).
+  m.yb += m.vb * h;
+  for (PetscInt j = 0; j < s; ++j) {
+    m.yb -= F[j] * W.by[j] / P.ball.mass;
+    m.vb -= F[j] * W.bv[j] / P.ball.mass;
+  }
+  AdvanceModes(m, W, s, in, F);
 }
 
 // Collective: whether any rank says so.
