@@ -66,13 +66,27 @@ def label_of(f, path):
     a = attr(f, "beam_thickness", 0)
     if a and "beam_thickness" not in axes_of(f):
         parts.append("a = %g mm" % (a * 1e3))
-    law = attr(f, "ball_law")
+    n = attr(f, "beam_nodes")
+    if n and "beam_nodes" not in axes_of(f):
+        parts.append("N = %d" % n)
+    law, mb, vb = attr(f, "ball_law"), attr(f, "ball_mass"), attr(f, "ball_speed")
     if law:
-        parts.append(law + " ball")
+        ball = law + " ball"
+        if mb and vb and "ball_speed" not in axes_of(f):
+            ball += " %g g at %g m/s" % (mb * 1e3, vb)
+        parts.append(ball)
     done, total = attr(f, "sweep_cases_done"), attr(f, "sweep_cases_total")
     if done is not None and total is not None and done < total:
         parts.append("partial %d/%d" % (done, total))
     return ", ".join(parts) if parts else os.path.basename(path)
+
+
+def held(f):
+    """Whether the beam is held (a support other than free, a clamped region, a pivot)."""
+    left, right = attr(f, "beam_left"), attr(f, "beam_right")
+    x0 = attr(f, "beam_clamp_x0", -1)
+    opts = attr(f, "options", "") or ""
+    return (left not in (None, "free")) or (right not in (None, "free")) or (x0 is not None and x0 >= 0) or "-beam_pivot" in opts
 
 
 def axes_of(f):
@@ -128,7 +142,7 @@ def plot_one_axis(args, files, column):
     fig, ax = plt.subplots(figsize=(8, 5))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     acor_mode = column in ("acor", "acor_corrected")
-    any_raw = any_rigid = any_failed = False
+    any_raw = any_rigid = any_failed = any_held = any_multi = False
     xlabel = None
     for k, (path, f) in enumerate(files):
         r = f["results"]
@@ -144,6 +158,9 @@ def plot_one_axis(args, files, column):
         c = colours[k % len(colours)]
         label = args.label[k] if args.label else label_of(f, path)
         rigid = r["rigid_acor"][()][order] if acor_mode and "rigid_acor" in r else None
+        if rigid is not None and held(f):
+            rigid = None  # Eq. (11) is the free rigid body: no curve for a held or pivoted beam
+            any_held = True
         if acor_mode and not args.no_rigid and rigid is not None:
             label += "; rigid f = %g" % attr(f, "rigid_loss_fraction", 0.0)
         if len(x) == 0:
@@ -158,6 +175,10 @@ def plot_one_axis(args, files, column):
         if acor_mode and not args.no_rigid and rigid is not None:
             ax.plot(x[ok], rigid[ok], "--", color=c, linewidth=1.0, alpha=0.8)
             any_rigid = True
+        multi = ok & (r["contacts"][()][order] >= 2) if "contacts" in r else np.zeros_like(ok)
+        if np.any(multi):  # the ball struck more than once: a different physics, marked
+            ax.plot(x[multi], y[multi], "o", color=c, markersize=6, markerfacecolor="none", markeredgewidth=1.0)
+            any_multi = True
         mark_failed(ax, x[~ok], st[~ok], c)
         any_failed |= bool(np.any(~ok))
     ax.set_xlabel(xlabel)
@@ -173,6 +194,10 @@ def plot_one_axis(args, files, column):
             styles.append(Line2D([], [], color="k", linestyle=":", label="ACOR raw"))
         if any_rigid:
             styles.append(Line2D([], [], color="k", linestyle="--", label="rigid body, Eq. (11)"))
+        if any_held:
+            styles.append(Line2D([], [], color="none", label="(no Eq. (11) curve: the beam is held)"))
+    if any_multi:
+        styles.append(Line2D([], [], color="k", linestyle="", marker="o", markersize=6, markerfacecolor="none", label="two or more contacts"))
     if any_failed:
         styles.append(Line2D([], [], color="k", linestyle="", marker="x", label="failed point (its status code)"))
     if styles:
