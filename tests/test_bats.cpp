@@ -21,24 +21,7 @@ using beamimpact::test::RunImpact;
 
 namespace {
 
-// Reads beam and ball from options files (as a user's command line would) in a private
-// options database, from the repository root (the files' relative paths start there).
-void ReadScene(const std::vector<std::string> &files, const std::vector<std::pair<std::string, std::string>> &extra, BeamParams *beam, BallParams *ball)
-{
-  PetscOptions o;
-  char         cwd[4096];
-  ASSERT_NE(nullptr, getcwd(cwd, sizeof cwd));
-  ASSERT_EQ(0, chdir(BEAMIMPACT_SOURCE_DIR));
-  ASSERT_EQ(0, PetscOptionsCreate(&o));
-  for (const std::string &f : files) ASSERT_EQ(0, PetscOptionsInsertFile(PETSC_COMM_WORLD, o, f.c_str(), PETSC_TRUE));
-  for (auto &kv : extra) ASSERT_EQ(0, PetscOptionsSetValue(o, kv.first.c_str(), kv.second.c_str()));
-  ASSERT_EQ(0, PetscOptionsPush(o));
-  EXPECT_EQ(0, BeamParamsFromOptions(PETSC_COMM_WORLD, beam));
-  EXPECT_EQ(0, BallParamsFromOptions(PETSC_COMM_WORLD, ball));
-  ASSERT_EQ(0, PetscOptionsPop());
-  ASSERT_EQ(0, PetscOptionsDestroy(&o));
-  ASSERT_EQ(0, chdir(cwd));
-}
+using beamimpact::test::ReadScene;
 
 struct Bat {
   BeamParams   beam;

@@ -30,20 +30,9 @@ using Opts = std::vector<std::pair<std::string, std::string>>;
 // options files as a command line would, plus `extra`.
 void Paper(const Opts &extra, BeamParams *beam, BallParams *ball)
 {
-  PetscOptions o;
-  char         cwd[4096];
-  ASSERT_NE(nullptr, getcwd(cwd, sizeof cwd));
-  ASSERT_EQ(0, chdir(BEAMIMPACT_SOURCE_DIR));
-  ASSERT_EQ(0, PetscOptionsCreate(&o));
-  for (const char *f : {"options/base/aluminium-6mm.opts", "options/base/superball-linear.opts"}) ASSERT_EQ(0, PetscOptionsInsertFile(PETSC_COMM_WORLD, o, f, PETSC_TRUE));
-  ASSERT_EQ(0, PetscOptionsSetValue(o, "-beam_length", "1.1"));
-  for (auto &kv : extra) ASSERT_EQ(0, PetscOptionsSetValue(o, kv.first.c_str(), kv.second.c_str()));
-  ASSERT_EQ(0, PetscOptionsPush(o));
-  EXPECT_EQ(0, BeamParamsFromOptions(PETSC_COMM_WORLD, beam));
-  EXPECT_EQ(0, BallParamsFromOptions(PETSC_COMM_WORLD, ball));
-  ASSERT_EQ(0, PetscOptionsPop());
-  ASSERT_EQ(0, PetscOptionsDestroy(&o));
-  ASSERT_EQ(0, chdir(cwd));
+  Opts all{{"-beam_length", "1.1"}};
+  all.insert(all.end(), extra.begin(), extra.end());
+  test::ReadScene({"options/base/aluminium-6mm.opts", "options/base/superball-linear.opts"}, all, beam, ball);
 }
 
 ImpactResult RunSc(const Scenario &sc, const Opts &ts)

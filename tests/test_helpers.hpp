@@ -2,6 +2,8 @@
 // one impact with TS options pushed into the options database for its duration.
 #pragma once
 
+#include "io/ball_options.hpp"
+#include "io/beam_options.hpp"
 #include "run/impact.hpp"
 #include "run/scenario.hpp"
 #include "system/beam_system.hpp"
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <string>
+#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -93,6 +96,25 @@ inline BeamSystem TwoFieldCopies(const BeamSystem &a, PetscReal mass_factor)
     for (PetscInt i = 0; i < a.ndof; ++i)
       for (PetscInt o = -a.bw; o <= a.bw; ++o) s.band[(size_t)ws * (2 * i + f) + (2 * o + s.bw)] = a.band[(size_t)wa * i + (o + a.bw)];
   return s;
+}
+
+// Reads beam and ball from options files (as a user's command line would) plus `extra`, in a
+// private options database, from the repository root (the files' relative paths start there).
+inline void ReadScene(const std::vector<std::string> &files, const std::vector<std::pair<std::string, std::string>> &extra, BeamParams *beam, BallParams *ball)
+{
+  PetscOptions o;
+  char         cwd[4096];
+  ASSERT_NE(nullptr, getcwd(cwd, sizeof cwd));
+  ASSERT_EQ(0, chdir(BEAMIMPACT_SOURCE_DIR));
+  ASSERT_EQ(0, PetscOptionsCreate(&o));
+  for (const std::string &f : files) ASSERT_EQ(0, PetscOptionsInsertFile(PETSC_COMM_WORLD, o, f.c_str(), PETSC_TRUE));
+  for (auto &kv : extra) ASSERT_EQ(0, PetscOptionsSetValue(o, kv.first.c_str(), kv.second.c_str()));
+  ASSERT_EQ(0, PetscOptionsPush(o));
+  EXPECT_EQ(0, BeamParamsFromOptions(PETSC_COMM_WORLD, beam));
+  EXPECT_EQ(0, BallParamsFromOptions(PETSC_COMM_WORLD, ball));
+  ASSERT_EQ(0, PetscOptionsPop());
+  ASSERT_EQ(0, PetscOptionsDestroy(&o));
+  ASSERT_EQ(0, chdir(cwd));
 }
 
 // Runs one impact with the given TS options set only for this run.

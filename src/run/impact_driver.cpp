@@ -85,7 +85,7 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
     s->approach              = sc.ball.speed + s->V_x;
     PetscCheck(s->approach > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_speed %g, -bat_angular_velocity %g: the bat moves at %g m/s at x = %g m, so ball (-ball_speed %g) and bat do not approach",
                (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x, (double)sc.ball.speed);
-    s->beam_velocity = BeamSystemRigidVelocity(s->sys, -(sc.swing.bat_speed - sc.swing.bat_angular_velocity * body.x_cm), -sc.swing.bat_angular_velocity);
+    s->beam_velocity = BeamSystemSwingVelocity(s->sys, sc.swing, body);
   }
   if (s->sys.Gripped()) { // the hands hold the handle to the swing's rigid frame (at rest: a fixed frame)
     BeamSystem &S = s->sys;

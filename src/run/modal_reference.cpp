@@ -197,7 +197,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   PetscReal V_x   = 0; // a swinging bat: its rigid motion toward the ball (-y)
   if (sc.swing.Swings()) {
     const BeamRigidBody          body = BeamRigidBodyOf(sc.beam);
-    const std::vector<PetscReal> v0   = BeamSystemRigidVelocity(sys, -(sc.swing.bat_speed - sc.swing.bat_angular_velocity * body.x_cm), -sc.swing.bat_angular_velocity);
+    const std::vector<PetscReal> v0   = BeamSystemSwingVelocity(sys, sc.swing, body);
     for (PetscInt d = 0; d + 1 < S.n; ++d) run.qd[d] = v0[S.dof[d]];
     V_x = SwingSpeedAt(sc.swing, body, ip.x);
   }

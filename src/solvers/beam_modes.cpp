@@ -58,24 +58,6 @@ std::vector<std::vector<PetscReal>> RigidMotions(const BeamSystem &sys)
   return out;
 }
 
-// phi minus its projections on the first `count` columns of Phi (n rows; twice, for round-off),
-// then normalised.
-static void OrthonormalizeAgainst(const std::vector<PetscReal> &Phi, PetscInt n, PetscInt count, PetscReal *phi)
-{
-  for (int pass = 0; pass < 2; ++pass)
-    for (PetscInt l = 0; l < count; ++l) {
-      const PetscReal *psi = &Phi[(size_t)l * n];
-      PetscReal        dot = 0;
-      for (PetscInt d = 0; d < n; ++d) dot += phi[d] * psi[d];
-      for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * psi[d];
-    }
-  PetscReal nrm = 0;
-  for (PetscInt d = 0; d < n; ++d) nrm += phi[d] * phi[d];
-  nrm = std::sqrt(nrm);
-  for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
-}
-
-
 // The zero cluster of the computed basis (omega below 1e-3 frequency units; every flexural
 // mode of a beam is above 1) replaced by the exact rigid motions, and the flexible modes made
 // orthogonal to them (twice, classical Gram-Schmidt). syev and inverse iteration find the
@@ -95,9 +77,9 @@ void ExactRigidModes(BeamModes *m)
     for (PetscInt k = 0; k < nz; ++k) { // M^{1/2} v on the free dofs, orthonormal
       PetscReal *phi = &B.Phi[(size_t)k * n];
       for (PetscInt d = 0; d < n; ++d) phi[d] = std::sqrt(S.mass[d]) * rigid[k][S.dof[d]];
-      OrthonormalizeAgainst(B.Phi, n, k, phi);
+      ModalOrthonormalize(B.Phi, n, k, 2, phi);
     }
-    for (PetscInt k = nz; k < n; ++k) OrthonormalizeAgainst(B.Phi, n, nz, &B.Phi[(size_t)k * n]);
+    for (PetscInt k = nz; k < n; ++k) ModalOrthonormalize(B.Phi, n, nz, 2, &B.Phi[(size_t)k * n]);
   }
   for (PetscInt k = 0; k < nz; ++k) {
     B.omega[k] = 0;

@@ -45,6 +45,21 @@ ModalSystem ModalSystemBeamOnly(const BeamSystem &sys)
 }
 
 
+void ModalOrthonormalize(const std::vector<PetscReal> &Phi, PetscInt n, PetscInt count, int passes, PetscReal *phi)
+{
+  for (int pass = 0; pass < passes; ++pass)
+    for (PetscInt l = 0; l < count; ++l) {
+      const PetscReal *psi = &Phi[(size_t)l * n];
+      PetscReal        dot = 0;
+      for (PetscInt d = 0; d < n; ++d) dot += phi[d] * psi[d];
+      for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * psi[d];
+    }
+  PetscReal nrm = 0;
+  for (PetscInt d = 0; d < n; ++d) nrm += phi[d] * phi[d];
+  nrm = std::sqrt(nrm);
+  for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
+}
+
 namespace {
 
 // An entry of A = M^{-1/2} K_p M^{-1/2}: (row free dof, column free dof, value).
@@ -142,19 +157,7 @@ int BandHalfWidth(const ModalSystem &S)
 // Modified Gram-Schmidt on the columns of Phi (n x n), in order.
 void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
 {
-  for (PetscInt k = 0; k < n; ++k) {
-    PetscReal *phi = &Phi[k * n];
-    for (PetscInt l = 0; l < k; ++l) {
-      const PetscReal *psi = &Phi[l * n];
-      PetscReal        dot = 0;
-      for (PetscInt d = 0; d < n; ++d) dot += phi[d] * psi[d];
-      for (PetscInt d = 0; d < n; ++d) phi[d] -= dot * psi[d];
-    }
-    PetscReal nrm = 0;
-    for (PetscInt d = 0; d < n; ++d) nrm += phi[d] * phi[d];
-    nrm = std::sqrt(nrm);
-    for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
-  }
+  for (PetscInt k = 0; k < n; ++k) ModalOrthonormalize(Phi, n, k, 1, &Phi[k * n]);
 }
 
 } // namespace

@@ -40,6 +40,10 @@ ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, Pe
 // is the beam's modes, K phi = w^2 M phi, shared by every ball and impact point (solvers/beam_modes.hpp).
 ModalSystem ModalSystemBeamOnly(const BeamSystem &sys);
 
+// phi (n entries) minus its projections on the first `count` columns of Phi (n x n, orthonormal
+// columns), `passes` times (2: re-orthogonalised against round-off), then normalised.
+void ModalOrthonormalize(const std::vector<PetscReal> &Phi, PetscInt n, PetscInt count, int passes, PetscReal *phi);
+
 // One phase's eigen-decomposition of M^{-1/2} K_p M^{-1/2}.
 struct ModalBasis {
   std::vector<PetscReal> omega; // rad/s, per mode

@@ -66,6 +66,7 @@ struct TSProblem {
   JacobianCache     jac;
   TSCounters        count;
   std::vector<PetscScalar> work; // damped residuals: y + beta v over the ghosted nodes; owned accelerations
+  std::vector<PetscReal>   rate_acc, rate_cv; // TSDissipationRate: -a and C v of the owned dofs (kept: it runs every step)
 };
 
 // Read access to a composite vector: beam values by global node (ghosted by the system's

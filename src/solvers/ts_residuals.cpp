@@ -211,7 +211,9 @@ PetscErrorCode TSDissipationRate(TSProblem &P, PetscReal t, Vec X, Vec V, PetscR
   const PetscInt     vs = V ? nf : dof;
   PetscCall(TSCompression(P, s.beam, dof, s.ball[0], &c));
   const PetscReal        F = ContactForce(P.ball, *P.contact, c);
-  std::vector<PetscReal> acc(nown), cv(nown); // -a and C v of the owned dofs
+  std::vector<PetscReal> &acc = P.rate_acc, &cv = P.rate_cv; // -a and C v of the owned dofs
+  acc.resize(nown);
+  cv.resize(nown);
   BeamAcceleration(P, t, s.beam, dof, v, vs, F, acc.data() - L.D0(), nf);
   BeamSystemDampingApply(S, v, vs, L.D0(), L.D1(), cv.data() - L.D0(), nf);
   sums[0] = BeamSystemDissipationRate(S, v, vs, L.D0(), L.D1());

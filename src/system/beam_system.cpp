@@ -160,6 +160,12 @@ std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal 
   return v;
 }
 
+std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body)
+{
+  // -(V_cm + Omega (x - x_cm)) = -(V_cm - Omega x_cm) - Omega x
+  return BeamSystemRigidVelocity(sys, -(swing.bat_speed - swing.bat_angular_velocity * body.x_cm), -swing.bat_angular_velocity);
+}
+
 PetscReal BeamSystemFreeMass(const BeamSystem &sys)
 {
   PetscReal M = 0;

@@ -13,6 +13,7 @@
 
 #include "model/beam_theory.hpp"
 #include "model/contact.hpp"
+#include "model/swing.hpp"
 
 #include <petscsys.h>
 
@@ -86,6 +87,8 @@ PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, Pet
 // for a beam with rotation dofs, section spin `slope` (rad/s): a free motion (K annihilates
 // it). Held dofs get 0.
 std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope);
+// The swinging bat's velocities at contact (model/swing.hpp): V(x) toward the ball, i.e. -y.
+std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body);
 
 // Mass (kg) of the translational dofs that are not held.
 PetscReal BeamSystemFreeMass(const BeamSystem &sys);
