@@ -232,13 +232,16 @@ def section_mass(p):
 def preset(path):
     """The options of a ball or bat preset file (options/balls/*.opts, options/bats/*.opts) as
     {option: value}, so that a matrix row runs the preset's own numbers (no nested -options_file
-    in those files)."""
+    in those files). A file path in it is relative to the preset file, as the program reads it."""
     out = {}
     with open(os.path.join(ROOT, path)) as f:
         for line in f:
             line = line.split("#", 1)[0].split()
             if line:
                 out[line[0]] = line[1] if len(line) > 1 else ""
+    for name in ("-beam_profile", "-beam_properties", "-ball_cor_table"):
+        if name in out and not os.path.isabs(out[name]):
+            out[name] = os.path.normpath(os.path.join(os.path.dirname(path), out[name]))
     return out
 
 

@@ -55,7 +55,7 @@ set(cases
   "-beam_EI 40|-beam_EI and -beam_mu go together"
   "-ball_law linear -ball_n 2|-ball_n is a hysteresis parameter"
   "-ball_law hysteresis -ball_n 0.5|-ball_n 0.5 is not allowed"
-  "-beam_lenght 1.0|option\\(s\\) set but not used.*-beam_lenght"
+  "-beam_lenght 1.0|option\\(s\\) unknown.*-beam_lenght 1.0 \\(did you mean -beam_length\\?\\)"
   "-ts_type rk -ts_rk_type 2a -ts_adapt_type none|unstable for an undamped oscillation at any step"
   "-ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 1e-3|-ts_dt 0.001 is above the stability limit dt_max"
   "-ts_type euler|-ts_type euler cannot roll back a step"

@@ -38,7 +38,34 @@ if [[ $rc -eq 0 ]] && grep -q "note: 1 PETSc solver option(s) set but not used b
   pass "options/impact.opts -ts_type cn runs, the leftover -ts_rk_type is a note"
 else fail "options/impact.opts -ts_type cn: exit $rc: $out"; fi
 out=$("$exe" -options_file options/impact.opts -beam_thicknes 0.01 -output none 2>&1); rc=$?
-if [[ $rc -ne 0 ]] && grep -q "option(s) set but not used by this task and integrator: -beam_thicknes 0.01" <<<"$out"; then pass "a misspelt program option is still an error"; else fail "-beam_thicknes: exit $rc: $out"; fi
+if [[ $rc -ne 0 ]] && grep -q "option(s) unknown (set but read by no task): -beam_thicknes 0.01 (did you mean -beam_thickness?)" <<<"$out" && ! grep -q "^x " <<<"$out"; then
+  pass "a misspelt program option is an error before the run, suggesting the closest known option"
+else fail "-beam_thicknes: exit $rc: $out"; fi
+out=$("$exe" -options_file options/impact.opts -ball_spede 2 -impactx 0.3 -no_such_thing 1 -output none 2>&1); rc=$?
+if [[ $rc -ne 0 ]] && grep -q -- "-ball_spede 2 (did you mean -ball_speed?)" <<<"$out" && grep -q -- "-impactx 0.3 (did you mean -impact_x?)" <<<"$out" &&
+   grep -q -- "-no_such_thing 1\( -\|$\)" <<<"$out" && ! grep -q "no_such_thing 1 (did you mean" <<<"$out"; then
+  pass "each unknown option gets its own suggestion, none when nothing is close"
+else fail "unknown options: exit $rc: $out"; fi
+out=$("$exe" -options_file options/impact.opts -sweep_x 0:1:3 -modes_count 3 -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "note: 2 option(s) set but not used by this task: -modes_count 3 -sweep_x 0:1:3" <<<"$out" && grep -q "^x " <<<"$out"; then
+  pass "known options another task reads are a one-line note under -task impact"
+else fail "known unused options: exit $rc: $out"; fi
+out=$("$exe" -options_file options/impact.opts -beam_thicknes 0.01 -allow_unused_options -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && grep -q "WARNING: 1 option(s) unknown.*-beam_thicknes 0.01 (did you mean -beam_thickness?)" <<<"$out" && pass "-allow_unused_options makes it a warning" || fail "-allow_unused_options: exit $rc: $out"
+
+# options files: includes and file paths inside a file are relative to that file, so a scene
+# runs from any directory (r161-modes.opts includes ../bats/r161.opts, which names r161.profile)
+src=$(pwd)
+out=$(cd "$dir" && "$exe" -options_file "$src/options/scenes/r161-modes.opts" -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "profile section $src/options/bats/r161.profile" <<<"$out" && grep -q "^ *3 .*[0-9]" <<<"$out"; then
+  pass "a scene runs from another directory: its includes and profile are found next to the files"
+else fail "scene from another directory: exit $rc: $out"; fi
+mkdir -p "$dir/inc/sub"
+printf -- "-options_file sub/ball.opts # an include next to this file\n-beam_nodes 21\n" >"$dir/inc/scene.opts"
+printf -- "-ball_law hysteresis -ball_m 1.5 -ball_contact_time 1e-3 -ball_test_speed 3\n-ball_cor_table ../cor.txt\n" >"$dir/inc/sub/ball.opts"
+printf -- "0.5 0.8\n5 0.7\n" >"$dir/inc/cor.txt"
+out=$("$exe" -options_file "$dir/inc/scene.opts" -ball_cor 0.7 -output none 2>&1); rc=$?
+grep -q -- "-ball_cor_table" <<<"$out" && ! grep -q "cannot open\|cannot read" <<<"$out" && pass "a path option two files down resolves next to its file" || fail "nested path option: exit $rc: $out"
 
 # PETSc's own habits: monitors and viewers work, options the driver cannot honour are refused
 out=$("$exe" -options_file options/impact.opts -impact_window 0 -ts_monitor -ts_view -output none 2>&1); rc=$?

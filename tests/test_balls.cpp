@@ -28,18 +28,14 @@ const std::string kSource = BEAMIMPACT_SOURCE_DIR;
 
 // Reads -ball_* from an options file of the repository into a BallParams, in an options
 // database of its own (the test's is untouched); relative table paths are taken from the
-// repository root.
+// file (as for the program).
 BallParams BallFromFile(const std::string &rel)
 {
   PetscOptions opt;
   BallParams   b;
   EXPECT_EQ(PetscOptionsCreate(&opt), 0);
   EXPECT_EQ(PetscOptionsPush(opt), 0);
-  EXPECT_EQ(PetscOptionsInsertFile(PETSC_COMM_WORLD, opt, (kSource + "/" + rel).c_str(), PETSC_TRUE), 0);
-  char      table[PETSC_MAX_PATH_LEN];
-  PetscBool has;
-  EXPECT_EQ(PetscOptionsGetString(opt, NULL, "-ball_cor_table", table, sizeof(table), &has), 0);
-  if (has) { EXPECT_EQ(PetscOptionsSetValue(opt, "-ball_cor_table", (kSource + "/" + table).c_str()), 0); }
+  EXPECT_EQ(OptionsFileInsert(PETSC_COMM_WORLD, opt, kSource + "/" + rel), 0); // its table path is relative to the file
   EXPECT_EQ(BallParamsFromOptions(PETSC_COMM_WORLD, &b), 0);
   EXPECT_EQ(PetscOptionsPop(), 0);
   EXPECT_EQ(PetscOptionsDestroy(&opt), 0);

@@ -4,6 +4,7 @@
 
 #include "io/ball_options.hpp"
 #include "io/beam_options.hpp"
+#include "io/options_files.hpp"
 #include "run/impact.hpp"
 #include "run/scenario.hpp"
 #include "system/beam_system.hpp"
@@ -107,7 +108,7 @@ inline void ReadScene(const std::vector<std::string> &files, const std::vector<s
   ASSERT_NE(nullptr, getcwd(cwd, sizeof cwd));
   ASSERT_EQ(0, chdir(BEAMIMPACT_SOURCE_DIR));
   ASSERT_EQ(0, PetscOptionsCreate(&o));
-  for (const std::string &f : files) ASSERT_EQ(0, PetscOptionsInsertFile(PETSC_COMM_WORLD, o, f.c_str(), PETSC_TRUE));
+  for (const std::string &f : files) ASSERT_EQ(0, OptionsFileInsert(PETSC_COMM_WORLD, o, f));
   for (auto &kv : extra) ASSERT_EQ(0, PetscOptionsSetValue(o, kv.first.c_str(), kv.second.c_str()));
   ASSERT_EQ(0, PetscOptionsPush(o));
   EXPECT_EQ(0, BeamParamsFromOptions(PETSC_COMM_WORLD, beam));

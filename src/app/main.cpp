@@ -8,6 +8,7 @@
 // reported as one plain message (the option, the value, what is allowed);
 // -error_traceback shows PETSc's full traceback instead.
 #include "app/tasks.hpp"
+#include "io/options_files.hpp"
 #include "io/text.hpp"
 #include "studies/sweep.hpp"
 
@@ -24,27 +25,23 @@
 static const char help[] = "beamimpact: a ball striking a flexible beam (R. Cross, Am. J. Phys. 67, 692 (1999)).\n"
                            "  -task impact|modes|sweep|convergence, -output FILE.h5, and the -beam_, -ball_, -bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
                            "  -convergence_, -leapfrog_ and -ts_ options below (-help lists them all and runs nothing).\n"
-                           "  Example: mpirun -n 2 beamimpact -options_file options/default.opts\n\n";
+                           "  Example: mpirun -n 2 build/release/beamimpact -options_file options/default.opts (paths inside an options file are relative to that file)\n\n";
 
-// Every -options_file named on the command line, and those they include, must be readable:
-// said plainly here, before PETSc would stop with a traceback and an MPI abort. Returns the
-// first missing one ("" if none).
-static std::string MissingOptionsFile(int argc, char **argv)
+// The command line with every -options_file expanded into the options it holds, relative
+// paths inside a file resolved against the file's directory (io/options_files.hpp): a scene
+// runs from any directory. A file that cannot be read is said plainly here, before PETSc would
+// stop with a traceback and an MPI abort. The strings live as long as PETSc keeps argv.
+static bool ExpandCommandLine(int *argc, char ***argv, std::string *error)
 {
-  std::vector<std::string> todo;
-  for (int i = 1; i + 1 < argc; ++i)
-    if (!std::strcmp(argv[i], "-options_file")) todo.push_back(argv[i + 1]);
-  for (size_t k = 0; k < todo.size() && k < 1000; ++k) {
-    std::ifstream in(todo[k]);
-    if (!in) return todo[k];
-    std::string line;
-    while (std::getline(in, line)) {
-      std::istringstream words(line.substr(0, line.find('#')));
-      std::string        name, value;
-      if (words >> name >> value && name == "-options_file") todo.push_back(value);
-    }
-  }
-  return "";
+  static std::vector<std::string> args;
+  static std::vector<char *>      ptrs;
+  if (!beamimpact::OptionsArgsExpand(std::vector<std::string>(*argv + 1, *argv + *argc), &args, error)) return false;
+  args.insert(args.begin(), (*argv)[0]);
+  for (std::string &a : args) ptrs.push_back(a.data());
+  ptrs.push_back(nullptr);
+  *argc = (int)args.size();
+  *argv = ptrs.data();
+  return true;
 }
 
 // PETSc's parse errors ("Input string 41.5 has no integer value ...") do not say which option:
@@ -72,12 +69,10 @@ int main(int argc, char **argv)
 {
   PetscBool traceback = PETSC_FALSE;
 
-  const std::string missing = MissingOptionsFile(argc, argv);
-  if (!missing.empty()) {
+  std::string error;
+  if (!ExpandCommandLine(&argc, &argv, &error)) {
     const char *rank = std::getenv("OMPI_COMM_WORLD_RANK");
-    if (!rank || !std::strcmp(rank, "0"))
-      fprintf(stderr, "beamimpact: error: -options_file %s: cannot open the file (%s); options files are read relative to the working directory (run from the repository root)\n", missing.c_str(),
-              std::strerror(errno));
+    if (!rank || !std::strcmp(rank, "0")) fprintf(stderr, "beamimpact: error: %s\n", error.c_str());
     return 1;
   }
 

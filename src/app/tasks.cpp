@@ -16,6 +16,7 @@
 #include <petscts.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace beamimpact {
@@ -171,10 +172,12 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscFunctionReturn(0);
 }
 
-// -help: every option of every task (each reader prints its block), then nothing is run or
-// written. The readers' own checks are skipped (their errors ignored): defaults may not make
-// a runnable sweep, and that is not what -help is asked.
-PetscErrorCode PrintAllOptions(MPI_Comm comm)
+PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscEnum *task, std::string *out);
+
+// Every reader of every task, once, their own checks skipped (their errors ignored): under
+// -help each prints its block; defaults may not make a runnable sweep, and that is not what
+// -help is asked.
+PetscErrorCode ReadEveryOption(MPI_Comm comm)
 {
   Scenario        sc;
   PetscBool       modal;
@@ -198,9 +201,27 @@ PetscErrorCode PrintAllOptions(MPI_Comm comm)
     (void)TSDestroy(&ts);
   }
   PetscCall(PetscPopErrorHandler());
+  PetscFunctionReturn(0);
+}
+
+// -help: every option of every task, then nothing is run or written.
+PetscErrorCode PrintAllOptions(MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RunTaskOptions(comm, nullptr, nullptr));
+  PetscCall(ReadEveryOption(comm));
   PetscCall(PetscPrintf(comm, "\n-help lists every option of every task above, with its default; nothing was run or written.\n"
-                              "Not in the blocks above: -allow_unused_options (unused options become a warning), -error_traceback (PETSc's full traceback on errors),\n"
-                              "-output_overwrite (let -output replace a file another task wrote).\n"));
+                              "Not in the blocks above: -allow_unused_options (unknown options become a warning), -error_traceback (PETSc's full traceback on errors).\n"));
+  PetscFunctionReturn(0);
+}
+
+// The catalog of known options for the unused-options check: the names -help would list.
+PetscErrorCode KnownOptions(MPI_Comm comm, std::vector<std::string> *names)
+{
+  PetscFunctionBeginUser;
+  PetscCall(OptionsHelpNames([comm]() { return RunTaskOptions(comm, nullptr, nullptr) ? 1 : ReadEveryOption(comm); }, names));
+  for (const char *extra : {"-allow_unused_options", "-error_traceback", "-options_file", "-help"}) names->push_back(extra);
+  std::sort(names->begin(), names->end());
   PetscFunctionReturn(0);
 }
 
@@ -222,30 +243,45 @@ PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *ta
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RunTask(MPI_Comm comm)
+// -task, -output, -output_overwrite (task and output null: only read, as for -help).
+PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscEnum *task, std::string *out)
 {
   std::vector<const char *> names;
-  PetscEnum                 task                       = (PetscEnum)0;
+  PetscEnum                 t                          = (PetscEnum)0;
   char                      output[PETSC_MAX_PATH_LEN] = "";
   PetscBool                 set_output;
 
   PetscFunctionBeginUser;
-  for (const TaskEntry &t : Tasks) names.push_back(t.name);
+  for (const TaskEntry &e : Tasks) names.push_back(e.name);
   names.insert(names.end(), {"Task", "TASK_", nullptr}); // PetscOptionsEnum's list: names, type, prefix
   PetscOptionsBegin(comm, NULL, "beamimpact: task and output", "beamimpact");
-  PetscCall(PetscOptionsEnum("-task", "What to compute", "", names.data(), task, &task, NULL));
+  PetscCall(PetscOptionsEnum("-task", "What to compute", "", names.data(), t, &t, NULL));
   PetscCall(PetscOptionsString("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)", "", output, output, sizeof(output), &set_output));
   PetscCall(PetscOptionsBool("-output_overwrite", "Let -output replace a file another task wrote", "", PETSC_FALSE, NULL, NULL));
   PetscOptionsEnd();
-  PetscBool help = PETSC_FALSE;
+  if (task) *task = t;
+  if (out) {
+    PetscCheck(!set_output || output[0], comm, PETSC_ERR_ARG_WRONG, "-output needs a file name (or 'none' to write nothing); it was given empty");
+    *out = set_output ? output : std::string(Tasks[t].name) + ".h5";
+    if (*out == "none") out->clear();
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunTask(MPI_Comm comm)
+{
+  PetscEnum   task;
+  std::string out;
+  PetscBool   help = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   if (help) {
     PetscCall(PrintAllOptions(comm));
     PetscFunctionReturn(0);
   }
-  PetscCheck(!set_output || output[0], comm, PETSC_ERR_ARG_WRONG, "-output needs a file name (or 'none' to write nothing); it was given empty");
-  std::string out = set_output ? output : std::string(Tasks[task].name) + ".h5";
-  if (out == "none") out.clear();
+  OptionsSetCatalog(KnownOptions);
+  PetscCall(RunTaskOptions(comm, &task, &out));
   PetscCall(OutputCheck(comm, out, Tasks[task].name));
   PetscCall(Tasks[task].run(comm, out));
   PetscFunctionReturn(0);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "run/impact.hpp"
+#include "run/scenario.hpp"
 
 #include <petscsys.h>
 
@@ -18,6 +19,6 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output);
 PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output);
 
 // One summary line of an impact.
-PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const ImpactResult &r);
+PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r);
 
 } // namespace beamimpact

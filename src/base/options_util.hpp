@@ -4,6 +4,7 @@
 
 #include <petscsys.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,13 +17,32 @@ PetscErrorCode OptionsAsString(std::string *all);
 // size to allocate before PetscOptionsRealArray, so that lists have no fixed limit.
 PetscErrorCode OptionsListLength(const char *name, PetscInt *n);
 
-// Errors out, naming them, when options of the program's own were set but never read (a typo
-// or an option that the chosen task does not use); -allow_unused_options turns the error into
-// a warning. PETSc's solver options left over (-ts_*, -snes_*, ...: a scene's -ts_rk_type under
-// a later -ts_type cn) are a one-line note, unless strict_solver_options (a convergence
-// configuration must run as written: there a typo is an error too). Options whose names start
-// with one of ignore_prefixes (without the dash, e.g. "ts_") are not reported: a task that
-// legitimately does not use them says so itself.
+// Checks the options that were set but never read, as PETSc's -options_left lists them:
+//  * an option of the program's own that it does not know (a typo) is an error that names it
+//    and suggests the closest known option (OptionsSetCatalog); -allow_unused_options turns
+//    the error into a warning;
+//  * a known option this task does not use (-sweep_x under -task impact) is a one-line note;
+//  * PETSc's solver options left over (-ts_*, -snes_*, ...: a scene's -ts_rk_type under a
+//    later -ts_type cn) are a one-line note, unless strict_solver_options (a convergence
+//    configuration must run as written: there they are errors too).
+// Options whose names start with one of ignore_prefixes (without the dash, e.g. "ts_") are not
+// reported: a task that legitimately does not use them says so itself. Without a catalog every
+// unused option of the program's own is an error.
 PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes = {}, bool strict_solver_options = false);
+
+// The program's known options, for OptionsCheckUnused: a function filling the names (with the
+// dash) of every option any task reads. The application sets it once (app/tasks.cpp).
+using OptionsCatalog = std::function<PetscErrorCode(MPI_Comm, std::vector<std::string> *)>;
+void OptionsSetCatalog(OptionsCatalog catalog);
+
+// The option names `readers` would print under -help (each PetscOptionsBegin block's lines
+// "  -name <default>: text"), captured instead of printed. Blocks that were already read in this
+// run are printed again: PETSc's record of printed blocks is set aside meanwhile. Errors of
+// the readers are theirs to ignore.
+PetscErrorCode OptionsHelpNames(const std::function<PetscErrorCode()> &readers, std::vector<std::string> *names);
+
+// The known name closest to `name` (optimal string alignment distance: insertions, deletions,
+// substitutions, swaps of neighbours), "" when none is within max(2, length/5) edits.
+std::string OptionsClosest(const std::string &name, const std::vector<std::string> &known);
 
 } // namespace beamimpact

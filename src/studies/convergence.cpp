@@ -10,6 +10,7 @@
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
+#include "io/options_files.hpp"
 #include "io/text.hpp"
 
 #include <hdf5.h>
@@ -83,14 +84,14 @@ PetscErrorCode ConfigOptionsCreate(MPI_Comm comm, const ConvergenceConfig &cfg, 
     PetscInt     n;
     char       **names, **values;
     PetscCall(PetscOptionsCreate(&c));
-    PetscCall(PetscOptionsInsertFile(comm, c, common_file.c_str(), PETSC_TRUE));
+    PetscCall(OptionsFileInsert(comm, c, common_file));
     PetscCall(PetscOptionsLeftGet(c, &n, &names, &values)); // nothing was read yet: every option
     for (PetscInt i = 0; i < n; ++i) common.push_back(std::string("-") + names[i]);
     PetscCall(PetscOptionsLeftRestore(c, &n, &names, &values));
     PetscCall(PetscOptionsDestroy(&c));
-    PetscCall(PetscOptionsInsertFile(comm, *o, common_file.c_str(), PETSC_TRUE));
+    PetscCall(OptionsFileInsert(comm, *o, common_file));
   }
-  if (!cfg.file.empty()) PetscCall(PetscOptionsInsertFile(comm, *o, cfg.file.c_str(), PETSC_TRUE));
+  if (!cfg.file.empty()) PetscCall(OptionsFileInsert(comm, *o, cfg.file));
   if (!cfg.text.empty()) PetscCall(PetscOptionsInsertString(*o, cfg.text.c_str()));
   for (auto &name : common) {
     PetscBool has;
@@ -343,7 +344,7 @@ PetscErrorCode ConvergenceConfigLoad(MPI_Comm comm, const std::string &file, con
   cfg->name = file.empty() ? "config" : BaseName(file);
   if (!file.empty()) {
     std::ifstream in(file);
-    PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "cannot read the configuration file %s (paths are relative to the working directory: run from the repository root)", file.c_str());
+    PetscCheck(in.good(), comm, PETSC_ERR_FILE_OPEN, "cannot read the configuration file %s (a path on the command line is relative to the working directory, one in an options file to that file's directory)", file.c_str());
     cfg->description = FileDescription(file);
   }
   PetscCall(ConfigOptionsCreate(comm, *cfg, "", &o));

@@ -1,0 +1,141 @@
+// Options files with paths relative to the file. See options_files.hpp.
+#include "io/options_files.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace beamimpact {
+
+namespace {
+
+const int kMaxIncludeDepth = 32;
+
+// PETSc's rule for a key: a dash followed by something that does not start a number.
+bool IsKey(const std::string &t)
+{
+  return t.size() > 1 && t[0] == '-' && !std::isdigit((unsigned char)t[1]) && t[1] != '.';
+}
+
+// One line's tokens: whitespace-separated, '#' starts a comment, "..." is one token.
+std::vector<std::string> LineTokens(const std::string &line)
+{
+  std::vector<std::string> out;
+  size_t                   i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace((unsigned char)line[i])) ++i;
+    if (i >= line.size() || line[i] == '#') break;
+    std::string t;
+    if (line[i] == '"') {
+      const size_t close = line.find('"', i + 1);
+      t                  = line.substr(i + 1, (close == std::string::npos ? line.size() : close) - i - 1);
+      i                  = close == std::string::npos ? line.size() : close + 1;
+    } else {
+      while (i < line.size() && !std::isspace((unsigned char)line[i]) && line[i] != '#') t += line[i++];
+    }
+    out.push_back(t);
+  }
+  return out;
+}
+
+// `path` as written in a file in directory `dir`: relative to that directory.
+std::string Resolve(const std::string &dir, const std::string &path)
+{
+  if (path.empty() || dir.empty() || path[0] == '/') return path;
+  return (std::filesystem::path(dir) / path).lexically_normal().string();
+}
+
+std::string ResolveList(const std::string &dir, const std::string &list)
+{
+  std::string out;
+  size_t      a = 0;
+  while (true) {
+    const size_t b = list.find(',', a);
+    out += Resolve(dir, list.substr(a, b == std::string::npos ? std::string::npos : b - a));
+    if (b == std::string::npos) break;
+    out += ',';
+    a = b + 1;
+  }
+  return out;
+}
+
+bool Expand(const std::string &file, const std::string &includer, int depth, std::vector<std::string> *tokens, std::string *error)
+{
+  const std::string by = includer.empty() ? "" : " (included by " + includer + ")";
+  if (depth > kMaxIncludeDepth) {
+    *error = "-options_file " + file + by + ": includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " files (a file that includes itself?)";
+    return false;
+  }
+  std::ifstream in(file);
+  if (!in) {
+    *error = "-options_file " + file + by + ": cannot open the file (" + std::strerror(errno) + ")" +
+             (includer.empty() ? "; a path on the command line is relative to the working directory" : "; a path inside an options file is relative to that file's directory");
+    return false;
+  }
+  const std::string        dir = std::filesystem::path(file).parent_path().string();
+  std::vector<std::string> words;
+  std::string              line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> t = LineTokens(line);
+    if (!t.empty() && t[0] == "alias") {
+      *error = "-options_file " + file + by + ": 'alias' lines are not supported; write the option's own name";
+      return false;
+    }
+    words.insert(words.end(), t.begin(), t.end());
+  }
+  const std::vector<std::string> &paths = OptionsFilePathOptions();
+  for (size_t i = 0; i < words.size(); ++i) {
+    const bool has_value = i + 1 < words.size() && !IsKey(words[i + 1]);
+    if (words[i] == "-options_file" && has_value) {
+      if (!Expand(Resolve(dir, words[i + 1]), file, depth + 1, tokens, error)) return false;
+      ++i;
+      continue;
+    }
+    tokens->push_back(words[i]);
+    if (has_value && std::find(paths.begin(), paths.end(), words[i]) != paths.end()) tokens->push_back(ResolveList(dir, words[++i]));
+  }
+  return true;
+}
+
+} // namespace
+
+const std::vector<std::string> &OptionsFilePathOptions()
+{
+  static const std::vector<std::string> names = {"-beam_profile", "-beam_properties", "-ball_cor_table", "-convergence_configs", "-convergence_reference_config", "-convergence_common_options"};
+  return names;
+}
+
+bool OptionsFileExpand(const std::string &file, std::vector<std::string> *tokens, std::string *error)
+{
+  return Expand(file, "", 0, tokens, error);
+}
+
+bool OptionsArgsExpand(const std::vector<std::string> &args, std::vector<std::string> *expanded, std::string *error)
+{
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "-options_file" && i + 1 < args.size()) {
+      if (!OptionsFileExpand(args[++i], expanded, error)) return false;
+    } else expanded->push_back(args[i]);
+  }
+  return true;
+}
+
+PetscErrorCode OptionsFileInsert(MPI_Comm comm, PetscOptions options, const std::string &file)
+{
+  std::vector<std::string> tokens;
+  std::string              error, text;
+
+  PetscFunctionBeginUser;
+  PetscCheck(OptionsFileExpand(file, &tokens, &error), comm, PETSC_ERR_FILE_OPEN, "%s", error.c_str());
+  for (const std::string &t : tokens) {
+    const bool quote = t.empty() || t.find_first_of(" \t") != std::string::npos;
+    text += (text.empty() ? "" : " ") + (quote ? "\"" + t + "\"" : t);
+  }
+  PetscCall(PetscOptionsInsertString(options, text.c_str()));
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact
