@@ -13,6 +13,7 @@ scale. Each frame shows the time and, with /series/force, the contact force.
 
 The file that animates, from the repository root (101 snapshots, 0 to 10 ms, ~0.1 s to compute):
 
+    mkdir -p out
     build/release/beamimpact -options_file options/scenes/animation.opts -output out/animation.h5
     scripts/animate_impact.py out/animation.h5 -o out/animation.gif
 

@@ -24,9 +24,13 @@ written exactly (the shortest text that reads back as the same double); counts (
 steps, status, case_index, kind, ..., and a sweep axis with whole values) as integers; NaN as
 nan. Written to stdout unless -o is given. Examples, from the repository root:
 
-    scripts/h5_to_csv.py out/default.h5 -o out/default.csv        # the default sweep's table
-    scripts/h5_to_csv.py out/animation.h5 events                  # the events of one impact
-    scripts/h5_to_csv.py out/animation.h5 series -o series.csv    # the time series
+    mkdir -p out
+    build/release/beamimpact -options_file options/scenes/animation.opts -output out/animation.h5
+    scripts/h5_to_csv.py out/animation.h5                           # its /results row, to stdout
+    scripts/h5_to_csv.py out/animation.h5 events                    # the events of the impact
+    scripts/h5_to_csv.py out/animation.h5 series -o out/series.csv  # the time series
+    build/release/beamimpact -options_file options/default.opts -output out/default.h5    # the default sweep
+    scripts/h5_to_csv.py out/default.h5 -o out/default.csv                            # its 111 rows
 """
 import os
 import sys

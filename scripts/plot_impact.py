@@ -25,10 +25,11 @@ are named with the option that makes them. Asking for one the file lacks is an e
 status 1) naming the option to add, e.g. `--energy` on a file run without -monitor_energy.
 For example, from the repository root:
 
+    mkdir -p out
     build/release/beamimpact -options_file options/scenes/animation.opts -output out/animation.h5
     scripts/plot_impact.py out/animation.h5 -o out/animation
     build/release/beamimpact -options_file options/scenes/modes.opts -output out/modes.h5
-    scripts/plot_impact.py out/modes.h5
+    scripts/plot_impact.py out/modes.h5          # writes out/modes-modes.png
 """
 import os
 import sys
