@@ -15,6 +15,11 @@ For a file with a spatial study (/spatial) it writes
                              peak force (A(0): the Richardson limit), slope 2 shown.
 Failed runs are left out; ACOR errors at or below the file's error floor (the
 reference's own accuracy, -convergence_error_floor) are drawn hollow at the floor.
+Every observed order p in a legend is a least-squares fit over the points above the error
+floor only (computed here from the plotted points, as the program does): the legend says how
+many points were at the floor and left out, and a curve with fewer than two points above
+it says "at the error floor: no order" instead of a number -- an order fitted to round-off
+(e.g. "p = 0.34, expected 4") is never printed as if it were the method's.
 """
 import argparse
 import os
@@ -82,11 +87,38 @@ def style(i, d):
     return dict(color=cmap(i % 10), marker=markers[i % len(markers)], linewidth=1.4, markersize=5)
 
 
-def label(d):
-    lab = d["name"]
-    if np.isfinite(d["order_lsq"]):
-        lab += " (p = %.2f)" % d["order_lsq"]
-    return lab
+def fit_order(h, e, floor):
+    """Least-squares slope of log e against log h over the points above the floor (as
+    ConvergenceObservedOrder does); returns (p or nan, points used, points at or below the floor)."""
+    h, e = np.asarray(h, float), np.asarray(e, float)
+    ok = np.isfinite(h) & (h > 0) & np.isfinite(e)
+    above = ok & (e > floor)
+    used, low = int(above.sum()), int((ok & ~above).sum())
+    if used < 2 or np.ptp(np.log(h[above])) == 0:
+        return float("nan"), used, low, float("nan")
+    near = float(e[above].min() / floor) if floor > 0 else float("inf")
+    return float(np.polyfit(np.log(h[above]), np.log(e[above]), 1)[0]), used, low, near
+
+
+def order_text(p, used, low, near, expected=0.0):
+    """'p = 3.96' with what it rests on; never a bare number fitted to round-off."""
+    exp = ", expected %g" % expected if expected > 0 else ""
+    if not np.isfinite(p):
+        if low:
+            return "at the error floor: no order (%d of %d points at or below it%s)" % (low, used + low, exp)
+        return "no order (fewer than 2 points%s)" % exp
+    t = "p = %.2f%s" % (p, exp)
+    if low:
+        t += "; from the %d points above the error floor, %d at it left out" % (used, low)
+    if near < 10:
+        t += "; its lowest point only %.2gx the floor" % near
+    return t
+
+
+def label(d, floor):
+    ok = d["failed"] == 0
+    p, used, low, near = fit_order(d["step"][ok], d["acor_error"][ok], floor)
+    return "%s (%s)" % (d["name"], order_text(p, used, low, near, d["expected_order"]))
 
 
 def work_precision(f, prefix):
@@ -95,7 +127,7 @@ def work_precision(f, prefix):
     fig, ax = plt.subplots(figsize=(8, 6))
     for i, d in enumerate(configs(f)):
         ok = d["failed"] == 0
-        plot_floored(ax, d["wall_time"][ok], d["acor_error"][ok], floor, label(d), style(i, d))
+        plot_floored(ax, d["wall_time"][ok], d["acor_error"][ok], floor, label(d, floor), style(i, d))
     ax.axhline(target, color="grey", linestyle=":", linewidth=1)
     ax.text(ax.get_xlim()[0], target, " target %g" % target, va="bottom", ha="left", color="grey", fontsize=8)
     if floor > 0:
@@ -129,7 +161,7 @@ def convergence(f, prefix):
             ok = (d["failed"] == 0) & np.isfinite(d["step"]) & np.isfinite(d[err])
             if ok.sum() == 0:
                 continue
-            plot_floored(ax, d["step"][ok], d[err][ok], fl, label(d) if err == "acor_error" else d["name"], style(i, d))
+            plot_floored(ax, d["step"][ok], d[err][ok], fl, label(d, floor) if err == "acor_error" else d["name"], style(i, d))
             hs.extend(d["step"][ok])
             es.extend(np.maximum(d[err][ok], max(fl, 1e-16)))
         if hs:
@@ -144,6 +176,9 @@ def convergence(f, prefix):
                 k = np.argmax(ee >= emin) if ee[0] < emin else 0
                 ax.text(hh[k], max(ee[k], emin), " %d" % p, color="grey", fontsize=8, va="bottom", clip_on=True)
             ax.set_ylim(emin, e0 * 3)
+        if fl > 0:
+            ax.axhline(fl, color="grey", linestyle="-.", linewidth=0.8)
+            ax.text(ax.get_xlim()[0], fl, " error floor %g: hollow = at or below, left out of p" % fl, va="bottom", ha="left", color="grey", fontsize=7)
         ax.set_xlabel("step (s): fixed step, or mean step of adaptive runs")
         ax.set_ylabel(name)
         ax.grid(True, which="both", alpha=0.3)
@@ -159,15 +194,20 @@ def convergence(f, prefix):
 def spatial(f, prefix):
     g = f["spatial"]
     h = g["h"][:]
+    # errors at or below the file's floor (round-off) are drawn hollow and left out of the fits
+    floor = float(attr(f, "convergence_error_floor", 0) or 0)
+    colours = iter(["C0", "C1", "C2"])
     fig, ax = plt.subplots(figsize=(7, 5.5))
     for q, lim, lab in (("acor", "acor_limit", "ACOR (absolute)"), ("contact_time", "contact_time_limit", "contact time (relative)"), ("peak_force", "peak_force_limit", "peak force (relative)")):
         a = g[q][:]
         a0 = float(attr(g, lim))
         e = np.abs(a - a0) / (1.0 if q == "acor" else abs(a0))
-        ok = e > 0
+        ok = np.isfinite(e) & ((e > 0) | (floor > 0))  # an exact 0 has no place on a log axis
         ok[-1] = False  # the last level defines the limit
         if ok.sum():
-            ax.loglog(h[ok], e[ok], marker="o", label="%s, p = %.2f" % (lab, float(attr(g, q + "_order_lsq"))))
+            p, used, low, near = fit_order(h[ok], e[ok], floor)
+            st = dict(color=next(colours), marker="o")
+            plot_floored(ax, h[ok], e[ok], floor if floor > 0 else 1e-300, "%s, %s" % (lab, order_text(p, used, low, near)), st)
     ok = np.ones(len(h), bool)
     ok[-1] = False
     if ok.sum():

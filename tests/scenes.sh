@@ -18,8 +18,8 @@
 #     contact's e from the COR table, k1 from the characterisation;
 #   * r161-modes: the R161 bat's mass, centre of mass, fundamental and first-mode nodes against
 #     the published bat; r161-acor: e_A at 70 cm by the baseball at 40 m/s near 0.2;
-#   * waves, snapshots, the 10 mm and hysteretic sweeps, racket snapshots: they run and write
-#     what the plots read (series shapes, snapshot times), with numbers in a sane range.
+#   * waves, snapshots, the 10 mm and hysteretic sweeps, racket snapshots, animation: they run
+#     and write what the plots read (series shapes, snapshot times), with numbers in a sane range.
 # The long versions (every point, fine grids) run from scripts/run_paper.sh, not here.
 #
 #   tests/scenes.sh path/to/beamimpact scratch_dir [mpiexec]
@@ -153,6 +153,12 @@ if run energy 1 options/scenes/energy.opts -impact_window 0.004 -impact_max_time
   f="$dir/energy.h5"
   check "energy (CN): balance $(col "$f" /results/energy_error) within 1e-5 of the incident energy" 'e < 1e-5 && e > -1e-5' e="$(col "$f" /results/energy_error)"
   check "energy: energy series recorded ($(dims "$f" /series/beam_kinetic) steps)" 'n > 100' n="$(dims "$f" /series/beam_kinetic)"
+fi
+
+if run animation 1 options/scenes/animation.opts; then
+  f="$dir/animation.h5"
+  check "animation: 101 snapshot times 0-10 ms on 41 nodes ($(dims "$f" /snapshots/y)), ball position per step ($(dims "$f" /series/ball_y) = $(dims "$f" /series/time)), one contact" \
+    's == "101,41" && b == t && c == 1' s="$(dims "$f" /snapshots/y)" b="$(dims "$f" /series/ball_y)" t="$(dims "$f" /series/time)" c="$(col "$f" /results/contacts)"
 fi
 
 # --- racket: clamped handle -> longer contact than the free racket ------------------------------

@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+"""A table of a beamimpact HDF5 file as CSV (for a spreadsheet, R, pandas, ...).
+
+    scripts/h5_to_csv.py FILE.h5 [GROUP] [-o out.csv] [--units header|row|none]
+
+GROUP (default results; the leading / is optional) is one of the file's groups:
+  results    one row per impact (-task impact: one row) or per sweep point (-task sweep: in the
+             order of the points, with case_index, one column per sweep axis, status and the
+             error text reason of a failed point; its numbers are nan);
+  events     one row per located event (kind 0 contact, 1 maximum compression, 2 reload,
+             3 separation);
+  series     one row per recorded step (-monitor_*); velocity_at [point][step] gives one column
+             per point, velocity_at[x=0.3];
+  snapshots  one row per node: x and y at each snapshot time, y[t=0.001];
+  modes      one row per mode (-task modes): frequency, period, omega and the shape at each
+             node, shapes[x=0.0275];
+  or any other group (beam, sweep, spatial, configs/rk4, ...), or one dataset (modes/nodes_1:
+  its values; a 2-D dataset: one row per first index).
+Datasets of another length than the table's rows are left out, with a note on stderr.
+
+The header row names each column with its unit from the dataset's unit attribute,
+`contact_time (s)` (--units row: the units in a second row; none: names only). Numbers are
+written exactly (the shortest text that reads back as the same double); counts (contacts,
+steps, status, case_index, kind, ..., and a sweep axis with whole values) as integers; NaN as
+nan. Written to stdout unless -o is given. Examples, from the repository root:
+
+    mkdir -p out
+    build/release/beamimpact -options_file options/scenes/animation.opts -output out/animation.h5
+    scripts/h5_to_csv.py out/animation.h5                           # its /results row, to stdout
+    scripts/h5_to_csv.py out/animation.h5 events                    # the events of the impact
+    scripts/h5_to_csv.py out/animation.h5 series -o out/series.csv  # the time series
+    build/release/beamimpact -options_file options/default.opts -output out/default.h5    # the default sweep
+    scripts/h5_to_csv.py out/default.h5 -o out/default.csv                            # its 111 rows
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from debian_python import require  # noqa: E402
+
+require(__file__, "numpy", "h5py")
+import argparse  # noqa: E402
+import csv  # noqa: E402
+import re  # noqa: E402
+
+import numpy as np  # noqa: E402
+import h5py  # noqa: E402
+from impact_file import attr, unit, open_file  # noqa: E402
+
+PROG = "h5_to_csv.py"
+# Whole-number columns of the files (float64 on disk): written without a decimal point.
+COUNTS = {"contacts", "ended_in_contact", "compression_beyond_radius", "failed_solves", "steps", "rejected_steps",
+          "event_steps", "function_evals", "jacobian_evals", "jacobian_assemblies", "nonlinear_its", "linear_its",
+          "case_index", "status", "kind", "level", "failed", "nodes", "index"}
+# The dataset that sets a group's rows, and the columns that come first.
+ROW_KEY = {"series": "time", "events": "time", "snapshots": "x", "modes": "frequency", "beam": "x"}
+FIRST = ["case_index", "time", "kind", "x", "frequency", "period", "omega"]
+# /results of an impact file in the program's order (src/io/results_h5.cpp; a sweep file lists its own)
+RESULTS = ("x acor acor_corrected contact_time contact_time_total peak_force max_compression contacts ended_in_contact "
+           "compression_beyond_radius ball_final_velocity final_time energy_error linear_momentum_error angular_momentum_error "
+           "beam_kinetic_end beam_strain_end ball_dissipated_end ball_loss_fraction translation_fraction rotation_fraction "
+           "vibration_fraction bbs collision_efficiency bat_speed_end bat_angular_velocity_end recoil_factor bbcor "
+           "grip_force_peak grip_force_peak_time grip_stored_end hand_work_end segment_kinetic_peak segment_kinetic_peak_time "
+           "failed_solves steps rejected_steps event_steps function_evals jacobian_evals jacobian_assemblies nonlinear_its "
+           "linear_its wall_time dt_nominal dt_stable beam_dissipated_end damping_fraction").split()
+# 2-D datasets: which index is the row, and the 1-D dataset naming the other index.
+LAYOUT = {"velocity_at": ("columns_first", "velocity_at_x", "x"), "y": ("columns_first", "time", "t"),
+          "shapes": ("rows_first", "/beam/x", "x")}
+
+
+def fmt_float(v):
+    v = float(v)
+    if np.isnan(v):
+        return "nan"
+    return repr(v)  # shortest round-trip text; inf, -inf as such
+
+
+def is_count(name, values, axes):
+    if values.dtype.kind in "iu":
+        return True
+    if values.dtype.kind != "f" or (name not in COUNTS and name not in axes):
+        return False
+    v = values[np.isfinite(values)]
+    return bool(np.all(v == np.round(v)) and np.all(np.abs(v) < 2 ** 53))
+
+
+def column(name, unit_text, values, axes):
+    """(header, unit, list of cells)."""
+    values = np.asarray(values)
+    if values.dtype.kind in "OSU":
+        cells = [v.decode("utf-8", "replace") if isinstance(v, bytes) else str(v) for v in values]
+    elif is_count(name, values, axes):
+        cells = ["nan" if not np.isfinite(v) else str(int(v)) for v in values.astype(float)] if values.dtype.kind == "f" \
+            else [str(int(v)) for v in values]
+    elif values.dtype.kind == "b":
+        cells = [str(int(v)) for v in values]
+    else:
+        cells = [fmt_float(v) for v in values]
+    return name, unit_text, cells
+
+
+def short_unit(name, u):
+    """The unit without its explanation ('1, wall COR used ...' -> '1'); an event kind keeps its legend."""
+    if name == "kind":
+        return u
+    return re.split(r" \(|, ", u, maxsplit=1)[0]
+
+
+def labels_for(f, g, source, n):
+    if source.startswith("/"):
+        ds = f[source] if source in f else None
+    else:
+        ds = g[source] if source in g else None
+    if ds is not None and ds.ndim == 1 and ds.shape[0] == n:
+        return ["%.6g" % v for v in ds[()]]
+    return None
+
+
+def table_of_group(f, g, gname):
+    names = list(g.keys())
+    data = {k: g[k] for k in names if isinstance(g[k], h5py.Dataset)}
+    if not data:
+        sys.stderr.write("%s: /%s holds no datasets (groups in it: %s)\n" % (PROG, gname, ", ".join(names) or "none"))
+        sys.exit(1)
+    base = gname.split("/")[-1]
+    one_d = {k: d for k, d in data.items() if d.ndim == 1}
+    key = ROW_KEY.get(base)
+    if key in one_d:
+        n = one_d[key].shape[0]
+    elif one_d:
+        lengths = [d.shape[0] for d in one_d.values()]
+        n = max(set(lengths), key=lambda L: (lengths.count(L), L))
+    else:
+        n = next(iter(data.values())).shape[0]
+    axes = [a for a in str(attr(f, "sweep_axes", "") or "").split(",") if a]
+    # column order: a sweep's own order, else the usual first columns, then by name
+    order = [c for c in str(attr(f, "sweep_columns", "") or "").split(",") if c] if base == "results" else []
+    if base == "results" and not order:
+        order = list(RESULTS)
+    if "status" in order and "reason" in data:
+        order.insert(order.index("status") + 1, "reason")
+    order += [c for c in FIRST if c not in order]
+    ranked = [c for c in order if c in data] + sorted(c for c in data if c not in order)
+    cols, left_out = [], []
+    used_as_labels = {LAYOUT[k][1] for k in data if k in LAYOUT and data[k].ndim == 2}
+    for name in ranked:
+        d = data[name]
+        u = short_unit(name, unit(d))
+        if d.ndim == 1 and d.shape[0] == n:
+            cols.append(column(name, u, d[()], axes))
+        elif d.ndim == 2 and n in d.shape:
+            lay = LAYOUT.get(name)
+            rows_first = d.shape[0] == n if lay is None else (lay[0] == "rows_first" and d.shape[0] == n) or d.shape[1] != n
+            v = d[()] if rows_first else d[()].T  # [row][k]
+            k = v.shape[1]
+            labs = labels_for(f, g, lay[1], k) if lay else None
+            tag = lay[2] if lay else ""
+            for j in range(k):
+                head = "%s[%s=%s]" % (name, tag, labs[j]) if labs else "%s[%d]" % (name, j)
+                cols.append(column(head, u, v[:, j], axes))
+        else:
+            if name not in used_as_labels:
+                left_out.append("%s %s" % (name, "x".join(map(str, d.shape)) or "scalar"))
+    if left_out:
+        sys.stderr.write("%s: /%s: %d rows; not columns of this table (another length): %s; export one with "
+                         "scripts/h5_to_csv.py FILE %s/NAME\n" % (PROG, gname, n, ", ".join(left_out), gname))
+    return cols
+
+
+def table_of_dataset(d, path):
+    u = unit(d)
+    if d.ndim == 0:
+        return [column(path.split("/")[-1], u, np.atleast_1d(d[()]), [])]
+    if d.ndim == 1:
+        return [column(path.split("/")[-1], u, d[()], [])]
+    if d.ndim == 2:
+        v = d[()]
+        return [column("%s[%d]" % (path.split("/")[-1], j), u.split(", [")[0], v[:, j], []) for j in range(v.shape[1])]
+    sys.stderr.write("%s: %s has %d dimensions; only 1-D and 2-D datasets make a table\n" % (PROG, path, d.ndim))
+    sys.exit(1)
+
+
+def main():
+    ap = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0],
+                                 epilog=__doc__.split("\n\n", 2)[2], formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("file", help="HDF5 file written by beamimpact")
+    ap.add_argument("group", nargs="?", default="results", help="group or dataset (default results)")
+    ap.add_argument("-o", "--output", help="CSV file to write (default: stdout)")
+    ap.add_argument("--units", choices=("header", "row", "none"), default="header",
+                    help="units in the header 'name (unit)' (default), in a second row, or not at all")
+    a = ap.parse_args()
+    path = a.group.strip("/") or "results"
+    with open_file(PROG, a.file) as f:
+        if path not in f:
+            groups = []
+            f.visit(lambda n: groups.append(n) if isinstance(f[n], h5py.Group) else None)
+            sys.stderr.write("%s: %s has no /%s; its groups: %s\n" % (PROG, a.file, path, ", ".join(groups) or "none"))
+            if path == "series":
+                sys.stderr.write("  (/series is written only with -monitor_ball, -monitor_energy, -monitor_velocity_at, ...)\n")
+            elif path == "snapshots":
+                sys.stderr.write("  (/snapshots is written only with -snapshot_times t1,t2,...)\n")
+            return 1
+        obj = f[path]
+        cols = table_of_group(f, obj, path) if isinstance(obj, h5py.Group) else table_of_dataset(obj, path)
+    heads = [("%s (%s)" % (c[0], c[1]) if c[1] and a.units == "header" else c[0]) for c in cols]
+    out = open(a.output, "w", newline="") if a.output else sys.stdout
+    try:
+        w = csv.writer(out, lineterminator="\n")
+        w.writerow(heads)
+        if a.units == "row":
+            w.writerow([c[1] for c in cols])
+        for row in zip(*[c[2] for c in cols]):
+            w.writerow(row)
+    finally:
+        if a.output:
+            out.close()
+    if a.output:
+        sys.stderr.write("wrote %s: %d rows, %d columns\n" % (a.output, len(cols[0][2]) if cols else 0, len(cols)))
+    return 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except BrokenPipeError:  # | head
+        sys.exit(0)

@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""Plots of one beamimpact -task impact file (or a -task modes file), as PNGs.
+
+    scripts/plot_impact.py FILE.h5 [-o PREFIX] [--force] [--energy] [--snapshots] [--modes] [--full]
+
+Draws what the file holds and nothing it does not (every curve is read, none computed):
+  PREFIX-force.png      the contact force against time (/series/force: run with -monitor_ball),
+                        with the located events of /events marked: contact start, maximum
+                        compression, reload, separation; zoomed to the contacts (--full: the
+                        whole run);
+  PREFIX-energy.png     the energies against time (-monitor_energy): ball kinetic, stored and
+                        dissipated, beam kinetic and strain, dissipated by the beam's damping
+                        (a damped beam), the grip's (with -grip), and their total; below, the
+                        energy error (E(t) - E(0)) / E(0) of the recorded total;
+  PREFIX-snapshots.png  the beam's displacement y(x) at the snapshot times (-snapshot_times),
+                        the impact point marked (at most --curves of them, evenly chosen);
+  PREFIX-modes.png      for a -task modes file: the flexible mode shapes (scaled to unit
+                        peak) with their frequencies in the legend, and the nodes of the first
+                        two modes the file records (/modes/nodes_1, nodes_2).
+PREFIX defaults to FILE without .h5. Each legend or title carries the configuration from the
+file's attributes (N, L, supports, the ball's mass and speed, the impact point, ts_type).
+
+Without --force/--energy/--snapshots/--modes every plot the file allows is drawn and the others
+are named with the option that makes them. Asking for one the file lacks is an error (exit
+status 1) naming the option to add, e.g. `--energy` on a file run without -monitor_energy.
+For example, from the repository root:
+
+    mkdir -p out
+    build/release/beamimpact -options_file options/scenes/animation.opts -output out/animation.h5
+    scripts/plot_impact.py out/animation.h5 -o out/animation
+    build/release/beamimpact -options_file options/scenes/modes.opts -output out/modes.h5
+    scripts/plot_impact.py out/modes.h5          # writes out/modes-modes.png
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from debian_python import require  # noqa: E402
+
+require(__file__, "numpy", "h5py", "matplotlib")
+import argparse  # noqa: E402
+import textwrap  # noqa: E402
+
+import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+from impact_file import MAKES, attr, config_label, default_prefix, has, impact_point, missing, open_file, what_name  # noqa: E402
+
+PROG = "plot_impact.py"
+EVENTS = {0: ("contact start", "^", "C2"), 1: ("maximum compression", "o", "C3"), 2: ("reload", "s", "C4"), 3: ("separation", "v", "C0")}
+ENERGIES = [("ball_kinetic", "ball kinetic"), ("ball_stored", "ball stored"), ("ball_dissipated", "ball dissipated"),
+            ("beam_kinetic", "beam kinetic"), ("beam_strain", "beam strain"), ("beam_dissipated", "beam damping (dissipated)"),
+            ("grip_stored", "grip stored"), ("hand_work", "work of the hands")]
+
+
+def legend(ax, f, impact=True, extra="", **kw):
+    """The legend, titled with the configuration read from the file (wrapped)."""
+    lines = textwrap.wrap(config_label(f, impact), 70) + (textwrap.wrap(extra, 70) if extra else [])
+    ax.legend(title="\n".join(lines), title_fontsize=7, fontsize=7, **kw)
+
+
+def force_plot(f, path, out, full):
+    s = f["series"]
+    t, F = s["time"][()], s["force"][()]
+    ev_t = f["events/time"][()] if "events" in f else np.array([])
+    ev_k = f["events/kind"][()].astype(int) if "events" in f else np.array([], int)
+    ev_F = f["events/force"][()] if "events" in f else np.array([])
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    ax.plot(t * 1e3, F, "k", lw=1.2, label="contact force F (/series/force)")
+    for k, (name, marker, col) in EVENTS.items():
+        sel = ev_k == k
+        if sel.any():
+            ax.plot(ev_t[sel] * 1e3, ev_F[sel], marker, color=col, ms=8, mfc="white" if k == 3 else col, ls="none",
+                    label="%s (%d)" % (name, sel.sum()))
+            for te in ev_t[sel]:
+                ax.axvline(te * 1e3, color=col, lw=0.6, ls=":")
+    if not full and len(ev_t) and np.any(ev_k == 3):
+        t_end = ev_t.max()
+        ax.set_xlim(0, min(t[-1], 1.15 * t_end) * 1e3)
+        zoom = "\nzoomed to the contacts (--full: the whole run, %.3g ms)" % (t[-1] * 1e3)
+    else:
+        zoom = ""
+    r = f["results"]
+    extra = []
+    for name, fmt in (("peak_force", "peak force %.4g N"), ("contact_time", "contact time %.4g ms"), ("contacts", "%d contact(s)"), ("acor", "acor %.5g")):
+        if name in r:
+            v = float(r[name][0])
+            extra.append(fmt % (v * 1e3 if name == "contact_time" else v))
+    ax.set_xlabel("time t (ms)")
+    ax.set_ylabel("contact force F (N)")
+    ax.grid(True, alpha=0.3)
+    legend(ax, f, extra=", ".join(extra), loc="best")
+    ax.set_title("Contact force: %s%s" % (os.path.basename(path), zoom), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
+def energy_plot(f, path, out):
+    s = f["series"]
+    t = s["time"][()] * 1e3
+    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(8, 6.5), sharex=True, gridspec_kw=dict(height_ratios=[3, 1.4]))
+    for i, (name, lab) in enumerate(ENERGIES):
+        if name in s:
+            ax.plot(t, s[name][()], color="C%d" % i, lw=1.2, label=lab)
+    tot = s["total_energy"][()]
+    ax.plot(t, tot, "k--", lw=1.4, label="total (/series/total_energy)")
+    ax.set_ylabel("energy (J)")
+    ax.grid(True, alpha=0.3)
+    legend(ax, f, loc="center right")
+    e0 = tot[0]
+    err = (tot - e0) / e0 if e0 != 0 else tot - e0
+    res = f["results"]
+    lab = "(E(t) - E(0)) / E(0)%s" % ("" if e0 != 0 else " (E(0) = 0: absolute, J)")
+    if "energy_error" in res:
+        lab += "; /results/energy_error %.3g" % float(res["energy_error"][0])
+    ax2.plot(t, err, "C3", lw=1.2, label=lab)
+    ax2.axhline(0, color="0.5", lw=0.6)
+    ax2.set_ylabel("energy error")
+    ax2.set_xlabel("time t (ms)")
+    ax2.grid(True, alpha=0.3)
+    ax2.legend(fontsize=8, loc="best")
+    ax2.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
+    ax.set_title("Energies: %s; E(0) = %.6g J" % (os.path.basename(path), e0), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
+def support_marks(ax, f, L):
+    """The clamped region shaded and the ends' supports named, from the attributes."""
+    x0, x1 = attr(f, "beam_clamp_x0", -1), attr(f, "beam_clamp_x1", -1)
+    if x0 is not None and x0 >= 0:
+        ax.axvspan(x0, x1, color="0.85", zorder=0, label="clamped %g-%g m" % (x0, x1))
+    for x, side in ((0.0, attr(f, "beam_left")), (L, attr(f, "beam_right"))):
+        if side and side != "free":
+            ax.plot([x], [0], "ks", ms=7, zorder=5)
+            ax.annotate(side, (x, 0), textcoords="offset points", xytext=(0, -14), ha="center", fontsize=7)
+
+
+def snapshots_plot(f, path, out, curves):
+    g = f["snapshots"]
+    x, ts, y = g["x"][()], g["time"][()], g["y"][()]
+    n = len(ts)
+    pick = np.unique(np.round(np.linspace(0, n - 1, min(curves, n))).astype(int)) if n > curves else np.arange(n)
+    fig, ax = plt.subplots(figsize=(9, 4.8))
+    cmap = plt.get_cmap("viridis")
+    for j, k in enumerate(pick):
+        ax.plot(x, y[k] * 1e3, color=cmap(j / max(len(pick) - 1, 1)), lw=1.3, label="t = %.4g ms" % (ts[k] * 1e3))
+    ax.axhline(0, color="0.6", lw=0.6, ls=":")
+    xi = impact_point(f)
+    if xi is not None:
+        ax.axvline(xi, color="C3", ls="--", lw=1, label="impact point x = %g m" % xi)
+        ax.plot([xi], [0], marker="v", color="C3", ms=9, ls="none", transform=ax.get_xaxis_transform(), clip_on=False)
+    support_marks(ax, f, float(attr(f, "beam_length", x[-1])))
+    ax.set_xlabel("x (m) from the x = 0 end")
+    ax.set_ylabel("displacement y (mm)")
+    ax.grid(True, alpha=0.3)
+    legend(ax, f, loc="best", ncol=2 if len(pick) > 6 else 1)
+    shown = "" if len(pick) == n else " (%d of the %d snapshot times, evenly chosen; --curves)" % (len(pick), n)
+    ax.set_title("Beam snapshots y(x): %s%s" % (os.path.basename(path), shown), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
+def modes_plot(f, path, out, count):
+    g = f["modes"]
+    freq, shapes = g["frequency"][()], g["shapes"][()]
+    x = f["beam/x"][()] if "beam" in f and "x" in f["beam"] else np.linspace(0, float(attr(f, "beam_length", 1.0)), shapes.shape[1])
+    flex = [k for k in range(len(freq)) if freq[k] > 0][:count]
+    rigid = int(np.sum(freq <= 0))
+    nodes = [g[n][()] if n in g else np.array([]) for n in ("nodes_1", "nodes_2")]
+    fig, ax = plt.subplots(figsize=(9, 4.8))
+    for i, k in enumerate(flex):
+        w = shapes[k] / np.max(np.abs(shapes[k]))
+        lab = "mode %d: %.5g Hz" % (i + 1, freq[k])
+        if i < 2 and len(nodes[i]):
+            lab += ", nodes at %s m" % ", ".join("%.3f" % v for v in nodes[i])
+        ax.plot(x, w, color="C%d" % i, lw=1.4, label=lab)
+        if i < 2 and len(nodes[i]):
+            ax.plot(nodes[i], np.zeros_like(nodes[i]), "o", color="C%d" % i, ms=7, mfc="white", zorder=5)
+    ax.axhline(0, color="0.5", lw=0.5)
+    support_marks(ax, f, float(attr(f, "beam_length", x[-1])))
+    ax.set_xlabel("x (m) from the x = 0 end")
+    ax.set_ylabel("deflection (scaled to unit peak)")
+    ax.grid(True, alpha=0.3)
+    legend(ax, f, impact=False, loc="best")
+    note = "; %d rigid mode(s) (0 Hz) not drawn" % rigid if rigid else ""
+    ax.set_title("Mode shapes: %s%s\nopen circles: the nodes of modes 1 and 2 the file records (/modes/nodes_1, nodes_2)"
+                 % (os.path.basename(path), note), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0], epilog=__doc__.split("\n\n", 2)[2],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("file", help="HDF5 file written by beamimpact -task impact (or -task modes)")
+    ap.add_argument("-o", "--output", metavar="PREFIX", help="output prefix (default: FILE without .h5)")
+    ap.add_argument("--force", action="store_true", help="the contact force (needs -monitor_ball)")
+    ap.add_argument("--energy", action="store_true", help="the energies (needs -monitor_energy)")
+    ap.add_argument("--snapshots", action="store_true", help="the beam snapshots (needs -snapshot_times)")
+    ap.add_argument("--modes", action="store_true", help="the mode shapes (a -task modes file)")
+    ap.add_argument("--full", action="store_true", help="force plot over the whole run, not zoomed to the contacts")
+    ap.add_argument("--curves", type=int, default=8, help="at most this many snapshot curves (default 8)")
+    ap.add_argument("--mode-count", type=int, default=4, help="flexible modes to draw (default 4)")
+    a = ap.parse_args()
+    prefix = a.output or default_prefix(a.file)
+    asked = [w for w in ("force", "energy", "snapshots", "modes") if getattr(a, w)]
+    written = []
+    with open_file(PROG, a.file) as f:
+        task = attr(f, "task", "")
+        if task in ("sweep", "convergence"):
+            sys.stderr.write("%s: %s was written by -task %s: plot it with scripts/%s\n"
+                             % (PROG, a.file, task, "plot_sweep.py" if task == "sweep" else "plot_convergence.py"))
+            return 1
+        possible = ("modes",) if task == "modes" else ("force", "energy", "snapshots")
+        for w in asked:
+            if w not in possible:
+                sys.stderr.write("%s: %s is a -task %s file: it holds no %s (%s)\n" % (PROG, a.file, task or "?", what_name(w), MAKES[w]))
+                return 1
+            if not has(f, w):
+                missing(PROG, a.file, w)
+        todo = asked or [w for w in possible if has(f, w)]
+        if not asked:
+            for w in possible:
+                if not has(f, w):
+                    print("%s: no %s plot: the file has no %s (run beamimpact with %s)" % (PROG, w, what_name(w), MAKES[w]))
+        if not todo:
+            sys.stderr.write("%s: %s holds nothing to plot: run beamimpact -task impact with -monitor_ball, -monitor_energy "
+                             "or -snapshot_times t1,t2,... (e.g. -options_file options/scenes/animation.opts), or -task modes\n" % (PROG, a.file))
+            return 1
+        for w in todo:
+            out = "%s-%s.png" % (prefix, w)
+            if w == "force":
+                written.append(force_plot(f, a.file, out, a.full))
+            elif w == "energy":
+                written.append(energy_plot(f, a.file, out))
+            elif w == "snapshots":
+                written.append(snapshots_plot(f, a.file, out, max(a.curves, 1)))
+            else:
+                written.append(modes_plot(f, a.file, out, max(a.mode_count, 1)))
+    for p in written:
+        print("wrote", p)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# The user-facing plots and exports (issue 15) through the real executable and the scripts:
+#   * a short impact of options/scenes/animation.opts (7 snapshots 0-6 ms, ball and energy
+#     series), a plain impact with the ball only, a -task modes file and a 2 x 2 sweep with two
+#     failed points (off the beam);
+#   * scripts/plot_impact.py draws force, energy and snapshot PNGs (and the modes PNG) that PIL
+#     reads back with the expected size; asked for the energies of the file run without
+#     -monitor_energy it fails naming -monitor_energy (and -snapshot_times for snapshots);
+#   * scripts/animate_impact.py writes a GIF with exactly the frames asked for (--frames 4 of 7)
+#     and all 7 by default; an .mp4 without ffmpeg on PATH fails naming ffmpeg;
+#   * scripts/h5_to_csv.py: /results (impact and sweep, with its axes, status and reason),
+#     /events, /series and /snapshots: one row per dataset entry, every number equal to the
+#     HDF5 value read here with h5py, counts without a decimal point, NaN as nan, the header's
+#     units the datasets' unit attributes.
+#
+#   tests/plots.sh path/to/beamimpact scratch_dir
+# Runs from the repository root (found from this script's path); needs a Python with h5py,
+# numpy, matplotlib and PIL (Debian: python3-h5py python3-matplotlib).
+set -uo pipefail
+
+exe=${1:?usage: plots.sh beamimpact scratch_dir}
+dir=${2:?usage: plots.sh beamimpact scratch_dir}
+exe=$(readlink -f "$exe")
+[[ -x $exe ]] || { echo "FAIL: $1 is not an executable"; exit 1; }
+mkdir -p "$dir" && dir=$(readlink -f "$dir")
+cd "$(dirname "${BASH_SOURCE[0]}")/.." || exit 1
+rm -rf "${dir:?}"/*
+source tests/lib.sh # MPI env, fail/pass, $python
+[[ -n $python ]] || { echo "FAIL: no python3 with h5py and numpy (Debian: apt-get install python3-h5py python3-matplotlib)"; exit 1; }
+"$python" -c "import matplotlib, PIL" 2>/dev/null || { echo "FAIL: $python has no matplotlib/PIL (Debian: apt-get install python3-matplotlib)"; exit 1; }
+
+# run NAME [options...]: beamimpact into $dir/NAME.h5 (log $dir/NAME.log); a sweep with failed points exits 2
+run() {
+  local name=$1 rc; shift
+  "$exe" "$@" -output "$dir/$name.h5" >"$dir/$name.log" 2>&1
+  rc=$?
+  if [[ -f $dir/$name.h5 && ($rc -eq 0 || ($rc -eq 2 && $name == sweep)) ]]; then pass "$name runs (exit $rc)"; return 0; fi
+  fail "$name: beamimpact $* (exit $rc)"
+  tail -5 "$dir/$name.log" | sed 's/^/      /'
+  return 1
+}
+# expect_fail WHAT PATTERN command...: the command must fail and say PATTERN on stderr
+expect_fail() {
+  local what=$1 pat=$2 rc; shift 2
+  "$@" >"$dir/out.txt" 2>"$dir/err.txt"
+  rc=$?
+  if [[ $rc -ne 0 ]] && grep -qF -- "$pat" "$dir/err.txt"; then pass "$what: exit $rc, '$(head -c 160 "$dir/err.txt" | tr '\n' ' ')'"
+  else fail "$what: exit $rc, expected a failure naming '$pat'; stderr: $(head -c 300 "$dir/err.txt")"; fi
+}
+# images KIND FILE...: every file is a valid PNG (or GIF) of a sane size, per PIL
+images() {
+  "$python" - "$@" <<'EOF'
+import sys
+from PIL import Image
+kind, files, bad = sys.argv[1], sys.argv[2:], 0
+for p in files:
+    try:
+        with Image.open(p) as im:
+            fmt, size = im.format, im.size
+            im.verify()
+        ok = fmt == kind and size[0] >= 300 and size[1] >= 200
+    except Exception as err:  # missing, truncated or not an image
+        fmt, size, ok = repr(err), None, False
+    print(("ok:   %s: %s %s" if ok else "FAIL: %s: %s %s") % (p, fmt, size))
+    bad += not ok
+sys.exit(1 if bad else 0)
+EOF
+}
+t0=$SECONDS
+times=0,0.001,0.002,0.003,0.004,0.005,0.006
+run impact -options_file options/scenes/animation.opts -snapshot_times $times -impact_max_time 0.006
+run plain -options_file options/impact.opts -monitor_ball -impact_max_time 0.006
+run modes -options_file options/scenes/modes.opts -beam_left free
+run sweep -options_file options/default.opts -sweep_x 0.5,1.2 -sweep "beam_nodes=21;41" -sweep_quiet
+echo "      (runs: $((SECONDS - t0)) s)"
+
+# --- plot_impact.py ------------------------------------------------------------------------------
+if scripts/plot_impact.py "$dir/impact.h5" -o "$dir/impact" >"$dir/plot.log" 2>&1; then pass "plot_impact.py impact.h5: $(grep -c wrote "$dir/plot.log") PNGs"
+else fail "plot_impact.py impact.h5: $(tail -3 "$dir/plot.log")"; fi
+if images PNG "$dir"/impact-{force,energy,snapshots}.png; then pass "force, energy and snapshot PNGs are valid images"; else fail "plot_impact.py PNGs"; fi
+if scripts/plot_impact.py "$dir/modes.h5" --modes >"$dir/plotm.log" 2>&1 && images PNG "$dir/modes-modes.png"; then pass "plot_impact.py --modes on a -task modes file: modes-modes.png"
+else fail "plot_impact.py --modes: $(tail -3 "$dir/plotm.log")"; fi
+expect_fail "plot_impact.py --energy without -monitor_energy" "-monitor_energy" scripts/plot_impact.py "$dir/plain.h5" --energy -o "$dir/plain"
+expect_fail "plot_impact.py --snapshots without -snapshot_times" "-snapshot_times" scripts/plot_impact.py "$dir/plain.h5" --snapshots -o "$dir/plain"
+[[ ! -e $dir/plain-energy.png ]] && pass "no energy PNG was written for plain.h5" || fail "plain-energy.png written from a file without energies"
+if scripts/plot_impact.py "$dir/plain.h5" -o "$dir/plain" >"$dir/plotp.log" 2>&1 && grep -q "no energy plot.*-monitor_energy" "$dir/plotp.log" &&
+   [[ -f $dir/plain-force.png && ! -e $dir/plain-energy.png ]]; then pass "plot_impact.py plain.h5: the force only, the missing plots named with their options"
+else fail "plot_impact.py plain.h5: $(cat "$dir/plotp.log")"; fi
+
+# --- animate_impact.py ---------------------------------------------------------------------------
+# frames FILE: the GIF's frame count per PIL
+frames() { "$python" -c "from PIL import Image; im = Image.open('$1'); print(im.n_frames if im.format == 'GIF' else -1)" 2>/dev/null || echo -1; }
+if scripts/animate_impact.py "$dir/impact.h5" -o "$dir/four.gif" --frames 4 >"$dir/anim.log" 2>&1; then
+  n=$(frames "$dir/four.gif")
+  check_gif=$([[ $n == 4 ]] && echo ok)
+  [[ -n $check_gif ]] && pass "animate_impact.py --frames 4: GIF with $n frames ($(stat -c %s "$dir/four.gif") bytes)" || fail "animate_impact.py --frames 4: $n frames, expected 4"
+else fail "animate_impact.py --frames 4: $(tail -3 "$dir/anim.log")"; fi
+if scripts/animate_impact.py "$dir/impact.h5" -o "$dir/all.gif" >"$dir/anim2.log" 2>&1; then
+  n=$(frames "$dir/all.gif")
+  [[ $n == 7 ]] && pass "animate_impact.py: one frame per snapshot time ($n of 7)" || fail "animate_impact.py: $n frames, expected 7 (the snapshot times)"
+  images GIF "$dir/all.gif" >/dev/null || fail "all.gif is not a valid GIF of >= 300 x 200 pixels"
+else fail "animate_impact.py: $(tail -3 "$dir/anim2.log")"; fi
+if command -v ffmpeg >/dev/null; then
+  scripts/animate_impact.py "$dir/impact.h5" -o "$dir/all.mp4" --frames 3 >/dev/null 2>&1 && [[ -s $dir/all.mp4 ]] && pass "MP4 with ffmpeg" || fail "MP4 with ffmpeg on PATH"
+else
+  expect_fail "animate_impact.py -o .mp4 without ffmpeg" "ffmpeg" scripts/animate_impact.py "$dir/impact.h5" -o "$dir/all.mp4"
+fi
+expect_fail "animate_impact.py on a file without snapshots" "-snapshot_times" scripts/animate_impact.py "$dir/plain.h5" -o "$dir/plain.gif"
+
+# --- h5_to_csv.py: every cell against h5py ---------------------------------------------------------
+# csv_check FILE GROUP CSV: row count, header units, values, counts as integers, nan
+csv_check() {
+  "$python" - "$@" <<'EOF'
+import csv, math, re, sys
+import h5py, numpy as np
+path, group, out = sys.argv[1:4]
+COUNTS = {"contacts", "steps", "rejected_steps", "event_steps", "function_evals", "kind", "status", "case_index", "beam_nodes", "ended_in_contact"}
+bad, checked = [], 0
+with open(out, newline="") as fh:
+    rows = list(csv.reader(fh))
+head, body = rows[0], rows[1:]
+with h5py.File(path, "r") as f:
+    g = f[group]
+    n = None
+    for j, h in enumerate(head):
+        m = re.match(r"^([^ \[]+)(\[[^\]]*\])?(?: \((.*)\))?$", h)
+        name, sub, u = m.group(1), m.group(2), m.group(3) or ""
+        ds = g[name]
+        unit = ds.attrs.get("unit", b"")
+        unit = unit.decode() if isinstance(unit, bytes) else str(unit)
+        if u and not unit.startswith(u):
+            bad.append("%s: header unit %r, dataset unit %r" % (h, u, unit))
+        v = ds[()]
+        if sub:  # snapshots y[t=...]: column k of y.T, at the time in the header
+            k = int(np.argmin(np.abs(f[group + "/time"][()] - float(sub[3:-1]))))
+            v = v[k]
+        n = len(v) if n is None else n
+        if len(v) != len(body):
+            bad.append("%s: %d rows, dataset length %d" % (h, len(body), len(v)))
+            continue
+        cells = [r[j] for r in body]
+        if v.dtype.kind in "OS":
+            exp = [x.decode() if isinstance(x, bytes) else str(x) for x in v]
+            if cells != exp:
+                bad.append("%s: strings differ" % h)
+            checked += len(cells)
+            continue
+        for c, x in zip(cells, v.astype(float)):
+            if math.isnan(x):
+                ok = c == "nan"
+            elif name in COUNTS:
+                ok = re.fullmatch(r"-?[0-9]+", c) is not None and int(c) == x
+            else:
+                ok = c not in ("", "nan") and float(c) == x  # exact: the text reads back as the same double
+            if not ok:
+                bad.append("%s: cell %r, HDF5 %r" % (h, c, x))
+                break
+            checked += 1
+    # every 1-D dataset of the table's length is a column
+    names = {re.split(r"[ \[]", h)[0] for h in head}
+    for k, ds in g.items():
+        if isinstance(ds, h5py.Dataset) and ds.ndim == 1 and len(ds) == len(body) and k not in names:
+            bad.append("dataset %s/%s is not a column" % (group, k))
+for b in bad[:8]:
+    print("      " + b)
+print("%d rows, %d columns, %d cells checked" % (len(body), len(head), checked))
+sys.exit(1 if bad or not body else 0)
+EOF
+}
+for spec in impact:results impact:events impact:series impact:snapshots sweep:results; do
+  h5=${spec%%:*} grp=${spec#*:}
+  csv="$dir/$h5-$grp.csv"
+  if scripts/h5_to_csv.py "$dir/$h5.h5" "$grp" -o "$csv" 2>"$dir/csv.err"; then
+    if out=$(csv_check "$dir/$h5.h5" "$grp" "$csv"); then pass "h5_to_csv.py $h5.h5 $grp: equal to the HDF5 values (${out##*$'\n'})"
+    else fail "h5_to_csv.py $h5.h5 $grp: $out"; fi
+  else fail "h5_to_csv.py $h5.h5 $grp: $(cat "$dir/csv.err")"; fi
+done
+# the default group to stdout; the sweep's failed rows: status 2, the reason, nan numbers; integers bare
+scripts/h5_to_csv.py "$dir/impact.h5" >"$dir/stdout.csv" 2>/dev/null
+cmp -s "$dir/stdout.csv" "$dir/impact-results.csv" && pass "h5_to_csv.py FILE (no GROUP, stdout) = /results" || fail "h5_to_csv.py FILE to stdout differs from /results -o"
+row=$(sed -n 5p "$dir/sweep-results.csv")
+[[ $(sed -n 1p "$dir/sweep-results.csv") == "case_index (1),impact_x (m),beam_nodes (1),status (1),reason,x (m),"* ]] &&
+  pass "sweep CSV header: case_index, the axes, status, reason first" || fail "sweep CSV header: $(sed -n 1p "$dir/sweep-results.csv" | cut -c1-120)"
+[[ $row == 3,1.2,41,2,*"impact point must lie on the beam"*,nan,nan,* ]] && pass "failed sweep row: ${row:0:90}..." || fail "failed sweep row: ${row:0:200}"
+expect_fail "h5_to_csv.py on a group the file lacks" "-monitor_ball" scripts/h5_to_csv.py "$dir/modes.h5" series
+
+echo "plots: $fails failure(s), $SECONDS s"
+[[ $fails -eq 0 ]]
