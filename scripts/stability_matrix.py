@@ -804,11 +804,12 @@ def write_markdown(path, study_args, table, refs, integ, all_cases, counts, elap
     add("")
     add("## Reproducing")
     add("")
+    add("<!-- doc_commands: skip (about 15 minutes on 2 cores; the stability_subset test runs a fast part) -->")
     add("```sh")
     add("scripts/run_stability.sh            # builds nothing: uses build/release/beamimpact (or the path given)")
     add("scripts/stability_matrix.py --exe %s --jobs %d --h5 %s --md %s" % (
         os.path.relpath(exe, ROOT) if exe.startswith(ROOT) else exe, study_args.jobs, study_args.h5, study_args.md))
-    add("scripts/stability_matrix.py --cases k-1e+08,double --integrators cn,rk4   # a part of it")
+    add("scripts/stability_matrix.py --cases k-1e+08,double --integrators cn,rk4 --md none   # a part of it (--md none: this page stays)")
     add("```")
     add("")
     add("The HDF5 file holds every cell (`/cells/<column>`: case, integrator, status, reason, message, command, and the "
