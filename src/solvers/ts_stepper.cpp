@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace beamimpact {
@@ -407,6 +408,37 @@ PetscErrorCode CreateTS(TSStepper &S, const char *type)
   PetscFunctionReturn(0);
 }
 
+// What the chosen type and step must allow, said before PETSc's set-up fails in its own words:
+// a type that cannot roll back a step (no event location; basicsymplectic and mprk would
+// also ask for RHS splits), a step that is not a finite positive number, and a theta method
+// outside [1/2, 1] (theta < 1/2 amplifies an undamped oscillation at every step; 0 is the
+// explicit Euler method, whose implicit solve divides by theta dt).
+PetscErrorCode TSCheckTypeSettings(TS ts, const char *type, MPI_Comm comm)
+{
+  PetscReal dt;
+  PetscBool theta;
+
+  PetscFunctionBeginUser;
+  PetscCheck(TypeCanRollBack(type), comm, PETSC_ERR_SUP,
+             "-ts_type %s cannot roll back a step, so contact start, maximum compression and separation cannot be located as events; "
+             "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, modal",
+             type);
+  PetscCall(TSGetTimeStep(ts, &dt));
+  char value[64]; // PETSc's %g would write 0 as "0." and nan as "nan."
+  std::snprintf(value, sizeof value, "%g", (double)dt);
+  PetscCheck(std::isfinite(dt) && dt > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %s is not allowed: the time step must be a finite number > 0 (s)", value);
+  PetscCall(PetscStrcmp(type, TSTHETA, &theta));
+  if (theta) {
+    PetscReal th;
+    PetscCall(TSThetaGetTheta(ts, &th));
+    std::snprintf(value, sizeof value, "%g", (double)th);
+    PetscCheck(th >= 0.5 && th <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-ts_theta_theta %s is not allowed: use 0.5 <= theta <= 1 (0.5: Crank-Nicolson, 1: backward Euler); theta < 0.5 amplifies an undamped oscillation at every step%s", value,
+               th == 0 ? ", and theta = 0 is the explicit Euler method (use -ts_type rk)" : "");
+  }
+  PetscFunctionReturn(0);
+}
+
 // Defaults that options override (a step resolving the contact, capped so one step cannot
 // hold two events), then the options, then what the run needs of the solver.
 PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettings &set)
@@ -440,6 +472,7 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
     if (!user_test) PetscCall(SNESSetConvergenceTest(snes, TSConvergedWithRoundoffFloor, &S.newton_floor, NULL));
   }
   PetscCall(TSSetErrorIfStepFails(S.ts, PETSC_FALSE)); // failures are explained by TSCheckStep
+  PetscCall(TSCheckTypeSettings(S.ts, now, S.P.L.comm)); // before TSSetUp, whose errors would not say why
   PetscCall(TSSetUp(S.ts));
   if (set.check_unused_options) PetscCall(OptionsCheckUnused(S.P.L.comm, {}, set.strict_solver_options));
   if (S.P.form != Formulation::Explicit) { // the last Newton solve's residual history explains a failure
@@ -447,10 +480,6 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
     PetscCall(TSGetSNES(S.ts, &snes));
     PetscCall(SNESSetConvergenceHistory(snes, NULL, NULL, PETSC_DECIDE, PETSC_TRUE));
   }
-  PetscCheck(TypeCanRollBack(now), S.P.L.comm, PETSC_ERR_SUP,
-             "-ts_type %s cannot roll back a step, so contact start, maximum compression and separation cannot be located as events; "
-             "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, modal",
-             now);
   PetscFunctionReturn(0);
 }
 
