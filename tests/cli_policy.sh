@@ -14,7 +14,8 @@
 #   * -log_view lists the program's stages (set-up, contact, free flight, output);
 #   * a sweep whose runs -impact_max_time cuts off in contact gives failed rows (status 7);
 #   * a run expected to take long prints its cost first (-impact_cost_warn), progress lines
-#     (-impact_progress), and a sweep of more than 1e6 points announces its set-up cost.
+#     (-impact_progress), and a sweep of more than 1e6 points announces its set-up cost; a sweep
+#     whose remaining points are expected to take longer than -impact_cost_warn says so once.
 #
 #   tests/cli_policy.sh path/to/beamimpact scratch_dir
 set -uo pipefail
@@ -106,6 +107,12 @@ grep -q "^cost: at least [0-9.e+]* steps .* the explicit stability limit) on 41 
 out=$(timeout 5 "$exe" -task sweep -sweep_x 0:1.1:1000001 -output "$dir/huge.h5" 2>&1)
 grep -q "^sweep: 1000001 points planned: checking every point's options takes about [0-9.e+]* s" <<<"$out" && pass "a sweep of 1e6 points announces its set-up cost" || fail "huge sweep: $out"
 rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"
+out=$("$exe" -task sweep -sweep_x 0:1.1:300 -sweep_progress_interval 0.05 -impact_cost_warn 0.01 -output "$dir/costly.h5" 2>&1)
+grep -q "^cost: 300 points to compute at [0-9.e-]* s a point (measured over the first [0-9]*): expected .* more; to shorten it: fewer points" <<<"$out" && [[ $(grep -c "^cost:" <<<"$out") == 1 ]] \
+  && pass "a sweep expected to take longer than -impact_cost_warn says so once, measured over its first points" || fail "sweep cost line: $out"
+out=$("$exe" -task sweep -sweep_x 0:1.1:300 -sweep_progress_interval 0.05 -sweep_restart -output "$dir/costly.h5" 2>&1)
+! grep -q "^cost:" <<<"$out" && pass "a short sweep prints no cost line" || fail "short sweep: $out"
+rm -rf "$dir/costly.h5" "$dir/costly.h5.parts"
 
 # a compression beyond the ball's radius is flagged (the presets give the radius)
 out=$("$exe" -options_file options/base/superball-linear.opts -ball_speed 1e6 -output "$dir/absurd.h5" 2>&1); rc=$?

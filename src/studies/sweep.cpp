@@ -106,6 +106,7 @@ int g_exit_status = 0; // SweepExitStatus()
 struct SweepProgress {
   PetscInt ncases = 0, already = 0, todo = 0; // cases: all, done before this run, to compute
   double   t_start = 0, last = 0;             // s (MPI_Wtime)
+  bool     cost_said = false;                   // the expected time was judged (first progress line)
 };
 
 // What this rank did: the rows it computed as a group leader (gathered on rank 0 at
@@ -308,6 +309,12 @@ PetscErrorCode SweepPoll(SweepStore &S, SweepProgress &P, const SweepPlan &plan,
     const double rate = done / (now - P.t_start);
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT "/%" PetscInt_FMT " points (%.0f%%)  %.3g points/s  ETA %s\n", P.already + done, P.ncases, 100.0 * (P.already + done) / P.ncases,
                            rate, rate > 0 ? FormatDuration((P.todo - done) / rate).c_str() : "?"));
+    if (!P.cost_said && rate > 0 && (P.todo - done) / rate > plan.cost_warn)
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
+                             "cost: %" PetscInt_FMT " points to compute at %.3g s a point (measured over the first %" PetscInt_FMT "): expected %s more; to shorten it: fewer points (a coarser -sweep_x or -sweep), more "
+                             "MPI ranks, or a cheaper -ts_type/-ts_dt/-beam_nodes; a killed sweep resumes where it stopped\n",
+                             P.todo, 1 / rate, done, FormatDuration((P.todo - done) / rate).c_str()));
+    P.cost_said = true;
     std::fflush(PETSC_STDOUT);
     P.last = now;
   }

@@ -274,6 +274,7 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
   PetscCheck(plan->ranks_per_case >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_ranks_per_case %" PetscInt_FMT " is not allowed: at least 1", plan->ranks_per_case);
   PetscCheck(plan->rigid_loss_fraction >= 0 && plan->rigid_loss_fraction < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-rigid_loss_fraction %g is not allowed: a fraction of the incident energy, 0 <= f < 1",
              (double)plan->rigid_loss_fraction);
+  PetscCall(PetscOptionsGetReal(NULL, NULL, "-impact_cost_warn", &plan->cost_warn, NULL)); // its help and check: the impact's options
   PetscCheck(plan->progress_interval > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_progress_interval %g is not allowed: it must be > 0 (s)", (double)plan->progress_interval);
   PetscCheck(plan->write_interval >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_write_interval %g is not allowed: it must be >= 0 (s)", (double)plan->write_interval);
   PetscFunctionReturn(0);

@@ -49,6 +49,7 @@ struct SweepPlan {
   PetscBool              retry_failed = PETSC_FALSE; // a resume computes failed cases again
   PetscReal              progress_interval = 2;    // s, at most one progress line per interval
   PetscReal              write_interval = 5;       // s, minimum time between live rewrites of the file
+  PetscReal              cost_warn = 30;           // s, -impact_cost_warn: the expected time of the remaining points is said above this
 
   PetscInt cases() const;
   // The value of every axis for case `index` (axis order).
