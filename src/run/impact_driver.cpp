@@ -27,11 +27,11 @@ namespace {
 
 PetscLogStage ImpactStageId(ImpactStage s)
 {
-  static PetscLogStage ids[4];
+  static PetscLogStage ids[5];
   static bool          registered = false;
   if (!registered) {
-    const char *names[4] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output"};
-    for (int k = 0; k < 4; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
+    const char *names[5] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output", "beamimpact: modal reference"};
+    for (int k = 0; k < 5; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
     registered = true;
   }
   return ids[static_cast<int>(s)];
