@@ -135,7 +135,7 @@ integers)
   need_python
   out=$("$exe" "${scene[@]}" -task impact -impact_x 0.9 -output "$dir/impact.h5" 2>&1) || { fail "impact run: $out"; }
   summary=$(grep -m1 "^x " <<<"$out")
-  "$exe" "${scene[@]}" -task impact -impact_window 0 -impact_max_time 0.05 -impact_max_contacts 7 -output "$dir/given.h5" >/dev/null 2>&1 || fail "impact run with given times"
+  "$exe" "${scene[@]}" -task impact -impact_window 0 -impact_max_time 0.05 -impact_max_contacts 7 -impact_after time -output "$dir/given.h5" >/dev/null 2>&1 || fail "impact run with given times"
   "$exe" "${scene[@]:0:2}" "${scene[@]:4}" -task modes -modes_count 5 -output "$dir/modes.h5" >/dev/null 2>&1 || fail "modes run"
   "$mpiexec" -n 2 "$exe" "${scene[@]}" -task sweep -sweep "impact_x=0.2:1.0:3,ball_speed=1;2" -sweep_quiet -output "$dir/sweep.h5" >/dev/null 2>&1 || fail "sweep run"
   "$python" - "$dir" "$summary" <<'PY'
@@ -165,6 +165,7 @@ Tc = math.pi * math.sqrt(A["ball_mass"] / A["ball_k"])  # the linear ball's wall
 close("impact.h5 impact_window (2 fundamental periods)", float(attr(f, "impact_window")), window, 1e-5)
 close("impact.h5 impact_max_time (4 windows + 100 T_c)", float(attr(f, "impact_max_time")), 4 * window + 100 * Tc, 1e-5)
 close("impact.h5 impact_x", float(attr(f, "impact_x")), 0.9)
+check("impact.h5 impact_after = %r (modal: the default, resolved)" % attr(f, "impact_after"), str(attr(f, "impact_after")) in ("modal", "b'modal'"))
 close("impact.h5 dt_nominal (as /results/dt_nominal)", float(attr(f, "dt_nominal")), float(f["results/dt_nominal"][0]))
 check("impact.h5 impact_window, impact_max_time > 0 (not -1)", attr(f, "impact_window") > 0 and attr(f, "impact_max_time") > 0)
 r = f["results"]
@@ -184,6 +185,7 @@ g = h5py.File(d + "/given.h5", "r")
 close("given.h5 impact_window", float(attr(g, "impact_window")) + 1, 1.0)
 close("given.h5 impact_max_time", float(attr(g, "impact_max_time")), 0.05)
 integer_attr(g, "impact_max_contacts", 7)
+check("given.h5 impact_after = %r (-impact_after time)" % attr(g, "impact_after"), str(attr(g, "impact_after")) in ("time", "b'time'"))
 integer_attr(g, "impact_window_default", 0)
 integer_attr(g, "impact_max_time_default", 0)
 # -task modes

@@ -104,7 +104,8 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   rec->add("impact_max_time_default", sc.impact.max_time > 0 ? 0 : 1);
   rec->add("impact_event_tol", sc.impact.event_tol);
   rec->add("impact_max_contacts", sc.impact.max_contacts);
-  rec->add("impact_after", ImpactAfterName(sc.impact.after));
+  // As resolved by the run: the default modal falls back to time for a beam beyond the modes' limit.
+  rec->add("impact_after", first && !first->after_used.empty() ? first->after_used : std::string(ImpactAfterName(sc.impact.after)));
   if (first) {
     rec->add("ts_type", first->ts_type);
     rec->add("formulation", first->formulation);

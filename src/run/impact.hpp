@@ -140,6 +140,7 @@ struct ImpactCost : StepperCounts {
 };
 
 struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
+  std::string               after_used; // how the run followed a separation: "modal" or "time" (-impact_after as resolved)
   std::vector<ContactEvent> events;
   ImpactSeries series;
 };

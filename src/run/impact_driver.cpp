@@ -277,6 +277,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   bool                             after_modal;
   std::shared_ptr<const BeamModes> modes;
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
+  res->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {

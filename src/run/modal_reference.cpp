@@ -174,6 +174,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   *res               = ImpactResult();
   res->x             = ip.x;
   res->ts_type       = "modal";
+  res->after_used    = "modal"; // exact throughout
   res->formulation   = "exact";
   const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ball.k);
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
