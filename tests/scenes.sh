@@ -24,7 +24,7 @@
 #
 #   tests/scenes.sh path/to/beamimpact scratch_dir [mpiexec]
 # Numbers are read with h5dump (hdf5-tools). Runs from the repository root, found from this
-# script's path, because the scene files include their bases by root-relative paths.
+# script's path, because the headers' commands and the plots name files from there.
 set -uo pipefail
 
 exe=${1:?usage: scenes.sh beamimpact scratch_dir [mpiexec]}

@@ -14,7 +14,11 @@
 
 #include <slepcsys.h>
 
+#include <sys/prctl.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -65,9 +69,25 @@ static std::string OptionOfParseError(const std::string &msg)
   return found + " " + value + " is not allowed: it must be " + (integer ? "a whole number" : "a number") + " (" + msg + ")";
 }
 
+// Under mpirun (Open MPI sets OMPI_COMM_WORLD_SIZE, MPICH's hydra PMI_SIZE): a rank dies with
+// its launcher. A killed
+// mpirun (kill -9) cannot stop its ranks, which would run on, unseen, until their MPI
+// connections break (~2 s, a sweep's ranks journaling rows all the while); the kernel kills
+// them at once instead (PR_SET_PDEATHSIG). A launcher already gone before the request
+// (the rank reparented) ends the rank here.
+static void DieWithLauncher()
+{
+  if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMI_SIZE")) return;
+  const pid_t parent = getppid();
+  if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) return;
+  if (getppid() != parent) _exit(1); // it died before the request took effect
+}
+
 int main(int argc, char **argv)
 {
   PetscBool traceback = PETSC_FALSE;
+
+  DieWithLauncher();
 
   std::string error;
   if (!ExpandCommandLine(&argc, &argv, &error)) {

@@ -168,7 +168,14 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
       for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1))) nodes += " " + std::to_string(x).substr(0, 6);
     PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.4f %s\n", (int)q + 1, (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
   }
-  PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(beam, rec); }, [&](const RunRecord &rec) { return ResultsWriteModesFile(comm, output, rec, modes, shapes, beam); }));
+  auto record = [&](RunRecord *rec) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(RunRecordBuild(beam, rec));
+    rec->add("modes_count", mp.count); // -modes_count: the modes computed, rigid ones included
+    rec->add("modes_rigid_count", (PetscInt)modes.rigid_count);
+    PetscFunctionReturn(0);
+  };
+  PetscCall(TaskWriteOutput(comm, output, record, [&](const RunRecord &rec) { return ResultsWriteModesFile(comm, output, rec, modes, shapes, beam); }));
   PetscFunctionReturn(0);
 }
 
@@ -211,7 +218,9 @@ PetscErrorCode PrintAllOptions(MPI_Comm comm)
   PetscCall(RunTaskOptions(comm, nullptr, nullptr));
   PetscCall(ReadEveryOption(comm));
   PetscCall(PetscPrintf(comm, "\n-help lists every option of every task above, with its default; nothing was run or written.\n"
-                              "Not in the blocks above: -allow_unused_options (unknown options become a warning), -error_traceback (PETSc's full traceback on errors).\n"));
+                              "Not in the blocks above: -allow_unused_options (unknown options become a warning), -error_traceback (PETSc's full traceback on errors),\n"
+                              "-log_view (PETSc's profile, by the stages beamimpact: set-up, contact, free flight, output (also a sweep's rewrites of its file)\n"
+                              "and modal reference (-reference modal)).\n"));
   PetscFunctionReturn(0);
 }
 

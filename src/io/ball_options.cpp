@@ -88,7 +88,7 @@ PetscErrorCode BallParamsFromOptions(MPI_Comm comm, BallParams *b)
   PetscCall(PetscOptionsReal("-ball_test_speed", "Speed (m/s) at which -ball_contact_time (and -ball_cor) were measured against a rigid wall", "", ch.test_speed, &ch.test_speed, &ch.set_vt));
   PetscCall(PetscOptionsString("-ball_cor_table", "File of rows 'v e': wall COR against approach speed (m/s); n follows e(v) at each contact start (instead of -ball_n, -ball_cor)", "", ch.table,
                                ch.table, sizeof(ch.table), &ch.set_table));
-  PetscCall(PetscOptionsReal("-ball_radius", "Ball radius (m): a compression beyond it is flagged as physically absurd (default: none, no check)", "", b->radius, &b->radius, &set_radius));
+  PetscCall(PetscOptionsReal("-ball_radius", "Ball radius (m): a compression beyond it is flagged as physically absurd (a sweep's summary counts such points; default: none, no check)", "", b->radius, &b->radius, &set_radius));
   PetscCall(PetscOptionsReal("-ball_loss_factor", "Factor applied to the ACOR for ball losses (reported as acor_corrected)", "", b->loss_factor, &b->loss_factor, NULL));
   PetscOptionsEnd();
   b->law = (ContactLawKind)law;

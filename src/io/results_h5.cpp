@@ -90,6 +90,19 @@ static PetscErrorCode WriteNumberAttr(hid_t loc, const char *name, double value)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode WriteIntegerAttr(hid_t loc, const char *name, long long value)
+{
+  PetscFunctionBeginUser;
+  hid_t space = H5Screate(H5S_SCALAR);
+  if (H5Aexists(loc, name) > 0) H5Adelete(loc, name);
+  hid_t attr = H5Acreate2(loc, name, H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name);
+  H5Awrite(attr, H5T_NATIVE_LLONG, &value);
+  H5Aclose(attr);
+  H5Sclose(space);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ResultsFileTask(const std::string &path, std::string *task)
 {
   PetscFunctionBeginUser;
@@ -125,6 +138,7 @@ PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
 {
   PetscFunctionBeginUser;
   for (auto &kv : record.numbers) PetscCall(WriteNumberAttr((hid_t)loc, kv.first.c_str(), kv.second));
+  for (auto &kv : record.integers) PetscCall(WriteIntegerAttr((hid_t)loc, kv.first.c_str(), kv.second));
   for (auto &kv : record.strings) PetscCall(WriteStringAttr((hid_t)loc, kv.first.c_str(), kv.second));
   PetscFunctionReturn(0);
 }
@@ -137,6 +151,20 @@ PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vect
   hid_t   ds      = H5Dcreate2((hid_t)loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
   if (!v.empty()) H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
+  H5Dclose(ds);
+  H5Sclose(space);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v, const char *unit)
+{
+  PetscFunctionBeginUser;
+  hsize_t dims[1] = {v.size()};
+  hid_t   space   = H5Screate_simple(1, dims, NULL);
+  hid_t   ds      = H5Dcreate2((hid_t)loc, name, H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
+  if (!v.empty()) H5Dwrite(ds, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
   if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
   H5Dclose(ds);
   H5Sclose(space);
@@ -164,15 +192,22 @@ PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vect
   PetscFunctionReturn(0);
 }
 
-// /results: one row per result; a damped beam's energy term besides.
+// /results: one row per result (the integer columns as integer datasets: every row has a
+// number); a damped beam's energy term besides.
 static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results, const BeamParams &beam)
 {
   PetscFunctionBeginUser;
   hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   for (auto &col : ImpactResultColumns()) {
-    std::vector<double> v;
-    for (auto &r : results) v.push_back(col.get(r));
-    PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
+    if (col.integer) {
+      std::vector<long long> v;
+      for (auto &r : results) v.push_back((long long)col.get(r));
+      PetscCall(H5WriteDatasetInt1D(g, col.name, v, col.unit));
+    } else {
+      std::vector<double> v;
+      for (auto &r : results) v.push_back(col.get(r));
+      PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
+    }
   }
   if (beam.damping_mass > 0 || beam.damping_stiffness > 0) { // the beam's Rayleigh damping: one more energy term
     std::vector<double> d, f;

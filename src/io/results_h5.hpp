@@ -15,7 +15,8 @@
 
 namespace beamimpact {
 
-// One quantity of ImpactResult: /results/<name>, one row per impact.
+// One quantity of ImpactResult: /results/<name>, one row per impact. An integer column is an
+// integer dataset in a -task impact file; a sweep's /results stay double (NaN in failed rows).
 struct ResultColumn {
   const char                              *name;
   const char                              *unit;
@@ -43,6 +44,7 @@ PetscErrorCode ResultsFileTask(const std::string &path, std::string *task);
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);
 PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);
+PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v, const char *unit); // 64-bit integers
 PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit);
 
 } // namespace beamimpact

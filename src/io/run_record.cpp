@@ -29,7 +29,7 @@ static PetscErrorCode RunProvenance(RunRecord *rec)
   rec->add("git", BEAMIMPACT_GIT);
   rec->add("date", date);
   rec->add("host", host);
-  rec->add("ranks", (double)size);
+  rec->add("ranks", size);
   rec->add("slepc_version", slepc);
   rec->add("hdf5_version", std::to_string(maj) + "." + std::to_string(min) + "." + std::to_string(rel));
   PetscFunctionReturn(0);
@@ -58,7 +58,7 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_theory", beam.theory);
   rec->add("beam_section", SectionSourceName(beam.section.source));
   if (!beam.section.file.empty()) rec->add("beam_section_file", beam.section.file);
-  rec->add("beam_nodes", (double)beam.nodes);
+  rec->add("beam_nodes", beam.nodes);
   rec->add("beam_left", SupportName(beam.left));
   rec->add("beam_right", SupportName(beam.right));
   rec->add("beam_clamp_x0", beam.has_clamp ? beam.clamp_x0 : -1.0);
@@ -95,12 +95,22 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
     if (!ball.cor_table.empty()) rec->add("ball_cor_table", ball.cor_table.file);
   }
   rec->add("ball_loss_factor", ball.loss_factor);
-  rec->add("impact_window", sc.impact.window);
-  rec->add("impact_max_time", sc.impact.max_time);
+  // The values used: a derived default (-impact_window, -impact_max_time < 0) as computed.
+  const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+  rec->add("impact_x", sc.impact.x);
+  rec->add("impact_window", times.window);
+  rec->add("impact_max_time", times.max_time);
+  rec->add("impact_window_default", sc.impact.window < 0 ? 1 : 0);
+  rec->add("impact_max_time_default", sc.impact.max_time > 0 ? 0 : 1);
   rec->add("impact_event_tol", sc.impact.event_tol);
+  rec->add("impact_max_contacts", sc.impact.max_contacts);
+  // As resolved by the run: the default modal falls back to time for a beam beyond the modes' limit.
+  rec->add("impact_after", first && !first->after_used.empty() ? first->after_used : std::string(ImpactAfterName(sc.impact.after)));
   if (first) {
     rec->add("ts_type", first->ts_type);
     rec->add("formulation", first->formulation);
+    rec->add("dt_nominal", first->dt_nominal);
+    rec->add("dt_stable", first->dt_stable);
   }
   PetscFunctionReturn(0);
 }

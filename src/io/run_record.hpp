@@ -8,17 +8,27 @@
 #include <petscsys.h>
 
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace beamimpact {
 
-// Named numbers and strings, in the order they were added.
+// Named numbers, whole numbers and strings, in the order they were added. Whole numbers (counts,
+// ranks, flags: any integral type given to add) become HDF5 integer attributes (64-bit), the
+// others double ones.
 struct RunRecord {
   std::vector<std::pair<std::string, double>>      numbers;
+  std::vector<std::pair<std::string, long long>>   integers;
   std::vector<std::pair<std::string, std::string>> strings;
   void add(const std::string &k, double v) { numbers.emplace_back(k, v); }
+  template <class T, std::enable_if_t<std::is_integral<T>::value, int> = 0>
+  void add(const std::string &k, T v)
+  {
+    integers.emplace_back(k, (long long)v);
+  }
   void add(const std::string &k, const std::string &v) { strings.emplace_back(k, v); }
+  void add(const std::string &k, const char *v) { strings.emplace_back(k, v); }
 };
 
 // Program, PETSc version, options and the beam's parameters (a task on the beam alone).

@@ -140,6 +140,7 @@ struct ImpactCost : StepperCounts {
 };
 
 struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
+  std::string               after_used; // how the run followed a separation: "modal" or "time" (-impact_after as resolved)
   std::vector<ContactEvent> events;
   ImpactSeries series;
 };
@@ -158,10 +159,12 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
 // PETSc log stages of the program, for -log_view: "beamimpact: set-up" (the system and the
 // stepper), "beamimpact: contact" (steps while the ball touches), "beamimpact: free flight"
 // (after a separation: the modal free flight, or the steps of -impact_after time),
-// "beamimpact: output" (the results file). Registered on first use. A scope pushes a stage and
+// "beamimpact: output" (the results file; a sweep's rewrites of its file too), "beamimpact:
+// modal reference" (-reference modal, the exact modal solution: its modes and phases).
+// Registered on first use. A scope pushes a stage and
 // pops it when it ends (also on an error return, so a sweep's failed points keep the stack
 // balanced); Switch changes the stage it holds, End pops it early.
-enum class ImpactStage { Setup, Contact, FreeFlight, Output };
+enum class ImpactStage { Setup, Contact, FreeFlight, Output, ModalReference };
 class ImpactStageScope {
 public:
   explicit ImpactStageScope(ImpactStage s) { Switch(s); }

@@ -27,11 +27,11 @@ namespace {
 
 PetscLogStage ImpactStageId(ImpactStage s)
 {
-  static PetscLogStage ids[4];
+  static PetscLogStage ids[5];
   static bool          registered = false;
   if (!registered) {
-    const char *names[4] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output"};
-    for (int k = 0; k < 4; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
+    const char *names[5] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output", "beamimpact: modal reference"};
+    for (int k = 0; k < 5; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
     registered = true;
   }
   return ids[static_cast<int>(s)];
@@ -277,6 +277,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   bool                             after_modal;
   std::shared_ptr<const BeamModes> modes;
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
+  res->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {

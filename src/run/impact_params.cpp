@@ -26,7 +26,7 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, "Impact: where the ball strikes and how long to follow it", "beamimpact");
   PetscCall(PetscOptionsReal("-impact_x", "Impact point, metres from the x = 0 end", "", p->x, &p->x, NULL));
-  PetscCall(PetscOptionsReal("-impact_window", "Time followed after each separation (s); < 0: two fundamental periods of the beam", "", p->window, &p->window, NULL));
+  PetscCall(PetscOptionsReal("-impact_window", "Time followed after each separation (s); < 0: two fundamental periods of the beam (the file records the value used)", "", p->window, &p->window, NULL));
   {
     const char *const names[] = {"time", "modal", "ImpactAfter", "IMPACT_AFTER_", nullptr};
     PetscEnum         e       = (PetscEnum)p->after;
@@ -34,7 +34,7 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
                                &p->after_set));
     p->after = (ImpactAfter)e;
   }
-  PetscCall(PetscOptionsReal("-impact_max_time", "Cap on the simulated time (s); < 0: 4 windows + 100 contact times", "", p->max_time, &p->max_time, NULL));
+  PetscCall(PetscOptionsReal("-impact_max_time", "Cap on the simulated time (s); < 0: 4 windows + 100 contact times (the file records the value used); a run it cuts off in contact is an error, a failed point", "", p->max_time, &p->max_time, NULL));
   PetscCall(PetscOptionsReal("-impact_event_tol", "Events are located until |indicator| (c/c_scale or dc/dt/v_i) is below this", "", p->event_tol, &p->event_tol, NULL));
   PetscCall(PetscOptionsInt("-impact_max_contacts", "Stop with an error after this many separate contacts", "", p->max_contacts, &p->max_contacts, NULL));
   PetscCall(PetscOptionsBool("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol", "", p->energy_check, &p->energy_check, NULL));

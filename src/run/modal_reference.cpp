@@ -1,6 +1,7 @@
 // The exact modal reference of one impact. See modal_reference.hpp.
 #include "run/modal_reference.hpp"
 
+#include "run/impact.hpp"
 #include "run/outcome.hpp"
 
 #include "run/scenario.hpp"
@@ -173,6 +174,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   *res               = ImpactResult();
   res->x             = ip.x;
   res->ts_type       = "modal";
+  res->after_used    = "modal"; // exact throughout
   res->formulation   = "exact";
   const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ball.k);
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
@@ -238,6 +240,7 @@ PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
   std::string why;
 
   PetscFunctionBeginUser;
+  ImpactStageScope stage(ImpactStage::ModalReference); // -log_view: its own stage
   PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(ModalReferenceRunSystem(sc, sys, res));
   PetscFunctionReturn(0);

@@ -238,10 +238,10 @@ PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, con
   if (!plan.sweep_x.empty()) rec->add("sweep_x", plan.sweep_x);
   rec->add("sweep_axes", axes);
   rec->add("sweep_axis_units", units);
-  for (auto &a : plan.axes) rec->add("sweep_count_" + a.name, (double)a.values.size());
-  rec->add("sweep_ranks_per_case", (double)plan.ranks_per_case);
+  for (auto &a : plan.axes) rec->add("sweep_count_" + a.name, a.values.size());
+  rec->add("sweep_ranks_per_case", plan.ranks_per_case);
   rec->add("rigid_loss_fraction", plan.rigid_loss_fraction);
-  rec->add("sweep_cases_total", (double)plan.cases());
+  rec->add("sweep_cases_total", plan.cases());
   rec->add("sweep_columns", columns);
   rec->add("sweep_checked_options", SweepCheckedOptions(options));
   PetscFunctionReturn(0);
@@ -429,7 +429,7 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
 PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P, double setup, double t0, double farm_time, const std::string &output, const SweepStore &S, PetscInt *failed_total)
 {
   PetscMPIInt rank, size;
-  PetscInt    computed = mine.computed, failed = 0;
+  PetscInt    computed = mine.computed, failed = 0, absurd = 0;
   double      busy_sum = 0, busy_min = 0, journal_sum = 0, handout_sum = 0;
   std::string by_status;
 
@@ -443,12 +443,15 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
   PetscCallMPI(MPI_Reduce(&mine.handout, &handout_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
   if (rank == 0 && S.status_column >= 0) {
     std::map<int, PetscInt> count;
+    int                     beyond = -1; // the column compression_beyond_radius
+    for (size_t c = 0; c < S.columns.size(); ++c)
+      if (S.columns[c].name == "compression_beyond_radius") beyond = (int)c;
     for (auto &kv : S.rows) {
       const double st = kv.second[S.status_column];
       if (st != 0) {
         ++failed;
         ++count[(int)st];
-      }
+      } else if (beyond >= 0 && kv.second[beyond] == 1) ++absurd;
     }
     for (auto &kv : count) by_status += (by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " + std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
   }
@@ -477,11 +480,28 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
   if (failed)
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points failed: %s; their rows have status != 0, the reason in /results/reason and NaN numbers\n", failed, P.ncases,
                            by_status.c_str()));
+  // Points whose numbers exist but mean nothing physically (-ball_radius given): counted like
+  // the failed ones, also with -sweep_quiet.
+  if (absurd)
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
+                           "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points compressed the ball beyond its radius (-ball_radius): physically absurd, the contact law far outside its range; "
+                           "their rows have status 0 but compression_beyond_radius = 1 in /results: leave them out of plots and fits\n",
+                           absurd, P.ncases));
   if (!plan.quiet) PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s (%s)\n", output.c_str(), Points(P.ncases).c_str()));
   PetscFunctionReturn(0);
 }
 
 } // namespace
+
+// Releases the output's lock when the task returns early (an error anywhere after the store
+// was opened); after SweepStoreClose there is nothing left to release.
+struct SweepStoreGuard {
+  SweepStore &store;
+  explicit SweepStoreGuard(SweepStore &s) : store(s) {}
+  ~SweepStoreGuard() { SweepStoreRelease(store); }
+  SweepStoreGuard(const SweepStoreGuard &)            = delete;
+  SweepStoreGuard &operator=(const SweepStoreGuard &) = delete;
+};
 
 int SweepExitStatus() { return g_exit_status; }
 
@@ -491,6 +511,7 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   SweepPlan             plan;
   TaskFarm              farm;
   SweepStore            store;
+  SweepStoreGuard       release(store); // an error return releases the lock rank 0 took
   ImpactResult          probe;
   std::vector<PetscInt> todo, candidates;
   int                   run = 0;

@@ -228,7 +228,7 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
   PetscCall(PetscOptionsString("-sweep_x", "Impact points (m), shorthand for -sweep impact_x=SPEC: start:stop:count (both ends included) or x1,x2,...", "", sweep_x.data(), sweep_x.data(), sweep_x.size(), &set_x));
   PetscCall(PetscOptionsInt("-sweep_ranks_per_case", "Ranks that solve one impact together (the beam's DMDA is distributed over them)", "", plan->ranks_per_case, &plan->ranks_per_case, NULL));
   PetscCall(PetscOptionsReal("-rigid_loss_fraction", "Loss fraction f of the rigid-body model, Eq. (11), for the rigid_acor column", "", plan->rigid_loss_fraction, &plan->rigid_loss_fraction, NULL));
-  PetscCall(PetscOptionsBool("-sweep_quiet", "No progress or summary lines (errors are still reported)", "", plan->quiet, &plan->quiet, NULL));
+  PetscCall(PetscOptionsBool("-sweep_quiet", "No progress or summary lines (errors, the count of failed points and of points compressed beyond -ball_radius are still reported)", "", plan->quiet, &plan->quiet, NULL));
   PetscCall(PetscOptionsBool("-sweep_restart", "Discard an existing -output file and its journal and start the sweep over", "", plan->restart, &plan->restart, NULL));
   PetscCall(PetscOptionsBool("-sweep_retry_failed", "On resuming, compute again the points that failed (status != 0) instead of keeping their rows", "", plan->retry_failed, &plan->retry_failed, NULL));
   PetscCall(PetscOptionsReal("-sweep_progress_interval", "Seconds between progress lines on rank 0", "", plan->progress_interval, &plan->progress_interval, NULL));

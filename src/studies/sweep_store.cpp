@@ -2,6 +2,7 @@
 #include "studies/sweep_store.hpp"
 
 #include "io/results_h5.hpp"
+#include "run/impact.hpp"
 
 #include <hdf5.h>
 
@@ -116,6 +117,8 @@ SweepAttributes SignatureMaps(const RunRecord &rec)
   SweepAttributes m;
   for (auto &kv : rec.numbers)
     if (!AttributeIsVolatile(kv.first)) m.num[kv.first] = kv.second;
+  for (auto &kv : rec.integers) // read back from the file as doubles too (CollectAttribute)
+    if (!AttributeIsVolatile(kv.first)) m.num[kv.first] = (double)kv.second;
   for (auto &kv : rec.strings)
     if (!AttributeIsVolatile(kv.first)) m.str[kv.first] = kv.second;
   return m;
@@ -469,13 +472,14 @@ static PetscErrorCode StoreWrite(SweepStore &S)
   const double      t0  = MPI_Wtime();
 
   PetscFunctionBeginUser;
+  ImpactStageScope stage(ImpactStage::Output); // -log_view: the rewrites are output
   {
     H5Quiet quiet;
     hid_t   file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (directory missing or not writable?)", S.output.c_str(), tmp.c_str());
     RunRecord rec = S.record;
-    rec.add("sweep_cases_done", (double)S.rows.size());
-    rec.add("sweep_complete", (double)((PetscInt)S.rows.size() == S.ncases));
+    rec.add("sweep_cases_done", S.rows.size());
+    rec.add("sweep_complete", (PetscInt)S.rows.size() == S.ncases ? 1 : 0);
     PetscCall(H5WriteAttributes(file, rec));
     hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     const auto &cols = S.columns;
@@ -575,7 +579,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
   PetscFunctionReturn(0);
 }
 
-static void RemoveJournals(const SweepStore &S, bool also_lock)
+static void RemoveJournals(const SweepStore &S)
 {
   DIR *d = ::opendir(S.parts.c_str());
   if (!d) return;
@@ -586,22 +590,54 @@ static void RemoveJournals(const SweepStore &S, bool also_lock)
   }
   ::closedir(d);
   for (auto &n : names) ::unlink((S.parts + "/" + n).c_str());
-  if (also_lock) {
-    ::unlink((S.parts + "/lock").c_str());
-    ::rmdir(S.parts.c_str());
+}
+
+// Takes F.parts/lock (flock, not blocking). A lock file unlinked by the run that held it
+// between our open() and flock() would leave us holding a lock nobody else sees: then the
+// path no longer names the inode we locked, and we try again (so too when that run removed
+// F.parts under us).
+static PetscErrorCode StoreLock(SweepStore &S)
+{
+  const std::string path = S.parts + "/lock";
+
+  PetscFunctionBeginUser;
+  for (int attempt = 0;; ++attempt) {
+    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0 && errno == ENOENT && attempt < 100) { // F.parts just removed by the sweep that ended
+      ::mkdir(S.parts.c_str(), 0755);
+      continue;
+    }
+    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (%s)", S.output.c_str(), path.c_str(), std::strerror(errno));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd);
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", S.output.c_str(),
+              path.c_str());
+    }
+    struct stat held, named;
+    if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &named) == 0 && held.st_dev == named.st_dev && held.st_ino == named.st_ino) {
+      S.lock_fd = fd;
+      PetscFunctionReturn(0);
+    }
+    ::close(fd);
+    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: %s keeps being replaced by another sweep; wait for it or choose another -output", S.output.c_str(), path.c_str());
   }
 }
 
-PetscErrorCode SweepStoreOpen(SweepStore &S, int *run)
+void SweepStoreRelease(SweepStore &S)
+{
+  if (S.lock_fd < 0) return;
+  ::unlink((S.parts + "/lock").c_str()); // while still held: nobody can take it in between
+  ::close(S.lock_fd);
+  S.lock_fd = -1;
+  ::rmdir(S.parts.c_str()); // only when empty: the journals of a resumable run stay
+}
+
+// SweepStoreOpen once the lock is held.
+static PetscErrorCode StoreOpenLocked(SweepStore &S, int *run)
 {
   PetscFunctionBeginUser;
-  if (::mkdir(S.parts.c_str(), 0755) != 0) PetscCheck(errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the journal directory %s (%s)", S.output.c_str(), S.parts.c_str(), std::strerror(errno));
-  S.lock_fd = ::open((S.parts + "/lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  PetscCheck(S.lock_fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s/lock (%s)", S.output.c_str(), S.parts.c_str(), std::strerror(errno));
-  PetscCheck(::flock(S.lock_fd, LOCK_EX | LOCK_NB) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s/lock is held); wait for it or choose another -output",
-             S.output.c_str(), S.parts.c_str());
   if (S.plan.restart) {
-    RemoveJournals(S, false);
+    RemoveJournals(S);
     ::unlink(S.output.c_str());
   } else PetscCall(StoreLoadFile(S));
   // Journals of earlier runs (killed before they finished).
@@ -634,8 +670,23 @@ PetscErrorCode SweepStoreOpen(SweepStore &S, int *run)
     }
   // One file holding everything found; only then are the old journals redundant.
   PetscCall(StoreWrite(S));
-  RemoveJournals(S, false);
+  RemoveJournals(S);
   *run += 1;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SweepStoreOpen(SweepStore &S, int *run)
+{
+  PetscFunctionBeginUser;
+  const bool made = ::mkdir(S.parts.c_str(), 0755) == 0;
+  PetscCheck(made || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the journal directory %s (%s)", S.output.c_str(), S.parts.c_str(), std::strerror(errno));
+  PetscErrorCode ierr = StoreLock(S);
+  if (ierr && made) ::rmdir(S.parts.c_str());
+  PetscCall(ierr);
+  // Refused (other parameters, not a sweep file, ...) or failed: the lock goes with this run.
+  ierr = StoreOpenLocked(S, run);
+  if (ierr) SweepStoreRelease(S);
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
@@ -672,9 +723,8 @@ PetscErrorCode SweepStoreClose(SweepStore &S)
   PetscFunctionBeginUser;
   PetscCheck((PetscInt)S.rows.size() == S.ncases, PETSC_COMM_SELF, PETSC_ERR_PLIB, "sweep ended with %zu of %" PetscInt_FMT " rows", S.rows.size(), S.ncases);
   PetscCall(StoreWrite(S));
-  RemoveJournals(S, true);
-  ::close(S.lock_fd);
-  S.lock_fd = -1;
+  RemoveJournals(S);
+  SweepStoreRelease(S);
   PetscFunctionReturn(0);
 }
 

@@ -8,7 +8,9 @@
 //              /results/reason), and /sweep/<axis> with every case's axis values;
 //              rewritten only as F.tmp + fsync + rename(), so F is always a
 //              complete HDF5 file (readable by h5py/h5dump at any time).
-//   F.parts/   while a sweep runs: lock (flock by rank 0: one sweep per file),
+//   F.parts/   while a sweep runs: lock (flock by rank 0: one sweep per file; removed when
+//              the run ends, also by an error or a refused resume; one left by a killed run
+//              is not held and is simply taken again),
 //              run<R>-rank<r>.bin, the journal of the group leader on world rank
 //              r in run (attempt) R: a header with the parameter signature, then
 //              one self-checking record per finished case (its numbers and its
@@ -121,5 +123,9 @@ PetscErrorCode SweepStoreRefresh(SweepStore &S);
 // Rank 0 at the end: the complete file (every case must have its row); removes the
 // journals and the lock.
 PetscErrorCode SweepStoreClose(SweepStore &S);
+// Rank 0 when the run stops early (a refused resume, bad input, an error in the farm): removes
+// and releases the lock it holds (nothing if it holds none) and F.parts when it is empty; the
+// journals stay for a resume.
+void SweepStoreRelease(SweepStore &S);
 
 } // namespace beamimpact
