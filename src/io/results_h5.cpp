@@ -143,32 +143,29 @@ PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit)
+// A 1-D dataset of n values in memory type `mem`, stored as `file_type`, with its unit.
+static PetscErrorCode WriteDataset1D(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data, size_t n, const char *unit)
 {
   PetscFunctionBeginUser;
-  hsize_t dims[1] = {v.size()};
+  hsize_t dims[1] = {n};
   hid_t   space   = H5Screate_simple(1, dims, NULL);
-  hid_t   ds      = H5Dcreate2((hid_t)loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t   ds      = H5Dcreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
-  if (!v.empty()) H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  if (n > 0) H5Dwrite(ds, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
   H5Dclose(ds);
   H5Sclose(space);
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit)
+{
+  return WriteDataset1D((hid_t)loc, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, v.data(), v.size(), unit);
+}
+
 PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v, const char *unit)
 {
-  PetscFunctionBeginUser;
-  hsize_t dims[1] = {v.size()};
-  hid_t   space   = H5Screate_simple(1, dims, NULL);
-  hid_t   ds      = H5Dcreate2((hid_t)loc, name, H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
-  if (!v.empty()) H5Dwrite(ds, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-  if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
-  H5Dclose(ds);
-  H5Sclose(space);
-  PetscFunctionReturn(0);
+  return WriteDataset1D((hid_t)loc, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, v.data(), v.size(), unit);
 }
 
 PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit)
