@@ -31,6 +31,8 @@ if [[ $rc -eq 0 && ! -e $dir/impact.h5 ]]; then pass "-help exits 0 and writes n
 for opt in -task -beam_profile -beam_theory -ball_cor_table -bat_speed -impact_after -monitor_velocity_at -modes_count -sweep -sweep_retry_failed -convergence_configs -leapfrog_dt -ts_type -ts_rk_type -output_overwrite; do
   grep -q -- "$opt\b" <<<"$out" || fail "-help does not list $opt"
 done
+bad=$(grep -E "^  -(beam|ball|bat|impact|monitor|snapshot|modes|sweep|convergence|leapfrog|grip|reference|task|output)[a-z_]* <" <<<"$out" | grep -E "<[^>]*e[+-][0-9]{3}|nan|inf" | grep -v "beam_length <inf\|1e+30")
+[[ -z $bad ]] && pass "-help shows no uninitialised or absurd defaults for the program's options" || fail "-help defaults: $bad"
 grep -q -- "-ts_type <now rk" <<<"$out" && pass "-help lists every task's options, PETSc's TS from the program's default rk" || fail "-help shows a TS default other than rk"
 
 # a scene with a later -ts_type
@@ -106,6 +108,11 @@ grep -q "^cost: at least [0-9.e+]* steps .* the explicit stability limit) on 41 
   && pass "-impact_cost_warn and -impact_progress set when the cost and progress lines appear" || fail "cost/progress lines: $out"
 out=$(timeout 5 "$exe" -task sweep -sweep_x 0:1.1:1000001 -output "$dir/huge.h5" 2>&1)
 grep -q "^sweep: 1000001 points planned: checking every point's options takes about [0-9.e+]* s" <<<"$out" && pass "a sweep of 1e6 points announces its set-up cost" || fail "huge sweep: $out"
+rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"
+out=$("$exe" -task sweep -sweep_x 0:1.1:1e12 -output "$dir/huge.h5" 2>&1); rc=$?
+[[ $rc -ne 0 ]] && grep -q -- "-sweep_x 0:1.1:1e12 is not allowed: count 1e12 of start:stop:count is too large: an axis has at most 1e+08 points" <<<"$out" && pass "-sweep_x 0:1.1:1e12: too many points, said so (not 'a whole number')" || fail "-sweep_x 1e12: exit $rc: $out"
+out=$("$exe" -task sweep -sweep_x 0:1.1:2.5 -output "$dir/huge.h5" 2>&1); rc=$?
+[[ $rc -ne 0 ]] && grep -q -- "count of start:stop:count must be a whole number >= 0, not '2.5'" <<<"$out" && pass "-sweep_x 0:1.1:2.5 refused: not a whole number" || fail "-sweep_x 2.5: exit $rc: $out"
 rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"
 out=$("$exe" -task sweep -sweep_x 0:1.1:300 -sweep_progress_interval 0.05 -impact_cost_warn 0.01 -output "$dir/costly.h5" 2>&1)
 grep -q "^cost: 300 points to compute at [0-9.e-]* s a point (measured over the first [0-9]*): expected .* more; to shorten it: fewer points" <<<"$out" && [[ $(grep -c "^cost:" <<<"$out") == 1 ]] \

@@ -258,6 +258,22 @@ while IFS= read -r f; do
 done < <(find "$root/options" -name '*.opts' | sort)
 echo "options headers: $n_hdr command(s) checked"
 
+# No link leaves the repository: every relative markdown link of the README and docs/ names a
+# file of the repository (an anchor after '#' is not checked), and no file points at ../shared.
+n_links=0
+while IFS= read -r md; do
+  while IFS= read -r target; do
+    n_links=$((n_links + 1))
+    path=${target%%#*}
+    [[ -z $path || $path =~ ^[a-z]+: ]] && continue # an anchor in the same file, or a URL
+    full=$(realpath -m "$(dirname "$md")/$path")
+    [[ $full == "$root"/* && -e $full ]] || fail "${md#"$root"/}: the link ($target) does not name a file of the repository"
+  done < <(grep -o '\]([^)]*)' "$md" | sed 's/^](\(.*\))$/\1/')
+done < <(find "$root" -maxdepth 2 -name '*.md' -not -path '*/build/*' | sort)
+outside=$(grep -rln '\.\./shared' "$root/README.md" "$root/docs" "$root/options" "$root/src" "$root/scripts" 2>/dev/null)
+[[ -z $outside ]] || fail "files pointing outside the repository (../shared): $outside"
+echo "links: $n_links markdown link(s) checked"
+
 echo "doc_commands: $((SECONDS - t_start)) s"
 if ((fails)); then
   echo "FAILED: $fails check(s)"

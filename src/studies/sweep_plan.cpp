@@ -61,6 +61,8 @@ static std::string Round15(double raw)
   return text;
 }
 
+static const double kMaxAxisPoints = 1e8; // points of one axis
+
 // "start:stop:count[:log]", both ends included.
 static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, std::string *why, const std::string &unit)
 {
@@ -81,13 +83,18 @@ static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, 
     return false;
   }
   const std::string c = parts[2];
-  char             *end;
-  errno        = 0;
-  const long n = c.empty() ? -1 : std::strtol(c.c_str(), &end, 10);
-  if (c.empty() || *end != '\0' || errno == ERANGE || n < 0 || n > 100000000) {
-    *why = "count of start:stop:count must be a whole number >= 0";
+  PetscReal         count;
+  if (!ParseReal(c, &count) || !(count >= 0) || count != std::floor(count)) {
+    *why = "count of start:stop:count must be a whole number >= 0, not '" + c + "'";
     return false;
   }
+  if (count > kMaxAxisPoints) {
+    char text[160];
+    std::snprintf(text, sizeof text, "count %s of start:stop:count is too large: an axis has at most %.0e points (each point is an impact of milliseconds to seconds)", c.c_str(), kMaxAxisPoints);
+    *why = text;
+    return false;
+  }
+  const long n = (long)count;
   if (log && !((a > 0 && b > 0) || (a < 0 && b < 0))) {
     *why = "start and stop of start:stop:count:log must be of one sign and not 0 (equal ratios between points)";
     return false;
