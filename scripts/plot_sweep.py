@@ -181,6 +181,10 @@ def plot_one_axis(args, files, column):
             any_multi = True
         mark_failed(ax, x[~ok], st[~ok], c)
         any_failed |= bool(np.any(~ok))
+        curve = "not an ACOR plot" if not acor_mode else "left out (--no-rigid)" if args.no_rigid else \
+            "not drawn (the beam is held or pivoted)" if held(f) else "drawn" if rigid is not None else "not in the file"
+        print("%s: %s: %d point(s), %d with two or more contacts (ringed), %d failed (x); rigid-body Eq. (11) curve: %s"
+              % (PROG, path, len(x), int(np.sum(multi)), int(np.sum(~ok)), curve))
     ax.set_xlabel(xlabel)
     ax.set_ylabel("ACOR" if acor_mode else axis_label(files[0][1]["results"], column))
     ax.set_title(args.title or ("Apparent coefficient of restitution" if acor_mode else column))

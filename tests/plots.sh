@@ -11,7 +11,10 @@
 #   * scripts/h5_to_csv.py: /results (impact and sweep, with its axes, status and reason),
 #     /events, /series and /snapshots: one row per dataset entry, every number equal to the
 #     HDF5 value read here with h5py, counts without a decimal point, NaN as nan, the header's
-#     units the datasets' unit attributes.
+#     units the datasets' unit attributes;
+#   * scripts/plot_sweep.py on a free and a clamped sweep: the points with two or more contacts
+#     ringed (counted here from /results/contacts), the Eq. (11) rigid-body curve drawn for the
+#     free beam only.
 #
 #   tests/plots.sh path/to/beamimpact scratch_dir
 # Runs from the repository root (found from this script's path); needs a Python with h5py,
@@ -183,6 +186,20 @@ row=$(sed -n 5p "$dir/sweep-results.csv")
   pass "sweep CSV header: case_index, the axes, status, reason first" || fail "sweep CSV header: $(sed -n 1p "$dir/sweep-results.csv" | cut -c1-120)"
 [[ $row == 3,1.2,41,2,*"impact point must lie on the beam"*,nan,nan,* ]] && pass "failed sweep row: ${row:0:90}..." || fail "failed sweep row: ${row:0:200}"
 expect_fail "h5_to_csv.py on a group the file lacks" "-monitor_ball" scripts/h5_to_csv.py "$dir/modes.h5" series
+
+# scripts/plot_sweep.py says what it drew: the points with two or more contacts ringed (their
+# number read here from /results/contacts), failed points, and the rigid-body Eq. (11) curve
+# only for a free beam (Eq. (11) is the free rigid body), not for one clamped at x = 0.
+run free -options_file options/default.opts -sweep_x 0.05:1.1:22 -sweep_quiet
+run clamped -options_file options/default.opts -beam_left clamped -sweep_x 0.05:1.1:22 -sweep_quiet
+for name in free clamped; do
+  out=$("$python" scripts/plot_sweep.py "$dir/$name.h5" -o "$dir/$name.png" 2>&1) || fail "plot_sweep.py $name: $out"
+  multi=$("$python" -c "import h5py, sys; r = h5py.File(sys.argv[1])['results']; print(int(((r['contacts'][()] >= 2) & (r['status'][()] == 0)).sum()))" "$dir/$name.h5")
+  curve=$([[ $name == free ]] && echo "drawn" || echo "not drawn (the beam is held or pivoted)")
+  grep -qF "$dir/$name.h5: 22 point(s), $multi with two or more contacts (ringed), 0 failed (x); rigid-body Eq. (11) curve: $curve" <<<"$out" \
+    && pass "plot_sweep.py $name: $multi double contact(s) ringed, Eq. (11) curve $curve" || fail "plot_sweep.py $name: expected $multi ringed and the curve $curve: $out"
+done
+images PNG "$dir/free.png" "$dir/clamped.png" && pass "plot_sweep.py PNGs valid" || fail "plot_sweep.py PNGs"
 
 echo "plots: $fails failure(s), $SECONDS s"
 [[ $fails -eq 0 ]]
