@@ -107,7 +107,8 @@ def energy_plot(f, path, out):
     ax.plot(t, tot, "k--", lw=1.4, label="total (/series/total_energy)")
     ax.set_ylabel("energy (J)")
     ax.grid(True, alpha=0.3)
-    legend(ax, f, loc="center right")
+    ax.set_ylim(top=ax.get_ylim()[1] * 1.55)  # room above the curves for the legend
+    legend(ax, f, loc="upper center", ncol=3)
     e0 = tot[0]
     err = (tot - e0) / e0 if e0 != 0 else tot - e0
     res = f["results"]

@@ -78,11 +78,32 @@ for o in "-ts_max_steps 100" "-ts_max_time 1e-3"; do
   [[ $rc -ne 0 ]] && grep -q -- "${o%% *} is not used here: .* use -impact_max_time" <<<"$out" && pass "$o refused, naming what to use" || fail "$o: exit $rc: $out"
 done
 
+# snapshots: times after the run's end are named in a note; /events holds NaN where a quantity
+# does not apply (the approach speed except at contact starts, e and n for the linear law)
+out=$("$exe" -options_file options/impact.opts -snapshot_times 0.002,0.001,5,7 -output "$dir/snap.h5" 2>&1); rc=$?
+[[ $rc -eq 0 ]] && grep -q "^note: 2 of the -snapshot_times (5.000000, 7.000000) are after the run's end at t = [0-9.e-]* s and were not recorded" <<<"$out" \
+  && pass "-snapshot_times after the run's end: a note names them" || fail "late snapshot times: exit $rc: $out"
+if [[ -n $python ]]; then
+  ev=$("$python" -c "
+import h5py, numpy as np, sys
+f = h5py.File(sys.argv[1]); e = f['events']; k = e['kind'][()]
+ok = e['kind'].dtype.kind == 'i' and np.all(np.isnan(e['approach_speed'][()][k != 0])) and np.all(e['approach_speed'][()][k == 0] == 1.0) \
+     and np.all(np.isnan(e['cor'][()])) and np.all(np.isnan(e['n'][()])) and list(f['snapshots/time'][()]) == [0.001, 0.002]
+print('ok' if ok else 'bad: kind %s speed %s cor %s n %s t %s' % (k, e['approach_speed'][()], e['cor'][()], e['n'][()], f['snapshots/time'][()]))" "$dir/snap.h5")
+  [[ $ev == ok ]] && pass "/events: integer kinds, NaN where a quantity does not apply; snapshots sorted" || fail "/events of a linear-spring impact: $ev"
+fi
+
 # -output
 out=$("$exe" -output "" 2>&1); rc=$?
 [[ $rc -ne 0 ]] && grep -q -- "-output needs a file name" <<<"$out" && pass "-output '' refused" || fail "-output '': exit $rc: $out"
 out=$("$exe" -output "$dir/no/such/dir/x.h5" -impact_x 0.5 2>&1); rc=$?
 [[ $rc -ne 0 ]] && grep -q -- "the directory $dir/no/such/dir does not exist or is not writable" <<<"$out" && ! grep -q "^x " <<<"$out" && pass "-output into a missing directory refused before any work" || fail "missing directory: exit $rc: $out"
+mkdir -p "$dir/adir"
+for task in impact sweep; do
+  out=$("$exe" -task $task -sweep_x 0.5 -output "$dir/adir" 2>&1); rc=$?
+  [[ $rc -ne 0 ]] && grep -q -- "-output $dir/adir is not allowed: it is a directory; give a file name" <<<"$out" && ! grep -q "^x \|HDF5-DIAG\|MPI_ABORT" <<<"$out" && ! ls "$dir"/adir.* >/dev/null 2>&1 \
+    && pass "-task $task -output DIRECTORY refused before any work, nothing left" || fail "-task $task -output a directory: exit $rc: $out"
+done
 "$exe" -task sweep -sweep_x 0.5,0.6 -sweep_quiet -output "$dir/sweep.h5" >/dev/null 2>&1 || fail "the sweep for the overwrite test did not run"
 out=$("$exe" -output "$dir/sweep.h5" 2>&1); rc=$?
 [[ $rc -ne 0 ]] && grep -q -- "holds the results of -task sweep: -task impact will not replace them" <<<"$out" && pass "-task impact does not overwrite a sweep's file" || fail "overwrite: exit $rc: $out"
@@ -112,7 +133,7 @@ rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"
 out=$("$exe" -task sweep -sweep_x 0:1.1:1e12 -output "$dir/huge.h5" 2>&1); rc=$?
 [[ $rc -ne 0 ]] && grep -q -- "-sweep_x 0:1.1:1e12 is not allowed: count 1e12 of start:stop:count is too large: an axis has at most 1e+08 points" <<<"$out" && pass "-sweep_x 0:1.1:1e12: too many points, said so (not 'a whole number')" || fail "-sweep_x 1e12: exit $rc: $out"
 out=$("$exe" -task sweep -sweep_x 0:1.1:2.5 -output "$dir/huge.h5" 2>&1); rc=$?
-[[ $rc -ne 0 ]] && grep -q -- "count of start:stop:count must be a whole number >= 0, not '2.5'" <<<"$out" && pass "-sweep_x 0:1.1:2.5 refused: not a whole number" || fail "-sweep_x 2.5: exit $rc: $out"
+[[ $rc -ne 0 ]] && grep -q -- "count of start:stop:count must be a whole number >= 1, not '2.5'" <<<"$out" && pass "-sweep_x 0:1.1:2.5 refused: not a whole number" || fail "-sweep_x 2.5: exit $rc: $out"
 rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"
 out=$("$exe" -task sweep -sweep_x 0:1.1:300 -sweep_progress_interval 0.05 -impact_cost_warn 0.01 -output "$dir/costly.h5" 2>&1)
 grep -q "^cost: 300 points to compute at [0-9.e-]* s a point (measured over the first [0-9]*): expected .* more; to shorten it: fewer points" <<<"$out" && [[ $(grep -c "^cost:" <<<"$out") == 1 ]] \

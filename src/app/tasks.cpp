@@ -14,6 +14,7 @@
 #include "solvers/leapfrog.hpp"
 
 #include <petscts.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -90,6 +91,13 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                         "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  failed %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
                         (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
                         r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
+  if (taken < asked) {
+    std::string late;
+    for (size_t q = taken; q < asked && q < taken + 8; ++q) late += (late.empty() ? "" : ", ") + std::to_string(sc.monitor.snapshot_times[q]).substr(0, 10);
+    PetscCall(PetscPrintf(comm, "note: %zu of the -snapshot_times (%s%s) are after the run's end at t = %.6g s and were not recorded; a longer -impact_window or -impact_max_time reaches them\n", asked - taken,
+                          late.c_str(), asked - taken > 8 ? ", ..." : "", (double)r.final_time));
+  }
   const std::string absurd = CompressionBeyondRadiusText(sc, r);
   if (!absurd.empty()) PetscCall(PetscPrintf(comm, "%s\n", absurd.c_str()));
   if (r.beam_dissipated_end > 0) // a damped beam
@@ -245,6 +253,8 @@ PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *ta
   const size_t      slash = out.find_last_of('/');
   const std::string dir   = slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
   PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", out.c_str(), dir.c_str());
+  struct stat st;
+  PetscCheck(stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s/%s.h5)", out.c_str(), out.c_str(), task);
   std::string other;
   PetscCall(ResultsFileTask(out, &other));
   PetscCheck(other.empty() || other == task || overwrite, comm, PETSC_ERR_FILE_OPEN,

@@ -2,6 +2,8 @@
 #include "io/results_h5.hpp"
 
 #include <hdf5.h>
+
+#include <limits>
 #include <unistd.h>
 
 namespace beamimpact {
@@ -219,28 +221,33 @@ static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult>
   PetscFunctionReturn(0);
 }
 
-// /events of one run.
+// /events of one run. A quantity that does not apply to an event is NaN, not a number a reader
+// could take for a value: the approach speed except at contact starts, the wall COR and the
+// unloading exponent except at contact starts of the hysteretic law (n > 0).
 static PetscErrorCode H5WriteEvents(hid_t file, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
-  hid_t               ge = H5Gcreate2(file, "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  std::vector<double> t, kind, c, f, va, cor, n;
+  const double           nan = std::numeric_limits<double>::quiet_NaN();
+  hid_t                  ge  = H5Gcreate2(file, "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<double>    t, c, f, va, cor, n;
+  std::vector<long long> kind;
   for (auto &e : r.events) {
+    const bool start = (int)e.kind == 0, law = start && e.n > 0;
     t.push_back(e.time);
-    kind.push_back((double)e.kind);
+    kind.push_back((long long)e.kind);
     c.push_back(e.compression);
     f.push_back(e.force);
-    va.push_back(e.approach_speed);
-    cor.push_back(e.cor);
-    n.push_back(e.n);
+    va.push_back(start ? e.approach_speed : nan);
+    cor.push_back(law ? e.cor : nan);
+    n.push_back(law ? e.n : nan);
   }
   PetscCall(H5WriteDataset1D(ge, "time", t, "s"));
-  PetscCall(H5WriteDataset1D(ge, "kind", kind, "0 contact, 1 max_compression, 2 reload, 3 separation"));
+  PetscCall(H5WriteDatasetInt1D(ge, "kind", kind, "0 contact, 1 max_compression, 2 reload, 3 separation"));
   PetscCall(H5WriteDataset1D(ge, "compression", c, "m"));
   PetscCall(H5WriteDataset1D(ge, "force", f, "N"));
-  PetscCall(H5WriteDataset1D(ge, "approach_speed", va, "m/s (contact starts; 0 on other events)"));
-  PetscCall(H5WriteDataset1D(ge, "cor", cor, "1, wall COR used for this contact (contact starts; 0 on other events)"));
-  PetscCall(H5WriteDataset1D(ge, "n", n, "1, unloading exponent used for this contact (contact starts; 0 on other events and for the linear law)"));
+  PetscCall(H5WriteDataset1D(ge, "approach_speed", va, "m/s (contact starts; NaN on other events)"));
+  PetscCall(H5WriteDataset1D(ge, "cor", cor, "1, wall COR used for this contact (contact starts of the hysteretic law; NaN otherwise)"));
+  PetscCall(H5WriteDataset1D(ge, "n", n, "1, unloading exponent used for this contact (contact starts of the hysteretic law; NaN otherwise)"));
   H5Gclose(ge);
   PetscFunctionReturn(0);
 }

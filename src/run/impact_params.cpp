@@ -69,7 +69,7 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
   PetscCall(PetscOptionsBool("-monitor_ball", "Record ball position, velocity, compression and force at every step", "", m->ball, &m->ball, NULL));
   PetscCall(PetscOptionsBool("-monitor_energy", "Record ball kinetic, stored and dissipated energy and beam kinetic and strain energy at every step", "", m->energy, &m->energy, NULL));
   PetscCall(PetscOptionsRealArray("-monitor_velocity_at", "Record the beam velocity at these points x1,x2,... (m) at every step (any number; none by default)", "", pts.data(), &npts, &setpts));
-  PetscCall(PetscOptionsRealArray("-snapshot_times", "Record the beam displacement y(x) at these times t1,t2,... (s) (any number; none by default)", "", times.data(), &ntimes, &settimes));
+  PetscCall(PetscOptionsRealArray("-snapshot_times", "Record the beam displacement y(x) at these times t1,t2,... (s) (any number, in any order; none by default; times after the run's end are named in a note)", "", times.data(), &ntimes, &settimes));
   PetscCall(PetscOptionsRealArray("-monitor_segment", "Record the kinetic energy of the beam segment x0,x1 (m) at every step, and its peak", "", seg, &nseg, &m->segment));
   PetscCall(PetscOptionsBool("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its moment about x = 0), the grip's stored energy and the hands' work at every step", "", m->grip, &m->grip, NULL));
   PetscCall(PetscOptionsReal("-monitor_segment_until", "Take the segment's peak over t <= this (s); < 0: the whole run", "", m->segment_until, &m->segment_until, NULL));

@@ -85,7 +85,7 @@ static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, 
   const std::string c = parts[2];
   PetscReal         count;
   if (!ParseReal(c, &count) || !(count >= 0) || count != std::floor(count)) {
-    *why = "count of start:stop:count must be a whole number >= 0, not '" + c + "'";
+    *why = "count of start:stop:count must be a whole number >= 1, not '" + c + "'";
     return false;
   }
   if (count > kMaxAxisPoints) {
