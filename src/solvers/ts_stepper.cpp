@@ -614,8 +614,11 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
     PetscCall(PetscFree(all));
     PetscReal atol, rtol;
     PetscCall(TSGetTolerances(S->ts, &atol, NULL, &rtol, NULL));
-    PetscCheck(atol >= 0 && rtol >= 0 && std::isfinite(atol) && std::isfinite(rtol), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-ts_atol %g, -ts_rtol %g are not allowed: the error tolerances must be finite and >= 0", (double)atol, (double)rtol);
+    for (auto tol : {std::make_pair("-ts_atol", atol), std::make_pair("-ts_rtol", rtol)}) {
+      char value[64]; // PETSc's %g would write -1 as "-1."
+      std::snprintf(value, sizeof value, "%g", (double)tol.second);
+      PetscCheck(tol.second >= 0 && std::isfinite(tol.second), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: an error tolerance must be finite and >= 0", tol.first, value);
+    }
   }
   PetscCall(ExplicitStability(*S));
   PetscCall(TSGetTimeStep(S->ts, &S->dt_nominal));
