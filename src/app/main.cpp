@@ -22,7 +22,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -84,14 +83,6 @@ static void DieWithLauncher()
   if (getppid() != parent) _exit(1); // it died before the request took effect
 }
 
-// PETSc's %g writes a whole number, inf and nan with a trailing dot ("-beam_length inf. is not
-// allowed", "-1."): the values in a message are shown as the user wrote them.
-static std::string WithoutPetscDots(const std::string &msg)
-{
-  static const std::regex dotted("(^|[^0-9.eE+-])(-?[0-9]+|-?inf|nan)\\.(?=$|[\\s,;:)])");
-  return std::regex_replace(msg, dotted, "$1$2");
-}
-
 int main(int argc, char **argv)
 {
   PetscBool traceback = PETSC_FALSE;
@@ -110,7 +101,7 @@ int main(int argc, char **argv)
   if (!traceback) PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   PetscErrorCode ierr = beamimpact::RunTask(PETSC_COMM_WORLD);
   if (ierr) {
-    const std::string msg = WithoutPetscDots(OptionOfParseError(beamimpact::LastErrorMessage(ierr)));
+    const std::string msg = OptionOfParseError(beamimpact::LastErrorMessage(ierr));
     PetscMPIInt       rank;
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     if (rank == 0) fprintf(stderr, "beamimpact: error: %s\n", msg.c_str());

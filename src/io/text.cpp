@@ -1,6 +1,8 @@
 // Small text helpers. See text.hpp.
 #include "io/text.hpp"
 
+#include <regex>
+
 namespace beamimpact {
 
 static std::string TrimSet(const std::string &s, const char *leading, const char *trailing)
@@ -13,12 +15,20 @@ std::string Trim(const std::string &s) { return TrimSet(s, " \t\r\n", " \t\r\n")
 
 std::string CommentText(const std::string &line) { return TrimSet(line, " \t\r\n#", " \t\r\n"); }
 
+// PETSc's %g writes a whole number, inf and nan with a trailing dot ("-beam_length inf. is not
+// allowed", "-1."): the values in a message are shown as the user wrote them.
+static std::string WithoutPetscDots(const std::string &msg)
+{
+  static const std::regex dotted("(^|[^0-9.eE+-])(-?[0-9]+|-?inf|nan)\\.(?=$|[\\s,;:)])");
+  return std::regex_replace(msg, dotted, "$1$2");
+}
+
 std::string LastErrorMessage(PetscErrorCode ierr)
 {
   const char *text     = nullptr;
   char       *specific = nullptr;
   PetscErrorMessage(ierr, &text, &specific);
-  return specific && specific[0] ? specific : text ? text : "unknown error";
+  return WithoutPetscDots(specific && specific[0] ? specific : text ? text : "unknown error");
 }
 
 } // namespace beamimpact

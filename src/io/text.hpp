@@ -15,7 +15,8 @@ std::string Trim(const std::string &s);
 std::string CommentText(const std::string &line);
 
 // The message of the PETSc error ierr just raised: its specific text (what PetscCheck or
-// SETERRQ said), else PETSc's generic text for the code.
+// SETERRQ said), else PETSc's generic text for the code; values as the user wrote them (without
+// the dot PETSc's %g puts after a whole number, inf or nan).
 std::string LastErrorMessage(PetscErrorCode ierr);
 
 } // namespace beamimpact
