@@ -20,9 +20,9 @@ Datasets of another length than the table's rows are left out, with a note on st
 
 The header row names each column with its unit from the dataset's unit attribute,
 `contact_time (s)` (--units row: the units in a second row; none: names only). Numbers are
-written exactly (the shortest text that reads back as the same double); counts (contacts,
-steps, status, case_index, kind, ..., and a sweep axis with whole values) as integers; NaN as
-nan. Written to stdout unless -o is given. Examples, from the repository root:
+written exactly (the shortest text that reads back as the same double); counts as integers
+(integer datasets; a sweep's counts, float64 for its failed rows' NaN, carry the attribute
+integer = 1; a sweep axis with whole values); NaN as nan. Written to stdout unless -o is given. Examples, from the repository root:
 
     mkdir -p out
     build/release/beamimpact -options_file options/scenes/animation.opts -output out/animation.h5
@@ -48,10 +48,6 @@ import h5py  # noqa: E402
 from impact_file import attr, unit, open_file  # noqa: E402
 
 PROG = "h5_to_csv.py"
-# Whole-number columns of the files (float64 on disk): written without a decimal point.
-COUNTS = {"contacts", "ended_in_contact", "compression_beyond_radius", "failed_solves", "steps", "rejected_steps",
-          "event_steps", "function_evals", "jacobian_evals", "jacobian_assemblies", "nonlinear_its", "linear_its",
-          "case_index", "status", "kind", "level", "failed", "nodes", "index"}
 # The dataset that sets a group's rows, and the columns that come first.
 ROW_KEY = {"series": "time", "events": "time", "snapshots": "x", "modes": "frequency", "beam": "x"}
 FIRST = ["case_index", "time", "kind", "x", "frequency", "period", "omega"]
@@ -75,21 +71,24 @@ def fmt_float(v):
     return repr(v)  # shortest round-trip text; inf, -inf as such
 
 
-def is_count(name, values, axes):
+def is_count(name, values, axes, tagged=False):
+    """A column of whole numbers: an integer dataset, a float64 one the program tagged
+    (attribute integer = 1: a sweep's counts, NaN in failed rows), or a sweep axis whose values
+    are all whole (beam_nodes)."""
     if values.dtype.kind in "iu":
         return True
-    if values.dtype.kind != "f" or (name not in COUNTS and name not in axes):
+    if values.dtype.kind != "f" or not (tagged or name in axes):
         return False
     v = values[np.isfinite(values)]
     return bool(np.all(v == np.round(v)) and np.all(np.abs(v) < 2 ** 53))
 
 
-def column(name, unit_text, values, axes):
+def column(name, unit_text, values, axes, tagged=False):
     """(header, unit, list of cells)."""
     values = np.asarray(values)
     if values.dtype.kind in "OSU":
         cells = [v.decode("utf-8", "replace") if isinstance(v, bytes) else str(v) for v in values]
-    elif is_count(name, values, axes):
+    elif is_count(name, values, axes, tagged):
         cells = ["nan" if not np.isfinite(v) else str(int(v)) for v in values.astype(float)] if values.dtype.kind == "f" \
             else [str(int(v)) for v in values]
     elif values.dtype.kind == "b":
@@ -147,7 +146,7 @@ def table_of_group(f, g, gname):
         d = data[name]
         u = short_unit(name, unit(d))
         if d.ndim == 1 and d.shape[0] == n:
-            cols.append(column(name, u, d[()], axes))
+            cols.append(column(name, u, d[()], axes, int(d.attrs.get("integer", 0)) == 1))
         elif d.ndim == 2 and n in d.shape:
             lay = LAYOUT.get(name)
             rows_first = d.shape[0] == n if lay is None else (lay[0] == "rows_first" and d.shape[0] == n) or d.shape[1] != n

@@ -165,6 +165,17 @@ PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vect
   return WriteDataset1D((hid_t)loc, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, v.data(), v.size(), unit);
 }
 
+PetscErrorCode H5WriteCounts1D(long long loc, const char *name, const std::vector<double> &v, const char *unit)
+{
+  PetscFunctionBeginUser;
+  PetscCall(H5WriteDataset1D(loc, name, v, unit));
+  hid_t ds = H5Dopen2((hid_t)loc, name, H5P_DEFAULT);
+  PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot open dataset %s", name);
+  PetscCall(WriteIntegerAttr(ds, "integer", 1));
+  H5Dclose(ds);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v, const char *unit)
 {
   return WriteDataset1D((hid_t)loc, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, v.data(), v.size(), unit);

@@ -45,6 +45,9 @@ PetscErrorCode ResultsFileTask(const std::string &path, std::string *task);
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);
 PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);
 PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v, const char *unit); // 64-bit integers
+// Counts that must stay double (NaN in a failed sweep row): the dataset carries the integer
+// attribute integer = 1, so that readers write its finite values as whole numbers.
+PetscErrorCode H5WriteCounts1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);
 PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit);
 
 } // namespace beamimpact

@@ -628,32 +628,39 @@ PetscErrorCode WriteConfigRuns(hid_t g, const ConvergenceConfig &cfg, const std:
     PetscCall(H5WriteDataset1D(g, name, v, unit));
     PetscFunctionReturn(0);
   };
+  auto icol = [&](const char *name, const char *unit, auto get) -> PetscErrorCode { // a count: an integer dataset
+    std::vector<long long> v;
+    PetscFunctionBeginUser;
+    for (auto &r : runs) v.push_back((long long)get(r));
+    PetscCall(H5WriteDatasetInt1D(g, name, v, unit));
+    PetscFunctionReturn(0);
+  };
 
   PetscFunctionBeginUser;
-  PetscCall(col("level", "", [](const ConvergenceRun &r) { return (double)r.level; }));
+  PetscCall(icol("level", "", [](const ConvergenceRun &r) { return (double)r.level; }));
   PetscCall(col("dt", "s (tol runs: initial step)", [](const ConvergenceRun &r) { return r.dt; }));
   PetscCall(col("rtol", "", [](const ConvergenceRun &r) { return r.rtol; }));
   PetscCall(col("atol", "", [](const ConvergenceRun &r) { return r.atol; }));
   PetscCall(col("mean_step", "s", [](const ConvergenceRun &r) { return r.mean_step; }));
   PetscCall(col("step", "s (dt, or mean_step for tol runs)", [&](const ConvergenceRun &r) { return r.failed ? NaN : ConvergenceStepOf(cfg, r); }));
-  PetscCall(col("failed", "", [](const ConvergenceRun &r) { return r.failed ? 1.0 : 0.0; }));
+  PetscCall(icol("failed", "", [](const ConvergenceRun &r) { return r.failed ? 1 : 0; }));
   PetscCall(col("acor", "", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.acor; }));
   PetscCall(col("acor_error", "absolute", [](const ConvergenceRun &r) { return r.acor_error; }));
   PetscCall(col("contact_time_error", "relative", [](const ConvergenceRun &r) { return r.contact_time_error; }));
   PetscCall(col("peak_force_error", "relative", [](const ConvergenceRun &r) { return r.peak_force_error; }));
   PetscCall(col("max_compression_error", "relative", [](const ConvergenceRun &r) { return r.max_compression_error; }));
   PetscCall(col("energy_error", "|E_end - E_0| / E_0", [](const ConvergenceRun &r) { return r.energy_error; }));
-  PetscCall(col("contacts", "", [](const ConvergenceRun &r) { return (double)r.result.contacts; }));
+  PetscCall(icol("contacts", "", [](const ConvergenceRun &r) { return (double)r.result.contacts; }));
   PetscCall(col("wall_time", "s, minimum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.wall_time; }));
   PetscCall(col("wall_time_max", "s, maximum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.wall_time_max; }));
-  PetscCall(col("steps", "", [](const ConvergenceRun &r) { return (double)r.result.steps; }));
-  PetscCall(col("rejected_steps", "", [](const ConvergenceRun &r) { return (double)r.result.rejected_steps; }));
-  PetscCall(col("event_steps", "", [](const ConvergenceRun &r) { return (double)r.result.event_steps; }));
-  PetscCall(col("function_evals", "", [](const ConvergenceRun &r) { return (double)r.result.function_evals; }));
-  PetscCall(col("jacobian_evals", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_evals; }));
-  PetscCall(col("jacobian_assemblies", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_assemblies; }));
-  PetscCall(col("nonlinear_its", "", [](const ConvergenceRun &r) { return (double)r.result.nonlinear_its; }));
-  PetscCall(col("linear_its", "linear solves (preonly LU: one per solve)", [](const ConvergenceRun &r) { return (double)r.result.linear_its; }));
+  PetscCall(icol("steps", "", [](const ConvergenceRun &r) { return (double)r.result.steps; }));
+  PetscCall(icol("rejected_steps", "", [](const ConvergenceRun &r) { return (double)r.result.rejected_steps; }));
+  PetscCall(icol("event_steps", "", [](const ConvergenceRun &r) { return (double)r.result.event_steps; }));
+  PetscCall(icol("function_evals", "", [](const ConvergenceRun &r) { return (double)r.result.function_evals; }));
+  PetscCall(icol("jacobian_evals", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_evals; }));
+  PetscCall(icol("jacobian_assemblies", "", [](const ConvergenceRun &r) { return (double)r.result.jacobian_assemblies; }));
+  PetscCall(icol("nonlinear_its", "", [](const ConvergenceRun &r) { return (double)r.result.nonlinear_its; }));
+  PetscCall(icol("linear_its", "linear solves (preonly LU: one per solve)", [](const ConvergenceRun &r) { return (double)r.result.linear_its; }));
   PetscFunctionReturn(0);
 }
 

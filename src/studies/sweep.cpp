@@ -26,10 +26,10 @@ namespace beamimpact {
 std::vector<SweepColumn> SweepColumns(const SweepPlan &plan)
 {
   std::vector<SweepColumn> c;
-  c.push_back({"case_index", "1", false});
+  c.push_back({"case_index", "1", false, true});
   for (const SweepAxis &a : plan.axes) c.push_back({a.name, a.unit, false});
-  c.push_back({"status", "1", false});
-  for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time"});
+  c.push_back({"status", "1", false, true});
+  for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time", rc.integer});
   c.push_back({"rigid_acor", "1", false});
   c.push_back({"rigid_forced_loss_fraction", "1", false});
   return c;

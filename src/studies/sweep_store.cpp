@@ -487,7 +487,7 @@ static PetscErrorCode StoreWrite(SweepStore &S)
       std::vector<double> v;
       v.reserve(S.rows.size());
       for (auto &kv : S.rows) v.push_back(kv.second[c]);
-      PetscCall(H5WriteDataset1D(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
+      PetscCall((cols[c].integer ? H5WriteCounts1D : H5WriteDataset1D)(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
     }
     std::vector<std::string> reasons;
     reasons.reserve(S.rows.size());

@@ -40,7 +40,8 @@ namespace beamimpact {
 struct SweepColumn {
   std::string name;
   std::string unit;
-  bool        timing; // differs from run to run (wall_time): excluded from identity checks
+  bool        timing;          // differs from run to run (wall_time): excluded from identity checks
+  bool        integer = false; // a count (double on disk for NaN rows, with the attribute integer = 1)
 };
 
 // The journal of the group leader on world rank `rank` in run (attempt) `run` of -output.
