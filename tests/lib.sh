@@ -10,3 +10,21 @@ python=""
 for p in /usr/bin/python3 python3; do
   if command -v "$p" >/dev/null && "$p" -c "import h5py, numpy" 2>/dev/null; then python=$p; break; fi
 done
+
+# Killing a running sweep (sweep_resume.sh, sweep_io.sh):
+# sweep_progress LOG PID: waits (at most 12 s) until the sweep logging to LOG reports at least 4
+# points done or the launcher PID has ended; prints the last count reported (0 if none).
+sweep_progress() {
+  local log=$1 pid=$2 seen=0 i
+  for ((i = 0; i < 600; ++i)); do
+    seen=$(sed -nE 's/^sweep: ([0-9]+)\/[0-9]+ points.*/\1/p' "$log" | tail -1)
+    seen=${seen:-0}
+    ((seen >= 4)) && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.02
+  done
+  echo "$seen"
+}
+# descendants PID: every process below PID (Open MPI puts each rank in its own process group,
+# so a process-group kill would miss them).
+descendants() { local c; for c in $(ps -o pid= --ppid "$1"); do echo "$c"; descendants "$c"; done; }

@@ -80,15 +80,7 @@ launcher)
         -sweep "impact_x=0.05:1.05:$((N / 2)),ball_speed=1;2" -sweep_progress_interval 0.02 -sweep_write_interval 0.1)
   setsid "$mpiexec" -n 2 "$exe" "${opts[@]}" -output "$f" >"$dir/killed.log" 2>&1 &
   launcher=$!
-  seen=0
-  for ((i = 0; i < 600; ++i)); do
-    seen=$(sed -nE 's/^sweep: ([0-9]+)\/[0-9]+ points.*/\1/p' "$dir/killed.log" | tail -1)
-    seen=${seen:-0}
-    ((seen >= 4)) && break
-    kill -0 "$launcher" 2>/dev/null || break
-    sleep 0.02
-  done
-  descendants() { local c; for c in $(ps -o pid= --ppid "$1"); do echo "$c"; descendants "$c"; done; }
+  seen=$(sweep_progress "$dir/killed.log" "$launcher")
   ranks=$(for p in $(descendants "$launcher"); do [[ $(ps -o comm= -p "$p") == *beamimpact* ]] && echo "$p"; done | tr '\n' ' ')
   [[ -n $ranks ]] || fail "no rank process found under the launcher"
   journal_bytes() { cat "$f.parts"/run*-rank*.bin 2>/dev/null | wc -c; }

@@ -75,17 +75,8 @@ readable() { if [[ -n "$python" ]]; then "$python" -c "import h5py,sys; f=h5py.F
 # 2. start, wait for some progress, kill -9
 setsid "$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_killed.log 2>&1 &
 launcher=$!
-seen=0
-for ((i = 0; i < 600; ++i)); do
-  seen=$(sed -nE 's/^sweep: ([0-9]+)\/[0-9]+ points.*/\1/p' resume_killed.log | tail -1)
-  seen=${seen:-0}
-  ((seen >= 4)) && break
-  kill -0 "$launcher" 2>/dev/null || break
-  sleep 0.02
-done
-# The launcher and everything below it (Open MPI puts each rank in its own
-# process group, so a process-group kill would miss them): kill -9 by pid.
-descendants() { local c; for c in $(ps -o pid= --ppid "$1"); do echo "$c"; descendants "$c"; done; }
+seen=$(sweep_progress resume_killed.log "$launcher")
+# The launcher and everything below it: kill -9 by pid.
 ranks=$(descendants "$launcher" | tr '\n' ' ')
 kill -9 "$launcher" $ranks 2>/dev/null
 wait "$launcher" 2>/dev/null
