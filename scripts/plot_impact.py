@@ -58,6 +58,14 @@ def legend(ax, f, impact=True, extra="", **kw):
     ax.legend(title="\n".join(lines), title_fontsize=7, fontsize=7, **kw)
 
 
+def save(fig, out):
+    """Lays out, writes and closes the figure; returns its path."""
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
 def force_plot(f, path, out, full):
     s = f["series"]
     t, F = s["time"][()], s["force"][()]
@@ -90,10 +98,7 @@ def force_plot(f, path, out, full):
     ax.grid(True, alpha=0.3)
     legend(ax, f, extra=", ".join(extra), loc="best")
     ax.set_title("Contact force: %s%s" % (os.path.basename(path), zoom), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save(fig, out)
 
 
 def energy_plot(f, path, out):
@@ -123,10 +128,7 @@ def energy_plot(f, path, out):
     ax2.legend(fontsize=8, loc="best")
     ax2.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
     ax.set_title("Energies: %s; E(0) = %.6g J" % (os.path.basename(path), e0), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save(fig, out)
 
 
 def support_marks(ax, f, L):
@@ -161,10 +163,7 @@ def snapshots_plot(f, path, out, curves):
     legend(ax, f, loc="best", ncol=2 if len(pick) > 6 else 1)
     shown = "" if len(pick) == n else " (%d of the %d snapshot times, evenly chosen; --curves)" % (len(pick), n)
     ax.set_title("Beam snapshots y(x): %s%s" % (os.path.basename(path), shown), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save(fig, out)
 
 
 def modes_plot(f, path, out, count):
@@ -192,10 +191,7 @@ def modes_plot(f, path, out, count):
     note = "; %d rigid mode(s) (0 Hz) not drawn" % rigid if rigid else ""
     ax.set_title("Mode shapes: %s%s\nopen circles: the nodes of modes 1 and 2 the file records (/modes/nodes_1, nodes_2)"
                  % (os.path.basename(path), note), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save(fig, out)
 
 
 def main():

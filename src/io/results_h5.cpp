@@ -79,30 +79,28 @@ static PetscErrorCode WriteStringAttr(hid_t loc, const char *name, const std::st
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode WriteNumberAttr(hid_t loc, const char *name, double value)
+// A scalar attribute (replaced if present) of memory type `mem`, stored as `file_type`.
+static PetscErrorCode WriteScalarAttr(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *value)
 {
   PetscFunctionBeginUser;
   hid_t space = H5Screate(H5S_SCALAR);
   if (H5Aexists(loc, name) > 0) H5Adelete(loc, name);
-  hid_t attr = H5Acreate2(loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t attr = H5Acreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
+  H5Awrite(attr, mem, value);
   H5Aclose(attr);
   H5Sclose(space);
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode WriteNumberAttr(hid_t loc, const char *name, double value)
+{
+  return WriteScalarAttr(loc, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, &value);
+}
+
 static PetscErrorCode WriteIntegerAttr(hid_t loc, const char *name, long long value)
 {
-  PetscFunctionBeginUser;
-  hid_t space = H5Screate(H5S_SCALAR);
-  if (H5Aexists(loc, name) > 0) H5Adelete(loc, name);
-  hid_t attr = H5Acreate2(loc, name, H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name);
-  H5Awrite(attr, H5T_NATIVE_LLONG, &value);
-  H5Aclose(attr);
-  H5Sclose(space);
-  PetscFunctionReturn(0);
+  return WriteScalarAttr(loc, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, &value);
 }
 
 PetscErrorCode ResultsFileTask(const std::string &path, std::string *task)
