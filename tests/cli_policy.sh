@@ -60,7 +60,7 @@ out=$("$exe" -options_file options/impact.opts -beam_thicknes 0.01 -allow_unused
 # runs from any directory (r161-modes.opts includes ../bats/r161.opts, which names r161.profile)
 src=$(pwd)
 out=$(cd "$dir" && "$exe" -options_file "$src/options/scenes/r161-modes.opts" -output none 2>&1); rc=$?
-if [[ $rc -eq 0 ]] && grep -q "profile section $src/options/bats/r161.profile" <<<"$out" && grep -q "^ *3 .*[0-9]" <<<"$out"; then
+if [[ $rc -eq 0 ]] && grep -q "profile section $src/options/bats/r161.profile" <<<"$out" && grep -q "^ *r2 *0.0000 .*(rigid)" <<<"$out" && grep -q "^ *1 *174\.[0-9]* " <<<"$out"; then
   pass "a scene runs from another directory: its includes and profile are found next to the files"
 else fail "scene from another directory: exit $rc: $out"; fi
 mkdir -p "$dir/inc/sub"
