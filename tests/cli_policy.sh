@@ -65,7 +65,7 @@ if [[ $rc -eq 0 ]] && grep -q "profile section $src/options/bats/r161.profile" <
 else fail "scene from another directory: exit $rc: $out"; fi
 mkdir -p "$dir/inc/sub"
 printf -- "-options_file sub/ball.opts # an include next to this file\n-beam_nodes 21\n" >"$dir/inc/scene.opts"
-printf -- "-ball_law hysteresis -ball_m 1.5 -ball_contact_time 1e-3 -ball_test_speed 3\n-ball_cor_table ../cor.txt\n" >"$dir/inc/sub/ball.opts"
+printf -- "-ball_law hysteresis\n-ball_m 1.5\n-ball_contact_time 1e-3\n-ball_test_speed 3\n-ball_cor_table ../cor.txt\n" >"$dir/inc/sub/ball.opts"
 printf -- "0.5 0.8\n5 0.7\n" >"$dir/inc/cor.txt"
 out=$("$exe" -options_file "$dir/inc/scene.opts" -ball_cor 0.7 -output none 2>&1); rc=$?
 grep -q -- "-ball_cor_table" <<<"$out" && ! grep -q "cannot open\|cannot read" <<<"$out" && pass "a path option two files down resolves next to its file" || fail "nested path option: exit $rc: $out"

@@ -33,7 +33,7 @@ TEST(OptionsFiles, IncludesAndPathsRelativeToTheirFile)
 {
   const std::string d = Scratch();
   ASSERT_EQ(0, system(("mkdir -p " + d + "/scenes " + d + "/bats").c_str()));
-  Write(d + "/scenes/s.opts", "# a scene\n-options_file ../bats/b.opts   # the bat\n-sweep \"ball_speed=1:2:3, impact_x=0.5\"\n-impact_x 0.25 -ts_dt -1e-3\n");
+  Write(d + "/scenes/s.opts", "# a scene\n-options_file ../bats/b.opts   # the bat\n-sweep \"ball_speed=1:2:3, impact_x=0.5\"\n-impact_x 0.25\r\n-ts_dt -1e-3\n");
   Write(d + "/bats/b.opts", "-beam_profile b.profile\n-convergence_configs x.opts,/abs/y.opts,../z.opts\n");
   std::vector<std::string> t;
   std::string              err;
@@ -55,11 +55,35 @@ TEST(OptionsFiles, MissingIncludeAndCycleNameTheFiles)
   std::vector<std::string> t;
   std::string              err;
   EXPECT_FALSE(OptionsFileExpand(d + "/a.opts", &t, &err));
-  EXPECT_NE(std::string::npos, err.find("-options_file " + d + "/missing.opts (included by " + d + "/a.opts): cannot open the file")) << err;
+  EXPECT_NE(std::string::npos, err.find("-options_file " + d + "/missing.opts (included by " + d + "/a.opts:1): cannot open the file")) << err;
   Write(d + "/loop.opts", "-beam_nodes 5\n-options_file loop.opts\n");
   err.clear();
   EXPECT_FALSE(OptionsFileExpand(d + "/loop.opts", &t, &err));
   EXPECT_NE(std::string::npos, err.find("includes nested deeper than")) << err;
+}
+
+// PETSc reads one option per line: a stray word or a second value is refused with file:line,
+// not dropped (the command-line parser would skip it without a word).
+TEST(OptionsFiles, StrayWordsAreRefused)
+{
+  const std::string d = Scratch();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+    {"-beam_nodes 21\n-impact_x 0.3 0.4\n", ":2: -impact_x has more than one value ('0.3', '0.4')"},
+    {"# x\nimpact_x 0.3\n", ":2: 'impact_x' is not an option (an option starts with '-': -impact_x?)"},
+    {"-options_file\n", ":1: -options_file needs a file name"},
+  };
+  for (auto &c : cases) {
+    Write(d + "/bad.opts", c.first);
+    std::vector<std::string> t;
+    std::string              err;
+    EXPECT_FALSE(OptionsFileExpand(d + "/bad.opts", &t, &err)) << c.first;
+    EXPECT_NE(std::string::npos, err.find(d + "/bad.opts" + c.second)) << err;
+  }
+  std::vector<std::string> args;
+  std::string              err;
+  EXPECT_FALSE(OptionsArgsExpand({"-task", "impact", "-options_file"}, &args, &err));
+  EXPECT_EQ("-options_file needs a file name", err);
+  EXPECT_FALSE(OptionsArgsExpand({"-options_file", "-output", "x.h5"}, &args, &err));
 }
 
 TEST(OptionsClosest, SuggestsOnlyNearNames)

@@ -48,6 +48,24 @@ static bool ExpandCommandLine(int *argc, char ***argv, std::string *error)
   return true;
 }
 
+// The same for the options PETSc takes from the environment (PETSC_OPTIONS, split at blanks as
+// PETSc splits it): an -options_file there is expanded too, so that its paths resolve alike.
+static bool ExpandEnvironmentOptions(std::string *error)
+{
+  const char *env = std::getenv("PETSC_OPTIONS");
+  if (!env || !std::strstr(env, "-options_file")) return true;
+  std::istringstream       words(env);
+  std::vector<std::string> in, out;
+  for (std::string w; words >> w;) in.push_back(w);
+  if (!beamimpact::OptionsArgsExpand(in, &out, error)) {
+    *error = "PETSC_OPTIONS: " + *error;
+    return false;
+  }
+  std::string text;
+  for (const std::string &w : out) text += (text.empty() ? "" : " ") + (w.find_first_of(" \t") == std::string::npos ? w : "\"" + w + "\"");
+  return setenv("PETSC_OPTIONS", text.c_str(), 1) == 0;
+}
+
 // PETSc's parse errors ("Input string 41.5 has no integer value ...") do not say which option:
 // find the option given that value and say it.
 static std::string OptionOfParseError(const std::string &msg)
@@ -90,7 +108,7 @@ int main(int argc, char **argv)
   DieWithLauncher();
 
   std::string error;
-  if (!ExpandCommandLine(&argc, &argv, &error)) {
+  if (!ExpandEnvironmentOptions(&error) || !ExpandCommandLine(&argc, &argv, &error)) {
     const char *rank = std::getenv("OMPI_COMM_WORLD_RANK");
     if (!rank || !std::strcmp(rank, "0")) fprintf(stderr, "beamimpact: error: %s\n", error.c_str());
     return 1;

@@ -14,6 +14,7 @@
 #include "solvers/leapfrog.hpp"
 
 #include <petscts.h>
+#include <slepceps.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -165,8 +166,8 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(BeamParamsFromOptions(comm, &beam));
   PetscCheck(BeamSystemBuild(beam, &op, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(ModesParamsFromOptions(comm, &mp, &op));
-  PetscCall(OptionsCheckUnused(comm));
   PetscCall(BeamModesCompute(comm, op, mp.count, &modes, &shapes));
+  PetscCall(OptionsCheckUnused(comm)); // after the solve: the eigensolver reads its -modes_eps_*, -modes_st_* options
   PetscCall(PrintBeamBody(comm, beam));
   PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)  nodes (m)\n", (double)beam.length, beam.theory.c_str(),
                         SupportName(beam.left), SupportName(beam.right), beam.nodes));
@@ -217,6 +218,12 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
     (void)TSSetFromOptions(ts);
     (void)TSDestroy(&ts);
   }
+  EPS eps; // SLEPc's eigensolver options of -task modes (-modes_eps_*, -modes_st_*)
+  if (!EPSCreate(comm, &eps)) {
+    (void)EPSSetOptionsPrefix(eps, "modes_");
+    (void)EPSSetFromOptions(eps);
+    (void)EPSDestroy(&eps);
+  }
   PetscCall(PetscPopErrorHandler());
   PetscFunctionReturn(0);
 }
@@ -239,7 +246,8 @@ PetscErrorCode KnownOptions(MPI_Comm comm, std::vector<std::string> *names)
 {
   PetscFunctionBeginUser;
   PetscCall(OptionsHelpNames([comm]() { return RunTaskOptions(comm, nullptr, nullptr) ? 1 : ReadEveryOption(comm); }, names));
-  for (const char *extra : {"-allow_unused_options", "-error_traceback", "-options_file", "-help"}) names->push_back(extra);
+  for (const char *extra : {"-allow_unused_options", "-error_traceback", "-options_file", "-help", "-options_left", "-options_view", "-log_view", "-malloc_debug", "-malloc_dump", "-malloc_view"})
+    names->push_back(extra);
   std::sort(names->begin(), names->end());
   PetscFunctionReturn(0);
 }
@@ -256,7 +264,7 @@ PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *ta
   const std::string dir   = slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
   PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", out.c_str(), dir.c_str());
   struct stat st;
-  PetscCheck(stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s/%s.h5)", out.c_str(), out.c_str(), task);
+  PetscCheck(stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s%s%s.h5)", out.c_str(), out.c_str(), out.back() == '/' ? "" : "/", task);
   std::string other;
   PetscCall(ResultsFileTask(out, &other));
   PetscCheck(other.empty() || other == task || overwrite, comm, PETSC_ERR_FILE_OPEN,

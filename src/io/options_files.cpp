@@ -76,26 +76,25 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
     return false;
   }
   const std::string        dir = std::filesystem::path(file).parent_path().string();
-  std::vector<std::string> words;
-  std::string              line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> t = LineTokens(line);
-    if (!t.empty() && t[0] == "alias") {
-      *error = "-options_file " + file + by + ": 'alias' lines are not supported; write the option's own name";
-      return false;
-    }
-    words.insert(words.end(), t.begin(), t.end());
-  }
   const std::vector<std::string> &paths = OptionsFilePathOptions();
-  for (size_t i = 0; i < words.size(); ++i) {
-    const bool has_value = i + 1 < words.size() && !IsKey(words[i + 1]);
-    if (words[i] == "-options_file" && has_value) {
-      if (!Expand(Resolve(dir, words[i + 1]), file, depth + 1, tokens, error)) return false;
-      ++i;
+  std::string              line;
+  for (int lineno = 1; std::getline(in, line); ++lineno) {
+    const std::vector<std::string> t     = LineTokens(line);
+    const std::string              where = file + ":" + std::to_string(lineno);
+    if (t.empty()) continue;
+    // One option per line, as PETSc reads an options file: a stray word would otherwise be
+    // dropped without a word by the command-line parser.
+    if (t[0] == "alias") *error = where + ": 'alias' lines are not supported; write the option's own name";
+    else if (!IsKey(t[0])) *error = where + ": '" + t[0] + "' is not an option (an option starts with '-': -" + t[0] + "?)";
+    else if (t.size() > 2) *error = where + ": " + t[0] + " has more than one value ('" + t[1] + "', '" + t[2] + "'): one option and its value per line";
+    else if (t[0] == "-options_file" && t.size() < 2) *error = where + ": -options_file needs a file name";
+    if (!error->empty()) return false;
+    if (t[0] == "-options_file") {
+      if (!Expand(Resolve(dir, t[1]), where, depth + 1, tokens, error)) return false;
       continue;
     }
-    tokens->push_back(words[i]);
-    if (has_value && std::find(paths.begin(), paths.end(), words[i]) != paths.end()) tokens->push_back(ResolveList(dir, words[++i]));
+    tokens->push_back(t[0]);
+    if (t.size() == 2) tokens->push_back(std::find(paths.begin(), paths.end(), t[0]) != paths.end() ? ResolveList(dir, t[1]) : t[1]);
   }
   return true;
 }
@@ -116,7 +115,11 @@ bool OptionsFileExpand(const std::string &file, std::vector<std::string> *tokens
 bool OptionsArgsExpand(const std::vector<std::string> &args, std::vector<std::string> *expanded, std::string *error)
 {
   for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "-options_file" && i + 1 < args.size()) {
+    if (args[i] == "-options_file") {
+      if (i + 1 >= args.size() || IsKey(args[i + 1])) {
+        *error = "-options_file needs a file name";
+        return false;
+      }
       if (!OptionsFileExpand(args[++i], expanded, error)) return false;
     } else expanded->push_back(args[i]);
   }

@@ -1,4 +1,4 @@
-// Options files, read as PETSc reads them (one or more "-name value" per line, '#' starts a
+// Options files, read as PETSc reads them (one "-name value" per line, '#' starts a
 // comment, "double quotes" keep a value with spaces together, -options_file includes another
 // file), with one difference that makes a scene runnable from any directory: a relative path
 // written inside a file is relative to that file's directory. That holds for an include

@@ -16,10 +16,11 @@ std::string Trim(const std::string &s) { return TrimSet(s, " \t\r\n", " \t\r\n")
 std::string CommentText(const std::string &line) { return TrimSet(line, " \t\r\n#", " \t\r\n"); }
 
 // PETSc's %g writes a whole number, inf and nan with a trailing dot ("-beam_length inf. is not
-// allowed", "-1."): the values in a message are shown as the user wrote them.
+// allowed", "-1."): the values in a message are shown as the user wrote them. A full stop at the
+// end of the message is kept.
 static std::string WithoutPetscDots(const std::string &msg)
 {
-  static const std::regex dotted("(^|[^0-9.eE+-])(-?[0-9]+|-?inf|nan)\\.(?=$|[\\s,;:)])");
+  static const std::regex dotted("(^|[^0-9A-Za-z.+-])(-?[0-9]+|-?inf|nan)\\.(?=[\\s,;:)])");
   return std::regex_replace(msg, dotted, "$1$2");
 }
 
