@@ -63,6 +63,10 @@ out=$(cd "$dir" && "$exe" -options_file "$src/options/scenes/r161-modes.opts" -o
 if [[ $rc -eq 0 ]] && grep -q "profile section $src/options/bats/r161.profile" <<<"$out" && grep -q "^ *r2 *0.0000 .*(rigid)" <<<"$out" && grep -q "^ *1 *174\.[0-9]* " <<<"$out"; then
   pass "a scene runs from another directory: its includes and profile are found next to the files"
 else fail "scene from another directory: exit $rc: $out"; fi
+out=$(cd "$dir" && PETSC_OPTIONS="-options_file $src/options/scenes/r161-modes.opts" "$exe" -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && grep -q "profile section $src/options/bats/r161.profile" <<<"$out" && pass "an -options_file in PETSC_OPTIONS resolves its paths alike" || fail "PETSC_OPTIONS -options_file: exit $rc: $out"
+out=$("$exe" -options_file options/impact.opts -options_left -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && grep -q "There are no unused options" <<<"$out" && pass "-options_left (read at finalize) is not reported as unused" || fail "-options_left: exit $rc: $out"
 mkdir -p "$dir/inc/sub"
 printf -- "-options_file sub/ball.opts # an include next to this file\n-beam_nodes 21\n" >"$dir/inc/scene.opts"
 printf -- "-ball_law hysteresis\n-ball_m 1.5\n-ball_contact_time 1e-3\n-ball_test_speed 3\n-ball_cor_table ../cor.txt\n" >"$dir/inc/sub/ball.opts"
