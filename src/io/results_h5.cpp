@@ -307,16 +307,27 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam)
+PetscErrorCode H5ResultsFileCreate(MPI_Comm comm, const std::string &path, const RunRecord &record, long long *file)
 {
   PetscMPIInt rank;
 
   PetscFunctionBeginUser;
+  *file = -1;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank != 0) PetscFunctionReturn(0);
-  hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
-  PetscCall(H5WriteAttributes(file, record));
+  *file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(*file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
+  PetscCall(H5WriteAttributes(*file, record));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam)
+{
+  long long file;
+
+  PetscFunctionBeginUser;
+  PetscCall(H5ResultsFileCreate(comm, path, record, &file));
+  if (file < 0) PetscFunctionReturn(0);
   PetscCall(H5WriteResults(file, results, beam));
   if (!results.empty()) {
     PetscCall(H5WriteEvents(file, results[0]));
@@ -355,14 +366,11 @@ static PetscErrorCode H5WriteBeamSection(hid_t file, const BeamParams &beam)
 PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
                                      const BeamParams &beam)
 {
-  PetscMPIInt rank;
+  long long file;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank != 0) PetscFunctionReturn(0);
-  hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file", path.c_str());
-  PetscCall(H5WriteAttributes(file, record));
+  PetscCall(H5ResultsFileCreate(comm, path, record, &file));
+  if (file < 0) PetscFunctionReturn(0);
   hid_t g = H5Gcreate2(file, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
   PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));

@@ -41,6 +41,10 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
 // does not exist, is not HDF5 or has no such attribute.
 PetscErrorCode ResultsFileTask(const std::string &path, std::string *task);
 
+// A task's results file: on rank 0 of comm, created (replacing any) with the run record as its
+// root attributes; *file is the open file there and -1 on the other ranks, which write nothing.
+PetscErrorCode H5ResultsFileCreate(MPI_Comm comm, const std::string &path, const RunRecord &record, long long *file);
+
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);
 PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);

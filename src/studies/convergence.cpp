@@ -729,14 +729,11 @@ PetscErrorCode WriteSpatial(hid_t file, const ConvergencePlan &plan, const Conve
 PetscErrorCode WriteConvergenceFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ConvergencePlan &plan, const ConvergenceReference *ref, const std::vector<std::vector<ConvergenceRun>> &all,
                                     const RunRecord &summary, const ConvergenceSpatial *sp)
 {
-  PetscMPIInt rank;
+  long long file;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank != 0) PetscFunctionReturn(0);
-  hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
-  PetscCall(H5WriteAttributes(file, record));
+  PetscCall(H5ResultsFileCreate(comm, path, record, &file));
+  if (file < 0) PetscFunctionReturn(0);
   if (ref) PetscCall(WriteReference(file, *ref));
   if (!plan.configs.empty()) {
     hid_t gc = H5Gcreate2(file, "configs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
