@@ -27,9 +27,10 @@ rm -rf resume_*
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" # MPI env, fail/pass, $python
 
 
-# Slow enough cases (~0.1 s each on one core) that the kill lands mid-sweep.
+# Slow enough cases (~0.2 s each on one core, the window after separation stepped too: seconds
+# for the sweep, however idle the machine) that the kill lands mid-sweep.
 N=24
-base=(-task sweep -beam_nodes 21 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 2e-6
+base=(-task sweep -beam_nodes 21 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 2e-6 -impact_after time
       -rigid_loss_fraction 0.2 -sweep_progress_interval 0.02 -sweep_write_interval 0.1)
 opts=("${base[@]}" -sweep "impact_x=0.05:1.05:$((N / 2)),ball_speed=1;2")
 
