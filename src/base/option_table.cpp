@@ -1,0 +1,401 @@
+// The option tables, their registry and the checked readers. See option_table.hpp.
+#include "base/option_table.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <strings.h>
+
+namespace beamimpact {
+
+const char *OptionKindName(OptionKind k)
+{
+  static const char *names[] = {"real", "int", "bool", "text", "choice", "real list", "file"};
+  return names[static_cast<int>(k)];
+}
+
+static std::string Number(double v)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+bool OptionRange::Contains(double v) const
+{
+  if (!std::isfinite(v)) return false;
+  if (lo_open ? !(v > lo) : !(v >= lo)) return false;
+  if (hi_open ? !(v < hi) : !(v <= hi)) return false;
+  return true;
+}
+
+std::string OptionRange::Text() const
+{
+  const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
+  if (!has_lo && !has_hi) return "a finite number";
+  if (has_lo && !has_hi) return std::string(lo_open ? "> " : ">= ") + Number(lo);
+  if (!has_lo && has_hi) return std::string(hi_open ? "< " : "<= ") + Number(hi);
+  return std::string("in ") + (lo_open ? "(" : "[") + Number(lo) + ", " + Number(hi) + (hi_open ? ")" : "]");
+}
+
+OptionRange AnyNumber() { return OptionRange(); }
+OptionRange Positive() { return Between(0, std::numeric_limits<double>::infinity(), true, false); }
+OptionRange NonNegative() { return Between(0, std::numeric_limits<double>::infinity()); }
+OptionRange AtLeast(double lo) { return Between(lo, std::numeric_limits<double>::infinity()); }
+OptionRange Between(double lo, double hi, bool lo_open, bool hi_open)
+{
+  OptionRange r;
+  r.lo = lo, r.hi = hi, r.lo_open = lo_open, r.hi_open = hi_open;
+  return r;
+}
+
+std::string OptionSpec::Allowed() const
+{
+  const std::string u = unit.empty() || unit == "1" ? "" : " (" + unit + ")";
+  switch (kind) {
+  case OptionKind::Real: return "it must be " + (range_text.empty() ? range.Text() : range_text) + u;
+  case OptionKind::Int: return "it must be a whole number " + (range_text.empty() ? range.Text() : range_text);
+  case OptionKind::RealList: {
+    std::string n;
+    if (count_min > 0 && count_min == count_max) n = std::to_string(count_min) + " values";
+    else if (count_min > 0 && count_max > 0) n = std::to_string(count_min) + " to " + std::to_string(count_max) + " values";
+    else if (count_min > 0) n = "at least " + std::to_string(count_min) + " values";
+    else n = "values";
+    return "it takes " + n + " separated by commas, each " + (range_text.empty() ? range.Text() : range_text) + u;
+  }
+  case OptionKind::Choice: {
+    std::string s;
+    for (const std::string &c : choices) s += (s.empty() ? "" : ", ") + c;
+    return "use one of " + s;
+  }
+  default: return range_text.empty() ? "see -help" : range_text;
+  }
+}
+
+OptionSpec OptionReal(const char *name, const char *unit, const char *help, const char *def, OptionRange range)
+{
+  OptionSpec s;
+  s.name = name, s.kind = OptionKind::Real, s.unit = unit, s.help = help, s.def = def, s.range = range;
+  return s;
+}
+
+OptionSpec OptionInt(const char *name, const char *help, const char *def, OptionRange range)
+{
+  OptionSpec s;
+  s.name = name, s.kind = OptionKind::Int, s.unit = "1", s.help = help, s.def = def, s.range = range;
+  return s;
+}
+
+OptionSpec OptionFlag(const char *name, const char *help)
+{
+  OptionSpec s;
+  s.name = name, s.kind = OptionKind::Bool, s.help = help, s.def = "false";
+  return s;
+}
+
+OptionSpec OptionText(const char *name, const char *help, const char *def)
+{
+  OptionSpec s;
+  s.name = name, s.kind = OptionKind::Text, s.help = help, s.def = def;
+  return s;
+}
+
+OptionSpec OptionFile(const char *name, const char *help)
+{
+  OptionSpec s;
+  s.name = name, s.kind = OptionKind::File, s.help = help;
+  return s;
+}
+
+OptionSpec OptionChoice(const char *name, const char *help, std::vector<std::string> choices, const char *def)
+{
+  OptionSpec s;
+  s.name = name, s.kind = OptionKind::Choice, s.help = help, s.choices = std::move(choices), s.def = def;
+  return s;
+}
+
+OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max, OptionRange range)
+{
+  OptionSpec s;
+  s.name = name, s.kind = OptionKind::RealList, s.unit = unit, s.help = help, s.count_min = count_min, s.count_max = count_max, s.range = range;
+  return s;
+}
+
+const OptionSpec *OptionModule::Find(const std::string &option) const
+{
+  for (const OptionSpec &s : options)
+    if (s.name == option) return &s;
+  return nullptr;
+}
+
+namespace {
+
+std::vector<const OptionModule *> &Registry()
+{
+  static std::vector<const OptionModule *> modules;
+  return modules;
+}
+
+std::map<std::string, OptionUsed> &UsedLog()
+{
+  static std::map<std::string, OptionUsed> used;
+  return used;
+}
+
+} // namespace
+
+void OptionModuleRegister(const OptionModule *m)
+{
+  auto &r = Registry();
+  for (const OptionModule *q : r)
+    if (q == m || q->name == m->name) return;
+  r.push_back(m);
+}
+
+const std::vector<const OptionModule *> &OptionModules() { return Registry(); }
+
+const OptionSpec *OptionSpecFind(const std::string &name)
+{
+  const std::string n = !name.empty() && name[0] == '-' ? name : "-" + name;
+  for (const OptionModule *m : Registry())
+    if (const OptionSpec *s = m->Find(n)) return s;
+  return nullptr;
+}
+
+std::vector<std::string> OptionNames()
+{
+  std::vector<std::string> names;
+  for (const OptionModule *m : Registry())
+    for (const OptionSpec &s : m->options) names.push_back(s.name);
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+std::string OptionUnit(const std::string &name)
+{
+  const OptionSpec *s = OptionSpecFind(name);
+  if (!s) return "";
+  return s->kind == OptionKind::Real || s->kind == OptionKind::Int || s->kind == OptionKind::RealList ? s->unit : "";
+}
+
+const std::map<std::string, OptionUsed> &OptionsUsed() { return UsedLog(); }
+void                                     OptionsUsedClear() { UsedLog().clear(); }
+
+std::string OptionWritten(const char *name)
+{
+  const char *value = nullptr;
+  PetscBool   set   = PETSC_FALSE;
+  if (PetscOptionsFindPair(NULL, NULL, name, &value, &set) || !set || !value) return "";
+  return value;
+}
+
+namespace {
+
+// The row `name` of m, or an internal error (a reader asked for an option its table lacks).
+PetscErrorCode Row(const OptionModule &m, const char *name, OptionKind kind, const OptionSpec **s)
+{
+  PetscFunctionBeginUser;
+  *s = m.Find(name);
+  PetscCheck(*s, PETSC_COMM_SELF, PETSC_ERR_PLIB, "option %s is not in the option table of module '%s'", name, m.name.c_str());
+  const bool text_like = kind == OptionKind::Text && ((*s)->kind == OptionKind::File || (*s)->kind == OptionKind::Choice);
+  PetscCheck((*s)->kind == kind || text_like, PETSC_COMM_SELF, PETSC_ERR_PLIB, "option %s is a %s in the table of module '%s', read as a %s", name, OptionKindName((*s)->kind), m.name.c_str(),
+             OptionKindName(kind));
+  PetscFunctionReturn(0);
+}
+
+std::string HelpWithUnit(const OptionSpec &s)
+{
+  return s.unit.empty() || s.unit == "1" ? s.help : s.help + " (" + s.unit + ")";
+}
+
+void Log(const OptionSpec &s, const std::string &text, double number, const std::vector<double> &list, PetscBool given)
+{
+  OptionUsed &u = UsedLog()[s.name];
+  u.kind        = s.kind;
+  u.unit        = s.unit;
+  u.text        = text;
+  u.number      = number;
+  u.list        = list;
+  u.given       = given ? true : false;
+}
+
+std::string Text17(double v)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// A whole word parsed as a number (strtod: also inf, nan, 1e3); false if it is not one.
+bool ParseReal(const std::string &w, double *v)
+{
+  if (w.empty()) return false;
+  char *end = nullptr;
+  errno     = 0;
+  *v        = std::strtod(w.c_str(), &end);
+  return end && *end == '\0';
+}
+
+PetscErrorCode CheckReal(const OptionSpec &s, const std::string &written, double v)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(s.range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(), s.Allowed().c_str());
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscReal *value, PetscBool *set)
+{
+  const OptionSpec *s;
+  PetscBool         given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(Row(m, name, OptionKind::Real, &s));
+  const std::string written = OptionWritten(name);
+  double            v       = 0;
+  if (!written.empty()) {
+    PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: it must be a number; %s", name, written.c_str(), s->Allowed().c_str());
+    PetscCall(CheckReal(*s, written, v));
+  }
+  PetscCall(PetscOptionsReal(name, HelpWithUnit(*s).c_str(), "", *value, value, &given));
+  if (given) *value = v; // PETSc's parse agrees; the checked value is the one kept
+  Log(*s, Text17(*value), *value, {}, given);
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscInt *value, PetscBool *set)
+{
+  const OptionSpec *s;
+  PetscBool         given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(Row(m, name, OptionKind::Int, &s));
+  const std::string written = OptionWritten(name);
+  if (!written.empty()) {
+    double v = 0;
+    PetscCheck(ParseReal(written, &v) && std::isfinite(v) && v == std::floor(v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: %s", name, written.c_str(), s->Allowed().c_str());
+    PetscCheck(std::abs(v) <= (double)PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: it is beyond the largest whole number this build of PETSc holds (%" PetscInt_FMT "); %s",
+               name, written.c_str(), (PetscInt)PETSC_MAX_INT, s->Allowed().c_str());
+    PetscCall(CheckReal(*s, written, v));
+    // PETSc parses "1e3" as an integer only in some versions: set the plain digits it reads.
+    char digits[64];
+    std::snprintf(digits, sizeof digits, "%lld", (long long)v);
+    if (written != digits) PetscCall(PetscOptionsSetValue(NULL, name, digits));
+  }
+  PetscCall(PetscOptionsInt(name, HelpWithUnit(*s).c_str(), "", *value, value, &given));
+  Log(*s, std::to_string((long long)*value), (double)*value, {}, given);
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscBool *value, PetscBool *set)
+{
+  const OptionSpec *s;
+  PetscBool         given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(Row(m, name, OptionKind::Bool, &s));
+  PetscCall(PetscOptionsBool(name, s->help.c_str(), "", *value, value, &given));
+  Log(*s, *value ? "true" : "false", *value ? 1.0 : 0.0, {}, given);
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscInt *index, PetscBool *set)
+{
+  const OptionSpec *s;
+  PetscBool         given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(Row(m, name, OptionKind::Choice, &s));
+  const std::string written = OptionWritten(name);
+  if (!written.empty()) {
+    bool known = false;
+    for (const std::string &c : s->choices) known = known || strcasecmp(c.c_str(), written.c_str()) == 0;
+    PetscCheck(known, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "%s %s is not known: %s", name, written.c_str(), s->Allowed().c_str());
+  }
+  std::vector<const char *> list;
+  for (const std::string &c : s->choices) list.push_back(c.c_str());
+  PetscCall(PetscOptionsEList(name, s->help.c_str(), "", list.data(), (PetscInt)list.size(), list[*index], index, &given));
+  Log(*s, s->choices[*index], (double)*index, {}, given);
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::string *value, PetscBool *set)
+{
+  const OptionSpec *s;
+
+  PetscFunctionBeginUser;
+  PetscCall(Row(m, name, OptionKind::Text, &s));
+  if (s->kind == OptionKind::Choice) {
+    PetscInt index = 0;
+    for (size_t k = 0; k < s->choices.size(); ++k)
+      if (strcasecmp(s->choices[k].c_str(), value->c_str()) == 0) index = (PetscInt)k;
+    PetscCall(OptionsReadChoice(PetscOptionsObject, m, name, &index, set));
+    *value = s->choices[index];
+    PetscFunctionReturn(0);
+  }
+  PetscBool         given = PETSC_FALSE;
+  std::vector<char> buf(PETSC_MAX_PATH_LEN + 1, 0);
+  std::snprintf(buf.data(), buf.size(), "%s", value->c_str());
+  PetscCall(PetscOptionsString(name, s->help.c_str(), "", buf.data(), buf.data(), buf.size(), &given));
+  if (given) {
+    const std::string written = OptionWritten(name);
+    PetscCheck(written.size() < buf.size() - 1, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: the value is longer than %d characters", name, (int)buf.size() - 2);
+    PetscCheck(!(s->kind == OptionKind::File && buf[0] == '\0'), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s needs a file name", name);
+  }
+  *value = buf.data();
+  Log(*s, *value, 0, {}, given);
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::vector<PetscReal> *value, PetscBool *set)
+{
+  const OptionSpec *s;
+  PetscBool         given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(Row(m, name, OptionKind::RealList, &s));
+  const std::string   written = OptionWritten(name);
+  std::vector<double> parsed;
+  PetscBool           present = PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &present));
+  if (present) {
+    PetscCheck(!written.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s is given without values: %s", name, s->Allowed().c_str());
+    size_t a = 0;
+    for (;;) {
+      const size_t      b    = written.find(',', a);
+      const std::string item = written.substr(a, b == std::string::npos ? std::string::npos : b - a);
+      double            v    = 0;
+      PetscCheck(!item.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: an empty value between commas; %s", name, written.c_str(), s->Allowed().c_str());
+      PetscCheck(ParseReal(item, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: '%s' is not a number; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
+      PetscCheck(s->range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
+      parsed.push_back(v);
+      if (b == std::string::npos) break;
+      a = b + 1;
+    }
+    const PetscInt n = (PetscInt)parsed.size();
+    PetscCheck(!(s->count_min > 0 && n < s->count_min) && !(s->count_max > 0 && n > s->count_max), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed (%" PetscInt_FMT " values): %s", name,
+               written.c_str(), n, s->Allowed().c_str());
+  }
+  PetscInt               n = std::max<PetscInt>((PetscInt)parsed.size(), (PetscInt)value->size());
+  std::vector<PetscReal> buf(std::max<PetscInt>(n, 1), 0.0);
+  std::copy(value->begin(), value->end(), buf.begin());
+  PetscCall(PetscOptionsRealArray(name, HelpWithUnit(*s).c_str(), "", buf.data(), &n, &given));
+  if (given) *value = std::vector<PetscReal>(parsed.begin(), parsed.end());
+  std::string text;
+  for (PetscReal v : *value) text += (text.empty() ? "" : ",") + Text17(v);
+  Log(*s, text, 0, std::vector<double>(value->begin(), value->end()), given);
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact
