@@ -1,5 +1,7 @@
 // GoogleTest main for MPI + PETSc tests: gtest flags are parsed before
 // PetscInitialize, only rank 0 prints, and the result is agreed on all ranks.
+#include "app/registry.hpp"
+
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -7,6 +9,7 @@ int main(int argc, char **argv)
 {
   ::testing::InitGoogleTest(&argc, argv);
   PetscCall(PetscInitialize(&argc, &argv, NULL, "beamimpact unit tests"));
+  PetscCall(beamimpact::RegisterAll());
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   if (rank != 0) {

@@ -7,6 +7,7 @@
 // The driver only initialises, dispatches the task and finalises. Errors are
 // reported as one plain message (the option, the value, what is allowed);
 // -error_traceback shows PETSc's full traceback instead.
+#include "app/registry.hpp"
 #include "app/tasks.hpp"
 #include "io/options_files.hpp"
 #include "io/text.hpp"
@@ -115,6 +116,7 @@ int main(int argc, char **argv)
   }
 
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
+  PetscCall(beamimpact::RegisterAll());
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-error_traceback", &traceback, NULL));
   if (!traceback) PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   PetscErrorCode ierr = beamimpact::RunTask(PETSC_COMM_WORLD);
