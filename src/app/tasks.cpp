@@ -19,6 +19,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace beamimpact {
@@ -84,14 +86,39 @@ PetscErrorCode TaskWriteOutput(MPI_Comm comm, const std::string &output, Record 
 
 } // namespace
 
+// The summary line: columns of the results table (their values and units), by the short labels
+// the line has always used; "steps" counts the event re-steps too.
+static std::string ImpactSummaryLine(const ImpactResult &r)
+{
+  struct Item {
+    const char *label, *column, *format;
+  };
+  static const Item items[] = {{"x", "x", "%.4f"},
+                               {"acor", "acor", "%.6f"},
+                               {"acor_corrected", "acor_corrected", "%.6f"},
+                               {"contact_time", "contact_time", "%.4e"},
+                               {"peak_force", "peak_force", "%.4e"},
+                               {"max_compression", "max_compression", "%.4e"},
+                               {"contacts", "contacts", "%.0f"},
+                               {"steps", "steps", "%.0f"},
+                               {"rejected", "rejected_steps", "%.0f"},
+                               {"failed", "failed_solves", "%.0f"},
+                               {"fevals", "function_evals", "%.0f"},
+                               {"wall", "wall_time", "%.3e"}};
+  std::string line;
+  for (const Item &it : items) {
+    const ResultColumn *c = ImpactResultColumn(it.column);
+    char                value[64];
+    std::snprintf(value, sizeof value, it.format, c->Get(r) + (std::strcmp(it.column, "steps") == 0 ? (double)r.event_steps : 0.0));
+    line += (line.empty() ? "" : "  ") + std::string(it.label) + " " + value + (std::strcmp(c->unit, "1") ? " " + std::string(c->unit) : "");
+  }
+  return line;
+}
+
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm,
-                        "x %.4f m  acor %.6f  acor_corrected %.6f  contact_time %.4e s  peak_force %.4e N  max_compression %.4e m  contacts %" PetscInt_FMT
-                        "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  failed %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
-                        (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
-                        r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  PetscCall(PetscPrintf(comm, "%s%s\n", ImpactSummaryLine(r).c_str(), r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
   if (taken < asked) {
     std::string late;
@@ -110,11 +137,15 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
                           (double)sc.beam.grip.x_b, (double)r.grip_force_peak, (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
-  if (sc.beam.has_pivot) {
+  if (ResultFreePivot(sc)) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
     PetscCall(PetscPrintf(comm, "pivot at %.4f m: I_p %.5f kg m^2, recoil factor r %.6f, e_A %.6f, BBCOR = e_A (1 + r) + r = %.6f\n", (double)sc.beam.pivot_x, (double)rig.inertia_pivot,
                           (double)r.recoil_factor, (double)r.collision_efficiency, (double)r.bbcor));
-  }
+  } else if (sc.beam.has_pivot)
+    PetscCall(PetscPrintf(comm,
+                          "pivot at %.4f m, but the beam is also held (%s): it cannot turn freely about the pivot, so no recoil factor or BBCOR is reported (NaN in /results: they describe a "
+                          "rig free to turn about its pivot); e_A %.6f\n",
+                          (double)sc.beam.pivot_x, PivotHeldText(sc).c_str(), (double)r.collision_efficiency));
   PetscFunctionReturn(0);
 }
 

@@ -606,7 +606,7 @@ PetscErrorCode WriteReference(hid_t file, const ConvergenceReference &ref)
   r.add("method", ref.method);
   for (const char *name : {"acor", "acor_corrected", "contact_time", "peak_force", "max_compression", "contacts", "final_time", "energy_error"})
     for (const ResultColumn &c : ImpactResultColumns()) // the outcome as the result table has it
-      if (std::strcmp(c.name, name) == 0) r.add(name, c.get(R));
+      if (std::strcmp(c.name, name) == 0) r.add(name, c.Get(R));
   r.add("acor_error_estimate", ref.acor_error);
   r.add("contact_time_error_estimate", ref.contact_time_error);
   r.add("peak_force_error_estimate", ref.peak_force_error);
