@@ -3,13 +3,24 @@
 #include "app/registry.hpp"
 
 #include "base/option_table.hpp"
+#include "run/reference.hpp"
+#include "studies/convergence_plan.hpp"
+#include "studies/convergence_runs.hpp"
 
 namespace beamimpact {
 
 PetscErrorCode RegisterAll()
 {
   PetscFunctionBeginUser;
-  // One line per module: OptionModuleRegister(&kModuleOptions);
+  // The methods that solve one impact (run/reference.hpp), in the order -help lists them: the
+  // first impact method is -reference's default, a study's default the first that applies.
+  ReferenceMethodRegister(&kReferenceTimeStepping);
+  ReferenceMethodRegister(&kReferenceModal);
+  ReferenceMethodRegister(&kReferenceRun);
+  // One line per module: OptionModuleRegister(&kModuleOptions); (after the methods: the
+  // reference choices come from the registry)
+  OptionModuleRegister(&ReferenceOptionModule());
+  OptionModuleRegister(&ConvergenceOptionModule());
   PetscFunctionReturn(0);
 }
 

@@ -5,8 +5,8 @@
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
-#include "run/modal_reference.hpp"
 #include "run/outcome.hpp"
+#include "run/reference.hpp"
 #include "solvers/modes.hpp"
 #include "studies/convergence.hpp"
 #include "studies/sweep.hpp"
@@ -38,35 +38,6 @@ const TaskEntry Tasks[] = {
   {"sweep", TaskSweep},
   {"convergence", TaskConvergence},
 };
-
-const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
-
-// -reference: PETSC_TRUE for the exact modal solution instead of the PETSc TS.
-PetscErrorCode ImpactReferenceFromOptions(MPI_Comm comm, PetscBool *modal)
-{
-  PetscEnum reference = (PetscEnum)0;
-
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
-  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring, Rayleigh damping allowed; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
-  PetscReal max_gb = ModalReferenceMemoryLimit() / 1e9;
-  PetscCall(PetscOptionsReal("-reference_max_memory", "-reference modal: refuse a beam whose dense modal matrices need more than this (GB; default half of the physical memory)", "", max_gb, &max_gb, NULL));
-  PetscCheck(max_gb > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-reference_max_memory %g is not allowed: it must be > 0 (GB)", (double)max_gb);
-  PetscOptionsEnd();
-  *modal = reference == 1 ? PETSC_TRUE : PETSC_FALSE;
-  PetscFunctionReturn(0);
-}
-
-// The exact modal solution: no integrator, so neither monitors nor integrator options.
-PetscErrorCode ImpactRunModal(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
-  PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-  PetscCall(ModalReferenceRun(sc, res));
-  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res->ts_type.c_str(), res->formulation.c_str(), (double)res->dt_nominal));
-  PetscFunctionReturn(0);
-}
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
 // saying where it went.
@@ -162,20 +133,20 @@ PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
 
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 {
-  Scenario     sc;
-  ImpactResult res;
-  PetscBool    modal;
+  Scenario               sc;
+  const ReferenceMethod *method;
+  ReferenceSolution      sol;
+  std::string            why;
 
   PetscFunctionBeginUser;
   PetscCall(ScenarioFromOptions(comm, &sc));
   PetscCall(PrintBeamBody(comm, sc.beam));
-  PetscCall(ImpactReferenceFromOptions(comm, &modal));
-  if (modal) PetscCall(ImpactRunModal(comm, sc, &res));
-  else {
-    sc.impact.check_unused_options = PETSC_TRUE;
-    sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
-    PetscCall(ImpactRun(comm, sc, &res));
-  }
+  PetscCall(ReferenceMethodFromOptions(comm, &method)); // -reference: ts (the default), modal, ...
+  PetscCheck(method->applies(sc, &why), comm, PETSC_ERR_SUP, "-reference %s %s", method->name, why.c_str());
+  sc.impact.check_unused_options = PETSC_TRUE;
+  sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
+  PetscCall(method->run(comm, sc, ReferenceSettings(), &sol));
+  const ImpactResult &res = sol.result;
   const std::string cut = ImpactCutOffReason(sc, res); // no number from a contact cut short
   PetscCheck(cut.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", cut.c_str());
   PetscCall(ImpactPrintSummary(comm, sc, res));
@@ -229,7 +200,7 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscEnum *task, std::string *out);
 PetscErrorCode ReadEveryOption(MPI_Comm comm)
 {
   Scenario        sc;
-  PetscBool       modal;
+  const ReferenceMethod *method;
   ModesParams     mp;
   SweepPlan       plan;
   ConvergencePlan cp;
@@ -239,10 +210,10 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   (void)ScenarioFromOptions(comm, &sc);
-  (void)ImpactReferenceFromOptions(comm, &modal);
+  (void)ReferenceMethodFromOptions(comm, &method);
   (void)ModesParamsFromOptions(comm, &mp, nullptr);
   (void)SweepPlanFromOptions(comm, &plan);
-  (void)ConvergencePlanFromOptions(comm, sc.ball, &cp);
+  (void)ConvergencePlanFromOptions(comm, sc, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
