@@ -146,6 +146,7 @@ struct ImpactOutcome {
   PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i)
   PetscReal angular_momentum_error = 0; // about x = 0, / (m_b v_i L)
   PetscReal beam_kinetic_end = 0, beam_strain_end = 0, ball_dissipated_end = 0; // J
+  PetscReal ball_kinetic_end = 0; // J, the ball's rebound kinetic energy 1/2 m_b v_b,final^2
   // The energy the beam's damping (Rayleigh, and a grip's damper) dissipated by the end (J; it is
   // in energy_error's E; 0 for an undamped beam), and as a fraction of the incident kinetic energy.
   PetscReal beam_dissipated_end = 0, damping_fraction = 0;

@@ -135,6 +135,7 @@ std::vector<ResultColumn> OutcomeColumns()
          "change of the angular momentum about x = 0 / (m_b v_i L)"),
     Real("beam_kinetic_end", "J", &R::beam_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_kinetic; }, "the beam's kinetic energy at the end"),
     Real("beam_strain_end", "J", &R::beam_strain_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_strain; }, "the beam's strain energy at the end"),
+    Real("ball_kinetic_end", "J", &R::ball_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_kinetic; }, "the ball's kinetic energy at the end (its rebound)"),
     Real("ball_dissipated_end", "J", &R::ball_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return BallDissipated(f); },
          "energy dissipated in the ball (0 for the linear law)"),
     Real("ball_loss_fraction", "1", &R::ball_loss_fraction, ResultAlways, kAlways,
