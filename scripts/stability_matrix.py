@@ -453,7 +453,8 @@ def read_results(path):
     """The /results row (and /events) of an impact file, or None."""
     try:
         with h5py.File(path, "r") as f:
-            res = {k: float(np.asarray(f["results"][k][()]).ravel()[0]) for k in f["results"]}
+            res = {k: float(np.asarray(f["results"][k][()]).ravel()[0]) for k in f["results"]
+                   if int(f["results"][k].attrs.get("applies", 1))}  # a column that does not apply to the case is NaN
             if "events" in f:
                 res["_events_kind"] = np.asarray(f["events"]["kind"][()])
                 res["_events_compression"] = np.asarray(f["events"]["compression"][()])

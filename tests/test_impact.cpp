@@ -276,6 +276,7 @@ using Opts = std::vector<std::pair<std::string, std::string>>;
 struct FileColumn {
   std::vector<double> v;
   std::string         unit;
+  long long           applies = -1; // the attribute applies of an impact file's column (-1: none)
 };
 std::map<std::string, FileColumn> ReadResults(const std::string &path)
 {
@@ -297,6 +298,11 @@ std::map<std::string, FileColumn> ReadResults(const std::string &path)
       c.v.resize((size_t)H5Sget_simple_extent_npoints(sp));
       if (!c.v.empty()) H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, c.v.data());
       H5Sclose(sp);
+    }
+    if (H5Aexists(d, "applies") > 0) {
+      hid_t a = H5Aopen(d, "applies", H5P_DEFAULT);
+      H5Aread(a, H5T_NATIVE_LLONG, &c.applies);
+      H5Aclose(a);
     }
     if (H5Aexists(d, "unit") > 0) {
       hid_t             a  = H5Aopen(d, "unit", H5P_DEFAULT);
@@ -348,6 +354,9 @@ void ExpectFileFollowsTable(const std::string &what, const std::map<std::string,
     ASSERT_NE(it, file.end()) << what << ": no /results/" << c.name;
     ASSERT_GT(it->second.v.size(), row) << what << ": " << c.name;
     EXPECT_EQ(it->second.unit, c.unit) << what << ": " << c.name;
+    if (it->second.applies >= 0) {
+      EXPECT_EQ(it->second.applies == 1, c.applies(sc)) << what << ": the attribute applies of /results/" << c.name;
+    }
     EXPECT_EQ(std::isnan(it->second.v[row]), !c.applies(sc)) << what << ": /results/" << c.name << " = " << it->second.v[row] << " where it " << (c.applies(sc) ? "applies" : "does not apply")
                                                            << " (" << c.applies_text << ")";
   }
@@ -403,7 +412,7 @@ TEST(ResultsTable, ImpactFileNaNExactlyWhereAColumnDoesNotApply)
     const std::string path = std::string(dir) + "/impact" + std::to_string(k) + ".h5";
     RunRecord         rec;
     ASSERT_EQ(0, RunRecordBuild(sc, &r, &rec));
-    ASSERT_EQ(0, ResultsWriteImpactFile(PETSC_COMM_WORLD, path, rec, {r}, sc.beam));
+    ASSERT_EQ(0, ResultsWriteImpactFile(PETSC_COMM_WORLD, path, rec, {r}, sc));
     PetscMPIInt rank;
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     if (rank == 0) ExpectFileFollowsTable(what, ReadResults(path), sc, 0);

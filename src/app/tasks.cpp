@@ -151,7 +151,7 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
   PetscCheck(cut.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", cut.c_str());
   PetscCall(ImpactPrintSummary(comm, sc, res));
   PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
-                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam); }));
+                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc); }));
   PetscFunctionReturn(0);
 }
 

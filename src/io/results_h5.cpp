@@ -147,8 +147,9 @@ PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vect
 }
 
 // /results: one row per result, one dataset per column of the table (the counts as integer
-// datasets: every row has a number; NaN where a column does not apply).
-static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results)
+// datasets: every row has a number; NaN where a column does not apply), each with the table's
+// description and whether it applies to the scenario.
+static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results, const Scenario &sc)
 {
   PetscFunctionBeginUser;
   hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -162,6 +163,14 @@ static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult>
       for (auto &r : results) v.push_back(col.Get(r));
       PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
     }
+    RunRecord a;
+    a.add("description", col.description);
+    a.add("applies", col.applies(sc) ? 1 : 0);
+    a.add("applies_when", col.applies_text);
+    hid_t ds = H5Dopen2(g, col.name, H5P_DEFAULT);
+    PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot open dataset %s", col.name);
+    PetscCall(H5WriteAttributes(ds, a));
+    H5Dclose(ds);
   }
   H5Gclose(g);
   PetscFunctionReturn(0);
@@ -274,18 +283,18 @@ PetscErrorCode H5ResultsFileCreate(MPI_Comm comm, const std::string &path, const
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam)
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc)
 {
   long long file;
 
   PetscFunctionBeginUser;
   PetscCall(H5ResultsFileCreate(comm, path, record, &file));
   if (file < 0) PetscFunctionReturn(0);
-  PetscCall(H5WriteResults(file, results));
+  PetscCall(H5WriteResults(file, results, sc));
   if (!results.empty()) {
     PetscCall(H5WriteImpactAttributes(file, results[0]));
     PetscCall(H5WriteEvents(file, results[0]));
-    PetscCall(H5WriteSeries(file, results[0].series, beam));
+    PetscCall(H5WriteSeries(file, results[0].series, sc.beam));
   }
   H5Fclose(file);
   PetscFunctionReturn(0);

@@ -7,6 +7,7 @@
 #include "io/run_record.hpp"
 #include "run/impact.hpp"
 #include "run/results_table.hpp"
+#include "run/scenario.hpp"
 #include "solvers/modes.hpp"
 
 #include <functional>
@@ -16,11 +17,13 @@
 
 namespace beamimpact {
 
-// Writes a new file (replacing any): root attributes (the record, the table's column order
-// results_columns and the first result's scales: contact_time_scale, compression_scale,
-// ball_wall_contact_time, ball_wall_cor), /results (every column of the table, one row per
-// result), and for the first result its /events, /series and /snapshots when they hold data.
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam);
+// Writes a new file (replacing any) for results of the scenario sc: root attributes (the record,
+// the table's column order results_columns and the first result's scales: contact_time_scale,
+// compression_scale, ball_wall_contact_time, ball_wall_cor), /results (every column of the
+// table, one row per result, with the attributes unit, description, applies (1 or 0: whether
+// the column applies to sc; NaN where it does not) and applies_when (in words)), and for the
+// first result its /events, /series and /snapshots when they hold data.
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc);
 
 // Writes a new file (replacing any) on rank 0 of comm: root attributes; /modes with the
 // frequency (Hz), period (s) and omega (rad/s) of each mode, the deflection shapes (one row per
