@@ -343,7 +343,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
     PetscFunctionReturn(0);
   }
   PetscBool         given = PETSC_FALSE;
-  std::vector<char> buf(PETSC_MAX_PATH_LEN + 1, 0);
+  std::vector<char> buf(std::max<size_t>(PETSC_MAX_PATH_LEN, OptionWritten(name).size() + 1) + 1, 0); // a long text (a sweep's axes) is read whole
   std::snprintf(buf.data(), buf.size(), "%s", value->c_str());
   PetscCall(PetscOptionsString(name, s->help.c_str(), "", buf.data(), buf.data(), buf.size(), &given));
   if (given) {
