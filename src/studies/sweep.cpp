@@ -45,7 +45,9 @@ int SweepStatusOfError(PetscErrorCode ierr)
   case PETSC_ERR_ARG_OUTOFRANGE:
   case PETSC_ERR_ARG_WRONG:
   case PETSC_ERR_ARG_INCOMP:
-  case PETSC_ERR_ARG_UNKNOWN_TYPE: // a text value the set-up does not know (-ts_rk_type 9x)
+  case PETSC_ERR_ARG_UNKNOWN_TYPE: // a text value the set-up does not know:
+  case PETSC_ERR_USER:             // -ts_rk_type 9x, PETSc's "Unknown option 9x for -ts_rk_type. Available options: ..."
+  case PETSC_ERR_USER_INPUT:
   case PETSC_ERR_SUP:
     return SweepRefused;
   default:
