@@ -4,7 +4,8 @@
 #   * the same sweep at 1, 2 and 3 ranks (3: oversubscribed, idle rank at the
 #     end) gives identical files: every dataset but the timing column
 #     /results/wall_time within 1e-12, every attribute but the full command
-#     line (options, which holds -output) equal;
+#     line (options, which holds -output) equal; so does a sweep with a text axis
+#     (ts_type=rk;cn;modal);
 #   * a row equals -task impact at that point;
 #   * more ranks than points, one point, -sweep_ranks_per_case 2 (round-off
 #     close to 1 rank per case) and the plot script work;
@@ -28,7 +29,7 @@ src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 exe=$(readlink -f "$exe")
 [[ -x "$exe" ]] || { echo "FAIL: $1 is not an executable"; exit 1; }
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1 # no file of an earlier run is resumed
-rm -rf ranks_* edge_*
+rm -rf ranks_* edge_* text_*
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh" # MPI env, fail/pass, $python
 
 
@@ -113,6 +114,13 @@ assert f.attrs["sweep_complete"] == 1 and f.attrs["sweep_cases_done"] == 23 and 
 assert np.all(np.isfinite(r["rigid_acor"][()])) and np.all(np.isfinite(r["rigid_forced_loss_fraction"][()]))
 PY
 fi
+
+# --- a text axis (the integrator, categorical): identical files at 1, 2 and 3 ranks ---------
+tx=(-sweep "ts_type=rk;cn;modal,impact_x=0.2;0.55;1.0")
+for n in 1 2 3; do
+  "$mpiexec" -n $n "$exe" -task sweep "${opts[@]}" "${tx[@]}" -output text_$n.h5 >text_$n.log 2>&1 || { fail "text-axis sweep on $n rank(s)"; cat text_$n.log; }
+done
+if same_file text_1.h5 text_2.h5 && same_file text_1.h5 text_3.h5; then pass "text axis (ts_type=rk;cn;modal x 3 points) at 1, 2 and 3 ranks: identical files"; else fail "text axis: files differ between rank counts"; fi
 
 # --- a row equals -task impact at that point (0.55 m is case 11) -------------
 "$exe" -task impact -beam_nodes 21 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -impact_x 0.55 -output ranks_impact.h5 >ranks_impact.log 2>&1 || fail "-task impact failed"
