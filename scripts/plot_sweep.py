@@ -357,7 +357,7 @@ def main():
     p.add_argument("--label", action="append", default=[], help="one axis: legend label for each file, in order (default: from the file's attributes)")
     p.add_argument("--title", default=None, help="figure title")
     p.add_argument("--logy", action="store_true", help="a log scale for COLUMN (e.g. wall_time; with --relative-to: the absolute difference)")
-    p.add_argument("--relative-to", metavar="VALUE", default=None, help="text axis: draw COLUMN minus its value at the same point with this value of the text axis (e.g. modal: each integrator's difference to the exact one)")
+    p.add_argument("--relative-to", metavar="VALUE", default=None, help="text axis: draw COLUMN minus its value at the same point with this value of the text axis (e.g. modal: each integrator's difference to -ts_type modal, whose beam flow is exact)")
     p.add_argument("--no-raw", action="store_true", help="ACOR: omit the raw (uncorrected) ACOR")
     p.add_argument("--no-rigid", action="store_true", help="ACOR: omit the rigid-body curves")
     p.add_argument("--dpi", type=int, default=150)

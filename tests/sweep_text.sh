@@ -99,7 +99,7 @@ if plot ts-acor "$dir/ts.h5" acor && plot ts-wall "$dir/ts.h5" wall_time --logy 
   n=0
   for t in rk cn alpha2 modal; do grep -qF "$dir/ts.h5: $t: 3 point(s), 0 with two or more contacts (ringed), 0 failed (x)" "$dir/ts-acor.log" && n=$((n + 1)); done
   ((n == 4)) && pass "plot_sweep.py: one curve per ts_type value (4 of 4 named with their 3 points)" || fail "plot_sweep.py curves: $(cat "$dir/ts-acor.log")"
-  grep -q "modal: the reference (--relative-to), 0 on a log scale: not drawn" "$dir/ts-error.log" && pass "--relative-to modal: the others against the exact modal type" || fail "--relative-to: $(cat "$dir/ts-error.log")"
+  grep -q "modal: the reference (--relative-to), 0 on a log scale: not drawn" "$dir/ts-error.log" && pass "--relative-to modal: the others against -ts_type modal" || fail "--relative-to: $(cat "$dir/ts-error.log")"
   "$python" -c "
 import sys
 from PIL import Image
