@@ -186,6 +186,30 @@ def flexural(s, n, left, right, count=4, N=24, theory="sanders"):
     return f[keep][:count], nd[keep][:count]
 
 
+def hoop_lumped(s, n, left, right, N=24, x_c=None, theory="sanders"):
+    """The lowest flexural mode of harmonic n as a lumped mass-spring seen by a radial point
+    force at (x_c, theta = 0): frequency (Hz), modal mass m_eff = 2T/(W(x_c)^2 omega^2)
+    (kg; pi R from the theta integral), k_eff = m_eff omega^2 (N/m) and x_c (the radial
+    antinode if not given)."""
+    K, M, ends = ritz_matrices(s, n, N, theory)
+    rows = [ends["left"][f] for f in END_HOLDS[left]] + [ends["right"][f] for f in END_HOLDS[right]]
+    Z = null_space(np.array(rows)) if rows else np.eye(K.shape[0])
+    lam, Y = eigh(Z.T @ K @ Z, Z.T @ M @ Z)
+    nb = N + 1
+    f_all, radial, _ = ritz_modes(s, n, left, right, N, theory)
+    f0 = f_all[radial > 0.5][0]
+    k = int(np.argmin(np.abs(np.sqrt(np.abs(lam)) / (2.0 * np.pi) - f0)))
+    a = Z @ Y[:, k]
+    xs = np.linspace(0.0, s.L, 2001)
+    Wx = leg.legvander(2.0 * xs / s.L - 1.0, N) @ a[2 * nb:]
+    if x_c is None:
+        x_c = xs[int(np.argmax(np.abs(Wx)))]
+    Wc = leg.legvander(np.array([2.0 * x_c / s.L - 1.0]), N)[0] @ a[2 * nb:]
+    m_eff = np.pi * s.R * (a @ M @ a) / Wc ** 2
+    w = 2.0 * np.pi * f0
+    return f0, m_eff, m_eff * w * w, x_c
+
+
 def exact_sd(s, n, m, theory="sanders"):
     """Exact frequencies (Hz, the three branches) of the sd-sd shell, m axial half-waves:
     U = A cos(k x), V = B sin(k x), W = C sin(k x), k = m pi / L, in the same energy."""
