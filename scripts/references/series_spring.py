@@ -186,7 +186,7 @@ def two_mass_ode(m_b, k1, n, m_h, k_h, v, max_phases=400):
         def back(t, y, cmax=cmax):
             return y[0] - y[2] - cmax
         back.direction = 1
-        t, y, i, cnt = _segment(rhs_for(lambda c, k2=k2: k2 * max(c, 0.0) ** n), y, t,
+        t, y, i, cnt = _segment(rhs_for(lambda c, k2=k2, cm=cmax: k2 * min(max(c, 0.0), 2.0 * cm) ** n), y, t,
                                 [comp, back], tmax, skip=1e-9 * T, counted=[cdot_up])
         reloads += cnt[0]
         if i == 0:
@@ -206,8 +206,8 @@ def wall_contact_time(m_b, k1, n):
 
 def series_contact_time(m_b, k1, n, k_h, v):
     """Contact time of the massless-wall series (1) by quadrature, independent of the ODE:
-    loading is harmonic with k_eff; unloading runs on the force F from F_max to 0 with
-    c(F) = (F/k2)^(1/n) + F/k_h and (1/2) m cdot^2 = W(F) = int_F^Fmax F' c'(F') dF'."""
+    loading is harmonic with k_eff; unloading runs on the ball's compression c_b from c_bmax
+    to 0, with c = c_b + F/k_h, F = k2 c_b^n and (1/2) m cdot^2 = W(c_b) = int F dc."""
     from scipy.integrate import quad
     keff = k1 * k_h / (k1 + k_h)
     t_load = 0.5 * np.pi * np.sqrt(m_b / keff)
@@ -215,19 +215,20 @@ def series_contact_time(m_b, k1, n, k_h, v):
     cbm = Fm / k1
     k2 = k1 * cbm ** (1.0 - n)
 
-    def dc(F):
-        return (F / k2) ** (1.0 / n) / (n * F) + 1.0 / k_h
+    def dc(cb):  # dc/dc_b
+        return 1.0 + n * k2 * cb ** (n - 1.0) / k_h
 
-    def W(F):
-        return (k2 / (n + 1.0) * ((Fm / k2) ** (1.0 + 1.0 / n) - (F / k2) ** (1.0 + 1.0 / n))
-                + (Fm ** 2 - F ** 2) / (2.0 * k_h))
+    def W(cb):
+        return (k2 / (n + 1.0) * (cbm ** (n + 1.0) - cb ** (n + 1.0))
+                + k2 ** 2 / (2.0 * k_h) * (cbm ** (2.0 * n) - cb ** (2.0 * n)))
 
-    def integrand(s):  # F = Fm (1 - s^2) removes the 1/sqrt(Fm - F) end point
-        F = Fm * (1.0 - s * s)
-        if F <= 0.0:
-            return 0.0
-        return dc(F) * 2.0 * Fm * s / np.sqrt(2.0 * W(F) / m_b)
-    t_unload, _ = quad(integrand, 0.0, 1.0, epsabs=0.0, epsrel=1e-10, limit=400)
+    def integrand(s):  # c_b = c_bmax (1 - s^2) removes the 1/sqrt(c_bmax - c_b) end point
+        cb = cbm * (1.0 - s * s)
+        w = W(cb)
+        if w <= 0.0:  # s = 0: the limit of the integrand
+            return 2.0 * cbm * dc(cbm) / np.sqrt(2.0 * k2 * cbm ** (n + 1.0) * dc(cbm) / m_b)
+        return dc(cb) * 2.0 * cbm * s / np.sqrt(2.0 * w / m_b)
+    t_unload, _ = quad(integrand, 0.0, 1.0, epsabs=0.0, epsrel=1e-12, limit=200)
     return t_load + t_unload
 
 
