@@ -272,14 +272,11 @@ def report_experiments():
           ["%.2f", "%.2f", "%.2f", "%.0f", "%.2f", "%.0f", "%.0f", "%.0f"])
 
     # Kensrud, Nathan & Smith 2017: a swinging bat on a ball at rest; a wood bat like the R161
-    prof = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
-                        "shared", "data", "r161.profile")
-    prof = os.path.normpath(prof)
-    if not os.path.exists(prof):
-        prof = "/work/shared/data/r161.profile"
+    prof = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                         "options", "bats", "r161.profile"))
     M, xc, Icm, Iax, xi, Ri = bat_from_profile(prof, 649.0, 0.15)
     Meff = 1.0 / (1.0 / M + (xi - xc) ** 2 / Icm)
-    print("\n    R161 (ash, rho = 649 kg/m^3, r161.profile): M = %.4f kg, x_cm = %.4f m, I_cm = %.5f "
+    print("\n    R161 (ash, rho = 649 kg/m^3, options/bats/r161.profile): M = %.4f kg, x_cm = %.4f m, I_cm = %.5f "
           "kg m^2, I_axis = %.3e kg m^2; impact 0.15 m from the tip: R = %.4f m, M_eff = %.4f kg"
           % (M, xc, Icm, Iax, Ri, Meff))
     rows = []

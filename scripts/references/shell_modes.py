@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Free vibration of a thin circular cylindrical shell, one circumferential harmonic at a time:
-an independent reference for the barrel-wall shell of issue 23 (docs: shared MODEL.md section 9).
+an independent reference for the barrel-wall shell of issue 23 (MODEL.md section 9).
 
     /usr/bin/python3 scripts/references/shell_modes.py [--quick]
 
@@ -21,7 +21,7 @@ Stiffness and mass are the exact integrals (Gauss-Legendre) of the Sanders-Koite
     kx = -W_xx,  kt = (n V + n^2 W)/R^2,  t = (n W_x + 3/4 V_x + n U/(4R))/R,
     C = E h/(1 - nu^2),  D = E h^3/(12 (1 - nu^2)),
 
-(the t of Leissa, NASA SP-288, eq. 2.12; MODEL.md's tau is 2t). With --theory donnell the
+(the t of Leissa, NASA SP-288, eq. 2.12; MODEL.md's tau is 2t). With theory='donnell' the
 curvatures drop the in-plane displacements (kt = n^2 W/R^2, t = n W_x/R). The frequencies
 converge from above as N grows (a Ritz bound); the script prints that convergence.
 
