@@ -21,7 +21,8 @@ Stiffness and mass are the exact integrals (Gauss-Legendre) of the Sanders-Koite
     kx = -W_xx,  kt = (n V + n^2 W)/R^2,  t = (n W_x + 3/4 V_x + n U/(4R))/R,
     C = E h/(1 - nu^2),  D = E h^3/(12 (1 - nu^2)),
 
-(the t of Leissa, NASA SP-288, eq. 2.12; MODEL.md's tau is 2t). With theory='donnell' the
+(Sanders' twist; MODEL.md's tau is 2t; its coefficients 3/4 and 1/4 make every rigid motion
+strain-free, which the script checks). With theory='donnell' the
 curvatures drop the in-plane displacements (kt = n^2 W/R^2, t = n W_x/R). The frequencies
 converge from above as N grows (a Ritz bound); the script prints that convergence.
 
@@ -291,6 +292,28 @@ def lowest_modes(s, ends, nmax, count, N):
     return sorted(out)[:count]
 
 
+def report_rigid_body(N):
+    """The n = 1 rigid motions (translation W = c, V = -c; rotation W = c x, V = -c x, U = -R c)
+    must store no energy: Sanders' twist coefficients 3/4 and 1/4 are what makes this exact."""
+    s = bat_barrel(0.0025)
+    rows = []
+    for theory in ("sanders", "donnell"):
+        K, M, _ = ritz_matrices(s, 1, N, theory)
+        nb = N + 1
+        for name, (u, v, w) in (("translation", ([0.0], [-1.0], [1.0])),
+                                ("rotation", ([-s.R], [-s.L / 2, -s.L / 2], [s.L / 2, s.L / 2]))):
+            a = np.zeros(3 * nb)  # x = L (xi + 1)/2: c x = c L/2 (P0 + P1)
+            for k, c in enumerate(u):
+                a[k] = c
+            for k, c in enumerate(v):
+                a[nb + k] = c
+            for k, c in enumerate(w):
+                a[2 * nb + k] = c
+            rows.append([theory, name, (a @ K @ a) / (a @ M @ a) / (2 * np.pi) ** 2])
+    table("Rigid motions of the n = 1 harmonic: Rayleigh quotient as a frequency^2 (Hz^2); zero "
+          "means strain-free", ["theory", "motion", "omega^2/(2 pi)^2"], rows, ["%s", "%s", "%.3e"])
+
+
 def report_convergence(N_list):
     s = bat_barrel(0.0025)
     rows = []
@@ -417,6 +440,7 @@ def main():
     args = ap.parse_args()
     print("shell_modes.py: thin cylindrical shell modes per harmonic n, Sanders-Koiter, "
           "Rayleigh-Ritz with Legendre series of degree N = %d" % args.N)
+    report_rigid_body(args.N)
     report_convergence((8, 12, 16, 24) if args.quick else (8, 12, 16, 20, 24, 32))
     report_exact_sd(args.N)
     report_ring_limit(args.N)
