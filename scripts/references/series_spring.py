@@ -27,9 +27,11 @@ f_h), ball spring k_b between ball and wall. For the elastic ball the two-mass o
 solved in closed form (normal modes) until the compression first returns to zero: the ball
 leaves with e < 1 because the wall keeps vibrating. The script checks the closed form against
 the ODE and tabulates e against f_h for a baseball (the hoop frequency that maximises e
-against the contact time), with the hysteretic ball (ODE). A reload (the compression growing
-again during unloading) follows the program's rule (run/events.cpp): back to the loading branch
-k1 c. The table counts reloads.
+against the contact time), with the hysteretic ball (ODE). At a reload (the compression
+growing again during unloading) the force retraces the unloading curve up to c_max and loads
+with k1 c beyond it (no force jump; the program's run/events.cpp jumps to k1 c at once: the two
+agree where the tables count 0 reloads). (4) takes the wall's mass and stiffness from the hoop
+mode of shell_modes.py (hoop_lumped).
 Sources, numbers for the program's tests and caveats: scripts/references/README.md.
 """
 import os
