@@ -38,7 +38,11 @@ const OptionModule &PetscSolverOptionTable()
       OptionReal("-ts_adapt_dt_max", "s", "Largest step the controller takes (the program caps it at 1/8 of the contact time)", "1e20", Positive()),
       OptionReal("-ts_adapt_safety", "1", "Safety factor of the step size controller", "0.9", Positive()),
       OptionReal("-ts_adapt_reject_safety", "1", "Extra safety factor after a rejected step", "0.5", Positive()),
-      OptionList("-ts_adapt_clip", "1", "Admissible decrease, increase factors of the step", 2, 2, Positive()),
+      [] {
+        OptionSpec s = OptionList("-ts_adapt_clip", "1", "Admissible decrease, increase factors of the step", 2, 2, Positive());
+        s.def        = "0.1,10";
+        return s;
+      }(),
       OptionFlag("-ts_adapt_monitor", "Print the controller's choices"),
       OptionFlag("-ts_adapt_always_accept", "Accept every step (no rejection)"),
       // the types' own options
@@ -93,7 +97,7 @@ const OptionModule &PetscSolverOptionTable()
       OptionText("-modes_st_type", "-task modes: spectral transformation (the program's: sinvert)", "sinvert"),
     },
     true,
-    {"-ts_", "-snes_", "-ksp_", "-pc_", "-mat_", "-vec_", "-dm_", "-modes_eps_", "-modes_st_", "-modes_bv_", "-modes_ds_", "-modes_rg_", "-modes_fn_", "-eps_", "-st_", "-bv_", "-ds_", "-rg_", "-fn_"},
+    {"-ts_", "-snes_", "-ksp_", "-pc_", "-all_ksp_", "-mat_", "-vec_", "-dm_", "-modes_eps_", "-modes_st_", "-modes_bv_", "-modes_ds_", "-modes_rg_", "-modes_fn_", "-eps_", "-st_", "-bv_", "-ds_", "-rg_", "-fn_"},
   };
   return m;
 }
