@@ -64,6 +64,7 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_right", SupportName(beam.right));
   rec->add("beam_clamp_x0", beam.has_clamp ? beam.clamp_x0 : -1.0);
   rec->add("beam_clamp_x1", beam.has_clamp ? beam.clamp_x1 : -1.0);
+  if (beam.has_pivot) rec->add("beam_pivot", beam.pivot_x); // m, as placed: on the nearest node
   rec->add("beam_parameter_set", beam.input.parameter_set);
   rec->add("beam_youngs_modulus", beam.input.youngs_modulus);
   rec->add("beam_density", beam.input.density);
