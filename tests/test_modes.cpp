@@ -142,7 +142,8 @@ TEST(ModesAnalytic, RejectsBadArguments)
   EXPECT_NE(0, BeamModesAnalytic(Support::Free, Support::Free, -1.0, 1.0, 1.0, 2, &w));
   EXPECT_NE(0, BeamModesAnalytic(Support::Free, Support::Free, 1.0, 0.0, 1.0, 2, &w));
   EXPECT_NE(0, BeamModesAnalytic(Support::Free, Support::Free, 1.0, 1.0, 1.0, -1, &w));
-  EXPECT_EQ(PETSC_ERR_SUP, BeamModesAnalytic(static_cast<Support>(7), Support::Free, 1.0, 1.0, 1.0, 2, &w));
+  static const SupportSpec other = {"other", "a support without a beta-L table", NodeHold::Guide};
+  EXPECT_EQ(PETSC_ERR_SUP, BeamModesAnalytic(Support(&other), Support::Free, 1.0, 1.0, 1.0, 2, &w));
   PetscCallVoid(PetscPopErrorHandler());
 }
 

@@ -7,10 +7,6 @@
 
 namespace beamimpact {
 
-const char *const SupportNames[] = {"free", "clamped", "pinned", "Support", "BEAM_SUPPORT_", nullptr};
-
-const char *SupportName(Support s) { return SupportNames[static_cast<int>(s)]; }
-
 SectionProperties BeamSectionAt(const BeamParams &p, PetscReal x)
 {
   if (p.section.source != SectionSource::Uniform) return SectionAt(p.section, x);
@@ -58,11 +54,9 @@ std::vector<NodeHold> BeamNodeHolds(const BeamParams &p)
   const PetscInt        N = p.nodes;
   const PetscReal       h = p.length / (N - 1);
   std::vector<NodeHold> hold(N, NodeHold::None);
-  if (p.left == Support::Pinned) hold[0] = NodeHold::Pin;
-  if (p.right == Support::Pinned) hold[N - 1] = NodeHold::Pin;
-  if (p.has_pivot) hold[BeamPivotNode(p)] = NodeHold::Pin; // y = 0, free rotation
-  if (p.left == Support::Clamped) hold[0] = NodeHold::Clamp;
-  if (p.right == Support::Clamped) hold[N - 1] = NodeHold::Clamp;
+  hold[0]     = p.left.Holds();
+  hold[N - 1] = hold[N - 1] | p.right.Holds();
+  if (p.has_pivot) hold[BeamPivotNode(p)] = hold[BeamPivotNode(p)] | NodeHold::Pin; // y = 0, free rotation
   if (p.has_clamp) {
     const PetscReal tol = 1e-9 * h;
     for (PetscInt i = 0; i < N; ++i) {
@@ -98,7 +92,7 @@ BeamOperator BeamOperatorBuild(const BeamParams &p)
   op.held.assign(N, 0);
   for (PetscInt i = 0; i < N; ++i) {
     clamp_held[i] = hold[i] == NodeHold::Clamp;
-    op.held[i]    = hold[i] != NodeHold::None;
+    op.held[i]    = HoldsDeflection(hold[i]);
   }
 
   op.curvature.assign(N, Curvature::None);
@@ -256,25 +250,26 @@ PetscReal BeamMaxFrequencyBound(const BeamOperator &op, const ImpactStencil &s, 
 
 PetscReal BeamFundamentalFrequencyEstimate(const BeamParams &p)
 {
-  // beta L of the lowest flexural mode for (left, right) supports.
-  auto betaL = [](Support a, Support b) -> PetscReal {
-    if (a > b) std::swap(a, b);
-    if (a == Support::Free && b == Support::Free) return 4.73004;
-    if (a == Support::Free && b == Support::Clamped) return 1.87510;
-    if (a == Support::Free && b == Support::Pinned) return 3.92660;
-    if (a == Support::Clamped && b == Support::Clamped) return 4.73004;
-    if (a == Support::Clamped && b == Support::Pinned) return 3.92660;
-    return M_PI; // pinned-pinned
+  // beta L of the lowest flexural mode of a uniform beam, by what each end holds (none, the
+  // deflection, the rotation, both): free-free 4.73004, free-pinned 3.92660, free-guided
+  // 2.36502, free-clamped 1.87510, pinned-pinned pi, pinned-guided pi/2, pinned-clamped
+  // 3.92660, guided-guided pi, guided-clamped 2.36502, clamped-clamped 4.73004.
+  static const PetscReal table[4][4] = {
+    {4.73004, 3.92660, 2.36502, 1.87510},
+    {3.92660, M_PI, M_PI / 2, 3.92660},
+    {2.36502, M_PI / 2, M_PI, 2.36502},
+    {1.87510, 3.92660, 2.36502, 4.73004},
   };
-  PetscReal span = p.length, bl = betaL(p.left, p.right);
+  auto betaL = [](NodeHold a, NodeHold b) { return table[static_cast<int>(a)][static_cast<int>(b)]; };
+  PetscReal span = p.length, bl = betaL(p.left.Holds(), p.right.Holds());
   if (p.has_clamp) {
     const PetscReal left_span = p.clamp_x0, right_span = p.length - p.clamp_x1;
     if (left_span >= right_span) {
       span = left_span;
-      bl   = betaL(p.left, Support::Clamped);
+      bl   = betaL(p.left.Holds(), NodeHold::Clamp);
     } else {
       span = right_span;
-      bl   = betaL(Support::Clamped, p.right);
+      bl   = betaL(NodeHold::Clamp, p.right.Holds());
     }
     span = std::max(span, p.length / (p.nodes - 1));
   }

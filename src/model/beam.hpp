@@ -21,6 +21,7 @@
 #pragma once
 
 #include "model/section.hpp"
+#include "model/support.hpp"
 
 #include <petscsys.h>
 
@@ -28,10 +29,6 @@
 #include <vector>
 
 namespace beamimpact {
-
-enum class Support { Free = 0, Clamped = 1, Pinned = 2 };
-const char *SupportName(Support s);
-extern const char *const SupportNames[]; // PETSc enum list: names, type, prefix, nullptr
 
 // What the user gave, kept for the record (HDF5 attributes); 0 when not given.
 struct BeamMaterialInput {
@@ -63,7 +60,7 @@ struct BeamParams {
   PetscReal rhoI   = 0;    // kg m, rotary inertia per length rho I of a uniform section (0: unknown)
   BeamSection section;     // where the section varies (profile or table); source Uniform: the scalars above
   PetscInt  nodes  = 41;   // number of grid nodes N (>= 5)
-  Support   left   = Support::Free; // support at x = 0
+  Support   left   = Support::Free; // support at x = 0 (model/support.hpp registry)
   Support   right  = Support::Free; // support at x = L
   bool      has_clamp = false;      // a clamped region [clamp_x0, clamp_x1] is held fixed
   PetscReal clamp_x0 = 0, clamp_x1 = 0; // m
@@ -96,9 +93,9 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p);
 // The node of the pivot (has_pivot): the nearest to pivot_x.
 PetscInt BeamPivotNode(const BeamParams &p);
 
-// How each node is held: not, clamped (held with zero slope: clamped end, inside a clamped
-// region) or pinned (y = 0 only).
-enum class NodeHold : signed char { None = 0, Clamp = 1, Pin = 2 };
+// How each node is held (NodeHold of model/support.hpp: its deflection, its rotation, both):
+// the end nodes as their supports hold them, the pivot's node pinned (deflection), every node
+// of a clamped region clamped (both).
 std::vector<NodeHold> BeamNodeHolds(const BeamParams &p);
 
 // Curvature kind at a node (see the file header).

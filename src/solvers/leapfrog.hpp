@@ -30,6 +30,7 @@
 // second order.
 #pragma once
 
+#include "base/option_table.hpp"
 #include "model/contact.hpp"
 #include "solvers/stepper.hpp"
 #include "system/beam_system.hpp"
@@ -44,7 +45,10 @@ struct LeapfrogParams {
   PetscReal dt_fraction = 0.9; // of the stability limit 2/omega_max, when dt is not given
 };
 
-PetscErrorCode LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p);
+// -leapfrog_dt, -leapfrog_dt_fraction: the leapfrog module's table (app/registry.cpp registers
+// it) and its reader.
+const OptionModule &LeapfrogOptionTable();
+PetscErrorCode      LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p);
 
 // Stability limit (s) of Stormer-Verlet on this system and ball struck through g: 2 / omega_max,
 // or (2/omega_max)(sqrt(1 + zeta^2) - zeta), zeta = beta omega_max / 2, with damping.

@@ -2,6 +2,7 @@
 // case. See sweep_plan.hpp.
 #include "studies/sweep_plan.hpp"
 
+#include "base/option_table.hpp"
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
 #include "run/impact_point.hpp"
@@ -144,16 +145,7 @@ bool SweepParsePoints(const std::string &spec_in, std::vector<PetscReal> *values
 
 std::string SweepOptionUnit(const std::string &name)
 {
-  static const std::map<std::string, std::string> units = {
-    {"impact_x", "m"}, {"impact_window", "s"}, {"impact_max_time", "s"}, {"impact_event_tol", "1"}, {"impact_max_contacts", "1"}, {"impact_energy_growth_tol", "1"},
-    {"ball_mass", "kg"}, {"ball_speed", "m/s"}, {"ball_k", "N/m"}, {"ball_k1", "N/m^m"}, {"ball_m", "1"}, {"ball_n", "1"}, {"ball_cor", "1"}, {"ball_contact_time", "s"},
-    {"ball_test_speed", "m/s"}, {"ball_loss_factor", "1"}, {"beam_length", "m"}, {"beam_thickness", "m"}, {"beam_width", "m"}, {"beam_youngs_modulus", "Pa"},
-    {"beam_density", "kg/m^3"}, {"beam_mass", "kg"}, {"beam_youngs_over_density", "N m/kg"}, {"beam_EI", "N m^2"}, {"beam_mu", "kg/m"}, {"beam_shear_modulus", "Pa"},
-    {"beam_shear_coefficient", "1"}, {"beam_poisson", "1"}, {"beam_nodes", "1"}, {"beam_damping_mass", "1/s"}, {"beam_damping_stiffness", "s"}, {"ts_dt", "s"},
-    {"ts_rtol", "1"}, {"ts_atol", "1"}, {"ts_alpha_radius", "1"}, {"leapfrog_dt", "s"}, {"leapfrog_dt_fraction", "1"}, {"monitor_segment_until", "s"},
-  };
-  const auto it = units.find(name);
-  return it == units.end() ? "" : it->second;
+  return OptionUnit(name); // the option's row (base/option_table.hpp); "" if none
 }
 
 // Options that belong to the task or the sweep itself, not to an impact.
