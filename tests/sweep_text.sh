@@ -123,7 +123,7 @@ fi
 
 # --- checked before any work; refused by the run; numbers kept as text ---
 q=(-task sweep -beam_nodes 21 -sweep_quiet)
-refused ts_bogus "ts_type=rk;bogus: 'bogus' is not a TS type of this program: use one of" "cn, " "rk, rosw" -- "$exe" "${q[@]}" -sweep "impact_x=0.5,ts_type=rk;bogus"
+refused ts_bogus "ts_type=rk;bogus: 'bogus' is not a TS type of this program: use one of" "rk, " "cn, " "rosw" "modal" -- "$exe" "${q[@]}" -sweep "impact_x=0.5,ts_type=rk;bogus"
 refused theory_bogus "bogus" "timoshenko" -- "$exe" "${q[@]}" -sweep "beam_theory=euler;bogus,impact_x=0.5"
 refused twice "'cn' is given twice" -- "$exe" "${q[@]}" -sweep "ts_type=cn;rk;cn"
 refused quote "a quote is not closed" -- "$exe" "${q[@]}" -sweep "ts_type='rk;cn"
