@@ -45,11 +45,9 @@ BallParams BallFromFile(const std::string &rel)
 BallParams Characterised(double mass, double m, double e, double tau, double v)
 {
   BallParams b;
-  b.law  = ContactLawKind::Hysteresis;
+  BallParamsUseLaw(&b, ContactLawFind("hysteresis"));
   b.mass = mass;
-  b.m    = m;
-  b.n    = BallExponentFromCor(m, e);
-  b.k1   = BallK1FromContactTime(mass, m, e, tau, v);
+  EXPECT_TRUE(BallValueSet(&b, "m", m) && BallValueSet(&b, "n", BallExponentFromCor(m, e)) && BallValueSet(&b, "k1", BallK1FromContactTime(mass, m, e, tau, v)));
   return b;
 }
 
@@ -113,7 +111,7 @@ WallBounce BounceOnWall(double mass, double k1, double m, double n, double v, in
   return w;
 }
 
-WallBounce BounceOnWall(const BallParams &b, double v) { return BounceOnWall(b.mass, b.k1, b.m, BallExponentAt(b, v), v); }
+WallBounce BounceOnWall(const BallParams &b, double v) { return BounceOnWall(b.mass, BallValue(b, "k1"), BallValue(b, "m"), BallExponentAt(b, v), v); }
 
 } // namespace
 
@@ -133,7 +131,8 @@ TEST(BallWall, BetaIntegralMatchesQuadrature)
 }
 
 // The characterised ball returns the requested e and tau at the test speed, on a wall
-// integrated independently; and the closed forms of the loading and unloading times agree.
+// integrated independently (not the closed forms k1 and n were derived with); and the closed
+// form of the maximum compression agrees.
 TEST(BallWall, CharacterisedBallReturnsRequestedCorAndContactTime)
 {
   struct Req {
@@ -144,9 +143,7 @@ TEST(BallWall, CharacterisedBallReturnsRequestedCorAndContactTime)
     const WallBounce w = BounceOnWall(b, r.v);
     EXPECT_NEAR(w.cor / r.e, 1.0, 1e-7) << "m = " << r.m << ", e = " << r.e;
     EXPECT_NEAR(w.contact_time / r.tau, 1.0, 1e-6) << "m = " << r.m << ", e = " << r.e;
-    EXPECT_NEAR(ContactWallTime(b, r.v) / r.tau, 1.0, 1e-12);
     EXPECT_NEAR(w.max_compression / ContactWallMaxCompression(b, r.v), 1.0, 1e-7);
-    EXPECT_NEAR(ContactWallRestitution(b), r.e, 1e-12);
   }
 }
 
@@ -223,9 +220,9 @@ TEST(BallPresets, BaseballOnAWall)
 {
   const BallParams b = BallFromFile("options/balls/baseball.opts");
   EXPECT_DOUBLE_EQ(b.mass, 0.145);
-  EXPECT_DOUBLE_EQ(b.m, 1.84);
-  EXPECT_NEAR(b.cor, 0.546, 1e-12);
-  EXPECT_NEAR(b.test_speed, 26.8, 0);
+  EXPECT_DOUBLE_EQ(BallValue(b, "m"), 1.84);
+  EXPECT_NEAR(BallValue(b, "cor"), 0.546, 1e-12);
+  EXPECT_NEAR(BallValue(b, "test_speed"), 26.8, 0);
   ASSERT_FALSE(b.cor_table.empty());
   const WallBounce test = BounceOnWall(b, 26.8);
   EXPECT_NEAR(test.cor, 0.546, 1e-6);
@@ -233,7 +230,7 @@ TEST(BallPresets, BaseballOnAWall)
   struct Pub {
     double v, tau, tol;
   };
-  PetscPrintf(PETSC_COMM_WORLD, "baseball on a rigid wall (options/balls/baseball.opts; k1 = %.4g N/m^1.84):\n", (double)b.k1);
+  PetscPrintf(PETSC_COMM_WORLD, "baseball on a rigid wall (options/balls/baseball.opts; k1 = %.4g N/m^1.84):\n", (double)BallValue(b, "k1"));
   PetscPrintf(PETSC_COMM_WORLD, "| v (m/s) | e | n | contact time (ms) | RK4 on the wall (ms) | published (ms) | difference |\n");
   for (const Pub &p : {Pub{1, 2.2e-3, 0.11}, Pub{11, 1.0e-3, 0.02}, Pub{26.8, 0, 0}, Pub{45, 0.7e-3, 0.02}, Pub{67, 0.6e-3, 0.11}}) {
     const WallBounce w = BounceOnWall(b, p.v);
@@ -254,7 +251,7 @@ TEST(BallPresets, BaseballOnAWall)
 TEST(BallPresets, BaseballFixedCorOnAWall)
 {
   const BallParams b = Characterised(0.145, 1.84, 0.546, 0.78e-3, 26.8);
-  PetscPrintf(PETSC_COMM_WORLD, "baseball with a fixed e = 0.546 (-ball_cor 0.546 instead of the table; k1 = %.4g N/m^1.84):\n", (double)b.k1);
+  PetscPrintf(PETSC_COMM_WORLD, "baseball with a fixed e = 0.546 (-ball_cor 0.546 instead of the table; k1 = %.4g N/m^1.84):\n", (double)BallValue(b, "k1"));
   for (double v : {1.0, 11.0, 26.8, 45.0, 67.0}) {
     const WallBounce w = BounceOnWall(b, v);
     EXPECT_NEAR(w.cor, 0.546, 1e-6);
@@ -267,9 +264,9 @@ TEST(BallPresets, SoftballOnAWall)
 {
   const BallParams b = BallFromFile("options/balls/softball.opts");
   EXPECT_DOUBLE_EQ(b.mass, 0.19);
-  const WallBounce w = BounceOnWall(b, b.test_speed);
+  const WallBounce w = BounceOnWall(b, BallValue(b, "test_speed"));
   EXPECT_NEAR(w.cor, 0.44, 1e-6);
-  EXPECT_NEAR(w.contact_time / b.contact_time, 1.0, 1e-6);
+  EXPECT_NEAR(w.contact_time / BallValue(b, "contact_time"), 1.0, 1e-6);
 }
 
 // Through the whole program: the baseball on a wall (a stiff, heavy, clamped beam) at the
@@ -312,7 +309,7 @@ TEST(BallImpact, BaseballOnTheDefaultBeamSetsNPerContact)
     ++starts;
     EXPECT_GT(e.approach_speed, 0.0);
     EXPECT_NEAR(e.cor, b.cor_table(e.approach_speed), 1e-12);
-    EXPECT_NEAR(e.n, BallExponentFromCor(b.m, e.cor), 1e-12);
+    EXPECT_NEAR(e.n, 2.84 / (e.cor * e.cor) - 1, 1e-12) << "n = (m+1)/e^2 - 1";
   }
   EXPECT_EQ(starts, r.contacts);
   EXPECT_DOUBLE_EQ(r.events[0].approach_speed, 40.0);

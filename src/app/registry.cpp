@@ -3,6 +3,7 @@
 #include "app/registry.hpp"
 
 #include "base/option_table.hpp"
+#include "io/ball_options.hpp"
 
 namespace beamimpact {
 
@@ -10,6 +11,7 @@ PetscErrorCode RegisterAll()
 {
   PetscFunctionBeginUser;
   // One line per module: OptionModuleRegister(&kModuleOptions);
+  OptionModuleRegister(&BallOptionModule());
   PetscFunctionReturn(0);
 }
 
