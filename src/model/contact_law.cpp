@@ -10,13 +10,17 @@
 
 namespace beamimpact {
 
-// The registry: each law is defined in its own file of model/contact_laws/ and listed here once.
+// The registry: each law is defined in its own file of model/contact_laws/ and registered here
+// by its declaration and its entry in the list (-help order; the first is the default).
 const ContactLaw &LinearContactLaw();
 const ContactLaw &HysteresisContactLaw();
 
 const std::vector<const ContactLaw *> &ContactLaws()
 {
-  static const std::vector<const ContactLaw *> laws = {&LinearContactLaw(), &HysteresisContactLaw()};
+  static const std::vector<const ContactLaw *> laws = {
+    &LinearContactLaw(),
+    &HysteresisContactLaw(),
+  };
   return laws;
 }
 
