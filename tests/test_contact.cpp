@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <set>
 #include <string>
 
@@ -31,29 +32,24 @@ struct WallBounce {
   double cor = 0, contact_time = 0, max_compression = 0, loading_time = 0;
 };
 
-// The ball against a rigid, fixed wall at speed v under its law's force (ContactForce), with
-// the phases of a contact as the program switches them (ContactBegin, loading; at dc/dt = 0
-// unloading; separation at c = 0). RK4 with `steps` steps over c_max/v; each root is bisected
-// by re-stepping from the step's start.
-WallBounce BounceUnderTheLaw(const BallParams &b, double v, int steps = 20000)
+// A ball of mass m against a rigid, fixed wall at speed v: m c'' = -force(c), at_max(c) called
+// at the maximum compression (dc/dt = 0: the switch to unloading), until the separation at
+// c = 0. RK4 at step h; each root is bisected by re-stepping from the step's start.
+WallBounce Bounce(const std::function<double(double)> &force, const std::function<void(double)> &at_max, double mass, double v, double h)
 {
-  ContactState s;
-  ContactBegin(b, &s, v);
-  auto accel = [&](double c) { return -ContactForce(b, s, c) / b.mass; };
-  auto rk4   = [&](double &c, double &u, double h) {
-    const double c1 = u, u1 = accel(c);
-    const double c2 = u + 0.5 * h * u1, u2 = accel(c + 0.5 * h * c1);
-    const double c3 = u + 0.5 * h * u2, u3 = accel(c + 0.5 * h * c2);
-    const double c4 = u + h * u3, u4 = accel(c + h * c3);
-    c += h / 6 * (c1 + 2 * c2 + 2 * c3 + c4);
-    u += h / 6 * (u1 + 2 * u2 + 2 * u3 + u4);
+  auto rk4 = [&](double &c, double &u, double dt) {
+    const double c1 = u, u1 = -force(c) / mass;
+    const double c2 = u + 0.5 * dt * u1, u2 = -force(c + 0.5 * dt * c1) / mass;
+    const double c3 = u + 0.5 * dt * u2, u3 = -force(c + 0.5 * dt * c2) / mass;
+    const double c4 = u + dt * u3, u4 = -force(c + dt * c3) / mass;
+    c += dt / 6 * (c1 + 2 * c2 + 2 * c3 + c4);
+    u += dt / 6 * (u1 + 2 * u2 + 2 * u3 + u4);
   };
-  const double h = ContactWallMaxCompression(b, v) / v / steps; // only sizes the step
-  double       t = 0, c = 0, u = v;
-  WallBounce   w;
+  double     t = 0, c = 0, u = v;
+  WallBounce w;
   for (int phase = 0; phase < 2; ++phase) {
     const bool loading = phase == 0;
-    for (long it = 0; it < 100L * steps; ++it) {
+    for (long it = 0; it < 10000000L; ++it) {
       double cn = c, un = u;
       rk4(cn, un, h);
       if (!(loading ? un <= 0 : cn <= 0)) {
@@ -75,12 +71,22 @@ WallBounce BounceUnderTheLaw(const BallParams &b, double v, int steps = 20000)
     if (loading) {
       w.max_compression = c;
       w.loading_time    = t;
-      ContactSwitch(b, &s, ContactPhase::Unloading, c);
+      at_max(c);
     }
   }
   w.cor          = -u / v;
   w.contact_time = t;
   return w;
+}
+
+// The ball bouncing under its law's force (ContactForce), with the phases of a contact as the
+// program switches them (ContactBegin, loading; ContactSwitch to unloading at the maximum
+// compression); `steps` steps over c_max/v.
+WallBounce BounceUnderTheLaw(const BallParams &b, double v, int steps = 20000)
+{
+  ContactState s;
+  ContactBegin(b, &s, v);
+  return Bounce([&](double c) { return ContactForce(b, s, c); }, [&](double c) { ContactSwitch(b, &s, ContactPhase::Unloading, c); }, b.mass, v, ContactWallMaxCompression(b, v) / v / steps);
 }
 
 } // namespace
@@ -282,3 +288,4 @@ TEST(RigidBody, Equation11AndItsForcedFitAgreeWithMomentumAndEnergy)
       EXPECT_NEAR(RigidForcedLossFraction(m, Me, e), f, 1e-12) << "M_e = " << Me << ", e = " << e;
     }
 }
+
