@@ -7,7 +7,9 @@
 #   * every law runs the default beam (1.1 m, both ends free, struck at 0.9 m by the 42 g ball
 #     at 1 m/s, RK4) with the energy balanced to the integrator's accuracy, its ACOR corrected by
 #     -ball_loss_factor only when it is elastic (its rigid-wall COR, recorded as ball_wall_cor,
-#     is 1), and its parameters and wall values in the run record.
+#     is 1), and its parameters and wall values in the run record;
+#   * the Hertz ball's recorded wall values against its closed form, and its energy balance
+#     falling with the step.
 #
 #   tests/laws.sh path/to/beamimpact scratch_dir
 set -uo pipefail
@@ -56,5 +58,32 @@ PY
 )
   [[ $msg == ok* ]] && pass "-ball_law $law: ${msg#ok }" || fail "-ball_law $law: $msg"
 done
+
+# The Hertz ball (F = k c^(3/2), k = 5e5 N/m^(3/2), 42 g): its recorded wall values against the
+# closed form of a power law p = 3/2 (c_max = ((p+1) m v^2/(2k))^(1/(p+1)),
+# t = 2 (c_max/v) B(1/(p+1), 1/2)/(p+1)), and its energy balance on the default beam falling
+# with RK4's step (at least as dt^2: the force is not C^2 at c = 0).
+for dt in 1e-5 5e-6; do
+  "$exe" "${scene[@]}" -ball_law hertz -ts_dt $dt -output "$dir/hertz-$dt.h5" >"$dir/hertz-$dt.txt" 2>&1 || fail "-ball_law hertz -ts_dt $dt: $(cat "$dir/hertz-$dt.txt")"
+done
+if [[ -n $python ]]; then
+  msg=$("$python" - "$dir/hertz-1e-5.h5" "$dir/hertz-5e-6.h5" <<'PY'
+import h5py, math, sys
+f1, f2 = h5py.File(sys.argv[1]), h5py.File(sys.argv[2]); a = f1.attrs
+m, v, k, p = float(a["ball_mass"]), float(a["ball_speed"]), float(a["ball_hertz_k"]), 1.5
+c_max = ((p + 1) * m * v * v / (2 * k)) ** (1 / (p + 1))
+q = 1 / (p + 1); tau = 2 * c_max / v * math.gamma(q) * math.gamma(0.5) / math.gamma(q + 0.5) / (p + 1)
+e1, e2 = (abs(float(f["results"]["energy_error"][0])) for f in (f1, f2))
+bad = []
+if k != 5e5: bad.append("ball_hertz_k %g" % k)
+if abs(float(a["ball_wall_max_compression"]) / c_max - 1) > 1e-12: bad.append("ball_wall_max_compression %.17g, closed form %.17g" % (float(a["ball_wall_max_compression"]), c_max))
+if abs(float(a["ball_wall_contact_time"]) / tau - 1) > 1e-12: bad.append("ball_wall_contact_time %.17g, closed form %.17g" % (float(a["ball_wall_contact_time"]), tau))
+if float(a["ball_wall_cor"]) != 1.0: bad.append("ball_wall_cor %g" % float(a["ball_wall_cor"]))
+if not (e1 < 3e-8 and e1 / e2 > 4.5): bad.append("energy_error %.3g at 1e-5 s, %.3g at 5e-6 s" % (e1, e2))
+print("; ".join(bad) if bad else "ok wall tau %.6g s and c_max %.6g m as the closed form; energy_error %.2g -> %.2g (x%.1f) when dt halves" % (tau, c_max, e1, e2, e1 / e2))
+PY
+)
+  [[ $msg == ok* ]] && pass "-ball_law hertz: ${msg#ok }" || fail "-ball_law hertz: $msg"
+fi
 
 ((fails == 0)) && echo "all law checks passed" || { echo "$fails law check(s) failed"; exit 1; }

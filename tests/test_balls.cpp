@@ -1,6 +1,8 @@
 // Real balls (docs/model.md section 2, docs/balls.md): the hysteretic power-law ball
 // characterised by its rigid-wall coefficient of restitution e and contact time tau at a
 // test speed, an e(v) table of the approach speed, and the baseball and softball presets.
+// The Hertz ball (-ball_law hertz) through the program: on a wall against its closed forms, on
+// the default beam with the energy balance closing to the integrator's accuracy.
 //
 // The wall checks integrate the ball against a rigid wall with an integrator of their own
 // (RK4 on m_b c'' = -F(c), the loading/unloading switch and the separation bisected onto
@@ -315,4 +317,55 @@ TEST(BallImpact, BaseballOnTheDefaultBeamSetsNPerContact)
   EXPECT_DOUBLE_EQ(r.events[0].approach_speed, 40.0);
   EXPECT_LT(r.events[0].n, 2.84 / (0.5 * 0.5)) << "e(40) > 0.5";
   EXPECT_GT(r.ball_dissipated_end, 0.0);
+}
+
+// The Hertz ball (-ball_law hertz, F = k c^(3/2)) through the whole program. On a wall (a
+// stiff, heavy, clamped beam) it returns at its speed after the closed-form contact time, with
+// the closed-form maximum compression (power law p = 3/2: c_max = (5 m v^2/(4 k))^(2/5),
+// t = 2 (c_max/v) B(2/5, 1/2)/(5/2)).
+TEST(BallImpact, HertzOnAWallBeam)
+{
+  for (double v : {1.0, 10.0}) {
+    BallParams b;
+    BallParamsUseLaw(&b, ContactLawFind("hertz")); // k = 5e5 N/m^(3/2), 42 g
+    b.speed = v;
+    const double c_max = std::pow(1.25 * b.mass * v * v / 5e5, 0.4);
+    const double tau   = 2 * c_max / v * std::tgamma(0.4) * std::tgamma(0.5) / std::tgamma(0.9) / 2.5;
+    ImpactParams ip;
+    ip.x                 = 0.55;
+    const ImpactResult r = RunImpact(PETSC_COMM_WORLD, WallBeam(1e12, 1e7), b, ip, {{"-ts_type", "cn"}, {"-ts_dt", "1e-6"}});
+    EXPECT_EQ(r.contacts, 1);
+    EXPECT_NEAR(r.acor, 1.0, 1e-6) << "elastic: e = 1";
+    EXPECT_NEAR(r.contact_time / tau, 1.0, 1e-6) << "v = " << v;
+    EXPECT_NEAR(r.max_compression / c_max, 1.0, 1e-6) << "v = " << v;
+    EXPECT_NEAR(r.peak_force / (5e5 * std::pow(c_max, 1.5)), 1.0, 2e-6);
+  }
+}
+
+// On the default beam (1.1 m free-free, struck at 0.9 m) the energy balance of a Hertz impact
+// closes to the integrator's accuracy: it falls with the step at least as dt^2 for RK4 (the
+// force is C^1 but not C^2 at c = 0, which caps RK4 near dt^2.5) and as dt^2 for
+// Crank-Nicolson; the ball dissipates nothing and its ACOR is corrected by -ball_loss_factor.
+TEST(BallImpact, HertzConservesEnergyOnTheDefaultBeam)
+{
+  BallParams b;
+  BallParamsUseLaw(&b, ContactLawFind("hertz"));
+  ImpactParams ip;
+  ip.x = 0.9;
+  for (const char *type : {"rk", "cn"}) {
+    double err[2];
+    for (int level = 0; level < 2; ++level) {
+      const std::string  dt = level ? "5e-6" : "1e-5";
+      const ImpactResult r  = RunImpact(PETSC_COMM_WORLD, AluminiumBeam(1.1), b, ip, {{"-ts_type", type}, {"-ts_rk_type", "4"}, {"-ts_adapt_type", "none"}, {"-ts_dt", dt}});
+      err[level]            = std::abs(r.energy_error);
+      EXPECT_EQ(r.contacts, 1);
+      EXPECT_NEAR(r.ball_dissipated_end, 0.0, 1e-20); // J, round-off of W - stored
+      EXPECT_EQ(r.acor_corrected, r.acor * 0.85);
+      EXPECT_NEAR(r.acor, 0.5758063, 5e-6) << type << " dt " << dt; // RK4 at 1.25e-6 s: 0.57580633
+
+    }
+    EXPECT_LT(err[0], std::string(type) == "rk" ? 3e-8 : 5e-6) << type;
+    EXPECT_GT(err[0] / err[1], std::string(type) == "rk" ? 4.5 : 3.5) << type << ": the energy error must fall with the step";
+    EXPECT_LT(err[0] / err[1], std::string(type) == "rk" ? 20 : 4.5) << type;
+  }
 }

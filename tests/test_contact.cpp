@@ -289,3 +289,35 @@ TEST(RigidBody, Equation11AndItsForcedFitAgreeWithMomentumAndEnergy)
     }
 }
 
+// The Hertz ball F = k c^(3/2) on a rigid wall (power law p = 3/2): c_max = ((p+1) m v^2/(2k))^(1/(p+1))
+// and t = 2 (c_max/v) B(1/(p+1), 1/2)/(p+1) (the Beta function from tgamma here), e = 1; the
+// law's closed forms and an RK4 bounce under F = k c^(3/2) written here must both give them,
+// and the contact time falls with speed as v^(-1/5).
+TEST(ContactLaw, HertzOnARigidWallAgainstTheClosedForm)
+{
+  const double p = 1.5;
+  for (double k : {5e5, 3e7})
+    for (double v : {0.5, 1.0, 10.0, 40.0}) {
+      BallParams b = BallWithLaw("hertz");
+      b.mass       = 0.145;
+      b.speed      = v;
+      ASSERT_TRUE(BallValueSet(&b, "hertz_k", k));
+      const double c_max = std::pow((p + 1) * b.mass * v * v / (2 * k), 1 / (p + 1));
+      const double a = 1 / (p + 1), beta = std::tgamma(a) * std::tgamma(0.5) / std::tgamma(a + 0.5);
+      const double tau = 2 * c_max / v * beta / (p + 1);
+      EXPECT_NEAR(ContactWallMaxCompression(b, v) / c_max, 1.0, 1e-14);
+      EXPECT_NEAR(ContactWallTime(b, v) / tau, 1.0, 1e-13);
+      EXPECT_EQ(BallCorAt(b, v), 1.0);
+      const WallBounce w = Bounce([&](double c) { return c > 0 ? k * std::pow(c, p) : -k * std::pow(-c, p); }, [](double) {}, b.mass, v, c_max / v / 20000);
+      EXPECT_NEAR(w.max_compression / c_max, 1.0, 1e-9) << "k = " << k << ", v = " << v;
+      EXPECT_NEAR(w.contact_time / tau, 1.0, 1e-8) << "k = " << k << ", v = " << v;
+      EXPECT_NEAR(w.cor, 1.0, 1e-9);
+      EXPECT_NEAR(ContactWallTime(b, v) / ContactWallTime(b, 1.0), std::pow(v, -0.2), 1e-13);
+      ContactState s;
+      EXPECT_NEAR(ContactForce(b, s, c_max), k * std::pow(c_max, 1.5), 1e-13 * k * std::pow(c_max, 1.5));
+      EXPECT_NEAR(ContactStoredEnergy(b, s, c_max), 0.5 * b.mass * v * v, 1e-13 * b.mass * v * v) << "all the kinetic energy stored at c_max";
+    }
+  const BallParams b = BallWithLaw("hertz");
+  EXPECT_TRUE(ContactElastic(b) && !ContactLinear(b) && !ContactHasHysteresis(b));
+  EXPECT_EQ(BallValue(b, "hertz_k"), 5e5);
+}

@@ -14,12 +14,14 @@ namespace beamimpact {
 // by its declaration and its entry in the list (-help order; the first is the default).
 const ContactLaw &LinearContactLaw();
 const ContactLaw &HysteresisContactLaw();
+const ContactLaw &HertzContactLaw();
 
 const std::vector<const ContactLaw *> &ContactLaws()
 {
   static const std::vector<const ContactLaw *> laws = {
     &LinearContactLaw(),
     &HysteresisContactLaw(),
+    &HertzContactLaw(),
   };
   return laws;
 }
