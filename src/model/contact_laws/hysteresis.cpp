@@ -124,7 +124,13 @@ int HysteresisLaw::Configure(const ContactLawInput &in, BallParams *b, std::stri
 {
   if (const int code = CharacterisationConflict(in, why)) return code;
   PetscReal &k1 = b->value[kK1], &m = b->value[kM], &n = b->value[kN], &cor = b->value[kCor];
-  if (in.Given("-ball_cor_table") && !in.read_cor_table(in.Text("-ball_cor_table"), &b->cor_table, why)) return PETSC_ERR_FILE_UNEXPECTED;
+  if (in.Given("-ball_cor_table")) {
+    if (!in.read_cor_table) {
+      *why = "-ball_cor_table: no reader of e(v) tables was given to the hysteretic law";
+      return PETSC_ERR_PLIB;
+    }
+    if (!in.read_cor_table(in.Text("-ball_cor_table"), &b->cor_table, why)) return PETSC_ERR_FILE_UNEXPECTED;
+  }
   if (in.Given("-ball_cor")) n = BallExponentFromCor(m, cor);
   if (in.Given("-ball_cor_table")) n = BallExponentAt(*b, b->speed); // the first contact's; each later contact sets its own
   if (in.Given("-ball_contact_time")) {
