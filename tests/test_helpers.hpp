@@ -45,10 +45,10 @@ inline BeamParams WallBeam(PetscReal EI, PetscReal mu, PetscInt nodes = 21)
   return p;
 }
 
-inline BallParams Superball(ContactLawKind law = ContactLawKind::Linear)
+inline BallParams Superball(const char *law = "linear")
 {
-  BallParams b; // 42 g, 1 m/s, k = 2e4 N/m; hysteresis k1 = 2e4, m = 1, n = 1.768
-  b.law = law;
+  BallParams b; // 42 g, 1 m/s, k = 2e4 N/m; hysteresis k1 = 2e4, m = 1, n = 1.768 (the laws' defaults)
+  BallParamsUseLaw(&b, ContactLawFind(law));
   return b;
 }
 

@@ -4,6 +4,7 @@
 
 #include "app/tasks.hpp"
 #include "base/option_table.hpp"
+#include "io/ball_options.hpp"
 #include "io/beam_options.hpp"
 #include "io/scenario_options.hpp"
 #include "run/impact_params.hpp"
@@ -16,7 +17,7 @@ namespace beamimpact {
 
 namespace {
 
-// INTERIM, until their modules register tables of their own (the ball: io/ball_options.cpp; the
+// INTERIM, until their modules register tables of their own (the
 // convergence study and -reference: studies/convergence.cpp,
 // app/tasks.cpp): the names their readers read, with the units a sweep gives its columns, so
 // that the unknown-option check and the sweeps know them. Their help and defaults are still
@@ -27,19 +28,6 @@ const OptionModule &InterimOptionTable()
     "interim",
     "Options of modules not yet on a table",
     {
-      OptionReal("-ball_mass", "kg", "Ball mass m_b", ""),
-      OptionReal("-ball_speed", "m/s", "Incident speed v_i", ""),
-      OptionText("-ball_law", "Contact law"),
-      OptionReal("-ball_k", "N/m", "Linear spring stiffness k", ""),
-      OptionReal("-ball_k1", "N/m^m", "Hysteresis loading coefficient k1", ""),
-      OptionReal("-ball_m", "1", "Hysteresis loading exponent m", ""),
-      OptionReal("-ball_n", "1", "Hysteresis unloading exponent n", ""),
-      OptionReal("-ball_cor", "1", "Rigid-wall coefficient of restitution e", ""),
-      OptionReal("-ball_contact_time", "s", "Rigid-wall contact time tau", ""),
-      OptionReal("-ball_test_speed", "m/s", "Speed of the wall test", ""),
-      OptionFile("-ball_cor_table", "File of rows 'v e'"),
-      OptionReal("-ball_radius", "m", "Ball radius", ""),
-      OptionReal("-ball_loss_factor", "1", "Factor applied to the ACOR for ball losses", ""),
       OptionText("-reference", "ts or modal"),
       OptionReal("-reference_max_memory", "GB", "Memory limit of -reference modal", ""),
       OptionText("-convergence_configs", "Integrator configurations"),
@@ -64,6 +52,7 @@ PetscErrorCode RegisterAll()
   PetscFunctionBeginUser;
   OptionModuleRegister(&TaskOptionTable());
   OptionModuleRegister(&BeamOptionTable());
+  OptionModuleRegister(&BallOptionModule());
   OptionModuleRegister(&SwingOptionTable());
   OptionModuleRegister(&ImpactOptionTable());
   OptionModuleRegister(&MonitorOptionTable());

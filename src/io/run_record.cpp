@@ -84,18 +84,7 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   rec->add("ball_speed", ball.speed);
   rec->add("ball_law", ContactLawName(ball.law));
   if (ball.radius > 0) rec->add("ball_radius", ball.radius);
-  if (ball.law == ContactLawKind::Linear) rec->add("ball_k", ball.k);
-  else {
-    rec->add("ball_k1", ball.k1);
-    rec->add("ball_m", ball.m);
-    rec->add("ball_n", ball.n);
-    if (ball.cor > 0) rec->add("ball_cor", ball.cor);
-    if (ball.contact_time > 0) {
-      rec->add("ball_contact_time", ball.contact_time);
-      rec->add("ball_test_speed", ball.test_speed);
-    }
-    if (!ball.cor_table.empty()) rec->add("ball_cor_table", ball.cor_table.file);
-  }
+  for (const ContactLawRecord &r : ContactLawRecordOf(ball)) r.is_text ? rec->add(r.name, r.text) : rec->add(r.name, (double)r.value); // its parameters and wall values
   rec->add("ball_loss_factor", ball.loss_factor);
   // The values used: a derived default (-impact_window, -impact_max_time < 0) as computed.
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);

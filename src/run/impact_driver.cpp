@@ -97,7 +97,7 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
   approaching.speed      = s->approach;
   s->scales              = ContactScalesOf(s->sys, approaching);
   s->contact             = ContactState();
-  s->contact.n           = BallExponentAt(sc.ball, s->approach); // the first contact's exponent, from its approach speed
+  ContactBegin(sc.ball, &s->contact, s->approach); // the first contact's law state (its exponent), from its approach speed
   PetscFunctionReturn(0);
 }
 

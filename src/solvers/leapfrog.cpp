@@ -215,7 +215,7 @@ public:
   {
     char text[256];
     PetscSNPrintf(text, sizeof(text), "(leapfrog, fixed step %g s, dt_max = %g s): with the %s law energy can only be %s", (double)dt, (double)dt_stable, ContactLawName(ball.law),
-                  ball.law == ContactLawKind::Linear ? "conserved" : "lost");
+                  ContactElastic(ball) ? "conserved" : "lost");
     return text;
   }
 };

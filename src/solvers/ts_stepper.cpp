@@ -358,7 +358,7 @@ std::string TSStepper::EnergyGrowthCause() const
   else PetscSNPrintf(cause, sizeof(cause), "the %s does not resolve the contact (contact time scale %g s); reduce %s", fixed_step ? "step" : "tolerance", (double)scales.time, reduce);
   char text[700];
   PetscSNPrintf(text, sizeof(text), "(-ts_type %s%s%s, %s step %g s): with the %s law energy can only be %s; likely cause: %s", info.ts_type.c_str(), rk_type.empty() ? "" : " -ts_rk_type ", rk_type.c_str(),
-                fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(P.ball.law), P.ball.law == ContactLawKind::Linear ? "conserved" : "lost", cause);
+                fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(P.ball.law), ContactElastic(P.ball) ? "conserved" : "lost", cause);
   return text;
 }
 

@@ -276,7 +276,7 @@ ContactScales ContactScalesOf(const BeamSystem &sys, const BallParams &ball)
   s.time            = ContactTimeScale(ball) * std::sqrt(M / (M + ball.mass));
   s.compression     = ContactCompressionScale(ball);
   s.speed           = ball.speed;
-  s.stiffness       = ball.law == ContactLawKind::Linear ? ball.k : std::max(ball.m, ball.n) * ball.k1 * std::pow(2 * s.compression, ball.m - 1);
+  s.stiffness       = ContactStiffnessBound(ball);
   return s;
 }
 
