@@ -238,9 +238,8 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   if (p.has_clamp) {
     PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-beam_clamp %g,%g is not allowed: need 0 <= x0 < x1 <= L = %g (m)", (double)p.clamp_x0, (double)p.clamp_x1, (double)p.length);
-    const BeamOperator op    = BeamOperatorBuild(p);
-    PetscInt           nfree = 0;
-    for (char held : op.held) nfree += !held;
+    PetscInt nfree = 0;
+    for (NodeHold h : BeamNodeHolds(p)) nfree += h == NodeHold::None;
     PetscCheck(nfree >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_clamp %g,%g holds all but %" PetscInt_FMT " of the %" PetscInt_FMT " nodes: at least 3 must stay free", (double)p.clamp_x0,
                (double)p.clamp_x1, nfree, p.nodes);
   }

@@ -1,5 +1,5 @@
-// Euler-Bernoulli beam operator on a uniform grid: supports, curvature terms,
-// stiffness action, energies and the -beam_* options. See beam.hpp.
+// The beam's parameters on a uniform grid: sections, supports and holds, curvature kinds,
+// the impact stencil, the rigid body. See beam.hpp.
 #include "model/beam.hpp"
 
 #include <algorithm>
@@ -73,150 +73,24 @@ std::vector<NodeHold> BeamNodeHolds(const BeamParams &p)
   return hold;
 }
 
-BeamOperator BeamOperatorBuild(const BeamParams &p)
+std::vector<Curvature> BeamCurvatureKinds(const std::vector<NodeHold> &hold)
 {
-  BeamOperator op;
-  op.N  = p.nodes;
-  op.L  = p.length;
-  op.h  = p.length / (p.nodes - 1);
-  op.EI = p.EI;
-  op.mu = p.mu;
-  const PetscInt N = op.N;
-  op.mass.resize(N);
-  op.EI_node.resize(N);
-  for (PetscInt i = 0; i < N; ++i) { // cell [x_i - h/2, x_i + h/2] within the beam
-    const PetscReal         a = std::max<PetscReal>(0, (i - 0.5) * op.h), b = std::min(op.L, (i + 0.5) * op.h);
-    const SectionProperties s = BeamSectionMean(p, a, b);
-    op.mass[i]                = s.mu * op.h;
-    op.EI_node[i]             = s.EI;
-  }
-  op.mass[0] *= 0.5; // = mean mu over the half cell x (h/2)
-  op.mass[N - 1] *= 0.5;
-
-  const std::vector<NodeHold> hold = BeamNodeHolds(p);
-  std::vector<char>           clamp_held(N, 0);
-  op.held.assign(N, 0);
-  for (PetscInt i = 0; i < N; ++i) {
-    clamp_held[i] = hold[i] == NodeHold::Clamp;
-    op.held[i]    = hold[i] != NodeHold::None;
-  }
-
-  op.curvature.assign(N, Curvature::None);
+  const PetscInt         N = (PetscInt)hold.size();
+  std::vector<Curvature> curvature(N, Curvature::None);
+  auto                   held = [&](PetscInt i) { return hold[i] != NodeHold::None; };
   for (PetscInt k = 0; k < N; ++k) {
-    const bool left_free  = k > 0 && !op.held[k - 1];
-    const bool right_free = k < N - 1 && !op.held[k + 1];
-    if (clamp_held[k]) {
-      if (left_free && right_free) op.curvature[k] = Curvature::Standard; // a one-node "region" acts as a pin
-      else if (right_free) op.curvature[k] = Curvature::MirrorRight;
-      else if (left_free) op.curvature[k] = Curvature::MirrorLeft;
+    const bool left_free  = k > 0 && !held(k - 1);
+    const bool right_free = k < N - 1 && !held(k + 1);
+    if (hold[k] == NodeHold::Clamp) {
+      if (left_free && right_free) curvature[k] = Curvature::Standard; // a one-node "region" acts as a pin
+      else if (right_free) curvature[k] = Curvature::MirrorRight;
+      else if (left_free) curvature[k] = Curvature::MirrorLeft;
     } else if (k > 0 && k < N - 1) {
-      op.curvature[k] = Curvature::Standard; // interior node (also next to a pinned one)
+      curvature[k] = Curvature::Standard; // interior node (also next to a pinned one)
     } // free or pinned end node: no curvature term
   }
-  return op;
+  return curvature;
 }
-
-static inline PetscReal CurvatureWeight(Curvature c)
-{
-  switch (c) {
-  case Curvature::Standard: return 1.0;
-  case Curvature::MirrorRight:
-  case Curvature::MirrorLeft: return 0.5;
-  default: return 0.0;
-  }
-}
-
-PetscReal BeamCurvature(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt k)
-{
-  const PetscReal ih2 = 1.0 / (op.h * op.h);
-  switch (op.curvature[k]) {
-  case Curvature::Standard: return (y[(k - 1) * stride] - 2.0 * y[k * stride] + y[(k + 1) * stride]) * ih2;
-  case Curvature::MirrorRight: return 2.0 * y[(k + 1) * stride] * ih2;
-  case Curvature::MirrorLeft: return 2.0 * y[(k - 1) * stride] * ih2;
-  default: return 0.0;
-  }
-}
-
-PetscReal BeamCurvatureDerivative(const BeamOperator &op, PetscInt k, PetscInt i)
-{
-  const PetscReal ih2 = 1.0 / (op.h * op.h);
-  switch (op.curvature[k]) {
-  case Curvature::Standard: return i == k ? -2.0 * ih2 : (std::abs(i - k) == 1 ? ih2 : 0.0);
-  case Curvature::MirrorRight: return i == k + 1 ? 2.0 * ih2 : 0.0;
-  case Curvature::MirrorLeft: return i == k - 1 ? 2.0 * ih2 : 0.0;
-  default: return 0.0;
-  }
-}
-
-void BeamStiffnessApply(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt i0, PetscInt i1, PetscReal *f, PetscInt fstride)
-{
-  const PetscInt  N = op.N;
-  const PetscReal c = op.h;
-  // Weighted curvatures EI_k w_k kappa_k for k in [i0-1, i1], kept in a 3-entry window.
-  auto wk = [&](PetscInt k) -> PetscReal {
-    if (k < 0 || k >= N) return 0.0;
-    const Curvature kind = op.curvature[k];
-    return kind == Curvature::None ? 0.0 : op.EI_node[k] * CurvatureWeight(kind) * BeamCurvature(op, y, stride, k);
-  };
-  PetscReal wprev = wk(i0 - 1), wcur = wk(i0);
-  for (PetscInt i = i0; i < i1; ++i) {
-    const PetscReal wnext = wk(i + 1);
-    PetscReal       s     = 0.0;
-    if (!op.held[i]) {
-      if (i > 0) s += wprev * BeamCurvatureDerivative(op, i - 1, i);
-      s += wcur * BeamCurvatureDerivative(op, i, i);
-      if (i < N - 1) s += wnext * BeamCurvatureDerivative(op, i + 1, i);
-    }
-    f[i * fstride] = c * s;
-    wprev          = wcur;
-    wcur           = wnext;
-  }
-}
-
-PetscInt BeamStiffnessRow(const BeamOperator &op, PetscInt i, PetscInt cols[5], PetscReal vals[5])
-{
-  if (op.held[i]) return 0;
-  PetscReal row[5] = {0, 0, 0, 0, 0}; // columns i-2 .. i+2
-  for (PetscInt k = std::max<PetscInt>(0, i - 1); k <= std::min<PetscInt>(op.N - 1, i + 1); ++k) {
-    const PetscReal w = op.EI_node[k] * CurvatureWeight(op.curvature[k]);
-    if (w == 0.0) continue;
-    const PetscReal di = BeamCurvatureDerivative(op, k, i);
-    if (di == 0.0) continue;
-    for (PetscInt l = k - 1; l <= k + 1; ++l) {
-      if (l < 0 || l >= op.N) continue;
-      row[l - i + 2] += w * di * BeamCurvatureDerivative(op, k, l);
-    }
-  }
-  PetscInt n = 0;
-  for (PetscInt d = 0; d < 5; ++d) {
-    const PetscInt l = i + d - 2;
-    if (l < 0 || l >= op.N || op.held[l] || row[d] == 0.0) continue;
-    cols[n]   = l;
-    vals[n++] = op.h * row[d];
-  }
-  return n;
-}
-
-PetscReal BeamStrainEnergy(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt k0, PetscInt k1)
-{
-  PetscReal U = 0.0;
-  for (PetscInt k = k0; k < k1; ++k) {
-    const PetscReal w = CurvatureWeight(op.curvature[k]);
-    if (w == 0.0) continue;
-    const PetscReal kap = BeamCurvature(op, y, stride, k);
-    U += op.EI_node[k] * w * kap * kap;
-  }
-  return 0.5 * op.h * U;
-}
-
-PetscReal BeamKineticEnergy(const BeamOperator &op, const PetscReal *v, PetscInt stride, PetscInt i0, PetscInt i1)
-{
-  PetscReal T = 0.0;
-  for (PetscInt i = i0; i < i1; ++i) T += op.mass[i] * v[i * stride] * v[i * stride];
-  return 0.5 * T;
-}
-
-ImpactStencil BeamImpactStencil(const BeamOperator &op, PetscReal x_imp) { return GridImpactStencil(op.N, op.L, x_imp); }
 
 ImpactStencil GridImpactStencil(PetscInt N, PetscReal L, PetscReal x_imp)
 {
@@ -234,24 +108,6 @@ ImpactStencil GridImpactStencil(PetscInt N, PetscReal L, PetscReal x_imp)
   st.j = j;
   st.w = 1.0 - frac;
   return st;
-}
-
-PetscReal BeamMaxFrequencyBound(const BeamOperator &op, const ImpactStencil &s, PetscReal k_extra, PetscReal m_extra)
-{
-  PetscReal lam = 0.0;
-  for (PetscInt i = 0; i < op.N; ++i) {
-    if (op.held[i]) continue;
-    PetscInt  cols[5];
-    PetscReal vals[5];
-    const PetscInt n   = BeamStiffnessRow(op, i, cols, vals);
-    PetscReal      sum = 0.0;
-    for (PetscInt q = 0; q < n; ++q) sum += std::abs(vals[q]);
-    PetscReal g = i == s.j ? s.w : (i == s.j + 1 ? 1.0 - s.w : 0.0);
-    if (g != 0.0) sum += k_extra * g * (1.0 + 1.0); // |g_i| (|w| + |1-w| + 1)
-    lam = std::max(lam, sum / op.mass[i]);
-  }
-  if (m_extra > 0) lam = std::max(lam, 2.0 * k_extra / m_extra);
-  return std::sqrt(lam);
 }
 
 PetscReal BeamFundamentalFrequencyEstimate(const BeamParams &p)
