@@ -28,7 +28,21 @@ const ForceTermEntry kForceTerms[] = {
   {"grip", GripTermCreate},
 };
 
-inline PetscReal &At(PetscReal *a, PetscInt d, PetscInt F, PetscInt stride) { return a[(d / F) * stride + d % F]; }
+inline PetscReal &At(PetscReal *a, PetscInt d, PetscInt F, PetscInt stride) { return F == 1 ? a[d * stride] : a[(d / F) * stride + d % F]; }
+
+// f = 0 on [d0, d1), then add(term) adds each term's share, then the rows of held dofs are 0.
+template <class Add>
+void SumOverTerms(const BeamSystem &sys, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs, Add add)
+{
+  const PetscInt F = sys.fields;
+  if (F == 1)
+    for (PetscInt d = d0; d < d1; ++d) f[d * fs] = 0.0;
+  else
+    for (PetscInt d = d0; d < d1; ++d) At(f, d, F, fs) = 0.0;
+  for (const auto &t : sys.forces.terms) add(*t);
+  for (PetscInt d = d0; d < d1; ++d)
+    if (sys.held[d]) At(f, d, F, fs) = 0.0;
+}
 
 } // namespace
 
@@ -86,29 +100,17 @@ void ForceOperatorAssemble(BeamSystem *sys)
 
 void ForceOperatorApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs)
 {
-  const PetscInt F = sys.fields;
-  for (PetscInt d = d0; d < d1; ++d) At(f, d, F, fs) = 0.0;
-  for (const auto &t : sys.forces.terms) t->AddForce(sys, s, d0, d1, f, fs);
-  for (PetscInt d = d0; d < d1; ++d)
-    if (sys.held[d]) At(f, d, F, fs) = 0.0;
+  SumOverTerms(sys, d0, d1, f, fs, [&](const ForceTerm &t) { t.AddForce(sys, s, d0, d1, f, fs); });
 }
 
 void ForceOperatorDampingApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs)
 {
-  const PetscInt F = sys.fields;
-  for (PetscInt d = d0; d < d1; ++d) At(f, d, F, fs) = 0.0;
-  for (const auto &t : sys.forces.terms) t->AddDampingForce(sys, s, d0, d1, f, fs);
-  for (PetscInt d = d0; d < d1; ++d)
-    if (sys.held[d]) At(f, d, F, fs) = 0.0;
+  SumOverTerms(sys, d0, d1, f, fs, [&](const ForceTerm &t) { t.AddDampingForce(sys, s, d0, d1, f, fs); });
 }
 
 void ForceOperatorDrive(const BeamSystem &sys, PetscReal t, const FrameMotion *frame, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs)
 {
-  const PetscInt F = sys.fields;
-  for (PetscInt d = d0; d < d1; ++d) At(f, d, F, fs) = 0.0;
-  for (const auto &term : sys.forces.terms) term->AddDrive(sys, t, frame, d0, d1, f, fs);
-  for (PetscInt d = d0; d < d1; ++d)
-    if (sys.held[d]) At(f, d, F, fs) = 0.0;
+  SumOverTerms(sys, d0, d1, f, fs, [&](const ForceTerm &term) { term.AddDrive(sys, t, frame, d0, d1, f, fs); });
 }
 
 void ForceOperatorEnergy(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *elastic, PetscReal *others)

@@ -54,7 +54,7 @@ PetscReal FrameMotionAt(const FrameMotion &frame, const ContactCoupling &g);
 struct ForceState {
   const PetscReal   *y = nullptr;     // m (rad)
   PetscInt           ys = 1;          // node stride of y
-  const PetscReal   *v = nullptr;     // m/s (rad/s); nullptr: zero velocities (the velocity parts are left out)
+  const PetscReal   *v = nullptr;     // m/s (rad/s); nullptr: the velocity-dependent parts left out (callers pass none only when no term damps)
   PetscInt           vs = 1;          // node stride of v
   PetscReal          t = 0;           // s
   const FrameMotion *frame = nullptr; // nullptr: the frame at rest
@@ -149,7 +149,8 @@ bool ForceOperatorDriven(const BeamSystem &sys, const FrameMotion *frame);
 // The beam's share of the frame's momentum term Q = v_f^T M v + sum of the terms' FrameImpulse
 // (J). With the ball's m_b v_f(x) v_b, dQ/dt = -v_f^T f_frame-terms = the power the frame puts
 // in (for a rigid v_f of a free beam, as the grip requires), so the hands' work since t = 0 is
-// Q(t) - Q(0) in closed form (docs/model.md, "The hands").
+// Q(t) - Q(0) in closed form (docs/model.md, "The hands"). Needs s.y and s.v; 0 unless
+// ForceOperatorDriven.
 PetscReal ForceOperatorFrameMomentum(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1);
 // The damping scales summed over the terms.
 DampingScales ForceOperatorDampingScales(const BeamSystem &sys);
