@@ -221,7 +221,7 @@ TEST(ReferenceRegistry, MethodsChoicesAndWhenTheyApply)
   EXPECT_EQ(ReferenceMethodFind("nope"), nullptr);
   Scene       lin = Coarse(), hyst = Coarse(), grip = Coarse();
   std::string why;
-  hyst.ball = Superball(ContactLawKind::Hysteresis);
+  hyst.ball = Superball("hysteresis");
   grip.beam.grip.on = true, grip.beam.grip.x_a = 0, grip.beam.grip.x_b = 0.1, grip.beam.grip.stiffness = 1e5;
   EXPECT_STREQ(ReferenceMethodDefault(lin)->name, "modal");
   EXPECT_STREQ(ReferenceMethodDefault(hyst)->name, "run");

@@ -2,10 +2,19 @@
 // here.
 #include "app/registry.hpp"
 
+#include "app/tasks.hpp"
 #include "base/option_table.hpp"
+#include "io/ball_options.hpp"
+#include "io/beam_options.hpp"
+#include "io/scenario_options.hpp"
+#include "run/impact_params.hpp"
 #include "run/reference.hpp"
+#include "solvers/leapfrog.hpp"
+#include "solvers/modes.hpp"
+#include "solvers/petsc_options.hpp"
 #include "studies/convergence_plan.hpp"
 #include "studies/convergence_runs.hpp"
+#include "studies/sweep_plan.hpp"
 
 namespace beamimpact {
 
@@ -17,8 +26,17 @@ PetscErrorCode RegisterAll()
   ReferenceMethodRegister(&kReferenceTimeStepping);
   ReferenceMethodRegister(&kReferenceModal);
   ReferenceMethodRegister(&kReferenceRun);
-  // One line per module: OptionModuleRegister(&kModuleOptions); (after the methods: the
-  // reference choices come from the registry)
+  // One line per module (after the methods: the reference choices come from the registry).
+  OptionModuleRegister(&TaskOptionTable());
+  OptionModuleRegister(&BeamOptionTable());
+  OptionModuleRegister(&BallOptionModule());
+  OptionModuleRegister(&SwingOptionTable());
+  OptionModuleRegister(&ImpactOptionTable());
+  OptionModuleRegister(&MonitorOptionTable());
+  OptionModuleRegister(&ModesOptionTable());
+  OptionModuleRegister(&LeapfrogOptionTable());
+  OptionModuleRegister(&PetscSolverOptionTable());
+  OptionModuleRegister(&kSweepOptions);
   OptionModuleRegister(&ReferenceOptionModule());
   OptionModuleRegister(&ConvergenceOptionModule());
   PetscFunctionReturn(0);

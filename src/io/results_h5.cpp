@@ -86,6 +86,7 @@ PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
   for (auto &kv : record.numbers) PetscCall(WriteNumberAttr((hid_t)loc, kv.first.c_str(), kv.second));
   for (auto &kv : record.integers) PetscCall(WriteIntegerAttr((hid_t)loc, kv.first.c_str(), kv.second));
   for (auto &kv : record.strings) PetscCall(WriteStringAttr((hid_t)loc, kv.first.c_str(), kv.second));
+  PetscCall(RunRecordWriteOptionsUsed(loc, record)); // the options read, with units (io/run_record.hpp)
   PetscFunctionReturn(0);
 }
 
@@ -186,8 +187,6 @@ static PetscErrorCode H5WriteImpactAttributes(hid_t file, const ImpactResult &r)
   a.add("results_columns", ImpactResultColumnNames());
   a.add("contact_time_scale", r.scales.contact_time_scale);
   a.add("compression_scale", r.scales.compression_scale);
-  a.add("ball_wall_contact_time", r.scales.ball_wall_contact_time);
-  a.add("ball_wall_cor", r.scales.ball_wall_cor);
   PetscCall(H5WriteAttributes(file, a));
   PetscFunctionReturn(0);
 }

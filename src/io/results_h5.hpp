@@ -18,8 +18,9 @@
 namespace beamimpact {
 
 // Writes a new file (replacing any) for results of the scenario sc: root attributes (the record,
-// the table's column order results_columns and the first result's scales: contact_time_scale,
-// compression_scale, ball_wall_contact_time, ball_wall_cor), /results (every column of the
+// with the ball's rigid-wall values ball_wall_contact_time and ball_wall_cor; the table's column
+// order results_columns and the first result's scales: contact_time_scale, compression_scale),
+// /results (every column of the
 // table, one row per result, with the attributes unit, description, applies (1 or 0: whether
 // the column applies to sc; NaN where it does not) and applies_when (in words)), and for the
 // first result its /events, /series and /snapshots when they hold data.

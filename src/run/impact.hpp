@@ -110,12 +110,11 @@ struct MonitorPeaks {
 };
 
 // The scales of one impact, for studies that judge a step or a run against them (the stability
-// study reads them from the file's root attributes instead of re-deriving them).
+// study reads them from the file's root attributes instead of re-deriving them; the ball's
+// rigid-wall values are in the run record, from its law: ball_wall_contact_time, ball_wall_cor).
 struct ImpactScales {
-  PetscReal contact_time_scale     = 0; // s, T_r: the contact time against the beam's free mass (ContactScales::time)
-  PetscReal compression_scale      = 0; // m, the compression scale of the event indicators (ContactScales::compression)
-  PetscReal ball_wall_contact_time = 0; // s, the ball's contact time on a rigid wall at the first contact's approach speed, from its law
-  PetscReal ball_wall_cor          = 0; // 1, its coefficient of restitution there
+  PetscReal contact_time_scale = 0; // s, T_r: the contact time against the beam's free mass (ContactScales::time)
+  PetscReal compression_scale  = 0; // m, the compression scale of the event indicators (ContactScales::compression)
 };
 
 // The result of one impact (identical on every rank of the communicator), in three parts

@@ -54,7 +54,7 @@ void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep,
   while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, run.s_min, &s_max)) {
     s += s_max;
     const PetscReal c = ph.Derivative(s, 0);
-    tally->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, run.ball->k * c});
+    tally->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, ContactLinearStiffness(*run.ball) * c});
     tally->max_compression = std::max(tally->max_compression, c);
     // Continue after this maximum: restart the search from the state at s.
     std::vector<PetscReal> qs, qds;
@@ -118,7 +118,7 @@ void ModalTallyClose(const BallParams &ball, ContactTally *tally)
       tally->contact_time_total += e.time - start;
     }
   }
-  tally->peak_force = ball.k * tally->max_compression;
+  tally->peak_force = ContactLinearStiffness(ball) * tally->max_compression;
 }
 
 // The measures of the state (separated; the linear spring stores nothing then) as a stepper's
@@ -167,8 +167,8 @@ bool ModalReferenceApplies(const Scenario &sc, std::string *why)
 {
   std::string w;
   if (sc.beam.grip.on) w = "with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal reference; use a tight TS run as the reference";
-  // merge (laws): "is the law linear" becomes a question to the contact law
-  else if (sc.ball.law != ContactLawKind::Linear) w = "needs -ball_law linear (the hysteretic law is nonlinear: use a tight run of a high-order integrator as the reference)";
+  else if (!ContactLinear(sc.ball))
+    w = std::string("needs -ball_law linear (the ") + ContactLawName(sc.ball.law) + " law is nonlinear: use a tight run of a high-order integrator as the reference)";
   if (why) *why = w;
   return w.empty();
 }
@@ -203,9 +203,8 @@ void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run,
   rec->energy_end = ModalEnergy(*run.S, run.q, run.qd, false) + D;
   rec->final_time = run.t;
   rec->V_x        = V_x;
-  rec->approach   = sc.ball.speed + V_x;
   BallParams approaching = sc.ball; // the contact's scales are those of the approach speed, as for a stepped run
-  approaching.speed      = rec->approach;
+  approaching.speed      = sc.ball.speed + V_x;
   rec->scales            = ContactScalesOf(sys, approaching);
 }
 
@@ -234,7 +233,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   res->ts_type       = "modal";
   res->formulation   = "exact";
   rec.after_used     = "modal"; // exact throughout
-  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ball.k);
+  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ContactLinearStiffness(ball));
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
   // which also give the dissipated energy of every phase exactly.
   const bool       damped = sys.Damped();

@@ -34,13 +34,11 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
 
 } // namespace
 
-ImpactScales ImpactScalesOf(const BallParams &ball, const ContactScales &scales, PetscReal approach)
+ImpactScales ImpactScalesOf(const ContactScales &scales)
 {
   ImpactScales s;
-  s.contact_time_scale     = scales.time;
-  s.compression_scale      = scales.compression;
-  s.ball_wall_contact_time = ContactWallTime(ball, approach); // merge (laws): the law's own wall contact time and COR
-  s.ball_wall_cor          = BallCorAt(ball, approach);
+  s.contact_time_scale = scales.time;
+  s.compression_scale  = scales.compression;
   return s;
 }
 
@@ -65,7 +63,7 @@ void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord
   res->events     = std::move(rec.contact.events);
   res->series     = std::move(rec.series);
   res->after_used = rec.after_used;
-  res->scales     = ImpactScalesOf(sc.ball, rec.scales, rec.approach);
+  res->scales     = ImpactScalesOf(rec.scales);
 }
 
 std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r)

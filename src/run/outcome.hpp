@@ -26,8 +26,7 @@ struct ImpactRecord {
   PetscReal     energy_end = 0;   // J, the same at the end
   PetscReal     final_time = 0;   // s
   PetscReal     V_x        = 0;   // m/s, the swinging bat's speed toward the ball at the impact point
-  PetscReal     approach   = 0;   // m/s, the first contact's approach speed (v_ball + V_x)
-  ContactScales scales;           // of the contact, at that approach speed
+  ContactScales scales;           // of the contact, at the first contact's approach speed (v_ball + V_x)
   std::string   after_used;       // -impact_after as the run resolved it
 };
 
@@ -35,9 +34,8 @@ struct ImpactRecord {
 // record (moved from); sys: the scenario's system (which dofs can move, their masses).
 void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord &&rec, ImpactResult *res);
 
-// The scales of an impact at the first contact's approach speed (m/s) with the contact's
-// scales: T_r, the compression scale, and the ball's rigid-wall contact time and COR there.
-ImpactScales ImpactScalesOf(const BallParams &ball, const ContactScales &scales, PetscReal approach);
+// The scales of an impact from the contact's scales: T_r and the compression scale.
+ImpactScales ImpactScalesOf(const ContactScales &scales);
 
 // The summary's warning line for compression_beyond_radius (empty if not flagged), naming both values.
 std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r);

@@ -86,12 +86,11 @@ ResultColumn Flag(const char *name, PetscBool ImpactResult::*field, Compute comp
 const char *const kAlways = "always";
 const char *const kNoHeld = "a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
 
-// The ball's quantities that depend on its law. merge (laws): whether the law is the linear
-// spring, whose ACOR the paper corrects by -ball_loss_factor, becomes a question to the law.
-bool LinearLaw(const BallParams &b) { return b.law == ContactLawKind::Linear; }
+// The ball's quantities that depend on its law: an elastic law keeps all the work done on it,
+// so the paper corrects its ACOR (and the ball's loss) by -ball_loss_factor.
 
 PetscReal Acor(const OutcomeFacts &f) { return -f.end.ball_v / f.sc->ball.speed; }
-PetscReal AcorCorrected(const OutcomeFacts &f) { return LinearLaw(f.sc->ball) ? Acor(f) * f.sc->ball.loss_factor : Acor(f); }
+PetscReal AcorCorrected(const OutcomeFacts &f) { return ContactElastic(f.sc->ball) ? Acor(f) * f.sc->ball.loss_factor : Acor(f); }
 PetscReal BallDissipated(const OutcomeFacts &f) { return f.end.ball_work - f.end.ball_stored; }
 PetscReal CollisionEfficiency(const OutcomeFacts &f) { return SwingCollisionEfficiency(-f.end.ball_v, f.sc->ball.speed, f.V_x); }
 PivotRig  RigOf(const OutcomeFacts &f) { return PivotRigOf(BeamRigidBodyOf(f.sc->beam), f.sc->beam.pivot_x, f.sc->ball.mass, f.sc->impact.x); }
@@ -141,7 +140,7 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("ball_loss_fraction", "1", &R::ball_loss_fraction, ResultAlways, kAlways,
          [](F f) -> double {
            const BallParams &b = f.sc->ball;
-           return (LinearLaw(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic : BallDissipated(f)) / f.E_in;
+           return (ContactElastic(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic : BallDissipated(f)) / f.E_in;
          },
          "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (linear)"),
     Real("translation_fraction", "1", &R::translation_fraction, ResultNoHeldDof, kNoHeld, [](F f) -> double { return f.E_translation / f.E_in; },

@@ -180,7 +180,7 @@ const OptionModule &ConvergenceOptionModule()
     o.push_back(OptionInt("-convergence_repeats", "Runs per level; the wall time is the minimum", "3", AtLeast(1)));
     o.push_back(OptionReal("-convergence_repeat_budget", "s", "A level is not repeated once its runs took this long (long runs time well once)", "2", NonNegative()));
     o.push_back(OptionChoice("-convergence_reference", ("The reference the runs are measured against: " + ReferenceMethodHelp(true) + "; default: the first that applies (modal for the linear law, run otherwise)").c_str(),
-                             ReferenceMethodNames(true), "modal (linear law), else run"));
+                             ReferenceMethodNames(true), "")); // no fixed default: the scenario's
     OptionSpec reference_config = OptionFile("-convergence_reference_config", "Configuration of the reference run (finest level = reference; error from the last three)");
     reference_config.def        = "options/convergence/reference.opts";
     o.push_back(reference_config);
