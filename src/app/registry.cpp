@@ -3,6 +3,7 @@
 #include "app/registry.hpp"
 
 #include "base/option_table.hpp"
+#include "io/flight_options.hpp"
 
 namespace beamimpact {
 
@@ -10,6 +11,8 @@ PetscErrorCode RegisterAll()
 {
   PetscFunctionBeginUser;
   // One line per module: OptionModuleRegister(&kModuleOptions);
+  OptionModuleRegister(&FlightOptionTable());
+  OptionModuleRegister(&AirOptionTable());
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,7 @@
 // Task drivers and the table -task chooses from. See tasks.hpp.
 #include "app/tasks.hpp"
 
+#include "app/task_flight.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
@@ -35,6 +36,7 @@ const TaskEntry Tasks[] = {
   {"modes", TaskModes},
   {"sweep", TaskSweep},
   {"convergence", TaskConvergence},
+  {"flight", TaskFlight},
 };
 
 const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
@@ -213,6 +215,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)SweepPlanFromOptions(comm, &plan);
   (void)ConvergencePlanFromOptions(comm, sc.ball, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
+  (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);

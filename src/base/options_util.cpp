@@ -146,7 +146,8 @@ PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> 
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
   // PETSc's own solver options left over (a scene's -ts_rk_type under a later -ts_type cn) are
   // a note, as -options_left would print; the program's own are an error (a typo costs a run).
-  static const std::vector<std::string> petsc_prefixes = {"ts_", "snes_", "ksp_", "pc_", "mat_", "vec_", "dm_", "eps_", "st_", "bv_", "ds_", "rg_", "fn_"};
+  static const std::vector<std::string> petsc_prefixes = {"ts_", "snes_", "ksp_", "pc_", "mat_", "vec_", "dm_", "eps_", "st_", "bv_", "ds_", "rg_", "fn_",
+                                                          "flight_ts_", "flight_snes_", "flight_ksp_", "flight_pc_"}; // the flight's TS (-task flight)
   // PETSc's own options read at finalize (-options_left, -malloc_dump, ...): never "unused" here.
   static const std::vector<std::string> at_finalize = {"options_left", "options_view", "malloc", "memory_view", "objects_dump", "log_"};
   std::vector<std::pair<std::string, std::string>> solver, own; // (-name, " -name value")

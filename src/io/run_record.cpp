@@ -35,7 +35,7 @@ static PetscErrorCode RunProvenance(RunRecord *rec)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
+PetscErrorCode RunRecordProgram(RunRecord *rec)
 {
   char        petsc_version[256];
   std::string options;
@@ -47,6 +47,13 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   PetscCall(RunProvenance(rec));
   rec->add("petsc_version", petsc_version);
   rec->add("options", options);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RunRecordProgram(rec));
   rec->add("beam_length", beam.length);
   rec->add("beam_EI", beam.EI);
   rec->add("beam_mu", beam.mu);
