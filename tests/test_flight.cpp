@@ -293,6 +293,14 @@ TEST(FlightVacuum, Parabola)
     }
     EXPECT_LE(r.landing_residual, 1e-12);
   }
+  // A hop shorter than the first step (1 ms): the landing after the top, not the launch.
+  FlightParams p;
+  p.air.density  = 0;
+  p.launch.speed = 0.002, p.launch.angle = 45, p.launch.height = 0;
+  const FlightResult r = Fly(p);
+  EXPECT_EQ(r.steps, 1);
+  EXPECT_NEAR(r.landing.hang_time, 2 * 0.002 * std::sin(M_PI / 4) / p.gravity, 1e-12 * 3e-4);
+  EXPECT_NEAR(r.landing.distance, 0.002 * 0.002 / p.gravity, 1e-9 * 4e-7);
 }
 
 // Straight up without spin, quadratic drag (C_D = cd0): with the terminal speed

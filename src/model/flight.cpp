@@ -166,13 +166,15 @@ PetscReal BracketedRoot(F f, PetscReal a, PetscReal b)
 
 PetscReal FlightStepGroundTime(const FlightStep &s)
 {
+  PetscReal a = s.t0, z_top;
+  if (s.u0[2] <= 0 && s.u0[5] > 0) FlightStepApex(s, &a, &z_top); // a step from the ground over the whole flight: the root after the top
   return BracketedRoot(
     [&](PetscReal t) {
       PetscReal u[6];
       FlightStepInterpolate(s, t, u);
       return u[2];
     },
-    s.t0, s.t1);
+    a, s.t1);
 }
 
 void FlightStepApex(const FlightStep &s, PetscReal *t, PetscReal *z)

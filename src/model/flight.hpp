@@ -126,7 +126,8 @@ struct FlightStep {
   PetscReal a0[3] = {0}, a1[3] = {0};
 };
 void FlightStepInterpolate(const FlightStep &s, PetscReal t, PetscReal u[6]);
-// The time in [t0, t1] where the interpolant's height is zero (needs z0 >= 0 > z1 or z0 > 0 >= z1).
+// The time in [t0, t1] where the interpolant's height comes down to zero (needs z0 >= 0 > z1 or
+// z0 > 0 >= z1; from z0 = 0 going up, the root after the interpolant's top).
 PetscReal FlightStepGroundTime(const FlightStep &s);
 // The top of the interpolant in [t0, t1] (needs vz0 > 0 >= vz1): its time and height.
 void FlightStepApex(const FlightStep &s, PetscReal *t, PetscReal *z);

@@ -141,7 +141,7 @@ PetscErrorCode LocateLanding(TS ts, const FlightModel &m, FlightStep *s, FlightR
     PetscCheck(vz < 0, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "the flight's landing could not be located: the ball is not descending at t = %g s (height %g m)", (double)s->t1, (double)z);
     const PetscReal next = s->t1 - z / vz;
     if (std::abs(next - s->t1) <= 4 * PETSC_MACHINE_EPSILON * s->t1) break; // at the resolution of t
-    target = next;
+    target = next > s->t0 ? next : 0.5 * (s->t0 + s->t1);
   }
   r->landing_residual = std::abs(s->u1[2]);
   PetscCheck(r->landing_residual <= 1e-6, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED,
@@ -192,10 +192,6 @@ PetscErrorCode IntegratorDescription(TS ts, FlightResult *r)
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
-namespace {
-
 // Steps ts (at u0 at t = 0) until the ball lands: samples, apex, the located landing.
 PetscErrorCode FlightIntegrate(TS ts, const FlightModel &m, const PetscReal u0[6], const FlightSolveParams &p, FlightResult *r)
 {
@@ -244,7 +240,7 @@ PetscErrorCode FlightSolve(const FlightModel &m, const PetscReal u0[6], const Fl
 
   PetscFunctionBeginUser;
   PetscCheck(u0[2] > 0 || (u0[2] == 0 && u0[5] > 0), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "the ball starts %s (height %g m, vertical speed %g m/s): give -flight_height > 0, or a -flight_angle > 0 from the ground", u0[2] < 0 ? "below the ground" : "on the ground going down",
+             "the ball starts %s (height %g m, vertical speed %g m/s): it cannot fly", u0[2] < 0 ? "below the ground" : "on the ground without going up",
              (double)u0[2], (double)u0[5]);
   PetscCall(PetscTime(&t_start));
   *r    = FlightResult();
