@@ -22,21 +22,18 @@ The GIF is written by matplotlib's PillowWriter (Debian: python3-pil, which come
 python3-matplotlib). `-o out.mp4` needs ffmpeg on PATH (Debian: apt-get install ffmpeg); without
 it the script says so and writes nothing.
 """
+import argparse
 import os
+import shutil
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
+from beamimpact import files, labels, style
 
-require(__file__, "numpy", "h5py", "matplotlib")
-import argparse  # noqa: E402
-import shutil  # noqa: E402
+import numpy as np
+from matplotlib import animation
+from matplotlib.patches import Ellipse
 
-import numpy as np  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib import animation  # noqa: E402
-from matplotlib.patches import Ellipse  # noqa: E402
-from impact_file import attr, config_label, has, impact_point, missing, open_file  # noqa: E402
+plt = style.plt
 
 PROG = "animate_impact.py"
 SCENE = " (e.g. -options_file options/scenes/animation.opts)"
@@ -60,15 +57,15 @@ def main():
         sys.stderr.write("%s: -o %s: an MP4 needs ffmpeg, and there is no ffmpeg on PATH (Debian: apt-get install ffmpeg); "
                          "write a GIF instead: -o %s\n" % (PROG, a.output, os.path.splitext(a.output)[0] + ".gif"))
         return 1
-    with open_file(PROG, a.file) as f:
-        task = attr(f, "task", "")
+    with files.open_file(PROG, a.file) as f:
+        task = files.attr(f, "task", "")
         if task and task != "impact":
             sys.stderr.write("%s: %s was written by -task %s; an animation needs a -task impact file%s\n" % (PROG, a.file, task, SCENE))
             return 1
-        if not has(f, "snapshots"):
-            missing(PROG, a.file, "snapshots", ", many of them%s" % SCENE)
-        if not a.no_ball and not has(f, "ball"):
-            missing(PROG, a.file, "ball", SCENE + ", or animate the beam alone with --no-ball")
+        if not files.has(f, "snapshots"):
+            files.missing(PROG, a.file, "snapshots", ", many of them%s" % SCENE)
+        if not a.no_ball and not files.has(f, "ball"):
+            files.missing(PROG, a.file, "ball", SCENE + ", or animate the beam alone with --no-ball")
         x, ts, Y = f["snapshots/x"][()], f["snapshots/time"][()], f["snapshots/y"][()]
         if len(ts) < 2:
             sys.stderr.write("%s: %s has %d snapshot time(s): an animation needs many (-snapshot_times t1,t2,...%s)\n"
@@ -78,11 +75,11 @@ def main():
         st = s["time"][()] if "time" in s else None
         yb = np.interp(ts, st, s["ball_y"][()]) if not a.no_ball else None
         force = np.interp(ts, st, s["force"][()]) if (st is not None and "force" in s) else None
-        xi = impact_point(f)
-        L = float(attr(f, "beam_length", x[-1]))
-        label = config_label(f)
-        left, right = attr(f, "beam_left", "free"), attr(f, "beam_right", "free")
-        x0, x1 = attr(f, "beam_clamp_x0", -1), attr(f, "beam_clamp_x1", -1)
+        xi = files.impact_point(f)
+        L = float(files.attr(f, "beam_length", x[-1]))
+        label = labels.config_label(f)
+        left, right = files.attr(f, "beam_left", "free"), files.attr(f, "beam_right", "free")
+        x0, x1 = files.attr(f, "beam_clamp_x0", -1), files.attr(f, "beam_clamp_x1", -1)
     pick = np.arange(len(ts))
     if a.frames and a.frames < len(ts):
         pick = np.unique(np.round(np.linspace(0, len(ts) - 1, a.frames)).astype(int))

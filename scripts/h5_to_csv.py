@@ -32,20 +32,15 @@ integer = 1; a sweep axis with whole values); NaN as nan. Written to stdout unle
     build/release/beamimpact -options_file options/default.opts -output out/default.h5    # the default sweep
     scripts/h5_to_csv.py out/default.h5 -o out/default.csv                            # its 111 rows
 """
-import os
+import argparse
+import csv
+import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
+from beamimpact import files
 
-require(__file__, "numpy", "h5py")
-import argparse  # noqa: E402
-import csv  # noqa: E402
-import re  # noqa: E402
-
-import numpy as np  # noqa: E402
-import h5py  # noqa: E402
-from impact_file import attr, unit, open_file  # noqa: E402
+import h5py
+import numpy as np
 
 PROG = "h5_to_csv.py"
 # The dataset that sets a group's rows, and the columns that come first.
@@ -131,9 +126,9 @@ def table_of_group(f, g, gname):
         n = max(set(lengths), key=lambda L: (lengths.count(L), L))
     else:
         n = next(iter(data.values())).shape[0]
-    axes = [a for a in str(attr(f, "sweep_axes", "") or "").split(",") if a]
+    axes = [a for a in str(files.attr(f, "sweep_axes", "") or "").split(",") if a]
     # column order: a sweep's own order, else the usual first columns, then by name
-    order = [c for c in str(attr(f, "sweep_columns", "") or "").split(",") if c] if base == "results" else []
+    order = [c for c in str(files.attr(f, "sweep_columns", "") or "").split(",") if c] if base == "results" else []
     if base == "results" and not order:
         order = list(RESULTS)
     if "status" in order and "reason" in data:
@@ -144,7 +139,7 @@ def table_of_group(f, g, gname):
     used_as_labels = {LAYOUT[k][1] for k in data if k in LAYOUT and data[k].ndim == 2}
     for name in ranked:
         d = data[name]
-        u = short_unit(name, unit(d))
+        u = short_unit(name, files.unit(d))
         if d.ndim == 1 and d.shape[0] == n:
             cols.append(column(name, u, d[()], axes, int(d.attrs.get("integer", 0)) == 1))
         elif d.ndim == 2 and n in d.shape:
@@ -167,7 +162,7 @@ def table_of_group(f, g, gname):
 
 
 def table_of_dataset(d, path):
-    u = unit(d)
+    u = files.unit(d)
     if d.ndim == 0:
         return [column(path.split("/")[-1], u, np.atleast_1d(d[()]), [])]
     if d.ndim == 1:
@@ -189,7 +184,7 @@ def main():
                     help="units in the header 'name (unit)' (default), in a second row, or not at all")
     a = ap.parse_args()
     path = a.group.strip("/") or "results"
-    with open_file(PROG, a.file) as f:
+    with files.open_file(PROG, a.file) as f:
         if path not in f:
             groups = []
             f.visit(lambda n: groups.append(n) if isinstance(f[n], h5py.Group) else None)

@@ -23,22 +23,16 @@ files are missing is skipped with a message (exit status 1 at the end).
 Needs numpy, h5py and matplotlib; re-executes itself with /usr/bin/python3 when the first
 python lacks them.
 """
+import argparse
+import glob
 import os
 import sys
 
+from beamimpact import files, style
 
+import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
-
-require(__file__, "numpy", "h5py", "matplotlib")
-import numpy as np  # noqa: E402
-import h5py  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
-
-
-import argparse  # noqa: E402
-import glob  # noqa: E402
+plt = style.plt
 
 # docs/model.md section 1: beta L of the first flexural modes.
 BETA_L = {
@@ -58,22 +52,13 @@ def say(line=""):
     print(line)
 
 
-def attr(f, name, default=None):
-    v = f.attrs.get(name, default)
-    if hasattr(v, "item"):
-        v = v.item()
-    if isinstance(v, bytes):
-        v = v.decode()
-    return v
-
-
 class Run:
     """One HDF5 file: attributes, /results columns, optional /series, /snapshots, /modes."""
 
     def __init__(self, path):
         self.path = path
-        with h5py.File(path, "r") as f:
-            self.attrs = {k: attr(f, k) for k in f.attrs}
+        with files.open_file("paper_figures.py", path) as f:
+            self.attrs = files.attrs(f)
             self.results = {k: f["results"][k][()] for k in f["results"]} if "results" in f else {}
             self.series = {k: f["series"][k][()] for k in f["series"]} if "series" in f else {}
             self.snapshots = {k: f["snapshots"][k][()] for k in f["snapshots"]} if "snapshots" in f else {}
@@ -107,9 +92,7 @@ def need(*runs):
 
 
 def save(fig, d, name):
-    path = os.path.join(d, name)
-    fig.savefig(path, dpi=130, bbox_inches="tight")
-    plt.close(fig)
+    path = style.save(fig, os.path.join(d, name), dpi=130, layout=False, tight_box=True)
     print("wrote", path)
 
 

@@ -22,24 +22,15 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
+from beamimpact import files, style
 
-require(__file__, "numpy", "h5py", "matplotlib")
-import numpy as np  # noqa: E402
-import h5py  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np
 
-
-def attr(f, name, default=None):
-    v = f.attrs.get(name, default)
-    if isinstance(v, bytes):
-        v = v.decode()
-    return v.item() if hasattr(v, "item") else v
+plt = style.plt
 
 
 def sweet_spots(ax, a, info, nodes_1):
-    with h5py.File(a.sweep, "r") as f:
+    with files.open_file("plot_bat.py", a.sweep) as f:
         r = f["results"]
         if a.column not in r:
             sys.exit("plot_bat.py: %s has no /results/%s" % (a.sweep, a.column))
@@ -64,7 +55,7 @@ def sweet_spots(ax, a, info, nodes_1):
         print("sweet spot: %s at %.4f m" % (name, xs))
     ax.set_ylabel(a.column + (" (m/s)" if a.column == "bbs" else ""))
     ax.legend(fontsize=8, loc="lower left")
-    with h5py.File(a.sweep, "r") as f:  # the hands, when the sweep had them
+    with files.open_file("plot_bat.py", a.sweep) as f:  # the hands, when the sweep had them
         hands = f["results/grip_force_peak"][:][ok][order] if "grip_force_peak" in f["results"] else None
     if hands is not None and np.any(hands > 0):
         ax2 = ax.twinx()
@@ -83,7 +74,7 @@ def main():
     ap.add_argument("--pivot", type=float, default=0.152, help="pivot or hands position x_p (m) for the centre of percussion (default 0.152)")
     a = ap.parse_args()
     out = a.output or os.path.splitext(a.file)[0] + ".png"
-    with h5py.File(a.file, "r") as f:
+    with files.open_file("plot_bat.py", a.file) as f:
         if "modes" not in f or "shapes" not in f["modes"] or "beam" not in f:
             sys.exit("plot_bat.py: %s has no /modes/shapes or /beam: write it with -task modes" % a.file)
         x = f["beam/x"][:]
@@ -92,8 +83,8 @@ def main():
         nodes = [f["modes/" + n][:] if n in f["modes"] else np.array([]) for n in ("nodes_1", "nodes_2")]
         prof = {k: f["beam/profile_" + k][:] for k in ("x", "D", "d")} if "profile_x" in f["beam"] else None
         mu = f["beam/mu"][:]
-        info = dict(theory=attr(f, "beam_theory", "euler"), mass=attr(f, "beam_mass", 0.0), xcm=attr(f, "beam_center_of_mass", 0.0),
-                    icm=attr(f, "beam_inertia_cm", 0.0), iend=attr(f, "beam_inertia_end", 0.0), src=attr(f, "beam_section_file", ""))
+        info = dict(theory=files.attr(f, "beam_theory", "euler"), mass=files.attr(f, "beam_mass", 0.0), xcm=files.attr(f, "beam_center_of_mass", 0.0),
+                    icm=files.attr(f, "beam_inertia_cm", 0.0), iend=files.attr(f, "beam_inertia_end", 0.0), src=files.attr(f, "beam_section_file", ""))
     flex = [k for k in range(len(freq)) if freq[k] > 0][: a.modes]
 
     panels = 3 if a.sweep else 2
@@ -128,8 +119,7 @@ def main():
     ax1.legend(fontsize=8, loc="lower left")
     fig.suptitle("%s (%s): %.3f kg, I_cm %.4f kg m^2, I_0 %.4f kg m^2; open circles: nodes"
                  % (os.path.basename(info["src"]) or "beam", info["theory"], info["mass"], info["icm"], info["iend"]), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    style.save(fig, out, dpi=120)
     print("wrote", out)
 
 

@@ -25,42 +25,23 @@ import argparse
 import os
 import sys
 
+from beamimpact import files, labels, style
 
+import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
-
-require(__file__, "numpy", "h5py", "matplotlib")
-import numpy as np  # noqa: E402
-import h5py  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
-
-
-
-def attr(obj, name, default=None):
-    v = obj.attrs.get(name, default)
-    if isinstance(v, bytes):
-        v = v.decode()
-    if hasattr(v, "item"):
-        v = v.item()
-    return v
-
-
-def scene_title(f):
-    law = attr(f, "ball_law", "?")
-    return "N = %d, L = %g m, x = %g m, %s ball" % (int(attr(f, "beam_nodes", 0)), attr(f, "beam_length", 0), attr(f, "impact_x", 0), law)
+plt = style.plt
 
 
 def configs(f):
-    names = [n for n in str(attr(f, "configs", "")).split(",") if n]
+    names = [n for n in str(files.attr(f, "configs", "")).split(",") if n]
     out = []
     for n in names:
         g = f["configs"][n]
         d = {k: np.asarray(g[k][:], dtype=float) for k in g.keys()}
         d["name"] = n
-        d["method"] = attr(g, "method", "ts")
-        d["expected_order"] = float(attr(g, "expected_order", 0) or 0)
-        d["order_lsq"] = float(attr(g, "order_acor_lsq", float("nan")))
+        d["method"] = files.attr(g, "method", "ts")
+        d["expected_order"] = float(files.attr(g, "expected_order", 0) or 0)
+        d["order_lsq"] = float(files.attr(g, "order_acor_lsq", float("nan")))
         out.append(d)
     return out
 
@@ -79,7 +60,7 @@ def plot_floored(ax, x, e, floor, lab, st):
                   markerfacecolor="white", markeredgecolor=st["color"], zorder=st.get("zorder", 2) + 1)
 
 
-def style(i, d):
+def curve_style(i, d):
     if d["method"] == "leapfrog":
         return dict(color="black", marker="s", linewidth=2.4, markersize=6, zorder=5)
     markers = "o^vD<>pPhX*"
@@ -122,12 +103,12 @@ def label(d, floor):
 
 
 def work_precision(f, prefix):
-    floor = float(attr(f, "convergence_error_floor", 0))
-    target = float(attr(f, "convergence_target", 1e-6))
+    floor = float(files.attr(f, "convergence_error_floor", 0))
+    target = float(files.attr(f, "convergence_target", 1e-6))
     fig, ax = plt.subplots(figsize=(8, 6))
     for i, d in enumerate(configs(f)):
         ok = d["failed"] == 0
-        plot_floored(ax, d["wall_time"][ok], d["acor_error"][ok], floor, label(d, floor), style(i, d))
+        plot_floored(ax, d["wall_time"][ok], d["acor_error"][ok], floor, label(d, floor), curve_style(i, d))
     ax.axhline(target, color="grey", linestyle=":", linewidth=1)
     ax.text(ax.get_xlim()[0], target, " target %g" % target, va="bottom", ha="left", color="grey", fontsize=8)
     if floor > 0:
@@ -137,21 +118,17 @@ def work_precision(f, prefix):
     note = ""
     if "baseline_over_best" in s:
         note = "\nat the target: best PETSc %s %.2e s, leapfrog %.2e s, baseline/best = %.2f" % (
-            attr(f["summary"], "best_config"), attr(f["summary"], "best_time"), attr(f["summary"], "baseline_time"), attr(f["summary"], "baseline_over_best"))
+            files.attr(f["summary"], "best_config"), files.attr(f["summary"], "best_time"), files.attr(f["summary"], "baseline_time"), files.attr(f["summary"], "baseline_over_best"))
     ax.set_xlabel("wall time, time stepping only (s, minimum of repeats)")
     ax.set_ylabel("ACOR error |acor - acor_ref|")
-    ax.set_title("Work-precision: %s\nreference: %s%s" % (scene_title(f), attr(f, "convergence_reference", "?"), note), fontsize=9)
+    ax.set_title("Work-precision: %s\nreference: %s%s" % (labels.scene_title(f), files.attr(f, "convergence_reference", "?"), note), fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, loc="best")
-    fig.tight_layout()
-    path = prefix + "-work-precision.png"
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return path
+    return style.save(fig, prefix + "-work-precision.png", dpi=130)
 
 
 def convergence(f, prefix):
-    floor = float(attr(f, "convergence_error_floor", 0))
+    floor = float(files.attr(f, "convergence_error_floor", 0))
     cfgs = configs(f)
     fig, axes = plt.subplots(1, 2, figsize=(13, 6))
     for ax, err, name in ((axes[0], "acor_error", "ACOR error (absolute)"), (axes[1], "contact_time_error", "contact-time error (relative)")):
@@ -161,7 +138,7 @@ def convergence(f, prefix):
             ok = (d["failed"] == 0) & np.isfinite(d["step"]) & np.isfinite(d[err])
             if ok.sum() == 0:
                 continue
-            plot_floored(ax, d["step"][ok], d[err][ok], fl, label(d, floor) if err == "acor_error" else d["name"], style(i, d))
+            plot_floored(ax, d["step"][ok], d[err][ok], fl, label(d, floor) if err == "acor_error" else d["name"], curve_style(i, d))
             hs.extend(d["step"][ok])
             es.extend(np.maximum(d[err][ok], max(fl, 1e-16)))
         if hs:
@@ -183,24 +160,20 @@ def convergence(f, prefix):
         ax.set_ylabel(name)
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=7, loc="upper left")
-    fig.suptitle("Convergence through the contact events: %s (dashed: slopes 1-5)" % scene_title(f), fontsize=10)
-    fig.tight_layout()
-    path = prefix + "-convergence.png"
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return path
+    fig.suptitle("Convergence through the contact events: %s (dashed: slopes 1-5)" % labels.scene_title(f), fontsize=10)
+    return style.save(fig, prefix + "-convergence.png", dpi=130)
 
 
 def spatial(f, prefix):
     g = f["spatial"]
     h = g["h"][:]
     # errors at or below the file's floor (round-off) are drawn hollow and left out of the fits
-    floor = float(attr(f, "convergence_error_floor", 0) or 0)
+    floor = float(files.attr(f, "convergence_error_floor", 0) or 0)
     colours = iter(["C0", "C1", "C2"])
     fig, ax = plt.subplots(figsize=(7, 5.5))
     for q, lim, lab in (("acor", "acor_limit", "ACOR (absolute)"), ("contact_time", "contact_time_limit", "contact time (relative)"), ("peak_force", "peak_force_limit", "peak force (relative)")):
         a = g[q][:]
-        a0 = float(attr(g, lim))
+        a0 = float(files.attr(g, lim))
         e = np.abs(a - a0) / (1.0 if q == "acor" else abs(a0))
         ok = np.isfinite(e) & ((e > 0) | (floor > 0))  # an exact 0 has no place on a log axis
         ok[-1] = False  # the last level defines the limit
@@ -215,14 +188,10 @@ def spatial(f, prefix):
     nodes = g["nodes"][:].astype(int)
     ax.set_xlabel("grid spacing h (m)")
     ax.set_ylabel("|A(h) - A(0)|, A(0) Richardson limit")
-    ax.set_title("Spatial convergence, N = %s\nlimit: ACOR %.8f, contact time %.6e s" % (",".join(map(str, nodes)), float(attr(g, "acor_limit")), float(attr(g, "contact_time_limit"))), fontsize=9)
+    ax.set_title("Spatial convergence, N = %s\nlimit: ACOR %.8f, contact time %.6e s" % (",".join(map(str, nodes)), float(files.attr(g, "acor_limit")), float(files.attr(g, "contact_time_limit"))), fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    path = prefix + "-spatial.png"
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return path
+    return style.save(fig, prefix + "-spatial.png", dpi=130)
 
 
 def main():
@@ -231,14 +200,10 @@ def main():
     ap.add_argument("-o", "--output", help="output prefix (default: the file name without .h5)")
     a = ap.parse_args()
     prefix = a.output or os.path.splitext(a.file)[0]
-    try:
-        f = h5py.File(a.file, "r")
-    except OSError as err:
-        sys.stderr.write("plot_convergence.py: cannot read %s: %s\n" % (a.file, err))
-        return 1
+    f = files.open_file("plot_convergence.py", a.file)
     written = []
     with f:
-        if attr(f, "task") != "convergence":
+        if files.attr(f, "task") != "convergence":
             sys.stderr.write("plot_convergence.py: %s was not written by -task convergence\n" % a.file)
             return 1
         if "configs" in f:

@@ -15,18 +15,15 @@ first file's name with .png. For example, from the repository root:
     build/release/beamimpact -options_file options/scenes/flight-nathan.opts -flight_spin 0 -output flight-nathan-nospin.h5
     scripts/plot_flight.py flight-nathan.h5 flight-nathan-nospin.h5 -o flight-nathan.png
 """
+import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
+from beamimpact import files, labels, style
 
-require(__file__, "numpy", "h5py", "matplotlib")
-import argparse  # noqa: E402
+import numpy as np
 
-import h5py  # noqa: E402
-import numpy as np  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.plt
 
 PROG = "plot_flight.py"
 
@@ -36,28 +33,21 @@ def fail(msg):
     sys.exit(1)
 
 
-def attr(f, name):
-    v = f.attrs.get(name)
-    if isinstance(v, bytes):
-        v = v.decode()
-    return v.item() if hasattr(v, "item") else v
-
-
 def read(path):
-    """The trajectory and the numbers of the legend of one -task flight file."""
-    try:
-        f = h5py.File(path, "r")
-    except OSError as err:
-        fail("cannot read %s: %s" % (path, err))
+    """The trajectory and the numbers of the legend of one -task flight file, with the units
+    of its datasets."""
+    f = files.open_file(PROG, path)
     with f:
-        if attr(f, "task") != "flight" or "series" not in f or "results" not in f:
-            fail("%s is not a -task flight file (its task: %s)" % (path, attr(f, "task")))
+        if files.attr(f, "task") != "flight" or "series" not in f or "results" not in f:
+            fail("%s is not a -task flight file (its task: %s)" % (path, files.attr(f, "task")))
         s, r = f["series"], f["results"]
-        d = {k: np.asarray(s[k][()], float) for k in ("time", "x", "y", "z")}
+        d = {k: files.numbers(s, k) for k in ("time", "x", "y", "z")}
         for k in ("distance", "hang_time", "apex", "apex_time"):
-            d[k] = float(r[k][0])
+            d[k] = float(files.numbers(r, k)[0])
         for k in ("flight_speed", "flight_angle", "flight_spin", "flight_sidespin", "air_density"):
-            d[k] = attr(f, k)
+            d[k] = files.attr(f, k)
+        d["unit"] = {k: labels.unit_text(files.unit(s[k])) for k in ("x", "y", "z")}
+        d["unit"].update({k: labels.unit_text(files.unit(r[k])) for k in ("distance", "hang_time")})
     d["horizontal"] = np.hypot(d["x"] - d["x"][0], d["y"] - d["y"][0])
     return d
 
@@ -66,7 +56,9 @@ def label(d):
     spin = "%.0f rad/s backspin" % d["flight_spin"]
     if d["flight_sidespin"]:
         spin += ", %.0f sidespin" % d["flight_sidespin"]
-    return "%.4g m/s at %.4g°, %s, air %.4g kg/m³: %.2f m in %.2f s" % (d["flight_speed"], d["flight_angle"], spin, d["air_density"], d["distance"], d["hang_time"])
+    u = d["unit"]
+    return "%.4g m/s at %.4g°, %s, air %.4g kg/m³: %.2f %s in %.2f %s" % (d["flight_speed"], d["flight_angle"], spin, d["air_density"], d["distance"], u["distance"],
+                                                                         d["hang_time"], u["hang_time"])
 
 
 def main():
@@ -81,10 +73,11 @@ def main():
         fail("--labels gives %d labels for %d files" % (len(labels), len(a.files)))
     data = [read(p) for p in a.files]
     top = a.top or any(np.max(np.abs(d["x"])) > 1e-3 for d in data)
+    colours = style.colours()
     fig, axes = plt.subplots(2 if top else 1, 1, figsize=(8, 7.5 if top else 4.5), squeeze=False)
     side = axes[0][0]
     for k, d in enumerate(data):
-        c = "C%d" % (k % 10)
+        c = colours[k % len(colours)]
         side.plot(d["horizontal"], d["z"], color=c, label=labels[k] if labels else label(d))
         i = int(np.argmax(d["z"]))
         side.plot(d["horizontal"][i], d["z"][i], "^", color=c, ms=5)
@@ -92,8 +85,9 @@ def main():
         if top:
             axes[1][0].plot(d["x"], d["y"], color=c)
             axes[1][0].plot(d["x"][-1], d["y"][-1], "o", color=c, ms=5)
-    side.set_xlabel("horizontal distance from the launch point (m)")
-    side.set_ylabel("height z (m)")
+    u = data[0]["unit"]
+    side.set_xlabel("horizontal distance from the launch point (%s)" % u["x"])
+    side.set_ylabel("height z (%s)" % u["z"])
     side.set_xlim(left=0)
     side.set_ylim(0, 1.45 * max(np.max(d["z"]) for d in data))  # room for the legend above the curves
     side.grid(alpha=0.3)
@@ -101,14 +95,13 @@ def main():
     side.set_title("Flight of the batted ball (Nathan's trajectory model)", fontsize=10)
     if top:
         ax = axes[1][0]
-        ax.set_xlabel("x across (m)")
-        ax.set_ylabel("y down the field (m)")
+        ax.set_xlabel("x across (%s)" % u["x"])
+        ax.set_ylabel("y down the field (%s)" % u["y"])
         ax.set_aspect("equal", adjustable="datalim")
         ax.grid(alpha=0.3)
         ax.set_title("from above", fontsize=9)
     out = a.output or os.path.splitext(a.files[0])[0] + ".png"
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    style.save(fig, out, dpi=120)
     print("wrote %s (%d trajectories)" % (out, len(data)))
 
 

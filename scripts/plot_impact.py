@@ -31,19 +31,16 @@ For example, from the repository root:
     build/release/beamimpact -options_file options/scenes/modes.opts -output out/modes.h5
     scripts/plot_impact.py out/modes.h5          # writes out/modes-modes.png
 """
+import argparse
 import os
 import sys
+import textwrap
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
+from beamimpact import files, labels, style
 
-require(__file__, "numpy", "h5py", "matplotlib")
-import argparse  # noqa: E402
-import textwrap  # noqa: E402
+import numpy as np
 
-import numpy as np  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
-from impact_file import MAKES, attr, config_label, default_prefix, has, impact_point, missing, open_file, what_name  # noqa: E402
+plt = style.plt
 
 PROG = "plot_impact.py"
 EVENTS = {0: ("contact start", "^", "C2"), 1: ("maximum compression", "o", "C3"), 2: ("reload", "s", "C4"), 3: ("separation", "v", "C0")}
@@ -54,16 +51,13 @@ ENERGIES = [("ball_kinetic", "ball kinetic"), ("ball_stored", "ball stored"), ("
 
 def legend(ax, f, impact=True, extra="", **kw):
     """The legend, titled with the configuration read from the file (wrapped)."""
-    lines = textwrap.wrap(config_label(f, impact), 70) + (textwrap.wrap(extra, 70) if extra else [])
+    lines = textwrap.wrap(labels.config_label(f, impact), 70) + (textwrap.wrap(extra, 70) if extra else [])
     ax.legend(title="\n".join(lines), title_fontsize=7, fontsize=7, **kw)
 
 
 def save(fig, out):
     """Lays out, writes and closes the figure; returns its path."""
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return style.save(fig, out, dpi=120)
 
 
 def force_plot(f, path, out, full):
@@ -133,10 +127,10 @@ def energy_plot(f, path, out):
 
 def support_marks(ax, f, L):
     """The clamped region shaded and the ends' supports named, from the attributes."""
-    x0, x1 = attr(f, "beam_clamp_x0", -1), attr(f, "beam_clamp_x1", -1)
+    x0, x1 = files.attr(f, "beam_clamp_x0", -1), files.attr(f, "beam_clamp_x1", -1)
     if x0 is not None and x0 >= 0:
         ax.axvspan(x0, x1, color="0.85", zorder=0, label="clamped %g-%g m" % (x0, x1))
-    for x, side in ((0.0, attr(f, "beam_left")), (L, attr(f, "beam_right"))):
+    for x, side in ((0.0, files.attr(f, "beam_left")), (L, files.attr(f, "beam_right"))):
         if side and side != "free":
             ax.plot([x], [0], "ks", ms=7, zorder=5)
             ax.annotate(side, (x, 0), textcoords="offset points", xytext=(0, -14), ha="center", fontsize=7)
@@ -152,11 +146,11 @@ def snapshots_plot(f, path, out, curves):
     for j, k in enumerate(pick):
         ax.plot(x, y[k] * 1e3, color=cmap(j / max(len(pick) - 1, 1)), lw=1.3, label="t = %.4g ms" % (ts[k] * 1e3))
     ax.axhline(0, color="0.6", lw=0.6, ls=":")
-    xi = impact_point(f)
+    xi = files.impact_point(f)
     if xi is not None:
         ax.axvline(xi, color="C3", ls="--", lw=1, label="impact point x = %g m" % xi)
         ax.plot([xi], [0], marker="v", color="C3", ms=9, ls="none", transform=ax.get_xaxis_transform(), clip_on=False)
-    support_marks(ax, f, float(attr(f, "beam_length", x[-1])))
+    support_marks(ax, f, float(files.attr(f, "beam_length", x[-1])))
     ax.set_xlabel("x (m) from the x = 0 end")
     ax.set_ylabel("displacement y (mm)")
     ax.grid(True, alpha=0.3)
@@ -169,7 +163,7 @@ def snapshots_plot(f, path, out, curves):
 def modes_plot(f, path, out, count):
     g = f["modes"]
     freq, shapes = g["frequency"][()], g["shapes"][()]
-    x = f["beam/x"][()] if "beam" in f and "x" in f["beam"] else np.linspace(0, float(attr(f, "beam_length", 1.0)), shapes.shape[1])
+    x = f["beam/x"][()] if "beam" in f and "x" in f["beam"] else np.linspace(0, float(files.attr(f, "beam_length", 1.0)), shapes.shape[1])
     flex = [k for k in range(len(freq)) if freq[k] > 0][:count]
     rigid = int(np.sum(freq <= 0))
     nodes = [g[n][()] if n in g else np.array([]) for n in ("nodes_1", "nodes_2")]
@@ -183,7 +177,7 @@ def modes_plot(f, path, out, count):
         if i < 2 and len(nodes[i]):
             ax.plot(nodes[i], np.zeros_like(nodes[i]), "o", color="C%d" % i, ms=7, mfc="white", zorder=5)
     ax.axhline(0, color="0.5", lw=0.5)
-    support_marks(ax, f, float(attr(f, "beam_length", x[-1])))
+    support_marks(ax, f, float(files.attr(f, "beam_length", x[-1])))
     ax.set_xlabel("x (m) from the x = 0 end")
     ax.set_ylabel("deflection (scaled to unit peak)")
     ax.grid(True, alpha=0.3)
@@ -207,11 +201,11 @@ def main():
     ap.add_argument("--curves", type=int, default=8, help="at most this many snapshot curves (default 8)")
     ap.add_argument("--mode-count", type=int, default=4, help="flexible modes to draw (default 4)")
     a = ap.parse_args()
-    prefix = a.output or default_prefix(a.file)
+    prefix = a.output or files.default_prefix(a.file)
     asked = [w for w in ("force", "energy", "snapshots", "modes") if getattr(a, w)]
     written = []
-    with open_file(PROG, a.file) as f:
-        task = attr(f, "task", "")
+    with files.open_file(PROG, a.file) as f:
+        task = files.attr(f, "task", "")
         if task in ("sweep", "convergence"):
             sys.stderr.write("%s: %s was written by -task %s: plot it with scripts/%s\n"
                              % (PROG, a.file, task, "plot_sweep.py" if task == "sweep" else "plot_convergence.py"))
@@ -219,15 +213,15 @@ def main():
         possible = ("modes",) if task == "modes" else ("force", "energy", "snapshots")
         for w in asked:
             if w not in possible:
-                sys.stderr.write("%s: %s is a -task %s file: it holds no %s (%s)\n" % (PROG, a.file, task or "?", what_name(w), MAKES[w]))
+                sys.stderr.write("%s: %s is a -task %s file: it holds no %s (%s)\n" % (PROG, a.file, task or "?", files.what_name(w), files.MAKES[w]))
                 return 1
-            if not has(f, w):
-                missing(PROG, a.file, w)
-        todo = asked or [w for w in possible if has(f, w)]
+            if not files.has(f, w):
+                files.missing(PROG, a.file, w)
+        todo = asked or [w for w in possible if files.has(f, w)]
         if not asked:
             for w in possible:
-                if not has(f, w):
-                    print("%s: no %s plot: the file has no %s (run beamimpact with %s)" % (PROG, w, what_name(w), MAKES[w]))
+                if not files.has(f, w):
+                    print("%s: no %s plot: the file has no %s (run beamimpact with %s)" % (PROG, w, files.what_name(w), files.MAKES[w]))
         if not todo:
             sys.stderr.write("%s: %s holds nothing to plot: run beamimpact -task impact with -monitor_ball, -monitor_energy "
                              "or -snapshot_times t1,t2,... (e.g. -options_file options/scenes/animation.opts), or -task modes\n" % (PROG, a.file))

@@ -25,32 +25,33 @@ hysteretic ball, tight runs (Crank-Nicolson at T_r/8000 and T_r/4000, Dormand-Pr
 -ts_rtol 1e-11) of which two must agree to TOL["reference"]; plus the closed forms where a
 case has them.
 
+Every derived scale comes from the program's own files, through scripts/beamimpact/derived.py:
+the contact time T_r that sets each column's step (contact_time_scale of a one-point probe of
+the case: a -task sweep cut off after 1 ns, which records the scene's root attributes without
+computing an impact), the rigid-body ACOR of Eq. (11) (/results/rigid_acor of the cell) and the
+wall's contact time and restitution (ball_wall_contact_time, ball_wall_cor). A beamimpact that
+does not record them stops the study with a message naming the attribute (exit status 2).
+
 Writes an HDF5 file with every cell (/cells/*, one row per cell, and /references/*)
 and a Markdown report (table, tolerances, commands, non-correct cells, which
 integrator is safe where). Exit status: 0 when no cell is wrong, 1 otherwise, 2 on
 a usage or set-up problem.
 """
-import os
-import sys
-
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from debian_python import require  # noqa: E402
-
-require(__file__, "numpy", "h5py")
-import numpy as np  # noqa: E402
-import h5py  # noqa: E402
-
-
 import argparse
 import concurrent.futures
-import math
+import os
 import re
 import shlex
 import shutil
 import subprocess
+import sys
 import tempfile
 import time
+
+from beamimpact import derived, files
+
+import h5py
+import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -66,6 +67,13 @@ TOL = {
     "wall": 1e-3,            # wall: contact time pi sqrt(m/k) (relative), e = 1 or sqrt((m+1)/(n+1))
     "reference": 1e-4,       # two tight reference runs must agree to this (ACOR)
 }
+
+# Columns of /results that are NaN where they do not apply (the results table, issue 20: a swinging
+# bat's, a pivoted rig's, Eq. (11) only for a free beam at rest, the hands', a monitored segment's);
+# a NaN anywhere else, and an Inf anywhere, is a wrong cell.
+NAN_WHERE_NOT_APPLICABLE = {"bbs", "collision_efficiency", "bat_speed_end", "bat_angular_velocity_end", "recoil_factor", "bbcor",
+                            "rigid_acor", "rigid_forced_loss_fraction", "grip_force_peak", "grip_force_peak_time", "grip_stored_end",
+                            "hand_work_end", "segment_kinetic_peak", "segment_kinetic_peak_time"}
 
 # ---------------------------------------------------------------------------
 # Diagnoses: the one-line messages the program gives, by cause.
@@ -96,7 +104,8 @@ ACCEPT_HYSTERESIS = []
 # The integrators: the advertised configurations (options/integrators/*.opts) with the
 # step set per case from the contact time T_r = pi sqrt(m_r / k_eff), the ball's mass
 # reduced with the free beam's, m_r = m_b M / (m_b + M) (the program's scale for its
-# "cannot resolve the contact" warning): fixed-step implicit types at T_r/400 (BDF2, whose
+# "cannot resolve the contact" warning, read from its file: contact_time_scale): fixed-step
+# implicit types at T_r/400 (BDF2, whose
 # error constant is larger, at T_r/800: the options files use the same 2:1 ratio); RK4 at
 # the program's default step min(0.9 dt_max, T_c/200); Dormand-Prince adaptive at the
 # file's tolerances.
@@ -167,66 +176,11 @@ class Case:
             out += [k, fmt(v)]
         return out
 
-    def contact_time(self):
-        """The program's contact time scale on a wall, T_c (contact.cpp ContactTimeScale), s."""
-        p = self.params
-        mb, v = float(p["-ball_mass"]), float(p["-ball_speed"])
-        if p["-ball_law"] == "linear":
-            return math.pi * math.sqrt(mb / float(p["-ball_k"]))
-        k1, m = characterised_k1(p), float(p["-ball_m"])
-        c = (0.5 * mb * v * v * (m + 1) / k1) ** (1.0 / (m + 1))
-        return math.pi * math.sqrt(mb / (k1 * c ** (m - 1)))
-
-    def beam_mass_free(self):
-        """Mass of the beam that can move (kg): the clamped region excluded."""
-        p = self.params
-        if "-beam_profile" in p or "-beam_properties" in p:
-            return section_mass(p)  # the bats of options/bats/ are free at both ends
-        L = float(p["-beam_length"])
-        if "-beam_mu" in p:
-            mu = float(p["-beam_mu"])
-        elif "-beam_mass" in p:
-            mu = float(p["-beam_mass"]) / L
-        else:
-            mu = float(p["-beam_density"]) * float(p["-beam_thickness"]) * float(p["-beam_width"])
-        held = 0.0
-        if "-beam_clamp" in p:
-            x0, x1 = (float(v) for v in str(p["-beam_clamp"]).split(","))
-            held = x1 - x0
-        return mu * (L - held)
-
-    def resolve_time(self):
-        """T_r = T_c sqrt(M / (M + m_b)) (s): the contact against the moving beam (impact.cpp, same formula)."""
-        M = self.beam_mass_free()
-        return self.contact_time() * math.sqrt(M / (M + float(self.params["-ball_mass"])))
-
     def accepted(self, integ):
         out = list(self.accept.get("*", [])) + list(self.accept.get(integ, [])) + list(ACCEPT_ALWAYS.get(integ, []))
         if self.law() == "hysteresis":
             out += ACCEPT_HYSTERESIS
         return list(dict.fromkeys(out))
-
-
-def section_mass(p):
-    """Mass (kg) of a beam given by -beam_profile (rows x D [d], with -beam_density) or
-    -beam_properties (rows x EI mu ...): the rows' diameters or mu linear between rows."""
-    path = p.get("-beam_profile") or p.get("-beam_properties")
-    rows = [[float(v) for v in line.split("#", 1)[0].split()] for line in open(os.path.join(ROOT, path))]
-    rows = [r for r in rows if r]
-    mass = 0.0
-    for a, b in zip(rows[:-1], rows[1:]):
-        n = 64  # Simpson on each piece: exact for the quadratic rho A of a linear profile
-        xs = [a[0] + (b[0] - a[0]) * k / n for k in range(n + 1)]
-        def f(x):
-            t = (x - a[0]) / (b[0] - a[0])
-            if "-beam_properties" in p:
-                return (1 - t) * a[2] + t * b[2]
-            D = (1 - t) * a[1] + t * b[1]
-            d = (1 - t) * (a[2] if len(a) > 2 else 0.0) + t * (b[2] if len(b) > 2 else 0.0)
-            return float(p["-beam_density"]) * math.pi * (D * D - d * d) / 4
-        h = (b[0] - a[0]) / n
-        mass += h / 3 * sum((1 if k in (0, n) else 4 if k % 2 else 2) * f(x) for k, x in enumerate(xs))
-    return mass
 
 
 def preset(path):
@@ -243,50 +197,6 @@ def preset(path):
         if name in out and not os.path.isabs(out[name]):
             out[name] = os.path.normpath(os.path.join(os.path.dirname(path), out[name]))
     return out
-
-
-def cor_table(path):
-    """Rows (v, e) of a -ball_cor_table file."""
-    rows = []
-    with open(os.path.join(ROOT, path)) as f:
-        for line in f:
-            line = line.split("#", 1)[0].split()
-            if line:
-                rows.append((float(line[0]), float(line[1])))
-    return rows
-
-
-def cor_at(rows, v):
-    """e(v): linear between rows, constant beyond the ends (model/cor_table.cpp)."""
-    if v <= rows[0][0]:
-        return rows[0][1]
-    for (v0, e0), (v1, e1) in zip(rows, rows[1:]):
-        if v < v1:
-            return e0 + (v - v0) / (v1 - v0) * (e1 - e0)
-    return rows[-1][1]
-
-
-def characterised_k1(p):
-    """k1 of the hysteretic law: -ball_k1, or from the wall contact time at the test speed
-    (model/contact.cpp BallK1FromContactTime): k1 = (m+1)/2 m_b v^2 (tau_1/tau)^(m+1),
-    tau_1 = (I(m+1) + I(n+1)/e)/v, I(q) = B(1/q, 1/2)/q."""
-    if "-ball_contact_time" not in p:
-        return float(p["-ball_k1"])
-    m, mb = float(p["-ball_m"]), float(p["-ball_mass"])
-    tau, v = float(p["-ball_contact_time"]), float(p["-ball_test_speed"])
-    if "-ball_cor_table" in p:
-        e = cor_at(cor_table(p["-ball_cor_table"]), v)
-    elif "-ball_cor" in p:
-        e = float(p["-ball_cor"])
-    else:
-        e = math.sqrt((m + 1) / (float(p.get("-ball_n", 1.768)) + 1))
-    n = max(m, (m + 1) / (e * e) - 1)
-
-    def wall_integral(q):
-        return math.exp(math.lgamma(1 / q) + math.lgamma(0.5) - math.lgamma(1 / q + 0.5)) / q
-
-    tau1 = (wall_integral(m + 1) + wall_integral(n + 1) / e) / v
-    return 0.5 * (m + 1) * mb * v * v * (tau1 / tau) ** (m + 1)
 
 
 def fmt(v):
@@ -310,9 +220,9 @@ def cases():
         Case("grid-2001", "stiff grid N = 2001 (window 5 ms)", {"-beam_nodes": 2001, "-impact_window": s},
              timeout=900),
     ]
-    for k in (1e3, 1e5, 1e6, 1e7, 1e8):
-        c.append(Case("k-%.0e" % k, "ball k = %.0e N/m (T_c = %.3g ms), x = 0.9 m" % (k, 1e3 * math.pi * math.sqrt(0.042 / k)),
-                      {"-ball_k": k, "-impact_x": 0.9}))
+    # T_c: the 42 g ball's contact time on a wall, pi sqrt(m/k) (the title only; the steps use the program's T_r)
+    for k, tc in ((1e3, "20.4"), (1e5, "2.04"), (1e6, "0.644"), (1e7, "0.204"), (1e8, "0.0644")):
+        c.append(Case("k-%.0e" % k, "ball k = %.0e N/m (T_c = %s ms), x = 0.9 m" % (k, tc), {"-ball_k": k, "-impact_x": 0.9}))
     c += [
         Case("rigid", "nearly rigid beam (E x 1e4), x = 0.9 m", {"-beam_youngs_modulus": 7e14, "-impact_x": 0.9},
              checks=("rigid",)),
@@ -450,14 +360,16 @@ def run(cmd, timeout, cwd):
 
 
 def read_results(path):
-    """The /results row (and /events) of an impact file, or None."""
+    """The /results row (and /events) of an impact file, or None; and the file itself, kept
+    open for the derived quantities of the checks (res["_file"])."""
     try:
-        with h5py.File(path, "r") as f:
-            res = {k: float(np.asarray(f["results"][k][()]).ravel()[0]) for k in f["results"]}
-            if "events" in f:
-                res["_events_kind"] = np.asarray(f["events"]["kind"][()])
-                res["_events_compression"] = np.asarray(f["events"]["compression"][()])
-            return res
+        f = h5py.File(path, "r")
+        res = {k: float(np.asarray(f["results"][k][()]).ravel()[0]) for k in f["results"]}
+        if "events" in f:
+            res["_events_kind"] = np.asarray(f["events"]["kind"][()])
+            res["_events_compression"] = np.asarray(f["events"]["compression"][()])
+        res["_file"] = f
+        return res
     except Exception:  # a missing or damaged file is classified by the caller
         return None
 
@@ -477,6 +389,37 @@ class Study:
     def __init__(self, exe, workdir, jobs, mpiexec):
         self.exe, self.workdir, self.jobs, self.mpiexec = exe, workdir, jobs, mpiexec
         self.dtmax = {}  # (case, rk type) -> dt_max (s)
+        self.t_r = {}  # case -> T_r (s), the program's contact time scale
+
+    def probe_scales(self, case):
+        """T_r (s) of the case, from the program: a one-point -task sweep of the case cut off after
+        1 ns (its file records the scene's root attributes, contact_time_scale among them, without
+        computing an impact; the point itself ends as a failed row). None for a case that must be
+        refused (its point cannot run: no step is needed). Raises derived.Missing when the
+        program does not record the scale."""
+        if case.expect == "refuse":
+            return None
+        if case.id not in self.t_r:
+            d = os.path.join(self.workdir, "probe")
+            os.makedirs(d, exist_ok=True)
+            out = os.path.join(d, case.id + ".h5")
+            if os.path.exists(out):
+                os.remove(out)
+            params = [w for w in case.args()]
+            k = params.index("-impact_x")
+            x = params[k + 1]
+            del params[k:k + 2]
+            cmd = [self.exe, "-task", "sweep"] + params + ["-sweep_x", x, "-impact_max_time", "1e-9", "-sweep_quiet", "-output", out]
+            r = run(cmd, 300, ROOT)
+            if r["rc"] not in (0, 2) or not os.path.exists(out):
+                raise RuntimeError("the scales probe of case %s failed (exit %s): %s" % (case.id, r["rc"], (error_message(r) or (r["err"] + r["out"]))[-400:]))
+            with files.open_file("stability_matrix.py", out) as f:
+                self.t_r[case.id] = derived.contact_time_scale(f)
+        return self.t_r[case.id]
+
+    def resolve_time(self, case):
+        """T_r (s): the contact against the free beam's mass, the program's scale (probe_scales)."""
+        return self.probe_scales(case)
 
     def cmd(self, case, extra, out, ranks=None):
         ranks = ranks or case.ranks
@@ -497,8 +440,8 @@ class Study:
 
     def integrator_args(self, case, iid, opts, steps):
         extra = shlex.split(opts)
-        if steps is not None:
-            extra += ["-ts_dt", "%.6g" % (case.resolve_time() / steps)]
+        if steps is not None and case.expect != "refuse":  # a refused case's point cannot run: no step
+            extra += ["-ts_dt", "%.6g" % (self.resolve_time(case) / steps)]
         tmpl = case.per_int.get(iid, case.per_int.get("*"))
         if tmpl:
             def subst(m):
@@ -527,7 +470,7 @@ class Study:
         # Tight runs: Crank-Nicolson at T_r/8000 and T_r/4000, and (grids up to N = 201)
         # Dormand-Prince at -ts_rtol 1e-11. The reference is the first of them, in that order,
         # that another one agrees with (ACOR within TOL["reference"], same contacts).
-        tr = case.resolve_time()
+        tr = self.resolve_time(case)
         tight = [("CN at T_r/8000", ["-ts_type", "cn", "-ts_dt", "%.6g" % (tr / 8000)], "cn8000"),
                  ("RK 5dp at -ts_rtol 1e-11", ["-ts_type", "rk", "-ts_rk_type", "5dp", "-ts_rtol", "1e-11", "-ts_atol", "1e-14"], "rk5dp"),
                  ("CN at T_r/4000", ["-ts_type", "cn", "-ts_dt", "%.6g" % (tr / 4000)], "cn4000")]
@@ -571,25 +514,6 @@ class Study:
 
 # ---------------------------------------------------------------------------
 # Classification.
-def rigid_acor(case):
-    """Eq. (11) with f = 0: the beam as a rigid body, M and I_cm = M L^2/12 of the continuum."""
-    p = case.params
-    L = float(p["-beam_length"])
-    M = L * float(p["-beam_density"]) * float(p["-beam_thickness"]) * float(p["-beam_width"])
-    b = float(p["-impact_x"]) - L / 2
-    Me = M / (1 + M * b * b / (M * L * L / 12))
-    R = float(p["-ball_mass"]) / Me
-    return (1 - R) / (1 + R)
-
-
-def wall_expect(case):
-    p = case.params
-    mb = float(p["-ball_mass"])
-    if case.law() == "linear":
-        return math.pi * math.sqrt(mb / float(p["-ball_k"])), 1.0
-    return None, math.sqrt((float(p["-ball_m"]) + 1) / (float(p["-ball_n"]) + 1))
-
-
 def classify(case, cell, ref):
     """Returns (status, reason, measured dict)."""
     m = {}
@@ -623,7 +547,7 @@ def classify(case, cell, ref):
         return "wrong", "exit 0 but no readable /results in the output file", m
     if re.search(r"\b(nan|inf)\b", r["out"], re.I):
         return "wrong", "the summary prints NaN/Inf", m
-    bad = [k for k, v in res.items() if not k.startswith("_") and not math.isfinite(v)]
+    bad = [k for k, v in res.items() if not k.startswith("_") and not np.isfinite(v) and not (np.isnan(v) and k in NAN_WHERE_NOT_APPLICABLE)]
     if bad:
         return "wrong", "non-finite result(s): " + ", ".join(bad), m
     for k in ("acor", "contacts", "contact_time", "peak_force", "max_compression", "energy_error", "steps",
@@ -642,12 +566,15 @@ def classify(case, cell, ref):
     if "negative_acor" in case.checks and not res["acor"] < 0:
         problems.append("ACOR %.6f is not negative (the heavy ball must keep going forward)" % res["acor"])
     if "rigid" in case.checks:
-        e11 = rigid_acor(case)
+        e11 = derived.rigid_acor(res["_file"])  # Eq. (11), f = 0, as the program computes it for this run
         m["rigid_acor"] = e11
         if abs(res["acor"] - e11) > TOL["rigid"]:
             problems.append("ACOR %.6f differs from Eq. 11 (%.6f) by more than %.0e" % (res["acor"], e11, TOL["rigid"]))
     if "wall" in case.checks:
-        T, e = wall_expect(case)
+        # the ball's contact time on a rigid wall (checked for the linear law: pi sqrt(m/k)) and its
+        # wall COR (1, or sqrt((m+1)/(n+1)) for the hysteretic law), as the program records them
+        T = derived.ball_wall_contact_time(res["_file"]) if case.law() == "linear" else None
+        e = derived.ball_wall_cor(res["_file"])
         if T is not None and abs(res["contact_time"] / T - 1) > TOL["wall"]:
             problems.append("wall contact time %.6e differs from pi sqrt(m/k) = %.6e" % (res["contact_time"], T))
         if abs(res["acor"] - e) > TOL["wall"]:
@@ -738,7 +665,8 @@ def write_markdown(path, study_args, table, refs, integ, all_cases, counts, elap
     add("References: the exact modal solution (`-reference modal`) for the linear spring; for the hysteretic ball the first "
         "of CN at T_r/8000, RK 5dp at -ts_rtol 1e-11 and CN at T_r/4000 that another of them confirms. T_c = π√(m_b/k_eff) "
         "is the program's contact-time scale on a wall; T_r = T_c √(M/(M+m_b)) the contact against the free beam's mass M "
-        "(the program's scale for its resolution warnings).")
+        "(the program's scale for its resolution warnings), read from the program's file (`contact_time_scale`), as are Eq. (11) "
+        "(`/results/rigid_acor`) and the wall's contact time and restitution (`ball_wall_contact_time`, `ball_wall_cor`).")
     add("")
     add("## Integrators (the columns)")
     add("")
@@ -990,6 +918,15 @@ def main():
 
     table, refs = {}, {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
+        # The program's scales of every case first (they set the steps): a program that does not
+        # record them stops the study here, before any cell.
+        try:
+            for f in [pool.submit(study.probe_scales, c) for c in all_cases]:
+                f.result()
+        except (derived.Missing, RuntimeError) as err:
+            pool.shutdown(wait=False, cancel_futures=True)
+            sys.stderr.write("stability_matrix.py: %s\n" % err)
+            return 2
         ref_f = {pool.submit(study.reference, c): c for c in sorted(all_cases, key=cost, reverse=True)}
         cell_f = {}
         for c in sorted(all_cases, key=cost, reverse=True):
@@ -1000,7 +937,12 @@ def main():
         for f in concurrent.futures.as_completed(cell_f):
             c, i = cell_f[f]
             cell = f.result()
-            status, reason, m = classify(c, cell, refs[c.id])
+            try:
+                status, reason, m = classify(c, cell, refs[c.id])
+            except derived.Missing as err:  # a check's quantity the program does not record
+                pool.shutdown(wait=False, cancel_futures=True)
+                sys.stderr.write("stability_matrix.py: %s\n" % err)
+                return 2
             if cell.get("run"):
                 m["elapsed"] = cell["run"]["elapsed"]
             table[(c.id, i[0])] = (status, reason, m, cell["cmd"])

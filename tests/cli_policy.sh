@@ -10,7 +10,8 @@
 #     -ts_max_time, which it cannot honour, are refused naming -impact_max_time;
 #   * a missing -options_file (also one included by another file) is one plain line, no
 #     PETSc traceback, no MPI abort;
-#   * every results file records its provenance: task, git, date, host, ranks, library versions.
+#   * every results file records its provenance: task, git, date, host, ranks, library versions,
+#     and every option read, as used, with its unit (/options_used).
 #   * -log_view lists the program's stages (set-up, contact, free flight, output);
 #   * a sweep whose runs -impact_max_time cuts off in contact gives failed rows (status 7);
 #   * a run expected to take long prints its cost first (-impact_cost_warn), progress lines
@@ -28,7 +29,7 @@ rm -rf "$dir" && mkdir -p "$dir"
 # -help
 out=$(cd "$dir" && "$exe" -help 2>&1); rc=$?
 if [[ $rc -eq 0 && ! -e $dir/impact.h5 ]]; then pass "-help exits 0 and writes nothing"; else fail "-help: exit $rc, files: $(ls "$dir")"; fi
-for opt in -task -beam_profile -beam_theory -ball_cor_table -bat_speed -impact_after -monitor_velocity_at -modes_count -sweep -sweep_retry_failed -convergence_configs -leapfrog_dt -ts_type -ts_rk_type -output_overwrite; do
+for opt in -task -beam_profile -beam_theory -ball_cor_table -bat_speed -impact_after -monitor_velocity_at -modes_count -sweep -sweep_retry_failed -convergence_configs -leapfrog_dt -ts_type -ts_rk_type -ts_modal_order -output_overwrite -allow_unused_options -error_traceback; do
   grep -q -- "$opt\b" <<<"$out" || fail "-help does not list $opt"
 done
 bad=$(grep -E "^  -(beam|ball|bat|impact|monitor|snapshot|modes|sweep|convergence|leapfrog|grip|reference|task|output)[a-z_]* <" <<<"$out" | grep -E "<[^>]*e[+-][0-9]{3}|nan|inf" | grep -v "beam_length <inf\|1e+30")
@@ -176,6 +177,34 @@ for a in task git date host ranks slepc_version hdf5_version petsc_version progr
   h5dump -a "/$a" "$f" >/dev/null 2>&1 || fail "the results file has no provenance attribute $a"
 done
 pass "provenance: $(h5dump -a /task -a /git -a /date "$f" 2>/dev/null | sed -nE 's/^ *\(0\): *//p' | paste -sd' ')"
+
+# the run record: every option read, as used, with its unit (/options_used and its unit and
+# given subgroups; io/run_record.hpp): the hands, the swing, the damping and the pivot among them
+if [[ -n $python ]]; then
+  "$exe" -grip 0.05,0.2 -grip_stiffness 1e5 -bat_speed 20 -beam_damping_mass 2 -output "$dir/record.h5" >/dev/null 2>&1 || fail "the run for the record did not run"
+  "$exe" -beam_pivot 0.3 -impact_x 0.9 -output "$dir/record-pivot.h5" >/dev/null 2>&1 || fail "the pivoted run for the record did not run"
+  rec=$("$python" - "$dir/record.h5" "$dir/record-pivot.h5" <<'PY'
+import sys, h5py, numpy as np
+s = lambda v: v.decode() if isinstance(v, bytes) else str(v)
+bad = []
+with h5py.File(sys.argv[1], "r") as f:
+    o, u, g = f["options_used"].attrs, f["options_used/unit"].attrs, f["options_used/given"].attrs
+    want = {"grip": ([0.05, 0.2], "m", 1), "grip_stiffness": (1e5, "N/m^2", 1), "grip_damping": (0, "N s/m^2", 0), "grip_mass": (0, "kg", 0),
+            "bat_speed": (20, "m/s", 1), "bat_angular_velocity": (0, "rad/s", 0), "beam_damping_mass": (2, "1/s", 1), "beam_damping_stiffness": (0, "s", 0),
+            "impact_x": (0.55, "m", 0), "beam_nodes": (41, "1", 0)}
+    for k, (v, unit, given) in want.items():
+        if k not in o or not np.allclose(o[k], v) or s(u.get(k, "")) != unit or g[k] != given:
+            bad.append("%s = %r %r given %r" % (k, o.get(k), u.get(k), g.get(k)))
+    if s(o.get("beam_left")) != "free" or "beam_left" in u: bad.append("beam_left %r" % o.get("beam_left"))
+    if not np.isclose(f.attrs["beam_mass"], 0.57024): bad.append("the derived beam_mass is gone")
+with h5py.File(sys.argv[2], "r") as f:
+    o, u = f["options_used"].attrs, f["options_used/unit"].attrs
+    if not np.isclose(o["beam_pivot"], 0.3) or s(u["beam_pivot"]) != "m": bad.append("beam_pivot %r %r" % (o.get("beam_pivot"), u.get("beam_pivot")))
+print("ok" if not bad else "bad: " + "; ".join(bad))
+PY
+)
+  [[ $rec == ok ]] && pass "the run record carries every option read, with units: grip, swing, damping, pivot" || fail "run record: $rec"
+fi
 
 echo "cli_policy: $fails failure(s)"
 [[ $fails -eq 0 ]]

@@ -141,8 +141,11 @@ if [[ $rc -eq 0 && "$(field contacts)" == 3 ]]; then pass "triple impact: 3 cont
 if [[ -n "$python" ]]; then
   log=$("$python" "$src/scripts/stability_matrix.py" --exe "$exe" --jobs 2 --quiet --cases default,heavy-rigid,pinned-point,dt-above \
         --integrators rk4,cn,rosw --h5 "$dir/slice.h5" --md "$dir/slice.md" --workdir "$dir/slice" 2>&1)
-  if [[ $? -eq 0 ]] && grep -q "12 cells: 8 correct, 4 clear error, 0 wrong, 0 unverified" <<<"$log" && grep -q "| \`dt-above\`" "$dir/slice.md"; then
+  rc=$?
+  if [[ $rc -eq 0 ]] && grep -q "12 cells: 8 correct, 4 clear error, 0 wrong, 0 unverified" <<<"$log" && grep -q "| \`dt-above\`" "$dir/slice.md"; then
     pass "stability_matrix.py slice: $(tail -1 <<<"$log" | cut -c1-80)"
+  elif [[ $rc -eq 2 ]] && grep -q "has no attribute contact_time_scale .*use a build with the results table" <<<"$log"; then
+    echo "skip: stability_matrix.py slice: this beamimpact does not record the derived scales the study reads (the results table, issue 20): $log"
   else fail "stability_matrix.py slice: $log"; fi
 else
   echo "skip: stability_matrix.py slice (no python with numpy and h5py)"

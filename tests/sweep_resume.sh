@@ -12,7 +12,9 @@
 #      identical to the reference (datasets but wall_time within 1e-12, every
 #      attribute but the command line 'options');
 #   4. a third run finds everything done; a changed parameter is refused with
-#      a message naming it; -sweep_restart starts over.
+#      a message naming it; -sweep_restart starts over;
+#   5. steps 1-3 again for a sweep with a text (categorical) axis, ts_type=rk;cn by
+#      impact point: killed, resumed, identical to its uninterrupted run.
 #
 #   tests/sweep_resume.sh path/to/beamimpact scratch_dir [mpiexec]
 set -uo pipefail
@@ -70,46 +72,53 @@ PY
 }
 readable() { if [[ -n "$python" ]]; then "$python" -c "import h5py,sys; f=h5py.File(sys.argv[1],'r'); f['results/acor'][()]" "$1"; else h5dump -d /results/acor "$1" >/dev/null; fi; }
 
-# 1. reference
-"$mpiexec" -n 2 "$exe" "${opts[@]}" -sweep_quiet -output resume_ref.h5 >resume_ref.log 2>&1 || { fail "reference sweep failed"; cat resume_ref.log; exit 1; }
+# kill_resume TAG OPTIONS...: steps 1-3 for the sweep of OPTIONS (files resume_TAGref.h5, resume_TAGk.h5)
+kill_resume() {
+  local tag=$1 launcher seen ranks i p alive already todo computed
+  shift
+  # 1. reference
+  "$mpiexec" -n 2 "$exe" "$@" -sweep_quiet -output resume_${tag}ref.h5 >resume_${tag}ref.log 2>&1 || { fail "reference sweep failed"; cat resume_${tag}ref.log; exit 1; }
 
-# 2. start, wait for some progress, kill -9
-setsid "$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_killed.log 2>&1 &
-launcher=$!
-seen=$(sweep_progress resume_killed.log "$launcher")
-# The launcher and everything below it: kill -9 by pid.
-ranks=$(descendants "$launcher" | tr '\n' ' ')
-kill -9 "$launcher" $ranks 2>/dev/null
-wait "$launcher" 2>/dev/null
-for ((i = 0; i < 100; ++i)); do
-  alive=0
-  for p in $ranks; do kill -0 "$p" 2>/dev/null && alive=1; done
-  ((alive)) || break
-  sleep 0.05
-done
-if grep -q "^sweep: computed" resume_killed.log; then fail "the sweep finished before it could be killed (make the cases slower)"; fi
-if ((seen < 4)); then fail "no progress seen before the kill"; cat resume_killed.log; fi
-echo "      killed after progress reported $seen/$N points done (ranks: $ranks)"
-if [[ -e resume_k.h5 ]]; then
-  readable resume_k.h5 && pass "after kill -9 the output is a readable HDF5 file" || fail "after kill -9 the output is not readable"
-fi
-[[ -d resume_k.h5.parts ]] && pass "journal directory left for the resume" || fail "no journal directory after the kill"
+  # 2. start, wait for some progress, kill -9
+  setsid "$mpiexec" -n 2 "$exe" "$@" -output resume_${tag}k.h5 >resume_${tag}killed.log 2>&1 &
+  launcher=$!
+  seen=$(sweep_progress resume_${tag}killed.log "$launcher")
+  # The launcher and everything below it: kill -9 by pid.
+  ranks=$(descendants "$launcher" | tr '\n' ' ')
+  kill -9 "$launcher" $ranks 2>/dev/null
+  wait "$launcher" 2>/dev/null
+  for ((i = 0; i < 100; ++i)); do
+    alive=0
+    for p in $ranks; do kill -0 "$p" 2>/dev/null && alive=1; done
+    ((alive)) || break
+    sleep 0.05
+  done
+  if grep -q "^sweep: computed" resume_${tag}killed.log; then fail "the sweep finished before it could be killed (make the cases slower)"; fi
+  if ((seen < 4)); then fail "no progress seen before the kill"; cat resume_${tag}killed.log; fi
+  echo "      killed after progress reported $seen/$N points done (ranks: $ranks)"
+  if [[ -e resume_${tag}k.h5 ]]; then
+    readable resume_${tag}k.h5 && pass "after kill -9 the output is a readable HDF5 file" || fail "after kill -9 the output is not readable"
+  fi
+  [[ -d resume_${tag}k.h5.parts ]] && pass "journal directory left for the resume" || fail "no journal directory after the kill"
 
-# 3. the same command again: resume
-"$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_resumed.log 2>&1 || { fail "resume failed"; cat resume_resumed.log; }
-already=$(sed -nE 's/^sweep: resuming .*: ([0-9]+) of [0-9]+ points already done, ([0-9]+) to compute/\1/p' resume_resumed.log)
-todo=$(sed -nE 's/^sweep: resuming .*: ([0-9]+) of [0-9]+ points already done, ([0-9]+) to compute/\2/p' resume_resumed.log)
-computed=$(sed -nE 's/^sweep: computed ([0-9]+) points? .*/\1/p' resume_resumed.log)
-echo "      resumed: ${already:-?} already done, ${todo:-?} to compute, ${computed:-?} computed"
-if [[ -z "$already" || -z "$computed" ]]; then
-  fail "resume did not report what it skipped and computed"; cat resume_resumed.log
-else
-  ((already >= seen)) && pass "nothing lost: $already on disk >= $seen reported done before the kill" || fail "lost rows: $already on disk < $seen reported done"
-  ((already < N)) && pass "the killed run was partial ($already/$N)" || fail "the killed run had finished all points"
-  ((computed == N - already && todo == N - already)) && pass "nothing recomputed: computed $computed = $N - $already" || fail "computed $computed, expected $((N - already))"
-fi
-[[ -d resume_k.h5.parts ]] && fail "journal directory not removed after completion"
-same_file resume_ref.h5 resume_k.h5 && pass "resumed file identical to the uninterrupted one" || fail "resumed file differs from the uninterrupted one"
+  # 3. the same command again: resume
+  "$mpiexec" -n 2 "$exe" "$@" -output resume_${tag}k.h5 >resume_${tag}resumed.log 2>&1 || { fail "resume failed"; cat resume_${tag}resumed.log; }
+  already=$(sed -nE 's/^sweep: resuming .*: ([0-9]+) of [0-9]+ points already done, ([0-9]+) to compute/\1/p' resume_${tag}resumed.log)
+  todo=$(sed -nE 's/^sweep: resuming .*: ([0-9]+) of [0-9]+ points already done, ([0-9]+) to compute/\2/p' resume_${tag}resumed.log)
+  computed=$(sed -nE 's/^sweep: computed ([0-9]+) points? .*/\1/p' resume_${tag}resumed.log)
+  echo "      resumed: ${already:-?} already done, ${todo:-?} to compute, ${computed:-?} computed"
+  if [[ -z "$already" || -z "$computed" ]]; then
+    fail "resume did not report what it skipped and computed"; cat resume_${tag}resumed.log
+  else
+    ((already >= seen)) && pass "nothing lost: $already on disk >= $seen reported done before the kill" || fail "lost rows: $already on disk < $seen reported done"
+    ((already < N)) && pass "the killed run was partial ($already/$N)" || fail "the killed run had finished all points"
+    ((computed == N - already && todo == N - already)) && pass "nothing recomputed: computed $computed = $N - $already" || fail "computed $computed, expected $((N - already))"
+  fi
+  [[ -d resume_${tag}k.h5.parts ]] && fail "journal directory not removed after completion"
+  same_file resume_${tag}ref.h5 resume_${tag}k.h5 && pass "resumed file identical to the uninterrupted one" || fail "resumed file differs from the uninterrupted one"
+}
+
+kill_resume "" "${opts[@]}"
 
 # 4. done, changed parameters, restart
 "$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_again.log 2>&1 && grep -q "all $N points were already done" resume_again.log \
@@ -124,6 +133,14 @@ fi
 same_file resume_ref.h5 resume_k.h5 || fail "the refused run modified the file"
 "$exe" "${base[@]}" -beam_nodes 23 -sweep_x 0.3,0.6 -sweep_restart -sweep_quiet -output resume_k.h5 >resume_restart.log 2>&1 && readable resume_k.h5 \
   && pass "-sweep_restart starts a new file" || { fail "-sweep_restart"; cat resume_restart.log; }
+
+# 5. a text axis (the integrator) by impact point: the same kill, resume and identity
+N=12
+kill_resume text_ "${base[@]}" -sweep "ts_type=rk;cn,impact_x=0.05:1.05:$((N / 2))"
+if [[ -n "$python" ]]; then
+  "$python" -c "import h5py, sys; r = h5py.File(sys.argv[1], 'r')['results']; assert [v.decode() for v in r['ts_type'][()]] == ['rk'] * 6 + ['cn'] * 6 and list(r['ts_type'].attrs['values']) == ['rk', 'cn']" resume_text_k.h5 \
+    && pass "text axis resumed: /results/ts_type rk (6 points) then cn (6) in case order, values attribute" || fail "text axis column of the resumed file"
+fi
 
 if ((fails)); then echo "$fails check(s) failed"; exit 1; fi
 echo "all checks passed"

@@ -195,8 +195,9 @@ TEST(BatInPlay, StiffPivotedBatIsTheRigidRig)
   for (const double e : {0.5, 1.0}) {
     BallParams ball;
     ball.mass = 0.145, ball.speed = 10;
-    if (e < 1) ball.law = ContactLawKind::Hysteresis, ball.k1 = 1e6, ball.m = 1, ball.n = BallExponentFromCor(1, e);
-    else ball.k = 1e6;
+    BallParamsUseLaw(&ball, ContactLawFind(e < 1 ? "hysteresis" : "linear")); // m = 1
+    BallValueSet(&ball, e < 1 ? "k1" : "k", 1e6);
+    if (e < 1) BallValueSet(&ball, "n", BallExponentFromCor(1, e));
     const PivotRig     rig = PivotRigOf(BeamRigidBodyOf(beam), beam.pivot_x, ball.mass, ip.x);
     const ImpactResult res = RunScenario(PETSC_COMM_WORLD, Scenario(beam, ball, ip), {{"-ts_type", "cn"}, {"-ts_dt", "2e-6"}});
     EXPECT_NEAR((e - rig.recoil_factor) / (1 + rig.recoil_factor), res.collision_efficiency, 2e-4) << "e = " << e;

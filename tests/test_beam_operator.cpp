@@ -1,9 +1,11 @@
-// The semi-discrete beam operator of beam.hpp against formulas (docs/model.md):
+// The Euler-Bernoulli beam as the system assembles it (system/beam_system.hpp: the theory's
+// curvature terms, K from the force operator) against formulas (docs/model.md, section 6):
 // symmetry and null space of K, the 5-point stencil EI/h^3 (1,-4,6,-4,1) and the
 // ghost-node rows at the ends, fourth differences of polynomials, energies,
 // masses, the impact stencil and the -beam_* options reader.
 #include "io/beam_options.hpp"
 #include "model/beam.hpp"
+#include "system/beam_system.hpp"
 
 #include "test_helpers.hpp"
 
@@ -51,14 +53,27 @@ std::vector<Config> Configs(PetscInt nodes)
   return c;
 }
 
-// Dense K (N x N, zero rows and columns at held nodes) from BeamStiffnessRow.
-std::vector<PetscReal> DenseK(const BeamOperator &op)
+// The Euler-Bernoulli system of a beam, and its uniform section's EI (N m^2).
+struct Beam {
+  BeamSystem sys;
+  PetscInt   N;
+  PetscReal  h, L, EI, mu;
+};
+Beam Build(const BeamParams &p)
+{
+  Beam b{test::SystemOf(p), p.nodes, 0, p.length, p.EI, p.mu};
+  b.h = b.sys.h;
+  return b;
+}
+
+// Dense K (N x N, zero rows and columns at held nodes) from BeamSystemStiffnessRow.
+std::vector<PetscReal> DenseK(const Beam &op)
 {
   std::vector<PetscReal> K(op.N * op.N, 0.0);
   for (PetscInt i = 0; i < op.N; ++i) {
     PetscInt  cols[5];
     PetscReal vals[5];
-    const PetscInt n = BeamStiffnessRow(op, i, cols, vals);
+    const PetscInt n = BeamSystemStiffnessRow(op.sys, i, cols, vals);
     for (PetscInt q = 0; q < n; ++q) K[i * op.N + cols[q]] = vals[q];
   }
   return K;
@@ -108,12 +123,12 @@ std::vector<PetscReal> JacobiEigenvalues(std::vector<PetscReal> A, PetscInt n)
 }
 
 // Eigenvalues (ascending, N/m) of K restricted to the free nodes.
-std::vector<PetscReal> FreeEigenvalues(const BeamOperator &op)
+std::vector<PetscReal> FreeEigenvalues(const Beam &op)
 {
   const std::vector<PetscReal> K = DenseK(op);
   std::vector<PetscInt>        f;
   for (PetscInt i = 0; i < op.N; ++i)
-    if (!op.held[i]) f.push_back(i);
+    if (!op.sys.held[i]) f.push_back(i);
   const PetscInt         n = (PetscInt)f.size();
   std::vector<PetscReal> A(n * n);
   for (PetscInt a = 0; a < n; ++a)
@@ -123,7 +138,7 @@ std::vector<PetscReal> FreeEigenvalues(const BeamOperator &op)
 
 // The Jacobi routine itself, on a matrix with known eigenvalues: the second
 // difference tridiag(-1, 2, -1) of size n has 2 - 2 cos(k pi/(n+1)), k = 1..n.
-TEST(BeamOperatorHelpers, JacobiEigenvalues)
+TEST(EulerBernoulliSystemHelpers, JacobiEigenvalues)
 {
   const PetscInt         n = 12;
   std::vector<PetscReal> A(n * n, 0.0);
@@ -135,19 +150,19 @@ TEST(BeamOperatorHelpers, JacobiEigenvalues)
   for (PetscInt k = 1; k <= n; ++k) EXPECT_NEAR(2 - 2 * std::cos(k * M_PI / (n + 1)), w[k - 1], 1e-13);
 }
 
-std::vector<PetscReal> RandomVector(const BeamOperator &op, unsigned seed)
+std::vector<PetscReal> RandomVector(const Beam &op, unsigned seed)
 {
   std::mt19937                              gen(seed);
   std::uniform_real_distribution<PetscReal> u(-1e-3, 1e-3);
   std::vector<PetscReal>                    y(op.N);
-  for (PetscInt i = 0; i < op.N; ++i) y[i] = op.held[i] ? 0.0 : u(gen);
+  for (PetscInt i = 0; i < op.N; ++i) y[i] = op.sys.held[i] ? 0.0 : u(gen);
   return y;
 }
 
-std::vector<PetscReal> Apply(const BeamOperator &op, const std::vector<PetscReal> &y)
+std::vector<PetscReal> Apply(const Beam &op, const std::vector<PetscReal> &y)
 {
   std::vector<PetscReal> f(op.N);
-  BeamStiffnessApply(op, y.data(), 1, 0, op.N, f.data(), 1);
+  BeamSystemStiffnessApply(op.sys, y.data(), 1, 0, op.N, f.data(), 1);
   return f;
 }
 
@@ -178,10 +193,10 @@ PetscErrorCode ReadQuietly(BeamParams *p)
 
 } // namespace
 
-TEST(BeamOperator, StiffnessIsSymmetric)
+TEST(EulerBernoulliSystem, StiffnessIsSymmetric)
 {
   for (const Config &c : Configs(41)) {
-    const BeamOperator           op = BeamOperatorBuild(c.p);
+    const Beam                   op = Build(c.p);
     const std::vector<PetscReal> K  = DenseK(op);
     const PetscReal              kmax = MaxAbs(K);
     ASSERT_GT(kmax, 0.0);
@@ -190,23 +205,23 @@ TEST(BeamOperator, StiffnessIsSymmetric)
   }
 }
 
-TEST(BeamOperator, HeldNodes)
+TEST(EulerBernoulliSystem, HeldNodes)
 {
   const PetscInt N = 41;
   for (const Config &c : Configs(N)) {
-    const BeamOperator op = BeamOperatorBuild(c.p);
-    EXPECT_EQ(c.p.left != Support::Free, (bool)op.held[0]) << c.name;
+    const Beam op = Build(c.p);
+    EXPECT_EQ(c.p.left != Support::Free, (bool)op.sys.held[0]) << c.name;
     if (!c.p.has_clamp) {
-      EXPECT_EQ(c.p.right != Support::Free, (bool)op.held[N - 1]) << c.name;
+      EXPECT_EQ(c.p.right != Support::Free, (bool)op.sys.held[N - 1]) << c.name;
     }
     for (PetscInt i = 1; i < N - 1; ++i) {
       const PetscReal x    = i * op.h;
       const bool      held = c.p.has_clamp && x >= c.p.clamp_x0 - 1e-12 && x <= c.p.clamp_x1 + 1e-12;
-      EXPECT_EQ(held, (bool)op.held[i]) << c.name << " node " << i;
+      EXPECT_EQ(held, (bool)op.sys.held[i]) << c.name << " node " << i;
       PetscInt  cols[5];
       PetscReal vals[5];
       if (held) {
-        EXPECT_EQ(0, BeamStiffnessRow(op, i, cols, vals));
+        EXPECT_EQ(0, BeamSystemStiffnessRow(op.sys, i, cols, vals));
       }
     }
   }
@@ -214,9 +229,9 @@ TEST(BeamOperator, HeldNodes)
 
 // Free-free: K 1 = K x = 0 (rigid translation and rotation), the null space is
 // exactly these two, and the forces K y carry no net force or moment.
-TEST(BeamOperator, FreeFreeNullSpaceIsRigidMotion)
+TEST(EulerBernoulliSystem, FreeFreeNullSpaceIsRigidMotion)
 {
-  const BeamOperator           op   = BeamOperatorBuild(Aluminium(Support::Free, Support::Free, 41));
+  const Beam                   op   = Build(Aluminium(Support::Free, Support::Free, 41));
   const std::vector<PetscReal> K    = DenseK(op);
   const PetscReal              kmax = MaxAbs(K);
   std::vector<PetscReal>       one(op.N, 1.0), x(op.N);
@@ -261,7 +276,7 @@ TEST(BeamOperator, FreeFreeNullSpaceIsRigidMotion)
 // Interior rows are EI/h^3 (1, -4, 6, -4, 1); the end rows are the ghost-node
 // stencils of the supports: free  y'' = y''' = 0:  (1, -2, 1), (-2, 5, -4, 1);
 // clamped y_-1 = y_1: (7, -4, 1); pinned y_-1 = -y_1: (5, -4, 1).
-TEST(BeamOperator, StencilRows)
+TEST(EulerBernoulliSystem, StencilRows)
 {
   struct Expect {
     Support                l;
@@ -276,11 +291,11 @@ TEST(BeamOperator, StencilRows)
     {Support::Pinned, 1, 1, {5, -4, 1}},
   };
   for (const Expect &e : ends) {
-    const BeamOperator op = BeamOperatorBuild(Aluminium(e.l, Support::Free, 21));
+    const Beam op = Build(Aluminium(e.l, Support::Free, 21));
     const PetscReal    c  = op.EI / (op.h * op.h * op.h);
     PetscInt           cols[5];
     PetscReal          vals[5];
-    const PetscInt     n = BeamStiffnessRow(op, e.row, cols, vals);
+    const PetscInt     n = BeamSystemStiffnessRow(op.sys, e.row, cols, vals);
     ASSERT_EQ((PetscInt)e.v.size(), n) << SupportName(e.l) << " row " << e.row;
     for (PetscInt q = 0; q < n; ++q) {
       EXPECT_EQ(e.first_col + q, cols[q]);
@@ -288,16 +303,16 @@ TEST(BeamOperator, StencilRows)
     }
   }
   for (const Config &cfg : Configs(21)) {
-    const BeamOperator op = BeamOperatorBuild(cfg.p);
+    const Beam op = Build(cfg.p);
     const PetscReal    c  = op.EI / (op.h * op.h * op.h);
     const PetscReal    s[5] = {1, -4, 6, -4, 1};
     for (PetscInt i = 2; i < op.N - 2; ++i) {
       bool interior = true;
-      for (PetscInt j = i - 2; j <= i + 2; ++j) interior = interior && !op.held[j];
+      for (PetscInt j = i - 2; j <= i + 2; ++j) interior = interior && !op.sys.held[j];
       if (!interior) continue;
       PetscInt  cols[5];
       PetscReal vals[5];
-      ASSERT_EQ(5, BeamStiffnessRow(op, i, cols, vals)) << cfg.name << " row " << i;
+      ASSERT_EQ(5, BeamSystemStiffnessRow(op.sys, i, cols, vals)) << cfg.name << " row " << i;
       for (PetscInt q = 0; q < 5; ++q) {
         EXPECT_EQ(i - 2 + q, cols[q]);
         EXPECT_NEAR(s[q] * c, vals[q], 1e-12 * c) << cfg.name << " row " << i;
@@ -306,23 +321,23 @@ TEST(BeamOperator, StencilRows)
   }
 }
 
-// BeamStiffnessApply agrees with the assembled rows, also over sub-ranges (one
+// The factored action (BeamSystemStiffnessApply) agrees with the assembled rows, also over sub-ranges (one
 // rank's part) with a strided array.
-TEST(BeamOperator, ApplyMatchesRows)
+TEST(EulerBernoulliSystem, ApplyMatchesRows)
 {
   for (const Config &c : Configs(33)) {
-    const BeamOperator           op = BeamOperatorBuild(c.p);
+    const Beam                   op = Build(c.p);
     const std::vector<PetscReal> K  = DenseK(op), y = RandomVector(op, 7);
     const PetscReal              kmax = MaxAbs(K) * MaxAbs(y);
     std::vector<PetscReal>       ys(2 * op.N), f(2 * op.N, -1.0);
     for (PetscInt i = 0; i < op.N; ++i) ys[2 * i] = y[i];
     const PetscInt splits[] = {0, 1, 5, 16, 31, op.N};
-    for (int s = 0; s + 1 < 6; ++s) BeamStiffnessApply(op, ys.data(), 2, splits[s], splits[s + 1], f.data(), 2);
+    for (int s = 0; s + 1 < 6; ++s) BeamSystemStiffnessApply(op.sys, ys.data(), 2, splits[s], splits[s + 1], f.data(), 2);
     for (PetscInt i = 0; i < op.N; ++i) {
       PetscReal ky = 0;
       for (PetscInt j = 0; j < op.N; ++j) ky += K[i * op.N + j] * y[j];
       EXPECT_NEAR(ky, f[2 * i], 1e-13 * kmax) << c.name << " node " << i;
-      if (op.held[i]) {
+      if (op.sys.held[i]) {
         EXPECT_EQ(0.0, f[2 * i]);
       }
     }
@@ -331,9 +346,9 @@ TEST(BeamOperator, ApplyMatchesRows)
 
 // Fourth difference of polynomials on a free-free beam: x^2 and x^3 give 0 in the
 // interior, x^4 gives EI/h^3 * 24 h^4 = 24 EI h ((K y)_i approximates EI y'''' h).
-TEST(BeamOperator, FourthDifferenceOfPolynomials)
+TEST(EulerBernoulliSystem, FourthDifferenceOfPolynomials)
 {
-  const BeamOperator op = BeamOperatorBuild(Aluminium(Support::Free, Support::Free, 21));
+  const Beam op = Build(Aluminium(Support::Free, Support::Free, 21));
   const PetscReal    ref = 24 * op.EI * op.h;
   for (int p = 0; p <= 4; ++p) {
     std::vector<PetscReal> y(op.N);
@@ -352,54 +367,54 @@ TEST(BeamOperator, FourthDifferenceOfPolynomials)
 
 // U = 1/2 y^T K y (every support), U splits over curvature ranges, and the
 // curvature energy of y = x^2 is (EI h / 2) * 4 per interior node.
-TEST(BeamOperator, StrainEnergyIsHalfYKY)
+TEST(EulerBernoulliSystem, StrainEnergyIsHalfYKY)
 {
   for (const Config &c : Configs(41)) {
-    const BeamOperator           op = BeamOperatorBuild(c.p);
+    const Beam                   op = Build(c.p);
     const std::vector<PetscReal> K  = DenseK(op);
     for (unsigned seed = 11; seed <= 13; ++seed) {
       const std::vector<PetscReal> y = RandomVector(op, seed);
       PetscReal                    yKy = 0;
       for (PetscInt i = 0; i < op.N; ++i)
         for (PetscInt j = 0; j < op.N; ++j) yKy += y[i] * K[i * op.N + j] * y[j];
-      const PetscReal U = BeamStrainEnergy(op, y.data(), 1, 0, op.N);
+      const PetscReal U = BeamSystemStrainEnergy(op.sys, y.data(), 1, 0, op.N);
       EXPECT_NEAR(0.5 * yKy, U, 1e-12 * U) << c.name;
       EXPECT_GT(U, 0.0);
-      const PetscReal Usplit = BeamStrainEnergy(op, y.data(), 1, 0, 17) + BeamStrainEnergy(op, y.data(), 1, 17, op.N);
+      const PetscReal Usplit = BeamSystemStrainEnergy(op.sys, y.data(), 1, 0, 17) + BeamSystemStrainEnergy(op.sys, y.data(), 1, 17, op.N);
       EXPECT_NEAR(U, Usplit, 1e-14 * U) << c.name;
     }
   }
-  const BeamOperator     op = BeamOperatorBuild(Aluminium(Support::Free, Support::Free, 41));
+  const Beam             op = Build(Aluminium(Support::Free, Support::Free, 41));
   std::vector<PetscReal> y(op.N);
   for (PetscInt i = 0; i < op.N; ++i) y[i] = std::pow(i * op.h, 2);
-  EXPECT_NEAR(2 * op.EI * op.h * (op.N - 2), BeamStrainEnergy(op, y.data(), 1, 0, op.N), 1e-10 * op.EI * op.L);
+  EXPECT_NEAR(2 * op.EI * op.h * (op.N - 2), BeamSystemStrainEnergy(op.sys, y.data(), 1, 0, op.N), 1e-10 * op.EI * op.L);
 }
 
 // Lumped mass: mu h, half at the ends, total mu L; T = 1/2 sum m v^2 for a
 // translation (1/2 mu L v^2) and a rotation v = x (trapezoid rule of mu x^2).
-TEST(BeamOperator, MassAndKineticEnergy)
+TEST(EulerBernoulliSystem, MassAndKineticEnergy)
 {
   for (const Config &c : Configs(41)) {
-    const BeamOperator op = BeamOperatorBuild(c.p);
+    const Beam op = Build(c.p);
     PetscReal          M  = 0;
-    for (PetscReal m : op.mass) M += m;
+    for (PetscReal m : op.sys.mass) M += m;
     EXPECT_NEAR(c.p.mu * c.p.length, M, 1e-13 * M) << c.name;
-    EXPECT_NEAR(0.5 * c.p.mu * op.h, op.mass[0], 1e-15);
-    EXPECT_NEAR(0.5 * c.p.mu * op.h, op.mass[op.N - 1], 1e-15);
-    EXPECT_NEAR(c.p.mu * op.h, op.mass[op.N / 2], 1e-15);
+    EXPECT_NEAR(0.5 * c.p.mu * op.h, op.sys.mass[0], 1e-15);
+    EXPECT_NEAR(0.5 * c.p.mu * op.h, op.sys.mass[op.N - 1], 1e-15);
+    EXPECT_NEAR(c.p.mu * op.h, op.sys.mass[op.N / 2], 1e-15);
   }
-  const BeamOperator     op = BeamOperatorBuild(Aluminium(Support::Free, Support::Free, 41));
+  const Beam             op = Build(Aluminium(Support::Free, Support::Free, 41));
   const PetscReal        v0 = 2.5, L = op.L, h = op.h;
   std::vector<PetscReal> v(2 * op.N, v0), x(op.N);
-  EXPECT_NEAR(0.5 * op.mu * L * v0 * v0, BeamKineticEnergy(op, v.data(), 2, 0, op.N), 1e-13);
+  EXPECT_NEAR(0.5 * op.mu * L * v0 * v0, BeamSystemKineticEnergy(op.sys, v.data(), 2, 0, op.N), 1e-13);
   for (PetscInt i = 0; i < op.N; ++i) x[i] = i * h;
-  const PetscReal T = BeamKineticEnergy(op, x.data(), 1, 0, 20) + BeamKineticEnergy(op, x.data(), 1, 20, op.N);
+  const PetscReal T = BeamSystemKineticEnergy(op.sys, x.data(), 1, 0, 20) + BeamSystemKineticEnergy(op.sys, x.data(), 1, 20, op.N);
   EXPECT_NEAR(0.5 * op.mu * (L * L * L / 3 + h * h * L / 6), T, 1e-13);
 }
 
 // A clamped end makes K positive definite on the free nodes; a pin at one end
 // of an otherwise free beam leaves one zero eigenvalue (rotation about the pin).
-TEST(BeamOperator, SupportsRemoveRigidModes)
+TEST(EulerBernoulliSystem, SupportsRemoveRigidModes)
 {
   struct Case {
     Support  l, r;
@@ -417,10 +432,10 @@ TEST(BeamOperator, SupportsRemoveRigidModes)
       p.clamp_x0  = 0.62;
       p.clamp_x1  = 0.72;
     }
-    const BeamOperator op = BeamOperatorBuild(p);
+    const Beam op = Build(p);
     if (cs.l == Support::Clamped) {
-      EXPECT_TRUE(op.held[0]);
-      EXPECT_FALSE(op.held[1]);
+      EXPECT_TRUE(op.sys.held[0]);
+      EXPECT_FALSE(op.sys.held[1]);
     }
     const std::vector<PetscReal> w = FreeEigenvalues(op);
     PetscInt                     nzero = 0;
@@ -430,24 +445,24 @@ TEST(BeamOperator, SupportsRemoveRigidModes)
   }
 }
 
-TEST(BeamOperator, ImpactStencil)
+TEST(EulerBernoulliSystem, ImpactStencil)
 {
-  const BeamOperator op = BeamOperatorBuild(Aluminium(Support::Free, Support::Free, 41));
-  ImpactStencil      s  = BeamImpactStencil(op, 7 * op.h); // on a node
+  const Beam op = Build(Aluminium(Support::Free, Support::Free, 41));
+  ImpactStencil      s  = GridImpactStencil(op.N, op.L, 7 * op.h); // on a node
   EXPECT_EQ(7, s.j);
   EXPECT_NEAR(1.0, s.w, 1e-12);
-  s = BeamImpactStencil(op, (12 + 0.3) * op.h); // between nodes 12 and 13
+  s = GridImpactStencil(op.N, op.L, (12 + 0.3) * op.h); // between nodes 12 and 13
   EXPECT_EQ(12, s.j);
   EXPECT_NEAR(0.7, s.w, 1e-12);
-  s = BeamImpactStencil(op, 0.0);
+  s = GridImpactStencil(op.N, op.L, 0.0);
   EXPECT_EQ(0, s.j);
   EXPECT_NEAR(1.0, s.w, 1e-12);
-  s = BeamImpactStencil(op, op.L); // all weight on the last node
+  s = GridImpactStencil(op.N, op.L, op.L); // all weight on the last node
   EXPECT_EQ(op.N - 2, s.j);
   EXPECT_NEAR(0.0, s.w, 1e-12);
   // The hat functions reproduce a linear field exactly: w x_j + (1-w) x_{j+1} = x_imp.
   for (PetscReal x : {0.0, 0.013, 0.55, 0.9, 1.0999, 1.1}) {
-    s = BeamImpactStencil(op, x);
+    s = GridImpactStencil(op.N, op.L, x);
     ASSERT_GE(s.j, 0);
     ASSERT_LT(s.j, op.N - 1);
     EXPECT_GE(s.w, 0.0);

@@ -1,12 +1,213 @@
 // Contact laws and the rigid-body formula against closed forms.
+//
+// Every registered law (model/contact_laws/) is checked here as it is registered, with nothing
+// written for it: its stiffness is the derivative of its force, its stored energy the integral
+// of its force, W continuous at the branch switch, and its rigid-wall closed forms (maximum
+// compression, contact time, coefficient of restitution) and scales agree with the ball
+// integrated against a wall under the law's own force (RK4, the switch and the separation
+// bisected onto their roots). The laws' own formulas are then checked against the physics
+// (the linear spring's pi sqrt(m/k), the hysteretic ball's e^2 = (m+1)/(n+1) and cycle loss).
 #include "model/contact.hpp"
 #include "model/rigid.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <set>
+#include <string>
 
 using namespace beamimpact;
+
+namespace {
+
+BallParams BallWithLaw(const char *name)
+{
+  BallParams b;
+  BallParamsUseLaw(&b, ContactLawFind(name));
+  return b;
+}
+
+struct WallBounce {
+  double cor = 0, contact_time = 0, max_compression = 0, loading_time = 0;
+};
+
+// A ball of mass m against a rigid, fixed wall at speed v: m c'' = -force(c), at_max(c) called
+// at the maximum compression (dc/dt = 0: the switch to unloading), until the separation at
+// c = 0. RK4 at step h; each root is bisected by re-stepping from the step's start.
+WallBounce Bounce(const std::function<double(double)> &force, const std::function<void(double)> &at_max, double mass, double v, double h)
+{
+  auto rk4 = [&](double &c, double &u, double dt) {
+    const double c1 = u, u1 = -force(c) / mass;
+    const double c2 = u + 0.5 * dt * u1, u2 = -force(c + 0.5 * dt * c1) / mass;
+    const double c3 = u + 0.5 * dt * u2, u3 = -force(c + 0.5 * dt * c2) / mass;
+    const double c4 = u + dt * u3, u4 = -force(c + dt * c3) / mass;
+    c += dt / 6 * (c1 + 2 * c2 + 2 * c3 + c4);
+    u += dt / 6 * (u1 + 2 * u2 + 2 * u3 + u4);
+  };
+  double     t = 0, c = 0, u = v;
+  WallBounce w;
+  for (int phase = 0; phase < 2; ++phase) {
+    const bool loading = phase == 0;
+    for (long it = 0; it < 10000000L; ++it) {
+      double cn = c, un = u;
+      rk4(cn, un, h);
+      if (!(loading ? un <= 0 : cn <= 0)) {
+        c = cn, u = un, t += h;
+        continue;
+      }
+      double lo = 0, hi = h;
+      for (int k = 0; k < 200 && hi - lo > 1e-16 * h; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        double       cm = c, um = u;
+        rk4(cm, um, mid);
+        if (loading ? um <= 0 : cm <= 0) hi = mid;
+        else lo = mid;
+      }
+      rk4(c, u, hi);
+      t += hi;
+      break;
+    }
+    if (loading) {
+      w.max_compression = c;
+      w.loading_time    = t;
+      at_max(c);
+    }
+  }
+  w.cor          = -u / v;
+  w.contact_time = t;
+  return w;
+}
+
+// The ball bouncing under its law's force (ContactForce), with the phases of a contact as the
+// program switches them (ContactBegin, loading; ContactSwitch to unloading at the maximum
+// compression); `steps` steps over c_max/v.
+WallBounce BounceUnderTheLaw(const BallParams &b, double v, int steps = 20000)
+{
+  ContactState s;
+  ContactBegin(b, &s, v);
+  return Bounce([&](double c) { return ContactForce(b, s, c); }, [&](double c) { ContactSwitch(b, &s, ContactPhase::Unloading, c); }, b.mass, v, ContactWallMaxCompression(b, v) / v / steps);
+}
+
+} // namespace
+
+TEST(ContactLaws, RegistryNamesOptionsAndDefaults)
+{
+  const std::vector<const ContactLaw *> &laws = ContactLaws();
+  ASSERT_GE(laws.size(), 2u);
+  EXPECT_STREQ(BallParams().law->Name(), "linear") << "the default ball is the paper's linear spring";
+  EXPECT_EQ(ContactLawFind("HYSTERESIS"), ContactLawFind("hysteresis"));
+  EXPECT_EQ(ContactLawFind("rubber"), nullptr);
+  std::set<std::string> names, options;
+  for (const ContactLaw *law : laws) {
+    EXPECT_TRUE(names.insert(law->Name()).second) << "two laws named " << law->Name();
+    EXPECT_EQ(ContactLawFind(law->Name()), law);
+    int numbers = 0;
+    for (const OptionSpec &row : law->Options()) {
+      EXPECT_EQ(row.name.rfind("-ball_", 0), 0u) << row.name;
+      EXPECT_TRUE(options.insert(row.name).second) << row.name << " belongs to two laws";
+      EXPECT_FALSE(row.help.empty()) << row.name;
+      if (row.kind != OptionKind::Real) continue;
+      EXPECT_FALSE(row.unit.empty()) << row.name << ": every number has its unit";
+      ++numbers;
+    }
+    EXPECT_LE(numbers, kContactLawMaxValues);
+  }
+  // A law's parameters are its rows, with the rows' defaults.
+  const BallParams h = BallWithLaw("hysteresis");
+  EXPECT_EQ(BallValue(h, "k1"), 2e4);
+  EXPECT_EQ(BallValue(h, "-ball_m"), 1.0);
+  EXPECT_EQ(BallValue(h, "n"), 1.768);
+  EXPECT_EQ(BallValue(h, "cor"), 0.0) << "not given";
+  EXPECT_TRUE(std::isnan(BallValue(h, "k"))) << "-ball_k is the linear law's";
+  BallParams l = BallWithLaw("linear");
+  EXPECT_EQ(BallValue(l, "k"), 2e4);
+  EXPECT_TRUE(BallValueSet(&l, "k", 3e4));
+  EXPECT_EQ(ContactLinearStiffness(l), 3e4);
+  EXPECT_FALSE(BallValueSet(&l, "k1", 1.0));
+}
+
+// F' = dF/dc, stored energy = integral of F, W continuous at the switch, for every law on both
+// branches (a switch at c_s, then the unloading branch below it).
+TEST(ContactLaws, StiffnessAndStoredEnergyAreTheDerivativeAndIntegralOfTheForce)
+{
+  for (const ContactLaw *law : ContactLaws()) {
+    BallParams   b = BallWithLaw(law->Name());
+    ContactState s;
+    ContactBegin(b, &s, b.speed);
+    const double cs = ContactCompressionScale(b);
+    for (int branch = 0; branch < 2; ++branch) {
+      for (double f : {0.2, 0.55, 0.9}) {
+        const double c = f * cs, h = 1e-6 * cs;
+        const double fd = (ContactForce(b, s, c + h) - ContactForce(b, s, c - h)) / (2 * h);
+        EXPECT_NEAR(ContactStiffness(b, s, c), fd, 1e-6 * std::abs(fd)) << law->Name() << " branch " << branch << " c = " << c;
+        // Simpson's rule on [0, c] (fine enough for c^p with p >= 1 to 1e-9).
+        const int N = 2000;
+        double    q = ContactForce(b, s, 0) + ContactForce(b, s, c);
+        for (int i = 1; i < N; ++i) q += (i % 2 ? 4 : 2) * ContactForce(b, s, c * i / N);
+        q *= c / N / 3;
+        EXPECT_NEAR(ContactStoredEnergy(b, s, c), q, 1e-8 * q) << law->Name() << " branch " << branch;
+        EXPECT_NEAR(ContactForce(b, s, -c), -ContactForce(b, s, c), 1e-14 * std::abs(ContactForce(b, s, c))) << law->Name() << ": odd in c inside a contact";
+      }
+      if (branch == 0) {
+        const double W = ContactWork(b, s, cs), F = ContactForce(b, s, cs);
+        ContactSwitch(b, &s, ContactPhase::Unloading, cs);
+        EXPECT_NEAR(ContactWork(b, s, cs), W, 1e-13 * W) << law->Name() << ": W continuous at the switch";
+        EXPECT_NEAR(ContactForce(b, s, cs), F, 1e-12 * F) << law->Name() << ": F continuous at the switch";
+      }
+    }
+    s.phase = ContactPhase::Separated;
+    EXPECT_EQ(ContactForce(b, s, cs), 0.0);
+    EXPECT_EQ(ContactStiffness(b, s, cs), 0.0);
+    EXPECT_EQ(ContactStoredEnergy(b, s, cs), 0.0);
+  }
+}
+
+// The closed forms every law states against the ball integrated on a wall under its own
+// force, at three speeds; the scales and the stability bound from them.
+TEST(ContactLaws, WallClosedFormsAgreeWithTheIntegratedBounce)
+{
+  for (const ContactLaw *law : ContactLaws()) {
+    for (double v : {0.3, 1.0, 7.0}) {
+      BallParams b = BallWithLaw(law->Name());
+      b.speed      = v;
+      const WallBounce w = BounceUnderTheLaw(b, v);
+      EXPECT_NEAR(w.max_compression / ContactWallMaxCompression(b, v), 1.0, 1e-7) << law->Name() << " v = " << v;
+      EXPECT_NEAR(w.loading_time / ContactWallLoadingTime(b, v), 1.0, 1e-6) << law->Name() << " v = " << v;
+      EXPECT_NEAR(w.contact_time / ContactWallTime(b, v), 1.0, 1e-6) << law->Name() << " v = " << v;
+      EXPECT_NEAR(w.cor, BallCorAt(b, v), 1e-7) << law->Name() << " v = " << v;
+      if (ContactElastic(b)) EXPECT_NEAR(w.cor, 1.0, 1e-7) << law->Name() << " is elastic: it returns the ball at its speed";
+      else EXPECT_LT(w.cor, 1.0 - 1e-3) << law->Name() << " is lossy";
+      EXPECT_EQ(ContactHasHysteresis(b), std::abs(ContactWallUnloadingTime(b, v) / ContactWallLoadingTime(b, v) - 1) > 1e-9) << law->Name();
+      // Scales at the incident speed: the wall's compression, a contact time within a factor
+      // 1.5 of the wall's, and a stiffness bound above dF/dc over the whole bounce.
+      EXPECT_NEAR(ContactCompressionScale(b) / w.max_compression, 1.0, 1e-7) << law->Name();
+      EXPECT_GT(ContactTimeScale(b), w.contact_time / 1.5) << law->Name();
+      EXPECT_LT(ContactTimeScale(b), w.contact_time * 1.5) << law->Name();
+      ContactState s;
+      ContactBegin(b, &s, v);
+      for (int branch = 0; branch < 2; ++branch) {
+        for (double f : {0.1, 0.5, 1.0}) EXPECT_GE(ContactStiffnessBound(b), ContactStiffness(b, s, f * w.max_compression)) << law->Name();
+        ContactSwitch(b, &s, ContactPhase::Unloading, w.max_compression);
+      }
+    }
+  }
+}
+
+TEST(ContactLaws, LinearMeansForceProportionalToCompression)
+{
+  for (const ContactLaw *law : ContactLaws()) {
+    const BallParams b = BallWithLaw(law->Name());
+    ContactState     s, u;
+    const double     c = ContactCompressionScale(b);
+    ContactSwitch(b, &u, ContactPhase::Unloading, 1.5 * c);
+    bool proportional = true; // on both branches
+    for (const ContactState &q : {s, u}) proportional = proportional && std::abs(ContactForce(b, q, 0.5 * c) / ContactForce(b, q, c) - 0.5) < 1e-12;
+    EXPECT_EQ(ContactLinear(b), proportional) << law->Name();
+    if (ContactLinear(b)) EXPECT_NEAR(ContactForce(b, u, c), ContactLinearStiffness(b) * c, 1e-14 * ContactForce(b, u, c));
+    else EXPECT_TRUE(std::isnan(ContactLinearStiffness(b)));
+  }
+}
 
 TEST(ContactLaw, LinearSpringForceEnergyAndWallTime)
 {
@@ -15,11 +216,11 @@ TEST(ContactLaw, LinearSpringForceEnergyAndWallTime)
   EXPECT_DOUBLE_EQ(ContactForce(b, s, 1e-3), 20.0);
   EXPECT_DOUBLE_EQ(ContactStiffness(b, s, 1e-3), 2e4);
   EXPECT_DOUBLE_EQ(ContactStoredEnergy(b, s, 1e-3), 0.5 * 2e4 * 1e-6);
-  EXPECT_NEAR(ContactWallTimeLinear(b), M_PI * std::sqrt(0.042 / 2e4), 1e-15);
+  EXPECT_NEAR(ContactWallTime(b, 1.0), M_PI * std::sqrt(0.042 / 2e4), 1e-15) << "half a period of the ball on the spring";
+  EXPECT_NEAR(ContactWallTime(b, 9.0), M_PI * std::sqrt(0.042 / 2e4), 1e-15) << "whatever the speed";
   EXPECT_NEAR(ContactCompressionScale(b), std::sqrt(0.042 / 2e4), 1e-15);
-  s.phase = ContactPhase::Separated;
-  EXPECT_EQ(ContactForce(b, s, 1e-3), 0.0);
-  EXPECT_EQ(ContactStiffness(b, s, 1e-3), 0.0);
+  EXPECT_EQ(BallCorAt(b, 3.0), 1.0);
+  EXPECT_TRUE(ContactElastic(b) && ContactLinear(b) && !ContactHasHysteresis(b));
 }
 
 // On a rigid wall the ball stores 1/2 m v^2 = k1 c^(m+1)/(m+1) while loading and returns
@@ -27,20 +228,20 @@ TEST(ContactLaw, LinearSpringForceEnergyAndWallTime)
 TEST(ContactLaw, HysteresisReturnsRestitutionSquaredOnAWall)
 {
   for (double speed : {0.1, 1.0, 40.0}) {
-    BallParams b;
-    b.law   = ContactLawKind::Hysteresis;
-    b.speed = speed;
+    BallParams b = BallWithLaw("hysteresis"); // k1 = 2e4, m = 1, n = 1.768
+    b.speed      = speed;
     const double E_in  = 0.5 * b.mass * speed * speed;
     const double c_max = ContactCompressionScale(b);
     ContactState s;
+    ContactBegin(b, &s, speed);
     EXPECT_NEAR(ContactStoredEnergy(b, s, c_max), E_in, 1e-12 * E_in);
     const double W_before = ContactWork(b, s, c_max);
     ContactSwitch(b, &s, ContactPhase::Unloading, c_max);
     EXPECT_NEAR(ContactWork(b, s, c_max), W_before, 1e-12 * E_in) << "W must be continuous at the switch";
-    EXPECT_NEAR(ContactForce(b, s, c_max), b.k1 * std::pow(c_max, b.m), 1e-12 * b.k1 * c_max) << "force continuous at c_max";
+    EXPECT_NEAR(ContactForce(b, s, c_max), 2e4 * c_max, 1e-12 * 2e4 * c_max) << "force continuous at c_max";
     const double E_out = ContactStoredEnergy(b, s, c_max);
-    EXPECT_NEAR(E_out / E_in, (b.m + 1) / (b.n + 1), 1e-12);
-    EXPECT_NEAR(std::sqrt(E_out / E_in), ContactWallRestitution(b), 1e-12);
+    EXPECT_NEAR(E_out / E_in, 2 / 2.768, 1e-12);
+    EXPECT_NEAR(std::sqrt(E_out / E_in), BallCorAt(b, speed), 1e-12);
     // After unloading to c = 0 everything not returned is dissipated: the cycle loss formula.
     EXPECT_NEAR(ContactWork(b, s, 0.0), ContactCycleLoss(b, c_max), 1e-12 * E_in);
     EXPECT_NEAR(ContactWork(b, s, 0.0), E_in - E_out, 1e-12 * E_in);
@@ -49,14 +250,14 @@ TEST(ContactLaw, HysteresisReturnsRestitutionSquaredOnAWall)
 
 TEST(ContactLaw, HysteresisStiffnessIsTheDerivativeOfTheForce)
 {
-  BallParams b;
-  b.law = ContactLawKind::Hysteresis;
-  ContactState s;
+  const BallParams b = BallWithLaw("hysteresis");
+  ContactState     s;
   ContactSwitch(b, &s, ContactPhase::Unloading, 1.2e-3);
   for (double c : {2e-4, 7e-4, 1.1e-3}) {
     const double h = 1e-9, fd = (ContactForce(b, s, c + h) - ContactForce(b, s, c - h)) / (2 * h);
     EXPECT_NEAR(ContactStiffness(b, s, c), fd, 1e-6 * std::abs(fd));
   }
+  EXPECT_TRUE(ContactHasHysteresis(b) && !ContactElastic(b) && !ContactLinear(b));
 }
 
 TEST(RigidBody, EffectiveMassAndLimits)
@@ -71,8 +272,52 @@ TEST(RigidBody, EffectiveMassAndLimits)
   EXPECT_TRUE(std::isnan(RigidACOR(0.042, 0.1, 0.9)));                   // more loss than energy
 }
 
-TEST(RigidBody, ForcedLossFractionInvertsEquation11)
+// Eq. (11) and its forced fit against the collision itself: a ball (m, speed 1) rebounding at
+// -e from a free mass M_e at rest gives it M_e V = m (1 + e) (momentum), and the collision has
+// lost f = 1 - (m e^2 + M_e V^2) / m of the incident energy (a collision: f >= 0 and the ball
+// not faster than the body, -e <= V). Both formulas must return that pair (e, f), each from
+// the other.
+TEST(RigidBody, Equation11AndItsForcedFitAgreeWithMomentumAndEnergy)
 {
-  for (double f : {0.0, 0.2, 0.6})
-    for (double Me : {0.1, 0.3, 1.0}) EXPECT_NEAR(RigidForcedLossFraction(0.042, Me, RigidACOR(0.042, Me, f)), f, 1e-12);
+  const double m = 0.042;
+  for (double Me : {0.01, 0.1, 0.3, 1.0})
+    for (double e : {-0.3, 0.0, 0.2, 0.45, 0.7}) {
+      const double V = m * (1 + e) / Me, f = 1 - (m * e * e + Me * V * V) / m;
+      if (f < 0 || -e > V) continue; // energy created, or the ball passing through the body: not a collision
+      EXPECT_NEAR(RigidACOR(m, Me, f), e, 1e-12) << "M_e = " << Me << ", f = " << f;
+      EXPECT_NEAR(RigidForcedLossFraction(m, Me, e), f, 1e-12) << "M_e = " << Me << ", e = " << e;
+    }
+}
+
+// The Hertz ball F = k c^(3/2) on a rigid wall (power law p = 3/2): c_max = ((p+1) m v^2/(2k))^(1/(p+1))
+// and t = 2 (c_max/v) B(1/(p+1), 1/2)/(p+1) (the Beta function from tgamma here), e = 1; the
+// law's closed forms and an RK4 bounce under F = k c^(3/2) written here must both give them,
+// and the contact time falls with speed as v^(-1/5).
+TEST(ContactLaw, HertzOnARigidWallAgainstTheClosedForm)
+{
+  const double p = 1.5;
+  for (double k : {5e5, 3e7})
+    for (double v : {0.5, 1.0, 10.0, 40.0}) {
+      BallParams b = BallWithLaw("hertz");
+      b.mass       = 0.145;
+      b.speed      = v;
+      ASSERT_TRUE(BallValueSet(&b, "hertz_k", k));
+      const double c_max = std::pow((p + 1) * b.mass * v * v / (2 * k), 1 / (p + 1));
+      const double a = 1 / (p + 1), beta = std::tgamma(a) * std::tgamma(0.5) / std::tgamma(a + 0.5);
+      const double tau = 2 * c_max / v * beta / (p + 1);
+      EXPECT_NEAR(ContactWallMaxCompression(b, v) / c_max, 1.0, 1e-14);
+      EXPECT_NEAR(ContactWallTime(b, v) / tau, 1.0, 1e-13);
+      EXPECT_EQ(BallCorAt(b, v), 1.0);
+      const WallBounce w = Bounce([&](double c) { return c > 0 ? k * std::pow(c, p) : -k * std::pow(-c, p); }, [](double) {}, b.mass, v, c_max / v / 20000);
+      EXPECT_NEAR(w.max_compression / c_max, 1.0, 1e-9) << "k = " << k << ", v = " << v;
+      EXPECT_NEAR(w.contact_time / tau, 1.0, 1e-8) << "k = " << k << ", v = " << v;
+      EXPECT_NEAR(w.cor, 1.0, 1e-9);
+      EXPECT_NEAR(ContactWallTime(b, v) / ContactWallTime(b, 1.0), std::pow(v, -0.2), 1e-13);
+      ContactState s;
+      EXPECT_NEAR(ContactForce(b, s, c_max), k * std::pow(c_max, 1.5), 1e-13 * k * std::pow(c_max, 1.5));
+      EXPECT_NEAR(ContactStoredEnergy(b, s, c_max), 0.5 * b.mass * v * v, 1e-13 * b.mass * v * v) << "all the kinetic energy stored at c_max";
+    }
+  const BallParams b = BallWithLaw("hertz");
+  EXPECT_TRUE(ContactElastic(b) && !ContactLinear(b) && !ContactHasHysteresis(b));
+  EXPECT_EQ(BallValue(b, "hertz_k"), 5e5);
 }

@@ -45,10 +45,10 @@ inline BeamParams WallBeam(PetscReal EI, PetscReal mu, PetscInt nodes = 21)
   return p;
 }
 
-inline BallParams Superball(ContactLawKind law = ContactLawKind::Linear)
+inline BallParams Superball(const char *law = "linear")
 {
-  BallParams b; // 42 g, 1 m/s, k = 2e4 N/m; hysteresis k1 = 2e4, m = 1, n = 1.768
-  b.law = law;
+  BallParams b; // 42 g, 1 m/s, k = 2e4 N/m; hysteresis k1 = 2e4, m = 1, n = 1.768 (the laws' defaults)
+  BallParamsUseLaw(&b, ContactLawFind(law));
   return b;
 }
 
@@ -68,11 +68,9 @@ inline BeamSystem SystemOf(const BeamParams &p)
 inline BeamSystem TwoFieldCopies(const BeamSystem &a, PetscReal mass_factor)
 {
   EXPECT_EQ(1, a.fields);
-  BeamSystem s = a; // L, h, nodes, frequency unit, damping
+  BeamSystem s = a; // L, h, nodes, frequency unit, force terms
   s.fields     = 2;
   s.ndof       = 2 * a.ndof;
-  s.bw         = 2 * a.bw;
-  s.reach      = 2 * a.reach;
   s.mass.assign(s.ndof, 0.0);
   s.held.assign(s.ndof, 0);
   s.strain.clear();
@@ -87,15 +85,7 @@ inline BeamSystem TwoFieldCopies(const BeamSystem &a, PetscReal mass_factor)
       s.strain.push_back(t);
     }
   }
-  std::stable_sort(s.strain.begin(), s.strain.end(), [](const StrainTerm &x, const StrainTerm &y) { return x.owner < y.owner; });
-  s.strain_begin.assign(s.ndof + 1, 0);
-  for (const StrainTerm &t : s.strain) s.strain_begin[t.owner + 1]++;
-  for (PetscInt d = 0; d < s.ndof; ++d) s.strain_begin[d + 1] += s.strain_begin[d];
-  const PetscInt wa = 2 * a.bw + 1, ws = 2 * s.bw + 1;
-  s.band.assign((size_t)ws * s.ndof, 0.0);
-  for (PetscInt f = 0; f < 2; ++f)
-    for (PetscInt i = 0; i < a.ndof; ++i)
-      for (PetscInt o = -a.bw; o <= a.bw; ++o) s.band[(size_t)ws * (2 * i + f) + (2 * o + s.bw)] = a.band[(size_t)wa * i + (o + a.bw)];
+  BeamSystemAssemble(&s); // index the strain terms, assemble K and C on the new layout
   return s;
 }
 

@@ -31,7 +31,7 @@ const std::vector<Config> &Integrators()
   return c;
 }
 
-void CompareAll(ContactLawKind law, double x)
+void CompareAll(const char *law, double x)
 {
   const BeamParams beam = AluminiumBeam(1.1, 41);
   const BallParams ball = Superball(law);
@@ -51,5 +51,5 @@ void CompareAll(ContactLawKind law, double x)
 }
 } // namespace
 
-TEST(Integrators, AgreeWithTheLinearSpring) { CompareAll(ContactLawKind::Linear, 0.9); }
-TEST(Integrators, AgreeWithTheHystereticBall) { CompareAll(ContactLawKind::Hysteresis, 0.9); }
+TEST(Integrators, AgreeWithTheLinearSpring) { CompareAll("linear", 0.9); }
+TEST(Integrators, AgreeWithTheHystereticBall) { CompareAll("hysteresis", 0.9); }

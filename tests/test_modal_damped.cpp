@@ -51,7 +51,7 @@ TEST(ModalDamped, WithoutDampingItIsTheUndampedPhase)
   for (const Case &c : Cases(0.0, 0.0)) {
     const BeamSystem  sys = SystemOf(c.beam);
     const BallParams  b   = Superball();
-    const ModalSystem S   = ModalSystemBuild(sys, BeamSystemCoupling(sys, c.x), b.mass, b.k);
+    const ModalSystem S   = ModalSystemBuild(sys, BeamSystemCoupling(sys, c.x), b.mass, BallValue(b, "k"));
     ModalBasis        B;
     ModalDampedBasis  DB;
     ASSERT_EQ(ModalBasisBuild(S, true, &B), 0);
@@ -167,7 +167,7 @@ TEST(ModalDamped, DissipationMatchesQuadratureAndBalances)
   for (const Damping &dmp : {Damping{2.0, 2e-6}, Damping{0.0, 1e-4}, Damping{20.0, 0.0}}) {
     const BeamSystem  sys = SystemOf(Damped(AluminiumBeam(1.1, 41), dmp.alpha, dmp.beta));
     const BallParams  b   = Superball();
-    const ModalSystem S   = ModalSystemBuild(sys, BeamSystemCoupling(sys, 0.9), b.mass, b.k);
+    const ModalSystem S   = ModalSystemBuild(sys, BeamSystemCoupling(sys, 0.9), b.mass, BallValue(b, "k"));
     ModalDampedBasis  DB;
     ASSERT_EQ(ModalDampedBasisBuild(S, true, &DB), 0);
     std::vector<PetscReal> q(S.n, 0.0), qd(S.n, 0.0), qs, qds, v(sys.ndof);

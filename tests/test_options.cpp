@@ -1,13 +1,26 @@
 // Options files (includes and file paths relative to the including file, comments, quotes,
-// cycles) and the closest-option suggestion for a misspelt name.
+// cycles), the closest-option suggestion for a misspelt name, and the option tables: every row
+// in -help with the default it states, every option -help prints a row, the checks a row makes
+// (list counts, empty items, NaN), the unknown-option check, the run record of the values read.
+#include "app/tasks.hpp"
+#include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/options_files.hpp"
+#include "io/run_record.hpp"
+#include "io/scenario_options.hpp"
+#include "io/text.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <strings.h>
 #include <unistd.h>
 #include <vector>
 
@@ -95,4 +108,328 @@ TEST(OptionsClosest, SuggestsOnlyNearNames)
   EXPECT_EQ("-ball_speed", OptionsClosest("-ball_spede", known));
   EXPECT_EQ("", OptionsClosest("-no_such_thing", known));
   EXPECT_EQ("", OptionsClosest("-beam_width", known)); // 4+ edits from anything
+}
+
+// ---------------------------------------------------------------------------------------------
+// The option tables
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+std::string *g_capture = nullptr;
+
+PetscErrorCode CaptureHelp(MPI_Comm, const char format[], ...)
+{
+  va_list args;
+  va_start(args, format);
+  char buf[8192];
+  std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  if (g_capture) *g_capture += buf;
+  return 0;
+}
+
+PetscErrorCode CaptureVF(FILE *, const char format[], va_list args)
+{
+  char buf[8192];
+  std::vsnprintf(buf, sizeof buf, format, args);
+  if (g_capture) *g_capture += buf;
+  return 0;
+}
+
+// What f() prints through PETSc (help lines and PetscPrintf), instead of printing it.
+template <class F>
+std::string Captured(F f)
+{
+  std::string text;
+  auto        help = PetscHelpPrintf;
+  auto        vf   = PetscVFPrintf;
+  g_capture        = &text;
+  PetscHelpPrintf  = CaptureHelp;
+  PetscVFPrintf    = CaptureVF;
+  f();
+  PetscHelpPrintf = help;
+  PetscVFPrintf   = vf;
+  g_capture       = nullptr;
+  return text;
+}
+
+// The -help listing of the program, parsed: option name -> the defaults it shows, in the order
+// listed (PETSc's formats: "<1.1 : 1.1>", "<now 41 : formerly 41>", ": <FALSE : FALSE>", the
+// tables' "<none>"; PETSc's options are listed by PETSc's objects, then by the PETSc table).
+std::map<std::string, std::vector<std::string>> HelpListing(std::string *text)
+{
+  PetscOptionsHelpPrinted printed = PetscOptionsHelpPrintedSingleton; // print every block again
+  PetscOptionsHelpPrintedSingleton = NULL;
+  EXPECT_EQ(0, PetscOptionsSetValue(NULL, "-help", NULL));
+  *text = Captured([] { EXPECT_EQ(0, PrintAllOptions(PETSC_COMM_WORLD)); });
+  EXPECT_EQ(0, PetscOptionsClearValue(NULL, "-help"));
+  PetscOptionsHelpPrintedDestroy(&PetscOptionsHelpPrintedSingleton);
+  PetscOptionsHelpPrintedSingleton = printed;
+  std::map<std::string, std::vector<std::string>> shown;
+  std::istringstream                              lines(*text);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.compare(0, 3, "  -") != 0) continue;
+    const size_t end = line.find_first_of(" :<", 2);
+    const std::string name = line.substr(2, end - 2);
+    const size_t      a = line.find('<', end), b = a == std::string::npos ? a : line.find('>', a);
+    if (b == std::string::npos) continue;
+    std::string d = line.substr(a + 1, b - a - 1);
+    if (d.compare(0, 4, "now ") == 0) d = d.substr(4);
+    shown[name].push_back(d.substr(0, d.find(" : ")));
+  }
+  return shown;
+}
+
+bool SameDefault(const OptionSpec &s, const std::string &shown)
+{
+  switch (s.kind) {
+  case OptionKind::Real:
+  case OptionKind::Int: {
+    const double a = std::strtod(s.def.c_str(), nullptr), b = std::strtod(shown.c_str(), nullptr);
+    return std::abs(a - b) <= 1e-5 * std::abs(a); // -help prints %g
+  }
+  case OptionKind::RealList: return shown == (s.def.empty() ? "none" : s.def);
+  default: return strcasecmp(s.def.c_str(), shown.c_str()) == 0;
+  }
+}
+
+} // namespace
+
+// Every row of every registered table is in -help, and the default -help shows (the value the
+// code starts from) is the one the row states: the table and the code's defaults agree.
+TEST(OptionTables, EveryRowIsInHelpWithTheDefaultItStates)
+{
+  std::string text;
+  const auto  shown = HelpListing(&text);
+  ASSERT_GT(shown.size(), 100u) << text.substr(0, 2000);
+  int checked = 0;
+  for (const OptionModule *m : OptionModules())
+    for (const OptionSpec &s : m->options) {
+      const auto it = shown.find(s.name);
+      ASSERT_NE(shown.end(), it) << s.name << " (module " << m->name << ") is not in -help";
+      if (m->name == "interim") continue; // placeholders until their modules' own tables (app/registry.cpp)
+      if (s.def.empty() && s.kind != OptionKind::Text && s.kind != OptionKind::File && s.kind != OptionKind::RealList) continue; // no default: the feature is off
+      // the program's readers list an option once, with the value the code starts from; the
+      // PETSc table's block (last) lists PETSc's options with the program's defaults
+      const std::string &d = m->petsc ? it->second.back() : it->second.front();
+      EXPECT_TRUE(SameDefault(s, d)) << s.name << ": the row says '" << s.def << "', -help shows '" << d << "'";
+      checked++;
+    }
+  EXPECT_GT(checked, 60);
+  EXPECT_NE(std::string::npos, text.find("  -ts_modal_order <4>")) << "-ts_modal_order is read only under -ts_type modal, and -help lists it";
+}
+
+// Every option the program's own blocks print is a row of some table: nothing is described
+// outside the tables (PETSc's blocks, under its prefixes, are PETSc's).
+TEST(OptionTables, EveryOptionInHelpIsARow)
+{
+  std::string text;
+  const auto  shown = HelpListing(&text);
+  const size_t from = text.find(TaskOptionTable().title + ":");
+  ASSERT_NE(std::string::npos, from);
+  std::string strays;
+  for (const auto &kv : shown)
+    if (text.find("  " + kv.first, from) != std::string::npos && !OptionIsPetsc(kv.first) && !OptionSpecFind(kv.first)) strays += " " + kv.first;
+  EXPECT_EQ("", strays) << "options -help lists that no table describes";
+}
+
+TEST(OptionTables, NamesAreUniqueAndUnitsKnown)
+{
+  std::map<std::string, std::string> seen;
+  for (const OptionModule *m : OptionModules()) {
+    if (m->name == "interim") continue; // rows their modules' own tables replace
+    for (const OptionSpec &s : m->options) {
+      EXPECT_EQ(0u, seen.count(s.name)) << s.name << " is in the tables of " << seen[s.name] << " and " << m->name;
+      seen[s.name] = m->name;
+      EXPECT_EQ('-', s.name[0]) << s.name;
+      EXPECT_FALSE(s.help.empty()) << s.name;
+      if (s.kind == OptionKind::Real || s.kind == OptionKind::RealList) {
+        EXPECT_FALSE(s.unit.empty()) << s.name << " has no unit";
+      }
+      if (s.kind == OptionKind::Choice) {
+        EXPECT_FALSE(s.choices.empty()) << s.name;
+      }
+    }
+  }
+  EXPECT_EQ("m", OptionUnit("impact_x"));
+  EXPECT_EQ("m/s", OptionUnit("-bat_speed"));
+  EXPECT_EQ("rad/s", OptionUnit("bat_angular_velocity"));
+  EXPECT_EQ("m", OptionUnit("grip"));
+  EXPECT_EQ("m", OptionUnit("beam_pivot"));
+  EXPECT_EQ("s", OptionUnit("ts_dt"));
+  EXPECT_EQ("1", OptionUnit("beam_nodes"));
+  EXPECT_EQ("", OptionUnit("beam_left")); // a choice
+  EXPECT_EQ("", OptionUnit("no_such_option"));
+}
+
+namespace {
+
+// A table of the test's own, to test the readers on it.
+const OptionModule &TestTable()
+{
+  static const OptionModule m = {
+    "test",
+    "Test options",
+    {
+      OptionReal("-test_length", "m", "A length", "1", Positive()),
+      OptionReal("-test_any", "s", "Any time", "-1"),
+      OptionInt("-test_count", "A count", "3", AtLeast(1)),
+      OptionChoice("-test_kind", "A choice", {"one", "two"}, "one"),
+      OptionList("-test_pair", "m", "Two points", 2, 2, NonNegative()),
+      OptionList("-test_points", "m", "Points", 1, 0, AnyNumber()),
+    },
+  };
+  return m;
+}
+
+struct TestValues {
+  PetscReal              length = 1, any = -1;
+  PetscInt               count = 3, kind = 0;
+  std::vector<PetscReal> pair, points;
+};
+
+// Reads the test table with `option value` set; returns the error code and, in *msg, its message.
+PetscErrorCode ReadWith(const char *option, const char *value, TestValues *v, std::string *msg)
+{
+  PetscOptionsSetValue(NULL, option, value);
+  PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+  const OptionModule &T    = TestTable();
+  PetscErrorCode      ierr = 0;
+  [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "test", "");
+    ierr = OptionsRead(PetscOptionsObject, T, "-test_length", &v->length, NULL);
+    if (!ierr) ierr = OptionsRead(PetscOptionsObject, T, "-test_any", &v->any, NULL);
+    if (!ierr) ierr = OptionsRead(PetscOptionsObject, T, "-test_count", &v->count, NULL);
+    if (!ierr) ierr = OptionsReadChoice(PetscOptionsObject, T, "-test_kind", &v->kind, NULL);
+    if (!ierr) ierr = OptionsRead(PetscOptionsObject, T, "-test_pair", &v->pair, NULL);
+    if (!ierr) ierr = OptionsRead(PetscOptionsObject, T, "-test_points", &v->points, NULL);
+    PetscOptionsEnd();
+    PetscFunctionReturn(0);
+  }();
+  PetscPopErrorHandler();
+  *msg = ierr ? LastErrorMessage(ierr) : "";
+  PetscOptionsClearValue(NULL, option);
+  return ierr;
+}
+
+} // namespace
+
+// What a row refuses, and how it says it: the option, the value as written, what is allowed.
+TEST(OptionTables, ARowChecksItsValue)
+{
+  struct Case {
+    const char *option, *value, *message;
+  };
+  const Case bad[] = {
+    {"-test_length", "-1", "-test_length -1 is not allowed: it must be > 0 (m)"},
+    {"-test_length", "inf", "-test_length inf is not allowed: it must be a finite number > 0 (m)"},
+    {"-test_any", "nan", "-test_any nan is not allowed: it must be a finite number (s)"},
+    {"-test_any", "abc", "-test_any abc is not allowed: it must be a number"},
+    {"-test_count", "0", "-test_count 0 is not allowed: it must be a whole number >= 1"},
+    {"-test_count", "2.5", "-test_count 2.5 is not allowed: it must be a whole number >= 1"},
+    {"-test_kind", "three", "-test_kind three is not known: use one of one, two"},
+    {"-test_pair", "0.5", "-test_pair 0.5 is not allowed (1 value): it takes 2 values separated by commas, each >= 0 (m)"},
+    {"-test_pair", "0,0.1,0.5", "-test_pair 0,0.1,0.5 is not allowed (3 values): it takes 2 values"},
+    {"-test_pair", "0.1,-0.2", "-test_pair 0.1,-0.2 is not allowed: -0.2; it takes 2 values"},
+    {"-test_points", "0.5,,0.6", "-test_points 0.5,,0.6 is not allowed: an empty value between commas"},
+    {"-test_points", "0.5,nan", "-test_points 0.5,nan is not allowed: nan is not a finite number"},
+    {"-test_points", "0.5,x", "-test_points 0.5,x is not allowed: 'x' is not a number"},
+    {"-test_points", nullptr, "-test_points is given without values"},
+    {"-test_any", nullptr, "-test_any is given without a value"},
+  };
+  for (const Case &c : bad) {
+    TestValues  v;
+    std::string msg;
+    EXPECT_NE(0, ReadWith(c.option, c.value, &v, &msg)) << c.option << " " << (c.value ? c.value : "");
+    EXPECT_NE(std::string::npos, msg.find(c.message)) << "got: " << msg;
+  }
+  TestValues  v;
+  std::string msg;
+  ASSERT_EQ(0, ReadWith("-test_points", "0.5,-1,1e3", &v, &msg)) << msg;
+  EXPECT_EQ((std::vector<PetscReal>{0.5, -1, 1000}), v.points);
+  ASSERT_EQ(0, ReadWith("-test_count", "1e3", &v, &msg)) << msg;
+  EXPECT_EQ(1000, v.count);
+  ASSERT_EQ(0, ReadWith("-test_kind", "TWO", &v, &msg)) << msg;
+  EXPECT_EQ(1, v.kind);
+  const OptionUsed &u = OptionsUsed().at("-test_kind");
+  EXPECT_EQ("two", u.text);
+  EXPECT_TRUE(u.given);
+  EXPECT_FALSE(OptionsUsed().at("-test_length").given);
+  EXPECT_EQ("m", OptionsUsed().at("-test_length").unit);
+}
+
+namespace {
+
+// OptionsCheckUnused with these options set (and nothing else unread): its code, its message
+// and what it printed.
+PetscErrorCode CheckWith(const std::vector<std::pair<const char *, const char *>> &set, std::string *msg, std::string *printed)
+{
+  for (auto &o : set) PetscOptionsSetValue(NULL, o.first, o.second);
+  PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+  PetscErrorCode ierr = 0;
+  *printed            = Captured([&] { ierr = OptionsCheckUnused(PETSC_COMM_WORLD); });
+  PetscPopErrorHandler();
+  *msg = ierr ? LastErrorMessage(ierr) : "";
+  for (auto &o : set) PetscOptionsClearValue(NULL, o.first);
+  return ierr;
+}
+
+} // namespace
+
+TEST(UnusedOptions, AnUnknownOptionIsAnErrorWithTheSuggestion)
+{
+  std::string msg, printed;
+  EXPECT_EQ(PETSC_ERR_ARG_WRONG, CheckWith({{"-beam_thicknes", "0.01"}, {"-no_such_thing", "1"}}, &msg, &printed));
+  EXPECT_NE(std::string::npos, msg.find("2 option(s) unknown (set but read by no task): -beam_thicknes 0.01 (did you mean -beam_thickness?) -no_such_thing 1\n")) << msg;
+}
+
+TEST(UnusedOptions, AMisspeltPetscOptionIsAnErrorALeftOverOneANote)
+{
+  std::string msg, printed;
+  for (auto typo : {std::make_pair("-ts_dtt", "-ts_dt"), std::make_pair("-ts_rk_tpye", "-ts_rk_type"), std::make_pair("-snes_rtoll", "-snes_rtol"), std::make_pair("-modes_eps_tool", "-modes_eps_tol")}) {
+    EXPECT_EQ(PETSC_ERR_ARG_WRONG, CheckWith({{typo.first, "1"}}, &msg, &printed)) << typo.first;
+    EXPECT_NE(std::string::npos, msg.find(std::string(typo.first) + " 1 (did you mean " + typo.second + "?)")) << msg;
+  }
+  // a row of the PETSc table another integrator reads, and a PETSc name close to no row: notes
+  EXPECT_EQ(0, CheckWith({{"-ts_rk_type", "4"}, {"-ts_arkimex_fully_implicit", NULL}, {"-ts_sundials_type", "bdf"}}, &msg, &printed)) << msg;
+  EXPECT_NE(std::string::npos, printed.find("note: 3 PETSc solver option(s) set but not used by this integrator: -ts_arkimex_fully_implicit -ts_rk_type 4 -ts_sundials_type bdf")) << printed;
+  // a known option of the program another task reads: a note
+  EXPECT_EQ(0, CheckWith({{"-modes_count", "3"}}, &msg, &printed)) << msg;
+  EXPECT_NE(std::string::npos, printed.find("note: 1 option(s) set but not used by this task: -modes_count 3")) << printed;
+  // -allow_unused_options: the errors become a warning
+  EXPECT_EQ(0, CheckWith({{"-ts_dtt", "1"}, {"-allow_unused_options", NULL}}, &msg, &printed)) << msg;
+  EXPECT_NE(std::string::npos, printed.find("WARNING: 1 option(s) unknown (set but read by no task): -ts_dtt 1 (did you mean -ts_dt?)")) << printed;
+}
+
+// The run record holds every option the readers read, as used, with its unit: the hands, the
+// swing and the damping among them (they had no attribute before).
+TEST(RunRecord, CarriesTheOptionsReadWithUnits)
+{
+  const std::vector<std::pair<const char *, const char *>> set = {
+    {"-grip", "0.05,0.2"}, {"-grip_stiffness", "1e5"}, {"-bat_speed", "20"}, {"-beam_damping_mass", "2"}};
+  for (auto &o : set) PetscOptionsSetValue(NULL, o.first, o.second);
+  Scenario sc;
+  ASSERT_EQ(0, ScenarioFromOptions(PETSC_COMM_WORLD, &sc));
+  RunRecord rec;
+  ASSERT_EQ(0, RunRecordBuild(sc, nullptr, &rec));
+  for (auto &o : set) PetscOptionsClearValue(NULL, o.first);
+  const auto &u = rec.options_used;
+  ASSERT_TRUE(u.count("-grip") && u.count("-grip_stiffness") && u.count("-grip_damping") && u.count("-bat_speed") && u.count("-bat_angular_velocity") && u.count("-beam_damping_mass") &&
+              u.count("-beam_pivot"));
+  EXPECT_EQ((std::vector<double>{0.05, 0.2}), u.at("-grip").list);
+  EXPECT_EQ("m", u.at("-grip").unit);
+  EXPECT_TRUE(u.at("-grip").given);
+  EXPECT_EQ(1e5, u.at("-grip_stiffness").number);
+  EXPECT_EQ("N/m^2", u.at("-grip_stiffness").unit);
+  EXPECT_EQ(0, u.at("-grip_damping").number); // its default, as used
+  EXPECT_FALSE(u.at("-grip_damping").given);
+  EXPECT_EQ(20, u.at("-bat_speed").number);
+  EXPECT_EQ("m/s", u.at("-bat_speed").unit);
+  EXPECT_EQ("rad/s", u.at("-bat_angular_velocity").unit);
+  EXPECT_EQ(2, u.at("-beam_damping_mass").number);
+  EXPECT_EQ("1/s", u.at("-beam_damping_mass").unit);
+  EXPECT_EQ("m", u.at("-beam_pivot").unit);
+  EXPECT_EQ("free", u.at("-beam_left").text);
 }

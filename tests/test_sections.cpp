@@ -347,7 +347,7 @@ TEST(SectionOptions, BadCombinationsNameTheOption)
     {{{"-beam_profile", profile.path()}, {"-beam_youngs_modulus", "1e10"}, {"-beam_density", "600"}, {"-beam_theory", "timoshenko"}}, "needs -beam_shear_modulus"},
     {{{"-beam_theory", "timoshenko"}}, "needs -beam_shear_modulus"},
     {{{"-beam_theory", "timoshenko"}, {"-beam_EI", "10"}, {"-beam_mu", "1"}, {"-beam_shear_modulus", "1e9"}}, "not the EI,mu set"},
-    {{{"-beam_theory", "reissner"}}, "-beam_theory reissner is not known: use one of euler|timoshenko"},
+    {{{"-beam_theory", "reissner"}}, "-beam_theory reissner is not known: use one of euler, timoshenko"},
     {{{"-beam_poisson", "0.7"}}, "-beam_poisson 0.7 is not allowed"},
   };
   for (const Case &c : cases) {

@@ -76,7 +76,7 @@ TEST(TSModal, NoStabilityLimitFromTheBeam)
 TEST(TSModal, HystereticBallAsTightRK)
 {
   const BeamParams   beam = AluminiumBeam(1.1, 41);
-  const BallParams   ball = Superball(ContactLawKind::Hysteresis);
+  const BallParams   ball = Superball("hysteresis");
   const ImpactResult rk   = RunImpact(PETSC_COMM_WORLD, beam, ball, Centre(), {{"-ts_type", "rk"}, {"-ts_rk_type", "4"}, {"-ts_adapt_type", "none"}});
   const ImpactResult m    = Modal(beam, ball, Centre(), 4, 2.5e-5);
   EXPECT_EQ(m.contacts, rk.contacts);

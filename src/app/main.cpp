@@ -128,7 +128,8 @@ int main(int argc, char **argv)
     fflush(stderr);
     PetscMPIInt size;
     MPI_Comm_size(PETSC_COMM_WORLD, &size);
-    if (size > 1) MPI_Abort(PETSC_COMM_WORLD, 1); // other ranks may be stuck in a collective
+    if (size > 1 && rank != 0) usleep(500000); // rank 0 says why first: an abort from another rank would kill it before it prints
+    if (size > 1) MPI_Abort(PETSC_COMM_WORLD, 1);       // other ranks may be stuck in a collective
     PetscPopErrorHandler();
     SlepcFinalize();
     return 1;

@@ -60,7 +60,7 @@ PetscErrorCode FlightHelpOptions(MPI_Comm comm)
   FlightSolveParams s;
   PetscFunctionBeginUser;
   (void)FlightParamsFromOptions(comm, &p, &s); // its checks' errors are not what -help asks
-  PetscCall(FlightTSOptionsHelp());
+  PetscCall(FlightTSOptionsHelp(comm));
   PetscFunctionReturn(0);
 }
 

@@ -2,6 +2,7 @@
 #include "app/tasks.hpp"
 
 #include "app/task_flight.hpp"
+#include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
@@ -9,6 +10,7 @@
 #include "run/modal_reference.hpp"
 #include "run/outcome.hpp"
 #include "solvers/modes.hpp"
+#include "solvers/petsc_options.hpp"
 #include "studies/convergence.hpp"
 #include "studies/sweep.hpp"
 #include "studies/sweep_plan.hpp"
@@ -192,7 +194,8 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscEnum *task, std::string *out);
+namespace {
+PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out);
 
 // Every reader of every task, once, their own checks skipped (their errors ignored): under
 // -help each prints its block; defaults may not make a runnable sweep, and that is not what
@@ -231,28 +234,21 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-// -help: every option of every task, then nothing is run or written.
+} // namespace
+
 PetscErrorCode PrintAllOptions(MPI_Comm comm)
 {
   PetscFunctionBeginUser;
   PetscCall(RunTaskOptions(comm, nullptr, nullptr));
   PetscCall(ReadEveryOption(comm));
+  PetscCall(OptionModulePrintHelp(comm, PetscSolverOptionTable()));
   PetscCall(PetscPrintf(comm, "\n-help lists every option of every task above, with its default; nothing was run or written.\n"
-                              "Not in the blocks above: -allow_unused_options (unknown options become a warning), -error_traceback (PETSc's full traceback on errors),\n"
-                              "-log_view (PETSc's profile, by the stages beamimpact: set-up, contact, free flight, output (also a sweep's rewrites of its file)\n"
+                              "Not in the blocks above: -log_view (PETSc's profile, by the stages beamimpact: set-up, contact, free flight, output (also a sweep's rewrites of its file)\n"
                               "and modal reference (-reference modal)).\n"));
   PetscFunctionReturn(0);
 }
 
-// The catalog of known options for the unused-options check: the names -help would list.
-PetscErrorCode KnownOptions(MPI_Comm comm, std::vector<std::string> *names)
-{
-  PetscFunctionBeginUser;
-  PetscCall(OptionsHelpNames([comm]() { return RunTaskOptions(comm, nullptr, nullptr) ? 1 : ReadEveryOption(comm); }, names));
-  for (const char *extra : {"-allow_unused_options", "-error_traceback", "-options_file", "-help"}) names->push_back(extra); // (PETSc's finalize-time options: skipped by the check)
-  std::sort(names->begin(), names->end());
-  PetscFunctionReturn(0);
-}
+namespace {
 
 // -output: refused before any work if it cannot be written (empty name, missing or read-only
 // directory) or if it would replace a file another task wrote (without -output_overwrite).
@@ -274,34 +270,64 @@ PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *ta
   PetscFunctionReturn(0);
 }
 
-// -task, -output, -output_overwrite (task and output null: only read, as for -help).
-PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscEnum *task, std::string *out)
+} // namespace
+
+const OptionModule &TaskOptionTable()
 {
-  std::vector<const char *> names;
-  PetscEnum                 t                          = (PetscEnum)0;
-  char                      output[PETSC_MAX_PATH_LEN] = "";
-  PetscBool                 set_output;
+  static const OptionModule m = [] {
+    std::vector<std::string> names;
+    for (const TaskEntry &e : Tasks) names.push_back(e.name);
+    return OptionModule{
+      "task",
+      "beamimpact: task and output",
+      {
+        OptionChoice("-task", "What to compute", names, Tasks[0].name),
+        OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)"),
+        OptionFlag("-output_overwrite", "Let -output replace a file another task wrote"),
+        OptionFlag("-allow_unused_options", "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
+        OptionFlag("-error_traceback", "PETSc's full traceback on errors instead of the one-line message"),
+      },
+    };
+  }();
+  return m;
+}
+
+namespace {
+
+// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback (task and output
+// null: only read, as for -help; the last two are acted on by the unused-option check and
+// main, and read here for -help and the run record).
+PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out)
+{
+  const OptionModule &T = TaskOptionTable();
+  PetscInt            t = 0;
+  std::string         output;
+  PetscBool           set_output, flag = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  for (const TaskEntry &e : Tasks) names.push_back(e.name);
-  names.insert(names.end(), {"Task", "TASK_", nullptr}); // PetscOptionsEnum's list: names, type, prefix
-  PetscOptionsBegin(comm, NULL, "beamimpact: task and output", "beamimpact");
-  PetscCall(PetscOptionsEnum("-task", "What to compute", "", names.data(), t, &t, NULL));
-  PetscCall(PetscOptionsString("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)", "", output, output, sizeof(output), &set_output));
-  PetscCall(PetscOptionsBool("-output_overwrite", "Let -output replace a file another task wrote", "", PETSC_FALSE, NULL, NULL));
+  PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
+  PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-task", &t, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-output", &output, &set_output));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-output_overwrite", &flag, NULL));
+  flag = PETSC_FALSE;
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-allow_unused_options", &flag, NULL));
+  flag = PETSC_FALSE;
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-error_traceback", &flag, NULL));
   PetscOptionsEnd();
   if (task) *task = t;
   if (out) {
-    PetscCheck(!set_output || output[0], comm, PETSC_ERR_ARG_WRONG, "-output needs a file name (or 'none' to write nothing); it was given empty");
+    PetscCheck(!set_output || !output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output needs a file name (or 'none' to write nothing); it was given empty");
     *out = set_output ? output : std::string(Tasks[t].name) + ".h5";
     if (*out == "none") out->clear();
   }
   PetscFunctionReturn(0);
 }
 
+} // namespace
+
 PetscErrorCode RunTask(MPI_Comm comm)
 {
-  PetscEnum   task;
+  PetscInt    task;
   std::string out;
   PetscBool   help = PETSC_FALSE;
 
@@ -311,7 +337,6 @@ PetscErrorCode RunTask(MPI_Comm comm)
     PetscCall(PrintAllOptions(comm));
     PetscFunctionReturn(0);
   }
-  OptionsSetCatalog(KnownOptions);
   PetscCall(RunTaskOptions(comm, &task, &out));
   PetscCall(OutputCheck(comm, out, Tasks[task].name));
   PetscCall(Tasks[task].run(comm, out));

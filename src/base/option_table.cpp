@@ -60,10 +60,11 @@ std::string OptionSpec::Allowed() const
   case OptionKind::Int: return "it must be a whole number " + (range_text.empty() ? range.Text() : range_text);
   case OptionKind::RealList: {
     std::string n;
-    if (count_min > 0 && count_min == count_max) n = std::to_string(count_min) + " values";
+    if (count_min > 0 && count_min == count_max) n = std::to_string(count_min) + (count_min == 1 ? " value" : " values");
     else if (count_min > 0 && count_max > 0) n = std::to_string(count_min) + " to " + std::to_string(count_max) + " values";
-    else if (count_min > 0) n = "at least " + std::to_string(count_min) + " values";
-    else n = "values";
+    else if (count_min > 1) n = "at least " + std::to_string(count_min) + " values";
+    else if (count_max > 0) n = "at most " + std::to_string(count_max) + " values";
+    else n = "one or more values";
     return "it takes " + n + " separated by commas, each " + (range_text.empty() ? range.Text() : range_text) + u;
   }
   case OptionKind::Choice: {
@@ -240,11 +241,39 @@ bool ParseReal(const std::string &w, double *v)
   return end && *end == '\0';
 }
 
+// What is allowed, said to a value that is no finite number: "it must be a finite number > 0 (m)".
+std::string FiniteAllowed(const OptionSpec &s)
+{
+  const std::string u = s.unit.empty() || s.unit == "1" ? "" : " (" + s.unit + ")";
+  if (!s.range_text.empty()) return "it must be a finite number, " + s.range_text + u;
+  const bool bounded = std::isfinite(s.range.lo) || std::isfinite(s.range.hi);
+  return "it must be a finite number" + (bounded ? " " + s.range.Text() : std::string()) + u;
+}
+
 PetscErrorCode CheckReal(const OptionSpec &s, const std::string &written, double v)
 {
   PetscFunctionBeginUser;
+  // nan and inf parse as numbers but are none here: said so, before the range
+  PetscCheck(std::isfinite(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(), FiniteAllowed(s).c_str());
   PetscCheck(s.range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(), s.Allowed().c_str());
   PetscFunctionReturn(0);
+}
+
+// The option is in the database without a value ("-impact_x" alone): refused, naming it.
+PetscErrorCode CheckHasValue(PetscOptionItems *PetscOptionsObject, const OptionSpec &s, const std::string &written)
+{
+  PetscBool present = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  if (!written.empty()) PetscFunctionReturn(0);
+  PetscCall(PetscOptionsHasName(PetscOptionsObject->options, PetscOptionsObject->prefix, s.name.c_str(), &present));
+  PetscCheck(!present, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s is given without a value: %s", s.name.c_str(), s.Allowed().c_str());
+  PetscFunctionReturn(0);
+}
+
+// Whether PETSc prints this block's help now (PetscOptionsBegin under -help, first time).
+bool PrintsHelp(PetscOptionItems *PetscOptionsObject)
+{
+  return PetscOptionsObject->printhelp && PetscOptionsObject->count == 1 && !PetscOptionsObject->alreadyprinted;
 }
 
 } // namespace
@@ -258,6 +287,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   PetscCall(Row(m, name, OptionKind::Real, &s));
   const std::string written = OptionWritten(name);
   double            v       = 0;
+  PetscCall(CheckHasValue(PetscOptionsObject, *s, written));
   if (!written.empty()) {
     PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: it must be a number; %s", name, written.c_str(), s->Allowed().c_str());
     PetscCall(CheckReal(*s, written, v));
@@ -277,6 +307,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   PetscFunctionBeginUser;
   PetscCall(Row(m, name, OptionKind::Int, &s));
   const std::string written = OptionWritten(name);
+  PetscCall(CheckHasValue(PetscOptionsObject, *s, written));
   if (!written.empty()) {
     double v = 0;
     PetscCheck(ParseReal(written, &v) && std::isfinite(v) && v == std::floor(v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: %s", name, written.c_str(), s->Allowed().c_str());
@@ -343,7 +374,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
     PetscFunctionReturn(0);
   }
   PetscBool         given = PETSC_FALSE;
-  std::vector<char> buf(PETSC_MAX_PATH_LEN + 1, 0);
+  std::vector<char> buf(std::max<size_t>(PETSC_MAX_PATH_LEN, OptionWritten(name).size() + 1) + 1, 0); // a long text (a sweep's axes) is read whole
   std::snprintf(buf.data(), buf.size(), "%s", value->c_str());
   PetscCall(PetscOptionsString(name, s->help.c_str(), "", buf.data(), buf.data(), buf.size(), &given));
   if (given) {
@@ -360,15 +391,21 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
 PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::vector<PetscReal> *value, PetscBool *set)
 {
   const OptionSpec *s;
-  PetscBool         given = PETSC_FALSE;
+  PetscBool         present = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(Row(m, name, OptionKind::RealList, &s));
-  const std::string   written = OptionWritten(name);
-  std::vector<double> parsed;
-  PetscBool           present = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(NULL, NULL, name, &present));
+  // Parsed here, not by PetscOptionsRealArray (a fixed buffer; it reads "0.5,,0.6" as two values
+  // and prints an empty default as 0): finding the option marks it used.
+  const std::string written = OptionWritten(name);
+  PetscCall(PetscOptionsHasName(PetscOptionsObject->options, PetscOptionsObject->prefix, name, &present));
+  if (PrintsHelp(PetscOptionsObject)) {
+    std::string def;
+    for (PetscReal v : *value) def += (def.empty() ? "" : ",") + Number(v);
+    PetscCall((*PetscHelpPrintf)(PetscOptionsObject->comm, "  %s <%s>: %s ()\n", name, def.empty() ? "none" : def.c_str(), HelpWithUnit(*s).c_str()));
+  }
   if (present) {
+    std::vector<double> parsed;
     PetscCheck(!written.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s is given without values: %s", name, s->Allowed().c_str());
     size_t a = 0;
     for (;;) {
@@ -377,24 +414,48 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
       double            v    = 0;
       PetscCheck(!item.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: an empty value between commas; %s", name, written.c_str(), s->Allowed().c_str());
       PetscCheck(ParseReal(item, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: '%s' is not a number; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
+      PetscCheck(std::isfinite(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s is not a finite number; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
       PetscCheck(s->range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
       parsed.push_back(v);
       if (b == std::string::npos) break;
       a = b + 1;
     }
     const PetscInt n = (PetscInt)parsed.size();
-    PetscCheck(!(s->count_min > 0 && n < s->count_min) && !(s->count_max > 0 && n > s->count_max), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed (%" PetscInt_FMT " values): %s", name,
-               written.c_str(), n, s->Allowed().c_str());
+    PetscCheck(!(s->count_min > 0 && n < s->count_min) && !(s->count_max > 0 && n > s->count_max), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed (%" PetscInt_FMT " value%s): %s", name,
+               written.c_str(), n, n == 1 ? "" : "s", s->Allowed().c_str());
+    *value = std::vector<PetscReal>(parsed.begin(), parsed.end());
   }
-  PetscInt               n = std::max<PetscInt>((PetscInt)parsed.size(), (PetscInt)value->size());
-  std::vector<PetscReal> buf(std::max<PetscInt>(n, 1), 0.0);
-  std::copy(value->begin(), value->end(), buf.begin());
-  PetscCall(PetscOptionsRealArray(name, HelpWithUnit(*s).c_str(), "", buf.data(), &n, &given));
-  if (given) *value = std::vector<PetscReal>(parsed.begin(), parsed.end());
   std::string text;
   for (PetscReal v : *value) text += (text.empty() ? "" : ",") + Text17(v);
-  Log(*s, text, 0, std::vector<double>(value->begin(), value->end()), given);
-  if (set) *set = given;
+  Log(*s, text, 0, std::vector<double>(value->begin(), value->end()), present);
+  if (set) *set = present;
+  PetscFunctionReturn(0);
+}
+
+bool OptionIsPetsc(const std::string &name)
+{
+  for (const OptionModule *m : Registry())
+    if (m->petsc)
+      for (const std::string &p : m->prefixes)
+        if (name.compare(0, p.size(), p) == 0) return true;
+  return false;
+}
+
+PetscErrorCode OptionModulePrintHelp(MPI_Comm comm, const OptionModule &m)
+{
+  PetscBool help = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (!help) PetscFunctionReturn(0);
+  PetscCall((*PetscHelpPrintf)(comm, "----------------------------------------\n%s:\n", m.title.c_str()));
+  for (const OptionSpec &s : m.options) {
+    std::string line = "  " + s.name + " <" + (s.def.empty() ? "none" : s.def) + ">: " + HelpWithUnit(s);
+    if (s.kind == OptionKind::Choice) {
+      line += " (choose one of)";
+      for (const std::string &c : s.choices) line += " " + c;
+    }
+    PetscCall((*PetscHelpPrintf)(comm, "%s ()\n", line.c_str()));
+  }
   PetscFunctionReturn(0);
 }
 

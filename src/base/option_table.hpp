@@ -8,8 +8,9 @@
 //   * a sweep's axes: the unit of a numeric axis, the choices of a categorical one;
 //   * the run record: every value a reader read, as used, with its unit (OptionsUsed).
 // A read checks the value against the row (finite, in range, a known choice, a list of the
-// right length without empty items) and an error names the option, the value as written and
-// what is allowed. Tables are plain data; a module registers its table once
+// right length without empty items; NaN and inf are never numbers here) and an error names the
+// option, the value as written and what is allowed: "-impact_window nan is not allowed: it must
+// be a finite number (s)". Tables are plain data; a module registers its table once
 // (OptionModuleRegister, from app/registry.cpp; the tests register the same list).
 #pragma once
 
@@ -18,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace beamimpact {
@@ -63,9 +65,21 @@ OptionSpec OptionChoice(const char *name, const char *help, std::vector<std::str
 OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max, OptionRange range = AnyNumber());
 
 struct OptionModule {
+  OptionModule() = default;
+  OptionModule(std::string name_, std::string title_, std::vector<OptionSpec> options_, bool petsc_ = false, std::vector<std::string> prefixes_ = {})
+    : name(std::move(name_)), title(std::move(title_)), options(std::move(options_)), petsc(petsc_), prefixes(std::move(prefixes_))
+  {
+  }
   std::string             name;  // "ball"
   std::string             title; // the -help block's title
   std::vector<OptionSpec> options;
+  // A table of options PETSc's own objects read (TSSetFromOptions, SNESSetFromOptions, ...),
+  // listed so that -help, the unknown-option check and the sweep know them; no OptionsRead of
+  // the program reads them. `prefixes` ("-ts_", ...) are the names such a table speaks for: an
+  // unread option under one of them is PETSc's (a note when left over, an error only when it is
+  // close to a known name: a typo).
+  bool                     petsc = false;
+  std::vector<std::string> prefixes;
   const OptionSpec *Find(const std::string &option) const; // nullptr if not a row
 };
 
@@ -76,6 +90,12 @@ const std::vector<const OptionModule *>  &OptionModules();
 const OptionSpec                         *OptionSpecFind(const std::string &name); // any module; nullptr if none
 std::vector<std::string>                  OptionNames();                           // every registered name (with the dash), sorted
 std::string                               OptionUnit(const std::string &name);     // "" when unknown or not a number; name with or without dash
+// Whether `name` (with the dash) falls under a prefix of a registered PETSc table (-ts_, -snes_, ...).
+bool                                      OptionIsPetsc(const std::string &name);
+
+// Under -help, prints a table no reader reads (PETSc's: `petsc`) as a block of PETSc's -help
+// format ("  -name <default>: help (unit)"), so that -help lists it; nothing otherwise.
+PetscErrorCode OptionModulePrintHelp(MPI_Comm comm, const OptionModule &m);
 
 // The values the readers read in this process, as used (default or given), by option name:
 // the run record writes them. A later read of the same option replaces its entry.
@@ -101,7 +121,8 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
 // A Choice row as the index of the choice.
 PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscInt *index, PetscBool *set);
 // A RealList row: any length (no fixed limit), each value checked, the count checked against
-// the row, an empty item ("0.5,,0.6") refused.
+// the row, an empty item ("0.5,,0.6") refused. Under -help its line shows *value ("<none>" when
+// empty) as the default.
 PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::vector<PetscReal> *value, PetscBool *set);
 
 // The value of option `name` as written in the options database ("" when not set), for messages.

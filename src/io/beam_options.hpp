@@ -1,13 +1,19 @@
 // The -beam_* options: geometry, material, section (uniform, profile or table), theory,
-// supports, damping. One PetscOptionsBegin block; every range checked with a message naming
-// the option (or the file and line) and the value.
+// supports, damping, the hands (-grip*). Each option is a row of BeamOptionTable (name, unit,
+// help, default, range), read in one PetscOptionsBegin block through base/option_table.hpp;
+// the checks across options (parameter sets, pivot and grip against the supports, files) are
+// here, with messages naming the options (or the file and line) and the values.
 #pragma once
 
+#include "base/option_table.hpp"
 #include "model/beam.hpp"
 
 #include <petscsys.h>
 
 namespace beamimpact {
+
+// The -beam_* and -grip* options: the beam module's table (registered by app/registry.cpp).
+const OptionModule &BeamOptionTable();
 
 // Reads the options, converts the parameter set to sections, checks every range.
 PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p);

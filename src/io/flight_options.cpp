@@ -45,7 +45,7 @@ const OptionModule &AirOptionTable()
       OptionReal("-air_pressure", "Pa", "Barometric pressure reduced to sea level, as weather reports give it (29.92 inHg = 101321 Pa)", "101325", Positive()),
       OptionReal("-air_humidity", "%", "Relative humidity", "50", Between(0, 100)),
       OptionReal("-air_elevation", "m", "Elevation of the field above sea level (the pressure there is the reduced one times exp(-1.217e-4 h))", "0", Between(-500, 9000)),
-      OptionReal("-air_density", "kg/m^3", "Air density: given, it replaces the one computed from the four options above (0: vacuum)", "computed", NonNegative()),
+      OptionReal("-air_density", "kg/m^3", "Air density: given, it replaces the one computed from the four options above, which -help shows (0: vacuum)", "", NonNegative()),
     },
   };
   return m;

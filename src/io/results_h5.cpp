@@ -140,6 +140,7 @@ PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
   for (auto &kv : record.numbers) PetscCall(WriteNumberAttr((hid_t)loc, kv.first.c_str(), kv.second));
   for (auto &kv : record.integers) PetscCall(WriteIntegerAttr((hid_t)loc, kv.first.c_str(), kv.second));
   for (auto &kv : record.strings) PetscCall(WriteStringAttr((hid_t)loc, kv.first.c_str(), kv.second));
+  PetscCall(RunRecordWriteOptionsUsed(loc, record)); // the options read, with units (io/run_record.hpp)
   PetscFunctionReturn(0);
 }
 

@@ -47,6 +47,7 @@ PetscErrorCode RunRecordProgram(RunRecord *rec)
   PetscCall(RunProvenance(rec));
   rec->add("petsc_version", petsc_version);
   rec->add("options", options);
+  rec->options_used = OptionsUsed();
   PetscFunctionReturn(0);
 }
 
@@ -70,6 +71,7 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_right", SupportName(beam.right));
   rec->add("beam_clamp_x0", beam.has_clamp ? beam.clamp_x0 : -1.0);
   rec->add("beam_clamp_x1", beam.has_clamp ? beam.clamp_x1 : -1.0);
+  if (beam.has_pivot) rec->add("beam_pivot", beam.pivot_x); // m, as placed: on the nearest node
   rec->add("beam_parameter_set", beam.input.parameter_set);
   rec->add("beam_youngs_modulus", beam.input.youngs_modulus);
   rec->add("beam_density", beam.input.density);
@@ -89,18 +91,7 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   rec->add("ball_speed", ball.speed);
   rec->add("ball_law", ContactLawName(ball.law));
   if (ball.radius > 0) rec->add("ball_radius", ball.radius);
-  if (ball.law == ContactLawKind::Linear) rec->add("ball_k", ball.k);
-  else {
-    rec->add("ball_k1", ball.k1);
-    rec->add("ball_m", ball.m);
-    rec->add("ball_n", ball.n);
-    if (ball.cor > 0) rec->add("ball_cor", ball.cor);
-    if (ball.contact_time > 0) {
-      rec->add("ball_contact_time", ball.contact_time);
-      rec->add("ball_test_speed", ball.test_speed);
-    }
-    if (!ball.cor_table.empty()) rec->add("ball_cor_table", ball.cor_table.file);
-  }
+  for (const ContactLawRecord &r : ContactLawRecordOf(ball)) r.is_text ? rec->add(r.name, r.text) : rec->add(r.name, (double)r.value); // its parameters and wall values
   rec->add("ball_loss_factor", ball.loss_factor);
   // The values used: a derived default (-impact_window, -impact_max_time < 0) as computed.
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
@@ -119,6 +110,67 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
     rec->add("dt_nominal", first->dt_nominal);
     rec->add("dt_stable", first->dt_stable);
   }
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// An attribute of loc (replaced if present): `n` values of memory type `mem` stored as `file`
+// (n = -1: a scalar).
+PetscErrorCode WriteAttr(hid_t loc, const std::string &name, hid_t file, hid_t mem, const void *data, hssize_t n = -1)
+{
+  PetscFunctionBeginUser;
+  const hsize_t dims[1] = {(hsize_t)(n < 0 ? 1 : n)};
+  hid_t         space   = n < 0 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, dims, NULL);
+  if (H5Aexists(loc, name.c_str()) > 0) H5Adelete(loc, name.c_str());
+  hid_t attr = H5Acreate2(loc, name.c_str(), file, space, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name.c_str());
+  if (n != 0) H5Awrite(attr, mem, data);
+  H5Aclose(attr);
+  H5Sclose(space);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode WriteText(hid_t loc, const std::string &name, const std::string &value)
+{
+  PetscFunctionBeginUser;
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.empty() ? 1 : value.size());
+  H5Tset_strpad(type, H5T_STR_NULLTERM);
+  PetscCall(WriteAttr(loc, name, type, type, value.c_str()));
+  H5Tclose(type);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode RunRecordWriteOptionsUsed(long long loc, const RunRecord &rec)
+{
+  PetscFunctionBeginUser;
+  if (rec.options_used.empty()) PetscFunctionReturn(0);
+  hid_t g = H5Gcreate2((hid_t)loc, "options_used", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create the group options_used");
+  hid_t gu = H5Gcreate2(g, "unit", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), gg = H5Gcreate2(g, "given", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  for (const auto &kv : rec.options_used) {
+    const std::string name = kv.first.substr(1); // without the dash
+    const OptionUsed &u    = kv.second;
+    switch (u.kind) {
+    case OptionKind::Real: PetscCall(WriteAttr(g, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, &u.number)); break;
+    case OptionKind::Int:
+    case OptionKind::Bool: {
+      const long long v = (long long)u.number;
+      PetscCall(WriteAttr(g, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, &v));
+    } break;
+    case OptionKind::RealList: PetscCall(WriteAttr(g, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, u.list.data(), (hssize_t)u.list.size())); break;
+    default: PetscCall(WriteText(g, name, u.text)); break; // Text, Choice, File
+    }
+    if (!u.unit.empty()) PetscCall(WriteText(gu, name, u.unit));
+    const long long given = u.given ? 1 : 0;
+    PetscCall(WriteAttr(gg, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, &given));
+  }
+  H5Gclose(gg);
+  H5Gclose(gu);
+  H5Gclose(g);
   PetscFunctionReturn(0);
 }
 

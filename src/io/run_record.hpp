@@ -1,12 +1,24 @@
 // The record kept with every results file, as root attributes: program and PETSc versions,
-// the full options, every parameter of the scenario and the integrator of its first run.
+// the full options, every parameter of the scenario and the integrator of its first run; and
+// every option value the program read (base/option_table.hpp: OptionsUsed), as used (the
+// default or the value given), in the group /options_used:
+//   /options_used        attribute NAME (the option without its dash): the value, a double
+//                        (real), 64-bit integer (whole number; flag 0/1), string (choice, text,
+//                        file) or array of doubles (list; empty when none was given);
+//   /options_used/unit   attribute NAME: the unit of a number ("1": dimensionless);
+//   /options_used/given  attribute NAME: 1 where the option was set, 0 for its default.
+// The derived values keep their names as root attributes (beam_mass, beam_EI, ball_k,
+// impact_window as used, ...); a group rather than root attributes, so that a sweep's resume
+// signature (its root attributes) does not depend on options that change no number.
 #pragma once
 
+#include "base/option_table.hpp"
 #include "run/impact.hpp"
 #include "run/scenario.hpp"
 
 #include <petscsys.h>
 
+#include <map>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -29,6 +41,7 @@ struct RunRecord {
   }
   void add(const std::string &k, const std::string &v) { strings.emplace_back(k, v); }
   void add(const std::string &k, const char *v) { strings.emplace_back(k, v); }
+  std::map<std::string, OptionUsed> options_used; // by option name with its dash; written to /options_used
 };
 
 // Program, its provenance, PETSc version and the options (a task with no beam: -task flight).
@@ -39,5 +52,9 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec);
 
 // The same plus the ball, the impact rules and, given a first result, its integrator.
 PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, RunRecord *rec);
+
+// Writes rec.options_used as the group options_used of loc (an HDF5 file or group id; nothing
+// when the record has none). Called where the record's attributes are written.
+PetscErrorCode RunRecordWriteOptionsUsed(long long loc, const RunRecord &rec);
 
 } // namespace beamimpact

@@ -5,21 +5,32 @@
 
 namespace beamimpact {
 
+const OptionModule &SwingOptionTable()
+{
+  static const OptionModule m = {
+    "bat",
+    "Swinging bat: its rigid motion toward the ball before the impact",
+    {
+      OptionReal("-bat_speed", "m/s", "Centre-of-mass speed V_cm of the bat toward the ball", "0"),
+      OptionReal("-bat_angular_velocity", "rad/s", "Angular velocity Omega about the centre of mass (> 0: the x = L end moves faster toward the ball)", "0"),
+    },
+  };
+  return m;
+}
+
 namespace {
 
 // -bat_speed, -bat_angular_velocity: a swinging bat, free at both ends.
 PetscErrorCode SwingFromOptions(MPI_Comm comm, const BeamParams &beam, SwingParams *s)
 {
+  const OptionModule &T = SwingOptionTable();
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Swinging bat: its rigid motion toward the ball before the impact", "beamimpact");
-  PetscCall(PetscOptionsReal("-bat_speed", "Centre-of-mass speed V_cm of the bat toward the ball (m/s)", "", s->bat_speed, &s->bat_speed, NULL));
-  PetscCall(PetscOptionsReal("-bat_angular_velocity", "Angular velocity Omega about the centre of mass (rad/s; > 0: the x = L end moves faster toward the ball)", "", s->bat_angular_velocity,
-                             &s->bat_angular_velocity, NULL));
+  PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_speed", &s->bat_speed, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_angular_velocity", &s->bat_angular_velocity, NULL));
   PetscOptionsEnd();
-  PetscCheck(std::isfinite(s->bat_speed), comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_speed %g is not allowed: give a finite speed (m/s)", (double)s->bat_speed);
-  PetscCheck(std::isfinite(s->bat_angular_velocity), comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_angular_velocity %g is not allowed: give a finite angular velocity (rad/s)", (double)s->bat_angular_velocity);
   if (s->Swings()) {
-    const char *held = beam.left != Support::Free ? "-beam_left" : beam.right != Support::Free ? "-beam_right" : beam.has_clamp ? "-beam_clamp" : beam.has_pivot ? "-beam_pivot" : nullptr;
+    const char *held = beam.left.Holds() != NodeHold::None ? "-beam_left" : beam.right.Holds() != NodeHold::None ? "-beam_right" : beam.has_clamp ? "-beam_clamp" : beam.has_pivot ? "-beam_pivot" : nullptr;
     PetscCheck(!held, comm, PETSC_ERR_ARG_INCOMP, "-bat_speed/-bat_angular_velocity swing a free bat: %s holds it (remove it, or do not swing)", held);
   }
   PetscFunctionReturn(0);

@@ -12,7 +12,11 @@
 
 namespace beamimpact {
 
-// Reads the beam, the ball, the impact rules and the monitors, each checked as it is read.
+// The -bat_* options (a swinging bat): the swing module's table (registered by app/registry.cpp).
+const OptionModule &SwingOptionTable();
+
+// Reads the beam, the ball, the swing, the impact rules and the monitors, each checked as it is
+// read.
 PetscErrorCode ScenarioFromOptions(MPI_Comm comm, Scenario *sc);
 
 // How a task departs from the plain reading.

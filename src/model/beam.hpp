@@ -1,26 +1,17 @@
-// Euler-Bernoulli beam, semi-discretised on N nodes (docs/model.md).
+// The beam as the options describe it (BeamParams): length, nodes, sections (model/section.hpp:
+// EI, mu, kappa G A may vary along x), supports and holds (model/support.hpp), the pivot and a
+// clamped region; with what every theory needs of it: how each node is held, the rigid body, the
+// impact point's hat weights and the fundamental's scale. Units: SI (m, kg, s, N).
 //
-//   mu y_tt = f - (EI y_xx)_xx        on x in [0, L],  units: SI (m, kg, s, N).
-//
-// Nodes x_i = i h, h = L/(N-1); lumped mass mu h (half at the two end nodes).
-// The stiffness comes from the strain energy U = (EI h / 2) sum_k w_k kappa_k^2
-// with one curvature kappa_k per node:
-//   standard  kappa_k = (y_{k-1} - 2 y_k + y_{k+1}) / h^2, w_k = 1 (interior nodes);
-//   mirror    kappa_k = 2 y_{k+-1} / h^2,                    w_k = 1/2 at a clamped end
-//             node and at the inner edge node of a clamped region (mirror ghost
-//             y_{k-1} = y_{k+1} with y_k = 0);
-//   none      at free and pinned end nodes.
-// Held nodes (clamped/pinned ends, nodes inside a clamped region) keep y = 0.
-// K = dU/dy is symmetric positive semi-definite, the 5-point stencil
-// EI/h^3 (1, -4, 6, -4, 1) in the interior, and its null space for a
-// free-free beam is exactly {1, x} (rigid translation and rotation).
-//
-// Everything here is plain numbers and arrays: no PETSc objects, so it can be tested against
-// formulas. The -beam_* options are read by io/beam_options.hpp. EI and mu may vary along the
-// beam (model/section.hpp): EI_k at node k weights its curvature term, mu(x_i) h its mass.
+// The theories build their strain terms from these (model/beam_theory.hpp: Euler-Bernoulli in
+// model/euler_bernoulli.cpp, Timoshenko in model/timoshenko.cpp), the system its stiffness and
+// forces (system/beam_system.hpp). Everything here is plain numbers and arrays: no PETSc
+// objects, so it can be tested against formulas. The -beam_* options are read by
+// io/beam_options.hpp.
 #pragma once
 
 #include "model/section.hpp"
+#include "model/support.hpp"
 
 #include <petscsys.h>
 
@@ -28,10 +19,6 @@
 #include <vector>
 
 namespace beamimpact {
-
-enum class Support { Free = 0, Clamped = 1, Pinned = 2 };
-const char *SupportName(Support s);
-extern const char *const SupportNames[]; // PETSc enum list: names, type, prefix, nullptr
 
 // What the user gave, kept for the record (HDF5 attributes); 0 when not given.
 struct BeamMaterialInput {
@@ -63,7 +50,7 @@ struct BeamParams {
   PetscReal rhoI   = 0;    // kg m, rotary inertia per length rho I of a uniform section (0: unknown)
   BeamSection section;     // where the section varies (profile or table); source Uniform: the scalars above
   PetscInt  nodes  = 41;   // number of grid nodes N (>= 5)
-  Support   left   = Support::Free; // support at x = 0
+  Support   left   = Support::Free; // support at x = 0 (model/support.hpp registry)
   Support   right  = Support::Free; // support at x = L
   bool      has_clamp = false;      // a clamped region [clamp_x0, clamp_x1] is held fixed
   PetscReal clamp_x0 = 0, clamp_x1 = 0; // m
@@ -96,66 +83,19 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p);
 // The node of the pivot (has_pivot): the nearest to pivot_x.
 PetscInt BeamPivotNode(const BeamParams &p);
 
-// How each node is held: not, clamped (held with zero slope: clamped end, inside a clamped
-// region) or pinned (y = 0 only).
-enum class NodeHold : signed char { None = 0, Clamp = 1, Pin = 2 };
+// How each node is held (NodeHold of model/support.hpp: its deflection, its rotation, both):
+// the end nodes as their supports hold them, the pivot's node pinned (deflection), every node
+// of a clamped region clamped (both).
 std::vector<NodeHold> BeamNodeHolds(const BeamParams &p);
 
-// Curvature kind at a node (see the file header).
-enum class Curvature : signed char { None = 0, Standard = 1, MirrorRight = 2, MirrorLeft = 3 };
 
-// The discrete operator: grid, node masses, held nodes and curvature terms.
-// Arrays have one entry per node (the beam is 1-D: replicated on every rank).
-struct BeamOperator {
-  PetscInt  N  = 0;   // nodes
-  PetscReal h  = 0;   // m, node spacing
-  PetscReal L  = 0;   // m
-  PetscReal EI = 0;   // N m^2 (uniform or mean: scales only)
-  PetscReal mu = 0;   // kg/m
-  std::vector<PetscReal> EI_node;   // N m^2, mean EI over node k's cell [x_k - h/2, x_k + h/2] (weights curvature term k)
-  std::vector<PetscReal> mass;      // kg, lumped node mass: the integral of mu over node i's cell (mu h, half at the ends)
-  std::vector<char>      held;      // 1 where y is held at 0
-  std::vector<Curvature> curvature; // kind of curvature term at node k
-};
-
-// Builds the operator from the parameters. Throws nothing; invalid parameters
-// must have been refused by BeamParamsFromOptions / BeamParamsCheck.
-BeamOperator BeamOperatorBuild(const BeamParams &p);
-
-// Curvature kappa_k (1/m) at node k; y[i*stride] is node i, valid for i in k-1..k+1.
-PetscReal BeamCurvature(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt k);
-
-// d kappa_k / d y_i (1/m^2); zero unless |i - k| <= 1.
-PetscReal BeamCurvatureDerivative(const BeamOperator &op, PetscInt k, PetscInt i);
-
-// f_i = (K y)_i (N) for i in [i0, i1). y[i*stride] must be valid for
-// i in [max(0,i0-2), min(N,i1+2)): a ghosted local array indexed by global node.
-// f[i*fstride] receives the result; rows of held nodes are 0.
-void BeamStiffnessApply(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt i0, PetscInt i1, PetscReal *f, PetscInt fstride);
-
-// Row i of K restricted to the free (not held) nodes: at most 5 nonzeros
-// (columns and values, N/m); returns the count (0 for a held row).
-PetscInt BeamStiffnessRow(const BeamOperator &op, PetscInt i, PetscInt cols[5], PetscReal vals[5]);
-
-// Strain energy (J) of the curvature terms k in [k0, k1): sum over ranks gives U.
-PetscReal BeamStrainEnergy(const BeamOperator &op, const PetscReal *y, PetscInt stride, PetscInt k0, PetscInt k1);
-
-// Kinetic energy (J) of nodes [i0, i1) with velocities v[i*stride].
-PetscReal BeamKineticEnergy(const BeamOperator &op, const PetscReal *v, PetscInt stride, PetscInt i0, PetscInt i1);
-
-// Hat-function share of an impact point between its two neighbouring nodes:
-// the compression uses w*y_j + (1-w)*y_{j+1}.
+// Hat-function share of an impact point between its two neighbouring nodes of a grid of N
+// nodes over [0, L] (m): the compression uses w*y_j + (1-w)*y_{j+1}.
 struct ImpactStencil {
   PetscInt  j = 0; // left node
   PetscReal w = 1; // weight of node j; node j+1 gets 1-w
 };
-ImpactStencil BeamImpactStencil(const BeamOperator &op, PetscReal x_imp);
-// The same on a grid of N nodes over [0, L] (m).
 ImpactStencil GridImpactStencil(PetscInt N, PetscReal L, PetscReal x_imp);
-
-// Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K,
-// plus an extra stiffness k_extra (N/m) coupling mass m_extra (kg) to the stencil.
-PetscReal BeamMaxFrequencyBound(const BeamOperator &op, const ImpactStencil &s, PetscReal k_extra, PetscReal m_extra);
 
 // Lowest flexural angular frequency (rad/s) of the continuum beam with these end
 // supports (analytic beta L); with a clamped region the free span beyond its

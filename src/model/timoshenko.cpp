@@ -10,9 +10,10 @@
 //   U = 1/2 sum_e h [ EI_e ((psi_i+1 - psi_i)/h)^2 + kGA_e ((w_i+1 - w_i)/h - (psi_i + psi_i+1)/2)^2 ]
 //
 // with the element's mean section (exact integrals of the profile), and lumped masses rho A h
-// and rho I h shared half to each end node of an element. Free ends need nothing (natural conditions); a clamped node
-// holds w and psi, a pinned node w only. The frequencies converge at second order in h, and
-// the fastest wave is a shear or bar wave: omega_max ~ 2 sqrt(E/rho)/h, an explicit step limit
+// and rho I h shared half to each end node of an element. Free ends need nothing (natural
+// conditions); a node holds what its support holds (model/support.hpp): a clamped node w and
+// psi, a pinned node w only, a guided one psi only. The frequencies converge at second order in
+// h, and the fastest wave is a shear or bar wave: omega_max ~ 2 sqrt(E/rho)/h, an explicit step limit
 // that grows like h rather than h^2.
 #include "model/beam_theory.hpp"
 
@@ -31,8 +32,8 @@ void TimoshenkoBuild(const BeamParams &p, BeamDiscretization *d)
   d->strain.clear();
   d->frequency_unit = std::sqrt(p.EI / p.mu) / (p.length * p.length);
   for (PetscInt i = 0; i < N; ++i) {
-    d->held[2 * i]     = hold[i] != NodeHold::None;
-    d->held[2 * i + 1] = hold[i] == NodeHold::Clamp;
+    d->held[2 * i]     = HoldsDeflection(hold[i]); // what the supports hold (model/support.hpp)
+    d->held[2 * i + 1] = HoldsRotation(hold[i]);
   }
   for (PetscInt e = 0; e < N - 1; ++e) {
     const SectionProperties s = BeamSectionMean(p, e * h, (e + 1) * h);

@@ -45,7 +45,7 @@ ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, Pe
   ContactEvent e{ContactEventKind::ContactStart, te, c, ContactForce(ball, s, c)};
   e.approach_speed = v;
   e.cor            = BallCorAt(ball, v);
-  e.n              = ball.law == ContactLawKind::Linear ? 0.0 : ContactUnloadingExponent(ball, s);
+  e.n              = ContactUnloadingExponent(ball, s);
   return e;
 }
 
@@ -80,7 +80,7 @@ PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal
     tl->t_stop = std::min(times.max_time, te + times.window);
     break;
   case ContactEventKind::ContactStart:
-    if (ball.law == ContactLawKind::Hysteresis && !ball.cor_table.empty()) state->n = BallExponentAt(ball, cdot); // this contact's e(v_approach)
+    ContactBegin(ball, state, cdot); // what the law keeps for this contact (with -ball_cor_table: n from e(v_approach))
     ContactSwitch(ball, state, ContactPhase::Loading, c);
     res->contacts++;
     tl->contact_start = te;

@@ -103,7 +103,7 @@ void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupli
     const PetscReal sm = std::sqrt(m.S.mass[d]);
     sy[d]              = sm * s.y[m.S.dof[d]];
     sv[d]              = sm * s.v[m.S.dof[d]];
-    for (int q = 0; q < 2; ++q)
+    for (PetscInt q = 0; q < g.n; ++q)
       if (m.S.dof[d] == g.dof[q]) gw[d] += g.w[q] / sm;
   }
   for (PetscInt k = 0; k < n; ++k) {

@@ -69,6 +69,7 @@ struct ImpactSetup {
   PetscReal       V_x = 0;  // m/s, the swinging bat's speed toward the ball at the impact point
   PetscReal       approach = 0;            // m/s, v_ball + V_x: the first contact's approach speed
   std::vector<PetscReal> beam_velocity;    // per dof at t = 0 (empty: at rest)
+  FrameMotion     frame;    // the swing's rigid frame, which a grip ties the handle to (at rest for a bat at rest)
 };
 
 PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *s)
@@ -86,18 +87,23 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
     PetscCheck(s->approach > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_speed %g, -bat_angular_velocity %g: the bat moves at %g m/s at x = %g m, so ball (-ball_speed %g) and bat do not approach",
                (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x, (double)sc.ball.speed);
     s->beam_velocity = BeamSystemSwingVelocity(s->sys, sc.swing, body);
+    s->frame.v       = s->beam_velocity; // the frame moves with the bat's rigid swing
   }
-  if (s->sys.Gripped()) { // the hands hold the handle to the swing's rigid frame (at rest: a fixed frame)
-    BeamSystem &S = s->sys;
-    if (!s->beam_velocity.empty()) S.grip_v = s->beam_velocity;
-    const std::vector<PetscReal> zero(S.ndof, 0.0);
-    S.grip_drive0 = BeamSystemGripDrive(S, zero.data(), S.fields, S.grip_v.data(), S.fields, 0, S.ndof) + sc.ball.mass * BeamSystemGripFrameAt(S, s->g) * sc.ball.speed;
+  if (ForceOperatorDriven(s->sys, &s->frame)) { // the hands' work is counted from Q(0)
+    const std::vector<PetscReal> zero(s->sys.ndof, 0.0);
+    ForceState                   at0; // t = 0: undeformed, moving with the frame
+    at0.y        = zero.data();
+    at0.ys       = s->sys.fields;
+    at0.v        = s->frame.v.data();
+    at0.vs       = s->sys.fields;
+    at0.frame    = &s->frame;
+    s->frame.q0  = ForceOperatorFrameMomentum(s->sys, at0, 0, s->sys.ndof) + sc.ball.mass * FrameMotionAt(s->frame, s->g) * sc.ball.speed;
   }
   BallParams approaching = sc.ball; // the contact's scales are those of the approach speed
   approaching.speed      = s->approach;
   s->scales              = ContactScalesOf(s->sys, approaching);
   s->contact             = ContactState();
-  s->contact.n           = BallExponentAt(sc.ball, s->approach); // the first contact's exponent, from its approach speed
+  ContactBegin(sc.ball, &s->contact, s->approach); // the first contact's law state (its exponent), from its approach speed
   PetscFunctionReturn(0);
 }
 
@@ -336,10 +342,10 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
   set.check_unused_options = sc.impact.check_unused_options;
   set.report_setup         = sc.impact.report_setup;
   set.strict_solver_options = sc.impact.strict_solver_options;
-  PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &st, res));
+  PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
   stage.End(); // ImpactDrive holds the contact and free-flight stages
   if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys, s.scales, *res));
-  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
+  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
   PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
   ImpactBatOutcome(sc, s.V_x, res);
   ImpactPlausibility(sc, res);
@@ -355,8 +361,8 @@ PetscErrorCode LeapfrogRun(const Scenario &sc, const LeapfrogParams &lp, ImpactR
   *res   = ImpactResult();
   res->x = sc.impact.x;
   PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s));
-  PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &st, res));
-  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact};
+  PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));
+  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
   PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
   ImpactBatOutcome(sc, s.V_x, res);
   ImpactPlausibility(sc, res);

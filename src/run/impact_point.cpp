@@ -6,10 +6,11 @@ namespace beamimpact {
 ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x)
 {
   if (!(x >= 0 && x <= beam.length)) return ImpactPointWhere::OffBeam;
-  const BeamOperator  op            = BeamOperatorBuild(beam);
-  const ImpactStencil st            = BeamImpactStencil(op, x);
-  const bool          on_held       = (st.w > 0 && op.held[st.j]) && (st.w < 1 ? op.held[st.j + 1] : true);
-  const bool          on_held_right = st.w == 0 && op.held[st.j + 1];
+  const std::vector<NodeHold> hold = BeamNodeHolds(beam);
+  auto                        held = [&](PetscInt i) { return hold[i] != NodeHold::None; };
+  const ImpactStencil         st            = GridImpactStencil(beam.nodes, beam.length, x);
+  const bool                  on_held       = (st.w > 0 && held(st.j)) && (st.w < 1 ? held(st.j + 1) : true);
+  const bool                  on_held_right = st.w == 0 && held(st.j + 1);
   return on_held || on_held_right ? ImpactPointWhere::Held : ImpactPointWhere::Movable;
 }
 

@@ -14,16 +14,19 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscFunctionBeginUser;
   PetscCall(stepper.ViewBegin(&sv));
   const PetscInt         np = (PetscInt)points.size();
-  const PetscInt         G  = 5 + np; // the grip's sums: stored energy, drive, force, moment
-  std::vector<PetscReal> sums(G + (S.Gripped() ? 4 : 0), 0.0);
-  sums[0] = BeamSystemKineticEnergy(S, sv.v, sv.v_stride, sv.d0, sv.d1);
-  sums[1] = BeamSystemStrainEnergy(S, sv.y, sv.y_stride, sv.d0, sv.d1);
-  if (S.Gripped()) {
-    const PetscReal t = stepper.Time();
-    sums[G]           = BeamSystemGripEnergy(S, sv.y, sv.y_stride, sv.d0, sv.d1, t);
-    sums[G + 1]       = BeamSystemGripDrive(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1);
-    BeamSystemGripForce(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, t, &sums[G + 2], &sums[G + 3]);
-  }
+  const PetscInt         G  = 5 + np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
+  std::vector<PetscReal> sums(G + 4, 0.0);
+  ForceState             fs;
+  fs.y     = sv.y;
+  fs.ys    = sv.y_stride;
+  fs.v     = sv.v;
+  fs.vs    = sv.v_stride;
+  fs.t     = stepper.Time();
+  fs.frame = ctx.frame;
+  sums[0]  = BeamSystemKineticEnergy(S, sv.v, sv.v_stride, sv.d0, sv.d1);
+  ForceOperatorEnergy(S, fs, sv.d0, sv.d1, &sums[1], &sums[G]);
+  sums[G + 1] = ForceOperatorFrameMomentum(S, fs, sv.d0, sv.d1);
+  ForceOperatorFrameReaction(S, fs, sv.d0, sv.d1, &sums[G + 2], &sums[G + 3]);
   // Translational dofs (field 0) of the owned nodes.
   auto vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
   const PetscInt n0 = sv.d0 / F, n1 = sv.d1 / F;
@@ -66,12 +69,10 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   m->beam_moment         = sums[3];
   m->segment_kinetic     = sums[4];
   m->beam_dissipated     = stepper.Dissipated();
-  if (S.Gripped()) {
-    m->grip_stored = sums[G];
-    m->hand_work   = sums[G + 1] + ball.mass * BeamSystemGripFrameAt(S, *ctx.g) * m->ball_v - S.grip_drive0;
-    m->grip_force  = sums[G + 2];
-    m->grip_moment = sums[G + 3];
-  }
+  m->grip_stored = sums[G];
+  m->grip_force  = sums[G + 2];
+  m->grip_moment = sums[G + 3];
+  if (ForceOperatorDriven(S, ctx.frame)) m->hand_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v - ctx.frame->q0; // 0 for a frame at rest
   if (point_v) point_v->assign(sums.begin() + 5, sums.begin() + G);
   PetscFunctionReturn(0);
 }

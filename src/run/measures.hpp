@@ -17,9 +17,10 @@ struct StateMeasures {
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
   PetscReal segment_kinetic = 0;                // J, the monitored segment
   PetscReal beam_dissipated = 0;                // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its damper's share too)
-  // The hands (-grip): the grip's stored energy 1/2 sum k_i (y_i - v_f,i t)^2, the work the hands
-  // (the swing's frame) have done on the bat since t = 0, the force of the bat on the hands and
-  // its moment about x = 0 (0 without a grip).
+  // The hands (-grip), from the force operator (system/force_operator.hpp): the energy stored in
+  // the force terms other than the elastic one (the grip's 1/2 sum k_i (y_i - v_f,i t)^2), the
+  // work the hands (the swing's frame) have done on the bat since t = 0, the force of the bat on
+  // the hands and its moment about x = 0 (0 without a grip).
   PetscReal grip_stored = 0, hand_work = 0;     // J
   PetscReal grip_force = 0, grip_moment = 0;    // N, N m
   // The conserved total: with the linear spring and an undamped beam, a constant.
@@ -32,6 +33,7 @@ struct MeasureContext {
   const ContactCoupling *g       = nullptr;
   const BallParams      *ball    = nullptr;
   const ContactState    *contact = nullptr;
+  const FrameMotion     *frame   = nullptr; // the swing's frame (nullptr: at rest)
 };
 
 // Measures the current state; with a monitor request also the point velocities (m/s, at

@@ -53,7 +53,7 @@ void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep,
   while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, run.s_min, &s_max)) {
     s += s_max;
     const PetscReal c = ph.Derivative(s, 0);
-    res->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, run.ball->k * c});
+    res->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, ContactLinearStiffness(*run.ball) * c});
     res->max_compression = std::max(res->max_compression, c);
     // Continue after this maximum: restart the search from the state at s.
     std::vector<PetscReal> qs, qds;
@@ -120,7 +120,7 @@ void ModalOutcome(const ModalRun &run, PetscReal E0, PetscReal D, ImpactResult *
       res->contact_time_total += e.time - start;
     }
   }
-  res->peak_force          = ball.k * res->max_compression;
+  res->peak_force          = ContactLinearStiffness(ball) * res->max_compression;
   res->final_time          = run.t;
   res->ball_final_velocity = run.qd[S.n - 1];
   res->acor                = -run.qd[S.n - 1] / ball.speed;
@@ -161,8 +161,8 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   PetscFunctionBeginUser;
   PetscCheck(!sys.Gripped(), PETSC_COMM_SELF, PETSC_ERR_SUP,
              "-reference modal with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal reference; use a tight TS run as the reference");
-  PetscCheck(ball.law == ContactLawKind::Linear, PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "-reference modal needs -ball_law linear (the hysteretic law is nonlinear: use a tight run of a high-order integrator as the reference)");
+  PetscCheck(ContactLinear(ball), PETSC_COMM_SELF, PETSC_ERR_SUP,
+             "-reference modal needs -ball_law linear (the %s law is nonlinear: use a tight run of a high-order integrator as the reference)", ContactLawName(ball.law));
   {
     const double need = ModalReferenceMemory(sys), limit = ModalReferenceMemoryLimit();
     PetscCheck(need <= limit, PETSC_COMM_SELF, PETSC_ERR_MEM,
@@ -176,7 +176,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   res->ts_type       = "modal";
   res->after_used    = "modal"; // exact throughout
   res->formulation   = "exact";
-  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ball.k);
+  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ContactLinearStiffness(ball));
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
   // which also give the dissipated energy of every phase exactly.
   const bool       damped = sys.Damped();

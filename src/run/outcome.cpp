@@ -12,7 +12,7 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   res->final_time             = t;
   res->ball_final_velocity    = m1.ball_v;
   res->acor                   = -m1.ball_v / ball.speed;
-  res->acor_corrected         = ball.law == ContactLawKind::Linear ? res->acor * ball.loss_factor : res->acor;
+  res->acor_corrected         = ContactElastic(ball) ? res->acor * ball.loss_factor : res->acor;
   res->energy_error           = (m1.total() - m0.total()) / m0.total();
   res->linear_momentum_error  = (m1.momentum - m0.momentum) / (ball.mass * ball.speed);
   res->angular_momentum_error = (m1.angular_momentum - m0.angular_momentum) / (ball.mass * ball.speed * S.L);
@@ -35,7 +35,7 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   const PetscReal L_cm = m1.beam_moment - x_cm * m1.beam_momentum;
   const PetscReal Ein  = 0.5 * ball.mass * ball.speed * ball.speed;
   const PetscReal Etr = m1.beam_momentum * m1.beam_momentum / (2 * M), Erot = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
-  const PetscReal ball_loss = ball.law == ContactLawKind::Linear ? (1 - ball.loss_factor * ball.loss_factor) * m1.ball_kinetic : res->ball_dissipated_end;
+  const PetscReal ball_loss = ContactElastic(ball) ? (1 - ball.loss_factor * ball.loss_factor) * m1.ball_kinetic : res->ball_dissipated_end;
   res->ball_loss_fraction   = ball_loss / Ein;
   res->translation_fraction = Etr / Ein;
   res->rotation_fraction    = Erot / Ein;

@@ -9,11 +9,12 @@ namespace beamimpact {
 
 namespace {
 
-// Everything of the system that the modes depend on, compared exactly.
+// Everything of the system that the modes depend on, compared exactly: M, the held dofs, and
+// K and C of the force operator (the same M, K and C have the same modes and decay rates).
 bool SameBeam(const BeamSystem &a, const BeamSystem &b)
 {
-  return a.nodes == b.nodes && a.fields == b.fields && a.ndof == b.ndof && a.bw == b.bw && a.damping_mass == b.damping_mass && a.damping_stiffness == b.damping_stiffness && a.mass == b.mass &&
-         a.held == b.held && a.band == b.band;
+  return a.nodes == b.nodes && a.fields == b.fields && a.ndof == b.ndof && a.bw == b.bw && a.mass == b.mass && a.held == b.held && a.band == b.band &&
+         a.forces.damping_band == b.forces.damping_band && a.forces.damping_diag == b.forces.damping_diag;
 }
 
 // The beam's rigid motions that its held dofs allow: deflection a + b x (field 0) and rotation
@@ -81,9 +82,11 @@ void ExactRigidModes(BeamModes *m)
     }
     for (PetscInt k = nz; k < n; ++k) ModalOrthonormalize(B.Phi, n, nz, 2, &B.Phi[(size_t)k * n]);
   }
+  PetscReal alpha, beta; // C = alpha M + beta K: a rigid mode decays by alpha alone (K phi = 0)
+  S.Rayleigh(&alpha, &beta);
   for (PetscInt k = 0; k < nz; ++k) {
     B.omega[k] = 0;
-    B.rate[k]  = 0.5 * m->sys.damping_mass;
+    B.rate[k]  = 0.5 * alpha;
   }
 }
 
@@ -95,10 +98,7 @@ PetscInt                                     n_computed = 0, n_reused = 0;
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 {
   PetscInt n = 0;
-  if (sys.Gripped()) { // the frame's drive is a forcing in time, and the grip's damper not proportional
-    if (why) *why = "the beam is held by the hands (-grip: a time-dependent drive of the swing's frame and a non-proportional damper), which the free-vibration modes do not include";
-    return false;
-  }
+  if (!ForceOperatorModal(sys, nullptr, nullptr, why)) return false; // a force term the modes cannot carry (the grip: a drive in time, a damper not proportional)
   for (PetscInt d = 0; d < sys.ndof; ++d) n += sys.held[d] ? 0 : 1;
   if (n > BeamModesMaxDofs) {
     if (why) *why = "the beam has " + std::to_string(n) + " free dofs, above the " + std::to_string(BeamModesMaxDofs) + " of the dense modal decomposition";

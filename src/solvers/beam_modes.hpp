@@ -5,7 +5,7 @@
 //
 // Computed once per beam and shared: BeamModesShared keeps the last few bases in a small
 // cache of this process keyed by the system's content (nodes, fields, masses, held dofs, the
-// band of K, alpha and beta, compared exactly), so every point of a sweep, every run of a
+// bands of K and C of the force operator, compared exactly), so every point of a sweep, every run of a
 // study and every repetition of a scene that builds the same BeamSystem reuses one
 // decomposition; a different beam (grid, theory, support, damping) is a new entry. The ball
 // and the impact point are not in the key: the ball is free after separation and the impact

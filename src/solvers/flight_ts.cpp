@@ -73,8 +73,9 @@ bool TypeCanRollBack(const char *type)
   return false;
 }
 
-// The TS with the program's defaults, then the options (-flight_ts_*, -flight_snes_*, ...).
-PetscErrorCode FlightTSCreate(FlightContext *ctx, TS *ts)
+// The TS with the program's defaults (those of FlightTSOptionTable), then the options
+// (-flight_ts_*, -flight_snes_*, ...). On comm: PETSC_COMM_SELF, but -help's on the task's.
+PetscErrorCode FlightTSCreate(MPI_Comm comm, FlightContext *ctx, TS *ts)
 {
   Mat  J;
   SNES snes;
@@ -82,13 +83,13 @@ PetscErrorCode FlightTSCreate(FlightContext *ctx, TS *ts)
   PC   pc;
 
   PetscFunctionBeginUser;
-  PetscCall(TSCreate(PETSC_COMM_SELF, ts));
+  PetscCall(TSCreate(comm, ts));
   PetscCall(TSSetOptionsPrefix(*ts, "flight_"));
   PetscCall(TSSetProblemType(*ts, TS_NONLINEAR));
   PetscCall(TSSetType(*ts, TSRK));
   PetscCall(TSRKSetType(*ts, TSRK5DP));
   PetscCall(TSSetRHSFunction(*ts, NULL, FlightRHSFunction, ctx));
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, 6, 6, NULL, &J));
+  PetscCall(MatCreateDense(comm, PETSC_DECIDE, PETSC_DECIDE, 6, 6, NULL, &J));
   PetscCall(TSSetRHSJacobian(*ts, J, J, FlightRHSJacobian, ctx));
   PetscCall(MatDestroy(&J));
   PetscCall(TSSetTolerances(*ts, 1e-10, NULL, 1e-10, NULL));
@@ -245,7 +246,7 @@ PetscErrorCode FlightSolve(const FlightModel &m, const PetscReal u0[6], const Fl
   PetscCall(PetscTime(&t_start));
   *r    = FlightResult();
   ctx.m = &m;
-  PetscCall(FlightTSCreate(&ctx, &ts));
+  PetscCall(FlightTSCreate(PETSC_COMM_SELF, &ctx, &ts));
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, 6, &U));
   PetscCall(VecGetArray(U, &u));
   std::copy(u0, u0 + 6, u);
@@ -262,7 +263,28 @@ PetscErrorCode FlightSolve(const FlightModel &m, const PetscReal u0[6], const Fl
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FlightTSOptionsHelp()
+const OptionModule &FlightTSOptionTable()
+{
+  static const OptionModule m = {
+    "flight_ts",
+    "PETSc options of the flight's integrator, -task flight (PETSc's TS options with the prefix -flight_; the landing is located by the program)",
+    {
+      OptionChoice("-flight_ts_type", "Integrator of the flight: any type that can roll back a step", {"rk", "cn", "theta", "beuler", "bdf", "arkimex", "rosw", "irk", "alpha"}, "rk"),
+      OptionText("-flight_ts_rk_type", "Runge-Kutta tableau of -flight_ts_type rk: 5dp (Dormand-Prince 5(4)), 3bs, 4, 5bs, 8vr, ...", "5dp"),
+      OptionReal("-flight_ts_rtol", "1", "Relative tolerance of the local error (adaptive steps)", "1e-10", NonNegative()),
+      OptionReal("-flight_ts_atol", "m, m/s", "Absolute tolerance of the local error, on the positions (m) and velocities (m/s)", "1e-10", NonNegative()),
+      OptionReal("-flight_ts_dt", "s", "First step of an adaptive run; the step with -flight_ts_adapt_type none", "0.001", Positive()),
+      OptionReal("-flight_ts_max_time", "s", "Longest flight: a ball not landed by then is an error", "60", Positive()),
+      OptionChoice("-flight_ts_adapt_type", "Step size controller of the flight", {"none", "basic", "dsp"}, "basic"),
+      OptionFlag("-flight_ts_monitor", "Print each step of the flight (time, step size)"),
+    },
+    true,
+    {"-flight_ts_", "-flight_snes_", "-flight_ksp_", "-flight_pc_"},
+  };
+  return m;
+}
+
+PetscErrorCode FlightTSOptionsHelp(MPI_Comm comm)
 {
   FlightContext ctx;
   FlightModel   m;
@@ -270,8 +292,9 @@ PetscErrorCode FlightTSOptionsHelp()
 
   PetscFunctionBeginUser;
   ctx.m = &m;
-  PetscCall(FlightTSCreate(&ctx, &ts));
+  PetscCall(FlightTSCreate(comm, &ctx, &ts));
   PetscCall(TSDestroy(&ts));
+  PetscCall(OptionModulePrintHelp(comm, FlightTSOptionTable()));
   PetscFunctionReturn(0);
 }
 

@@ -12,6 +12,7 @@
 // computes the same flight.
 #pragma once
 
+#include "base/option_table.hpp"
 #include "model/flight.hpp"
 
 #include <petscts.h>
@@ -46,7 +47,12 @@ struct FlightResult {
 // no landing within the TS's max time (-flight_ts_max_time).
 PetscErrorCode FlightSolve(const FlightModel &m, const PetscReal u0[6], const FlightSolveParams &p, FlightResult *r);
 
-// Under -help: the flight TS's options (-flight_ts_*), as for its default type.
-PetscErrorCode FlightTSOptionsHelp();
+// The flight TS's PETSc options the program advertises, with its defaults (a PETSc table:
+// prefixes -flight_ts_, -flight_snes_, -flight_ksp_, -flight_pc_; PETSc's TS reads them).
+const OptionModule &FlightTSOptionTable();
+
+// Under -help: the flight TS's options (-flight_ts_*) as PETSc lists them for its default
+// type, then its table.
+PetscErrorCode FlightTSOptionsHelp(MPI_Comm comm);
 
 } // namespace beamimpact

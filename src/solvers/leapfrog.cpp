@@ -1,6 +1,8 @@
 // Stormer-Verlet baseline on plain arrays behind the Stepper interface. See leapfrog.hpp.
 #include "solvers/leapfrog.hpp"
 
+#include "system/dissipation.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -13,7 +15,7 @@ namespace {
 // need no branches (dof d is y[d + bw]).
 struct LeapfrogState {
   std::vector<PetscReal> y, v, a;           // m, m/s, m/s^2 (per dof)
-  std::vector<PetscReal> vh;                // m/s, damped beam: the half-step velocity that led to this state
+  std::vector<PetscReal> vh;                // m/s, damped beam: the half-step velocity that led to this state (padded like y)
   PetscReal              yb = 0, vb = 0, ab = 0; // ball: m, m/s, m/s^2
   PetscReal              c = 0, F = 0;      // compression (m) and force (N) at this state
 };
@@ -21,25 +23,40 @@ struct LeapfrogState {
 class LeapfrogStepper : public Stepper {
 public:
   const BeamSystem      *sys = nullptr;
+  const FrameMotion     *frame = nullptr; // the swing's frame (owned by the run driver)
   ContactCoupling        g;
   BallParams             ball;
   ContactState          *contact = nullptr;
   PetscInt               n = 0, bw = 0;
-  std::vector<PetscReal> band;         // M^{-1} K: band[(2 bw + 1) i + o] (1/s^2); zero rows for held dofs
-  PetscReal              gm[2] = {0, 0}; // coupling weight over the dof's mass (1/kg); 0 if held
+  std::vector<PetscReal> band;  // M^{-1} K: band[(2 bw + 1) i + o] (1/s^2); zero rows for held dofs
+  PetscReal              gm[ContactCoupling::kMaxEntries] = {}; // coupling weight over the dof's mass (1/kg); 0 if held
   PetscReal              dt = 0, dt_stable = 0, t = 0, t_prev = 0; // s
   LeapfrogState          A, B;
   LeapfrogState         *cur = &A, *other = &B; // after a step, *other holds the state before it
   PetscInt               n_force = 0;
-  // Damped beam (see leapfrog.hpp): y + beta vh (padded like y), and the dissipated energy
-  // with the rate P = v^T C v and dP/dt now and at the start of the last step.
+  // The force operator's other parts (see leapfrog.hpp): the drive f(0, 0, t) of a moving frame,
+  // and with damping M^{-1} C split into its band (lagged: the half-step velocity) and its
+  // diagonal (trapezoidal), with the dissipation rule on P = v^T C v.
+  bool                   drives = false;  // the frame moves and a term is tied to it: f(0, 0, t) is evaluated
   bool                   damped = false;
-  bool                   gripped = false; // the hands (BeamSystem::grip_*)
   PetscReal              tf = 0;          // s, the time of the state Force()/ForceDamped() evaluate
-  std::vector<PetscReal> yw, cv;
-  PetscReal              dissipated = 0, rate = 0, rate_dot = 0, dissipated_prev = 0, rate_prev = 0, rate_dot_prev = 0;
+  std::vector<PetscReal> drive;           // N, f(0, 0, tf)
+  std::vector<PetscReal> cband, crate;    // M^{-1} C less its diagonal part (1/s; empty: none), the diagonal part over the mass (1/s)
+  std::vector<PetscReal> cv;
+  DissipationIntegral    D;
 
-  PetscReal CompressionOf(const LeapfrogState &s) const { return s.yb - (g.w[0] * s.y[g.dof[0] + bw] + g.w[1] * s.y[g.dof[1] + bw]); }
+  PetscReal CompressionOf(const LeapfrogState &s) const
+  {
+    PetscReal u = 0; // g^T y
+    for (PetscInt q = 0; q < g.n; ++q) u = q == 0 ? g.w[q] * s.y[g.dof[q] + bw] : u + g.w[q] * s.y[g.dof[q] + bw];
+    return s.yb - u;
+  }
+  void ContactAndDrive(LeapfrogState &s)
+  {
+    s.c = CompressionOf(s);
+    s.F = ContactForce(ball, *contact, s.c);
+    if (drives) ForceOperatorDrive(*sys, tf, frame, 0, n, drive.data(), sys->fields);
+  }
 
   // s.a, s.ab, s.c, s.F from s.y, s.yb; and, with half_kick, v += half_kick * a.
   void Force(LeapfrogState &s, PetscReal half_kick)
@@ -48,18 +65,17 @@ public:
     const PetscReal *yp = s.y.data() + bw;
     PetscReal       *a = s.a.data(), *v = s.v.data();
     n_force++;
+    ContactAndDrive(s);
     for (PetscInt i = 0; i < n; ++i) {
       const PetscReal *r   = band.data() + W * i;
       const PetscReal *yi  = yp + i - bw;
       PetscReal        sum = 0;
       for (PetscInt o = 0; o < W; ++o) sum += r[o] * yi[o];
       a[i] = -sum;
-      if (gripped) a[i] += sys->grip_k[i] * sys->grip_v[i] * tf / sys->mass[i]; // the frame's drive
+      if (drives) a[i] -= drive[i] / sys->mass[i];
       v[i] += half_kick * a[i];
     }
-    s.c = CompressionOf(s);
-    s.F = ContactForce(ball, *contact, s.c);
-    for (PetscInt q = 0; q < 2; ++q) {
+    for (PetscInt q = 0; q < g.n; ++q) {
       a[g.dof[q]] += gm[q] * s.F;
       v[g.dof[q]] += half_kick * gm[q] * s.F;
     }
@@ -67,42 +83,49 @@ public:
     s.vb += half_kick * s.ab;
   }
 
-  // Force() of the damped scheme: a = M^{-1} (-K (y + beta vh) + g F) - alpha v, the alpha part
-  // trapezoidal: v = (v + half_kick f) / (1 + half_kick alpha).
+  // Force() of the damped scheme: a = M^{-1} (-(K y + C_band vh + f(0, 0, t)) + g F) - C_diag/m v,
+  // the diagonal part trapezoidal: v = (v + half_kick f) / (1 + half_kick C_diag/m).
   void ForceDamped(LeapfrogState &s, PetscReal half_kick)
   {
-    const PetscInt   W = 2 * bw + 1;
-    const PetscReal  alpha = sys->damping_mass, beta = sys->damping_stiffness;
+    const PetscInt   W  = 2 * bw + 1;
+    const PetscReal *yp = s.y.data() + bw, *vh = s.vh.data() + bw;
     PetscReal       *a = s.a.data(), *v = s.v.data();
     n_force++;
-    for (PetscInt i = 0; i < n; ++i) yw[i + bw] = s.y[i + bw] + beta * s.vh[i];
+    ContactAndDrive(s);
     for (PetscInt i = 0; i < n; ++i) {
       const PetscReal *r   = band.data() + W * i;
-      const PetscReal *yi  = yw.data() + i;
+      const PetscReal *yi  = yp + i - bw;
       PetscReal        sum = 0;
       for (PetscInt o = 0; o < W; ++o) sum += r[o] * yi[o];
+      if (!cband.empty()) {
+        const PetscReal *rc = cband.data() + W * i;
+        const PetscReal *vi = vh + i - bw;
+        for (PetscInt o = 0; o < W; ++o) sum += rc[o] * vi[o];
+      }
       a[i] = -sum;
-      if (gripped) // the grip: beta K without its spring, the frame's drive, the damper's frame part
-        a[i] += (beta * sys->grip_k[i] * s.vh[i] + sys->grip_k[i] * sys->grip_v[i] * tf + sys->grip_c[i] * sys->grip_v[i]) / sys->mass[i];
+      if (drives) a[i] -= drive[i] / sys->mass[i];
     }
-    s.c = CompressionOf(s);
-    s.F = ContactForce(ball, *contact, s.c);
-    for (PetscInt q = 0; q < 2; ++q) a[g.dof[q]] += gm[q] * s.F;
-    for (PetscInt i = 0; i < n; ++i) { // the grip's damper c_i/m_i is trapezoidal with alpha
-      const PetscReal ai = gripped ? alpha + sys->grip_c[i] / sys->mass[i] : alpha;
+    for (PetscInt q = 0; q < g.n; ++q) a[g.dof[q]] += gm[q] * s.F;
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscReal ai = crate.empty() ? 0.0 : crate[i];
       v[i]               = (v[i] + half_kick * a[i]) / (1 + half_kick * ai);
       a[i] -= ai * v[i];
     }
     s.ab = -s.F / ball.mass;
     s.vb += half_kick * s.ab;
   }
-  // P = v^T C v and dP/dt = 2 a^T C v at the current state.
-  void DissipationRateNow()
+  // P = v^T C v and dP/dt = 2 a^T C v at the current state (the velocities relative to the frame).
+  void DissipationRateNow(PetscReal *P, PetscReal *Pdot)
   {
-    BeamSystemDampingApply(*sys, cur->v.data(), sys->fields, 0, n, cv.data(), sys->fields);
-    rate     = BeamSystemDissipationRate(*sys, cur->v.data(), sys->fields, 0, n);
-    rate_dot = 0;
-    for (PetscInt i = 0; i < n; ++i) rate_dot += 2 * cur->a[i] * cv[i];
+    ForceState fs;
+    fs.v     = cur->v.data();
+    fs.vs    = sys->fields;
+    fs.t     = t;
+    fs.frame = frame;
+    ForceOperatorDampingApply(*sys, fs, 0, n, cv.data(), sys->fields);
+    *P    = ForceOperatorDissipationRate(*sys, fs, 0, n);
+    *Pdot = 0;
+    for (PetscInt i = 0; i < n; ++i) *Pdot += 2 * cur->a[i] * cv[i];
   }
 
   MPI_Comm    Comm() const override { return PETSC_COMM_SELF; }
@@ -123,18 +146,16 @@ public:
     other->yb = cur->yb + tau * other->vb;
     tf = t + tau;
     if (damped) {
-      other->vh = other->v;
+      std::copy(other->v.begin(), other->v.end(), other->vh.begin() + bw);
       ForceDamped(*other, h2);
     } else Force(*other, h2);
     std::swap(cur, other);
     t_prev = t;
     t += tau;
-    if (damped) { // Hermite (corrected trapezoidal) rule on P over the step, as the TS stepper
-      dissipated_prev = dissipated;
-      rate_prev       = rate;
-      rate_dot_prev   = rate_dot;
-      DissipationRateNow();
-      dissipated += 0.5 * tau * (rate_prev + rate) + tau * tau / 12 * (rate_dot_prev - rate_dot);
+    if (damped) { // the dissipation rule over the step (system/dissipation.hpp)
+      PetscReal P, Pdot;
+      DissipationRateNow(&P, &Pdot);
+      D.Step(tau, P, Pdot);
     }
     return 0;
   }
@@ -142,35 +163,33 @@ public:
   {
     std::swap(cur, other);
     t = t_prev;
-    if (damped) {
-      dissipated = dissipated_prev;
-      rate       = rate_prev;
-      rate_dot   = rate_dot_prev;
-    }
+    if (damped) D.RollBack();
     return 0;
   }
   PetscErrorCode Restart() override
   {
     tf = t;
     if (damped) { // the acceleration of the new phase at the event state
+      PetscReal P, Pdot;
       ForceDamped(*cur, 0.0);
-      DissipationRateNow();
+      DissipationRateNow(&P, &Pdot);
+      D.Restart(P, Pdot);
     } else Force(*cur, 0.0);
     return 0;
   }
-  PetscReal Dissipated() const override { return dissipated; }
+  PetscReal Dissipated() const override { return D.dissipated; }
   PetscErrorCode SetState(PetscReal t_new, const FullState &s) override
   {
     for (PetscInt i = 0; i < n; ++i) {
       cur->y[i + bw] = s.y[i];
       cur->v[i]      = s.v[i];
     }
-    if (damped) cur->vh = cur->v; // the exact velocity stands for the half-step one
+    if (damped) std::copy(cur->v.begin(), cur->v.end(), cur->vh.begin() + bw); // the exact velocity stands for the half-step one
     cur->yb = s.ball_y;
     cur->vb = s.ball_v;
     cur->c  = CompressionOf(*cur);
     t = t_prev = t_new;
-    if (damped) dissipated = dissipated_prev = s.dissipated;
+    if (damped) D.Set(s.dissipated);
     return 0;
   }
   PetscErrorCode NextStep(PetscReal *tau) override
@@ -181,7 +200,9 @@ public:
   PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) override
   {
     *c    = CompressionOf(*cur);
-    *cdot = cur->vb - (g.w[0] * cur->v[g.dof[0]] + g.w[1] * cur->v[g.dof[1]]);
+    PetscReal u = 0; // g^T v
+    for (PetscInt q = 0; q < g.n; ++q) u = q == 0 ? g.w[q] * cur->v[g.dof[q]] : u + g.w[q] * cur->v[g.dof[q]];
+    *cdot = cur->vb - u;
     return 0;
   }
   PetscErrorCode ViewBegin(StateView *sv) override
@@ -215,21 +236,34 @@ public:
   {
     char text[256];
     PetscSNPrintf(text, sizeof(text), "(leapfrog, fixed step %g s, dt_max = %g s): with the %s law energy can only be %s", (double)dt, (double)dt_stable, ContactLawName(ball.law),
-                  ball.law == ContactLawKind::Linear ? "conserved" : "lost");
+                  ContactElastic(ball) ? "conserved" : "lost");
     return text;
   }
 };
 
 } // namespace
 
+const OptionModule &LeapfrogOptionTable()
+{
+  static const OptionModule m = {
+    "leapfrog",
+    "Leapfrog (Stormer-Verlet) baseline",
+    {
+      OptionReal("-leapfrog_dt", "s", "Fixed step; <= 0: -leapfrog_dt_fraction x the stability limit 2/omega_max", "-1"),
+      OptionReal("-leapfrog_dt_fraction", "1", "Step as a fraction of the stability limit, when -leapfrog_dt is not given", "0.9", Between(0, 1, true, false)),
+    },
+  };
+  return m;
+}
+
 PetscErrorCode LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p)
 {
+  const OptionModule &T = LeapfrogOptionTable();
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Leapfrog (Stormer-Verlet) baseline", "beamimpact");
-  PetscCall(PetscOptionsReal("-leapfrog_dt", "Fixed step (s); <= 0: -leapfrog_dt_fraction x the stability limit 2/omega_max", "", p->dt, &p->dt, NULL));
-  PetscCall(PetscOptionsReal("-leapfrog_dt_fraction", "Step as a fraction of the stability limit, when -leapfrog_dt is not given", "", p->dt_fraction, &p->dt_fraction, NULL));
+  PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-leapfrog_dt", &p->dt, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-leapfrog_dt_fraction", &p->dt_fraction, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->dt_fraction > 0 && p->dt_fraction <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-leapfrog_dt_fraction %g is not allowed: use 0 < fraction <= 1", (double)p->dt_fraction);
   PetscFunctionReturn(0);
 }
 
@@ -239,17 +273,18 @@ PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, co
   if (!sys.Damped()) return 2.0 / w;
   // (2/w)(sqrt(1 + zeta^2) - zeta) with zeta = beta w/2, written without the cancellation.
   // The mass-like dampers (alpha, the grip's c_i/m_i) are trapezoidal: no bound of their own.
-  const PetscReal zeta = 0.5 * sys.damping_stiffness * w;
+  const PetscReal zeta = 0.5 * ForceOperatorDampingScales(sys).stiffness * w;
   return 2.0 / (w * (std::sqrt(1 + zeta * zeta) + zeta));
 }
 
 PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
   auto S = std::make_unique<LeapfrogStepper>();
 
   PetscFunctionBeginUser;
   S->sys     = &sys;
+  S->frame   = frame;
   S->g       = g;
   S->ball    = ball;
   S->contact = contact;
@@ -259,7 +294,19 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
   S->band.assign((size_t)W * sys.ndof, 0.0);
   for (PetscInt i = 0; i < sys.ndof; ++i)
     for (PetscInt o = 0; o < W; ++o) S->band[(size_t)W * i + o] = sys.band[(size_t)W * i + o] / sys.mass[i];
-  for (PetscInt q = 0; q < 2; ++q) S->gm[q] = g.w[q] / sys.mass[g.dof[q]];
+  for (PetscInt q = 0; q < g.n; ++q) S->gm[q] = g.w[q] / sys.mass[g.dof[q]];
+  if (sys.Damped()) { // M^{-1} C: its band (if any) and its diagonal part
+    const ForceOperator &op = sys.forces;
+    if (!op.damping_band.empty()) {
+      S->cband.assign((size_t)W * sys.ndof, 0.0);
+      for (PetscInt i = 0; i < sys.ndof; ++i)
+        for (PetscInt o = 0; o < W; ++o) S->cband[(size_t)W * i + o] = op.damping_band[(size_t)W * i + o] / sys.mass[i];
+    }
+    if (!op.damping_diag.empty()) {
+      S->crate.assign(sys.ndof, 0.0);
+      for (PetscInt i = 0; i < sys.ndof; ++i) S->crate[i] = op.damping_diag[i] / sys.mass[i];
+    }
+  }
   // Step and its stability limit (the same Gershgorin bound as the TS stepper).
   S->dt_stable          = LeapfrogStableStep(sys, g, ball);
   info->ts_type         = "leapfrog";
@@ -283,13 +330,15 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
   S->A.vb     = ball.speed;
   if (!beam_velocity.empty()) S->A.v = beam_velocity; // a swinging bat: a rigid motion (no force)
   S->damped   = sys.Damped();
-  S->gripped  = sys.Gripped();
+  S->drives   = ForceOperatorDriven(sys, frame);
+  if (S->drives) S->drive.assign(sys.ndof, 0.0);
   if (S->damped) {
-    for (LeapfrogState *s : {&S->A, &S->B}) s->vh.assign(sys.ndof, 0.0);
-    S->yw.assign(sys.ndof + 2 * sys.bw, 0.0);
+    PetscReal P, Pdot;
+    for (LeapfrogState *s : {&S->A, &S->B}) s->vh.assign(sys.ndof + 2 * sys.bw, 0.0);
     S->cv.assign(sys.ndof, 0.0);
     S->ForceDamped(S->A, 0.0);
-    S->DissipationRateNow();
+    S->DissipationRateNow(&P, &Pdot);
+    S->D.Restart(P, Pdot);
   } else S->Force(S->A, 0.0);
   S->n_force = 0;
   *stepper   = std::move(S);

@@ -2,24 +2,26 @@
 // form) of the same semi-discrete system as the TS stepper (system/beam_system.hpp), at a
 // fixed step, on plain arrays: the scheme the original paper used.
 //
-//   M y'' = -K y + g F(c),   m_b y_b'' = -F(c),   c = y_b - g^T y,
+//   M y'' = -f(y, y', t) + g F(c),   m_b y_b'' = -F(c),   c = y_b - g^T y,
 //
-// with M^{-1} K stored once as the system's band divided by the dof masses. One step of
-// size tau from (y, v, a):  v += tau/2 a;  y += tau v;  a = a(y);  v += tau/2 a  (one force
-// evaluation). It is a Stepper (solvers/stepper.hpp): the run driver locates the contact
-// events on it exactly as on a TS (re-steps onto the root, so no force kink lies inside a
-// step and the scheme stays second order), and LeapfrogRun (run/impact.hpp) runs it.
+// with f of the force operator (system/force_operator.hpp) in its affine form
+// f = K y + C v + f(0, 0, t): M^{-1} K stored once from the operator's band divided by the dof
+// masses, the drive f(0, 0, t) evaluated when the swing's frame moves. One step of size tau
+// from (y, v, a):  v += tau/2 a;  y += tau v;  a = a(y);  v += tau/2 a  (one force evaluation).
+// It is a Stepper (solvers/stepper.hpp): the run driver locates the contact events on it
+// exactly as on a TS (re-steps onto the root, so no force kink lies inside a step and the
+// scheme stays second order), and LeapfrogRun (run/impact.hpp) runs it.
 //
 // Stability: Stormer-Verlet is stable for omega_max dt < 2; omega_max is the same
 // Gershgorin bound as the TS stepper's (BeamSystemMaxFrequencyBound with the contact
 // stiffness), so dt_max = 2 / omega_max ~ h^2 / (2 sqrt(EI/mu)). Serial.
 //
-// Rayleigh damping C = alpha M + beta K (only when the beam is damped; the undamped path is
-// the scheme above, unchanged): the force at the end of a step is evaluated with the
-// half-step velocity v_{n+1/2} = (y_{n+1} - y_n)/tau for the beta K part (explicit, as the
-// central-difference scheme of structural dynamics) and trapezoidally for the diagonal alpha
-// M part (v_{n+1} = (v_{n+1/2} + tau/2 f_{n+1}) / (1 + tau alpha/2)). On a mode
-// y'' + 2 zeta w y' + w^2 y = 0 the scheme is
+// Damping C (only when the beam is damped; the undamped path is the scheme above, unchanged):
+// the force at the end of a step is evaluated with the half-step velocity
+// v_{n+1/2} = (y_{n+1} - y_n)/tau for C's band (Rayleigh's beta K: explicit, as the
+// central-difference scheme of structural dynamics) and trapezoidally for C's diagonal part
+// (alpha M, a grip's dampers: v_{n+1} = (v_{n+1/2} + tau/2 f_{n+1}) / (1 + tau c_d/(2 m_d))). On a
+// mode y'' + 2 zeta w y' + w^2 y = 0 of Rayleigh damping the scheme is
 //   (1 + a) y_{n+1} - (2 - b - tau^2 w^2) y_n + (1 - a - b) y_{n-1} = 0,  a = tau alpha/2, b = tau beta w^2,
 // whose roots lie in the unit circle (Jury) iff tau^2 w^2 + 2 tau beta w^2 <= 4, i.e.
 //   tau <= (2/w)(sqrt(1 + zeta_b^2) - zeta_b),  zeta_b = beta w/2,
@@ -27,9 +29,10 @@
 // step. (Had alpha been lagged too, zeta_b would be the full zeta = alpha/(2w) + beta w/2.)
 // The lagged beta term makes the damping force first-order accurate (relative error
 // ~ tau beta w^2 / 2 = tau zeta_b w on a mode); the alpha part and the undamped scheme are
-// second order.
+// second order. The dissipated energy follows the dissipation rule (system/dissipation.hpp).
 #pragma once
 
+#include "base/option_table.hpp"
 #include "model/contact.hpp"
 #include "solvers/stepper.hpp"
 #include "system/beam_system.hpp"
@@ -44,16 +47,20 @@ struct LeapfrogParams {
   PetscReal dt_fraction = 0.9; // of the stability limit 2/omega_max, when dt is not given
 };
 
-PetscErrorCode LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p);
+// -leapfrog_dt, -leapfrog_dt_fraction: the leapfrog module's table (app/registry.cpp registers
+// it) and its reader.
+const OptionModule &LeapfrogOptionTable();
+PetscErrorCode      LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p);
 
 // Stability limit (s) of Stormer-Verlet on this system and ball struck through g: 2 / omega_max,
 // or (2/omega_max)(sqrt(1 + zeta^2) - zeta), zeta = beta omega_max / 2, with damping.
 PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball);
 
-// Creates the stepper at t = 0 (beam at rest, ball touching, moving at its speed); fills
+// Creates the stepper at t = 0 (beam undeformed, moving with beam_velocity, empty: at rest;
+// ball touching, moving at its speed; frame: the swing's, owned by the caller); fills
 // *info (ts_type "leapfrog", formulation "explicit", dt_stable, dt_nominal). A step above the
 // stability limit or above 1/8 of the contact time is refused.
 PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
+                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 } // namespace beamimpact

@@ -20,13 +20,21 @@ ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, Pe
     if (sys.held[d]) continue;
     S.dof.push_back(d);
     S.mass.push_back(sys.mass[d]);
-    S.g.push_back(d == g.dof[0] ? -g.w[0] : (d == g.dof[1] ? -g.w[1] : 0.0));
+    S.g.push_back(g.Couples(d) ? -g.WeightOf(d) : 0.0);
   }
   S.dof.push_back(-1);
   S.mass.push_back(ball_mass);
   S.g.push_back(1.0);
   S.n = (PetscInt)S.dof.size();
   return S;
+}
+
+bool ModalSystem::Rayleigh(PetscReal *alpha, PetscReal *beta, std::string *why) const
+{
+  *alpha = *beta = 0;
+  if (!ForceOperatorModal(*sys, alpha, beta, why)) return false;
+  if (!damping || !sys->Damped()) *alpha = *beta = 0;
+  return true;
 }
 
 ModalSystem ModalSystemBeamOnly(const BeamSystem &sys)
@@ -239,6 +247,9 @@ static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
   const PetscInt         n = S.n;
   const BeamSystem      &sys = *S.sys;
   std::vector<PetscReal> shape(sys.ndof);
+  PetscReal              alpha, beta;
+  S.Rayleigh(&alpha, &beta);
+  const bool damped = alpha != 0 || beta != 0;
   for (PetscInt k = 0; k < n; ++k) {
     const PetscReal *phi = &B->Phi[k * n];
     std::fill(shape.begin(), shape.end(), 0.0);
@@ -251,7 +262,7 @@ static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
       if (d < S.BeamDofs()) beam_norm += S.mass[d] * q * q;
     }
     PetscReal twoU = 2 * BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof);
-    B->rate[k]     = sys.Damped() ? 0.5 * (sys.damping_mass * beam_norm + sys.damping_stiffness * twoU) / norm : 0.0;
+    B->rate[k]     = damped ? 0.5 * (alpha * beam_norm + beta * twoU) / norm : 0.0;
     if (contact) twoU += S.k * c * c;
     B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
     B->gamma[k] = c;
@@ -261,14 +272,17 @@ static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
 PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B)
 {
   const PetscInt         n = S.n;
-  const BeamSystem      &sys = *S.sys;
   std::vector<PetscReal> A, w(n);
+  PetscReal              alpha, beta;
+  std::string            why;
 
   PetscFunctionBeginUser;
-  PetscCheck(!(contact && sys.Damped()), PETSC_COMM_SELF, PETSC_ERR_SUP,
+  PetscCheck(S.Rayleigh(&alpha, &beta, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "the modes of the beam: %s", why.c_str());
+  const bool damped = alpha != 0 || beta != 0;
+  PetscCheck(!(contact && damped), PETSC_COMM_SELF, PETSC_ERR_SUP,
              "-beam_damping_mass %g and -beam_damping_stiffness %g: in contact the damping is not proportional (the ball and the contact spring carry none), so the coupled "
              "modes have no closed form; the exact modal solution needs both 0 (use a tight TS run as the reference)",
-             (double)sys.damping_mass, (double)sys.damping_stiffness);
+             (double)alpha, (double)beta);
   A = ModalMatrix(S, contact);
   {
     PetscBLASInt bn, lwork, info;
@@ -283,7 +297,7 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   B->gamma.assign(n, 0.0);
   B->rate.assign(n, 0.0);
   PetscCall(RefineBasis(S, contact, w, B));
-  if (!contact && sys.Damped() && S.ball) IsolateBall(S, w, B);
+  if (!contact && damped && S.ball) IsolateBall(S, w, B);
   ModalQuotients(S, contact, B);
   PetscFunctionReturn(0);
 }

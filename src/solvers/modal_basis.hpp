@@ -19,12 +19,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace beamimpact {
 
 // The free degrees of freedom: beam dofs that are not held (any number of fields per node;
-// the ball touches the dofs of ContactCoupling), then the ball.
+// the ball touches the dofs of ContactCoupling), then the ball. K, M and the damping come from
+// the system and its force operator.
 struct ModalSystem {
   const BeamSystem      *sys = nullptr;
   std::vector<PetscInt>  dof;  // free dof -> beam dof (the last is the ball: -1)
@@ -33,7 +35,11 @@ struct ModalSystem {
   PetscInt               n = 0;
   PetscReal              k = 0; // N/m, the contact spring
   bool                   ball = true; // false: the beam alone (ModalSystemBeamOnly), no ball dof
+  bool                   damping = true; // false: the system's damping left out (the undamped modes of the same M and K)
   PetscInt BeamDofs() const { return ball ? n - 1 : n; }
+  // The beam's damping C = alpha M + beta K (the force operator's, ForceOperatorModal; 0, 0
+  // without damping or with `damping` false). False when the system's forces are not modal.
+  bool Rayleigh(PetscReal *alpha, PetscReal *beta, std::string *why = nullptr) const;
 };
 ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, PetscReal ball_mass, PetscReal k);
 // The beam alone (free beam dofs, g = 0): its separated basis (ModalBasisBuild, contact false)
@@ -52,7 +58,7 @@ struct ModalBasis {
   std::vector<PetscReal> rate;  // 1/s, sigma_k = zeta_k omega_k: z_k'' + 2 sigma_k z_k' + omega_k^2 z_k = 0
 };
 // The basis in contact (K + k g g^T) or separated (K). With Rayleigh damping C = alpha M +
-// beta K on the beam dofs (BeamSystem::damping_mass, damping_stiffness) the separated basis
+// beta K on the beam dofs (ModalSystem::Rayleigh, from the force operator) the separated basis
 // decouples it exactly (sigma = alpha/2 + beta omega^2/2 a beam mode, alpha/2 a rigid one, 0
 // the ball's); in contact it does not (the ball and the spring are undamped): PETSC_ERR_SUP.
 PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B);

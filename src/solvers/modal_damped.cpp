@@ -27,14 +27,11 @@ PetscErrorCode UndampedModes(const ModalSystem &S, bool contact, ModalDampedBasi
 {
   const BeamSystem &sys = *S.sys;
   const PetscInt    n   = S.n;
-  BeamSystem        undamped = sys;
-  ModalSystem       S0       = S;
+  ModalSystem       S0  = S;
   ModalBasis        MB;
 
   PetscFunctionBeginUser;
-  undamped.damping_mass      = 0;
-  undamped.damping_stiffness = 0;
-  S0.sys                     = &undamped;
+  S0.damping = false; // the same M and K, without the damping
   PetscCall(ModalBasisBuild(S0, contact, &MB));
   *B       = ModalDampedBasis();
   B->n     = n;
@@ -125,7 +122,8 @@ PetscErrorCode StateEigen(ModalDampedBasis *B, std::vector<PetscReal> *VR)
 // The inverse of the real eigenvector matrix and its condition number (refused above the limit).
 PetscErrorCode StateInverse(const BeamSystem &sys, bool contact, const std::vector<PetscReal> &VR, ModalDampedBasis *B)
 {
-  const PetscInt m = B->m;
+  const PetscInt      m  = B->m;
+  const DampingScales ds = ForceOperatorDampingScales(sys); // alpha, beta (for the messages)
   PetscFunctionBeginUser;
   B->Vinv = VR;
   {
@@ -138,7 +136,7 @@ PetscErrorCode StateInverse(const BeamSystem &sys, bool contact, const std::vect
     PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
                "-beam_damping_mass %g, -beam_damping_stiffness %g: the eigenvectors of the damped %s system are linearly dependent (a defective, critically damped mode); the exact "
                "modal reference cannot represent it (use a tight TS run as the reference)",
-               (double)sys.damping_mass, (double)sys.damping_stiffness, contact ? "in-contact" : "separated");
+               (double)ds.mass_rate, (double)ds.stiffness, contact ? "in-contact" : "separated");
     PetscCallBLAS("LAPACKgetri", LAPACKgetri_(&bm, B->Vinv.data(), &bm, piv.data(), work.data(), &lwork, &info));
     PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK getri failed (info %d)", (int)info);
   }
@@ -152,7 +150,7 @@ PetscErrorCode StateInverse(const BeamSystem &sys, bool contact, const std::vect
   PetscCheck(B->cond <= kModalDampedMaxCondition, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
              "-beam_damping_mass %g, -beam_damping_stiffness %g: the eigenvector matrix of the damped %s system has condition number %.3g (> %.0e; a mode close to critical "
              "damping): the exact modal reference would not be trustworthy (use a tight TS run as the reference)",
-             (double)sys.damping_mass, (double)sys.damping_stiffness, contact ? "in-contact" : "separated", (double)B->cond, (double)kModalDampedMaxCondition);
+             (double)ds.mass_rate, (double)ds.stiffness, contact ? "in-contact" : "separated", (double)B->cond, (double)kModalDampedMaxCondition);
   PetscFunctionReturn(0);
 }
 

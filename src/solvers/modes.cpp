@@ -28,13 +28,23 @@ static PetscErrorCode ModesCountCheck(MPI_Comm comm, PetscInt count, PetscInt nf
   PetscFunctionReturn(0);
 }
 
+const OptionModule &ModesOptionTable()
+{
+  static const OptionModule m = {
+    "modes",
+    "Beam modes: eigen-solve of K phi = omega^2 M phi",
+    {OptionInt("-modes_count", "Number of modes to report, counted from omega = 0 (rigid modes included, reported as 0)", "4", AtLeast(1))},
+  };
+  return m;
+}
+
 PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamSystem *op)
 {
+  const OptionModule &T = ModesOptionTable();
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Beam modes: eigen-solve of K phi = omega^2 M phi", "beamimpact");
-  PetscCall(PetscOptionsInt("-modes_count", "Number of modes to report, counted from omega = 0 (rigid modes included, reported as 0)", "", p->count, &p->count, NULL));
+  PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-modes_count", &p->count, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", p->count);
   if (op) PetscCall(ModesCountCheck(comm, p->count, BeamFreeDofCount(*op)));
   PetscFunctionReturn(0);
 }
@@ -359,12 +369,7 @@ PetscInt BeamSystemRigidCount(const BeamSystem &op)
   return (l1 <= zero ? 1 : 0) + (l2 <= zero ? 1 : 0);
 }
 
-PetscInt BeamModesRigidCount(Support left, Support right)
-{
-  if (left == Support::Free && right == Support::Free) return 2;
-  if ((left == Support::Free && right == Support::Pinned) || (left == Support::Pinned && right == Support::Free)) return 1;
-  return 0;
-}
+PetscInt BeamModesRigidCount(Support left, Support right) { return SupportRigidModes(left, right); }
 
 namespace {
 
@@ -410,28 +415,27 @@ PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, Petsc
              (double)EI, (double)mu);
   PetscCheck(n_flexural >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "BeamModesAnalytic: n_flexural = %" PetscInt_FMT " is not allowed: it must be >= 0", n_flexural);
 
-  Support a = left, b = right;
-  if (static_cast<int>(a) > static_cast<int>(b)) std::swap(a, b); // Free < Clamped < Pinned
+  const auto is = [&](Support a, Support b) { return (left == a && right == b) || (left == b && right == a); }; // either order
   const PetscReal *table = nullptr;
   PetscInt         ntable = 0;
   BetaEquation     eq     = BetaEquation::Sin;
   PetscReal        asym_a = 1.0, asym_b = 0.0; // asymptote beta_n L = (asym_a n + asym_b) pi
-  if ((a == Support::Free && b == Support::Free) || (a == Support::Clamped && b == Support::Clamped)) {
+  if (is(Support::Free, Support::Free) || is(Support::Clamped, Support::Clamped)) {
     table  = free_free;
     ntable = 4;
     eq     = BetaEquation::CosCoshMinusOne;
     asym_a = 1.0, asym_b = 0.5; // (2n+1) pi/2
-  } else if (a == Support::Free && b == Support::Clamped) {
+  } else if (is(Support::Free, Support::Clamped)) {
     table  = clamped_free;
     ntable = 4;
     eq     = BetaEquation::CosCoshPlusOne;
     asym_a = 1.0, asym_b = -0.5; // (2n-1) pi/2
-  } else if ((a == Support::Free && b == Support::Pinned) || (a == Support::Clamped && b == Support::Pinned)) {
+  } else if (is(Support::Free, Support::Pinned) || is(Support::Clamped, Support::Pinned)) {
     table  = pinned_free;
     ntable = 3;
     eq     = BetaEquation::TanTanh;
     asym_a = 1.0, asym_b = 0.25; // (4n+1) pi/4
-  } else if (a == Support::Pinned && b == Support::Pinned) {
+  } else if (is(Support::Pinned, Support::Pinned)) {
     eq     = BetaEquation::Sin;
     asym_a = 1.0, asym_b = 0.0; // n pi, exact
   } else {

@@ -17,6 +17,7 @@
 // Units: SI (m, kg, s, N); omega in rad/s, frequency in Hz, period in s.
 #pragma once
 
+#include "base/option_table.hpp"
 #include "system/beam_system.hpp"
 
 #include <petscsys.h>
@@ -29,8 +30,11 @@ struct ModesParams {
   PetscInt count = 4; // number of modes to report, rigid ones included (-modes_count)
 };
 
-// Reads -modes_count (one PetscOptionsBegin block, no prefix) and checks it is
-// >= 1 and, when op is given, <= the number of free dofs of op.
+// -modes_count: the modes module's table (registered by app/registry.cpp).
+const OptionModule &ModesOptionTable();
+
+// Reads -modes_count (one PetscOptionsBegin block, no prefix; >= 1 by its row) and checks,
+// when op is given, that it is <= the number of free dofs of op.
 // BeamModesCompute checks the upper bound again (with the same message).
 PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamSystem *op = nullptr);
 
@@ -82,9 +86,9 @@ PetscInt BeamSystemRigidCount(const BeamSystem &op);
 // or loses them; the run is then refused (PETSC_ERR_NOT_CONVERGED) naming N, the expected
 // count and the frequencies found, instead of reporting them as flexural modes.
 
-// Rigid modes of a uniform beam with these end supports and no clamped region:
-// 2 for free-free (translation, rotation), 1 for pinned-free (rotation about
-// the pin), 0 otherwise.
+// Rigid modes of a uniform beam with these end supports and no clamped region, from what the
+// supports hold (SupportRigidModes, model/support.hpp): 2 for free-free (translation, rotation),
+// 1 for pinned-free (rotation about the pin), 0 for the other built-in pairs.
 PetscInt BeamModesRigidCount(Support left, Support right);
 
 // Continuum reference: omega[n-1] = (beta_n L)^2 sqrt(EI/(mu L^4)) (rad/s) for the

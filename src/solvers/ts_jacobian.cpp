@@ -1,12 +1,13 @@
 // The TS Jacobian J = shift I + d(residual)/du of the implicit, IMEX and second-order forms:
 //   first order   [[shift I, -I], [(K + kc g g^T)/m, shift I + C/m]]  (ball rows alike)
 //   second order  shift_A I + shift_V C/m + (K + kc g g^T)/m
-// K from the system's band, C/m = alpha I + beta K/m on the free dofs (only for a damped beam:
-// the undamped pattern and values are unchanged), kc = dF/dc of the contact law in its current
-// phase. The constant part J0 is assembled once with the final pattern (contact entries as
-// explicit zeros); a change of shift (shift_V) or contact stiffness copies it, shifts the
-// diagonal, adds shift_V Jd (second order, damped; Jd = C/m on J0's pattern) and the 3x3
-// contact block, so the LU is redone only when one of them changes.
+// K = df/dy and C = df/dv of the force operator (BeamSystemStiffnessRow, BeamSystemDampingRow;
+// C only for a damped beam: the undamped pattern and values are unchanged), kc = dF/dc of the
+// contact law in its current phase, g the coupling's entries and the ball. The constant part J0
+// is assembled once with the final pattern (contact entries as explicit zeros); a change of
+// shift (shift_V) or contact stiffness copies it, shifts the diagonal, adds shift_V Jd (second
+// order, damped; Jd = C/m on J0's pattern) and the contact block, so the LU is redone only when
+// one of them changes.
 #include "solvers/ts_problem.hpp"
 
 #include <petscdm.h>
@@ -17,20 +18,22 @@ namespace beamimpact {
 
 namespace {
 
-// The coupling vector (dc/du over the coupled beam dofs and the ball) and its columns.
+// The coupling vector (dc/du over the coupled beam dofs and the ball, last) and its columns.
 struct CouplingBlock {
-  PetscInt  cols[3];
-  PetscReal g[3];
+  PetscInt  n = 0; // the coupling's entries and the ball
+  PetscInt  cols[ContactCoupling::kMaxEntries + 1];
+  PetscReal g[ContactCoupling::kMaxEntries + 1];
 };
 CouplingBlock CouplingBlockOf(const TSProblem &P)
 {
   CouplingBlock b;
-  for (PetscInt q = 0; q < 2; ++q) {
+  for (PetscInt q = 0; q < P.g.n; ++q) {
     b.cols[q] = P.L.DofIndex(P.g.dof[q], false);
     b.g[q]    = -P.g.w[q];
   }
-  b.cols[2] = P.L.BallIndex(0);
-  b.g[2]    = 1.0;
+  b.n           = P.g.n + 1;
+  b.cols[P.g.n] = P.L.BallIndex(0);
+  b.g[P.g.n]    = 1.0;
   return b;
 }
 
@@ -49,7 +52,8 @@ PetscErrorCode SetRow(Mat J, PetscInt r, const std::map<PetscInt, PetscScalar> &
 }
 
 // Every entry of the pattern, with shift = kc = 0: the constant part J0. With damping_only
-// (second order, damped beam) the same pattern holds Jd = C/m instead.
+// (second order, damped beam) the same pattern holds Jd = C/m instead (C's entries lie on K's
+// pattern and the diagonal).
 PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = false)
 {
   const BeamSystem   &S     = *P.sys;
@@ -70,22 +74,17 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = fal
       PetscCall(MatSetValues(J, 1, &ry, 2, c, v, INSERT_VALUES));
     }
     row[rv] = 0.0;
-    const PetscInt  n     = BeamSystemStiffnessRow(S, d, cols.data(), vals.data());
-    const PetscReal kfac  = damping_only ? S.damping_stiffness : 1.0; // K/m, or its beta K/m part of C/m
-    for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], false)] += kfac * vals[q] / S.mass[d];
-    if (S.Damped() && !S.held[d]) {
-      // the grip's damper c_d, and beta K without the grip's spring k_d (on the band's diagonal)
-      const PetscReal grip = S.Gripped() ? (S.grip_c[d] - S.damping_stiffness * S.grip_k[d]) / S.mass[d] : 0.0;
-      if (damping_only) row[rv] += S.damping_mass + grip;
-      else if (first) { // d(C v/m)/dv in the velocity columns
-        row[rv] += S.damping_mass + grip;
-        if (S.damping_stiffness != 0.0)
-          for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], true)] += S.damping_stiffness * vals[q] / S.mass[d];
-      }
+    if (!damping_only) { // K/m in the position columns
+      const PetscInt n = BeamSystemStiffnessRow(S, d, cols.data(), vals.data());
+      for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], false)] += vals[q] / S.mass[d];
     }
-    for (PetscInt p = 0; p < 2; ++p)
+    if (S.Damped() && (first || damping_only)) { // C/m: the velocity columns (first order) or Jd (second order)
+      const PetscInt n = BeamSystemDampingRow(S, d, cols.data(), vals.data());
+      for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], first)] += vals[q] / S.mass[d];
+    }
+    for (PetscInt p = 0; p < P.g.n; ++p)
       if (P.g.dof[p] == d)
-        for (PetscInt q = 0; q < 3; ++q) row[cb.cols[q]] += 0.0;
+        for (PetscInt q = 0; q < cb.n; ++q) row[cb.cols[q]] += 0.0;
     PetscCall(SetRow(J, rv, row));
   }
   if (L.rank == 0) {
@@ -97,7 +96,7 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = fal
     }
     std::map<PetscInt, PetscScalar> row;
     row[bv] = 0.0;
-    for (PetscInt q = 0; q < 3; ++q) row[cb.cols[q]] += 0.0;
+    for (PetscInt q = 0; q < cb.n; ++q) row[cb.cols[q]] += 0.0;
     PetscCall(SetRow(J, bv, row));
   }
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
@@ -106,7 +105,8 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = fal
 }
 
 // J = J0 + shift I + kc g g^T / m: a copy of the constant part (same pattern: a memcpy),
-// a diagonal shift, and the 3x3 contact block added on the rows that own it.
+// a diagonal shift, and the contact block (the coupled dofs and the ball) added on the rows
+// that own it.
 PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal shiftV, PetscReal kc)
 {
   const TSLayout     &L     = P.L;
@@ -119,16 +119,16 @@ PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal shiftV,
   if (P.jac.Jd) PetscCall(MatAXPY(P.jac.J, shiftV, P.jac.Jd, SAME_NONZERO_PATTERN));
   PetscCall(MatShift(P.jac.J, shift));
   if (kc != 0.0)
-    for (PetscInt p = 0; p < 3; ++p) {
-      const bool     ball = p == 2;
+    for (PetscInt p = 0; p < cb.n; ++p) {
+      const bool     ball = p == cb.n - 1;
       const PetscInt d    = ball ? -1 : P.g.dof[p];
       if (ball ? L.rank != 0 : !(d / L.fields >= L.xs && d / L.fields < L.xe)) continue;
       if (!ball && P.sys->held[d]) continue;
       const PetscInt  row = ball ? L.BallIndex(first ? 1 : 0) : L.DofIndex(d, first);
       const PetscReal m   = ball ? P.ball.mass : P.sys->mass[d];
-      PetscScalar     vals[3];
-      for (PetscInt q = 0; q < 3; ++q) vals[q] = kc * cb.g[p] * cb.g[q] / m;
-      PetscCall(MatSetValues(P.jac.J, 1, &row, 3, cb.cols, vals, ADD_VALUES));
+      PetscScalar     vals[ContactCoupling::kMaxEntries + 1];
+      for (PetscInt q = 0; q < cb.n; ++q) vals[q] = kc * cb.g[p] * cb.g[q] / m;
+      PetscCall(MatSetValues(P.jac.J, 1, &row, cb.n, cb.cols, vals, ADD_VALUES));
     }
   PetscCall(MatAssemblyBegin(P.jac.J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P.jac.J, MAT_FINAL_ASSEMBLY));

@@ -155,7 +155,7 @@ PetscErrorCode TSCompression(const TSProblem &P, const PetscScalar *beam, PetscI
   PetscReal       v = L.rank == 0 ? ball_value : 0.0;
 
   PetscFunctionBeginUser;
-  for (PetscInt q = 0; q < 2; ++q) {
+  for (PetscInt q = 0; q < P.g.n; ++q) {
     const PetscInt d = P.g.dof[q], node = d / L.fields;
     if (node >= L.xs && node < L.xe) v -= P.g.w[q] * beam[node * stride + d % L.fields];
   }

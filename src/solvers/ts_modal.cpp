@@ -759,16 +759,16 @@ PetscErrorCode TSSetUp_Modal(TS ts)
   m.sigma              = B.rate.empty() ? std::vector<PetscReal>(n, 0.0) : B.rate;
   m.isqm.resize(n);
   m.free_of.assign(sys.ndof, -1);
-  // gamma_k = sum over the two coupled dofs of w_q phi_k[d_q] / sqrt(m_{d_q}).
+  // gamma_k = sum over the coupled dofs of w_q phi_k[d_q] / sqrt(m_{d_q}).
   std::vector<PetscReal> gw(n, 0.0);
   const ContactCoupling &g = m.P->g;
   for (PetscInt i = 0; i < n; ++i) {
     m.isqm[i]          = 1.0 / std::sqrt(S.mass[i]);
     m.free_of[S.dof[i]] = i;
-    for (int q = 0; q < 2; ++q)
+    for (PetscInt q = 0; q < g.n; ++q)
       if (S.dof[i] == g.dof[q]) gw[i] += g.w[q] * m.isqm[i];
   }
-  // O(n): only the (at most two) coupled dofs have gw != 0 (the other terms of the dot product are zeros).
+  // O(n): only the coupled dofs (the coupling's few entries) have gw != 0 (the other terms of the dot product are zeros).
   std::vector<PetscInt> coupled;
   for (PetscInt i = 0; i < n; ++i)
     if (gw[i] != 0.0) coupled.push_back(i);

@@ -1,6 +1,7 @@
 // Internal to the PETSc TS stepper (solvers/ts_*.cpp): the formulation chosen from the TS
 // type, the DM layout of the state, the Jacobian cache and the callback counters. The
-// physics comes from the system (system/beam_system.hpp) and the ball's contact law.
+// physics comes from the system (system/beam_system.hpp: its force operator, with the swing's
+// frame passed in) and the ball's contact law.
 //
 // State on a DMComposite of a 1-D DMDA (the beam: per node the deflection fields, then,
 // in first-order form, their velocities) and a DMRedundant on rank 0 (the ball: y_b, then
@@ -42,7 +43,8 @@ PetscErrorCode TSLayoutCreate(MPI_Comm comm, PetscInt nodes, PetscInt fields, Pe
 PetscErrorCode TSLayoutDestroy(TSLayout *L);
 
 // The Jacobian J = shift I + d(rhs)/du, reassembled only when the shift or the contact
-// stiffness changes; J0 (no shift, no contact) is assembled once and copied.
+// stiffness changes; J0 (no shift, no contact) is assembled once and copied. K = df/dy and
+// C = df/dv come from the force operator (BeamSystemStiffnessRow, BeamSystemDampingRow).
 // With damping, the first-order J0 holds C/m in the velocity columns too; the second-order
 // form adds shift_V Jd with Jd = C/m on J0's pattern (shift_V = dV/dX of the method).
 struct JacobianCache {
@@ -57,15 +59,15 @@ struct TSCounters {
 
 // Everything the TS callbacks need.
 struct TSProblem {
-  const BeamSystem *sys = nullptr;
-  ContactCoupling   g;
+  const BeamSystem  *sys = nullptr;
+  const FrameMotion *frame = nullptr; // the swing's frame (owned by the run driver)
+  ContactCoupling    g;
   BallParams        ball;
   ContactState     *contact = nullptr; // owned by the run driver
   Formulation       form    = Formulation::Explicit;
   TSLayout          L;
   JacobianCache     jac;
   TSCounters        count;
-  std::vector<PetscScalar> work; // damped residuals: y + beta v over the ghosted nodes; owned accelerations
   std::vector<PetscReal>   rate_acc, rate_cv; // TSDissipationRate: -a and C v of the owned dofs (kept: it runs every step)
 };
 
@@ -104,7 +106,8 @@ PetscErrorCode TSIJacobianBeam(TS ts, PetscReal t, Vec U, Vec Udot, PetscReal sh
 PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J, Mat B, void *ctx);
 // Damped beam: the dissipation rate P = v^T C v (W) and its time derivative dP/dt = 2 a^T C v
 // (W/s) at the state (X, and V for the second-order form, else nullptr), a the acceleration of
-// the residual (contact force of the current phase); summed over ranks.
+// the residual (contact force of the current phase); summed over ranks. For the dissipation
+// rule (system/dissipation.hpp).
 PetscErrorCode TSDissipationRate(TSProblem &P, PetscReal t, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot);
 PetscErrorCode TSJacobianCreate(TSProblem &P);
 PetscErrorCode TSJacobianDestroy(TSProblem &P);

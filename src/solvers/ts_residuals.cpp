@@ -1,10 +1,11 @@
 // The TS residuals of the impact, one per formulation (ts_problem.hpp):
-//   explicit      du/dt = [v; -(K y + C v - g F)/m; v_b; -F/m_b]
-//   IMEX          G(u, u') = [y' - v; v' + (K y + C v)/m; y_b' - v_b; v_b'] = [0; g F/m; 0; -F/m_b]
-//   implicit      G(u, u') = [y' - v; v' + (K y + C v - g F)/m; y_b' - v_b; v_b' + F/m_b] = 0
-//   second order  G(x, x', x'') = [a + (K y + C y' - g F)/m; a_b + F/m_b] = 0
-// with K, m and g from the system, C = alpha M + beta K its Rayleigh damping (left out, at no
-// cost, when alpha = beta = 0) and F the contact law at the compression c = y_b - g^T y.
+//   explicit      du/dt = [v; -(f(y, v, t) - g F)/m; v_b; -F/m_b]
+//   IMEX          G(u, u') = [y' - v; v' + f(y, v, t)/m; y_b' - v_b; v_b'] = [0; g F/m; 0; -F/m_b]
+//   implicit      G(u, u') = [y' - v; v' + (f(y, v, t) - g F)/m; y_b' - v_b; v_b' + F/m_b] = 0
+//   second order  G(x, x', x'') = [a + (f(y, y', t) - g F)/m; a_b + F/m_b] = 0
+// with f the internal forces of the system's force operator (system/force_operator.hpp: the
+// elastic strain terms, damping, the grip to the swing's frame), m and g from the system and
+// F the contact law at the compression c = y_b - g^T y.
 #include "solvers/ts_problem.hpp"
 
 #include <petscdmcomposite.h>
@@ -13,37 +14,25 @@
 
 namespace beamimpact {
 
-// out = (K y + C v - g F)/m for the owned dofs (0 where held); y, v and out are beam arrays by
+// out = (f(y, v, t) - g F)/m for the owned dofs (0 where held); y, v and out are beam arrays by
 // global node with node strides ys, vs and os (pointing at the field block to read or write).
-// v (ghosted like y) is given for a damped beam only; without it the undamped path runs
-// unchanged. C v = alpha M v + beta K v enters as K (y + beta v) + alpha M v: one stiffness
-// application in the factored form, so beta-damping keeps rigid motion force-free.
-// With a grip (BeamSystem::grip_*): K y holds its springs k_i y_i; added here are the frame's
-// drive -k_i v_f,i t and the dampers c_i (v_i - v_f,i) (and beta K leaves the springs out).
+// v (ghosted like y) is given for a damped beam only: without it the velocity parts are left
+// out at no cost.
 static void BeamAcceleration(TSProblem &P, PetscReal t, const PetscScalar *y, PetscInt ys, const PetscScalar *v, PetscInt vs, PetscReal F, PetscScalar *out, PetscInt os)
 {
-  const BeamSystem &S     = *P.sys;
-  const TSLayout   &L     = P.L;
-  const PetscInt    nf    = L.fields;
-  const PetscReal   alpha = v ? S.damping_mass : 0.0, beta = v ? S.damping_stiffness : 0.0;
-  if (beta != 0.0) {
-    const PetscInt gn = S.GhostNodes(), n0 = std::max<PetscInt>(0, L.xs - gn), n1 = std::min(L.nodes, L.xe + gn);
-    P.work.resize((size_t)((n1 - n0) * nf));
-    for (PetscInt i = n0; i < n1; ++i)
-      for (PetscInt f = 0; f < nf; ++f) P.work[(i - n0) * nf + f] = y[i * ys + f] + beta * v[i * vs + f];
-    BeamSystemStiffnessApply(S, P.work.data() - n0 * nf, nf, L.D0(), L.D1(), out, os);
-  } else BeamSystemStiffnessApply(S, y, ys, L.D0(), L.D1(), out, os);
-  if (S.Gripped())
-    for (PetscInt d = L.D0(); d < L.D1(); ++d) {
-      PetscScalar &o = out[(d / nf) * os + d % nf];
-      o -= S.grip_k[d] * S.grip_v[d] * t;
-      if (v) {
-        const PetscScalar vd = v[(d / nf) * vs + d % nf];
-        o += S.grip_c[d] * (vd - S.grip_v[d]) - beta * S.grip_k[d] * vd;
-      }
-    }
+  const BeamSystem &S  = *P.sys;
+  const TSLayout   &L  = P.L;
+  const PetscInt    nf = L.fields;
+  ForceState        s;
+  s.y     = y;
+  s.ys    = ys;
+  s.v     = v;
+  s.vs    = vs;
+  s.t     = t;
+  s.frame = P.frame;
+  ForceOperatorApply(S, s, L.D0(), L.D1(), out, os);
   if (F != 0.0)
-    for (PetscInt q = 0; q < 2; ++q) {
+    for (PetscInt q = 0; q < P.g.n; ++q) {
       const PetscInt d = P.g.dof[q], node = d / nf;
       if (node >= L.xs && node < L.xe && P.g.w[q] != 0.0) out[node * os + d % nf] -= P.g.w[q] * F;
     }
@@ -51,9 +40,6 @@ static void BeamAcceleration(TSProblem &P, PetscReal t, const PetscScalar *y, Pe
     PetscScalar &o = out[(d / nf) * os + d % nf];
     o              = S.held[d] ? 0.0 : o / S.mass[d];
   }
-  if (alpha != 0.0)
-    for (PetscInt d = L.D0(); d < L.D1(); ++d)
-      if (!S.held[d]) out[(d / nf) * os + d % nf] += alpha * v[(d / nf) * vs + d % nf];
 }
 
 PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
@@ -110,9 +96,9 @@ PetscErrorCode TSRHSContact(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
   TSStateWrite    o;
   PetscCall(VecZeroEntries(G));
   PetscCall(TSStateWriteBegin(L, G, &o));
-  for (PetscInt q = 0; q < 2; ++q) {
+  for (PetscInt q = 0; q < P.g.n; ++q) {
     const PetscInt d = P.g.dof[q], node = d / nf;
-    if (node >= L.xs && node < L.xe && P.g.w[q] != 0.0) o.beam[node * dof + nf + d % nf] = P.g.w[q] * F / P.sys->mass[d];
+    if (node >= L.xs && node < L.xe && P.g.w[q] != 0.0) o.beam[node * dof + nf + d % nf] += P.g.w[q] * F / P.sys->mass[d];
   }
   if (o.ball) o.ball[1] = -F / P.ball.mass;
   PetscCall(TSStateWriteEnd(L, G, &o));
@@ -214,9 +200,14 @@ PetscErrorCode TSDissipationRate(TSProblem &P, PetscReal t, Vec X, Vec V, PetscR
   std::vector<PetscReal> &acc = P.rate_acc, &cv = P.rate_cv; // -a and C v of the owned dofs
   acc.resize(nown);
   cv.resize(nown);
+  ForceState fs; // the velocities relative to the frame
+  fs.v     = v;
+  fs.vs    = vs;
+  fs.t     = t;
+  fs.frame = P.frame;
   BeamAcceleration(P, t, s.beam, dof, v, vs, F, acc.data() - L.D0(), nf);
-  BeamSystemDampingApply(S, v, vs, L.D0(), L.D1(), cv.data() - L.D0(), nf);
-  sums[0] = BeamSystemDissipationRate(S, v, vs, L.D0(), L.D1());
+  ForceOperatorDampingApply(S, fs, L.D0(), L.D1(), cv.data() - L.D0(), nf);
+  sums[0] = ForceOperatorDissipationRate(S, fs, L.D0(), L.D1());
   for (PetscInt k = 0; k < nown; ++k) sums[1] -= 2 * acc[k] * cv[k];
   if (V) PetscCall(TSStateReadEnd(L, V, &sv));
   PetscCall(TSStateReadEnd(L, X, &s));

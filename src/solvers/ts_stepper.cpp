@@ -8,6 +8,7 @@
 #include "solvers/ts_galpha2.hpp"
 #include "solvers/ts_modal.hpp"
 #include "solvers/ts_problem.hpp"
+#include "system/dissipation.hpp"
 
 #include <petscdmcomposite.h>
 
@@ -39,12 +40,10 @@ public:
   IntegratorInfo info;
   std::string    rk_type; // -ts_rk_type, for messages
   NewtonFloor    newton_floor;
-  // Damped beam: the dissipated energy D and the rate P = v^T C v, dP/dt at the current state
-  // and at the start of the last step (restored by RollBack). See DissipationStep.
-  bool      damped = false;
-  bool      monitored = false; // -ts_monitor (or any TS monitor) given: called after each step
-  PetscReal dissipated = 0, rate = 0, rate_dot = 0;
-  PetscReal dissipated_prev = 0, rate_prev = 0, rate_dot_prev = 0;
+  // Damped beam: the dissipated energy D by the dissipation rule (system/dissipation.hpp).
+  bool                damped = false;
+  bool                monitored = false; // -ts_monitor (or any TS monitor) given: called after each step
+  DissipationIntegral D;
   // The open view (ViewBegin/ViewEnd).
   TSStateRead        view_x;
   Vec                view_X = nullptr, view_Vb = nullptr, view_Vr = nullptr;
@@ -83,28 +82,37 @@ public:
       PetscCall(TSGetStepNumber(ts, &step));
       PetscCall(TSMonitor(ts, step, Time(), U));
     }
-    if (damped) PetscCall(DissipationStep(Time() - t0));
+    if (damped) { // the step just taken, by the dissipation rule
+      PetscReal P, Pdot;
+      PetscCall(DissipationRateNow(&P, &Pdot));
+      D.Step(Time() - t0, P, Pdot);
+    }
     PetscFunctionReturn(0);
   }
   PetscErrorCode RollBack() override
   {
     PetscFunctionBeginUser;
     PetscCall(TSRollBack(ts));
-    if (damped) {
-      dissipated = dissipated_prev;
-      rate       = rate_prev;
-      rate_dot   = rate_dot_prev;
-    }
+    if (damped) D.RollBack();
     PetscFunctionReturn(0);
   }
   PetscErrorCode Restart() override
   {
     PetscFunctionBeginUser;
     PetscCall(TSRestartStep(ts));
-    if (damped) PetscCall(DissipationRateNow(&rate, &rate_dot)); // the new phase's acceleration
+    if (damped) PetscCall(DissipationRestart()); // the new phase's acceleration
     PetscFunctionReturn(0);
   }
-  PetscReal      Dissipated() const override { return dissipated; }
+  PetscReal      Dissipated() const override { return D.dissipated; }
+  PetscErrorCode DissipationRestart()
+  {
+    PetscReal P, Pdot;
+
+    PetscFunctionBeginUser;
+    PetscCall(DissipationRateNow(&P, &Pdot));
+    D.Restart(P, Pdot);
+    PetscFunctionReturn(0);
+  }
   PetscErrorCode DissipationRateNow(PetscReal *r, PetscReal *rdot)
   {
     Vec       X, Vel;
@@ -115,18 +123,6 @@ public:
     if (modal) PetscFunctionReturn(0);
     PetscCall(Solution(&X, &Vel));
     PetscCall(TSDissipationRate(P, Time(), X, Vel, r, rdot));
-    PetscFunctionReturn(0);
-  }
-  // D over the step of length h just taken, by the corrected trapezoidal (Hermite) rule on
-  // P = v^T C v: h/2 (P0 + P1) + h^2/12 (P0' - P1'), exact for cubics, O(h^5) per step.
-  PetscErrorCode DissipationStep(PetscReal h)
-  {
-    PetscFunctionBeginUser;
-    dissipated_prev = dissipated;
-    rate_prev       = rate;
-    rate_dot_prev   = rate_dot;
-    PetscCall(DissipationRateNow(&rate, &rate_dot));
-    dissipated += 0.5 * h * (rate_prev + rate) + h * h / 12 * (rate_dot_prev - rate_dot);
     PetscFunctionReturn(0);
   }
   PetscErrorCode NextStep(PetscReal *dt) override
@@ -186,7 +182,7 @@ PetscErrorCode TSStepper::Compression(PetscReal *c, PetscReal *cdot)
     vals[0] = xr[0];
     vals[1] = Vel ? vr[0] : xr[1];
   }
-  for (PetscInt q = 0; q < 2; ++q) {
+  for (PetscInt q = 0; q < P.g.n; ++q) {
     const PetscInt d = P.g.dof[q], node = d / nf, f = d % nf;
     if (node < L.xs || node >= L.xe) continue;
     vals[0] -= P.g.w[q] * bx[node * L.dof + f];
@@ -234,7 +230,7 @@ PetscErrorCode TSStepper::SetState(PetscReal t, const FullState &s)
     PetscCall(TSStateWriteEnd(L, Vel, &w));
   }
   PetscCall(TSSetTime(ts, t));
-  if (damped) dissipated = dissipated_prev = s.dissipated;
+  if (damped) D.Set(s.dissipated);
   PetscFunctionReturn(0);
 }
 
@@ -358,7 +354,7 @@ std::string TSStepper::EnergyGrowthCause() const
   else PetscSNPrintf(cause, sizeof(cause), "the %s does not resolve the contact (contact time scale %g s); reduce %s", fixed_step ? "step" : "tolerance", (double)scales.time, reduce);
   char text[700];
   PetscSNPrintf(text, sizeof(text), "(-ts_type %s%s%s, %s step %g s): with the %s law energy can only be %s; likely cause: %s", info.ts_type.c_str(), rk_type.empty() ? "" : " -ts_rk_type ", rk_type.c_str(),
-                fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(P.ball.law), P.ball.law == ContactLawKind::Linear ? "conserved" : "lost", cause);
+                fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(P.ball.law), ContactElastic(P.ball) ? "conserved" : "lost", cause);
   return text;
 }
 
@@ -502,8 +498,10 @@ PetscErrorCode ExplicitStability(TSStepper &S)
              "-ts_rk_type %s is unstable for an undamped oscillation at any step (its stability region does not contain the imaginary axis); use -ts_rk_type 3bs, 4 or 5dp, or an implicit type (cn, bdf, alpha2)", rktype);
   const BeamSystem &sys = *S.P.sys;
   // Damped: the largest step with every mode's eigenvalues -zeta w +- w sqrt(zeta^2 - 1),
-  // zeta = alpha/(2w) + beta w/2, w <= omega_max, in the stability region (rk_stability.hpp).
-  S.info.dt_stable = sys.Damped() ? RKDampedStabilityBound(s, A, b, S.info.omega_max_bound, sys.damping_mass + BeamSystemGripRate(sys), sys.damping_stiffness) : ystar / S.info.omega_max_bound;
+  // zeta = alpha/(2w) + beta w/2, w <= omega_max, in the stability region (rk_stability.hpp);
+  // alpha and beta the force operator's damping scales (a grip's c_i/m_i counts as alpha).
+  const DampingScales ds = ForceOperatorDampingScales(sys);
+  S.info.dt_stable       = sys.Damped() ? RKDampedStabilityBound(s, A, b, S.info.omega_max_bound, ds.mass_rate, ds.stiffness) : ystar / S.info.omega_max_bound;
   PetscReal dt;
   PetscBool dt_set;
   PetscCall(TSGetTimeStep(S.ts, &dt));
@@ -578,7 +576,7 @@ PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed, const std::vector<
 } // namespace
 
 PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
-                               const TSStepperSettings &set, const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+                               const TSStepperSettings &set, const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
   auto      S             = std::make_unique<TSStepper>();
   char      type[256]     = TSRK;
@@ -589,6 +587,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_type", type, sizeof(type), &flg));
   TSProblem &P          = S->P;
   P.sys                 = &sys;
+  P.frame               = frame;
   P.g                   = g;
   P.ball                = ball;
   P.contact             = contact;
@@ -627,7 +626,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   if (set.report_setup) PetscCall(ReportSetup(*S));
   PetscCall(SetInitialState(*S, ball.speed, beam_velocity));
   S->damped = sys.Damped();
-  if (S->damped) PetscCall(S->DissipationRateNow(&S->rate, &S->rate_dot));
+  if (S->damped) PetscCall(S->DissipationRestart());
   *info = S->info;
   *stepper = std::move(S);
   PetscFunctionReturn(0);

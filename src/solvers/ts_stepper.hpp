@@ -20,10 +20,11 @@ struct TSStepperSettings {
   bool strict_solver_options = false; // with check_unused_options: left-over PETSc solver options are errors too, not notes
 };
 
-// Creates the stepper at t = 0 with the beam at rest and the ball touching it at the impact
-// point, moving at the ball's speed; fills *info. contact (owned by the caller) is the
-// contact law's state the residuals use.
+// Creates the stepper at t = 0 with the beam undeformed, moving with beam_velocity (per dof;
+// empty: at rest), and the ball touching it at the impact point, moving at the ball's speed;
+// fills *info. contact and frame (the swing's frame the force operator ties a grip to), owned
+// by the caller, are the contact law's state and the frame the residuals use.
 PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
-                               const TSStepperSettings &settings, const std::vector<PetscReal> &beam_velocity, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
+                               const TSStepperSettings &settings, const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 } // namespace beamimpact

@@ -395,7 +395,7 @@ PetscErrorCode ConvergencePlanFromOptions(MPI_Comm comm, const BallParams &ball,
   std::vector<char> configs(1 << 16, 0), spatial(4096, 0);
   char              common[PETSC_MAX_PATH_LEN] = "";
   char              reffile[PETSC_MAX_PATH_LEN];
-  PetscEnum         refkind = (PetscEnum)(ball.law == ContactLawKind::Linear ? ConvergenceReferenceKind::Modal : ConvergenceReferenceKind::Run);
+  PetscEnum         refkind = (PetscEnum)(ContactLinear(ball) ? ConvergenceReferenceKind::Modal : ConvergenceReferenceKind::Run);
   PetscBool         set_configs = PETSC_FALSE, set_spatial = PETSC_FALSE, set_common = PETSC_FALSE;
 
   PetscFunctionBeginUser;
@@ -424,8 +424,8 @@ PetscErrorCode ConvergencePlanFromOptions(MPI_Comm comm, const BallParams &ball,
   PetscCheck(plan->repeat_budget >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-convergence_repeat_budget %g is not allowed: it must be >= 0 (s)", (double)plan->repeat_budget);
   PetscCheck(plan->target > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-convergence_target %g is not allowed: it must be > 0", (double)plan->target);
   PetscCheck(plan->error_floor >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-convergence_error_floor %g is not allowed: it must be >= 0", (double)plan->error_floor);
-  PetscCheck(!(plan->reference == ConvergenceReferenceKind::Modal && ball.law != ContactLawKind::Linear), comm, PETSC_ERR_ARG_INCOMP,
-             "-convergence_reference modal needs the linear spring (-ball_law linear): the hysteretic ball is nonlinear; use -convergence_reference run");
+  PetscCheck(!(plan->reference == ConvergenceReferenceKind::Modal && !ContactLinear(ball)), comm, PETSC_ERR_ARG_INCOMP,
+             "-convergence_reference modal needs the linear spring (-ball_law linear): the %s ball is nonlinear; use -convergence_reference run", ContactLawName(ball.law));
   plan->configs.clear();
   if (set_configs)
     for (const std::string &f : SplitList(configs.data())) {

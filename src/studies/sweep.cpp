@@ -27,7 +27,7 @@ std::vector<SweepColumn> SweepColumns(const SweepPlan &plan)
 {
   std::vector<SweepColumn> c;
   c.push_back({"case_index", "1", false, true});
-  for (const SweepAxis &a : plan.axes) c.push_back({a.name, a.unit, false});
+  for (const SweepAxis &a : plan.axes) c.push_back({a.name, a.unit, false, false, a.labels});
   c.push_back({"status", "1", false, true});
   for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time", rc.integer});
   c.push_back({"rigid_acor", "1", false});
@@ -45,6 +45,9 @@ int SweepStatusOfError(PetscErrorCode ierr)
   case PETSC_ERR_ARG_OUTOFRANGE:
   case PETSC_ERR_ARG_WRONG:
   case PETSC_ERR_ARG_INCOMP:
+  case PETSC_ERR_ARG_UNKNOWN_TYPE: // a text value the set-up does not know:
+  case PETSC_ERR_USER:             // -ts_rk_type 9x, PETSc's "Unknown option 9x for -ts_rk_type. Available options: ..."
+  case PETSC_ERR_USER_INPUT:
   case PETSC_ERR_SUP:
     return SweepRefused;
   default:
@@ -209,7 +212,7 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
       PetscBool used = PETSC_FALSE;
       PetscCall(PetscOptionsUsed(NULL, a.name.c_str(), &used)); // the database keeps names without the dash
       PetscCheck(used, farm.group, PETSC_ERR_ARG_WRONG,
-                 "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is a numeric option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt",
+                 "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is an option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ts_type, beam_theory",
                  a.name == "impact_x" && !plan.sweep_x.empty() ? "-sweep_x:" : "-sweep", a.name.c_str(), a.spec.c_str(), a.name.c_str());
     }
     PetscCall(OptionsCheckUnused(farm.group));
@@ -223,7 +226,7 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
 // The file's root attributes: the scenario, the probe's integrator and the plan.
 PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, const ImpactResult &probe, RunRecord *rec)
 {
-  std::string options, columns, axes, units;
+  std::string options, columns, axes, units, kinds;
 
   PetscFunctionBeginUser;
   PetscCall(OptionsAsString(&options));
@@ -231,6 +234,7 @@ PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, con
   for (auto &a : plan.axes) {
     axes += (axes.empty() ? "" : ",") + a.name;
     units += (units.empty() ? "" : ",") + a.unit;
+    kinds += (kinds.empty() ? "" : ",") + std::string(a.Text() ? "text" : "number");
   }
   PetscCall(RunRecordBuild(base, &probe, rec));
   rec->add("task", "sweep");
@@ -238,6 +242,7 @@ PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, con
   if (!plan.sweep_x.empty()) rec->add("sweep_x", plan.sweep_x);
   rec->add("sweep_axes", axes);
   rec->add("sweep_axis_units", units);
+  rec->add("sweep_axis_kinds", kinds);
   for (auto &a : plan.axes) rec->add("sweep_count_" + a.name, a.values.size());
   rec->add("sweep_ranks_per_case", plan.ranks_per_case);
   rec->add("rigid_loss_fraction", plan.rigid_loss_fraction);
@@ -277,6 +282,7 @@ PetscErrorCode SweepStart(const TaskFarm &farm, const std::string &output, const
 PetscErrorCode SweepAnnounce(const TaskFarm &farm, const SweepPlan &plan, const ImpactResult &probe, const SweepProgress &P, const std::string &output)
 {
   std::string range;
+  bool        ts_axis = false; // an axis changes the integrator: the one named is the first point's
 
   PetscFunctionBeginUser;
   if (farm.world_rank != 0 || plan.quiet) PetscFunctionReturn(0);
@@ -285,10 +291,14 @@ PetscErrorCode SweepAnnounce(const TaskFarm &farm, const SweepPlan &plan, const 
     const std::string unit = a.unit.empty() || a.unit == "1" ? "" : " " + a.unit;
     std::snprintf(text, sizeof(text), "%s from %g to %g%s (%zu)", a.name.c_str(), (double)*std::min_element(a.values.begin(), a.values.end()), (double)*std::max_element(a.values.begin(), a.values.end()),
                   unit.c_str(), a.values.size());
-    range += (range.empty() ? "" : " x ") + std::string(text);
+    std::string labels;
+    for (const std::string &l : a.labels) labels += (labels.empty() ? "" : ", ") + l;
+    range += (range.empty() ? "" : " x ") + (a.Text() ? a.name + " " + labels + " (" + std::to_string(a.labels.size()) + ")" : std::string(text));
+    if (a.name.compare(0, 3, "ts_") == 0) ts_axis = true;
   }
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: %s, %s, on %d rank(s): %" PetscInt_FMT " group(s) of %" PetscInt_FMT "%s; ts %s (%s)\n", Points(P.ncases).c_str(), range.c_str(), farm.world_size, farm.groups,
-                        plan.ranks_per_case, farm.world_size % plan.ranks_per_case ? " (the ranks left over stay idle)" : "", probe.ts_type.c_str(), probe.formulation.c_str()));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: %s, %s, on %d rank(s): %" PetscInt_FMT " group(s) of %" PetscInt_FMT "%s; ts %s (%s)%s\n", Points(P.ncases).c_str(), range.c_str(), farm.world_size, farm.groups,
+                        plan.ranks_per_case, farm.world_size % plan.ranks_per_case ? " (the ranks left over stay idle)" : "", probe.ts_type.c_str(), probe.formulation.c_str(),
+                        ts_axis ? " at the first point" : ""));
   for (auto &a : plan.axes)
     if (a.overrides) PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: the axis %s overrides -%s %s given in the options\n", a.name.c_str(), a.name.c_str(), a.given.c_str()));
   if (P.already && P.todo)

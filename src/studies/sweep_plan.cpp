@@ -2,9 +2,15 @@
 // case. See sweep_plan.hpp.
 #include "studies/sweep_plan.hpp"
 
+#include "base/option_table.hpp"
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
 #include "run/impact_point.hpp"
+#include "solvers/ts_galpha2.hpp"
+#include "solvers/ts_modal.hpp"
+
+#include <petscts.h>
+#include <strings.h>
 
 #include <algorithm>
 #include <cctype>
@@ -139,16 +145,7 @@ bool SweepParsePoints(const std::string &spec_in, std::vector<PetscReal> *values
 
 std::string SweepOptionUnit(const std::string &name)
 {
-  static const std::map<std::string, std::string> units = {
-    {"impact_x", "m"}, {"impact_window", "s"}, {"impact_max_time", "s"}, {"impact_event_tol", "1"}, {"impact_max_contacts", "1"}, {"impact_energy_growth_tol", "1"},
-    {"ball_mass", "kg"}, {"ball_speed", "m/s"}, {"ball_k", "N/m"}, {"ball_k1", "N/m^m"}, {"ball_m", "1"}, {"ball_n", "1"}, {"ball_cor", "1"}, {"ball_contact_time", "s"},
-    {"ball_test_speed", "m/s"}, {"ball_loss_factor", "1"}, {"beam_length", "m"}, {"beam_thickness", "m"}, {"beam_width", "m"}, {"beam_youngs_modulus", "Pa"},
-    {"beam_density", "kg/m^3"}, {"beam_mass", "kg"}, {"beam_youngs_over_density", "N m/kg"}, {"beam_EI", "N m^2"}, {"beam_mu", "kg/m"}, {"beam_shear_modulus", "Pa"},
-    {"beam_shear_coefficient", "1"}, {"beam_poisson", "1"}, {"beam_nodes", "1"}, {"beam_damping_mass", "1/s"}, {"beam_damping_stiffness", "s"}, {"ts_dt", "s"},
-    {"ts_rtol", "1"}, {"ts_atol", "1"}, {"ts_alpha_radius", "1"}, {"leapfrog_dt", "s"}, {"leapfrog_dt_fraction", "1"}, {"monitor_segment_until", "s"},
-  };
-  const auto it = units.find(name);
-  return it == units.end() ? "" : it->second;
+  return OptionUnit(name); // the option's row (base/option_table.hpp); "" if none
 }
 
 // Options that belong to the task or the sweep itself, not to an impact.
@@ -166,86 +163,265 @@ static bool NameOk(const std::string &n)
   return true;
 }
 
+static bool IsQuote(char c) { return c == '\'' || c == '"'; }
+
+// text split at `sep` outside quotes ('...' or "..."), each part trimmed; *open is set when a
+// quote is not closed.
+static std::vector<std::string> SplitOutsideQuotes(const std::string &text, char sep, bool *open)
+{
+  std::vector<std::string> parts;
+  std::string              one;
+  char                     quote = 0;
+  for (char c : text) {
+    if (quote) {
+      if (c == quote) quote = 0;
+      one += c;
+    } else if (IsQuote(c)) {
+      quote = c;
+      one += c;
+    } else if (c == sep) {
+      parts.push_back(Trim(one));
+      one.clear();
+    } else one += c;
+  }
+  parts.push_back(Trim(one));
+  if (open) *open = quote != 0;
+  return parts;
+}
+
+// The kinds of value an option takes, from its row in its module's table (none: not known).
+enum class AxisKind { Unknown, Number, Text };
+static AxisKind KindOfOption(const std::string &name)
+{
+  const OptionSpec *s = OptionSpecFind(name);
+  if (s) return s->kind == OptionKind::Choice || s->kind == OptionKind::Text || s->kind == OptionKind::File ? AxisKind::Text : AxisKind::Number;
+  return SweepOptionUnit(name).empty() ? AxisKind::Unknown : AxisKind::Number;
+}
+
+// The values of a text axis: v1;v2;... (quotes removed: 'v' is text as written), each one
+// neither empty nor given twice.
+static bool ParseLabels(const std::string &spec, std::vector<std::string> *labels, std::string *why)
+{
+  bool open = false;
+  labels->clear();
+  for (const std::string &item : SplitOutsideQuotes(spec, ';', &open)) {
+    std::string v = item;
+    if (v.size() >= 2 && IsQuote(v.front()) && v.back() == v.front()) v = v.substr(1, v.size() - 2);
+    else if (v.find('\'') != std::string::npos || v.find('"') != std::string::npos) {
+      *why = open ? "a quote is not closed (a text value is 'v' or \"v\")" : "'" + item + "' has a quote inside: a quoted value is the whole entry, 'v' or \"v\"";
+      return false;
+    }
+    if (Trim(v).empty()) {
+      *why = "empty entry in the list (values separated by ';')";
+      return false;
+    }
+    if (std::find(labels->begin(), labels->end(), v) != labels->end()) {
+      *why = "'" + v + "' is given twice";
+      return false;
+    }
+    labels->push_back(v);
+  }
+  return true;
+}
+
+// Whether the values of a list v1;v2;... are all numbers (then a numeric axis, unless the
+// option is text).
+static bool AllNumbers(const std::string &spec)
+{
+  for (const std::string &item : SplitOutsideQuotes(spec, ';', nullptr)) {
+    PetscReal v;
+    if (!ParseReal(item, &v)) return false;
+  }
+  return true;
+}
+
+// One axis NAME=SPEC: its name, whether it is text or numbers, and its values.
+static bool ParseAxis(const std::string &item, SweepAxis *a, std::string *why)
+{
+  const size_t eq = item.find('=');
+  if (item.empty() || eq == std::string::npos) {
+    *why = item.empty() ? "an empty axis (axes are NAME=SPEC separated by ',')" : "'" + item + "' is not NAME=SPEC (e.g. impact_x=0:1.1:111, ball_speed=10;20;30 or ts_type=rk;cn)";
+    return false;
+  }
+  a->name = Trim(item.substr(0, eq));
+  if (!a->name.empty() && a->name[0] == '-') a->name = a->name.substr(1);
+  a->spec = Trim(item.substr(eq + 1));
+  a->unit = SweepOptionUnit(a->name);
+  if (!NameOk(a->name)) {
+    *why = "'" + a->name + "' is not an option name (letters, digits and '_', without the dash)";
+    return false;
+  }
+  if (ReservedAxis(a->name)) {
+    *why = "-" + a->name + " belongs to the task or the sweep itself, not to an impact: it cannot be an axis";
+    return false;
+  }
+  if (a->spec.empty()) {
+    *why = a->name + " has no values: " + a->name + "=start:stop:count, start:stop:count:log or v1;v2;...";
+    return false;
+  }
+  const AxisKind kind   = KindOfOption(a->name);
+  const bool     quoted = a->spec.find('\'') != std::string::npos || a->spec.find('"') != std::string::npos;
+  const bool     text   = kind == AxisKind::Text || quoted || (kind == AxisKind::Unknown && a->spec.find(':') == std::string::npos && !AllNumbers(a->spec));
+  std::string    w;
+  if (text) {
+    a->unit.clear();
+    if (!ParseLabels(a->spec, &a->labels, &w)) {
+      *why = a->name + "=" + a->spec + ": " + w;
+      return false;
+    }
+    a->values.clear();
+    for (size_t k = 0; k < a->labels.size(); ++k) a->values.push_back((PetscReal)k);
+    return true;
+  }
+  if (!SweepParsePoints(a->spec, &a->values, &w, a->unit, ";")) {
+    *why = a->name + "=" + a->spec + ": " + w;
+    return false;
+  }
+  if (a->values.empty()) {
+    *why = a->name + "=" + a->spec + " gives no values: a sweep needs at least one (count >= 1 in start:stop:count)";
+    return false;
+  }
+  return true;
+}
+
 bool SweepParseAxes(const std::string &text, std::vector<SweepAxis> *axes, std::string *why)
 {
-  std::vector<std::string> items;
-  std::string              one;
-  for (size_t i = 0; i <= text.size(); ++i) {
-    if (i == text.size() || text[i] == ',') {
-      items.push_back(Trim(one));
-      one.clear();
-    } else one += text[i];
-  }
-  for (const std::string &item : items) {
-    const size_t eq = item.find('=');
-    if (item.empty() || eq == std::string::npos) {
-      *why = item.empty() ? "an empty axis (axes are NAME=SPEC separated by ',')" : "'" + item + "' is not NAME=SPEC (e.g. impact_x=0:1.1:111 or ball_speed=10;20;30)";
-      return false;
-    }
+  bool open = false;
+  for (const std::string &item : SplitOutsideQuotes(text, ',', &open)) {
     SweepAxis a;
-    a.name = Trim(item.substr(0, eq));
-    if (!a.name.empty() && a.name[0] == '-') a.name = a.name.substr(1);
-    a.spec = Trim(item.substr(eq + 1));
-    a.unit = SweepOptionUnit(a.name);
-    if (!NameOk(a.name)) {
-      *why = "'" + a.name + "' is not an option name (letters, digits and '_', without the dash)";
+    if (open) {
+      *why = "a quote is not closed (a text value is 'v' or \"v\")";
       return false;
     }
-    if (ReservedAxis(a.name)) {
-      *why = "-" + a.name + " belongs to the task or the sweep itself, not to an impact: it cannot be an axis";
-      return false;
-    }
+    if (!ParseAxis(item, &a, why)) return false;
     for (const SweepAxis &b : *axes)
       if (b.name == a.name) {
         *why = a.name + " is given twice";
         return false;
       }
-    if (a.spec.empty()) {
-      *why = a.name + " has no values: " + a.name + "=start:stop:count, start:stop:count:log or v1;v2;...";
-      return false;
-    }
-    std::string w;
-    if (!SweepParsePoints(a.spec, &a.values, &w, a.unit, ";")) {
-      *why = a.name + "=" + a.spec + ": " + w;
-      return false;
-    }
-    if (a.values.empty()) {
-      *why = a.name + "=" + a.spec + " gives no values: a sweep needs at least one (count >= 1 in start:stop:count)";
-      return false;
-    }
     axes->push_back(a);
   }
   return true;
+}
+
+std::string SweepAxis::OptionValue(PetscReal v) const
+{
+  if (Text()) return labels[(size_t)v];
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.17g", (double)v); // exact; 21 for a whole number
+  return text;
+}
+
+std::string SweepAxis::Display(PetscReal v) const
+{
+  if (Text()) return labels[(size_t)v];
+  char text[64];
+  std::snprintf(text, sizeof(text), "%g%s", (double)v, unit.empty() || unit == "1" ? "" : (" " + unit).c_str());
+  return text;
+}
+
+// The names of PETSc's registry of TS types (with this program's alpha2 and modal), sorted.
+static PetscErrorCode TSTypeNames(std::vector<std::string> *names)
+{
+  const char **list = nullptr;
+  int          n    = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(TSGAlpha2Register());
+  PetscCall(TSModalRegister());
+  PetscCall(PetscFunctionListGet(TSList, &list, &n));
+  names->clear();
+  for (int k = 0; k < n; ++k) // the array ends with NULL (counted in n)
+    if (list[k]) names->push_back(list[k]);
+  PetscCall(PetscFree(list));
+  std::sort(names->begin(), names->end());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SweepCheckTextAxis(const SweepAxis &a, std::string *why)
+{
+  std::vector<std::string> allowed;
+  bool                     nocase = false; // the options readers compare choices without case
+
+  PetscFunctionBeginUser;
+  why->clear();
+  const OptionSpec *s = OptionSpecFind(a.name);
+  if (s && s->kind == OptionKind::Choice) {
+    allowed = s->choices;
+    nocase  = true;
+  } else if (a.name == "ts_type") PetscCall(TSTypeNames(&allowed));
+  if (allowed.empty()) PetscFunctionReturn(0);
+  for (const std::string &v : a.labels) {
+    bool known = false;
+    for (const std::string &c : allowed) known = known || (nocase ? strcasecmp(c.c_str(), v.c_str()) == 0 : c == v);
+    if (known) continue;
+    std::string list;
+    for (const std::string &c : allowed) list += (list.empty() ? "" : ", ") + c;
+    *why = a.name + "=" + a.spec + ": '" + v + "' is not " + (a.name == "ts_type" ? "a TS type of this program" : "a choice of -" + a.name) + ": use one of " + list;
+    break;
+  }
+  PetscFunctionReturn(0);
 }
 
 // ---------------------------------------------------------------------------
 // Options
 // ---------------------------------------------------------------------------
 
-PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
+static OptionSpec WithRangeText(OptionSpec s, const char *text)
 {
-  std::vector<char> sweep(1 << 20, 0), sweep_x(1 << 20, 0);
-  PetscBool         set_sweep = PETSC_FALSE, set_x = PETSC_FALSE;
-  std::string       why;
+  s.range_text = text;
+  return s;
+}
+
+const OptionModule kSweepOptions = {
+  "sweep",
+  "Sweep: many impacts farmed out over MPI ranks (-task sweep)",
+  {
+    OptionText("-sweep", "Axes NAME=SPEC[,NAME=SPEC...]: NAME any option without its dash, numeric (impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ...) or text (ts_type, beam_theory, "
+                         "beam_left, ball_law, ts_rk_type, ...), SPEC start:stop:count, start:stop:count:log or v1;v2;... (a text value quoted, 'v', stays text: ts_rk_type='4';'3'); the cases are "
+                         "their product, the last axis varying fastest"),
+    OptionText("-sweep_x", "Impact points (m), shorthand for -sweep impact_x=SPEC: start:stop:count (both ends included) or x1,x2,..."),
+    OptionInt("-sweep_ranks_per_case", "Ranks that solve one impact together (the beam's DMDA is distributed over them)", "1", AtLeast(1)),
+    WithRangeText(OptionReal("-rigid_loss_fraction", "1", "Loss fraction f of the rigid-body model, Eq. (11), for the rigid_acor column", "0", Between(0, 1, false, true)),
+                  "a fraction of the incident energy, 0 <= f < 1"),
+    OptionFlag("-sweep_quiet", "No progress or summary lines (errors, the count of failed points and of points compressed beyond -ball_radius are still reported)"),
+    OptionFlag("-sweep_restart", "Discard an existing -output file and its journal and start the sweep over"),
+    OptionFlag("-sweep_retry_failed", "On resuming, compute again the points that failed (status != 0) instead of keeping their rows"),
+    OptionReal("-sweep_progress_interval", "s", "Seconds between progress lines on rank 0", "2", Positive()),
+    OptionReal("-sweep_write_interval", "s", "Minimum seconds between rewrites of -output while the sweep runs (0: as often as a 5% cost cap on rank 0 allows)", "5", NonNegative()),
+  },
+};
+
+// The -sweep* options and -rigid_loss_fraction, each checked against its row of kSweepOptions.
+static PetscErrorCode SweepOptionsRead(MPI_Comm comm, SweepPlan *plan, PetscBool *set_sweep, PetscBool *set_x)
+{
+  const OptionModule &m = kSweepOptions;
 
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Sweep: many impacts farmed out over MPI ranks (-task sweep)", "beamimpact");
-  PetscCall(PetscOptionsString("-sweep", "Axes NAME=SPEC[,NAME=SPEC...]: NAME a numeric option without its dash (impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ...), SPEC start:stop:count, start:stop:count:log or v1;v2;...; the cases are their product, the last axis varying fastest",
-                               "", sweep.data(), sweep.data(), sweep.size(), &set_sweep));
-  PetscCall(PetscOptionsString("-sweep_x", "Impact points (m), shorthand for -sweep impact_x=SPEC: start:stop:count (both ends included) or x1,x2,...", "", sweep_x.data(), sweep_x.data(), sweep_x.size(), &set_x));
-  PetscCall(PetscOptionsInt("-sweep_ranks_per_case", "Ranks that solve one impact together (the beam's DMDA is distributed over them)", "", plan->ranks_per_case, &plan->ranks_per_case, NULL));
-  PetscCall(PetscOptionsReal("-rigid_loss_fraction", "Loss fraction f of the rigid-body model, Eq. (11), for the rigid_acor column", "", plan->rigid_loss_fraction, &plan->rigid_loss_fraction, NULL));
-  PetscCall(PetscOptionsBool("-sweep_quiet", "No progress or summary lines (errors, the count of failed points and of points compressed beyond -ball_radius are still reported)", "", plan->quiet, &plan->quiet, NULL));
-  PetscCall(PetscOptionsBool("-sweep_restart", "Discard an existing -output file and its journal and start the sweep over", "", plan->restart, &plan->restart, NULL));
-  PetscCall(PetscOptionsBool("-sweep_retry_failed", "On resuming, compute again the points that failed (status != 0) instead of keeping their rows", "", plan->retry_failed, &plan->retry_failed, NULL));
-  PetscCall(PetscOptionsReal("-sweep_progress_interval", "Seconds between progress lines on rank 0", "", plan->progress_interval, &plan->progress_interval, NULL));
-  PetscCall(PetscOptionsReal("-sweep_write_interval", "Minimum seconds between rewrites of -output while the sweep runs (0: as often as a 5% cost cap on rank 0 allows)", "", plan->write_interval,
-                             &plan->write_interval, NULL));
+  PetscOptionsBegin(comm, NULL, m.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep", &plan->sweep, set_sweep));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_x", &plan->sweep_x, set_x));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_ranks_per_case", &plan->ranks_per_case, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-rigid_loss_fraction", &plan->rigid_loss_fraction, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_quiet", &plan->quiet, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_restart", &plan->restart, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_retry_failed", &plan->retry_failed, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_progress_interval", &plan->progress_interval, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_write_interval", &plan->write_interval, NULL));
   PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
 
+PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
+{
+  PetscBool   set_sweep = PETSC_FALSE, set_x = PETSC_FALSE;
+  std::string why;
+
+  PetscFunctionBeginUser;
+  PetscCall(SweepOptionsRead(comm, plan, &set_sweep, &set_x));
   plan->axes.clear();
-  plan->sweep   = set_sweep ? Trim(sweep.data()) : "";
-  plan->sweep_x = set_x ? Trim(sweep_x.data()) : "";
+  plan->sweep   = set_sweep ? Trim(plan->sweep) : "";
+  plan->sweep_x = set_x ? Trim(plan->sweep_x) : "";
   PetscCheck(set_sweep || set_x, comm, PETSC_ERR_ARG_WRONG,
              "-task sweep needs its axes: -sweep \"NAME=SPEC[,NAME=SPEC...]\" (e.g. -sweep \"impact_x=0:1.1:23,ball_speed=10;20;30\"), or the impact points alone: -sweep_x start:stop:count or -sweep_x x1,x2,... (m)");
   if (set_x) {
@@ -262,8 +438,11 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
     std::vector<SweepAxis> more;
     PetscCheck(!plan->sweep.empty(), comm, PETSC_ERR_ARG_WRONG, "-sweep needs a value: \"NAME=SPEC[,NAME=SPEC...]\", e.g. -sweep \"impact_x=0:1.1:23,ball_speed=10;20;30\"");
     PetscCheck(SweepParseAxes(plan->sweep, &more, &why), comm, PETSC_ERR_ARG_WRONG, "-sweep \"%s\" is not allowed: %s", plan->sweep.c_str(), why.c_str());
-    for (const SweepAxis &a : more)
+    for (const SweepAxis &a : more) {
       PetscCheck(!(set_x && a.name == "impact_x"), comm, PETSC_ERR_ARG_INCOMP, "-sweep \"%s\" and -sweep_x %s both vary impact_x: give the impact points once", plan->sweep.c_str(), plan->sweep_x.c_str());
+      PetscCall(SweepCheckTextAxis(a, &why)); // the values the program knows are checked here, before any work
+      PetscCheck(why.empty(), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-sweep \"%s\" is not allowed: %s", plan->sweep.c_str(), why.c_str());
+    }
     plan->axes.insert(plan->axes.end(), more.begin(), more.end());
   }
   double n = 1;
@@ -278,12 +457,7 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
     a.overrides = has == PETSC_TRUE;
     a.given     = has ? given.data() : "";
   }
-  PetscCheck(plan->ranks_per_case >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_ranks_per_case %" PetscInt_FMT " is not allowed: at least 1", plan->ranks_per_case);
-  PetscCheck(plan->rigid_loss_fraction >= 0 && plan->rigid_loss_fraction < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-rigid_loss_fraction %g is not allowed: a fraction of the incident energy, 0 <= f < 1",
-             (double)plan->rigid_loss_fraction);
   PetscCall(PetscOptionsGetReal(NULL, NULL, "-impact_cost_warn", &plan->cost_warn, NULL)); // its help and check: the impact's options
-  PetscCheck(plan->progress_interval > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_progress_interval %g is not allowed: it must be > 0 (s)", (double)plan->progress_interval);
-  PetscCheck(plan->write_interval >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_write_interval %g is not allowed: it must be >= 0 (s)", (double)plan->write_interval);
   PetscFunctionReturn(0);
 }
 
@@ -298,11 +472,9 @@ PetscErrorCode SweepCaseOptionsSet(const SweepPlan &plan, PetscInt index)
   PetscFunctionBeginUser;
   for (size_t k = 0; k < plan.axes.size(); ++k) {
     const std::string opt = "-" + plan.axes[k].name;
-    char              text[64];
-    std::snprintf(text, sizeof(text), "%.17g", (double)v[k]); // exact; 21 for a whole number
     // Cleared first: a new entry, so that "used" says whether this case's reading used it.
     PetscCall(PetscOptionsClearValue(NULL, opt.c_str()));
-    PetscCall(PetscOptionsSetValue(NULL, opt.c_str(), text));
+    PetscCall(PetscOptionsSetValue(NULL, opt.c_str(), plan.axes[k].OptionValue(v[k]).c_str()));
   }
   PetscFunctionReturn(0);
 }
@@ -369,12 +541,14 @@ std::string SweepCaseText(const SweepPlan &plan, PetscInt index, bool petsc_form
   std::string                  text;
   for (size_t k = 0; k < plan.axes.size(); ++k) {
     const SweepAxis &a = plan.axes[k];
-    const std::string unit = a.unit.empty() || a.unit == "1" ? "" : " " + a.unit;
-    char              one[256];
-    if (petsc_format) {
-      if (PetscSNPrintf(one, sizeof(one), "%s = %g%s", a.name.c_str(), (double)v[k], unit.c_str())) one[0] = '\0';
-    } else std::snprintf(one, sizeof(one), "%s = %g%s", a.name.c_str(), (double)v[k], unit.c_str());
-    text += (k ? ", " : "") + std::string(one);
+    std::string      one;
+    if (petsc_format && !a.Text()) { // as PETSc's messages print it (1 reads "1.")
+      const std::string unit = a.unit.empty() || a.unit == "1" ? "" : " " + a.unit;
+      char              buf[256];
+      if (PetscSNPrintf(buf, sizeof(buf), "%s = %g%s", a.name.c_str(), (double)v[k], unit.c_str())) buf[0] = '\0';
+      one = buf;
+    } else one = a.name + " = " + a.Display(v[k]);
+    text += (k ? ", " : "") + one;
   }
   return text;
 }

@@ -1,8 +1,10 @@
 // The plan of a sweep (-sweep, -sweep_x and the other -sweep_* options): which cases
-// exist, as the product of axes, each varying one numeric option of the program, and the
-// scenario of each case, read from the options with the case's values set.
+// exist, as the product of axes, each varying one option of the program (numbers, or text:
+// -sweep "ts_type=rk;cn;modal,impact_x=0.4:0.9:6"), and the scenario of each case, read from
+// the options with the case's values set.
 #pragma once
 
+#include "base/option_table.hpp"
 #include "run/scenario.hpp"
 
 #include <petscsys.h>
@@ -12,14 +14,24 @@
 
 namespace beamimpact {
 
-// One swept option: its name, its unit (when known), its text as given and its values.
+// One swept option: its name, its unit (when known), its text as given and its values. An
+// axis is numeric (values are numbers) or text, categorical (labels are the values as written:
+// "rk", "cn"; values then number them 0, 1, ... so that a case's row stays numbers).
 struct SweepAxis {
-  std::string            name;   // the option without its dash ("impact_x"); also its column
-  std::string            unit;   // of its values ("m"; "" when not known)
-  std::string            spec;   // the SPEC as given (start:stop:count[:log] or a list)
-  std::vector<PetscReal> values; // in the given order
-  bool                   overrides = false; // -NAME was also given (options file or command line): the axis wins
-  std::string            given;             // its value there, restored after each case
+  std::string              name;   // the option without its dash ("impact_x"); also its column
+  std::string              unit;   // of its values ("m"; "" when not known or text)
+  std::string              spec;   // the SPEC as given (start:stop:count[:log] or a list)
+  std::vector<PetscReal>   values; // in the given order; a text axis: the index of each label
+  std::vector<std::string> labels; // a text axis: its values as written, in order (empty: numeric)
+  bool                     overrides = false; // -NAME was also given (options file or command line): the axis wins
+  std::string              given;             // its value there, restored after each case
+
+  bool Text() const { return !labels.empty(); }
+  // Value v of this axis (an entry of values) as the options database gets it: the label, or
+  // the number exactly (%.17g).
+  std::string OptionValue(PetscReal v) const;
+  // As a person reads it: the label, or %g with the unit ("0.3 m").
+  std::string Display(PetscReal v) const;
 };
 
 // What became of a case: 0 ok, else a documented code (docs/sweep.md).
@@ -34,6 +46,10 @@ enum SweepStatus {
   SweepCutInContact = 7, // the run reached -impact_max_time with the ball still in contact
 };
 const char *SweepStatusName(int status);
+
+// The option table of the sweep (module "sweep": -sweep, -sweep_x, -sweep_ranks_per_case,
+// -rigid_loss_fraction, -sweep_quiet, ...), registered by app/registry.cpp.
+extern const OptionModule kSweepOptions;
 
 // -sweep, -sweep_x, -sweep_ranks_per_case, -rigid_loss_fraction and the farm's options.
 // The cases are the product of the axes in the order written (-sweep_x first), the first
@@ -65,8 +81,19 @@ std::string SweepOptionUnit(const std::string &name);
 // 15 significant digits. Returns false with a reason in *why (which names the unit).
 bool SweepParsePoints(const std::string &spec, std::vector<PetscReal> *values, std::string *why, const std::string &unit = "m", const std::string &separators = ",;");
 
-// Parses -sweep "NAME=SPEC[,NAME=SPEC...]" into axes (lists in SPEC separated by ';').
+// Parses -sweep "NAME=SPEC[,NAME=SPEC...]" into axes (lists in SPEC separated by ';'). An axis
+// is text (categorical) when its option is text in its module's table (a Choice, Text or File
+// row), when a value is quoted ('4';'5dp': numbers kept as text; a quoted value may hold ',' ';'
+// ':'), or when a list's values are not all numbers (ts_type=rk;cn); it is numeric when its
+// option has a unit (SweepOptionUnit), for a range start:stop:count and for a list of numbers.
 bool SweepParseAxes(const std::string &text, std::vector<SweepAxis> *axes, std::string *why);
+
+// Checks the values of a text axis where the program knows the choices: a Choice row of its
+// module's table (beam_theory, beam_left, ball_law, ...) and -ts_type (PETSc's registry of TS
+// types, with this program's alpha2 and modal). *why: a reason naming the first bad value and
+// the allowed ones ("" when they are all known, or the program does not know the choices: the
+// run then decides, and a value it refuses is a failed point).
+PetscErrorCode SweepCheckTextAxis(const SweepAxis &a, std::string *why);
 
 // Reads the -sweep* options and -rigid_loss_fraction, and checks their form (no scenario yet).
 PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan);
@@ -83,7 +110,7 @@ PetscErrorCode SweepCaseOptionsClear(const SweepPlan &plan);
 // any other error is returned. monitors: read the -monitor_* options too.
 PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason);
 
-// The values of case `index`, "impact_x = 0.3 m, ball_speed = 2 m/s", formatted as C's printf
+// The values of case `index`, "impact_x = 0.3 m, ts_type = cn", formatted as C's printf
 // does (petsc_format false) or as PETSc's messages do (true: 1 reads "1.").
 std::string SweepCaseText(const SweepPlan &plan, PetscInt index, bool petsc_format);
 

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -466,6 +467,39 @@ static bool ReadStrings(hid_t g, const char *name, std::vector<std::string> *v)
   return ok;
 }
 
+// The values of a text axis, in order, as the string-array attribute `values` of dataset `name`
+// (so that readers know every value and its order, also those not yet in a row).
+static bool WriteValuesAttribute(hid_t g, const char *name, const std::vector<std::string> &labels)
+{
+  std::vector<const char *> p;
+  for (auto &l : labels) p.push_back(l.c_str());
+  const hsize_t n = labels.size();
+  hid_t         d = H5Dopen2(g, name, H5P_DEFAULT);
+  if (d < 0) return false;
+  hid_t t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  hid_t      sp = H5Screate_simple(1, &n, NULL);
+  hid_t      a  = H5Acreate2(d, "values", t, sp, H5P_DEFAULT, H5P_DEFAULT);
+  const bool ok = a >= 0 && H5Awrite(a, t, p.data()) >= 0;
+  if (a >= 0) H5Aclose(a);
+  H5Sclose(sp);
+  H5Tclose(t);
+  H5Dclose(d);
+  return ok;
+}
+
+// A text axis's column: the label of each index in v, as strings, with the attribute `values`.
+static PetscErrorCode WriteTextColumn(hid_t g, const std::string &output, const char *name, const std::vector<double> &v, const std::vector<std::string> &labels)
+{
+  std::vector<std::string> text;
+
+  PetscFunctionBeginUser;
+  for (double i : v) text.push_back(i >= 0 && i < (double)labels.size() ? labels[(size_t)i] : std::string());
+  PetscCheck(WriteStrings(g, name, text) && WriteValuesAttribute(g, name, labels), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write the text column %s", output.c_str(), name);
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode StoreWrite(SweepStore &S)
 {
   const std::string tmp = S.output + ".tmp";
@@ -487,7 +521,8 @@ static PetscErrorCode StoreWrite(SweepStore &S)
       std::vector<double> v;
       v.reserve(S.rows.size());
       for (auto &kv : S.rows) v.push_back(kv.second[c]);
-      PetscCall((cols[c].integer ? H5WriteCounts1D : H5WriteDataset1D)(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
+      if (!cols[c].labels.empty()) PetscCall(WriteTextColumn(g, S.output, cols[c].name.c_str(), v, cols[c].labels));
+      else PetscCall((cols[c].integer ? H5WriteCounts1D : H5WriteDataset1D)(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
     }
     std::vector<std::string> reasons;
     reasons.reserve(S.rows.size());
@@ -502,7 +537,9 @@ static PetscErrorCode StoreWrite(SweepStore &S)
     for (size_t k = 0; k < S.plan.axes.size(); ++k) {
       std::vector<double> v(S.ncases);
       for (PetscInt i = 0; i < S.ncases; ++i) v[i] = S.plan.CaseValues(i)[k];
-      PetscCall(H5WriteDataset1D(gp, S.plan.axes[k].name.c_str(), v, S.plan.axes[k].unit.c_str()));
+      const SweepAxis &a = S.plan.axes[k];
+      if (a.Text()) PetscCall(WriteTextColumn(gp, S.output, a.name.c_str(), v, a.labels));
+      else PetscCall(H5WriteDataset1D(gp, a.name.c_str(), v, a.unit.c_str()));
     }
     H5Gclose(gp);
     PetscCheck(H5Fclose(file) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing %s failed (disk full?)", S.output.c_str(), tmp.c_str());
@@ -524,6 +561,20 @@ static PetscErrorCode WrongParameters(const SweepStore &S, const std::string &wh
           "Rerun with the same options to resume it, add -sweep_restart to discard it and start over, or choose another -output.",
           S.output.c_str(), what.c_str(), diff.c_str());
   PetscFunctionReturn(0);
+}
+
+// A text axis's column read back as the index of each label in labels (NaN for a string that
+// is none of them: such a row is not loaded); false when the dataset is missing.
+static bool ReadTextColumn(hid_t g, const char *name, const std::vector<std::string> &labels, std::vector<double> *v)
+{
+  std::vector<std::string> text;
+  v->clear();
+  if (!ReadStrings(g, name, &text)) return false;
+  for (const std::string &t : text) {
+    const auto it = std::find(labels.begin(), labels.end(), t);
+    v->push_back(it == labels.end() ? std::numeric_limits<double>::quiet_NaN() : (double)(it - labels.begin()));
+  }
+  return true;
 }
 
 // Loads the rows of an existing output file after checking its parameters.
@@ -559,7 +610,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
   const auto                      &cols = S.columns;
   std::vector<std::vector<double>> data(cols.size());
   for (size_t c = 0; c < cols.size(); ++c) {
-    const bool ok = ReadDataset(g, cols[c].name.c_str(), &data[c]);
+    const bool ok = cols[c].labels.empty() ? ReadDataset(g, cols[c].name.c_str(), &data[c]) : ReadTextColumn(g, cols[c].name.c_str(), cols[c].labels, &data[c]);
     PetscCheck(ok && data[c].size() == data[0].size(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/%s is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str(),
                cols[c].name.c_str());
   }
@@ -572,7 +623,12 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
     const double idx = data[0][r];
     if (!(idx >= 0 && idx < S.ncases && idx == std::floor(idx))) continue;
     std::vector<double> row(cols.size());
-    for (size_t c = 0; c < cols.size(); ++c) row[c] = data[c][r];
+    bool                known = true; // every text value one of its axis's (else the case is computed again)
+    for (size_t c = 0; c < cols.size(); ++c) {
+      row[c] = data[c][r];
+      known  = known && (cols[c].labels.empty() || !std::isnan(row[c]));
+    }
+    if (!known) continue;
     S.rows.emplace((PetscInt)idx, std::move(row));
     if (!reasons[r].empty()) S.reasons[(PetscInt)idx] = reasons[r];
   }

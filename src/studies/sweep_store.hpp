@@ -6,6 +6,8 @@
 //              /results/<column> with one row per finished case, ordered by
 //              case index (failed cases too: status != 0, their text in
 //              /results/reason), and /sweep/<axis> with every case's axis values;
+//              a text axis's datasets hold strings, with its values in order as the
+//              attribute `values`;
 //              rewritten only as F.tmp + fsync + rename(), so F is always a
 //              complete HDF5 file (readable by h5py/h5dump at any time).
 //   F.parts/   while a sweep runs: lock (flock by rank 0: one sweep per file; removed when
@@ -38,10 +40,11 @@ namespace beamimpact {
 
 // One column of a sweep row.
 struct SweepColumn {
-  std::string name;
-  std::string unit;
-  bool        timing;          // differs from run to run (wall_time): excluded from identity checks
-  bool        integer = false; // a count (double on disk for NaN rows, with the attribute integer = 1)
+  std::string              name;
+  std::string              unit;
+  bool                     timing;          // differs from run to run (wall_time): excluded from identity checks
+  bool                     integer = false; // a count (double on disk for NaN rows, with the attribute integer = 1)
+  std::vector<std::string> labels = {};     // a text axis (categorical): the row holds the index of its label; on disk the labels, as strings
 };
 
 // The journal of the group leader on world rank `rank` in run (attempt) `run` of -output.

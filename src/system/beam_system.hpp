@@ -2,18 +2,22 @@
 // PETSc TS residuals and Jacobians, the leapfrog baseline, the modal reference, the modes
 // solver): none of them assembles anything of its own.
 //
-//   M y'' = -K y + g F(c),   m_b y_b'' = -F(c),   c = y_b - g_beam^T y,
+//   M y'' = -f(y, y', t; frame) + g F(c),   m_b y_b'' = -F(c),   c = y_b - g^T y,
 //
-// M the lumped masses (diagonal, per dof), K = B^T W B the stiffness from the theory's
-// strain terms (banded: half-bandwidth bw dofs), held dofs (rows and columns of K zero, no
-// force), and the contact coupling g: the hat-function share of the impact point between
-// its two neighbouring nodes (held dofs get no share). Dofs are node-major: dof = node x
-// fields + field; field 0 is the transverse deflection (m). Plain arrays only.
+// M the lumped masses (diagonal, per dof), f the internal forces of the force operator
+// (system/force_operator.hpp: the elastic strain terms K = B^T W B of the theory, damping, the
+// grip, ...; K = df/dy banded, half-bandwidth bw dofs), held dofs (rows and columns of K zero,
+// no force), and the contact coupling g: a short list of (dof, weight), today the hat-function
+// share of the impact point between its two neighbouring nodes (held dofs get no share). Dofs
+// are node-major: dof = node x fields + field; field 0 is the transverse deflection (m). The
+// motion of the swing's frame is the run's (FrameMotion), passed to the operator, never stored
+// here. Plain arrays only.
 #pragma once
 
 #include "model/beam_theory.hpp"
 #include "model/contact.hpp"
 #include "model/swing.hpp"
+#include "system/force_operator.hpp"
 
 #include <petscsys.h>
 
@@ -26,56 +30,71 @@ namespace beamimpact {
 struct BeamSystem {
   PetscInt  nodes = 0, fields = 1, ndof = 0;
   PetscReal L = 0, h = 0;                  // m, length and node spacing
-  std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof
+  std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof (with a grip's hands)
   std::vector<char>       held;            // 1 where the dof is held at 0
   std::vector<StrainTerm> strain;          // U = 1/2 sum weight (b . y)^2, sorted by owner dof
   std::vector<PetscInt>   strain_begin;    // terms owned by dof d: [strain_begin[d], strain_begin[d+1])
-  PetscInt                bw = 0;          // half-bandwidth of K (dofs)
+  PetscInt                bw = 0;          // half-bandwidth of K and C (dofs)
   PetscInt                reach = 0;       // max |dof - owner| over the strain terms
-  std::vector<PetscReal>  band;            // N/m: K(i, i+o-bw) = band[(2 bw + 1) i + o]
+  std::vector<PetscReal>  band;            // N/m: K = df/dy of every force term, K(i, i+o-bw) = band[(2 bw + 1) i + o]
   PetscReal               frequency_unit = 0; // rad/s, sqrt(EI/mu)/L^2
-  PetscReal               damping_mass = 0;      // 1/s, alpha: C = alpha M + beta K (Rayleigh)
-  PetscReal               damping_stiffness = 0; // s,   beta
-  // The hands (BeamParams::grip; empty vectors without a grip): per dof the grip's spring k_i
-  // (N/m, also on the diagonal of band and in K y), damper c_i (N s/m, in C v beside the
-  // Rayleigh terms) and the velocity of the swing's rigid frame v_f,i (m/s, set by the driver:
-  // zero for a bat at rest). The force of the hands on dof i is
-  //   -k_i (y_i - v_f,i t) - c_i (v_i - v_f,i).
-  // grip_drive0: r^T M v + m_b r_b v_b + alpha r^T M y at t = 0 (r = v_f; the hands' work is its
-  // change, BeamSystemGripDrive).
-  std::vector<PetscReal>  grip_k, grip_c, grip_v;
-  PetscReal               grip_damping = 0;      // N s/m, sum of c_i (> 0: the grip damps)
-  PetscReal               grip_drive0 = 0;       // kg m^2/s^2
-
-  bool      Gripped() const { return !grip_k.empty(); }
+  ForceOperator           forces;          // the force terms, and C = df/dv
 
   PetscInt  Dof(PetscInt node, PetscInt field = 0) const { return node * fields + field; }
   PetscReal NodeX(PetscInt node) const { return node * h; }
-  // Ghost width (nodes) a distributed state needs for K y and the strain energy.
-  bool      Damped() const { return damping_mass > 0 || damping_stiffness > 0 || grip_damping > 0; }
-  PetscInt  GhostNodes() const { return (std::max(bw, 2 * reach) + fields - 1) / fields; }
+  bool      Damped() const { return forces.damped; }
+  bool      Gripped() const { return forces.Find("grip") != nullptr; }
+  // Ghost width (nodes) a distributed state needs for the forces and the strain energy.
+  PetscInt  GhostNodes() const { return (std::max({bw, 2 * reach, forces.reach}) + fields - 1) / fields; }
 };
 
 // Builds the system of the beam with its theory (BeamParams::theory). Returns false with
 // *why when the theory is unknown.
 bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why);
+// Indexes the strain terms (strain_begin, reach, bw) and assembles K and C from the force
+// terms (ForceOperatorAssemble): part of BeamSystemBuild, and again after a system's layout was
+// changed by hand (tests).
+void BeamSystemAssemble(BeamSystem *sys);
 
-// The ball's coupling to the beam: c = y_b - (w[0] y[dof[0]] + w[1] y[dof[1]]); the force F
-// acts as +w[q] F on dof[q] and -F on the ball. Weights of held dofs are 0.
+// The ball's coupling to the beam: c = y_b - sum_q w[q] y[dof[q]] over the n entries; the
+// force F acts as +w[q] F on dof[q] and -F on the ball. Today the two hat entries of the
+// impact point's nodes (weights of held dofs 0); a shell's radial dofs under the ball or a
+// second bending plane would be more entries. Every consumer loops over the n entries.
 struct ContactCoupling {
-  PetscInt  dof[2] = {0, 0};
-  PetscReal w[2]   = {0, 0};
-  PetscReal x      = 0; // m, the impact point
+  static constexpr PetscInt kMaxEntries = 8;
+  PetscInt  n = 0;                  // entries used
+  PetscInt  dof[kMaxEntries] = {};  // coupled dofs
+  PetscReal w[kMaxEntries]   = {};  // their weights (1)
+  PetscReal x                = 0;   // m, the impact point
+  // Whether dof d is coupled, and its weight (the sum over its entries; 0 if not coupled).
+  bool Couples(PetscInt d) const
+  {
+    for (PetscInt q = 0; q < n; ++q)
+      if (dof[q] == d) return true;
+    return false;
+  }
+  PetscReal WeightOf(PetscInt d) const
+  {
+    PetscReal s   = 0.0;
+    bool      hit = false;
+    for (PetscInt q = 0; q < n; ++q)
+      if (dof[q] == d) s = hit ? s + w[q] : w[q], hit = true;
+    return s;
+  }
 };
 ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp);
 
-// f_i = (K y)_i (N) for dofs i in [d0, d1), in the factored form B^T W B y. y holds dof d at
-// y[(d / fields) * node_stride + d % fields], valid for d within 2 reach of [d0, d1) (a ghosted
-// array indexed by global node); f likewise with out_stride. Rows of held dofs are 0.
+// f_i = (K y)_i (N) for dofs i in [d0, d1), K = df/dy of every force term (the elastic
+// strain terms in the factored form B^T W B y, a grip's springs): the force of the deflection y
+// at rest. y holds dof d at y[(d / fields) * node_stride + d % fields], valid for d within the
+// ghost width of [d0, d1) (a ghosted array indexed by global node); f likewise with
+// out_stride. Rows of held dofs are 0.
 void BeamSystemStiffnessApply(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt out_stride);
 
 // The nonzeros of row i of K (at most 2 bw + 1; columns of held dofs left out); returns the count.
 PetscInt BeamSystemStiffnessRow(const BeamSystem &sys, PetscInt i, PetscInt *cols, PetscReal *vals);
+// The nonzeros of row i of C = df/dv (the damping band and its diagonal part), likewise.
+PetscInt BeamSystemDampingRow(const BeamSystem &sys, PetscInt i, PetscInt *cols, PetscReal *vals);
 
 // Strain energy (J) of the terms owned by dofs [d0, d1) (a sum of squares); y as above.
 PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1);
@@ -97,31 +116,17 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 // contact stiffness k_extra (N/m) through the coupling to a ball of mass m_extra (kg).
 PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra);
 
-// Rayleigh damping C = alpha M + beta K (BeamSystem::damping_mass, damping_stiffness).
-// f_i = (C v)_i (N) for dofs i in [d0, d1): alpha m_i v_i + beta (K v)_i with K v in the factored
-// form of BeamSystemStiffnessApply (so C annihilates rigid motion when alpha = 0); v and f as
-// y and f there (v valid within 2 reach of [d0, d1) when beta != 0). Rows of held dofs are 0.
+// f_i = (C v)_i (N) for dofs i in [d0, d1), C = df/dv of every force term (Rayleigh: alpha m_i v_i
+// + beta (K v)_i, K v of the strain terms in the factored form, so C annihilates rigid motion
+// when alpha = 0; a grip's dampers), the frame at rest; v and f as y and f of
+// BeamSystemStiffnessApply. Rows of held dofs are 0. (ForceOperatorDampingApply with a frame.)
 void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt out_stride);
 
-// Dissipation rate v^T C v (W) of the dofs [d0, d1) and the strain terms they own: alpha sum m v^2
-// + beta sum_k weight_k (b_k . v)^2, a sum of squares (>= 0 by construction, no cancellation);
-// sums over a partition of the dofs add up to the whole. v as y of BeamSystemStrainEnergy.
+// Dissipation rate v^T C v (W) of the dofs [d0, d1) and the strain terms they own, the frame at
+// rest: alpha sum m v^2 + beta sum_k weight_k (b_k . v)^2 (+ a grip's sum c v^2), a sum of squares
+// (>= 0 by construction, no cancellation); sums over a partition of the dofs add up to the
+// whole. v as y of BeamSystemStrainEnergy. (ForceOperatorDissipationRate with a frame.)
 PetscReal BeamSystemDissipationRate(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
-
-// The grip (BeamSystem::grip_*), for dofs [d0, d1); y, v as for BeamSystemStrainEnergy.
-// Stored energy 1/2 sum k_i (y_i - v_f,i t)^2 (J).
-PetscReal BeamSystemGripEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal t);
-// The force of the beam on the hands, sum k_i (y_i - v_f,i t) + c_i (v_i - v_f,i) (N), and its
-// moment about x = 0, sum x_i (...) (N m), added to *force and *moment.
-void BeamSystemGripForce(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal t, PetscReal *force, PetscReal *moment);
-// The beam's share of the hands' drive Q = r^T M v + alpha r^T M y (r = v_f), whose change
-// (with the ball's m_b r_b v_b) is the work the hands do on the bat: for a free beam K r = 0,
-// so dQ/dt = r^T F_hands (docs/model.md, "The hands").
-PetscReal BeamSystemGripDrive(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1);
-// The frame's velocity at the ball's impact point, r_b = g^T v_f (m/s; 0 without a grip).
-PetscReal BeamSystemGripFrameAt(const BeamSystem &sys, const ContactCoupling &g);
-// Largest c_i/m_i (1/s) over the grip (0 without one): the stability bounds treat it as alpha.
-PetscReal BeamSystemGripRate(const BeamSystem &sys);
 
 } // namespace beamimpact
 

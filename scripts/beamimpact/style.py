@@ -1,0 +1,32 @@
+"""matplotlib for the scripts: the Agg backend (files, no display), the colour cycle, and one
+way to write a figure.
+
+    fig, ax = style.plt.subplots()
+    style.save(fig, "out.png", dpi=130)             # tight layout, written, closed; returns the path
+"""
+from .interpreter import require
+
+require("matplotlib")
+
+import matplotlib.pyplot as plt  # noqa: E402,F401  (style.plt: the scripts' pyplot)
+
+
+def colours():
+    """The colours of matplotlib's property cycle, in order."""
+    return plt.rcParams["axes.prop_cycle"].by_key()["color"]
+
+
+def save(fig, path, dpi=120, layout=True, tight_box=False, extra_artists=None):
+    """Writes fig to path and closes it: layout tightens the subplots first (fig.tight_layout),
+    tight_box crops the image to what is drawn (bbox_inches="tight", with extra_artists such as
+    a legend outside the axes). Returns the path."""
+    if layout:
+        fig.tight_layout()
+    kw = {}
+    if tight_box:
+        kw["bbox_inches"] = "tight"
+        if extra_artists:
+            kw["bbox_extra_artists"] = extra_artists
+    fig.savefig(path, dpi=dpi, **kw)
+    plt.close(fig)
+    return path
