@@ -5,7 +5,7 @@
 #     sheet's cell D2; the landing 422.292 ft from home plate in 5.5247 s, 0.19 % beyond the
 #     sheet's published 421.486 ft in 5.520 s (its first-order step at dt = 0.01 s, as
 #     tests/test_flight.cpp shows); every dataset with its unit; the series from the launch
-#     height to the located landing (|z| <= 1e-12 m) every 0.01 s;
+#     height to the located landing (|z| <= 1e-12 m) every 0.01 s; /options_used with units;
 #   * bad input refused with the option, the value and what is allowed; a typo suggesting the
 #     option meant; -help listing the flight's, the air's and the flight TS's options;
 #   * scripts/plot_flight.py on two files (a PNG PIL reads) and refusing an impact file;
@@ -76,6 +76,10 @@ for k in r:
     if k != "wall_time":
         check("/results/%s the same on 2 ranks" % k, r[k][0] == g["results"][k][0])
 check("/series the same on 2 ranks", all(np.array_equal(s[k][()], g["series"][k][()]) for k in s))
+u = f["options_used"]
+check("/options_used: the speed as given, in m/s", abs(u.attrs["flight_speed"] - 46.05557) < 1e-4 and u["unit"].attrs["flight_speed"] in (b"m/s", "m/s") and u["given"].attrs["flight_speed"] == 1)
+check("/options_used: the default -flight_cd0, dimensionless, not given", u.attrs["flight_cd0"] == 0.3008 and u["unit"].attrs["flight_cd0"] in (b"1", "1") and u["given"].attrs["flight_cd0"] == 0)
+check("/options_used: every -flight_* and -air_* option", all(k in u.attrs for k in ("flight_cd0", "flight_constants", "flight_series_dt", "air_temperature", "air_pressure", "air_humidity", "air_elevation", "air_density")))
 for b in bad: print("   ", b)
 sys.exit(1 if bad else 0)
 EOF
@@ -104,12 +108,14 @@ expect_fail "air without density" "give an air density of" -air_pressure 1000 -a
 expect_fail "a type that cannot roll back" "-flight_ts_type euler cannot roll back a step" -flight_ts_type euler
 expect_fail "no landing in time" "has not landed after -flight_ts_max_time 1 s" -flight_ts_max_time 1
 expect_fail "a typo" "(did you mean -flight_speed?)" -flight_sped 40
+expect_fail "a typo of the flight TS's option" "(did you mean -flight_ts_rtol?)" -flight_ts_rtoll 1e-8
 expect_fail "an unknown -flight_constants" "-flight_constants si is not known: use one of calculator, exact" -flight_constants si
 
 "$exe" -help >"$dir/help.txt" 2>&1
 for o in -flight_speed -flight_spin -flight_spin_decay_time -air_pressure -air_density -flight_ts_type -flight_ts_rtol; do
   grep -q -- "^  $o " "$dir/help.txt" || fail "-help does not list $o"
 done
+grep -q "^PETSc options of the flight's integrator" "$dir/help.txt" && grep -q -- "^  -flight_ts_rk_type <5dp>" "$dir/help.txt" && pass "-help lists the flight TS's table with its defaults" || fail "-help has no table of the flight TS's options"
 grep -q "^  -task .*flight" "$dir/help.txt" && pass "-help lists -task flight and the flight's options" || fail "-help does not list -task flight"
 
 ((fails == 0)) && echo "flight_cli: all passed" || echo "flight_cli: $fails failure(s)"
