@@ -28,8 +28,8 @@
 #include <vector>
 
 static const char help[] = "beamimpact: a ball striking a flexible beam (R. Cross, Am. J. Phys. 67, 692 (1999)).\n"
-                           "  -task impact|modes|sweep|convergence, -output FILE.h5, and the -beam_, -ball_, -bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
-                           "  -convergence_, -leapfrog_ and -ts_ options below (-help lists them all and runs nothing).\n"
+                           "  -task impact|modes|sweep|convergence|flight, -output FILE.h5, and the -beam_, -ball_, -bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
+                           "  -convergence_, -leapfrog_, -ts_, -flight_ and -air_ options below (-help lists them all and runs nothing).\n"
                            "  Example: mpirun -n 2 build/release/beamimpact -options_file options/default.opts (paths inside an options file are relative to that file)\n\n";
 
 // The command line with every -options_file expanded into the options it holds, relative

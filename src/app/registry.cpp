@@ -6,9 +6,11 @@
 #include "base/option_table.hpp"
 #include "io/ball_options.hpp"
 #include "io/beam_options.hpp"
+#include "io/flight_options.hpp"
 #include "io/scenario_options.hpp"
 #include "run/impact_params.hpp"
 #include "run/reference.hpp"
+#include "solvers/flight_ts.hpp"
 #include "solvers/leapfrog.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
@@ -39,6 +41,9 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&kSweepOptions);
   OptionModuleRegister(&ReferenceOptionModule());
   OptionModuleRegister(&ConvergenceOptionModule());
+  OptionModuleRegister(&FlightOptionTable());
+  OptionModuleRegister(&AirOptionTable());
+  OptionModuleRegister(&FlightTSOptionTable());
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,7 @@
 // Task drivers and the table -task chooses from. See tasks.hpp.
 #include "app/tasks.hpp"
 
+#include "app/task_flight.hpp"
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
@@ -39,6 +40,7 @@ const TaskEntry Tasks[] = {
   {"modes", TaskModes},
   {"sweep", TaskSweep},
   {"convergence", TaskConvergence},
+  {"flight", TaskFlight},
 };
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
@@ -218,6 +220,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)SweepPlanFromOptions(comm, &plan);
   (void)ConvergencePlanFromOptions(comm, sc, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
+  (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);

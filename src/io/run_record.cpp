@@ -35,7 +35,7 @@ static PetscErrorCode RunProvenance(RunRecord *rec)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
+PetscErrorCode RunRecordProgram(RunRecord *rec)
 {
   char        petsc_version[256];
   std::string options;
@@ -48,6 +48,13 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("petsc_version", petsc_version);
   rec->add("options", options);
   rec->options_used = OptionsUsed();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RunRecordProgram(rec));
   rec->add("beam_length", beam.length);
   rec->add("beam_EI", beam.EI);
   rec->add("beam_mu", beam.mu);

@@ -44,7 +44,10 @@ struct RunRecord {
   std::map<std::string, OptionUsed> options_used; // by option name with its dash; written to /options_used
 };
 
-// Program, PETSc version, options and the beam's parameters (a task on the beam alone).
+// Program, its provenance, PETSc version and the options (a task with no beam: -task flight).
+PetscErrorCode RunRecordProgram(RunRecord *rec);
+
+// The same and the beam's parameters (a task on the beam alone).
 PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec);
 
 // The same plus the ball, the impact rules and, given a first result, its integrator and the
