@@ -177,16 +177,14 @@ static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult>
   PetscFunctionReturn(0);
 }
 
-// Root attributes of an impact file beside the run record: the table's column order and the
-// impact's scales (for studies that judge a run against them).
-static PetscErrorCode H5WriteImpactAttributes(hid_t file, const ImpactResult &r)
+// Root attributes of an impact file beside the run record (which holds the impact's scales):
+// the table's column order.
+static PetscErrorCode H5WriteImpactAttributes(hid_t file)
 {
   RunRecord a;
 
   PetscFunctionBeginUser;
   a.add("results_columns", ImpactResultColumnNames());
-  a.add("contact_time_scale", r.scales.contact_time_scale);
-  a.add("compression_scale", r.scales.compression_scale);
   PetscCall(H5WriteAttributes(file, a));
   PetscFunctionReturn(0);
 }
@@ -291,7 +289,7 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
   if (file < 0) PetscFunctionReturn(0);
   PetscCall(H5WriteResults(file, results, sc));
   if (!results.empty()) {
-    PetscCall(H5WriteImpactAttributes(file, results[0]));
+    PetscCall(H5WriteImpactAttributes(file));
     PetscCall(H5WriteEvents(file, results[0]));
     PetscCall(H5WriteSeries(file, results[0].series, sc.beam));
   }

@@ -18,12 +18,12 @@
 namespace beamimpact {
 
 // Writes a new file (replacing any) for results of the scenario sc: root attributes (the record,
-// with the ball's rigid-wall values ball_wall_contact_time and ball_wall_cor; the table's column
-// order results_columns and the first result's scales: contact_time_scale, compression_scale),
-// /results (every column of the
-// table, one row per result, with the attributes unit, description, applies (1 or 0: whether
-// the column applies to sc; NaN where it does not) and applies_when (in words)), and for the
-// first result its /events, /series and /snapshots when they hold data.
+// with the ball's rigid-wall values ball_wall_contact_time and ball_wall_cor and the first
+// result's scales contact_time_scale and compression_scale; the table's column order
+// results_columns), /results (every column of the table, one row per result, with the
+// attributes unit, description, applies (1 or 0: whether the column applies to sc; NaN where it
+// does not) and applies_when (in words)), and for the first result its /events, /series and
+// /snapshots when they hold data.
 PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc);
 
 // Writes a new file (replacing any) on rank 0 of comm: root attributes; /modes with the

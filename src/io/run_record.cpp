@@ -109,6 +109,11 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
     rec->add("formulation", first->formulation);
     rec->add("dt_nominal", first->dt_nominal);
     rec->add("dt_stable", first->dt_stable);
+    // The impact's scales, for studies that judge a run against them (a sweep: its probe's).
+    if (first->scales.contact_time_scale > 0) {
+      rec->add("contact_time_scale", first->scales.contact_time_scale);
+      rec->add("compression_scale", first->scales.compression_scale);
+    }
   }
   PetscFunctionReturn(0);
 }

@@ -50,7 +50,8 @@ PetscErrorCode RunRecordProgram(RunRecord *rec);
 // The same and the beam's parameters (a task on the beam alone).
 PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec);
 
-// The same plus the ball, the impact rules and, given a first result, its integrator.
+// The same plus the ball, the impact rules and, given a first result, its integrator and the
+// impact's scales (contact_time_scale, compression_scale).
 PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, RunRecord *rec);
 
 // Writes rec.options_used as the group options_used of loc (an HDF5 file or group id; nothing
