@@ -511,6 +511,14 @@ PetscErrorCode ExplicitStability(TSStepper &S)
     PetscCheck(dt <= S.info.dt_stable, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s%s); use -ts_dt <= %g, fewer nodes, or an implicit type",
                (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound, sys.Damped() ? ", with the beam's Rayleigh damping" : "", (double)S.info.dt_stable);
+  if (S.info.dt_stable < 0.05 / S.info.omega_max_bound) { // strong damping: overdamped grid modes, dt_max far below 1/omega_max
+    // An adaptive step let past dt_max there leaves those modes ringing from step to step (the
+    // contact's rate of compression with them), which no event can be located on: cap it.
+    TSAdapt adapt;
+    S.dt_cap = std::min(S.dt_cap, 0.9 * S.info.dt_stable);
+    PetscCall(TSGetAdapt(S.ts, &adapt));
+    PetscCall(TSAdaptSetStepLimits(adapt, PETSC_DEFAULT, S.dt_cap));
+  }
   PetscFunctionReturn(0);
 }
 
