@@ -32,13 +32,14 @@ const OptionModule &BeamOptionTable()
       OptionFile("-beam_profile", "Round sections along the beam: file of rows 'x D [d]' (m), with E and rho"),
       OptionFile("-beam_properties", "Section properties along the beam: file of rows 'x EI mu [kappaGA rhoI]' (SI)"),
       OptionChoice("-beam_theory", "Beam theory (model/beam_theory.hpp): euler (Euler-Bernoulli), timoshenko (shear and rotary inertia)", TheoryChoices(), "euler"),
-      OptionReal("-beam_shear_modulus", "Pa", "Shear modulus G: Timoshenko with E, rho (uniform or profile)", "", Positive()),
+      OptionNeeds(OptionReal("-beam_shear_modulus", "Pa", "Shear modulus G: Timoshenko with E, rho (uniform or profile)", "", Positive()), {"-beam_theory=timoshenko"}),
       [] {
         OptionSpec s = OptionReal("-beam_shear_coefficient", "1", "Shear coefficient kappa; 0: Cowper's by section (round tube, rectangle)", "0", Between(0, 1));
         s.range_text = "in (0, 1], or 0: Cowper's by section";
+        s.needs      = {"-beam_theory=timoshenko"};
         return s;
       }(),
-      OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient)", "0.3", Between(-1, 0.5, true, true)),
+      OptionNeeds(OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient)", "0.3", Between(-1, 0.5, true, true)), {"-beam_theory=timoshenko"}),
       OptionInt("-beam_nodes", "Number of grid nodes N", "41", AtLeast(5)),
       OptionChoice("-beam_left", SupportHelp("x = 0").c_str(), SupportNames(), "free"),
       OptionChoice("-beam_right", SupportHelp("x = L").c_str(), SupportNames(), "free"),
@@ -47,9 +48,9 @@ const OptionModule &BeamOptionTable()
       OptionReal("-beam_damping_mass", "1/s", "Rayleigh damping alpha: C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "0", NonNegative()),
       OptionReal("-beam_damping_stiffness", "s", "Rayleigh damping beta", "0", NonNegative()),
       OptionList("-grip", "m", "The hands: grip x_a,x_b, a spring-damper per metre of handle tying it to the swing's rigid frame (a free beam)", 2, 2, NonNegative()),
-      OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()),
-      OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()),
-      OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()),
+      OptionNeeds(OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()), {"-grip"}),
+      OptionNeeds(OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()), {"-grip"}),
+      OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
     },
   };
   return m;

@@ -54,8 +54,8 @@ const OptionModule &MonitorOptionTable()
       OptionList("-snapshot_times", "s", "Record the beam displacement y(x) at these times t1,t2,... (any number, in any order; none by default; times after the run's end are named in a note)", 1, 0,
                  NonNegative()),
       OptionList("-monitor_segment", "m", "Record the kinetic energy of the beam segment x0,x1 at every step, and its peak", 2, 2, NonNegative()),
-      OptionFlag("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its moment about x = 0), the grip's stored energy and the hands' work at every step"),
-      OptionReal("-monitor_segment_until", "s", "Take the segment's peak over t <= this; < 0: the whole run", "-1"),
+      OptionNeeds(OptionFlag("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its moment about x = 0), the grip's stored energy and the hands' work at every step"), {"-grip"}),
+      OptionNeeds(OptionReal("-monitor_segment_until", "s", "Take the segment's peak over t <= this; < 0: the whole run", "-1"), {"-monitor_segment"}),
     },
   };
   return m;
