@@ -17,7 +17,12 @@ ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const 
   ImpactTimes     t;
   const PetscReal omega1 = BeamFundamentalFrequencyEstimate(beam);
   t.window               = ip.window >= 0 ? ip.window : 2 * (2 * M_PI / omega1);
-  t.max_time             = ip.max_time > 0 ? ip.max_time : 4 * t.window + 100 * ContactTimeScale(ball);
+  // A ball at rest (struck by a swinging bat): a speed-dependent law's time scale at v_i = 0 is
+  // infinite; the cap takes it at 1 m/s (as long or longer than at a faster approach for every law
+  // that stiffens with compression).
+  BallParams at = ball;
+  if (!(at.speed > 0)) at.speed = 1;
+  t.max_time = ip.max_time > 0 ? ip.max_time : 4 * t.window + 100 * ContactTimeScale(at);
   return t;
 }
 
@@ -65,10 +70,11 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
 {
   const OptionModule &T     = ImpactOptionTable();
   PetscInt            after = (PetscInt)p->after; // the row's choices in the order of ImpactAfter
+  PetscBool           x_set;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_x", &p->x, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_x", &p->x, &x_set));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_window", &p->window, NULL));
   PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-impact_after", &after, &p->after_set));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_max_time", &p->max_time, NULL));
@@ -80,6 +86,10 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_energy_growth_tol", &p->energy_growth_tol, NULL));
   PetscOptionsEnd();
   p->after = (ImpactAfter)after;
+  // The default point is in metres, not relative: on a beam shorter than 0.55 m it is off the
+  // beam, and the message says so instead of naming an option the user never gave.
+  PetscCheck(x_set || ImpactPointLocate(beam, p->x) != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "the default impact point -impact_x %g m is beyond the end of this %.12g m beam: give -impact_x, 0 <= x <= %.12g (m)", (double)p->x, (double)beam.length, (double)beam.length);
   {
     char what[64];
     PetscCall(PetscSNPrintf(what, sizeof(what), "-impact_x %.12g", (double)p->x));

@@ -1,7 +1,9 @@
 // The outcome of a run. See outcome.hpp.
 #include "run/outcome.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace beamimpact {
 
@@ -11,11 +13,15 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   const BeamSystem &S    = *ctx.sys;
   res->final_time             = t;
   res->ball_final_velocity    = m1.ball_v;
-  res->acor                   = -m1.ball_v / ball.speed;
+  // A ball at rest (struck by a swinging bat): no ACOR and no fractions of the ball's incident
+  // energy (NaN: they do not apply); the momenta relative to the bat's.
+  const PetscReal nan   = std::numeric_limits<PetscReal>::quiet_NaN();
+  const PetscReal p_ref = ball.speed > 0 ? ball.mass * ball.speed : std::abs(m0.momentum);
+  res->acor                   = ball.speed > 0 ? -m1.ball_v / ball.speed : nan;
   res->acor_corrected         = ContactElastic(ball) ? res->acor * ball.loss_factor : res->acor;
   res->energy_error           = (m1.total() - m0.total()) / m0.total();
-  res->linear_momentum_error  = (m1.momentum - m0.momentum) / (ball.mass * ball.speed);
-  res->angular_momentum_error = (m1.angular_momentum - m0.angular_momentum) / (ball.mass * ball.speed * S.L);
+  res->linear_momentum_error  = (m1.momentum - m0.momentum) / p_ref;
+  res->angular_momentum_error = (m1.angular_momentum - m0.angular_momentum) / (p_ref * S.L);
   res->beam_kinetic_end       = m1.beam_kinetic;
   res->beam_strain_end        = m1.beam_strain;
   res->ball_dissipated_end    = m1.ball_work - m1.ball_stored;
@@ -33,7 +39,7 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
   }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
   const PetscReal L_cm = m1.beam_moment - x_cm * m1.beam_momentum;
-  const PetscReal Ein  = 0.5 * ball.mass * ball.speed * ball.speed;
+  const PetscReal Ein  = ball.speed > 0 ? 0.5 * ball.mass * ball.speed * ball.speed : nan;
   const PetscReal Etr = m1.beam_momentum * m1.beam_momentum / (2 * M), Erot = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
   const PetscReal ball_loss = ContactElastic(ball) ? (1 - ball.loss_factor * ball.loss_factor) * m1.ball_kinetic : res->ball_dissipated_end;
   res->ball_loss_fraction   = ball_loss / Ein;
