@@ -35,7 +35,7 @@ const OptionModule &ImpactOptionTable()
       OptionReal("-impact_x", "m", "Impact point, metres from the x = 0 end", "0.55"),
       OptionReal("-impact_window", "s", "Time followed after each separation; < 0: two fundamental periods of the beam (the file records the value used)", "-1"),
       OptionChoice("-impact_after", "After a separation: integrate in time, or the exact free vibration in the beam's modes (modal: the default wherever the beam allows it)", {"time", "modal"}, "modal"),
-      OptionReal("-impact_max_time", "s", "Cap on the simulated time; < 0: 4 windows + 100 contact times (the file records the value used); a run it cuts off in contact is an error, a failed point", "-1"),
+      OptionReal("-impact_max_time", "s", "Cap on the simulated time; <= 0: 4 windows + 100 contact times (the file records the value used); a run it cuts off in contact is an error, a failed point", "-1"),
       OptionReal("-impact_event_tol", "1", "Events are located until |indicator| (c/c_scale or dc/dt/v_i) is below this", "1e-10", Between(0, 1e-2, true, true)),
       OptionInt("-impact_max_contacts", "Stop with an error after this many separate contacts", "50", AtLeast(1)),
       OptionFlag("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol"),
