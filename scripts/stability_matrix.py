@@ -812,8 +812,8 @@ cannot roll back a step, and impact points that are held.
 * `newton-stall` — alpha2 (second-order form): the Newton residual, in acceleration units, has a round-off
   floor eps·omega_max²·|y| (1e-7 at N = 201, 1e-2 at N = 2001, growing with |y| as a free beam flies away)
   above -snes_rtol × the initial residual, so Newton stalled on fine grids, stiff beams and long runs.
-  Fixed by a convergence test that accepts a residual within 100× that floor (`ConvergedWithRoundoffFloor`
-  in src/impact.cpp); every alpha2 cell is now verified correct.
+  Fixed by a convergence test that accepts a residual within 100× that floor (`TSConvergedWithRoundoffFloor`
+  in src/solvers/ts_diagnostics.cpp); every alpha2 cell is now verified correct.
 * `reload-missed` — hysteretic law: a reload located on its pre-event side (dc/dt slightly < 0) hid the
   maximum compression right after it, so the ball could leave in the loading branch without its loss
   (baseball case: ACOR -0.300 or -0.193 instead of -0.2147 depending on the step). Fixed in
