@@ -40,6 +40,9 @@ if [[ $rc -ne 0 ]] && grep -q -- "-sweep grip_stiffness=0;1e4;1e5 is not allowed
    ! grep -q "^wrote" <<<"$out"; then
   pass "a sweep axis over an option without effect is refused before any point"
 else fail "sweep over grip_stiffness without -grip: exit $rc: $out"; fi
+run -task sweep -sweep "beam_theory=euler;timoshenko,beam_shear_modulus=2e10;2.6e10" -impact_window 1e-3 -output "$dir/theory.h5"
+if [[ $rc -eq 0 ]] && grep -q "^wrote .*(4 points)" <<<"$out"; then pass "an axis whose condition another axis varies runs (beam_shear_modulus with beam_theory)"
+else fail "sweep over beam_theory x beam_shear_modulus: exit $rc: $out"; fi
 run -task sweep -sweep_x 0.3:0.9:7 -beam_pivot 0.5 -beam_nodes 40 -grip_mass 1 -impact_window 1e-3 -output "$dir/pivot.h5"
 if [[ $rc -eq 0 ]] && [[ $(grep -c "note: -beam_pivot 0.5 is placed on the nearest node" <<<"$out") -eq 1 ]] && [[ $(grep -c "no effect in this run" <<<"$out") -eq 1 ]]; then
   pass "a 7-point sweep says the pivot note and the no-effect note once each"

@@ -215,7 +215,7 @@ std::vector<OptionWithoutEffect> OptionsWithoutEffect()
       const OptionUsed &o = it->second;
       if (eq == std::string::npos ? o.given : o.text == need.substr(eq + 1)) continue;
       const std::string why = eq == std::string::npos ? "it acts only with " + other : "it acts only with " + other + " " + need.substr(eq + 1) + "; " + other + " is " + o.text;
-      out.push_back({name, OptionWritten(name.c_str()), why});
+      out.push_back({name, OptionWritten(name.c_str()), why, other});
       break;
     }
   }

@@ -121,6 +121,7 @@ void                                     OptionsUsedClear();
 // -grip", "it acts only with -beam_theory timoshenko; -beam_theory is euler").
 struct OptionWithoutEffect {
   std::string name, written, why;
+  std::string needs; // the option of the condition that fails ("-grip")
 };
 std::vector<OptionWithoutEffect> OptionsWithoutEffect();
 
