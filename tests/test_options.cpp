@@ -503,7 +503,8 @@ TEST(OptionTables, AnOptionWithoutEffectIsNamedWithWhy)
 TEST(OptionTables, TheProgramsRowsSayWhenTheyHaveNoEffect)
 {
   const std::vector<std::pair<const char *, const char *>> set = {
-    {"-grip_stiffness", "1e4"}, {"-grip_damping", "10"}, {"-grip_mass", "0.5"}, {"-monitor_grip", NULL}, {"-beam_shear_modulus", "1e9"}, {"-beam_poisson", "0.25"}, {"-monitor_segment_until", "1e-3"}};
+    {"-grip_stiffness", "1e4"}, {"-grip_damping", "10"}, {"-grip_mass", "0.5"}, {"-monitor_grip", NULL}, {"-beam_shear_modulus", "1e9"}, {"-beam_poisson", "0.25"}, {"-monitor_segment_until", "1e-3"},
+    {"-impact_energy_growth_tol", "1e-2"}};
   OptionsUsedClear();
   for (auto &o : set) PetscOptionsSetValue(NULL, o.first, o.second);
   Scenario sc;
@@ -517,8 +518,10 @@ TEST(OptionTables, TheProgramsRowsSayWhenTheyHaveNoEffect)
   EXPECT_EQ("it acts only with -grip", why["-monitor_grip"]);
   EXPECT_EQ("it acts only with -beam_theory timoshenko; -beam_theory is euler", why["-beam_shear_modulus"]);
   EXPECT_EQ("it acts only with -monitor_segment", why["-monitor_segment_until"]);
+  EXPECT_EQ("it acts only with -impact_energy_check true; -impact_energy_check is false", why["-impact_energy_growth_tol"]);
   // with what they need, nothing is said
-  const std::vector<std::pair<const char *, const char *>> with = {{"-grip", "0.05,0.2"}, {"-grip_stiffness", "1e4"}, {"-monitor_grip", NULL}, {"-monitor_segment", "0.1,0.3"}, {"-monitor_segment_until", "1e-3"}};
+  const std::vector<std::pair<const char *, const char *>> with = {{"-grip", "0.05,0.2"}, {"-grip_stiffness", "1e4"}, {"-monitor_grip", NULL}, {"-monitor_segment", "0.1,0.3"}, {"-monitor_segment_until", "1e-3"},
+                                                                     {"-impact_energy_check", NULL}, {"-impact_energy_growth_tol", "1e-2"}};
   OptionsUsedClear();
   for (auto &o : with) PetscOptionsSetValue(NULL, o.first, o.second);
   ASSERT_EQ(0, ScenarioFromOptions(PETSC_COMM_WORLD, &sc));

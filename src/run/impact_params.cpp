@@ -41,7 +41,7 @@ const OptionModule &ImpactOptionTable()
       OptionFlag("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol"),
       OptionReal("-impact_cost_warn", "s", "-task impact: print the expected cost before a run expected to take more than this (wall time)", "30", NonNegative()),
       OptionReal("-impact_progress", "s", "-task impact: a progress line every this many seconds of wall time (0: none)", "10", NonNegative()),
-      OptionReal("-impact_energy_growth_tol", "1", "Allowed energy growth, relative to the incident kinetic energy", "1e-3", Positive()),
+      OptionNeeds(OptionReal("-impact_energy_growth_tol", "1", "Allowed energy growth, relative to the incident kinetic energy", "1e-3", Positive()), {"-impact_energy_check=true"}),
     },
   };
   return m;
