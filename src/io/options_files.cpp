@@ -79,8 +79,12 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
   const std::vector<std::string> &paths = OptionsFilePathOptions();
   std::string              line;
   for (int lineno = 1; std::getline(in, line); ++lineno) {
-    const std::vector<std::string> t     = LineTokens(line);
-    const std::string              where = file + ":" + std::to_string(lineno);
+    const std::string where = file + ":" + std::to_string(lineno);
+    if (line.find('\0') != std::string::npos) { // binary data: a message would stop at the NUL
+      *error = where + ": the line holds a NUL byte (binary data?): an options file is plain text";
+      return false;
+    }
+    const std::vector<std::string> t = LineTokens(line);
     if (t.empty()) continue;
     // One option per line, as PETSc reads an options file: a stray word would otherwise be
     // dropped without a word by the command-line parser.

@@ -85,6 +85,13 @@ ResultColumn Flag(const char *name, PetscBool ImpactResult::*field, Compute comp
 
 const char *const kAlways = "always";
 const char *const kNoHeld = "a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
+// A ball at rest (-ball_speed 0, struck by a swinging bat) has no ACOR and no incident energy E_in.
+bool              BallMoves(const Scenario &sc) { return sc.ball.speed > 0; }
+bool              BallMovesNoHeld(const Scenario &sc) { return BallMoves(sc) && ResultNoHeldDof(sc); }
+const char *const kBallMoves       = "a moving ball (-ball_speed > 0; a ball at rest has no ACOR and no E_in)";
+const char *const kBallMovesNoHeld = "a moving ball (-ball_speed > 0) and a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
+// The momenta's reference: the ball's, or a ball at rest's swinging bat's.
+PetscReal MomentumScale(const OutcomeFacts &f) { return f.sc->ball.speed > 0 ? f.sc->ball.mass * f.sc->ball.speed : std::abs(f.start.momentum); }
 
 // The ball's quantities that depend on its law: an elastic law keeps all the work done on it,
 // so the paper corrects its ACOR (and the ball's loss) by -ball_loss_factor.
@@ -110,8 +117,8 @@ std::vector<ResultColumn> OutcomeColumns()
 {
   return {
     Real("x", "m", &R::x, ResultAlways, kAlways, [](F f) -> double { return f.sc->impact.x; }, "impact point x_imp"),
-    Real("acor", "1", &R::acor, ResultAlways, kAlways, [](F f) -> double { return Acor(f); }, "apparent coefficient of restitution -v_b,final / v_i"),
-    Real("acor_corrected", "1", &R::acor_corrected, ResultAlways, kAlways, [](F f) -> double { return AcorCorrected(f); },
+    Real("acor", "1", &R::acor, BallMoves, kBallMoves, [](F f) -> double { return Acor(f); }, "apparent coefficient of restitution -v_b,final / v_i"),
+    Real("acor_corrected", "1", &R::acor_corrected, BallMoves, kBallMoves, [](F f) -> double { return AcorCorrected(f); },
          "linear law: acor x -ball_loss_factor; otherwise acor"),
     Real("contact_time", "s", &R::contact_time, ResultAlways, kAlways, [](F f) -> double { return f.contact->contact_time; }, "duration of the first contact"),
     Real("contact_time_total", "s", &R::contact_time_total, ResultAlways, kAlways, [](F f) -> double { return f.contact->contact_time_total; }, "contact time summed over all contacts"),
@@ -128,26 +135,26 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("energy_error", "1", &R::energy_error, ResultAlways, kAlways, [](F f) -> double { return (f.energy_end - f.energy_in) / f.energy_in; },
          "(E_end - E_0) / E_0 of the conserved total (ball work and dissipated energy included)"),
     Real("linear_momentum_error", "1", &R::linear_momentum_error, ResultMomentumInvariant, "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
-         [](F f) -> double { return (f.end.momentum - f.start.momentum) / (f.sc->ball.mass * f.sc->ball.speed); }, "change of the total linear momentum / (m_b v_i)"),
+         [](F f) -> double { return (f.end.momentum - f.start.momentum) / MomentumScale(f); }, "change of the total linear momentum / (m_b v_i) (a ball at rest: / the bat's)"),
     Real("angular_momentum_error", "1", &R::angular_momentum_error, ResultMomentumInvariant, "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
-         [](F f) -> double { return (f.end.angular_momentum - f.start.angular_momentum) / (f.sc->ball.mass * f.sc->ball.speed * f.sc->beam.length); },
-         "change of the angular momentum about x = 0 / (m_b v_i L)"),
+         [](F f) -> double { return (f.end.angular_momentum - f.start.angular_momentum) / (MomentumScale(f) * f.sc->beam.length); },
+         "change of the angular momentum about x = 0 / (m_b v_i L) (a ball at rest: the bat's momentum for m_b v_i)"),
     Real("beam_kinetic_end", "J", &R::beam_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_kinetic; }, "the beam's kinetic energy at the end"),
     Real("beam_strain_end", "J", &R::beam_strain_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_strain; }, "the beam's strain energy at the end"),
     Real("ball_kinetic_end", "J", &R::ball_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_kinetic; }, "the ball's kinetic energy at the end (its rebound)"),
     Real("ball_dissipated_end", "J", &R::ball_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return BallDissipated(f); },
          "energy dissipated in the ball (0 for the linear law)"),
-    Real("ball_loss_fraction", "1", &R::ball_loss_fraction, ResultAlways, kAlways,
+    Real("ball_loss_fraction", "1", &R::ball_loss_fraction, BallMoves, kBallMoves,
          [](F f) -> double {
            const BallParams &b = f.sc->ball;
            return (ContactElastic(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic : BallDissipated(f)) / f.E_in;
          },
          "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (linear)"),
-    Real("translation_fraction", "1", &R::translation_fraction, ResultNoHeldDof, kNoHeld, [](F f) -> double { return f.E_translation / f.E_in; },
+    Real("translation_fraction", "1", &R::translation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_translation / f.E_in; },
          "the beam's rigid translation P^2/2M at the end / E_in"),
-    Real("rotation_fraction", "1", &R::rotation_fraction, ResultNoHeldDof, kNoHeld, [](F f) -> double { return f.E_rotation / f.E_in; },
+    Real("rotation_fraction", "1", &R::rotation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_rotation / f.E_in; },
          "the beam's rigid rotation L_cm^2/2I_cm about its centre of mass at the end / E_in"),
-    Real("vibration_fraction", "1", &R::vibration_fraction, ResultNoHeldDof, kNoHeld,
+    Real("vibration_fraction", "1", &R::vibration_fraction, BallMovesNoHeld, kBallMovesNoHeld,
          [](F f) -> double { return (f.end.beam_kinetic + f.end.beam_strain - f.E_translation - f.E_rotation) / f.E_in; }, "the rest of the beam's energy at the end / E_in"),
     Real("bbs", "m/s", &R::bbs, ResultAlways, kAlways, [](F f) -> double { return -f.end.ball_v; }, "batted-ball speed, away from the bat (lab frame; a bat at rest: acor v_i)"),
     Real("collision_efficiency", "1", &R::collision_efficiency, ResultAlways, kAlways, [](F f) -> double { return CollisionEfficiency(f); },
@@ -189,7 +196,7 @@ std::vector<ResultColumn> CostAndLaterColumns()
     Real("dt_stable", "s", &R::dt_stable, ResultAlways, kAlways, nullptr, "explicit stability limit y*/omega_max (0: not explicit)"),
     Real("beam_dissipated_end", "J", &R::beam_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_dissipated; },
          "energy the beam's damping (and a grip's damper) dissipated by the end (0 undamped)"),
-    Real("damping_fraction", "1", &R::damping_fraction, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_dissipated / f.E_in; }, "beam_dissipated_end / E_in"),
+    Real("damping_fraction", "1", &R::damping_fraction, BallMoves, kBallMoves, [](F f) -> double { return f.end.beam_dissipated / f.E_in; }, "beam_dissipated_end / E_in"),
     Real("rigid_acor", "1", &R::rigid_acor, ResultFreeBeamAtRest, "a free beam at rest: no held dof, no -grip, no swing",
          [](F f) -> double { return RigidACOR(f.sc->ball.mass, RigidMassAt(f), f.sc->impact.rigid_loss_fraction); },
          "Eq. (11) with the loss fraction f (a sweep's -rigid_loss_fraction; 0 for -task impact)"),

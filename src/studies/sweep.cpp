@@ -2,6 +2,7 @@
 // See sweep.hpp.
 #include "studies/sweep.hpp"
 
+#include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
@@ -205,6 +206,14 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
       PetscCheck(used, farm.group, PETSC_ERR_ARG_WRONG,
                  "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is an option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ts_type, beam_theory",
                  a.name == "impact_x" && !plan.sweep_x.empty() ? "-sweep_x:" : "-sweep", a.name.c_str(), a.spec.c_str(), a.name.c_str());
+    }
+    // An axis that changes nothing: every point the same (unless another axis varies what it needs).
+    for (const OptionWithoutEffect &o : OptionsWithoutEffect()) {
+      bool varied = false;
+      for (const SweepAxis &a : plan.axes) varied = varied || o.needs == "-" + a.name;
+      for (const SweepAxis &a : plan.axes)
+        PetscCheck(varied || o.name != "-" + a.name, farm.group, PETSC_ERR_ARG_WRONG, "-sweep %s=%s is not allowed: %s has no effect in this sweep (%s), so every point would be the same", a.name.c_str(), a.spec.c_str(), o.name.c_str(),
+                   o.why.c_str());
     }
     PetscCall(OptionsCheckUnused(farm.group));
     PetscCall(SweepCaseOptionsClear(plan));
