@@ -13,6 +13,8 @@
 #      -impact_max_contacts after status-5 rows): the failed points are computed again and the
 #      change is recorded (sweep_retry_changed); another change is still refused.
 #   4. A per-point note (a pivot moved onto a node) is said once per sweep, not once per point.
+#   5. scripts/plot_bat.py --sweep refuses a sweep of another beam; plot_sweep.py of a swinging
+#      bat draws the batted-ball speed without the Eq. (11) curve, and refuses its acor.
 #
 #   tests/output_safety.sh path/to/beamimpact scratch_dir [mpiexec]
 set -uo pipefail
@@ -127,6 +129,27 @@ else fail "retry after raising -impact_max_contacts: exit $rc"; cat retry2.log; 
 "$exe" -task sweep "${small[@]}" -beam_pivot 0.5 -impact_after time -sweep "impact_x=0.6:1.0:21" -output pivot.h5 >pivot.log 2>&1 || { fail "pivot sweep"; cat pivot.log; }
 n=$(grep -c "beam_pivot 0.5 is placed on the nearest node" pivot.log)
 ((n == 1)) && pass "the pivot note is said once in a 21-point sweep" || { fail "the pivot note is said $n times"; grep note pivot.log | head -5; }
+
+# --- 5. plot scripts check what they are given -------------------------------------------------
+if [[ -n "$python" ]]; then
+  bat=(-options_file "$src/options/bats/r161.opts" -beam_nodes 41)
+  "$exe" -task modes "${bat[@]}" -output bat_modes.h5 >/dev/null 2>&1 || fail "modes of the bat"
+  "$exe" -task sweep "${small[@]}" -impact_after time -sweep "impact_x=0.6:1.0:3" -sweep_quiet -output beam_sweep.h5 >/dev/null 2>&1 || fail "sweep of a uniform beam"
+  swing=("${bat[@]}" -options_file "$src/options/balls/baseball.opts" -options_file "$src/options/integrators/rk4.opts" -bat_speed 24 -bat_angular_velocity 51 -ball_speed 40 -impact_after time)
+  "$exe" -task sweep "${swing[@]}" -sweep "impact_x=0.6:0.8:3" -sweep_quiet -output swing_sweep.h5 >swing.log 2>&1 || { fail "sweep of the swinging bat"; tail -3 swing.log; }
+  out=$("$python" "$src/scripts/plot_bat.py" bat_modes.h5 --sweep beam_sweep.h5 -o other.png 2>&1)
+  (($? != 0)) && grep -q "is a sweep of another beam than bat_modes.h5" <<<"$out" && [[ ! -e other.png ]] && pass "plot_bat.py --sweep refuses a sweep of another beam" ||
+    fail "plot_bat.py --sweep of another beam: $out"
+  out=$("$python" "$src/scripts/plot_bat.py" bat_modes.h5 --sweep swing_sweep.h5 -o same.png 2>&1)
+  (($? == 0)) && [[ -s same.png ]] && grep -q "sweet spot" <<<"$out" && pass "plot_bat.py --sweep of the same bat draws its sweet spots" || fail "plot_bat.py --sweep of the same bat: $out"
+  out=$("$python" "$src/scripts/plot_sweep.py" swing_sweep.h5 -o swing.png 2>&1)
+  (($? == 0)) && grep -q "drawing bbs" <<<"$out" && grep -q "Eq. (11) curve: not an ACOR plot" <<<"$out" && [[ -s swing.png ]] &&
+    pass "plot_sweep.py of a swinging sweep draws the batted-ball speed, no Eq. (11) curve" || fail "plot_sweep.py of a swinging sweep: $out"
+  out=$("$python" "$src/scripts/plot_sweep.py" swing_sweep.h5 acor -o swing_acor.png 2>&1)
+  (($? != 0)) && grep -q "not the ACOR of a bat at rest" <<<"$out" && pass "plot_sweep.py refuses the acor of a swinging bat" || fail "plot_sweep.py acor of a swinging bat: $out"
+else
+  echo "SKIP: plot scripts: no Python with h5py"
+fi
 
 echo "output_safety: $fails failure(s)"
 exit $((fails > 0))
