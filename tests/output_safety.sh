@@ -80,7 +80,7 @@ done
 sweep_pid=$!
 for ((i = 0; i < 300; ++i)); do [[ -e locked.h5 && -e locked.h5.parts/lock ]] && break; sleep 0.05; done
 if kill -0 $sweep_pid 2>/dev/null; then
-  refused "-output_overwrite does not replace a file a running sweep holds" "is being written by a sweep that is still running" locked.h5 \
+  refused "-output_overwrite does not replace a file a running sweep holds" "is being written by another sweep that is still running" locked.h5 \
     "$exe" -task modes -beam_nodes 21 -output locked.h5 -output_overwrite
 else fail "the sweep ended before the lock could be tried"; fi
 kill $sweep_pid 2>/dev/null; wait $sweep_pid 2>/dev/null

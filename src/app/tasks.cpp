@@ -280,7 +280,7 @@ PetscErrorCode OutputCheckNotLocked(MPI_Comm comm, const std::string &out)
     held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
     close(fd); // releases the lock if this took it
   }
-  PetscCheck(!held, comm, PETSC_ERR_FILE_OPEN, "-output %s is being written by a sweep that is still running (%s is held); wait for it or choose another -output", out.c_str(), lock.c_str());
+  PetscCheck(!held, comm, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", out.c_str(), lock.c_str());
   PetscFunctionReturn(0);
 }
 
