@@ -158,11 +158,18 @@ ls | grep -q '^kill.h5.tmp$' && fail "kill.h5.tmp left after the completed resum
 [[ -d kill.h5.parts ]] && fail "kill.h5.parts left after the completed resume"
 
 # --- 3. an error under mpirun: one line, exit 1 ----------------------------------------------
+# Every rank fails alike (bad input): they agree, end through SlepcFinalize, no MPI_Abort.
+# Open MPI's own exit-status notice is left out with OMPI_MCA_orte_execute_quiet=1 (mpirun -q):
+# then stderr is the one line.
 "$mpiexec" -n 2 "$exe" -beam_length -1 -output none >np2_error.log 2>&1
 rc=$?
 lines=$(grep -c "beamimpact: error" np2_error.log)
-if ((rc == 1 && lines == 1)) && ! grep -qE "MPI_ABORT|Data unpack|unpack would read" np2_error.log; then pass "an error on 2 ranks: one line, exit 1, no MPI_Abort noise"
+if ((rc == 1 && lines == 1)) && ! grep -qE "MPI_ABORT|Data unpack|unpack would read" np2_error.log; then pass "an error on 2 ranks: one error line, exit 1, no MPI_Abort"
 else fail "an error on 2 ranks: exit $rc, $lines error lines:"; cat np2_error.log; fi
+OMPI_MCA_orte_execute_quiet=1 "$mpiexec" -n 2 "$exe" -beam_length -1 -output none >np2_quiet.log 2>&1
+rc=$?
+if ((rc == 1)) && [[ $(wc -l <np2_quiet.log) == 1 ]] && grep -q "^beamimpact: error: -beam_length -1 is not allowed" np2_quiet.log; then pass "... with mpirun -q: that one line is all"
+else fail "an error on 2 ranks with mpirun -q: exit $rc:"; cat np2_quiet.log; fi
 
 echo "fault_injection: $fails failure(s)"
 exit $((fails > 0))
