@@ -70,7 +70,8 @@ TOL = {
 
 # Columns of /results that are NaN where they do not apply (the results table, issue 20: a swinging
 # bat's, a pivoted rig's, Eq. (11) only for a free beam at rest, the hands', a monitored segment's);
-# a NaN anywhere else, and an Inf anywhere, is a wrong cell.
+# a NaN anywhere else, and an Inf anywhere, is a wrong cell. read_results leaves out the columns
+# whose attribute applies is 0; this list is for files written without that attribute.
 NAN_WHERE_NOT_APPLICABLE = {"bbs", "collision_efficiency", "bat_speed_end", "bat_angular_velocity_end", "recoil_factor", "bbcor",
                             "rigid_acor", "rigid_forced_loss_fraction", "grip_force_peak", "grip_force_peak_time", "grip_stored_end",
                             "hand_work_end", "segment_kinetic_peak", "segment_kinetic_peak_time"}
@@ -364,7 +365,8 @@ def read_results(path):
     open for the derived quantities of the checks (res["_file"])."""
     try:
         f = h5py.File(path, "r")
-        res = {k: float(np.asarray(f["results"][k][()]).ravel()[0]) for k in f["results"]}
+        res = {k: float(np.asarray(f["results"][k][()]).ravel()[0]) for k in f["results"]
+               if int(f["results"][k].attrs.get("applies", 1))}  # a column that does not apply to the case is NaN: left out
         if "events" in f:
             res["_events_kind"] = np.asarray(f["events"]["kind"][()])
             res["_events_compression"] = np.asarray(f["events"]["compression"][()])

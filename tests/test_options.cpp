@@ -208,7 +208,6 @@ TEST(OptionTables, EveryRowIsInHelpWithTheDefaultItStates)
     for (const OptionSpec &s : m->options) {
       const auto it = shown.find(s.name);
       ASSERT_NE(shown.end(), it) << s.name << " (module " << m->name << ") is not in -help";
-      if (m->name == "interim") continue; // placeholders until their modules' own tables (app/registry.cpp)
       if (s.def.empty() && s.kind != OptionKind::Text && s.kind != OptionKind::File && s.kind != OptionKind::RealList) continue; // no default: the feature is off
       // the program's readers list an option once, with the value the code starts from; the
       // PETSc table's block (last) lists PETSc's options with the program's defaults
@@ -238,7 +237,6 @@ TEST(OptionTables, NamesAreUniqueAndUnitsKnown)
 {
   std::map<std::string, std::string> seen;
   for (const OptionModule *m : OptionModules()) {
-    if (m->name == "interim") continue; // rows their modules' own tables replace
     for (const OptionSpec &s : m->options) {
       EXPECT_EQ(0u, seen.count(s.name)) << s.name << " is in the tables of " << seen[s.name] << " and " << m->name;
       seen[s.name] = m->name;

@@ -6,8 +6,8 @@
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
-#include "run/modal_reference.hpp"
 #include "run/outcome.hpp"
+#include "run/reference.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence.hpp"
@@ -25,6 +25,8 @@
 #include <cerrno>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace beamimpact {
@@ -42,35 +44,6 @@ const TaskEntry Tasks[] = {
   {"sweep", TaskSweep},
   {"convergence", TaskConvergence},
 };
-
-const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
-
-// -reference: PETSC_TRUE for the exact modal solution instead of the PETSc TS.
-PetscErrorCode ImpactReferenceFromOptions(MPI_Comm comm, PetscBool *modal)
-{
-  PetscEnum reference = (PetscEnum)0;
-
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
-  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring, Rayleigh damping allowed; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
-  PetscReal max_gb = ModalReferenceMemoryLimit() / 1e9;
-  PetscCall(PetscOptionsReal("-reference_max_memory", "-reference modal: refuse a beam whose dense modal matrices need more than this (GB; default half of the physical memory)", "", max_gb, &max_gb, NULL));
-  PetscCheck(max_gb > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-reference_max_memory %g is not allowed: it must be > 0 (GB)", (double)max_gb);
-  PetscOptionsEnd();
-  *modal = reference == 1 ? PETSC_TRUE : PETSC_FALSE;
-  PetscFunctionReturn(0);
-}
-
-// The exact modal solution: no integrator, so neither monitors nor integrator options.
-PetscErrorCode ImpactRunModal(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
-  PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-  PetscCall(ModalReferenceRun(sc, res));
-  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res->ts_type.c_str(), res->formulation.c_str(), (double)res->dt_nominal));
-  PetscFunctionReturn(0);
-}
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
 // saying where it went.
@@ -90,14 +63,39 @@ PetscErrorCode TaskWriteOutput(MPI_Comm comm, const std::string &output, Record 
 
 } // namespace
 
+// The summary line: columns of the results table (their values and units), by the short labels
+// the line has always used; "steps" counts the event re-steps too.
+static std::string ImpactSummaryLine(const ImpactResult &r)
+{
+  struct Item {
+    const char *label, *column, *format;
+  };
+  static const Item items[] = {{"x", "x", "%.4f"},
+                               {"acor", "acor", "%.6f"},
+                               {"acor_corrected", "acor_corrected", "%.6f"},
+                               {"contact_time", "contact_time", "%.4e"},
+                               {"peak_force", "peak_force", "%.4e"},
+                               {"max_compression", "max_compression", "%.4e"},
+                               {"contacts", "contacts", "%.0f"},
+                               {"steps", "steps", "%.0f"},
+                               {"rejected", "rejected_steps", "%.0f"},
+                               {"failed", "failed_solves", "%.0f"},
+                               {"fevals", "function_evals", "%.0f"},
+                               {"wall", "wall_time", "%.3e"}};
+  std::string line;
+  for (const Item &it : items) {
+    const ResultColumn *c = ImpactResultColumn(it.column);
+    char                value[64];
+    std::snprintf(value, sizeof value, it.format, c->Get(r) + (std::strcmp(it.column, "steps") == 0 ? (double)r.event_steps : 0.0));
+    line += (line.empty() ? "" : "  ") + std::string(it.label) + " " + value + (std::strcmp(c->unit, "1") ? " " + std::string(c->unit) : "");
+  }
+  return line;
+}
+
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm,
-                        "x %.4f m  acor %.6f  acor_corrected %.6f  contact_time %.4e s  peak_force %.4e N  max_compression %.4e m  contacts %" PetscInt_FMT
-                        "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  failed %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
-                        (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
-                        r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  PetscCall(PetscPrintf(comm, "%s%s\n", ImpactSummaryLine(r).c_str(), r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
   if (taken < asked) {
     std::string late;
@@ -116,11 +114,15 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
                           (double)sc.beam.grip.x_b, (double)r.grip_force_peak, (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
-  if (sc.beam.has_pivot) {
+  if (ResultFreePivot(sc)) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
     PetscCall(PetscPrintf(comm, "pivot at %.4f m: I_p %.5f kg m^2, recoil factor r %.6f, e_A %.6f, BBCOR = e_A (1 + r) + r = %.6f\n", (double)sc.beam.pivot_x, (double)rig.inertia_pivot,
                           (double)r.recoil_factor, (double)r.collision_efficiency, (double)r.bbcor));
-  }
+  } else if (sc.beam.has_pivot)
+    PetscCall(PetscPrintf(comm,
+                          "pivot at %.4f m, but the beam is also held (%s): it cannot turn freely about the pivot, so no recoil factor or BBCOR is reported (NaN in /results: they describe a "
+                          "rig free to turn about its pivot); e_A %.6f\n",
+                          (double)sc.beam.pivot_x, PivotHeldText(sc).c_str(), (double)r.collision_efficiency));
   PetscFunctionReturn(0);
 }
 
@@ -137,25 +139,25 @@ PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
 
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 {
-  Scenario     sc;
-  ImpactResult res;
-  PetscBool    modal;
+  Scenario               sc;
+  const ReferenceMethod *method;
+  ReferenceSolution      sol;
+  std::string            why;
 
   PetscFunctionBeginUser;
   PetscCall(ScenarioFromOptions(comm, &sc));
   PetscCall(PrintBeamBody(comm, sc.beam));
-  PetscCall(ImpactReferenceFromOptions(comm, &modal));
-  if (modal) PetscCall(ImpactRunModal(comm, sc, &res));
-  else {
-    sc.impact.check_unused_options = PETSC_TRUE;
-    sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
-    PetscCall(ImpactRun(comm, sc, &res));
-  }
+  PetscCall(ReferenceMethodFromOptions(comm, &method)); // -reference: ts (the default), modal, ...
+  PetscCheck(method->applies(sc, &why), comm, PETSC_ERR_SUP, "-reference %s %s", method->name, why.c_str());
+  sc.impact.check_unused_options = PETSC_TRUE;
+  sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
+  PetscCall(method->run(comm, sc, ReferenceSettings(), &sol));
+  const ImpactResult &res = sol.result;
   const std::string cut = ImpactCutOffReason(sc, res); // no number from a contact cut short
   PetscCheck(cut.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", cut.c_str());
   PetscCall(ImpactPrintSummary(comm, sc, res));
   PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
-                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam); }));
+                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc); }));
   PetscFunctionReturn(0);
 }
 
@@ -205,7 +207,7 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out);
 PetscErrorCode ReadEveryOption(MPI_Comm comm)
 {
   Scenario        sc;
-  PetscBool       modal;
+  const ReferenceMethod *method;
   ModesParams     mp;
   SweepPlan       plan;
   ConvergencePlan cp;
@@ -215,10 +217,10 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   (void)ScenarioFromOptions(comm, &sc);
-  (void)ImpactReferenceFromOptions(comm, &modal);
+  (void)ReferenceMethodFromOptions(comm, &method);
   (void)ModesParamsFromOptions(comm, &mp, nullptr);
   (void)SweepPlanFromOptions(comm, &plan);
-  (void)ConvergencePlanFromOptions(comm, sc.ball, &cp);
+  (void)ConvergencePlanFromOptions(comm, sc, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
@@ -272,14 +274,19 @@ PetscErrorCode OutputCheckNotAnInput(MPI_Comm comm, const std::string &out)
 PetscErrorCode OutputCheckNotLocked(MPI_Comm comm, const std::string &out)
 {
   const std::string lock = out + ".parts/lock";
-  bool              held = false;
+  int               held = 0;
+  PetscMPIInt       rank;
 
   PetscFunctionBeginUser;
-  const int fd = open(lock.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd >= 0) {
-    held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
-    close(fd); // releases the lock if this took it
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) { // one rank tries: two trying at once would each see the other's attempt as a holder
+    const int fd = open(lock.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+      held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+      close(fd); // releases the lock if this took it
+    }
   }
+  PetscCallMPI(MPI_Bcast(&held, 1, MPI_INT, 0, comm)); // rank 0's try done before the sweep's own lock
   PetscCheck(!held, comm, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", out.c_str(), lock.c_str());
   PetscFunctionReturn(0);
 }

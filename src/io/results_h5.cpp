@@ -17,60 +17,6 @@
 
 namespace beamimpact {
 
-const std::vector<ResultColumn> &ImpactResultColumns()
-{
-  using R = ImpactResult;
-  static const std::vector<ResultColumn> cols = {
-    {"x", "m", false, [](const R &r) { return r.x; }},
-    {"acor", "1", false, [](const R &r) { return r.acor; }},
-    {"acor_corrected", "1", false, [](const R &r) { return r.acor_corrected; }},
-    {"contact_time", "s", false, [](const R &r) { return r.contact_time; }},
-    {"contact_time_total", "s", false, [](const R &r) { return r.contact_time_total; }},
-    {"peak_force", "N", false, [](const R &r) { return r.peak_force; }},
-    {"max_compression", "m", false, [](const R &r) { return r.max_compression; }},
-    {"contacts", "1", true, [](const R &r) { return (double)r.contacts; }},
-    {"ended_in_contact", "1", true, [](const R &r) { return (double)r.ended_in_contact; }},
-    {"compression_beyond_radius", "1", true, [](const R &r) { return (double)r.compression_beyond_radius; }},
-    {"ball_final_velocity", "m/s", false, [](const R &r) { return r.ball_final_velocity; }},
-    {"final_time", "s", false, [](const R &r) { return r.final_time; }},
-    {"energy_error", "1", false, [](const R &r) { return r.energy_error; }},
-    {"linear_momentum_error", "1", false, [](const R &r) { return r.linear_momentum_error; }},
-    {"angular_momentum_error", "1", false, [](const R &r) { return r.angular_momentum_error; }},
-    {"beam_kinetic_end", "J", false, [](const R &r) { return r.beam_kinetic_end; }},
-    {"beam_strain_end", "J", false, [](const R &r) { return r.beam_strain_end; }},
-    {"ball_dissipated_end", "J", false, [](const R &r) { return r.ball_dissipated_end; }},
-    {"ball_loss_fraction", "1", false, [](const R &r) { return r.ball_loss_fraction; }},
-    {"translation_fraction", "1", false, [](const R &r) { return r.translation_fraction; }},
-    {"rotation_fraction", "1", false, [](const R &r) { return r.rotation_fraction; }},
-    {"vibration_fraction", "1", false, [](const R &r) { return r.vibration_fraction; }},
-    {"bbs", "m/s", false, [](const R &r) { return r.bbs; }},
-    {"collision_efficiency", "1", false, [](const R &r) { return r.collision_efficiency; }},
-    {"bat_speed_end", "m/s", false, [](const R &r) { return r.bat_speed_end; }},
-    {"bat_angular_velocity_end", "rad/s", false, [](const R &r) { return r.bat_angular_velocity_end; }},
-    {"recoil_factor", "1", false, [](const R &r) { return r.recoil_factor; }},
-    {"bbcor", "1", false, [](const R &r) { return r.bbcor; }},
-    {"grip_force_peak", "N", false, [](const R &r) { return r.grip_force_peak; }},
-    {"grip_force_peak_time", "s", false, [](const R &r) { return r.grip_force_peak_time; }},
-    {"grip_stored_end", "J", false, [](const R &r) { return r.grip_stored_end; }},
-    {"hand_work_end", "J", false, [](const R &r) { return r.hand_work_end; }},
-    {"segment_kinetic_peak", "J", false, [](const R &r) { return r.segment_kinetic_peak; }},
-    {"segment_kinetic_peak_time", "s", false, [](const R &r) { return r.segment_kinetic_peak_time; }},
-    {"failed_solves", "1", true, [](const R &r) { return (double)r.failed_solves; }},
-    {"steps", "1", true, [](const R &r) { return (double)r.steps; }},
-    {"rejected_steps", "1", true, [](const R &r) { return (double)r.rejected_steps; }},
-    {"event_steps", "1", true, [](const R &r) { return (double)r.event_steps; }},
-    {"function_evals", "1", true, [](const R &r) { return (double)r.function_evals; }},
-    {"jacobian_evals", "1", true, [](const R &r) { return (double)r.jacobian_evals; }},
-    {"jacobian_assemblies", "1", true, [](const R &r) { return (double)r.jacobian_assemblies; }},
-    {"nonlinear_its", "1", true, [](const R &r) { return (double)r.nonlinear_its; }},
-    {"linear_its", "1", true, [](const R &r) { return (double)r.linear_its; }},
-    {"wall_time", "s", false, [](const R &r) { return r.wall_time; }},
-    {"dt_nominal", "s", false, [](const R &r) { return r.dt_nominal; }},
-    {"dt_stable", "s", false, [](const R &r) { return r.dt_stable; }},
-  };
-  return cols;
-}
-
 // An attribute of loc (replaced if present): one value of memory type `mem` stored as
 // `file_type`. Every HDF5 call checked, every handle closed on the way out.
 static PetscErrorCode WriteScalarAttr(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *value)
@@ -237,33 +183,47 @@ PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vect
   PetscFunctionReturn(0);
 }
 
-// /results: one row per result (the integer columns as integer datasets: every row has a
-// number); a damped beam's energy term besides.
-static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results, const BeamParams &beam)
+// /results: one row per result, one dataset per column of the table (the counts as integer
+// datasets: every row has a number; NaN where a column does not apply), each with the table's
+// description and whether it applies to the scenario.
+static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results, const Scenario &sc)
 {
   PetscFunctionBeginUser;
   hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  for (auto &col : ImpactResultColumns()) {
+  for (const ResultColumn &col : ImpactResultColumns()) {
     if (col.integer) {
       std::vector<long long> v;
-      for (auto &r : results) v.push_back((long long)col.get(r));
+      for (auto &r : results) v.push_back((long long)col.Get(r));
       PetscCall(H5WriteDatasetInt1D(g, col.name, v, col.unit));
     } else {
       std::vector<double> v;
-      for (auto &r : results) v.push_back(col.get(r));
+      for (auto &r : results) v.push_back(col.Get(r));
       PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
     }
-  }
-  if (beam.damping_mass > 0 || beam.damping_stiffness > 0) { // the beam's Rayleigh damping: one more energy term
-    std::vector<double> d, f;
-    for (auto &r : results) {
-      d.push_back(r.beam_dissipated_end);
-      f.push_back(r.damping_fraction);
-    }
-    PetscCall(H5WriteDataset1D(g, "beam_dissipated_end", d, "J"));
-    PetscCall(H5WriteDataset1D(g, "damping_fraction", f, "1"));
+    RunRecord a;
+    a.add("description", col.description);
+    a.add("applies", col.applies(sc) ? 1 : 0);
+    a.add("applies_when", col.applies_text);
+    hid_t ds = H5Dopen2(g, col.name, H5P_DEFAULT);
+    PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot open dataset %s", col.name);
+    PetscCall(H5WriteAttributes(ds, a));
+    H5Dclose(ds);
   }
   H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+// Root attributes of an impact file beside the run record: the table's column order and the
+// impact's scales (for studies that judge a run against them).
+static PetscErrorCode H5WriteImpactAttributes(hid_t file, const ImpactResult &r)
+{
+  RunRecord a;
+
+  PetscFunctionBeginUser;
+  a.add("results_columns", ImpactResultColumnNames());
+  a.add("contact_time_scale", r.scales.contact_time_scale);
+  a.add("compression_scale", r.scales.compression_scale);
+  PetscCall(H5WriteAttributes(file, a));
   PetscFunctionReturn(0);
 }
 
@@ -455,15 +415,16 @@ PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam)
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc)
 {
   PetscFunctionBeginUser;
   PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode {
     PetscFunctionBeginUser;
-    PetscCall(H5WriteResults(file, results, beam));
+    PetscCall(H5WriteResults(file, results, sc));
     if (!results.empty()) {
+      PetscCall(H5WriteImpactAttributes(file, results[0]));
       PetscCall(H5WriteEvents(file, results[0]));
-      PetscCall(H5WriteSeries(file, results[0].series, beam));
+      PetscCall(H5WriteSeries(file, results[0].series, sc.beam));
     }
     PetscFunctionReturn(0);
   }));

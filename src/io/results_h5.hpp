@@ -1,11 +1,13 @@
-// HDF5 output of impacts: the columns of the result table (shared by the
-// summary line, the file and later sweeps), run attributes, time series and
-// snapshots; and of a beam's modes. Files are written by rank 0 of the task's communicator with the
+// HDF5 output of impacts: the results table (run/results_table.hpp: its columns, units and
+// NaN where a column does not apply), run attributes and the impact's scales, events, time
+// series and snapshots; and of a beam's modes. Files are written by rank 0 of the task's communicator with the
 // HDF5 C API (the data are small: one row per impact, 1-D beam snapshots).
 #pragma once
 
 #include "io/run_record.hpp"
 #include "run/impact.hpp"
+#include "run/results_table.hpp"
+#include "run/scenario.hpp"
 #include "solvers/modes.hpp"
 
 #include <functional>
@@ -15,19 +17,14 @@
 
 namespace beamimpact {
 
-// One quantity of ImpactResult: /results/<name>, one row per impact. An integer column is an
-// integer dataset in a -task impact file; a sweep's /results stay double (NaN in failed rows).
-struct ResultColumn {
-  const char                              *name;
-  const char                              *unit;
-  bool                                     integer;
-  std::function<double(const ImpactResult &)> get;
-};
-const std::vector<ResultColumn> &ImpactResultColumns();
-
-// Writes a new file (replacing any, H5ResultsFileWrite): root attributes, /results, and for the
+// Writes a new file (replacing any, H5ResultsFileWrite) for results of the scenario sc: root attributes (the record,
+// with the ball's rigid-wall values ball_wall_contact_time and ball_wall_cor; the table's column
+// order results_columns and the first result's scales: contact_time_scale, compression_scale),
+// /results (every column of the
+// table, one row per result, with the attributes unit, description, applies (1 or 0: whether
+// the column applies to sc; NaN where it does not) and applies_when (in words)), and for the
 // first result its /events, /series and /snapshots when they hold data.
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam);
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc);
 
 // Writes a new file (replacing any, H5ResultsFileWrite) on rank 0 of comm: root attributes; /modes with the
 // frequency (Hz), period (s) and omega (rad/s) of each mode, the deflection shapes (one row per

@@ -7,7 +7,6 @@
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
-#include "model/rigid.hpp"
 #include "run/outcome.hpp"
 #include "studies/sweep_farm.hpp"
 #include "studies/sweep_notes.hpp"
@@ -31,8 +30,6 @@ std::vector<SweepColumn> SweepColumns(const SweepPlan &plan)
   for (const SweepAxis &a : plan.axes) c.push_back({a.name, a.unit, false, false, a.labels});
   c.push_back({"status", "1", false, true});
   for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time", rc.integer});
-  c.push_back({"rigid_acor", "1", false});
-  c.push_back({"rigid_forced_loss_fraction", "1", false});
   return c;
 }
 
@@ -66,6 +63,7 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
   // The case's options stay set while it runs (the integrator reads its own from them).
   ierr = SweepCaseScenario(comm, plan, index, true, &c, &status, reason);
   if (!ierr && status == SweepOk) {
+    c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
     ierr = ImpactRun(comm, c, result);
     if (ierr) {
       status = SweepStatusOfError(ierr);
@@ -85,16 +83,9 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
   row->insert(row->end(), v.begin(), v.end());
   row->push_back((double)status);
   if (status == SweepOk) {
-    const ImpactResult &r = *result;
-    // Rigid-body model, Eq. (11), with the beam's own mass, centre of mass and inertia (for the
-    // paper's uniform beam: M = mu L, I_cm = M L^2 / 12 about its centre).
-    const BeamRigidBody body = BeamRigidBodyOf(c.beam);
-    const PetscReal     M_e  = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(r.x - body.x_cm));
-    for (auto &rc : ImpactResultColumns()) row->push_back(rc.get(r));
-    row->push_back(RigidACOR(c.ball.mass, M_e, plan.rigid_loss_fraction));
-    row->push_back(RigidForcedLossFraction(c.ball.mass, M_e, r.acor_corrected));
+    for (auto &rc : ImpactResultColumns()) row->push_back(rc.Get(*result)); // the results table, NaN where a column does not apply
     reason->clear();
-  } else row->resize(row->size() + ImpactResultColumns().size() + 2, nan);
+  } else row->resize(row->size() + ImpactResultColumns().size(), nan);
   PetscFunctionReturn(0);
 }
 

@@ -535,6 +535,9 @@ static bool WriteStrings(hid_t g, const char *name, const std::vector<std::strin
   hid_t s  = H5Screate_simple(1, &n, NULL);
   hid_t d  = H5Dcreate2(g, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   bool  ok = d >= 0 && (n == 0 || H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
+  RunRecord unit; // every /results dataset has a unit
+  unit.add("unit", "text (the error of a failed point; empty where status = 0)");
+  ok = ok && H5WriteAttributes(d, unit) == 0;
   if (d >= 0) H5Dclose(d);
   H5Sclose(s);
   H5Tclose(t);
