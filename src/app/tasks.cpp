@@ -18,8 +18,12 @@
 
 #include <petscts.h>
 #include <slepceps.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <algorithm>
 #include <cstdio>
@@ -252,11 +256,53 @@ PetscErrorCode PrintAllOptions(MPI_Comm comm)
 
 namespace {
 
+// -output may name no input of the run (an options file, an include, a table an option names):
+// the same file (inode) as any of them is refused.
+PetscErrorCode OutputCheckNotAnInput(MPI_Comm comm, const std::string &out)
+{
+  std::vector<InputFile> inputs;
+  struct stat            o, i;
+
+  PetscFunctionBeginUser;
+  if (stat(out.c_str(), &o) != 0) PetscFunctionReturn(0);
+  PetscCall(RunInputFiles(&inputs));
+  for (const InputFile &f : inputs)
+    PetscCheck(stat(f.path.c_str(), &i) != 0 || i.st_dev != o.st_dev || i.st_ino != o.st_ino, comm, PETSC_ERR_FILE_OPEN,
+               "-output %s is not allowed: it is an input of this run (%s %s); it would be replaced by the results. Give another -output", out.c_str(), f.option.c_str(), f.path.c_str());
+  PetscFunctionReturn(0);
+}
+
+// A sweep running onto out holds out.parts/lock (studies/sweep_store.hpp): no task replaces
+// its file meanwhile, -output_overwrite or not.
+PetscErrorCode OutputCheckNotLocked(MPI_Comm comm, const std::string &out)
+{
+  const std::string lock = out + ".parts/lock";
+  int               held = 0;
+  PetscMPIInt       rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) { // one rank tries: two trying at once would each see the other's attempt as a holder
+    const int fd = open(lock.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+      held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+      close(fd); // releases the lock if this took it
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&held, 1, MPI_INT, 0, comm)); // rank 0's try done before the sweep's own lock
+  PetscCheck(!held, comm, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", out.c_str(), lock.c_str());
+  PetscFunctionReturn(0);
+}
+
 // -output: refused before any work if it cannot be written (empty name, missing or read-only
-// directory) or if it would replace a file another task wrote (without -output_overwrite).
+// directory), if it is an input of the run or a file a running sweep holds, if it is a file of
+// another program (not an HDF5 results file of beamimpact: a text file, another program's HDF5;
+// an empty file may be replaced), or if it would replace a file another task wrote (without
+// -output_overwrite).
 PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *task)
 {
-  PetscBool overwrite = PETSC_FALSE;
+  PetscBool       overwrite = PETSC_FALSE;
+  ResultsFileInfo info;
   PetscFunctionBeginUser;
   if (out.empty()) PetscFunctionReturn(0);
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_overwrite", &overwrite, NULL));
@@ -265,10 +311,14 @@ PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *ta
   PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", out.c_str(), dir.c_str());
   struct stat st;
   PetscCheck(stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s%s%s.h5)", out.c_str(), out.c_str(), out.back() == '/' ? "" : "/", task);
-  std::string other;
-  PetscCall(ResultsFileTask(out, &other));
-  PetscCheck(other.empty() || other == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
-             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", out.c_str(), other.c_str(), task);
+  PetscCall(OutputCheckNotAnInput(comm, out));
+  PetscCall(OutputCheckNotLocked(comm, out));
+  PetscCall(ResultsFileInspect(out, &info));
+  PetscCheck(!info.exists || info.size == 0 || info.Ours(), comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: it exists and is %s, not a results file of beamimpact; -task %s will not replace it (-output_overwrite neither): give another -output, or remove the file first",
+             out.c_str(), info.hdf5 ? "an HDF5 file of another program" : "not an HDF5 file", task);
+  PetscCheck(info.task.empty() || info.task == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", out.c_str(), info.task.c_str(), task);
   PetscFunctionReturn(0);
 }
 

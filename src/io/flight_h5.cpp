@@ -45,15 +45,12 @@ PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const FlightResult &r)
+// /results (one row) and /series of the flight r, into the open file.
+static PetscErrorCode FlightWriteGroups(hid_t file, const std::string &path, const FlightResult &r)
 {
-  long long file;
-
   PetscFunctionBeginUser;
-  PetscCall(H5ResultsFileCreate(comm, path, record, &file));
-  if (file < 0) PetscFunctionReturn(0);
   const FlightLanding &l = r.landing;
-  hid_t                g = H5Gcreate2((hid_t)file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t                g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /results in %s", path.c_str());
   const struct {
     const char *name, *unit;
@@ -73,7 +70,7 @@ PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, co
   PetscCall(H5WriteDatasetInt1D(g, "function_evals", {(long long)r.function_evals}, "1"));
   H5Gclose(g);
   const FlightSeries &q = r.series;
-  g                     = H5Gcreate2((hid_t)file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  g                     = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /series in %s", path.c_str());
   PetscCall(H5WriteDataset1D(g, "time", q.t, "s"));
   PetscCall(H5WriteDataset1D(g, "x", q.x, "m"));
@@ -84,7 +81,17 @@ PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, co
   PetscCall(H5WriteDataset1D(g, "vz", q.vz, "m/s"));
   PetscCall(H5WriteDataset1D(g, "spin", q.spin, "rad/s"));
   H5Gclose(g);
-  H5Fclose((hid_t)file);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const FlightResult &r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode { // whole or not at all
+    PetscFunctionBeginUser;
+    PetscCall(FlightWriteGroups((hid_t)file, path, r));
+    PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
 

@@ -161,22 +161,21 @@ std::string OrderText(const ConvergenceOrder &o)
 PetscErrorCode ConvergenceFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const ConvergencePlan &plan, const ConvergenceReference *ref,
                                     const std::vector<std::vector<ConvergenceRun>> &all, const RunRecord &summary, const ConvergenceSpatial *sp)
 {
-  long long file;
-
   PetscFunctionBeginUser;
-  PetscCall(H5ResultsFileCreate(comm, path, record, &file));
-  if (file < 0) PetscFunctionReturn(0);
-  if (ref) PetscCall(WriteReference(file, *ref));
-  if (!plan.configs.empty()) {
-    hid_t gc = H5Gcreate2(file, "configs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    for (size_t c = 0; c < plan.configs.size(); ++c) PetscCall(WriteConfig(gc, c, plan.configs[c], all[c], plan.error_floor));
-    H5Gclose(gc);
-    hid_t gs = H5Gcreate2(file, "summary", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCall(H5WriteAttributes(gs, summary));
-    H5Gclose(gs);
-  }
-  if (sp && !sp->nodes.empty()) PetscCall(WriteSpatial(file, plan, *sp));
-  H5Fclose(file);
+  PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode { // whole or not at all
+    PetscFunctionBeginUser;
+    if (ref) PetscCall(WriteReference(file, *ref));
+    if (!plan.configs.empty()) {
+      hid_t gc = H5Gcreate2(file, "configs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      for (size_t c = 0; c < plan.configs.size(); ++c) PetscCall(WriteConfig(gc, c, plan.configs[c], all[c], plan.error_floor));
+      H5Gclose(gc);
+      hid_t gs = H5Gcreate2(file, "summary", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      PetscCall(H5WriteAttributes(gs, summary));
+      H5Gclose(gs);
+    }
+    if (sp && !sp->nodes.empty()) PetscCall(WriteSpatial(file, plan, *sp));
+    PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
 

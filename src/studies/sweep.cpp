@@ -10,6 +10,7 @@
 #include "io/text.hpp"
 #include "run/outcome.hpp"
 #include "studies/sweep_farm.hpp"
+#include "studies/sweep_notes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -353,6 +354,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
     PetscFunctionBeginUser;
     const double tc = MPI_Wtime();
     PetscCall(SweepCaseRun(group, plan, index, &row, &reason, &result));
+    SweepNotesPointDone(farm.group_rank == 0); // its notes, counted once for the sweep
     const double tj = MPI_Wtime();
     mine->busy += tj - tc;
     if (farm.group_rank == 0) {
@@ -374,6 +376,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
     PetscFunctionReturn(0);
   };
   auto between = [&](PetscInt done) -> PetscErrorCode { return SweepPoll(S, P, plan, done); };
+  SweepNotesCollect();
   if (!todo.empty()) PetscCall(TaskFarmRun(farm, (PetscInt)todo.size(), run_case, between));
   journal.Close();
   PetscFunctionReturn(0);
@@ -532,6 +535,10 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   PetscFunctionBeginUser;
   g_exit_status        = 0;
   const double t_setup = MPI_Wtime();
+  struct NotesGuard {
+    ~NotesGuard() { SweepNotesAbandon(); } // an error return: PETSc's printer back
+  } notes_guard;
+  PetscCall(SweepNotesBegin()); // each point's notes said once for the sweep (studies/sweep_notes.hpp)
   PetscCheck(!output.empty(), comm, PETSC_ERR_ARG_WRONG, "-task sweep writes its results to a file: give -output FILE.h5 (not 'none')");
   PetscCall(SweepReadOptions(comm, &base, &plan, &candidates));
   PetscCall(TaskFarmCreate(comm, plan.ranks_per_case, &farm));
@@ -548,6 +555,7 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   mine.handout           = farm.handout;
   PetscCall(TaskFarmDestroy(&farm));
   PetscCall(SweepGather(comm, mine, store));
+  PetscCall(SweepNotesEnd(comm, progress.todo));
   PetscCall(SweepReport(comm, plan, mine, progress, t0 - t_setup, t0, farm_time, output, store, &failed));
   g_exit_status = failed ? 2 : 0;
   PetscFunctionReturn(0);
