@@ -113,6 +113,12 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
     PetscCall(PetscPrintf(comm, "swinging bat (V_cm %g m/s, Omega %g rad/s): batted-ball speed %.4f m/s, collision efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
                           (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs, (double)r.collision_efficiency, (double)r.bat_speed_end,
                           (double)r.bat_angular_velocity_end));
+  if (ObliqueImpact(sc)) {
+    PetscCall(PetscPrintf(comm, "oblique: offset %g m, batted ball %.4f m/s at %.3f deg, spin %.2f rad/s (%.0f rpm, > 0 backspin); friction dissipated %.4e J (along the line of centres: acor and bbs above)\n",
+                          (double)sc.impact.offset, (double)r.exit_speed, (double)r.launch_angle, (double)r.spin, (double)r.spin_rpm, (double)r.friction_dissipated));
+    if (sc.flight.on)
+      PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n", (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
+  }
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
                           (double)sc.beam.grip.x_b, (double)r.grip_force_peak, (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));

@@ -37,6 +37,12 @@ OptionModule BuildBallOptions()
     OptionChoice("-ball_law", LawHelp().c_str(), ContactLawNames(), ContactLaws().front()->Name()),
     OptionReal("-ball_radius", "m", "Ball radius: a compression beyond it is flagged as physically absurd (a sweep's summary counts such points; default: none, no check)", "", Positive()),
     OptionReal("-ball_loss_factor", "1", LossFactorHelp().c_str(), "0.85", Between(0, 1, true, false)),
+    // The oblique impact (docs/model.md "Oblique impacts"): they act when the impact is oblique
+    // (-impact_offset or -ball_spin not 0, or -flight), which `needs` cannot say (one of two).
+    OptionReal("-ball_spin", "rad/s", "Incoming spin about the bat's axis direction (> 0: backspin of the incoming ball, as a fastball; < 0: topspin, as a curveball); needs -ball_radius and a round bat (-beam_profile)", "0"),
+    OptionNeeds(OptionReal("-ball_inertia_factor", "1", "Moment of inertia of the ball I/(m R^2) (0.4: a solid sphere; a baseball about 0.4, a tennis ball about 0.55), for an oblique impact", "0.4", Between(0, 2.0 / 3.0, true, false)), {"-ball_radius"}),
+    OptionNeeds(OptionReal("-ball_friction", "1", "Coulomb friction coefficient mu of ball on bat, for an oblique impact (0: frictionless)", "0.5", NonNegative()), {"-ball_radius"}),
+    OptionNeeds(OptionReal("-ball_tangential_cor", "1", "Tangential restitution e_T of the contact's tangential compliance (0: the surfaces leave rolling; baseball on wood about 0.3, Cross & Nathan 2006); not given: no compliance, a rigid grip", "", Between(0, 1, false, true)), {"-ball_radius"}),
   };
   for (const ContactLaw *law : ContactLaws()) m.options.insert(m.options.end(), law->Options().begin(), law->Options().end());
   return m;
@@ -108,6 +114,15 @@ PetscErrorCode BallParamsFromOptions(MPI_Comm comm, BallParams *b)
   PetscCall(OptionsRead(PetscOptionsObject, M, "-ball_law", &name, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, M, "-ball_radius", &b->radius, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, M, "-ball_loss_factor", &b->loss_factor, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, M, "-ball_spin", &b->spin, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, M, "-ball_inertia_factor", &b->inertia_factor, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, M, "-ball_friction", &b->friction, NULL));
+  {
+    PetscReal e_T = 0; // shown as no default under -help (none: a rigid grip)
+    PetscBool set = PETSC_FALSE;
+    PetscCall(OptionsRead(PetscOptionsObject, M, "-ball_tangential_cor", &e_T, &set));
+    if (set) b->tangential_cor = e_T;
+  }
   chosen = ContactLawFind(name.c_str()); // a known name: the reader checked the choice
   if (chosen != b->law) BallParamsUseLaw(b, chosen);
   for (const ContactLaw *law : ContactLaws()) { // the chosen law's options; under -help every law's

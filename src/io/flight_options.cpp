@@ -30,6 +30,7 @@ const OptionModule &FlightOptionTable()
                    {"calculator", "exact"}, "calculator"),
       OptionReal("-flight_gravity", "m/s^2", "Acceleration of gravity (the calculator: 32.174 ft/s^2 = 9.8066352)", "9.80665", NonNegative()),
       OptionReal("-flight_series_dt", "s", "Interval of the trajectory's samples in /series (0: only launch and landing)", "0.01", NonNegative()),
+      OptionFlag("-flight", "-task impact: fly the batted ball after the impact from its exit speed, launch angle and spin (distance, apex, hang_time in /results, the trajectory in /series); the launch options -flight_speed, -flight_angle, -flight_spin then come from the impact"),
     },
   };
   return m;
@@ -71,6 +72,24 @@ PetscErrorCode AirParamsFromOptions(MPI_Comm comm, AirParams *air)
     PetscCheck(std::isfinite(density) && density > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-air_temperature %g, -air_pressure %g, -air_humidity %g and -air_elevation %g give an air density of %g kg/m^3: it must be > 0 (is the pressure far below the vapour's?)",
                (double)air->temperature, (double)air->pressure, (double)air->humidity, (double)air->elevation, (double)density);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, FlightParams *p, FlightSolveParams *s)
+{
+  const OptionModule &t = FlightOptionTable();
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, t.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight", on, NULL));
+  PetscOptionsEnd();
+  if (!*on) PetscFunctionReturn(0);
+  for (const char *launch : {"-flight_speed", "-flight_angle", "-flight_spin", "-flight_sidespin", "-flight_direction"}) {
+    PetscBool given;
+    PetscCall(PetscOptionsHasName(NULL, NULL, launch, &given));
+    PetscCheck(!given, comm, PETSC_ERR_ARG_INCOMP, "%s %s with -flight: after an impact the launch (speed, angle, spin) is the batted ball's; remove %s, or fly a given launch with -task flight", launch,
+               OptionWritten(launch).c_str(), launch);
+  }
+  PetscCall(FlightParamsFromOptions(comm, p, s));
   PetscFunctionReturn(0);
 }
 

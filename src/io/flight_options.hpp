@@ -22,5 +22,8 @@ PetscErrorCode AirParamsFromOptions(MPI_Comm comm, AirParams *air);
 
 // -flight_* and -air_*: everything -task flight reads but the TS's own options.
 PetscErrorCode FlightParamsFromOptions(MPI_Comm comm, FlightParams *p, FlightSolveParams *s);
+// -flight (-task impact): whether to fly the batted ball after the impact, and then the flight's
+// ball, air and aerodynamics (the launch options are refused: the impact gives the launch).
+PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, FlightParams *p, FlightSolveParams *s);
 
 } // namespace beamimpact

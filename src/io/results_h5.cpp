@@ -260,14 +260,20 @@ static PetscErrorCode H5WriteEvents(hid_t file, const ImpactResult &r)
 static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const BeamParams &beam)
 {
   PetscFunctionBeginUser;
-  if (!S.time.empty()) {
+  if (!S.time.empty() || !S.flight_time.empty()) {
     hid_t gs = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCall(H5WriteDataset1D(gs, "time", S.time, "s"));
     auto opt = [&](const char *name, const std::vector<double> &v, const char *unit) -> PetscErrorCode {
       PetscFunctionBeginUser;
       if (!v.empty()) PetscCall(H5WriteDataset1D(gs, name, v, unit));
       PetscFunctionReturn(0);
     };
+    PetscCall(opt("time", S.time, "s"));
+    // -flight: the batted ball's trajectory, on its own time axis from the launch
+    PetscCall(opt("flight_time", S.flight_time, "s"));
+    PetscCall(opt("flight_x", S.flight_x, "m, across the field"));
+    PetscCall(opt("flight_y", S.flight_y, "m, down the field"));
+    PetscCall(opt("flight_z", S.flight_z, "m, height above the ground"));
+    PetscCall(opt("flight_spin", S.flight_spin, "rad/s"));
     PetscCall(opt("ball_y", S.ball_y, "m"));
     PetscCall(opt("ball_v", S.ball_v, "m/s"));
     PetscCall(opt("compression", S.compression, "m"));

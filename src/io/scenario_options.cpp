@@ -51,6 +51,7 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
   PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
   if (how.monitors) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
+  PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
   PetscFunctionReturn(0);
 }
 

@@ -4,6 +4,7 @@
 
 #include "io/beam_options.hpp"
 #include "io/ball_options.hpp"
+#include "io/flight_options.hpp"
 #include "run/scenario.hpp"
 
 #include <petscsys.h>

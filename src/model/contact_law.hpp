@@ -51,6 +51,10 @@ struct BallParams {
   PetscReal         speed       = 1.0;   // m/s, incident speed v_i (moving in +y)
   PetscReal         radius      = 0;     // m, -ball_radius: a compression beyond it is flagged (0: not given, no check)
   PetscReal         loss_factor = 0.85;  // 1, ACOR correction for the ball's losses, applied to an elastic law's ACOR
+  // The oblique impact (model/oblique.hpp): I_b = inertia_factor m R^2; the incoming spin
+  // (rad/s, > 0: backspin of the incoming ball); Coulomb friction mu at the contact; the
+  // tangential restitution e_T of the contact's compliance (< 0: none, a rigid grip).
+  PetscReal         inertia_factor = 0.4, spin = 0, friction = 0.5, tangential_cor = -1;
   const ContactLaw *law         = nullptr; // the registered law (-ball_law); never null after construction
   std::array<PetscReal, kContactLawMaxValues> value{}; // the law's parameters (units: its rows'), in the order of its numeric rows
   // -ball_cor_table: e(v) of the approach speed, for a law that follows one (hysteresis); empty: none.

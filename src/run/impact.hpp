@@ -32,6 +32,7 @@ struct ImpactParams {
   ImpactAfter after     = ImpactAfter::Modal; // modal wherever the beam allows it (else time, saying why)
   PetscBool after_set   = PETSC_FALSE;        // -impact_after was given: modal where it cannot be is an error
   PetscReal x            = 0.55;  // m, impact point measured from the x = 0 end
+  PetscReal offset       = 0;     // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
   PetscReal window       = -1;    // s, time simulated after each separation (< 0: 2 fundamental periods)
   PetscReal max_time     = -1;    // s, cap on the simulated time (< 0: window + 100 contact times)
   PetscReal event_tol    = 1e-10; // event indicators (c / c_scale, dc/dt / v_i) are located to this
@@ -71,6 +72,8 @@ struct ImpactSeries {
   std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
   std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
   std::vector<PetscReal> grip_force, grip_moment, grip_stored, hand_work; // N, N m about x = 0, J, J (-monitor_grip)
+  // -flight: the batted ball's trajectory (s; m, the flight's frame: y down the field, z up; rad/s)
+  std::vector<PetscReal> flight_time, flight_x, flight_y, flight_z, flight_spin;
   std::vector<PetscReal> snapshot_time;                                  // s
   std::vector<std::vector<PetscReal>> snapshot_y;                        // m, [snapshot][node]
 };
@@ -171,6 +174,12 @@ struct ImpactOutcome {
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
   // for which it gives acor_corrected (the forced fit).
   PetscReal rigid_acor = 0, rigid_forced_loss_fraction = 0;
+  // An oblique impact (-impact_offset, -ball_spin, -flight; run/oblique.hpp): the batted ball's
+  // speed (m/s), launch angle (deg from the reversed incoming direction, > 0 up), spin (rad/s and
+  // rpm, > 0 backspin), the energy friction dissipated (J); with -flight its distance (m), apex
+  // (m above the ground) and hang time (s). Along the normal, acor, bbs and the rest are the run's.
+  PetscReal exit_speed = 0, launch_angle = 0, spin = 0, spin_rpm = 0, friction_dissipated = 0;
+  PetscReal distance = 0, apex = 0, hang_time = 0;
 };
 
 // The stepper's own counts, and the driver's.

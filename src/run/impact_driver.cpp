@@ -325,6 +325,18 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   PetscFunctionReturn(0);
 }
 
+// An oblique impact's run along the normal is over: the tangential contact from its force, the
+// exit and the flight; the series the run recorded for it and nobody asked for are dropped.
+PetscErrorCode ObliqueRunFinish(const Scenario &sc, ImpactRecord *rec)
+{
+  ImpactSeries &S = rec->series;
+  PetscFunctionBeginUser;
+  PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, &rec->oblique));
+  if (!sc.oblique.ball_series_asked) S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear();
+  if (!sc.oblique.series_asked) S.time.clear();
+  PetscFunctionReturn(0);
+}
+
 // Drives the stepper and hands what the run recorded to the outcome.
 PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario &sc, ImpactResult *res)
 {
@@ -333,6 +345,7 @@ PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario 
   PetscFunctionBeginUser;
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
   PetscCall(ImpactDrive(st, ctx, &s.contact, sc, s.scales, s.approach, *res, &rec, res));
+  if (sc.oblique.on) PetscCall(ObliqueRunFinish(sc, &rec));
   rec.V_x      = s.V_x;
   rec.scales   = s.scales;
   ImpactOutcomeFinish(sc, s.sys, std::move(rec), res);
@@ -341,13 +354,16 @@ PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario 
 
 } // namespace
 
-PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
+PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res)
 {
   ImpactSetup              s;
   std::unique_ptr<Stepper> st;
   TSStepperSettings        set;
+  Scenario                 normal; // an oblique impact's run along the normal (run/oblique.hpp)
 
   PetscFunctionBeginUser;
+  if (ObliqueImpact(given)) PetscCall(ObliqueNormalScenario(comm, given, &normal));
+  const Scenario &sc = ObliqueImpact(given) ? normal : given;
   *res = ImpactResult();
   ImpactStageScope stage(ImpactStage::Setup);
   PetscCall(ImpactSetupBuild(comm, sc, &s));
@@ -361,12 +377,15 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LeapfrogRun(const Scenario &sc, const LeapfrogParams &lp, ImpactResult *res)
+PetscErrorCode LeapfrogRun(const Scenario &given, const LeapfrogParams &lp, ImpactResult *res)
 {
   ImpactSetup              s;
   std::unique_ptr<Stepper> st;
+  Scenario                 normal; // an oblique impact's run along the normal (run/oblique.hpp)
 
   PetscFunctionBeginUser;
+  if (ObliqueImpact(given)) PetscCall(ObliqueNormalScenario(PETSC_COMM_SELF, given, &normal));
+  const Scenario &sc = ObliqueImpact(given) ? normal : given;
   *res = ImpactResult();
   PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s));
   PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));

@@ -57,11 +57,17 @@ void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord
   f.final_time = rec.final_time;
   f.V_x        = rec.V_x;
   f.E_in       = 0.5 * sc.ball.mass * sc.ball.speed * sc.ball.speed;
+  f.oblique    = &rec.oblique;
   RigidPartAtEnd(sys, &f);
   for (const ResultColumn &c : ImpactResultColumns())
     if (c.compute) c.Set(res, c.applies(sc) ? c.compute(f) : nan);
   res->events     = std::move(rec.contact.events);
   res->series     = std::move(rec.series);
+  if (rec.oblique.flew) {
+    const FlightSeries &F = rec.oblique.flight.series;
+    res->series.flight_time = F.t, res->series.flight_x = F.x, res->series.flight_y = F.y, res->series.flight_z = F.z;
+    res->series.flight_spin = F.spin;
+  }
   res->after_used = rec.after_used;
   res->scales     = ImpactScalesOf(rec.scales);
 }

@@ -28,6 +28,7 @@ struct ImpactRecord {
   PetscReal     V_x        = 0;   // m/s, the swinging bat's speed toward the ball at the impact point
   ContactScales scales;           // of the contact, at the first contact's approach speed (v_ball + V_x)
   std::string   after_used;       // -impact_after as the run resolved it
+  ObliqueRecord oblique;          // run/oblique.cpp: an oblique impact's tangential contact, exit and flight (on: oblique)
 };
 
 // Fills the outcome, the events, the series, the scales and after_used of *res from the

@@ -4,6 +4,7 @@
 
 #include "base/options_util.hpp"
 #include "run/modal_reference.hpp"
+#include "run/scenario.hpp"
 
 namespace beamimpact {
 
@@ -22,6 +23,17 @@ bool Always(const Scenario &, std::string *why)
 }
 
 std::string NameOnly(const char *name) { return name; }
+
+// The closed form solves the head-on impact only: an oblique one (run/oblique.hpp) is split into
+// a run along the normal and the tangential contact, which only the stepped run (ts) does.
+bool ModalApplies(const Scenario &sc, std::string *why)
+{
+  if (ObliqueImpact(sc)) {
+    if (why) *why = "solves a head-on impact only: an oblique impact (-impact_offset or -ball_spin not 0, or -flight) is solved by -reference ts";
+    return false;
+  }
+  return ModalReferenceApplies(sc, why);
+}
 
 // ts: the PETSc TS as -ts_* configure it (solvers/ts_stepper.hpp).
 PetscErrorCode TimeSteppingRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettings &, ReferenceSolution *sol)
@@ -57,7 +69,7 @@ const ReferenceMethod kReferenceModal = {
   true,
   true,
   true,
-  ModalReferenceApplies,
+  ModalApplies,
   ModalRun,
   [](const ReferenceSettings &) { return NameOnly("modal"); },
 };

@@ -26,6 +26,10 @@ bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
 
+bool ResultOblique(const Scenario &sc) { return sc.oblique.on; }
+
+bool ResultFlight(const Scenario &sc) { return sc.flight.on; }
+
 std::string PivotHeldText(const Scenario &sc)
 {
   const BeamParams &b = sc.beam;
@@ -178,6 +182,27 @@ std::vector<ResultColumn> OutcomeColumns()
   };
 }
 
+// The oblique impact (run/oblique.hpp) and the batted ball's flight. Along the line of centres
+// the columns above are the run's (acor, bbs: the normal components); these are the ball's
+// whole exit.
+const char *const kOblique = "an oblique impact: -impact_offset or -ball_spin not 0, or -flight (a head-on hit: exit_speed = bbs, launch_angle 0, no spin)";
+const char *const kFlight  = "with -flight";
+std::vector<ResultColumn> ObliqueColumns()
+{
+  return {
+    Real("exit_speed", "m/s", &R::exit_speed, ResultOblique, kOblique, [](F f) -> double { return f.oblique->exit.speed; }, "the batted ball's speed, normal and tangential parts together (lab frame)"),
+    Real("launch_angle", "deg", &R::launch_angle, ResultOblique, kOblique, [](F f) -> double { return f.oblique->exit.launch_angle; },
+         "the batted ball's direction from the reversed incoming direction, > 0 upward"),
+    Real("spin", "rad/s", &R::spin, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin; }, "the batted ball's spin, > 0 backspin"),
+    Real("spin_rpm", "rpm", &R::spin_rpm, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin * 30 / M_PI; }, "the same in revolutions per minute"),
+    Real("friction_dissipated", "J", &R::friction_dissipated, ResultOblique, kOblique, [](F f) -> double { return f.oblique->contact.dissipated; },
+         "energy dissipated by friction at the contact (its own term: not in energy_error's E, which is the normal run's)"),
+    Real("distance", "m", &R::distance, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.distance; }, "the batted ball's carry: launch point to landing, horizontal"),
+    Real("apex", "m", &R::apex, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.apex; }, "the flight's highest point above the ground"),
+    Real("hang_time", "s", &R::hang_time, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.hang_time; }, "the flight's time from launch to landing"),
+  };
+}
+
 // What the run cost (the stepper's and the driver's counts), the dissipated energy, Eq. (11).
 std::vector<ResultColumn> CostAndLaterColumns()
 {
@@ -207,8 +232,9 @@ std::vector<ResultColumn> CostAndLaterColumns()
 
 std::vector<ResultColumn> BuildTable()
 {
-  std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns();
+  std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns(), oblique = ObliqueColumns();
   t.insert(t.end(), more.begin(), more.end());
+  t.insert(t.end(), oblique.begin(), oblique.end());
   return t;
 }
 

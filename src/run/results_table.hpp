@@ -38,6 +38,7 @@ struct OutcomeFacts {
   // angular momentum about the centre of mass (kg m^2/s), and the kinetic energies of the rigid
   // translation P^2/2M and rotation L_cm^2/2I_cm (J).
   PetscReal beam_mass = 0, inertia_cm = 0, moment_cm = 0, E_translation = 0, E_rotation = 0;
+  const ObliqueRecord *oblique = nullptr; // an oblique impact's tangential contact, exit and flight
 };
 
 // When a column applies: a predicate of the scenario.
@@ -45,7 +46,9 @@ using ResultApplies = bool (*)(const Scenario &sc);
 
 // The predicates of the table (also for messages and tests).
 bool ResultAlways(const Scenario &sc);
-bool ResultNoHeldDof(const Scenario &sc);          // no end clamped or pinned, no clamped region, no pivot
+bool ResultNoHeldDof(const Scenario &sc);
+bool ResultOblique(const Scenario &sc);            // -impact_offset or -ball_spin not 0, or -flight (run/oblique.hpp)
+bool ResultFlight(const Scenario &sc);             // -flight          // no end clamped or pinned, no clamped region, no pivot
 bool ResultMomentumInvariant(const Scenario &sc);  // no held dof, no grip, no mass-proportional damping
 bool ResultFreeBeamAtRest(const Scenario &sc);     // no held dof, no grip, no swing (Eq. 11)
 bool ResultFreePivot(const Scenario &sc);          // -beam_pivot and no other support or grip: the rig turns freely

@@ -8,6 +8,7 @@
 #include "model/contact.hpp"
 #include "model/swing.hpp"
 #include "run/impact.hpp"
+#include "run/oblique.hpp"
 
 namespace beamimpact {
 
@@ -20,6 +21,8 @@ struct Scenario {
   ImpactParams   impact;  // -impact_*
   MonitorRequest monitor; // -monitor_*, -snapshot_times (nothing by default)
   SwingParams    swing;   // -bat_speed, -bat_angular_velocity (a bat at rest by default)
+  FlightAfterImpact flight; // -flight: the batted ball's flight after the impact (-flight_*, -air_*)
+  ObliqueIncoming oblique;  // set by run/oblique.cpp on the run along the normal of an oblique impact
 };
 
 } // namespace beamimpact

@@ -1,0 +1,154 @@
+// The oblique impact through the run (run/oblique.cpp): the R161 bat (options/bats/r161.opts)
+// and the baseball preset, 70 cm from the knob.
+//   * head-on through the oblique path (-flight with no offset or spin): every column of
+//     today's run bit for bit, exit_speed = bbs, launch_angle 0, spin 0; a plain run's oblique
+//     columns are NaN;
+//   * frictionless: no spin, the tangential speed kept, the normal run the head-on run at
+//     v cos theta bit for bit, the launch angle from both;
+//   * with friction, any compliance, a free swinging bat: the ball's angular momentum about the
+//     contact point is conserved (both forces act there), whatever the friction did; friction
+//     dissipates; backspin for an undercut (D > 0), more for a curveball than for a fastball;
+//   * the refusals: a strip (no radius), an offset that misses the bat, -reference modal.
+#include "run/reference.hpp"
+#include "run/results_table.hpp"
+#include "run/scenario.hpp"
+
+#include "test_helpers.hpp"
+
+#include <gtest/gtest.h>
+#include <petscsys.h>
+
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace beamimpact;
+using beamimpact::test::ReadScene;
+
+namespace {
+
+const std::vector<std::pair<std::string, std::string>> kRK4 = {{"-ts_type", "rk"}, {"-ts_rk_type", "4"}, {"-ts_adapt_type", "none"}, {"-ts_dt", "2e-7"}};
+
+Scenario R161(PetscReal V_cm = 0, PetscReal Omega = 0)
+{
+  Scenario sc;
+  ReadScene({"options/bats/r161.opts", "options/balls/baseball.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}}, &sc.beam, &sc.ball);
+  sc.impact.x                    = 0.7;
+  sc.impact.window               = 0; // to the first separation
+  sc.swing.bat_speed             = V_cm;
+  sc.swing.bat_angular_velocity  = Omega;
+  return sc;
+}
+
+ImpactResult RunRK4(const Scenario &sc)
+{
+  for (auto &kv : kRK4) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
+  ImpactResult r;
+  EXPECT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &r));
+  for (auto &kv : kRK4) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
+  return r;
+}
+
+// The ball's velocity along t after the impact, from the exit columns.
+PetscReal TangentialExit(const Scenario &sc, const ImpactResult &r)
+{
+  const ObliqueGeometry g  = ObliqueGeometryOf(sc.impact.offset, sc.ball.radius, RoundSectionRadiusAt(sc.beam.section, sc.impact.x));
+  const PetscReal       a  = r.launch_angle * M_PI / 180;
+  return r.exit_speed * (-std::cos(a) * g.sin_theta + std::sin(a) * g.cos_theta);
+}
+
+} // namespace
+
+TEST(ObliqueImpact, HeadOnIsTodaysRunBitForBit)
+{
+  const Scenario plain = R161(24, 51);
+  Scenario       flown = plain;
+  flown.flight.on      = PETSC_TRUE;
+  const ImpactResult a = RunRK4(plain), b = RunRK4(flown);
+  for (const ResultColumn &c : ImpactResultColumns()) {
+    if (!c.compute || std::string(c.name) == "wall_time") continue;
+    const double va = c.Get(a), vb = c.Get(b);
+    const std::string name = c.name;
+    if (name == "exit_speed" || name == "launch_angle" || name == "spin" || name == "spin_rpm" || name == "friction_dissipated" || name == "distance" || name == "apex" || name == "hang_time") continue;
+    if (std::isnan(va)) EXPECT_TRUE(std::isnan(vb)) << c.name;
+    else EXPECT_EQ(va, vb) << c.name;
+  }
+  EXPECT_TRUE(std::isnan(a.exit_speed) && std::isnan(a.launch_angle) && std::isnan(a.spin) && std::isnan(a.distance));
+  EXPECT_EQ(b.exit_speed, b.bbs);
+  EXPECT_EQ(b.launch_angle, 0.0);
+  EXPECT_EQ(b.spin, 0.0);
+  EXPECT_EQ(b.friction_dissipated, 0.0);
+  EXPECT_GT(b.distance, 10.0); // a line drive at 0 deg from 1 m: it falls 1 m in about 0.45 s
+  EXPECT_LT(b.distance, 25.0);
+  EXPECT_GT(b.hang_time, 0.0);
+}
+
+TEST(ObliqueImpact, FrictionlessKeepsTheTangentialSpeed)
+{
+  Scenario sc        = R161();
+  sc.impact.offset   = 0.02;
+  sc.ball.friction   = 0;
+  const ImpactResult r = RunRK4(sc);
+  const ObliqueGeometry g = ObliqueGeometryOf(0.02, sc.ball.radius, RoundSectionRadiusAt(sc.beam.section, 0.7));
+  EXPECT_EQ(r.spin, 0.0);
+  EXPECT_EQ(r.friction_dissipated, 0.0);
+  EXPECT_NEAR(TangentialExit(sc, r), sc.ball.speed * g.sin_theta, 1e-12 * sc.ball.speed);
+  // The run along the normal is the head-on run at v cos theta.
+  Scenario head      = R161();
+  head.ball.speed    = sc.ball.speed * g.cos_theta;
+  const ImpactResult h = RunRK4(head);
+  EXPECT_EQ(r.acor, h.acor);
+  EXPECT_EQ(r.bbs, h.bbs);
+  const PetscReal u_n = h.bbs, v_t = sc.ball.speed * g.sin_theta;
+  EXPECT_NEAR(r.launch_angle, std::atan2(u_n * g.sin_theta + v_t * g.cos_theta, u_n * g.cos_theta - v_t * g.sin_theta) * 180 / M_PI, 1e-10);
+}
+
+TEST(ObliqueImpact, BallAngularMomentumAboutTheContactConserved)
+{
+  for (PetscReal e_T : {-1.0, 0.3}) {
+    for (PetscReal spin_in : {200.0, -200.0}) { // a fastball's backspin, a curveball's topspin
+      Scenario sc            = R161(24, 51);
+      sc.impact.offset       = 0.02;
+      sc.ball.friction       = 0.5;
+      sc.ball.tangential_cor = e_T;
+      sc.ball.spin           = spin_in;
+      const ImpactResult    r = RunRK4(sc);
+      const ObliqueGeometry g = ObliqueGeometryOf(0.02, sc.ball.radius, RoundSectionRadiusAt(sc.beam.section, 0.7));
+      const PetscReal       m = sc.ball.mass, R = sc.ball.radius, I = sc.ball.inertia_factor * m * R * R;
+      const PetscReal L0 = I * (-spin_in) + m * R * sc.ball.speed * g.sin_theta, L1 = I * r.spin + m * R * TangentialExit(sc, r);
+      EXPECT_NEAR(L1, L0, 1e-12 * std::abs(L0) + 1e-13 * m * R * sc.ball.speed) << "e_T " << e_T << " spin " << spin_in;
+      EXPECT_GT(r.spin, 0) << "e_T " << e_T << " spin " << spin_in; // an undercut: backspin
+      EXPECT_GT(r.launch_angle, 0);
+      EXPECT_GT(r.friction_dissipated, 0);
+    }
+  }
+  // A curveball's topspin leaves with more backspin than a fastball's backspin (Sawicki et al. 2003).
+  Scenario fast = R161(24, 51), curve;
+  fast.impact.offset = 0.02, fast.ball.spin = 200;
+  curve              = fast;
+  curve.ball.spin    = -200;
+  EXPECT_GT(RunRK4(curve).spin, RunRK4(fast).spin);
+}
+
+TEST(ObliqueImpact, Refusals)
+{
+  ASSERT_EQ(0, PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ImpactResult r;
+  Scenario     strip;
+  strip.beam        = beamimpact::test::AluminiumBeam(0.6);
+  strip.ball        = beamimpact::test::Superball();
+  strip.ball.radius = 0.02;
+  strip.impact.x    = 0.3;
+  strip.impact.offset = 0.01;
+  EXPECT_NE(0, ImpactRun(PETSC_COMM_WORLD, strip, &r)); // no radius: not round
+  Scenario miss      = R161();
+  miss.impact.offset = 0.2;
+  EXPECT_NE(0, ImpactRun(PETSC_COMM_WORLD, miss, &r)); // |D| beyond R_b + R_bat
+  std::string why;
+  Scenario    sc = R161();
+  sc.impact.offset = 0.01;
+  EXPECT_FALSE(ReferenceMethodFind("modal")->applies(sc, &why));
+  EXPECT_NE(std::string::npos, why.find("-reference ts"));
+  EXPECT_EQ(0, PetscPopErrorHandler());
+}
