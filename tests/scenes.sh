@@ -244,6 +244,14 @@ if run flight-nathan 1 options/scenes/flight-nathan.opts; then
   check "flight-nathan: lands $(col "$f" /results/landing_y) m from the launch point (422.292 ft from home plate: 128.1050 m)" 'y > 128.1049 && y < 128.1051' y="$(col "$f" /results/landing_y)"
 fi
 
+# --- oblique (issue 24): an undercut hit on the swinging R161 and the batted ball's flight ---
+if run oblique 1 options/scenes/oblique.opts; then
+  f="$dir/oblique.h5"
+  check "oblique: launched at $(col "$f" /results/launch_angle) deg with $(col "$f" /results/spin_rpm) rpm of backspin, $(col "$f" /results/exit_speed) m/s; carries $(col "$f" /results/distance) m" \
+    'a > 15 && a < 40 && s > 1000 && s < 5000 && v > 35 && v < 45 && d > 80 && d < 140' a="$(col "$f" /results/launch_angle)" s="$(col "$f" /results/spin_rpm)" v="$(col "$f" /results/exit_speed)" d="$(col "$f" /results/distance)"
+  [[ -n $(dims "$f" /series/flight_z) ]] && pass "oblique: the trajectory is in /series" || fail "oblique: no /series/flight_z"
+fi
+
 # every scene file was run above
 for f in options/scenes/*.opts; do
   grep -q -- "$f" "$self" || fail "$f is not exercised by tests/scenes.sh"

@@ -152,3 +152,21 @@ TEST(ObliqueImpact, Refusals)
   EXPECT_NE(std::string::npos, why.find("-reference ts"));
   EXPECT_EQ(0, PetscPopErrorHandler());
 }
+
+// Ample friction on the swinging bat: the rigid grip stops the slip (rolling on the bat's
+// surfaces), the compliant one reverses it by e_T, so the spin the impact adds is 1 + e_T
+// times the rolling one (the impulse (1 + e_T) m_e u0), whatever the bat's effective mass.
+TEST(ObliqueImpact, TangentialRestitutionOnTheBat)
+{
+  Scenario sc          = R161(24, 51);
+  sc.impact.offset     = 0.015;
+  sc.ball.spin         = 150;
+  sc.ball.friction     = 100;
+  const ImpactResult rolling = RunRK4(sc);
+  for (PetscReal e_T : {0.2, 0.5}) {
+    Scenario c            = sc;
+    c.ball.tangential_cor = e_T;
+    const ImpactResult r  = RunRK4(c);
+    EXPECT_NEAR((r.spin + 150) / (rolling.spin + 150), 1 + e_T, 2e-3) << "e_T " << e_T;
+  }
+}

@@ -27,23 +27,26 @@
 //   1/m_e = 1/m + R_b^2/I_b + 1/M_t + R_bat^2/I_a          (I_b = alpha m R_b^2).
 //
 // Tangential force: Coulomb friction |F_t| <= mu F_n with grip and slip, and optionally a
-// tangential spring k_t (the contact's tangential compliance; F_t = -k_t xi, xi its stretch):
-//   slip:  F_t = -s mu F_n (s the slip's sign), xi = s mu F_n / k_t; it grips when the sliding
-//          rate u - xi' changes sign;
-//   grip:  xi' = u (the spring takes the surfaces' relative motion), F_t = -k_t xi; it slips when
-//          k_t |xi| reaches mu F_n.
-// Without compliance (k_t = 0 here: none) the grip is rigid: u stays 0 and, since nothing else
-// moves the surfaces apart tangentially, F_t = 0 from then on. The spring is set from a
-// measured tangential restitution e_T (the reversal -u'/u of the surfaces' tangential speed):
-// a ball that grips throughout on a massive fixed target oscillates at w_t = sqrt(k_t/m_e0),
-// m_e0 = m alpha / (1 + alpha), and leaves after the wall contact time tau with u = u0 cos(w_t tau),
-//
-//   k_t = m_e0 (arccos(-e_T) / tau)^2                       (e_T = 0: w_t tau = pi/2).
+// tangential spring at the contact (its compliance), whose stiffness follows the normal force,
+// k_t = F_n / l (the contact patch grows and shrinks with the normal load, Mindlin's k_t
+// proportional to k_n; l a length), F_t = -k_t xi with xi its stretch. Then the Coulomb limit
+// k_t |xi| <= mu F_n is |xi| <= mu l, a fixed stretch:
+//   slip:  F_t = -s mu F_n (s the slip's sign), xi = s mu l; it grips when u changes sign;
+//   grip:  xi' = u (the spring takes the surfaces' relative motion), F_t = -F_n xi / l; it slips
+//          when |xi| reaches mu l.
+// Without compliance (l = 0: none) the grip is rigid: u stays 0 and, since nothing else moves
+// the surfaces apart tangentially, F_t = 0 from then on: the ball leaves rolling on a massive
+// fixed target, v_t' = v_t / (1 + alpha). The length l is set from the tangential restitution
+// e_T (the reversal -u'/u of the surfaces' tangential speed, Cross & Nathan 2006) on the normal
+// force of the contact itself: gripping throughout it, the contact would reverse u by e_T
+// (TangentialComplianceLength). The spring's energy F_n xi^2 / (2 l) is not conserved while
+// F_n changes (the stiffness's work, 1/2 (dF_n/dt / l) xi^2, kept apart from friction's
+// dissipation); it is 0 before the first touch and after the separation.
 //
 // F_n is given as samples (t_k, F_k), linear between them (the stepper's steps); on each piece
-// grip is solved in closed form (a harmonic oscillator), slip too (u quadratic in t), and each
-// switch between them is located by bisection to round-off; the frictional dissipation
-// integral mu F_n |u - xi'| dt is exact (Simpson on a cubic).
+// slip is solved in closed form (u quadratic in t), grip by classical Runge-Kutta (40 steps per
+// radian of the tangential oscillation), and each switch between them is located by bisection
+// to round-off; the frictional dissipation integral mu F_n |u| dt over the slips is exact.
 #pragma once
 
 #include "model/section.hpp"
@@ -71,13 +74,15 @@ struct TangentialModel {
   PetscReal bat_roll_inertia = PETSC_INFINITY;               // kg m^2, I_a about the bat's axis (inf: held)
   PetscReal bat_radius = 0;                                  // m, R_bat at the impact point
   PetscReal friction   = 0;                                  // mu
-  PetscReal stiffness  = 0;                                  // N/m, k_t (0: no tangential compliance)
+  PetscReal compliance_length = 0;                           // m, l of k_t = F_n / l (0: no tangential compliance, a rigid grip)
   PetscReal EffectiveMass() const;                           // m_e (kg)
 };
 
-// k_t (N/m) for the tangential restitution e_T in [0, 1), the ball (mass m, alpha) gripping
-// throughout a contact of duration tau (s) on a massive fixed target.
-PetscReal TangentialStiffnessFromCor(PetscReal ball_mass, PetscReal alpha, PetscReal e_T, PetscReal tau);
+// The length l (m) of k_t = F_n / l for which a contact of effective mass m_e (kg) gripping
+// throughout the normal force F(t) (samples, linear between them) reverses the surfaces'
+// tangential speed by e_T in [0, 1): bisection on the first branch (the tangential oscillation's
+// phase below pi); 0 when F is 0 throughout.
+PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F);
 
 enum class TangentialPhase { Slip = 0, Grip = 1 };
 
@@ -91,15 +96,17 @@ struct TangentialState {
   PetscReal       u           = 0; // m/s, slip speed of the surfaces (ball minus bat, along t)
   PetscReal       xi          = 0; // m, stretch of the tangential spring
   PetscReal       impulse     = 0; // N s, J = integral F_t dt (on the ball, along t)
-  PetscReal       dissipated  = 0; // J, by friction (integral mu F_n |u - xi'| dt over the slips)
+  PetscReal       dissipated  = 0; // J, by friction (integral mu F_n |u| dt over the slips)
+  PetscReal       stiffness_work = 0; // J, done on the spring by its changing stiffness (integral 1/2 (dF_n/dt / l) xi^2 dt)
   PetscReal       normal_impulse = 0; // N s, integral F_n dt
   TangentialPhase phase       = TangentialPhase::Slip;
   PetscInt        slip_sign   = 0; // s: +1, -1 (0: not yet known)
   std::vector<TangentialSwitch> switches; // located grip/slip changes, in time order
 };
 
-// The state at the first touch with slip speed u0 (m/s).
-TangentialState TangentialStart(PetscReal u0);
+// The state at the first touch with slip speed u0 (m/s): a compliant contact grips (its spring
+// unstretched takes the motion), a rigid one slides (unless u0 = 0).
+TangentialState TangentialStart(const TangentialModel &m, PetscReal u0);
 
 // Advances the tangential contact over [t0, t1] with F_n linear from F0 to F1 (N, >= 0).
 void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialState *s);

@@ -82,15 +82,14 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   const BeamRigidBody body    = BeamRigidBodyOf(sc.beam);
   const PetscReal     V_in    = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
   const PetscReal     s       = in.geometry.sin_theta;
-  const PetscReal     approach = ball.speed + in.geometry.cos_theta * V_in; // along n
-  if (ball.tangential_cor >= 0 && ball.radius > 0) m.stiffness = TangentialStiffnessFromCor(ball.mass, ball.inertia_factor, ball.tangential_cor, ContactWallTime(ball, approach));
+  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force);
   rec->model          = m;
   rec->before.v_ball  = in.ball_speed * s;
   rec->before.spin    = -ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise
   rec->before.v_bat   = -V_in * s;
   rec->before.roll    = 0;
   const PetscReal u0  = (rec->before.v_ball - m.ball_radius * rec->before.spin) - rec->before.v_bat;
-  rec->contact        = TangentialStart(u0);
+  rec->contact        = TangentialStart(m, u0);
   const bool touches  = m.ball_radius > 0 && m.ball_inertia > 0;
   if (touches && u0 != 0)
     for (size_t k = 0; k + 1 < series.time.size() && k + 1 < series.force.size(); ++k)
