@@ -58,9 +58,7 @@ PetscErrorCode FlightHelpOptions(MPI_Comm comm)
 {
   FlightParams      p;
   FlightSolveParams s;
-  PetscBool         after = PETSC_FALSE;
   PetscFunctionBeginUser;
-  (void)FlightAfterImpactFromOptions(comm, &after, &p, &s); // -flight of -task impact (its block ends there when -flight is not given)
   (void)FlightParamsFromOptions(comm, &p, &s); // its checks' errors are not what -help asks
   PetscCall(FlightTSOptionsHelp(comm));
   PetscFunctionReturn(0);

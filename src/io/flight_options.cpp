@@ -77,8 +77,11 @@ PetscErrorCode AirParamsFromOptions(MPI_Comm comm, AirParams *air)
 
 PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, FlightParams *p, FlightSolveParams *s)
 {
-  const OptionModule &t = FlightOptionTable();
+  const OptionModule &t    = FlightOptionTable();
+  PetscBool           help = PETSC_FALSE;
   PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (help) PetscFunctionReturn(0); // -help lists -flight in the flight's block (FlightParamsFromOptions): PETSc prints a block's title once
   PetscOptionsBegin(comm, NULL, t.title.c_str(), "beamimpact");
   PetscCall(OptionsRead(PetscOptionsObject, t, "-flight", on, NULL));
   PetscOptionsEnd();
@@ -117,6 +120,11 @@ PetscErrorCode FlightParamsFromOptions(MPI_Comm comm, FlightParams *p, FlightSol
   PetscCall(OptionsReadChoice(PetscOptionsObject, t, "-flight_constants", &constants, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_gravity", &p->gravity, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_series_dt", &s->series_dt, NULL));
+  {
+    PetscBool help = PETSC_FALSE, after = PETSC_FALSE; // -help lists -flight (of -task impact) in this block
+    PetscCall(PetscOptionsHasHelp(NULL, &help));
+    if (help) PetscCall(OptionsRead(PetscOptionsObject, t, "-flight", &after, NULL));
+  }
   PetscOptionsEnd();
   p->aero.constants = constants == 0 ? FlightConstants::Calculator : FlightConstants::Exact;
   PetscCheck(p->launch.height > 0 || p->launch.angle > 0, comm, PETSC_ERR_ARG_INCOMP,
