@@ -6,7 +6,7 @@
 # integrator on the default grid: |acor - exact| of rk4 at N = 41, the exact value from
 # -reference modal (the beam's modes, no time step) on the same grid. For each N:
 #   rk4     at its default step (min(T_r/200, 0.9 dt_max), dt_max ~ h^2: no larger step is allowed),
-#   cn, alpha2, modal (-ts_modal_order 2, main's dense engine)
+#   cn, alpha2, modal (its default order 4; the dense engine of main at the time of writing)
 #           at T_r/200 halved until the error is within the target (BENCH_HALVINGS at most, 12),
 # and prints each one's step, error and cost: the -log_view stages set-up (layout, TS, modal
 # decomposition of -ts_type modal) and stepping (contact and free flight), in seconds on one
@@ -80,7 +80,6 @@ for n in ${BENCH_NODES:-41 161 641 2561}; do
   printf "%6d  %-7s %11.4g  %10s  %10s  %10s  %10.4g\n" "$n" rk4 "$dt" "$err" "$su" "$st" "$(awk -v a="$su" -v b="$st" 'BEGIN {print a + b}')"
   for ts in cn alpha2 modal; do
     opts=(-ts_type "$ts")
-    [[ $ts == modal ]] && opts+=(-ts_modal_order 2)
     read -r a su st dt0 <<<"$(run "$n" "${ts}_$n" "${opts[@]}" "$@")" # its default step: T_r/200
     for ((k = 0; ; ++k)); do
       dt=$(awk -v d="$dt0" -v k="$k" 'BEGIN {printf "%.6g", d / 2 ^ k}')

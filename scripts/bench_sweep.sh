@@ -59,7 +59,7 @@ elif [[ ${1:-} == --perpoint ]]; then
 fi
 exe=""
 if [[ $# -gt 0 && -x "$1" && ! -d "$1" ]]; then
-  exe="$1"
+  exe="$(readlink -f "$1")"
   shift
 else
   for c in "$root/build/release/beamimpact" "$root"/build/*/beamimpact; do

@@ -3,7 +3,7 @@
 // freshly built one, whatever ran on the context before (another contact point, another
 // ball, a run cut short), for explicit, IMEX, implicit and second-order types, fixed and
 // adaptive; a run on another grid or with other integrator options builds its own context.
-// Runs at np1 and np2.
+// Runs at np1, and a few at np2 (MUMPS, a distributed layout).
 #include "run/results_table.hpp"
 #include "solvers/ts_stepper.hpp"
 #include "test_helpers.hpp"
