@@ -28,3 +28,23 @@ sweep_progress() {
 # descendants PID: every process below PID (Open MPI puts each rank in its own process group,
 # so a process-group kill would miss them).
 descendants() { local c; for c in $(ps -o pid= --ppid "$1"); do echo "$c"; descendants "$c"; done; }
+# output_until PATTERN SECONDS CMD...: runs CMD (its stdout and stderr together) until a line
+# matches the extended regex PATTERN or SECONDS have passed, then stops it; prints what it
+# wrote. For a run meant to be cut short once it has said something (a cost line): quick on a
+# quiet machine, patient on a loaded one.
+output_until() {
+  local pattern=$1 seconds=$2 log pid i
+  shift 2
+  log=$(mktemp)
+  "$@" >"$log" 2>&1 &
+  pid=$!
+  for ((i = 0; i < seconds * 20; ++i)); do
+    grep -qE "$pattern" "$log" && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.05
+  done
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  cat "$log"
+  rm -f "$log"
+}

@@ -59,13 +59,13 @@ lock)
   # a live sweep's lock is respected (held here by flock, as a running sweep holds it)
   mkdir -p "$f.parts"
   if command -v flock >/dev/null; then
-    flock -x "$f.parts/lock" sleep 3 &
+    flock -x "$f.parts/lock" sleep 120 & # held until killed below, however slow the machine
     holder=$!
-    sleep 0.5
+    for ((i = 0; i < 200; ++i)); do flock -n "$f.parts/lock" true || break; sleep 0.05; done # until it holds the lock
     if "$exe" "${opts[@]}" -output "$f" >"$dir/held.log" 2>&1; then fail "a sweep ran while another held the lock"
     else grep -q "being written by another sweep that is still running" "$dir/held.log" && pass "a held lock is respected" || { fail "held lock: unclear message"; cat "$dir/held.log"; }; fi
     [[ -e $f.parts/lock ]] && pass "... and the holder's lock file stays" || fail "the refused run removed the lock another sweep holds"
-    wait $holder
+    kill $(descendants $holder) $holder 2>/dev/null; wait $holder 2>/dev/null
   fi
   # a stale lock (its holder killed: the file is there, nobody holds it) is taken
   touch "$f.parts/lock"

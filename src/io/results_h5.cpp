@@ -304,58 +304,28 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
 
 namespace {
 
-// HDF5's own error printing off in a scope: a failed write is reported once, by us.
-struct H5Quiet {
-  H5E_auto2_t func;
-  void       *data;
-  H5Quiet()
-  {
-    H5Eget_auto2(H5E_DEFAULT, &func, &data);
-    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  }
-  ~H5Quiet() { H5Eset_auto2(H5E_DEFAULT, func, data); }
-};
-
-bool FsyncPath(const std::string &path, bool dir)
+bool FsyncDirectoryOf(const std::string &path)
 {
-  const int fd = ::open(path.c_str(), (dir ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC);
+  const size_t      s   = path.find_last_of('/');
+  const std::string dir = s == std::string::npos ? std::string(".") : s == 0 ? std::string("/") : path.substr(0, s);
+  const int         fd  = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd < 0) return false;
-  const bool ok = ::fsync(fd) == 0 || (dir && errno == EINVAL);
+  const bool ok = ::fsync(fd) == 0 || errno == EINVAL;
   ::close(fd);
   return ok;
-}
-
-std::string DirectoryOf(const std::string &path)
-{
-  const size_t s = path.find_last_of('/');
-  return s == std::string::npos ? std::string(".") : s == 0 ? std::string("/") : path.substr(0, s);
 }
 
 // Rank 0's part of H5ResultsFileWrite: "" on success, else what went wrong.
 std::string WriteWholeFile(const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long)> &write)
 {
-  H5Quiet     quiet;
-  std::string error;
-  const hid_t file = (hid_t)H5MemoryFileCreate();
+  H5ErrorsQuiet quiet;
+  std::string   error;
+  const hid_t   file = (hid_t)H5MemoryFileCreate();
   if (file < 0) return "HDF5 cannot create a file in memory";
   PetscErrorCode ierr = H5WriteAttributes(file, record);
   if (!ierr) ierr = write(file);
   if (ierr) error = LastErrorMessage(ierr);
-  std::string tmp = path + ".XXXXXX.tmp"; // beside path: the rename stays on one file system
-  const int   fd  = error.empty() ? ::mkstemps(tmp.data(), 4) : -1;
-  if (error.empty() && fd < 0) error = "cannot create a temporary file " + tmp + " beside it (" + std::strerror(errno) + ")";
-  if (fd >= 0) {
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    (void)::fchmod(fd, 0666 & ~mask); // as a plain create would (mkstemp makes 0600)
-    ::close(fd);
-  }
-  const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // closes the file in any case
-  if (error.empty()) error = saved;
-  if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
-  if (fd >= 0 && !error.empty()) ::unlink(tmp.c_str());
-  if (error.empty()) FsyncPath(DirectoryOf(path), true);
-  return error;
+  return H5MemoryFileInstall(file, path, "", error);
 }
 
 } // namespace
@@ -400,6 +370,39 @@ std::string H5MemoryFileSave(long long file_in, const std::string &path)
   if (::close(fd) != 0 && error.empty()) error = "closing " + path + " failed (" + std::strerror(errno) + ")";
   return error;
 }
+
+std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp_in, const std::string &error_in)
+{
+  std::string error = error_in, tmp = tmp_in.empty() ? path + ".XXXXXX.tmp" : tmp_in; // beside path: the rename stays on one file system
+  bool        made  = false;
+  if (error.empty() && tmp_in.empty()) {
+    const int fd = ::mkstemps(tmp.data(), 4);
+    if (fd < 0) error = "cannot create a temporary file " + tmp + " beside it (" + std::strerror(errno) + ")";
+    else {
+      const mode_t mask = ::umask(0);
+      ::umask(mask);
+      (void)::fchmod(fd, 0666 & ~mask); // as a plain create would (mkstemp makes 0600)
+      ::close(fd);
+    }
+  }
+  const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // closes the file in any case
+  made                    = error.empty();
+  if (error.empty()) error = saved;
+  if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
+  if (made && !error.empty()) ::unlink(tmp.c_str());
+  if (error.empty()) FsyncDirectoryOf(path);
+  return error;
+}
+
+H5ErrorsQuiet::H5ErrorsQuiet()
+{
+  H5E_auto2_t f;
+  H5Eget_auto2(H5E_DEFAULT, &f, &data_);
+  func_ = reinterpret_cast<void (*)()>(f);
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+}
+
+H5ErrorsQuiet::~H5ErrorsQuiet() { H5Eset_auto2(H5E_DEFAULT, reinterpret_cast<H5E_auto2_t>(func_), data_); }
 
 PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long file)> &write)
 {

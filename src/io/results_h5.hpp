@@ -63,6 +63,26 @@ PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const 
 long long   H5MemoryFileCreate();
 std::string H5MemoryFileSave(long long file, const std::string &path);
 
+// The memory file put at path whole or not at all: saved (H5MemoryFileSave, which closes it) to
+// tmp beside path (tmp empty: a new unique path.XXXXXX.tmp, with the permissions a plain create
+// gives), renamed onto path and the directory fsync'ed; "" on success, else what went wrong,
+// with tmp removed and a file at path left as it was. error not empty: only closes the file
+// and returns error (a writer that failed before its file was complete).
+std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp, const std::string &error);
+
+// HDF5's own error printing off while an object lives: a failed call is reported once, by us.
+class H5ErrorsQuiet {
+public:
+  H5ErrorsQuiet();
+  ~H5ErrorsQuiet();
+  H5ErrorsQuiet(const H5ErrorsQuiet &)            = delete;
+  H5ErrorsQuiet &operator=(const H5ErrorsQuiet &) = delete;
+
+private:
+  void (*func_)(); // the handler as it was (HDF5's H5E_auto2_t, stored as a plain function pointer)
+  void *data_;
+};
+
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);
 PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);

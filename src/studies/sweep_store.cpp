@@ -285,33 +285,6 @@ std::string DiffBeyond(const SweepAttributes &file, const SweepAttributes &now, 
 // HDF5: atomic rewrite and read-back
 // ---------------------------------------------------------------------------
 
-std::string DirName(const std::string &path)
-{
-  const size_t s = path.find_last_of('/');
-  return s == std::string::npos ? std::string(".") : s == 0 ? std::string("/") : path.substr(0, s);
-}
-
-bool FsyncPath(const std::string &path, bool dir)
-{
-  const int fd = ::open(path.c_str(), (dir ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool ok = ::fsync(fd) == 0 || (dir && errno == EINVAL);
-  ::close(fd);
-  return ok;
-}
-
-// Silences HDF5's own error printing in a scope (we report errors ourselves).
-struct H5Quiet {
-  H5E_auto2_t func;
-  void       *data;
-  H5Quiet()
-  {
-    H5Eget_auto2(H5E_DEFAULT, &func, &data);
-    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  }
-  ~H5Quiet() { H5Eset_auto2(H5E_DEFAULT, func, data); }
-};
-
 herr_t CollectAttribute(hid_t loc, const char *name, const H5A_info_t *, void *op)
 {
   SweepAttributes   *m     = static_cast<SweepAttributes *>(op);
@@ -650,19 +623,15 @@ static PetscErrorCode StoreWrite(SweepStore &S)
   PetscFunctionBeginUser;
   ImpactStageScope stage(ImpactStage::Output); // -log_view: the rewrites are output
   {
-    H5Quiet     quiet;
-    const hid_t file = (hid_t)H5MemoryFileCreate(); // written to disk by us: every write checked
+    H5ErrorsQuiet quiet;
+    const hid_t   file = (hid_t)H5MemoryFileCreate(); // written to disk by us: every write checked
     PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "-output %s: HDF5 cannot create a file in memory", S.output.c_str());
     const PetscErrorCode ierr = StoreWriteContents(S, file);
     if (ierr) error = LastErrorMessage(ierr);
-    const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // F.tmp, fsync'ed
-    if (error.empty()) error = saved;
+    error = H5MemoryFileInstall(file, S.output, tmp, error); // F.tmp, fsync'ed, renamed onto F
   }
-  if (error.empty() && std::rename(tmp.c_str(), S.output.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
-  if (!error.empty()) ::unlink(tmp.c_str());
   PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing %s failed (disk full? %s); %s is as it was, and the journals in %s keep the rows for a resume", S.output.c_str(), tmp.c_str(),
              error.c_str(), S.output.c_str(), S.parts.c_str());
-  FsyncPath(DirName(S.output), true);
   S.rows_written = (PetscInt)S.rows.size();
   S.last_write   = MPI_Wtime();
   S.write_cost   = S.last_write - t0;
@@ -726,7 +695,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
 
   PetscFunctionBeginUser;
   if (::stat(S.output.c_str(), &st) != 0) PetscFunctionReturn(0);
-  H5Quiet quiet;
+  H5ErrorsQuiet quiet;
   PetscCheck(H5Fis_hdf5(S.output.c_str()) > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "-output %s exists and is not an HDF5 file; add -sweep_restart to overwrite it or choose another -output", S.output.c_str());
   hid_t file = H5Fopen(S.output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
