@@ -14,6 +14,7 @@
 # modal, the default), so the stepping is the contact's.
 #
 #   scripts/bench_defaults.sh [path/to/beamimpact] [beamimpact options ...]
+# BENCH_REFERENCE: another executable for the -reference modal runs (default: the same).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -29,6 +30,7 @@ else
 fi
 [[ -x $exe ]] || { echo "bench_defaults.sh: no beamimpact executable (build first, or give its path)" >&2; exit 2; }
 source "$here/mpi-env.sh"
+ref_exe=$(readlink -f "${BENCH_REFERENCE:-$exe}") # the executable of -reference modal
 py=/usr/bin/python3
 x=${BENCH_X:-0.3}
 halvings=${BENCH_HALVINGS:-12}
@@ -37,8 +39,9 @@ trap 'rm -rf "$work"' EXIT
 
 # run N NAME OPTIONS...: one impact; prints "acor setup stepping dt"
 run() {
-  local n=$1 name=$2
+  local n=$1 name=$2 exe=$exe
   shift 2
+  [[ $name == ref* ]] && exe=$ref_exe
   local f="$work/$name.h5" lv="$work/$name.lv" log="$work/$name.log"
   if ! (cd "$root/options" && "$exe" -options_file base/default-scene.opts -impact_x "$x" -beam_nodes "$n" -impact_cost_warn 0 "$@" -output "$f" -output_overwrite -log_view ":$lv" >"$log" 2>&1); then
     echo "bench_defaults.sh: $name failed:" >&2
@@ -67,7 +70,7 @@ EOF
     END { printf "%s %.4g %.4g %s\n", a, su + mr, co + ff, d }' "$lv"
 }
 
-echo "executable: $exe"
+echo "executable: $exe (reference: $ref_exe)"
 echo "machine:    $(nproc) cores, $(uname -n); load average: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "scene:      options/base/default-scene.opts -impact_x $x $*"
 target=""

@@ -200,30 +200,35 @@ constexpr double kCostNodeStepExplicit = 6e-8; // s, rk 4: 5.9e-8 at N = 2001, 5
 constexpr double kCostNodeStepImplicit = 1e-7; // s, cn (banded LU): 7.7e-8 at N = 2001, 9.6e-8 at N = 20001
 
 // -ts_type modal on the same run at the default accuracy (the ACOR error of rk4 at its default
-// step on the default grid, 1.5e-8; scripts/bench_defaults.sh, docs/model.md "Cost"): its step
-// is T_r / kModalStepsPerContact whatever the grid (the beam's flow is exact: no stability
-// limit), each step kCostModalDofStep per dof, after the beam's dense modal decomposition,
-// kCostModalModes per dof^3, done once per beam (a sweep's points share it).
-constexpr double kModalStepsPerContact = 200;   // T_r/200 (its default step) meets the target at N = 41 to 641
-constexpr double kCostModalDofStep     = 1.5e-8; // s
-constexpr double kCostModalModes       = 2e-9;   // s
+// step on the default grid, 1.5e-8; scripts/bench_defaults.sh, docs/model.md "Cost"): its
+// default step T_r/200 meets it on every grid (1.4e-11 at N = 41, 7e-11 at N = 641: the beam's
+// flow is exact, no stability limit), each step kCostModalDofStep per dof (1.8e-8 at N = 161,
+// 1.6e-8 at N = 641), after the beam's dense modal decomposition, kCostModalModes per dof^3
+// (0.98 s at N = 641, 47 s at N = 2561: 2.8e-9), done once per beam: a sweep's points share it, and the free flight after
+// the separation (-impact_after modal) computes the same modes anyway.
+constexpr double kModalStepsPerTime = 200;    // steps per contact time scale T_r
+constexpr double kCostModalDofStep  = 1.6e-8; // s
+constexpr double kCostModalModes    = 3.7e-9; // s
 
 // An explicit type whose step the stability limit (~h^2) holds below the contact's own
 // T_r/200 is said at set-up, with what -ts_type modal would take when it applies (a linear
 // beam with proportional damping and no grip, within the dense decomposition's size) and is at
 // least twice as fast: "rk's step is bound by h^2 ...".
-PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info, PetscReal T, double seconds)
+PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info, PetscReal T, double seconds)
 {
   PetscFunctionBeginUser;
   if (!(info.dt_stable > 0) || !(0.9 * info.dt_stable < scales.time / 200) || !BeamModesAvailable(sys, nullptr)) PetscFunctionReturn(0);
-  const double dofs  = (double)sys.ndof;
-  const double modes = kCostModalModes * dofs * dofs * dofs;
-  const double modal = modes + kModalStepsPerContact * (T / scales.time) * kCostModalDofStep * dofs;
+  const double dofs   = (double)sys.ndof;
+  const double modes  = kCostModalModes * dofs * dofs * dofs;
+  const bool   anyway = sc.impact.after == ImpactAfter::Modal; // the free flight computes them too
+  const double steps  = kModalStepsPerTime * (T / scales.time) * kCostModalDofStep * dofs;
+  const double modal  = steps + (anyway ? 0 : modes);
   if (!(modal < 0.5 * seconds)) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(comm,
-                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs T_r/200 = %.3g s): ~%.3g s of stepping; "
-                        "-ts_type modal takes this run in ~%.2g s (%.0fx faster, of which %.2g s for the beam's modes, once per beam in a sweep), at the same accuracy\n",
-                        info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds, modal, seconds / modal, modes));
+                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs only T_r/200 = %.3g s): ~%.3g s of stepping; "
+                        "-ts_type modal takes this run in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g s, once per beam%s)\n",
+                        info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds, modal, seconds / modal, modes,
+                        anyway ? ": the free flight after the separation computes them too" : ", shared by a sweep's points"));
   PetscFunctionReturn(0);
 }
 
@@ -245,7 +250,7 @@ PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamS
   const double    steps         = T / dt;
   const double    per_step      = (explicit_type ? kCostNodeStepExplicit : kCostNodeStepImplicit) * sys.nodes * sys.fields;
   const double    seconds       = steps * per_step;
-  if (explicit_type) PetscCall(ImpactStepBoundNote(comm, sys, scales, info, T, seconds));
+  if (explicit_type) PetscCall(ImpactStepBoundNote(comm, sc, sys, scales, info, T, seconds));
   if (seconds <= sc.impact.cost_warn) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(comm,
                         "cost: at least %.3g steps (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
