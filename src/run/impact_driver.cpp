@@ -225,7 +225,7 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
   const double modal  = steps + (anyway ? 0 : modes);
   if (!(modal < 0.5 * seconds)) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(comm,
-                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs only T_r/200 = %.3g s): ~%.3g s of stepping; "
+                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs only T_r/200 = %.3g s): at least %.3g s of stepping; "
                         "-ts_type modal takes this run in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g s, once per beam%s)\n",
                         info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds, modal, seconds / modal, modes,
                         anyway ? ": the free flight after the separation computes them too" : ", shared by a sweep's points"));
