@@ -66,7 +66,11 @@ std::deque<std::shared_ptr<TSContext>> context_cache;
 PetscInt                               n_built = 0, n_reused = 0;
 bool                                   finalize_registered = false;
 
-PetscErrorCode TSContextCacheFinalize() // PetscRegisterFinalize: the objects die before PETSc does
+// The cache is emptied when PetscFinalize destroys the objects registered with
+// PetscObjectRegisterDestroy, its first step, while every PETSc package is alive (a
+// PetscRegisterFinalize function could run after the finalizer of a package that was
+// initialized after it, e.g. SNES's after an explicit run's context was kept).
+PetscErrorCode TSContextCacheFinalize(void *)
 {
   context_cache.clear();
   return 0;
@@ -93,7 +97,13 @@ std::shared_ptr<TSContext> TSContextFind(const std::string &key)
 PetscErrorCode TSContextKeep(const std::shared_ptr<TSContext> &c)
 {
   PetscFunctionBeginUser;
-  if (!finalize_registered) PetscCall(PetscRegisterFinalize(TSContextCacheFinalize));
+  if (!finalize_registered) {
+    PetscContainer sentinel; // destroyed by PetscFinalize, emptying the cache
+    PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &sentinel));
+    PetscCall(PetscContainerSetPointer(sentinel, &context_cache));
+    PetscCall(PetscContainerSetUserDestroy(sentinel, TSContextCacheFinalize));
+    PetscCall(PetscObjectRegisterDestroy((PetscObject)sentinel));
+  }
   finalize_registered = true;
   context_cache.push_front(c);
   while (context_cache.size() > kTSContextCacheSize) context_cache.pop_back();
