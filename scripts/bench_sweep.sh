@@ -21,6 +21,19 @@
 # and the overhead both move with whatever else runs. Environment: BENCH_FARM_POINTS (default "2500 10000"; each a multiple of 100),
 # BENCH_FARM_RANKS (default: nproc).
 #
+#   scripts/bench_sweep.sh --perpoint [path/to/beamimpact] [beamimpact options ...]
+#
+# the cost of a point against its contact's own stepping: the default scene's sweep
+# (options/default.opts) with 2000 points (BENCH_PERPOINT_POINTS) on 1 rank at N = 41, 161
+# (BENCH_PERPOINT_NODES) with -log_view, and the same with -ts_type cn at N = 641
+# (BENCH_PERPOINT_CN_NODES; rk4's h^2-bound step would take ~1 s a point there). Per point it
+# prints the compute (the farm's busy time), the stages of -log_view (set-up, contact, free
+# flight, output; the rest is the sweep's own work: options, row) and the overhead = compute -
+# contact - free flight, also as a share of the contact's stepping. With BENCH_BEFORE=path to
+# another executable (e.g. a build of ade16c0) each sweep runs with it too, back to back. Then a
+# two-axis sweep (impact_x x ball_speed, N = 41) at 500 and 2000 points: its time per point at
+# 2000 over that at 500 (a total linear in the points: 1). Prints the load average.
+#
 # Options given after the executable are appended to the defaults (the last
 # value of an option wins). Environment of the throughput mode:
 #   BENCH_RANKS   rank counts to run (default "1 2")
@@ -36,13 +49,17 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
 farm=0
+perpoint=0
 if [[ ${1:-} == --farm ]]; then
   farm=1
+  shift
+elif [[ ${1:-} == --perpoint ]]; then
+  perpoint=1
   shift
 fi
 exe=""
 if [[ $# -gt 0 && -x "$1" && ! -d "$1" ]]; then
-  exe="$1"
+  exe="$(readlink -f "$1")"
   shift
 else
   for c in "$root/build/release/beamimpact" "$root"/build/*/beamimpact; do
@@ -106,6 +123,73 @@ if ((farm)); then
   awk -v r="$ratio" 'BEGIN {exit !(r < 1.25)}' || { echo "  the overhead per point grows with the point count"; status=1; }
   ((status)) || echo "farm overhead below 5% and linear in the point count"
   exit $status
+fi
+
+if ((perpoint)); then
+  points=${BENCH_PERPOINT_POINTS:-2000}
+  exes=("$exe")
+  [[ -n ${BENCH_BEFORE:-} ]] && exes+=("$BENCH_BEFORE")
+  # The seconds of stage "$2" in the -log_view file $1 (0 if absent).
+  stage() { awk -v s="beamimpact: $2:" 'index($0, s) { sub(/.*: /, "", $0); split($0, f, " "); t = f[1] } END { printf "%.6g", t + 0 }' "$1"; }
+  echo "executable: ${exes[*]}"
+  echo "machine:    $(nproc) cores, $(uname -n); load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  printf "%-10s %5s %6s  %10s  %10s %10s %10s %10s %10s  %12s %10s\n" build N ts "compute" "set-up" "contact" "flight" "output" "rest" "overhead" "of contact"
+  run_point_sweep() { # exe label N ts-options...
+    local x=$1 label=$2 n=$3
+    shift 3
+    local log="$work/pp.log" lv="$work/pp.logview"
+    if ! (cd "$root/options" && "$x" -options_file default.opts -sweep_x "0:1.1:$points" -beam_nodes "$n" "$@" -sweep_progress_interval 1e9 -sweep_restart -output "$work/pp.h5" -log_view ":$lv" >"$log" 2>&1); then
+      echo "bench_sweep.sh: the sweep at N = $n failed:" >&2
+      cat "$log" >&2
+      exit 1
+    fi
+    local comp su co ff out
+    comp=$(sed -nE 's/.*per point: compute ([0-9.eE+-]+) ms;.*/\1/p' "$log")
+    su=$(stage "$lv" set-up)
+    co=$(stage "$lv" contact)
+    ff=$(stage "$lv" "free flight")
+    out=$(stage "$lv" output)
+    awk -v b="$label" -v n="$n" -v ts="$ts_label" -v c="$comp" -v su="$su" -v co="$co" -v ff="$ff" -v o="$out" -v p="$points" 'BEGIN {
+      s = 1e3 * su / p; k = 1e3 * co / p; f = 1e3 * ff / p; w = 1e3 * o / p; over = c - k - f
+      printf "%-10s %5d %6s  %7.4f ms  %7.4f ms %7.4f ms %7.4f ms %7.4f ms %7.4f ms  %9.4f ms %9.1f%%\n", b, n, ts, c, s, k, f, w, c - s - k - f - w, over, 100 * over / k }'
+    grep -E "^sweep: integrator contexts" "$log" | sed 's/^/             /' || true
+  }
+  for n in ${BENCH_PERPOINT_NODES:-41 161}; do
+    for x in "${exes[@]}"; do
+      ts_label=rk4
+      label=$([[ $x == "$exe" ]] && echo this || echo before)
+      run_point_sweep "$x" "$label" "$n" "$@"
+    done
+  done
+  for n in ${BENCH_PERPOINT_CN_NODES:-641}; do
+    for x in "${exes[@]}"; do
+      ts_label=cn
+      label=$([[ $x == "$exe" ]] && echo this || echo before)
+      run_point_sweep "$x" "$label" "$n" -ts_type cn "$@" # its default step, T_r/200, fixed
+    done
+  done
+  echo "(ms per point; compute: the farm's busy time per point; set-up/contact/flight/output: the -log_view stages;"
+  echo " rest: the sweep's own work per point (options, rows); overhead = compute - contact - flight)"
+  echo
+  echo "two-axis sweep (impact_x x ball_speed, N = 41, rk4):"
+  for x in "${exes[@]}"; do
+    label=$([[ $x == "$exe" ]] && echo this || echo before)
+    declare -A per=()
+    for m in 500 2000; do
+      log="$work/two$m.log"
+      if ! (cd "$root/options" && "$x" -options_file base/default-scene.opts -task sweep -sweep "impact_x=0:1.1:$((m / 20)),ball_speed=0.5:4:20" "$@" -sweep_progress_interval 1e9 -sweep_restart -output "$work/two$m.h5" >"$log" 2>&1); then
+        echo "bench_sweep.sh: the two-axis sweep of $m points failed:" >&2
+        cat "$log" >&2
+        exit 1
+      fi
+      el=$(sed -nE 's/^sweep: computed [0-9]+ points in ([0-9.eE+-]+) s.*/\1/p' "$log")
+      per[$m]=$(awk -v t="$el" -v m="$m" 'BEGIN {printf "%.4g", 1e3 * t / m}')
+      printf "  %-7s %5d points: %s s, %s ms a point\n" "$label" "$m" "$el" "${per[$m]}"
+    done
+    awk -v a="${per[500]}" -v b="${per[2000]}" -v l="$label" 'BEGIN {printf "  %-7s time per point at 2000 / at 500: %.3f (linear: 1)\n", l, b / a}'
+  done
+  echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  exit 0
 fi
 
 defaults=(-beam_length 1.1 -beam_left free -beam_right free -ball_law linear

@@ -129,6 +129,9 @@ grep -q "^cost: at least 1.63e+07 steps (0.0815 s stepped / dt 5e-09 s, -ts_dt) 
   && pass "a long run (4001 nodes, rk4 at 5e-9 s) prints its cost first" || fail "no cost estimate before a long run: $out"
 out=$("$exe" -output none 2>&1)
 ! grep -q "^cost:\|^progress:" <<<"$out" && pass "the default run prints no cost or progress line" || fail "the default run: $out"
+out=$(output_until "^cost: -ts_type rk's step" 60 "$exe" -beam_nodes 641 -output none)
+grep -q "^cost: -ts_type rk's step is bound by h^2: the stability limit dt_max = [0-9.e-]* s at N = 641 .*-ts_type modal takes this run in ~[0-9.e-]* s at the same accuracy ([0-9]*x faster)" <<<"$out" \
+  && pass "rk4's h^2-bound step on 641 nodes is said at set-up, with -ts_type modal's time" || fail "no h^2 note at N = 641: $out"
 out=$("$exe" -impact_cost_warn 1e-9 -impact_progress 1e-9 -output none 2>&1)
 grep -q "^cost: at least [0-9.e+]* steps .* the explicit stability limit) on 41 nodes" <<<"$out" && grep -q "^progress: t = [0-9.e-]* s simulated (the run stops by [0-9.e-]* s), [0-9]* steps" <<<"$out" \
   && pass "-impact_cost_warn and -impact_progress set when the cost and progress lines appear" || fail "cost/progress lines: $out"

@@ -199,11 +199,45 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
 constexpr double kCostNodeStepExplicit = 6e-8; // s, rk 4: 5.9e-8 at N = 2001, 5.8e-8 at N = 4001
 constexpr double kCostNodeStepImplicit = 1e-7; // s, cn (banded LU): 7.7e-8 at N = 2001, 9.6e-8 at N = 20001
 
-// Before the run (-task impact): the steps the run will take at least and their expected wall
-// time, printed when above -impact_cost_warn, with what to change. The stepped time is the
-// contact (T_r), and the window after it when the free flight is stepped too; the step is
-// the fixed step, or an explicit adaptive type's stability limit (a bound: accuracy may ask
-// for smaller steps); an implicit adaptive run has no estimate.
+// -ts_type modal on the same run at the default accuracy (the ACOR error of rk4 at its default
+// step on the default grid, 1.5e-8; scripts/bench_defaults.sh, docs/model.md "Cost"): its
+// default step T_r/200 meets it on every grid (1.4e-11 at N = 41, 7e-11 at N = 641: the beam's
+// flow is exact, no stability limit), each step kCostModalDofStep per dof (1.8e-8 at N = 161,
+// 1.6e-8 at N = 641), after the beam's dense modal decomposition, kCostModalModes per dof^3
+// (0.98 s at N = 641, 47 s at N = 2561: 2.8e-9), done once per beam: a sweep's points share it, and the free flight after
+// the separation (-impact_after modal) computes the same modes anyway.
+constexpr double kModalStepsPerTime = 200;    // steps per contact time scale T_r
+constexpr double kCostModalDofStep  = 1.6e-8; // s
+constexpr double kCostModalModes    = 3.7e-9; // s
+
+// An explicit type whose step the stability limit (~h^2) holds below the contact's own
+// T_r/200 is said at set-up, with what -ts_type modal would take when it applies (a linear
+// beam with proportional damping and no grip, within the dense decomposition's size) and is at
+// least twice as fast: "rk's step is bound by h^2 ...".
+PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info, PetscReal T, double seconds)
+{
+  PetscFunctionBeginUser;
+  if (!(info.dt_stable > 0) || !(0.9 * info.dt_stable < scales.time / 200) || !BeamModesAvailable(sys, nullptr)) PetscFunctionReturn(0);
+  const double dofs   = (double)sys.ndof;
+  const double modes  = kCostModalModes * dofs * dofs * dofs;
+  const bool   anyway = sc.impact.after == ImpactAfter::Modal; // the free flight computes them too
+  const double steps  = kModalStepsPerTime * (T / scales.time) * kCostModalDofStep * dofs;
+  const double modal  = steps + (anyway ? 0 : modes);
+  if (!(modal < 0.5 * seconds)) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(comm,
+                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs only T_r/200 = %.3g s): at least %.3g s of stepping; "
+                        "-ts_type modal takes this run in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g s, once per beam%s)\n",
+                        info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds, modal, seconds / modal, modes,
+                        anyway ? ": the free flight after the separation computes them too" : ", shared by a sweep's points"));
+  PetscFunctionReturn(0);
+}
+
+// Before the run (-task impact, and a sweep's first point): the steps the run will take at
+// least and their expected wall time, printed when above -impact_cost_warn, with what to
+// change; and an explicit step bound by h^2 with the faster choice (ImpactStepBoundNote). The
+// stepped time is the contact (T_r), and the window after it when the free flight is stepped
+// too; the step is the fixed step, or an explicit adaptive type's stability limit (a bound:
+// accuracy may ask for smaller steps); an implicit adaptive run has no estimate.
 PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info)
 {
   PetscFunctionBeginUser;
@@ -216,12 +250,13 @@ PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamS
   const double    steps         = T / dt;
   const double    per_step      = (explicit_type ? kCostNodeStepExplicit : kCostNodeStepImplicit) * sys.nodes * sys.fields;
   const double    seconds       = steps * per_step;
+  if (explicit_type) PetscCall(ImpactStepBoundNote(comm, sc, sys, scales, info, T, seconds));
   if (seconds <= sc.impact.cost_warn) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(comm,
                         "cost: at least %.3g steps (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
                         steps, (double)T, (double)dt, info.fixed_step ? "-ts_dt" : "the explicit stability limit", sys.nodes, seconds, per_step,
                         info.fixed_step ? "a larger -ts_dt" : "looser -ts_rtol/-ts_atol",
-                        explicit_type ? " (the explicit limit grows as h^2)" : "", explicit_type ? ", or an implicit -ts_type (cn, alpha2, bdf) whose step is not bound by the stability limit" : ""));
+                        explicit_type ? " (the explicit limit grows as h^2)" : "", explicit_type ? ", or an implicit -ts_type (cn, alpha2, bdf) or -ts_type modal, whose step is not bound by the stability limit" : ""));
   PetscFunctionReturn(0);
 }
 

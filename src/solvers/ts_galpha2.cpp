@@ -105,7 +105,8 @@ PetscErrorCode SetRestart_GAlpha2(TS ts, GAlpha2Restart kind)
 {
   PetscFunctionBeginUser;
   PetscCheck(kind == GAlpha2Restart::Shifted || kind == GAlpha2Restart::Exact, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: unknown restart kind %d (valid: shifted, exact)", (int)kind);
-  Data(ts)->restart = kind;
+  Data(ts)->restart           = kind;
+  Data(ts)->unit_mass_checked = PETSC_FALSE; // the exact restart checks dF/dA = I again, as on a new TS
   PetscFunctionReturn(0);
 }
 

@@ -79,7 +79,9 @@ enum class GAlpha2Restart { Shifted = 0, Exact = 1 };
 // keeps it (TSSetType returns early on an equal name). Calling again is harmless.
 PetscErrorCode TSGAlpha2Register();
 
-// Restart formula (-ts_alpha_restart). Errors if ts is not this type.
+// Restart formula (-ts_alpha_restart). Errors if ts is not this type. Setting it, even to
+// the same kind, makes the next exact restart check dF/dA = I again, as a new TS does (a TS
+// reused for another run: solvers/ts_stepper.cpp).
 PetscErrorCode TSGAlpha2SetRestart(TS ts, GAlpha2Restart kind);
 PetscErrorCode TSGAlpha2GetRestart(TS ts, GAlpha2Restart *kind);
 

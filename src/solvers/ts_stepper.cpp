@@ -13,9 +13,12 @@
 #include <petscdmcomposite.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <deque>
+#include <sstream>
 
 namespace beamimpact {
 
@@ -29,17 +32,124 @@ bool TypeCanRollBack(const char *type)
   return false;
 }
 
+// The per-structure context: the layout, the TS configured from the options (type, its
+// set-up and work vectors), the state vectors and the Jacobian's storage. Built once for a
+// structure and a set of integrator options (its key) and reused by every run on them (the
+// points of a sweep, the repeats of a study): a run changes only the contact point, the ball,
+// the initial state and the contact state (TSStepperCreate). What the options set at the
+// build is kept here and replayed on reuse, so that a reused run is the fresh one bit for bit.
+struct TSContext {
+  std::string key;                 // TSContextKey: comm, grid, formulation, type, solver options
+  TSProblem   P;                   // the callbacks' context (its address is the TS's)
+  TS          ts = nullptr;
+  Vec         U = nullptr, V = nullptr; // V: velocities of the second-order form
+  NewtonFloor newton_floor;        // the SNES convergence test's context
+  bool        finished = false;    // the last run on it ended normally (else it is dropped)
+  bool        monitored = false;   // -ts_monitor (or any TS monitor) given
+  bool        dt_from_options = false, dt_max_from_options = false; // -ts_dt, -ts_adapt_dt_max given
+  PetscReal   dt_option = 0;       // s, -ts_dt as TSSetFromOptions read it
+  PetscReal   dt_min = 0, dt_max = 0; // s, the adaptor's step limits after TSSetFromOptions
+  PetscReal   ystar = -1;          // the rk tableau's imaginary-axis stability bound (-1: not computed)
+  ~TSContext()
+  {
+    TSDestroy(&ts);
+    VecDestroy(&U);
+    VecDestroy(&V);
+    TSJacobianDestroy(P);
+    TSLayoutDestroy(&P.L);
+  }
+};
+
+// The contexts of the structures run last (most recent first), and what reuse saved.
+constexpr size_t                       kTSContextCacheSize = 4; // a categorical axis over a few types keeps each one
+std::deque<std::shared_ptr<TSContext>> context_cache;
+PetscInt                               n_built = 0, n_reused = 0;
+bool                                   finalize_registered = false;
+
+// The cache is emptied when PetscFinalize destroys the objects registered with
+// PetscObjectRegisterDestroy, its first step, while every PETSc package is alive (a
+// PetscRegisterFinalize function could run after the finalizer of a package that was
+// initialized after it, e.g. SNES's after an explicit run's context was kept).
+PetscErrorCode TSContextCacheFinalize(void *)
+{
+  context_cache.clear();
+  return 0;
+}
+
+void TSContextDrop(const std::shared_ptr<TSContext> &c)
+{
+  context_cache.erase(std::remove(context_cache.begin(), context_cache.end(), c), context_cache.end());
+}
+
+// A context of that key that no run holds, moved to the front; nullptr if none.
+std::shared_ptr<TSContext> TSContextFind(const std::string &key)
+{
+  for (auto it = context_cache.begin(); it != context_cache.end(); ++it)
+    if ((*it)->key == key && it->use_count() == 1) {
+      auto c = *it;
+      context_cache.erase(it);
+      context_cache.push_front(c);
+      return c;
+    }
+  return nullptr;
+}
+
+PetscErrorCode TSContextKeep(const std::shared_ptr<TSContext> &c)
+{
+  PetscFunctionBeginUser;
+  if (!finalize_registered) {
+    PetscContainer sentinel; // destroyed by PetscFinalize, emptying the cache
+    PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &sentinel));
+    PetscCall(PetscContainerSetPointer(sentinel, &context_cache));
+    PetscCall(PetscContainerSetUserDestroy(sentinel, TSContextCacheFinalize));
+    PetscCall(PetscObjectRegisterDestroy((PetscObject)sentinel));
+  }
+  finalize_registered = true;
+  context_cache.push_front(c);
+  while (context_cache.size() > kTSContextCacheSize) context_cache.pop_back();
+  PetscFunctionReturn(0);
+}
+
+// The key of a context: the communicator, the grid and its ghost width, the type, and every
+// option that the TS, its nonlinear and linear solvers and their matrices read (-ts_, -snes_,
+// -ksp_, -pc_, -mat_), as written. The beam's values, the contact point and the ball are not
+// in it: they are set on every run.
+PetscErrorCode TSContextKey(MPI_Comm comm, const BeamSystem &sys, const char *type, std::string *key)
+{
+  char *all = nullptr;
+
+  PetscFunctionBeginUser;
+  key->assign(reinterpret_cast<const char *>(&comm), sizeof comm);
+  *key += " " + std::to_string((long long)sys.nodes) + " " + std::to_string((long long)sys.fields) + " " + std::to_string((long long)sys.GhostNodes()) + " " + type + " |";
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  std::istringstream in(all ? all : "");
+  PetscCall(PetscFree(all));
+  std::string tok;
+  bool        keep = false;
+  while (in >> tok) {
+    if (tok.size() > 1 && tok[0] == '-' && std::isalpha(static_cast<unsigned char>(tok[1]))) {
+      keep = false;
+      for (const char *prefix : {"-ts_", "-snes_", "-ksp_", "-pc_", "-mat_"}) keep = keep || tok.compare(0, std::strlen(prefix), prefix) == 0;
+    }
+    if (keep) *key += " " + tok;
+  }
+  PetscFunctionReturn(0);
+}
+
 class TSStepper : public Stepper {
 public:
-  TSProblem      P;
-  TS             ts = nullptr;
-  Vec            U = nullptr, V = nullptr; // V: velocities of the second-order form
+  explicit TSStepper(std::shared_ptr<TSContext> c) : C(std::move(c)), P(C->P), ts(C->ts), U(C->U), V(C->V), newton_floor(C->newton_floor) {}
+  std::shared_ptr<TSContext> C;
+  TSProblem     &P;
+  TS            &ts;
+  Vec           &U, &V; // V: velocities of the second-order form
+  NewtonFloor   &newton_floor;
+  StepperCounts  counts0; // the TS's cumulative counts when this run started on it
   bool           fixed_step = true;
   PetscReal      dt_nominal = 0, dt_cap = 0; // s
   ContactScales  scales;
   IntegratorInfo info;
   std::string    rk_type; // -ts_rk_type, for messages
-  NewtonFloor    newton_floor;
   // Damped beam: the dissipated energy D by the dissipation rule (system/dissipation.hpp).
   bool                damped = false;
   bool                monitored = false; // -ts_monitor (or any TS monitor) given: called after each step
@@ -52,11 +162,7 @@ public:
   ~TSStepper() override
   {
     if (ts) TSViewFromOptions(ts, NULL, "-ts_view"); // at the end, as TSSolve would
-    TSDestroy(&ts);
-    VecDestroy(&U);
-    VecDestroy(&V);
-    TSJacobianDestroy(P);
-    TSLayoutDestroy(&P.L);
+    if (!C->finished) TSContextDrop(C);              // a run that stopped on an error: its context is not reused
   }
   MPI_Comm    Comm() const override { return P.L.comm; }
   std::string Method() const override { return "-ts_type " + info.ts_type; }
@@ -319,18 +425,33 @@ PetscErrorCode TSStepper::GatherDisplacement(std::vector<PetscReal> *y)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSStepper::Counts(StepperCounts *n)
+// The TS's cumulative counts (over every run on its context).
+PetscErrorCode TSCumulativeCounts(TS ts, Formulation form, StepperCounts *n)
 {
   PetscFunctionBeginUser;
   PetscCall(TSGetStepRejections(ts, &n->rejected_steps));
-  if (P.form != Formulation::Explicit) {
+  if (form != Formulation::Explicit) {
     PetscCall(TSGetSNESFailures(ts, &n->failed_solves));
     PetscCall(TSGetSNESIterations(ts, &n->nonlinear_its));
     PetscCall(TSGetKSPIterations(ts, &n->linear_its));
   }
+  PetscFunctionReturn(0);
+}
+
+// This run's counts. Called once the run is over (ImpactFinish): the context is then fit for
+// the next run.
+PetscErrorCode TSStepper::Counts(StepperCounts *n)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TSCumulativeCounts(ts, P.form, n));
+  n->rejected_steps -= counts0.rejected_steps;
+  n->failed_solves -= counts0.failed_solves;
+  n->nonlinear_its -= counts0.nonlinear_its;
+  n->linear_its -= counts0.linear_its;
   n->function_evals      = P.count.func;
   n->jacobian_evals      = P.count.jac;
   n->jacobian_assemblies = P.count.assembled;
+  C->finished            = true;
   PetscFunctionReturn(0);
 }
 
@@ -447,7 +568,8 @@ PetscErrorCode TSCheckTypeSettings(TS ts, const char *type, MPI_Comm comm)
 // hold two events), then the options, then what the run needs of the solver.
 PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettings &set)
 {
-  TSAdapt adapt;
+  TSAdapt   adapt;
+  PetscBool flag;
 
   PetscFunctionBeginUser;
   S.dt_cap = S.scales.time / 8;
@@ -458,6 +580,15 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   PetscCall(TSGetAdapt(S.ts, &adapt));
   PetscCall(TSAdaptSetStepLimits(adapt, PETSC_DEFAULT, S.dt_cap));
   PetscCall(TSSetFromOptions(S.ts));
+  { // what the options set, replayed when the context is reused (TSContextReuse)
+    TSContext &C = *S.C;
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_dt", &flag));
+    C.dt_from_options = flag;
+    PetscCall(TSGetTimeStep(S.ts, &C.dt_option));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_adapt_dt_max", &flag));
+    C.dt_max_from_options = flag;
+    PetscCall(TSAdaptGetStepLimits(adapt, &C.dt_min, &C.dt_max));
+  }
   TSType    now;
   PetscBool same, fixed;
   PetscCall(TSGetType(S.ts, &now));
@@ -501,7 +632,8 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   PetscCall(TSRKGetTableau(S.ts, &s, &A, &b, NULL, NULL, NULL, NULL, NULL));
   PetscCall(TSRKGetType(S.ts, &rktype));
   S.rk_type             = rktype;
-  const PetscReal ystar = RKImaginaryStabilityBound(s, A, b);
+  if (S.C->ystar < 0) S.C->ystar = RKImaginaryStabilityBound(s, A, b); // a constant of the tableau: once per context
+  const PetscReal ystar = S.C->ystar;
   PetscCheck(ystar > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-ts_rk_type %s is unstable for an undamped oscillation at any step (its stability region does not contain the imaginary axis); use -ts_rk_type 3bs, 4 or 5dp, or an implicit type (cn, bdf, alpha2)", rktype);
   const BeamSystem &sys = *S.P.sys;
@@ -580,7 +712,7 @@ PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed, const std::vector<
     for (PetscInt d = L.D0(); d < L.D1(); ++d) o.beam[(d / nf) * L.dof + nf + d % nf] = beam_velocity[d];
   PetscCall(TSStateWriteEnd(L, S.U, &o));
   if (S.P.form == Formulation::SecondOrder) {
-    PetscCall(VecDuplicate(S.U, &S.V));
+    if (!S.V) PetscCall(VecDuplicate(S.U, &S.V));
     PetscCall(VecZeroEntries(S.V));
     PetscCall(TSStateWriteBegin(L, S.V, &o));
     if (o.ball) o.ball[0] = speed;
@@ -594,18 +726,96 @@ PetscErrorCode SetInitialState(TSStepper &S, PetscReal speed, const std::vector<
   PetscFunctionReturn(0);
 }
 
+// A new context: the layout, the TS of the type with the program's defaults and then the
+// options, and the checks of what the options set.
+PetscErrorCode TSContextBuild(MPI_Comm comm, TSStepper &S, const char *type, const TSStepperSettings &set)
+{
+  TSProblem &P = S.P;
+
+  PetscFunctionBeginUser;
+  PetscCall(TSLayoutCreate(comm, P.sys->nodes, P.sys->fields, P.sys->GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
+  PetscCall(CreateTS(S, type));
+  PetscCall(ConfigureTS(S, type, set));
+  PetscBool max_steps = PETSC_FALSE, max_time = PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_steps", &max_steps));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_time", &max_time));
+  PetscCheck(!max_steps && !max_time, comm, PETSC_ERR_ARG_INCOMP,
+             "%s is not used here: the run's end is set by its events (the window after the last separation); use -impact_max_time (s) to cap the simulated time or -impact_window to shorten it",
+             max_steps ? "-ts_max_steps" : "-ts_max_time");
+  char *all = nullptr; // any -ts_monitor* option: TSSetFromOptions installed a monitor
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  S.monitored = S.C->monitored = all && std::strstr(all, "-ts_monitor");
+  PetscCall(PetscFree(all));
+  PetscReal atol, rtol;
+  PetscCall(TSGetTolerances(S.ts, &atol, NULL, &rtol, NULL));
+  for (auto tol : {std::make_pair("-ts_atol", atol), std::make_pair("-ts_rtol", rtol)}) {
+    char value[64]; // PETSc's %g would write -1 as "-1."
+    std::snprintf(value, sizeof value, "%g", (double)tol.second);
+    PetscCheck(tol.second >= 0 && std::isfinite(tol.second), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: an error tolerance must be finite and >= 0", tol.first, value);
+  }
+  PetscFunctionReturn(0);
+}
+
+// A context reused for this run: what ConfigureTS set from the run (the default step T_r/200
+// and the cap T_r/8 from this ball's contact time, the Newton floor from this contact's
+// omega_max) set again, what the options set (-ts_dt, -ts_adapt_dt_min/max) replayed; the
+// Jacobian's storage rebuilt for this contact point (its pattern holds the coupled dofs), so
+// the LU is factored anew at the first solve, as in a fresh TS.
+PetscErrorCode TSContextReuse(TSStepper &S, const char *type)
+{
+  TSProblem       &P = S.P;
+  const TSContext &C = *S.C;
+  TSAdapt          adapt;
+  PetscBool        fixed;
+
+  PetscFunctionBeginUser;
+  if (P.form != Formulation::Explicit) {
+    PetscCall(TSJacobianDestroy(P));
+    P.jac = JacobianCache();
+    P.jac.contact = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
+    PetscCall(TSJacobianCreate(P));
+    if (P.form == Formulation::SecondOrder) PetscCall(TSSetI2Jacobian(S.ts, P.jac.J, P.jac.J, TSI2JacobianBeam, &P));
+    else PetscCall(TSSetIJacobian(S.ts, P.jac.J, P.jac.J, TSIJacobianBeam, &P));
+    S.newton_floor.omega2 = S.info.omega_max_bound * S.info.omega_max_bound;
+  }
+  if (P.form == Formulation::SecondOrder) { // alpha2: its restart's one-off check, as on a new TS
+    GAlpha2Restart kind;
+    PetscCall(TSGAlpha2GetRestart(S.ts, &kind));
+    PetscCall(TSGAlpha2SetRestart(S.ts, kind));
+  }
+  S.dt_cap = S.scales.time / 8;
+  PetscCall(TSSetTimeStep(S.ts, C.dt_from_options ? C.dt_option : S.scales.time / 200));
+  PetscCall(TSGetAdapt(S.ts, &adapt));
+  PetscCall(TSAdaptSetStepLimits(adapt, C.dt_min, C.dt_max_from_options ? C.dt_max : S.dt_cap));
+  PetscCall(PetscObjectTypeCompare((PetscObject)adapt, TSADAPTNONE, &fixed));
+  S.info.ts_type    = type;
+  S.fixed_step      = fixed;
+  S.info.fixed_step = fixed;
+  S.monitored       = C.monitored;
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
                                const TSStepperSettings &set, const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
-  auto      S             = std::make_unique<TSStepper>();
-  char      type[256]     = TSRK;
-  PetscBool flg;
+  char        type[256] = TSRK;
+  PetscBool   flg;
+  std::string key;
 
   PetscFunctionBeginUser;
   // The formulation depends on the TS type: read it before building the problem.
   PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_type", type, sizeof(type), &flg));
+  // A run that checks its options builds its own TS (the check is of what that set-up read);
+  // -ts_type modal keeps per-run state of its own (ts_modal.cpp).
+  const bool cacheable = !set.check_unused_options && !TSModalIsType(type);
+  if (cacheable) PetscCall(TSContextKey(comm, sys, type, &key));
+  std::shared_ptr<TSContext> C     = cacheable ? TSContextFind(key) : nullptr;
+  const bool                 reuse = C != nullptr;
+  if (!reuse) C = std::make_shared<TSContext>();
+  C->finished = false; // until this run's Counts
+  auto       S          = std::make_unique<TSStepper>(C);
   TSProblem &P          = S->P;
   P.sys                 = &sys;
   P.frame               = frame;
@@ -614,42 +824,43 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   P.contact             = contact;
   P.form                = FormulationOfType(type);
   P.jac.contact         = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
+  P.count               = TSCounters();
   S->scales             = scales;
   S->info.formulation   = FormulationName(P.form);
   if (TSModalIsType(type)) S->info.formulation = "modal (exact beam flow, polynomial contact force)"; // explicit right-hand side, exact beam flow
   S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass);
-  PetscCall(TSLayoutCreate(comm, sys.nodes, sys.fields, sys.GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
-  PetscCall(CreateTS(*S, type));
-  PetscCall(ConfigureTS(*S, type, set));
-  {
-    PetscBool max_steps = PETSC_FALSE, max_time = PETSC_FALSE;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_steps", &max_steps));
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_time", &max_time));
-    PetscCheck(!max_steps && !max_time, comm, PETSC_ERR_ARG_INCOMP,
-               "%s is not used here: the run's end is set by its events (the window after the last separation); use -impact_max_time (s) to cap the simulated time or -impact_window to shorten it",
-               max_steps ? "-ts_max_steps" : "-ts_max_time");
-    char *all = nullptr; // any -ts_monitor* option: TSSetFromOptions installed a monitor
-    PetscCall(PetscOptionsGetAll(NULL, &all));
-    S->monitored = all && std::strstr(all, "-ts_monitor");
-    PetscCall(PetscFree(all));
-    PetscReal atol, rtol;
-    PetscCall(TSGetTolerances(S->ts, &atol, NULL, &rtol, NULL));
-    for (auto tol : {std::make_pair("-ts_atol", atol), std::make_pair("-ts_rtol", rtol)}) {
-      char value[64]; // PETSc's %g would write -1 as "-1."
-      std::snprintf(value, sizeof value, "%g", (double)tol.second);
-      PetscCheck(tol.second >= 0 && std::isfinite(tol.second), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: an error tolerance must be finite and >= 0", tol.first, value);
-    }
-  }
+  if (reuse) PetscCall(TSContextReuse(*S, type));
+  else PetscCall(TSContextBuild(comm, *S, type, set));
   PetscCall(ExplicitStability(*S));
   PetscCall(TSGetTimeStep(S->ts, &S->dt_nominal));
   PetscCheck(S->dt_nominal > 0 && std::isfinite(S->dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);
   S->info.dt_nominal = S->dt_nominal;
   if (set.report_setup) PetscCall(ReportSetup(*S));
   PetscCall(SetInitialState(*S, ball.speed, beam_velocity));
+  if (reuse) PetscCall(TSRestartStep(S->ts)); // the last run's step history is not this run's
   S->damped = sys.Damped();
   if (S->damped) PetscCall(S->DissipationRestart());
+  PetscCall(TSCumulativeCounts(S->ts, P.form, &S->counts0));
+  if (cacheable && !reuse && !C->monitored) { // a monitor may keep state of its own: not reused
+    C->key = key;
+    PetscCall(TSContextKeep(C));
+  }
+  (reuse ? n_reused : n_built)++;
   *info = S->info;
   *stepper = std::move(S);
+  PetscFunctionReturn(0);
+}
+
+void TSStepperContextCounts(PetscInt *built, PetscInt *reused)
+{
+  *built  = n_built;
+  *reused = n_reused;
+}
+
+PetscErrorCode TSStepperContextCacheClear()
+{
+  PetscFunctionBeginUser;
+  context_cache.clear();
   PetscFunctionReturn(0);
 }
 

@@ -27,4 +27,13 @@ struct TSStepperSettings {
 PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
                                const TSStepperSettings &settings, const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
+// The per-structure contexts (the layout, the configured TS, its vectors and the Jacobian's
+// storage): TSStepperCreate reuses one built for the same communicator, grid, type and solver
+// options (-ts_, -snes_, -ksp_, -pc_, -mat_) when no run holds it, so a sweep's points cost
+// their stepping only. A run that checks its options (-task impact) or uses -ts_type modal or a
+// TS monitor builds its own. built / reused: the contexts made and the runs that reused one,
+// since the start; the cache is emptied at PetscFinalize, or by TSStepperContextCacheClear.
+void           TSStepperContextCounts(PetscInt *built, PetscInt *reused);
+PetscErrorCode TSStepperContextCacheClear();
+
 } // namespace beamimpact

@@ -9,6 +9,7 @@
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
 #include "run/outcome.hpp"
+#include "solvers/ts_stepper.hpp"
 #include "studies/sweep_farm.hpp"
 #include "studies/sweep_notes.hpp"
 
@@ -454,6 +455,9 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
   PetscCallMPI(MPI_Reduce(&mine.busy, &busy_min, 1, MPI_DOUBLE, MPI_MIN, 0, comm));
   PetscCallMPI(MPI_Reduce(&mine.journal, &journal_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
   PetscCallMPI(MPI_Reduce(&mine.handout, &handout_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
+  PetscInt contexts[2]; // the integrator's per-structure contexts built, and the runs that reused one (all ranks)
+  TSStepperContextCounts(&contexts[0], &contexts[1]);
+  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : contexts, contexts, 2, MPIU_INT, MPI_SUM, 0, comm));
   if (rank == 0 && S.status_column >= 0) {
     std::map<int, PetscInt> count;
     int                     beyond = -1; // the column compression_beyond_radius
@@ -488,6 +492,8 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
                               "sweep: per point: compute %.4g ms; farm overhead %.4g ms (%.2f%% of the ranks' time): hand-out %.4g ms, journal %.4g ms, rewrites %.4g ms (%d), idle at the end %.4g ms; set-up %.3f s\n",
                               1e3 * busy_sum / computed, 1e3 * (size * farm_time - busy_sum) / computed, 100 * (size * farm_time - busy_sum) / (size * farm_time), 1e3 * handout_sum / computed,
                               1e3 * journal_sum / computed, 1e3 * S.write_total / computed, S.writes, 1e3 * (size * farm_time - busy_sum - handout_sum - journal_sum - S.write_total) / computed, setup));
+      if (computed > 0) // solvers/ts_stepper.hpp: a point on a structure already run reuses its TS, layout and vectors
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: integrator contexts: %" PetscInt_FMT " built, %" PetscInt_FMT " runs reused one (all ranks, the probe included)\n", contexts[0], contexts[1]));
     }
   }
   if (failed)
