@@ -9,7 +9,8 @@
 
 namespace beamimpact {
 
-extern "C" void dgbsv_(const int *n, const int *kl, const int *ku, const int *nrhs, double *ab, const int *ldab, int *ipiv, double *b, const int *ldb, int *info);
+extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab, const int *ldab, int *ipiv, int *info);
+extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const int *ku, const int *nrhs, const double *ab, const int *ldab, const int *ipiv, double *b, const int *ldb, int *info);
 
 ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, PetscReal ball_mass, PetscReal k)
 {
@@ -117,33 +118,62 @@ std::vector<BandEntry> BandEntries(const ModalSystem &S, bool contact)
   return entries;
 }
 
-// Two steps of inverse iteration on phi (unit length, orientation kept) with the banded LU of
-// A - sigma I (LAPACK dgbsv; ab of leading dimension 2 kl + ku + 1).
-PetscErrorCode InverseIterate(const std::vector<BandEntry> &entries, const std::vector<int> &pos, int kl, PetscReal sigma, PetscReal *phi)
+// y = A x with A = M^{-1/2} K_p M^{-1/2} in the factored form of K (the strains first,
+// BeamSystemStiffnessApply): its round-off is relative to A x, not to |A| |x| as the band's is.
+void ModalApply(const ModalSystem &S, bool contact, const PetscReal *x, std::vector<PetscReal> &q, std::vector<PetscReal> &f, PetscReal *y)
 {
-  const int           n = (int)pos.size(), ku = kl, ldab = 2 * kl + ku + 1, one = 1;
-  std::vector<double> ab((size_t)ldab * n), x(n);
-  std::vector<int>    ipiv(n);
+  const BeamSystem &sys = *S.sys;
+  PetscReal         c   = 0;
+  std::fill(q.begin(), q.end(), 0.0);
+  for (PetscInt d = 0; d < S.n; ++d) {
+    const PetscReal qd = x[d] / std::sqrt(S.mass[d]);
+    if (d < S.BeamDofs()) q[S.dof[d]] = qd;
+    c += S.g[d] * qd;
+  }
+  BeamSystemStiffnessApply(sys, q.data(), sys.fields, 0, sys.ndof, f.data(), sys.fields);
+  for (PetscInt d = 0; d < S.n; ++d) y[d] = ((d < S.BeamDofs() ? f[S.dof[d]] : 0.0) + (contact ? S.k * S.g[d] * c : 0.0)) / std::sqrt(S.mass[d]);
+}
+
+// Two steps of inverse iteration on phi (unit length, orientation kept) with the banded LU of
+// A - sigma I (LAPACK dgbtrf; ab of leading dimension 2 kl + ku + 1), each solve corrected
+// once with its residual in the factored form (ModalApply). The band's entries carry the
+// round-off of their assembly (eps |K|, ~eps omega_max^2 per entry): solved against the band
+// alone, a low mode is the band's, off the system's by ~eps omega_max^2 / gap (the reference's
+// ACOR off by 1e-8 at N = 641); the correction makes it the factored system's.
+PetscErrorCode InverseIterate(const ModalSystem &S, bool contact, const std::vector<BandEntry> &entries, const std::vector<int> &pos, int kl, PetscReal sigma, PetscReal *phi)
+{
+  const int              n = (int)pos.size(), ku = kl, ldab = 2 * kl + ku + 1, one = 1;
+  std::vector<double>    ab((size_t)ldab * n, 0.0), x(n), r(n), ax(n);
+  std::vector<int>       ipiv(n);
+  std::vector<PetscReal> q(S.sys->ndof), f(S.sys->ndof);
+  int                    info;
 
   PetscFunctionBeginUser;
+  for (const BandEntry &e : entries) {
+    const int i = pos[e.r], j = pos[e.c];
+    ab[(size_t)(kl + ku + i - j) + (size_t)j * ldab] += e.v;
+  }
+  for (int i = 0; i < n; ++i) ab[(size_t)(kl + ku) + (size_t)i * ldab] -= sigma;
+  dgbtrf_(&n, &n, &kl, &ku, ab.data(), &ldab, ipiv.data(), &info);
+  PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbtrf failed (info %d)", info);
+  if (info > 0) PetscFunctionReturn(0); // exactly singular: the vector is already exact
+  auto solve = [&](std::vector<double> &b) { // b in free-dof order, overwritten by (LU)^{-1} b
+    for (int d = 0; d < n; ++d) r[pos[d]] = b[d];
+    dgbtrs_("N", &n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), r.data(), &n, &info);
+    for (int d = 0; d < n; ++d) b[d] = r[pos[d]];
+  };
+  std::vector<double> res(n);
   for (int it = 0; it < 2; ++it) {
-    std::fill(ab.begin(), ab.end(), 0.0);
-    for (const BandEntry &e : entries) {
-      const int i = pos[e.r], j = pos[e.c];
-      ab[(size_t)(kl + ku + i - j) + (size_t)j * ldab] += e.v;
-    }
-    for (int i = 0; i < n; ++i) ab[(size_t)(kl + ku) + (size_t)i * ldab] -= sigma;
-    for (int d = 0; d < n; ++d) x[pos[d]] = phi[d];
-    int info;
-    dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), x.data(), &n, &info);
-    PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbsv failed (info %d)", info);
-    if (info > 0) break; // exactly singular: the vector is already exact
-    PetscReal nrm = 0;
-    for (int i = 0; i < n; ++i) nrm += x[i] * x[i];
+    for (int d = 0; d < n; ++d) x[d] = phi[d];
+    solve(x);
+    ModalApply(S, contact, x.data(), q, f, ax.data());
+    for (int d = 0; d < n; ++d) res[d] = phi[d] - (ax[d] - sigma * x[d]);
+    solve(res);
+    for (int d = 0; d < n; ++d) x[d] += res[d];
+    PetscReal nrm = 0, sgn = 0; // keep the orientation
+    for (int d = 0; d < n; ++d) nrm += x[d] * x[d], sgn += x[d] * phi[d];
     nrm = std::sqrt(nrm);
-    PetscReal sgn = 0; // keep the orientation
-    for (int d = 0; d < n; ++d) sgn += x[pos[d]] * phi[d];
-    for (int d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[pos[d]] / nrm;
+    for (int d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[d] / nrm;
   }
   PetscFunctionReturn(0);
 }
@@ -172,9 +202,10 @@ void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
 
 // syev's eigenvectors are accurate only to eps * lambda_max / gap: with the h^-4 spread of
 // the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
-// shifted by its eigenvalue, with a banded LU of A - sigma I, then modified Gram-Schmidt
-// (which cleans up (near-)degenerate pairs such as the rigid modes), bring each vector to
-// round-off relative to its own eigenvalue.
+// shifted by its eigenvalue, with a banded LU of A - sigma I and each solve corrected by its
+// residual in the factored form (InverseIterate), then modified Gram-Schmidt (which cleans up
+// (near-)degenerate pairs such as the rigid modes), bring each vector to round-off relative
+// to its own eigenvalue.
 static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
 {
   const PetscInt               n       = S.n;
@@ -184,7 +215,7 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   const PetscReal              scale   = *std::max_element(lambda.begin(), lambda.end());
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < n; ++k) PetscCall(InverseIterate(entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
+  for (PetscInt k = 0; k < n; ++k) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
   GramSchmidt(n, B->Phi);
   PetscFunctionReturn(0);
 }
