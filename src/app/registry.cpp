@@ -8,6 +8,7 @@
 #include "io/beam_options.hpp"
 #include "io/scenario_options.hpp"
 #include "run/impact_params.hpp"
+#include "solvers/beam_modes.hpp"
 #include "solvers/leapfrog.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
@@ -57,6 +58,7 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&ImpactOptionTable());
   OptionModuleRegister(&MonitorOptionTable());
   OptionModuleRegister(&ModesOptionTable());
+  OptionModuleRegister(&ModalOptionTable());
   OptionModuleRegister(&LeapfrogOptionTable());
   OptionModuleRegister(&PetscSolverOptionTable());
   OptionModuleRegister(&kSweepOptions);

@@ -8,6 +8,7 @@
 #include "io/scenario_options.hpp"
 #include "run/modal_reference.hpp"
 #include "run/outcome.hpp"
+#include "solvers/beam_modes.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence.hpp"
@@ -206,6 +207,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   SweepPlan       plan;
   ConvergencePlan cp;
   LeapfrogParams  lp;
+  ModalTruncation modal_modes;
   TS              ts;
 
   PetscFunctionBeginUser;
@@ -216,6 +218,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)SweepPlanFromOptions(comm, &plan);
   (void)ConvergencePlanFromOptions(comm, sc.ball, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
+  (void)ModalTruncationFromOptions(comm, &modal_modes);
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);

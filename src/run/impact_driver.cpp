@@ -155,7 +155,7 @@ PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const B
 // With series monitors the state is recorded from the modes every dt_sample and at the
 // snapshot times (so the outputs cover the same times as a stepped run).
 PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const ContactCoupling &g, ImpactRecorder &rec, bool series, PetscReal dt_sample, PetscReal t_stop, PetscReal s_min,
-                                 std::shared_ptr<const BeamModes> &modes, bool *again)
+                                 const ModalTruncation &truncation, std::shared_ptr<const BeamModes> &modes, bool *again)
 {
   FullState  s0, s;
   FreeFlight ff;
@@ -163,7 +163,7 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
   *again = false;
 
   PetscFunctionBeginUser;
-  if (!modes) PetscCall(BeamModesShared(sys, &modes));
+  if (!modes) PetscCall(BeamModesShared(st.Comm(), sys, truncation, &modes));
   PetscCall(StepperGatherState(st, sys, &s0));
   const PetscReal t0 = st.Time();
   if (series) PetscCall(rec.Record(t0)); // the separation itself, as a stepped run records it
@@ -282,7 +282,14 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   res->events.push_back(ContactStartEvent(sc.ball, *contact, 0.0, 0.0, approach));
   bool                             after_modal;
   std::shared_ptr<const BeamModes> modes;
+  ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
+  if (after_modal) {
+    PetscCall(ModalTruncationFromOptions(st.Comm(), &truncation));
+    truncation.contact_time = scales.time;
+    truncation.cost_warn    = ip.report_setup ? ip.cost_warn : 0;
+    truncation.progress     = ip.report_setup ? ip.progress : 0;
+  }
   res->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
@@ -311,7 +318,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
         bool      again = false;
         PetscCall(st.NextStep(&dt_sample));
         stage.Switch(ImpactStage::FreeFlight);
-        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, rec, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, modes, &again));
+        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, rec, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again));
         if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, m0.total(), contact, &timeline, res));
       }
       PetscCall(indicators(&g1));
