@@ -140,7 +140,7 @@ struct ModalTS {
   // gamma . z and its rate at the current state (c_valid) and at the start of the last step.
   std::vector<PetscReal> z, zd, z0, zd0;
   PetscReal              yb = 0, vb = 0, yb0 = 0, vb0 = 0;
-  PetscReal              c = 0, cd = 0, c0 = 0, cd0 = 0;
+  PetscReal              c = 0, cd = 0, c0 = 0, cd0 = 0; // the kept modes' part y_b - gamma . z (CompressionNow adds the static correction)
   bool                   c_valid = false;
   bool                   have_modal = false, have_step = false;
   // The physical vector ts->vec_sol: whether it holds the modal state (phys_valid), the
@@ -676,7 +676,9 @@ PetscErrorCode TSStep_Modal(TS ts)
   m.zd0.assign(m.zd.begin(), m.zd.end());
   m.yb0       = m.yb;
   m.vb0       = m.vb;
-  m.c0        = CompressionNow(m, &m.cd0);
+  CompressionNow(m, nullptr); // m.c, m.cd valid: the kept modes' part (rolled back as it is)
+  m.c0        = m.c;
+  m.cd0       = m.cd;
   m.have_step = true;
   StepBy(m, h);
   m.phys_valid = false;
