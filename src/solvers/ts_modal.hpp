@@ -30,7 +30,8 @@
 //
 // Requires the beamimpact problem in its explicit form (TSSetRHSFunction with TSRHSExplicit,
 // ts_problem.hpp; FormulationOfType gives it) and a beam whose modes are available
-// (BeamModesAvailable: at most BeamModesMaxDofs free dofs, proportional damping).
+// (BeamModesAvailable: proportional damping, no grip; the modes kept by -modal_modes, -modal_tolerance,
+// with the static correction at the contact point: docs/model.md §12).
 #pragma once
 
 #include <petscts.h>
