@@ -46,7 +46,8 @@ PROG = "h5_to_csv.py"
 # The dataset that sets a group's rows, and the columns that come first.
 ROW_KEY = {"series": "time", "events": "time", "snapshots": "x", "modes": "frequency", "beam": "x"}
 FIRST = ["case_index", "time", "kind", "x", "frequency", "period", "omega"]
-# /results of an impact file in the program's order (src/io/results_h5.cpp; a sweep file lists its own)
+# /results in the program's order: the file's own list (results_columns of an impact file, from the
+# results table src/run/results_table.cpp; sweep_columns of a sweep), else (older impact files) this one
 RESULTS = ("x acor acor_corrected contact_time contact_time_total peak_force max_compression contacts ended_in_contact "
            "compression_beyond_radius ball_final_velocity final_time energy_error linear_momentum_error angular_momentum_error "
            "beam_kinetic_end beam_strain_end ball_dissipated_end ball_loss_fraction translation_fraction rotation_fraction "
@@ -128,7 +129,8 @@ def table_of_group(f, g, gname):
         n = next(iter(data.values())).shape[0]
     axes = [a for a in str(files.attr(f, "sweep_axes", "") or "").split(",") if a]
     # column order: a sweep's own order, else the usual first columns, then by name
-    order = [c for c in str(files.attr(f, "sweep_columns", "") or "").split(",") if c] if base == "results" else []
+    listed = files.attr(f, "sweep_columns", "") or files.attr(f, "results_columns", "") or ""
+    order = [c for c in str(listed).split(",") if c] if base == "results" else []
     if base == "results" and not order:
         order = list(RESULTS)
     if "status" in order and "reason" in data:

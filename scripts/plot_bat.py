@@ -10,7 +10,8 @@ deflection shapes of the first flexible modes (each scaled to unit peak) with th
 frequencies, and the nodes of the first two (where a tap excites nothing: /modes/nodes_1,
 nodes_2). The title gives the theory, the mass and the moments of inertia the file records.
 
-With --sweep (a -task sweep file of the same bat, e.g. a swinging bat) a third panel draws the
+With --sweep (a -task sweep file of the same bat, e.g. a swinging bat; a sweep of another beam --
+another profile's contents, length, mass, centre of mass or inertia -- is refused) a third panel draws the
 batted-ball speed (or --column) against the impact point, the peak force on the hands when the
 sweep had them (-grip; right axis), and marks the three sweet spots: the
 maximum of the curve (refined by a parabola through the best three points), the barrel node of
@@ -22,7 +23,7 @@ import argparse
 import os
 import sys
 
-from beamimpact import files, style
+from beamimpact import checks, files, style
 
 import numpy as np
 
@@ -86,6 +87,14 @@ def main():
         info = dict(theory=files.attr(f, "beam_theory", "euler"), mass=files.attr(f, "beam_mass", 0.0), xcm=files.attr(f, "beam_center_of_mass", 0.0),
                     icm=files.attr(f, "beam_inertia_cm", 0.0), iend=files.attr(f, "beam_inertia_end", 0.0), src=files.attr(f, "beam_section_file", ""))
     flex = [k for k in range(len(freq)) if freq[k] > 0][: a.modes]
+    if a.sweep:  # its curve and sweet spots belong over this bat only
+        with files.open_file("plot_bat.py", a.file) as f, files.open_file("plot_bat.py", a.sweep) as g:
+            if files.attr(g, "task") != "sweep" or "results" not in g:
+                sys.exit("plot_bat.py: %s is not a -task sweep file (it holds -task %s)" % (a.sweep, files.attr(g, "task", "?")))
+            why = checks.other_beam(f, g)
+        if why:
+            sys.exit("plot_bat.py: %s is a sweep of another beam than %s: %s; its curve and sweet spots would be drawn over the "
+                     "wrong bat: give --sweep a sweep of this bat" % (a.sweep, a.file, "; ".join(why)))
 
     panels = 3 if a.sweep else 2
     fig, axes = plt.subplots(panels, 1, figsize=(9, 3 * panels), sharex=True, gridspec_kw=dict(height_ratios=[1, 2, 2][:panels]))

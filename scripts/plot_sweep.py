@@ -3,7 +3,8 @@
 
     scripts/plot_sweep.py FILE.h5 [FILE2.h5 ...] [COLUMN] [-o out.png] [--map | --curves] [--logy]
 
-COLUMN is any numeric /results column (default: acor_corrected). What is drawn follows the
+COLUMN is any numeric /results column (default: acor_corrected; bbs, the batted-ball speed, for a
+swinging bat, whose acor is not the ACOR of a bat at rest: asked for explicitly it is refused). What is drawn follows the
 file's axes (the attribute sweep_axes, in the order of the sweep):
 
 * one axis: COLUMN against it, one curve per file. For the ACOR against the impact
@@ -31,7 +32,7 @@ import itertools
 import os
 import sys
 
-from beamimpact import files, labels, style
+from beamimpact import checks, files, labels, style
 
 import numpy as np
 from matplotlib.lines import Line2D
@@ -362,14 +363,23 @@ def main():
     p.add_argument("--no-rigid", action="store_true", help="ACOR: omit the rigid-body curves")
     p.add_argument("--dpi", type=int, default=150)
     args = p.parse_args()
-    paths, column = list(args.inputs), "acor_corrected"
+    paths, column, given = list(args.inputs), "acor_corrected", False
     if len(paths) > 1 and not paths[-1].endswith(".h5") and not os.path.exists(paths[-1]):
-        column = paths.pop()
+        column, given = paths.pop(), True
     if args.label and len(args.label) != len(paths):
         p.error("give one --label per file (%d files, %d labels)" % (len(paths), len(args.label)))
     if args.map and args.curves:
         p.error("give --map or --curves, not both")
     opened = [(path, load(path)) for path in paths]
+    swings = [path for path, f in opened if checks.swinging(f)]
+    if swings and column in ("acor", "acor_corrected"):  # no ACOR of a bat at rest, no Eq. (11)
+        if given:
+            sys.exit("%s: %s: the bat swings (-bat_speed/-bat_angular_velocity): /results/%s is not the ACOR of a bat at rest "
+                     "and Eq. (11) does not apply; draw bbs (the batted-ball speed) or collision_efficiency" % (PROG, ", ".join(swings), column))
+        if len(swings) != len(opened):
+            sys.exit("%s: %s swing(s) the bat and the others do not: draw them apart" % (PROG, ", ".join(swings)))
+        column = "bbs"
+        print("%s: the bat swings in %s: drawing bbs (the batted-ball speed), not the ACOR of a bat at rest" % (PROG, ", ".join(swings)))
     for path, f in opened:
         if column not in f["results"]:
             sys.exit("%s: %s has no /results/%s; its columns: %s" % (PROG, path, column, ", ".join(sorted(f["results"]))))

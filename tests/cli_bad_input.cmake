@@ -11,6 +11,8 @@ file(WRITE ${T}/range.txt "10 0.6\n20 1.5\n")
 file(WRITE ${T}/nan.txt "10 0.6\n20 nan\n")
 file(WRITE ${T}/columns.txt "10 0.6\n20 0.55 3\n")
 file(WRITE ${T}/good.txt "10 0.6\n40 0.5\n")
+# section files (docs/bats.md): a diameter whose derived EI and mu overflow
+file(WRITE ${T}/huge.profile "# x D\n0 0.03\n0.5 1e300\n0.84 0.066\n")
 set(HYST "-ball_law hysteresis -ball_m 1.84")
 set(CHAR "-ball_contact_time 1e-3 -ball_test_speed 26.8")
 
@@ -73,6 +75,14 @@ set(cases
   "-impact_x|-impact_x is given without a value"
   "-impact_max_contacts 2.5|-impact_max_contacts 2.5 is not allowed: it must be a whole number >= 1"
   "-impact_after sometimes|-impact_after sometimes is not known: use one of time, modal"
+  # issue 22's misleading messages: each names the option, the value and what is allowed
+  "-beam_nodes 3000000000|-beam_nodes 3000000000 is not allowed: it is beyond the largest whole number this build of PETSc holds"
+  "-snapshot_times 1e-3,abc|-snapshot_times 1e-3,abc is not allowed: 'abc' is not a number"
+  "-beam_length 0.3|the default impact point -impact_x 0.55 m is beyond the end of this 0.3 m beam: give -impact_x, 0 <= x <= 0.3"
+  "-beam_length 0.3 -impact_x 0.4|-impact_x 0.4 is not allowed: the impact point must lie on the beam"
+  "-beam_profile ${T}/huge.profile -beam_youngs_modulus 1.5e10 -beam_density 650|-beam_profile ${T}/huge.profile:3: the row 'x 0.5 D 1e.300 d 0' gives EI = inf N m.2, not a finite number > 0"
+  # a ball at rest needs a swinging bat that approaches it; the message names both options
+  "-ball_speed 0 -bat_speed -2|-bat_speed -2\\.?, -bat_angular_velocity 0\\.?: the bat moves at -2\\.? +m/s at x = 0.55 m, so ball \\(-ball_speed 0\\.?\\) and bat do not approach"
   # a misspelt PETSc option close to a known one is an error with the suggestion (a leftover
   # of another integrator stays a note: tests/cli_policy.sh)
   "-ts_dtt 1e-5|option\\(s\\) unknown.*-ts_dtt 1e-5 \\(did you mean -ts_dt\\?\\)"

@@ -182,7 +182,7 @@ done
 scripts/h5_to_csv.py "$dir/impact.h5" >"$dir/stdout.csv" 2>/dev/null
 cmp -s "$dir/stdout.csv" "$dir/impact-results.csv" && pass "h5_to_csv.py FILE (no GROUP, stdout) = /results" || fail "h5_to_csv.py FILE to stdout differs from /results -o"
 row=$(sed -n 5p "$dir/sweep-results.csv")
-[[ $(sed -n 1p "$dir/sweep-results.csv") == "case_index (1),impact_x (m),beam_nodes (1),status (1),reason,x (m),"* ]] &&
+[[ $(sed -n 1p "$dir/sweep-results.csv") == "case_index (1),impact_x (m),beam_nodes (1),status (1),reason (text),x (m),"* ]] &&
   pass "sweep CSV header: case_index, the axes, status, reason first" || fail "sweep CSV header: $(sed -n 1p "$dir/sweep-results.csv" | cut -c1-120)"
 [[ $row == 3,1.2,41,2,*"impact point must lie on the beam"*,nan,nan,* ]] && pass "failed sweep row: ${row:0:90}..." || fail "failed sweep row: ${row:0:200}"
 expect_fail "h5_to_csv.py on a group the file lacks" "-monitor_ball" scripts/h5_to_csv.py "$dir/modes.h5" series

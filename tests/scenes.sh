@@ -238,6 +238,12 @@ if run r161-bbs-map 1 options/scenes/r161-bbs-map.opts -sweep "impact_x=0.72;0.7
     'split(b, a, ",") == 4 && a[2] > a[1] && a[4] > a[3] && a[1] > 38 && a[4] < 47' b="$(col "$f" /results/bbs | paste -sd,)"
 fi
 
+# --- flight-nathan (-task flight): Nathan's calculator; the full comparison is tests/flight_cli.sh ---
+if run flight-nathan 1 options/scenes/flight-nathan.opts; then
+  f="$dir/flight-nathan.h5"
+  check "flight-nathan: lands $(col "$f" /results/landing_y) m from the launch point (422.292 ft from home plate: 128.1050 m)" 'y > 128.1049 && y < 128.1051' y="$(col "$f" /results/landing_y)"
+fi
+
 # every scene file was run above
 for f in options/scenes/*.opts; do
   grep -q -- "$f" "$self" || fail "$f is not exercised by tests/scenes.sh"

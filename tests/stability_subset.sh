@@ -144,8 +144,6 @@ if [[ -n "$python" ]]; then
   rc=$?
   if [[ $rc -eq 0 ]] && grep -q "12 cells: 8 correct, 4 clear error, 0 wrong, 0 unverified" <<<"$log" && grep -q "| \`dt-above\`" "$dir/slice.md"; then
     pass "stability_matrix.py slice: $(tail -1 <<<"$log" | cut -c1-80)"
-  elif [[ $rc -eq 2 ]] && grep -q "has no attribute contact_time_scale .*use a build with the results table" <<<"$log"; then
-    echo "skip: stability_matrix.py slice: this beamimpact does not record the derived scales the study reads (the results table, issue 20): $log"
   else fail "stability_matrix.py slice: $log"; fi
 else
   echo "skip: stability_matrix.py slice (no python with numpy and h5py)"

@@ -52,7 +52,7 @@ def walk(g, h, path):
             x, y = g[k][()], h[k][()]
             if x.dtype.kind in "OSU":
                 if not np.array_equal(x, y): bad.append("%s differs" % p)
-            elif x.shape != y.shape or (x.size and not np.all(np.abs(x - y) <= 1e-12 * np.maximum(1, np.abs(x)))):
+            elif x.shape != y.shape or (x.size and not np.all((np.abs(x - y) <= 1e-12 * np.maximum(1, np.abs(x))) | (np.isnan(x) & np.isnan(y)))):
                 bad.append("%s differs" % p)
 walk(a, b, "/")
 for k in set(a.attrs) | set(b.attrs):

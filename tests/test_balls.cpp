@@ -13,6 +13,7 @@
 #include "model/contact.hpp"
 #include "model/cor_table.hpp"
 #include "test_helpers.hpp"
+#include "wall_bounce.hpp"
 
 #include <petscsys.h>
 
@@ -53,64 +54,24 @@ BallParams Characterised(double mass, double m, double e, double tau, double v)
   return b;
 }
 
-struct WallBounce {
-  double cor = 0, contact_time = 0, max_compression = 0;
-};
-
-// The ball (k1, m, and unloading exponent n) dropped onto a rigid wall at speed v: RK4 with
-// `steps` steps per loading time scale; the switch at dc/dt = 0 and the separation at c = 0
-// are each bisected (re-stepping from the step's start) to round-off.
+// The ball (k1, m, and unloading exponent n) dropped onto a rigid wall at speed v, its force
+// written here from the law's formulas (not the program's): RK4 with `steps` steps per loading
+// time scale; the switch at dc/dt = 0 and the separation at c = 0 bisected to round-off.
 WallBounce BounceOnWall(double mass, double k1, double m, double n, double v, int steps = 20000)
 {
   double k2 = 0; // unloading coefficient, set at the switch
   bool   loading = true;
-  auto   accel   = [&](double c) {
+  auto   force   = [&](double c) {
     const double cp = std::max(c, 0.0);
-    return -(loading ? k1 * std::pow(cp, m) : k2 * std::pow(cp, n)) / mass;
+    return loading ? k1 * std::pow(cp, m) : k2 * std::pow(cp, n);
   };
-  auto rk4 = [&](double &c, double &u, double h) {
-    const double c1 = u, u1 = accel(c);
-    const double c2 = u + 0.5 * h * u1, u2 = accel(c + 0.5 * h * c1);
-    const double c3 = u + 0.5 * h * u2, u3 = accel(c + 0.5 * h * c2);
-    const double c4 = u + h * u3, u4 = accel(c + h * c3);
-    c += h / 6 * (c1 + 2 * c2 + 2 * c3 + c4);
-    u += h / 6 * (u1 + 2 * u2 + 2 * u3 + u4);
+  auto at_max = [&](double c) {
+    k2      = k1 * std::pow(c, m - n);
+    loading = false;
   };
   // Time scale: c_max / v from the energy balance (only to size the step).
   const double cmax_est = std::pow(0.5 * (m + 1) * mass * v * v / k1, 1 / (m + 1));
-  const double h        = cmax_est / v / steps;
-  double       t = 0, c = 0, u = v;
-  WallBounce   w;
-  for (int phase = 0; phase < 2; ++phase) {
-    for (long it = 0; it < 100L * steps; ++it) {
-      double cn = c, un = u;
-      rk4(cn, un, h);
-      const bool crossed = loading ? un <= 0 : cn <= 0;
-      if (!crossed) {
-        c = cn, u = un, t += h;
-        continue;
-      }
-      double lo = 0, hi = h; // bisect the step length onto u = 0 (loading) or c = 0 (unloading)
-      for (int b = 0; b < 200 && hi - lo > 1e-16 * h; ++b) {
-        const double mid = 0.5 * (lo + hi);
-        double       cm = c, um = u;
-        rk4(cm, um, mid);
-        if (loading ? um <= 0 : cm <= 0) hi = mid;
-        else lo = mid;
-      }
-      rk4(c, u, hi);
-      t += hi;
-      break;
-    }
-    if (loading) {
-      w.max_compression = c;
-      k2                = k1 * std::pow(c, m - n);
-      loading           = false;
-    }
-  }
-  w.cor          = -u / v;
-  w.contact_time = t;
-  return w;
+  return Bounce(force, at_max, mass, v, cmax_est / v / steps);
 }
 
 WallBounce BounceOnWall(const BallParams &b, double v) { return BounceOnWall(b.mass, BallValue(b, "k1"), BallValue(b, "m"), BallExponentAt(b, v), v); }

@@ -20,6 +20,7 @@
 #include <vector>
 
 using namespace beamimpact;
+using namespace beamimpact::test;
 
 namespace {
 
@@ -86,41 +87,6 @@ PetscReal MaxAbs(const std::vector<PetscReal> &a)
   return m;
 }
 
-// Eigenvalues (ascending) of a dense symmetric n x n matrix by cyclic Jacobi
-// rotations (no LAPACK link needed; accurate to ~eps times the largest |eigenvalue|).
-std::vector<PetscReal> JacobiEigenvalues(std::vector<PetscReal> A, PetscInt n)
-{
-  for (int sweep = 0; sweep < 100; ++sweep) {
-    PetscReal off = 0, diag = 0;
-    for (PetscInt p = 0; p < n; ++p) {
-      diag += A[p * n + p] * A[p * n + p];
-      for (PetscInt q = p + 1; q < n; ++q) off += A[p * n + q] * A[p * n + q];
-    }
-    if (off <= 1e-32 * diag) break;
-    for (PetscInt p = 0; p < n; ++p)
-      for (PetscInt q = p + 1; q < n; ++q) {
-        const PetscReal apq = A[p * n + q];
-        if (apq == 0.0) continue;
-        const PetscReal theta = (A[q * n + q] - A[p * n + p]) / (2 * apq);
-        const PetscReal t     = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const PetscReal c = 1 / std::sqrt(t * t + 1), s = t * c;
-        for (PetscInt k = 0; k < n; ++k) { // A <- A J (columns p, q)
-          const PetscReal akp = A[k * n + p], akq = A[k * n + q];
-          A[k * n + p]        = c * akp - s * akq;
-          A[k * n + q]        = s * akp + c * akq;
-        }
-        for (PetscInt k = 0; k < n; ++k) { // A <- J^T A (rows p, q)
-          const PetscReal apk = A[p * n + k], aqk = A[q * n + k];
-          A[p * n + k]        = c * apk - s * aqk;
-          A[q * n + k]        = s * apk + c * aqk;
-        }
-      }
-  }
-  std::vector<PetscReal> w(n);
-  for (PetscInt p = 0; p < n; ++p) w[p] = A[p * n + p];
-  std::sort(w.begin(), w.end());
-  return w;
-}
 
 // Eigenvalues (ascending, N/m) of K restricted to the free nodes.
 std::vector<PetscReal> FreeEigenvalues(const Beam &op)

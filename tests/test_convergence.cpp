@@ -5,6 +5,7 @@
 // isolation of one configuration's options from the next.
 #include "studies/convergence.hpp"
 #include "run/modal_reference.hpp"
+#include "run/reference.hpp"
 #include "test_helpers.hpp"
 
 #include <cmath>
@@ -207,4 +208,72 @@ TEST(ConvergenceOptions, AConfigurationNeedsExactlyOneSequence)
   ASSERT_EQ(ConvergenceConfigLoad(PETSC_COMM_WORLD, "", "-ts_type rk -convergence_tol 1e-4,10,3", &cfg), 0);
   EXPECT_EQ(cfg.seq.kind, ConvergenceSequenceKind::Tolerance);
   EXPECT_NEAR(cfg.seq.value(2), 1e-6, 1e-20);
+}
+
+// The reference methods, one registry: -reference offers ts and modal, a study modal and run; the
+// study's default is the first that applies (modal for the linear law, run for the hysteretic
+// ball); modal says why it does not apply, naming the option.
+TEST(ReferenceRegistry, MethodsChoicesAndWhenTheyApply)
+{
+  EXPECT_EQ(ReferenceMethodNames(false), (std::vector<std::string>{"ts", "modal"}));
+  EXPECT_EQ(ReferenceMethodNames(true), (std::vector<std::string>{"modal", "run"}));
+  ASSERT_NE(ReferenceMethodFind("run"), nullptr);
+  EXPECT_EQ(ReferenceMethodFind("nope"), nullptr);
+  Scene       lin = Coarse(), hyst = Coarse(), grip = Coarse();
+  std::string why;
+  hyst.ball = Superball("hysteresis");
+  grip.beam.grip.on = true, grip.beam.grip.x_a = 0, grip.beam.grip.x_b = 0.1, grip.beam.grip.stiffness = 1e5;
+  EXPECT_STREQ(ReferenceMethodDefault(lin)->name, "modal");
+  EXPECT_STREQ(ReferenceMethodDefault(hyst)->name, "run");
+  EXPECT_TRUE(ReferenceMethodFind("modal")->applies(lin, &why)) << why;
+  EXPECT_FALSE(ReferenceMethodFind("modal")->applies(hyst, &why));
+  EXPECT_NE(why.find("-ball_law linear"), std::string::npos) << why;
+  EXPECT_FALSE(ReferenceMethodFind("modal")->applies(grip, &why));
+  EXPECT_NE(why.find("-grip"), std::string::npos) << why;
+  for (const ReferenceMethod *m : ReferenceMethods()) EXPECT_TRUE(m->impact || m->study) << m->name;
+  // -reference reads the choice from the registry; a name it does not hold is refused.
+  const ReferenceMethod *m = nullptr;
+  ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-reference", "modal"));
+  EXPECT_EQ(0, ReferenceMethodFromOptions(PETSC_COMM_WORLD, &m));
+  ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-reference", "run"));
+  ASSERT_EQ(PetscPushErrorHandler(PetscReturnErrorHandler, NULL), 0);
+  const PetscErrorCode bad = ReferenceMethodFromOptions(PETSC_COMM_WORLD, &m);
+  ASSERT_EQ(PetscPopErrorHandler(), 0);
+  ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-reference"));
+  EXPECT_NE(bad, 0) << "run is a study's reference, not -reference's";
+  ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-reference", "modal"));
+  EXPECT_EQ(0, ReferenceMethodFromOptions(PETSC_COMM_WORLD, &m));
+  ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-reference"));
+  ASSERT_NE(m, nullptr);
+  EXPECT_STREQ(m->name, "modal");
+}
+
+// The run reference estimates its own error by Richardson extrapolation: against the exact
+// modal solution of the same scene, the estimate is the error it makes, and the observed order
+// is the configuration's (RK4).
+TEST(ReferenceRegistry, RunReferenceEstimatesItsOwnError)
+{
+  char path[] = "/tmp/beamimpact-reference-XXXXXX";
+  int  fd     = mkstemp(path);
+  ASSERT_GE(fd, 0);
+  const std::string text = "-ts_type rk\n-ts_rk_type 4\n-ts_adapt_type none\n-convergence_dt 5e-5,2,3\n";
+  ASSERT_EQ((ssize_t)text.size(), write(fd, text.data(), text.size()));
+  close(fd);
+  const Scene     s    = Coarse();
+  ConvergencePlan plan = QuietPlan();
+  ConvergenceReference modal, run;
+  ASSERT_EQ(ConvergenceReferenceCompute(PETSC_COMM_WORLD, plan, s, &modal), 0);
+  EXPECT_EQ(modal.method, "modal");
+  EXPECT_EQ(modal.acor_error, 0.0) << "exact: no estimated error";
+  plan.reference      = "run";
+  plan.reference_file = path;
+  ASSERT_EQ(ConvergenceReferenceCompute(PETSC_COMM_WORLD, plan, s, &run), 0);
+  unlink(path);
+  const double actual = std::abs(run.result.acor - modal.result.acor);
+  PetscPrintf(PETSC_COMM_WORLD, "run reference (rk4, 3 levels): ACOR error %.3e, its Richardson estimate %.3e, observed order %.3f\n", actual, (double)run.acor_error, (double)run.observed_order);
+  EXPECT_GT(actual, 1e-12) << "the configuration is coarse enough to have an error";
+  EXPECT_GT(run.acor_error / actual, 0.5) << "estimate " << run.acor_error << ", actual " << actual;
+  EXPECT_LT(run.acor_error / actual, 2.0) << "estimate " << run.acor_error << ", actual " << actual;
+  EXPECT_NEAR(run.observed_order, 4.0, 0.3);
+  EXPECT_EQ(ConvergenceReferenceLabel(plan), std::string(path));
 }

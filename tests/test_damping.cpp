@@ -8,6 +8,8 @@
 #include "solvers/rk_stability.hpp"
 #include "test_helpers.hpp"
 
+#include <petscts.h>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -276,4 +278,62 @@ TEST(DampingRK, DampedStabilityBound)
   const double beta = 2 * 20 / w; // zeta_max = 20
   EXPECT_NEAR(RKDampedStabilityBound(4, A, b, w, 0.0, beta) * beta * w * w / 2.785293, 1.0, 2e-3);
   EXPECT_GT(RKDampedStabilityBound(4, A, b, w, 0.0, 1e-3 / w), 0.99 * ystar / w) << "light damping does not lower the limit";
+}
+
+// The grid-scale mode x'' + beta w^2 x' + w^2 x = 0 stepped by PETSc's own TSRK 4 at a fixed step:
+// the amplitude max(|x|, |x'|/w) after `steps` steps from x = 1, x' = 0.
+static double StepTopModeRK4(double w, double beta, double dt, PetscInt steps)
+{
+  struct Mode {
+    double w, beta;
+  } mode{w, beta};
+  auto rhs = [](TS, PetscReal, Vec U, Vec F, void *ctx) -> PetscErrorCode {
+    const Mode        *m = static_cast<Mode *>(ctx);
+    const PetscScalar *u;
+    PetscScalar       *f;
+    PetscFunctionBeginUser;
+    PetscCall(VecGetArrayRead(U, &u));
+    PetscCall(VecGetArray(F, &f));
+    f[0] = u[1];
+    f[1] = -m->w * m->w * u[0] - m->beta * m->w * m->w * u[1];
+    PetscCall(VecRestoreArray(F, &f));
+    PetscCall(VecRestoreArrayRead(U, &u));
+    PetscFunctionReturn(0);
+  };
+  TS  ts;
+  Vec U;
+  PetscCallAbort(PETSC_COMM_SELF, VecCreateSeq(PETSC_COMM_SELF, 2, &U));
+  PetscCallAbort(PETSC_COMM_SELF, VecSetValue(U, 0, 1.0, INSERT_VALUES));
+  PetscCallAbort(PETSC_COMM_SELF, VecSetValue(U, 1, 0.0, INSERT_VALUES));
+  PetscCallAbort(PETSC_COMM_SELF, TSCreate(PETSC_COMM_SELF, &ts));
+  PetscCallAbort(PETSC_COMM_SELF, TSSetType(ts, TSRK));
+  PetscCallAbort(PETSC_COMM_SELF, TSRKSetType(ts, TSRK4));
+  PetscCallAbort(PETSC_COMM_SELF, TSSetRHSFunction(ts, NULL, rhs, &mode));
+  PetscCallAbort(PETSC_COMM_SELF, TSSetTimeStep(ts, dt));
+  PetscCallAbort(PETSC_COMM_SELF, TSSetMaxSteps(ts, steps));
+  PetscCallAbort(PETSC_COMM_SELF, TSSetMaxTime(ts, 1e30));
+  PetscCallAbort(PETSC_COMM_SELF, TSSetExactFinalTime(ts, TS_EXACTFINALTIME_STEPOVER));
+  PetscCallAbort(PETSC_COMM_SELF, TSSolve(ts, U));
+  const PetscScalar *u;
+  PetscCallAbort(PETSC_COMM_SELF, VecGetArrayRead(U, &u));
+  const double norm = std::max(std::abs(u[0]), std::abs(u[1]) / w);
+  PetscCallAbort(PETSC_COMM_SELF, VecRestoreArrayRead(U, &u));
+  PetscCallAbort(PETSC_COMM_SELF, TSDestroy(&ts));
+  PetscCallAbort(PETSC_COMM_SELF, VecDestroy(&U));
+  return norm;
+}
+
+// Strong stiffness damping (zeta_max = 1000, as -beam_damping_stiffness 1e-2 on the default grid
+// gives ~230): the limit is RK4's real-axis reach 2.785 over the fast real eigenvalue
+// w (zeta + sqrt(zeta^2 - 1)), not 0 ("-ts_dt 0 is not allowed" before); PETSc's RK4 on the top
+// mode decays just below it and grows just above it.
+TEST(DampingRK, StrongDampingLimitIsTheRealAxisReach)
+{
+  const double A[16] = {0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 1, 0}, b[4] = {1. / 6, 1. / 3, 1. / 3, 1. / 6};
+  const double w = 1e5, zeta = 1000, beta = 2 * zeta / w, fast = w * (zeta + std::sqrt(zeta * zeta - 1));
+  const double dt = RKDampedStabilityBound(4, A, b, w, 0.0, beta);
+  ASSERT_GT(dt, 0.0);
+  EXPECT_NEAR(dt * fast / 2.785293563, 1.0, 1e-6);
+  EXPECT_LT(StepTopModeRK4(w, beta, 0.99 * dt, 4000), 1.5) << "unstable below the computed limit";
+  EXPECT_GT(StepTopModeRK4(w, beta, 1.01 * dt, 4000), 1e6) << "stable above the computed limit: the limit is too low";
 }

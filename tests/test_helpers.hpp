@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <unistd.h>
 #include <utility>
@@ -20,6 +21,42 @@
 namespace beamimpact::test {
 
 // The paper's aluminium beam: 6 mm x 32 mm, E = 7e10 Pa, rho = 2700 kg/m^3.
+// Eigenvalues (ascending) of a dense symmetric n x n matrix by cyclic Jacobi
+// rotations (no LAPACK link needed; accurate to ~eps times the largest |eigenvalue|).
+inline std::vector<PetscReal> JacobiEigenvalues(std::vector<PetscReal> A, PetscInt n)
+{
+  for (int sweep = 0; sweep < 100; ++sweep) {
+    PetscReal off = 0, diag = 0;
+    for (PetscInt p = 0; p < n; ++p) {
+      diag += A[p * n + p] * A[p * n + p];
+      for (PetscInt q = p + 1; q < n; ++q) off += A[p * n + q] * A[p * n + q];
+    }
+    if (off <= 1e-32 * diag) break;
+    for (PetscInt p = 0; p < n; ++p)
+      for (PetscInt q = p + 1; q < n; ++q) {
+        const PetscReal apq = A[p * n + q];
+        if (apq == 0.0) continue;
+        const PetscReal theta = (A[q * n + q] - A[p * n + p]) / (2 * apq);
+        const PetscReal t     = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+        const PetscReal c = 1 / std::sqrt(t * t + 1), s = t * c;
+        for (PetscInt k = 0; k < n; ++k) { // A <- A J (columns p, q)
+          const PetscReal akp = A[k * n + p], akq = A[k * n + q];
+          A[k * n + p]        = c * akp - s * akq;
+          A[k * n + q]        = s * akp + c * akq;
+        }
+        for (PetscInt k = 0; k < n; ++k) { // A <- J^T A (rows p, q)
+          const PetscReal apk = A[p * n + k], aqk = A[q * n + k];
+          A[p * n + k]        = c * apk - s * aqk;
+          A[q * n + k]        = s * apk + c * aqk;
+        }
+      }
+  }
+  std::vector<PetscReal> w(n);
+  for (PetscInt p = 0; p < n; ++p) w[p] = A[p * n + p];
+  std::sort(w.begin(), w.end());
+  return w;
+}
+
 inline BeamParams AluminiumBeam(PetscReal length, PetscInt nodes = 41, Support left = Support::Free, Support right = Support::Free)
 {
   BeamParams p;

@@ -1,11 +1,20 @@
 // One impact through the PETSc TS problem, against closed forms and invariants:
 // the wall limit, the rigid-body limit (Eq. 11), energy and momentum, and the
 // same answer on 1 and 2 ranks. Runs at np1 and np2.
+#include "io/results_h5.hpp"
+#include "io/run_record.hpp"
 #include "model/contact.hpp"
 #include "model/rigid.hpp"
+#include "model/swing.hpp"
+#include "run/results_table.hpp"
+#include "studies/sweep.hpp"
 #include "test_helpers.hpp"
 
+#include <hdf5.h>
+
 #include <cmath>
+#include <map>
+#include <set>
 
 using namespace beamimpact;
 using namespace beamimpact::test;
@@ -251,4 +260,244 @@ TEST(Monitors, ListsOfAnyLength)
   ASSERT_EQ(200u, m.velocity_at.size());
   EXPECT_NEAR(2.99e-3, m.snapshot_times.back(), 1e-15);
   EXPECT_NEAR(1.1, m.velocity_at.back(), 1e-6);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The results table: every column once, with a unit; NaN exactly where a column does not apply,
+// in the run's result, in an impact file and in a sweep file.
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+using Opts = std::vector<std::pair<std::string, std::string>>;
+
+// /results of an HDF5 file: each dataset's values (as doubles; a string dataset: none) and its
+// unit attribute ("" when it has none).
+struct FileColumn {
+  std::vector<double> v;
+  std::string         unit;
+  long long           applies = -1; // the attribute applies of an impact file's column (-1: none)
+};
+std::map<std::string, FileColumn> ReadResults(const std::string &path)
+{
+  std::map<std::string, FileColumn> out;
+  hid_t                             f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(f, 0) << path;
+  if (f < 0) return out;
+  hid_t      g = H5Gopen2(f, "results", H5P_DEFAULT);
+  H5G_info_t info;
+  H5Gget_info(g, &info);
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    char name[256];
+    H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
+    hid_t       d = H5Dopen2(g, name, H5P_DEFAULT);
+    hid_t       t = H5Dget_type(d);
+    FileColumn &c = out[name];
+    if (H5Tget_class(t) == H5T_INTEGER || H5Tget_class(t) == H5T_FLOAT) {
+      hid_t sp = H5Dget_space(d);
+      c.v.resize((size_t)H5Sget_simple_extent_npoints(sp));
+      if (!c.v.empty()) H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, c.v.data());
+      H5Sclose(sp);
+    }
+    if (H5Aexists(d, "applies") > 0) {
+      hid_t a = H5Aopen(d, "applies", H5P_DEFAULT);
+      H5Aread(a, H5T_NATIVE_LLONG, &c.applies);
+      H5Aclose(a);
+    }
+    if (H5Aexists(d, "unit") > 0) {
+      hid_t             a  = H5Aopen(d, "unit", H5P_DEFAULT);
+      hid_t             at = H5Aget_type(a);
+      std::vector<char> buf(H5Tget_size(at) + 1, 0);
+      H5Aread(a, at, buf.data());
+      c.unit = buf.data();
+      H5Tclose(at);
+      H5Aclose(a);
+    }
+    H5Tclose(t);
+    H5Dclose(d);
+  }
+  H5Gclose(g);
+  H5Fclose(f);
+  return out;
+}
+
+// The scenario of the paper's 1.1 m beam (N = 41) with the superball, and extra options.
+Scenario PaperScene(const Opts &extra, const char *ball = "options/base/superball-linear.opts")
+{
+  Scenario sc;
+  Opts     all{{"-beam_length", "1.1"}};
+  all.insert(all.end(), extra.begin(), extra.end());
+  test::ReadScene({"options/base/aluminium-6mm.opts", ball}, all, &sc.beam, &sc.ball);
+  sc.impact.x      = 0.825;
+  sc.impact.window = 1e-3;
+  return sc;
+}
+
+const Opts kCN = {{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}};
+
+ImpactResult RunScene(const Scenario &sc)
+{
+  for (auto &kv : kCN) EXPECT_EQ(PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()), 0);
+  ImpactResult r;
+  EXPECT_EQ(ImpactRun(PETSC_COMM_WORLD, sc, &r), 0);
+  for (auto &kv : kCN) EXPECT_EQ(PetscOptionsClearValue(NULL, kv.first.c_str()), 0);
+  return r;
+}
+
+// Every column of the table is NaN in row `row` of the file exactly where it does not apply to sc,
+// and every /results dataset has a unit.
+void ExpectFileFollowsTable(const std::string &what, const std::map<std::string, FileColumn> &file, const Scenario &sc, size_t row)
+{
+  for (auto &kv : file) EXPECT_FALSE(kv.second.unit.empty()) << what << ": /results/" << kv.first << " has no unit";
+  for (const ResultColumn &c : ImpactResultColumns()) {
+    const auto it = file.find(c.name);
+    ASSERT_NE(it, file.end()) << what << ": no /results/" << c.name;
+    ASSERT_GT(it->second.v.size(), row) << what << ": " << c.name;
+    EXPECT_EQ(it->second.unit, c.unit) << what << ": " << c.name;
+    if (it->second.applies >= 0) {
+      EXPECT_EQ(it->second.applies == 1, c.applies(sc)) << what << ": the attribute applies of /results/" << c.name;
+    }
+    EXPECT_EQ(std::isnan(it->second.v[row]), !c.applies(sc)) << what << ": /results/" << c.name << " = " << it->second.v[row] << " where it " << (c.applies(sc) ? "applies" : "does not apply")
+                                                           << " (" << c.applies_text << ")";
+  }
+}
+
+} // namespace
+
+// Each column once, named, with a unit and a description; a count always applies (it cannot be
+// NaN); every column but the stepper's counts and settings is computed by the outcome.
+TEST(ResultsTable, EveryColumnDefinedOnce)
+{
+  std::set<std::string> names;
+  for (const ResultColumn &c : ImpactResultColumns()) {
+    EXPECT_TRUE(names.insert(c.name).second) << c.name << " twice";
+    EXPECT_STRNE(c.unit, "") << c.name;
+    EXPECT_STRNE(c.description, "") << c.name;
+    EXPECT_STRNE(c.applies_text, "") << c.name;
+    EXPECT_EQ((c.real != nullptr) + (c.count != nullptr) + (c.flag != nullptr), 1) << c.name;
+    if (c.integer) { EXPECT_EQ(c.applies, &ResultAlways) << c.name << ": a count cannot be NaN"; }
+    EXPECT_EQ(ImpactResultColumn(c.name), &c);
+  }
+  for (const char *cost : {"steps", "event_steps", "function_evals", "wall_time", "dt_nominal", "dt_stable"}) EXPECT_EQ(ImpactResultColumn(cost)->compute, nullptr) << cost;
+  for (const char *physics : {"acor", "beam_dissipated_end", "damping_fraction", "rigid_acor", "bbcor", "segment_kinetic_peak"}) EXPECT_NE(ImpactResultColumn(physics)->compute, nullptr) << physics;
+}
+
+// One impact in each kind of scenario: the file written for it follows the table, and the
+// columns that apply say what their formulas do.
+TEST(ResultsTable, ImpactFileNaNExactlyWhereAColumnDoesNotApply)
+{
+  struct Case {
+    const char *what;
+    Opts        options;
+  };
+  const std::vector<Case> cases = {
+    {"free beam at rest", {}},
+    {"clamped end", {{"-beam_left", "clamped"}}},
+    {"free pivot", {{"-beam_pivot", "0.275"}}},
+    {"pivot and a pinned end", {{"-beam_pivot", "0.275"}, {"-beam_right", "pinned"}}},
+    {"pivot and a clamped region", {{"-beam_pivot", "0.275"}, {"-beam_clamp", "0,0.1"}}},
+    {"grip", {{"-grip", "0,0.15"}, {"-grip_stiffness", "1e5"}, {"-grip_damping", "100"}}},
+    {"mass damping", {{"-beam_damping_mass", "2"}}},
+  };
+  char dir[] = "/tmp/beamimpact-results-XXXXXX";
+  ASSERT_NE(nullptr, mkdtemp(dir));
+  const double E_in = 0.5 * 0.042 * 1.0 * 1.0;
+  for (size_t k = 0; k < cases.size() + 2; ++k) {
+    Scenario    sc   = PaperScene(k < cases.size() ? cases[k].options : Opts{});
+    std::string what = k < cases.size() ? cases[k].what : k == cases.size() ? "swinging bat" : "-monitor_segment";
+    if (k == cases.size()) sc.swing.bat_speed = 0.5;
+    if (k == cases.size() + 1) sc.monitor.segment = PETSC_TRUE, sc.monitor.segment_x0 = 0.9, sc.monitor.segment_x1 = 1.1;
+    const ImpactResult r = RunScene(sc);
+    for (const ResultColumn &c : ImpactResultColumns()) EXPECT_EQ(std::isnan(c.Get(r)), !c.applies(sc)) << what << ": " << c.name;
+    const std::string path = std::string(dir) + "/impact" + std::to_string(k) + ".h5";
+    RunRecord         rec;
+    ASSERT_EQ(0, RunRecordBuild(sc, &r, &rec));
+    ASSERT_EQ(0, ResultsWriteImpactFile(PETSC_COMM_WORLD, path, rec, {r}, sc));
+    PetscMPIInt rank;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    if (rank == 0) ExpectFileFollowsTable(what, ReadResults(path), sc, 0);
+    // What the columns that apply say.
+    EXPECT_TRUE(std::isfinite(r.beam_dissipated_end) && std::isfinite(r.damping_fraction)) << what << ": the dissipated energy is in every result";
+    EXPECT_EQ(r.damping_fraction, r.beam_dissipated_end / E_in) << what;
+    if (!sc.beam.grip.on && sc.beam.damping_mass == 0) {
+      EXPECT_EQ(r.beam_dissipated_end, 0.0) << what << ": an undamped beam dissipates nothing, a true 0";
+    } else {
+      EXPECT_GT(r.beam_dissipated_end, 0.0) << what;
+    }
+    if (ResultFreePivot(sc)) { EXPECT_NEAR(r.bbcor, r.collision_efficiency * (1 + r.recoil_factor) + r.recoil_factor, 1e-14) << what; }
+    if (ResultFreeBeamAtRest(sc)) { // the forced fit is the loss fraction that makes Eq. (11) give acor_corrected
+      const BeamRigidBody b  = BeamRigidBodyOf(sc.beam);
+      const PetscReal     Me = RigidEffectiveMass(b.mass, b.inertia_cm, std::abs(sc.impact.x - b.x_cm));
+      EXPECT_NEAR(RigidACOR(sc.ball.mass, Me, r.rigid_forced_loss_fraction), r.acor_corrected, 1e-12) << what;
+      EXPECT_NEAR(r.rigid_acor, RigidACOR(sc.ball.mass, Me, 0.0), 1e-15) << what;
+    }
+    if (ResultMomentumInvariant(sc)) { EXPECT_LT(std::abs(r.linear_momentum_error), 1e-11) << what << ": momentum is an invariant here"; }
+    EXPECT_TRUE(std::isfinite(r.scales.contact_time_scale) && r.scales.contact_time_scale > 0) << what;
+  }
+  // The cases the issue names: no BBCOR where the rig cannot turn freely, no rigid-body model for a held beam.
+  EXPECT_TRUE(std::isnan(RunScene(PaperScene(cases[3].options)).bbcor));
+  EXPECT_TRUE(std::isnan(RunScene(PaperScene(cases[1].options)).rigid_forced_loss_fraction));
+}
+
+// The impact's scales (root attributes of an impact file): T_r and the compression scale of the
+// contact, for the linear spring against the free beam: T_c sqrt(M / (M + m_b)), T_c = pi sqrt(m_b/k),
+// and v_i sqrt(m_b/k). (The ball's rigid-wall values are the law's, in the run record.)
+TEST(ResultsTable, ScalesOfTheImpact)
+{
+  const Scenario     lin = PaperScene({});
+  const ImpactResult r   = RunScene(lin);
+  const PetscReal    k   = BallValue(lin.ball, "k");
+  EXPECT_NEAR(r.scales.compression_scale, lin.ball.speed * std::sqrt(lin.ball.mass / k), 1e-15);
+  const PetscReal M = lin.beam.mu * lin.beam.length; // the free beam's whole mass
+  EXPECT_NEAR(r.scales.contact_time_scale, M_PI * std::sqrt(lin.ball.mass / k) * std::sqrt(M / (M + lin.ball.mass)), 1e-12 * r.scales.contact_time_scale);
+  EXPECT_GT(r.contact_time, 0.5 * r.scales.contact_time_scale) << "the scale is the contact's order of magnitude";
+  EXPECT_LT(r.contact_time, 2.0 * r.scales.contact_time_scale);
+}
+
+// A sweep's file: the same table, NaN exactly where a column does not apply, every /results
+// dataset with a unit (its own columns, and the reason text, included); a damped sweep has the
+// dissipated energy; a pivot held by a pinned end has no BBCOR.
+TEST(ResultsTable, SweepFileNaNExactlyWhereAColumnDoesNotApply)
+{
+  char dir[] = "/tmp/beamimpact-sweep-XXXXXX";
+  ASSERT_NE(nullptr, mkdtemp(dir));
+  struct Case {
+    const char *what;
+    Opts        options;
+  };
+  const std::vector<Case> cases = {{"damped free beam", {{"-beam_damping_mass", "1"}, {"-beam_damping_stiffness", "1e-6"}}},
+                                   {"pivot and a pinned end", {{"-beam_pivot", "0.275"}, {"-beam_right", "pinned"}}}};
+  char cwd[4096];
+  ASSERT_NE(nullptr, getcwd(cwd, sizeof cwd));
+  ASSERT_EQ(0, chdir(BEAMIMPACT_SOURCE_DIR));
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const std::string path = std::string(dir) + "/sweep" + std::to_string(k) + ".h5";
+    Opts o = {{"-options_file", "options/base/aluminium-6mm.opts"}, {"-options_file", "options/base/superball-linear.opts"}, {"-beam_length", "1.1"}, {"-sweep_x", "0.55,0.825"},
+              {"-sweep_quiet", ""}, {"-impact_window", "1e-3"}, {"-ts_type", "cn"}, {"-ts_dt", "2e-5"}};
+    o.insert(o.end(), cases[k].options.begin(), cases[k].options.end());
+    PetscOptions db;
+    ASSERT_EQ(0, PetscOptionsCreate(&db));
+    for (auto &kv : o) {
+      if (kv.first == "-options_file") ASSERT_EQ(0, OptionsFileInsert(PETSC_COMM_WORLD, db, kv.second));
+      else ASSERT_EQ(0, PetscOptionsSetValue(db, kv.first.c_str(), kv.second.empty() ? NULL : kv.second.c_str()));
+    }
+    ASSERT_EQ(0, PetscOptionsPush(db));
+    EXPECT_EQ(0, TaskSweep(PETSC_COMM_WORLD, path)) << cases[k].what;
+    ASSERT_EQ(0, PetscOptionsPop());
+    ASSERT_EQ(0, PetscOptionsDestroy(&db));
+    PetscMPIInt rank;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    if (rank != 0) continue;
+    Scenario sc = PaperScene(cases[k].options);
+    const auto file = ReadResults(path);
+    ASSERT_EQ(file.at("status").v.size(), 2u);
+    for (size_t row = 0; row < 2; ++row) {
+      EXPECT_EQ(file.at("status").v[row], 0.0) << cases[k].what;
+      sc.impact.x = file.at("x").v[row];
+      ExpectFileFollowsTable(cases[k].what, file, sc, row);
+    }
+    if (k == 0) { EXPECT_GT(file.at("beam_dissipated_end").v[0], 0.0) << "a damped sweep has its dissipated energy"; }
+    if (k == 1) { EXPECT_TRUE(std::isnan(file.at("bbcor").v[0])) << "no BBCOR for a rig that cannot turn freely"; }
+  }
+  ASSERT_EQ(0, chdir(cwd));
 }

@@ -208,7 +208,6 @@ TEST(OptionTables, EveryRowIsInHelpWithTheDefaultItStates)
     for (const OptionSpec &s : m->options) {
       const auto it = shown.find(s.name);
       ASSERT_NE(shown.end(), it) << s.name << " (module " << m->name << ") is not in -help";
-      if (m->name == "interim") continue; // placeholders until their modules' own tables (app/registry.cpp)
       if (s.def.empty() && s.kind != OptionKind::Text && s.kind != OptionKind::File && s.kind != OptionKind::RealList) continue; // no default: the feature is off
       // the program's readers list an option once, with the value the code starts from; the
       // PETSc table's block (last) lists PETSc's options with the program's defaults
@@ -238,7 +237,6 @@ TEST(OptionTables, NamesAreUniqueAndUnitsKnown)
 {
   std::map<std::string, std::string> seen;
   for (const OptionModule *m : OptionModules()) {
-    if (m->name == "interim") continue; // rows their modules' own tables replace
     for (const OptionSpec &s : m->options) {
       EXPECT_EQ(0u, seen.count(s.name)) << s.name << " is in the tables of " << seen[s.name] << " and " << m->name;
       seen[s.name] = m->name;
@@ -432,4 +430,101 @@ TEST(RunRecord, CarriesTheOptionsReadWithUnits)
   EXPECT_EQ("1/s", u.at("-beam_damping_mass").unit);
   EXPECT_EQ("m", u.at("-beam_pivot").unit);
   EXPECT_EQ("free", u.at("-beam_left").text);
+}
+
+namespace {
+
+// A table whose rows need another option (OptionSpec::needs), registered for the test.
+const OptionModule &NeedsTable()
+{
+  static const OptionModule m = {
+    "needs",
+    "Test options with conditions",
+    {
+      OptionList("-needs_grip", "m", "A pair", 2, 2, NonNegative()),
+      OptionNeeds(OptionReal("-needs_k", "N/m", "Acts only with -needs_grip", "0", NonNegative()), {"-needs_grip"}),
+      OptionChoice("-needs_theory", "A theory", {"euler", "timoshenko"}, "euler"),
+      OptionNeeds(OptionReal("-needs_G", "Pa", "Acts only under -needs_theory timoshenko", "", Positive()), {"-needs_theory=timoshenko"}),
+    },
+  };
+  return m;
+}
+
+// The options without effect after reading the table with `set`.
+std::vector<OptionWithoutEffect> NoEffectWith(const std::vector<std::pair<const char *, const char *>> &set)
+{
+  const OptionModule &T = NeedsTable();
+  OptionModuleRegister(&T);
+  OptionsUsedClear();
+  for (auto &o : set) PetscOptionsSetValue(NULL, o.first, o.second);
+  std::vector<PetscReal> grip;
+  PetscReal              k = 0, G = 0;
+  PetscInt               theory = 0;
+  EXPECT_EQ(0, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "needs", "");
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-needs_grip", &grip, NULL));
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-needs_k", &k, NULL));
+    PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-needs_theory", &theory, NULL));
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-needs_G", &G, NULL));
+    PetscOptionsEnd();
+    PetscFunctionReturn(0);
+  }());
+  std::vector<OptionWithoutEffect> out = OptionsWithoutEffect();
+  for (auto &o : set) PetscOptionsClearValue(NULL, o.first);
+  return out;
+}
+
+} // namespace
+
+// An option given where its row's condition fails is named, with the value as written and why;
+// where the condition holds, or the option is not given, nothing is said.
+TEST(OptionTables, AnOptionWithoutEffectIsNamedWithWhy)
+{
+  std::vector<OptionWithoutEffect> r = NoEffectWith({{"-needs_k", "1e4"}});
+  ASSERT_EQ(1u, r.size());
+  EXPECT_EQ("-needs_k", r[0].name);
+  EXPECT_EQ("1e4", r[0].written);
+  EXPECT_EQ("it acts only with -needs_grip", r[0].why);
+  EXPECT_TRUE(NoEffectWith({{"-needs_k", "1e4"}, {"-needs_grip", "0.1,0.2"}}).empty());
+  r = NoEffectWith({{"-needs_G", "1e9"}});
+  ASSERT_EQ(1u, r.size());
+  EXPECT_EQ("-needs_G", r[0].name);
+  EXPECT_EQ("it acts only with -needs_theory timoshenko; -needs_theory is euler", r[0].why);
+  EXPECT_TRUE(NoEffectWith({{"-needs_G", "1e9"}, {"-needs_theory", "timoshenko"}}).empty());
+  EXPECT_TRUE(NoEffectWith({}).empty());
+  OptionsUsedClear();
+}
+
+// The program's own rows: the hands' settings without hands, shear settings of an
+// Euler-Bernoulli beam, the segment's time limit without a segment (issue 22).
+TEST(OptionTables, TheProgramsRowsSayWhenTheyHaveNoEffect)
+{
+  const std::vector<std::pair<const char *, const char *>> set = {
+    {"-grip_stiffness", "1e4"}, {"-grip_damping", "10"}, {"-grip_mass", "0.5"}, {"-monitor_grip", NULL}, {"-beam_shear_modulus", "1e9"}, {"-beam_poisson", "0.25"}, {"-monitor_segment_until", "1e-3"},
+    {"-impact_energy_growth_tol", "1e-2"}};
+  OptionsUsedClear();
+  for (auto &o : set) PetscOptionsSetValue(NULL, o.first, o.second);
+  Scenario sc;
+  ASSERT_EQ(0, ScenarioFromOptions(PETSC_COMM_WORLD, &sc));
+  std::map<std::string, std::string> why;
+  for (const OptionWithoutEffect &o : OptionsWithoutEffect()) why[o.name] = o.why;
+  for (auto &o : set) PetscOptionsClearValue(NULL, o.first);
+  EXPECT_EQ(set.size(), why.size());
+  EXPECT_EQ("it acts only with -grip", why["-grip_stiffness"]);
+  EXPECT_EQ("it acts only with -grip", why["-grip_mass"]);
+  EXPECT_EQ("it acts only with -grip", why["-monitor_grip"]);
+  EXPECT_EQ("it acts only with -beam_theory timoshenko; -beam_theory is euler", why["-beam_shear_modulus"]);
+  EXPECT_EQ("it acts only with -monitor_segment", why["-monitor_segment_until"]);
+  EXPECT_EQ("it acts only with -impact_energy_check true; -impact_energy_check is false", why["-impact_energy_growth_tol"]);
+  // with what they need, nothing is said
+  const std::vector<std::pair<const char *, const char *>> with = {{"-grip", "0.05,0.2"}, {"-grip_stiffness", "1e4"}, {"-monitor_grip", NULL}, {"-monitor_segment", "0.1,0.3"}, {"-monitor_segment_until", "1e-3"},
+                                                                     {"-impact_energy_check", NULL}, {"-impact_energy_growth_tol", "1e-2"}};
+  OptionsUsedClear();
+  for (auto &o : with) PetscOptionsSetValue(NULL, o.first, o.second);
+  ASSERT_EQ(0, ScenarioFromOptions(PETSC_COMM_WORLD, &sc));
+  const size_t none = OptionsWithoutEffect().size();
+  for (auto &o : with) PetscOptionsClearValue(NULL, o.first);
+  EXPECT_EQ(0u, none);
+  OptionsUsedClear();
 }

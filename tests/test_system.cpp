@@ -75,38 +75,6 @@ std::vector<PetscReal> Random(const BeamSystem &S, unsigned seed, PetscReal scal
   return y;
 }
 
-// Eigenvalues (ascending) of a dense symmetric n x n matrix by cyclic Jacobi rotations.
-std::vector<PetscReal> JacobiEigenvalues(std::vector<PetscReal> A, PetscInt n)
-{
-  for (int sweep = 0; sweep < 100; ++sweep) {
-    PetscReal off = 0, diag = 0;
-    for (PetscInt p = 0; p < n; ++p) {
-      diag += A[p * n + p] * A[p * n + p];
-      for (PetscInt q = p + 1; q < n; ++q) off += A[p * n + q] * A[p * n + q];
-    }
-    if (off <= 1e-32 * diag) break;
-    for (PetscInt p = 0; p < n; ++p)
-      for (PetscInt q = p + 1; q < n; ++q) {
-        const PetscReal apq = A[p * n + q];
-        if (apq == 0.0) continue;
-        const PetscReal theta = (A[q * n + q] - A[p * n + p]) / (2 * apq);
-        const PetscReal t     = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const PetscReal c = 1 / std::sqrt(t * t + 1), s = t * c;
-        for (PetscInt k = 0; k < n; ++k) {
-          const PetscReal akp = A[k * n + p], akq = A[k * n + q];
-          A[k * n + p] = c * akp - s * akq, A[k * n + q] = s * akp + c * akq;
-        }
-        for (PetscInt k = 0; k < n; ++k) {
-          const PetscReal apk = A[p * n + k], aqk = A[q * n + k];
-          A[p * n + k] = c * apk - s * aqk, A[q * n + k] = s * apk + c * aqk;
-        }
-      }
-  }
-  std::vector<PetscReal> w(n);
-  for (PetscInt p = 0; p < n; ++p) w[p] = A[p * n + p];
-  std::sort(w.begin(), w.end());
-  return w;
-}
 
 // omega^2 (ascending) of K phi = omega^2 M phi over the free dofs: M^{-1/2} K M^{-1/2}.
 std::vector<PetscReal> Omega2(const BeamSystem &S)

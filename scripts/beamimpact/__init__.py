@@ -9,6 +9,7 @@ command-line wrapper over.
     derived      the program's derived scales of an impact (contact time, compression, wall
                  contact, masses, Eq. (11)), read from its file, never recomputed here
     labels       axis labels with their units from the file, the run's configuration in one line
+    checks       what a script is given: two files of the same beam, a swinging bat
     style        matplotlib (Agg, no display) and figure saving
 
 A script in scripts/ imports it with one line, because Python puts the script's directory on

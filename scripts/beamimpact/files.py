@@ -168,8 +168,3 @@ def missing(prog, path, what, extra=""):
 def default_prefix(path):
     return os.path.splitext(path)[0]
 
-
-def finite_max(v, default=0.0):
-    v = np.asarray(v, dtype=float)
-    v = v[np.isfinite(v)]
-    return float(v.max()) if v.size else default

@@ -33,7 +33,6 @@ with the spreadsheet) to 1e-6 ft over all 552 rows; with the exact 0.0624280 the
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _common import need, table, percent  # noqa: E402
 
 need(__file__, "numpy", "scipy")

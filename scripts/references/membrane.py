@@ -24,7 +24,6 @@ Sources and every number compared: scripts/references/README.md.
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _common import need, table, percent  # noqa: E402
 
 need(__file__, "numpy", "scipy")
@@ -250,7 +249,6 @@ def report_racket():
           " has its free-free fundamental at %.1f Hz (measured rackets: 100-150 Hz)" % f1)
 
     # tension trend on a held frame: ball (tennis, 57 g) in series with the bed (massless bed)
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     from series_spring import e_series
     m_b, k_ball, e0 = 0.057, 2.0e4, 0.75
     lam = 1140 * np.pi * 0.65e-3 ** 2

@@ -40,7 +40,6 @@ points are in figures not available here: README.md says what was found.
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _common import need, table  # noqa: E402
 
 need(__file__, "numpy", "scipy")

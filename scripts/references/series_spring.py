@@ -37,7 +37,6 @@ Sources, numbers for the program's tests and caveats: scripts/references/README.
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _common import need, table, percent  # noqa: E402
 
 need(__file__, "numpy", "scipy")

@@ -44,7 +44,6 @@ aluminium bat barrel with free ends, a stiff end cap and a clamped-like junction
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _common import need, table, percent  # noqa: E402
 
 need(__file__, "numpy", "scipy")

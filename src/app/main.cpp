@@ -28,8 +28,8 @@
 #include <vector>
 
 static const char help[] = "beamimpact: a ball striking a flexible beam (R. Cross, Am. J. Phys. 67, 692 (1999)).\n"
-                           "  -task impact|modes|sweep|convergence, -output FILE.h5, and the -beam_, -ball_, -bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
-                           "  -convergence_, -leapfrog_ and -ts_ options below (-help lists them all and runs nothing).\n"
+                           "  -task impact|modes|sweep|convergence|flight, -output FILE.h5, and the -beam_, -ball_, -bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
+                           "  -convergence_, -leapfrog_, -ts_, -flight_ and -air_ options below (-help lists them all and runs nothing).\n"
                            "  Example: mpirun -n 2 build/release/beamimpact -options_file options/default.opts (paths inside an options file are relative to that file)\n\n";
 
 // The command line with every -options_file expanded into the options it holds, relative
@@ -102,6 +102,57 @@ static void DieWithLauncher()
   if (getppid() != parent) _exit(1); // it died before the request took effect
 }
 
+// After a task returned an error on some rank: do all ranks agree? Each rank that reached the
+// end of the task (failed or not) joins a nonblocking reduction on a communicator of its own
+// (the task's collectives cannot match it). When every rank joins, the first failed rank's
+// message reaches rank 0, which prints it, and every rank returns through SlepcFinalize: one
+// line and exit status 1, no MPI_Abort (Open MPI's launcher would add its own noise). A failed
+// rank whose peers do not join within a few seconds (they wait in a collective for it) ends
+// the run with MPI_Abort after printing its own message. A rank that succeeded waits for the
+// others as long as they run.
+static int AgreeOnFailure(MPI_Comm agree, PetscErrorCode ierr)
+{
+  PetscMPIInt rank, size, first = 0;
+  MPI_Comm_rank(agree, &rank);
+  MPI_Comm_size(agree, &size);
+  const std::string msg = ierr ? OptionOfParseError(beamimpact::LastErrorMessage(ierr)) : std::string();
+  if (size == 1) {
+    if (ierr) fprintf(stderr, "beamimpact: error: %s\n", msg.c_str());
+    return ierr ? 1 : 0;
+  }
+  PetscMPIInt mine = ierr ? rank : size;
+  MPI_Request req;
+  MPI_Iallreduce(&mine, &first, 1, MPI_INT, MPI_MIN, agree, &req);
+  int          done = 0;
+  const double t0   = MPI_Wtime();
+  while (!done) {
+    MPI_Test(&req, &done, MPI_STATUS_IGNORE);
+    if (done) break;
+    if (ierr && MPI_Wtime() - t0 > 5.0) { // the others are stuck waiting for this rank
+      fprintf(stderr, "beamimpact: error%s: %s\n", rank ? (" (rank " + std::to_string(rank) + ")").c_str() : "", msg.c_str());
+      fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+    usleep(ierr ? 1000 : 20000);
+  }
+  if (first == size) return 0; // nobody failed
+  std::string text = msg;
+  if (first != 0) { // rank 0 prints the first failed rank's message
+    int n = (int)text.size();
+    if (rank == first) {
+      MPI_Send(&n, 1, MPI_INT, 0, 1, agree);
+      MPI_Send(text.data(), n, MPI_CHAR, 0, 2, agree);
+    } else if (rank == 0) {
+      MPI_Recv(&n, 1, MPI_INT, first, 1, agree, MPI_STATUS_IGNORE);
+      text.assign((size_t)n, '\0');
+      MPI_Recv(&text[0], n, MPI_CHAR, first, 2, agree, MPI_STATUS_IGNORE);
+    }
+  }
+  if (rank == 0) fprintf(stderr, "beamimpact: error: %s\n", text.c_str());
+  fflush(stderr);
+  return 1;
+}
+
 int main(int argc, char **argv)
 {
   PetscBool traceback = PETSC_FALSE;
@@ -119,18 +170,13 @@ int main(int argc, char **argv)
   PetscCall(beamimpact::RegisterAll());
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-error_traceback", &traceback, NULL));
   if (!traceback) PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  PetscErrorCode ierr = beamimpact::RunTask(PETSC_COMM_WORLD);
-  if (ierr) {
-    const std::string msg = OptionOfParseError(beamimpact::LastErrorMessage(ierr));
-    PetscMPIInt       rank;
-    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-    if (rank == 0) fprintf(stderr, "beamimpact: error: %s\n", msg.c_str());
-    fflush(stderr);
-    PetscMPIInt size;
-    MPI_Comm_size(PETSC_COMM_WORLD, &size);
-    if (size > 1 && rank != 0) usleep(500000); // rank 0 says why first: an abort from another rank would kill it before it prints
-    if (size > 1) MPI_Abort(PETSC_COMM_WORLD, 1);       // other ranks may be stuck in a collective
-    PetscPopErrorHandler();
+  MPI_Comm agree; // for AgreeOnFailure only
+  PetscCallMPI(MPI_Comm_dup(PETSC_COMM_WORLD, &agree));
+  PetscErrorCode ierr   = beamimpact::RunTask(PETSC_COMM_WORLD);
+  const int      failed = AgreeOnFailure(agree, ierr);
+  MPI_Comm_free(&agree);
+  if (failed) {
+    if (!traceback) PetscPopErrorHandler();
     SlepcFinalize();
     return 1;
   }

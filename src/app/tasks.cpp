@@ -1,13 +1,14 @@
 // Task drivers and the table -task chooses from. See tasks.hpp.
 #include "app/tasks.hpp"
 
+#include "app/task_flight.hpp"
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
-#include "run/modal_reference.hpp"
 #include "run/outcome.hpp"
+#include "run/reference.hpp"
 #include "solvers/beam_modes.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
@@ -18,10 +19,16 @@
 
 #include <petscts.h>
 #include <slepceps.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace beamimpact {
@@ -38,36 +45,8 @@ const TaskEntry Tasks[] = {
   {"modes", TaskModes},
   {"sweep", TaskSweep},
   {"convergence", TaskConvergence},
+  {"flight", TaskFlight},
 };
-
-const char *const ReferenceNames[] = {"ts", "modal", "Reference", "REFERENCE_", nullptr};
-
-// -reference: PETSC_TRUE for the exact modal solution instead of the PETSc TS.
-PetscErrorCode ImpactReferenceFromOptions(MPI_Comm comm, PetscBool *modal)
-{
-  PetscEnum reference = (PetscEnum)0;
-
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Impact task", "beamimpact");
-  PetscCall(PetscOptionsEnum("-reference", "ts: integrate with the PETSc TS; modal: the exact modal solution (linear spring, Rayleigh damping allowed; no time step, only round-off)", "", ReferenceNames, reference, &reference, NULL));
-  PetscReal max_gb = ModalReferenceMemoryLimit() / 1e9;
-  PetscCall(PetscOptionsReal("-reference_max_memory", "-reference modal: refuse a beam whose dense modal matrices need more than this (GB; default half of the physical memory)", "", max_gb, &max_gb, NULL));
-  PetscCheck(max_gb > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-reference_max_memory %g is not allowed: it must be > 0 (GB)", (double)max_gb);
-  PetscOptionsEnd();
-  *modal = reference == 1 ? PETSC_TRUE : PETSC_FALSE;
-  PetscFunctionReturn(0);
-}
-
-// The exact modal solution: no integrator, so neither monitors nor integrator options.
-PetscErrorCode ImpactRunModal(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
-  PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-  PetscCall(ModalReferenceRun(sc, res));
-  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", res->ts_type.c_str(), res->formulation.c_str(), (double)res->dt_nominal));
-  PetscFunctionReturn(0);
-}
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
 // saying where it went.
@@ -87,14 +66,39 @@ PetscErrorCode TaskWriteOutput(MPI_Comm comm, const std::string &output, Record 
 
 } // namespace
 
+// The summary line: columns of the results table (their values and units), by the short labels
+// the line has always used; "steps" counts the event re-steps too.
+static std::string ImpactSummaryLine(const ImpactResult &r)
+{
+  struct Item {
+    const char *label, *column, *format;
+  };
+  static const Item items[] = {{"x", "x", "%.4f"},
+                               {"acor", "acor", "%.6f"},
+                               {"acor_corrected", "acor_corrected", "%.6f"},
+                               {"contact_time", "contact_time", "%.4e"},
+                               {"peak_force", "peak_force", "%.4e"},
+                               {"max_compression", "max_compression", "%.4e"},
+                               {"contacts", "contacts", "%.0f"},
+                               {"steps", "steps", "%.0f"},
+                               {"rejected", "rejected_steps", "%.0f"},
+                               {"failed", "failed_solves", "%.0f"},
+                               {"fevals", "function_evals", "%.0f"},
+                               {"wall", "wall_time", "%.3e"}};
+  std::string line;
+  for (const Item &it : items) {
+    const ResultColumn *c = ImpactResultColumn(it.column);
+    char                value[64];
+    std::snprintf(value, sizeof value, it.format, c->Get(r) + (std::strcmp(it.column, "steps") == 0 ? (double)r.event_steps : 0.0));
+    line += (line.empty() ? "" : "  ") + std::string(it.label) + " " + value + (std::strcmp(c->unit, "1") ? " " + std::string(c->unit) : "");
+  }
+  return line;
+}
+
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm,
-                        "x %.4f m  acor %.6f  acor_corrected %.6f  contact_time %.4e s  peak_force %.4e N  max_compression %.4e m  contacts %" PetscInt_FMT
-                        "  steps %" PetscInt_FMT "  rejected %" PetscInt_FMT "  failed %" PetscInt_FMT "  fevals %" PetscInt_FMT "  wall %.3e s%s\n",
-                        (double)r.x, (double)r.acor, (double)r.acor_corrected, (double)r.contact_time, (double)r.peak_force, (double)r.max_compression, r.contacts, r.steps + r.event_steps,
-                        r.rejected_steps, r.failed_solves, r.function_evals, (double)r.wall_time, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  PetscCall(PetscPrintf(comm, "%s%s\n", ImpactSummaryLine(r).c_str(), r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
   if (taken < asked) {
     std::string late;
@@ -113,11 +117,15 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
                           (double)sc.beam.grip.x_b, (double)r.grip_force_peak, (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
-  if (sc.beam.has_pivot) {
+  if (ResultFreePivot(sc)) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
     PetscCall(PetscPrintf(comm, "pivot at %.4f m: I_p %.5f kg m^2, recoil factor r %.6f, e_A %.6f, BBCOR = e_A (1 + r) + r = %.6f\n", (double)sc.beam.pivot_x, (double)rig.inertia_pivot,
                           (double)r.recoil_factor, (double)r.collision_efficiency, (double)r.bbcor));
-  }
+  } else if (sc.beam.has_pivot)
+    PetscCall(PetscPrintf(comm,
+                          "pivot at %.4f m, but the beam is also held (%s): it cannot turn freely about the pivot, so no recoil factor or BBCOR is reported (NaN in /results: they describe a "
+                          "rig free to turn about its pivot); e_A %.6f\n",
+                          (double)sc.beam.pivot_x, PivotHeldText(sc).c_str(), (double)r.collision_efficiency));
   PetscFunctionReturn(0);
 }
 
@@ -134,25 +142,25 @@ PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
 
 PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
 {
-  Scenario     sc;
-  ImpactResult res;
-  PetscBool    modal;
+  Scenario               sc;
+  const ReferenceMethod *method;
+  ReferenceSolution      sol;
+  std::string            why;
 
   PetscFunctionBeginUser;
   PetscCall(ScenarioFromOptions(comm, &sc));
   PetscCall(PrintBeamBody(comm, sc.beam));
-  PetscCall(ImpactReferenceFromOptions(comm, &modal));
-  if (modal) PetscCall(ImpactRunModal(comm, sc, &res));
-  else {
-    sc.impact.check_unused_options = PETSC_TRUE;
-    sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
-    PetscCall(ImpactRun(comm, sc, &res));
-  }
+  PetscCall(ReferenceMethodFromOptions(comm, &method)); // -reference: ts (the default), modal, ...
+  PetscCheck(method->applies(sc, &why), comm, PETSC_ERR_SUP, "-reference %s %s", method->name, why.c_str());
+  sc.impact.check_unused_options = PETSC_TRUE;
+  sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
+  PetscCall(method->run(comm, sc, ReferenceSettings(), &sol));
+  const ImpactResult &res = sol.result;
   const std::string cut = ImpactCutOffReason(sc, res); // no number from a contact cut short
   PetscCheck(cut.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", cut.c_str());
   PetscCall(ImpactPrintSummary(comm, sc, res));
   PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
-                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc.beam); }));
+                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc); }));
   PetscFunctionReturn(0);
 }
 
@@ -202,7 +210,7 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out);
 PetscErrorCode ReadEveryOption(MPI_Comm comm)
 {
   Scenario        sc;
-  PetscBool       modal;
+  const ReferenceMethod *method;
   ModesParams     mp;
   SweepPlan       plan;
   ConvergencePlan cp;
@@ -213,12 +221,13 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   (void)ScenarioFromOptions(comm, &sc);
-  (void)ImpactReferenceFromOptions(comm, &modal);
+  (void)ReferenceMethodFromOptions(comm, &method);
   (void)ModesParamsFromOptions(comm, &mp, nullptr);
   (void)SweepPlanFromOptions(comm, &plan);
-  (void)ConvergencePlanFromOptions(comm, sc.ball, &cp);
+  (void)ConvergencePlanFromOptions(comm, sc, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
   (void)ModalTruncationFromOptions(comm, &modal_modes);
+  (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);
@@ -250,11 +259,53 @@ PetscErrorCode PrintAllOptions(MPI_Comm comm)
 
 namespace {
 
+// -output may name no input of the run (an options file, an include, a table an option names):
+// the same file (inode) as any of them is refused.
+PetscErrorCode OutputCheckNotAnInput(MPI_Comm comm, const std::string &out)
+{
+  std::vector<InputFile> inputs;
+  struct stat            o, i;
+
+  PetscFunctionBeginUser;
+  if (stat(out.c_str(), &o) != 0) PetscFunctionReturn(0);
+  PetscCall(RunInputFiles(&inputs));
+  for (const InputFile &f : inputs)
+    PetscCheck(stat(f.path.c_str(), &i) != 0 || i.st_dev != o.st_dev || i.st_ino != o.st_ino, comm, PETSC_ERR_FILE_OPEN,
+               "-output %s is not allowed: it is an input of this run (%s %s); it would be replaced by the results. Give another -output", out.c_str(), f.option.c_str(), f.path.c_str());
+  PetscFunctionReturn(0);
+}
+
+// A sweep running onto out holds out.parts/lock (studies/sweep_store.hpp): no task replaces
+// its file meanwhile, -output_overwrite or not.
+PetscErrorCode OutputCheckNotLocked(MPI_Comm comm, const std::string &out)
+{
+  const std::string lock = out + ".parts/lock";
+  int               held = 0;
+  PetscMPIInt       rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) { // one rank tries: two trying at once would each see the other's attempt as a holder
+    const int fd = open(lock.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+      held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+      close(fd); // releases the lock if this took it
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&held, 1, MPI_INT, 0, comm)); // rank 0's try done before the sweep's own lock
+  PetscCheck(!held, comm, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", out.c_str(), lock.c_str());
+  PetscFunctionReturn(0);
+}
+
 // -output: refused before any work if it cannot be written (empty name, missing or read-only
-// directory) or if it would replace a file another task wrote (without -output_overwrite).
+// directory), if it is an input of the run or a file a running sweep holds, if it is a file of
+// another program (not an HDF5 results file of beamimpact: a text file, another program's HDF5;
+// an empty file may be replaced), or if it would replace a file another task wrote (without
+// -output_overwrite).
 PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *task)
 {
-  PetscBool overwrite = PETSC_FALSE;
+  PetscBool       overwrite = PETSC_FALSE;
+  ResultsFileInfo info;
   PetscFunctionBeginUser;
   if (out.empty()) PetscFunctionReturn(0);
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_overwrite", &overwrite, NULL));
@@ -263,10 +314,14 @@ PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *ta
   PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", out.c_str(), dir.c_str());
   struct stat st;
   PetscCheck(stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s%s%s.h5)", out.c_str(), out.c_str(), out.back() == '/' ? "" : "/", task);
-  std::string other;
-  PetscCall(ResultsFileTask(out, &other));
-  PetscCheck(other.empty() || other == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
-             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", out.c_str(), other.c_str(), task);
+  PetscCall(OutputCheckNotAnInput(comm, out));
+  PetscCall(OutputCheckNotLocked(comm, out));
+  PetscCall(ResultsFileInspect(out, &info));
+  PetscCheck(!info.exists || info.size == 0 || info.Ours(), comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: it exists and is %s, not a results file of beamimpact; -task %s will not replace it (-output_overwrite neither): give another -output, or remove the file first",
+             out.c_str(), info.hdf5 ? "an HDF5 file of another program" : "not an HDF5 file", task);
+  PetscCheck(info.task.empty() || info.task == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", out.c_str(), info.task.c_str(), task);
   PetscFunctionReturn(0);
 }
 

@@ -118,6 +118,12 @@ OptionSpec OptionChoice(const char *name, const char *help, std::vector<std::str
   return s;
 }
 
+OptionSpec OptionNeeds(OptionSpec s, std::vector<std::string> needs)
+{
+  s.needs = std::move(needs);
+  return s;
+}
+
 OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max, OptionRange range)
 {
   OptionSpec s;
@@ -192,6 +198,28 @@ std::string OptionWritten(const char *name)
   PetscBool   set   = PETSC_FALSE;
   if (PetscOptionsFindPair(NULL, NULL, name, &value, &set) || !set || !value) return "";
   return value;
+}
+
+std::vector<OptionWithoutEffect> OptionsWithoutEffect()
+{
+  const std::map<std::string, OptionUsed> &used = UsedLog();
+  std::vector<OptionWithoutEffect>         out;
+  for (const auto &[name, u] : used) {
+    const OptionSpec *s = OptionSpecFind(name);
+    if (!s || !u.given || s->needs.empty() || (u.kind == OptionKind::Bool && u.number == 0)) continue;
+    for (const std::string &need : s->needs) {
+      const size_t      eq    = need.find('=');
+      const std::string other = need.substr(0, eq);
+      const auto        it    = used.find(other);
+      if (it == used.end()) continue; // not read in this run: nothing known
+      const OptionUsed &o = it->second;
+      if (eq == std::string::npos ? o.given : o.text == need.substr(eq + 1)) continue;
+      const std::string why = eq == std::string::npos ? "it acts only with " + other : "it acts only with " + other + " " + need.substr(eq + 1) + "; " + other + " is " + o.text;
+      out.push_back({name, OptionWritten(name.c_str()), why, other});
+      break;
+    }
+  }
+  return out;
 }
 
 namespace {

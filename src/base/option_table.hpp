@@ -52,6 +52,10 @@ struct OptionSpec {
   std::vector<std::string> choices;           // Choice: the allowed names (index 0 first)
   PetscInt                 count_min = 0, count_max = 0; // RealList: the number of values allowed (0: any)
   std::string              range_text;        // what is allowed, in words, when range.Text() is not enough
+  // When the option acts at all: every condition must hold, each "-other" (that option given),
+  // "-other=value" (that option's value as used, e.g. "-beam_theory=timoshenko"). Empty: always.
+  // An option given where a condition fails has no effect: a note (OptionsWithoutEffect).
+  std::vector<std::string> needs;
   std::string Allowed() const; // the words of an error message: "it must be > 0 (N/m)"
 };
 
@@ -63,6 +67,8 @@ OptionSpec OptionText(const char *name, const char *help, const char *def = "");
 OptionSpec OptionFile(const char *name, const char *help);
 OptionSpec OptionChoice(const char *name, const char *help, std::vector<std::string> choices, const char *def);
 OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max, OptionRange range = AnyNumber());
+// The row with its conditions (OptionSpec::needs): OptionNeeds(OptionReal(...), {"-grip"}).
+OptionSpec OptionNeeds(OptionSpec s, std::vector<std::string> needs);
 
 struct OptionModule {
   OptionModule() = default;
@@ -108,6 +114,16 @@ struct OptionUsed {
 };
 const std::map<std::string, OptionUsed> &OptionsUsed();
 void                                     OptionsUsedClear();
+
+// The options given in this process that have no effect: a row whose `needs` fail against the
+// values read (a condition on an option no reader read is taken as met: nothing is known).
+// Each entry: the option (with the dash), its value as written, and why ("it acts only with
+// -grip", "it acts only with -beam_theory timoshenko; -beam_theory is euler").
+struct OptionWithoutEffect {
+  std::string name, written, why;
+  std::string needs; // the option of the condition that fails ("-grip")
+};
+std::vector<OptionWithoutEffect> OptionsWithoutEffect();
 
 // Readers, inside a module's PetscOptionsBegin/End block (PetscOptionsObject is the block's).
 // Each finds `name` in the module's table (an internal error if it is not a row), hands PETSc

@@ -87,6 +87,9 @@ PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> 
     else unknown += item + hint, n_unknown++;
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  std::string no_effect; // read, but a condition of its row fails (OptionSpec::needs)
+  for (const OptionWithoutEffect &o : OptionsWithoutEffect()) no_effect += (no_effect.empty() ? " " : "; ") + o.name + (o.written.empty() ? "" : " " + o.written) + " (" + o.why + ")";
+  if (!no_effect.empty()) PetscCall(PetscPrintf(comm, "note: option(s) with no effect in this run:%s\n", no_effect.c_str()));
   if (n_notes > 0) PetscCall(PetscPrintf(comm, "note: %" PetscInt_FMT " PETSc solver option(s) set but not used by this integrator:%s\n", n_notes, notes.c_str()));
   if (n_unused > 0) PetscCall(PetscPrintf(comm, "note: %" PetscInt_FMT " option(s) set but not used by this task:%s\n", n_unused, unused.c_str()));
   if (n_strict > 0) {

@@ -17,6 +17,8 @@ PetscErrorCode OptionsAsString(std::string *all);
 //  * a program option that is no row of any table (a typo) is an error that names it and
 //    suggests the closest known name; -allow_unused_options turns the error into a warning;
 //  * a row this task does not read (-sweep_x under -task impact) is a one-line note;
+//  * a row that was read but has no effect in this run (its `needs` fail: -grip_stiffness
+//    without -grip, -beam_shear_modulus under -beam_theory euler) is a one-line note;
 //  * a PETSc option (under a prefix of the PETSc table: -ts_, -snes_, -ksp_, -pc_, -modes_eps_,
 //    ...) left over is a one-line note when it is a row (a scene's -ts_rk_type under a later
 //    -ts_type cn) or close to no known name; one close to a known name (-ts_dtt, -ts_rk_tpye) is

@@ -33,7 +33,7 @@ OptionModule BuildBallOptions()
   m.title   = "Ball: mass, speed and contact law (SI units)";
   m.options = {
     OptionReal("-ball_mass", "kg", "Ball mass m_b", "0.042", Positive()),
-    OptionReal("-ball_speed", "m/s", "Incident speed v_i", "1", Positive()),
+    OptionReal("-ball_speed", "m/s", "Incident speed v_i (0: a ball at rest, struck by a swinging bat: -bat_speed)", "1", NonNegative()),
     OptionChoice("-ball_law", LawHelp().c_str(), ContactLawNames(), ContactLaws().front()->Name()),
     OptionReal("-ball_radius", "m", "Ball radius: a compression beyond it is flagged as physically absurd (a sweep's summary counts such points; default: none, no check)", "", Positive()),
     OptionReal("-ball_loss_factor", "1", LossFactorHelp().c_str(), "0.85", Between(0, 1, true, false)),

@@ -2,9 +2,12 @@
 #include "io/beam_options.hpp"
 
 #include "io/section_file.hpp"
+#include "io/text.hpp"
 #include "model/beam_theory.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace beamimpact {
@@ -32,13 +35,14 @@ const OptionModule &BeamOptionTable()
       OptionFile("-beam_profile", "Round sections along the beam: file of rows 'x D [d]' (m), with E and rho"),
       OptionFile("-beam_properties", "Section properties along the beam: file of rows 'x EI mu [kappaGA rhoI]' (SI)"),
       OptionChoice("-beam_theory", "Beam theory (model/beam_theory.hpp): euler (Euler-Bernoulli), timoshenko (shear and rotary inertia)", TheoryChoices(), "euler"),
-      OptionReal("-beam_shear_modulus", "Pa", "Shear modulus G: Timoshenko with E, rho (uniform or profile)", "", Positive()),
+      OptionNeeds(OptionReal("-beam_shear_modulus", "Pa", "Shear modulus G: Timoshenko with E, rho (uniform or profile)", "", Positive()), {"-beam_theory=timoshenko"}),
       [] {
         OptionSpec s = OptionReal("-beam_shear_coefficient", "1", "Shear coefficient kappa; 0: Cowper's by section (round tube, rectangle)", "0", Between(0, 1));
         s.range_text = "in (0, 1], or 0: Cowper's by section";
+        s.needs      = {"-beam_theory=timoshenko"};
         return s;
       }(),
-      OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient)", "0.3", Between(-1, 0.5, true, true)),
+      OptionNeeds(OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient)", "0.3", Between(-1, 0.5, true, true)), {"-beam_theory=timoshenko"}),
       OptionInt("-beam_nodes", "Number of grid nodes N", "41", AtLeast(5)),
       OptionChoice("-beam_left", SupportHelp("x = 0").c_str(), SupportNames(), "free"),
       OptionChoice("-beam_right", SupportHelp("x = L").c_str(), SupportNames(), "free"),
@@ -47,9 +51,9 @@ const OptionModule &BeamOptionTable()
       OptionReal("-beam_damping_mass", "1/s", "Rayleigh damping alpha: C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "0", NonNegative()),
       OptionReal("-beam_damping_stiffness", "s", "Rayleigh damping beta", "0", NonNegative()),
       OptionList("-grip", "m", "The hands: grip x_a,x_b, a spring-damper per metre of handle tying it to the swing's rigid frame (a free beam)", 2, 2, NonNegative()),
-      OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()),
-      OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()),
-      OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()),
+      OptionNeeds(OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()), {"-grip"}),
+      OptionNeeds(OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()), {"-grip"}),
+      OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
     },
   };
   return m;
@@ -140,6 +144,78 @@ const char *UniformOptionGiven(const BeamOptionValues &o)
   return o.setlength ? "-beam_length" : o.seta ? "-beam_thickness" : o.setb ? "-beam_width" : o.setM ? "-beam_mass" : o.setErho ? "-beam_youngs_over_density" : o.setEI ? "-beam_EI" : o.setmu ? "-beam_mu" : nullptr;
 }
 
+// Each profile row's derived properties finite and > 0 (a diameter of 1e300 m gives EI = inf),
+// said with the file, the line and the value. A table's are its own numbers, checked on reading.
+PetscErrorCode SectionRowsCheck(MPI_Comm comm, const char *option, const BeamSection &s)
+{
+  PetscFunctionBeginUser;
+  const SectionMaterial &m = s.material;
+  for (const ProfileRow &r : s.profile) {
+    const PetscReal A = RoundArea(r.D, r.d), I = RoundSecondMoment(r.D, r.d), kappa = m.kappa > 0 ? m.kappa : CowperRound(m.nu, r.d / r.D);
+    const struct {
+      const char *name, *unit;
+      PetscReal   value;
+      bool        used;
+    } derived[] = {
+      {"EI", "N m^2", m.E * I, true},
+      {"mu", "kg/m", m.rho * A, true},
+      {"kappaGA", "N", kappa * m.G * A, m.G > 0},
+      {"rhoI", "kg m", m.rho * I, true},
+    };
+    char row[96]; // as written (PETSc's %g would write 0 as "0.")
+    std::snprintf(row, sizeof row, "x %g D %g d %g", (double)r.x, (double)r.D, (double)r.d);
+    for (const auto &q : derived)
+      PetscCheck(!q.used || (std::isfinite(q.value) && q.value > 0), comm, PETSC_ERR_ARG_OUTOFRANGE,
+                 "%s %s:%d: the row '%s' gives %s = %g %s, not a finite number > 0: the diameters are out of range (m, with E = %g Pa, rho = %g kg/m^3)", option, s.file.c_str(), r.line, row, q.name,
+                 (double)q.value, q.unit, (double)m.E, (double)m.rho);
+  }
+  PetscFunctionReturn(0);
+}
+
+// A file's rows that do not start at x = 0 are shifted so that they do: the beam's x, and with it
+// -impact_x, -beam_pivot, -beam_clamp, -grip and the monitors' points, is measured from the first
+// row (docs/bats.md). Said once.
+PetscErrorCode SectionShiftNote(MPI_Comm comm, const char *option, const std::string &file, PetscReal x0)
+{
+  char text[1024];
+  PetscFunctionBeginUser;
+  if (x0 == 0) PetscFunctionReturn(0);
+  std::snprintf(text, sizeof text,
+                          "note: %s %s: its rows start at x = %g m, not 0: the beam's x is measured from its first row (x = 0 there), so -impact_x, -beam_pivot, -beam_clamp, -grip and the "
+                          "monitors' points are %g m less than the file's x (-impact_x 0.5 strikes the file's x = %g)\n",
+                          option, file.c_str(), (double)x0, (double)x0, (double)(0.5 + x0));
+  PetscCall(PrintOnce(comm, text));
+  PetscFunctionReturn(0);
+}
+
+// A section file far outside any bat, racket or test beam (a profile written in centimetres
+// gives an 84 m, 130 kg bat): a warning naming the file, the values and the likely cause. Said once.
+PetscErrorCode SectionPlausibility(MPI_Comm comm, const char *option, const BeamSection &s, PetscReal length)
+{
+  const PetscReal mass = SectionMomentsOf(s, 0, length).m0;
+  PetscReal       D    = 0;
+  for (const ProfileRow &r : s.profile) D = std::max(D, r.D);
+  std::string odd;
+  char        item[160];
+  PetscFunctionBeginUser;
+  if (!(length >= 0.1 && length <= 5)) {
+    std::snprintf(item, sizeof item, " length %g m (a bat, racket or test beam: 0.1 to 5 m);", (double)length);
+    odd += item;
+  }
+  if (!(mass >= 0.01 && mass <= 10)) {
+    std::snprintf(item, sizeof item, " mass %g kg (0.01 to 10 kg);", (double)mass);
+    odd += item;
+  }
+  if (s.source == SectionSource::Profile && !(D >= 0.005 && D <= 0.2)) {
+    std::snprintf(item, sizeof item, " largest outer diameter %g m (0.005 to 0.2 m);", (double)D);
+    odd += item;
+  }
+  if (!odd.empty())
+    PetscCall(PrintOnce(comm, "WARNING: " + std::string(option) + " " + s.file + " gives a beam far outside any bat, racket or test beam:" + odd +
+                                   " is the file in centimetres or millimetres, or the material in other units? Section files are in SI units (m, kg, N m^2)\n"));
+  PetscFunctionReturn(0);
+}
+
 // -beam_profile or -beam_properties: the rows, the length, and mean EI and mass per length.
 PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, BeamParams *p)
 {
@@ -158,6 +234,8 @@ PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, Bea
     s.material.E = o.E, s.material.rho = o.rho, s.material.G = o.G, s.material.nu = o.nu, s.material.kappa = o.kappa;
     const PetscReal x0 = s.profile.front().x;
     for (ProfileRow &r : s.profile) r.x -= x0;
+    PetscCall(SectionShiftNote(comm, option, s.file, x0));
+    PetscCall(SectionRowsCheck(comm, option, s));
     p->input.youngs_modulus = o.E;
     p->input.density        = o.rho;
     p->input.parameter_set  = "profile";
@@ -168,9 +246,11 @@ PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, Bea
     s.file             = o.properties;
     const PetscReal x0 = s.table.front().x;
     for (PropertiesRow &r : s.table) r.x -= x0;
+    PetscCall(SectionShiftNote(comm, option, s.file, x0));
     p->input.parameter_set = "table";
   }
   p->length = SectionLength(s);
+  PetscCall(SectionPlausibility(comm, option, s, p->length));
   // Scales only (default windows, frequency unit): the mean EI and mu over the length.
   const PetscInt n  = 4096;
   PetscReal      EI = 0, mu = 0;
@@ -307,9 +387,22 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
   PetscCall(BeamParamsCheck(comm, *p));
   if (p->has_pivot) { // the pivot sits on a node: say where when that moves it
     const PetscReal h = p->length / (p->nodes - 1), xk = BeamPivotNode(*p) * h;
-    if (std::abs(xk - p->pivot_x) > 1e-9 * h)
-      PetscCall(PetscPrintf(comm, "note: -beam_pivot %g is placed on the nearest node, x_p = %.6g m (h = %.3g m); choose -beam_nodes to put it exactly\n", (double)p->pivot_x, (double)xk, (double)h));
+    char            text[256];
+    if (std::abs(xk - p->pivot_x) > 1e-9 * h) {
+      std::snprintf(text, sizeof text, "note: -beam_pivot %g is placed on the nearest node, x_p = %.6g m (h = %.3g m); choose -beam_nodes to put it exactly\n", (double)p->pivot_x, (double)xk, (double)h);
+      PetscCall(PrintOnce(comm, text)); // once, also in a sweep
+    }
     p->pivot_x = xk;
+  }
+  if (p->has_clamp) { // the nodes inside [x0, x1] are held: say where the held region ends when an edge falls between nodes
+    const PetscReal h = p->length / (p->nodes - 1), tol = 1e-9 * h;
+    const PetscReal a = std::ceil((p->clamp_x0 - tol) / h) * h + 0.0, b = std::floor((p->clamp_x1 + tol) / h) * h; // + 0.0: not -0
+    char            text[512];
+    if (std::abs(a - p->clamp_x0) > tol || std::abs(b - p->clamp_x1) > tol) {
+      std::snprintf(text, sizeof text, "note: -beam_clamp %g,%g holds the nodes from x = %.6g to x = %.6g m (h = %.3g m): an edge between nodes moves to the node inside the clamp; choose -beam_nodes to put it exactly\n",
+                    (double)p->clamp_x0, (double)p->clamp_x1, (double)a, (double)b, (double)h);
+      PetscCall(PrintOnce(comm, text));
+    }
   }
   PetscFunctionReturn(0);
 }

@@ -30,6 +30,7 @@ bool CorTableParse(std::istream &in, const std::string &name, CorTable *t, std::
   };
   while (std::getline(in, line)) {
     ++lineno;
+    if (line.find('\0') != std::string::npos) return bad("the line holds a NUL byte (binary data?): a COR table is plain text");
     const size_t hash = line.find('#');
     if (hash != std::string::npos) line.erase(hash);
     std::istringstream       ss(line);

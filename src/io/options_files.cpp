@@ -14,6 +14,12 @@ namespace {
 
 const int kMaxIncludeDepth = 32;
 
+std::vector<std::string> &FilesRead()
+{
+  static std::vector<std::string> files;
+  return files;
+}
+
 // PETSc's rule for a key: a dash followed by something that does not start a number.
 bool IsKey(const std::string &t)
 {
@@ -75,12 +81,17 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
              (includer.empty() ? "; a path on the command line is relative to the working directory" : "; a path inside an options file is relative to that file's directory");
     return false;
   }
+  if (std::find(FilesRead().begin(), FilesRead().end(), file) == FilesRead().end()) FilesRead().push_back(file);
   const std::string        dir = std::filesystem::path(file).parent_path().string();
   const std::vector<std::string> &paths = OptionsFilePathOptions();
   std::string              line;
   for (int lineno = 1; std::getline(in, line); ++lineno) {
-    const std::vector<std::string> t     = LineTokens(line);
-    const std::string              where = file + ":" + std::to_string(lineno);
+    const std::string where = file + ":" + std::to_string(lineno);
+    if (line.find('\0') != std::string::npos) { // binary data: a message would stop at the NUL
+      *error = where + ": the line holds a NUL byte (binary data?): an options file is plain text";
+      return false;
+    }
+    const std::vector<std::string> t = LineTokens(line);
     if (t.empty()) continue;
     // One option per line, as PETSc reads an options file: a stray word would otherwise be
     // dropped without a word by the command-line parser.
@@ -106,6 +117,8 @@ const std::vector<std::string> &OptionsFilePathOptions()
   static const std::vector<std::string> names = {"-beam_profile", "-beam_properties", "-ball_cor_table", "-convergence_configs", "-convergence_reference_config", "-convergence_common_options"};
   return names;
 }
+
+const std::vector<std::string> &OptionsFilesRead() { return FilesRead(); }
 
 bool OptionsFileExpand(const std::string &file, std::vector<std::string> *tokens, std::string *error)
 {

@@ -25,6 +25,10 @@ namespace beamimpact {
 // The options whose values are file names (a comma-separated list for -convergence_configs).
 const std::vector<std::string> &OptionsFilePathOptions();
 
+// Every options file read so far (includes too), in the order first read, as opened: the run
+// record keeps their SHA-256 (io/run_record.hpp), and -output may name none of them.
+const std::vector<std::string> &OptionsFilesRead();
+
 // The tokens of `file`, its includes expanded in place (recursively) and relative paths
 // resolved against the directory of the file that wrote them. Returns false with `error` set
 // ("-options_file X (included by F): cannot open ..." or an include cycle).

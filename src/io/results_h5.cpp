@@ -3,93 +3,43 @@
 
 #include <hdf5.h>
 
-#include <limits>
+#include "io/text.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
 
 namespace beamimpact {
 
-const std::vector<ResultColumn> &ImpactResultColumns()
+// An attribute of loc (replaced if present): one value of memory type `mem` stored as
+// `file_type`. Every HDF5 call checked, every handle closed on the way out.
+static PetscErrorCode WriteScalarAttr(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *value)
 {
-  using R = ImpactResult;
-  static const std::vector<ResultColumn> cols = {
-    {"x", "m", false, [](const R &r) { return r.x; }},
-    {"acor", "1", false, [](const R &r) { return r.acor; }},
-    {"acor_corrected", "1", false, [](const R &r) { return r.acor_corrected; }},
-    {"contact_time", "s", false, [](const R &r) { return r.contact_time; }},
-    {"contact_time_total", "s", false, [](const R &r) { return r.contact_time_total; }},
-    {"peak_force", "N", false, [](const R &r) { return r.peak_force; }},
-    {"max_compression", "m", false, [](const R &r) { return r.max_compression; }},
-    {"contacts", "1", true, [](const R &r) { return (double)r.contacts; }},
-    {"ended_in_contact", "1", true, [](const R &r) { return (double)r.ended_in_contact; }},
-    {"compression_beyond_radius", "1", true, [](const R &r) { return (double)r.compression_beyond_radius; }},
-    {"ball_final_velocity", "m/s", false, [](const R &r) { return r.ball_final_velocity; }},
-    {"final_time", "s", false, [](const R &r) { return r.final_time; }},
-    {"energy_error", "1", false, [](const R &r) { return r.energy_error; }},
-    {"linear_momentum_error", "1", false, [](const R &r) { return r.linear_momentum_error; }},
-    {"angular_momentum_error", "1", false, [](const R &r) { return r.angular_momentum_error; }},
-    {"beam_kinetic_end", "J", false, [](const R &r) { return r.beam_kinetic_end; }},
-    {"beam_strain_end", "J", false, [](const R &r) { return r.beam_strain_end; }},
-    {"ball_dissipated_end", "J", false, [](const R &r) { return r.ball_dissipated_end; }},
-    {"ball_loss_fraction", "1", false, [](const R &r) { return r.ball_loss_fraction; }},
-    {"translation_fraction", "1", false, [](const R &r) { return r.translation_fraction; }},
-    {"rotation_fraction", "1", false, [](const R &r) { return r.rotation_fraction; }},
-    {"vibration_fraction", "1", false, [](const R &r) { return r.vibration_fraction; }},
-    {"bbs", "m/s", false, [](const R &r) { return r.bbs; }},
-    {"collision_efficiency", "1", false, [](const R &r) { return r.collision_efficiency; }},
-    {"bat_speed_end", "m/s", false, [](const R &r) { return r.bat_speed_end; }},
-    {"bat_angular_velocity_end", "rad/s", false, [](const R &r) { return r.bat_angular_velocity_end; }},
-    {"recoil_factor", "1", false, [](const R &r) { return r.recoil_factor; }},
-    {"bbcor", "1", false, [](const R &r) { return r.bbcor; }},
-    {"grip_force_peak", "N", false, [](const R &r) { return r.grip_force_peak; }},
-    {"grip_force_peak_time", "s", false, [](const R &r) { return r.grip_force_peak_time; }},
-    {"grip_stored_end", "J", false, [](const R &r) { return r.grip_stored_end; }},
-    {"hand_work_end", "J", false, [](const R &r) { return r.hand_work_end; }},
-    {"segment_kinetic_peak", "J", false, [](const R &r) { return r.segment_kinetic_peak; }},
-    {"segment_kinetic_peak_time", "s", false, [](const R &r) { return r.segment_kinetic_peak_time; }},
-    {"failed_solves", "1", true, [](const R &r) { return (double)r.failed_solves; }},
-    {"steps", "1", true, [](const R &r) { return (double)r.steps; }},
-    {"rejected_steps", "1", true, [](const R &r) { return (double)r.rejected_steps; }},
-    {"event_steps", "1", true, [](const R &r) { return (double)r.event_steps; }},
-    {"function_evals", "1", true, [](const R &r) { return (double)r.function_evals; }},
-    {"jacobian_evals", "1", true, [](const R &r) { return (double)r.jacobian_evals; }},
-    {"jacobian_assemblies", "1", true, [](const R &r) { return (double)r.jacobian_assemblies; }},
-    {"nonlinear_its", "1", true, [](const R &r) { return (double)r.nonlinear_its; }},
-    {"linear_its", "1", true, [](const R &r) { return (double)r.linear_its; }},
-    {"wall_time", "s", false, [](const R &r) { return r.wall_time; }},
-    {"dt_nominal", "s", false, [](const R &r) { return r.dt_nominal; }},
-    {"dt_stable", "s", false, [](const R &r) { return r.dt_stable; }},
-  };
-  return cols;
+  PetscFunctionBeginUser;
+  const hid_t space = H5Screate(H5S_SCALAR);
+  bool        ok    = space >= 0 && (H5Aexists(loc, name) <= 0 || H5Adelete(loc, name) >= 0);
+  const hid_t attr  = ok ? H5Acreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT) : -1;
+  ok                = attr >= 0 && H5Awrite(attr, mem, value) >= 0;
+  if (attr >= 0) ok = H5Aclose(attr) >= 0 && ok;
+  if (space >= 0) H5Sclose(space);
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write the attribute %s", name);
+  PetscFunctionReturn(0);
 }
 
 static PetscErrorCode WriteStringAttr(hid_t loc, const char *name, const std::string &value)
 {
   PetscFunctionBeginUser;
-  hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, value.size() > 0 ? value.size() : 1);
-  H5Tset_strpad(type, H5T_STR_NULLTERM);
-  hid_t space = H5Screate(H5S_SCALAR);
-  if (H5Aexists(loc, name) > 0) H5Adelete(loc, name);
-  hid_t attr = H5Acreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name);
-  H5Awrite(attr, type, value.size() > 0 ? value.c_str() : "");
-  H5Aclose(attr);
-  H5Sclose(space);
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  PetscCheck(type >= 0 && H5Tset_size(type, value.size() > 0 ? value.size() : 1) >= 0 && H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot make the string type of attribute %s", name);
+  const PetscErrorCode ierr = WriteScalarAttr(loc, name, type, type, value.size() > 0 ? value.c_str() : "");
   H5Tclose(type);
-  PetscFunctionReturn(0);
-}
-
-// A scalar attribute (replaced if present) of memory type `mem`, stored as `file_type`.
-static PetscErrorCode WriteScalarAttr(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *value)
-{
-  PetscFunctionBeginUser;
-  hid_t space = H5Screate(H5S_SCALAR);
-  if (H5Aexists(loc, name) > 0) H5Adelete(loc, name);
-  hid_t attr = H5Acreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name);
-  H5Awrite(attr, mem, value);
-  H5Aclose(attr);
-  H5Sclose(space);
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
@@ -103,34 +53,62 @@ static PetscErrorCode WriteIntegerAttr(hid_t loc, const char *name, long long va
   return WriteScalarAttr(loc, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, &value);
 }
 
-PetscErrorCode ResultsFileTask(const std::string &path, std::string *task)
+// A string attribute of loc ("" when absent or not a string).
+static std::string ReadStringAttr(hid_t loc, const char *name)
 {
+  std::string value;
+  if (H5Aexists(loc, name) <= 0) return value;
+  const hid_t a = H5Aopen(loc, name, H5P_DEFAULT);
+  if (a < 0) return value;
+  const hid_t type = H5Aget_type(a);
+  if (type >= 0 && H5Tget_class(type) == H5T_STRING) {
+    if (H5Tis_variable_str(type) > 0) {
+      char *p = nullptr;
+      if (H5Aread(a, type, &p) >= 0 && p) value = p;
+      if (p) H5free_memory(p);
+    } else {
+      std::vector<char> buf(H5Tget_size(type) + 1, 0);
+      if (H5Aread(a, type, buf.data()) >= 0) value = buf.data();
+    }
+  }
+  if (type >= 0) H5Tclose(type);
+  H5Aclose(a);
+  return value;
+}
+
+PetscErrorCode ResultsFileInspect(const std::string &path, ResultsFileInfo *info)
+{
+  struct stat st;
+
   PetscFunctionBeginUser;
-  task->clear();
-  if (access(path.c_str(), F_OK) != 0) PetscFunctionReturn(0);
+  *info = ResultsFileInfo();
+  if (::stat(path.c_str(), &st) != 0) PetscFunctionReturn(0);
+  info->exists = true;
+  info->size   = (long long)st.st_size;
   H5E_auto2_t func;
   void       *data;
   H5Eget_auto2(H5E_DEFAULT, &func, &data);
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL); // not HDF5, or no attribute: no message
-  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file >= 0) {
-    hid_t a = H5Aopen(file, "task", H5P_DEFAULT);
-    if (a >= 0) {
-      hid_t type = H5Aget_type(a);
-      if (H5Tis_variable_str(type) > 0) {
-        char *s = nullptr;
-        if (H5Aread(a, type, &s) >= 0 && s) *task = s;
-        if (s) H5free_memory(s);
-      } else {
-        std::vector<char> buf(H5Tget_size(type) + 1, 0);
-        if (H5Aread(a, type, buf.data()) >= 0) *task = buf.data();
-      }
-      H5Tclose(type);
-      H5Aclose(a);
+  if (S_ISREG(st.st_mode) && H5Fis_hdf5(path.c_str()) > 0) {
+    info->hdf5       = true;
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file >= 0) {
+      info->program = ReadStringAttr(file, "program");
+      info->task    = ReadStringAttr(file, "task");
+      H5Fclose(file);
     }
-    H5Fclose(file);
   }
   H5Eset_auto2(H5E_DEFAULT, func, data);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ResultsFileTask(const std::string &path, std::string *task)
+{
+  ResultsFileInfo info;
+
+  PetscFunctionBeginUser;
+  PetscCall(ResultsFileInspect(path, &info));
+  *task = info.task;
   PetscFunctionReturn(0);
 }
 
@@ -144,19 +122,28 @@ PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
   PetscFunctionReturn(0);
 }
 
+// A dataset of `dims` (rank 1 or 2) in memory type `mem`, stored as `file_type`, with its unit.
+static PetscErrorCode WriteDataset(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data, int rank, const hsize_t *dims, const char *unit)
+{
+  PetscFunctionBeginUser;
+  const hid_t space = H5Screate_simple(rank, dims, NULL);
+  const hid_t ds    = space >= 0 ? H5Dcreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
+  const bool  empty = dims[0] == 0 || (rank > 1 && dims[1] == 0);
+  bool        ok    = ds >= 0 && (empty || H5Dwrite(ds, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0);
+  PetscErrorCode ierr = 0;
+  if (ok && unit) ierr = WriteStringAttr(ds, "unit", unit);
+  if (ds >= 0) ok = H5Dclose(ds) >= 0 && ok;
+  if (space >= 0) H5Sclose(space);
+  PetscCall(ierr);
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write the dataset %s", name);
+  PetscFunctionReturn(0);
+}
+
 // A 1-D dataset of n values in memory type `mem`, stored as `file_type`, with its unit.
 static PetscErrorCode WriteDataset1D(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data, size_t n, const char *unit)
 {
-  PetscFunctionBeginUser;
-  hsize_t dims[1] = {n};
-  hid_t   space   = H5Screate_simple(1, dims, NULL);
-  hid_t   ds      = H5Dcreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
-  if (n > 0) H5Dwrite(ds, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
-  if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
-  H5Dclose(ds);
-  H5Sclose(space);
-  PetscFunctionReturn(0);
+  const hsize_t dims[1] = {n};
+  return WriteDataset(loc, name, file_type, mem, data, 1, dims, unit);
 }
 
 PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit)
@@ -170,8 +157,9 @@ PetscErrorCode H5WriteCounts1D(long long loc, const char *name, const std::vecto
   PetscCall(H5WriteDataset1D(loc, name, v, unit));
   hid_t ds = H5Dopen2((hid_t)loc, name, H5P_DEFAULT);
   PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot open dataset %s", name);
-  PetscCall(WriteIntegerAttr(ds, "integer", 1));
+  const PetscErrorCode ierr = WriteIntegerAttr(ds, "integer", 1);
   H5Dclose(ds);
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
@@ -190,44 +178,50 @@ PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vect
     PetscCheck(r.size() == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB, "ragged rows for dataset %s", name);
     flat.insert(flat.end(), r.begin(), r.end());
   }
-  hsize_t dims[2] = {nr, nc};
-  hid_t   space   = H5Screate_simple(2, dims, NULL);
-  hid_t   ds      = H5Dcreate2((hid_t)loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create dataset %s", name);
-  if (!flat.empty()) H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, flat.data());
-  if (unit) PetscCall(WriteStringAttr(ds, "unit", unit));
-  H5Dclose(ds);
-  H5Sclose(space);
+  const hsize_t dims[2] = {nr, nc};
+  PetscCall(WriteDataset((hid_t)loc, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, flat.data(), 2, dims, unit));
   PetscFunctionReturn(0);
 }
 
-// /results: one row per result (the integer columns as integer datasets: every row has a
-// number); a damped beam's energy term besides.
-static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results, const BeamParams &beam)
+// /results: one row per result, one dataset per column of the table (the counts as integer
+// datasets: every row has a number; NaN where a column does not apply), each with the table's
+// description and whether it applies to the scenario.
+static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult> &results, const Scenario &sc)
 {
   PetscFunctionBeginUser;
   hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  for (auto &col : ImpactResultColumns()) {
+  for (const ResultColumn &col : ImpactResultColumns()) {
     if (col.integer) {
       std::vector<long long> v;
-      for (auto &r : results) v.push_back((long long)col.get(r));
+      for (auto &r : results) v.push_back((long long)col.Get(r));
       PetscCall(H5WriteDatasetInt1D(g, col.name, v, col.unit));
     } else {
       std::vector<double> v;
-      for (auto &r : results) v.push_back(col.get(r));
+      for (auto &r : results) v.push_back(col.Get(r));
       PetscCall(H5WriteDataset1D(g, col.name, v, col.unit));
     }
-  }
-  if (beam.damping_mass > 0 || beam.damping_stiffness > 0) { // the beam's Rayleigh damping: one more energy term
-    std::vector<double> d, f;
-    for (auto &r : results) {
-      d.push_back(r.beam_dissipated_end);
-      f.push_back(r.damping_fraction);
-    }
-    PetscCall(H5WriteDataset1D(g, "beam_dissipated_end", d, "J"));
-    PetscCall(H5WriteDataset1D(g, "damping_fraction", f, "1"));
+    RunRecord a;
+    a.add("description", col.description);
+    a.add("applies", col.applies(sc) ? 1 : 0);
+    a.add("applies_when", col.applies_text);
+    hid_t ds = H5Dopen2(g, col.name, H5P_DEFAULT);
+    PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot open dataset %s", col.name);
+    PetscCall(H5WriteAttributes(ds, a));
+    H5Dclose(ds);
   }
   H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+// Root attributes of an impact file beside the run record (which holds the impact's scales):
+// the table's column order.
+static PetscErrorCode H5WriteImpactAttributes(hid_t file)
+{
+  RunRecord a;
+
+  PetscFunctionBeginUser;
+  a.add("results_columns", ImpactResultColumnNames());
+  PetscCall(H5WriteAttributes(file, a));
   PetscFunctionReturn(0);
 }
 
@@ -308,33 +302,130 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode H5ResultsFileCreate(MPI_Comm comm, const std::string &path, const RunRecord &record, long long *file)
+namespace {
+
+// HDF5's own error printing off in a scope: a failed write is reported once, by us.
+struct H5Quiet {
+  H5E_auto2_t func;
+  void       *data;
+  H5Quiet()
+  {
+    H5Eget_auto2(H5E_DEFAULT, &func, &data);
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  }
+  ~H5Quiet() { H5Eset_auto2(H5E_DEFAULT, func, data); }
+};
+
+bool FsyncPath(const std::string &path, bool dir)
+{
+  const int fd = ::open(path.c_str(), (dir ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ::fsync(fd) == 0 || (dir && errno == EINVAL);
+  ::close(fd);
+  return ok;
+}
+
+std::string DirectoryOf(const std::string &path)
+{
+  const size_t s = path.find_last_of('/');
+  return s == std::string::npos ? std::string(".") : s == 0 ? std::string("/") : path.substr(0, s);
+}
+
+// Rank 0's part of H5ResultsFileWrite: "" on success, else what went wrong.
+std::string WriteWholeFile(const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long)> &write)
+{
+  H5Quiet     quiet;
+  std::string error;
+  const hid_t file = (hid_t)H5MemoryFileCreate();
+  if (file < 0) return "HDF5 cannot create a file in memory";
+  PetscErrorCode ierr = H5WriteAttributes(file, record);
+  if (!ierr) ierr = write(file);
+  if (ierr) error = LastErrorMessage(ierr);
+  std::string tmp = path + ".XXXXXX.tmp"; // beside path: the rename stays on one file system
+  const int   fd  = error.empty() ? ::mkstemps(tmp.data(), 4) : -1;
+  if (error.empty() && fd < 0) error = "cannot create a temporary file " + tmp + " beside it (" + std::strerror(errno) + ")";
+  if (fd >= 0) {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    (void)::fchmod(fd, 0666 & ~mask); // as a plain create would (mkstemp makes 0600)
+    ::close(fd);
+  }
+  const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // closes the file in any case
+  if (error.empty()) error = saved;
+  if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
+  if (fd >= 0 && !error.empty()) ::unlink(tmp.c_str());
+  if (error.empty()) FsyncPath(DirectoryOf(path), true);
+  return error;
+}
+
+} // namespace
+
+long long H5MemoryFileCreate()
+{
+  const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+  if (fapl < 0) return -1;
+  // The core driver without a backing store: nothing reaches the disk but H5MemoryFileSave's
+  // checked writes, so a full disk is never a close that fails inside HDF5 (which left a file
+  // open that crashed the program at exit).
+  // The close degree strong: closing the file also closes what an error path left open.
+  static int        count = 0;
+  const std::string name  = "beamimpact-memory-" + std::to_string(++count) + ".h5"; // a name, never a path on disk
+  const bool        ok    = H5Pset_fapl_core(fapl, 1 << 16, 0) >= 0 && H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) >= 0;
+  const hid_t       file  = ok ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : -1;
+  H5Pclose(fapl);
+  return file;
+}
+
+std::string H5MemoryFileSave(long long file_in, const std::string &path)
+{
+  const hid_t       file = (hid_t)file_in;
+  std::vector<char> image;
+  std::string       error;
+  if (!path.empty()) {
+    const ssize_t n = H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0 ? H5Fget_file_image(file, NULL, 0) : -1;
+    if (n > 0) image.resize((size_t)n);
+    if (n <= 0 || H5Fget_file_image(file, image.data(), image.size()) != n) error = "HDF5 cannot make the file's image";
+  }
+  if (H5Fclose(file) < 0 && error.empty() && !path.empty()) error = "HDF5 cannot close the file in memory";
+  if (path.empty() || !error.empty()) return error;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) return "cannot open " + path + " (" + std::strerror(errno) + ")";
+  for (size_t done = 0; done < image.size() && error.empty();) {
+    const ssize_t w = ::write(fd, image.data() + done, image.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) error = "writing " + path + " failed (" + std::strerror(w < 0 ? errno : ENOSPC) + ")";
+    else done += (size_t)w;
+  }
+  if (error.empty() && ::fsync(fd) != 0) error = "fsync of " + path + " failed (" + std::strerror(errno) + ")";
+  if (::close(fd) != 0 && error.empty()) error = "closing " + path + " failed (" + std::strerror(errno) + ")";
+  return error;
+}
+
+PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long file)> &write)
 {
   PetscMPIInt rank;
 
   PetscFunctionBeginUser;
-  *file = -1;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank != 0) PetscFunctionReturn(0);
-  *file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(*file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the HDF5 file (directory missing or not writable?)", path.c_str());
-  PetscCall(H5WriteAttributes(*file, record));
+  const std::string error = WriteWholeFile(path, record, write);
+  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s could not be written (disk full? %s); nothing was written there, a file it held before is unchanged", path.c_str(), error.c_str());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam)
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc)
 {
-  long long file;
-
   PetscFunctionBeginUser;
-  PetscCall(H5ResultsFileCreate(comm, path, record, &file));
-  if (file < 0) PetscFunctionReturn(0);
-  PetscCall(H5WriteResults(file, results, beam));
-  if (!results.empty()) {
-    PetscCall(H5WriteEvents(file, results[0]));
-    PetscCall(H5WriteSeries(file, results[0].series, beam));
-  }
-  H5Fclose(file);
+  PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(H5WriteResults(file, results, sc));
+    if (!results.empty()) {
+      PetscCall(H5WriteImpactAttributes(file));
+      PetscCall(H5WriteEvents(file, results[0]));
+      PetscCall(H5WriteSeries(file, results[0].series, sc.beam));
+    }
+    PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
 
@@ -367,22 +458,21 @@ static PetscErrorCode H5WriteBeamSection(hid_t file, const BeamParams &beam)
 PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
                                      const BeamParams &beam)
 {
-  long long file;
-
   PetscFunctionBeginUser;
-  PetscCall(H5ResultsFileCreate(comm, path, record, &file));
-  if (file < 0) PetscFunctionReturn(0);
-  hid_t g = H5Gcreate2(file, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
-  PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
-  PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
-  PetscCall(H5WriteDataset2D(g, "shapes", shapes, "1 (deflection, normalised over all dofs)"));
-  const PetscReal h = beam.length / (beam.nodes - 1);
-  for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m, ++k)
-    PetscCall(H5WriteDataset1D(g, k == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
-  H5Gclose(g);
-  PetscCall(H5WriteBeamSection(file, beam));
-  H5Fclose(file);
+  PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    hid_t g = H5Gcreate2(file, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCall(H5WriteDataset1D(g, "frequency", modes.frequency, "Hz"));
+    PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
+    PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
+    PetscCall(H5WriteDataset2D(g, "shapes", shapes, "1 (deflection, normalised over all dofs)"));
+    const PetscReal h = beam.length / (beam.nodes - 1);
+    for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m, ++k)
+      PetscCall(H5WriteDataset1D(g, k == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
+    H5Gclose(g);
+    PetscCall(H5WriteBeamSection(file, beam));
+    PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
 

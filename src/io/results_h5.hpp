@@ -1,11 +1,13 @@
-// HDF5 output of impacts: the columns of the result table (shared by the
-// summary line, the file and later sweeps), run attributes, time series and
-// snapshots; and of a beam's modes. Files are written by rank 0 of the task's communicator with the
+// HDF5 output of impacts: the results table (run/results_table.hpp: its columns, units and
+// NaN where a column does not apply), run attributes and the impact's scales, events, time
+// series and snapshots; and of a beam's modes. Files are written by rank 0 of the task's communicator with the
 // HDF5 C API (the data are small: one row per impact, 1-D beam snapshots).
 #pragma once
 
 #include "io/run_record.hpp"
 #include "run/impact.hpp"
+#include "run/results_table.hpp"
+#include "run/scenario.hpp"
 #include "solvers/modes.hpp"
 
 #include <functional>
@@ -15,21 +17,16 @@
 
 namespace beamimpact {
 
-// One quantity of ImpactResult: /results/<name>, one row per impact. An integer column is an
-// integer dataset in a -task impact file; a sweep's /results stay double (NaN in failed rows).
-struct ResultColumn {
-  const char                              *name;
-  const char                              *unit;
-  bool                                     integer;
-  std::function<double(const ImpactResult &)> get;
-};
-const std::vector<ResultColumn> &ImpactResultColumns();
+// Writes a new file (replacing any) for results of the scenario sc: root attributes (the record,
+// with the ball's rigid-wall values ball_wall_contact_time and ball_wall_cor and the first
+// result's scales contact_time_scale and compression_scale; the table's column order
+// results_columns), /results (every column of the table, one row per result, with the
+// attributes unit, description, applies (1 or 0: whether the column applies to sc; NaN where it
+// does not) and applies_when (in words)), and for the first result its /events, /series and
+// /snapshots when they hold data.
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc);
 
-// Writes a new file (replacing any): root attributes, /results, and for the
-// first result its /events, /series and /snapshots when they hold data.
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const BeamParams &beam);
-
-// Writes a new file (replacing any) on rank 0 of comm: root attributes; /modes with the
+// Writes a new file (replacing any, H5ResultsFileWrite) on rank 0 of comm: root attributes; /modes with the
 // frequency (Hz), period (s) and omega (rad/s) of each mode, the deflection shapes (one row per
 // mode over the nodes /beam/x) and the nodes of the first two flexible modes (nodes_1, nodes_2,
 // m); /beam with the node positions and the section there (EI, mu; the profile's D and d when
@@ -37,13 +34,34 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
 PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
                                      const BeamParams &beam);
 
+// What a file that -output names holds: whether it exists (and its size), is HDF5, and the
+// root attributes program ("beamimpact ...") and task of a results file of this program.
+struct ResultsFileInfo {
+  bool        exists = false, hdf5 = false;
+  long long   size   = 0; // bytes
+  std::string program, task;
+  bool        Ours() const { return hdf5 && program.compare(0, 10, "beamimpact") == 0 && !task.empty(); }
+};
+PetscErrorCode ResultsFileInspect(const std::string &path, ResultsFileInfo *info);
+
 // The -task that wrote the HDF5 file at path (its root attribute "task"), or "" when the file
 // does not exist, is not HDF5 or has no such attribute.
 PetscErrorCode ResultsFileTask(const std::string &path, std::string *task);
 
-// A task's results file: on rank 0 of comm, created (replacing any) with the run record as its
-// root attributes; *file is the open file there and -1 on the other ranks, which write nothing.
-PetscErrorCode H5ResultsFileCreate(MPI_Comm comm, const std::string &path, const RunRecord &record, long long *file);
+// A task's results file at path, whole or not at all: on rank 0 of comm a temporary file
+// beside it (path.XXXXXX.tmp) gets the run record as root attributes and what write adds; it
+// is closed (every write checked, the close too: a full disk shows there) and renamed onto
+// path only when all of it succeeded. On a failure the temporary file is removed, a file at
+// path is left as it was, and the error names -output (no crash at exit: every HDF5 handle is
+// closed with the file). The other ranks write nothing.
+PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long file)> &write);
+
+// An HDF5 file built in memory (the core driver, no backing store), -1 on failure; written out
+// by H5MemoryFileSave, which closes it in any case (path empty: only closes) and writes its
+// bytes to path with checked write(2) calls and an fsync: "" on success, else what went wrong.
+// A full disk is then an error of ours, never a close that fails inside HDF5.
+long long   H5MemoryFileCreate();
+std::string H5MemoryFileSave(long long file, const std::string &path);
 
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);

@@ -2,11 +2,16 @@
 #include "io/run_record.hpp"
 
 #include "base/options_util.hpp"
+#include "io/options_files.hpp"
+#include "io/sha256.hpp"
 
 #include <hdf5.h>
 #include <slepcsys.h>
 
+#include <algorithm>
+#include <cctype>
 #include <ctime>
+#include <sstream>
 
 namespace beamimpact {
 
@@ -35,7 +40,65 @@ static PetscErrorCode RunProvenance(RunRecord *rec)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
+PetscErrorCode RunInputFiles(std::vector<InputFile> *files)
+{
+  std::string all;
+
+  PetscFunctionBeginUser;
+  files->clear();
+  for (const std::string &f : OptionsFilesRead()) files->push_back({"-options_file", f, ""});
+  PetscCall(OptionsAsString(&all)); // "-name value ..." (read without marking an option used)
+  const std::vector<std::string> &names = OptionsFilePathOptions();
+  std::istringstream              words(all);
+  std::string                     w, name;
+  while (words >> w) {
+    if (w.size() > 1 && w[0] == '-' && !std::isdigit((unsigned char)w[1]) && w[1] != '.') {
+      name = w;
+      continue;
+    }
+    if (std::find(names.begin(), names.end(), name) == names.end()) continue;
+    for (size_t a = 0;;) { // a comma-separated list (-convergence_configs)
+      const size_t      b    = w.find(',', a);
+      const std::string path = w.substr(a, b == std::string::npos ? std::string::npos : b - a);
+      if (!path.empty()) files->push_back({name, path, ""});
+      if (b == std::string::npos) break;
+      a = b + 1;
+    }
+    name.clear();
+  }
+  for (InputFile &f : *files) (void)Sha256File(f.path, &f.sha256);
+  PetscFunctionReturn(0);
+}
+
+std::vector<std::string> RunInputAttributeNames(const std::vector<InputFile> &files)
+{
+  std::vector<std::string> out;
+  std::map<std::string, int> seen;
+  for (const InputFile &f : files) {
+    const int k = ++seen[f.option];
+    out.push_back("input_sha256_" + f.option.substr(1) + (k > 1 ? "_" + std::to_string(k) : ""));
+  }
+  return out;
+}
+
+// The input files' hashes (see run_record.hpp).
+static PetscErrorCode RunRecordInputs(RunRecord *rec)
+{
+  std::vector<InputFile> files;
+  std::string            lines;
+
+  PetscFunctionBeginUser;
+  PetscCall(RunInputFiles(&files));
+  const std::vector<std::string> names = RunInputAttributeNames(files);
+  for (size_t k = 0; k < files.size(); ++k) {
+    rec->add(names[k], files[k].sha256.empty() ? std::string("unreadable") : files[k].sha256);
+    lines += (lines.empty() ? "" : "\n") + files[k].option + " " + files[k].path + " " + files[k].sha256;
+  }
+  if (!files.empty()) rec->add("input_files", lines);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunRecordProgram(RunRecord *rec)
 {
   char        petsc_version[256];
   std::string options;
@@ -47,7 +110,15 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   PetscCall(RunProvenance(rec));
   rec->add("petsc_version", petsc_version);
   rec->add("options", options);
+  PetscCall(RunRecordInputs(rec));
   rec->options_used = OptionsUsed();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RunRecordProgram(rec));
   rec->add("beam_length", beam.length);
   rec->add("beam_EI", beam.EI);
   rec->add("beam_mu", beam.mu);
@@ -102,6 +173,11 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
     rec->add("formulation", first->formulation);
     rec->add("dt_nominal", first->dt_nominal);
     rec->add("dt_stable", first->dt_stable);
+    // The impact's scales, for studies that judge a run against them (a sweep: its probe's).
+    if (first->scales.contact_time_scale > 0) {
+      rec->add("contact_time_scale", first->scales.contact_time_scale);
+      rec->add("compression_scale", first->scales.compression_scale);
+    }
   }
   PetscFunctionReturn(0);
 }
@@ -114,13 +190,13 @@ PetscErrorCode WriteAttr(hid_t loc, const std::string &name, hid_t file, hid_t m
 {
   PetscFunctionBeginUser;
   const hsize_t dims[1] = {(hsize_t)(n < 0 ? 1 : n)};
-  hid_t         space   = n < 0 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, dims, NULL);
-  if (H5Aexists(loc, name.c_str()) > 0) H5Adelete(loc, name.c_str());
-  hid_t attr = H5Acreate2(loc, name.c_str(), file, space, H5P_DEFAULT, H5P_DEFAULT);
-  PetscCheck(attr >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create attribute %s", name.c_str());
-  if (n != 0) H5Awrite(attr, mem, data);
-  H5Aclose(attr);
-  H5Sclose(space);
+  const hid_t   space   = n < 0 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, dims, NULL);
+  bool          ok      = space >= 0 && (H5Aexists(loc, name.c_str()) <= 0 || H5Adelete(loc, name.c_str()) >= 0);
+  const hid_t   attr    = ok ? H5Acreate2(loc, name.c_str(), file, space, H5P_DEFAULT, H5P_DEFAULT) : -1;
+  ok                    = attr >= 0 && (n == 0 || H5Awrite(attr, mem, data) >= 0);
+  if (attr >= 0) ok = H5Aclose(attr) >= 0 && ok;
+  if (space >= 0) H5Sclose(space);
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write the attribute %s", name.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -130,8 +206,9 @@ PetscErrorCode WriteText(hid_t loc, const std::string &name, const std::string &
   hid_t type = H5Tcopy(H5T_C_S1);
   H5Tset_size(type, value.empty() ? 1 : value.size());
   H5Tset_strpad(type, H5T_STR_NULLTERM);
-  PetscCall(WriteAttr(loc, name, type, type, value.c_str()));
+  const PetscErrorCode ierr = WriteAttr(loc, name, type, type, value.c_str());
   H5Tclose(type);
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 

@@ -7,6 +7,14 @@
 //                        file) or array of doubles (list; empty when none was given);
 //   /options_used/unit   attribute NAME: the unit of a number ("1": dimensionless);
 //   /options_used/given  attribute NAME: 1 where the option was set, 0 for its default.
+// The input files the run read (every options file, includes too, and every file an option
+// names: -beam_profile, -beam_properties, -ball_cor_table, ...) by their contents:
+//   input_sha256_<option>  root attribute: the SHA-256 of the file's contents (option without
+//                          its dash; a second file of the same option _2, _3, ...: the
+//                          options files are input_sha256_options_file, _options_file_2, ...);
+//   input_files            root attribute: one line per file, "-option path sha256".
+// The hashes are part of a sweep's resume signature, the paths are not: an edited table refuses
+// a resume, the same table at another path resumes.
 // The derived values keep their names as root attributes (beam_mass, beam_EI, ball_k,
 // impact_window as used, ...); a group rather than root attributes, so that a sweep's resume
 // signature (its root attributes) does not depend on options that change no number.
@@ -44,10 +52,28 @@ struct RunRecord {
   std::map<std::string, OptionUsed> options_used; // by option name with its dash; written to /options_used
 };
 
-// Program, PETSc version, options and the beam's parameters (a task on the beam alone).
+// One input file of the run.
+struct InputFile {
+  std::string option; // "-beam_profile", ..., "-options_file"
+  std::string path;   // as given (a path inside an options file resolved against its directory)
+  std::string sha256; // of its contents; "" when it cannot be read
+};
+
+// The run's input files: the options files read (io/options_files.hpp) and the values of the
+// options that name files (OptionsFilePathOptions), from the options database.
+PetscErrorCode RunInputFiles(std::vector<InputFile> *files);
+
+// The attribute name of files[k]: input_sha256_<option>[_2, _3, ...].
+std::vector<std::string> RunInputAttributeNames(const std::vector<InputFile> &files);
+
+// Program, its provenance, PETSc version and the options (a task with no beam: -task flight).
+PetscErrorCode RunRecordProgram(RunRecord *rec);
+
+// The same and the beam's parameters (a task on the beam alone).
 PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec);
 
-// The same plus the ball, the impact rules and, given a first result, its integrator.
+// The same plus the ball, the impact rules and, given a first result, its integrator and the
+// impact's scales (contact_time_scale, compression_scale).
 PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, RunRecord *rec);
 
 // Writes rec.options_used as the group options_used of loc (an HDF5 file or group id; nothing

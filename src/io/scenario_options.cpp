@@ -44,6 +44,10 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   PetscCall(BeamParamsFromOptions(comm, &sc->beam));
   PetscCall(BallParamsFromOptions(comm, &sc->ball));
   PetscCall(SwingFromOptions(comm, sc->beam, &sc->swing));
+  // A ball at rest is struck only by a swinging bat (the approach speed v_i + V(x) > 0 is then
+  // checked at the impact point, naming both options).
+  PetscCheck(sc->ball.speed > 0 || sc->swing.Swings(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-ball_speed 0 is not allowed for a bat at rest: ball and beam would never meet; give -ball_speed > 0 (m/s), or swing the bat (-bat_speed, -bat_angular_velocity)");
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
   PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
   if (how.monitors) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));

@@ -24,6 +24,10 @@ bool NumberRows(const std::string &path, std::vector<std::vector<double>> *rows,
   }
   std::string line;
   for (int no = 1; std::getline(in, line); ++no) {
+    if (line.find('\0') != std::string::npos) { // binary data: the text would stop at the NUL
+      *why = path + ":" + std::to_string(no) + ": the line holds a NUL byte (binary data?): a section file is plain text";
+      return false;
+    }
     const size_t hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
     std::istringstream  words(line);
@@ -78,6 +82,7 @@ bool ProfileFileRead(const std::string &path, std::vector<ProfileRow> *out, std:
     }
     ProfileRow p;
     p.x = v[0], p.D = v[1], p.d = v.size() == 3 ? v[2] : 0.0;
+    p.line = lines[r];
     if (!(p.D > 0)) {
       *why = At(path, lines[r]) + "outer diameter D = " + Num(p.D) + " is not allowed: it must be > 0 (m)";
       return false;
@@ -118,6 +123,7 @@ bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *out
       }
     PropertiesRow p;
     p.x    = v[0];
+    p.line = lines[r];
     p.s.EI = v[1], p.s.mu = v[2];
     if (cols == 5) p.s.kGA = v[3], p.s.rhoI = v[4];
     if (!out->empty() && !(p.x > out->back().x)) {

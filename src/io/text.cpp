@@ -2,6 +2,7 @@
 #include "io/text.hpp"
 
 #include <regex>
+#include <set>
 
 namespace beamimpact {
 
@@ -30,6 +31,14 @@ std::string LastErrorMessage(PetscErrorCode ierr)
   char       *specific = nullptr;
   PetscErrorMessage(ierr, &text, &specific);
   return WithoutPetscDots(specific && specific[0] ? specific : text ? text : "unknown error");
+}
+
+PetscErrorCode PrintOnce(MPI_Comm comm, const std::string &text)
+{
+  static std::set<std::string> said;
+  PetscFunctionBeginUser;
+  if (said.insert(text).second) PetscCall(PetscPrintf(comm, "%s", text.c_str()));
+  PetscFunctionReturn(0);
 }
 
 } // namespace beamimpact

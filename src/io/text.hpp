@@ -19,4 +19,9 @@ std::string CommentText(const std::string &line);
 // the dot PETSc's %g puts after a whole number, inf or nan).
 std::string LastErrorMessage(PetscErrorCode ierr);
 
+// Prints `text` (a whole line, with its newline) on comm's rank 0 the first time this process
+// is asked to, and never again: a note about the input is said once per run, also in a sweep
+// or a study that reads the same options for every point.
+PetscErrorCode PrintOnce(MPI_Comm comm, const std::string &text);
+
 } // namespace beamimpact

@@ -26,9 +26,6 @@ const std::vector<const ContactLaw *> &ContactLaws()
   return laws;
 }
 
-static const char *const PhaseNames[] = {"separated", "loading", "unloading"};
-const char              *ContactPhaseName(ContactPhase p) { return PhaseNames[static_cast<int>(p)]; }
-
 const ContactLaw *ContactLawFind(const char *name)
 {
   for (const ContactLaw *law : ContactLaws())

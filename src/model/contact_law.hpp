@@ -28,7 +28,6 @@ class ContactLaw;
 
 // Which branch of the law is active: the phase of the event-driven model.
 enum class ContactPhase { Separated = 0, Loading = 1, Unloading = 2 };
-const char *ContactPhaseName(ContactPhase p);
 
 // The state of the contact in progress (owned by the run driver; the steppers read it).
 struct ContactState {

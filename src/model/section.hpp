@@ -32,10 +32,12 @@ struct SectionProperties {
 
 struct ProfileRow {
   PetscReal x = 0, D = 0, d = 0; // m: position, outer and inner diameter (d = 0: solid)
+  int       line = 0;            // the row's line in its file (for messages; 0: not from a file)
 };
 struct PropertiesRow {
   PetscReal        x = 0;
   SectionProperties s;
+  int              line = 0; // the row's line in its file (for messages; 0: not from a file)
 };
 
 // Material of a round profile. kappa = 0 picks Cowper's coefficient for each section.

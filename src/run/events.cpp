@@ -50,7 +50,7 @@ ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, Pe
 }
 
 PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
-                                 ContactTimeline *tl, ImpactResult *res, bool *force_changed)
+                                 ContactTimeline *tl, ContactTally *tally, bool *force_changed)
 {
   PetscFunctionBeginUser;
   *force_changed = true;
@@ -67,7 +67,7 @@ PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal
     if (state->phase == ContactPhase::Loading && ContactHasHysteresis(ball)) {
       // The unloading branch was never applied: the ball would leave without its hysteresis loss.
       char after[96] = "";
-      for (const ContactEvent &e : res->events)
+      for (const ContactEvent &e : tally->events)
         if (e.kind == ContactEventKind::Reload) PetscCall(PetscSNPrintf(after, sizeof(after), " after the reload located at t = %g s", (double)e.time));
       SETERRQ(comm, PETSC_ERR_PLIB,
               "the ball separated at t = %g s while the hysteretic law was still in its loading branch: the maximum-compression event was missed%s, so the unloading (lossy) branch was skipped and "
@@ -75,26 +75,40 @@ PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal
               (double)te, after, method);
     }
     ContactSwitch(ball, state, ContactPhase::Separated, c);
-    if (res->contacts == 1) res->contact_time = te - tl->contact_start;
-    res->contact_time_total += te - tl->contact_start;
+    if (tally->contacts == 1) tally->contact_time = te - tl->contact_start;
+    tally->contact_time_total += te - tl->contact_start;
     tl->t_stop = std::min(times.max_time, te + times.window);
     break;
   case ContactEventKind::ContactStart:
     ContactBegin(ball, state, cdot); // what the law keeps for this contact (with -ball_cor_table: n from e(v_approach))
     ContactSwitch(ball, state, ContactPhase::Loading, c);
-    res->contacts++;
+    tally->contacts++;
     tl->contact_start = te;
     tl->t_stop        = times.max_time;
     break;
   }
   const PetscReal F = ContactForce(ball, *state, c);
-  if (kind == ContactEventKind::ContactStart) res->events.push_back(ContactStartEvent(ball, *state, te, c, cdot));
-  else res->events.push_back({kind, te, c, F});
+  if (kind == ContactEventKind::ContactStart) tally->events.push_back(ContactStartEvent(ball, *state, te, c, cdot));
+  else tally->events.push_back({kind, te, c, F});
   if (kind == ContactEventKind::MaxCompression) {
-    res->max_compression = std::max(res->max_compression, c);
-    res->peak_force      = std::max(res->peak_force, F);
+    tally->max_compression = std::max(tally->max_compression, c);
+    tally->peak_force      = std::max(tally->peak_force, F);
   }
   PetscFunctionReturn(0);
+}
+
+void ContactTallyStart(const BallParams &ball, const ContactState &s, PetscReal v, ContactTally *tally)
+{
+  tally->contacts = 1;
+  tally->events.push_back(ContactStartEvent(ball, s, 0.0, 0.0, v));
+}
+
+void ContactTallyClose(ContactPhase phase, const ContactTimeline &tl, PetscReal t, ContactTally *tally)
+{
+  tally->touching = phase != ContactPhase::Separated;
+  if (!tally->touching) return;
+  tally->contact_time_total += t - tl.contact_start;
+  if (tally->contacts == 1) tally->contact_time = t - tl.contact_start;
 }
 
 PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta, PetscReal ga, PetscReal gb, PetscReal tol, const std::function<PetscErrorCode(EventIndicators *)> &indicators,

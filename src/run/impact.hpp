@@ -44,6 +44,7 @@ struct ImpactParams {
   // wall time, and a progress line every `progress` s of wall time (0: none).
   PetscReal cost_warn = 30, progress = 10; // s, -impact_cost_warn, -impact_progress
   PetscBool strict_solver_options = PETSC_FALSE; // not an option: left-over PETSc solver options are errors (a study's configuration)
+  PetscReal rigid_loss_fraction = 0; // not an option here: f of Eq. (11) for the rigid_acor column (a sweep's -rigid_loss_fraction; 0 for -task impact)
 };
 
 // What to record during the run (nothing by default): -monitor_* and -snapshot_times.
@@ -89,10 +90,42 @@ struct ContactEvent {
   PetscReal        approach_speed = 0, cor = 0, n = 0;
 };
 
+// What the contact events record for the outcome (run/events.cpp writes it, run/outcome.cpp
+// reads it): every located event, the contacts and their durations, the largest force and
+// compression at a maximum-compression event.
+struct ContactTally {
+  std::vector<ContactEvent> events;
+  PetscInt  contacts           = 0; // separate contacts
+  PetscReal contact_time       = 0; // s, duration of the first contact
+  PetscReal contact_time_total = 0; // s, summed over all contacts
+  PetscReal peak_force         = 0; // N
+  PetscReal max_compression    = 0; // m
+  bool      touching           = false; // the run ended with the ball still in contact (its contact closed at the end)
+};
+
+// What the monitors record for the outcome (run/monitors.cpp): the peaks over the steps.
+struct MonitorPeaks {
+  PetscReal segment_kinetic = 0, segment_kinetic_time = 0; // J, s: -monitor_segment
+  PetscReal grip_force = 0, grip_force_time = 0;           // N, s: the largest |force of the bat on the hands| (-grip)
+};
+
+// The scales of one impact, for studies that judge a step or a run against them (the stability
+// study reads them from the file's root attributes instead of re-deriving them; the ball's
+// rigid-wall values are in the run record, from its law: ball_wall_contact_time, ball_wall_cor).
+struct ImpactScales {
+  PetscReal contact_time_scale = 0; // s, T_r: the contact time against the beam's free mass (ContactScales::time)
+  PetscReal compression_scale  = 0; // m, the compression scale of the event indicators (ContactScales::compression)
+};
+
 // The result of one impact (identical on every rank of the communicator), in three parts
 // that travel separately: the physical outcome, what it cost, and how it was integrated;
-// plus the located events and the requested time series. ImpactResult derives from the
-// three so that a column reads r.acor or r.steps directly.
+// plus the located events, the requested time series and the impact's scales. ImpactResult
+// derives from the three so that a column reads r.acor or r.steps directly.
+//
+// The outcome is the storage of the results table (run/results_table.hpp: every column's name,
+// unit, description, when it applies and how it is computed, defined once there), written only
+// by run/outcome.cpp. A quantity that does not apply to the scenario is NaN, never a number a
+// reader could take for a value (the table says where). The units below are the table's.
 struct ImpactOutcome {
   PetscReal x               = 0; // m
   PetscReal acor            = 0; // -v_b,final / v_i
@@ -106,23 +139,26 @@ struct ImpactOutcome {
   PetscReal final_time      = 0; // s, simulated
   PetscBool ended_in_contact = PETSC_FALSE; // the run hit -impact_max_time while touching
   PetscBool compression_beyond_radius = PETSC_FALSE; // max_compression > -ball_radius (given): physically absurd
-  // Invariants at the end (relative to the incident kinetic energy / momentum).
+  // Invariants at the end (relative to the incident kinetic energy / momentum). The momenta
+  // only where they are invariants (no held dof, no grip, no mass-proportional damping).
   PetscReal energy_error    = 0; // (E_end - E_0) / E_0, E including the ball's work W
-  PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i) (only meaningful free-free)
+  PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i)
   PetscReal angular_momentum_error = 0; // about x = 0, / (m_b v_i L)
   PetscReal beam_kinetic_end = 0, beam_strain_end = 0, ball_dissipated_end = 0; // J
-  // Damped beams only (Rayleigh damping): the energy the beam's damping dissipated by the end
-  // (J; it is in energy_error's E), and as a fraction of the incident kinetic energy.
+  PetscReal ball_kinetic_end = 0; // J, the ball's rebound kinetic energy 1/2 m_b v_b,final^2
+  // The energy the beam's damping (Rayleigh, and a grip's damper) dissipated by the end (J; it is
+  // in energy_error's E; 0 for an undamped beam), and as a fraction of the incident kinetic energy.
   PetscReal beam_dissipated_end = 0, damping_fraction = 0;
   // Where the incident kinetic energy went, as fractions of it, at the end of the run: lost
   // in the ball (hysteresis; for the linear spring 1 - loss_factor^2 of the rebound energy),
-  // the beam's rigid translation P^2/2M and rotation L_cm^2/2I_cm about its centre of mass,
-  // and its vibration (the rest of the beam's energy). Meaningful for a free beam.
+  // and, for a beam with no held dof, its rigid translation P^2/2M and rotation L_cm^2/2I_cm
+  // about its centre of mass and its vibration (the rest of the beam's energy).
   PetscReal ball_loss_fraction = 0, translation_fraction = 0, rotation_fraction = 0, vibration_fraction = 0;
   // The bat in play: the batted-ball speed (m/s, away from the bat, lab frame), the collision
-  // efficiency q = (bbs - V(x)) / (v_ball + V(x)) (= acor for a bat at rest), the bat's
-  // recoil: its centre-of-mass speed (m/s, toward the ball) and angular velocity (rad/s) at the
-  // end; with -beam_pivot the rigid rig's recoil factor r and BBCOR = e_A (1 + r) + r (0 without).
+  // efficiency q = (bbs - V(x)) / (v_ball + V(x)) (= acor for a bat at rest); a beam with no held
+  // dof: its recoil, the centre-of-mass speed (m/s, toward the ball) and angular velocity
+  // (rad/s) at the end; a rig free about its pivot (-beam_pivot, no other support): its recoil
+  // factor r and BBCOR = e_A (1 + r) + r.
   PetscReal bbs = 0, collision_efficiency = 0, bat_speed_end = 0, bat_angular_velocity_end = 0;
   PetscReal recoil_factor = 0, bbcor = 0;
   // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
@@ -131,6 +167,10 @@ struct ImpactOutcome {
   // steps taken) and when (s), and at the end the grip's stored energy and the work the hands
   // have done on the bat (J; the grip's damper is in beam_dissipated_end).
   PetscReal grip_force_peak = 0, grip_force_peak_time = 0, grip_stored_end = 0, hand_work_end = 0;
+  // The rigid-body model, Eq. (11), for a free beam at rest (no support, pivot, grip or swing):
+  // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
+  // for which it gives acor_corrected (the forced fit).
+  PetscReal rigid_acor = 0, rigid_forced_loss_fraction = 0;
 };
 
 // The stepper's own counts, and the driver's.
@@ -142,7 +182,8 @@ struct ImpactCost : StepperCounts {
 struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
   std::string               after_used; // how the run followed a separation: "modal" or "time" (-impact_after as resolved)
   std::vector<ContactEvent> events;
-  ImpactSeries series;
+  ImpactSeries              series;
+  ImpactScales              scales;
 };
 
 // The run's time rules: after each separation the run continues for `window`; it never

@@ -110,7 +110,7 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
 // A located event applied; an error when contacts exceed -impact_max_contacts (chatter, or
 // an integration gone wrong: the energy tells).
 PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ImpactTimes &times, ContactEventKind kind, PetscReal E0, ContactState *contact, ContactTimeline *tl,
-                          ImpactResult *res)
+                          ContactTally *tally)
 {
   PetscReal c, cd;
   bool      changed;
@@ -118,8 +118,8 @@ PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario
   PetscFunctionBeginUser;
   PetscCall(st.Compression(&c, &cd));
   const PetscReal te = st.Time();
-  PetscCall(ContactEventApply(st.Comm(), kind, te, c, cd, sc.ball, times, st.Method().c_str(), contact, tl, res, &changed));
-  if (kind == ContactEventKind::ContactStart && res->contacts > sc.impact.max_contacts) {
+  PetscCall(ContactEventApply(st.Comm(), kind, te, c, cd, sc.ball, times, st.Method().c_str(), contact, tl, tally, &changed));
+  if (kind == ContactEventKind::ContactStart && tally->contacts > sc.impact.max_contacts) {
     StateMeasures m;
     PetscCall(MeasureState(st, ctx, nullptr, &m, nullptr));
     const PetscReal growth = (m.total() - E0) / E0;
@@ -226,48 +226,48 @@ PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamS
 }
 
 // The end of a run at time t: the contact still open (if any) closed, the final measures
-// (refused when not finite), the outcome, and the stepper's counts.
-PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ContactState &contact, const ContactTimeline &timeline, const StateMeasures &m0, PetscReal t,
-                            ImpactResult *res)
+// (refused when not finite), and the stepper's counts.
+PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ContactState &contact, const ContactTimeline &timeline, PetscReal t, const IntegratorInfo &info,
+                            ImpactRecord *rec, ImpactCost *cost)
 {
-  StateMeasures m1;
+  StateMeasures &m1 = rec->end;
   PetscFunctionBeginUser;
-  res->ended_in_contact = contact.phase != ContactPhase::Separated ? PETSC_TRUE : PETSC_FALSE;
-  if (res->ended_in_contact) {
-    res->contact_time_total += t - timeline.contact_start;
-    if (res->contacts == 1) res->contact_time = t - timeline.contact_start;
-  }
+  ContactTallyClose(contact.phase, timeline, t, &rec->contact);
   PetscCall(MeasureState(st, ctx, nullptr, &m1, nullptr));
   PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) && std::isfinite(m1.angular_momentum), st.Comm(), PETSC_ERR_FP,
              "the solution is not finite (NaN/Inf) at the end of the run, t = %g s, with %s: no result is reported; the step is unstable%s", (double)t, st.Method().c_str(),
-             res->dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
-  ImpactOutcomeFinish(ctx, m0, m1, t, res);
+             info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+  rec->final_time = t;
+  rec->energy_end = m1.total();
   if (sc.monitor.segment && sc.monitor.segment_until > 0)
     PetscCheck(t >= sc.monitor.segment_until * (1 - 1e-12), st.Comm(), PETSC_ERR_ARG_INCOMP, "-monitor_segment_until %g s is beyond the end of the run (%g s): raise -impact_window so the run lasts that long",
                (double)sc.monitor.segment_until, (double)t);
-  PetscCall(st.Counts(res));
+  PetscCall(st.Counts(cost));
   PetscFunctionReturn(0);
 }
 
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
-// stepper reads.
-PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, PetscReal approach, ImpactResult *res)
+// stepper reads. The events and monitors write their records in *rec, the driver its steps and
+// time in *cost; info: the stepper's settings (for messages).
+PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, PetscReal approach, const IntegratorInfo &info,
+                           ImpactRecord *rec, ImpactCost *cost)
 {
   const ImpactParams &ip    = sc.impact;
   const ImpactTimes   times = ImpactTimesOf(sc.beam, sc.ball, ip);
-  StateMeasures       m0;
+  ContactTally       &tally = rec->contact;
 
   PetscFunctionBeginUser;
-  PetscCall(MeasureState(st, ctx, nullptr, &m0, nullptr));
-  ImpactRecorder rec(st, ctx, sc.monitor, ip, m0.total(), res);
-  PetscCall(rec.Record(0.0));
-  PetscCall(rec.Snapshots(0.0));
+  PetscCall(MeasureState(st, ctx, nullptr, &rec->start, nullptr));
+  rec->energy_in = rec->start.total();
+  ImpactRecorder recorder(st, ctx, sc.monitor, ip, rec->energy_in, &rec->series, &rec->peaks);
+  PetscCall(recorder.Record(0.0));
+  PetscCall(recorder.Snapshots(0.0));
   auto indicators = [&](EventIndicators *g) -> PetscErrorCode {
     PetscReal c, cd;
     PetscFunctionBeginUser;
     PetscCall(st.Compression(&c, &cd));
     PetscCheck(std::isfinite(c) && std::isfinite(cd), st.Comm(), PETSC_ERR_FP, "the solution is not finite (NaN/Inf) at t = %g s with %s: the step is unstable%s", (double)st.Time(), st.Method().c_str(),
-               res->dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+               info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
     g->c    = c / scales.compression;
     g->cdot = cd / scales.speed;
     PetscFunctionReturn(0);
@@ -278,8 +278,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   timeline.t_stop = times.max_time;
   EventIndicators g0, g1;
   PetscCall(indicators(&g0));
-  res->contacts = 1;
-  res->events.push_back(ContactStartEvent(sc.ball, *contact, 0.0, 0.0, approach));
+  ContactTallyStart(sc.ball, *contact, approach, &tally);
   bool                             after_modal;
   std::shared_ptr<const BeamModes> modes;
   ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
@@ -290,46 +289,60 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     truncation.cost_warn    = ip.report_setup ? ip.cost_warn : 0;
     truncation.progress     = ip.report_setup ? ip.progress : 0;
   }
-  res->after_used = after_modal ? "modal" : "time";
+  rec->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {
     if (ip.report_setup && ip.progress > 0 && MPI_Wtime() - last_progress >= ip.progress) { // a long single impact
       last_progress = MPI_Wtime();
       PetscCall(PetscPrintf(st.Comm(), "progress: t = %.4g s simulated (the run stops by %.4g s), %" PetscInt_FMT " steps, %" PetscInt_FMT " contact(s), %.0f s of wall time\n", (double)t,
-                            (double)timeline.t_stop, res->steps + res->event_steps, res->contacts, last_progress - wall0));
+                            (double)timeline.t_stop, cost->steps + cost->event_steps, tally.contacts, last_progress - wall0));
     }
-    const PetscReal target = std::min(timeline.t_stop, rec.NextSnapshot()); // land exactly on both
+    const PetscReal target = std::min(timeline.t_stop, recorder.NextSnapshot()); // land exactly on both
     PetscReal       dt;
     stage.Switch(contact->phase != ContactPhase::Separated ? ImpactStage::Contact : ImpactStage::FreeFlight);
     PetscCall(st.NextStep(&dt));
     if (t + dt > target) dt = target - t;
     PetscCall(st.Step(dt));
-    res->steps++;
+    cost->steps++;
     PetscCall(indicators(&g1));
     const int ev = ContactCrossedEvent(contact->phase, g0, g1, ip.event_tol);
     if (ev >= 0) {
       const auto kind = static_cast<ContactEventKind>(ev);
-      PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol, indicators, &res->event_steps));
-      PetscCall(ApplyEvent(st, ctx, sc, times, kind, m0.total(), contact, &timeline, res));
+      PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol, indicators, &cost->event_steps));
+      PetscCall(ApplyEvent(st, ctx, sc, times, kind, rec->energy_in, contact, &timeline, &tally));
       // The free flight, unless the window is already over (-impact_window 0: nothing to follow).
       if (kind == ContactEventKind::Separation && after_modal && timeline.t_stop > st.Time() * (1 + 1e-14)) {
         PetscReal dt_sample;
         bool      again = false;
         PetscCall(st.NextStep(&dt_sample));
         stage.Switch(ImpactStage::FreeFlight);
-        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, rec, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again));
-        if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, m0.total(), contact, &timeline, res));
+        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again));
+        if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, rec->energy_in, contact, &timeline, &tally));
       }
       PetscCall(indicators(&g1));
     }
     t  = st.Time();
     g0 = g1;
-    PetscCall(rec.Record(t));
-    PetscCall(rec.Snapshots(t));
+    PetscCall(recorder.Record(t));
+    PetscCall(recorder.Snapshots(t));
   }
-  res->wall_time = MPI_Wtime() - wall0;
-  PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, m0, t, res));
+  cost->wall_time = MPI_Wtime() - wall0;
+  PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, t, info, rec, cost));
+  PetscFunctionReturn(0);
+}
+
+// Drives the stepper and hands what the run recorded to the outcome.
+PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario &sc, ImpactResult *res)
+{
+  ImpactRecord rec;
+
+  PetscFunctionBeginUser;
+  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
+  PetscCall(ImpactDrive(st, ctx, &s.contact, sc, s.scales, s.approach, *res, &rec, res));
+  rec.V_x      = s.V_x;
+  rec.scales   = s.scales;
+  ImpactOutcomeFinish(sc, s.sys, std::move(rec), res);
   PetscFunctionReturn(0);
 }
 
@@ -342,8 +355,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
   TSStepperSettings        set;
 
   PetscFunctionBeginUser;
-  *res   = ImpactResult();
-  res->x = sc.impact.x;
+  *res = ImpactResult();
   ImpactStageScope stage(ImpactStage::Setup);
   PetscCall(ImpactSetupBuild(comm, sc, &s));
   set.check_unused_options = sc.impact.check_unused_options;
@@ -352,10 +364,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &sc, ImpactResult *res)
   PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
   stage.End(); // ImpactDrive holds the contact and free-flight stages
   if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys, s.scales, *res));
-  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
-  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
-  ImpactBatOutcome(sc, s.V_x, res);
-  ImpactPlausibility(sc, res);
+  PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
   PetscFunctionReturn(0);
 }
 
@@ -365,14 +374,10 @@ PetscErrorCode LeapfrogRun(const Scenario &sc, const LeapfrogParams &lp, ImpactR
   std::unique_ptr<Stepper> st;
 
   PetscFunctionBeginUser;
-  *res   = ImpactResult();
-  res->x = sc.impact.x;
+  *res = ImpactResult();
   PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s));
   PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));
-  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
-  PetscCall(ImpactDrive(*st, ctx, &s.contact, sc, s.scales, s.approach, res));
-  ImpactBatOutcome(sc, s.V_x, res);
-  ImpactPlausibility(sc, res);
+  PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
   PetscFunctionReturn(0);
 }
 

@@ -17,7 +17,12 @@ ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const 
   ImpactTimes     t;
   const PetscReal omega1 = BeamFundamentalFrequencyEstimate(beam);
   t.window               = ip.window >= 0 ? ip.window : 2 * (2 * M_PI / omega1);
-  t.max_time             = ip.max_time > 0 ? ip.max_time : 4 * t.window + 100 * ContactTimeScale(ball);
+  // A ball at rest (struck by a swinging bat): a speed-dependent law's time scale at v_i = 0 is
+  // infinite; the cap takes it at 1 m/s (as long or longer than at a faster approach for every law
+  // that stiffens with compression).
+  BallParams at = ball;
+  if (!(at.speed > 0)) at.speed = 1;
+  t.max_time = ip.max_time > 0 ? ip.max_time : 4 * t.window + 100 * ContactTimeScale(at);
   return t;
 }
 
@@ -30,13 +35,13 @@ const OptionModule &ImpactOptionTable()
       OptionReal("-impact_x", "m", "Impact point, metres from the x = 0 end", "0.55"),
       OptionReal("-impact_window", "s", "Time followed after each separation; < 0: two fundamental periods of the beam (the file records the value used)", "-1"),
       OptionChoice("-impact_after", "After a separation: integrate in time, or the exact free vibration in the beam's modes (modal: the default wherever the beam allows it)", {"time", "modal"}, "modal"),
-      OptionReal("-impact_max_time", "s", "Cap on the simulated time; < 0: 4 windows + 100 contact times (the file records the value used); a run it cuts off in contact is an error, a failed point", "-1"),
+      OptionReal("-impact_max_time", "s", "Cap on the simulated time; <= 0: 4 windows + 100 contact times (the file records the value used); a run it cuts off in contact is an error, a failed point", "-1"),
       OptionReal("-impact_event_tol", "1", "Events are located until |indicator| (c/c_scale or dc/dt/v_i) is below this", "1e-10", Between(0, 1e-2, true, true)),
       OptionInt("-impact_max_contacts", "Stop with an error after this many separate contacts", "50", AtLeast(1)),
       OptionFlag("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol"),
       OptionReal("-impact_cost_warn", "s", "-task impact: print the expected cost before a run expected to take more than this (wall time)", "30", NonNegative()),
       OptionReal("-impact_progress", "s", "-task impact: a progress line every this many seconds of wall time (0: none)", "10", NonNegative()),
-      OptionReal("-impact_energy_growth_tol", "1", "Allowed energy growth, relative to the incident kinetic energy", "1e-3", Positive()),
+      OptionNeeds(OptionReal("-impact_energy_growth_tol", "1", "Allowed energy growth, relative to the incident kinetic energy", "1e-3", Positive()), {"-impact_energy_check=true"}),
     },
   };
   return m;
@@ -54,8 +59,8 @@ const OptionModule &MonitorOptionTable()
       OptionList("-snapshot_times", "s", "Record the beam displacement y(x) at these times t1,t2,... (any number, in any order; none by default; times after the run's end are named in a note)", 1, 0,
                  NonNegative()),
       OptionList("-monitor_segment", "m", "Record the kinetic energy of the beam segment x0,x1 at every step, and its peak", 2, 2, NonNegative()),
-      OptionFlag("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its moment about x = 0), the grip's stored energy and the hands' work at every step"),
-      OptionReal("-monitor_segment_until", "s", "Take the segment's peak over t <= this; < 0: the whole run", "-1"),
+      OptionNeeds(OptionFlag("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its moment about x = 0), the grip's stored energy and the hands' work at every step"), {"-grip"}),
+      OptionNeeds(OptionReal("-monitor_segment_until", "s", "Take the segment's peak over t <= this; < 0: the whole run", "-1"), {"-monitor_segment"}),
     },
   };
   return m;
@@ -65,10 +70,11 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
 {
   const OptionModule &T     = ImpactOptionTable();
   PetscInt            after = (PetscInt)p->after; // the row's choices in the order of ImpactAfter
+  PetscBool           x_set;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_x", &p->x, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_x", &p->x, &x_set));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_window", &p->window, NULL));
   PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-impact_after", &after, &p->after_set));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_max_time", &p->max_time, NULL));
@@ -80,6 +86,10 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_energy_growth_tol", &p->energy_growth_tol, NULL));
   PetscOptionsEnd();
   p->after = (ImpactAfter)after;
+  // The default point is in metres, not relative: on a beam shorter than 0.55 m it is off the
+  // beam, and the message says so instead of naming an option the user never gave.
+  PetscCheck(x_set || ImpactPointLocate(beam, p->x) != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "the default impact point -impact_x %g m is beyond the end of this %.12g m beam: give -impact_x, 0 <= x <= %.12g (m)", (double)p->x, (double)beam.length, (double)beam.length);
   {
     char what[64];
     PetscCall(PetscSNPrintf(what, sizeof(what), "-impact_x %.12g", (double)p->x));

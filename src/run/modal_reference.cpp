@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <unistd.h>
+#include <utility>
 
 namespace beamimpact {
 
@@ -46,15 +47,15 @@ PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, con
 // The maximum compressions of a contact phase: dc/dt falling through 0 before the separation
 // at s_sep, each followed by a skip to where dc/dt rises again (a local minimum).
 template <class Phase>
-void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep, ImpactResult *res)
+void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep, ContactTally *tally)
 {
   PetscReal s = 0, s_max;
   Phase     rate = ph;
   while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, run.s_min, &s_max)) {
     s += s_max;
     const PetscReal c = ph.Derivative(s, 0);
-    res->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, ContactLinearStiffness(*run.ball) * c});
-    res->max_compression = std::max(res->max_compression, c);
+    tally->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, ContactLinearStiffness(*run.ball) * c});
+    tally->max_compression = std::max(tally->max_compression, c);
     // Continue after this maximum: restart the search from the state at s.
     std::vector<PetscReal> qs, qds;
     ph.State(s, qs, qds);
@@ -69,23 +70,23 @@ void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep,
 
 // A contact phase from run.t to the separation (c falling through 0).
 template <class Phase>
-PetscErrorCode ModalContactPhase(ModalRun &run, const Phase &ph, ImpactResult *res)
+PetscErrorCode ModalContactPhase(ModalRun &run, const Phase &ph, ContactTally *tally)
 {
   PetscReal s_sep;
 
   PetscFunctionBeginUser;
   PetscCheck(ModalFirstCrossing(ph, 0, +1.0, run.t_cap - run.t, run.s_min, &s_sep), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
              "modal reference: the ball is still in contact at -impact_max_time %g s", (double)run.t_cap);
-  ModalMaxCompressions(run, ph, s_sep, res);
+  ModalMaxCompressions(run, ph, s_sep, tally);
   ph.State(s_sep, run.q, run.qd);
   run.t += s_sep;
-  res->events.push_back({ContactEventKind::Separation, run.t, 0.0, 0.0});
+  tally->events.push_back({ContactEventKind::Separation, run.t, 0.0, 0.0});
   PetscFunctionReturn(0);
 }
 
 // A separated phase from run.t to the next contact (c rising through 0) or to t_stop, the end
 // of the window after the separation; *contact tells which.
-PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_stop, PetscInt max_contacts, ImpactResult *res, bool *contact)
+PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_stop, PetscInt max_contacts, ContactTally *tally, bool *contact)
 {
   PetscReal s_con;
 
@@ -98,46 +99,59 @@ PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_s
   }
   ph.State(s_con, run.q, run.qd);
   run.t += s_con;
-  res->contacts++;
-  PetscCheck(res->contacts <= max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "modal reference: more than -impact_max_contacts %" PetscInt_FMT " contacts", max_contacts);
-  res->events.push_back({ContactEventKind::ContactStart, run.t, 0.0, 0.0});
+  tally->contacts++;
+  PetscCheck(tally->contacts <= max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "modal reference: more than -impact_max_contacts %" PetscInt_FMT " contacts", max_contacts);
+  tally->events.push_back({ContactEventKind::ContactStart, run.t, 0.0, 0.0});
   PetscFunctionReturn(0);
 }
 
-// The outcome from the events and the final state: contact times, force, ACOR, energies (D:
-// dissipated by the beam's damping).
-void ModalOutcome(const ModalRun &run, PetscReal E0, PetscReal D, ImpactResult *res)
+// The contact times and the peak force from the events.
+void ModalTallyClose(const BallParams &ball, ContactTally *tally)
 {
-  const ModalSystem &S    = *run.S;
-  const BallParams  &ball = *run.ball;
-  PetscReal          start = 0;
-  bool               first = true;
-  for (const ContactEvent &e : res->events) {
+  PetscReal start = 0;
+  bool      first = true;
+  for (const ContactEvent &e : tally->events) {
     if (e.kind == ContactEventKind::ContactStart) start = e.time;
     if (e.kind == ContactEventKind::Separation) {
-      if (first) res->contact_time = e.time - start;
+      if (first) tally->contact_time = e.time - start;
       first = false;
-      res->contact_time_total += e.time - start;
+      tally->contact_time_total += e.time - start;
     }
   }
-  res->peak_force          = ContactLinearStiffness(ball) * res->max_compression;
-  res->final_time          = run.t;
-  res->ball_final_velocity = run.qd[S.n - 1];
-  res->acor                = -run.qd[S.n - 1] / ball.speed;
-  res->acor_corrected      = res->acor * ball.loss_factor;
-  res->energy_error        = (ModalEnergy(S, run.q, run.qd, false) + D - E0) / E0;
-  if (S.sys->Damped()) {
-    res->beam_dissipated_end = D;
-    res->damping_fraction    = D / E0;
-  }
-  std::vector<PetscReal> shape(S.sys->ndof, 0.0);
-  PetscReal              T = 0;
+  tally->peak_force = ContactLinearStiffness(ball) * tally->max_compression;
+}
+
+// The measures of the state (separated; the linear spring stores nothing then) as a stepper's
+// are taken (run/measures.cpp): energies, momenta about x = 0 (a Timoshenko section's spin
+// included), and D, the energy the beam's damping dissipated.
+StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal D)
+{
+  const ModalSystem     &S   = *run.S;
+  const BeamSystem      &sys = *S.sys;
+  const BallParams      &ball = *run.ball;
+  std::vector<PetscReal> shape(sys.ndof, 0.0);
+  StateMeasures          m;
+  PetscReal              T = 0, p = 0, l = 0;
   for (PetscInt d = 0; d + 1 < S.n; ++d) {
     T += 0.5 * S.mass[d] * run.qd[d] * run.qd[d];
     shape[S.dof[d]] = run.q[d];
+    const PetscInt dof = S.dof[d], node = dof / sys.fields;
+    if (dof % sys.fields == 0) {
+      p += S.mass[d] * run.qd[d];
+      l += S.mass[d] * sys.NodeX(node) * run.qd[d];
+    } else if (dof % sys.fields == 1) l += S.mass[d] * run.qd[d];
   }
-  res->beam_kinetic_end = T;
-  res->beam_strain_end  = BeamSystemStrainEnergy(*S.sys, shape.data(), S.sys->fields, 0, S.sys->ndof);
+  m.ball_y           = run.q[S.n - 1];
+  m.ball_v           = run.qd[S.n - 1];
+  m.ball_kinetic     = 0.5 * ball.mass * m.ball_v * m.ball_v;
+  m.beam_kinetic     = T;
+  m.beam_strain      = BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof);
+  m.beam_momentum    = p;
+  m.beam_moment      = l;
+  m.momentum         = p + ball.mass * m.ball_v;
+  m.angular_momentum = l + ball.mass * x_imp * m.ball_v;
+  m.beam_dissipated  = D;
+  return m;
 }
 
 } // namespace
@@ -149,6 +163,53 @@ static PetscInt ModalReferenceFreeDofs(const BeamSystem &sys)
   return n;
 }
 
+bool ModalReferenceApplies(const Scenario &sc, std::string *why)
+{
+  std::string w;
+  if (sc.beam.grip.on) w = "with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal reference; use a tight TS run as the reference";
+  else if (!ContactLinear(sc.ball))
+    w = std::string("needs -ball_law linear (the ") + ContactLawName(sc.ball.law) + " law is nonlinear: use a tight run of a high-order integrator as the reference)";
+  if (why) *why = w;
+  return w.empty();
+}
+
+namespace {
+
+// The run's start: the ball at v_i, a swinging bat's rigid motion; *V_x the bat's speed toward
+// the ball at the impact point, *E0 the total energy (J).
+void ModalStart(const Scenario &sc, const BeamSystem &sys, ModalRun *run, PetscReal *V_x, PetscReal *E0)
+{
+  const ModalSystem &S    = *run->S;
+  const BallParams  &ball = sc.ball;
+  run->q.assign(S.n, 0.0);
+  run->qd.assign(S.n, 0.0);
+  run->qd[S.n - 1] = ball.speed;
+  *V_x             = 0;
+  if (sc.swing.Swings()) {
+    const BeamRigidBody          body = BeamRigidBodyOf(sc.beam);
+    const std::vector<PetscReal> v0   = BeamSystemSwingVelocity(sys, sc.swing, body);
+    for (PetscInt d = 0; d + 1 < S.n; ++d) run->qd[d] = v0[S.dof[d]];
+    *V_x = SwingSpeedAt(sc.swing, body, sc.impact.x);
+  }
+  *E0 = sc.swing.Swings() ? ModalEnergy(S, run->q, run->qd, false) : 0.5 * ball.mass * ball.speed * ball.speed;
+}
+
+// What the run hands the outcome at its end (D: dissipated by the beam's damping, J).
+void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run, PetscReal E0, PetscReal D, PetscReal V_x, ImpactRecord *rec)
+{
+  ModalTallyClose(sc.ball, &rec->contact);
+  rec->end        = ModalMeasures(run, sc.impact.x, D);
+  rec->energy_in  = E0;
+  rec->energy_end = ModalEnergy(*run.S, run.q, run.qd, false) + D;
+  rec->final_time = run.t;
+  rec->V_x        = V_x;
+  BallParams approaching = sc.ball; // the contact's scales are those of the approach speed, as for a stepped run
+  approaching.speed      = sc.ball.speed + V_x;
+  rec->scales            = ContactScalesOf(sys, approaching);
+}
+
+} // namespace
+
 PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, ImpactResult *res)
 {
   const BallParams   &ball = sc.ball;
@@ -156,32 +217,28 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   ModalBasis          contact_basis, free_basis;
   ModalRun            run;
   ModalPhase          ph;
+  ImpactRecord        rec;
   bool                touching = true;
+  std::string         why;
 
   PetscFunctionBeginUser;
-  PetscCheck(!sys.Gripped(), PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "-reference modal with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal reference; use a tight TS run as the reference");
-  PetscCheck(ContactLinear(ball), PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "-reference modal needs -ball_law linear (the %s law is nonlinear: use a tight run of a high-order integrator as the reference)", ContactLawName(ball.law));
-  {
-    const double need = ModalReferenceMemory(sys), limit = ModalReferenceMemoryLimit();
-    PetscCheck(need <= limit, PETSC_COMM_SELF, PETSC_ERR_MEM,
-               "-reference modal with N = %" PetscInt_FMT " nodes (%" PetscInt_FMT " free dofs) would need about %.3g GB for its dense %s matrices, above the limit of %.3g GB "
-               "(-reference_max_memory, default half of the physical memory); reduce -beam_nodes, or use a tight TS run as the reference",
-               sys.nodes, ModalReferenceFreeDofs(sys), need / 1e9, sys.Damped() ? "damped first-order" : "modal", limit / 1e9);
-  }
+  PetscCheck(ModalReferenceApplies(sc, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "-reference modal %s", why.c_str());
+  const double need = ModalReferenceMemory(sys), limit = ModalReferenceMemoryLimit();
+  PetscCheck(need <= limit, PETSC_COMM_SELF, PETSC_ERR_MEM,
+             "-reference modal with N = %" PetscInt_FMT " nodes (%" PetscInt_FMT " free dofs) would need about %.3g GB for its dense %s matrices, above the limit of %.3g GB "
+             "(-reference_max_memory, default half of the physical memory); reduce -beam_nodes, or use a tight TS run as the reference",
+             sys.nodes, ModalReferenceFreeDofs(sys), need / 1e9, sys.Damped() ? "damped first-order" : "modal", limit / 1e9);
   const double wall0 = MPI_Wtime();
   *res               = ImpactResult();
-  res->x             = ip.x;
   res->ts_type       = "modal";
-  res->after_used    = "modal"; // exact throughout
   res->formulation   = "exact";
+  rec.after_used     = "modal"; // exact throughout
   const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ContactLinearStiffness(ball));
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
   // which also give the dissipated energy of every phase exactly.
   const bool       damped = sys.Damped();
   ModalDampedBasis damped_contact, damped_free;
-  PetscReal        D = 0;
+  PetscReal        D = 0, V_x, E0;
   if (damped) {
     PetscCall(ModalDampedBasisBuild(S, true, &damped_contact));
     PetscCall(ModalDampedBasisBuild(S, false, &damped_free));
@@ -193,19 +250,10 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   run.ball                = &ball;
   run.t_cap               = times.max_time;
   run.s_min               = 1e-13 * ContactTimeScale(ball);
-  run.q.assign(S.n, 0.0);
-  run.qd.assign(S.n, 0.0);
-  run.qd[S.n - 1] = ball.speed;
-  PetscReal V_x   = 0; // a swinging bat: its rigid motion toward the ball (-y)
-  if (sc.swing.Swings()) {
-    const BeamRigidBody          body = BeamRigidBodyOf(sc.beam);
-    const std::vector<PetscReal> v0   = BeamSystemSwingVelocity(sys, sc.swing, body);
-    for (PetscInt d = 0; d + 1 < S.n; ++d) run.qd[d] = v0[S.dof[d]];
-    V_x = SwingSpeedAt(sc.swing, body, ip.x);
-  }
-  const PetscReal E0 = sc.swing.Swings() ? ModalEnergy(S, run.q, run.qd, false) : 0.5 * ball.mass * ball.speed * ball.speed;
-  res->contacts   = 1;
-  res->events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
+  ModalStart(sc, sys, &run, &V_x, &E0);
+  rec.start            = ModalMeasures(run, ip.x, 0);
+  rec.contact.contacts = 1;
+  rec.contact.events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
   for (bool more = true; more;) {
     const PetscReal  t0 = run.t;
     ModalDampedPhase dph;
@@ -218,18 +266,17 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
     ph.B = touching ? &contact_basis : &free_basis;
     if (!(damped && touching)) ph.From(run.q, run.qd);
     if (touching) {
-      if (damped) PetscCall(ModalContactPhase(run, dph, res));
-      else PetscCall(ModalContactPhase(run, ph, res));
+      if (damped) PetscCall(ModalContactPhase(run, dph, &rec.contact));
+      else PetscCall(ModalContactPhase(run, ph, &rec.contact));
       touching = false;
     } else {
-      PetscCall(ModalFreePhase(run, ph, std::min(run.t_cap, run.t + times.window), ip.max_contacts, res, &touching));
+      PetscCall(ModalFreePhase(run, ph, std::min(run.t_cap, run.t + times.window), ip.max_contacts, &rec.contact, &touching));
       more = touching;
     }
     if (damped) D += dph.Dissipated(run.t - t0);
   }
-  ModalOutcome(run, E0, D, res);
-  ImpactBatOutcome(sc, V_x, res);
-  ImpactPlausibility(sc, res);
+  ModalFinish(sc, sys, run, E0, D, V_x, &rec);
+  ImpactOutcomeFinish(sc, sys, std::move(rec), res);
   res->wall_time = MPI_Wtime() - wall0;
   PetscFunctionReturn(0);
 }

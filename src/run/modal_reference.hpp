@@ -12,6 +12,8 @@
 #include "run/impact.hpp"
 #include "system/beam_system.hpp"
 
+#include <string>
+
 namespace beamimpact {
 
 struct Scenario;
@@ -27,6 +29,11 @@ struct Scenario;
 // PETSC_ERR_NOT_CONVERGED, if their eigenvectors are too ill-conditioned); the dissipated
 // energy is beam_dissipated_end and is in energy_error.
 PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
+
+// Whether it can solve the scenario: the linear law, no grip; *why (may be null) says why not,
+// naming the options, as "-reference modal <why>" reads. (The memory limit is checked when it
+// runs, on the built system.)
+bool ModalReferenceApplies(const Scenario &scenario, std::string *why);
 
 // The same on a system already built (any number of fields per node); the scenario gives the
 // ball, the impact rules and the time scales (its beam is not rebuilt).

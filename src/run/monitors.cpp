@@ -5,25 +5,25 @@
 
 namespace beamimpact {
 
-ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactResult *res)
-  : stepper_(stepper), ctx_(ctx), mon_(mon), ip_(ip), E0_(E0), res_(res)
+ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks)
+  : stepper_(stepper), ctx_(ctx), mon_(mon), ip_(ip), E0_(E0), series_(series), peaks_(peaks)
 {
-  res->series.velocity_at.assign(mon.velocity_at.size(), {});
-  res->series.velocity_at_x = mon.velocity_at;
+  series->velocity_at.assign(mon.velocity_at.size(), {});
+  series->velocity_at_x = mon.velocity_at;
 }
 
 PetscErrorCode ImpactRecorder::Record(PetscReal t)
 {
   StateMeasures          m;
   std::vector<PetscReal> pv;
-  ImpactSeries          &S = res_->series;
+  ImpactSeries          &S = *series_;
 
   PetscFunctionBeginUser;
   if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped()) PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
-  if (ctx_.sys->Gripped() && std::abs(m.grip_force) > res_->grip_force_peak) { // the hands' peak force, always
-    res_->grip_force_peak      = std::abs(m.grip_force);
-    res_->grip_force_peak_time = t;
+  if (ctx_.sys->Gripped() && std::abs(m.grip_force) > peaks_->grip_force) { // the hands' peak force, always
+    peaks_->grip_force      = std::abs(m.grip_force);
+    peaks_->grip_force_time = t;
   }
   if (ip_.energy_check) {
     const PetscReal growth = (m.total() - E0_) / E0_;
@@ -56,9 +56,9 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   }
   if (mon_.segment) {
     S.segment_kinetic.push_back(m.segment_kinetic);
-    if ((mon_.segment_until < 0 || t <= mon_.segment_until * (1 + 1e-12)) && m.segment_kinetic > res_->segment_kinetic_peak) {
-      res_->segment_kinetic_peak      = m.segment_kinetic;
-      res_->segment_kinetic_peak_time = t;
+    if ((mon_.segment_until < 0 || t <= mon_.segment_until * (1 + 1e-12)) && m.segment_kinetic > peaks_->segment_kinetic) {
+      peaks_->segment_kinetic      = m.segment_kinetic;
+      peaks_->segment_kinetic_time = t;
     }
   }
   PetscFunctionReturn(0);
@@ -70,8 +70,8 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
   while (next_ < mon_.snapshot_times.size() && mon_.snapshot_times[next_] <= t * (1 + 1e-12) + 1e-15) {
     std::vector<PetscReal> y;
     PetscCall(stepper_.GatherDisplacement(&y));
-    res_->series.snapshot_time.push_back(mon_.snapshot_times[next_]);
-    res_->series.snapshot_y.push_back(y);
+    series_->snapshot_time.push_back(mon_.snapshot_times[next_]);
+    series_->snapshot_y.push_back(y);
     ++next_;
   }
   PetscFunctionReturn(0);

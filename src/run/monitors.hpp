@@ -1,6 +1,7 @@
 // What a run records while it steps, only when asked (-monitor_*, -snapshot_times,
-// -impact_energy_check): per-step series, snapshots stepped onto exactly, the segment's
-// kinetic-energy peak, and the energy-growth stop.
+// -impact_energy_check, -grip): per-step series, snapshots stepped onto exactly, the peaks the
+// outcome reports (the segment's kinetic energy, the force on the hands), and the energy-growth
+// stop. It writes its own series and peaks; the outcome (run/outcome.hpp) reads them.
 #pragma once
 
 #include "run/measures.hpp"
@@ -11,7 +12,7 @@ namespace beamimpact {
 
 class ImpactRecorder {
 public:
-  ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactResult *res);
+  ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks);
   // The series at time t (s), and the energy check.
   PetscErrorCode Record(PetscReal t);
   // Every snapshot due by time t.
@@ -28,7 +29,8 @@ private:
   const MonitorRequest &mon_;
   const ImpactParams   &ip_;
   PetscReal             E0_;
-  ImpactResult         *res_;
+  ImpactSeries         *series_;
+  MonitorPeaks         *peaks_;
   size_t                next_ = 0;
 };
 

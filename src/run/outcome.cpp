@@ -2,25 +2,17 @@
 #include "run/outcome.hpp"
 
 #include <cstdio>
+#include <limits>
+#include <utility>
 
 namespace beamimpact {
 
-void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, const StateMeasures &m1, PetscReal t, ImpactResult *res)
+namespace {
+
+// The beam's rigid-body part at the end over the dofs that can move (held dofs never move); a
+// rigid rotation of a Timoshenko beam also turns its sections (psi = theta).
+void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
 {
-  const BallParams &ball = *ctx.ball;
-  const BeamSystem &S    = *ctx.sys;
-  res->final_time             = t;
-  res->ball_final_velocity    = m1.ball_v;
-  res->acor                   = -m1.ball_v / ball.speed;
-  res->acor_corrected         = ContactElastic(ball) ? res->acor * ball.loss_factor : res->acor;
-  res->energy_error           = (m1.total() - m0.total()) / m0.total();
-  res->linear_momentum_error  = (m1.momentum - m0.momentum) / (ball.mass * ball.speed);
-  res->angular_momentum_error = (m1.angular_momentum - m0.angular_momentum) / (ball.mass * ball.speed * S.L);
-  res->beam_kinetic_end       = m1.beam_kinetic;
-  res->beam_strain_end        = m1.beam_strain;
-  res->ball_dissipated_end    = m1.ball_work - m1.ball_stored;
-  // Rigid-body part of the beam's motion about its centre of mass (held nodes never move); a
-  // rigid rotation of a Timoshenko beam also turns its sections (psi = theta).
   PetscReal M = 0, Mx = 0, Mxx = 0;
   for (PetscInt i = 0; i < S.nodes; ++i) {
     const PetscInt d = S.Dof(i);
@@ -32,38 +24,46 @@ void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, con
     if (S.fields > 1 && !S.held[S.Dof(i, 1)]) Mxx += S.mass[S.Dof(i, 1)]; // rotary inertia of a Timoshenko section
   }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
-  const PetscReal L_cm = m1.beam_moment - x_cm * m1.beam_momentum;
-  const PetscReal Ein  = 0.5 * ball.mass * ball.speed * ball.speed;
-  const PetscReal Etr = m1.beam_momentum * m1.beam_momentum / (2 * M), Erot = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
-  const PetscReal ball_loss = ContactElastic(ball) ? (1 - ball.loss_factor * ball.loss_factor) * m1.ball_kinetic : res->ball_dissipated_end;
-  res->ball_loss_fraction   = ball_loss / Ein;
-  res->translation_fraction = Etr / Ein;
-  res->rotation_fraction    = Erot / Ein;
-  res->vibration_fraction   = (m1.beam_kinetic + m1.beam_strain - Etr - Erot) / Ein;
-  res->bat_speed_end            = -m1.beam_momentum / M; // toward the ball (-y)
-  res->bat_angular_velocity_end = I_cm > 0 ? -L_cm / I_cm : 0;
-  res->grip_stored_end = m1.grip_stored;
-  res->hand_work_end   = m1.hand_work;
-  if (S.Damped()) {
-    res->beam_dissipated_end = m1.beam_dissipated;
-    res->damping_fraction    = m1.beam_dissipated / Ein;
-  }
+  const PetscReal L_cm = f->end.beam_moment - x_cm * f->end.beam_momentum;
+  f->beam_mass         = M;
+  f->inertia_cm        = I_cm;
+  f->moment_cm         = L_cm;
+  f->E_translation     = f->end.beam_momentum * f->end.beam_momentum / (2 * M);
+  f->E_rotation        = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
 }
 
-void ImpactBatOutcome(const Scenario &sc, PetscReal V_x, ImpactResult *res)
+} // namespace
+
+ImpactScales ImpactScalesOf(const ContactScales &scales)
 {
-  res->bbs                  = -res->ball_final_velocity;
-  res->collision_efficiency = SwingCollisionEfficiency(res->bbs, sc.ball.speed, V_x);
-  if (sc.beam.has_pivot) {
-    const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, res->x);
-    res->recoil_factor = rig.recoil_factor;
-    res->bbcor         = PivotBBCOR(rig, res->collision_efficiency);
-  }
+  ImpactScales s;
+  s.contact_time_scale = scales.time;
+  s.compression_scale  = scales.compression;
+  return s;
 }
 
-void ImpactPlausibility(const Scenario &sc, ImpactResult *res)
+void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord &&rec, ImpactResult *res)
 {
-  res->compression_beyond_radius = sc.ball.radius > 0 && res->max_compression > sc.ball.radius ? PETSC_TRUE : PETSC_FALSE;
+  const PetscReal nan = std::numeric_limits<PetscReal>::quiet_NaN();
+  OutcomeFacts    f;
+
+  f.sc         = &sc;
+  f.contact    = &rec.contact;
+  f.peaks      = &rec.peaks;
+  f.start      = rec.start;
+  f.end        = rec.end;
+  f.energy_in  = rec.energy_in;
+  f.energy_end = rec.energy_end;
+  f.final_time = rec.final_time;
+  f.V_x        = rec.V_x;
+  f.E_in       = 0.5 * sc.ball.mass * sc.ball.speed * sc.ball.speed;
+  RigidPartAtEnd(sys, &f);
+  for (const ResultColumn &c : ImpactResultColumns())
+    if (c.compute) c.Set(res, c.applies(sc) ? c.compute(f) : nan);
+  res->events     = std::move(rec.contact.events);
+  res->series     = std::move(rec.series);
+  res->after_used = rec.after_used;
+  res->scales     = ImpactScalesOf(rec.scales);
 }
 
 std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r)

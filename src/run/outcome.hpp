@@ -1,27 +1,43 @@
-// The outcome of a run from its first and last states: ACOR, invariants, and where the
-// incident energy went (ball loss, the beam's rigid translation and rotation about its
-// centre of mass, vibration).
+// The outcome of a run: the only writer of its results. The driver (and the modal reference)
+// hand it a record: the small records of the events (ContactTally: contact times, peak force,
+// maximum compression, contacts) and of the monitors (MonitorPeaks), the measures of the
+// first and last states, the series; the outcome computes every column of the results table
+// (run/results_table.hpp) where it applies and puts NaN where it does not, and the impact's
+// scales. The cost (steps, counts, wall time) and the integrator's settings are the stepper's
+// and the driver's, and stay as they wrote them.
 #pragma once
 
 #include "run/measures.hpp"
+#include "run/results_table.hpp"
 #include "run/scenario.hpp"
+#include "system/beam_system.hpp"
+
+#include <string>
 
 namespace beamimpact {
 
-// Fills the outcome fields of *res (final_time, ball_final_velocity, acor(_corrected),
-// energy and momentum errors, end energies, energy partition) from the measures m0 at
-// t = 0 and m1 at the end time t (s).
-void ImpactOutcomeFinish(const MeasureContext &ctx, const StateMeasures &m0, const StateMeasures &m1, PetscReal t, ImpactResult *res);
+// What a run hands its outcome.
+struct ImpactRecord {
+  ContactTally  contact;          // run/events.cpp
+  MonitorPeaks  peaks;            // run/monitors.cpp
+  ImpactSeries  series;           // run/monitors.cpp (only what was asked)
+  StateMeasures start, end;       // the measures at t = 0 and at the end
+  PetscReal     energy_in  = 0;   // J, the conserved total at t = 0 (start.total() for a stepper)
+  PetscReal     energy_end = 0;   // J, the same at the end
+  PetscReal     final_time = 0;   // s
+  PetscReal     V_x        = 0;   // m/s, the swinging bat's speed toward the ball at the impact point
+  ContactScales scales;           // of the contact, at the first contact's approach speed (v_ball + V_x)
+  std::string   after_used;       // -impact_after as the run resolved it
+};
 
-// The bat in play, from the ball's final velocity: the batted-ball speed, the collision
-// efficiency (V_x: the bat's speed toward the ball at the impact point before the impact) and,
-// with a pivot, the rig's recoil factor and BBCOR.
-void ImpactBatOutcome(const Scenario &sc, PetscReal V_x, ImpactResult *res);
+// Fills the outcome, the events, the series, the scales and after_used of *res from the
+// record (moved from); sys: the scenario's system (which dofs can move, their masses).
+void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord &&rec, ImpactResult *res);
 
-// Flags of physically absurd outcomes: compression_beyond_radius (max_compression beyond
-// -ball_radius, when given). CompressionBeyondRadiusText: the summary's warning line (empty if
-// not flagged), naming both values.
-void        ImpactPlausibility(const Scenario &sc, ImpactResult *res);
+// The scales of an impact from the contact's scales: T_r and the compression scale.
+ImpactScales ImpactScalesOf(const ContactScales &scales);
+
+// The summary's warning line for compression_beyond_radius (empty if not flagged), naming both values.
 std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r);
 
 // A run that reached its cap on the simulated time (-impact_max_time, or its default) while

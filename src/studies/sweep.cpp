@@ -2,14 +2,15 @@
 // See sweep.hpp.
 #include "studies/sweep.hpp"
 
+#include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
-#include "model/rigid.hpp"
 #include "run/outcome.hpp"
 #include "studies/sweep_farm.hpp"
+#include "studies/sweep_notes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,8 +31,6 @@ std::vector<SweepColumn> SweepColumns(const SweepPlan &plan)
   for (const SweepAxis &a : plan.axes) c.push_back({a.name, a.unit, false, false, a.labels});
   c.push_back({"status", "1", false, true});
   for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time", rc.integer});
-  c.push_back({"rigid_acor", "1", false});
-  c.push_back({"rigid_forced_loss_fraction", "1", false});
   return c;
 }
 
@@ -65,6 +64,7 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
   // The case's options stay set while it runs (the integrator reads its own from them).
   ierr = SweepCaseScenario(comm, plan, index, true, &c, &status, reason);
   if (!ierr && status == SweepOk) {
+    c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
     ierr = ImpactRun(comm, c, result);
     if (ierr) {
       status = SweepStatusOfError(ierr);
@@ -84,16 +84,9 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
   row->insert(row->end(), v.begin(), v.end());
   row->push_back((double)status);
   if (status == SweepOk) {
-    const ImpactResult &r = *result;
-    // Rigid-body model, Eq. (11), with the beam's own mass, centre of mass and inertia (for the
-    // paper's uniform beam: M = mu L, I_cm = M L^2 / 12 about its centre).
-    const BeamRigidBody body = BeamRigidBodyOf(c.beam);
-    const PetscReal     M_e  = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(r.x - body.x_cm));
-    for (auto &rc : ImpactResultColumns()) row->push_back(rc.get(r));
-    row->push_back(RigidACOR(c.ball.mass, M_e, plan.rigid_loss_fraction));
-    row->push_back(RigidForcedLossFraction(c.ball.mass, M_e, r.acor_corrected));
+    for (auto &rc : ImpactResultColumns()) row->push_back(rc.Get(*result)); // the results table, NaN where a column does not apply
     reason->clear();
-  } else row->resize(row->size() + ImpactResultColumns().size() + 2, nan);
+  } else row->resize(row->size() + ImpactResultColumns().size(), nan);
   PetscFunctionReturn(0);
 }
 
@@ -214,6 +207,14 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
       PetscCheck(used, farm.group, PETSC_ERR_ARG_WRONG,
                  "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is an option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ts_type, beam_theory",
                  a.name == "impact_x" && !plan.sweep_x.empty() ? "-sweep_x:" : "-sweep", a.name.c_str(), a.spec.c_str(), a.name.c_str());
+    }
+    // An axis that changes nothing: every point the same (unless another axis varies what it needs).
+    for (const OptionWithoutEffect &o : OptionsWithoutEffect()) {
+      bool varied = false;
+      for (const SweepAxis &a : plan.axes) varied = varied || o.needs == "-" + a.name;
+      for (const SweepAxis &a : plan.axes)
+        PetscCheck(varied || o.name != "-" + a.name, farm.group, PETSC_ERR_ARG_WRONG, "-sweep %s=%s is not allowed: %s has no effect in this sweep (%s), so every point would be the same", a.name.c_str(), a.spec.c_str(), o.name.c_str(),
+                   o.why.c_str());
     }
     PetscCall(OptionsCheckUnused(farm.group));
     PetscCall(SweepCaseOptionsClear(plan));
@@ -353,6 +354,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
     PetscFunctionBeginUser;
     const double tc = MPI_Wtime();
     PetscCall(SweepCaseRun(group, plan, index, &row, &reason, &result));
+    SweepNotesPointDone(farm.group_rank == 0); // its notes, counted once for the sweep
     const double tj = MPI_Wtime();
     mine->busy += tj - tc;
     if (farm.group_rank == 0) {
@@ -374,6 +376,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
     PetscFunctionReturn(0);
   };
   auto between = [&](PetscInt done) -> PetscErrorCode { return SweepPoll(S, P, plan, done); };
+  SweepNotesCollect();
   if (!todo.empty()) PetscCall(TaskFarmRun(farm, (PetscInt)todo.size(), run_case, between));
   journal.Close();
   PetscFunctionReturn(0);
@@ -532,6 +535,10 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   PetscFunctionBeginUser;
   g_exit_status        = 0;
   const double t_setup = MPI_Wtime();
+  struct NotesGuard {
+    ~NotesGuard() { SweepNotesAbandon(); } // an error return: PETSc's printer back
+  } notes_guard;
+  PetscCall(SweepNotesBegin()); // each point's notes said once for the sweep (studies/sweep_notes.hpp)
   PetscCheck(!output.empty(), comm, PETSC_ERR_ARG_WRONG, "-task sweep writes its results to a file: give -output FILE.h5 (not 'none')");
   PetscCall(SweepReadOptions(comm, &base, &plan, &candidates));
   PetscCall(TaskFarmCreate(comm, plan.ranks_per_case, &farm));
@@ -548,6 +555,7 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
   mine.handout           = farm.handout;
   PetscCall(TaskFarmDestroy(&farm));
   PetscCall(SweepGather(comm, mine, store));
+  PetscCall(SweepNotesEnd(comm, progress.todo));
   PetscCall(SweepReport(comm, plan, mine, progress, t0 - t_setup, t0, farm_time, output, store, &failed));
   g_exit_status = failed ? 2 : 0;
   PetscFunctionReturn(0);

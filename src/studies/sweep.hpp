@@ -32,9 +32,8 @@
 namespace beamimpact {
 
 // The columns of a sweep row: case_index, one per axis (named after its option), status
-// (SweepStatus), every ImpactResultColumns() quantity, rigid_acor (Eq. 11 with f given by -rigid_loss_fraction, M = mu L, I_cm = M L^2/12,
-// b_cm = |x - L/2|) and rigid_forced_loss_fraction (the f for which Eq. 11
-// gives acor_corrected).
+// (SweepStatus), then the results table (run/results_table.hpp; its rigid_acor with f given by
+// -rigid_loss_fraction).
 std::vector<SweepColumn> SweepColumns(const SweepPlan &plan);
 
 // Runs case `index` on comm (all its ranks) and returns its row on every rank; a case that

@@ -1,7 +1,9 @@
 // The store of a sweep's rows: journals, atomic rewrites, signature and resume. See sweep_store.hpp.
 #include "studies/sweep_store.hpp"
 
+#include "io/options_files.hpp"
 #include "io/results_h5.hpp"
+#include "io/text.hpp"
 #include "run/impact.hpp"
 
 #include <hdf5.h>
@@ -13,6 +15,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <iterator>
 #include <cerrno>
 #include <cmath>
 #include <cstddef>
@@ -107,10 +111,36 @@ std::map<std::string, std::string> ParseOptions(const std::string &all)
   return m;
 }
 
+// An attribute that holds the path an option names (ball_cor_table, beam_profile, ...).
+bool IsFileOption(const std::string &key)
+{
+  const std::vector<std::string> &files = OptionsFilePathOptions();
+  return std::find(files.begin(), files.end(), "-" + key) != files.end();
+}
+
 // Attributes that change while a sweep runs, or with options that do not matter.
 bool AttributeIsVolatile(const std::string &key)
 {
-  return key == "options" || key == "sweep_cases_done" || key == "sweep_complete" || key == "date" || key == "host" || key == "ranks" || key == "git";
+  // The paths of the input files are not the signature, their contents are (input_sha256_*).
+  return key == "options" || key == "sweep_cases_done" || key == "sweep_complete" || key == "date" || key == "host" || key == "ranks" || key == "git" || key == "input_files" ||
+         key == "beam_section_file" || key == "sweep_retry_changed" || IsFileOption(key);
+}
+
+// The input file an attribute input_sha256_<...> stands for, from the record's input_files
+// lines ("-option path sha256"): "-option path", or the option alone.
+std::string InputFileOfAttribute(const std::string &key, const std::string &input_files)
+{
+  std::vector<InputFile> files;
+  std::istringstream     lines(input_files);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream w(line);
+    InputFile          f;
+    if (w >> f.option >> f.path) files.push_back(f);
+  }
+  const std::vector<std::string> names = RunInputAttributeNames(files);
+  for (size_t k = 0; k < files.size(); ++k)
+    if (names[k] == key) return files[k].option + " " + files[k].path;
+  return "-" + key.substr(std::strlen("input_sha256_"));
 }
 
 SweepAttributes SignatureMaps(const RunRecord &rec)
@@ -139,10 +169,17 @@ uint64_t SignatureHash(const SweepAttributes &m)
   return h;
 }
 
+std::string RecordString(const RunRecord &rec, const char *key)
+{
+  for (auto &kv : rec.strings)
+    if (kv.first == key) return kv.second;
+  return "";
+}
+
 std::string ShortValue(const std::string &s) { return s.size() > 60 ? s.substr(0, 57) + "..." : s; }
 
 // Human-readable differences between the stored and the current signature.
-std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &now)
+std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &now, const std::string &input_files)
 {
   std::vector<std::string> d;
   char                     buf[512];
@@ -164,6 +201,15 @@ std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &no
     if (AttributeIsVolatile(k)) continue;
     const auto a = file.str.find(k), b = now.str.find(k);
     if (a != file.str.end() && b != now.str.end() && a->second == b->second) continue;
+    if (k.compare(0, std::strlen("input_sha256_"), "input_sha256_") == 0) { // an input file's contents
+      const std::string which = InputFileOfAttribute(k, input_files);
+      if (a == file.str.end() || b == now.str.end())
+        std::snprintf(buf, sizeof(buf), "input file %s: %s", which.c_str(), a == file.str.end() ? "read now, not by the sweep that wrote the file" : "read by the sweep that wrote the file, not now");
+      else
+        std::snprintf(buf, sizeof(buf), "input file %s: its contents changed since the file was written (SHA-256 %.12s... in the file, %.12s... now)", which.c_str(), a->second.c_str(), b->second.c_str());
+      d.push_back(buf);
+      continue;
+    }
     if (k == "sweep_checked_options" && a != file.str.end() && b != now.str.end()) {
       const auto            fo = ParseOptions(a->second), no = ParseOptions(b->second);
       std::set<std::string> names;
@@ -184,6 +230,55 @@ std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &no
   for (size_t i = 0; i < d.size() && i < 12; ++i) out += "\n  " + d[i];
   if (d.size() > 12) out += "\n  ... (" + std::to_string(d.size() - 12) + " more)";
   return out;
+}
+
+// The options a failed row's reason names ("-impact_max_contacts", "-impact_max_time", ...), as
+// names without the dash: what -sweep_retry_failed may change.
+std::set<std::string> OptionsNamed(const std::map<PetscInt, std::string> &reasons)
+{
+  std::set<std::string> names;
+  for (auto &kv : reasons) {
+    const std::string &r = kv.second;
+    for (size_t i = 0; (i = r.find('-', i)) != std::string::npos; ++i) {
+      if (i > 0 && (std::isalnum((unsigned char)r[i - 1]) || r[i - 1] == '-')) continue;
+      size_t j = i + 1;
+      while (j < r.size() && (std::isalnum((unsigned char)r[j]) || r[j] == '_')) ++j;
+      if (j > i + 2 && std::isalpha((unsigned char)r[i + 1])) names.insert(r.substr(i + 1, j - i - 1));
+    }
+  }
+  return names;
+}
+
+// Whether an attribute belongs to one of the options named: the attribute of the option's own
+// name or one derived from it (impact_max_time_default).
+bool AttributeOfOptions(const std::string &key, const std::set<std::string> &options)
+{
+  for (const std::string &o : options)
+    if (key == o || key.compare(0, o.size() + 1, o + "_") == 0) return true;
+  return false;
+}
+
+// The signatures differ only in the options named (and their attributes): "" when so, else
+// what else differs (SignatureDiff's lines).
+std::string DiffBeyond(const SweepAttributes &file, const SweepAttributes &now, const std::set<std::string> &options, std::string *changed)
+{
+  SweepAttributes a = file, b = now;
+  for (auto *m : {&a, &b}) {
+    for (auto it = m->num.begin(); it != m->num.end();) it = AttributeOfOptions(it->first, options) ? m->num.erase(it) : std::next(it);
+    for (auto it = m->str.begin(); it != m->str.end();) it = AttributeOfOptions(it->first, options) ? m->str.erase(it) : std::next(it);
+  }
+  auto fo = ParseOptions(a.str["sweep_checked_options"]), no = ParseOptions(b.str["sweep_checked_options"]);
+  for (const std::string &o : options) {
+    if (fo[o] != no[o]) *changed += (changed->empty() ? "" : "; ") + ("-" + o + " " + (fo[o].empty() ? "(default)" : fo[o]) + " -> " + (no[o].empty() ? "(default)" : no[o]));
+    fo.erase(o), no.erase(o);
+  }
+  auto join = [](const std::map<std::string, std::string> &m) {
+    std::string t;
+    for (auto &kv : m) t += "-" + kv.first + (kv.second.empty() ? "" : " " + kv.second) + " ";
+    return t;
+  };
+  a.str["sweep_checked_options"] = join(fo), b.str["sweep_checked_options"] = join(no);
+  return SignatureHash(a) == SignatureHash(b) ? std::string() : SignatureDiff(a, b, "");
 }
 
 // ---------------------------------------------------------------------------
@@ -401,6 +496,8 @@ std::string SweepCheckedOptions(const std::string &all)
   std::string out;
   for (auto &kv : ParseOptions(all)) {
     if (OptionIsVolatile(kv.first)) continue;
+    const std::vector<std::string> &files = OptionsFilePathOptions(); // their contents are checked (input_sha256_*), not their paths
+    if (std::find(files.begin(), files.end(), "-" + kv.first) != files.end()) continue;
     out += "-" + kv.first + (kv.second.empty() ? "" : " " + kv.second) + " ";
   }
   return out;
@@ -438,6 +535,9 @@ static bool WriteStrings(hid_t g, const char *name, const std::vector<std::strin
   hid_t s  = H5Screate_simple(1, &n, NULL);
   hid_t d  = H5Dcreate2(g, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   bool  ok = d >= 0 && (n == 0 || H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
+  RunRecord unit; // every /results dataset has a unit
+  unit.add("unit", "text (the error of a failed point; empty where status = 0)");
+  ok = ok && H5WriteAttributes(d, unit) == 0;
   if (d >= 0) H5Dclose(d);
   H5Sclose(s);
   H5Tclose(t);
@@ -500,52 +600,68 @@ static PetscErrorCode WriteTextColumn(hid_t g, const std::string &output, const 
   PetscFunctionReturn(0);
 }
 
+// The file's contents: root attributes, /results and /sweep.
+static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
+{
+  PetscFunctionBeginUser;
+  RunRecord rec = S.record;
+  rec.add("sweep_cases_done", S.rows.size());
+  rec.add("sweep_complete", (PetscInt)S.rows.size() == S.ncases ? 1 : 0);
+  if (!S.retry_changed.empty()) rec.add("sweep_retry_changed", S.retry_changed); // -sweep_retry_failed's changes, one line per retry
+  PetscCall(H5WriteAttributes(file, rec));
+  hid_t       g    = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const auto &cols = S.columns;
+  for (size_t c = 0; c < cols.size(); ++c) {
+    std::vector<double> v;
+    v.reserve(S.rows.size());
+    for (auto &kv : S.rows) v.push_back(kv.second[c]);
+    if (!cols[c].labels.empty()) PetscCall(WriteTextColumn(g, S.output, cols[c].name.c_str(), v, cols[c].labels));
+    else PetscCall((cols[c].integer ? H5WriteCounts1D : H5WriteDataset1D)(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
+  }
+  std::vector<std::string> reasons;
+  reasons.reserve(S.rows.size());
+  for (auto &kv : S.rows) {
+    const auto it = S.reasons.find(kv.first);
+    reasons.push_back(it == S.reasons.end() ? std::string() : it->second);
+  }
+  PetscCheck(WriteStrings(g, "reason", reasons), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write /results/reason");
+  H5Gclose(g);
+  // The plan: every axis's value for every case (also those not yet done).
+  hid_t gp = H5Gcreate2(file, "sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  for (size_t k = 0; k < S.plan.axes.size(); ++k) {
+    std::vector<double> v(S.ncases);
+    for (PetscInt i = 0; i < S.ncases; ++i) v[i] = S.plan.CaseValues(i)[k];
+    const SweepAxis &a = S.plan.axes[k];
+    if (a.Text()) PetscCall(WriteTextColumn(gp, S.output, a.name.c_str(), v, a.labels));
+    else PetscCall(H5WriteDataset1D(gp, a.name.c_str(), v, a.unit.c_str()));
+  }
+  H5Gclose(gp);
+  PetscFunctionReturn(0);
+}
+
+// F rewritten whole: built in memory, written to F.tmp (every write checked: a full disk shows
+// there), fsync'ed and renamed onto F. On a failure F.tmp is removed and F stays as it was.
 static PetscErrorCode StoreWrite(SweepStore &S)
 {
   const std::string tmp = S.output + ".tmp";
   const double      t0  = MPI_Wtime();
+  std::string       error;
 
   PetscFunctionBeginUser;
   ImpactStageScope stage(ImpactStage::Output); // -log_view: the rewrites are output
   {
-    H5Quiet quiet;
-    hid_t   file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (directory missing or not writable?)", S.output.c_str(), tmp.c_str());
-    RunRecord rec = S.record;
-    rec.add("sweep_cases_done", S.rows.size());
-    rec.add("sweep_complete", (PetscInt)S.rows.size() == S.ncases ? 1 : 0);
-    PetscCall(H5WriteAttributes(file, rec));
-    hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    const auto &cols = S.columns;
-    for (size_t c = 0; c < cols.size(); ++c) {
-      std::vector<double> v;
-      v.reserve(S.rows.size());
-      for (auto &kv : S.rows) v.push_back(kv.second[c]);
-      if (!cols[c].labels.empty()) PetscCall(WriteTextColumn(g, S.output, cols[c].name.c_str(), v, cols[c].labels));
-      else PetscCall((cols[c].integer ? H5WriteCounts1D : H5WriteDataset1D)(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
-    }
-    std::vector<std::string> reasons;
-    reasons.reserve(S.rows.size());
-    for (auto &kv : S.rows) {
-      const auto it = S.reasons.find(kv.first);
-      reasons.push_back(it == S.reasons.end() ? std::string() : it->second);
-    }
-    PetscCheck(WriteStrings(g, "reason", reasons), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write /results/reason to %s", S.output.c_str(), tmp.c_str());
-    H5Gclose(g);
-    // The plan: every axis's value for every case (also those not yet done).
-    hid_t gp = H5Gcreate2(file, "sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    for (size_t k = 0; k < S.plan.axes.size(); ++k) {
-      std::vector<double> v(S.ncases);
-      for (PetscInt i = 0; i < S.ncases; ++i) v[i] = S.plan.CaseValues(i)[k];
-      const SweepAxis &a = S.plan.axes[k];
-      if (a.Text()) PetscCall(WriteTextColumn(gp, S.output, a.name.c_str(), v, a.labels));
-      else PetscCall(H5WriteDataset1D(gp, a.name.c_str(), v, a.unit.c_str()));
-    }
-    H5Gclose(gp);
-    PetscCheck(H5Fclose(file) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing %s failed (disk full?)", S.output.c_str(), tmp.c_str());
+    H5Quiet     quiet;
+    const hid_t file = (hid_t)H5MemoryFileCreate(); // written to disk by us: every write checked
+    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "-output %s: HDF5 cannot create a file in memory", S.output.c_str());
+    const PetscErrorCode ierr = StoreWriteContents(S, file);
+    if (ierr) error = LastErrorMessage(ierr);
+    const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // F.tmp, fsync'ed
+    if (error.empty()) error = saved;
   }
-  PetscCheck(FsyncPath(tmp, false), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: fsync of %s failed (%s)", S.output.c_str(), tmp.c_str(), std::strerror(errno));
-  PetscCheck(std::rename(tmp.c_str(), S.output.c_str()) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename %s onto it (%s)", S.output.c_str(), tmp.c_str(), std::strerror(errno));
+  if (error.empty() && std::rename(tmp.c_str(), S.output.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
+  if (!error.empty()) ::unlink(tmp.c_str());
+  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing %s failed (disk full? %s); %s is as it was, and the journals in %s keep the rows for a resume", S.output.c_str(), tmp.c_str(),
+             error.c_str(), S.output.c_str(), S.parts.c_str());
   FsyncPath(DirName(S.output), true);
   S.rows_written = (PetscInt)S.rows.size();
   S.last_write   = MPI_Wtime();
@@ -577,6 +693,32 @@ static bool ReadTextColumn(hid_t g, const char *name, const std::vector<std::str
   return true;
 }
 
+// -sweep_retry_failed with a signature that differs from the file's: allowed when only options
+// the failed rows name as their cause changed (e.g. -impact_max_contacts after "more than
+// -impact_max_contacts ..."); then the file's rows load, its journals too, and the change is
+// recorded (sweep_retry_changed). Anything else is refused as for any resume.
+static PetscErrorCode StoreRetryCheck(SweepStore &S, const SweepAttributes &stored)
+{
+  std::map<PetscInt, std::string> failed;
+  std::string                     changed;
+
+  PetscFunctionBeginUser;
+  for (auto &kv : S.rows)
+    if (S.status_column >= 0 && kv.second[S.status_column] != 0 && S.reasons.count(kv.first)) failed[kv.first] = S.reasons[kv.first];
+  const std::set<std::string> named = OptionsNamed(failed);
+  const std::string           rest  = DiffBeyond(stored, S.signature, named, &changed);
+  if (!rest.empty() || changed.empty()) {
+    std::string allowed;
+    for (const std::string &o : named) allowed += (allowed.empty() ? "-" : ", -") + o;
+    PetscCall(WrongParameters(S, "the file",
+                              SignatureDiff(stored, S.signature, RecordString(S.record, "input_files")) + "\n  (-sweep_retry_failed may change only the options its failed rows name as their cause" +
+                                (allowed.empty() ? std::string(": they name none)") : ": " + allowed + ")")));
+  }
+  S.retry_signature_hash = SignatureHash(stored);
+  S.retry_changed += (S.retry_changed.empty() ? "" : "\n") + changed;
+  PetscFunctionReturn(0);
+}
+
 // Loads the rows of an existing output file after checking its parameters.
 static PetscErrorCode StoreLoadFile(SweepStore &S)
 {
@@ -601,9 +743,11 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
     if (!AttributeIsVolatile(kv.first)) stored.num[kv.first] = kv.second;
   for (auto &kv : a.str)
     if (!AttributeIsVolatile(kv.first)) stored.str[kv.first] = kv.second;
-  if (SignatureHash(stored) != S.signature_hash) {
+  S.retry_changed = a.str["sweep_retry_changed"]; // earlier retries, kept
+  const bool differs = SignatureHash(stored) != S.signature_hash;
+  if (differs && !S.plan.retry_failed) {
     H5Fclose(file);
-    PetscCall(WrongParameters(S, "the file", SignatureDiff(stored, S.signature)));
+    PetscCall(WrongParameters(S, "the file", SignatureDiff(stored, S.signature, RecordString(S.record, "input_files"))));
   }
   hid_t g = H5Gopen2(file, "results", H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s has no /results group; add -sweep_restart to overwrite it", S.output.c_str());
@@ -632,6 +776,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
     S.rows.emplace((PetscInt)idx, std::move(row));
     if (!reasons[r].empty()) S.reasons[(PetscInt)idx] = reasons[r];
   }
+  if (differs) PetscCall(StoreRetryCheck(S, stored));
   PetscFunctionReturn(0);
 }
 
@@ -713,7 +858,13 @@ static PetscErrorCode StoreOpenLocked(SweepStore &S, int *run)
   for (auto &n : names) {
     SweepJournalReader j;
     j.path = S.parts + "/" + n;
-    if (j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr) == SweepJournalReader::WrongParameters)
+    SweepJournalReader::Status st = j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr);
+    if (st == SweepJournalReader::WrongParameters && S.retry_signature_hash) { // written before this retry's change
+      SweepJournalReader former;
+      former.path = j.path;
+      st          = former.ReadNew(S.retry_signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr);
+    }
+    if (st == SweepJournalReader::WrongParameters)
       PetscCall(WrongParameters(S, "the journal " + j.path, "\n  (its parameter signature differs from the current one)"));
   }
   // -sweep_retry_failed: the failed cases are computed again (their rows are dropped).

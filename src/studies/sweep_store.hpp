@@ -100,6 +100,11 @@ struct SweepStore {
   int                                     status_column = -1; // index of "status" in columns
   std::vector<SweepJournalReader>         live; // this run's journals
   int                                     lock_fd = -1;
+  // -sweep_retry_failed with options changed that the failed rows name as their cause
+  // (-impact_max_contacts, -impact_max_time, ...): the file's former signature (its journals
+  // still load) and what changed, kept in the file as the attribute sweep_retry_changed.
+  uint64_t                                retry_signature_hash = 0;
+  std::string                             retry_changed;
   PetscInt                                rows_written = -1;
   double                                  last_write = 0, write_cost = 0; // s (MPI_Wtime), s
   int                                     writes      = 0;                // live rewrites (SweepStoreRefresh) so far

@@ -1,0 +1,109 @@
+// The -flight_* and -air_* options. See flight_options.hpp.
+#include "io/flight_options.hpp"
+
+#include <cmath>
+
+namespace beamimpact {
+
+const OptionModule &FlightOptionTable()
+{
+  static const OptionModule m = {
+    "flight",
+    "Flight of the batted ball, -task flight (A. M. Nathan's trajectory model; docs/flight.md)",
+    {
+      OptionReal("-flight_speed", "m/s", "Launch speed of the ball", "45", Positive()),
+      OptionReal("-flight_angle", "deg", "Launch angle above the horizontal", "30", Between(-90, 90)),
+      OptionReal("-flight_direction", "deg", "Horizontal launch direction, from the y axis (down the field) toward +x (to the right)", "0", Between(-180, 180)),
+      OptionReal("-flight_spin", "rad/s", "Backspin about the horizontal axis across the launch direction (< 0: topspin; 2500 rpm = 261.8 rad/s)", "250"),
+      OptionReal("-flight_sidespin", "rad/s", "Sidespin about the axis across the launch in its vertical plane (> 0 curves the ball toward -x, the calculator's sign)", "0"),
+      OptionReal("-flight_height", "m", "Launch height above the ground (the ground is z = 0)", "1", NonNegative()),
+      OptionReal("-flight_ball_mass", "kg", "Mass of the ball (default: the calculator's baseball, 5.125 oz)", "0.145291", Positive()),
+      OptionReal("-flight_ball_radius", "m", "Radius of the ball (default: circumference 9.125 in)", "0.0368881", Positive()),
+      OptionReal("-flight_cd0", "1", "Drag coefficient without spin, C_D = cd0 + cd_spin (spin / 1000 rpm)", "0.3008", NonNegative()),
+      OptionReal("-flight_cd_spin", "1 per 1000 rpm", "Increase of C_D with the spin, in the calculator's unit", "0.0292"),
+      OptionReal("-flight_cl0", "1", "Lift C_L = cl2 S / (cl0 + cl1 S), S = R spin / speed", "0.583", Positive()),
+      OptionReal("-flight_cl1", "1", "Lift coefficient cl1 (see -flight_cl0)", "2.333", NonNegative()),
+      OptionReal("-flight_cl2", "1", "Lift coefficient cl2 (see -flight_cl0)", "1.120", NonNegative()),
+      OptionReal("-flight_spin_decay_time", "s", "Decay time of the spin's effect at 100 mph, shorter in proportion to the speed (0: no decay)", "30", NonNegative()),
+      OptionChoice("-flight_constants",
+                   "K = 1/2 rho A / m as the calculator evaluates it (calculator: its rounded constants 0.07182 and 0.06261, K 0.28% above) or exactly (exact)",
+                   {"calculator", "exact"}, "calculator"),
+      OptionReal("-flight_gravity", "m/s^2", "Acceleration of gravity (the calculator: 32.174 ft/s^2 = 9.8066352)", "9.80665", NonNegative()),
+      OptionReal("-flight_series_dt", "s", "Interval of the trajectory's samples in /series (0: only launch and landing)", "0.01", NonNegative()),
+    },
+  };
+  return m;
+}
+
+const OptionModule &AirOptionTable()
+{
+  static const OptionModule m = {
+    "air",
+    "Air of the flight (its density as Nathan's trajectory calculator computes it)",
+    {
+      OptionReal("-air_temperature", "degC", "Air temperature", "20", Between(-60, 60)),
+      OptionReal("-air_pressure", "Pa", "Barometric pressure reduced to sea level, as weather reports give it (29.92 inHg = 101321 Pa)", "101325", Positive()),
+      OptionReal("-air_humidity", "%", "Relative humidity", "50", Between(0, 100)),
+      OptionReal("-air_elevation", "m", "Elevation of the field above sea level (the pressure there is the reduced one times exp(-1.217e-4 h))", "0", Between(-500, 9000)),
+      OptionReal("-air_density", "kg/m^3", "Air density: given, it replaces the one computed from the four options above, which -help shows (0: vacuum)", "", NonNegative()),
+    },
+  };
+  return m;
+}
+
+PetscErrorCode AirParamsFromOptions(MPI_Comm comm, AirParams *air)
+{
+  const OptionModule &t = AirOptionTable();
+  PetscBool           set_density;
+  PetscReal           density;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, t.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-air_temperature", &air->temperature, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-air_pressure", &air->pressure, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-air_humidity", &air->humidity, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-air_elevation", &air->elevation, NULL));
+  density = AirDensity(*air); // -help shows the computed value as the default
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-air_density", &density, &set_density));
+  PetscOptionsEnd();
+  if (set_density) air->density = density;
+  else
+    PetscCheck(std::isfinite(density) && density > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-air_temperature %g, -air_pressure %g, -air_humidity %g and -air_elevation %g give an air density of %g kg/m^3: it must be > 0 (is the pressure far below the vapour's?)",
+               (double)air->temperature, (double)air->pressure, (double)air->humidity, (double)air->elevation, (double)density);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FlightParamsFromOptions(MPI_Comm comm, FlightParams *p, FlightSolveParams *s)
+{
+  const OptionModule &t = FlightOptionTable();
+  PetscInt            constants = p->aero.constants == FlightConstants::Calculator ? 0 : 1;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, t.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_speed", &p->launch.speed, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_angle", &p->launch.angle, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_direction", &p->launch.direction, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_spin", &p->launch.backspin, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_sidespin", &p->launch.sidespin, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_height", &p->launch.height, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_ball_mass", &p->ball.mass, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_ball_radius", &p->ball.radius, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_cd0", &p->aero.cd0, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_cd_spin", &p->aero.cd_spin, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_cl0", &p->aero.cl0, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_cl1", &p->aero.cl1, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_cl2", &p->aero.cl2, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_spin_decay_time", &p->aero.spin_decay_time, NULL));
+  PetscCall(OptionsReadChoice(PetscOptionsObject, t, "-flight_constants", &constants, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_gravity", &p->gravity, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-flight_series_dt", &s->series_dt, NULL));
+  PetscOptionsEnd();
+  p->aero.constants = constants == 0 ? FlightConstants::Calculator : FlightConstants::Exact;
+  PetscCheck(p->launch.height > 0 || p->launch.angle > 0, comm, PETSC_ERR_ARG_INCOMP,
+             "-flight_height 0 with -flight_angle %g: the ball would start on the ground going down; give a launch angle > 0 or a height > 0", (double)p->launch.angle);
+  PetscCall(AirParamsFromOptions(comm, &p->air));
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

@@ -1,0 +1,237 @@
+// The results table. See results_table.hpp; docs/model.md section 9 lists it for readers.
+#include "run/results_table.hpp"
+
+#include "model/rigid.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace beamimpact {
+
+bool ResultAlways(const Scenario &) { return true; }
+
+bool ResultNoHeldDof(const Scenario &sc)
+{
+  const BeamParams &b = sc.beam;
+  return b.left == Support::Free && b.right == Support::Free && !b.has_clamp && !b.has_pivot;
+}
+
+bool ResultMomentumInvariant(const Scenario &sc) { return ResultNoHeldDof(sc) && !sc.beam.grip.on && sc.beam.damping_mass == 0; }
+
+bool ResultFreeBeamAtRest(const Scenario &sc) { return ResultNoHeldDof(sc) && !sc.beam.grip.on && !sc.swing.Swings(); }
+
+bool ResultFreePivot(const Scenario &sc) { return sc.beam.has_pivot && PivotHeldText(sc).empty(); }
+
+bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
+
+bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
+
+std::string PivotHeldText(const Scenario &sc)
+{
+  const BeamParams &b = sc.beam;
+  std::string       held;
+  auto add = [&](const std::string &what) { held += (held.empty() ? "" : ", ") + what; };
+  if (!b.has_pivot) return "";
+  if (b.left != Support::Free) add(std::string("-beam_left ") + SupportName(b.left));
+  if (b.right != Support::Free) add(std::string("-beam_right ") + SupportName(b.right));
+  if (b.has_clamp) add("-beam_clamp");
+  if (b.grip.on) add("-grip");
+  return held;
+}
+
+double ResultColumn::Get(const ImpactResult &r) const
+{
+  if (real) return r.*real;
+  if (count) return (double)(r.*count);
+  return (double)(r.*flag);
+}
+
+void ResultColumn::Set(ImpactResult *r, double v) const
+{
+  if (real) r->*real = v;
+  else if (count) r->*count = (PetscInt)v;
+  else r->*flag = v != 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+namespace {
+
+using Compute = double (*)(const OutcomeFacts &);
+
+ResultColumn Real(const char *name, const char *unit, PetscReal ImpactResult::*field, ResultApplies applies, const char *applies_text, Compute compute, const char *description)
+{
+  ResultColumn c{name, unit, description, applies, applies_text};
+  c.compute = compute;
+  c.real    = field;
+  return c;
+}
+
+ResultColumn Count(const char *name, PetscInt ImpactResult::*field, Compute compute, const char *description)
+{
+  ResultColumn c{name, "1", description, ResultAlways, "always"};
+  c.integer = true;
+  c.compute = compute;
+  c.count   = field;
+  return c;
+}
+
+ResultColumn Flag(const char *name, PetscBool ImpactResult::*field, Compute compute, const char *description)
+{
+  ResultColumn c{name, "1", description, ResultAlways, "always"};
+  c.integer = true;
+  c.compute = compute;
+  c.flag    = field;
+  return c;
+}
+
+const char *const kAlways = "always";
+const char *const kNoHeld = "a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
+// A ball at rest (-ball_speed 0, struck by a swinging bat) has no ACOR and no incident energy E_in.
+bool              BallMoves(const Scenario &sc) { return sc.ball.speed > 0; }
+bool              BallMovesNoHeld(const Scenario &sc) { return BallMoves(sc) && ResultNoHeldDof(sc); }
+const char *const kBallMoves       = "a moving ball (-ball_speed > 0; a ball at rest has no ACOR and no E_in)";
+const char *const kBallMovesNoHeld = "a moving ball (-ball_speed > 0) and a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
+// The momenta's reference: the ball's, or a ball at rest's swinging bat's.
+PetscReal MomentumScale(const OutcomeFacts &f) { return f.sc->ball.speed > 0 ? f.sc->ball.mass * f.sc->ball.speed : std::abs(f.start.momentum); }
+
+// The ball's quantities that depend on its law: an elastic law keeps all the work done on it,
+// so the paper corrects its ACOR (and the ball's loss) by -ball_loss_factor.
+
+PetscReal Acor(const OutcomeFacts &f) { return -f.end.ball_v / f.sc->ball.speed; }
+PetscReal AcorCorrected(const OutcomeFacts &f) { return ContactElastic(f.sc->ball) ? Acor(f) * f.sc->ball.loss_factor : Acor(f); }
+PetscReal BallDissipated(const OutcomeFacts &f) { return f.end.ball_work - f.end.ball_stored; }
+PetscReal CollisionEfficiency(const OutcomeFacts &f) { return SwingCollisionEfficiency(-f.end.ball_v, f.sc->ball.speed, f.V_x); }
+PivotRig  RigOf(const OutcomeFacts &f) { return PivotRigOf(BeamRigidBodyOf(f.sc->beam), f.sc->beam.pivot_x, f.sc->ball.mass, f.sc->impact.x); }
+// Eq. (11) with the beam's own mass, centre of mass and inertia (for the paper's uniform beam
+// M = mu L, I_cm = M L^2/12 about its centre), struck at x.
+PetscReal RigidMassAt(const OutcomeFacts &f)
+{
+  const BeamRigidBody body = BeamRigidBodyOf(f.sc->beam);
+  return RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(f.sc->impact.x - body.x_cm));
+}
+
+using R = ImpactResult;
+using F = const OutcomeFacts &;
+
+// The impact, the energies, the bat and the grip.
+std::vector<ResultColumn> OutcomeColumns()
+{
+  return {
+    Real("x", "m", &R::x, ResultAlways, kAlways, [](F f) -> double { return f.sc->impact.x; }, "impact point x_imp"),
+    Real("acor", "1", &R::acor, BallMoves, kBallMoves, [](F f) -> double { return Acor(f); }, "apparent coefficient of restitution -v_b,final / v_i"),
+    Real("acor_corrected", "1", &R::acor_corrected, BallMoves, kBallMoves, [](F f) -> double { return AcorCorrected(f); },
+         "linear law: acor x -ball_loss_factor; otherwise acor"),
+    Real("contact_time", "s", &R::contact_time, ResultAlways, kAlways, [](F f) -> double { return f.contact->contact_time; }, "duration of the first contact"),
+    Real("contact_time_total", "s", &R::contact_time_total, ResultAlways, kAlways, [](F f) -> double { return f.contact->contact_time_total; }, "contact time summed over all contacts"),
+    Real("peak_force", "N", &R::peak_force, ResultAlways, kAlways, [](F f) -> double { return f.contact->peak_force; }, "largest force at a maximum-compression event"),
+    Real("max_compression", "m", &R::max_compression, ResultAlways, kAlways, [](F f) -> double { return f.contact->max_compression; },
+         "largest compression at a maximum-compression event"),
+    Count("contacts", &R::contacts, [](F f) -> double { return (double)f.contact->contacts; }, "separate contacts (1: a single impact)"),
+    Flag("ended_in_contact", &R::ended_in_contact, [](F f) -> double { return f.contact->touching ? 1 : 0; }, "1 if the run reached -impact_max_time while touching"),
+    Flag("compression_beyond_radius", &R::compression_beyond_radius,
+         [](F f) -> double { return f.sc->ball.radius > 0 && f.contact->max_compression > f.sc->ball.radius ? 1 : 0; },
+         "1 if max_compression exceeds -ball_radius (given): physically absurd"),
+    Real("ball_final_velocity", "m/s", &R::ball_final_velocity, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_v; }, "the ball's velocity at the end (negative: rebound)"),
+    Real("final_time", "s", &R::final_time, ResultAlways, kAlways, [](F f) -> double { return f.final_time; }, "simulated time at the end"),
+    Real("energy_error", "1", &R::energy_error, ResultAlways, kAlways, [](F f) -> double { return (f.energy_end - f.energy_in) / f.energy_in; },
+         "(E_end - E_0) / E_0 of the conserved total (ball work and dissipated energy included)"),
+    Real("linear_momentum_error", "1", &R::linear_momentum_error, ResultMomentumInvariant, "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
+         [](F f) -> double { return (f.end.momentum - f.start.momentum) / MomentumScale(f); }, "change of the total linear momentum / (m_b v_i) (a ball at rest: / the bat's)"),
+    Real("angular_momentum_error", "1", &R::angular_momentum_error, ResultMomentumInvariant, "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
+         [](F f) -> double { return (f.end.angular_momentum - f.start.angular_momentum) / (MomentumScale(f) * f.sc->beam.length); },
+         "change of the angular momentum about x = 0 / (m_b v_i L) (a ball at rest: the bat's momentum for m_b v_i)"),
+    Real("beam_kinetic_end", "J", &R::beam_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_kinetic; }, "the beam's kinetic energy at the end"),
+    Real("beam_strain_end", "J", &R::beam_strain_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_strain; }, "the beam's strain energy at the end"),
+    Real("ball_kinetic_end", "J", &R::ball_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_kinetic; }, "the ball's kinetic energy at the end (its rebound)"),
+    Real("ball_dissipated_end", "J", &R::ball_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return BallDissipated(f); },
+         "energy dissipated in the ball (0 for the linear law)"),
+    Real("ball_loss_fraction", "1", &R::ball_loss_fraction, BallMoves, kBallMoves,
+         [](F f) -> double {
+           const BallParams &b = f.sc->ball;
+           return (ContactElastic(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic : BallDissipated(f)) / f.E_in;
+         },
+         "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (linear)"),
+    Real("translation_fraction", "1", &R::translation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_translation / f.E_in; },
+         "the beam's rigid translation P^2/2M at the end / E_in"),
+    Real("rotation_fraction", "1", &R::rotation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_rotation / f.E_in; },
+         "the beam's rigid rotation L_cm^2/2I_cm about its centre of mass at the end / E_in"),
+    Real("vibration_fraction", "1", &R::vibration_fraction, BallMovesNoHeld, kBallMovesNoHeld,
+         [](F f) -> double { return (f.end.beam_kinetic + f.end.beam_strain - f.E_translation - f.E_rotation) / f.E_in; }, "the rest of the beam's energy at the end / E_in"),
+    Real("bbs", "m/s", &R::bbs, ResultAlways, kAlways, [](F f) -> double { return -f.end.ball_v; }, "batted-ball speed, away from the bat (lab frame; a bat at rest: acor v_i)"),
+    Real("collision_efficiency", "1", &R::collision_efficiency, ResultAlways, kAlways, [](F f) -> double { return CollisionEfficiency(f); },
+         "q = (bbs - V(x)) / (v_ball + V(x)), the ACOR in the bat's frame (a bat at rest: acor)"),
+    Real("bat_speed_end", "m/s", &R::bat_speed_end, ResultNoHeldDof, kNoHeld, [](F f) -> double { return -f.end.beam_momentum / f.beam_mass; },
+         "the bat's centre-of-mass speed toward the ball at the end"),
+    Real("bat_angular_velocity_end", "rad/s", &R::bat_angular_velocity_end, ResultNoHeldDof, kNoHeld,
+         [](F f) -> double { return f.inertia_cm > 0 ? -f.moment_cm / f.inertia_cm : 0; }, "the bat's angular velocity about its centre of mass at the end"),
+    Real("recoil_factor", "1", &R::recoil_factor, ResultFreePivot, "with -beam_pivot and no other support or grip (a rig free to turn about its pivot)",
+         [](F f) -> double { return RigOf(f).recoil_factor; }, "r = m_b (x - x_p)^2 / I_p of the rigid pivoted rig"),
+    Real("bbcor", "1", &R::bbcor, ResultFreePivot, "with -beam_pivot and no other support or grip (a rig free to turn about its pivot)",
+         [](F f) -> double { return PivotBBCOR(RigOf(f), CollisionEfficiency(f)); }, "bat-ball COR e_A (1 + r) + r of the pivoted rig"),
+    Real("grip_force_peak", "N", &R::grip_force_peak, ResultGripped, "with -grip", [](F f) -> double { return f.peaks->grip_force; },
+         "largest |force of the bat on the hands| over the steps"),
+    Real("grip_force_peak_time", "s", &R::grip_force_peak_time, ResultGripped, "with -grip", [](F f) -> double { return f.peaks->grip_force_time; }, "when"),
+    Real("grip_stored_end", "J", &R::grip_stored_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.grip_stored; }, "the grip's stored energy at the end"),
+    Real("hand_work_end", "J", &R::hand_work_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.hand_work; }, "work the hands did on the bat by the end"),
+    Real("segment_kinetic_peak", "J", &R::segment_kinetic_peak, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic; },
+         "peak kinetic energy of the monitored segment"),
+    Real("segment_kinetic_peak_time", "s", &R::segment_kinetic_peak_time, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic_time; }, "when"),
+  };
+}
+
+// What the run cost (the stepper's and the driver's counts), the dissipated energy, Eq. (11).
+std::vector<ResultColumn> CostAndLaterColumns()
+{
+  return {
+    Count("failed_solves", &R::failed_solves, nullptr, "nonlinear solves that failed (the step was retried smaller)"),
+    Count("steps", &R::steps, nullptr, "accepted steps"),
+    Count("rejected_steps", &R::rejected_steps, nullptr, "steps rejected by the error controller"),
+    Count("event_steps", &R::event_steps, nullptr, "extra steps to locate events"),
+    Count("function_evals", &R::function_evals, nullptr, "residual evaluations"),
+    Count("jacobian_evals", &R::jacobian_evals, nullptr, "Jacobian requests"),
+    Count("jacobian_assemblies", &R::jacobian_assemblies, nullptr, "Jacobian re-assemblies"),
+    Count("nonlinear_its", &R::nonlinear_its, nullptr, "Newton iterations"),
+    Count("linear_its", &R::linear_its, nullptr, "Krylov iterations (preonly LU: one per solve)"),
+    Real("wall_time", "s", &R::wall_time, ResultAlways, kAlways, nullptr, "wall-clock time of the time stepping"),
+    Real("dt_nominal", "s", &R::dt_nominal, ResultAlways, kAlways, nullptr, "the fixed step, or the first step of an adaptive run (0 for modal)"),
+    Real("dt_stable", "s", &R::dt_stable, ResultAlways, kAlways, nullptr, "explicit stability limit y*/omega_max (0: not explicit)"),
+    Real("beam_dissipated_end", "J", &R::beam_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_dissipated; },
+         "energy the beam's damping (and a grip's damper) dissipated by the end (0 undamped)"),
+    Real("damping_fraction", "1", &R::damping_fraction, BallMoves, kBallMoves, [](F f) -> double { return f.end.beam_dissipated / f.E_in; }, "beam_dissipated_end / E_in"),
+    Real("rigid_acor", "1", &R::rigid_acor, ResultFreeBeamAtRest, "a free beam at rest: no held dof, no -grip, no swing",
+         [](F f) -> double { return RigidACOR(f.sc->ball.mass, RigidMassAt(f), f.sc->impact.rigid_loss_fraction); },
+         "Eq. (11) with the loss fraction f (a sweep's -rigid_loss_fraction; 0 for -task impact)"),
+    Real("rigid_forced_loss_fraction", "1", &R::rigid_forced_loss_fraction, ResultFreeBeamAtRest, "a free beam at rest: no held dof, no -grip, no swing",
+         [](F f) -> double { return RigidForcedLossFraction(f.sc->ball.mass, RigidMassAt(f), AcorCorrected(f)); }, "the f for which Eq. (11) gives acor_corrected"),
+  };
+}
+
+std::vector<ResultColumn> BuildTable()
+{
+  std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns();
+  t.insert(t.end(), more.begin(), more.end());
+  return t;
+}
+
+} // namespace
+
+const std::vector<ResultColumn> &ImpactResultColumns()
+{
+  static const std::vector<ResultColumn> table = BuildTable();
+  return table;
+}
+
+const ResultColumn *ImpactResultColumn(const std::string &name)
+{
+  for (const ResultColumn &c : ImpactResultColumns())
+    if (name == c.name) return &c;
+  return nullptr;
+}
+
+std::string ImpactResultColumnNames()
+{
+  std::string s;
+  for (const ResultColumn &c : ImpactResultColumns()) s += (s.empty() ? "" : ",") + std::string(c.name);
+  return s;
+}
+
+} // namespace beamimpact

@@ -1,0 +1,85 @@
+// The results table of an impact: every column of /results defined once, with its name, unit,
+// description, when it applies (a predicate of the scenario: the value is NaN in the rows where
+// it does not, never a number a reader could take for one) and how it is computed from the
+// run's measures (run/outcome.cpp applies the table: it is the only writer of ImpactOutcome).
+// Everything that shows a result reads this table: the summary line of -task impact, the
+// /results datasets of an impact file (their units, and the order in the root attribute
+// results_columns that scripts/h5_to_csv.py follows), a sweep's columns.
+//
+// A new column is one row in results_table.cpp and its field in ImpactOutcome (run/impact.hpp);
+// a quantity the measures do not hold yet needs it in the record the driver hands the outcome
+// (run/outcome.hpp), from the events (ContactTally) or the monitors (MonitorPeaks).
+#pragma once
+
+#include "run/impact.hpp"
+#include "run/measures.hpp"
+#include "run/scenario.hpp"
+
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+// What the outcome knows when it computes a column: the scenario, the records of the events
+// and monitors, the measures of the first and last states, and the few numbers derived from
+// them once (the beam's rigid-body part at the end).
+struct OutcomeFacts {
+  const Scenario     *sc      = nullptr;
+  const ContactTally *contact = nullptr;
+  const MonitorPeaks *peaks   = nullptr;
+  StateMeasures       start, end;          // at t = 0 and at the end of the run
+  PetscReal           energy_in  = 0;      // J, the conserved total at t = 0 (StateMeasures::total)
+  PetscReal           energy_end = 0;      // J, the same at the end
+  PetscReal           final_time = 0;      // s
+  PetscReal           V_x        = 0;      // m/s, the swinging bat's speed toward the ball at the impact point (0 at rest)
+  PetscReal           E_in       = 0;      // J, the ball's incident kinetic energy 1/2 m_b v_i^2
+  // The beam's rigid-body part at the end, over the dofs that can move: mass (kg), moment of
+  // inertia about its centre of mass (kg m^2, with a Timoshenko section's rotary inertia),
+  // angular momentum about the centre of mass (kg m^2/s), and the kinetic energies of the rigid
+  // translation P^2/2M and rotation L_cm^2/2I_cm (J).
+  PetscReal beam_mass = 0, inertia_cm = 0, moment_cm = 0, E_translation = 0, E_rotation = 0;
+};
+
+// When a column applies: a predicate of the scenario.
+using ResultApplies = bool (*)(const Scenario &sc);
+
+// The predicates of the table (also for messages and tests).
+bool ResultAlways(const Scenario &sc);
+bool ResultNoHeldDof(const Scenario &sc);          // no end clamped or pinned, no clamped region, no pivot
+bool ResultMomentumInvariant(const Scenario &sc);  // no held dof, no grip, no mass-proportional damping
+bool ResultFreeBeamAtRest(const Scenario &sc);     // no held dof, no grip, no swing (Eq. 11)
+bool ResultFreePivot(const Scenario &sc);          // -beam_pivot and no other support or grip: the rig turns freely
+bool ResultGripped(const Scenario &sc);            // -grip
+bool ResultSegment(const Scenario &sc);            // -monitor_segment
+
+// Why a pivoted rig does not turn freely about its pivot (the supports and grip that also hold
+// it, as options), or "" when it does or has no pivot.
+std::string PivotHeldText(const Scenario &sc);
+
+struct ResultColumn {
+  const char   *name;
+  const char   *unit;        // never empty ("1": dimensionless)
+  const char   *description; // one line: what it is
+  ResultApplies applies;     // false: NaN in this row
+  const char   *applies_text; // the same in words ("always", "with -grip")
+  bool          integer = false; // a count: an integer dataset in an impact file (a count always applies)
+  // How the outcome computes it (nullptr: the stepper's own counts and settings, written by the
+  // driver and the stepper: the cost and integrator columns).
+  double (*compute)(const OutcomeFacts &f) = nullptr;
+  // Where ImpactResult holds it: exactly one of the three.
+  PetscReal ImpactResult::*real  = nullptr;
+  PetscInt ImpactResult::*count  = nullptr;
+  PetscBool ImpactResult::*flag  = nullptr;
+
+  double Get(const ImpactResult &r) const;      // the value as a double
+  void   Set(ImpactResult *r, double v) const;  // (the outcome's writes)
+};
+
+// The table, in the order of the files (a sweep adds its own columns before it).
+const std::vector<ResultColumn> &ImpactResultColumns();
+// The column `name`, or nullptr.
+const ResultColumn *ImpactResultColumn(const std::string &name);
+// The table's names in order, comma-separated (the impact file's root attribute results_columns).
+std::string ImpactResultColumnNames();
+
+} // namespace beamimpact

@@ -1,0 +1,313 @@
+// -task convergence, the output: the HDF5 file and the printed tables. See convergence_output.hpp.
+#include "studies/convergence_output.hpp"
+
+#include "io/results_h5.hpp"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace beamimpact {
+
+namespace {
+
+const PetscReal NaN = std::numeric_limits<PetscReal>::quiet_NaN();
+
+// ---------------------------------------------------------------------------
+// The HDF5 file
+// ---------------------------------------------------------------------------
+
+// /reference: the reference's outcome and its estimated error (attributes).
+PetscErrorCode WriteReference(hid_t file, const ConvergenceReference &ref)
+{
+  RunRecord           r;
+  const ImpactResult &R = ref.result;
+
+  PetscFunctionBeginUser;
+  r.add("method", ref.method);
+  for (const char *name : {"acor", "acor_corrected", "contact_time", "peak_force", "max_compression", "contacts", "final_time", "energy_error"})
+    for (const ResultColumn &c : ImpactResultColumns()) // the outcome as the result table has it
+      if (std::strcmp(c.name, name) == 0) r.add(name, c.Get(R));
+  r.add("acor_error_estimate", ref.acor_error);
+  r.add("contact_time_error_estimate", ref.contact_time_error);
+  r.add("peak_force_error_estimate", ref.peak_force_error);
+  r.add("observed_order", ref.observed_order);
+  r.add("wall_time", ref.wall_time);
+  hid_t g = H5Gcreate2(file, "reference", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCall(H5WriteAttributes(g, r));
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+// One column per quantity of a configuration's runs, one row per level.
+PetscErrorCode WriteConfigRuns(hid_t g, const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs)
+{
+  auto col = [&](const char *name, const char *unit, auto get) -> PetscErrorCode {
+    std::vector<double> v;
+    PetscFunctionBeginUser;
+    for (auto &r : runs) v.push_back((double)get(r));
+    PetscCall(H5WriteDataset1D(g, name, v, unit));
+    PetscFunctionReturn(0);
+  };
+  auto icol = [&](const char *name, const char *unit, auto get) -> PetscErrorCode { // a count: an integer dataset
+    std::vector<long long> v;
+    PetscFunctionBeginUser;
+    for (auto &r : runs) v.push_back((long long)get(r));
+    PetscCall(H5WriteDatasetInt1D(g, name, v, unit));
+    PetscFunctionReturn(0);
+  };
+
+  PetscFunctionBeginUser;
+  PetscCall(icol("level", "1", [](const ConvergenceRun &r) { return (double)r.level; }));
+  PetscCall(col("dt", "s (tol runs: initial step)", [](const ConvergenceRun &r) { return r.dt; }));
+  PetscCall(col("rtol", "1", [](const ConvergenceRun &r) { return r.rtol; }));
+  PetscCall(col("atol", "m or m/s (the state's displacements and velocities)", [](const ConvergenceRun &r) { return r.atol; }));
+  PetscCall(col("mean_step", "s", [](const ConvergenceRun &r) { return r.mean_step; }));
+  PetscCall(col("step", "s (dt, or mean_step for tol runs)", [&](const ConvergenceRun &r) { return r.failed ? NaN : ConvergenceStepOf(cfg, r); }));
+  PetscCall(icol("failed", "1 (1: the level failed)", [](const ConvergenceRun &r) { return r.failed ? 1 : 0; }));
+  PetscCall(col("acor", "1", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.acor; }));
+  PetscCall(col("acor_error", "1 (absolute)", [](const ConvergenceRun &r) { return r.acor_error; }));
+  PetscCall(col("contact_time_error", "1 (relative)", [](const ConvergenceRun &r) { return r.contact_time_error; }));
+  PetscCall(col("peak_force_error", "1 (relative)", [](const ConvergenceRun &r) { return r.peak_force_error; }));
+  PetscCall(col("max_compression_error", "1 (relative)", [](const ConvergenceRun &r) { return r.max_compression_error; }));
+  PetscCall(col("energy_error", "1 (|E_end - E_0| / E_0)", [](const ConvergenceRun &r) { return r.energy_error; }));
+  PetscCall(icol("contacts", "1", [](const ConvergenceRun &r) { return (double)r.result.contacts; }));
+  PetscCall(col("wall_time", "s, minimum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.wall_time; }));
+  PetscCall(col("wall_time_max", "s, maximum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.wall_time_max; }));
+  PetscCall(icol("steps", "1", [](const ConvergenceRun &r) { return (double)r.result.steps; }));
+  PetscCall(icol("rejected_steps", "1", [](const ConvergenceRun &r) { return (double)r.result.rejected_steps; }));
+  PetscCall(icol("event_steps", "1", [](const ConvergenceRun &r) { return (double)r.result.event_steps; }));
+  PetscCall(icol("function_evals", "1", [](const ConvergenceRun &r) { return (double)r.result.function_evals; }));
+  PetscCall(icol("jacobian_evals", "1", [](const ConvergenceRun &r) { return (double)r.result.jacobian_evals; }));
+  PetscCall(icol("jacobian_assemblies", "1", [](const ConvergenceRun &r) { return (double)r.result.jacobian_assemblies; }));
+  PetscCall(icol("nonlinear_its", "1", [](const ConvergenceRun &r) { return (double)r.result.nonlinear_its; }));
+  PetscCall(icol("linear_its", "1 (linear solves; preonly LU: one per solve)", [](const ConvergenceRun &r) { return (double)r.result.linear_its; }));
+  PetscFunctionReturn(0);
+}
+
+// /configs/<name>: the configuration (attributes), its runs and its observed orders.
+PetscErrorCode WriteConfig(hid_t gc, size_t index, const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs, PetscReal error_floor)
+{
+  RunRecord a;
+
+  PetscFunctionBeginUser;
+  hid_t g = H5Gcreate2(gc, cfg.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create group /configs/%s", cfg.name.c_str());
+  a.add("index", index);
+  a.add("file", cfg.file);
+  a.add("description", cfg.description);
+  a.add("method", cfg.method);
+  a.add("options", cfg.options);
+  a.add("sequence", ConvergenceSequenceName(cfg.seq.kind));
+  a.add("sequence_first", cfg.seq.first);
+  a.add("sequence_divisor", cfg.seq.divisor);
+  a.add("sequence_count", cfg.seq.count);
+  a.add("expected_order", cfg.expected_order);
+  a.add("atol_factor", cfg.atol_factor);
+  const ConvergenceOrder oa = ConvergenceOrderOf(cfg, runs, error_floor, &ConvergenceRun::acor_error);
+  const ConvergenceOrder ot = ConvergenceOrderOf(cfg, runs, error_floor, &ConvergenceRun::contact_time_error);
+  const ConvergenceOrder op = ConvergenceOrderOf(cfg, runs, error_floor, &ConvergenceRun::peak_force_error);
+  a.add("order_acor_lsq", oa.lsq);
+  a.add("order_contact_time_lsq", ot.lsq);
+  a.add("order_peak_force_lsq", op.lsq);
+  PetscCall(H5WriteAttributes(g, a));
+  PetscCall(WriteConfigRuns(g, cfg, runs));
+  PetscCall(H5WriteDataset1D(g, "order_acor_pairwise", oa.pairwise, "1 (between level k-1 and k)"));
+  PetscCall(H5WriteDataset1D(g, "order_contact_time_pairwise", ot.pairwise, "1 (between level k-1 and k)"));
+  PetscCall(H5WriteDataset1D(g, "order_peak_force_pairwise", op.pairwise, "1 (between level k-1 and k)"));
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+// /spatial: the reference at each N, the Richardson orders and the continuum limit.
+PetscErrorCode WriteSpatial(hid_t file, const ConvergencePlan &plan, const ConvergenceSpatial &sp)
+{
+  RunRecord a;
+
+  PetscFunctionBeginUser;
+  hid_t                  g = H5Gcreate2(file, "spatial", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<long long> nodes(sp.nodes.begin(), sp.nodes.end());
+  PetscCall(H5WriteDatasetInt1D(g, "nodes", nodes, "1"));
+  PetscCall(H5WriteDataset1D(g, "h", sp.h, "m"));
+  PetscCall(H5WriteDataset1D(g, "acor", sp.acor, "1"));
+  PetscCall(H5WriteDataset1D(g, "contact_time", sp.contact_time, "s"));
+  PetscCall(H5WriteDataset1D(g, "peak_force", sp.peak_force, "N"));
+  PetscCall(H5WriteDataset1D(g, "acor_order", sp.acor_order, "1 (Richardson, from the three levels ending here)"));
+  PetscCall(H5WriteDataset1D(g, "contact_time_order", sp.contact_time_order, "1 (Richardson, from the three levels ending here)"));
+  PetscCall(H5WriteDataset1D(g, "peak_force_order", sp.peak_force_order, "1 (Richardson, from the three levels ending here)"));
+  a.add("acor_limit", sp.acor_limit);
+  a.add("contact_time_limit", sp.contact_time_limit);
+  a.add("peak_force_limit", sp.peak_force_limit);
+  a.add("acor_order_lsq", sp.acor_order_lsq);
+  a.add("contact_time_order_lsq", sp.contact_time_order_lsq);
+  a.add("peak_force_order_lsq", sp.peak_force_order_lsq);
+  a.add("reference", ConvergenceReferenceLabel(plan));
+  PetscCall(H5WriteAttributes(g, a));
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
+std::string OrderText(const ConvergenceOrder &o)
+{
+  std::string s;
+  for (size_t k = 1; k < o.pairwise.size(); ++k) s += std::isfinite(o.pairwise[k]) ? ConvergenceFormat(" %.2f", o.pairwise[k]) : std::string(" -");
+  return s;
+}
+
+} // namespace
+
+PetscErrorCode ConvergenceFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const ConvergencePlan &plan, const ConvergenceReference *ref,
+                                    const std::vector<std::vector<ConvergenceRun>> &all, const RunRecord &summary, const ConvergenceSpatial *sp)
+{
+  PetscFunctionBeginUser;
+  PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode { // whole or not at all
+    PetscFunctionBeginUser;
+    if (ref) PetscCall(WriteReference(file, *ref));
+    if (!plan.configs.empty()) {
+      hid_t gc = H5Gcreate2(file, "configs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      for (size_t c = 0; c < plan.configs.size(); ++c) PetscCall(WriteConfig(gc, c, plan.configs[c], all[c], plan.error_floor));
+      H5Gclose(gc);
+      hid_t gs = H5Gcreate2(file, "summary", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      PetscCall(H5WriteAttributes(gs, summary));
+      H5Gclose(gs);
+    }
+    if (sp && !sp->nodes.empty()) PetscCall(WriteSpatial(file, plan, *sp));
+    PetscFunctionReturn(0);
+  }));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConvergenceRecordBuild(const Scenario &sc, const ConvergencePlan &plan, RunRecord *record)
+{
+  std::string names;
+
+  PetscFunctionBeginUser;
+  PetscCall(RunRecordBuild(sc, nullptr, record));
+  const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+  record->add("task", "convergence");
+  record->add("impact_window_effective", times.window); // = impact_window (kept for older readers)
+  record->add("impact_max_time_effective", times.max_time);
+  record->add("convergence_reference", ConvergenceReferenceLabel(plan));
+  record->add("convergence_repeats", plan.repeats);
+  record->add("convergence_repeat_budget", plan.repeat_budget);
+  record->add("convergence_target", plan.target);
+  record->add("convergence_error_floor", plan.error_floor);
+  record->add("convergence_common_options", plan.common_file);
+  for (auto &c : plan.configs) names += (names.empty() ? "" : ",") + c.name;
+  record->add("configs", names);
+  PetscFunctionReturn(0);
+}
+
+// ---------------------------------------------------------------------------
+// The printed tables
+// ---------------------------------------------------------------------------
+
+PetscErrorCode ConvergencePrintRun(MPI_Comm comm, const ConvergenceConfig &cfg, const ConvergenceRun &run)
+{
+  PetscFunctionBeginUser;
+  const std::string what = cfg.seq.kind == ConvergenceSequenceKind::Tolerance ? ConvergenceFormat("rtol %.2e", run.rtol) : ConvergenceFormat("dt %.3e", run.dt);
+  if (run.failed) {
+    PetscCall(PetscPrintf(comm, "  %-14s L%-2" PetscInt_FMT " %-14s FAILED: %s\n", cfg.name.c_str(), run.level, what.c_str(), run.message.c_str()));
+    PetscFunctionReturn(0);
+  }
+  const ImpactResult &r = run.result;
+  PetscCall(PetscPrintf(comm,
+                        "  %-14s L%-2" PetscInt_FMT " %-14s acor_err %.2e  tc_err %.2e  pf_err %.2e  E_err %.2e  wall %.3e s  steps %" PetscInt_FMT " (+%" PetscInt_FMT " ev, %" PetscInt_FMT
+                        " rej)  fevals %" PetscInt_FMT "  jac %" PetscInt_FMT "/%" PetscInt_FMT "  lin %" PetscInt_FMT "\n",
+                        cfg.name.c_str(), run.level, what.c_str(), (double)run.acor_error, (double)run.contact_time_error, (double)run.peak_force_error, (double)run.energy_error, (double)r.wall_time, r.steps,
+                        r.event_steps, r.rejected_steps, r.function_evals, r.jacobian_evals, r.jacobian_assemblies, r.linear_its));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConvergencePrintReference(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceReference &ref)
+{
+  const ImpactResult &R = ref.result;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "reference (%s, %.3f s): acor %.14f  contact_time %.12e s  peak_force %.10e N  contacts %" PetscInt_FMT "  final_time %.6e s  energy_error %.1e\n", ref.method.c_str(), (double)ref.wall_time,
+                        (double)R.acor, (double)R.contact_time, (double)R.peak_force, R.contacts, (double)R.final_time, (double)R.energy_error));
+  if (!ReferenceMethodFind(plan.reference)->exact) // its own error, estimated
+    PetscCall(PetscPrintf(comm, "  its own error (Richardson over its last three levels, observed order %.2f): acor %.1e, contact_time %.1e (rel), peak_force %.1e (rel)\n", (double)ref.observed_order, (double)ref.acor_error,
+                          (double)ref.contact_time_error, (double)ref.peak_force_error));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConvergencePrintOrders(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<std::vector<ConvergenceRun>> &all)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "\nobserved orders (against the step; tol runs: the mean step), errors > %g:\n  %-14s %-8s %-26s %-10s %-10s %-10s\n", (double)plan.error_floor, "config", "expected", "acor pairwise", "acor lsq",
+                        "t_c lsq", "F_max lsq"));
+  for (size_t c = 0; c < plan.configs.size(); ++c) {
+    const auto &cfg = plan.configs[c];
+    const auto  oa  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::acor_error);
+    const auto  ot  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::contact_time_error);
+    const auto  op  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::peak_force_error);
+    PetscCall(PetscPrintf(comm, "  %-14s %-8s %-26s %-10.2f %-10.2f %-10.2f\n", cfg.name.c_str(), cfg.expected_order > 0 ? ConvergenceFormat("%g", cfg.expected_order).c_str() : "-", OrderText(oa).c_str(), (double)oa.lsq,
+                          (double)ot.lsq, (double)op.lsq));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConvergencePrintCostAtTarget(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<std::vector<ConvergenceRun>> &all, RunRecord *summary)
+{
+  PetscInt  best = -1, base = -1;
+  PetscReal best_t = 0, base_t = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "\ncost at ACOR error <= %g (fastest level that reaches it; wall time = minimum of up to %" PetscInt_FMT " runs, time stepping only):\n", (double)plan.target, plan.repeats));
+  for (size_t c = 0; c < plan.configs.size(); ++c) {
+    const auto &cfg = plan.configs[c];
+    PetscReal   t;
+    PetscInt    lv = ConvergenceFastestAtTarget(all[c], plan.target, &t);
+    if (lv < 0) {
+      PetscCall(PetscPrintf(comm, "  %-14s does not reach it (smallest error %.2e)\n", cfg.name.c_str(), (double)ConvergenceSmallestError(all[c])));
+      continue;
+    }
+    const auto &r = all[c][lv];
+    PetscCall(PetscPrintf(comm, "  %-14s %.3e s  level %" PetscInt_FMT "  %s  acor_err %.2e  steps %" PetscInt_FMT "\n", cfg.name.c_str(), (double)t, lv,
+                          cfg.seq.kind == ConvergenceSequenceKind::Tolerance ? ConvergenceFormat("rtol %.2e", r.rtol).c_str() : ConvergenceFormat("dt %.3e", r.dt).c_str(), (double)r.acor_error, r.result.steps));
+    summary->add("time_at_target_" + cfg.name, t);
+    if (cfg.method == "leapfrog") {
+      if (base < 0 || t < base_t) base = (PetscInt)c, base_t = t;
+    } else if (best < 0 || t < best_t) best = (PetscInt)c, best_t = t;
+  }
+  summary->add("target", plan.target);
+  if (best >= 0) {
+    summary->add("best_config", plan.configs[best].name);
+    summary->add("best_time", best_t);
+  }
+  if (base >= 0) {
+    summary->add("baseline_config", plan.configs[base].name);
+    summary->add("baseline_time", base_t);
+  }
+  if (best >= 0 && base >= 0) {
+    summary->add("baseline_over_best", base_t / best_t);
+    PetscCall(PetscPrintf(comm, "best PETSc configuration at ACOR error <= %g: %s, %.3e s; baseline %s: %.3e s; baseline/best = %.2f (best/baseline = %.2f)\n", (double)plan.target, plan.configs[best].name.c_str(), (double)best_t,
+                          plan.configs[base].name.c_str(), (double)base_t, (double)(base_t / best_t), (double)(best_t / base_t)));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConvergencePrintSpatialLevel(MPI_Comm comm, PetscInt N, PetscReal h, const ConvergenceReference &ref)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "  N %5" PetscInt_FMT "  h %.4e m  acor %.12f  contact_time %.10e s  peak_force %.8e N  (%s, %.2f s)\n", N, (double)h, (double)ref.result.acor, (double)ref.result.contact_time,
+                        (double)ref.result.peak_force, ref.method.c_str(), (double)ref.wall_time));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ConvergencePrintSpatial(MPI_Comm comm, const ConvergenceSpatial &sp)
+{
+  std::string o;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "  continuum limit (Richardson, last three N): acor %.10f  contact_time %.8e s  peak_force %.6e N\n", (double)sp.acor_limit, (double)sp.contact_time_limit, (double)sp.peak_force_limit));
+  for (size_t k = 2; k < sp.acor_order.size(); ++k) o += ConvergenceFormat(" %.3f", sp.acor_order[k]);
+  PetscCall(PetscPrintf(comm, "  observed spatial order: acor (triples)%s; least squares: acor %.3f, contact_time %.3f, peak_force %.3f\n", o.c_str(), (double)sp.acor_order_lsq, (double)sp.contact_time_order_lsq,
+                        (double)sp.peak_force_order_lsq));
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact
