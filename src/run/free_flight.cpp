@@ -224,4 +224,19 @@ void FreeFlightState(const FreeFlight &ff, PetscReal s, FullState *out)
   out->dissipated = ff.dissipated0 + (m.sys.Damped() ? ff.energy0 - ModalEnergyOf(m, zs, zds) : 0.0);
 }
 
+std::vector<ModeEnergy> FreeFlightModeEnergies(const FreeFlight &ff, PetscReal s)
+{
+  const BeamModes        &m = *ff.modes;
+  std::vector<ModeEnergy> e(ff.z.size());
+  PetscReal               d[3];
+  for (size_t k = 0; k < e.size(); ++k) {
+    const PetscReal w = m.B.omega[k];
+    ModeAt(m, (PetscInt)k, ff.z[k], ff.zd[k], s, d);
+    e[k].frequency = w / (2 * M_PI);
+    e[k].energy    = 0.5 * (d[1] * d[1] + w * w * d[0] * d[0]);
+    e[k].rigid     = (PetscInt)k < m.rigid;
+  }
+  return e;
+}
+
 } // namespace beamimpact

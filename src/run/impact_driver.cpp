@@ -153,9 +153,10 @@ PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const B
 // The free flight after a separation at the stepper's time, in closed form, up to t_stop (the
 // window's end) or the next contact (*again): the stepper is left on the exact state there.
 // With series monitors the state is recorded from the modes every dt_sample and at the
-// snapshot times (so the outputs cover the same times as a stepped run).
+// snapshot times (so the outputs cover the same times as a stepped run). *energies: the energy
+// of each kept mode at t_stop when no contact comes back (else cleared: a later flight's count).
 PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const ContactCoupling &g, ImpactRecorder &rec, bool series, PetscReal dt_sample, PetscReal t_stop, PetscReal s_min,
-                                 const ModalTruncation &truncation, std::shared_ptr<const BeamModes> &modes, bool *again)
+                                 const ModalTruncation &truncation, std::shared_ptr<const BeamModes> &modes, bool *again, std::vector<ModeEnergy> *energies)
 {
   FullState  s0, s;
   FreeFlight ff;
@@ -188,6 +189,8 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
     }
   }
   FreeFlightState(ff, t_end - t0, &s);
+  if (*again) energies->clear();
+  else *energies = FreeFlightModeEnergies(ff, t_end - t0);
   PetscCall(st.SetState(t_end, s));
   PetscCall(st.Restart());
   PetscFunctionReturn(0);
@@ -317,7 +320,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
         bool      again = false;
         PetscCall(st.NextStep(&dt_sample));
         stage.Switch(ImpactStage::FreeFlight);
-        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again));
+        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again, &rec->mode_energies));
         if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, rec->energy_in, contact, &timeline, &tally));
       }
       PetscCall(indicators(&g1));

@@ -28,9 +28,11 @@ struct ImpactRecord {
   PetscReal     V_x        = 0;   // m/s, the swinging bat's speed toward the ball at the impact point
   ContactScales scales;           // of the contact, at the first contact's approach speed (v_ball + V_x)
   std::string   after_used;       // -impact_after as the run resolved it
+  std::vector<ModeEnergy> mode_energies; // J per kept mode at the end (a modal free flight's last; fraction unset)
 };
 
-// Fills the outcome, the events, the series, the scales and after_used of *res from the
+// Fills the outcome, the events, the series, the scales, after_used and the mode energies (with
+// their fractions of E_in) of *res from the
 // record (moved from); sys: the scenario's system (which dofs can move, their masses).
 void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord &&rec, ImpactResult *res);
 
