@@ -35,7 +35,7 @@ import sys, h5py
 r = h5py.File(sys.argv[1], 'r')['results']
 words = sys.argv[2].split()
 modes = f"{words[2]}/{words[4]}" if len(words) >= 5 else "?"
-print(f"{r['acor'][()]:.15f} {r['contact_time'][()]:.15e} {r['peak_force'][()]:.15e} {modes} {float(sys.argv[4]) - float(sys.argv[3]):.2f}")
+print(f"{r['acor'][0]:.15f} {r['contact_time'][0]:.15e} {r['peak_force'][0]:.15e} {modes} {float(sys.argv[4]) - float(sys.argv[3]):.2f}")
 EOF
 }
 

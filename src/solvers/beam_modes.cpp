@@ -400,7 +400,7 @@ const OptionModule &ModalOptionTable()
 {
   static const OptionModule m = {
     "modal",
-    "Modal engine: which of the beam's modes the free flight and -ts_type modal keep",
+    "Modal engine: which of the beam's modes the free flight, -ts_type modal and -reference modal keep",
     {
       OptionText("-modal_modes",
                  "all (every mode: the dense decomposition, the exact check), auto (the modes up to the cut-off pi/(T sqrt(-modal_tolerance)), T the contact time scale; the rest through the static correction at the contact point) or a number K (the K lowest)",
