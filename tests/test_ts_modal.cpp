@@ -197,4 +197,13 @@ TEST(ModalTruncation, TruncatedEngineMatchesAllModes)
   EXPECT_LT(m->Count(), 200);
   EXPECT_EQ(std::string("slepc"), m->method);
   for (PetscInt k = 0; k < m->Count(); ++k) EXPECT_LE(m->B.omega[k], m->cutoff);
+  // What the run reports (summary line, run record): the modes its engine kept and the cut-off,
+  // one basis for -ts_type modal and the free flight after the separation.
+  EXPECT_EQ(641, r[0].modal.kept);
+  EXPECT_EQ(641, r[0].modal.free_dofs);
+  EXPECT_TRUE(std::isnan(r[0].modal.cutoff));
+  EXPECT_EQ(m->Count(), r[1].modal.kept);
+  EXPECT_EQ(641, r[1].modal.free_dofs);
+  EXPECT_NEAR(m->cutoff / (2 * M_PI), r[1].modal.cutoff, 1e-12 * r[1].modal.cutoff);
+  EXPECT_TRUE(r[1].mode_energies.empty()) << "no window after the separation (Centre): no free flight, no energies per mode";
 }

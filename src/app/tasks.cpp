@@ -98,7 +98,9 @@ static std::string ImpactSummaryLine(const ImpactResult &r)
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "%s%s\n", ImpactSummaryLine(r).c_str(), r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  char modal[96] = ""; // the modal engine's modes kept and cut-off (docs/model.md §12)
+  if (r.modal.kept > 0) std::snprintf(modal, sizeof modal, "  modes %d/%d cut-off %.4g Hz", (int)r.modal.kept, (int)r.modal.free_dofs, (double)r.modal.cutoff);
+  PetscCall(PetscPrintf(comm, "%s%s%s\n", ImpactSummaryLine(r).c_str(), modal, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
   if (taken < asked) {
     std::string late;

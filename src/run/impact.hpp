@@ -191,7 +191,16 @@ struct ModeEnergy {
   bool      rigid     = false; // a rigid mode
 };
 
+// The modal engine a run used (the free flight's basis, else -ts_type modal's, else the truncated
+// reference's): the modes kept of the free dofs and the cut-off (docs/model.md §12). kept = 0:
+// none; cutoff NaN where no cut-off chose them (-modal_modes all or K).
+struct ModalEngineUse {
+  PetscInt  kept = 0, free_dofs = 0;
+  PetscReal cutoff = 0; // Hz
+};
+
 struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
+  ModalEngineUse            modal;      // the modes kept and the cut-off (the run record's modal_modes_kept, modal_cutoff)
   std::string               after_used; // how the run followed a separation: "modal" or "time" (-impact_after as resolved)
   std::vector<ModeEnergy>   mode_energies; // at the end, one per kept mode: only when the run ended in a modal free flight
   std::vector<ContactEvent> events;

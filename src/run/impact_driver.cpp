@@ -196,6 +196,18 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
   PetscFunctionReturn(0);
 }
 
+// The modes the free flight keeps (-modal_modes, -modal_tolerance), chosen from the contact time
+// scale as -ts_type modal chooses them (one basis for both), with the run's cost line and progress.
+PetscErrorCode FreeFlightTruncation(MPI_Comm comm, const Scenario &sc, ModalTruncation *t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ModalTruncationFromOptions(comm, t));
+  t->contact_time = ContactTimeScale(sc.ball);
+  t->cost_warn    = sc.impact.report_setup ? sc.impact.cost_warn : 0;
+  t->progress     = sc.impact.report_setup ? sc.impact.progress : 0;
+  PetscFunctionReturn(0);
+}
+
 // The cost model of a stepped run (measured on the development machine, 2 cores, with
 // fixed steps at -beam_nodes 2001 to 20001, docs/model.md "Cost"): wall time per step = per node x dofs,
 // explicit types (rk, ...) kCostNodeStepExplicit, the others kCostNodeStepImplicit.
@@ -286,12 +298,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   std::shared_ptr<const BeamModes> modes;
   ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
-  if (after_modal) {
-    PetscCall(ModalTruncationFromOptions(st.Comm(), &truncation));
-    truncation.contact_time = scales.time;
-    truncation.cost_warn    = ip.report_setup ? ip.cost_warn : 0;
-    truncation.progress     = ip.report_setup ? ip.progress : 0;
-  }
+  if (after_modal) PetscCall(FreeFlightTruncation(st.Comm(), sc, &truncation));
   rec->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
@@ -331,6 +338,8 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     PetscCall(recorder.Snapshots(t));
   }
   cost->wall_time = MPI_Wtime() - wall0;
+  if (!modes) modes = st.Modes(); // no free flight: -ts_type modal's basis, if it is
+  if (modes) rec->modal = {modes->Count(), modes->S.n, BeamModesCutoffHz(*modes)};
   PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, t, info, rec, cost));
   PetscFunctionReturn(0);
 }

@@ -363,6 +363,7 @@ PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys
   full.t = run.t;
   ModalFinish(sc, sys, full, E0, 0, V_x, &rec);
   rec.after_used = "modal";
+  rec.modal      = {m.Count(), m.S.n, BeamModesCutoffHz(m)};
   *res           = ImpactResult();
   res->ts_type   = "modal";
   res->formulation = "exact, truncated";
@@ -382,7 +383,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   PetscFunctionBeginUser;
   PetscCheck(ModalReferenceApplies(sc, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "-reference modal %s", why.c_str());
   if (t.modes != ModalModes::All && !sys.Damped()) { // a damped beam: every mode (its contact phases are the first-order modes')
-    if (!(t.contact_time > 0)) t.contact_time = ContactScalesOf(sys, sc.ball).time;
+    if (!(t.contact_time > 0)) t.contact_time = ContactTimeScale(sc.ball); // as -ts_type modal and the free flight take it
     PetscCall(BeamModesShared(PETSC_COMM_SELF, sys, t, &modes));
   }
   if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(sc, sys, *modes, res));

@@ -29,6 +29,7 @@ struct ImpactRecord {
   ContactScales scales;           // of the contact, at the first contact's approach speed (v_ball + V_x)
   std::string   after_used;       // -impact_after as the run resolved it
   std::vector<ModeEnergy> mode_energies; // J per kept mode at the end (a modal free flight's last; fraction unset)
+  ModalEngineUse          modal;         // the modal engine the run used (none: kept = 0)
 };
 
 // Fills the outcome, the events, the series, the scales, after_used and the mode energies (with

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <limits>
 
 #include <unistd.h>
 
@@ -149,6 +150,10 @@ void KeepModes(BeamModes *m, PetscInt keep)
   B.rate.resize(keep);
 }
 
+// The time model of a partial eigen-solve, s per free dof per mode asked squared (Krylov-Schur's
+// orthogonalisation dominates): measured on the development machine (2 cores, docs/convergence.md).
+constexpr double kPartialSolveCost = 1.2e-8; // 6.6 s for 125 asked of 40961 free dofs, 1.35 s of 10241 (load 8)
+
 // The modes up to `want` (Count) or up to the cut-off w_c (Auto, want < 0) from partial
 // eigen-solves, nev grown until the cut-off is passed; the dense decomposition instead when
 // more than a third of the modes are wanted. Then keeps what was asked.
@@ -170,6 +175,9 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
       PetscCall(DenseModes(comm, m));
       break;
     }
+    const double expected = kPartialSolveCost * (double)n * (double)nev * (double)nev; // s
+    if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
+      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
     PetscCall(BeamModesLowest(comm, sys, nev, m->request.progress, &lambda, &phis));
     if (want >= 0 || lambda.back() > wc * wc) {
       m->method = "slepc";
@@ -425,6 +433,8 @@ std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
   }
   return s;
 }
+
+PetscReal BeamModesCutoffHz(const BeamModes &m) { return m.cutoff < PETSC_INFINITY ? m.cutoff / (2 * M_PI) : std::numeric_limits<PetscReal>::quiet_NaN(); }
 
 std::string ModalModesText(const ModalTruncation &t) { return t.modes == ModalModes::All ? "all" : t.modes == ModalModes::Auto ? "auto" : std::to_string(t.count); }
 

@@ -93,6 +93,10 @@ private:
 // 17.6 kHz, -modal_modes auto, -modal_tolerance 1e-06; slepc, 0.41 s), static correction G_r/G = 3.1e-05".
 std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c = nullptr);
 
+// The cut-off that chose the modes (Hz), NaN when none did (-modal_modes all or K, or a cut-off
+// above every mode).
+PetscReal BeamModesCutoffHz(const BeamModes &m);
+
 // Whether the beam's free vibration can be propagated exactly in modes (the force terms are
 // modal: no grip); if not, *why says so. Any size: a truncated basis has no size limit, the
 // dense one a memory check (BeamModesShared).

@@ -914,4 +914,11 @@ PetscErrorCode TSModalDissipationRate(TS ts, PetscReal *rate, PetscReal *rate_do
   PetscFunctionReturn(0);
 }
 
+std::shared_ptr<const BeamModes> TSModalModes(TS ts)
+{
+  const char *type = nullptr;
+  if (!ts || TSGetType(ts, &type) || !type || !TSModalIsType(type) || !ts->data) return nullptr;
+  return Data(ts)->modes;
+}
+
 } // namespace beamimpact
