@@ -27,6 +27,7 @@
 #include <cerrno>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -99,7 +100,9 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
 {
   PetscFunctionBeginUser;
   char modal[96] = ""; // the modal engine's modes kept and cut-off (docs/model.md §12)
-  if (r.modal.kept > 0) std::snprintf(modal, sizeof modal, "  modes %d/%d cut-off %.4g Hz", (int)r.modal.kept, (int)r.modal.free_dofs, (double)r.modal.cutoff);
+  if (r.modal.kept > 0 && std::isfinite(r.modal.cutoff))
+    std::snprintf(modal, sizeof modal, "  modes %d/%d cut-off %.4g Hz", (int)r.modal.kept, (int)r.modal.free_dofs, (double)r.modal.cutoff);
+  else if (r.modal.kept > 0) std::snprintf(modal, sizeof modal, "  modes %d/%d", (int)r.modal.kept, (int)r.modal.free_dofs); // no cut-off chose them
   PetscCall(PetscPrintf(comm, "%s%s%s\n", ImpactSummaryLine(r).c_str(), modal, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
   if (taken < asked) {
