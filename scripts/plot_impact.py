@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plots of one beamimpact -task impact file (or a -task modes file), as PNGs.
 
-    scripts/plot_impact.py FILE.h5 [-o PREFIX] [--force] [--energy] [--snapshots] [--modes] [--full]
+    scripts/plot_impact.py FILE.h5 [-o PREFIX] [--force] [--energy] [--snapshots] [--mode-energies] [--modes] [--full]
 
 Draws what the file holds and nothing it does not (every curve is read, none computed):
   PREFIX-force.png      the contact force against time (/series/force: run with -monitor_ball),
@@ -14,13 +14,19 @@ Draws what the file holds and nothing it does not (every curve is read, none com
                         energy error (E(t) - E(0)) / E(0) of the recorded total;
   PREFIX-snapshots.png  the beam's displacement y(x) at the snapshot times (-snapshot_times),
                         the impact point marked (at most --curves of them, evenly chosen);
+  PREFIX-mode-energies.png  where the impact's energy went, mode by mode (/modes_energy: written when
+                        the free flight after the separation is modal, the default): bars of the
+                        fraction of the incident kinetic energy E_in in the ball's rebound and
+                        loss, the beam's translation and rotation and each flexible mode at the
+                        end (the first --mode-bars of them, the rest as one bar), from /results and
+                        /modes_energy/fraction;
   PREFIX-modes.png      for a -task modes file: the flexible mode shapes (scaled to unit
                         peak) with their frequencies in the legend, and the nodes of the first
                         two modes the file records (/modes/nodes_1, nodes_2).
 PREFIX defaults to FILE without .h5. Each legend or title carries the configuration from the
 file's attributes (N, L, supports, the ball's mass and speed, the impact point, ts_type).
 
-Without --force/--energy/--snapshots/--modes every plot the file allows is drawn and the others
+Without --force/--energy/--snapshots/--mode-energies/--modes every plot the file allows is drawn and the others
 are named with the option that makes them. Asking for one the file lacks is an error (exit
 status 1) naming the option to add, e.g. `--energy` on a file run without -monitor_energy.
 For example, from the repository root:
@@ -188,6 +194,50 @@ def modes_plot(f, path, out, count):
     return save(fig, out)
 
 
+def mode_energies_plot(f, path, out, bars):
+    g, r = f["modes_energy"], f["results"]
+    freq, frac, rigid = g["frequency"][()], g["fraction"][()], g["rigid"][()].astype(bool)
+
+    def col(name):
+        return float(r[name][0]) if name in r else float("nan")
+
+    names, vals, colors = [], [], []
+
+    def bar(name, v, c):
+        if np.isfinite(v):
+            names.append(name), vals.append(v), colors.append(c)
+
+    bar("ball rebound", col("acor_corrected") ** 2, "C0")  # 1/2 m v_f^2 / E_in (the linear law: after its loss factor)
+    bar("ball loss", col("ball_loss_fraction"), "C1")
+    bar("beam damping", col("damping_fraction") if col("damping_fraction") > 0 else float("nan"), "C5")
+    rk = np.flatnonzero(rigid)
+    free_beam = np.isfinite(col("translation_fraction")) and len(rk) == 2
+    for j, k in enumerate(rk):
+        bar(("translation", "rotation")[j] if free_beam else "rigid mode %d" % (j + 1), frac[k], "C2")
+    flex = np.flatnonzero(~rigid)
+    for j, k in enumerate(flex[:bars]):
+        bar("mode %d\n%.4g Hz" % (j + 1, freq[k]), frac[k], "C3")
+    if len(flex) > bars:
+        bar("modes %d-%d" % (bars + 1, len(flex)), float(np.sum(frac[flex[bars:]])), "C4")
+    fig, ax = plt.subplots(figsize=(max(8, 0.55 * len(names) + 2), 4.8))
+    x = np.arange(len(names))
+    ax.bar(x, vals, color=colors)
+    for xi, v in zip(x, vals):
+        ax.annotate("%.3g" % v, (xi, v), textcoords="offset points", xytext=(0, 2), ha="center", fontsize=7)
+    ax.set_xticks(x)
+    ax.set_xticklabels(names, rotation=45, ha="right", fontsize=7)
+    ax.set_ylabel("fraction of the incident kinetic energy E_in")
+    ax.grid(True, axis="y", alpha=0.3)
+    vib = col("vibration_fraction")
+    extra = "%d modes kept; their flexible sum %.4g" % (len(freq), float(np.sum(frac[flex])))
+    if np.isfinite(vib):
+        extra += " (/results/vibration_fraction %.4g)" % vib
+    legend(ax, f, extra=extra, handles=[], loc="upper right")
+    ax.set_title("Where the impact's energy went, mode by mode, at t = %.4g ms: %s"
+                 % (1e3 * float(g.attrs.get("time", float("nan"))), os.path.basename(path)), fontsize=9)
+    return save(fig, out)
+
+
 def main():
     ap = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0], epilog=__doc__.split("\n\n", 2)[2],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -196,13 +246,15 @@ def main():
     ap.add_argument("--force", action="store_true", help="the contact force (needs -monitor_ball)")
     ap.add_argument("--energy", action="store_true", help="the energies (needs -monitor_energy)")
     ap.add_argument("--snapshots", action="store_true", help="the beam snapshots (needs -snapshot_times)")
+    ap.add_argument("--mode-energies", action="store_true", help="the energy per mode at the end (a modal free flight, /modes_energy)")
     ap.add_argument("--modes", action="store_true", help="the mode shapes (a -task modes file)")
     ap.add_argument("--full", action="store_true", help="force plot over the whole run, not zoomed to the contacts")
     ap.add_argument("--curves", type=int, default=8, help="at most this many snapshot curves (default 8)")
     ap.add_argument("--mode-count", type=int, default=4, help="flexible modes to draw (default 4)")
+    ap.add_argument("--mode-bars", type=int, default=8, help="flexible modes with a bar of their own in the mode energies (default 8)")
     a = ap.parse_args()
     prefix = a.output or files.default_prefix(a.file)
-    asked = [w for w in ("force", "energy", "snapshots", "modes") if getattr(a, w)]
+    asked = [w for w in ("force", "energy", "snapshots", "mode_energies", "modes") if getattr(a, w)]
     written = []
     with files.open_file(PROG, a.file) as f:
         task = files.attr(f, "task", "")
@@ -210,7 +262,7 @@ def main():
             sys.stderr.write("%s: %s was written by -task %s: plot it with scripts/%s\n"
                              % (PROG, a.file, task, "plot_sweep.py" if task == "sweep" else "plot_convergence.py"))
             return 1
-        possible = ("modes",) if task == "modes" else ("force", "energy", "snapshots")
+        possible = ("modes",) if task == "modes" else ("force", "energy", "snapshots", "mode_energies")
         for w in asked:
             if w not in possible:
                 sys.stderr.write("%s: %s is a -task %s file: it holds no %s (%s)\n" % (PROG, a.file, task or "?", files.what_name(w), files.MAKES[w]))
@@ -227,13 +279,15 @@ def main():
                              "or -snapshot_times t1,t2,... (e.g. -options_file options/scenes/animation.opts), or -task modes\n" % (PROG, a.file))
             return 1
         for w in todo:
-            out = "%s-%s.png" % (prefix, w)
+            out = "%s-%s.png" % (prefix, w.replace("_", "-"))
             if w == "force":
                 written.append(force_plot(f, a.file, out, a.full))
             elif w == "energy":
                 written.append(energy_plot(f, a.file, out))
             elif w == "snapshots":
                 written.append(snapshots_plot(f, a.file, out, max(a.curves, 1)))
+            elif w == "mode_energies":
+                written.append(mode_energies_plot(f, a.file, out, max(a.mode_bars, 1)))
             else:
                 written.append(modes_plot(f, a.file, out, max(a.mode_count, 1)))
     for p in written:

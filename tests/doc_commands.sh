@@ -276,7 +276,7 @@ echo "links: $n_links markdown link(s) checked"
 
 # What the docs say about the program that can be checked against it (issue 22: six places where
 # they contradicted it): every scene file is in docs/scenes.md; every option docs/model.md's
-# options table (section 10) names is one -help lists; the planned extensions of section 12 name
+# options table (section 10) names is one -help lists; the planned extensions (the last section) name
 # no option the program has; docs/sweep.md does not call a shipped scene unshipped; the swinging
 # R161's q that docs/bats.md quotes is the program's.
 help=$("$exe" -help 2>&1)
@@ -288,7 +288,7 @@ for o in $(grep -o '`-[a-z_0-9]*' <<<"$sec10" | tr -d '`' | sort -u); do
   [[ $o =~ ^-[a-z]+_$ || $o == -ts_dtt ]] && continue # a family (-convergence_*), or the example of a typo
   grep -q -- "^ *$o[ <:]" <<<"$help" || fail "docs/model.md section 10 names $o, which -help does not list"
 done
-sec12=$(sed -n '/^## 12\./,$p' "$root/docs/model.md" | sed '/Nothing on this page/q')
+sec12=$(sed -n '/^## [0-9]*\. Planned extensions/,$p' "$root/docs/model.md" | sed '/Nothing on this page/q')
 for o in $(grep -o '`-[a-z_0-9]*' <<<"$sec12" | tr -d '`' | sort -u); do
   grep -q -- "^ *$o[ <:]" <<<"$help" && fail "docs/model.md section 12 plans $o, which the program already has"
 done

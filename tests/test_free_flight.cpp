@@ -183,3 +183,50 @@ TEST(FreeFlight, DoubleImpactAsTimeIntegration)
   EXPECT_LT(m.steps, t.steps / 3);
   EXPECT_LT(std::abs(m.energy_error), 1e-9);
 }
+
+// The energy per mode after the ball has left: its sum is the beam's kinetic and strain energy
+// of the state the free flight holds (an independent sum over the dofs, the strain energy from
+// the strain terms), at the separation and later, for every mode and for the 20 lowest (the
+// state is then the kept modes' part); a free beam's two rigid modes come first, with frequency 0.
+TEST(FreeFlight, ModeEnergiesSumToTheBeamEnergy)
+{
+  const BeamSystem sys = SystemOf(AluminiumBeam(1.1, 81));
+  for (PetscInt kept : {(PetscInt)0, (PetscInt)20}) {
+    std::shared_ptr<const BeamModes> modes;
+    ModalTruncation                  t;
+    t.modes = kept ? ModalModes::Count : ModalModes::All;
+    t.count = kept;
+    ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, &modes));
+    ASSERT_EQ(kept ? kept : sys.ndof, modes->Count());
+    FullState s0;
+    s0.y.assign(sys.ndof, 0.0);
+    s0.v.assign(sys.ndof, 0.0);
+    for (PetscInt i = 0; i < sys.nodes; ++i) { // a moving, bent beam: rigid and flexible content
+      const PetscReal x = sys.NodeX(i) / sys.L;
+      s0.y[sys.Dof(i)]  = 1e-3 * std::sin(3 * M_PI * x) * x;
+      s0.v[sys.Dof(i)]  = 0.3 + 0.2 * x + 0.05 * std::cos(7 * M_PI * x);
+    }
+    s0.ball_y = -1e-3;
+    s0.ball_v = -0.5;
+    FreeFlight ff;
+    FreeFlightStart(modes, BeamSystemCoupling(sys, 0.9), 0.0, s0, &ff);
+    for (PetscReal s : {0.0, 3.7e-3}) {
+      FullState st;
+      FreeFlightState(ff, s, &st);
+      const PetscReal E = BeamSystemKineticEnergy(sys, st.v.data(), sys.fields, 0, sys.ndof) + BeamSystemStrainEnergy(sys, st.y.data(), sys.fields, 0, sys.ndof);
+      PetscReal       sum = 0;
+      const auto      e   = FreeFlightModeEnergies(ff, s);
+      ASSERT_EQ((size_t)modes->Count(), e.size());
+      for (const ModeEnergy &m : e) sum += m.energy;
+      EXPECT_NEAR(E, sum, 1e-12 * E) << "s = " << s << ", modes " << kept;
+      EXPECT_TRUE(e[0].rigid && e[1].rigid && !e[2].rigid);
+      EXPECT_EQ(0.0, e[0].frequency);
+      EXPECT_EQ(0.0, e[1].frequency);
+      EXPECT_NEAR(modes->B.omega[2] / (2 * M_PI), e[2].frequency, 1e-12 * e[2].frequency);
+      // The translation: P^2 / 2M of the state, P summed over the dofs.
+      PetscReal P = 0, Mtot = 0;
+      for (PetscInt i = 0; i < sys.nodes; ++i) P += sys.mass[sys.Dof(i)] * st.v[sys.Dof(i)], Mtot += sys.mass[sys.Dof(i)];
+      EXPECT_NEAR(P * P / (2 * Mtot), e[0].energy, 1e-12 * E);
+    }
+  }
+}

@@ -25,6 +25,8 @@ MAKES = {
     "energy": "-monitor_energy (the energies every step, /series)",
     "snapshots": "-snapshot_times t1,t2,... (the beam's displacement y(x) at those times, /snapshots)",
     "modes": "-task modes (the mode shapes, /modes/shapes)",
+    "mode_energies": "-impact_after modal (the default where the beam allows it) and a window after the separation (-impact_window > 0): "
+                     "the energy per mode at the end, /modes_energy",
 }
 
 
@@ -140,7 +142,7 @@ def impact_point(f):
 def what_name(what):
     return {"force": "contact force series (/series/force)", "ball": "ball position series (/series/ball_y)",
             "energy": "energy series (/series/total_energy)", "snapshots": "snapshots (/snapshots/y)",
-            "modes": "mode shapes (/modes/shapes)"}[what]
+            "modes": "mode shapes (/modes/shapes)", "mode_energies": "energies per mode (/modes_energy)"}[what]
 
 
 def has(f, what):
@@ -156,6 +158,8 @@ def has(f, what):
         return "snapshots" in f and "y" in f["snapshots"] and f["snapshots/y"].shape[0] > 0
     if what == "modes":
         return "modes" in f and "shapes" in f["modes"]
+    if what == "mode_energies":
+        return "modes_energy" in f and "fraction" in f["modes_energy"]
     raise KeyError(what)
 
 

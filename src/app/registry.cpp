@@ -10,6 +10,7 @@
 #include "io/scenario_options.hpp"
 #include "run/impact_params.hpp"
 #include "run/reference.hpp"
+#include "solvers/beam_modes.hpp"
 #include "solvers/flight_ts.hpp"
 #include "solvers/leapfrog.hpp"
 #include "solvers/modes.hpp"
@@ -36,6 +37,7 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&ImpactOptionTable());
   OptionModuleRegister(&MonitorOptionTable());
   OptionModuleRegister(&ModesOptionTable());
+  OptionModuleRegister(&ModalOptionTable());
   OptionModuleRegister(&LeapfrogOptionTable());
   OptionModuleRegister(&PetscSolverOptionTable());
   OptionModuleRegister(&kSweepOptions);

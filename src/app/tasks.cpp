@@ -9,6 +9,7 @@
 #include "io/scenario_options.hpp"
 #include "run/outcome.hpp"
 #include "run/reference.hpp"
+#include "solvers/beam_modes.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence.hpp"
@@ -26,6 +27,7 @@
 #include <cerrno>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -97,7 +99,11 @@ static std::string ImpactSummaryLine(const ImpactResult &r)
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "%s%s\n", ImpactSummaryLine(r).c_str(), r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+  char modal[96] = ""; // the modal engine's modes kept and cut-off (docs/model.md §12)
+  if (r.modal.kept > 0 && std::isfinite(r.modal.cutoff))
+    std::snprintf(modal, sizeof modal, "  modes %d/%d cut-off %.4g Hz", (int)r.modal.kept, (int)r.modal.free_dofs, (double)r.modal.cutoff);
+  else if (r.modal.kept > 0) std::snprintf(modal, sizeof modal, "  modes %d/%d", (int)r.modal.kept, (int)r.modal.free_dofs); // no cut-off chose them
+  PetscCall(PetscPrintf(comm, "%s%s%s\n", ImpactSummaryLine(r).c_str(), modal, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
   if (taken < asked) {
     std::string late;
@@ -220,6 +226,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   SweepPlan       plan;
   ConvergencePlan cp;
   LeapfrogParams  lp;
+  ModalTruncation modal_modes;
   TS              ts;
 
   PetscFunctionBeginUser;
@@ -230,6 +237,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)SweepPlanFromOptions(comm, &plan);
   (void)ConvergencePlanFromOptions(comm, sc, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
+  (void)ModalTruncationFromOptions(comm, &modal_modes);
   (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);

@@ -256,6 +256,34 @@ static PetscErrorCode H5WriteEvents(hid_t file, const ImpactResult &r)
   PetscFunctionReturn(0);
 }
 
+// /modes_energy of one run whose free flight was modal (none otherwise): one row per kept mode,
+// the energy it carries at the end, its fraction of the incident kinetic energy, its frequency
+// and whether it is rigid (a free beam's two: translation, then rotation about the centre of mass).
+static PetscErrorCode H5WriteModeEnergies(hid_t file, const ImpactResult &r)
+{
+  PetscFunctionBeginUser;
+  if (r.mode_energies.empty()) PetscFunctionReturn(0);
+  hid_t                  g = H5Gcreate2(file, "modes_energy", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<double>    f, e, x;
+  std::vector<long long> rigid;
+  for (const ModeEnergy &m : r.mode_energies) {
+    f.push_back(m.frequency);
+    e.push_back(m.energy);
+    x.push_back(m.fraction);
+    rigid.push_back(m.rigid ? 1 : 0);
+  }
+  PetscCall(H5WriteDataset1D(g, "frequency", f, "Hz (0 for a rigid mode)"));
+  PetscCall(H5WriteDataset1D(g, "energy", e, "J, 1/2 (zd^2 + w^2 z^2) in mass-normalised coordinates at the end"));
+  PetscCall(H5WriteDataset1D(g, "fraction", x, "1 (of the incident kinetic energy E_in; NaN for a ball at rest)"));
+  PetscCall(H5WriteDatasetInt1D(g, "rigid", rigid, "1 for a rigid mode (a free beam: translation, then rotation about the centre of mass), else 0"));
+  RunRecord a;
+  a.add("time", (double)r.final_time);
+  a.add("description", "the energy each kept mode carries at the end of the run (time, s), after the ball has left (docs/model.md section 12)");
+  PetscCall(H5WriteAttributes(g, a));
+  H5Gclose(g);
+  PetscFunctionReturn(0);
+}
+
 // /series (the requested ones only) and /snapshots of one run.
 static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const BeamParams &beam)
 {
@@ -432,6 +460,7 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
       PetscCall(H5WriteImpactAttributes(file));
       PetscCall(H5WriteEvents(file, results[0]));
       PetscCall(H5WriteSeries(file, results[0].series, sc.beam));
+      PetscCall(H5WriteModeEnergies(file, results[0]));
     }
     PetscFunctionReturn(0);
   }));

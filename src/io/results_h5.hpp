@@ -22,8 +22,8 @@ namespace beamimpact {
 // result's scales contact_time_scale and compression_scale; the table's column order
 // results_columns), /results (every column of the table, one row per result, with the
 // attributes unit, description, applies (1 or 0: whether the column applies to sc; NaN where it
-// does not) and applies_when (in words)), and for the first result its /events, /series and
-// /snapshots when they hold data.
+// does not) and applies_when (in words)), and for the first result its /events, /series,
+// /snapshots and /modes_energy (a modal free flight's energy per mode at the end) when they hold data.
 PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc);
 
 // Writes a new file (replacing any, H5ResultsFileWrite) on rank 0 of comm: root attributes; /modes with the

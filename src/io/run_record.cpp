@@ -168,6 +168,10 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   rec->add("impact_max_contacts", sc.impact.max_contacts);
   // As resolved by the run: the default modal falls back to time for a beam beyond the modes' limit.
   rec->add("impact_after", first && !first->after_used.empty() ? first->after_used : std::string(ImpactAfterName(sc.impact.after)));
+  if (first && first->modal.kept > 0) { // the modal engine the run used (docs/model.md §12): the modes kept, the cut-off (Hz; NaN: none chose them)
+    rec->add("modal_modes_kept", first->modal.kept);
+    rec->add("modal_cutoff", (double)first->modal.cutoff);
+  }
   if (first) {
     rec->add("ts_type", first->ts_type);
     rec->add("formulation", first->formulation);

@@ -87,16 +87,16 @@ PetscReal ModalEnergyOf(const BeamModes &m, const std::vector<PetscReal> &z, con
 void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const FullState &s, FreeFlight *ff)
 {
   const BeamModes &m = *modes;
-  const PetscInt   n = m.S.n;
+  const PetscInt   n = m.S.n, nm = m.Count(); // free dofs, modes kept
   *ff                = FreeFlight();
   ff->modes          = modes;
   ff->t0             = t0;
   ff->yb0            = s.ball_y;
   ff->vb0            = s.ball_v;
   ff->dissipated0    = s.dissipated;
-  ff->z.assign(n, 0.0);
-  ff->zd.assign(n, 0.0);
-  ff->gamma.assign(n, 0.0);
+  ff->z.assign(nm, 0.0);
+  ff->zd.assign(nm, 0.0);
+  ff->gamma.assign(nm, 0.0);
   // z = Phi^T M^{1/2} q over the free dofs; gamma_k = sum_q w_q phi_k[d_q] / sqrt(m_{d_q}).
   std::vector<PetscReal> sy(n), sv(n), gw(n, 0.0);
   for (PetscInt d = 0; d < n; ++d) {
@@ -106,7 +106,7 @@ void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupli
     for (PetscInt q = 0; q < g.n; ++q)
       if (m.S.dof[d] == g.dof[q]) gw[d] += g.w[q] / sm;
   }
-  for (PetscInt k = 0; k < n; ++k) {
+  for (PetscInt k = 0; k < nm; ++k) {
     const PetscReal *phi = &m.B.Phi[(size_t)k * n];
     PetscReal        a = 0, b = 0, c = 0;
     for (PetscInt d = 0; d < n; ++d) {
@@ -121,7 +121,7 @@ void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupli
   ff->energy0 = ModalEnergyOf(m, ff->z, ff->zd);
   ff->L1      = std::abs(ff->vb0);
   ff->L2      = 0;
-  for (PetscInt k = 0; k < n; ++k) {
+  for (PetscInt k = 0; k < nm; ++k) {
     if (ff->gamma[k] == 0.0) continue;
     ff->L1 += std::abs(ff->gamma[k]) * ModeSup(m, k, ff->z[k], ff->zd[k], 1);
     ff->L2 += std::abs(ff->gamma[k]) * ModeSup(m, k, ff->z[k], ff->zd[k], 2);
@@ -197,15 +197,15 @@ bool FreeFlightFirstContact(FreeFlight &ff, PetscReal s_end, PetscReal s_min, Pe
 void FreeFlightState(const FreeFlight &ff, PetscReal s, FullState *out)
 {
   const BeamModes       &m = *ff.modes;
-  const PetscInt         n = m.S.n;
-  std::vector<PetscReal> zs(n), zds(n), yy(n, 0.0), vv(n, 0.0);
+  const PetscInt         n = m.S.n, nm = m.Count();
+  std::vector<PetscReal> zs(nm), zds(nm), yy(n, 0.0), vv(n, 0.0);
   PetscReal              d[3];
-  for (PetscInt k = 0; k < n; ++k) {
+  for (PetscInt k = 0; k < nm; ++k) {
     ModeAt(m, k, ff.z[k], ff.zd[k], s, d);
     zs[k]  = d[0];
     zds[k] = d[1];
   }
-  for (PetscInt k = 0; k < n; ++k) {
+  for (PetscInt k = 0; k < nm; ++k) {
     const PetscReal *phi = &m.B.Phi[(size_t)k * n];
     for (PetscInt r = 0; r < n; ++r) {
       yy[r] += phi[r] * zs[k];
@@ -222,6 +222,21 @@ void FreeFlightState(const FreeFlight &ff, PetscReal s, FullState *out)
   out->ball_y     = ff.yb0 + ff.vb0 * s;
   out->ball_v     = ff.vb0;
   out->dissipated = ff.dissipated0 + (m.sys.Damped() ? ff.energy0 - ModalEnergyOf(m, zs, zds) : 0.0);
+}
+
+std::vector<ModeEnergy> FreeFlightModeEnergies(const FreeFlight &ff, PetscReal s)
+{
+  const BeamModes        &m = *ff.modes;
+  std::vector<ModeEnergy> e(ff.z.size());
+  PetscReal               d[3];
+  for (size_t k = 0; k < e.size(); ++k) {
+    const PetscReal w = m.B.omega[k];
+    ModeAt(m, (PetscInt)k, ff.z[k], ff.zd[k], s, d);
+    e[k].frequency = w / (2 * M_PI);
+    e[k].energy    = 0.5 * (d[1] * d[1] + w * w * d[0] * d[0]);
+    e[k].rigid     = (PetscInt)k < m.rigid;
+  }
+  return e;
 }
 
 } // namespace beamimpact

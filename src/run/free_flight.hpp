@@ -52,4 +52,9 @@ bool FreeFlightFirstContact(FreeFlight &ff, PetscReal s_end, PetscReal s_min, Pe
 // The exact state at s (time t0 + s).
 void FreeFlightState(const FreeFlight &ff, PetscReal s, FullState *out);
 
+// The energy each kept mode carries at s (ModeEnergy: frequency, energy, rigid; the fraction is
+// the outcome's). Their sum is the beam's kinetic and strain energy of FreeFlightState(ff, s).
+// O(modes kept): cheap beside the projection FreeFlightStart did.
+std::vector<ModeEnergy> FreeFlightModeEnergies(const FreeFlight &ff, PetscReal s);
+
 } // namespace beamimpact

@@ -188,8 +188,30 @@ struct ImpactCost : StepperCounts {
   PetscReal wall_time = 0;              // s, time stepping only
 };
 
+// Where the impact's energy went, mode by mode (docs/model.md §12): after the ball has left, at
+// the end of a run whose free flight is modal, the energy each kept mode of the beam carries,
+// 1/2 (zd^2 + w^2 z^2) in mass-normalised coordinates. A rigid mode (frequency 0) carries its
+// kinetic energy: of a beam with no held dof, the translation P^2/2M and the rotation
+// L_cm^2/2I_cm about the centre of mass, in that order.
+struct ModeEnergy {
+  PetscReal frequency = 0;     // Hz (0: a rigid mode)
+  PetscReal energy    = 0;     // J
+  PetscReal fraction  = 0;     // 1: energy / E_in, the incident kinetic energy (NaN for a ball at rest)
+  bool      rigid     = false; // a rigid mode
+};
+
+// The modal engine a run used (the free flight's basis, else -ts_type modal's, else the truncated
+// reference's): the modes kept of the free dofs and the cut-off (docs/model.md §12). kept = 0:
+// none; cutoff NaN where no cut-off chose them (-modal_modes all or K).
+struct ModalEngineUse {
+  PetscInt  kept = 0, free_dofs = 0;
+  PetscReal cutoff = 0; // Hz
+};
+
 struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
+  ModalEngineUse            modal;      // the modes kept and the cut-off (the run record's modal_modes_kept, modal_cutoff)
   std::string               after_used; // how the run followed a separation: "modal" or "time" (-impact_after as resolved)
+  std::vector<ModeEnergy>   mode_energies; // at the end, one per kept mode: only when the run ended in a modal free flight
   std::vector<ContactEvent> events;
   ImpactSeries              series;
   ImpactScales              scales;

@@ -153,9 +153,10 @@ PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const B
 // The free flight after a separation at the stepper's time, in closed form, up to t_stop (the
 // window's end) or the next contact (*again): the stepper is left on the exact state there.
 // With series monitors the state is recorded from the modes every dt_sample and at the
-// snapshot times (so the outputs cover the same times as a stepped run).
+// snapshot times (so the outputs cover the same times as a stepped run). *energies: the energy
+// of each kept mode at t_stop when no contact comes back (else cleared: a later flight's count).
 PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const ContactCoupling &g, ImpactRecorder &rec, bool series, PetscReal dt_sample, PetscReal t_stop, PetscReal s_min,
-                                 std::shared_ptr<const BeamModes> &modes, bool *again)
+                                 const ModalTruncation &truncation, std::shared_ptr<const BeamModes> &modes, bool *again, std::vector<ModeEnergy> *energies)
 {
   FullState  s0, s;
   FreeFlight ff;
@@ -163,7 +164,7 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
   *again = false;
 
   PetscFunctionBeginUser;
-  if (!modes) PetscCall(BeamModesShared(sys, &modes));
+  if (!modes) PetscCall(BeamModesShared(st.Comm(), sys, truncation, &modes));
   PetscCall(StepperGatherState(st, sys, &s0));
   const PetscReal t0 = st.Time();
   if (series) PetscCall(rec.Record(t0)); // the separation itself, as a stepped run records it
@@ -188,8 +189,22 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
     }
   }
   FreeFlightState(ff, t_end - t0, &s);
+  if (*again) energies->clear();
+  else *energies = FreeFlightModeEnergies(ff, t_end - t0);
   PetscCall(st.SetState(t_end, s));
   PetscCall(st.Restart());
+  PetscFunctionReturn(0);
+}
+
+// The modes the free flight keeps (-modal_modes, -modal_tolerance), chosen from the contact time
+// scale as -ts_type modal chooses them (one basis for both), with the run's cost line and progress.
+PetscErrorCode FreeFlightTruncation(MPI_Comm comm, const Scenario &sc, ModalTruncation *t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ModalTruncationFromOptions(comm, t));
+  t->contact_time = ContactTimeScale(sc.ball);
+  t->cost_warn    = sc.impact.report_setup ? sc.impact.cost_warn : 0;
+  t->progress     = sc.impact.report_setup ? sc.impact.progress : 0;
   PetscFunctionReturn(0);
 }
 
@@ -316,7 +331,9 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   ContactTallyStart(sc.ball, *contact, approach, &tally);
   bool                             after_modal;
   std::shared_ptr<const BeamModes> modes;
+  ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
+  if (after_modal) PetscCall(FreeFlightTruncation(st.Comm(), sc, &truncation));
   rec->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
@@ -345,7 +362,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
         bool      again = false;
         PetscCall(st.NextStep(&dt_sample));
         stage.Switch(ImpactStage::FreeFlight);
-        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, modes, &again));
+        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), dt_sample, timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again, &rec->mode_energies));
         if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, rec->energy_in, contact, &timeline, &tally));
       }
       PetscCall(indicators(&g1));
@@ -356,6 +373,8 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     PetscCall(recorder.Snapshots(t));
   }
   cost->wall_time = MPI_Wtime() - wall0;
+  if (!modes) modes = st.Modes(); // no free flight: -ts_type modal's basis, if it is
+  if (modes) rec->modal = {modes->Count(), modes->S.n, BeamModesCutoffHz(*modes)};
   PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, t, info, rec, cost));
   PetscFunctionReturn(0);
 }

@@ -5,8 +5,11 @@
 #include "run/outcome.hpp"
 
 #include "run/scenario.hpp"
+#include "solvers/beam_modes.hpp"
 #include "solvers/modal_basis.hpp"
 #include "solvers/modal_damped.hpp"
+
+#include <petscblaslapack.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +29,7 @@ struct ModalRun {
   const ModalSystem *S = nullptr;
   const BallParams  *ball = nullptr;
   PetscReal          t_cap = 0, s_min = 0; // s: -impact_max_time; the smallest search step
+  PetscReal          c_scale = 1;          // the compression per unit of g^T q: k'/k for a truncated system (the series spring), else 1
   PetscReal          t = 0;
   std::vector<PetscReal> q, qd;
 };
@@ -53,7 +57,7 @@ void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep,
   Phase     rate = ph;
   while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, run.s_min, &s_max)) {
     s += s_max;
-    const PetscReal c = ph.Derivative(s, 0);
+    const PetscReal c = run.c_scale * ph.Derivative(s, 0);
     tally->events.push_back({ContactEventKind::MaxCompression, run.t + s, c, ContactLinearStiffness(*run.ball) * c});
     tally->max_compression = std::max(tally->max_compression, c);
     // Continue after this maximum: restart the search from the state at s.
@@ -210,6 +214,183 @@ void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run,
 
 } // namespace
 
+namespace {
+
+// The truncated system (docs/model.md §12): the kept beam modes z_j (mass-normalised: mass 1,
+// stiffness w_j^2) and the ball, with c = y_b - sum_j gamma_j z_j, in contact through the series
+// spring k' = k / (1 + k G_r) of the contact spring and the modes left out (their static
+// flexibility G_r at the point); the compression itself is c k'/k. Its phases' bases: separated,
+// diagonal; in contact, the dense eigen-decomposition (LAPACK syev) of the (kept + 1) system.
+struct TruncatedSystem {
+  ModalSystem R;                // over (z_1 .. z_k, y_b): mass 1 .. 1, m_b; g = (-gamma, 1); k'
+  ModalBasis  contact, free;
+  PetscReal   c_scale = 1;      // k'/k
+};
+
+// gamma_j = sum_q w_q phi_j(d_q) / sqrt(m_{d_q}): mode j's deflection at the point of coupling g.
+std::vector<PetscReal> ModeGammas(const BeamModes &m, const ContactCoupling &g)
+{
+  const PetscInt         n = m.S.n, nm = m.Count();
+  std::vector<PetscReal> gw(n, 0.0), gamma(nm, 0.0);
+  for (PetscInt d = 0; d < n; ++d)
+    for (PetscInt q = 0; q < g.n; ++q)
+      if (m.S.dof[d] == g.dof[q]) gw[d] += g.w[q] / std::sqrt(m.S.mass[d]);
+  for (PetscInt j = 0; j < nm; ++j)
+    for (PetscInt d = 0; d < n; ++d) gamma[j] += m.B.Phi[(size_t)j * n + d] * gw[d];
+  return gamma;
+}
+
+PetscErrorCode TruncatedSystemBuild(const BeamModes &m, const ModalCorrection &corr, const BallParams &ball, TruncatedSystem *T)
+{
+  const PetscInt               nm = m.Count(), n = nm + 1;
+  const std::vector<PetscReal> gamma = ModeGammas(m, corr.g);
+  const PetscReal              k = ContactLinearStiffness(ball), kp = k / (1 + k * corr.Gr);
+  ModalSystem                 &R = T->R;
+
+  PetscFunctionBeginUser;
+  R.sys  = &m.sys;
+  R.n    = n;
+  R.k    = kp;
+  R.ball = true;
+  R.dof.assign(n, -1);
+  R.mass.assign(n, 1.0);
+  R.mass[nm] = ball.mass;
+  R.g.assign(n, 1.0);
+  for (PetscInt j = 0; j < nm; ++j) R.g[j] = -gamma[j];
+  T->c_scale = kp / k;
+  // Separated: the modes themselves and the ball (rigid).
+  T->free.omega.assign(m.B.omega.begin(), m.B.omega.end());
+  T->free.omega.push_back(0.0);
+  T->free.Phi.assign((size_t)n * n, 0.0);
+  for (PetscInt j = 0; j < n; ++j) T->free.Phi[j + (size_t)j * n] = 1.0;
+  // In contact: M^{-1/2} (diag(w^2, 0) + k' g g^T) M^{-1/2}.
+  std::vector<PetscReal> A((size_t)n * n), w(n), gs(n);
+  for (PetscInt r = 0; r < n; ++r) gs[r] = R.g[r] / std::sqrt(R.mass[r]);
+  for (PetscInt c = 0; c < n; ++c)
+    for (PetscInt r = 0; r < n; ++r) A[r + (size_t)c * n] = kp * gs[r] * gs[c] + (r == c && r < nm ? m.B.omega[r] * m.B.omega[r] : 0.0);
+  PetscBLASInt bn, lwork = -1, info;
+  PetscReal    wq;
+  PetscCall(PetscBLASIntCast(n, &bn));
+  PetscCallBLAS("LAPACKsyev", LAPACKsyev_("V", "U", &bn, A.data(), &bn, w.data(), &wq, &lwork, &info));
+  std::vector<PetscReal> work((size_t)wq);
+  PetscCall(PetscBLASIntCast((PetscInt)wq, &lwork));
+  PetscCallBLAS("LAPACKsyev", LAPACKsyev_("V", "U", &bn, A.data(), &bn, w.data(), work.data(), &lwork, &info));
+  PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK syev failed (info %d)", (int)info);
+  T->contact.omega.resize(n);
+  for (PetscInt j = 0; j < n; ++j) T->contact.omega[j] = std::sqrt(std::max<PetscReal>(w[j], 0.0));
+  T->contact.Phi = std::move(A);
+  for (ModalBasis *B : {&T->contact, &T->free}) {
+    B->gamma.assign(n, 0.0);
+    for (PetscInt j = 0; j < n; ++j)
+      for (PetscInt r = 0; r < n; ++r) B->gamma[j] += gs[r] * B->Phi[r + (size_t)j * n];
+  }
+  PetscFunctionReturn(0);
+}
+
+// Between the truncated state (z, zd; the ball last) and the full one (free beam dofs, the ball
+// last, as ModalSystemBuild orders them): y = M^{-1/2} Phi z, z = Phi^T M^{1/2} y.
+void TruncatedToFull(const BeamModes &m, const std::vector<PetscReal> &z, std::vector<PetscReal> &q)
+{
+  const PetscInt n = m.S.n, nm = m.Count();
+  q.assign(n + 1, 0.0);
+  for (PetscInt j = 0; j < nm; ++j)
+    for (PetscInt d = 0; d < n; ++d) q[d] += m.B.Phi[(size_t)j * n + d] * z[j];
+  for (PetscInt d = 0; d < n; ++d) q[d] /= std::sqrt(m.S.mass[d]);
+  q[n] = z[nm];
+}
+void FullToTruncated(const BeamModes &m, const std::vector<PetscReal> &q, std::vector<PetscReal> &z)
+{
+  const PetscInt n = m.S.n, nm = m.Count();
+  z.assign(nm + 1, 0.0);
+  for (PetscInt j = 0; j < nm; ++j)
+    for (PetscInt d = 0; d < n; ++d) z[j] += m.B.Phi[(size_t)j * n + d] * std::sqrt(m.S.mass[d]) * q[d];
+  z[nm] = q[n];
+}
+
+// The undamped phases of a truncated run, contact first, to the end of the window after the
+// last separation.
+PetscErrorCode TruncatedPhases(ModalRun &run, const TruncatedSystem &T, const ImpactTimes &times, PetscInt max_contacts, ContactTally *tally)
+{
+  ModalPhase ph;
+  bool       touching = true;
+
+  PetscFunctionBeginUser;
+  ph.S = &T.R;
+  for (bool more = true; more;) {
+    ph.B = touching ? &T.contact : &T.free;
+    ph.From(run.q, run.qd);
+    if (touching) {
+      PetscCall(ModalContactPhase(run, ph, tally));
+      touching = false;
+    } else {
+      PetscCall(ModalFreePhase(run, ph, std::min(run.t_cap, run.t + times.window), max_contacts, tally, &touching));
+      more = touching;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+// The reference on the modes kept (m truncated, the beam undamped): the same events and
+// outcome as the dense one, the state carried in the kept modes and the ball.
+PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys, const BeamModes &m, ImpactResult *res)
+{
+  const ImpactParams    &ip = sc.impact;
+  const ModalCorrection *corr;
+  TruncatedSystem        T;
+  ModalRun               full, run;
+  ImpactRecord           rec;
+  PetscReal              V_x, E0;
+
+  PetscFunctionBeginUser;
+  const double wall0 = MPI_Wtime();
+  PetscCall(m.StaticCorrection(BeamSystemCoupling(sys, ip.x), &corr));
+  PetscCall(TruncatedSystemBuild(m, *corr, sc.ball, &T));
+  const ModalSystem S = ModalSystemBuild(sys, corr->g, sc.ball.mass, ContactLinearStiffness(sc.ball)); // the full state's layout
+  full.S = &S, full.ball = &sc.ball;
+  ModalStart(sc, sys, &full, &V_x, &E0);
+  rec.start = ModalMeasures(full, ip.x, 0);
+  const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, ip);
+  run.S = &T.R, run.ball = &sc.ball, run.c_scale = T.c_scale;
+  run.t_cap = times.max_time;
+  run.s_min = 1e-13 * ContactTimeScale(sc.ball);
+  FullToTruncated(m, full.q, run.q);
+  FullToTruncated(m, full.qd, run.qd);
+  rec.contact.contacts = 1;
+  rec.contact.events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
+  PetscCall(TruncatedPhases(run, T, times, ip.max_contacts, &rec.contact));
+  TruncatedToFull(m, run.q, full.q);
+  TruncatedToFull(m, run.qd, full.qd);
+  full.t = run.t;
+  ModalFinish(sc, sys, full, E0, 0, V_x, &rec);
+  rec.after_used = "modal";
+  rec.modal      = {m.Count(), m.S.n, BeamModesCutoffHz(m)};
+  *res           = ImpactResult();
+  res->ts_type   = "modal";
+  res->formulation = "exact, truncated";
+  ImpactOutcomeFinish(sc, sys, std::move(rec), res);
+  res->wall_time = MPI_Wtime() - wall0;
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
+{
+  std::shared_ptr<const BeamModes> modes;
+  ModalTruncation                  t = truncation;
+  std::string                      why;
+
+  PetscFunctionBeginUser;
+  PetscCheck(ModalReferenceApplies(sc, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "-reference modal %s", why.c_str());
+  if (t.modes != ModalModes::All && !sys.Damped()) { // a damped beam: every mode (its contact phases are the first-order modes')
+    if (!(t.contact_time > 0)) t.contact_time = ContactTimeScale(sc.ball); // as -ts_type modal and the free flight take it
+    PetscCall(BeamModesShared(PETSC_COMM_SELF, sys, t, &modes));
+  }
+  if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(sc, sys, *modes, res));
+  else PetscCall(ModalReferenceRunSystem(sc, sys, res)); // every mode kept: the dense reference
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, ImpactResult *res)
 {
   const BallParams   &ball = sc.ball;
@@ -283,13 +464,23 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
 
 PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
 {
+  ModalTruncation all;
+
+  PetscFunctionBeginUser;
+  all.modes = ModalModes::All;
+  PetscCall(ModalReferenceRun(sc, all, res));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalReferenceRun(const Scenario &sc, const ModalTruncation &truncation, ImpactResult *res)
+{
   BeamSystem  sys;
   std::string why;
 
   PetscFunctionBeginUser;
   ImpactStageScope stage(ImpactStage::ModalReference); // -log_view: its own stage
   PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  PetscCall(ModalReferenceRunSystem(sc, sys, res));
+  PetscCall(ModalReferenceRunSystem(sc, sys, truncation, res));
   PetscFunctionReturn(0);
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "run/impact.hpp"
+#include "solvers/beam_modes.hpp"
 #include "system/beam_system.hpp"
 
 #include <string>
@@ -29,6 +30,15 @@ struct Scenario;
 // PETSC_ERR_NOT_CONVERGED, if their eigenvectors are too ill-conditioned); the dissipated
 // energy is beam_dissipated_end and is in energy_error.
 PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
+
+// The same on the modes a truncation keeps (-modal_modes, -modal_tolerance; docs/model.md §12):
+// when it keeps fewer than every mode, the kept beam modes and the ball with the contact spring
+// in series with the static flexibility G_r of the modes left out, k' = k / (1 + k G_r), solved
+// exactly (the reference of the truncated model, formulation "exact, truncated"; no memory
+// limit: O(n k)). All, a truncation that keeps every mode, or a damped beam: the dense reference
+// above, bit for bit. T (truncation.contact_time) defaults to the contact's time scale.
+PetscErrorCode ModalReferenceRun(const Scenario &scenario, const ModalTruncation &truncation, ImpactResult *res);
+PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
 
 // Whether it can solve the scenario: the linear law, no grip; *why (may be null) says why not,
 // naming the options, as "-reference modal <why>" reads. (The memory limit is checked when it

@@ -69,6 +69,9 @@ void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord
     res->series.flight_spin = F.spin;
   }
   res->after_used = rec.after_used;
+  res->mode_energies = std::move(rec.mode_energies);
+  res->modal         = rec.modal;
+  for (ModeEnergy &e : res->mode_energies) e.fraction = f.E_in > 0 ? e.energy / f.E_in : nan;
   res->scales     = ImpactScalesOf(rec.scales);
 }
 

@@ -29,9 +29,12 @@ struct ImpactRecord {
   ContactScales scales;           // of the contact, at the first contact's approach speed (v_ball + V_x)
   std::string   after_used;       // -impact_after as the run resolved it
   ObliqueRecord oblique;          // run/oblique.cpp: an oblique impact's tangential contact, exit and flight (on: oblique)
+  std::vector<ModeEnergy> mode_energies; // J per kept mode at the end (a modal free flight's last; fraction unset)
+  ModalEngineUse          modal;         // the modal engine the run used (none: kept = 0)
 };
 
-// Fills the outcome, the events, the series, the scales and after_used of *res from the
+// Fills the outcome, the events, the series, the scales, after_used and the mode energies (with
+// their fractions of E_in) of *res from the
 // record (moved from); sys: the scenario's system (which dofs can move, their masses).
 void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord &&rec, ImpactResult *res);
 

@@ -50,7 +50,12 @@ PetscErrorCode ModalRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettin
   PetscFunctionBeginUser;
   PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
   if (sc.impact.check_unused_options) PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-  PetscCall(ModalReferenceRun(sc, &sol->result));
+  ModalTruncation truncation; // -modal_modes, -modal_tolerance: the truncated model's exact solution (all: the dense one)
+  PetscBool       asked = PETSC_FALSE; // the dense exact reference unless -modal_modes is given
+  PetscCall(ModalTruncationFromOptions(comm, &truncation));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-modal_modes", &asked));
+  if (!asked) truncation.modes = ModalModes::All;
+  PetscCall(ModalReferenceRun(sc, truncation, &sol->result));
   if (sc.impact.report_setup) PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", sol->result.ts_type.c_str(), sol->result.formulation.c_str(), (double)sol->result.dt_nominal));
   sol->method = "modal";
   PetscFunctionReturn(0);

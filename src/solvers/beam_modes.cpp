@@ -1,9 +1,20 @@
 // The beam's modes, computed once per beam. See beam_modes.hpp.
 #include "solvers/beam_modes.hpp"
 
+#include "solvers/modes.hpp"
+
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <deque>
+#include <limits>
+
+#include <unistd.h>
+
+extern "C" void dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, int *info);
+extern "C" void dpbtrs_(const char *uplo, const int *n, const int *kd, const int *nrhs, const double *ab, const int *ldab, double *b, const int *ldb, int *info);
 
 namespace beamimpact {
 
@@ -69,10 +80,10 @@ std::vector<std::vector<PetscReal>> RigidMotions(const BeamSystem &sys)
 void ExactRigidModes(BeamModes *m)
 {
   const ModalSystem &S = m->S;
-  const PetscInt     n = S.n;
+  const PetscInt     n = S.n, count = m->Count();
   ModalBasis        &B = m->B;
   PetscInt           nz = 0;
-  while (nz < n && B.omega[nz] < 1e-3 * m->sys.frequency_unit) nz++;
+  while (nz < count && B.omega[nz] < 1e-3 * m->sys.frequency_unit) nz++;
   const auto rigid = RigidMotions(m->sys);
   if (nz > 0 && (PetscInt)rigid.size() == nz) {
     for (PetscInt k = 0; k < nz; ++k) { // M^{1/2} v on the free dofs, orthonormal
@@ -80,7 +91,7 @@ void ExactRigidModes(BeamModes *m)
       for (PetscInt d = 0; d < n; ++d) phi[d] = std::sqrt(S.mass[d]) * rigid[k][S.dof[d]];
       ModalOrthonormalize(B.Phi, n, k, 2, phi);
     }
-    for (PetscInt k = nz; k < n; ++k) ModalOrthonormalize(B.Phi, n, nz, 2, &B.Phi[(size_t)k * n]);
+    for (PetscInt k = nz; k < count; ++k) ModalOrthonormalize(B.Phi, n, nz, 2, &B.Phi[(size_t)k * n]);
   }
   PetscReal alpha, beta; // C = alpha M + beta K: a rigid mode decays by alpha alone (K phi = 0)
   S.Rayleigh(&alpha, &beta);
@@ -88,6 +99,13 @@ void ExactRigidModes(BeamModes *m)
     B.omega[k] = 0;
     B.rate[k]  = 0.5 * alpha;
   }
+  m->rigid = nz;
+}
+
+// The truncation as it decides the basis: the kind, the count, the cut-off.
+bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
+{
+  return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) && (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff());
 }
 
 std::deque<std::shared_ptr<const BeamModes>> cache; // most recent first
@@ -95,25 +113,170 @@ PetscInt                                     n_computed = 0, n_reused = 0;
 
 } // namespace
 
+// How far double precision resolves the beam's modes: eps times the spread of M^-1 K over the
+// lowest flexible mode's scale (Gershgorin's bound on its largest eigenvalue over
+// frequency_unit^2: 16 (L/h)^4 for a uniform Euler-Bernoulli beam, 39 at N = 10241, 1e4 at
+// N = 40961). Above kModesPrecisionLimit the static flexibility is lost to round-off and the
+// shift-and-invert solves no longer give the low modes (the ACOR of the paper's beam at
+// N = 40961 was 3e-3 off: docs/convergence.md), so the modes are refused, never used wrong.
+constexpr double kModesPrecisionLimit = 100;
+
+static double ModesPrecisionIndex(const BeamSystem &sys)
+{
+  if (!(sys.frequency_unit > 0) || sys.band.empty()) return 0;
+  double         top = 0;
+  const PetscInt w   = 2 * sys.bw + 1;
+  for (PetscInt i = 0; i < sys.ndof; ++i) {
+    if (!(sys.mass[i] > 0)) continue;
+    double row = 0;
+    for (PetscInt o = 0; o < w; ++o) row += std::abs(sys.band[(size_t)w * i + o]);
+    top = std::max(top, row / sys.mass[i]);
+  }
+  return std::numeric_limits<double>::epsilon() * top / (sys.frequency_unit * sys.frequency_unit);
+}
+
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 {
-  PetscInt n = 0;
   if (!ForceOperatorModal(sys, nullptr, nullptr, why)) return false; // a force term the modes cannot carry (the grip: a drive in time, a damper not proportional)
-  for (PetscInt d = 0; d < sys.ndof; ++d) n += sys.held[d] ? 0 : 1;
-  if (n > BeamModesMaxDofs) {
-    if (why) *why = "the beam has " + std::to_string(n) + " free dofs, above the " + std::to_string(BeamModesMaxDofs) + " of the dense modal decomposition";
+  const double index = ModesPrecisionIndex(sys);
+  if (index > kModesPrecisionLimit) {
+    if (why) {
+      char text[400];
+      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e): fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)",
+                    (int)sys.nodes, index / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon());
+      *why = text;
+    }
     return false;
   }
   return true;
 }
 
+namespace {
+
+// The dense decomposition of every mode, with its memory check (3 n^2 doubles: the matrix,
+// syev's copy and the basis) against half the physical memory.
+PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m)
+{
+  const double n = (double)m->S.n, need = 3 * n * n * sizeof(PetscReal);
+  const long   pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  const double limit = pages > 0 && page > 0 ? 0.5 * (double)pages * (double)page : 8e9;
+
+  PetscFunctionBeginUser;
+  PetscCheck(need <= limit, comm, PETSC_ERR_MEM,
+             "-modal_modes %s: every mode of %" PetscInt_FMT " free dofs needs about %.3g GB for the dense decomposition, above half the physical memory (%.3g GB); use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes",
+             ModalModesText(m->request).c_str(), m->S.n, need / 1e9, limit / 1e9);
+  const double expected = 2e-9 * n * n * n; // s, measured on the development machine (33 s at n = 2561 with the run)
+  if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
+    PetscCall(PetscPrintf(comm, "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT " free dofs, expected to take about %.0f s (-modal_modes auto keeps only the modes the contact moves)\n", m->S.n, expected));
+  m->method = "dense";
+  PetscCall(ModalBasisBuild(m->S, false, &m->B));
+  PetscFunctionReturn(0);
+}
+
+// Keeps the first `keep` columns of the basis.
+void KeepModes(BeamModes *m, PetscInt keep)
+{
+  ModalBasis &B = m->B;
+  B.Phi.resize((size_t)m->S.n * keep);
+  B.omega.resize(keep);
+  B.gamma.resize(keep);
+  B.rate.resize(keep);
+}
+
+// The time model of a partial eigen-solve, s per free dof per mode asked squared (Krylov-Schur's
+// orthogonalisation dominates): measured on the development machine (2 cores, docs/convergence.md).
+constexpr double kPartialSolveCost = 1.2e-8; // 6.6 s for 125 asked of 40961 free dofs, 1.35 s of 10241 (load 8)
+
+// The modes up to `want` (Count) or up to the cut-off w_c (Auto, want < 0) from partial
+// eigen-solves, nev grown until the cut-off is passed; the dense decomposition instead when
+// more than a third of the modes are wanted. Then keeps what was asked.
+PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscReal wc)
+{
+  const PetscInt                      n = m->S.n;
+  const BeamSystem                   &sys = m->sys;
+  std::vector<PetscReal>              lambda;
+  std::vector<std::vector<PetscReal>> phis;
+  PetscInt                            nev = want;
+
+  PetscFunctionBeginUser;
+  if (want < 0) { // beam-like spectrum: w_k ~ unit ((k + 1/2) pi)^2, rigid modes below
+    const PetscReal k = std::sqrt(wc / sys.frequency_unit) / M_PI;
+    nev               = (PetscInt)std::min<PetscReal>((PetscReal)n, 1.2 * k + 6);
+  }
+  for (;;) {
+    if (3 * nev > n || n <= 64) { // dense: cheaper than a Krylov space of that size, and exact
+      PetscCall(DenseModes(comm, m));
+      break;
+    }
+    const double expected = kPartialSolveCost * (double)n * (double)nev * (double)nev; // s
+    if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
+      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
+    PetscCall(BeamModesLowest(comm, sys, nev, m->request.progress, &lambda, &phis));
+    if (want >= 0 || lambda.back() > wc * wc) {
+      m->method = "slepc";
+      std::vector<PetscReal> Phi((size_t)n * nev);
+      for (PetscInt k = 0; k < nev; ++k)
+        for (PetscInt d = 0; d < n; ++d) Phi[d + (size_t)k * n] = std::sqrt(m->S.mass[d]) * phis[k][m->S.dof[d]];
+      PetscCall(ModalBasisFromModes(m->S, lambda, std::move(Phi), &m->B));
+      break;
+    }
+    const PetscReal grow = std::sqrt(wc / std::sqrt(std::max(lambda.back(), (PetscReal)1e-300)));
+    nev                  = std::min<PetscInt>(n, std::max<PetscInt>(2 * nev, (PetscInt)(1.2 * grow * nev) + 8));
+    PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " found below the cut-off %g rad/s; asking for %" PetscInt_FMT "\n", (PetscInt)lambda.size(), (double)wc, nev));
+  }
+  PetscInt keep = m->Count();
+  if (want >= 0) keep = std::min(keep, want);
+  else {
+    keep = 0;
+    while (keep < m->Count() && m->B.omega[keep] <= wc) keep++;
+  }
+  KeepModes(m, std::max<PetscInt>(keep, 1));
+  PetscFunctionReturn(0);
+}
+
+// The basis the request asks for (All: dense; Auto below every mode's bound: dense too).
+PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
+{
+  const ModalTruncation &t = m->request;
+  const PetscInt         n = m->S.n;
+
+  PetscFunctionBeginUser;
+  m->cutoff = PETSC_INFINITY;
+  if (t.modes == ModalModes::All || (t.modes == ModalModes::Count && t.count >= n)) PetscCall(DenseModes(comm, m));
+  else if (t.modes == ModalModes::Count) PetscCall(TruncatedModes(comm, m, t.count, PETSC_INFINITY));
+  else {
+    ContactCoupling none;
+    const PetscReal wc = t.Cutoff(), wmax = BeamSystemMaxFrequencyBound(m->sys, none, 0.0, 0.0);
+    if (!(wc < wmax)) PetscCall(DenseModes(comm, m)); // every mode is below the cut-off: all of them, exactly
+    else {
+      m->cutoff = wc;
+      PetscCall(TruncatedModes(comm, m, -1, wc));
+    }
+  }
+  m->truncated = m->Count() < n;
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
 PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const BeamModes> *modes)
+{
+  ModalTruncation all;
+
+  PetscFunctionBeginUser;
+  all.modes     = ModalModes::All;
+  all.cost_warn = 0;
+  PetscCall(BeamModesShared(PETSC_COMM_SELF, sys, all, modes));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t, std::shared_ptr<const BeamModes> *modes)
 {
   std::string why;
 
   PetscFunctionBeginUser;
   for (auto it = cache.begin(); it != cache.end(); ++it)
-    if (SameBeam((*it)->sys, sys)) {
+    if (SameTruncation((*it)->request, t) && SameBeam((*it)->sys, sys)) {
       *modes = *it;
       if (it != cache.begin()) {
         cache.erase(it);
@@ -122,12 +285,13 @@ PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const Beam
       n_reused++;
       PetscFunctionReturn(0);
     }
-  PetscCheck(BeamModesAvailable(sys, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "the beam's modes: %s", why.c_str());
+  PetscCheck(BeamModesAvailable(sys, &why), comm, PETSC_ERR_SUP, "the beam's modes: %s", why.c_str());
   auto          m  = std::make_shared<BeamModes>();
   const double  w0 = MPI_Wtime();
   m->sys           = sys;
   m->S             = ModalSystemBeamOnly(m->sys);
-  PetscCall(ModalBasisBuild(m->S, false, &m->B));
+  m->request       = t;
+  PetscCall(BeamModesBuild(comm, m.get()));
   ExactRigidModes(m.get());
   m->build_seconds = MPI_Wtime() - w0;
   n_computed++;
@@ -141,6 +305,192 @@ void BeamModesCacheCounts(PetscInt *computed, PetscInt *reused)
 {
   *computed = n_computed;
   *reused   = n_reused;
+}
+
+} // namespace beamimpact
+
+namespace beamimpact {
+
+namespace {
+
+// The temporary supports of the flexibility solve: one deflection dof per rigid mode, chosen
+// so that the rigid modes' values there are independent (each the largest after the earlier
+// ones are eliminated): statically determinate, so a self-equilibrated load has no reactions.
+std::vector<PetscInt> TemporarySupports(const BeamModes &m, const std::vector<std::vector<PetscReal>> &R)
+{
+  const PetscInt                      n = m.S.n;
+  std::vector<PetscInt>               sup;
+  std::vector<std::vector<PetscReal>> r = R;
+  for (size_t i = 0; i < r.size(); ++i) {
+    PetscInt best = -1;
+    for (PetscInt d = 0; d < n; ++d)
+      if (m.S.dof[d] % m.sys.fields == 0 && (best < 0 || std::abs(r[i][d]) > std::abs(r[i][best]))) best = d;
+    sup.push_back(best);
+    for (size_t j = i + 1; j < r.size(); ++j) { // eliminate the chosen dof from the later modes
+      const PetscReal f = r[j][best] / r[i][best];
+      for (PetscInt d = 0; d < n; ++d) r[j][d] -= f * r[i][d];
+    }
+  }
+  return sup;
+}
+
+// u = K^+ f on the free dofs (f self-equilibrated, sup the temporary supports): banded Cholesky
+// of K with the supports' rows and columns replaced by the identity, and two corrections by the
+// residual in the factored form of K (BeamSystemStiffnessApply), whose round-off is relative to
+// K u, not to |K| |u| as the band's (the flexibility of a low mode is ~1/w_1^2, the band's
+// round-off ~eps w_max^2).
+PetscErrorCode FlexibilitySolve(const BeamModes &m, const std::vector<PetscInt> &sup, const std::vector<PetscReal> &f, std::vector<PetscReal> *u)
+{
+  const BeamSystem      &sys = m.sys;
+  const int              n = (int)m.S.n, kd = (int)sys.bw, ldab = kd + 1, one = 1;
+  std::vector<PetscInt>  free_of(sys.ndof, -1), cols(2 * sys.bw + 1);
+  std::vector<PetscReal> vals(2 * sys.bw + 1), ab((size_t)ldab * n, 0.0), y(sys.ndof), Ky(sys.ndof), r(n);
+  std::vector<char>      held(n, 0);
+  int                    info;
+
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < n; ++d) free_of[m.S.dof[d]] = d;
+  for (PetscInt s : sup) held[s] = 1;
+  for (PetscInt d = 0; d < n; ++d) {
+    if (held[d]) {
+      ab[(size_t)d * ldab] = 1.0;
+      continue;
+    }
+    const PetscInt nc = BeamSystemStiffnessRow(sys, m.S.dof[d], cols.data(), vals.data());
+    for (PetscInt q = 0; q < nc; ++q) {
+      const PetscInt c = free_of[cols[q]];
+      if (c <= d && !held[c]) ab[(size_t)(d - c) + (size_t)c * ldab] = vals[q]; // lower band: (row d, column c)
+    }
+  }
+  dpbtrf_("L", &n, &kd, ab.data(), &ldab, &info);
+  PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "the static correction: the supported stiffness is not positive definite (LAPACK dpbtrf, info %d)", info);
+  u->assign(n, 0.0);
+  for (int pass = 0; pass < 3; ++pass) { // u = 0, then two corrections: r = f - K u
+    std::fill(y.begin(), y.end(), 0.0);
+    for (PetscInt d = 0; d < n; ++d) y[m.S.dof[d]] = (*u)[d];
+    BeamSystemStiffnessApply(sys, y.data(), sys.fields, 0, sys.ndof, Ky.data(), sys.fields);
+    for (PetscInt d = 0; d < n; ++d) r[d] = held[d] ? 0.0 : f[d] - Ky[m.S.dof[d]];
+    dpbtrs_("L", &n, &kd, &one, ab.data(), &ldab, r.data(), &n, &info);
+    for (PetscInt d = 0; d < n; ++d) (*u)[d] += r[d];
+  }
+  PetscFunctionReturn(0);
+}
+
+bool SameCoupling(const ContactCoupling &a, const ContactCoupling &b)
+{
+  if (a.n != b.n) return false;
+  for (PetscInt q = 0; q < a.n; ++q)
+    if (a.dof[q] != b.dof[q] || a.w[q] != b.w[q]) return false;
+  return true;
+}
+
+} // namespace
+
+PetscErrorCode BeamModes::StaticCorrection(const ContactCoupling &g, const ModalCorrection **out) const
+{
+  const PetscInt n = S.n, count = Count();
+
+  PetscFunctionBeginUser;
+  for (const auto &c : corrections_)
+    if (SameCoupling(c->g, g)) {
+      *out = c.get();
+      PetscFunctionReturn(0);
+    }
+  auto c = std::make_shared<ModalCorrection>();
+  c->g   = g;
+  if (truncated) {
+    std::vector<PetscReal> f(n, 0.0), u;
+    for (PetscInt d = 0; d < n; ++d)
+      for (PetscInt q = 0; q < g.n; ++q)
+        if (S.dof[d] == g.dof[q]) f[d] += g.w[q];
+    std::vector<std::vector<PetscReal>> R(rigid, std::vector<PetscReal>(n)); // M-orthonormal rigid modes
+    for (PetscInt i = 0; i < rigid; ++i)
+      for (PetscInt d = 0; d < n; ++d) R[i][d] = B.Phi[d + (size_t)i * n] / std::sqrt(S.mass[d]);
+    std::vector<PetscReal> load = f; // less its rigid-body inertia: f - M R R^T f
+    for (const auto &r : R) {
+      PetscReal a = 0;
+      for (PetscInt d = 0; d < n; ++d) a += r[d] * f[d];
+      for (PetscInt d = 0; d < n; ++d) load[d] -= S.mass[d] * r[d] * a;
+    }
+    PetscCall(FlexibilitySolve(*this, TemporarySupports(*this, R), load, &u));
+    for (const auto &r : R) { // M-orthogonal to the rigid modes
+      PetscReal a = 0;
+      for (PetscInt d = 0; d < n; ++d) a += r[d] * S.mass[d] * u[d];
+      for (PetscInt d = 0; d < n; ++d) u[d] -= r[d] * a;
+    }
+    for (PetscInt d = 0; d < n; ++d) c->G += f[d] * u[d];
+    c->ur     = u;
+    PetscReal kept = 0;
+    for (PetscInt k = rigid; k < count; ++k) {
+      const PetscReal *phi = &B.Phi[(size_t)k * n];
+      PetscReal        gk  = 0;
+      for (PetscInt d = 0; d < n; ++d) gk += f[d] * phi[d] / std::sqrt(S.mass[d]);
+      const PetscReal a = gk / (B.omega[k] * B.omega[k]);
+      kept += gk * a;
+      for (PetscInt d = 0; d < n; ++d) c->ur[d] -= a * phi[d] / std::sqrt(S.mass[d]);
+    }
+    c->Gr = std::max<PetscReal>(0.0, c->G - kept);
+  }
+  corrections_.push_back(c);
+  if (corrections_.size() > 64) corrections_.erase(corrections_.begin());
+  *out = c.get();
+  PetscFunctionReturn(0);
+}
+
+const OptionModule &ModalOptionTable()
+{
+  static const OptionModule m = {
+    "modal",
+    "Modal engine: which of the beam's modes the free flight, -ts_type modal and -reference modal keep",
+    {
+      OptionText("-modal_modes",
+                 "all (every mode: the dense decomposition, the exact check), auto (the modes up to the cut-off pi/(T sqrt(-modal_tolerance)), T the contact time scale; the rest through the static correction at the contact point) or a number K (the K lowest)",
+                 "auto"),
+      OptionReal("-modal_tolerance", "1", "-modal_modes auto: the quasi-static error (pi/(omega T))^2 allowed for a mode left out; sets the cut-off", "1e-9", Between(0, 1e-2, true, false)),
+    },
+  };
+  return m;
+}
+
+std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
+{
+  char buf[512];
+  char cut[64] = "none";
+  if (m.cutoff < PETSC_INFINITY) std::snprintf(cut, sizeof cut, "%.4g Hz", (double)(m.cutoff / (2 * M_PI)));
+  std::snprintf(buf, sizeof buf, "modal engine: %d of %d modes (cut-off %s, -modal_modes %s, -modal_tolerance %g; %s, %.3g s)", (int)m.Count(), (int)m.S.n, cut, ModalModesText(m.request).c_str(),
+                (double)m.request.tolerance, m.method.c_str(), m.build_seconds);
+  std::string s = buf;
+  if (c && m.truncated) {
+    std::snprintf(buf, sizeof buf, ", static correction G_r = %.4g m/N (G_r/G = %.3g)", (double)c->Gr, (double)(c->G > 0 ? c->Gr / c->G : 0.0));
+    s += buf;
+  }
+  return s;
+}
+
+PetscReal BeamModesCutoffHz(const BeamModes &m) { return m.cutoff < PETSC_INFINITY ? m.cutoff / (2 * M_PI) : std::numeric_limits<PetscReal>::quiet_NaN(); }
+
+std::string ModalModesText(const ModalTruncation &t) { return t.modes == ModalModes::All ? "all" : t.modes == ModalModes::Auto ? "auto" : std::to_string(t.count); }
+
+PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t)
+{
+  const OptionModule &T    = ModalOptionTable();
+  std::string         text = ModalModesText(*t);
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-modal_modes", &text, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-modal_tolerance", &t->tolerance, NULL));
+  PetscOptionsEnd();
+  if (text == "all") t->modes = ModalModes::All;
+  else if (text == "auto") t->modes = ModalModes::Auto;
+  else {
+    char *end   = nullptr;
+    long  count = std::strtol(text.c_str(), &end, 10);
+    PetscCheck(end && *end == '\0' && !text.empty() && count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modal_modes %s is not allowed: use all, auto or a whole number of modes >= 1", text.c_str());
+    t->modes = ModalModes::Count;
+    t->count = (PetscInt)count;
+  }
+  PetscFunctionReturn(0);
 }
 
 } // namespace beamimpact

@@ -1,50 +1,113 @@
 // The modes of the beam alone, as supported (any theory and profile, held dofs and clamped
-// regions, Rayleigh damping): K phi = w^2 M phi on the free dofs, every mode (no truncation),
-// with each mode's decay rate sigma = alpha/2 + beta w^2/2 (C = alpha M + beta K is diagonal
-// in this basis, so the damped free vibration is exact mode by mode: ModalModeAt).
+// regions, Rayleigh damping): K phi = w^2 M phi on the free dofs, with each mode's decay rate
+// sigma = alpha/2 + beta w^2/2 (C = alpha M + beta K is diagonal in this basis, so the damped
+// free vibration is exact mode by mode: ModalModeAt).
+//
+// All of them or the lowest (-modal_modes all|auto|K, -modal_tolerance; docs/model.md §12):
+//   all   every mode: dense LAPACK syev of M^{-1/2} K M^{-1/2}, refined by banded inverse
+//         iteration (solvers/modal_basis.hpp), exact to round-off; time and memory ~ n^3, n^2.
+//   auto  the modes up to the cut-off w_c = pi / (T sqrt(tol)) (T the contact's time scale):
+//         a mode above it responds to a load of duration T quasi-statically to (pi/(w T))^2 <=
+//         tol, so it is left to the static correction (BeamModesStaticCorrection). When w_c
+//         is above every mode (the Gershgorin bound of the system) this is `all`.
+//   K     the K lowest modes (rigid ones included).
+// A truncated basis comes from a partial eigen-solve (BeamModesLowest: SLEPc Krylov-Schur,
+// shift-and-invert with the factorization of the banded K, nev grown until the cut-off is
+// passed; O(n k) memory and O(n k^2) time), refined as the dense one, or from the dense
+// decomposition when the kept modes are more than a third of them (cheaper and exact).
 //
 // Computed once per beam and shared: BeamModesShared keeps the last few bases in a small
 // cache of this process keyed by the system's content (nodes, fields, masses, held dofs, the
-// bands of K and C of the force operator, compared exactly), so every point of a sweep, every run of a
-// study and every repetition of a scene that builds the same BeamSystem reuses one
-// decomposition; a different beam (grid, theory, support, damping) is a new entry. The ball
-// and the impact point are not in the key: the ball is free after separation and the impact
-// point enters only through the coupling (gamma_k = g^T phi_k), which costs O(n) per run.
-//
-// Method: dense LAPACK syev of M^{-1/2} K M^{-1/2}, refined by banded inverse iteration
-// (solvers/modal_basis.hpp), which is exact to round-off for every mode. The whole spectrum
-// is kept: the state after a separation has content in every mode and the restart state
-// must be exact, so nothing is truncated; beyond BeamModesMaxDofs free dofs the dense
-// decomposition is refused (the caller then integrates in time and says why).
+// bands of K and C of the force operator, compared exactly) and the truncation (modes kept,
+// cut-off), so every point of a sweep, every run of a study and every repetition of a scene
+// that builds the same BeamSystem reuses one decomposition. The ball and the impact point are
+// not in the key: the ball is free after separation and the impact point enters only through
+// the coupling (gamma_k = g^T phi_k, O(n) per run) and the static correction at the point
+// (one banded solve, cached per point in the basis).
 #pragma once
 
+#include "base/option_table.hpp"
 #include "solvers/modal_basis.hpp"
 #include "system/beam_system.hpp"
 
 #include <petscsys.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
 namespace beamimpact {
 
-struct BeamModes {
-  BeamSystem  sys; // the copy the basis was built from (S.sys points here)
-  ModalSystem S;   // the beam's free dofs (no ball)
-  ModalBasis  B;   // omega, Phi (S.n x S.n, of M^{-1/2} K M^{-1/2}), rate; gamma unused (0)
-  double      build_seconds = 0;
+// Which modes the engine keeps (-modal_modes, -modal_tolerance) and the scales that choose them.
+enum class ModalModes { All, Auto, Count };
+struct ModalTruncation {
+  ModalModes modes        = ModalModes::Auto;
+  PetscInt   count        = 0;    // Count: modes kept (rigid ones included)
+  PetscReal  tolerance    = 1e-9; // 1: Auto, the quasi-static error allowed per mode left out
+  PetscReal  contact_time = 0;    // s: Auto, the contact's time scale T (ContactTimeScale)
+  PetscReal  cost_warn    = 30;   // s: a cost line before a decomposition expected to take longer
+  PetscReal  progress     = 10;   // s: a progress line this often during a partial solve (0: none)
+  // rad/s: the cut-off of Auto, pi / (T sqrt(tol)); infinite for All and Count
+  PetscReal Cutoff() const { return modes == ModalModes::Auto && contact_time > 0 ? M_PI / (contact_time * std::sqrt(tolerance)) : PETSC_INFINITY; }
+};
+// -modal_modes and -modal_tolerance: the modal engine's table (registered by app/registry.cpp).
+const OptionModule &ModalOptionTable();
+// Reads them (T, cost_warn and progress are the caller's).
+PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t);
+// "all", "auto" or the count, for messages and the run record.
+std::string ModalModesText(const ModalTruncation &t);
+
+// The static correction at a contact point (docs/model.md §12): with f the coupling (the
+// point's weights on the free dofs), G = f^T K^+ f the flexibility on the flexible subspace
+// (one banded Cholesky solve with temporary supports under the load less its rigid-body
+// inertia, then made M-orthogonal to the rigid modes) and G_r = G - sum over the kept
+// flexible modes of gamma_k^2 / w_k^2 what the modes left out contribute, quasi-statically:
+// the point moves by -G_r F more than the kept modes say. 0 for an untruncated basis.
+struct ModalCorrection {
+  ContactCoupling        g;      // the point
+  PetscReal              G  = 0; // m/N: flexibility at the point (flexible subspace)
+  PetscReal              Gr = 0; // m/N: its residual part, the modes left out
+  std::vector<PetscReal> ur;     // m/N per free dof: the static shape of the modes left out per unit force
 };
 
-// Largest number of free beam dofs the dense decomposition accepts (time and memory ~ n^3, n^2).
-constexpr PetscInt BeamModesMaxDofs = 3000;
+struct BeamModes {
+  BeamSystem      sys;     // the copy the basis was built from (S.sys points here)
+  ModalSystem     S;       // the beam's free dofs (no ball)
+  ModalBasis      B;       // omega, Phi (S.n x Count(), of M^{-1/2} K M^{-1/2}), rate; gamma unused (0)
+  ModalTruncation request; // as asked
+  PetscInt        rigid     = 0;              // rigid modes among the kept
+  PetscReal       cutoff    = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
+  bool            truncated = false;          // fewer modes than free dofs
+  std::string     method;                     // "dense" or "slepc"
+  double          build_seconds = 0;
+  PetscInt        Count() const { return (PetscInt)B.omega.size(); }
+  // The static correction at the point of coupling g (computed on first use, then cached).
+  PetscErrorCode StaticCorrection(const ContactCoupling &g, const ModalCorrection **c) const;
 
-// Whether the beam's free vibration can be propagated exactly in modes; if not, *why says so.
+private:
+  mutable std::vector<std::shared_ptr<ModalCorrection>> corrections_;
+};
+
+// One line: the modes kept of the free dofs, the cut-off, how they were found and in what time,
+// and (c given) the static correction at the point: "modal engine: 98 of 641 modes (cut-off
+// 17.6 kHz, -modal_modes auto, -modal_tolerance 1e-06; slepc, 0.41 s), static correction G_r/G = 3.1e-05".
+std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c = nullptr);
+
+// The cut-off that chose the modes (Hz), NaN when none did (-modal_modes all or K, or a cut-off
+// above every mode).
+PetscReal BeamModesCutoffHz(const BeamModes &m);
+
+// Whether the beam's free vibration can be propagated exactly in modes (the force terms are
+// modal: no grip); if not, *why says so. Any size: a truncated basis has no size limit, the
+// dense one a memory check (BeamModesShared).
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why);
 
 // The beam's modes, from the cache when the same system was decomposed before in this
-// process, else computed and cached (the last BeamModesCacheSize systems are kept).
+// process with the same truncation, else computed (collectively on comm) and cached (the last
+// BeamModesCacheSize are kept). The first form: every mode (ModalModes::All), on PETSC_COMM_SELF.
 constexpr int  BeamModesCacheSize = 4;
 PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const BeamModes> *modes);
+PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t, std::shared_ptr<const BeamModes> *modes);
 // Cache statistics (for tests): decompositions computed and reused since the process started.
 void BeamModesCacheCounts(PetscInt *computed, PetscInt *reused);
 

@@ -192,10 +192,11 @@ int BandHalfWidth(const ModalSystem &S)
   return (int)std::max(S.sys->bw, last - first) + 1;
 }
 
-// Modified Gram-Schmidt on the columns of Phi (n x n), in order.
+// Modified Gram-Schmidt on the columns of Phi (n rows), in order.
 void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
 {
-  for (PetscInt k = 0; k < n; ++k) ModalOrthonormalize(Phi, n, k, 1, &Phi[k * n]);
+  const PetscInt count = (PetscInt)(Phi.size() / n);
+  for (PetscInt k = 0; k < count; ++k) ModalOrthonormalize(Phi, n, k, 1, &Phi[k * n]);
 }
 
 } // namespace
@@ -213,9 +214,10 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   const std::vector<int>       pos     = BandOrder(S);
   const std::vector<BandEntry> entries = BandEntries(S, contact);
   const PetscReal              scale   = *std::max_element(lambda.begin(), lambda.end());
+  const PetscInt               count   = (PetscInt)lambda.size(); // the columns of Phi
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < n; ++k) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
+  for (PetscInt k = 0; k < count; ++k) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
   GramSchmidt(n, B->Phi);
   PetscFunctionReturn(0);
 }
@@ -281,7 +283,7 @@ static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
   PetscReal              alpha, beta;
   S.Rayleigh(&alpha, &beta);
   const bool damped = alpha != 0 || beta != 0;
-  for (PetscInt k = 0; k < n; ++k) {
+  for (PetscInt k = 0; k < (PetscInt)B->omega.size(); ++k) {
     const PetscReal *phi = &B->Phi[k * n];
     std::fill(shape.begin(), shape.end(), 0.0);
     PetscReal norm = 0, c = 0, beam_norm = 0;
@@ -330,6 +332,21 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   PetscCall(RefineBasis(S, contact, w, B));
   if (!contact && damped && S.ball) IsolateBall(S, w, B);
   ModalQuotients(S, contact, B);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B)
+{
+  const PetscInt count = (PetscInt)lambda.size();
+
+  PetscFunctionBeginUser;
+  PetscCheck(!S.ball && (PetscInt)Phi.size() == S.n * count, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "ModalBasisFromModes: the beam's free dofs (%" PetscInt_FMT ") times %" PetscInt_FMT " modes", S.n, count);
+  B->Phi = std::move(Phi);
+  B->omega.assign(count, 0.0);
+  B->gamma.assign(count, 0.0);
+  B->rate.assign(count, 0.0);
+  PetscCall(RefineBasis(S, false, lambda, B));
+  ModalQuotients(S, false, B);
   PetscFunctionReturn(0);
 }
 

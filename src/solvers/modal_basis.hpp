@@ -52,8 +52,8 @@ void ModalOrthonormalize(const std::vector<PetscReal> &Phi, PetscInt n, PetscInt
 
 // One phase's eigen-decomposition of M^{-1/2} K_p M^{-1/2}.
 struct ModalBasis {
-  std::vector<PetscReal> omega; // rad/s, per mode
-  std::vector<PetscReal> Phi;   // n x n, column-major: Phi[r + k n] (orthonormal eigenvectors)
+  std::vector<PetscReal> omega; // rad/s, per mode (n, or the modes kept of a truncated basis)
+  std::vector<PetscReal> Phi;   // n x modes, column-major: Phi[r + k n] (orthonormal eigenvectors)
   std::vector<PetscReal> gamma; // g^T M^{-1/2} Phi_k: contribution of mode k to c
   std::vector<PetscReal> rate;  // 1/s, sigma_k = zeta_k omega_k: z_k'' + 2 sigma_k z_k' + omega_k^2 z_k = 0
 };
@@ -62,6 +62,13 @@ struct ModalBasis {
 // decouples it exactly (sigma = alpha/2 + beta omega^2/2 a beam mode, alpha/2 a rigid one, 0
 // the ball's); in contact it does not (the ball and the spring are undamped): PETSC_ERR_SUP.
 PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B);
+
+// The beam alone (S from ModalSystemBeamOnly), from `count` of its modes found elsewhere (a
+// partial eigen-solve): Phi (S.n x count, column-major) the columns M^{1/2} phi_k, lambda their
+// omega^2 estimates (ascending). Refined as ModalBasisBuild refines the dense basis (inverse
+// iteration corrected in the factored form, modified Gram-Schmidt, Rayleigh quotients and
+// decay rates): omega, Phi, rate of count modes.
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B);
 
 // Mode (omega w, rate sigma) from z, zd at s = 0: z and z' at s, exact for every damping
 // (under-, critically and overdamped, rigid). Bound: sup over s >= 0 of |d^p z / ds^p|.

@@ -306,6 +306,58 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   PetscFunctionReturn(0);
 }
 
+// Progress of a partial solve: a line every `every` seconds of wall time (0: none).
+struct ModesProgress {
+  PetscReal every = 0, start = 0, last = 0;
+  PetscInt  want  = 0;
+};
+
+static PetscErrorCode ModesProgressMonitor(EPS eps, PetscInt its, PetscInt nconv, PetscScalar *, PetscScalar *, PetscReal *, PetscInt, void *ctx)
+{
+  ModesProgress  *p   = static_cast<ModesProgress *>(ctx);
+  const PetscReal now = MPI_Wtime();
+
+  PetscFunctionBeginUser;
+  if (p->every > 0 && now - p->last >= p->every) {
+    p->last = now;
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)eps), "beamimpact: the beam's modes: %" PetscInt_FMT " of %" PetscInt_FMT " converged after %" PetscInt_FMT " restarts, %.1f s\n", nconv, p->want, its,
+                          (double)(now - p->start)));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
+{
+  ModesProblem  pb;
+  EPS           eps;
+  PetscInt      nconv;
+  ModesProgress prog;
+
+  PetscFunctionBeginUser;
+  PetscCall(ModesEnsureSlepc());
+  PetscCall(ModesProblemAssemble(comm, op, count, &pb));
+  PetscCall(ModesSolverCreate(comm, pb, count, op.frequency_unit, &eps));
+  prog.every = progress;
+  prog.start = prog.last = MPI_Wtime();
+  prog.want              = count;
+  PetscCall(EPSMonitorSet(eps, ModesProgressMonitor, &prog, NULL));
+  PetscCall(EPSSolve(eps));
+  PetscCall(EPSGetConverged(eps, &nconv));
+  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "the beam's modes: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest modes (-modal_modes, -modal_tolerance)", nconv, count);
+  PetscCall(ModesExtract(comm, eps, op, pb, count, lambda, phis));
+  PetscCall(EPSDestroy(&eps));
+  PetscCall(ModesProblemDestroy(&pb));
+  std::vector<PetscInt> order(count); // ascending, as the solver's up to round-off among nearly equal modes
+  for (PetscInt m = 0; m < count; ++m) order[m] = m;
+  std::stable_sort(order.begin(), order.end(), [&](PetscInt a, PetscInt b) { return (*lambda)[a] < (*lambda)[b]; });
+  std::vector<PetscReal>              l(count);
+  std::vector<std::vector<PetscReal>> v(count);
+  for (PetscInt m = 0; m < count; ++m) l[m] = (*lambda)[order[m]], v[m] = std::move((*phis)[order[m]]);
+  *lambda = std::move(l);
+  *phis   = std::move(v);
+  PetscFunctionReturn(0);
+}
+
 std::vector<PetscReal> ModeNodes(const std::vector<PetscReal> &w, PetscReal h)
 {
   std::vector<PetscReal> x;

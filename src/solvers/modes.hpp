@@ -74,6 +74,13 @@ PetscInt BeamFreeDofCount(const BeamSystem &op);
 PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out,
                                 std::vector<std::vector<PetscReal>> *shapes = nullptr);
 
+// The `count` lowest modes of op for the modal engine (solvers/beam_modes.hpp): the same
+// shift-and-invert Krylov-Schur solve (SLEPc, on comm, the factorization of K + unit^2 M by
+// PETSc's LU, MUMPS on more ranks), ascending, each omega^2 the Rayleigh quotient of the strain
+// energy, each vector over all dofs, mass-normalised (0 at held dofs; signs as the solver's).
+// progress > 0: a line every `progress` seconds while the solver runs.
+PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis);
+
 // Rigid modes the held dofs allow, for any supports, clamped region or pivot: 2 (w = a + b x,
 // and psi = b for a second field) minus the rank of the constraints the held dofs put on
 // (a, b): a held deflection at x gives a + b x = 0, a held rotation b = 0.

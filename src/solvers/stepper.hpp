@@ -7,6 +7,7 @@
 
 #include <petscsys.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -46,8 +47,12 @@ struct IntegratorInfo {
   bool        fixed_step = false;  // the step is fixed (-ts_adapt_type none): dt_nominal throughout
 };
 
+struct BeamModes;
+
 class Stepper {
 public:
+  // The modal engine's basis when the stepper is one (-ts_type modal), else null.
+  virtual std::shared_ptr<const BeamModes> Modes() const { return nullptr; }
   virtual ~Stepper() = default;
   virtual MPI_Comm       Comm() const   = 0;
   virtual std::string    Method() const = 0; // for messages: "-ts_type cn", "leapfrog"

@@ -4,6 +4,7 @@
 
 #include "solvers/beam_modes.hpp"
 #include "solvers/ts_problem.hpp"
+#include "model/contact.hpp"
 
 #include <petsc/private/tsimpl.h>
 
@@ -126,7 +127,10 @@ struct ModalTS {
   // Set up once (TSSetUp_Modal).
   TSProblem                       *P = nullptr;
   std::shared_ptr<const BeamModes> modes;
-  PetscInt                         n = 0;                      // modes (= free beam dofs)
+  PetscInt                         n = 0;                      // modes kept (all: the free beam dofs)
+  PetscInt                         nd = 0;                     // free beam dofs (the rows of Phi)
+  const ModalCorrection           *corr = nullptr;             // the static correction at the point (Gr = 0: every mode kept)
+  PetscReal                        Gr = 0;                     // m/N: its residual flexibility
   std::vector<PetscReal>           gamma, omega, sigma;        // per mode
   std::vector<PetscReal>           isqm;                       // 1/sqrt(m) per free dof
   std::vector<PetscInt>            free_of;                    // beam dof -> free dof (-1: held)
@@ -136,7 +140,7 @@ struct ModalTS {
   // gamma . z and its rate at the current state (c_valid) and at the start of the last step.
   std::vector<PetscReal> z, zd, z0, zd0;
   PetscReal              yb = 0, vb = 0, yb0 = 0, vb0 = 0;
-  PetscReal              c = 0, cd = 0, c0 = 0, cd0 = 0;
+  PetscReal              c = 0, cd = 0, c0 = 0, cd0 = 0; // the kept modes' part y_b - gamma . z (CompressionNow adds the static correction)
   bool                   c_valid = false;
   bool                   have_modal = false, have_step = false;
   // The physical vector ts->vec_sol: whether it holds the modal state (phys_valid), the
@@ -285,6 +289,21 @@ PetscReal ModalCompression(const ModalTS &m, PetscReal *cdot)
   return c;
 }
 
+// The compression c = c_m - G_r F(c) with the modes left out (c_m = y_b - gamma . z, the kept
+// modes'; docs/model.md §12), by Newton on the scalar equation, and its rate c_m' / (1 + G_r k(c)).
+PetscReal StaticallyCorrected(const ModalTS &m, PetscReal cm, PetscReal cmd, PetscReal *cdot)
+{
+  const TSProblem &P = *m.P;
+  PetscReal        c = cm;
+  for (int it = 0; it < 50; ++it) {
+    const PetscReal r = c - cm + m.Gr * ContactForce(P.ball, *P.contact, c), dc = r / (1 + m.Gr * ContactStiffness(P.ball, *P.contact, c));
+    c -= dc;
+    if (!(std::abs(dc) > 1e-15 * std::abs(c))) break;
+  }
+  if (cdot) *cdot = cmd / (1 + m.Gr * ContactStiffness(P.ball, *P.contact, c));
+  return c;
+}
+
 // The compression and its rate at the current modal state (cached until the state changes).
 PetscReal CompressionNow(ModalTS &m, PetscReal *cdot)
 {
@@ -292,6 +311,7 @@ PetscReal CompressionNow(ModalTS &m, PetscReal *cdot)
     m.c       = ModalCompression(m, &m.cd);
     m.c_valid = true;
   }
+  if (m.Gr > 0) return StaticallyCorrected(m, m.c, m.cd, cdot);
   if (cdot) *cdot = m.cd;
   return m.c;
 }
@@ -335,9 +355,10 @@ static void StageForces(ModalTS &m, const StepWeights &W, PetscInt s, const Pets
     for (PetscInt i = 1; i < s; ++i) {
       c[i] = cfree[i];
       for (PetscInt j = 0; j < s; ++j) c[i] -= W.W[i][j] * F[j];
+      if (m.Gr > 0) c[i] -= m.Gr * F[i]; // the modes left out, quasi-statically
       const PetscReal k = ContactStiffness(P.ball, *P.contact, c[i]);
       r[i - 1]          = F[i] - ContactForce(P.ball, *P.contact, c[i]);
-      for (PetscInt l = 1; l < s; ++l) J[i - 1][l - 1] = (i == l ? 1.0 : 0.0) + k * W.W[i][l];
+      for (PetscInt l = 1; l < s; ++l) J[i - 1][l - 1] = (i == l ? 1.0 + k * m.Gr : 0.0) + k * W.W[i][l];
     }
     P.count.func++;
     PetscReal d[2];
@@ -442,7 +463,7 @@ PetscErrorCode Project(TS ts)
 {
   ModalTS        &m = *Data(ts);
   const TSLayout &L = m.P->L;
-  const PetscInt  nf = L.fields, n = m.n;
+  const PetscInt  nf = L.fields, n = m.nd, nm = m.n; // free dofs, modes
   Vec             X  = ts->vec_sol;
 
   PetscFunctionBeginUser;
@@ -463,8 +484,8 @@ PetscErrorCode Project(TS ts)
   m.yb = u[L.BallIndex(0)];
   m.vb = u[L.BallIndex(1)];
   PetscCall(VecRestoreArrayRead(m.all, &u));
-  m.z.assign(n, 0.0);
-  m.zd.assign(n, 0.0);
+  m.z.assign(nm, 0.0);
+  m.zd.assign(nm, 0.0);
   const PetscReal *Phi  = m.modes->B.Phi.data();
   bool             rest = true; // the beam at rest and undeformed (the start of an impact): z = 0, no O(n^2) work
   for (PetscInt i = 0; i < n && rest; ++i) rest = sy[i] == 0.0 && sv[i] == 0.0;
@@ -472,7 +493,7 @@ PetscErrorCode Project(TS ts)
     // Two dot products per mode, four modes at a time (eight independent sums, each in the
     // order of the plain loop: the same values).
     PetscInt k = 0;
-    for (; k + 4 <= n; k += 4) {
+    for (; k + 4 <= nm; k += 4) {
       const PetscReal *p0 = Phi + (size_t)k * n, *p1 = p0 + n, *p2 = p1 + n, *p3 = p2 + n;
       PetscReal        a0 = 0, a1 = 0, a2 = 0, a3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0;
       for (PetscInt i = 0; i < n; ++i) {
@@ -485,7 +506,7 @@ PetscErrorCode Project(TS ts)
       m.z[k] = a0, m.z[k + 1] = a1, m.z[k + 2] = a2, m.z[k + 3] = a3;
       m.zd[k] = b0, m.zd[k + 1] = b1, m.zd[k + 2] = b2, m.zd[k + 3] = b3;
     }
-    for (; k < n; ++k) {
+    for (; k < nm; ++k) {
       const PetscReal *phi = Phi + (size_t)k * n;
       PetscReal        a = 0, b = 0;
       for (PetscInt i = 0; i < n; ++i) {
@@ -583,7 +604,7 @@ PetscErrorCode Sync(TS ts)
   PetscFunctionBeginUser;
   if (!m.P || !X) PetscFunctionReturn(0); // not set up yet: nothing to write
   const TSLayout &L = m.P->L;
-  const PetscInt  nf = L.fields, n = m.n;
+  const PetscInt  nf = L.fields, n = m.nd, nm = m.n; // free dofs, modes
   PetscCall(Reconcile(ts));
   if (m.phys_valid) PetscFunctionReturn(0);
   // The owned beam dofs [D0, D1) are a contiguous range [i0, i1) of free dofs.
@@ -601,7 +622,7 @@ PetscErrorCode Sync(TS ts)
   // y += phi_k z_k over the modes, four at a time (each entry summed in the order of the
   // plain loop over k: the same values).
   PetscInt k = 0;
-  for (; k + 4 <= n; k += 4) {
+  for (; k + 4 <= nm; k += 4) {
     const PetscReal *p0 = Phi + (size_t)k * n, *p1 = p0 + n, *p2 = p1 + n, *p3 = p2 + n;
     const PetscReal  z0 = m.z[k], z1 = m.z[k + 1], z2 = m.z[k + 2], z3 = m.z[k + 3];
     const PetscReal  d0 = m.zd[k], d1 = m.zd[k + 1], d2 = m.zd[k + 2], d3 = m.zd[k + 3];
@@ -610,12 +631,17 @@ PetscErrorCode Sync(TS ts)
       v[i] = (((v[i] + p0[i] * d0) + p1[i] * d1) + p2[i] * d2) + p3[i] * d3;
     }
   }
-  for (; k < n; ++k) {
+  for (; k < nm; ++k) {
     const PetscReal *phi = Phi + (size_t)k * n, zk = m.z[k], zdk = m.zd[k];
     for (PetscInt i = 0; i < ni; ++i) {
       y[i] += phi[i] * zk;
       v[i] += phi[i] * zdk;
     }
+  }
+  if (m.Gr > 0) { // the modes left out, quasi-statically: their static shape under the force (their velocity left out)
+    const PetscReal F = ContactForce(m.P->ball, *m.P->contact, CompressionNow(m, nullptr));
+    if (F != 0.0)
+      for (PetscInt i = 0; i < ni; ++i) y[i] += m.corr->ur[i0 + i] * F / m.isqm[i0 + i];
   }
   PetscCall(TSStateWriteBegin(L, X, &o));
   for (PetscInt d = L.D0(); d < L.D1(); ++d) {
@@ -650,7 +676,9 @@ PetscErrorCode TSStep_Modal(TS ts)
   m.zd0.assign(m.zd.begin(), m.zd.end());
   m.yb0       = m.yb;
   m.vb0       = m.vb;
-  m.c0        = CompressionNow(m, &m.cd0);
+  CompressionNow(m, nullptr); // m.c, m.cd valid: the kept modes' part (rolled back as it is)
+  m.c0        = m.c;
+  m.cd0       = m.cd;
   m.have_step = true;
   StepBy(m, h);
   m.phys_valid = false;
@@ -750,13 +778,19 @@ PetscErrorCode TSSetUp_Modal(TS ts)
   m.P                  = static_cast<TSProblem *>(ctx);
   const BeamSystem &sys = *m.P->sys;
   PetscCheck(BeamModesAvailable(sys, &why), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP, "-ts_type modal needs the beam's modes: %s; use another -ts_type", why.c_str());
-  PetscCall(BeamModesShared(sys, &m.modes));
+  {
+    ModalTruncation tr;
+    PetscCall(ModalTruncationFromOptions(PetscObjectComm((PetscObject)ts), &tr));
+    tr.contact_time = ContactTimeScale(m.P->ball);
+    PetscCall(BeamModesShared(PetscObjectComm((PetscObject)ts), sys, tr, &m.modes));
+  }
   const ModalSystem &S = m.modes->S;
   const ModalBasis  &B = m.modes->B;
   const PetscInt     n = S.n;
-  m.n                  = n;
+  m.n                  = m.modes->Count();
+  m.nd                 = n;
   m.omega              = B.omega;
-  m.sigma              = B.rate.empty() ? std::vector<PetscReal>(n, 0.0) : B.rate;
+  m.sigma              = B.rate.empty() ? std::vector<PetscReal>(m.n, 0.0) : B.rate;
   m.isqm.resize(n);
   m.free_of.assign(sys.ndof, -1);
   // gamma_k = sum over the coupled dofs of w_q phi_k[d_q] / sqrt(m_{d_q}).
@@ -772,13 +806,16 @@ PetscErrorCode TSSetUp_Modal(TS ts)
   std::vector<PetscInt> coupled;
   for (PetscInt i = 0; i < n; ++i)
     if (gw[i] != 0.0) coupled.push_back(i);
-  m.gamma.assign(n, 0.0);
-  for (PetscInt k = 0; k < n; ++k) {
+  m.gamma.assign(m.n, 0.0);
+  for (PetscInt k = 0; k < m.n; ++k) {
     const PetscReal *phi = &B.Phi[(size_t)k * n];
     PetscReal        c   = 0;
     for (PetscInt i : coupled) c += phi[i] * gw[i];
     m.gamma[k] = c;
   }
+  PetscCall(m.modes->StaticCorrection(g, &m.corr));
+  m.Gr = m.corr->Gr;
+  PetscCall(PetscInfo(ts, "%s\n", BeamModesSummary(*m.modes, m.corr).c_str()));
   m.weights.clear();
   m.have_modal = m.have_step = m.phys_valid = m.c_valid = false;
   PetscFunctionReturn(0);
@@ -807,6 +844,8 @@ PetscErrorCode TSView_Modal(TS ts, PetscViewer viewer)
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
+  if (ascii)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  %s\n", m.modes ? BeamModesSummary(*m.modes, m.corr).c_str() : "modes not built yet"));
   if (ascii)
     PetscCall(PetscViewerASCIIPrintf(viewer, "  Modal (beamimpact): exact beam flow in %" PetscInt_FMT " modes, contact force by %s collocation (order %" PetscInt_FMT "); %" PetscInt_FMT " step lengths weighted, %" PetscInt_FMT " projections, %" PetscInt_FMT " syncs of the physical state, %" PetscInt_FMT " writes kept (round-off), %" PetscInt_FMT " unconverged force solves\n",
                                      m.n, m.order == 2 ? "trapezoidal" : "3-point Lobatto", m.order, m.weight_sets, m.projections, m.syncs, m.kept, m.newton_fail));
@@ -873,6 +912,13 @@ PetscErrorCode TSModalDissipationRate(TS ts, PetscReal *rate, PetscReal *rate_do
   *done = f ? PETSC_TRUE : PETSC_FALSE;
   if (f) PetscCall((*f)(ts, rate, rate_dot));
   PetscFunctionReturn(0);
+}
+
+std::shared_ptr<const BeamModes> TSModalModes(TS ts)
+{
+  const char *type = nullptr;
+  if (!ts || TSGetType(ts, &type) || !type || !TSModalIsType(type) || !ts->data) return nullptr;
+  return Data(ts)->modes;
 }
 
 } // namespace beamimpact

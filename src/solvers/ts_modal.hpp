@@ -30,10 +30,15 @@
 //
 // Requires the beamimpact problem in its explicit form (TSSetRHSFunction with TSRHSExplicit,
 // ts_problem.hpp; FormulationOfType gives it) and a beam whose modes are available
-// (BeamModesAvailable: at most BeamModesMaxDofs free dofs, proportional damping).
+// (BeamModesAvailable: proportional damping, no grip; the modes kept by -modal_modes, -modal_tolerance,
+// with the static correction at the contact point: docs/model.md §12).
 #pragma once
 
+#include "solvers/beam_modes.hpp"
+
 #include <petscts.h>
+
+#include <memory>
 
 #define TSMODAL "modal"
 
@@ -49,5 +54,7 @@ PetscErrorCode TSModalSyncSolution(TS ts);
 PetscErrorCode TSModalCompression(TS ts, PetscReal *c, PetscReal *cdot, PetscBool *done);
 // Damped beam: P = v^T C v = sum_k 2 sigma_k zd_k^2 and dP/dt = 2 a^T C v at the current state.
 PetscErrorCode TSModalDissipationRate(TS ts, PetscReal *rate, PetscReal *rate_dot, PetscBool *done);
+// The beam's modes the TS integrates in (null for any other type, or before its set-up).
+std::shared_ptr<const BeamModes> TSModalModes(TS ts);
 
 } // namespace beamimpact

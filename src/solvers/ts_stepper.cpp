@@ -166,6 +166,7 @@ public:
   }
   MPI_Comm    Comm() const override { return P.L.comm; }
   std::string Method() const override { return "-ts_type " + info.ts_type; }
+  std::shared_ptr<const BeamModes> Modes() const override { return TSModalModes(ts); }
   std::string StepOption() const override { return fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol"; }
   PetscReal   Time() const override
   {
