@@ -54,6 +54,8 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
+      OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass)", "", Positive()),
+      OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
     },
   };
   return m;
@@ -90,7 +92,7 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   const OptionModule &T = BeamOptionTable();
   std::string         left = p->left.Name(), right = p->right.Name();
   std::vector<PetscReal> clamp, grip;
-  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE;
+  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE, sethoop = PETSC_FALSE, sethoopmass = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
@@ -120,7 +122,12 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_stiffness", &p->grip.stiffness, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_damping", &p->grip.damping, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_mass", &p->grip.mass, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();
+  PetscCheck(sethoop == sethoopmass, comm, PETSC_ERR_ARG_WRONGSTATE, "%s %g without %s is not allowed: the hoop oscillator needs its frequency (Hz) and its mass (kg)", sethoop ? "-barrel_hoop_frequency" : "-barrel_hoop_mass",
+             (double)(sethoop ? p->hoop.frequency : p->hoop.mass), sethoop ? "-barrel_hoop_mass" : "-barrel_hoop_frequency");
+  p->hoop.on = sethoop;
 
   PetscCheck(SupportFind(left, &p->left) && SupportFind(right, &p->right), comm, PETSC_ERR_PLIB, "a support the table allows is not registered");
   p->theory    = o->theory;

@@ -311,6 +311,7 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
     PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
     PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
     PetscCall(opt("beam_strain", S.beam_strain, "J"));
+    PetscCall(opt("shell_energy", S.shell_energy, "J"));
     PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
     PetscCall(opt("total_energy", S.total_energy, "J"));
     if (!S.velocity_at.empty()) {

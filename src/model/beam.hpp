@@ -42,6 +42,15 @@ struct BeamGrip {
   PetscReal mass      = 0;     // kg, the hands (added to the translational dofs of the grip)
 };
 
+// The barrel wall's hoop oscillator in series with the ball (issue 23, MODEL.md section 9, the
+// lumped alternative; model/barrel.hpp): a wall mass on a spring k_h = m_h (2 pi f_h)^2 loaded by
+// the contact force, its displacement added to the compression. Off by default.
+struct BarrelHoop {
+  bool      on        = false;
+  PetscReal frequency = 0; // Hz, f_h (a bat lab's tap-test hoop frequency)
+  PetscReal mass      = 0; // kg, m_h, the wall's mass in the hoop mode
+};
+
 struct BeamParams {
   PetscReal length = 1.1;  // m
   PetscReal EI     = 0;    // N m^2, bending stiffness (uniform; with a profile or table, its mean)
@@ -60,6 +69,7 @@ struct BeamParams {
   PetscReal damping_mass      = 0;  // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
   PetscReal damping_stiffness = 0;  // s,   beta
   BeamGrip  grip;                   // the hands on the handle (none by default)
+  BarrelHoop hoop;                  // the barrel wall's hoop oscillator (none by default)
   BeamMaterialInput input;
 };
 

@@ -15,7 +15,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscCall(stepper.ViewBegin(&sv));
   const PetscInt         np = (PetscInt)points.size();
   const PetscInt         G  = 5 + np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
-  std::vector<PetscReal> sums(G + 4, 0.0);
+  std::vector<PetscReal> sums(G + 7, 0.0); // + the wall's stored and kinetic energy and displacement
   ForceState             fs;
   fs.y     = sv.y;
   fs.ys    = sv.y_stride;
@@ -27,6 +27,8 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   ForceOperatorEnergy(S, fs, sv.d0, sv.d1, &sums[1], &sums[G]);
   sums[G + 1] = ForceOperatorFrameMomentum(S, fs, sv.d0, sv.d1);
   ForceOperatorFrameReaction(S, fs, sv.d0, sv.d1, &sums[G + 2], &sums[G + 3]);
+  BeamSystemWallEnergy(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, &sums[G + 4], &sums[G + 5]);
+  if (S.wall_dof >= sv.d0 && S.wall_dof < sv.d1) sums[G + 6] = sv.y[(S.wall_dof / F) * sv.y_stride + S.wall_dof % F];
   // Translational dofs (field 0) of the owned nodes.
   auto vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
   const PetscInt n0 = sv.d0 / F, n1 = sv.d1 / F;
@@ -34,7 +36,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     const PetscReal mi = S.mass[S.Dof(i)];
     sums[2] += mi * vel(i);
     sums[3] += mi * S.NodeX(i) * vel(i);
-    if (F > 1) sums[3] += S.mass[S.Dof(i, 1)] * sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
+    if (S.Rotation(1)) sums[3] += S.mass[S.Dof(i, 1)] * sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
   }
   if (mon && mon->segment) {
     const PetscReal tol = 1e-9 * S.h;
@@ -61,8 +63,10 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   m->ball_kinetic        = 0.5 * ball.mass * m->ball_v * m->ball_v;
   m->ball_stored         = ContactStoredEnergy(ball, *ctx.contact, m->c);
   m->ball_work           = ContactWork(ball, *ctx.contact, m->c);
-  m->beam_kinetic        = sums[0];
-  m->beam_strain         = sums[1];
+  m->beam_kinetic        = sums[0] - sums[G + 5]; // without the wall's share (exact: 0 without a wall)
+  m->beam_strain         = sums[1] - sums[G + 4];
+  m->shell_energy        = sums[G + 4] + sums[G + 5];
+  m->wall_deflection     = sums[G + 6];
   m->momentum            = sums[2] + ball.mass * m->ball_v;
   m->angular_momentum    = sums[3] + ball.mass * ctx.g->x * m->ball_v;
   m->beam_momentum       = sums[2];

@@ -16,6 +16,9 @@ struct StateMeasures {
   PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
   PetscReal segment_kinetic = 0;                // J, the monitored segment
+  // The barrel wall's hoop oscillator (-barrel_hoop_frequency): its stored and kinetic energy,
+  // not in beam_kinetic and beam_strain; its displacement (m, into the bat). 0 without a wall.
+  PetscReal shell_energy = 0, wall_deflection = 0;
   PetscReal beam_dissipated = 0;                // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its damper's share too)
   // The hands (-grip), from the force operator (system/force_operator.hpp): the energy stored in
   // the force terms other than the elastic one (the grip's 1/2 sum k_i (y_i - v_f,i t)^2), the
@@ -24,7 +27,7 @@ struct StateMeasures {
   PetscReal grip_stored = 0, hand_work = 0;     // J
   PetscReal grip_force = 0, grip_moment = 0;    // N, N m
   // The conserved total: with the linear spring and an undamped beam, a constant.
-  PetscReal total() const { return ball_kinetic + ball_work + beam_kinetic + beam_strain + beam_dissipated + grip_stored - hand_work; }
+  PetscReal total() const { return ball_kinetic + ball_work + beam_kinetic + beam_strain + shell_energy + beam_dissipated + grip_stored - hand_work; }
 };
 
 // What a measurement needs besides the state.

@@ -143,13 +143,19 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal D)
     if (dof % sys.fields == 0) {
       p += S.mass[d] * run.qd[d];
       l += S.mass[d] * sys.NodeX(node) * run.qd[d];
-    } else if (dof % sys.fields == 1) l += S.mass[d] * run.qd[d];
+    } else if (sys.Rotation(dof % sys.fields)) l += S.mass[d] * run.qd[d];
   }
   m.ball_y           = run.q[S.n - 1];
   m.ball_v           = run.qd[S.n - 1];
   m.ball_kinetic     = 0.5 * ball.mass * m.ball_v * m.ball_v;
-  m.beam_kinetic     = T;
-  m.beam_strain      = BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof);
+  std::vector<PetscReal> rate(sys.ndof, 0.0);
+  for (PetscInt d = 0; d + 1 < S.n; ++d) rate[S.dof[d]] = run.qd[d];
+  PetscReal wall_stored, wall_kinetic; // the barrel wall's (0 without), apart as run/measures.cpp keeps them
+  BeamSystemWallEnergy(sys, shape.data(), sys.fields, rate.data(), sys.fields, 0, sys.ndof, &wall_stored, &wall_kinetic);
+  m.beam_kinetic     = T - wall_kinetic;
+  m.beam_strain      = BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof) - wall_stored;
+  m.shell_energy     = wall_stored + wall_kinetic;
+  if (sys.wall_dof >= 0) m.wall_deflection = shape[sys.wall_dof];
   m.beam_momentum    = p;
   m.beam_moment      = l;
   m.momentum         = p + ball.mass * m.ball_v;

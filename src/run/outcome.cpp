@@ -21,7 +21,7 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
     M += S.mass[d];
     Mx += S.mass[d] * x;
     Mxx += S.mass[d] * x * x;
-    if (S.fields > 1 && !S.held[S.Dof(i, 1)]) Mxx += S.mass[S.Dof(i, 1)]; // rotary inertia of a Timoshenko section
+    if (S.Rotation(1) && !S.held[S.Dof(i, 1)]) Mxx += S.mass[S.Dof(i, 1)]; // rotary inertia of a Timoshenko section
   }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
   const PetscReal L_cm = f->end.beam_moment - x_cm * f->end.beam_momentum;

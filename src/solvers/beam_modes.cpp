@@ -38,7 +38,7 @@ std::vector<std::vector<PetscReal>> RigidMotions(const BeamSystem &sys)
   for (PetscInt d = 0; d < nd; ++d) {
     const PetscInt f = d % nf;
     c[0][d]          = f == 0 ? 1.0 : 0.0;
-    c[1][d]          = f == 0 ? sys.NodeX(d / nf) / sys.L : (f == 1 ? 1.0 / sys.L : 0.0);
+    c[1][d]          = f == 0 ? sys.NodeX(d / nf) / sys.L : (sys.Rotation(f) ? 1.0 / sys.L : 0.0);
   }
   // Combinations a c0 + b c1 vanishing on the held dofs: the null space of the 2-column H.
   PetscReal hh[2][2] = {{0, 0}, {0, 0}}; // H^T H

@@ -375,7 +375,7 @@ PetscInt BeamSystemRigidCount(const BeamSystem &op)
   bool      any = false, independent = false;
   PetscReal a0 = 0, b0 = 0; // the first constraint row (a0, b0) on (a, b)
   for (PetscInt i = 0; i < op.nodes && !independent; ++i)
-    for (PetscInt f = 0; f < std::min<PetscInt>(op.fields, 2) && !independent; ++f) {
+    for (PetscInt f = 0; f < op.beam_fields && !independent; ++f) {
       if (!op.held[op.Dof(i, f)]) continue;
       const PetscReal a = f == 0 ? 1.0 : 0.0, b = f == 0 ? op.NodeX(i) : 1.0;
       if (!any) any = true, a0 = a, b0 = b;
@@ -393,7 +393,7 @@ PetscInt BeamSystemRigidCount(const BeamSystem &op)
     std::vector<PetscReal> v(op.ndof, 0.0);
     for (PetscInt i = 0; i < op.nodes; ++i) {
       v[op.Dof(i)] = a + b * op.NodeX(i);
-      if (op.fields > 1) v[op.Dof(i, 1)] = b;
+      if (op.Rotation(1)) v[op.Dof(i, 1)] = b;
     }
     for (PetscInt d = 0; d < op.ndof; ++d)
       if (op.held[d]) v[d] = 0.0;

@@ -2,6 +2,8 @@
 // beam_system.hpp.
 #include "system/beam_system.hpp"
 
+#include "model/barrel.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,6 +20,8 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   build(p, &d);
   BeamSystem &S    = *sys;
   S                = BeamSystem();
+  S.beam_fields    = d.fields;
+  if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d), S.wall_stiffness = BarrelHoopStiffness(p.hoop);
   S.nodes          = p.nodes;
   S.fields         = d.fields;
   S.ndof           = p.nodes * d.fields;
@@ -59,6 +63,7 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp)
   g.dof[1] = sys.Dof(st.j + 1);
   g.w[0]   = sys.held[g.dof[0]] ? 0.0 : st.w;
   g.w[1]   = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
+  if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0; // the wall under the ball, in series
   return g;
 }
 
@@ -113,6 +118,16 @@ PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, Pets
   return 0.5 * U;
 }
 
+void BeamSystemWallEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic)
+{
+  const PetscInt d = sys.wall_dof, F = sys.fields;
+  *stored = *kinetic = 0.0;
+  if (d < d0 || d >= d1) return; // also without a wall (d = -1)
+  const PetscReal w = y[(d / F) * ys + d % F], wd = v[(d / F) * vs + d % F];
+  *stored  = 0.5 * sys.wall_stiffness * w * w;
+  *kinetic = 0.5 * sys.mass[d] * wd * wd;
+}
+
 PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1)
 {
   const PetscInt F = sys.fields;
@@ -130,7 +145,7 @@ std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal 
   for (PetscInt i = 0; i < sys.nodes; ++i)
     for (PetscInt f = 0; f < sys.fields; ++f) {
       const PetscInt d = sys.Dof(i, f);
-      if (!sys.held[d]) v[d] = f == 0 ? v0 + slope * sys.NodeX(i) : slope;
+      if (!sys.held[d]) v[d] = f == 0 ? v0 + slope * sys.NodeX(i) : (sys.Rotation(f) ? slope : 0.0);
     }
   return v;
 }

@@ -11,7 +11,8 @@
 // share of the impact point between its two neighbouring nodes (held dofs get no share). Dofs
 // are node-major: dof = node x fields + field; field 0 is the transverse deflection (m). The
 // motion of the swing's frame is the run's (FrameMotion), passed to the operator, never stored
-// here. Plain arrays only.
+// here. A barrel's hoop oscillator (-barrel_hoop_frequency, model/barrel.hpp) is one more field
+// per node, free only at node 0 (wall_dof), a coupled dof of weight 1. Plain arrays only.
 #pragma once
 
 #include "model/beam_theory.hpp"
@@ -29,6 +30,9 @@ namespace beamimpact {
 
 struct BeamSystem {
   PetscInt  nodes = 0, fields = 1, ndof = 0;
+  PetscInt  beam_fields = 1;               // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
+  PetscInt  wall_dof    = -1;              // the hoop oscillator's dof (model/barrel.hpp), -1 without
+  PetscReal wall_stiffness = 0;            // N/m, its spring k_h
   PetscReal L = 0, h = 0;                  // m, length and node spacing
   std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof (with a grip's hands)
   std::vector<char>       held;            // 1 where the dof is held at 0
@@ -44,6 +48,8 @@ struct BeamSystem {
   PetscReal NodeX(PetscInt node) const { return node * h; }
   bool      Damped() const { return forces.damped; }
   bool      Gripped() const { return forces.Find("grip") != nullptr; }
+  // Whether field f is a section rotation (Timoshenko's field 1), which a rigid rotation turns.
+  bool      Rotation(PetscInt f) const { return f == 1 && beam_fields > 1; }
   // Ghost width (nodes) a distributed state needs for the forces and the strain energy.
   PetscInt  GhostNodes() const { return (std::max({bw, 2 * reach, forces.reach}) + fields - 1) / fields; }
 };
@@ -98,6 +104,11 @@ PetscInt BeamSystemDampingRow(const BeamSystem &sys, PetscInt i, PetscInt *cols,
 
 // Strain energy (J) of the terms owned by dofs [d0, d1) (a sum of squares); y as above.
 PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1);
+
+// The barrel wall's energies (J) if its dof is in [d0, d1): *stored 1/2 k_h w^2 and *kinetic
+// 1/2 m_h w'^2 (its shares of BeamSystemStrainEnergy and BeamSystemKineticEnergy); 0 otherwise
+// or without a wall. y, v as y above.
+void BeamSystemWallEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v, PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic);
 
 // Kinetic energy (J) of dofs [d0, d1); v as y above.
 PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);

@@ -1,0 +1,42 @@
+// The barrel wall's hoop oscillator appended to a theory's discretization. See barrel.hpp.
+#include "model/barrel.hpp"
+
+#include <cmath>
+
+namespace beamimpact {
+
+PetscReal BarrelHoopStiffness(const BarrelHoop &hoop)
+{
+  const PetscReal omega = 2.0 * PETSC_PI * hoop.frequency;
+  return hoop.mass * omega * omega;
+}
+
+PetscInt BarrelHoopAppend(const BarrelHoop &hoop, BeamDiscretization *d)
+{
+  const PetscInt F = d->fields, N = (PetscInt)d->mass.size() / F, G = F + 1;
+  const auto     renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
+  std::vector<PetscReal> mass(N * G, hoop.mass);
+  std::vector<char>      held(N * G, 1);
+  for (PetscInt i = 0; i < N * F; ++i) mass[renumber(i)] = d->mass[i], held[renumber(i)] = d->held[i];
+  const PetscInt wall = F; // node 0's new field
+  held[wall]          = 0;
+  for (StrainTerm &t : d->strain) {
+    t.owner = renumber(t.owner);
+    for (PetscInt q = 0; q < t.n; ++q) t.dof[q] = renumber(t.dof[q]);
+  }
+  StrainTerm s; // 1/2 k_h w^2
+  s.n      = 1;
+  s.dof[0] = wall;
+  s.b[0]   = 1.0;
+  s.weight = BarrelHoopStiffness(hoop);
+  s.owner  = wall;
+  d->strain.push_back(s);
+  d->fields = G;
+  d->mass   = std::move(mass);
+  d->held   = std::move(held);
+  return wall;
+}
+
+PetscReal SeriesSpringRestitution(PetscReal e0, PetscReal r) { return std::sqrt((e0 * e0 + r) / (1.0 + r)); }
+
+} // namespace beamimpact
