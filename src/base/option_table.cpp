@@ -208,6 +208,25 @@ std::vector<OptionWithoutEffect> OptionsWithoutEffect()
     const OptionSpec *s = OptionSpecFind(name);
     if (!s || !u.given || s->needs.empty() || (u.kind == OptionKind::Bool && u.number == 0)) continue;
     for (const std::string &need : s->needs) {
+      if (need.find('|') != std::string::npos) { // alternatives: 'A|B', met when one is
+        std::string why = "it acts only with ", first;
+        bool        met = false, known = false;
+        for (size_t a = 0, b; a <= need.size(); a = b + 1) {
+          b                       = std::min(need.find('|', a), need.size());
+          const std::string alt   = need.substr(a, b - a);
+          const size_t      eq    = alt.find('=');
+          const std::string other = alt.substr(0, eq);
+          const auto        it    = used.find(other);
+          if (first.empty()) first = other;
+          why += (a ? " or " : "") + other + (eq == std::string::npos ? "" : " " + alt.substr(eq + 1));
+          if (it == used.end()) continue;
+          known = true;
+          met   = met || (eq == std::string::npos ? it->second.given : it->second.text == alt.substr(eq + 1));
+        }
+        if (!known || met) continue;
+        out.push_back({name, OptionWritten(name.c_str()), why, first});
+        break;
+      }
       const size_t      eq    = need.find('=');
       const std::string other = need.substr(0, eq);
       const auto        it    = used.find(other);

@@ -42,7 +42,7 @@ const OptionModule &BeamOptionTable()
         s.needs      = {"-beam_theory=timoshenko"};
         return s;
       }(),
-      OptionNeeds(OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient)", "0.3", Between(-1, 0.5, true, true)), {"-beam_theory=timoshenko"}),
+      OptionNeeds(OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient; the barrel's shell)", "0.3", Between(-1, 0.5, true, true)), {"-beam_theory=timoshenko|-beam_shell"}),
       OptionInt("-beam_nodes", "Number of grid nodes N", "41", AtLeast(5)),
       OptionChoice("-beam_left", SupportHelp("x = 0").c_str(), SupportNames(), "free"),
       OptionChoice("-beam_right", SupportHelp("x = L").c_str(), SupportNames(), "free"),
@@ -54,6 +54,8 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
+      OptionFlag("-beam_shell", "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, in series with the ball (-beam_profile with inner diameters)"),
+      OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
       OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass)", "", Positive()),
       OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
     },
@@ -93,6 +95,8 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   std::string         left = p->left.Name(), right = p->right.Name();
   std::vector<PetscReal> clamp, grip;
   PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE, sethoop = PETSC_FALSE, sethoopmass = PETSC_FALSE;
+  PetscBool              shell = PETSC_FALSE, setharmonics = PETSC_FALSE;
+  std::vector<PetscReal> harmonics;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
@@ -122,12 +126,23 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_stiffness", &p->grip.stiffness, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_damping", &p->grip.damping, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_mass", &p->grip.mass, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_shell", &shell, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_harmonics", &harmonics, &setharmonics));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();
   PetscCheck(sethoop == sethoopmass, comm, PETSC_ERR_ARG_WRONGSTATE, "%s %g without %s is not allowed: the hoop oscillator needs its frequency (Hz) and its mass (kg)", sethoop ? "-barrel_hoop_frequency" : "-barrel_hoop_mass",
              (double)(sethoop ? p->hoop.frequency : p->hoop.mass), sethoop ? "-barrel_hoop_mass" : "-barrel_hoop_frequency");
   p->hoop.on = sethoop;
+  p->shell.on = shell;
+  if (setharmonics) {
+    p->shell.harmonics.clear();
+    for (PetscReal n : harmonics) {
+      PetscCheck(n == std::floor(n), comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics %g is not allowed: the circumferential orders are whole numbers n >= 2", (double)n);
+      for (PetscInt q : p->shell.harmonics) PetscCheck(q != (PetscInt)n, comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics: %g is given twice", (double)n);
+      p->shell.harmonics.push_back((PetscInt)n);
+    }
+  }
 
   PetscCheck(SupportFind(left, &p->left) && SupportFind(right, &p->right), comm, PETSC_ERR_PLIB, "a support the table allows is not registered");
   p->theory    = o->theory;
@@ -357,6 +372,13 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
     const PetscInt k = BeamPivotNode(p);
     PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes", (double)p.pivot_x,
                (double)(p.length / (p.nodes - 1)));
+  }
+  if (p.shell.on) {
+    PetscCheck(p.section.source == SectionSource::Profile, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell needs a round hollow section: -beam_profile with rows 'x D d' (a uniform beam or -beam_properties has no wall)");
+    bool hollow = false;
+    for (const ProfileRow &r : p.section.profile) hollow = hollow || r.d > 0;
+    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell with a solid profile is not allowed: no row of -beam_profile has an inner diameter d > 0");
+    PetscCheck(!p.hoop.on, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell with -barrel_hoop_frequency is not allowed: the wall is either the shell or the lumped hoop oscillator");
   }
   if (p.grip.on) {
     const BeamGrip &g = p.grip;

@@ -51,6 +51,13 @@ struct BarrelHoop {
   PetscReal mass      = 0; // kg, m_h, the wall's mass in the hoop mode
 };
 
+// The barrel wall as a thin cylindrical shell (-beam_shell; model/shell.hpp): Sanders-Koiter
+// harmonics on the hollow part of a profile. Off by default.
+struct BarrelShell {
+  bool                  on        = false;
+  std::vector<PetscInt> harmonics = {2, 3, 4}; // circumferential orders n >= 2
+};
+
 struct BeamParams {
   PetscReal length = 1.1;  // m
   PetscReal EI     = 0;    // N m^2, bending stiffness (uniform; with a profile or table, its mean)
@@ -70,6 +77,7 @@ struct BeamParams {
   PetscReal damping_stiffness = 0;  // s,   beta
   BeamGrip  grip;                   // the hands on the handle (none by default)
   BarrelHoop hoop;                  // the barrel wall's hoop oscillator (none by default)
+  BarrelShell shell;                // the barrel wall as a shell (none by default)
   BeamMaterialInput input;
 };
 

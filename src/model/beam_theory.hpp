@@ -21,11 +21,12 @@
 
 namespace beamimpact {
 
-// One term of the strain energy: weight (b . y)^2 / 2 over at most four dofs.
+// One term of the strain energy: weight (b . y)^2 / 2 over at most six dofs (the beams use up to
+// four; a shell's membrane strain ex + nu et six).
 struct StrainTerm {
   PetscInt  n = 0;            // entries used
-  PetscInt  dof[4] = {0, 0, 0, 0};
-  PetscReal b[4]   = {0, 0, 0, 0}; // 1/m^2 (curvature), 1/m or 1 (shear)
+  PetscInt  dof[6] = {0, 0, 0, 0, 0, 0};
+  PetscReal b[6]   = {0, 0, 0, 0, 0, 0}; // 1/m^2 (curvature), 1/m or 1 (shear, strain)
   PetscReal weight = 0;            // N m^2 x m (EI h), or N x m (kappa G A h)
   PetscInt  owner  = 0;            // the dof whose rank evaluates this term (sums over ranks partition U)
 };

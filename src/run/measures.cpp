@@ -28,7 +28,10 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   sums[G + 1] = ForceOperatorFrameMomentum(S, fs, sv.d0, sv.d1);
   ForceOperatorFrameReaction(S, fs, sv.d0, sv.d1, &sums[G + 2], &sums[G + 3]);
   BeamSystemWallEnergy(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, &sums[G + 4], &sums[G + 5]);
-  if (S.wall_dof >= sv.d0 && S.wall_dof < sv.d1) sums[G + 6] = sv.y[(S.wall_dof / F) * sv.y_stride + S.wall_dof % F];
+  for (PetscInt q = 0; q < ctx.g->n; ++q) { // the wall's share of the compression: its displacement under the ball, into the bat
+    const PetscInt d = ctx.g->dof[q];
+    if (d % F >= S.beam_fields && d >= sv.d0 && d < sv.d1) sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
+  }
   // Translational dofs (field 0) of the owned nodes.
   auto vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
   const PetscInt n0 = sv.d0 / F, n1 = sv.d1 / F;

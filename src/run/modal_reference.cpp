@@ -155,7 +155,8 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal D)
   m.beam_kinetic     = T - wall_kinetic;
   m.beam_strain      = BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof) - wall_stored;
   m.shell_energy     = wall_stored + wall_kinetic;
-  if (sys.wall_dof >= 0) m.wall_deflection = shape[sys.wall_dof];
+  for (PetscInt d = 0; d < S.BeamDofs(); ++d) // the wall's share of the compression (S.g = dc/dq = -w)
+    if (S.dof[d] % sys.fields >= sys.beam_fields) m.wall_deflection -= S.g[d] * run.q[d];
   m.beam_momentum    = p;
   m.beam_moment      = l;
   m.momentum         = p + ball.mass * m.ball_v;

@@ -3,6 +3,7 @@
 #include "system/beam_system.hpp"
 
 #include "model/barrel.hpp"
+#include "model/shell.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,11 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S                = BeamSystem();
   S.beam_fields    = d.fields;
   if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d), S.wall_stiffness = BarrelHoopStiffness(p.hoop);
+  if (p.shell.on) {
+    const ShellLayout shell = ShellAppend(p, &d);
+    S.shell_first           = shell.first;
+    S.shell_harmonics       = shell.harmonics;
+  }
   S.nodes          = p.nodes;
   S.fields         = d.fields;
   S.ndof           = p.nodes * d.fields;
@@ -64,6 +70,12 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp)
   g.w[0]   = sys.held[g.dof[0]] ? 0.0 : st.w;
   g.w[1]   = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
   if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0; // the wall under the ball, in series
+  for (size_t k = 0; k < sys.shell_harmonics.size() && g.n + 2 <= ContactCoupling::kMaxEntries; ++k)
+    for (PetscInt s = 0; s < 2; ++s) { // each harmonic's W_n under the ball (outward: the inward displacement is -W_n)
+      const PetscInt d = (st.j + s) * sys.fields + sys.shell_first + 3 * (PetscInt)k + 2;
+      g.dof[g.n]       = d;
+      g.w[g.n++]       = sys.held[d] ? 0.0 : -(s == 0 ? st.w : 1.0 - st.w);
+    }
   return g;
 }
 
@@ -120,12 +132,23 @@ PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, Pets
 
 void BeamSystemWallEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic)
 {
-  const PetscInt d = sys.wall_dof, F = sys.fields;
+  const PetscInt F = sys.fields;
+  PetscReal      U = 0.0, T = 0.0;
   *stored = *kinetic = 0.0;
-  if (d < d0 || d >= d1) return; // also without a wall (d = -1)
-  const PetscReal w = y[(d / F) * ys + d % F], wd = v[(d / F) * vs + d % F];
-  *stored  = 0.5 * sys.wall_stiffness * w * w;
-  *kinetic = 0.5 * sys.mass[d] * wd * wd;
+  if (F == sys.beam_fields) return; // no wall
+  for (PetscInt i = d0; i < d1; ++i) {
+    if (i % F < sys.beam_fields) continue;
+    const PetscReal vi = v[(i / F) * vs + i % F];
+    T += sys.mass[i] * vi * vi;
+    for (PetscInt k = sys.strain_begin[i]; k < sys.strain_begin[i + 1]; ++k) {
+      const StrainTerm &t = sys.strain[k];
+      PetscReal         e = 0.0;
+      for (PetscInt q = 0; q < t.n; ++q) e += t.b[q] * y[(t.dof[q] / F) * ys + t.dof[q] % F];
+      U += t.weight * e * e;
+    }
+  }
+  *stored  = 0.5 * U;
+  *kinetic = 0.5 * T;
 }
 
 PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1)

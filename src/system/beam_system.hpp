@@ -33,6 +33,8 @@ struct BeamSystem {
   PetscInt  beam_fields = 1;               // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
   PetscInt  wall_dof    = -1;              // the hoop oscillator's dof (model/barrel.hpp), -1 without
   PetscReal wall_stiffness = 0;            // N/m, its spring k_h
+  PetscInt  shell_first = -1;              // the shell's first field (-beam_shell, model/shell.hpp): harmonic k's W_n is field shell_first + 3 k + 2
+  std::vector<PetscInt> shell_harmonics;   // n of each harmonic
   PetscReal L = 0, h = 0;                  // m, length and node spacing
   std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof (with a grip's hands)
   std::vector<char>       held;            // 1 where the dof is held at 0
@@ -105,9 +107,9 @@ PetscInt BeamSystemDampingRow(const BeamSystem &sys, PetscInt i, PetscInt *cols,
 // Strain energy (J) of the terms owned by dofs [d0, d1) (a sum of squares); y as above.
 PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1);
 
-// The barrel wall's energies (J) if its dof is in [d0, d1): *stored 1/2 k_h w^2 and *kinetic
-// 1/2 m_h w'^2 (its shares of BeamSystemStrainEnergy and BeamSystemKineticEnergy); 0 otherwise
-// or without a wall. y, v as y above.
+// The barrel wall's energies (J) over the dofs [d0, d1): *stored (its strain terms: 1/2 k_h w^2 of
+// the hoop oscillator, the shell's) and *kinetic, its shares of BeamSystemStrainEnergy and
+// BeamSystemKineticEnergy (the fields after the beam's); 0 without a wall. y, v as y above.
 void BeamSystemWallEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v, PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic);
 
 // Kinetic energy (J) of dofs [d0, d1); v as y above.

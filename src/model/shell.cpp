@@ -1,0 +1,140 @@
+// The barrel wall as a thin cylindrical shell appended to a theory's discretization. See shell.hpp.
+#include "model/shell.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace beamimpact {
+
+bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t)
+{
+  const std::vector<ProfileRow> &rows = p.section.profile;
+  *R = *t = 0;
+  if (p.section.source != SectionSource::Profile || rows.empty()) return false;
+  const PetscReal xs = std::min(std::max(x + rows.front().x, rows.front().x), rows.back().x); // the beam's x = 0 is the first row
+  size_t          k  = 0;
+  while (k + 2 < rows.size() && rows[k + 1].x < xs) ++k;
+  const ProfileRow &a = rows[k], &b = rows[std::min(k + 1, rows.size() - 1)];
+  const PetscReal   s = b.x > a.x ? (xs - a.x) / (b.x - a.x) : 0.0;
+  const PetscReal   D = a.D + s * (b.D - a.D), d = a.d + s * (b.d - a.d);
+  if (!(d > 0)) return false;
+  *R = (D + d) / 4;
+  *t = (D - d) / 2;
+  return true;
+}
+
+PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n)
+{
+  const PetscReal n2 = (PetscReal)(n * n);
+  return std::sqrt(E * t * t * n2 * (n2 - 1) * (n2 - 1) / (12 * rho * (1 - nu * nu) * std::pow(R, 4) * (n2 + 1))) / (2 * PETSC_PI);
+}
+
+namespace {
+
+StrainTerm Term(PetscInt owner, PetscReal weight, std::initializer_list<std::pair<PetscInt, PetscReal>> entries)
+{
+  StrainTerm t;
+  t.owner  = owner;
+  t.weight = weight;
+  for (const auto &e : entries)
+    if (e.second != 0.0) t.dof[t.n] = e.first, t.b[t.n++] = e.second;
+  return t;
+}
+
+// The wall of each cell: hollow, R, t (m) at its midpoint.
+struct ShellCells {
+  std::vector<char>      hollow;
+  std::vector<PetscReal> R, t;
+};
+
+ShellCells CellsOf(const BeamParams &p)
+{
+  const PetscInt  N = p.nodes;
+  const PetscReal h = p.length / (N - 1);
+  ShellCells      c;
+  c.hollow.assign(N - 1, 0), c.R.assign(N - 1, 0), c.t.assign(N - 1, 0);
+  for (PetscInt k = 0; k < N - 1; ++k) c.hollow[k] = ShellWallAt(p, (k + 0.5) * h, &c.R[k], &c.t[k]);
+  return c;
+}
+
+} // namespace
+
+ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
+{
+  const PetscInt               F = d->fields, N = p.nodes, nh = (PetscInt)p.shell.harmonics.size(), G = F + 3 * nh;
+  const PetscReal              h = p.length / (N - 1), E = p.section.material.E, rho = p.section.material.rho, nu = p.section.material.nu;
+  const auto                   renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
+  const std::vector<NodeHold>  hold     = BeamNodeHolds(p);
+  const ShellCells             c        = CellsOf(p);
+  ShellLayout                  out;
+  out.first     = F;
+  out.harmonics = p.shell.harmonics;
+  std::vector<PetscReal> mass(N * G, 0.0);
+  std::vector<char>      held(N * G, 1);
+  for (PetscInt i = 0; i < N * F; ++i) mass[renumber(i)] = d->mass[i], held[renumber(i)] = d->held[i];
+  for (StrainTerm &t : d->strain) {
+    t.owner = renumber(t.owner);
+    for (PetscInt q = 0; q < t.n; ++q) t.dof[q] = renumber(t.dof[q]);
+  }
+  const auto dof = [&](PetscInt node, size_t k, PetscInt comp) { return node * G + out.first + 3 * (PetscInt)k + comp; }; // comp 0 U, 1 V, 2 W
+  const auto Cm  = [&](PetscInt k) { return E * c.t[k] / (1 - nu * nu); };
+  const auto Bb  = [&](PetscInt k) { return E * std::pow(c.t[k], 3) / (12 * (1 - nu * nu)); };
+  std::vector<char> wall_held(N);
+  for (PetscInt i = 0; i < N; ++i) {
+    const bool left = i > 0 && c.hollow[i - 1], right = i < N - 1 && c.hollow[i];
+    wall_held[i]    = !(left || right) || ((left != right) && i > 0 && i < N - 1) || HoldsDeflection(hold[i]);
+  }
+  for (PetscInt i = 0; i < N; ++i) {
+    const bool left = i > 0 && c.hollow[i - 1], right = i < N - 1 && c.hollow[i], wall = left || right;
+    const bool junction = wall && !(left && right) && i > 0 && i < N - 1; // a hollow part meets a solid one: clamped-like
+    const bool wheld = wall_held[i], mirror = wall && (junction || HoldsRotation(hold[i]));
+    PetscReal  m = 0, PB = 0, Rn = 0, len = 0; // the node's half cells: mass, pi R B h, mean R
+    for (PetscInt k : {i - 1, i}) {
+      if (k < 0 || k >= N - 1 || !c.hollow[k]) continue;
+      m += PETSC_PI * c.R[k] * rho * c.t[k] * h / 2;
+      PB += PETSC_PI * c.R[k] * Bb(k) * h / 2;
+      Rn += c.R[k] * h / 2, len += h / 2;
+    }
+    for (size_t k = 0; k < (size_t)nh; ++k) {
+      const PetscReal n = (PetscReal)out.harmonics[k];
+      for (PetscInt comp = 0; comp < 3; ++comp) {
+        mass[dof(i, k, comp)] = wall ? m : mass[renumber(i * F)]; // a held dof's mass is never used
+        held[dof(i, k, comp)] = wheld;
+      }
+      if (!wall) continue;
+      if (wheld) { // W' = 0 across a held rotation or a junction: the mirror kx = -2 (W_j - W_i)/h^2 toward each hollow side
+        if (!mirror) continue;
+        for (PetscInt j : {i - 1, i + 1}) {
+          const PetscInt cell = std::min(i, j);
+          if (j < 0 || j >= N || !c.hollow[cell] || wall_held[j]) continue;
+          d->strain.push_back(Term(dof(i, k, 2), PETSC_PI * c.R[cell] * Bb(cell) * h / 2, {{dof(j, k, 2), -2 / (h * h)}}));
+        }
+        continue;
+      }
+      const PetscReal R = Rn / len, kv = n / (R * R), kw = n * n / (R * R); // kt = kv V + kw W
+      if (left && right)                                                    // kx = -W'': the moment (kx + nu kt) and (1 - nu^2) kt^2
+        d->strain.push_back(Term(dof(i, k, 2), PB, {{dof(i - 1, k, 2), -1 / (h * h)}, {dof(i, k, 2), 2 / (h * h) + nu * kw}, {dof(i + 1, k, 2), -1 / (h * h)}, {dof(i, k, 1), nu * kv}}));
+      d->strain.push_back(Term(dof(i, k, 2), PB * (1 - nu * nu), {{dof(i, k, 1), kv}, {dof(i, k, 2), kw}})); // alone at a free end: M_x = 0, kx + nu kt = 0
+    }
+  }
+  for (PetscInt cell = 0; cell < N - 1; ++cell) { // membrane and twist at the midpoint
+    if (!c.hollow[cell]) continue;
+    const PetscInt  a = cell, b = cell + 1;
+    const PetscReal R = c.R[cell], w = PETSC_PI * R * h, ih = 1 / h;
+    for (size_t k = 0; k < (size_t)nh; ++k) {
+      const PetscReal n = (PetscReal)out.harmonics[k], C = Cm(cell), B = Bb(cell);
+      const PetscInt  Ua = dof(a, k, 0), Ub = dof(b, k, 0), Va = dof(a, k, 1), Vb = dof(b, k, 1), Wa = dof(a, k, 2), Wb = dof(b, k, 2);
+      const PetscReal et_v = n / (2 * R), et_w = 1 / (2 * R); // et = (n V + W)/R at the midpoint
+      d->strain.push_back(Term(Wa, w * C, {{Ua, -ih}, {Ub, ih}, {Va, nu * et_v}, {Vb, nu * et_v}, {Wa, nu * et_w}, {Wb, nu * et_w}})); // ex + nu et
+      d->strain.push_back(Term(Wa, w * C * (1 - nu * nu), {{Va, et_v}, {Vb, et_v}, {Wa, et_w}, {Wb, et_w}}));                          // et
+      d->strain.push_back(Term(Wa, w * C * (1 - nu) / 2, {{Va, -ih}, {Vb, ih}, {Ua, -n / (2 * R)}, {Ub, -n / (2 * R)}}));                 // g = V' - n U/R
+      d->strain.push_back(Term(Wa, w * 2 * (1 - nu) * B, {{Wa, -n * ih / R}, {Wb, n * ih / R}, {Va, -0.75 * ih / R}, {Vb, 0.75 * ih / R}, {Ua, n / (8 * R * R)}, {Ub, n / (8 * R * R)}})); // tw
+    }
+  }
+  d->fields = G;
+  d->mass   = std::move(mass);
+  d->held   = std::move(held);
+  return out;
+}
+
+} // namespace beamimpact

@@ -1,0 +1,54 @@
+// The barrel wall as a thin cylindrical shell (issue 23; MODEL.md section 9): wherever the
+// profile's section is hollow (rows 'x D d' with d > 0), the wall of midsurface radius
+// R = (D + d)/4 and thickness t = (D - d)/2 (per cell, from its midpoint), material E, rho, nu
+// (-beam_youngs_modulus, -beam_density, -beam_poisson), in circumferential harmonics
+//
+//   u = U_n(x) cos n theta (axial),  v = V_n(x) sin n theta,  w = W_n(x) cos n theta (outward),
+//
+// n in -shell_harmonics (2, 3, 4 by default; n = 1 is the beam's own bending, n = 0 breathing is
+// far stiffer). Each harmonic is three more fields per node (U_n, V_n, W_n; m) on the beam's grid,
+// with the Sanders-Koiter energy (scripts/references/shell_modes.py, the same functional)
+//
+//   U_n = pi R/2 int [ C (ex^2 + et^2 + 2 nu ex et + (1-nu)/2 g^2)
+//                      + B (kx^2 + kt^2 + 2 nu kx kt + 2 (1-nu) tw^2) ] dx,
+//   T_n = pi R rho t/2 int (U_n'^2 + V_n'^2 + W_n'^2) dx,     C = E t/(1-nu^2), B = E t^3/(12 (1-nu^2)),
+//   ex = U', et = (n V + W)/R, g = V' - n U/R, kx = -W'', kt = (n V + n^2 W)/R^2,
+//   tw = (n W' + 3/4 V' + n U/(4 R))/R   (Sanders' twist: every rigid motion strain-free),
+//
+// as sums of squares (ex^2 + et^2 + 2 nu ex et = (ex + nu et)^2 + (1 - nu^2) et^2): the membrane
+// and twist terms at each cell's midpoint (linear U, V, W; one point, so that an inextensional
+// ovaling is not locked by the membrane), the bending terms at the nodes (kx the second difference,
+// as the Euler-Bernoulli beam), masses lumped at the nodes. Second order in h.
+//
+// Ends: a free end of the wall (a beam end free, or the open end of a hollow part) has no kx
+// (M_x = 0, the natural condition); where the beam's deflection is held (a clamped or pinned
+// end, a clamped region) the wall is held (U = V = W = 0) and, where the rotation is held too,
+// W' = 0 (the mirror term); where the hollow part joins a solid one the wall is clamped-like
+// (held, W' = 0). The ball loads each harmonic's W_n at the impact point (hat weights, inward).
+#pragma once
+
+#include "model/beam_theory.hpp"
+
+#include <vector>
+
+namespace beamimpact {
+
+// Where the shell's fields are: harmonic k's U, V, W are fields first + 3 k + 0, 1, 2.
+struct ShellLayout {
+  PetscInt              first = -1; // first shell field (the theory's fields come before)
+  std::vector<PetscInt> harmonics;  // n of each harmonic
+  PetscInt WField(size_t k) const { return first + 3 * (PetscInt)k + 2; }
+};
+
+// Appends the shell's fields to a theory's discretization (its dofs renumbered node-major; the
+// shell's strain terms and lumped masses; held where no wall is, at a held beam and at a
+// junction with a solid part). p.shell.on, a Profile section. Returns the layout.
+ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d);
+
+// The wall's midsurface radius R and thickness t (m) of a profile at x (m); false where solid.
+bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t);
+
+// Rayleigh's inextensional ring (Hz) of harmonic n: sqrt(E t^2 n^2 (n^2-1)^2 / (12 rho (1-nu^2) R^4 (n^2+1)))/(2 pi).
+PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n);
+
+} // namespace beamimpact
