@@ -191,15 +191,17 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(BeamModesCompute(comm, op, mp.count, &modes, &shapes));
   PetscCall(OptionsCheckUnused(comm)); // after the solve: the eigensolver reads its -modes_eps_*, -modes_st_* options
   PetscCall(PrintBeamBody(comm, beam));
-  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)  nodes (m)\n", (double)beam.length, beam.theory.c_str(),
-                        SupportName(beam.left), SupportName(beam.right), beam.nodes));
+  const bool wall = !modes.shell_n.empty(); // a barrel wall: each mode's family
+  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)  %snodes (m)\n", (double)beam.length, beam.theory.c_str(),
+                        SupportName(beam.left), SupportName(beam.right), beam.nodes, wall ? "family   " : ""));
   int rigid = 0, flexible = 0; // numbered apart: mode 1 is the fundamental, the rigid ones r1, r2
   for (size_t q = 0; q < modes.frequency.size(); ++q) {
     std::string nodes;
     if (modes.omega[q] != 0)
       for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1))) nodes += " " + std::to_string(x).substr(0, 6);
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
-    PetscCall(PetscPrintf(comm, "  %4s  %14.4f  %11.4f %s\n", number.c_str(), (double)modes.frequency[q], (double)modes.period[q] * 1e3, modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
+    const std::string family = !wall ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
+    PetscCall(PetscPrintf(comm, "  %4s  %14.4f  %11.4f %s%s\n", number.c_str(), (double)modes.frequency[q], (double)modes.period[q] * 1e3, family.c_str(), modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
   }
   auto record = [&](RunRecord *rec) -> PetscErrorCode {
     PetscFunctionBeginUser;

@@ -505,6 +505,10 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
     PetscCall(H5WriteDataset1D(g, "period", modes.period, "s"));
     PetscCall(H5WriteDataset1D(g, "omega", modes.omega, "rad/s"));
     PetscCall(H5WriteDataset2D(g, "shapes", shapes, "1 (deflection, normalised over all dofs)"));
+    if (!modes.shell_n.empty()) { // a barrel wall: each mode's family (0 bending, n a shell harmonic)
+      std::vector<PetscReal> fam(modes.shell_n.begin(), modes.shell_n.end());
+      PetscCall(H5WriteDataset1D(g, "shell_n", fam, "1 (0: the beam's bending; n: the wall's harmonic cos n theta; 2: the hoop oscillator)"));
+    }
     const PetscReal h = beam.length / (beam.nodes - 1);
     for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m, ++k)
       PetscCall(H5WriteDataset1D(g, k == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));

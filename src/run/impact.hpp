@@ -70,7 +70,7 @@ struct ImpactSeries {
   std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated;     // J
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
   std::vector<PetscReal> beam_dissipated;                                // J, by the beam's damping (damped beams only)
-  std::vector<PetscReal> shell_energy;                                   // J, the barrel wall's (-barrel_hoop_frequency only)
+  std::vector<PetscReal> shell_energy;                                   // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
   std::vector<PetscReal> velocity_at_x;                                  // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
   std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
@@ -113,8 +113,8 @@ struct ContactTally {
 struct MonitorPeaks {
   PetscReal segment_kinetic = 0, segment_kinetic_time = 0; // J, s: -monitor_segment
   PetscReal grip_force = 0, grip_force_time = 0;           // N, s: the largest |force of the bat on the hands| (-grip)
-  // The barrel wall's hoop oscillator (-barrel_hoop_frequency): its largest displacement (m, into
-  // the bat) and energy (J) over the steps; NaN where no stepper measured them (the modal reference).
+  // The barrel wall (-barrel_hoop_frequency or -beam_shell): its largest displacement under the ball
+  // (m, into the bat) and energy (J) over the steps; NaN where no stepper measured them (the modal reference).
   PetscReal wall_deflection = NAN, shell_energy = NAN;
 };
 
@@ -176,7 +176,7 @@ struct ImpactOutcome {
   // steps taken) and when (s), and at the end the grip's stored energy and the work the hands
   // have done on the bat (J; the grip's damper is in beam_dissipated_end).
   PetscReal grip_force_peak = 0, grip_force_peak_time = 0, grip_stored_end = 0, hand_work_end = 0;
-  // With -barrel_hoop_frequency: the wall's energy at the end (J; what it did not give back),
+  // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
   // The rigid-body model, Eq. (11), for a free beam at rest (no support, pivot, grip or swing):

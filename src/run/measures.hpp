@@ -16,8 +16,8 @@ struct StateMeasures {
   PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
   PetscReal segment_kinetic = 0;                // J, the monitored segment
-  // The barrel wall's hoop oscillator (-barrel_hoop_frequency): its stored and kinetic energy,
-  // not in beam_kinetic and beam_strain; its displacement (m, into the bat). 0 without a wall.
+  // The barrel wall (-barrel_hoop_frequency or -beam_shell): its stored and kinetic energy (J), not
+  // in beam_kinetic and beam_strain; its displacement under the ball (m, into the bat). 0 without.
   PetscReal shell_energy = 0, wall_deflection = 0;
   PetscReal beam_dissipated = 0;                // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its damper's share too)
   // The hands (-grip), from the force operator (system/force_operator.hpp): the energy stored in

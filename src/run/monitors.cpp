@@ -19,7 +19,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   ImpactSeries          &S = *series_;
 
   PetscFunctionBeginUser;
-  const bool wall = ctx_.sys->wall_dof >= 0;
+  const bool wall = ctx_.sys->fields > ctx_.sys->beam_fields; // a barrel wall (hoop oscillator or shell)
   if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall) PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
   if (wall) { // the barrel wall's peaks, always (NaN until the first step)
@@ -49,7 +49,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
     S.ball_dissipated.push_back(m.ball_work - m.ball_stored);
     S.beam_kinetic.push_back(m.beam_kinetic);
     S.beam_strain.push_back(m.beam_strain);
-    if (ctx_.sys->wall_dof >= 0) S.shell_energy.push_back(m.shell_energy);
+    if (ctx_.sys->fields > ctx_.sys->beam_fields) S.shell_energy.push_back(m.shell_energy);
     S.total_energy.push_back(m.total());
     if (ctx_.sys->Damped()) S.beam_dissipated.push_back(m.beam_dissipated);
   }

@@ -23,7 +23,7 @@ bool ResultFreeBeamAtRest(const Scenario &sc) { return ResultNoHeldDof(sc) && !s
 bool ResultFreePivot(const Scenario &sc) { return sc.beam.has_pivot && PivotHeldText(sc).empty(); }
 
 bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
-bool ResultHoop(const Scenario &sc) { return sc.beam.hoop.on; }
+bool ResultBarrelWall(const Scenario &sc) { return sc.beam.hoop.on || sc.beam.shell.on; }
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
 
@@ -177,11 +177,11 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("grip_force_peak_time", "s", &R::grip_force_peak_time, ResultGripped, "with -grip", [](F f) -> double { return f.peaks->grip_force_time; }, "when"),
     Real("grip_stored_end", "J", &R::grip_stored_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.grip_stored; }, "the grip's stored energy at the end"),
     Real("hand_work_end", "J", &R::hand_work_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.hand_work; }, "work the hands did on the bat by the end"),
-    Real("shell_energy_end", "J", &R::shell_energy_end, ResultHoop, "with -barrel_hoop_frequency", [](F f) -> double { return f.end.shell_energy; },
+    Real("shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.end.shell_energy; },
          "the barrel wall's energy at the end (stored and kinetic): what it did not give back"),
-    Real("shell_energy_peak", "J", &R::shell_energy_peak, ResultHoop, "with -barrel_hoop_frequency", [](F f) -> double { return f.peaks->shell_energy; },
+    Real("shell_energy_peak", "J", &R::shell_energy_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->shell_energy; },
          "the barrel wall's largest energy over the steps (NaN from the modal reference)"),
-    Real("wall_deflection_peak", "m", &R::wall_deflection_peak, ResultHoop, "with -barrel_hoop_frequency", [](F f) -> double { return f.peaks->wall_deflection; },
+    Real("wall_deflection_peak", "m", &R::wall_deflection_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->wall_deflection; },
          "the barrel wall's largest displacement under the ball over the steps (NaN from the modal reference)"),
     Real("segment_kinetic_peak", "J", &R::segment_kinetic_peak, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic; },
          "peak kinetic energy of the monitored segment"),

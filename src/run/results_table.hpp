@@ -53,7 +53,7 @@ bool ResultMomentumInvariant(const Scenario &sc);  // no held dof, no grip, no m
 bool ResultFreeBeamAtRest(const Scenario &sc);     // no held dof, no grip, no swing (Eq. 11)
 bool ResultFreePivot(const Scenario &sc);          // -beam_pivot and no other support or grip: the rig turns freely
 bool ResultGripped(const Scenario &sc);            // -grip
-bool ResultHoop(const Scenario &sc);               // -barrel_hoop_frequency
+bool ResultBarrelWall(const Scenario &sc);         // -barrel_hoop_frequency or -beam_shell
 bool ResultSegment(const Scenario &sc);            // -monitor_segment
 
 // Why a pivoted rig does not turn freely about its pivot (the supports and grip that also hold

@@ -241,6 +241,21 @@ static std::vector<PetscReal> DeflectionField(const BeamSystem &op, std::vector<
   return w;
 }
 
+// The family of a mode (ModesResult::shell_n): the group of fields with the largest kinetic energy
+// m phi^2, the beam's (0) or a shell harmonic's (n); the hoop oscillator counts as n = 2.
+static PetscInt ModeFamily(const BeamSystem &op, const std::vector<PetscReal> &phi)
+{
+  const PetscInt         groups = 1 + (PetscInt)op.shell_harmonics.size();
+  std::vector<PetscReal> e(groups + 1, 0.0);
+  for (PetscInt d = 0; d < op.ndof; ++d) {
+    const PetscInt f = d % op.fields;
+    const PetscInt g = f < op.beam_fields ? 0 : (op.shell_first >= 0 ? 1 + (f - op.shell_first) / 3 : groups);
+    e[g] += op.mass[d] * phi[d] * phi[d];
+  }
+  const PetscInt best = (PetscInt)(std::max_element(e.begin(), e.end()) - e.begin());
+  return best == 0 ? 0 : (best == groups ? 2 : op.shell_harmonics[best - 1]);
+}
+
 // The result in ascending order (the solver's, up to round-off among nearly equal modes);
 // modes below kModesRigidThreshold of the frequency unit are rigid: omega, period 0.
 static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lambda, std::vector<std::vector<PetscReal>> &phis, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
@@ -255,7 +270,9 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->period.assign(count, 0.0);
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
+  if (op.fields > op.beam_fields) out->shell_n.assign(count, 0);
   for (PetscInt m = 0; m < count; ++m) {
+    if (op.fields > op.beam_fields) out->shell_n[m] = ModeFamily(op, phis[order[m]]);
     if (shapes) (*shapes)[m] = DeflectionField(op, std::move(phis[order[m]]));
     const PetscReal w = std::sqrt(std::max<PetscReal>(lambda[order[m]], 0.0));
     if (w < kModesRigidThreshold * op.frequency_unit) {

@@ -47,6 +47,10 @@ struct ModesResult {
   std::vector<PetscReal> frequency; // Hz, omega / (2 pi)
   std::vector<PetscReal> period;    // s, 2 pi / omega (0 for rigid modes)
   PetscInt               rigid_count = 0; // number of rigid modes among the reported ones
+  // With a barrel wall (-beam_shell, -barrel_hoop_frequency): each mode's family, the group of
+  // fields holding most of its kinetic energy: 0 the beam's bending, n a shell harmonic's, 2 the
+  // hoop oscillator; empty without a wall.
+  std::vector<PetscInt>  shell_n;
 };
 
 // Relative threshold for rigid modes: a computed mode is rigid (reported as
