@@ -197,7 +197,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   int rigid = 0, flexible = 0; // numbered apart: mode 1 is the fundamental, the rigid ones r1, r2
   for (size_t q = 0; q < modes.frequency.size(); ++q) {
     std::string nodes;
-    if (modes.omega[q] != 0)
+    if (modes.omega[q] != 0 && !(wall && modes.shell_n[q] != 0)) // a wall's mode: the beam's deflection is round-off
       for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1))) nodes += " " + std::to_string(x).substr(0, 6);
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
     const std::string family = !wall ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));

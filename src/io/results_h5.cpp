@@ -510,8 +510,8 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
       PetscCall(H5WriteDataset1D(g, "shell_n", fam, "1 (0: the beam's bending; n: the wall's harmonic cos n theta; 2: the hoop oscillator)"));
     }
     const PetscReal h = beam.length / (beam.nodes - 1);
-    for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m, ++k)
-      PetscCall(H5WriteDataset1D(g, k == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
+    for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m) // the first two bending modes
+      if (modes.shell_n.empty() || modes.shell_n[m] == 0) PetscCall(H5WriteDataset1D(g, k++ == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
     H5Gclose(g);
     PetscCall(H5WriteBeamSection(file, beam));
     PetscFunctionReturn(0);
