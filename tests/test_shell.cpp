@@ -189,3 +189,99 @@ TEST(Shell, ImpactInvariantsAndEveryTool)
   EXPECT_GT(r.contact_time, b.contact_time);
   EXPECT_GT(std::abs(r.acor - b.acor), 1e-4) << "the wall changes the ACOR (by 3.8e-4; the tools agree to 1e-7)";
 }
+
+namespace {
+
+// The static compliance of the wall alone under a coupling's shell entries, g^T K^-1 g (m/N):
+// the shell's fields only (the harmonics n >= 2 have no rigid motion), a dense solve.
+PetscReal WallCompliance(const BeamSystem &sys, const ContactCoupling &g)
+{
+  std::vector<PetscInt> dofs, at(sys.ndof, -1);
+  for (PetscInt d = 0; d < sys.ndof; ++d)
+    if (d % sys.fields >= sys.shell_first && !sys.held[d]) at[d] = (PetscInt)dofs.size(), dofs.push_back(d);
+  const size_t           n = dofs.size();
+  std::vector<PetscReal> K(n * n, 0.0), b(n, 0.0);
+  for (size_t r = 0; r < n; ++r) {
+    PetscInt  cols[256];
+    PetscReal vals[256];
+    const PetscInt m = BeamSystemStiffnessRow(sys, dofs[r], cols, vals);
+    for (PetscInt q = 0; q < m; ++q)
+      if (at[cols[q]] >= 0) K[r * n + at[cols[q]]] += vals[q];
+  }
+  for (PetscInt q = 0; q < g.n; ++q)
+    if (at[g.dof[q]] >= 0) b[at[g.dof[q]]] += g.w[q];
+  const std::vector<PetscReal> rhs = b;
+  for (size_t k = 0; k < n; ++k) // Gaussian elimination (K symmetric positive definite)
+    for (size_t r = k + 1; r < n; ++r) {
+      const PetscReal f = K[r * n + k] / K[k * n + k];
+      if (f == 0.0) continue;
+      for (size_t c = k; c < n; ++c) K[r * n + c] -= f * K[k * n + c];
+      b[r] -= f * b[k];
+    }
+  for (size_t k = n; k-- > 0;) {
+    for (size_t c = k + 1; c < n; ++c) b[k] -= K[k * n + c] * b[c];
+    b[k] /= K[k * n + k];
+  }
+  PetscReal c = 0;
+  for (size_t k = 0; k < n; ++k) c += rhs[k] * b[k];
+  return c;
+}
+
+} // namespace
+
+// The ball's load as a patch (-shell_contact_radius): a tiny patch gives the point load's weights;
+// a patch's weights per harmonic sum to sin(n phi)/(n phi) (phi = a/R) and vanish beyond +-a;
+// the patch lowers the wall's compliance under the ball; the impact with a patch conserves energy
+// and momentum and the exact modal reference agrees with RK4.
+TEST(Shell, LoadPatch)
+{
+  BeamParams       p    = TubeBeam(kBarrel, 61, Support::Free, Support::Free);
+  const BeamSystem pt   = SystemOf(p);
+  p.shell.contact_radius = 1e-9;
+  const BeamSystem tiny = SystemOf(p);
+  p.shell.contact_radius = 0.015;
+  const BeamSystem wide = SystemOf(p);
+  const PetscReal  x    = 0.1234;
+  const ContactCoupling g0 = BeamSystemCoupling(pt, x), g1 = BeamSystemCoupling(tiny, x), g2 = BeamSystemCoupling(wide, x);
+  ASSERT_EQ(g0.n, g1.n);
+  for (PetscInt q = 0; q < g0.n; ++q) {
+    EXPECT_EQ(g0.dof[q], g1.dof[q]);
+    EXPECT_NEAR(g0.w[q], g1.w[q], 1e-12);
+  }
+  const PetscReal R = kBarrel.R, h = kBarrel.L / 60;
+  const PetscInt  per = (g2.n - 2) / 3;
+  EXPECT_GE(per, (PetscInt)std::floor(2 * 0.015 / h)) << "the patch spans +-a";
+  for (size_t k = 0; k < 3; ++k) {
+    const PetscReal n = 2.0 + k, phi = 0.015 / R;
+    PetscReal       s = 0;
+    for (PetscInt q = 2 + (PetscInt)k * per; q < 2 + (PetscInt)(k + 1) * per; ++q) {
+      s += g2.w[q];
+      const PetscReal xq = (g2.dof[q] / wide.fields) * h;
+      EXPECT_LT(std::abs(xq - x), 0.015 + h) << "no weight beyond the patch's reach";
+    }
+    EXPECT_NEAR(-s, std::sin(n * phi) / (n * phi), 1e-14);
+  }
+  const PetscReal c0 = WallCompliance(pt, g0), c2 = WallCompliance(wide, g2);
+  PetscPrintf(PETSC_COMM_WORLD, "wall compliance under the ball: point %.4g m/N, patch a = 15 mm %.4g m/N\n", (double)c0, (double)c2);
+  EXPECT_GT(c0, 0);
+  EXPECT_LT(c2, 0.8 * c0) << "a patch lowers the wall's compliance under the ball";
+
+  Tube c = kBarrel;
+  c.L    = 0.6;
+  c.t    = 0.001;
+  BeamParams beam          = TubeBeam(c, 41, Support::Free, Support::Free);
+  beam.shell.contact_radius = 0.01;
+  const BallParams ball     = Superball();
+  ImpactParams     ip;
+  ip.x      = 0.4;
+  ip.window = 0;
+  const std::vector<std::pair<std::string, std::string>> rk4 = {{"-ts_type", "rk"}, {"-ts_rk_type", "4"}, {"-ts_adapt_type", "none"}, {"-ts_dt", "2e-7"}};
+  const ImpactResult r = RunImpact(PETSC_COMM_WORLD, beam, ball, ip, rk4);
+  ImpactResult       ref;
+  ASSERT_EQ(0, ModalReferenceRun(Scenario(beam, ball, ip), &ref));
+  PetscPrintf(PETSC_COMM_WORLD, "shell impact with a 10 mm patch: acor rk4 %.10f, reference %.10f; wall peak %.3g m\n", (double)r.acor, (double)ref.acor, (double)r.wall_deflection_peak);
+  EXPECT_LT(std::abs(r.energy_error), 1e-8);
+  EXPECT_LT(std::abs(r.linear_momentum_error), 1e-12);
+  EXPECT_LT(std::abs(r.angular_momentum_error), 1e-12);
+  EXPECT_NEAR(r.acor, ref.acor, 1e-7);
+}

@@ -56,6 +56,7 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
       OptionFlag("-beam_shell", "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, in series with the ball (-beam_profile with inner diameters)"),
       OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
+      OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()), {"-beam_shell"}),
       OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass)", "", Positive()),
       OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
     },
@@ -128,6 +129,7 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_mass", &p->grip.mass, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_shell", &shell, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_harmonics", &harmonics, &setharmonics));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_contact_radius", &p->shell.contact_radius, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();

@@ -1,6 +1,9 @@
 // The scenario from the options. See scenario_options.hpp.
 #include "io/scenario_options.hpp"
 
+#include "model/shell.hpp"
+#include "system/beam_system.hpp"
+
 #include <cmath>
 
 namespace beamimpact {
@@ -36,6 +39,24 @@ PetscErrorCode SwingFromOptions(MPI_Comm comm, const BeamParams &beam, SwingPara
   PetscFunctionReturn(0);
 }
 
+// -shell_contact_radius: its default from the ball (model/shell.hpp) at the approach speed at the
+// impact point, and the patch's entries within the contact coupling's room.
+PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
+{
+  BarrelShell &shell = sc->beam.shell;
+  PetscFunctionBeginUser;
+  if (shell.contact_radius < 0) {
+    const PetscReal v    = sc->ball.speed + (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
+    shell.contact_radius = ShellContactRadiusDefault(sc->ball, v);
+  }
+  const size_t   per   = ShellPatchNodeWeights(sc->beam.nodes, sc->beam.length, sc->impact.x, shell.contact_radius).size();
+  const PetscInt total = 2 + (sc->beam.hoop.on ? 1 : 0) + (PetscInt)(per * shell.harmonics.size());
+  PetscCheck(total <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-shell_contact_radius %g m is not allowed with -beam_nodes %" PetscInt_FMT ": the patch covers %zu nodes per harmonic, %" PetscInt_FMT " coupled dofs in all (at most %" PetscInt_FMT "); give a smaller radius or fewer -shell_harmonics",
+             (double)shell.contact_radius, sc->beam.nodes, per, total, ContactCoupling::kMaxEntries);
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Scenario *sc)
@@ -50,6 +71,7 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
              "-ball_speed 0 is not allowed for a bat at rest: ball and beam would never meet; give -ball_speed > 0 (m/s), or swing the bat (-bat_speed, -bat_angular_velocity)");
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
   PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
+  if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
   if (how.monitors) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
   PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
   PetscFunctionReturn(0);

@@ -1,6 +1,8 @@
 // The barrel wall as a thin cylindrical shell appended to a theory's discretization. See shell.hpp.
 #include "model/shell.hpp"
 
+#include "model/contact.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -135,6 +137,51 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
   d->mass   = std::move(mass);
   d->held   = std::move(held);
   return out;
+}
+
+} // namespace beamimpact
+
+namespace beamimpact {
+
+PetscReal ShellPatchHarmonicWeight(PetscInt n, PetscReal a, PetscReal R)
+{
+  const PetscReal phi = R > 0 ? std::min(a / R, PETSC_PI) : 0.0; // the patch's half-angle
+  const PetscReal z   = (PetscReal)n * phi;
+  return z > 0 ? std::sin(z) / z : 1.0;
+}
+
+std::vector<std::pair<PetscInt, PetscReal>> ShellPatchNodeWeights(PetscInt nodes, PetscReal L, PetscReal x_c, PetscReal a)
+{
+  std::vector<std::pair<PetscInt, PetscReal>> w;
+  const ImpactStencil                         st = GridImpactStencil(nodes, L, x_c);
+  if (!(a > 0)) return {{st.j, st.w}, {st.j + 1, 1.0 - st.w}}; // the point load
+  const PetscReal h  = L / (nodes - 1);
+  const PetscReal x0 = std::max<PetscReal>(0, x_c - a), x1 = std::min(L, x_c + a);
+  const PetscInt  i0 = std::max<PetscInt>(0, (PetscInt)std::floor(x0 / h)), i1 = std::min<PetscInt>(nodes - 1, (PetscInt)std::ceil(x1 / h));
+  std::vector<PetscReal> cut = {x0, x1}; // the pieces where N_i p is one quadratic
+  if (x_c > x0 && x_c < x1) cut.push_back(x_c);
+  for (PetscInt i = i0; i <= i1; ++i)
+    if (i * h > x0 && i * h < x1) cut.push_back(i * h);
+  std::sort(cut.begin(), cut.end());
+  auto p   = [&](PetscReal x) { return std::max<PetscReal>(0, a - std::abs(x - x_c)) / (a * a); };
+  auto hat = [&](PetscInt i, PetscReal x) { return std::max<PetscReal>(0, 1 - std::abs(x - i * h) / h); };
+  PetscReal sum = 0;
+  for (PetscInt i = i0; i <= i1; ++i) {
+    PetscReal wi = 0;
+    for (size_t k = 0; k + 1 < cut.size(); ++k) {
+      const PetscReal l = cut[k], r = cut[k + 1], m = (l + r) / 2;
+      wi += (r - l) / 6 * (hat(i, l) * p(l) + 4 * hat(i, m) * p(m) + hat(i, r) * p(r));
+    }
+    if (wi > 0) w.push_back({i, wi}), sum += wi;
+  }
+  for (auto &e : w) e.second /= sum; // the whole load on the wall where the patch passes an end
+  return w;
+}
+
+PetscReal ShellContactRadiusDefault(const BallParams &b, PetscReal v)
+{
+  if (!(b.radius > 0) || !(v > 0)) return 0.0;
+  return std::sqrt(b.radius * ContactWallMaxCompression(b, v));
 }
 
 } // namespace beamimpact

@@ -28,7 +28,9 @@
 #pragma once
 
 #include "model/beam_theory.hpp"
+#include "model/contact_law.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace beamimpact {
@@ -47,6 +49,20 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d);
 
 // The wall's midsurface radius R and thickness t (m) of a profile at x (m); false where solid.
 bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t);
+
+// The ball's load as a patch (issue 23): a nominal contact radius a (m) spreads the load over
+// the wall. Around the wall, a uniform pressure over the half-angle phi = a/R: the virtual work
+// on W_n cos n theta is the theta-average of cos n theta, sin(n phi)/(n phi) (1 at a = 0). Along
+// x, a hat-shaped line load of half-width a, (a - |x - x_c|)/a^2, integrated against each node's
+// hat function: w_i = int N_i(x) p(x) dx (exact: Simpson on the pieces between the nodes and
+// x_c, x_c +- a), renormalized to sum 1 where the patch passes an end; a = 0 (or a patch within
+// one cell, by symmetry) gives the point load's hat weights N_i(x_c) exactly.
+PetscReal ShellPatchHarmonicWeight(PetscInt n, PetscReal a, PetscReal R);
+std::vector<std::pair<PetscInt, PetscReal>> ShellPatchNodeWeights(PetscInt nodes, PetscReal L, PetscReal x_c, PetscReal a);
+// The default a (m): sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the
+// approach speed v (its own law, ContactWallMaxCompression): the Hertz contact radius of a
+// sphere pressed delta into a flat (a^2 = R_b delta); 0 (the point load) without -ball_radius.
+PetscReal ShellContactRadiusDefault(const BallParams &b, PetscReal v);
 
 // Rayleigh's inextensional ring (Hz) of harmonic n: sqrt(E t^2 n^2 (n^2-1)^2 / (12 rho (1-nu^2) R^4 (n^2+1)))/(2 pi).
 PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n);

@@ -27,6 +27,12 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
     const ShellLayout shell = ShellAppend(p, &d);
     S.shell_first           = shell.first;
     S.shell_harmonics       = shell.harmonics;
+    S.shell_contact_radius  = std::max<PetscReal>(0, p.shell.contact_radius);
+    S.shell_radius.assign(p.nodes, 0.0);
+    for (PetscInt i = 0; i < p.nodes; ++i) {
+      PetscReal t;
+      ShellWallAt(p, p.length * i / (p.nodes - 1), &S.shell_radius[i], &t);
+    }
   }
   S.nodes          = p.nodes;
   S.fields         = d.fields;
@@ -70,12 +76,19 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp)
   g.w[0]   = sys.held[g.dof[0]] ? 0.0 : st.w;
   g.w[1]   = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
   if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0; // the wall under the ball, in series
-  for (size_t k = 0; k < sys.shell_harmonics.size() && g.n + 2 <= ContactCoupling::kMaxEntries; ++k)
-    for (PetscInt s = 0; s < 2; ++s) { // each harmonic's W_n under the ball (outward: the inward displacement is -W_n)
-      const PetscInt d = (st.j + s) * sys.fields + sys.shell_first + 3 * (PetscInt)k + 2;
+  if (sys.shell_harmonics.empty()) return g;
+  // each harmonic's W_n under the ball's patch (outward: the inward displacement is -W_n)
+  const PetscReal a = sys.shell_contact_radius, R = st.w * sys.shell_radius[st.j] + (1 - st.w) * sys.shell_radius[st.j + 1];
+  const std::vector<std::pair<PetscInt, PetscReal>> nodes = ShellPatchNodeWeights(sys.nodes, sys.L, x_imp, a);
+  for (size_t k = 0; k < sys.shell_harmonics.size(); ++k) {
+    const PetscReal wn = ShellPatchHarmonicWeight(sys.shell_harmonics[k], a, R);
+    for (const auto &[i, wi] : nodes) {
+      if (g.n == ContactCoupling::kMaxEntries) return g; // refused before: ShellPatchEntries
+      const PetscInt d = i * sys.fields + sys.shell_first + 3 * (PetscInt)k + 2;
       g.dof[g.n]       = d;
-      g.w[g.n++]       = sys.held[d] ? 0.0 : -(s == 0 ? st.w : 1.0 - st.w);
+      g.w[g.n++]       = sys.held[d] ? 0.0 : -(wn * wi);
     }
+  }
   return g;
 }
 

@@ -35,6 +35,8 @@ struct BeamSystem {
   PetscReal wall_stiffness = 0;            // N/m, its spring k_h
   PetscInt  shell_first = -1;              // the shell's first field (-beam_shell, model/shell.hpp): harmonic k's W_n is field shell_first + 3 k + 2
   std::vector<PetscInt> shell_harmonics;   // n of each harmonic
+  PetscReal shell_contact_radius = 0;      // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
+  std::vector<PetscReal> shell_radius;     // m, the wall's midsurface radius R per node (0 where solid)
   PetscReal L = 0, h = 0;                  // m, length and node spacing
   std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof (with a grip's hands)
   std::vector<char>       held;            // 1 where the dof is held at 0
@@ -69,7 +71,7 @@ void BeamSystemAssemble(BeamSystem *sys);
 // impact point's nodes (weights of held dofs 0); a shell's radial dofs under the ball or a
 // second bending plane would be more entries. Every consumer loops over the n entries.
 struct ContactCoupling {
-  static constexpr PetscInt kMaxEntries = 8;
+  static constexpr PetscInt kMaxEntries = 64; // a shell's patch: up to 20 nodes per harmonic
   PetscInt  n = 0;                  // entries used
   PetscInt  dof[kMaxEntries] = {};  // coupled dofs
   PetscReal w[kMaxEntries]   = {};  // their weights (1)
