@@ -234,8 +234,8 @@ fi
 
 if run bbcor-shell 1 options/scenes/bbcor-shell.opts -sweep_x 0.66 -impact_after time -sweep_quiet; then # the free flight stepped: no modes of 1849 dofs
   f="$dir/bbcor-shell.h5"
-  check "bbcor-shell: the aluminium bat's barrel wall as a shell, BBCOR $(col "$f" /results/bbcor) at 66 cm (0.668; 0.439 at best without the shell), wall peak $(col "$f" /results/wall_deflection_peak) m" \
-    'b > 0.63 && b < 0.70 && w > 1e-3 && w < 1e-2' b="$(col "$f" /results/bbcor)" w="$(col "$f" /results/wall_deflection_peak)"
+  check "bbcor-shell: the aluminium bat's barrel wall as a shell, BBCOR $(col "$f" /results/bbcor) at 66 cm (0.496 with the ball's patch, 0.668 for a point load; 0.439 at best without the shell), wall peak $(col "$f" /results/wall_deflection_peak) m" \
+    'b > 0.47 && b < 0.52 && w > 1e-3 && w < 1e-2' b="$(col "$f" /results/bbcor)" w="$(col "$f" /results/wall_deflection_peak)"
 fi
 if run r161-bbs-map 1 options/scenes/r161-bbs-map.opts -sweep "impact_x=0.72;0.74,ball_speed=20;50" -sweep_quiet; then
   f="$dir/r161-bbs-map.h5"
