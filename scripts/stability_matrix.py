@@ -267,6 +267,16 @@ def cases():
         Case("aluminium-timoshenko", "hollow aluminium bat, Timoshenko, N = 337, superball (linear) at 1 m/s, x = 0.8 m",
              {**BAT, **preset("options/bats/aluminium-bat.opts"), **{"-beam_theory": "timoshenko", "-beam_nodes": 337, "-impact_x": 0.8}},
              why="hollow sections with a step at the knob; the exact modal solution as reference"),
+        # The barrel wall as a shell (issue 23): three harmonics' U, V, W per node in series with
+        # the ball; a thin wall (hoop mode 1.6 kHz, soft in series) and a thick one (the corked
+        # wood bat's 19-20 mm wall, hoop modes above 24 kHz: stiff dofs for the explicit limit).
+        Case("shell-thin", "aluminium bat, its 2.5 mm barrel wall as a shell (-beam_shell), Timoshenko, N = 169, superball (linear) at 1 m/s, x = 0.66 m",
+             {**BAT, **preset("options/bats/aluminium-bat.opts"), **{"-beam_theory": "timoshenko", "-beam_shell": "true", "-impact_x": 0.66}},
+             why="the wall's fields in every tool; the exact modal solution (with the wall) as reference"),
+        Case("shell-thick", "R161 corked (1 in bore, 19-20 mm wall) with -beam_shell, Timoshenko, superball (linear) at 1 m/s, x = 0.73 m",
+             {**BAT, **preset("options/bats/r161.opts"), **{"-beam_profile": "options/bats/r161-corked.profile", "-beam_theory": "timoshenko",
+                                                             "-beam_shell": "true", "-impact_x": 0.73}},
+             why="a thick wall: stiff shell dofs (hoop modes > 24 kHz) next to the beam's"),
         # The bat in play: a swinging bat (its rigid motion is the initial state), a pivoted rig,
         # the hands (a time-dependent drive and a non-proportional damper on the handle).
         Case("r161-swing", "R161 swinging (V_cm 24 m/s, Omega 51 1/s), Timoshenko, N = 169, baseball preset at 40 m/s, x = 0.73 m",

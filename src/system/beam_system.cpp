@@ -212,7 +212,7 @@ PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupli
       if (j >= 0 && j < sys.ndof && !sys.held[j]) sum += std::abs(sys.band[(size_t)width * i + o]);
     }
     for (PetscInt q = 0; q < g.n; ++q)
-      if (g.dof[q] == i && g.w[q] != 0.0) sum += k_extra * g.w[q] * (gsum + 1.0);
+      if (g.dof[q] == i && g.w[q] != 0.0) sum += k_extra * std::abs(g.w[q]) * (gsum + 1.0); // Gershgorin: |entries| (a shell's weights are negative)
     lam = std::max(lam, sum / sys.mass[i]);
   }
   if (m_extra > 0) lam = std::max(lam, 2.0 * k_extra / m_extra);
