@@ -25,8 +25,9 @@
 #
 # the cost of a point against its contact's own stepping: the default scene's sweep
 # (options/default.opts) with 2000 points (BENCH_PERPOINT_POINTS) on 1 rank at N = 41, 161
-# (BENCH_PERPOINT_NODES) with -log_view, and the same with -ts_type cn at N = 641
-# (BENCH_PERPOINT_CN_NODES; rk4's h^2-bound step would take ~1 s a point there). Per point it
+# (BENCH_PERPOINT_NODES) with -log_view, and the same with -ts_type cn, bdf, alpha2 and modal
+# (BENCH_PERPOINT_TYPES) at N = 161 and 641 (BENCH_PERPOINT_CN_NODES; rk4's h^2-bound step
+# would take ~1 s a point at 641). Per point it
 # prints the compute (the farm's busy time), the stages of -log_view (set-up, contact, free
 # flight, output; the rest is the sweep's own work: options, row) and the overhead = compute -
 # contact - free flight, also as a share of the contact's stepping. With BENCH_BEFORE=path to
@@ -161,11 +162,13 @@ if ((perpoint)); then
       run_point_sweep "$x" "$label" "$n" "$@"
     done
   done
-  for n in ${BENCH_PERPOINT_CN_NODES:-641}; do
-    for x in "${exes[@]}"; do
-      ts_label=cn
-      label=$([[ $x == "$exe" ]] && echo this || echo before)
-      run_point_sweep "$x" "$label" "$n" -ts_type cn "$@" # its default step, T_r/200, fixed
+  for n in ${BENCH_PERPOINT_CN_NODES:-161 641}; do
+    for ts in ${BENCH_PERPOINT_TYPES:-cn bdf alpha2 modal}; do
+      for x in "${exes[@]}"; do
+        ts_label=$ts
+        label=$([[ $x == "$exe" ]] && echo this || echo before)
+        run_point_sweep "$x" "$label" "$n" -ts_type "$ts" "$@" # its default step, T_r/200 (bdf: adaptive)
+      done
     done
   done
   echo "(ms per point; compute: the farm's busy time per point; set-up/contact/flight/output: the -log_view stages;"
