@@ -4,7 +4,7 @@
 // ball, a run cut short), for explicit, IMEX, implicit and second-order types, fixed and
 // adaptive; a run on another grid or with other integrator options builds its own context.
 // The implicit types' beam factorizations are kept across points (a point with the same step
-// factors nothing new) and the rank-one solve agrees with the assembled LU (-pc_type lu).
+// keeps the nominal step's factor) and the rank-one solve agrees with the assembled LU (-pc_type lu).
 // Runs at np1, and a few at np2 (MUMPS, a distributed layout).
 #include "run/results_table.hpp"
 #include "solvers/ts_stepper.hpp"
