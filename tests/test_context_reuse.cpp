@@ -89,6 +89,26 @@ TEST(ContextReuse, ImplicitNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "cn"
 TEST(ContextReuse, SecondOrderNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "alpha2"}, {"-ts_dt", "2e-5"}}, "options/base/superball-hysteresis.opts"); }
 TEST(ContextReuse, AssembledLU) { ExpectReuseIsFresh({{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}, {"-pc_type", "lu"}}); }
 
+// Another beam on the same grid (a sweep over the thickness): the context is reused, but not
+// the factors of the first beam's Jacobian; the second beam's run is its fresh run bit for bit.
+TEST(ContextReuse, ImplicitAnotherBeamOnTheSameGrid)
+{
+  const Opts cn   = {{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}};
+  Scenario   thick;
+  test::ReadScene({"options/base/aluminium-6mm.opts", "options/base/superball-linear.opts"}, {{"-beam_length", "1.1"}, {"-beam_nodes", "41"}, {"-beam_thickness", "0.01"}}, &thick.beam, &thick.ball);
+  thick.impact.x      = 0.3;
+  thick.ball.speed    = 2.5;
+  thick.impact.window = 1e-3;
+  ASSERT_EQ(TSStepperContextCacheClear(), 0);
+  const ImpactResult fresh = RunImpact(thick, cn);
+  ASSERT_EQ(TSStepperContextCacheClear(), 0);
+  (void)RunImpact(Scene(0.825, 1.0), cn);
+  const PetscInt     before = Reused();
+  const ImpactResult again  = RunImpact(thick, cn);
+  EXPECT_EQ(Reused(), before + 1);
+  ExpectSameRow(fresh, again, "a thicker beam after the 6 mm one");
+}
+
 // The beam's factorizations are the context's: a second point at the same step factors fewer
 // shifts than the first (the nominal step's is kept; only event-location steps the first point
 // did not take are new), and a third at the same point as the second none at all.

@@ -17,6 +17,7 @@
 #include <petscdm.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 
 namespace beamimpact {
@@ -394,6 +395,70 @@ PetscErrorCode TSJacobianDestroy(TSProblem &P)
 
 PetscInt TSJacobianFactorizations() { return n_factorizations; }
 
+namespace {
+
+// What B0 and Bd are made of (the stiffness band, the masses, the held dofs, the damping rows):
+// a 64-bit FNV-1a hash over their bytes, O(N) a point. A context serves one grid and type, but a
+// sweep may change the beam's values on it (its thickness, material, supports).
+std::uint64_t StructureFingerprint(const TSProblem &P)
+{
+  const BeamSystem &S = *P.sys;
+  std::uint64_t     h = 1469598103934665603ull;
+  auto              add = [&h](const void *p, size_t n) {
+    const unsigned char *b = static_cast<const unsigned char *>(p);
+    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  add(S.band.data(), S.band.size() * sizeof(PetscReal));
+  add(S.mass.data(), S.mass.size() * sizeof(PetscReal));
+  add(S.held.data(), S.held.size());
+  if (S.Damped()) {
+    std::vector<PetscInt>  cols(2 * S.bw + 1);
+    std::vector<PetscReal> vals(2 * S.bw + 1);
+    for (PetscInt d = P.L.D0(); d < P.L.D1(); ++d) {
+      const PetscInt m = BeamSystemDampingRow(S, d, cols.data(), vals.data());
+      add(cols.data(), m * sizeof(PetscInt));
+      add(vals.data(), m * sizeof(PetscReal));
+    }
+  }
+  return h;
+}
+
+// B0 (and Bd, second order damped) of the structure, without the coupling entries; the factors
+// of another structure's B dropped.
+PetscErrorCode BuildBeamPart(TSProblem &P)
+{
+  Vec      U;
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  for (BeamFactor &f : P.jac.factors) {
+    PetscCall(MatDestroy(&f.B));
+    PetscCall(KSPDestroy(&f.ksp));
+    PetscCall(VecDestroy(&f.w));
+  }
+  P.jac.factors.clear();
+  P.jac.current = nullptr;
+  PetscCall(MatDestroy(&P.jac.B0));
+  PetscCall(MatDestroy(&P.jac.Bd));
+  PetscCall(DMCreateGlobalVector(P.L.pack, &U));
+  PetscCall(VecGetLocalSize(U, &n));
+  PetscCall(VecDestroy(&U));
+  const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields;
+  const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
+  PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 3, NULL, width + 3, NULL, &P.jac.B0));
+  PetscCall(MatSetOption(P.jac.B0, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatSetOption(P.jac.B0, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
+  PetscCall(AssembleConstantPart(P, P.jac.B0, false, false));
+  if (P.sys->Damped() && P.L.dof == P.L.fields) {
+    PetscCall(MatDuplicate(P.jac.B0, MAT_DO_NOT_COPY_VALUES, &P.jac.Bd));
+    PetscCall(AssembleConstantPart(P, P.jac.Bd, true, false));
+  }
+  P.jac.structure = StructureFingerprint(P);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
 PetscErrorCode TSJacobianSetDefaultPC(TSProblem &P, PC pc)
 {
   PetscFunctionBeginUser;
@@ -430,16 +495,7 @@ PetscErrorCode TSJacobianInstall(TSProblem &P, TS ts)
   PetscCall(VecGetLocalSize(U, &n));
   PetscCall(VecGetSize(U, &N));
   PetscCall(VecDestroy(&U));
-  const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields;
-  const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
-  PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 3, NULL, width + 3, NULL, &P.jac.B0));
-  PetscCall(MatSetOption(P.jac.B0, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  PetscCall(MatSetOption(P.jac.B0, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
-  PetscCall(AssembleConstantPart(P, P.jac.B0, false, false));
-  if (P.sys->Damped() && P.L.dof == P.L.fields) {
-    PetscCall(MatDuplicate(P.jac.B0, MAT_DO_NOT_COPY_VALUES, &P.jac.Bd));
-    PetscCall(AssembleConstantPart(P, P.jac.Bd, true, false));
-  }
+  PetscCall(BuildBeamPart(P));
   PetscCall(MatCreateShell(P.L.comm, n, n, N, N, &P, &P.jac.J));
   PetscCall(MatShellSetOperation(P.jac.J, MATOP_MULT, (void (*)(void))RankOneMult));
   PetscCall(SetCouplingVectors(P));
@@ -453,6 +509,7 @@ PetscErrorCode TSJacobianNewPoint(TSProblem &P, TS ts)
 {
   PetscFunctionBeginUser;
   if (P.jac.rank_one) {
+    if (StructureFingerprint(P) != P.jac.structure) PetscCall(BuildBeamPart(P)); // another beam on the same grid: its own factors
     PetscCall(SetCouplingVectors(P));
     PetscFunctionReturn(0);
   }

@@ -13,6 +13,7 @@
 
 #include <petscts.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace beamimpact {
@@ -79,6 +80,7 @@ struct JacobianCache {
   std::vector<PetscInt>   v_idx;  // v's owned nonzeros: local offsets in a global vector's array
   std::vector<PetscReal>  v_val;
   PetscInt                point = 0, factored = 0; // the point's generation; factorizations done (all runs)
+  std::uint64_t           structure = 0;           // the fingerprint of the structure B0 was built from
 };
 struct TSCounters {
   PetscInt func = 0, jac = 0, assembled = 0;
