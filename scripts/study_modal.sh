@@ -6,7 +6,7 @@
 #
 # accuracy: one impact with -ts_type modal on the paper's beam (1.1 m free-free, superball,
 #   x = 0.9 m), the R161 Timoshenko bat and the hollow aluminium bat (baseball, 40 m/s at
-#   0.7 m), at N = 161, 641, 2561 (NS="161 641" for fewer: the dense decomposition of a bat's
+#   0.7 m), at N = 161, 641, 2561 (SCENES="r161 aluminium" for some scenes, NS="161 641" for fewer: the dense decomposition of a bat's
 #   5122 dofs at N = 2561 takes tens of minutes): -modal_modes auto at -modal_tolerance 1e-6 and 1e-9 against
 #   -modal_modes all (the dense decomposition). Prints the modes kept and the differences in
 #   ACOR, contact time and peak force (relative for the last two).
@@ -70,7 +70,7 @@ beam_args() { # scene name -> its options
 if [[ $what == accuracy || $what == all ]]; then
   echo "## accuracy: -modal_modes auto against all (-ts_type modal, default step)"
   printf "%-10s %6s %6s %10s %10s %10s %10s %8s %8s\n" scene N tol modes dACOR dTc/Tc dF/F t_all/s t_auto/s
-  for scene in paper r161 aluminium; do
+  for scene in ${SCENES:-paper r161 aluminium}; do
     for N in ${NS:-161 641 2561}; do
       read -r -a ref <<<"$(run "$scene-$N-all" $(beam_args $scene) -beam_nodes $N -modal_modes all)"
       for tol in 1e-6 1e-9; do
