@@ -58,9 +58,11 @@ def nathan2012(out):
     print("""
 Published (Nathan et al. 2012, the abstract; the measured points were not found): the spin is
 "considerably larger" than rolling and nearly independent of the incident spin, i.e. e_T > 0 in
-the impulse model. The program: spin/rolling is 1 + e_T where the contact grips throughout (the
-small offsets), less where the friction cap mu F_n makes it slide (the large offsets: the model's
-cap on the impulse mu P_n bites at the same offsets); the differences from the impulse model:
+the impulse model. The program: spin/rolling is 1 + e_T on the rigid plane (the contact grips
+throughout: at mu 0.5 the impulse model slides throughout only beyond tan theta =
+mu (1 + e)(1 + alpha)/((1 + e_T) alpha), theta about 65 deg here), 0.3-0.5 % less on the
+flexible one. (D = 0 is head-on: the oblique columns do not apply, NaN.) The differences from
+the impulse model:
   * e_T is set on the contact's own normal force (the tangential spring's stiffness follows F_n,
     the length l from e_T for a grip throughout), the model takes it as a restitution of the
     whole impulse: equal where it grips throughout, different where it slides part of the time
