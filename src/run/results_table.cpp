@@ -2,6 +2,8 @@
 #include "run/results_table.hpp"
 
 #include "model/rigid.hpp"
+#include "run/oblique.hpp"
+#include "run/scenario.hpp"
 
 #include <cmath>
 #include <limits>
@@ -26,8 +28,10 @@ bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
 
-bool ResultOblique(const Scenario &sc) { return sc.oblique.on; }
-bool ResultObliqueFlexible(const Scenario &sc) { return sc.oblique.on && !sc.impact.tangential_rigid; }
+// Asked of the scenario as given (the run record, a file's `applies`) and of the run's projected
+// one (the outcome): ObliqueImpact answers the same for both.
+bool ResultOblique(const Scenario &sc) { return sc.oblique.on || ObliqueImpact(sc); }
+bool ResultObliqueFlexible(const Scenario &sc) { return ResultOblique(sc) && !sc.impact.tangential_rigid; }
 
 bool ResultFlight(const Scenario &sc) { return sc.flight.on; }
 
