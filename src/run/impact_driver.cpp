@@ -384,11 +384,16 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
 
 // An oblique impact's run along the normal is over: the tangential contact from its force, the
 // exit and the flight; the series the run recorded for it and nobody asked for are dropped.
-PetscErrorCode ObliqueRunFinish(const Scenario &sc, ImpactRecord *rec)
+PetscErrorCode ObliqueRunFinish(MPI_Comm comm, const ImpactSetup &s, const Scenario &sc, ImpactRecord *rec)
 {
   ImpactSeries &S = rec->series;
+  ObliqueBeam   beam; // the bat's second plane, in the modes of the same system
   PetscFunctionBeginUser;
-  PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, &rec->oblique));
+  beam.comm = comm;
+  beam.sys  = &s.sys;
+  beam.g    = &s.g;
+  PetscCall(FreeFlightTruncation(comm, sc, &beam.truncation));
+  PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, beam, &rec->oblique));
   if (!sc.oblique.ball_series_asked) S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear();
   if (!sc.oblique.series_asked) S.time.clear();
   PetscFunctionReturn(0);
@@ -402,7 +407,7 @@ PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario 
   PetscFunctionBeginUser;
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
   PetscCall(ImpactDrive(st, ctx, &s.contact, sc, s.scales, s.approach, *res, &rec, res));
-  if (sc.oblique.on) PetscCall(ObliqueRunFinish(sc, &rec));
+  if (sc.oblique.on) PetscCall(ObliqueRunFinish(st.Comm(), s, sc, &rec));
   rec.V_x      = s.V_x;
   rec.scales   = s.scales;
   ImpactOutcomeFinish(sc, s.sys, std::move(rec), res);
