@@ -24,9 +24,10 @@
 #   scripts/bench_sweep.sh --perpoint [path/to/beamimpact] [beamimpact options ...]
 #
 # the cost of a point against its contact's own stepping: the default scene's sweep
-# (options/default.opts) with 2000 points (BENCH_PERPOINT_POINTS) on 1 rank at N = 41, 161
-# (BENCH_PERPOINT_NODES) with -log_view, and the same with -ts_type cn at N = 641
-# (BENCH_PERPOINT_CN_NODES; rk4's h^2-bound step would take ~1 s a point there). Per point it
+# (options/default.opts, with rk4) with 2000 points (BENCH_PERPOINT_POINTS) on 1 rank at N = 41, 161
+# (BENCH_PERPOINT_NODES) with -log_view, and the same with -ts_type cn, bdf, alpha2 and modal
+# (BENCH_PERPOINT_TYPES) at N = 161 and 641 (BENCH_PERPOINT_CN_NODES; rk4's h^2-bound step
+# would take ~1 s a point at 641). Per point it
 # prints the compute (the farm's busy time), the stages of -log_view (set-up, contact, free
 # flight, output; the rest is the sweep's own work: options, row) and the overhead = compute -
 # contact - free flight, also as a share of the contact's stepping. With BENCH_BEFORE=path to
@@ -158,14 +159,16 @@ if ((perpoint)); then
     for x in "${exes[@]}"; do
       ts_label=rk4
       label=$([[ $x == "$exe" ]] && echo this || echo before)
-      run_point_sweep "$x" "$label" "$n" "$@"
+      run_point_sweep "$x" "$label" "$n" -options_file integrators/rk4.opts "$@" # the default scene's integrator until 2026-11
     done
   done
-  for n in ${BENCH_PERPOINT_CN_NODES:-641}; do
-    for x in "${exes[@]}"; do
-      ts_label=cn
-      label=$([[ $x == "$exe" ]] && echo this || echo before)
-      run_point_sweep "$x" "$label" "$n" -ts_type cn "$@" # its default step, T_r/200, fixed
+  for n in ${BENCH_PERPOINT_CN_NODES:-161 641}; do
+    for ts in ${BENCH_PERPOINT_TYPES:-cn bdf alpha2 modal}; do
+      for x in "${exes[@]}"; do
+        ts_label=$ts
+        label=$([[ $x == "$exe" ]] && echo this || echo before)
+        run_point_sweep "$x" "$label" "$n" -ts_type "$ts" "$@" # its default step, T_r/200 (bdf: adaptive)
+      done
     done
   done
   echo "(ms per point; compute: the farm's busy time per point; set-up/contact/flight/output: the -log_view stages;"
@@ -177,7 +180,7 @@ if ((perpoint)); then
     declare -A per=()
     for m in 500 2000; do
       log="$work/two$m.log"
-      if ! (cd "$root/options" && "$x" -options_file base/default-scene.opts -task sweep -sweep "impact_x=0:1.1:$((m / 20)),ball_speed=0.5:4:20" "$@" -sweep_progress_interval 1e9 -sweep_restart -output "$work/two$m.h5" >"$log" 2>&1); then
+      if ! (cd "$root/options" && "$x" -options_file base/default-scene.opts -options_file integrators/rk4.opts -task sweep -sweep "impact_x=0:1.1:$((m / 20)),ball_speed=0.5:4:20" "$@" -sweep_progress_interval 1e9 -sweep_restart -output "$work/two$m.h5" >"$log" 2>&1); then
         echo "bench_sweep.sh: the two-axis sweep of $m points failed:" >&2
         cat "$log" >&2
         exit 1

@@ -66,6 +66,8 @@ TOL = {
     "rigid": 1e-3,           # |acor - Eq. 11| in the rigid limit (continuum inertia M L^2/12)
     "wall": 1e-3,            # wall: contact time pi sqrt(m/k) (relative), e = 1 or sqrt((m+1)/(n+1))
     "reference": 1e-4,       # two tight reference runs must agree to this (ACOR)
+    "spin": 1e-3,            # oblique rows: relative, the batted ball's spin (rad/s)
+    "launch_angle": 0.05,    # oblique rows: degrees, the batted ball's launch angle
 }
 
 # Columns of /results that are NaN where they do not apply (the results table, issue 20: a swinging
@@ -283,6 +285,24 @@ def cases():
              {**BAT, **preset("options/bats/r161.opts"), **preset("options/balls/baseball.opts"),
               **{"-ball_k": None, "-beam_theory": "timoshenko", "-beam_nodes": 169, "-impact_x": 0.73, "-bat_speed": 24.0, "-bat_angular_velocity": 51.0}},
              checks=("energy_bound",), why="a swinging bat: approach speed 72 m/s at the impact point"),
+        # Oblique impacts (issue 24): the normal run is the head-on one at v cos(theta); across the
+        # line of centres friction (grip and slip, e_T) on the ball, its spin and the bat flexible
+        # in its second plane (in its modes). Checked: spin and launch angle against the tight runs'.
+        Case("r161-oblique", "R161 swinging, Timoshenko, N = 169, baseball at 40 m/s with 2000 rpm backspin, D = 2 cm, mu 0.5, e_T 0.3, x = 0.7 m",
+             {**BAT, **preset("options/bats/r161.opts"), **preset("options/balls/baseball.opts"),
+              **{"-ball_k": None, "-beam_theory": "timoshenko", "-beam_nodes": 169, "-impact_x": 0.7, "-bat_speed": 24.0, "-bat_angular_velocity": 51.0,
+                 "-impact_offset": 0.02, "-ball_spin": 209.4, "-ball_friction": 0.5, "-ball_tangential_cor": 0.3}},
+             checks=("energy_bound", "oblique"), modal_reference=False, why="friction with grip and slip, the bat flexible in both planes"),
+        Case("r161-oblique-high", "the same at a high offset D = 6 cm (theta = 62 deg: mostly sliding), mu 0.5, e_T 0.3",
+             {**BAT, **preset("options/bats/r161.opts"), **preset("options/balls/baseball.opts"),
+              **{"-ball_k": None, "-beam_theory": "timoshenko", "-beam_nodes": 169, "-impact_x": 0.7, "-bat_speed": 24.0, "-bat_angular_velocity": 51.0,
+                 "-impact_offset": 0.06, "-ball_spin": 209.4, "-ball_friction": 0.5, "-ball_tangential_cor": 0.3}},
+             checks=("energy_bound", "oblique"), modal_reference=False, why="a glancing hit: a short, soft normal contact and a long slide"),
+        Case("r161-oblique-grip", "the same at D = 3 cm with ample friction (mu 2) and a rigid grip (no e_T) on the flexible plane",
+             {**BAT, **preset("options/bats/r161.opts"), **preset("options/balls/baseball.opts"),
+              **{"-ball_k": None, "-beam_theory": "timoshenko", "-beam_nodes": 169, "-impact_x": 0.7, "-bat_speed": 24.0, "-bat_angular_velocity": 51.0,
+                 "-impact_offset": 0.03, "-ball_spin": 209.4, "-ball_friction": 2.0}},
+             checks=("energy_bound", "oblique"), modal_reference=False, why="a rigid grip against the bat's ringing in its second plane (a constraint)"),
         Case("r161-pivot", "R161 pivoted at 15 cm (the BBCOR rig), baseball preset at 60.8 m/s, x = 0.73 m",
              {**BAT, **preset("options/bats/r161.opts"), **preset("options/balls/baseball.opts"),
               **{"-ball_k": None, "-beam_theory": "timoshenko", "-beam_nodes": 169, "-impact_x": 0.73, "-beam_pivot": 0.15, "-ball_speed": 60.8}},
@@ -583,6 +603,11 @@ def classify(case, cell, ref):
         m["rigid_acor"] = e11
         if abs(res["acor"] - e11) > TOL["rigid"]:
             problems.append("ACOR %.6f differs from Eq. 11 (%.6f) by more than %.0e" % (res["acor"], e11, TOL["rigid"]))
+    if "oblique" in case.checks:  # the batted ball: every oblique column finite
+        for k in ("exit_speed", "launch_angle", "spin", "friction_dissipated"):
+            m[k] = res.get(k, float("nan"))
+            if not np.isfinite(m[k]):
+                problems.append("oblique: %s is %s" % (k, m[k]))
     if "wall" in case.checks:
         # the ball's contact time on a rigid wall (checked for the linear law: pi sqrt(m/k)) and its
         # wall COR (1, or sqrt((m+1)/(n+1)) for the hysteretic law), as the program records them
@@ -611,6 +636,12 @@ def classify(case, cell, ref):
         m[k + "_ref"] = q[k]
         if abs(res[k] - q[k]) > TOL[k] * abs(q[k]):
             problems.append("%s %.6e vs reference %.6e (relative %.1e > %.0e)" % (k, res[k], q[k], abs(res[k] / q[k] - 1), TOL[k]))
+    if "oblique" in case.checks:  # spin and launch angle against the reference's
+        for k, tol, rel in (("spin", TOL["spin"], True), ("launch_angle", TOL["launch_angle"], False)):
+            m[k + "_ref"] = q.get(k, float("nan"))
+            err = abs(res[k] - q[k]) / (abs(q[k]) if rel else 1.0)
+            if not err <= tol:
+                problems.append("%s %.6f vs reference %.6f (%s %.1e > %.0e)" % (k, res[k], q[k], "relative" if rel else "deg", err, tol))
     if problems:
         return "wrong", "; ".join(problems), m
     return "correct", "", m

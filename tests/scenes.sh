@@ -257,6 +257,21 @@ if run oblique 1 options/scenes/oblique.opts; then
   [[ -n $(dims "$f" /series/flight_z) ]] && pass "oblique: the trajectory is in /series" || fail "oblique: no /series/flight_z"
 fi
 
+# --- oblique-map (issue 24): impact point x undercut on the swinging R161, 2 x 3 of its points ---
+if run oblique-map 1 options/scenes/oblique-map.opts -sweep "impact_x=0.70;0.74,impact_offset=0;0.02;0.04" -sweep_quiet; then
+  f="$dir/oblique-map.h5"
+  d="$(col "$f" /results/distance | paste -sd,)" s="$(col "$f" /results/spin_rpm | paste -sd,)"
+  check "oblique-map: distance $d m, spin $s rpm: the 2 cm undercut carries farthest at both points, spin rising with the undercut" \
+    'split(d, a, ",") == 6 && split(s, b, ",") == 6 && a[2] > a[1] && a[2] > a[3] && a[5] > a[4] && a[5] > a[6] && b[2] > b[1] && b[3] > b[2] && b[6] > b[5]' d="$d" s="$s"
+fi
+
+# --- oblique-pitches (issue 24): a curveball's topspin leaves more backspin than a fastball's ---
+if run oblique-pitches 1 options/scenes/oblique-pitches.opts -sweep "ball_spin=209.4;-209.4,impact_offset=0.02" -sweep_quiet; then
+  f="$dir/oblique-pitches.h5"
+  s="$(col "$f" /results/spin_rpm | paste -sd,)"
+  check "oblique-pitches: batted spin $s rpm (fastball, curveball)" 'split(s, a, ",") == 2 && a[2] > a[1] && a[1] > 1000' s="$s"
+fi
+
 # every scene file was run above
 for f in options/scenes/*.opts; do
   grep -q -- "$f" "$self" || fail "$f is not exercised by tests/scenes.sh"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The fast part of the stability study (issue 5, docs/stability.md) through the real executable:
 #   * no diagnostic fires on the default scene (options/impact.opts, energy monitor on), and the
-#     explicit stability limit is printed before the run; the summary counts rejected steps and
+#     explicit stability limit is printed before the run (with rk4.opts: the scene is modal); the summary counts rejected steps and
 #     failed solves;
 #   * every diagnostic fires where it must: a held impact point, a fixed explicit step above
 #     dt_max, an RK type unstable on the imaginary axis, a step or a tolerance that cannot
@@ -60,9 +60,12 @@ no_nan "default scene"
 if [[ $rc -ne 0 ]]; then fail "default scene: exit $rc: $out"
 elif grep -q "WARNING" <<<"$out"; then fail "default scene: a warning fired: $out"
 else pass "default scene: no warning, no error with the energy monitor on"; fi
+# the default scene is -ts_type modal (no stability limit); with the former default, rk4, the
+# explicit limit is printed before the run
+run -options_file options/impact.opts -options_file options/integrators/rk4.opts -impact_energy_check -output none
 lim=$(grep -n "explicit stability limit dt_max" <<<"$out" | cut -d: -f1)
 sum=$(grep -n "  acor " <<<"$out" | cut -d: -f1)
-if [[ -n "$lim" && -n "$sum" && $lim -lt $sum ]]; then pass "default scene: dt_max printed before the run"; else fail "default scene: no dt_max line before the summary: $out"; fi
+if [[ -n "$lim" && -n "$sum" && $lim -lt $sum ]]; then pass "default scene with rk4: dt_max printed before the run"; else fail "default scene with rk4: no dt_max line before the summary: $out"; fi
 if grep -Eq "  rejected [0-9]+  failed [0-9]+ " <<<"$out"; then pass "summary counts rejected steps and failed solves"; else fail "summary without rejected/failed counts: $out"; fi
 acor_default=$(field acor)
 run $BEAM $BALL -impact_x 0.55 -reference modal -output none

@@ -70,7 +70,7 @@ TEST(ObliqueImpact, HeadOnIsTodaysRunBitForBit)
     if (!c.compute || std::string(c.name) == "wall_time") continue;
     const double va = c.Get(a), vb = c.Get(b);
     const std::string name = c.name;
-    if (name == "exit_speed" || name == "launch_angle" || name == "spin" || name == "spin_rpm" || name == "friction_dissipated" || name == "distance" || name == "apex" || name == "hang_time") continue;
+    if (name == "exit_speed" || name == "launch_angle" || name == "spin" || name == "spin_rpm" || name == "friction_dissipated" || name == "bat_vibration_tangential" || name == "distance" || name == "apex" || name == "hang_time") continue;
     if (std::isnan(va)) EXPECT_TRUE(std::isnan(vb)) << c.name;
     else EXPECT_EQ(va, vb) << c.name;
   }
@@ -79,6 +79,7 @@ TEST(ObliqueImpact, HeadOnIsTodaysRunBitForBit)
   EXPECT_EQ(b.launch_angle, 0.0);
   EXPECT_EQ(b.spin, 0.0);
   EXPECT_EQ(b.friction_dissipated, 0.0);
+  EXPECT_EQ(b.bat_vibration_tangential, 0.0); // no friction force: the second plane not driven
   EXPECT_GT(b.distance, 10.0); // a line drive at 0 deg from 1 m: it falls 1 m in about 0.45 s
   EXPECT_LT(b.distance, 25.0);
   EXPECT_GT(b.hang_time, 0.0);
@@ -153,20 +154,36 @@ TEST(ObliqueImpact, Refusals)
   EXPECT_EQ(0, PetscPopErrorHandler());
 }
 
-// Ample friction on the swinging bat: the rigid grip stops the slip (rolling on the bat's
-// surfaces), the compliant one reverses it by e_T, so the spin the impact adds is 1 + e_T
-// times the rolling one (the impulse (1 + e_T) m_e u0), whatever the bat's effective mass.
+// Ample friction on the swinging bat rigid in its second plane (-impact_tangential_plane
+// rigid): the rigid grip stops the slip (rolling on the bat's surfaces), the compliant one
+// reverses it by e_T, so the spin the impact adds is 1 + e_T times the rolling one (the impulse
+// (1 + e_T) m_e u0), whatever the bat's effective mass. The flexible plane (the default) is not
+// a single mass: its vibration takes some of the tangential energy, and the spin comes out
+// below 1 + e_T times the rolling one, by a few per cent (measured: 1.182 and 1.474 for e_T 0.2
+// and 0.5); the rigid grip still rolls on the flexible bat to within the bat's ringing.
 TEST(ObliqueImpact, TangentialRestitutionOnTheBat)
 {
   Scenario sc          = R161(24, 51);
   sc.impact.offset     = 0.015;
   sc.ball.spin         = 150;
   sc.ball.friction     = 100;
+  sc.impact.tangential_rigid = PETSC_TRUE;
   const ImpactResult rolling = RunRK4(sc);
+  Scenario           flex    = sc;
+  flex.impact.tangential_rigid = PETSC_FALSE;
+  const ImpactResult rolling_flex = RunRK4(flex);
+  EXPECT_NEAR(rolling_flex.spin, rolling.spin, 0.02 * std::abs(rolling.spin + 150));
+  EXPECT_TRUE(std::isnan(rolling.bat_vibration_tangential)); // the rigid plane has no vibration
   for (PetscReal e_T : {0.2, 0.5}) {
     Scenario c            = sc;
     c.ball.tangential_cor = e_T;
     const ImpactResult r  = RunRK4(c);
     EXPECT_NEAR((r.spin + 150) / (rolling.spin + 150), 1 + e_T, 2e-3) << "e_T " << e_T;
+    c.impact.tangential_rigid = PETSC_FALSE;
+    const ImpactResult f      = RunRK4(c);
+    const PetscReal    ratio  = (f.spin + 150) / (rolling.spin + 150);
+    EXPECT_LT(ratio, 1 + e_T - 5e-3) << "e_T " << e_T;
+    EXPECT_GT(ratio, 1 + e_T - 0.05) << "e_T " << e_T;
+    EXPECT_GT(f.bat_vibration_tangential, 0) << "e_T " << e_T;
   }
 }

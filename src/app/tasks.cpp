@@ -122,6 +122,7 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   if (ObliqueImpact(sc)) {
     PetscCall(PetscPrintf(comm, "oblique: offset %g m, batted ball %.4f m/s at %.3f deg, spin %.2f rad/s (%.0f rpm, > 0 backspin); friction dissipated %.4e J (along the line of centres: acor and bbs above)\n",
                           (double)sc.impact.offset, (double)r.exit_speed, (double)r.launch_angle, (double)r.spin, (double)r.spin_rpm, (double)r.friction_dissipated));
+    if (r.bat_vibration_tangential > 0) PetscCall(PetscPrintf(comm, "oblique: the bat's vibration in its second plane took %.4e J (-impact_tangential_plane flexible)\n", (double)r.bat_vibration_tangential));
     if (sc.flight.on)
       PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n", (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
   }

@@ -274,3 +274,206 @@ ObliqueExit ObliqueExitOf(const ObliqueGeometry &g, PetscReal u_n, PetscReal v_t
 }
 
 } // namespace beamimpact
+
+// ---- The bat flexible in its second plane (oblique.hpp, TangentialPlane) ----
+
+namespace beamimpact {
+
+PetscReal TangentialPlane::PointVelocity() const
+{
+  PetscReal v = 0;
+  for (size_t k = 0; k < gamma.size(); ++k) v += gamma[k] * zd[k];
+  return v;
+}
+
+PetscReal TangentialPlane::ModeEnergy() const
+{
+  PetscReal E = 0.5 * flexibility * force * force;
+  for (size_t k = 0; k < omega.size(); ++k) E += 0.5 * (zd[k] * zd[k] + omega[k] * omega[k] * z[k] * z[k]);
+  return E;
+}
+
+void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd)
+{
+  // z(tau) = z cos + zd S1 + f0 C1 + f1 D1,  S1 = sin(w tau)/w, C1 = (1 - cos(w tau))/w^2,
+  // D1 = (w tau - sin(w tau))/w^3 (its series below w tau = 0.2, where the difference cancels).
+  PetscReal c = 1, S1 = tau, C1 = 0.5 * tau * tau, D1 = tau * tau * tau / 6;
+  if (w != 0) {
+    const PetscReal x = w * tau, sh = std::sin(0.5 * x);
+    c  = std::cos(x);
+    S1 = std::sin(x) / w;
+    C1 = 2 * sh * sh / (w * w);
+    if (x < 0.2) {
+      const PetscReal x2 = x * x;
+      D1 = tau * tau * tau * (1.0 / 6 - x2 / 120 * (1 - x2 / 42 * (1 - x2 / 72 * (1 - x2 / 110))));
+    } else D1 = (x - std::sin(x)) / (w * w * w);
+  }
+  *q  = z * c + zd * S1 + f0 * C1 + f1 * D1;
+  *qd = -z * w * w * S1 + zd * c + f0 * S1 + f1 * C1;
+}
+
+TangentialState TangentialFlexibleStart(const TangentialModel &m, const TangentialPlane &p) { return TangentialStart(m, p.ball_side - p.PointVelocity()); }
+
+namespace {
+
+// A trial sub-step of length tau from the plane's state with F_t = Fa + dF s: the point's
+// displacement change and end velocity, the ball side at the end and its integral.
+struct PlaneTrial {
+  PetscReal disp = 0, vel = 0, ws = 0, ws_int = 0;
+  PetscReal U() const { return ws - vel; }
+};
+
+// rest: from rest (the state left out), for the responses to a unit force.
+PlaneTrial PlaneTry(const TangentialPlane &p, PetscReal inv_me, PetscReal tau, PetscReal Fa, PetscReal dF, bool rest = false)
+{
+  PlaneTrial t;
+  for (size_t k = 0; k < p.omega.size(); ++k) {
+    const PetscReal z = rest ? 0 : p.z[k], zd = rest ? 0 : p.zd[k];
+    PetscReal       q, qd;
+    TangentialModeForced(p.omega[k], z, zd, -p.gamma[k] * Fa, -p.gamma[k] * dF, tau, &q, &qd);
+    t.disp += p.gamma[k] * (q - z);
+    t.vel += p.gamma[k] * qd;
+  }
+  t.disp -= p.flexibility * dF * tau; // the modes left out: the point at -G_r F_t
+  t.vel -= p.flexibility * dF;
+  const PetscReal w0 = rest ? 0 : p.ball_side;
+  t.ws               = w0 + (Fa * tau + 0.5 * dF * tau * tau) * inv_me;
+  t.ws_int           = w0 * tau + (0.5 * Fa * tau * tau + dF * tau * tau * tau / 6) * inv_me;
+  return t;
+}
+
+// The force over a sub-step of length tau the current phase gives (F_n = Fn + dFn s).
+void PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const TangentialState &s, PetscReal tau, PetscReal Fn, PetscReal dFn, PetscReal *Fa, PetscReal *dF)
+{
+  const PetscReal mu = m.friction, l = m.compliance_length;
+  if (s.phase == TangentialPhase::Slip) {
+    *Fa = -s.slip_sign * mu * Fn;
+    *dF = -s.slip_sign * mu * dFn;
+  } else if (l > 0) { // F_t(tau) = -F_n(tau) xi(tau) / l, xi affine in dF
+    const PetscReal Fe = Fn + dFn * tau;
+    const PlaneTrial a = PlaneTry(p, inv_me, tau, p.force, 0), b = PlaneTry(p, inv_me, tau, 0, 1, true);
+    const PetscReal  X0 = s.xi + a.ws_int - a.disp, X1 = b.ws_int - b.disp;
+    *Fa = p.force;
+    *dF = -(p.force + Fe * X0 / l) / (tau + Fe * X1 / l);
+  } else { // rigid grip: a constant force over the sub-step that ends it at u = 0
+    const PlaneTrial a = PlaneTry(p, inv_me, tau, 0, 0), b = PlaneTry(p, inv_me, tau, 1, 0, true);
+    *Fa = -a.U() / b.U();
+    *dF = 0;
+  }
+}
+
+// Whether the current phase ends within the sub-step tried.
+bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTrial &t, PetscReal Fa, PetscReal tau, PetscReal Fn, PetscReal dFn)
+{
+  const PetscReal mu = m.friction, l = m.compliance_length;
+  // (margins of round-off: a slip that starts from a rigid grip starts at u = 0)
+  if (s.phase == TangentialPhase::Slip) return s.slip_sign * t.U() < -1e-13 * (std::abs(t.ws) + std::abs(t.vel));
+  if (l > 0) return std::abs(s.xi + t.ws_int - t.disp) > mu * l;
+  return std::abs(Fa) > (1 + 1e-12) * mu * std::min(Fn, Fn + dFn * tau);
+}
+
+// Moves the plane and the contact's state over tau with F_t = Fa + dF s; the energy taken,
+// integral -F_t u, by 3-point Gauss from the exact u.
+void PlaneCommit(const TangentialModel &m, PetscReal inv_me, PetscReal tau, PetscReal Fa, PetscReal dF, TangentialPlane *p, TangentialState *s)
+{
+  static const PetscReal gx[3] = {-std::sqrt(0.6), 0, std::sqrt(0.6)}, gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+  for (int i = 0; i < 3; ++i) {
+    const PetscReal  si = 0.5 * tau * (1 + gx[i]);
+    const PlaneTrial ti = PlaneTry(*p, inv_me, si, Fa, dF);
+    s->dissipated += 0.5 * tau * gw[i] * (-(Fa + dF * si) * ti.U());
+  }
+  const PlaneTrial t = PlaneTry(*p, inv_me, tau, Fa, dF);
+  for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->z[k], p->zd[k], -p->gamma[k] * Fa, -p->gamma[k] * dF, tau, &p->z[k], &p->zd[k]);
+  if (s->phase == TangentialPhase::Grip && m.compliance_length > 0) s->xi += t.ws_int - t.disp;
+  p->ball_side = t.ws;
+  p->force     = Fa + dF * tau;
+  p->time += tau;
+  p->substeps++;
+  s->impulse += Fa * tau + 0.5 * dF * tau * tau;
+  s->u = t.U();
+}
+
+// The phase switch at the end of a committed sub-step whose phase ended.
+void PhaseSwitch(const TangentialModel &m, TangentialPlane *p, TangentialState *s)
+{
+  const PetscReal mu = m.friction, l = m.compliance_length;
+  TangentialSwitch sw;
+  sw.time = p->time;
+  if (s->phase == TangentialPhase::Slip) {
+    s->phase = TangentialPhase::Grip;
+  } else {
+    s->phase     = TangentialPhase::Slip;
+    s->slip_sign = l > 0 ? (s->xi > 0 ? 1 : -1) : (p->force > 0 ? -1 : 1); // F_t = -s mu F_n opposes the slip
+    if (l > 0) s->xi = s->slip_sign * mu * l;
+  }
+  sw.to = s->phase;
+  s->switches.push_back(sw);
+}
+
+// One sub-step of length h with F_n = Fn + dFn s: the phase's force, its end located by
+// bisection of the length where it ends, the switch, and the rest in the new phase.
+void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, PetscReal Fn, PetscReal dFn, TangentialPlane *p, TangentialState *s)
+{
+  PetscReal tau = 0;
+  for (int it = 0; it < 16 && tau < (1 - 1e-12) * h; ++it) {
+    if (s->phase == TangentialPhase::Slip && s->slip_sign == 0) s->phase = TangentialPhase::Grip;
+    const PetscReal rest = h - tau, Fb = Fn + dFn * tau;
+    PetscReal       Fa, dF;
+    PhaseForce(m, inv_me, *p, *s, rest, Fb, dFn, &Fa, &dF);
+    if (s->phase == TangentialPhase::Slip) p->force = Fa; // continuous into a slip: -s mu F_n
+    if (!PhaseEnds(m, *s, PlaneTry(*p, inv_me, rest, Fa, dF), Fa, rest, Fb, dFn) || it == 15) {
+      PlaneCommit(m, inv_me, rest, Fa, dF, p, s);
+      return;
+    }
+    PetscReal lo = 0, hi = rest;
+    for (int b = 0; b < 200 && hi - lo > 1e-15 * rest; ++b) {
+      const PetscReal mid = 0.5 * (lo + hi);
+      PhaseForce(m, inv_me, *p, *s, mid, Fb, dFn, &Fa, &dF);
+      if (PhaseEnds(m, *s, PlaneTry(*p, inv_me, mid, Fa, dF), Fa, mid, Fb, dFn)) hi = mid;
+      else lo = mid;
+    }
+    PhaseForce(m, inv_me, *p, *s, hi, Fb, dFn, &Fa, &dF);
+    PlaneCommit(m, inv_me, hi, Fa, dF, p, s);
+    PhaseSwitch(m, p, s);
+    tau += hi;
+  }
+}
+
+} // namespace
+
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialPlane *p, TangentialState *s)
+{
+  const PetscReal h = t1 - t0;
+  if (!(h > 0)) return;
+  s->normal_impulse += 0.5 * h * (F0 + F1);
+  TangentialModel ball = m;
+  ball.bat_mass        = PETSC_INFINITY; // the plane is the bat's translation
+  const PetscReal inv_me = 1 / ball.EffectiveMass();
+  if (t0 > p->time) { // free since the plane's time: F_t = 0
+    for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->z[k], p->zd[k], 0, 0, t0 - p->time, &p->z[k], &p->zd[k]);
+    p->force = 0;
+    p->time  = t0;
+  }
+  if (F0 == 0 && F1 == 0) { // not touching: no tangential force, the spring relaxed
+    for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->z[k], p->zd[k], 0, 0, h, &p->z[k], &p->zd[k]);
+    p->force = 0;
+    p->time  = t1;
+    s->xi    = 0;
+    s->u     = p->ball_side - p->PointVelocity();
+    return;
+  }
+  // Sub-steps: 100 per radian of the compliant grip's fastest oscillation, at least one.
+  PetscReal G = p->flexibility;
+  for (PetscReal g : p->gamma) G += g * g;
+  const PetscReal l = m.compliance_length;
+  const PetscReal w = l > 0 ? std::sqrt(std::max(F0, F1) / l * (inv_me + G)) : 0;
+  const PetscInt  n = std::max<PetscInt>(1, (PetscInt)std::ceil(100 * w * h));
+  const PetscReal dFn = (F1 - F0) / h;
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal a = h * k / n, b = h * (k + 1) / n;
+    PlaneSubStep(ball, inv_me, b - a, F0 + dFn * a, dFn, p, s);
+  }
+  p->time = t1; // the sub-steps' sum, to round-off
+}
+
+} // namespace beamimpact

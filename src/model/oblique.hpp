@@ -111,6 +111,53 @@ TangentialState TangentialStart(const TangentialModel &m, PetscReal u0);
 // Advances the tangential contact over [t0, t1] with F_n linear from F0 to F1 (N, >= 0).
 void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialState *s);
 
+// The bat flexible in its second plane (docs/model.md "Oblique impacts"): a round, straight bat
+// bends alike and independently in both planes, so along t it is the same beam, in the same
+// modes, driven at the impact point by -F_t (and moving with the swing's component along t).
+// Each mode k (frequency w_k, share gamma_k of the point's deflection; rigid modes w_k = 0
+// included) obeys z_k'' + w_k^2 z_k = -gamma_k F_t; the modes a truncated basis leaves out move
+// the point quasi-statically by -G_r F_t (the static correction). The ball's side of the slip
+// speed, w = v_b - R_b w_b - R_bat w_a (translation, spin, the bat's roll), obeys w' = F_t / m*
+// (1/m* = 1/m + R_b^2/I_b + R_bat^2/I_a), and the slip speed is u = w - V_c with the point's
+// velocity V_c = sum gamma_k z_k' - G_r dF_t/dt.
+//
+// The force is piecewise linear on sub-steps (at least one per piece of F_n, more where the
+// tangential oscillation is fast: 100 per radian of sqrt(k_t (1/m* + G)), G = sum gamma_k^2 +
+// G_r the point's flexibility in mass); on each the modes and w are exact for the linear force,
+// and the force's end value is what the contact's law gives at the end (slip: -s mu F_n; a
+// compliant grip: -F_n xi / l with xi = xi0 + integral u, which is affine in it; a rigid grip:
+// u = 0): one scalar equation, so the stiff modes never limit the sub-step. Switches (slip ends
+// where u changes sign; a compliant grip slips where |xi| reaches mu l, a rigid one where
+// |F_t| reaches mu F_n) are located by bisection of the sub-step. The energy the tangential
+// contact takes, integral -F_t u dt, is summed by 3-point Gauss on each sub-step from the exact
+// u into TangentialState::dissipated (an independent check of the balance against the bodies'
+// and the modes' energies; stiffness_work stays 0: the spring's part is in it).
+// Undamped modes only (the run refuses a damped beam for it, naming -impact_tangential_plane rigid).
+struct TangentialPlane {
+  std::vector<PetscReal> omega, gamma;    // rad/s, m/(N s^2)^(1/2): per mode
+  PetscReal              flexibility = 0; // m/N, G_r: the point's static flexibility in the modes left out
+  std::vector<PetscReal> z, zd;           // the modes' coordinates and velocities now
+  PetscReal              ball_side = 0;   // m/s, w now
+  PetscReal              force     = 0;   // N, F_t now (on the ball, along t)
+  PetscReal              time      = 0;   // s, the time the state is at
+  PetscInt               substeps  = 0;   // sub-steps taken
+  PetscReal PointVelocity() const;        // m/s, sum gamma_k z_k' (the static correction's rate left out)
+  PetscReal ModeEnergy() const;           // J, 1/2 sum (z_k'^2 + w_k^2 z_k^2) + 1/2 G_r F_t^2
+};
+
+// The slip speed u0 of the first touch from the plane's state and the ball side: the state of the
+// tangential contact as TangentialStart gives it.
+TangentialState TangentialFlexibleStart(const TangentialModel &m, const TangentialPlane &p);
+
+// Advances the tangential contact and the plane over [t0, t1] with F_n linear from F0 to F1 (N,
+// >= 0); a gap since the plane's time is free vibration (F_t = 0). m: the ball, the roll and
+// the contact (bat_mass is ignored: the plane is the bat's translation).
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialPlane *p, TangentialState *s);
+
+// Mode w from z, zd under the force f0 + f1 s over [0, tau]: z and z' at tau, exact (w = 0: a
+// rigid mode).
+void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd);
+
 // The four motions after an impulse J, from their values at the first touch.
 struct TangentialBodies {
   PetscReal v_ball = 0, spin = 0, v_bat = 0, roll = 0; // m/s, rad/s (counter-clockwise), m/s, rad/s

@@ -35,6 +35,7 @@ struct ImpactParams {
   PetscBool after_set   = PETSC_FALSE;        // -impact_after was given: modal where it cannot be is an error
   PetscReal x            = 0.55;  // m, impact point measured from the x = 0 end
   PetscReal offset       = 0;     // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
+  PetscBool tangential_rigid = PETSC_FALSE; // -impact_tangential_plane rigid: the bat rigid in its second plane (default flexible, run/oblique.hpp)
   PetscReal window       = -1;    // s, time simulated after each separation (< 0: 2 fundamental periods)
   PetscReal max_time     = -1;    // s, cap on the simulated time (< 0: window + 100 contact times)
   PetscReal event_tol    = 1e-10; // event indicators (c / c_scale, dc/dt / v_i) are located to this
@@ -188,6 +189,7 @@ struct ImpactOutcome {
   // rpm, > 0 backspin), the energy friction dissipated (J); with -flight its distance (m), apex
   // (m above the ground) and hang time (s). Along the normal, acor, bbs and the rest are the run's.
   PetscReal exit_speed = 0, launch_angle = 0, spin = 0, spin_rpm = 0, friction_dissipated = 0;
+  PetscReal bat_vibration_tangential = 0; // J, the bat's vibration in its second plane after the hit (flexible plane)
   PetscReal distance = 0, apex = 0, hang_time = 0;
 };
 

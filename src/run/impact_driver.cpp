@@ -218,12 +218,13 @@ constexpr double kCostNodeStepImplicit = 1e-7; // s, cn (banded LU): 7.7e-8 at N
 // step on the default grid, 1.5e-8; scripts/bench_defaults.sh, docs/model.md "Cost"): its
 // default step T_r/200 meets it on every grid (1.4e-11 at N = 41, 7e-11 at N = 641: the beam's
 // flow is exact, no stability limit), each step kCostModalDofStep per dof (1.8e-8 at N = 161,
-// 1.6e-8 at N = 641), after the beam's dense modal decomposition, kCostModalModes per dof^3
-// (0.98 s at N = 641, 47 s at N = 2561: 2.8e-9), done once per beam: a sweep's points share it, and the free flight after
-// the separation (-impact_after modal) computes the same modes anyway.
+// 1.6e-8 at N = 641), after the beam's modes at -modal_tolerance (the truncated engine's own
+// time model, BeamModesExpectedSeconds: a partial solve of the modes below the cut-off, or the
+// dense decomposition where it keeps more than a third), done once per beam: a sweep's points
+// share them, and the free flight after the separation (-impact_after modal) computes the same
+// modes anyway.
 constexpr double kModalStepsPerTime = 200;    // steps per contact time scale T_r
 constexpr double kCostModalDofStep  = 1.6e-8; // s
-constexpr double kCostModalModes    = 3.7e-9; // s
 
 // An explicit type whose step the stability limit (~h^2) holds below the contact's own
 // T_r/200 is said at set-up, with what -ts_type modal would take when it applies (a linear
@@ -233,8 +234,10 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
 {
   PetscFunctionBeginUser;
   if (!(info.dt_stable > 0) || !(0.9 * info.dt_stable < scales.time / 200) || !BeamModesAvailable(sys, nullptr)) PetscFunctionReturn(0);
+  ModalTruncation t;
+  PetscCall(FreeFlightTruncation(comm, sc, &t));
   const double dofs   = (double)sys.ndof;
-  const double modes  = kCostModalModes * dofs * dofs * dofs;
+  const double modes  = BeamModesExpectedSeconds(sys, t);
   const bool   anyway = sc.impact.after == ImpactAfter::Modal; // the free flight computes them too
   const double steps  = kModalStepsPerTime * (T / scales.time) * kCostModalDofStep * dofs;
   const double modal  = steps + (anyway ? 0 : modes);
@@ -381,11 +384,16 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
 
 // An oblique impact's run along the normal is over: the tangential contact from its force, the
 // exit and the flight; the series the run recorded for it and nobody asked for are dropped.
-PetscErrorCode ObliqueRunFinish(const Scenario &sc, ImpactRecord *rec)
+PetscErrorCode ObliqueRunFinish(MPI_Comm comm, const ImpactSetup &s, const Scenario &sc, ImpactRecord *rec)
 {
   ImpactSeries &S = rec->series;
+  ObliqueBeam   beam; // the bat's second plane, in the modes of the same system
   PetscFunctionBeginUser;
-  PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, &rec->oblique));
+  beam.comm = comm;
+  beam.sys  = &s.sys;
+  beam.g    = &s.g;
+  PetscCall(FreeFlightTruncation(comm, sc, &beam.truncation));
+  PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, beam, &rec->oblique));
   if (!sc.oblique.ball_series_asked) S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear();
   if (!sc.oblique.series_asked) S.time.clear();
   PetscFunctionReturn(0);
@@ -399,7 +407,7 @@ PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario 
   PetscFunctionBeginUser;
   const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
   PetscCall(ImpactDrive(st, ctx, &s.contact, sc, s.scales, s.approach, *res, &rec, res));
-  if (sc.oblique.on) PetscCall(ObliqueRunFinish(sc, &rec));
+  if (sc.oblique.on) PetscCall(ObliqueRunFinish(st.Comm(), s, sc, &rec));
   rec.V_x      = s.V_x;
   rec.scales   = s.scales;
   ImpactOutcomeFinish(sc, s.sys, std::move(rec), res);

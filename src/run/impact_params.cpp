@@ -34,6 +34,7 @@ const OptionModule &ImpactOptionTable()
     {
       OptionReal("-impact_x", "m", "Impact point, metres from the x = 0 end", "0.55"),
       OptionNeeds(OptionReal("-impact_offset", "m", "Offset D of the ball's line of flight from the bat's axis (> 0: the ball's centre passes above it, the bat strikes below its centre: launched up with backspin); needs a round bat (-beam_profile) and -ball_radius; 0: head-on", "0"), {"-ball_radius"}),
+      OptionChoice("-impact_tangential_plane", "An oblique impact: the bat in its second bending plane (across the line of centres), flexible (the same beam in its modes, driven by the friction force) or rigid (its effective mass at the impact point)", {"flexible", "rigid"}, "flexible"),
       OptionReal("-impact_window", "s", "Time followed after each separation; < 0: two fundamental periods of the beam (the file records the value used)", "-1"),
       OptionChoice("-impact_after", "After a separation: integrate in time, or the exact free vibration in the beam's modes (modal: the default wherever the beam allows it)", {"time", "modal"}, "modal"),
       OptionReal("-impact_max_time", "s", "Cap on the simulated time; <= 0: 4 windows + 100 contact times (the file records the value used); a run it cuts off in contact is an error, a failed point", "-1"),
@@ -77,6 +78,11 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_x", &p->x, &x_set));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_offset", &p->offset, NULL));
+  {
+    PetscInt plane = p->tangential_rigid ? 1 : 0; // the row's choices: flexible, rigid
+    PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-impact_tangential_plane", &plane, NULL));
+    p->tangential_rigid = plane == 1 ? PETSC_TRUE : PETSC_FALSE;
+  }
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_window", &p->window, NULL));
   PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-impact_after", &after, &p->after_set));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_max_time", &p->max_time, NULL));

@@ -7,6 +7,8 @@
 #include "run/scenario.hpp"
 
 #include <cmath>
+#include <memory>
+#include <string>
 
 namespace beamimpact {
 
@@ -64,7 +66,92 @@ void TangentialBat(const Scenario &sc, TangentialModel *m)
 
 } // namespace
 
-PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, ObliqueRecord *rec)
+PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p, PetscInt *rigid)
+{
+  std::shared_ptr<const BeamModes> modes;
+  std::string                      why;
+
+  PetscFunctionBeginUser;
+  PetscCheck(BeamModesAvailable(*beam.sys, &why), beam.comm, PETSC_ERR_SUP,
+             "-impact_tangential_plane flexible: the bat's second plane is solved in the beam's modes, which cannot carry this beam (%s); give -impact_tangential_plane rigid (the bat rigid in "
+             "that plane, its effective mass at the impact point), or no friction (-ball_friction 0)",
+             why.c_str());
+  PetscCall(BeamModesShared(beam.comm, *beam.sys, beam.truncation, &modes));
+  for (PetscReal r : modes->B.rate)
+    PetscCheck(r == 0, beam.comm, PETSC_ERR_SUP,
+               "-impact_tangential_plane flexible: the bat's second plane is solved in undamped modes, and this beam is damped (-beam_damping_*); give -impact_tangential_plane rigid (the bat rigid "
+               "in that plane), or an undamped beam");
+  const BeamModes &M = *modes;
+  const PetscInt   n = M.S.n, nm = M.Count();
+  std::vector<PetscReal> sv(n), gw(n, 0.0);
+  for (PetscInt d = 0; d < n; ++d) {
+    const PetscReal sm = std::sqrt(M.S.mass[d]);
+    sv[d]              = velocity.empty() ? 0.0 : sm * velocity[M.S.dof[d]];
+    for (PetscInt q = 0; q < beam.g->n; ++q)
+      if (M.S.dof[d] == beam.g->dof[q]) gw[d] += beam.g->w[q] / sm;
+  }
+  *p       = TangentialPlane();
+  p->omega = M.B.omega;
+  p->gamma.assign(nm, 0.0);
+  p->z.assign(nm, 0.0);
+  p->zd.assign(nm, 0.0);
+  for (PetscInt k = 0; k < nm; ++k) { // zd = Phi^T M^{1/2} v, gamma = Phi^T M^{-1/2} g
+    const PetscReal *phi = &M.B.Phi[(size_t)k * n];
+    PetscReal        a = 0, c = 0;
+    for (PetscInt d = 0; d < n; ++d) a += phi[d] * sv[d], c += phi[d] * gw[d];
+    p->zd[k]    = a;
+    p->gamma[k] = c;
+  }
+  if (M.truncated) {
+    const ModalCorrection *corr = nullptr;
+    PetscCall(M.StaticCorrection(*beam.g, &corr));
+    p->flexibility = corr->Gr;
+  }
+  *rigid = M.rigid;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlane &p, PetscReal *P, PetscReal *L)
+{
+  std::shared_ptr<const BeamModes> modes;
+
+  PetscFunctionBeginUser;
+  PetscCall(BeamModesShared(beam.comm, *beam.sys, beam.truncation, &modes)); // from the cache
+  const PetscInt n = modes->S.n, f = beam.sys->fields;
+  *P = 0, *L = 0;
+  for (size_t k = 0; k < p.zd.size(); ++k) {
+    const PetscReal *phi = &modes->B.Phi[k * n];
+    PetscReal        r = 0, x = 0; // sum m_d v_d and m_d x_d v_d per unit zd_k, over the translational dofs: v = M^{-1/2} phi zd
+    for (PetscInt d = 0; d < n; ++d) {
+      const PetscInt dof = modes->S.dof[d];
+      if (dof % f) continue;
+      r += phi[d] * std::sqrt(modes->S.mass[d]);
+      x += phi[d] * std::sqrt(modes->S.mass[d]) * beam.sys->NodeX(dof / f);
+    }
+    *P += r * p.zd[k];
+    *L += x * p.zd[k];
+  }
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// The plane after the contact: its flexible modes' energy and its momentum along t.
+PetscErrorCode TangentialPlaneFinish(const ObliqueBeam &beam, ObliqueRecord *rec)
+{
+  const TangentialPlane &p = rec->plane;
+  PetscReal              L;
+
+  PetscFunctionBeginUser;
+  rec->plane_vibration = 0.5 * p.flexibility * p.force * p.force;
+  for (size_t k = (size_t)rec->plane_rigid_modes; k < p.omega.size(); ++k) rec->plane_vibration += 0.5 * (p.zd[k] * p.zd[k] + p.omega[k] * p.omega[k] * p.z[k] * p.z[k]);
+  PetscCall(ObliquePlaneMomenta(beam, p, &rec->plane_momentum, &L));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, const ObliqueBeam &beam, ObliqueRecord *rec)
 {
   const ObliqueIncoming &in = sc.oblique;
   const BallParams      &ball = sc.ball;
@@ -82,6 +169,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   const BeamRigidBody body    = BeamRigidBodyOf(sc.beam);
   const PetscReal     V_in    = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
   const PetscReal     s       = in.geometry.sin_theta;
+  // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models)
   if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force);
   rec->model          = m;
   rec->before.v_ball  = in.ball_speed * s;
@@ -91,10 +179,26 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   const PetscReal u0  = (rec->before.v_ball - m.ball_radius * rec->before.spin) - rec->before.v_bat;
   rec->contact        = TangentialStart(m, u0);
   const bool touches  = m.ball_radius > 0 && m.ball_inertia > 0;
-  if (touches && u0 != 0)
+  const bool flexible = touches && u0 != 0 && m.friction > 0 && !sc.impact.tangential_rigid;
+  if (flexible) { // the swing's -V(x) per dof times sin theta: its component along t
+    std::vector<PetscReal> v;
+    PetscReal              L;
+    if (in.swing.Swings()) v = BeamSystemSwingVelocity(*beam.sys, in.swing, body);
+    for (PetscReal &x : v) x *= s;
+    PetscCall(ObliquePlaneBuild(beam, v, &rec->plane, &rec->plane_rigid_modes));
+    PetscCall(ObliquePlaneMomenta(beam, rec->plane, &rec->plane_momentum0, &L));
+    rec->plane.ball_side = (rec->before.v_ball - m.ball_radius * rec->before.spin) - m.bat_radius * rec->before.roll;
+    rec->flexible        = true;
+    rec->contact         = TangentialFlexibleStart(m, rec->plane);
+    for (size_t k = 0; k + 1 < series.time.size() && k + 1 < series.force.size(); ++k)
+      TangentialAdvanceFlexible(m, series.time[k], series.time[k + 1], std::max<PetscReal>(series.force[k], 0), std::max<PetscReal>(series.force[k + 1], 0), &rec->plane, &rec->contact);
+    PetscCall(TangentialPlaneFinish(beam, rec));
+    rec->model.bat_mass = PETSC_INFINITY; // the bat's translation is the plane's: the ball and the roll from J
+  } else if (touches && u0 != 0)
     for (size_t k = 0; k + 1 < series.time.size() && k + 1 < series.force.size(); ++k)
       TangentialAdvance(m, series.time[k], series.time[k + 1], std::max<PetscReal>(series.force[k], 0), std::max<PetscReal>(series.force[k + 1], 0), &rec->contact);
-  rec->after = touches ? TangentialBodiesAfter(m, rec->before, rec->contact.impulse) : rec->before;
+  rec->after = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
+  if (flexible) rec->after.v_bat = rec->plane.PointVelocity();
   rec->exit  = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
   if (sc.flight.on) {
     FlightParams p    = sc.flight.params;

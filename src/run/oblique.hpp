@@ -6,14 +6,18 @@
 //     scenario with the ball's and the swing's speeds projected on n (times cos theta; exactly
 //     today's run head-on, cos theta = 1);
 //   * along t, the friction force, driven by that run's normal force F_n(t) (the run records the
-//     ball's series for it), on the ball (translation and spin) and on the bat as a rigid body in
-//     its second plane: its effective mass at the impact point (free bat: Eq. 11's M_e; a rig
-//     free about its pivot: I_p / (x - x_p)^2; otherwise held) and its roll about its axis
-//     (free bat: the profile's polar inertia 2 int rho I dx; otherwise held).
-//
-// The second plane is rigid here, not a second flexible field: for a round, straight bat the
-// planes decouple, so the bat's bending along t is driven by F_t only, which is at most mu F_n
-// and, for the undercuts of play, much smaller (docs/model.md says what this leaves out).
+//     ball's series for it, at every step: linear between them), on the ball (translation and
+//     spin), the bat's roll about its axis (free bat: the profile's polar inertia 2 int rho I dx;
+//     otherwise held) and the bat in its second plane:
+//       - flexible (-impact_tangential_plane flexible, the default): the same beam system in the
+//         same modes (solvers/beam_modes: -modal_modes, -modal_tolerance, the static
+//         correction), driven at the impact point by -F_t and moving with the swing's component
+//         along t (model/oblique.hpp, TangentialPlane). For a round, straight bat the planes
+//         decouple and F_n does not depend on the tangential motion, so this second run is
+//         exact for the model given F_n(t); it needs a beam the modes carry (no -grip) and no
+//         damping (refused otherwise, naming the rigid plane);
+//       - rigid: its effective mass at the impact point (free bat: Eq. 11's M_e; a rig free
+//         about its pivot: I_p / (x - x_p)^2; otherwise held).
 // Then, with -flight, the batted ball's flight (solvers/flight_ts.hpp) from the exit speed,
 // launch angle and spin.
 #pragma once
@@ -21,9 +25,13 @@
 #include "model/flight.hpp"
 #include "model/oblique.hpp"
 #include "model/swing.hpp"
+#include "solvers/beam_modes.hpp"
 #include "solvers/flight_ts.hpp"
+#include "system/beam_system.hpp"
 
 #include <petscsys.h>
+
+#include <vector>
 
 namespace beamimpact {
 
@@ -56,6 +64,11 @@ struct ObliqueRecord {
   TangentialBodies before, after;
   TangentialState  contact;
   ObliqueExit      exit;
+  bool             flexible = false;      // the bat's second plane in its modes (else rigid, or no tangential force)
+  TangentialPlane  plane;                 // flexible: its state after the contact
+  PetscInt         plane_rigid_modes = 0; // flexible: the rigid modes among plane.omega (the first)
+  PetscReal        plane_vibration = 0;   // J, flexible: the energy of its flexible modes after the contact
+  PetscReal        plane_momentum0 = 0, plane_momentum = 0; // N s, flexible: the bat's momentum along t before and after
   bool             flew = false;
   FlightResult     flight;
 };
@@ -67,8 +80,25 @@ bool ObliqueImpact(const Scenario &sc);
 // point, -ball_radius, |D| < R_b + R_bat) and projects the ball's and the swing's speeds.
 PetscErrorCode ObliqueNormalScenario(MPI_Comm comm, const Scenario &sc, Scenario *normal);
 
+// The beam of the run along the normal, for the flexible second plane.
+struct ObliqueBeam {
+  MPI_Comm               comm = PETSC_COMM_SELF; // the run's (the modes are computed collectively on it)
+  const BeamSystem      *sys  = nullptr;
+  const ContactCoupling *g    = nullptr;
+  ModalTruncation        truncation; // -modal_modes, -modal_tolerance, with the contact's time scale
+};
+
+// The bat's second plane in the modes of beam's system (TangentialPlane: the modes, the point's
+// share of each, the static correction of a truncated basis), moving with velocity (m/s per dof
+// along t; empty: at rest); rigid: the rigid modes among them (the first). Refuses a beam the
+// modes cannot carry (a grip) or a damped one, naming -impact_tangential_plane rigid.
+PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p, PetscInt *rigid);
+// The plane's momentum along t (N s) and its angular momentum about x = 0 in that plane (N m s,
+// sum m_d x_d v_d over the translational dofs: a Timoshenko section's spin is left out).
+PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlane &p, PetscReal *P, PetscReal *L);
+
 // After the run along the normal (sc: its projected scenario; series: its ball series, F_n at
 // every step): the tangential contact, the exit, and with -flight the flight.
-PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal ball_normal_speed_end, ObliqueRecord *rec);
+PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal ball_normal_speed_end, const ObliqueBeam &beam, ObliqueRecord *rec);
 
 } // namespace beamimpact

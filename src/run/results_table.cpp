@@ -2,6 +2,8 @@
 #include "run/results_table.hpp"
 
 #include "model/rigid.hpp"
+#include "run/oblique.hpp"
+#include "run/scenario.hpp"
 
 #include <cmath>
 #include <limits>
@@ -27,7 +29,10 @@ bool ResultBarrelWall(const Scenario &sc) { return sc.beam.hoop.on || sc.beam.sh
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
 
-bool ResultOblique(const Scenario &sc) { return sc.oblique.on; }
+// Asked of the scenario as given (the run record, a file's `applies`) and of the run's projected
+// one (the outcome): ObliqueImpact answers the same for both.
+bool ResultOblique(const Scenario &sc) { return sc.oblique.on || ObliqueImpact(sc); }
+bool ResultObliqueFlexible(const Scenario &sc) { return ResultOblique(sc) && !sc.impact.tangential_rigid; }
 
 bool ResultFlight(const Scenario &sc) { return sc.flight.on; }
 
@@ -194,6 +199,7 @@ std::vector<ResultColumn> OutcomeColumns()
 // whole exit.
 const char *const kOblique = "an oblique impact: -impact_offset or -ball_spin not 0, or -flight (a head-on hit: exit_speed = bbs, launch_angle 0, no spin)";
 const char *const kFlight  = "with -flight";
+const char *const kObliqueFlexible = "an oblique impact with -impact_tangential_plane flexible (the default; 0 where no friction force acts)";
 std::vector<ResultColumn> ObliqueColumns()
 {
   return {
@@ -205,6 +211,8 @@ std::vector<ResultColumn> ObliqueColumns()
     Real("friction_dissipated", "J", &R::friction_dissipated, ResultOblique, kOblique,
          [](F f) -> double { return f.oblique->contact.dissipated - f.oblique->contact.stiffness_work; },
          "energy the tangential contact took from the motions: friction's sliding, and the tangential spring's (its stiffness follows F_n); its own term, not in energy_error's E (the normal run's)"),
+    Real("bat_vibration_tangential", "J", &R::bat_vibration_tangential, ResultObliqueFlexible, kObliqueFlexible, [](F f) -> double { return f.oblique->plane_vibration; },
+         "energy left in the bat's vibration in its second plane (across the line of centres) by the friction force; its own term, beside friction_dissipated"),
     Real("distance", "m", &R::distance, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.distance; }, "the batted ball's carry: launch point to landing, horizontal"),
     Real("apex", "m", &R::apex, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.apex; }, "the flight's highest point above the ground"),
     Real("hang_time", "s", &R::hang_time, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.hang_time; }, "the flight's time from launch to landing"),

@@ -48,6 +48,7 @@ using ResultApplies = bool (*)(const Scenario &sc);
 bool ResultAlways(const Scenario &sc);
 bool ResultNoHeldDof(const Scenario &sc);
 bool ResultOblique(const Scenario &sc);            // -impact_offset or -ball_spin not 0, or -flight (run/oblique.hpp)
+bool ResultObliqueFlexible(const Scenario &sc);    // the same with the bat flexible in its second plane (-impact_tangential_plane flexible)
 bool ResultFlight(const Scenario &sc);             // -flight          // no end clamped or pinned, no clamped region, no pivot
 bool ResultMomentumInvariant(const Scenario &sc);  // no held dof, no grip, no mass-proportional damping
 bool ResultFreeBeamAtRest(const Scenario &sc);     // no held dof, no grip, no swing (Eq. 11)

@@ -153,6 +153,21 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 
 namespace {
 
+// The time models of the decompositions, measured on the development machine (2 cores,
+// docs/convergence.md): the dense one per free dof cubed (33 s at n = 2561 with the run); a
+// partial eigen-solve per free dof per mode asked squared (Krylov-Schur's orthogonalisation
+// dominates; 6.6 s for 125 asked of 40961 free dofs, 1.35 s of 10241, load 8).
+constexpr double kDenseModesCost   = 2e-9;   // s
+constexpr double kPartialSolveCost = 1.2e-8; // s
+
+// The modes a partial solve asks for first, to reach the cut-off wc: a beam-like spectrum,
+// w_k ~ unit ((k + 1/2) pi)^2, rigid modes below.
+PetscInt ModesAskedBelow(const BeamSystem &sys, PetscInt n, PetscReal wc)
+{
+  const PetscReal k = std::sqrt(wc / sys.frequency_unit) / M_PI;
+  return (PetscInt)std::min<PetscReal>((PetscReal)n, 1.2 * k + 6);
+}
+
 // The dense decomposition of every mode, with its memory check (3 n^2 doubles: the matrix,
 // syev's copy and the basis) against half the physical memory.
 PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m)
@@ -165,7 +180,7 @@ PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m)
   PetscCheck(need <= limit, comm, PETSC_ERR_MEM,
              "-modal_modes %s: every mode of %" PetscInt_FMT " free dofs needs about %.3g GB for the dense decomposition, above half the physical memory (%.3g GB); use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes",
              ModalModesText(m->request).c_str(), m->S.n, need / 1e9, limit / 1e9);
-  const double expected = 2e-9 * n * n * n; // s, measured on the development machine (33 s at n = 2561 with the run)
+  const double expected = kDenseModesCost * n * n * n; // s
   if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
     PetscCall(PetscPrintf(comm, "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT " free dofs, expected to take about %.0f s (-modal_modes auto keeps only the modes the contact moves)\n", m->S.n, expected));
   m->method = "dense";
@@ -183,10 +198,6 @@ void KeepModes(BeamModes *m, PetscInt keep)
   B.rate.resize(keep);
 }
 
-// The time model of a partial eigen-solve, s per free dof per mode asked squared (Krylov-Schur's
-// orthogonalisation dominates): measured on the development machine (2 cores, docs/convergence.md).
-constexpr double kPartialSolveCost = 1.2e-8; // 6.6 s for 125 asked of 40961 free dofs, 1.35 s of 10241 (load 8)
-
 // The modes up to `want` (Count) or up to the cut-off w_c (Auto, want < 0) from partial
 // eigen-solves, nev grown until the cut-off is passed; the dense decomposition instead when
 // more than a third of the modes are wanted. Then keeps what was asked.
@@ -199,10 +210,7 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
   PetscInt                            nev = want;
 
   PetscFunctionBeginUser;
-  if (want < 0) { // beam-like spectrum: w_k ~ unit ((k + 1/2) pi)^2, rigid modes below
-    const PetscReal k = std::sqrt(wc / sys.frequency_unit) / M_PI;
-    nev               = (PetscInt)std::min<PetscReal>((PetscReal)n, 1.2 * k + 6);
-  }
+  if (want < 0) nev = ModesAskedBelow(sys, n, wc);
   for (;;) {
     if (3 * nev > n || n <= 64) { // dense: cheaper than a Krylov space of that size, and exact
       PetscCall(DenseModes(comm, m));
@@ -258,6 +266,21 @@ PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
 }
 
 } // namespace
+
+double BeamModesExpectedSeconds(const BeamSystem &sys, const ModalTruncation &t)
+{
+  const PetscInt n     = ModalSystemBeamOnly(sys).n;
+  const double   dense = kDenseModesCost * (double)n * (double)n * (double)n;
+  PetscInt       nev   = n;
+  if (t.modes == ModalModes::Count) nev = std::min(t.count, n);
+  else if (t.modes == ModalModes::Auto) {
+    ContactCoupling none;
+    const PetscReal wc = t.Cutoff();
+    if (wc < BeamSystemMaxFrequencyBound(sys, none, 0.0, 0.0)) nev = ModesAskedBelow(sys, n, wc);
+  }
+  if (3 * nev > n || n <= 64) return dense; // as BeamModesBuild decides
+  return kPartialSolveCost * (double)n * (double)nev * (double)nev;
+}
 
 PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const BeamModes> *modes)
 {

@@ -96,6 +96,9 @@ std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c = null
 // The cut-off that chose the modes (Hz), NaN when none did (-modal_modes all or K, or a cut-off
 // above every mode).
 PetscReal BeamModesCutoffHz(const BeamModes &m);
+// The expected time (s) of the decomposition t asks for on sys: the dense one, or the partial
+// eigen-solve of the modes up to the cut-off (the time models in beam_modes.cpp).
+double BeamModesExpectedSeconds(const BeamSystem &sys, const ModalTruncation &t);
 
 // Whether the beam's free vibration can be propagated exactly in modes (the force terms are
 // modal: no grip); if not, *why says so. Any size: a truncated basis has no size limit, the

@@ -8,10 +8,16 @@
 // shift (shift_V) or contact stiffness copies it, shifts the diagonal, adds shift_V Jd (second
 // order, damped; Jd = C/m on J0's pattern) and the contact block, so the LU is redone only when
 // one of them changes.
+//
+// The program's default solve (PCSHELL, see JacobianCache in ts_problem.hpp) never assembles
+// J: the beam's part B is factored once per shift and kept with the context, the contact's
+// rank-one term is inverted by Sherman-Morrison, and J is applied as a shell.
 #include "solvers/ts_problem.hpp"
 
 #include <petscdm.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <map>
 
 namespace beamimpact {
@@ -53,8 +59,9 @@ PetscErrorCode SetRow(Mat J, PetscInt r, const std::map<PetscInt, PetscScalar> &
 
 // Every entry of the pattern, with shift = kc = 0: the constant part J0. With damping_only
 // (second order, damped beam) the same pattern holds Jd = C/m instead (C's entries lie on K's
-// pattern and the diagonal).
-PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = false)
+// pattern and the diagonal). Without coupling: no contact entries (B0, Bd of the rank-one
+// path, whose pattern does not depend on the contact point).
+PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = false, bool coupling = true)
 {
   const BeamSystem   &S     = *P.sys;
   const TSLayout     &L     = P.L;
@@ -82,7 +89,7 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = fal
       const PetscInt n = BeamSystemDampingRow(S, d, cols.data(), vals.data());
       for (PetscInt q = 0; q < n; ++q) row[L.DofIndex(cols[q], first)] += vals[q] / S.mass[d];
     }
-    for (PetscInt p = 0; p < P.g.n; ++p)
+    for (PetscInt p = 0; coupling && p < P.g.n; ++p)
       if (P.g.dof[p] == d)
         for (PetscInt q = 0; q < cb.n; ++q) row[cb.cols[q]] += 0.0;
     PetscCall(SetRow(J, rv, row));
@@ -96,7 +103,7 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = fal
     }
     std::map<PetscInt, PetscScalar> row;
     row[bv] = 0.0;
-    for (PetscInt q = 0; q < cb.n; ++q) row[cb.cols[q]] += 0.0;
+    for (PetscInt q = 0; coupling && q < cb.n; ++q) row[cb.cols[q]] += 0.0;
     PetscCall(SetRow(J, bv, row));
   }
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
@@ -138,7 +145,160 @@ PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal shiftV,
   PetscFunctionReturn(0);
 }
 
-// shiftV matters only with Jd (second order, damped); otherwise it is passed as 0.
+// --- The rank-one path -------------------------------------------------------------------
+
+constexpr size_t kBeamFactors = 4; // shifts kept: the nominal step's and the event location's
+PetscInt         n_factorizations = 0;
+
+// v^T x over v's few entries (the coupled dofs and the ball), summed over ranks.
+PetscErrorCode CouplingDot(const TSProblem &P, Vec x, PetscReal *dot)
+{
+  const PetscScalar *a;
+  PetscReal          s = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(x, &a));
+  for (size_t q = 0; q < P.jac.v_idx.size(); ++q) s += P.jac.v_val[q] * a[P.jac.v_idx[q]];
+  PetscCall(VecRestoreArrayRead(x, &a));
+  if (P.L.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPIU_REAL, MPIU_SUM, P.L.comm));
+  *dot = s;
+  PetscFunctionReturn(0);
+}
+
+// u = D^-1 g on the rows of the coupled dofs and the ball (velocity rows in first-order form;
+// none on a held dof), v = g on their position columns; a new point's generation.
+PetscErrorCode SetCouplingVectors(TSProblem &P)
+{
+  const TSLayout     &L     = P.L;
+  const bool          first = L.dof == 2 * L.fields;
+  const CouplingBlock cb    = CouplingBlockOf(P);
+
+  PetscFunctionBeginUser;
+  if (!P.jac.u) {
+    PetscCall(DMCreateGlobalVector(L.pack, &P.jac.u));
+    PetscCall(VecDuplicate(P.jac.u, &P.jac.v));
+  }
+  PetscCall(VecZeroEntries(P.jac.u));
+  PetscCall(VecZeroEntries(P.jac.v));
+  for (PetscInt p = 0; p < cb.n; ++p) {
+    const bool     ball = p == cb.n - 1;
+    const PetscInt d    = ball ? -1 : P.g.dof[p];
+    if (ball ? L.rank != 0 : !(d / L.fields >= L.xs && d / L.fields < L.xe)) continue;
+    PetscCall(VecSetValue(P.jac.v, cb.cols[p], cb.g[p], ADD_VALUES));
+    if (!ball && P.sys->held[d]) continue;
+    const PetscInt  row = ball ? L.BallIndex(first ? 1 : 0) : L.DofIndex(d, first);
+    const PetscReal m   = ball ? P.ball.mass : P.sys->mass[d];
+    PetscCall(VecSetValue(P.jac.u, row, cb.g[p] / m, ADD_VALUES));
+  }
+  for (Vec x : {P.jac.u, P.jac.v}) {
+    PetscCall(VecAssemblyBegin(x));
+    PetscCall(VecAssemblyEnd(x));
+  }
+  { // v's owned entries, for CouplingDot
+    const PetscScalar *a;
+    PetscInt           lo, hi;
+    P.jac.v_idx.clear();
+    P.jac.v_val.clear();
+    PetscCall(VecGetOwnershipRange(P.jac.v, &lo, &hi));
+    PetscCall(VecGetArrayRead(P.jac.v, &a));
+    for (PetscInt p = 0; p < cb.n; ++p)
+      if (cb.cols[p] >= lo && cb.cols[p] < hi && a[cb.cols[p] - lo] != 0.0 &&
+          std::find(P.jac.v_idx.begin(), P.jac.v_idx.end(), cb.cols[p] - lo) == P.jac.v_idx.end()) {
+        P.jac.v_idx.push_back(cb.cols[p] - lo);
+        P.jac.v_val.push_back(a[cb.cols[p] - lo]);
+      }
+    PetscCall(VecRestoreArrayRead(P.jac.v, &a));
+  }
+  P.jac.point++;
+  for (BeamFactor &f : P.jac.factors) f.used /= 2; // uses by recent points count most
+  P.jac.shift = P.jac.kc = P.jac.shiftV = -1; // the first Jacobian of the run is counted, as on a fresh TS
+  P.jac.current = nullptr;
+  PetscFunctionReturn(0);
+}
+
+// The factor of B at (shift, shiftV): kept, or assembled and factored in the least recently
+// used slot; with w = B^-1 u for the current point.
+PetscErrorCode BeamFactorAt(TSProblem &P, PetscReal shift, PetscReal shiftV, BeamFactor **out)
+{
+  JacobianCache &jac = P.jac;
+  BeamFactor    *f   = nullptr;
+
+  PetscFunctionBeginUser;
+  for (BeamFactor &c : jac.factors)
+    if (c.shift == shift && c.shiftV == shiftV) f = &c;
+  if (!f) {
+    jac.factors.reserve(kBeamFactors); // (no reallocation: `current` points into it)
+    if (jac.factors.size() < kBeamFactors) jac.factors.emplace_back();
+    f = &jac.factors.front(); // the least used (the nominal step's stays; event-location steps are one-off)
+    for (BeamFactor &c : jac.factors)
+      if (c.used < f->used) f = &c;
+    f->used = 0;
+    if (!f->B) {
+      PetscCall(MatDuplicate(jac.B0, MAT_COPY_VALUES, &f->B));
+      PetscCall(KSPCreate(P.L.comm, &f->ksp));
+      PetscCall(KSPSetType(f->ksp, KSPPREONLY));
+      PC pc;
+      PetscCall(KSPGetPC(f->ksp, &pc));
+      PetscCall(PCSetType(pc, PCLU));
+      if (P.L.size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+      PetscCall(PCSetFromOptions(pc)); // -pc_factor_mat_ordering_type, -pc_factor_mat_solver_type
+      PetscCall(VecDuplicate(jac.u, &f->w));
+    } else PetscCall(MatCopy(jac.B0, f->B, SAME_NONZERO_PATTERN));
+    if (jac.Bd) PetscCall(MatAXPY(f->B, shiftV, jac.Bd, SAME_NONZERO_PATTERN));
+    PetscCall(MatShift(f->B, shift));
+    PetscCall(KSPSetOperators(f->ksp, f->B, f->B));
+    PetscCall(KSPSetUp(f->ksp)); // the LU
+    f->shift  = shift;
+    f->shiftV = shiftV;
+    f->point  = -1;
+    jac.factored++;
+    n_factorizations++;
+  }
+  if (f->point != jac.point) {
+    PetscCall(KSPSolve(f->ksp, jac.u, f->w));
+    PetscCall(CouplingDot(P, f->w, &f->vw));
+    f->point = jac.point;
+  }
+  f->used++;
+  *out = f;
+  PetscFunctionReturn(0);
+}
+
+// J x = B x + kc u (v^T x).
+PetscErrorCode RankOneMult(Mat J, Vec x, Vec y)
+{
+  TSProblem *P;
+  PetscReal  s;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(J, &P));
+  PetscCall(MatMult(P->jac.current->B, x, y));
+  if (P->jac.kc != 0.0) {
+    PetscCall(CouplingDot(*P, x, &s));
+    PetscCall(VecAXPY(y, P->jac.kc * s, P->jac.u));
+  }
+  PetscFunctionReturn(0);
+}
+
+// z = J^-1 b by Sherman-Morrison on B's factor: z = B^-1 b - kc w (v^T B^-1 b) / (1 + kc v^T w).
+PetscErrorCode RankOneApply(PC pc, Vec b, Vec z)
+{
+  TSProblem *P;
+  PetscReal  a;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &P));
+  const BeamFactor &f = *P->jac.current;
+  PetscCall(KSPSolve(f.ksp, b, z));
+  if (P->jac.kc != 0.0) {
+    PetscCall(CouplingDot(*P, z, &a));
+    PetscCall(VecAXPY(z, -P->jac.kc * a / (1 + P->jac.kc * f.vw), f.w));
+  }
+  PetscFunctionReturn(0);
+}
+
+// shiftV matters only with Jd (second order, damped); otherwise it is passed as 0. The count
+// of assemblies is of changes of J (the assembled path's LU), in either path.
 PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift, PetscReal shiftV)
 {
   PetscReal kc = 0;
@@ -153,7 +313,21 @@ PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift, PetscReal sh
     PetscCall(TSStateReadEnd(P.L, X, &s));
     kc = ContactStiffness(P.ball, *P.contact, c);
   }
-  if (shift != P.jac.shift || kc != P.jac.kc || shiftV != P.jac.shiftV) PetscCall(AssembleJacobian(P, shift, shiftV, kc));
+  if (shift == P.jac.shift && kc == P.jac.kc && shiftV == P.jac.shiftV) PetscFunctionReturn(0);
+  if (!P.jac.rank_one) PetscFunctionReturn(AssembleJacobian(P, shift, shiftV, kc));
+  P.count.assembled++;
+  if (shift != P.jac.shift || shiftV != P.jac.shiftV || !P.jac.current) PetscCall(BeamFactorAt(P, shift, shiftV, &P.jac.current));
+  P.jac.shift  = shift;
+  P.jac.shiftV = shiftV;
+  P.jac.kc     = kc;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SetJacobianOnTS(TSProblem &P, TS ts)
+{
+  PetscFunctionBeginUser;
+  if (P.form == Formulation::SecondOrder) PetscCall(TSSetI2Jacobian(ts, P.jac.J, P.jac.J, TSI2JacobianBeam, &P));
+  else PetscCall(TSSetIJacobian(ts, P.jac.J, P.jac.J, TSIJacobianBeam, &P));
   PetscFunctionReturn(0);
 }
 
@@ -205,6 +379,146 @@ PetscErrorCode TSJacobianDestroy(TSProblem &P)
   PetscCall(MatDestroy(&P.jac.J));
   PetscCall(MatDestroy(&P.jac.J0));
   PetscCall(MatDestroy(&P.jac.Jd));
+  for (BeamFactor &f : P.jac.factors) {
+    PetscCall(MatDestroy(&f.B));
+    PetscCall(KSPDestroy(&f.ksp));
+    PetscCall(VecDestroy(&f.w));
+  }
+  P.jac.factors.clear();
+  P.jac.current = nullptr;
+  PetscCall(MatDestroy(&P.jac.B0));
+  PetscCall(MatDestroy(&P.jac.Bd));
+  PetscCall(VecDestroy(&P.jac.u));
+  PetscCall(VecDestroy(&P.jac.v));
+  PetscFunctionReturn(0);
+}
+
+PetscInt TSJacobianFactorizations() { return n_factorizations; }
+
+namespace {
+
+// What B0 and Bd are made of (the stiffness band, the masses, the held dofs, the damping rows):
+// a 64-bit FNV-1a hash over their bytes, O(N) a point. A context serves one grid and type, but a
+// sweep may change the beam's values on it (its thickness, material, supports).
+std::uint64_t StructureFingerprint(const TSProblem &P)
+{
+  const BeamSystem &S = *P.sys;
+  std::uint64_t     h = 1469598103934665603ull;
+  auto              add = [&h](const void *p, size_t n) {
+    const unsigned char *b = static_cast<const unsigned char *>(p);
+    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  add(S.band.data(), S.band.size() * sizeof(PetscReal));
+  add(S.mass.data(), S.mass.size() * sizeof(PetscReal));
+  add(S.held.data(), S.held.size());
+  if (S.Damped()) {
+    std::vector<PetscInt>  cols(2 * S.bw + 1);
+    std::vector<PetscReal> vals(2 * S.bw + 1);
+    for (PetscInt d = P.L.D0(); d < P.L.D1(); ++d) {
+      const PetscInt m = BeamSystemDampingRow(S, d, cols.data(), vals.data());
+      add(cols.data(), m * sizeof(PetscInt));
+      add(vals.data(), m * sizeof(PetscReal));
+    }
+  }
+  return h;
+}
+
+// B0 (and Bd, second order damped) of the structure, without the coupling entries; the factors
+// of another structure's B dropped.
+PetscErrorCode BuildBeamPart(TSProblem &P)
+{
+  Vec      U;
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  for (BeamFactor &f : P.jac.factors) {
+    PetscCall(MatDestroy(&f.B));
+    PetscCall(KSPDestroy(&f.ksp));
+    PetscCall(VecDestroy(&f.w));
+  }
+  P.jac.factors.clear();
+  P.jac.current = nullptr;
+  PetscCall(MatDestroy(&P.jac.B0));
+  PetscCall(MatDestroy(&P.jac.Bd));
+  PetscCall(DMCreateGlobalVector(P.L.pack, &U));
+  PetscCall(VecGetLocalSize(U, &n));
+  PetscCall(VecDestroy(&U));
+  const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields;
+  const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
+  PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 3, NULL, width + 3, NULL, &P.jac.B0));
+  PetscCall(MatSetOption(P.jac.B0, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatSetOption(P.jac.B0, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
+  PetscCall(AssembleConstantPart(P, P.jac.B0, false, false));
+  if (P.sys->Damped() && P.L.dof == P.L.fields) {
+    PetscCall(MatDuplicate(P.jac.B0, MAT_DO_NOT_COPY_VALUES, &P.jac.Bd));
+    PetscCall(AssembleConstantPart(P, P.jac.Bd, true, false));
+  }
+  P.jac.structure = StructureFingerprint(P);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode TSJacobianSetDefaultPC(TSProblem &P, PC pc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PCSetType(pc, PCSHELL));
+  PetscCall(PCShellSetContext(pc, &P));
+  PetscCall(PCShellSetApply(pc, RankOneApply));
+  PetscCall(PCShellSetName(pc, "rank-one: the beam's LU kept per shift, the contact by Sherman-Morrison"));
+  PetscFunctionReturn(0);
+}
+
+// After the options: the rank-one path if the preconditioner is still the program's shell
+// (B0, Bd without the coupling entries; J a shell), else the assembled J.
+PetscErrorCode TSJacobianInstall(TSProblem &P, TS ts)
+{
+  SNES      snes;
+  KSP       ksp;
+  PC        pc;
+  PetscBool shell;
+
+  PetscFunctionBeginUser;
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCSHELL, &shell));
+  P.jac.rank_one = shell;
+  if (!shell) {
+    PetscCall(TSJacobianCreate(P));
+    PetscCall(SetJacobianOnTS(P, ts));
+    PetscFunctionReturn(0);
+  }
+  Vec      U;
+  PetscInt n, N;
+  PetscCall(DMCreateGlobalVector(P.L.pack, &U));
+  PetscCall(VecGetLocalSize(U, &n));
+  PetscCall(VecGetSize(U, &N));
+  PetscCall(VecDestroy(&U));
+  PetscCall(BuildBeamPart(P));
+  PetscCall(MatCreateShell(P.L.comm, n, n, N, N, &P, &P.jac.J));
+  PetscCall(MatShellSetOperation(P.jac.J, MATOP_MULT, (void (*)(void))RankOneMult));
+  PetscCall(SetCouplingVectors(P));
+  PetscCall(SetJacobianOnTS(P, ts));
+  PetscFunctionReturn(0);
+}
+
+// A reused context's next point: the rank-one path keeps B0 and the factors (u, v and the w's
+// anew); the assembled path rebuilds J for the new contact point's pattern.
+PetscErrorCode TSJacobianNewPoint(TSProblem &P, TS ts)
+{
+  PetscFunctionBeginUser;
+  if (P.jac.rank_one) {
+    if (StructureFingerprint(P) != P.jac.structure) PetscCall(BuildBeamPart(P)); // another beam on the same grid: its own factors
+    PetscCall(SetCouplingVectors(P));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(TSJacobianDestroy(P));
+  const bool contact = P.jac.contact;
+  P.jac              = JacobianCache();
+  P.jac.contact      = contact;
+  PetscCall(TSJacobianCreate(P));
+  PetscCall(SetJacobianOnTS(P, ts));
   PetscFunctionReturn(0);
 }
 

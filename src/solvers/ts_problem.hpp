@@ -13,6 +13,7 @@
 
 #include <petscts.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace beamimpact {
@@ -47,12 +48,40 @@ PetscErrorCode TSLayoutDestroy(TSLayout *L);
 // C = df/dv come from the force operator (BeamSystemStiffnessRow, BeamSystemDampingRow).
 // With damping, the first-order J0 holds C/m in the velocity columns too; the second-order
 // form adds shift_V Jd with Jd = C/m on J0's pattern (shift_V = dV/dX of the method).
+//
+// The program's default solve (-pc_type not given: PCSHELL "rank-one") never assembles or
+// factors J: J = B + kc u v^T, B = B0 + shift I (+ shift_V Jd) the beam and the ball without
+// the contact (a pattern that does not hold the contact point), u = D^-1 g on the rows of the
+// coupled dofs and the ball, v = g on their position columns. B is LU-factored once per
+// shift and kept (BeamFactor, a few shifts, the context's lifetime: every point of a sweep),
+// J is a shell (B x + kc u v^T x) and the preconditioner is its exact inverse by
+// Sherman-Morrison, J^-1 b = z - kc w (v^T z) / (1 + kc v^T w), z = B^-1 b, w = B^-1 u (one
+// solve per point and shift). -pc_type lu (or any other) assembles and factors J as before.
+struct BeamFactor {
+  PetscReal shift = -1, shiftV = -1; // the shift it holds
+  Mat       B = nullptr;             // B0 + shift I (+ shift_V Jd)
+  KSP       ksp = nullptr;           // preonly + LU of B (MUMPS on more than one rank)
+  Vec       w = nullptr;             // B^-1 u for the point of generation `point`
+  PetscReal vw = 0;                  // v^T w
+  PetscInt  point = -1;
+  PetscInt  used = 0;                // uses, halved at each new point (the least used is replaced)
+};
 struct JacobianCache {
   Mat       J = nullptr, J0 = nullptr, Jd = nullptr;
   PetscReal shift = -1, kc = -1, shiftV = -1;
   bool      contact = false; // the contact force is in the implicit part
+  // The rank-one path (rank_one): B0 and Jd without the coupling entries (kept with the
+  // context), the factors per shift, u and v of the current point.
+  bool                    rank_one = false;
+  Mat                     B0 = nullptr, Bd = nullptr;
+  std::vector<BeamFactor> factors;
+  BeamFactor             *current = nullptr; // the factor of the current shift
+  Vec                     u = nullptr, v = nullptr;
+  std::vector<PetscInt>   v_idx;  // v's owned nonzeros: local offsets in a global vector's array
+  std::vector<PetscReal>  v_val;
+  PetscInt                point = 0, factored = 0; // the point's generation; factorizations done (all runs)
+  std::uint64_t           structure = 0;           // the fingerprint of the structure B0 was built from
 };
-
 struct TSCounters {
   PetscInt func = 0, jac = 0, assembled = 0;
 };
@@ -111,6 +140,14 @@ PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscRe
 PetscErrorCode TSDissipationRate(TSProblem &P, PetscReal t, Vec X, Vec V, PetscReal *rate, PetscReal *rate_dot);
 PetscErrorCode TSJacobianCreate(TSProblem &P);
 PetscErrorCode TSJacobianDestroy(TSProblem &P);
+// The rank-one path: the preconditioner set before the options (PCSHELL, the program's
+// default), then, after them, the matrices of whichever solve the options chose (the shell J
+// if the preconditioner is still the program's, else the assembled J), set on the TS.
+// TSJacobianNewPoint: a reused context's next point (u, v anew; the factors kept).
+PetscErrorCode TSJacobianSetDefaultPC(TSProblem &P, PC pc);
+PetscErrorCode TSJacobianInstall(TSProblem &P, TS ts);
+PetscErrorCode TSJacobianNewPoint(TSProblem &P, TS ts);
+PetscInt       TSJacobianFactorizations(); // all contexts, since the start
 
 // Diagnostics (ts_diagnostics.cpp): a Newton convergence test that accepts the residual's
 // round-off floor, and the explanation of a failed step.

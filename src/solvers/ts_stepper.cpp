@@ -495,22 +495,12 @@ PetscErrorCode CreateTS(TSStepper &S, const char *type)
   PetscCall(DMCreateGlobalVector(P.L.pack, &S.U));
   switch (P.form) {
   case Formulation::Explicit: PetscCall(TSSetRHSFunction(S.ts, NULL, TSRHSExplicit, &P)); break;
-  case Formulation::IMEX:
-    PetscCall(TSJacobianCreate(P));
+  case Formulation::IMEX: // the Jacobian is set after the options (TSJacobianInstall): which one depends on the preconditioner
     PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P));
-    PetscCall(TSSetIJacobian(S.ts, P.jac.J, P.jac.J, TSIJacobianBeam, &P));
     PetscCall(TSSetRHSFunction(S.ts, NULL, TSRHSContact, &P));
     break;
-  case Formulation::Implicit:
-    PetscCall(TSJacobianCreate(P));
-    PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P));
-    PetscCall(TSSetIJacobian(S.ts, P.jac.J, P.jac.J, TSIJacobianBeam, &P));
-    break;
-  case Formulation::SecondOrder:
-    PetscCall(TSJacobianCreate(P));
-    PetscCall(TSSetI2Function(S.ts, NULL, TSI2FunctionBeam, &P));
-    PetscCall(TSSetI2Jacobian(S.ts, P.jac.J, P.jac.J, TSI2JacobianBeam, &P));
-    break;
+  case Formulation::Implicit: PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P)); break;
+  case Formulation::SecondOrder: PetscCall(TSSetI2Function(S.ts, NULL, TSI2FunctionBeam, &P)); break;
   }
   if (P.form != Formulation::Explicit) {
     SNES snes;
@@ -525,10 +515,9 @@ PetscErrorCode CreateTS(TSStepper &S, const char *type)
       PetscCall(KSPSetType(ksp, KSPGMRES));
       PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
       PetscCall(PCSetType(pc, PCNONE));
-    } else {
+    } else { // a direct solve: the beam's LU kept per step, the contact by Sherman-Morrison (ts_problem.hpp)
       PetscCall(KSPSetType(ksp, KSPPREONLY));
-      PetscCall(PCSetType(pc, PCLU));
-      if (P.L.size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+      PetscCall(TSJacobianSetDefaultPC(P, pc));
     }
   }
   PetscFunctionReturn(0);
@@ -581,6 +570,7 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   PetscCall(TSGetAdapt(S.ts, &adapt));
   PetscCall(TSAdaptSetStepLimits(adapt, PETSC_DEFAULT, S.dt_cap));
   PetscCall(TSSetFromOptions(S.ts));
+  if (S.P.form != Formulation::Explicit) PetscCall(TSJacobianInstall(S.P, S.ts)); // the shell J, or the assembled one for -pc_type lu etc.
   { // what the options set, replayed when the context is reused (TSContextReuse)
     TSContext &C = *S.C;
     PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_dt", &flag));
@@ -760,8 +750,9 @@ PetscErrorCode TSContextBuild(MPI_Comm comm, TSStepper &S, const char *type, con
 // A context reused for this run: what ConfigureTS set from the run (the default step T_r/200
 // and the cap T_r/8 from this ball's contact time, the Newton floor from this contact's
 // omega_max) set again, what the options set (-ts_dt, -ts_adapt_dt_min/max) replayed; the
-// Jacobian's storage rebuilt for this contact point (its pattern holds the coupled dofs), so
-// the LU is factored anew at the first solve, as in a fresh TS.
+// Jacobian's contact term set for this contact point: the beam's factors (one per step size)
+// are kept, the same numbers a fresh TS would factor (TSJacobianNewPoint); with -pc_type lu
+// the assembled J is rebuilt (its pattern holds the coupled dofs) and factored anew.
 PetscErrorCode TSContextReuse(TSStepper &S, const char *type)
 {
   TSProblem       &P = S.P;
@@ -771,12 +762,7 @@ PetscErrorCode TSContextReuse(TSStepper &S, const char *type)
 
   PetscFunctionBeginUser;
   if (P.form != Formulation::Explicit) {
-    PetscCall(TSJacobianDestroy(P));
-    P.jac = JacobianCache();
-    P.jac.contact = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
-    PetscCall(TSJacobianCreate(P));
-    if (P.form == Formulation::SecondOrder) PetscCall(TSSetI2Jacobian(S.ts, P.jac.J, P.jac.J, TSI2JacobianBeam, &P));
-    else PetscCall(TSSetIJacobian(S.ts, P.jac.J, P.jac.J, TSIJacobianBeam, &P));
+    PetscCall(TSJacobianNewPoint(P, S.ts)); // the beam's factors kept; the contact point's vectors (or the assembled J's pattern) anew
     S.newton_floor.omega2 = S.info.omega_max_bound * S.info.omega_max_bound;
   }
   if (P.form == Formulation::SecondOrder) { // alpha2: its restart's one-off check, as on a new TS
@@ -857,6 +843,8 @@ void TSStepperContextCounts(PetscInt *built, PetscInt *reused)
   *built  = n_built;
   *reused = n_reused;
 }
+
+PetscInt TSStepperBeamFactorizations() { return TSJacobianFactorizations(); }
 
 PetscErrorCode TSStepperContextCacheClear()
 {

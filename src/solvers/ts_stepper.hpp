@@ -34,6 +34,9 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
 // TS monitor builds its own. built / reused: the contexts made and the runs that reused one,
 // since the start; the cache is emptied at PetscFinalize, or by TSStepperContextCacheClear.
 void           TSStepperContextCounts(PetscInt *built, PetscInt *reused);
+// The LU factorizations of the beam's part of the implicit types' Jacobian (one per structure
+// and step size, kept with the context: ts_problem.hpp, JacobianCache) since the start.
+PetscInt       TSStepperBeamFactorizations();
 PetscErrorCode TSStepperContextCacheClear();
 
 } // namespace beamimpact

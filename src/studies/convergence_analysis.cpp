@@ -83,8 +83,12 @@ void ConvergenceMeasureAgainst(const ConvergenceReference &ref, ConvergenceRun *
   const ImpactResult &r = run->result, &R = ref.result;
   if (run->failed) {
     run->acor_error = run->contact_time_error = run->peak_force_error = run->max_compression_error = run->energy_error = NaN;
+    run->exit_speed_error = run->launch_angle_error = run->spin_error = NaN;
     return;
   }
+  run->exit_speed_error   = std::abs(r.exit_speed - R.exit_speed) / std::abs(R.exit_speed); // NaN unless oblique
+  run->launch_angle_error = std::abs(r.launch_angle - R.launch_angle);
+  run->spin_error         = std::abs(r.spin - R.spin) / std::abs(R.spin);
   run->acor_error            = std::abs(r.acor - R.acor);
   run->contact_time_error    = std::abs(r.contact_time - R.contact_time) / R.contact_time;
   run->peak_force_error      = std::abs(r.peak_force - R.peak_force) / R.peak_force;

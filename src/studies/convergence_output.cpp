@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 namespace beamimpact {
 
@@ -73,6 +74,9 @@ PetscErrorCode WriteConfigRuns(hid_t g, const ConvergenceConfig &cfg, const std:
   PetscCall(col("peak_force_error", "1 (relative)", [](const ConvergenceRun &r) { return r.peak_force_error; }));
   PetscCall(col("max_compression_error", "1 (relative)", [](const ConvergenceRun &r) { return r.max_compression_error; }));
   PetscCall(col("energy_error", "1 (|E_end - E_0| / E_0)", [](const ConvergenceRun &r) { return r.energy_error; }));
+  PetscCall(col("exit_speed_error", "1 (relative; NaN unless oblique)", [](const ConvergenceRun &r) { return r.exit_speed_error; }));
+  PetscCall(col("launch_angle_error", "deg (absolute; NaN unless oblique)", [](const ConvergenceRun &r) { return r.launch_angle_error; }));
+  PetscCall(col("spin_error", "1 (relative; NaN unless oblique)", [](const ConvergenceRun &r) { return r.spin_error; }));
   PetscCall(icol("contacts", "1", [](const ConvergenceRun &r) { return (double)r.result.contacts; }));
   PetscCall(col("wall_time", "s, minimum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.wall_time; }));
   PetscCall(col("wall_time_max", "s, maximum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.wall_time_max; }));
@@ -112,6 +116,9 @@ PetscErrorCode WriteConfig(hid_t gc, size_t index, const ConvergenceConfig &cfg,
   a.add("order_acor_lsq", oa.lsq);
   a.add("order_contact_time_lsq", ot.lsq);
   a.add("order_peak_force_lsq", op.lsq);
+  for (auto q : {std::make_pair("order_exit_speed_lsq", &ConvergenceRun::exit_speed_error), std::make_pair("order_launch_angle_lsq", &ConvergenceRun::launch_angle_error),
+                 std::make_pair("order_spin_lsq", &ConvergenceRun::spin_error)})
+    a.add(q.first, ConvergenceOrderOf(cfg, runs, error_floor, q.second).lsq); // NaN unless oblique
   PetscCall(H5WriteAttributes(g, a));
   PetscCall(WriteConfigRuns(g, cfg, runs));
   PetscCall(H5WriteDataset1D(g, "order_acor_pairwise", oa.pairwise, "1 (between level k-1 and k)"));
@@ -246,6 +253,17 @@ PetscErrorCode ConvergencePrintOrders(MPI_Comm comm, const ConvergencePlan &plan
     const auto  op  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::peak_force_error);
     PetscCall(PetscPrintf(comm, "  %-14s %-8s %-26s %-10.2f %-10.2f %-10.2f\n", cfg.name.c_str(), cfg.expected_order > 0 ? ConvergenceFormat("%g", cfg.expected_order).c_str() : "-", OrderText(oa).c_str(), (double)oa.lsq,
                           (double)ot.lsq, (double)op.lsq));
+  }
+  if (all.empty() || all[0].empty() || std::isnan(all[0][0].spin_error)) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(comm, "oblique impact, the batted ball (errors > %g; exit speed and spin relative, launch angle in deg):\n  %-14s %-8s %-26s %-26s %-26s\n", (double)plan.error_floor, "config", "expected",
+                        "exit_speed pairwise", "launch_angle pairwise", "spin pairwise"));
+  for (size_t c = 0; c < plan.configs.size(); ++c) {
+    const auto &cfg = plan.configs[c];
+    const auto  oe  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::exit_speed_error);
+    const auto  ol  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::launch_angle_error);
+    const auto  os  = ConvergenceOrderOf(cfg, all[c], plan.error_floor, &ConvergenceRun::spin_error);
+    PetscCall(PetscPrintf(comm, "  %-14s %-8s %-26s %-26s %-26s\n", cfg.name.c_str(), cfg.expected_order > 0 ? ConvergenceFormat("%g", cfg.expected_order).c_str() : "-", OrderText(oe).c_str(), OrderText(ol).c_str(),
+                          OrderText(os).c_str()));
   }
   PetscFunctionReturn(0);
 }

@@ -34,6 +34,10 @@ struct ConvergenceRun {
   PetscReal    peak_force_error = 0;   // relative
   PetscReal    max_compression_error = 0; // relative
   PetscReal    energy_error = 0;       // |E_end - E_0| / E_0 (the run's own invariant)
+  // An oblique impact (-impact_offset, -ball_spin): the batted ball's (NaN otherwise)
+  PetscReal    exit_speed_error = 0;   // relative
+  PetscReal    launch_angle_error = 0; // deg, absolute
+  PetscReal    spin_error = 0;         // relative
   bool         failed = false;
   std::string  message;          // why it failed
 };

@@ -1,0 +1,158 @@
+// The bat flexible in its second plane (model/oblique.hpp TangentialPlane, run/oblique.cpp):
+//   * a mode under a linear force against its closed forms (rest, constant and ramp loads);
+//   * a plane of one rigid mode of mass M_t is the rigid bat of effective mass M_t: the same
+//     impulse as the rigid model's closed-form slip and Runge-Kutta grip (an independent solver);
+//   * a plane of no modes is a massive fixed target: rolling, v_t' = v_t / (1 + alpha);
+//   * on the free R161 bat in its modes: momentum and angular momentum of ball + bat along t
+//     conserved to round-off, and the energy balance with the tangential contact's term.
+#include "model/oblique.hpp"
+#include "run/oblique.hpp"
+#include "run/scenario.hpp"
+
+#include "test_helpers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace beamimpact;
+
+namespace {
+
+TangentialModel Baseball(PetscReal mu, PetscReal l)
+{
+  TangentialModel m;
+  m.ball_mass    = 0.145;
+  m.ball_radius  = 0.0369;
+  m.ball_inertia = 0.4 * m.ball_mass * m.ball_radius * m.ball_radius;
+  m.bat_radius   = 0.033;
+  m.friction     = mu;
+  m.compliance_length = l;
+  return m;
+}
+
+PetscReal HalfSine(PetscReal t, PetscReal T, PetscReal P) { return t <= 0 || t >= T ? 0.0 : P * M_PI / (2 * T) * std::sin(M_PI * t / T); }
+
+void FeedRigid(const TangentialModel &m, PetscReal T, PetscReal P, int n, TangentialState *s)
+{
+  for (int k = 0; k < n; ++k) TangentialAdvance(m, T * k / n, T * (k + 1) / n, HalfSine(T * k / n, T, P), HalfSine(T * (k + 1) / n, T, P), s);
+}
+
+void FeedPlane(const TangentialModel &m, PetscReal T, PetscReal P, int n, TangentialPlane *p, TangentialState *s)
+{
+  for (int k = 0; k < n; ++k) TangentialAdvanceFlexible(m, T * k / n, T * (k + 1) / n, HalfSine(T * k / n, T, P), HalfSine(T * (k + 1) / n, T, P), p, s);
+}
+
+} // namespace
+
+TEST(TangentialPlane, ModeUnderLinearForce)
+{
+  const PetscReal w = 3000, tau = 1.3e-3;
+  PetscReal       q, qd;
+  TangentialModeForced(w, 0, 0, 5, 0, tau, &q, &qd); // a constant load from rest
+  EXPECT_NEAR(q, 5 * (1 - std::cos(w * tau)) / (w * w), 1e-15);
+  EXPECT_NEAR(qd, 5 * std::sin(w * tau) / w, 1e-14);
+  TangentialModeForced(w, 0, 0, 0, 7, tau, &q, &qd); // a ramp: q = f1 (w t - sin w t) / w^3
+  EXPECT_NEAR(q, 7 * (w * tau - std::sin(w * tau)) / (w * w * w), 1e-15);
+  TangentialModeForced(w, 0, 0, 0, 7, 1e-6, &q, &qd); // w tau below 0.2: the series
+  EXPECT_NEAR(q / (7 * 1e-18 / 6), 1 - 0.003 * 0.003 / 20, 1e-12);
+  TangentialModeForced(w, 2e-3, 0.5, 0, 0, tau, &q, &qd); // free: the energy kept
+  EXPECT_NEAR(qd * qd + w * w * q * q, 0.25 + w * w * 4e-6, 1e-12);
+  TangentialModeForced(0, 1, 2, 3, 4, 0.5, &q, &qd); // rigid
+  EXPECT_NEAR(q, 1 + 2 * 0.5 + 3 * 0.125 + 4 * 0.125 / 6, 1e-15);
+  EXPECT_NEAR(qd, 2 + 3 * 0.5 + 4 * 0.125, 1e-15);
+}
+
+// One rigid mode, gamma = 1/sqrt(M_t): the plane is a rigid body of mass M_t at the point.
+TEST(TangentialPlane, OneRigidModeIsTheRigidBat)
+{
+  const PetscReal M_t = 0.9, T = 0.8e-3, P = 2 * 0.145 * 35, u0 = 6;
+  for (PetscReal mu : {0.1, 0.5, 100.0}) {
+    for (PetscReal l : {0.0, 2e-3}) {
+      TangentialModel rigid = Baseball(mu, l);
+      rigid.bat_mass        = M_t;
+      TangentialState a     = TangentialStart(rigid, u0);
+      FeedRigid(rigid, T, P, 800, &a);
+      TangentialPlane p;
+      p.omega = {0.0};
+      p.gamma = {1 / std::sqrt(M_t)};
+      p.z = p.zd = {0.0};
+      p.ball_side = u0;
+      TangentialState b = TangentialFlexibleStart(Baseball(mu, l), p);
+      FeedPlane(Baseball(mu, l), T, P, 800, &p, &b);
+      // (100 sub-steps per radian of the compliant grip: 6e-6 apart; 1000: below 1e-6)
+      EXPECT_NEAR(b.impulse, a.impulse, 1e-5 * std::abs(a.impulse) + 1e-14) << "mu " << mu << " l " << l;
+      EXPECT_EQ(b.switches.size(), a.switches.size()) << "mu " << mu << " l " << l;
+      // momentum: the ball's J against the bat's
+      EXPECT_NEAR(b.impulse + std::sqrt(M_t) * p.zd[0], 0.0, 1e-14 * P) << "mu " << mu << " l " << l;
+    }
+  }
+}
+
+// No modes: a massive fixed target. Ample friction, no compliance: rolling.
+TEST(TangentialPlane, NoModesRollsOnAFixedTarget)
+{
+  for (PetscReal alpha : {0.4, 0.55}) {
+    TangentialModel m = Baseball(1e6, 0);
+    m.ball_inertia    = alpha * m.ball_mass * m.ball_radius * m.ball_radius;
+    TangentialPlane p;
+    p.ball_side       = 8.0;
+    TangentialState s = TangentialFlexibleStart(m, p);
+    FeedPlane(m, 0.7e-3, 2 * m.ball_mass * 30, 40, &p, &s);
+    const TangentialBodies b = TangentialBodiesAfter(m, TangentialBodies{8.0, 0, 0, 0}, s.impulse);
+    EXPECT_NEAR(b.v_ball, 8.0 / (1 + alpha), 1e-12) << alpha;
+    EXPECT_NEAR(b.spin, b.v_ball / m.ball_radius, 1e-9) << alpha;
+  }
+}
+
+// The free R161 bat (Euler-Bernoulli, 85 nodes) in its modes, struck 70 cm from the knob with
+// a half-sine normal force: ball + bat along t keep their momentum and their angular momentum
+// about x = 0 to round-off (the rigid modes take the force exactly), and the energy of the
+// ball, the roll and the plane's modes falls by the tangential contact's term (integral -F_t u
+// by Gauss on each sub-step: a balance, not an identity).
+TEST(TangentialPlane, FreeBatConservesMomentumAndBalancesEnergy)
+{
+  Scenario sc;
+  test::ReadScene({"options/bats/r161.opts", "options/balls/baseball.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}}, &sc.beam, &sc.ball);
+  BeamSystem  sys;
+  std::string why;
+  ASSERT_TRUE(BeamSystemBuild(sc.beam, &sys, &why)) << why;
+  const PetscReal       x_c = 0.7;
+  const ContactCoupling g   = BeamSystemCoupling(sys, x_c);
+  ObliqueBeam           beam;
+  beam.sys              = &sys;
+  beam.g                = &g;
+  beam.truncation.modes = ModalModes::All;
+  for (PetscReal l : {0.0, 5e-3}) {
+    for (PetscReal mu : {0.2, 0.6}) {
+      TangentialModel m = Baseball(mu, l);
+      m.bat_roll_inertia = 4e-4; // kg m^2: the roll of a wood bat
+      TangentialPlane p;
+      PetscInt        rigid = 0;
+      ASSERT_EQ(0, ObliquePlaneBuild(beam, std::vector<PetscReal>(sys.ndof, -3.0), &p, &rigid)); // the bat moving at 3 m/s along -t
+      EXPECT_EQ(rigid, 2);
+      const TangentialBodies b0{9.0, -150, 0, 0};
+      p.ball_side       = b0.v_ball - m.ball_radius * b0.spin - m.bat_radius * b0.roll;
+      PetscReal P0, L0, P1, L1;
+      ASSERT_EQ(0, ObliquePlaneMomenta(beam, p, &P0, &L0));
+      const PetscReal E0 = TangentialKineticEnergy(m, b0) + p.ModeEnergy();
+      TangentialState s  = TangentialFlexibleStart(m, p);
+      FeedPlane(m, 0.8e-3, 2 * m.ball_mass * 40, 400, &p, &s);
+      for (int k = 0; k < 20; ++k) TangentialAdvanceFlexible(m, 0.8e-3 + 1e-4 * k, 0.8e-3 + 1e-4 * (k + 1), 0, 0, &p, &s); // ringing after it
+      ASSERT_EQ(0, ObliquePlaneMomenta(beam, p, &P1, &L1));
+      TangentialModel ball = m;
+      ball.bat_mass        = PETSC_INFINITY;
+      const TangentialBodies b1 = TangentialBodiesAfter(ball, b0, s.impulse);
+      const PetscReal        scale = m.ball_mass * 9.0;
+      EXPECT_NEAR(m.ball_mass * b1.v_ball + P1, m.ball_mass * b0.v_ball + P0, 1e-13 * scale) << "l " << l << " mu " << mu;
+      EXPECT_NEAR(m.ball_mass * x_c * b1.v_ball + L1, m.ball_mass * x_c * b0.v_ball + L0, 1e-13 * scale) << "l " << l << " mu " << mu;
+      // about the bat's axis: the ball's spin and orbit and the bat's roll (ball on its surface)
+      const PetscReal Rs = m.ball_radius + m.bat_radius;
+      EXPECT_NEAR(m.ball_inertia * b1.spin + m.ball_mass * Rs * b1.v_ball + m.bat_roll_inertia * b1.roll, m.ball_inertia * b0.spin + m.ball_mass * Rs * b0.v_ball, 1e-13 * scale * Rs);
+      const PetscReal E1 = TangentialKineticEnergy(m, b1) + p.ModeEnergy();
+      if (l == 0) { EXPECT_GT(s.dissipated, 0) << "mu " << mu; } // sliding only (a compliant grip's spring, its stiffness F_n / l changing, can give or take)
+      EXPECT_NEAR(E0 - E1, s.dissipated, 1e-6 * E0) << "l " << l << " mu " << mu << ": the energy taken " << s.dissipated;
+    }
+  }
+}
