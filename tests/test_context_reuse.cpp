@@ -92,13 +92,19 @@ TEST(ContextReuse, SecondOrder) { ExpectReuseIsFresh({{"-ts_type", "alpha2"}, {"
 // A nonlinear law: the contact stiffness changes at every Newton iteration (the rank-one term).
 TEST(ContextReuse, ImplicitNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}}, "options/base/superball-hysteresis.opts"); }
 TEST(ContextReuse, SecondOrderNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "alpha2"}, {"-ts_dt", "2e-5"}}, "options/base/superball-hysteresis.opts"); }
+// -ts_type modal: the modes (shared), gamma and the static correction set for each point; a
+// truncated basis (-modal_tolerance 1e-4 keeps the modes below ~11 kHz: the static correction
+// at each point) and every mode.
+TEST(ContextReuse, Modal) { ExpectReuseIsFresh({{"-ts_type", "modal"}, {"-modal_tolerance", "1e-4"}}); }
+TEST(ContextReuse, ModalNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "modal"}, {"-ts_modal_order", "2"}}, "options/base/superball-hysteresis.opts"); }
 TEST(ContextReuse, AssembledLU) { ExpectReuseIsFresh({{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}, {"-pc_type", "lu"}}); }
 
 // Another beam on the same grid (a sweep over the thickness): the context is reused, but not
-// the factors of the first beam's Jacobian; the second beam's run is its fresh run bit for bit.
+// the factors of the first beam's Jacobian (nor, -ts_type modal, its modes); the second beam's
+// run is its fresh run bit for bit.
 TEST(ContextReuse, ImplicitAnotherBeamOnTheSameGrid)
 {
-  const Opts cn   = {{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}};
+  for (const Opts &cn : {Opts{{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}}, Opts{{"-ts_type", "modal"}}}) {
   Scenario   thick;
   test::ReadScene({"options/base/aluminium-6mm.opts", "options/base/superball-linear.opts"}, {{"-beam_length", "1.1"}, {"-beam_nodes", "41"}, {"-beam_thickness", "0.01"}}, &thick.beam, &thick.ball);
   thick.impact.x      = 0.3;
@@ -110,8 +116,9 @@ TEST(ContextReuse, ImplicitAnotherBeamOnTheSameGrid)
   (void)RunImpact(Scene(0.825, 1.0), cn);
   const PetscInt     before = Reused();
   const ImpactResult again  = RunImpact(thick, cn);
-  EXPECT_EQ(Reused(), before + 1);
-  ExpectSameRow(fresh, again, "a thicker beam after the 6 mm one");
+  EXPECT_EQ(Reused(), before + 1) << cn[0].second;
+  ExpectSameRow(fresh, again, "a thicker beam after the 6 mm one, " + cn[0].second);
+  }
 }
 
 // The beam's factorizations are the context's: a second point at the same step factors fewer
