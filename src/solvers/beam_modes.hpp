@@ -38,6 +38,8 @@
 
 namespace beamimpact {
 
+struct BeamFactor;
+
 // Which modes the engine keeps (-modal_modes, -modal_tolerance) and the scales that choose them.
 enum class ModalModes { All, Auto, Count };
 struct ModalTruncation {
@@ -78,7 +80,8 @@ struct BeamModes {
   PetscInt        rigid     = 0;              // rigid modes among the kept
   PetscReal       cutoff    = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
   bool            truncated = false;          // fewer modes than free dofs
-  std::string     method;                     // "dense" or "slepc"
+  std::string     method;                     // "dense", "slepc" or "slepc, factored form"
+  std::shared_ptr<const BeamFactor> factor;   // the factored form the modes and the static correction came from (solvers/beam_flexibility.hpp), or null
   double          build_seconds = 0;
   PetscInt        Count() const { return (PetscInt)B.omega.size(); }
   // The static correction at the point of coupling g (computed on first use, then cached).
