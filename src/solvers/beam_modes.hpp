@@ -14,7 +14,11 @@
 // A truncated basis comes from a partial eigen-solve (BeamModesLowest: SLEPc Krylov-Schur,
 // shift-and-invert with the factorization of the banded K, nev grown until the cut-off is
 // passed; O(n k) memory and O(n k^2) time), refined as the dense one, or from the dense
-// decomposition when the kept modes are more than a third of them (cheaper and exact).
+// decomposition when the kept modes are more than a third of them (cheaper and exact). On fine
+// grids (eps times the spread of M^-1 K over frequency_unit^2 above 1) of a statically
+// determinate beam the truncated basis and the static correction come from the factored form
+// instead (solvers/beam_flexibility.hpp: no solve with K, round-off eps (L/h)^2 instead of
+// eps (L/h)^4; method "slepc, factored form"), which carries the paper's beam to N = 40961.
 //
 // Computed once per beam and shared: BeamModesShared keeps the last few bases in a small
 // cache of this process keyed by the system's content (nodes, fields, masses, held dofs, the
