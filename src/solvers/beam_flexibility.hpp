@@ -51,13 +51,13 @@ struct BeamFactor {
   int                                 m = 0, kl = 0, ku = 0; // S: m x m, its sub- and super-diagonals
   std::vector<double>                 lu;      // S's banded LU (LAPACK dgbtrf, leading dimension 2 kl + ku + 1)
   std::vector<int>                    ipiv;
-  PetscReal                           rcond = 0; // S's reciprocal condition number (1-norm, dgbcon)
+  PetscReal                           rcond = 0; // the ratio of S's smallest pivot to its largest (1: a proxy of its reciprocal condition)
 };
 
 // Builds the factored form of sys. Returns false with *why (if given) where the structure is not
 // statically determinate (clamped at both ends, supports in the span, a shell's negative
-// weights, a hoop oscillator beside a second field...), S's band is wider than 64 or S is
-// singular or conditioned beyond 1/(100 eps): the primal path (K) stays the one used there.
+// weights...), S's band is wider than 64 or S is singular or its pivots spread beyond
+// 1/(100 eps): the primal path (K) stays the one used there. O(n): cheap enough to ask per run.
 bool BeamFactorCreate(const BeamSystem &sys, BeamFactor *F, std::string *why = nullptr);
 
 // u = K^+ f on the free dofs for any f (per free dof, N): f less its rigid-body inertia
