@@ -1,6 +1,7 @@
 // The beam's modes, computed once per beam. See beam_modes.hpp.
 #include "solvers/beam_modes.hpp"
 
+#include "solvers/beam_flexibility.hpp"
 #include "solvers/modes.hpp"
 
 #include <algorithm>
@@ -28,48 +29,6 @@ bool SameBeam(const BeamSystem &a, const BeamSystem &b)
          a.forces.damping_band == b.forces.damping_band && a.forces.damping_diag == b.forces.damping_diag;
 }
 
-// The beam's rigid motions that its held dofs allow: deflection a + b x (field 0) and rotation
-// b (field 1, Timoshenko), zero on every held dof, and verified to be strain-free (K v = 0 to
-// round-off of the factored K). Each as a full dof vector.
-std::vector<std::vector<PetscReal>> RigidMotions(const BeamSystem &sys)
-{
-  const PetscInt         nd = sys.ndof, nf = sys.fields;
-  std::vector<PetscReal> c[2] = {std::vector<PetscReal>(nd, 0.0), std::vector<PetscReal>(nd, 0.0)};
-  for (PetscInt d = 0; d < nd; ++d) {
-    const PetscInt f = d % nf;
-    c[0][d]          = f == 0 ? 1.0 : 0.0;
-    c[1][d]          = f == 0 ? sys.NodeX(d / nf) / sys.L : (sys.Rotation(f) ? 1.0 / sys.L : 0.0);
-  }
-  // Combinations a c0 + b c1 vanishing on the held dofs: the null space of the 2-column H.
-  PetscReal hh[2][2] = {{0, 0}, {0, 0}}; // H^T H
-  for (PetscInt d = 0; d < nd; ++d)
-    if (sys.held[d])
-      for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) hh[i][j] += c[i][d] * c[j][d];
-  std::vector<std::array<PetscReal, 2>> combos;
-  const PetscReal                       tr = hh[0][0] + hh[1][1], det = hh[0][0] * hh[1][1] - hh[0][1] * hh[1][0];
-  if (tr == 0.0) combos = {{1.0, 0.0}, {0.0, 1.0}};
-  else if (std::abs(det) <= 1e-12 * tr * tr) { // rank 1: the eigenvector of H^T H for eigenvalue 0
-    if (hh[0][0] >= hh[1][1]) combos = {{-hh[0][1], hh[0][0]}};
-    else combos = {{hh[1][1], -hh[1][0]}};
-  }
-  std::vector<std::vector<PetscReal>> out;
-  std::vector<PetscReal>              f(nd);
-  for (const auto &ab : combos) {
-    std::vector<PetscReal> v(nd);
-    PetscReal              vmax = 0, fmax = 0, kmax = 0;
-    for (PetscInt d = 0; d < nd; ++d) {
-      v[d] = sys.held[d] ? 0.0 : ab[0] * c[0][d] + ab[1] * c[1][d];
-      vmax = std::max(vmax, std::abs(v[d]));
-    }
-    for (PetscReal b : sys.band) kmax = std::max(kmax, std::abs(b));
-    BeamSystemStiffnessApply(sys, v.data(), nf, 0, nd, f.data(), 1);
-    for (PetscInt d = 0; d < nd; ++d) fmax = std::max(fmax, std::abs(f[d]));
-    if (vmax > 0 && fmax <= 1e-9 * kmax * vmax) out.push_back(v);
-  }
-  return out;
-}
-
 // The zero cluster of the computed basis (omega below 1e-3 frequency units; every flexural
 // mode of a beam is above 1) replaced by the exact rigid motions, and the flexible modes made
 // orthogonal to them (twice, classical Gram-Schmidt). syev and inverse iteration find the
@@ -84,7 +43,7 @@ void ExactRigidModes(BeamModes *m)
   ModalBasis        &B = m->B;
   PetscInt           nz = 0;
   while (nz < count && B.omega[nz] < 1e-3 * m->sys.frequency_unit) nz++;
-  const auto rigid = RigidMotions(m->sys);
+  const auto rigid = BeamRigidMotions(m->sys);
   if (nz > 0 && (PetscInt)rigid.size() == nz) {
     for (PetscInt k = 0; k < nz; ++k) { // M^{1/2} v on the free dofs, orthonormal
       PetscReal *phi = &B.Phi[(size_t)k * n];
@@ -117,13 +76,21 @@ PetscInt                                     n_computed = 0, n_reused = 0;
 // lowest flexible mode's scale (Gershgorin's bound on its largest eigenvalue over
 // frequency_unit^2: 16 (L/h)^4 for a uniform Euler-Bernoulli beam, 39 at N = 10241, 1e4 at
 // N = 40961). Above kModesPrecisionLimit the static flexibility is lost to round-off and the
-// shift-and-invert solves no longer give the low modes (the ACOR of the paper's beam at
-// N = 40961 was 3e-3 off: docs/convergence.md), so the modes are refused, never used wrong.
+// shift-and-invert solves on K no longer give the low modes (the ACOR of the paper's beam at
+// N = 40961 was 3e-3 off: docs/convergence.md), so the primal path is refused, never used wrong.
+//
+// Where the structure is statically determinate (BeamFactorCreate) the modes and the static
+// correction come instead from the factored form once the primal index passes kFactoredSwitch
+// (N > ~4000 for the paper's beam; below it the primal path is kept, bit for bit): its
+// round-off is eps times the spread of the frequencies, not of their squares, so its index is
+// eps omega_max / frequency_unit (4 (L/h)^2 eps for a uniform Euler-Bernoulli beam: 1.5e-6 at
+// N = 40961), held to the same limit.
 constexpr double kModesPrecisionLimit = 100;
+constexpr double kFactoredSwitch      = 1;
 
-static double ModesPrecisionIndex(const BeamSystem &sys)
+// The spread of M^-1 K: Gershgorin's bound on its largest eigenvalue (1/s^2).
+static double StiffnessSpread(const BeamSystem &sys)
 {
-  if (!(sys.frequency_unit > 0) || sys.band.empty()) return 0;
   double         top = 0;
   const PetscInt w   = 2 * sys.bw + 1;
   for (PetscInt i = 0; i < sys.ndof; ++i) {
@@ -132,7 +99,28 @@ static double ModesPrecisionIndex(const BeamSystem &sys)
     for (PetscInt o = 0; o < w; ++o) row += std::abs(sys.band[(size_t)w * i + o]);
     top = std::max(top, row / sys.mass[i]);
   }
-  return std::numeric_limits<double>::epsilon() * top / (sys.frequency_unit * sys.frequency_unit);
+  return top;
+}
+
+static double ModesPrecisionIndex(const BeamSystem &sys)
+{
+  if (!(sys.frequency_unit > 0) || sys.band.empty()) return 0;
+  return std::numeric_limits<double>::epsilon() * StiffnessSpread(sys) / (sys.frequency_unit * sys.frequency_unit);
+}
+
+static double FactoredPrecisionIndex(const BeamSystem &sys)
+{
+  if (!(sys.frequency_unit > 0) || sys.band.empty()) return 0;
+  return std::numeric_limits<double>::epsilon() * std::sqrt(StiffnessSpread(sys)) / sys.frequency_unit;
+}
+
+// The factored form the modes of sys come from (see above), or null (the primal path: K).
+static std::shared_ptr<const BeamFactor> FactoredFormFor(const BeamSystem &sys)
+{
+  if (!(ModesPrecisionIndex(sys) > kFactoredSwitch)) return nullptr;
+  auto F = std::make_shared<BeamFactor>();
+  if (!BeamFactorCreate(sys, F.get())) return nullptr;
+  return F;
 }
 
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
@@ -140,10 +128,15 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
   if (!ForceOperatorModal(sys, nullptr, nullptr, why)) return false; // a force term the modes cannot carry (the grip: a drive in time, a damper not proportional)
   const double index = ModesPrecisionIndex(sys);
   if (index > kModesPrecisionLimit) {
+    BeamFactor  F;
+    std::string whynot;
+    const bool  factored = BeamFactorCreate(sys, &F, &whynot);
+    if (factored && FactoredPrecisionIndex(sys) <= kModesPrecisionLimit) return true;
     if (why) {
-      char text[400];
-      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e): fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)",
-                    (int)sys.nodes, index / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon());
+      char text[600];
+      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e), and the factored form %s: fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)",
+                    (int)sys.nodes, index / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon(),
+                    factored ? "is beyond it too" : ("does not apply (" + whynot + ")").c_str());
       *why = text;
     }
     return false;
@@ -279,25 +272,69 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
   PetscFunctionReturn(0);
 }
 
-// The basis the request asks for (All: dense; Auto below every mode's bound: dense too).
+// The modes up to `want` (Count) or up to the cut-off w_c (Auto, want < 0) from the factored
+// form (BeamModesLowestFactored), nev grown until the cut-off is passed as TruncatedModes does;
+// kept as found (exact and orthonormal: no inverse iteration with K's band). Then keeps what
+// was asked.
+PetscErrorCode FactoredModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscReal wc)
+{
+  const PetscInt                      n = m->S.n;
+  std::vector<PetscReal>              lambda;
+  std::vector<std::vector<PetscReal>> phis;
+  PetscInt                            nev = want >= 0 ? std::min(want, n) : ModesAskedBelow(m->sys, n, wc);
+
+  PetscFunctionBeginUser;
+  for (;;) {
+    const double expected = kPartialSolveCost * (double)n * (double)nev * (double)nev; // s
+    if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
+      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc, the factored form), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
+    PetscCall(BeamModesLowestFactored(comm, m->sys, *m->factor, nev, m->request.progress, &lambda, &phis));
+    if (want >= 0 || nev >= n || lambda.back() > wc * wc) break;
+    const PetscReal grow = std::sqrt(wc / std::sqrt(std::max(lambda.back(), (PetscReal)1e-300)));
+    nev                  = std::min<PetscInt>(n, std::max<PetscInt>(2 * nev, (PetscInt)(1.2 * grow * nev) + 8));
+    PetscCall(PetscInfo(NULL, "the beam's modes (factored form): %" PetscInt_FMT " found below the cut-off %g rad/s; asking for %" PetscInt_FMT "\n", (PetscInt)lambda.size(), (double)wc, nev));
+  }
+  const PetscInt         found = (PetscInt)lambda.size();
+  std::vector<PetscReal> Phi((size_t)n * found);
+  for (PetscInt k = 0; k < found; ++k)
+    for (PetscInt d = 0; d < n; ++d) Phi[d + (size_t)k * n] = std::sqrt(m->S.mass[d]) * phis[k][m->S.dof[d]];
+  m->method = "slepc, factored form";
+  PetscCall(ModalBasisFromModes(m->S, lambda, std::move(Phi), &m->B, false));
+  PetscInt keep = 0;
+  if (want >= 0) keep = std::min(found, want);
+  else
+    while (keep < found && m->B.omega[keep] <= wc) keep++;
+  KeepModes(m, std::max<PetscInt>(keep, 1));
+  PetscFunctionReturn(0);
+}
+
+// The primal path (K) on a grid where only the factored form resolves the modes: refused.
+PetscErrorCode PrimalCheck(MPI_Comm comm, const BeamModes *m)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(ModesPrecisionIndex(m->sys) <= kModesPrecisionLimit, comm, PETSC_ERR_SUP,
+             "-modal_modes %s: the dense decomposition works with the stiffness K, which on %d nodes spreads over %.1e times its lowest mode's scale, beyond double precision (at most %.1e); use -modal_modes auto or a number of modes (the factored form) or fewer -beam_nodes",
+             ModalModesText(m->request).c_str(), (int)m->sys.nodes, ModesPrecisionIndex(m->sys) / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon());
+  PetscFunctionReturn(0);
+}
+
+// The basis the request asks for (All: dense; Auto below every mode's bound: dense too); a
+// truncated one from the factored form where FactoredFormFor gives one, else the primal path.
 PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
 {
   const ModalTruncation &t = m->request;
   const PetscInt         n = m->S.n;
+  ContactCoupling        none;
+  const PetscReal        wc = t.Cutoff(), wmax = t.modes == ModalModes::Auto ? BeamSystemMaxFrequencyBound(m->sys, none, 0.0, 0.0) : 0.0;
+  const bool             dense = t.modes == ModalModes::All || (t.modes == ModalModes::Count && t.count >= n) || (t.modes == ModalModes::Auto && !(wc < wmax)); // every mode is below the cut-off: all of them, exactly
 
   PetscFunctionBeginUser;
-  m->cutoff = PETSC_INFINITY;
-  if (t.modes == ModalModes::All || (t.modes == ModalModes::Count && t.count >= n)) PetscCall(DenseModes(comm, m));
-  else if (t.modes == ModalModes::Count) PetscCall(TruncatedModes(comm, m, t.count, PETSC_INFINITY));
-  else {
-    ContactCoupling none;
-    const PetscReal wc = t.Cutoff(), wmax = BeamSystemMaxFrequencyBound(m->sys, none, 0.0, 0.0);
-    if (!(wc < wmax)) PetscCall(DenseModes(comm, m)); // every mode is below the cut-off: all of them, exactly
-    else {
-      m->cutoff = wc;
-      PetscCall(TruncatedModes(comm, m, -1, wc));
-    }
-  }
+  m->cutoff = t.modes == ModalModes::Auto && !dense ? wc : PETSC_INFINITY;
+  m->factor = dense ? nullptr : FactoredFormFor(m->sys);
+  if (!m->factor) PetscCall(PrimalCheck(comm, m));
+  if (dense) PetscCall(DenseModes(comm, m));
+  else if (m->factor) PetscCall(FactoredModes(comm, m, t.modes == ModalModes::Count ? t.count : -1, wc));
+  else PetscCall(TruncatedModes(comm, m, t.modes == ModalModes::Count ? t.count : -1, t.modes == ModalModes::Count ? PETSC_INFINITY : wc));
   m->truncated = m->Count() < n;
   PetscFunctionReturn(0);
 }
@@ -375,27 +412,6 @@ namespace beamimpact {
 
 namespace {
 
-// The temporary supports of the flexibility solve: one deflection dof per rigid mode, chosen
-// so that the rigid modes' values there are independent (each the largest after the earlier
-// ones are eliminated): statically determinate, so a self-equilibrated load has no reactions.
-std::vector<PetscInt> TemporarySupports(const BeamModes &m, const std::vector<std::vector<PetscReal>> &R)
-{
-  const PetscInt                      n = m.S.n;
-  std::vector<PetscInt>               sup;
-  std::vector<std::vector<PetscReal>> r = R;
-  for (size_t i = 0; i < r.size(); ++i) {
-    PetscInt best = -1;
-    for (PetscInt d = 0; d < n; ++d)
-      if (m.S.dof[d] % m.sys.fields == 0 && (best < 0 || std::abs(r[i][d]) > std::abs(r[i][best]))) best = d;
-    sup.push_back(best);
-    for (size_t j = i + 1; j < r.size(); ++j) { // eliminate the chosen dof from the later modes
-      const PetscReal f = r[j][best] / r[i][best];
-      for (PetscInt d = 0; d < n; ++d) r[j][d] -= f * r[i][d];
-    }
-  }
-  return sup;
-}
-
 // u = K^+ f on the free dofs (f self-equilibrated, sup the temporary supports): banded Cholesky
 // of K with the supports' rows and columns replaced by the identity, and two corrections by the
 // residual in the factored form of K (BeamSystemStiffnessApply), whose round-off is relative to
@@ -465,22 +481,27 @@ PetscErrorCode BeamModes::StaticCorrection(const ContactCoupling &g, const Modal
     for (PetscInt d = 0; d < n; ++d)
       for (PetscInt q = 0; q < g.n; ++q)
         if (S.dof[d] == g.dof[q]) f[d] += g.w[q];
-    std::vector<std::vector<PetscReal>> R(rigid, std::vector<PetscReal>(n)); // M-orthonormal rigid modes
-    for (PetscInt i = 0; i < rigid; ++i)
-      for (PetscInt d = 0; d < n; ++d) R[i][d] = B.Phi[d + (size_t)i * n] / std::sqrt(S.mass[d]);
-    std::vector<PetscReal> load = f; // less its rigid-body inertia: f - M R R^T f
-    for (const auto &r : R) {
-      PetscReal a = 0;
-      for (PetscInt d = 0; d < n; ++d) a += r[d] * f[d];
-      for (PetscInt d = 0; d < n; ++d) load[d] -= S.mass[d] * r[d] * a;
+    if (factor) { // the factored form: G = |m'|^2, a sum of squares (solvers/beam_flexibility.hpp)
+      u.resize(n);
+      BeamFactorFlexibility(*factor, f.data(), u.data(), &c->G);
+    } else {
+      std::vector<std::vector<PetscReal>> R(rigid, std::vector<PetscReal>(n)); // M-orthonormal rigid modes
+      for (PetscInt i = 0; i < rigid; ++i)
+        for (PetscInt d = 0; d < n; ++d) R[i][d] = B.Phi[d + (size_t)i * n] / std::sqrt(S.mass[d]);
+      std::vector<PetscReal> load = f; // less its rigid-body inertia: f - M R R^T f
+      for (const auto &r : R) {
+        PetscReal a = 0;
+        for (PetscInt d = 0; d < n; ++d) a += r[d] * f[d];
+        for (PetscInt d = 0; d < n; ++d) load[d] -= S.mass[d] * r[d] * a;
+      }
+      PetscCall(FlexibilitySolve(*this, BeamTemporarySupports(sys, S.dof, R), load, &u));
+      for (const auto &r : R) { // M-orthogonal to the rigid modes
+        PetscReal a = 0;
+        for (PetscInt d = 0; d < n; ++d) a += r[d] * S.mass[d] * u[d];
+        for (PetscInt d = 0; d < n; ++d) u[d] -= r[d] * a;
+      }
+      for (PetscInt d = 0; d < n; ++d) c->G += f[d] * u[d];
     }
-    PetscCall(FlexibilitySolve(*this, TemporarySupports(*this, R), load, &u));
-    for (const auto &r : R) { // M-orthogonal to the rigid modes
-      PetscReal a = 0;
-      for (PetscInt d = 0; d < n; ++d) a += r[d] * S.mass[d] * u[d];
-      for (PetscInt d = 0; d < n; ++d) u[d] -= r[d] * a;
-    }
-    for (PetscInt d = 0; d < n; ++d) c->G += f[d] * u[d];
     c->ur     = u;
     PetscReal kept = 0;
     for (PetscInt k = rigid; k < count; ++k) {

@@ -15,7 +15,11 @@
 // shift-and-invert with the factorization of the banded K, nev the modes below the cut-off
 // counted by Sylvester's inertia and a few more; O(n k) memory and O(n k^2) time), refined as
 // the dense one, or from the dense decomposition where its time model expects it to be quicker
-// (more than about half the modes kept; exact).
+// (more than about half the modes kept; exact). On fine grids (eps times the spread of M^-1 K
+// over frequency_unit^2 above 1) of a statically determinate beam the truncated basis and the
+// static correction come from the factored form instead (solvers/beam_flexibility.hpp: no solve
+// with K, round-off eps (L/h)^2 instead of eps (L/h)^4; method "slepc, factored form"), which
+// carries the paper's beam to N = 40961.
 //
 // Computed once per beam and shared: BeamModesShared keeps the last few bases in a small
 // cache of this process keyed by the system's content (nodes, fields, masses, held dofs, the
@@ -38,6 +42,8 @@
 #include <string>
 
 namespace beamimpact {
+
+struct BeamFactor;
 
 // Which modes the engine keeps (-modal_modes, -modal_tolerance) and the scales that choose them.
 enum class ModalModes { All, Auto, Count };
@@ -79,7 +85,8 @@ struct BeamModes {
   PetscInt        rigid     = 0;              // rigid modes among the kept
   PetscReal       cutoff    = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
   bool            truncated = false;          // fewer modes than free dofs
-  std::string     method;                     // "dense" or "slepc"
+  std::string     method;                     // "dense", "slepc" or "slepc, factored form"
+  std::shared_ptr<const BeamFactor> factor;   // the factored form the modes and the static correction came from (solvers/beam_flexibility.hpp), or null
   double          build_seconds = 0;
   PetscInt        Count() const { return (PetscInt)B.omega.size(); }
   // The static correction at the point of coupling g (computed on first use, then cached).

@@ -376,7 +376,7 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B)
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine)
 {
   const PetscInt count = (PetscInt)lambda.size();
 
@@ -386,7 +386,7 @@ PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<Petsc
   B->omega.assign(count, 0.0);
   B->gamma.assign(count, 0.0);
   B->rate.assign(count, 0.0);
-  PetscCall(RefineBasis(S, false, lambda, B));
+  if (refine) PetscCall(RefineBasis(S, false, lambda, B));
   ModalQuotients(S, false, B);
   PetscFunctionReturn(0);
 }

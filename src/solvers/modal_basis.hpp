@@ -67,8 +67,10 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
 // partial eigen-solve): Phi (S.n x count, column-major) the columns M^{1/2} phi_k, lambda their
 // omega^2 estimates (ascending). Refined as ModalBasisBuild refines the dense basis (inverse
 // iteration corrected in the factored form, modified Gram-Schmidt, Rayleigh quotients and
-// decay rates): omega, Phi, rate of count modes.
-PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B);
+// decay rates): omega, Phi, rate of count modes. refine false: Phi is kept as given (modes
+// already exact and orthonormal, from the factored form: inverse iteration with K's band would
+// spoil them where eps cond(K) > 1), only the quotients and rates are computed.
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine = true);
 
 // Mode (omega w, rate sigma) from z, zd at s = 0: z and z' at s, exact for every damping
 // (under-, critically and overdamped, rigid). Bound: sup over s >= 0 of |d^p z / ds^p|.

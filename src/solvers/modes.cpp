@@ -2,6 +2,8 @@
 // the free dofs, and the continuum beta-L reference. See modes.hpp.
 #include "solvers/modes.hpp"
 
+#include "solvers/beam_flexibility.hpp"
+
 #include <slepceps.h>
 
 #include <algorithm>
@@ -327,6 +329,7 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
 struct ModesProgress {
   PetscReal every = 0, start = 0, last = 0;
   PetscInt  want  = 0;
+  MPI_Comm  comm  = MPI_COMM_NULL; // where to print (the solver's own communicator if null)
 };
 
 static PetscErrorCode ModesProgressMonitor(EPS eps, PetscInt its, PetscInt nconv, PetscScalar *, PetscScalar *, PetscReal *, PetscInt, void *ctx)
@@ -337,7 +340,7 @@ static PetscErrorCode ModesProgressMonitor(EPS eps, PetscInt its, PetscInt nconv
   PetscFunctionBeginUser;
   if (p->every > 0 && now - p->last >= p->every) {
     p->last = now;
-    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)eps), "beamimpact: the beam's modes: %" PetscInt_FMT " of %" PetscInt_FMT " converged after %" PetscInt_FMT " restarts, %.1f s\n", nconv, p->want, its,
+    PetscCall(PetscPrintf(p->comm != MPI_COMM_NULL ? p->comm : PetscObjectComm((PetscObject)eps), "beamimpact: the beam's modes: %" PetscInt_FMT " of %" PetscInt_FMT " converged after %" PetscInt_FMT " restarts, %.1f s\n", nconv, p->want, its,
                           (double)(now - p->start)));
   }
   PetscFunctionReturn(0);
@@ -370,6 +373,113 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
   std::vector<PetscReal>              l(count);
   std::vector<std::vector<PetscReal>> v(count);
   for (PetscInt m = 0; m < count; ++m) l[m] = (*lambda)[order[m]], v[m] = std::move((*phis)[order[m]]);
+  *lambda = std::move(l);
+  *phis   = std::move(v);
+  PetscFunctionReturn(0);
+}
+
+// The factored eigen-problem (BeamModesLowestFactored): z -> M^{1/2} K^+ M^{1/2} z on the free
+// dofs, K^+ by the two banded solves of the factored form (solvers/beam_flexibility.hpp).
+static PetscErrorCode FactoredMult(Mat A, Vec z, Vec y)
+{
+  const BeamFactor  *F;
+  const PetscScalar *a;
+  PetscScalar       *b;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(A, &F));
+  std::vector<PetscReal> f(F->n), u(F->n);
+  PetscCall(VecGetArrayRead(z, &a));
+  for (PetscInt d = 0; d < F->n; ++d) f[d] = std::sqrt(F->mass[d]) * PetscRealPart(a[d]);
+  PetscCall(VecRestoreArrayRead(z, &a));
+  BeamFactorFlexibility(*F, f.data(), u.data(), nullptr);
+  PetscCall(VecGetArray(y, &b));
+  for (PetscInt d = 0; d < F->n; ++d) b[d] = std::sqrt(F->mass[d]) * u[d];
+  PetscCall(VecRestoreArray(y, &b));
+  PetscFunctionReturn(0);
+}
+
+// The flexible modes' vectors z_k (orthonormal, ascending in omega) of the solved EPS as modes
+// over all dofs (phi = M^{-1/2} z: mass-normalised), each lambda the Rayleigh quotient of the
+// strain energy.
+static PetscErrorCode FactoredExtract(EPS eps, const BeamSystem &op, const BeamFactor &F, PetscInt nflex, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
+{
+  Vec x;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, F.n, &x));
+  for (PetscInt k = 0; k < nflex; ++k) {
+    PetscScalar            kr;
+    const PetscScalar     *a;
+    std::vector<PetscReal> phi(op.ndof, 0.0);
+    PetscCall(EPSGetEigenpair(eps, k, &kr, NULL, x, NULL));
+    PetscCall(VecGetArrayRead(x, &a));
+    for (PetscInt d = 0; d < F.n; ++d) phi[F.dof[d]] = PetscRealPart(a[d]) / std::sqrt(F.mass[d]);
+    PetscCall(VecRestoreArrayRead(x, &a));
+    const PetscReal l = 2.0 * BeamSystemStrainEnergy(op, phi.data(), op.fields, 0, op.ndof); // phi^T M phi = 1
+    PetscCall(PetscInfo(eps, "factored mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2\n", k, 1.0 / (double)PetscRealPart(kr), (double)l));
+    lambda->push_back(l);
+    phis->push_back(std::move(phi));
+  }
+  PetscCall(VecDestroy(&x));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda,
+                                       std::vector<std::vector<PetscReal>> *phis)
+{
+  const PetscInt nrigid = (PetscInt)F.rigid.size(), nflex = std::min(count, F.n) - nrigid;
+  Mat            A;
+  EPS            eps;
+  Vec            x0;
+  PetscScalar   *a;
+  PetscInt       nconv;
+  ModesProgress  prog;
+
+  PetscFunctionBeginUser;
+  lambda->clear();
+  phis->clear();
+  for (PetscInt i = 0; i < nrigid && i < count; ++i) { // the exact rigid modes, omega = 0
+    std::vector<PetscReal> phi(op.ndof, 0.0);
+    for (PetscInt d = 0; d < F.n; ++d) phi[F.dof[d]] = F.rigid[i][d];
+    lambda->push_back(0.0);
+    phis->push_back(std::move(phi));
+  }
+  if (nflex <= 0) PetscFunctionReturn(0);
+  PetscCall(ModesEnsureSlepc());
+  PetscCall(MatCreateShell(PETSC_COMM_SELF, F.n, F.n, F.n, F.n, (void *)&F, &A));
+  PetscCall(MatShellSetOperation(A, MATOP_MULT, (void (*)(void))FactoredMult));
+  PetscCall(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(EPSCreate(PETSC_COMM_SELF, &eps));
+  PetscCall(EPSSetOperators(eps, A, NULL));
+  PetscCall(EPSSetProblemType(eps, EPS_HEP));
+  PetscCall(EPSSetType(eps, EPSKRYLOVSCHUR));
+  PetscCall(EPSSetDimensions(eps, nflex, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(EPSSetWhichEigenpairs(eps, EPS_LARGEST_REAL));
+  PetscCall(EPSSetTolerances(eps, 1e-12, 1000));
+  PetscCall(MatCreateVecs(A, &x0, NULL));
+  PetscCall(VecGetArray(x0, &a));
+  for (PetscInt d = 0; d < F.n; ++d) a[d] = 1.0 + 0.5 * HashUniform(d);
+  PetscCall(VecRestoreArray(x0, &a));
+  PetscCall(EPSSetInitialSpace(eps, 1, &x0));
+  PetscCall(VecDestroy(&x0));
+  prog.every = progress;
+  prog.start = prog.last = MPI_Wtime();
+  prog.want              = nflex;
+  prog.comm              = comm;
+  PetscCall(EPSMonitorSet(eps, ModesProgressMonitor, &prog, NULL));
+  PetscCall(EPSSolve(eps));
+  PetscCall(EPSGetConverged(eps, &nconv));
+  PetscCheck(nconv >= nflex, comm, PETSC_ERR_CONV_FAILED, "the beam's modes (factored form): the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest flexible modes (-modal_modes, -modal_tolerance)", nconv, nflex);
+  PetscCall(FactoredExtract(eps, op, F, nflex, lambda, phis));
+  PetscCall(EPSDestroy(&eps));
+  PetscCall(MatDestroy(&A));
+  std::vector<PetscInt> order(nflex); // ascending in the Rayleigh quotient, as the solver's (descending 1/omega^2) up to round-off
+  for (PetscInt k = 0; k < nflex; ++k) order[k] = nrigid + k;
+  std::stable_sort(order.begin(), order.end(), [&](PetscInt p, PetscInt q) { return (*lambda)[p] < (*lambda)[q]; });
+  std::vector<PetscReal>              l(lambda->begin(), lambda->begin() + nrigid);
+  std::vector<std::vector<PetscReal>> v(phis->begin(), phis->begin() + nrigid);
+  for (PetscInt k : order) l.push_back((*lambda)[k]), v.push_back(std::move((*phis)[k]));
   *lambda = std::move(l);
   *phis   = std::move(v);
   PetscFunctionReturn(0);

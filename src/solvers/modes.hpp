@@ -85,6 +85,17 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
 // progress > 0: a line every `progress` seconds while the solver runs.
 PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis);
 
+// The same from the factored form F of a statically determinate beam (BeamFactorCreate,
+// solvers/beam_flexibility.hpp), for grids where shift-and-invert on K loses the low modes to
+// eps cond(K) ~ eps 16 (L/h)^4 (the paper's beam at N = 40961): the rigid modes exactly
+// (F.rigid, omega = 0), then the largest eigenvalues 1/omega^2 of M^{1/2} K^+ M^{1/2} by
+// Krylov-Schur (SLEPc, a shell operator: two banded solves with S's LU per product), exact to
+// eps (L/h)^2, each omega^2 the Rayleigh quotient of the strain energy. Serial: every rank of
+// comm solves the same problem (comm prints the progress). Ascending, as BeamModesLowest.
+struct BeamFactor;
+PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda,
+                                       std::vector<std::vector<PetscReal>> *phis);
+
 // Rigid modes the held dofs allow, for any supports, clamped region or pivot: 2 (w = a + b x,
 // and psi = b for a second field) minus the rank of the constraints the held dofs put on
 // (a, b): a held deflection at x gives a + b x = 0, a held rotation b = 0.
