@@ -281,7 +281,7 @@ PetscErrorCode FactoredModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscRe
   const PetscInt                      n = m->S.n;
   std::vector<PetscReal>              lambda;
   std::vector<std::vector<PetscReal>> phis;
-  PetscInt                            nev = want >= 0 ? std::min(want, n) : ModesAskedBelow(m->sys, n, wc);
+  PetscInt                            nev = want >= 0 ? std::min(want, n) : ModesAskedBelow(m->sys, m->S, wc);
 
   PetscFunctionBeginUser;
   for (;;) {
