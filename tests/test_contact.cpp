@@ -9,6 +9,7 @@
 // (the linear spring's pi sqrt(m/k), the hysteretic ball's e^2 = (m+1)/(n+1) and cycle loss).
 #include "model/contact.hpp"
 #include "model/rigid.hpp"
+#include "run/events.hpp"
 #include "wall_bounce.hpp"
 
 #include <gtest/gtest.h>
@@ -316,4 +317,72 @@ TEST(ContactLaw, HertzOnARigidWallAgainstTheClosedForm)
   const BallParams b = BallWithLaw("hertz");
   EXPECT_TRUE(ContactElastic(b) && !ContactLinear(b) && !ContactHasHysteresis(b));
   EXPECT_EQ(BallValue(b, "hertz_k"), 5e5);
+}
+
+namespace {
+
+// A stepper of time alone for the event locator: the indicator of a falling event (a
+// separation, post side c <= 0) is te - t, but a re-step shorter than 1e-3 s lands `bias`
+// higher (on the pre side past te): the same time reached by another path gives another
+// sign, as round-off does on a grid beyond double precision (N = 40961). Every step must be
+// of positive length.
+class PathStepper : public Stepper {
+public:
+  PetscReal t = 0, t0 = 0, h = 1, te = 1, bias = 0;
+  PetscInt  bad_steps = 0;
+  MPI_Comm       Comm() const override { return PETSC_COMM_SELF; }
+  std::string    Method() const override { return "a path-dependent stepper"; }
+  std::string    StepOption() const override { return "-none"; }
+  PetscReal      Time() const override { return t; }
+  PetscErrorCode Step(PetscReal dt) override
+  {
+    if (!(dt > 0)) bad_steps++;
+    t0 = t, h = dt, t += dt;
+    return 0;
+  }
+  PetscErrorCode RollBack() override { return t = t0, 0; }
+  PetscErrorCode Restart() override { return 0; }
+  PetscErrorCode NextStep(PetscReal *dt) override { return *dt = 1, 0; }
+  PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) override
+  {
+    *c    = te - t + (h < 1e-3 ? bias : 0.0);
+    *cdot = -1;
+    return 0;
+  }
+  PetscErrorCode ViewBegin(StateView *) override { return 0; }
+  PetscErrorCode ViewEnd(StateView *) override { return 0; }
+  PetscErrorCode GatherDisplacement(std::vector<PetscReal> *) override { return 0; }
+  PetscErrorCode Counts(StepperCounts *) override { return 0; }
+  std::string    EnergyGrowthCause() const override { return ""; }
+  PetscErrorCode SetState(PetscReal, const FullState &) override { return 0; }
+};
+
+} // namespace
+
+// The bracket closes on its pre side (the step to the bracket's post end lands short of the
+// root by another path): the locator steps on past it, never by a step of length 0 (cn at
+// N = 40961 took one and stopped on a NaN residual), and ends on the post side within a few
+// of its least steps (1e-4 of the crossed step) of where this path crosses.
+TEST(ContactEvents, ABracketClosedOnItsPreSideIsSteppedPast)
+{
+  PathStepper     st;
+  const PetscReal ta = 1.0 - 5e-4, min_step = 1e-4 * (5e-4 + 7.5e-8);
+  st.bias = 3 * min_step;
+  st.t0   = ta;
+  st.t    = 1.0 + 7.5e-8; // the crossed step's end, on the post side
+  st.h    = st.t - ta;
+  EventIndicators a, b;
+  a.c = st.te - ta;
+  b.c = st.te - st.t;
+  PetscInt steps = 0;
+  auto     indicators = [&st](EventIndicators *g) { return st.Compression(&g->c, &g->cdot); };
+  PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+  const PetscErrorCode ierr = EventLocate(st, ContactEventKind::Separation, ta, a.c, b.c, 1e-12, indicators, &steps);
+  PetscPopErrorHandler();
+  EXPECT_EQ(ierr, 0) << "the event was not located";
+  EXPECT_EQ(st.bad_steps, 0) << "a step of length <= 0";
+  EventIndicators g;
+  indicators(&g);
+  EXPECT_LE(g.c, 0.0) << "the locator ended on the pre side";
+  EXPECT_NEAR(st.t, st.te + st.bias, 2 * min_step);
 }

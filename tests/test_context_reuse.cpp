@@ -4,11 +4,16 @@
 // ball, a run cut short), for explicit, IMEX, implicit and second-order types, fixed and
 // adaptive; a run on another grid or with other integrator options builds its own context.
 // The implicit types' beam factorizations are kept across points (a point with the same step
-// keeps the nominal step's factor) and the rank-one solve agrees with the assembled LU (-pc_type lu).
+// keeps the nominal step's factor) and the rank-one solve agrees with the assembled LU (-pc_type lu);
+// where its Sherman-Morrison step breaks down, the solve falls back to the assembled LU.
 // Runs at np1, and a few at np2 (MUMPS, a distributed layout).
 #include "run/results_table.hpp"
+#include "model/contact.hpp"
+#include "solvers/ts_problem.hpp"
 #include "solvers/ts_stepper.hpp"
 #include "test_helpers.hpp"
+
+#include <petscdm.h>
 
 #include <cstring>
 
@@ -87,13 +92,19 @@ TEST(ContextReuse, SecondOrder) { ExpectReuseIsFresh({{"-ts_type", "alpha2"}, {"
 // A nonlinear law: the contact stiffness changes at every Newton iteration (the rank-one term).
 TEST(ContextReuse, ImplicitNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}}, "options/base/superball-hysteresis.opts"); }
 TEST(ContextReuse, SecondOrderNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "alpha2"}, {"-ts_dt", "2e-5"}}, "options/base/superball-hysteresis.opts"); }
+// -ts_type modal: the modes (shared), gamma and the static correction set for each point; a
+// truncated basis (-modal_tolerance 1e-4 keeps the modes below ~11 kHz: the static correction
+// at each point) and every mode.
+TEST(ContextReuse, Modal) { ExpectReuseIsFresh({{"-ts_type", "modal"}, {"-modal_tolerance", "1e-4"}}); }
+TEST(ContextReuse, ModalNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "modal"}, {"-ts_modal_order", "2"}}, "options/base/superball-hysteresis.opts"); }
 TEST(ContextReuse, AssembledLU) { ExpectReuseIsFresh({{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}, {"-pc_type", "lu"}}); }
 
 // Another beam on the same grid (a sweep over the thickness): the context is reused, but not
-// the factors of the first beam's Jacobian; the second beam's run is its fresh run bit for bit.
+// the factors of the first beam's Jacobian (nor, -ts_type modal, its modes); the second beam's
+// run is its fresh run bit for bit.
 TEST(ContextReuse, ImplicitAnotherBeamOnTheSameGrid)
 {
-  const Opts cn   = {{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}};
+  for (const Opts &cn : {Opts{{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}}, Opts{{"-ts_type", "modal"}}}) {
   Scenario   thick;
   test::ReadScene({"options/base/aluminium-6mm.opts", "options/base/superball-linear.opts"}, {{"-beam_length", "1.1"}, {"-beam_nodes", "41"}, {"-beam_thickness", "0.01"}}, &thick.beam, &thick.ball);
   thick.impact.x      = 0.3;
@@ -105,8 +116,9 @@ TEST(ContextReuse, ImplicitAnotherBeamOnTheSameGrid)
   (void)RunImpact(Scene(0.825, 1.0), cn);
   const PetscInt     before = Reused();
   const ImpactResult again  = RunImpact(thick, cn);
-  EXPECT_EQ(Reused(), before + 1);
-  ExpectSameRow(fresh, again, "a thicker beam after the 6 mm one");
+  EXPECT_EQ(Reused(), before + 1) << cn[0].second;
+  ExpectSameRow(fresh, again, "a thicker beam after the 6 mm one, " + cn[0].second);
+  }
 }
 
 // The beam's factorizations are the context's: a second point at the same step factors fewer
@@ -194,4 +206,97 @@ TEST(ContextReuse, ARunThatFailedIsNotReused)
   const ImpactResult again = RunImpact(Scene(0.3, 2.5), rk4);
   EXPECT_EQ(Reused(), n) << "the context of a run that failed was reused";
   ExpectSameRow(fresh, again, "after a failed run");
+}
+
+// The rank-one solve on its own: the PCSHELL apply of cn's first-order Jacobian J = B + kc u v^T
+// on a 21-node beam, the linear superball in contact at x = 0.3 m. Each solve is checked by its
+// residual with J applied as the shell (B x + kc u v^T x, not the Sherman-Morrison formula).
+// The kept factor is then broken as an inaccurate or non-finite B^-1 u would break it: its
+// v^T w set so that 1 + kc v^T w vanishes, then to NaN. The solve must fall back to the
+// assembled LU (still J z = b, every entry finite); without the checks z is inf or NaN.
+TEST(RankOneSolve, BreakdownFallsBackToTheAssembledLU)
+{
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  BeamSystem     sys  = SystemOf(AluminiumBeam(1.1, 21));
+  ContactState   contact;
+  TSProblem      P;
+  contact.phase = ContactPhase::Loading;
+  P.sys         = &sys;
+  P.g           = BeamSystemCoupling(sys, 0.3);
+  P.ball        = Superball("linear");
+  P.contact     = &contact;
+  P.form        = Formulation::Implicit;
+  P.jac.contact = true;
+  ASSERT_EQ(TSLayoutCreate(comm, sys.nodes, sys.fields, sys.GhostNodes(), true, &P.L), 0);
+  TS   ts;
+  SNES snes;
+  KSP  ksp;
+  PC   pc;
+  ASSERT_EQ(TSCreate(comm, &ts), 0);
+  ASSERT_EQ(TSSetType(ts, TSCN), 0);
+  ASSERT_EQ(TSSetDM(ts, P.L.pack), 0);
+  ASSERT_EQ(TSSetIFunction(ts, NULL, TSIFunctionBeam, &P), 0);
+  ASSERT_EQ(TSGetSNES(ts, &snes), 0);
+  ASSERT_EQ(SNESGetKSP(snes, &ksp), 0);
+  ASSERT_EQ(KSPSetType(ksp, KSPPREONLY), 0);
+  ASSERT_EQ(KSPGetPC(ksp, &pc), 0);
+  ASSERT_EQ(TSJacobianSetDefaultPC(P, pc), 0);
+  ASSERT_EQ(TSJacobianInstall(P, ts), 0);
+  ASSERT_EQ(PCSetOperators(pc, P.jac.J, P.jac.J), 0); // as the SNES would
+  Vec U, Udot, b, z, r;
+  ASSERT_EQ(DMCreateGlobalVector(P.L.pack, &U), 0);
+  for (Vec *x : {&Udot, &b, &z, &r}) ASSERT_EQ(VecDuplicate(U, x), 0);
+  ASSERT_EQ(VecZeroEntries(U), 0);
+  ASSERT_EQ(VecZeroEntries(Udot), 0);
+  if (P.L.rank == 0) { // 0.1 mm into the beam: in contact
+    ASSERT_EQ(VecSetValue(U, P.L.BallIndex(0), 1e-4, INSERT_VALUES), 0);
+  }
+  PetscInt lo, hi;
+  ASSERT_EQ(VecGetOwnershipRange(b, &lo, &hi), 0);
+  for (PetscInt i = lo; i < hi; ++i) ASSERT_EQ(VecSetValue(b, i, 1.0 + 0.01 * (i % 7), INSERT_VALUES), 0);
+  for (Vec x : {U, b}) {
+    ASSERT_EQ(VecAssemblyBegin(x), 0);
+    ASSERT_EQ(VecAssemblyEnd(x), 0);
+  }
+  ASSERT_EQ(TSIJacobianBeam(ts, 0.0, U, Udot, 2 / 1e-5, P.jac.J, P.jac.J, &P), 0); // cn at dt = 1e-5 s: shift 2/dt
+  ASSERT_GT(P.jac.kc, 0.0);
+  // The relative residual |J z - b| / |b| of a solve, and whether z is finite.
+  auto solve = [&](PetscReal *res, bool *finite) {
+    PetscReal nb, nr, nz;
+    ASSERT_EQ(PCApply(pc, b, z), 0);
+    ASSERT_EQ(MatMult(P.jac.J, z, r), 0);
+    ASSERT_EQ(VecAXPY(r, -1.0, b), 0);
+    ASSERT_EQ(VecNorm(b, NORM_INFINITY, &nb), 0);
+    ASSERT_EQ(VecNorm(r, NORM_INFINITY, &nr), 0);
+    ASSERT_EQ(VecNorm(z, NORM_1, &nz), 0);
+    *res    = nr / nb;
+    *finite = std::isfinite(nz);
+  };
+  PetscReal res;
+  bool      finite;
+  solve(&res, &finite);
+  EXPECT_TRUE(finite && res < 1e-10) << "the rank-one solve: residual " << res;
+  EXPECT_EQ(P.jac.fallbacks, 0) << "a sound rank-one solve fell back";
+  BeamFactor     &f  = *P.jac.current;
+  const PetscReal vw = f.vw;
+  f.vw               = -1 / P.jac.kc; // 1 + kc v^T w = 0 (or round-off)
+  solve(&res, &finite);
+  EXPECT_TRUE(finite && res < 1e-10) << "a vanishing Sherman-Morrison denominator: residual " << res << (finite ? "" : ", not finite");
+  EXPECT_EQ(P.jac.fallbacks, 1) << "the vanishing denominator did not fall back";
+  f.vw = NAN; // a non-finite B^-1 u
+  solve(&res, &finite);
+  EXPECT_TRUE(finite && res < 1e-10) << "a non-finite v^T B^-1 u: residual " << res << (finite ? "" : ", not finite");
+  EXPECT_EQ(P.jac.fallbacks, 2);
+  f.vw = vw;
+  solve(&res, &finite);
+  EXPECT_TRUE(finite && res < 1e-10) << "restored: residual " << res;
+  EXPECT_EQ(P.jac.fallbacks, 2) << "the restored factor fell back";
+  PetscReal den;
+  EXPECT_TRUE(RankOneDenominator(4.0, 0.25, &den) && den == 2.0);
+  EXPECT_FALSE(RankOneDenominator(1e6, -1e-6 * (1 + 1e-10), &den)) << "1 + kc vw = -1e-10: cancelled to 1e-10, beyond sqrt(eps)";
+  EXPECT_FALSE(RankOneDenominator(INFINITY, 1e-6, &den));
+  for (Vec *x : {&U, &Udot, &b, &z, &r}) VecDestroy(x);
+  TSDestroy(&ts);
+  TSJacobianDestroy(P);
+  TSLayoutDestroy(&P.L);
 }

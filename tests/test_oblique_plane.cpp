@@ -1,5 +1,7 @@
 // The bat flexible in its second plane (model/oblique.hpp TangentialPlane, run/oblique.cpp):
-//   * a mode under a linear force against its closed forms (rest, constant and ramp loads);
+//   * a mode under a linear force against its closed forms (rest, constant and ramp loads); a
+//     damped mode (under-, critically, over-damped, a damped rigid mode) against a fine rk4
+//     integration of its equation, on both sides of the series' threshold;
 //   * a plane of one rigid mode of mass M_t is the rigid bat of effective mass M_t: the same
 //     impulse as the rigid model's closed-form slip and Runge-Kutta grip (an independent solver);
 //   * a plane of no modes is a massive fixed target: rolling, v_t' = v_t / (1 + alpha);
@@ -65,6 +67,49 @@ TEST(TangentialPlane, ModeUnderLinearForce)
 }
 
 // One rigid mode, gamma = 1/sqrt(M_t): the plane is a rigid body of mass M_t at the point.
+namespace {
+
+// z'' + 2 sigma z' + w^2 z = f0 + f1 s integrated by classical rk4 with n steps (an independent
+// check of the closed forms).
+void DampedModeRK4(PetscReal w, PetscReal sg, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, int n, PetscReal *q, PetscReal *qd)
+{
+  const PetscReal h = tau / n;
+  auto            acc = [&](PetscReal s, PetscReal y, PetscReal v) { return f0 + f1 * s - 2 * sg * v - w * w * y; };
+  for (int i = 0; i < n; ++i) {
+    const PetscReal s = i * h;
+    const PetscReal k1y = zd, k1v = acc(s, z, zd);
+    const PetscReal k2y = zd + 0.5 * h * k1v, k2v = acc(s + 0.5 * h, z + 0.5 * h * k1y, zd + 0.5 * h * k1v);
+    const PetscReal k3y = zd + 0.5 * h * k2v, k3v = acc(s + 0.5 * h, z + 0.5 * h * k2y, zd + 0.5 * h * k2v);
+    const PetscReal k4y = zd + h * k3v, k4v = acc(s + h, z + h * k3y, zd + h * k3v);
+    z += h / 6 * (k1y + 2 * k2y + 2 * k3y + k4y);
+    zd += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+  }
+  *q = z, *qd = zd;
+}
+
+} // namespace
+
+TEST(TangentialPlane, DampedModeUnderLinearForce)
+{
+  struct Case {
+    PetscReal w, sigma;
+  };
+  // under-, critically and over-damped, a damped rigid mode, a lightly damped one
+  for (Case c : {Case{3000, 300}, Case{3000, 3000}, Case{3000, 30000}, Case{0, 50}, Case{3000, 1e-3}}) {
+    for (PetscReal tau : {2e-5, 1.3e-3}) { // tau (w + 2 sigma) below and above the series' threshold 0.5 (but for the rigid mode)
+      PetscReal q, qd, qr, qdr;
+      TangentialModeForced(c.w, c.sigma, 2e-3, 0.5, 5, 7e3, tau, &q, &qd);
+      DampedModeRK4(c.w, c.sigma, 2e-3, 0.5, 5, 7e3, tau, 200000, &qr, &qdr);
+      EXPECT_NEAR(q, qr, 1e-11 * (std::abs(qr) + 1e-9)) << "w " << c.w << " sigma " << c.sigma << " tau " << tau;
+      EXPECT_NEAR(qd, qdr, 1e-10 * (std::abs(qdr) + 1e-6)) << "w " << c.w << " sigma " << c.sigma << " tau " << tau;
+    }
+  }
+  PetscReal q0, qd0, q1, qd1; // sigma -> 0: the undamped closed form
+  TangentialModeForced(3000, 0, 2e-3, 0.5, 5, 7e3, 1.3e-3, &q0, &qd0);
+  TangentialModeForced(3000, 1e-12, 2e-3, 0.5, 5, 7e3, 1.3e-3, &q1, &qd1);
+  EXPECT_NEAR(q1, q0, 1e-12 * std::abs(q0));
+  EXPECT_NEAR(qd1, qd0, 1e-12 * std::abs(qd0));
+}
 TEST(TangentialPlane, OneRigidModeIsTheRigidBat)
 {
   const PetscReal M_t = 0.9, T = 0.8e-3, P = 2 * 0.145 * 35, u0 = 6;
@@ -155,4 +200,49 @@ TEST(TangentialPlane, FreeBatConservesMomentumAndBalancesEnergy)
       EXPECT_NEAR(E0 - E1, s.dissipated, 1e-6 * E0) << "l " << l << " mu " << mu << ": the energy taken " << s.dissipated;
     }
   }
+}
+
+// The same free bat damped in proportion to its stiffness (-beam_damping_stiffness: the rigid
+// modes undamped, the flexible ones decaying, the highest over-damped): momentum and angular
+// momentum still conserved to round-off, and the energy falls by the tangential contact's term
+// plus what the modes' damping took (TangentialPlane::damped, > 0).
+TEST(TangentialPlane, DampedBatBalancesEnergy)
+{
+  Scenario sc;
+  test::ReadScene({"options/bats/r161.opts", "options/balls/baseball.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}, {"-beam_damping_stiffness", "2e-6"}}, &sc.beam, &sc.ball);
+  BeamSystem  sys;
+  std::string why;
+  ASSERT_TRUE(BeamSystemBuild(sc.beam, &sys, &why)) << why;
+  const PetscReal       x_c = 0.7;
+  const ContactCoupling g   = BeamSystemCoupling(sys, x_c);
+  ObliqueBeam           beam;
+  beam.sys              = &sys;
+  beam.g                = &g;
+  beam.truncation.modes = ModalModes::All;
+  TangentialModel m     = Baseball(0.6, 5e-3);
+  m.bat_roll_inertia    = 4e-4;
+  TangentialPlane p;
+  PetscInt        rigid = 0;
+  ASSERT_EQ(0, ObliquePlaneBuild(beam, std::vector<PetscReal>(sys.ndof, -3.0), &p, &rigid));
+  ASSERT_EQ(p.sigma.size(), p.omega.size());
+  EXPECT_EQ(p.sigma[0], 0); // rigid: undamped
+  EXPECT_GT(p.sigma.back(), p.omega.back()); // the top mode over-damped
+  const TangentialBodies b0{9.0, -150, 0, 0};
+  p.ball_side = b0.v_ball - m.ball_radius * b0.spin - m.bat_radius * b0.roll;
+  PetscReal P0, L0, P1, L1;
+  ASSERT_EQ(0, ObliquePlaneMomenta(beam, p, &P0, &L0));
+  const PetscReal E0 = TangentialKineticEnergy(m, b0) + p.ModeEnergy();
+  TangentialState s  = TangentialFlexibleStart(m, p);
+  FeedPlane(m, 0.8e-3, 2 * m.ball_mass * 40, 400, &p, &s);
+  for (int k = 0; k < 20; ++k) TangentialAdvanceFlexible(m, 0.8e-3 + 1e-4 * k, 0.8e-3 + 1e-4 * (k + 1), 0, 0, &p, &s);
+  ASSERT_EQ(0, ObliquePlaneMomenta(beam, p, &P1, &L1));
+  TangentialModel ball = m;
+  ball.bat_mass        = PETSC_INFINITY;
+  const TangentialBodies b1 = TangentialBodiesAfter(ball, b0, s.impulse);
+  const PetscReal        scale = m.ball_mass * 9.0;
+  EXPECT_NEAR(m.ball_mass * b1.v_ball + P1, m.ball_mass * b0.v_ball + P0, 1e-13 * scale);
+  EXPECT_NEAR(m.ball_mass * x_c * b1.v_ball + L1, m.ball_mass * x_c * b0.v_ball + L0, 1e-13 * scale);
+  const PetscReal E1 = TangentialKineticEnergy(m, b1) + p.ModeEnergy();
+  EXPECT_GT(p.damped, 0);
+  EXPECT_NEAR(E0 - E1, s.dissipated + p.damped, 1e-6 * E0) << "friction " << s.dissipated << " damping " << p.damped;
 }

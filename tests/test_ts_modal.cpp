@@ -207,3 +207,29 @@ TEST(ModalTruncation, TruncatedEngineMatchesAllModes)
   EXPECT_NEAR(m->cutoff / (2 * M_PI), r[1].modal.cutoff, 1e-12 * r[1].modal.cutoff);
   EXPECT_TRUE(r[1].mode_energies.empty()) << "no window after the separation (Centre): no free flight, no energies per mode";
 }
+
+// The partial solve's size: the modes below a cut-off counted by Sylvester's inertia (the
+// negative pivots of K - w^2 M), against the dense decomposition's frequencies, on a free
+// Timoshenko bat (R161, 61 nodes; two fields: the shear branch makes the spectrum far from the
+// bending-only estimate that chose the size before) and a clamped Euler-Bernoulli beam;
+// cut-offs midway between modes, rigid modes included.
+TEST(ModalTruncation, ModesCountedBelowACutOff)
+{
+  BeamParams bat;
+  BallParams ball;
+  test::ReadScene({"options/bats/r161.opts", "options/balls/baseball.opts"}, {{"-beam_theory", "timoshenko"}, {"-beam_nodes", "61"}}, &bat, &ball);
+  for (const BeamParams &p : {bat, AluminiumBeam(1.1, 61, Support::Clamped, Support::Free)}) {
+    const BeamSystem                 sys = SystemOf(p);
+    std::shared_ptr<const BeamModes> all;
+    ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, Truncation(ModalModes::All, 0, 0, 0), &all));
+    const std::vector<PetscReal> &w = all->B.omega;
+    for (PetscInt k : {0, 1, 2, 5, 17, 40, (PetscInt)w.size() / 2, (PetscInt)w.size() - 2}) {
+      if (k + 1 >= (PetscInt)w.size() || w[k + 1] <= w[k] * (1 + 1e-6)) continue; // a degenerate pair: no cut-off between
+      const PetscReal wc = 0.5 * (w[k] + w[k + 1]);
+      PetscInt        expect = 0;
+      for (PetscReal x : w) expect += x < wc;
+      EXPECT_EQ(BeamModesCountBelow(sys, wc), expect) << p.theory << " beam, cut-off " << wc << " rad/s";
+    }
+    EXPECT_EQ(BeamModesCountBelow(sys, 2 * w.back()), (PetscInt)w.size());
+  }
+}

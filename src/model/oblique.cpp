@@ -312,6 +312,97 @@ void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, 
   *qd = -z * w * w * S1 + zd * c + f0 * S1 + f1 * C1;
 }
 
+namespace {
+
+// phi_k(x) = sum_j x^j / (j + k)!, k >= 0 (phi_0 = e^x): the series below |x| = 0.5, else the
+// recurrence phi_k = (phi_k-1 - 1/(k-1)!) / x from e^x.
+PetscReal PhiScalar(int k, PetscReal x)
+{
+  if (std::abs(x) < 0.5) {
+    PetscReal term = 1, sum = 0;
+    for (int j = 1; j <= k; ++j) term /= j;
+    for (int j = 0; j < 30; ++j) {
+      sum += term;
+      term *= x / (j + k + 1);
+    }
+    return sum;
+  }
+  PetscReal r = std::exp(x), fact = 1;
+  for (int j = 1; j <= k; ++j) {
+    r = (r - 1 / fact) / x;
+    fact *= j;
+  }
+  return r;
+}
+
+// A 2 x 2 matrix [[a, b], [c, d]].
+struct Mat2 {
+  PetscReal a = 0, b = 0, c = 0, d = 0;
+};
+Mat2 operator*(const Mat2 &x, const Mat2 &y) { return {x.a * y.a + x.b * y.c, x.a * y.b + x.b * y.d, x.c * y.a + x.d * y.c, x.c * y.b + x.d * y.d}; }
+
+// E = e^X, P1 = phi_1(X), P2 = phi_2(X) of X = tau [[0, w], [-w, -2 sigma]] (the mode in the
+// scaled state (w z, z')): the series where |X| < 0.5; else E in closed form,
+// e^{-sigma tau} (c I + s Y) with Y = [[sigma, w], [-w, -sigma]] (Y^2 = (sigma^2 - w^2) I), and
+// X P1 = E - I, X P2 = P1 - I.
+void ModeExponential(PetscReal w, PetscReal sigma, PetscReal tau, Mat2 *E, Mat2 *P1, Mat2 *P2)
+{
+  const Mat2 X{0, w * tau, -w * tau, -2 * sigma * tau};
+  if (tau * (w + 2 * sigma) < 0.5) {
+    Mat2      pw{1, 0, 0, 1}; // X^j
+    PetscReal f0 = 1, f1 = 1, f2 = 0.5; // 1/j!, 1/(j+1)!, 1/(j+2)!
+    *E = *P1 = *P2 = Mat2();
+    for (int j = 0; j < 30; ++j) {
+      E->a += f0 * pw.a, E->b += f0 * pw.b, E->c += f0 * pw.c, E->d += f0 * pw.d;
+      P1->a += f1 * pw.a, P1->b += f1 * pw.b, P1->c += f1 * pw.c, P1->d += f1 * pw.d;
+      P2->a += f2 * pw.a, P2->b += f2 * pw.b, P2->c += f2 * pw.c, P2->d += f2 * pw.d;
+      pw = pw * X;
+      f0 /= j + 1, f1 /= j + 2, f2 /= j + 3;
+    }
+    return;
+  }
+  const PetscReal d2 = sigma * sigma - w * w;
+  PetscReal       ec, es; // e^{-sigma tau} c and e^{-sigma tau} s
+  if (d2 < 0) {
+    const PetscReal wd = std::sqrt(-d2), x = wd * tau, decay = std::exp(-sigma * tau);
+    ec = decay * std::cos(x);
+    es = decay * (x < 1e-4 ? tau * (1 - x * x / 6) : std::sin(x) / wd);
+  } else {
+    const PetscReal k = std::sqrt(d2), x = k * tau;
+    const PetscReal up = std::exp((k - sigma) * tau), down = std::exp(-(k + sigma) * tau);
+    ec = 0.5 * (up + down);
+    es = x < 1e-4 ? std::exp(-sigma * tau) * tau * (1 + x * x / 6) : 0.5 * (up - down) / k;
+  }
+  *E = {ec + es * sigma, es * w, -es * w, ec - es * sigma};
+  // X^-1 = [[-2 sigma, -w], [w, 0]] / (w^2 tau)
+  const PetscReal inv = 1 / (w * w * tau);
+  const auto      solve = [&](const Mat2 &r) { return Mat2{inv * (-2 * sigma * r.a - w * r.c), inv * ((-2 * sigma) * r.b - w * r.d), inv * (w * r.a), inv * (w * r.b)}; };
+  *P1 = solve({E->a - 1, E->b, E->c, E->d - 1});
+  *P2 = solve({P1->a - 1, P1->b, P1->c, P1->d - 1});
+}
+
+} // namespace
+
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd)
+{
+  if (!(sigma > 0)) {
+    TangentialModeForced(w, z, zd, f0, f1, tau, q, qd);
+    return;
+  }
+  if (w == 0) { // z'' + 2 sigma z' = f0 + f1 s
+    const PetscReal x = -2 * sigma * tau;
+    *qd = PhiScalar(0, x) * zd + tau * PhiScalar(1, x) * f0 + tau * tau * PhiScalar(2, x) * f1;
+    *q  = z + tau * PhiScalar(1, x) * zd + tau * tau * PhiScalar(2, x) * f0 + tau * tau * tau * PhiScalar(3, x) * f1;
+    return;
+  }
+  Mat2 E, P1, P2;
+  ModeExponential(w, sigma, tau, &E, &P1, &P2);
+  // (w z, z')(tau) = E (w z, z') + tau P1 (0, f0) + tau^2 P2 (0, f1)
+  const PetscReal y0 = w * z, y1 = zd;
+  *q  = (E.a * y0 + E.b * y1 + tau * P1.b * f0 + tau * tau * P2.b * f1) / w;
+  *qd = E.c * y0 + E.d * y1 + tau * P1.d * f0 + tau * tau * P2.d * f1;
+}
+
 TangentialState TangentialFlexibleStart(const TangentialModel &m, const TangentialPlane &p) { return TangentialStart(m, p.ball_side - p.PointVelocity()); }
 
 namespace {
@@ -330,7 +421,7 @@ PlaneTrial PlaneTry(const TangentialPlane &p, PetscReal inv_me, PetscReal tau, P
   for (size_t k = 0; k < p.omega.size(); ++k) {
     const PetscReal z = rest ? 0 : p.z[k], zd = rest ? 0 : p.zd[k];
     PetscReal       q, qd;
-    TangentialModeForced(p.omega[k], z, zd, -p.gamma[k] * Fa, -p.gamma[k] * dF, tau, &q, &qd);
+    TangentialModeForced(p.omega[k], p.Sigma(k), z, zd, -p.gamma[k] * Fa, -p.gamma[k] * dF, tau, &q, &qd);
     t.disp += p.gamma[k] * (q - z);
     t.vel += p.gamma[k] * qd;
   }
@@ -381,9 +472,15 @@ void PlaneCommit(const TangentialModel &m, PetscReal inv_me, PetscReal tau, Pets
     const PetscReal  si = 0.5 * tau * (1 + gx[i]);
     const PlaneTrial ti = PlaneTry(*p, inv_me, si, Fa, dF);
     s->dissipated += 0.5 * tau * gw[i] * (-(Fa + dF * si) * ti.U());
+    for (size_t k = 0; k < p->sigma.size(); ++k) { // the modes' damping: integral 2 sigma z'^2
+      if (!(p->sigma[k] > 0)) continue;
+      PetscReal q, qd;
+      TangentialModeForced(p->omega[k], p->sigma[k], p->z[k], p->zd[k], -p->gamma[k] * Fa, -p->gamma[k] * dF, si, &q, &qd);
+      p->damped += 0.5 * tau * gw[i] * 2 * p->sigma[k] * qd * qd;
+    }
   }
   const PlaneTrial t = PlaneTry(*p, inv_me, tau, Fa, dF);
-  for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->z[k], p->zd[k], -p->gamma[k] * Fa, -p->gamma[k] * dF, tau, &p->z[k], &p->zd[k]);
+  for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->Sigma(k), p->z[k], p->zd[k], -p->gamma[k] * Fa, -p->gamma[k] * dF, tau, &p->z[k], &p->zd[k]);
   if (s->phase == TangentialPhase::Grip && m.compliance_length > 0) s->xi += t.ws_int - t.disp;
   p->ball_side = t.ws;
   p->force     = Fa + dF * tau;
@@ -441,6 +538,20 @@ void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, Petsc
 
 } // namespace
 
+namespace {
+
+// The plane free (F_t = 0) over h: each mode exactly; a damped mode's loss is its energy's drop.
+void PlaneFree(PetscReal h, TangentialPlane *p)
+{
+  for (size_t k = 0; k < p->omega.size(); ++k) {
+    const PetscReal w = p->omega[k], E0 = 0.5 * (p->zd[k] * p->zd[k] + w * w * p->z[k] * p->z[k]);
+    TangentialModeForced(w, p->Sigma(k), p->z[k], p->zd[k], 0, 0, h, &p->z[k], &p->zd[k]);
+    if (p->Sigma(k) > 0) p->damped += E0 - 0.5 * (p->zd[k] * p->zd[k] + w * w * p->z[k] * p->z[k]);
+  }
+}
+
+} // namespace
+
 void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialPlane *p, TangentialState *s)
 {
   const PetscReal h = t1 - t0;
@@ -450,12 +561,12 @@ void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal
   ball.bat_mass        = PETSC_INFINITY; // the plane is the bat's translation
   const PetscReal inv_me = 1 / ball.EffectiveMass();
   if (t0 > p->time) { // free since the plane's time: F_t = 0
-    for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->z[k], p->zd[k], 0, 0, t0 - p->time, &p->z[k], &p->zd[k]);
+    PlaneFree(t0 - p->time, p);
     p->force = 0;
     p->time  = t0;
   }
   if (F0 == 0 && F1 == 0) { // not touching: no tangential force, the spring relaxed
-    for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->z[k], p->zd[k], 0, 0, h, &p->z[k], &p->zd[k]);
+    PlaneFree(h, p);
     p->force = 0;
     p->time  = t1;
     s->xi    = 0;

@@ -132,15 +132,19 @@ void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, Pet
 // contact takes, integral -F_t u dt, is summed by 3-point Gauss on each sub-step from the exact
 // u into TangentialState::dissipated (an independent check of the balance against the bodies'
 // and the modes' energies; stiffness_work stays 0: the spring's part is in it).
-// Undamped modes only (the run refuses a damped beam for it, naming -impact_tangential_plane rigid).
+// Damped modes (Rayleigh damping: sigma) decay exactly in the same way; their loss is summed into
+// TangentialPlane::damped (Gauss on each sub-step, the energy drop in free vibration).
 struct TangentialPlane {
   std::vector<PetscReal> omega, gamma;    // rad/s, m/(N s^2)^(1/2): per mode
+  std::vector<PetscReal> sigma;           // 1/s, each mode's decay rate (z'' + 2 sigma z' + w^2 z = f; Rayleigh damping); empty: undamped
+  PetscReal              damped    = 0;   // J, the energy the modes' damping took up to the plane's time
   PetscReal              flexibility = 0; // m/N, G_r: the point's static flexibility in the modes left out
   std::vector<PetscReal> z, zd;           // the modes' coordinates and velocities now
   PetscReal              ball_side = 0;   // m/s, w now
   PetscReal              force     = 0;   // N, F_t now (on the ball, along t)
   PetscReal              time      = 0;   // s, the time the state is at
   PetscInt               substeps  = 0;   // sub-steps taken
+  PetscReal Sigma(size_t k) const { return sigma.empty() ? 0 : sigma[k]; }
   PetscReal PointVelocity() const;        // m/s, sum gamma_k z_k' (the static correction's rate left out)
   PetscReal ModeEnergy() const;           // J, 1/2 sum (z_k'^2 + w_k^2 z_k^2) + 1/2 G_r F_t^2
 };
@@ -157,6 +161,10 @@ void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal
 // Mode w from z, zd under the force f0 + f1 s over [0, tau]: z and z' at tau, exact (w = 0: a
 // rigid mode).
 void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd);
+// The same with damping, z'' + 2 sigma z' + w^2 z = f0 + f1 s (sigma >= 0): exact for every
+// damping (under-, critically and over-damped, a damped rigid mode), through the exponential of
+// the mode's 2 x 2 matrix and its phi-functions (a series where their argument is small).
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd);
 
 // The four motions after an impulse J, from their values at the first touch.
 struct TangentialBodies {

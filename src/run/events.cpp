@@ -134,7 +134,11 @@ PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta
     if (tn - ta < min_step) tn = std::min(tb, ta + min_step);
     if (tb - ta <= 2 * min_step) {
       if (at_post) break;
-      tn = tb;
+      // The step to tb landed on the pre side this time (another path to the same time: its
+      // round-off; on a grid beyond double precision, N = 40961 with cn, by more than tol): the
+      // bracket has closed to round-off, and a step to tb would be of length 0 (a NaN residual
+      // in an implicit solve). On past tb by the least step instead.
+      tn = tb - ta > 8 * PETSC_MACHINE_EPSILON * std::abs(tb) ? tb : ta + min_step;
     }
     if (at_post) PetscCall(stepper.RollBack());
     PetscCall(stepper.Step(tn - ta));

@@ -191,6 +191,7 @@ struct ImpactOutcome {
   // (m above the ground) and hang time (s). Along the normal, acor, bbs and the rest are the run's.
   PetscReal exit_speed = 0, launch_angle = 0, spin = 0, spin_rpm = 0, friction_dissipated = 0;
   PetscReal bat_vibration_tangential = 0; // J, the bat's vibration in its second plane after the hit (flexible plane)
+  PetscReal bat_damping_tangential   = 0; // J, what the bat's damping took in that plane during the hit (flexible plane)
   PetscReal distance = 0, apex = 0, hang_time = 0;
 };
 

@@ -2,6 +2,7 @@
 #include "run/modal_reference.hpp"
 
 #include "run/impact.hpp"
+#include "run/oblique.hpp"
 #include "run/outcome.hpp"
 
 #include "run/scenario.hpp"
@@ -32,7 +33,28 @@ struct ModalRun {
   PetscReal          c_scale = 1;          // the compression per unit of g^T q: k'/k for a truncated system (the series spring), else 1
   PetscReal          t = 0;
   std::vector<PetscReal> q, qd;
+  ImpactSeries      *forces = nullptr; // an oblique impact's run along the normal: F_n(t) sampled in each contact phase
 };
+
+// The samples of F_n(t) a contact phase gives an oblique impact's tangential contact
+// (run/oblique.hpp), which takes F_n linear between samples: an error of order
+// kForceSamples^-2 in the tangential outputs (docs/model.md section 13 gives it measured).
+constexpr PetscInt kForceSamples = 20000;
+
+// F_n = k c at kForceSamples equal pieces of the contact phase [0, s_sep] of the exact solution.
+template <class Phase>
+void ModalSampleForce(const ModalRun &run, const Phase &ph, PetscReal s_sep)
+{
+  if (!run.forces) return;
+  ImpactSeries   &f = *run.forces;
+  const PetscReal k = ContactLinearStiffness(*run.ball) * run.c_scale;
+  for (PetscInt i = 0; i <= kForceSamples; ++i) {
+    const PetscReal s = s_sep * (PetscReal)i / (PetscReal)kForceSamples, t = run.t + s;
+    if (!f.time.empty() && !(t > f.time.back())) continue;
+    f.time.push_back(t);
+    f.force.push_back(i == 0 || i == kForceSamples ? 0.0 : std::max<PetscReal>(0, k * ph.Derivative(s, 0)));
+  }
+}
 
 // Energy (J) of the state: kinetic (beam and ball), strain, and the spring's in contact.
 PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, const std::vector<PetscReal> &qd, bool in_contact)
@@ -82,6 +104,7 @@ PetscErrorCode ModalContactPhase(ModalRun &run, const Phase &ph, ContactTally *t
   PetscCheck(ModalFirstCrossing(ph, 0, +1.0, run.t_cap - run.t, run.s_min, &s_sep), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
              "modal reference: the ball is still in contact at -impact_max_time %g s", (double)run.t_cap);
   ModalMaxCompressions(run, ph, s_sep, tally);
+  ModalSampleForce(run, ph, s_sep);
   ph.State(s_sep, run.q, run.qd);
   run.t += s_sep;
   tally->events.push_back({ContactEventKind::Separation, run.t, 0.0, 0.0});
@@ -219,9 +242,30 @@ void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run,
   rec->scales            = ContactScalesOf(sys, approaching);
 }
 
+// An oblique impact (sc: its run along the normal, sc.oblique.on): the tangential contact driven
+// by the sampled F_n(t), the bat's second plane in the modes of `truncation`, the exit and the
+// flight, as a stepped run finishes it (run/impact_driver.cpp); the samples are then dropped.
+PetscErrorCode ModalObliqueFinish(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactRecord *rec)
+{
+  ObliqueBeam beam;
+
+  PetscFunctionBeginUser;
+  if (!sc.oblique.on) PetscFunctionReturn(0);
+  const ContactCoupling g = BeamSystemCoupling(sys, sc.impact.x);
+  beam.sys                = &sys;
+  beam.g                  = &g;
+  beam.truncation         = truncation;
+  if (!(beam.truncation.contact_time > 0)) beam.truncation.contact_time = ContactTimeScale(sc.ball);
+  PetscCall(ObliqueFinish(sc, rec->series, -rec->end.ball_v, beam, &rec->oblique));
+  rec->series = ImpactSeries();
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 namespace {
+
+PetscErrorCode ModalReferenceDense(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
 
 // The truncated system (docs/model.md §12): the kept beam modes z_j (mass-normalised: mass 1,
 // stiffness w_j^2) and the ball, with c = y_b - sum_j gamma_j z_j, in contact through the series
@@ -339,7 +383,7 @@ PetscErrorCode TruncatedPhases(ModalRun &run, const TruncatedSystem &T, const Im
 
 // The reference on the modes kept (m truncated, the beam undamped): the same events and
 // outcome as the dense one, the state carried in the kept modes and the ball.
-PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys, const BeamModes &m, ImpactResult *res)
+PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys, const BeamModes &m, const ModalTruncation &truncation, ImpactResult *res)
 {
   const ImpactParams    &ip = sc.impact;
   const ModalCorrection *corr;
@@ -360,6 +404,7 @@ PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys
   run.S = &T.R, run.ball = &sc.ball, run.c_scale = T.c_scale;
   run.t_cap = times.max_time;
   run.s_min = 1e-13 * ContactTimeScale(sc.ball);
+  if (sc.oblique.on) run.forces = &rec.series;
   FullToTruncated(m, full.q, run.q);
   FullToTruncated(m, full.qd, run.qd);
   rec.contact.contacts = 1;
@@ -369,6 +414,7 @@ PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys
   TruncatedToFull(m, run.qd, full.qd);
   full.t = run.t;
   ModalFinish(sc, sys, full, E0, 0, V_x, &rec);
+  PetscCall(ModalObliqueFinish(sc, sys, truncation, &rec));
   rec.after_used = "modal";
   rec.modal      = {m.Count(), m.S.n, BeamModesCutoffHz(m)};
   *res           = ImpactResult();
@@ -393,12 +439,26 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
     if (!(t.contact_time > 0)) t.contact_time = ContactTimeScale(sc.ball); // as -ts_type modal and the free flight take it
     PetscCall(BeamModesShared(PETSC_COMM_SELF, sys, t, &modes));
   }
-  if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(sc, sys, *modes, res));
-  else PetscCall(ModalReferenceRunSystem(sc, sys, res)); // every mode kept: the dense reference
+  if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(sc, sys, *modes, t, res));
+  else PetscCall(ModalReferenceDense(sc, sys, t, res)); // every mode kept: the dense reference
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, ImpactResult *res)
+{
+  ModalTruncation all;
+
+  PetscFunctionBeginUser;
+  all.modes = ModalModes::All;
+  PetscCall(ModalReferenceDense(sc, sys, all, res));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// The dense reference (every mode; a damped beam's first-order modes in contact); an oblique
+// impact's second plane in the modes of `truncation`.
+PetscErrorCode ModalReferenceDense(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
 {
   const BallParams   &ball = sc.ball;
   const ImpactParams &ip   = sc.impact;
@@ -438,6 +498,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   run.ball                = &ball;
   run.t_cap               = times.max_time;
   run.s_min               = 1e-13 * ContactTimeScale(ball);
+  if (sc.oblique.on) run.forces = &rec.series;
   ModalStart(sc, sys, &run, &V_x, &E0);
   rec.start            = ModalMeasures(run, ip.x, 0);
   rec.contact.contacts = 1;
@@ -464,10 +525,13 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
     if (damped) D += dph.Dissipated(run.t - t0);
   }
   ModalFinish(sc, sys, run, E0, D, V_x, &rec);
+  PetscCall(ModalObliqueFinish(sc, sys, truncation, &rec));
   ImpactOutcomeFinish(sc, sys, std::move(rec), res);
   res->wall_time = MPI_Wtime() - wall0;
   PetscFunctionReturn(0);
 }
+
+} // namespace
 
 PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
 {

@@ -77,10 +77,6 @@ PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<Pets
              "that plane, its effective mass at the impact point), or no friction (-ball_friction 0)",
              why.c_str());
   PetscCall(BeamModesShared(beam.comm, *beam.sys, beam.truncation, &modes));
-  for (PetscReal r : modes->B.rate)
-    PetscCheck(r == 0, beam.comm, PETSC_ERR_SUP,
-               "-impact_tangential_plane flexible: the bat's second plane is solved in undamped modes, and this beam is damped (-beam_damping_*); give -impact_tangential_plane rigid (the bat rigid "
-               "in that plane), or an undamped beam");
   const BeamModes &M = *modes;
   const PetscInt   n = M.S.n, nm = M.Count();
   std::vector<PetscReal> sv(n), gw(n, 0.0);
@@ -92,6 +88,8 @@ PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<Pets
   }
   *p       = TangentialPlane();
   p->omega = M.B.omega;
+  for (PetscReal r : M.B.rate)
+    if (r > 0) p->sigma = M.B.rate; // Rayleigh damping (proportional): the same modes, each decaying
   p->gamma.assign(nm, 0.0);
   p->z.assign(nm, 0.0);
   p->zd.assign(nm, 0.0);
@@ -143,6 +141,7 @@ PetscErrorCode TangentialPlaneFinish(const ObliqueBeam &beam, ObliqueRecord *rec
   PetscReal              L;
 
   PetscFunctionBeginUser;
+  rec->plane_damped    = p.damped;
   rec->plane_vibration = 0.5 * p.flexibility * p.force * p.force;
   for (size_t k = (size_t)rec->plane_rigid_modes; k < p.omega.size(); ++k) rec->plane_vibration += 0.5 * (p.zd[k] * p.zd[k] + p.omega[k] * p.omega[k] * p.z[k] * p.z[k]);
   PetscCall(ObliquePlaneMomenta(beam, p, &rec->plane_momentum, &L));

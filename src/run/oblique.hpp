@@ -68,6 +68,7 @@ struct ObliqueRecord {
   TangentialPlane  plane;                 // flexible: its state after the contact
   PetscInt         plane_rigid_modes = 0; // flexible: the rigid modes among plane.omega (the first)
   PetscReal        plane_vibration = 0;   // J, flexible: the energy of its flexible modes after the contact
+  PetscReal        plane_damped    = 0;   // J, flexible: the energy the beam's damping took in that plane up to the end of the contact
   PetscReal        plane_momentum0 = 0, plane_momentum = 0; // N s, flexible: the bat's momentum along t before and after
   bool             flew = false;
   FlightResult     flight;
@@ -91,7 +92,7 @@ struct ObliqueBeam {
 // The bat's second plane in the modes of beam's system (TangentialPlane: the modes, the point's
 // share of each, the static correction of a truncated basis), moving with velocity (m/s per dof
 // along t; empty: at rest); rigid: the rigid modes among them (the first). Refuses a beam the
-// modes cannot carry (a grip) or a damped one, naming -impact_tangential_plane rigid.
+// modes cannot carry (a grip), naming -impact_tangential_plane rigid; a damped beam decays in its modes.
 PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p, PetscInt *rigid);
 // The plane's momentum along t (N s) and its angular momentum about x = 0 in that plane (N m s,
 // sum m_d x_d v_d over the translational dofs: a Timoshenko section's spin is left out).

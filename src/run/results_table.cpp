@@ -217,6 +217,8 @@ std::vector<ResultColumn> ObliqueColumns()
          "energy the tangential contact took from the motions: friction's sliding, and the tangential spring's (its stiffness follows F_n); its own term, not in energy_error's E (the normal run's)"),
     Real("bat_vibration_tangential", "J", &R::bat_vibration_tangential, ResultObliqueFlexible, kObliqueFlexible, [](F f) -> double { return f.oblique->plane_vibration; },
          "energy left in the bat's vibration in its second plane (across the line of centres) by the friction force; its own term, beside friction_dissipated"),
+    Real("bat_damping_tangential", "J", &R::bat_damping_tangential, ResultObliqueFlexible, kObliqueFlexible, [](F f) -> double { return f.oblique->plane_damped; },
+         "energy the bat's damping (-beam_damping_*) took in its second plane up to the end of the contact; 0 for an undamped bat; its own term, beside bat_vibration_tangential"),
     Real("distance", "m", &R::distance, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.distance; }, "the batted ball's carry: launch point to landing, horizontal"),
     Real("apex", "m", &R::apex, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.apex; }, "the flight's highest point above the ground"),
     Real("hang_time", "s", &R::hang_time, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.hang_time; }, "the flight's time from launch to landing"),

@@ -153,23 +153,59 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 
 namespace {
 
-// The time models of the decompositions, measured on the development machine (2 cores,
-// docs/convergence.md): the dense one per free dof cubed (33 s at n = 2561 with the run); a
-// partial eigen-solve per free dof per mode asked squared (Krylov-Schur's orthogonalisation
-// dominates; 6.6 s for 125 asked of 40961 free dofs, 1.35 s of 10241, load 8).
-constexpr double kDenseModesCost   = 2e-9;   // s
-constexpr double kPartialSolveCost = 1.2e-8; // s
+// The time models of the decompositions, in CPU seconds measured on the development machine
+// (reference BLAS; docs/convergence.md; on a loaded machine the wall time is a few times more):
+// the dense one (dsyevd and the refinement) per free dof cubed (the R161's whole run at
+// n = 2562: 41.8 s, at n = 1282: 4.3 s); a partial eigen-solve per free dof per mode asked
+// squared (Krylov-Schur's orthogonalisation dominates; 300 of 1282 free dofs 1.18 s, of 2562
+// 2.04 s; measured for nev <= n/4). The dense one is chosen where it is expected to be quicker:
+// above n sqrt(kDense/kPartial) = n/2 modes.
+constexpr double kDenseModesCost   = 2.5e-9; // s
+constexpr double kPartialSolveCost = 1e-8;   // s
 
-// The modes a partial solve asks for first, to reach the cut-off wc: a beam-like spectrum,
-// w_k ~ unit ((k + 1/2) pi)^2, rigid modes below.
-PetscInt ModesAskedBelow(const BeamSystem &sys, PetscInt n, PetscReal wc)
+// The modes with omega^2 below sigma (rigid ones included), counted exactly by Sylvester's law
+// of inertia: the negative pivots of the banded LDL^T of K - sigma M on the free dofs (no
+// pivoting, O(n bw^2); a pivot that vanishes, sigma an eigenvalue to round-off, counts as one).
+PetscInt ModesBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal sigma)
 {
-  const PetscReal k = std::sqrt(wc / sys.frequency_unit) / M_PI;
-  return (PetscInt)std::min<PetscReal>((PetscReal)n, 1.2 * k + 6);
+  const PetscInt         n = S.n, kd = sys.bw, ld = kd + 1;
+  std::vector<PetscInt>  free_of(sys.ndof, -1), cols(2 * kd + 1);
+  std::vector<PetscReal> vals(2 * kd + 1), a((size_t)ld * n, 0.0); // A(r, c), r >= c, at a[c ld + r - c]
+  PetscInt               below = 0;
+  for (PetscInt d = 0; d < n; ++d) free_of[S.dof[d]] = d;
+  for (PetscInt d = 0; d < n; ++d) {
+    const PetscInt nc = BeamSystemStiffnessRow(sys, S.dof[d], cols.data(), vals.data());
+    for (PetscInt q = 0; q < nc; ++q) {
+      const PetscInt c = free_of[cols[q]];
+      if (c >= 0 && c <= d) a[(size_t)c * ld + d - c] += vals[q];
+    }
+    a[(size_t)d * ld] -= sigma * S.mass[d];
+  }
+  for (PetscInt j = 0; j < n; ++j) {
+    PetscReal *cj = &a[(size_t)j * ld], dj = cj[0];
+    if (!(dj > 0)) {
+      below++;
+      if (dj == 0) dj = -std::numeric_limits<PetscReal>::min();
+    }
+    for (PetscInt i = j + 1; i < std::min(n, j + ld); ++i) {
+      const PetscReal f  = cj[i - j] / dj;
+      PetscReal      *ci = &a[(size_t)i * ld];
+      for (PetscInt k = i; k < std::min(n, j + ld); ++k) ci[k - i] -= f * cj[k - j];
+    }
+  }
+  return below;
 }
 
+// The modes a partial solve asks for to reach the cut-off wc: those below it (ModesBelow) and
+// a few above, so that its last is past the cut-off.
+PetscInt ModesAskedBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal wc) { return std::min<PetscInt>(S.n, ModesBelow(sys, S, wc * wc) + 8); }
+
+// Whether the dense decomposition of n free dofs is expected to be quicker than a partial
+// solve of nev modes (the time models above; below 65 dofs always).
+bool DenseIsQuicker(PetscInt n, PetscInt nev) { return n <= 64 || kDenseModesCost * (double)n * (double)n * (double)n <= kPartialSolveCost * (double)n * (double)nev * (double)nev; }
+
 // The dense decomposition of every mode, with its memory check (3 n^2 doubles: the matrix,
-// syev's copy and the basis) against half the physical memory.
+// which becomes the basis, and dsyevd's workspace of 2 n^2) against half the physical memory.
 PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m)
 {
   const double n = (double)m->S.n, need = 3 * n * n * sizeof(PetscReal);
@@ -198,9 +234,10 @@ void KeepModes(BeamModes *m, PetscInt keep)
   B.rate.resize(keep);
 }
 
-// The modes up to `want` (Count) or up to the cut-off w_c (Auto, want < 0) from partial
-// eigen-solves, nev grown until the cut-off is passed; the dense decomposition instead when
-// more than a third of the modes are wanted. Then keeps what was asked.
+// The modes up to `want` (Count) or up to the cut-off w_c (Auto, want < 0: as many as lie below
+// it, counted, and a few more) from a partial eigen-solve, nev grown if it fell short; the
+// dense decomposition instead where the time models expect it to be quicker (DenseIsQuicker),
+// before each solve. Then keeps what was asked.
 PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscReal wc)
 {
   const PetscInt                      n = m->S.n;
@@ -210,9 +247,9 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
   PetscInt                            nev = want;
 
   PetscFunctionBeginUser;
-  if (want < 0) nev = ModesAskedBelow(sys, n, wc);
+  if (want < 0) nev = ModesAskedBelow(sys, m->S, wc);
   for (;;) {
-    if (3 * nev > n || n <= 64) { // dense: cheaper than a Krylov space of that size, and exact
+    if (DenseIsQuicker(n, nev)) { // and exact
       PetscCall(DenseModes(comm, m));
       break;
     }
@@ -276,11 +313,13 @@ double BeamModesExpectedSeconds(const BeamSystem &sys, const ModalTruncation &t)
   else if (t.modes == ModalModes::Auto) {
     ContactCoupling none;
     const PetscReal wc = t.Cutoff();
-    if (wc < BeamSystemMaxFrequencyBound(sys, none, 0.0, 0.0)) nev = ModesAskedBelow(sys, n, wc);
+    if (wc < BeamSystemMaxFrequencyBound(sys, none, 0.0, 0.0)) nev = ModesAskedBelow(sys, ModalSystemBeamOnly(sys), wc);
   }
-  if (3 * nev > n || n <= 64) return dense; // as BeamModesBuild decides
+  if (DenseIsQuicker(n, nev)) return dense; // as TruncatedModes decides
   return kPartialSolveCost * (double)n * (double)nev * (double)nev;
 }
+
+PetscInt BeamModesCountBelow(const BeamSystem &sys, PetscReal omega) { return ModesBelow(sys, ModalSystemBeamOnly(sys), omega * omega); }
 
 PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const BeamModes> *modes)
 {

@@ -4,7 +4,7 @@
 // free vibration is exact mode by mode: ModalModeAt).
 //
 // All of them or the lowest (-modal_modes all|auto|K, -modal_tolerance; docs/model.md §12):
-//   all   every mode: dense LAPACK syev of M^{-1/2} K M^{-1/2}, refined by banded inverse
+//   all   every mode: dense LAPACK dsyevd of M^{-1/2} K M^{-1/2}, refined by banded inverse
 //         iteration (solvers/modal_basis.hpp), exact to round-off; time and memory ~ n^3, n^2.
 //   auto  the modes up to the cut-off w_c = pi / (T sqrt(tol)) (T the contact's time scale):
 //         a mode above it responds to a load of duration T quasi-statically to (pi/(w T))^2 <=
@@ -12,9 +12,10 @@
 //         is above every mode (the Gershgorin bound of the system) this is `all`.
 //   K     the K lowest modes (rigid ones included).
 // A truncated basis comes from a partial eigen-solve (BeamModesLowest: SLEPc Krylov-Schur,
-// shift-and-invert with the factorization of the banded K, nev grown until the cut-off is
-// passed; O(n k) memory and O(n k^2) time), refined as the dense one, or from the dense
-// decomposition when the kept modes are more than a third of them (cheaper and exact).
+// shift-and-invert with the factorization of the banded K, nev the modes below the cut-off
+// counted by Sylvester's inertia and a few more; O(n k) memory and O(n k^2) time), refined as
+// the dense one, or from the dense decomposition where its time model expects it to be quicker
+// (more than about half the modes kept; exact).
 //
 // Computed once per beam and shared: BeamModesShared keeps the last few bases in a small
 // cache of this process keyed by the system's content (nodes, fields, masses, held dofs, the
@@ -99,6 +100,11 @@ PetscReal BeamModesCutoffHz(const BeamModes &m);
 // The expected time (s) of the decomposition t asks for on sys: the dense one, or the partial
 // eigen-solve of the modes up to the cut-off (the time models in beam_modes.cpp).
 double BeamModesExpectedSeconds(const BeamSystem &sys, const ModalTruncation &t);
+
+// The number of the beam's modes (rigid ones included) with omega below `omega` (rad/s),
+// counted exactly by Sylvester's law of inertia on K - omega^2 M (a banded LDL^T, O(n bw^2)):
+// how many a partial solve of -modal_modes auto asks for.
+PetscInt BeamModesCountBelow(const BeamSystem &sys, PetscReal omega);
 
 // Whether the beam's free vibration can be propagated exactly in modes (the force terms are
 // modal: no grip); if not, *why says so. Any size: a truncated basis has no size limit, the

@@ -1,8 +1,8 @@
 // Exact free and in-contact vibration of the semi-discrete system (system/beam_system.hpp)
 // with a linear spring: between events the beam + ball system is linear, M q'' + K_p q = 0
 // with K_p = K + k g g^T in contact and K_p = K when separated (q: free beam dofs and the
-// ball). A symmetric eigen-decomposition of M^{-1/2} K_p M^{-1/2} (LAPACK syev, refined by
-// banded inverse iteration) gives q(t) in closed form in each phase,
+// ball). A symmetric eigen-decomposition of M^{-1/2} K_p M^{-1/2} (LAPACK dsyevd, divide and
+// conquer; syev where it fails; refined by banded inverse iteration) gives q(t) in closed form in each phase,
 //   q(t0 + s) = M^{-1/2} Phi z(s),  z_k(s) = z_k cos(w_k s) + zdot_k sin(w_k s) / w_k,
 // or, with Rayleigh damping in a separated phase, the exact damped solution of each mode
 // (ModalModeAt),

@@ -17,7 +17,9 @@
 #include <petscdm.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 
 namespace beamimpact {
@@ -111,20 +113,19 @@ PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = fal
   PetscFunctionReturn(0);
 }
 
-// J = J0 + shift I + kc g g^T / m: a copy of the constant part (same pattern: a memcpy),
-// a diagonal shift, and the contact block (the coupled dofs and the ball) added on the rows
-// that own it.
-PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal shiftV, PetscReal kc)
+// J = J0 + shift I (+ shiftV Jd) + kc g g^T / m: a copy of the constant part (same pattern: a
+// memcpy), a diagonal shift, and the contact block (the coupled dofs and the ball) added on the
+// rows that own it.
+PetscErrorCode AssembleShifted(TSProblem &P, Mat J, Mat J0, Mat Jd, PetscReal shift, PetscReal shiftV, PetscReal kc)
 {
   const TSLayout     &L     = P.L;
   const bool          first = L.dof == 2 * L.fields;
   const CouplingBlock cb    = CouplingBlockOf(P);
 
   PetscFunctionBeginUser;
-  P.count.assembled++;
-  PetscCall(MatCopy(P.jac.J0, P.jac.J, SAME_NONZERO_PATTERN));
-  if (P.jac.Jd) PetscCall(MatAXPY(P.jac.J, shiftV, P.jac.Jd, SAME_NONZERO_PATTERN));
-  PetscCall(MatShift(P.jac.J, shift));
+  PetscCall(MatCopy(J0, J, SAME_NONZERO_PATTERN));
+  if (Jd) PetscCall(MatAXPY(J, shiftV, Jd, SAME_NONZERO_PATTERN));
+  PetscCall(MatShift(J, shift));
   if (kc != 0.0)
     for (PetscInt p = 0; p < cb.n; ++p) {
       const bool     ball = p == cb.n - 1;
@@ -135,13 +136,47 @@ PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal shiftV,
       const PetscReal m   = ball ? P.ball.mass : P.sys->mass[d];
       PetscScalar     vals[ContactCoupling::kMaxEntries + 1];
       for (PetscInt q = 0; q < cb.n; ++q) vals[q] = kc * cb.g[p] * cb.g[q] / m;
-      PetscCall(MatSetValues(P.jac.J, 1, &row, cb.n, cb.cols, vals, ADD_VALUES));
+      PetscCall(MatSetValues(J, 1, &row, cb.n, cb.cols, vals, ADD_VALUES));
     }
-  PetscCall(MatAssemblyBegin(P.jac.J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P.jac.J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+// The assembled path's J (-pc_type lu and others).
+PetscErrorCode AssembleJacobian(TSProblem &P, PetscReal shift, PetscReal shiftV, PetscReal kc)
+{
+  PetscFunctionBeginUser;
+  P.count.assembled++;
+  PetscCall(AssembleShifted(P, P.jac.J, P.jac.J0, P.jac.Jd, shift, shiftV, kc));
   P.jac.shift  = shift;
   P.jac.shiftV = shiftV;
   P.jac.kc     = kc;
+  PetscFunctionReturn(0);
+}
+
+// J's storage with its final pattern (the coupling entries as zeros), J0 its constant part and,
+// second order and damped, Jd = C/m on the same pattern.
+PetscErrorCode CreateAssembled(TSProblem &P, Mat *J, Mat *J0, Mat *Jd)
+{
+  Vec      U;
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(P.L.pack, &U));
+  PetscCall(VecGetLocalSize(U, &n));
+  PetscCall(VecDestroy(&U));
+  const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields; // first order, damped: K/m also in the velocity columns
+  const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
+  PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 7, NULL, width + 3, NULL, J));
+  PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(MatSetOption(*J, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
+  PetscCall(AssembleConstantPart(P, *J)); // fixes the pattern (coupling entries as zeros)
+  PetscCall(MatDuplicate(*J, MAT_COPY_VALUES, J0));
+  if (P.sys->Damped() && P.L.dof == P.L.fields) { // second order: Jd = C/m on the same pattern
+    PetscCall(MatDuplicate(*J, MAT_DO_NOT_COPY_VALUES, Jd));
+    PetscCall(AssembleConstantPart(P, *Jd, true));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -162,6 +197,30 @@ PetscErrorCode CouplingDot(const TSProblem &P, Vec x, PetscReal *dot)
   PetscCall(VecRestoreArrayRead(x, &a));
   if (P.L.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPIU_REAL, MPIU_SUM, P.L.comm));
   *dot = s;
+  PetscFunctionReturn(0);
+}
+
+// v^T x as CouplingDot, and whether every entry of x is finite (a scan of the owned entries),
+// in one reduction.
+PetscErrorCode CouplingDotFinite(const TSProblem &P, Vec x, PetscReal *dot, bool *finite)
+{
+  const PetscScalar *a;
+  PetscInt           n;
+  PetscReal          s[2] = {0, 0}; // the dot product, the ranks with a non-finite entry
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArrayRead(x, &a));
+  for (size_t q = 0; q < P.jac.v_idx.size(); ++q) s[0] += P.jac.v_val[q] * a[P.jac.v_idx[q]];
+  for (PetscInt i = 0; i < n; ++i)
+    if (!std::isfinite(a[i])) {
+      s[1] = 1;
+      break;
+    }
+  PetscCall(VecRestoreArrayRead(x, &a));
+  if (P.L.size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s, 2, MPIU_REAL, MPIU_SUM, P.L.comm));
+  *dot    = s[0];
+  *finite = s[1] == 0;
   PetscFunctionReturn(0);
 }
 
@@ -256,7 +315,7 @@ PetscErrorCode BeamFactorAt(TSProblem &P, PetscReal shift, PetscReal shiftV, Bea
   }
   if (f->point != jac.point) {
     PetscCall(KSPSolve(f->ksp, jac.u, f->w));
-    PetscCall(CouplingDot(P, f->w, &f->vw));
+    PetscCall(CouplingDotFinite(P, f->w, &f->vw, &f->finite));
     f->point = jac.point;
   }
   f->used++;
@@ -280,20 +339,73 @@ PetscErrorCode RankOneMult(Mat J, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
-// z = J^-1 b by Sherman-Morrison on B's factor: z = B^-1 b - kc w (v^T B^-1 b) / (1 + kc v^T w).
+PetscErrorCode FallbackDestroy(AssembledFallback &F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&F.J));
+  PetscCall(MatDestroy(&F.J0));
+  PetscCall(MatDestroy(&F.Jd));
+  PetscCall(KSPDestroy(&F.ksp));
+  F = AssembledFallback();
+  PetscFunctionReturn(0);
+}
+
+// z = J^-1 b with the assembled J at the current (shift, kc), LU-factored when they changed:
+// PETSc's own path (-pc_type lu), for a solve the rank-one formula could not do (`why`). Said
+// once per context; each such solve in -info.
+PetscErrorCode AssembledFallbackSolve(TSProblem &P, Vec b, Vec z, const char *why)
+{
+  AssembledFallback &F = P.jac.fallback;
+
+  PetscFunctionBeginUser;
+  if (!F.J) {
+    PetscCall(CreateAssembled(P, &F.J, &F.J0, &F.Jd));
+    PetscCall(KSPCreate(P.L.comm, &F.ksp));
+    PetscCall(KSPSetType(F.ksp, KSPPREONLY));
+    PC pc;
+    PetscCall(KSPGetPC(F.ksp, &pc));
+    PetscCall(PCSetType(pc, PCLU));
+    if (P.L.size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    PetscCall(PCSetFromOptions(pc)); // -pc_factor_mat_ordering_type, -pc_factor_mat_solver_type
+  }
+  if (F.shift != P.jac.shift || F.shiftV != P.jac.shiftV || F.kc != P.jac.kc) {
+    PetscCall(AssembleShifted(P, F.J, F.J0, F.Jd, P.jac.shift, P.jac.shiftV, P.jac.kc));
+    PetscCall(KSPSetOperators(F.ksp, F.J, F.J));
+    PetscCall(KSPSetUp(F.ksp)); // the LU
+    F.shift  = P.jac.shift;
+    F.shiftV = P.jac.shiftV;
+    F.kc     = P.jac.kc;
+  }
+  PetscCall(KSPSolve(F.ksp, b, z));
+  if (P.jac.fallbacks++ == 0)
+    PetscCall(PetscPrintf(P.L.comm, "note: the rank-one solve of the Jacobian (the beam's LU kept, the contact by Sherman-Morrison) broke down: %s; that solve, and any other where it breaks down, used the assembled LU (-pc_type lu does every solve so)\n", why));
+  PetscCall(PetscInfo(NULL, "rank-one solve broke down (%s): the assembled LU at shift %g, kc %g N/m\n", why, (double)P.jac.shift, (double)P.jac.kc));
+  PetscFunctionReturn(0);
+}
+
+// z = J^-1 b by Sherman-Morrison on B's factor: z = B^-1 b - kc w (v^T B^-1 b) / (1 + kc v^T w),
+// or by the assembled J where that step cannot be trusted (B^-1 b or w not finite, the
+// denominator not finite or cancelling: RankOneDenominator).
 PetscErrorCode RankOneApply(PC pc, Vec b, Vec z)
 {
   TSProblem *P;
-  PetscReal  a;
+  PetscReal  a, den;
+  bool       finite;
 
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &P));
   const BeamFactor &f = *P->jac.current;
   PetscCall(KSPSolve(f.ksp, b, z));
-  if (P->jac.kc != 0.0) {
-    PetscCall(CouplingDot(*P, z, &a));
-    PetscCall(VecAXPY(z, -P->jac.kc * a / (1 + P->jac.kc * f.vw), f.w));
+  if (P->jac.kc == 0.0) PetscFunctionReturn(0); // J = B
+  PetscCall(CouplingDotFinite(*P, z, &a, &finite));
+  if (finite && f.finite && RankOneDenominator(P->jac.kc, f.vw, &den)) {
+    PetscCall(VecAXPY(z, -P->jac.kc * a / den, f.w));
+    PetscFunctionReturn(0);
   }
+  char why[160]; // (std::snprintf: PETSc's %g would write 0 as "0.")
+  if (!f.finite || !finite) std::snprintf(why, sizeof why, "B^-1 %s is not finite (the beam's factor at shift %g)", f.finite ? "b" : "u", (double)P->jac.shift);
+  else std::snprintf(why, sizeof why, "1 + kc v^T B^-1 u = %g with kc = %g N/m, v^T B^-1 u = %g", (double)(1 + P->jac.kc * f.vw), (double)P->jac.kc, (double)f.vw);
+  PetscCall(AssembledFallbackSolve(*P, b, z, why));
   PetscFunctionReturn(0);
 }
 
@@ -351,24 +463,8 @@ PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscRe
 
 PetscErrorCode TSJacobianCreate(TSProblem &P)
 {
-  Vec      U;
-  PetscInt n;
-
   PetscFunctionBeginUser;
-  PetscCall(DMCreateGlobalVector(P.L.pack, &U));
-  PetscCall(VecGetLocalSize(U, &n));
-  PetscCall(VecDestroy(&U));
-  const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields; // first order, damped: K/m also in the velocity columns
-  const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
-  PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 7, NULL, width + 3, NULL, &P.jac.J));
-  PetscCall(MatSetOption(P.jac.J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  PetscCall(MatSetOption(P.jac.J, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
-  PetscCall(AssembleConstantPart(P, P.jac.J)); // fixes the pattern (coupling entries as zeros)
-  PetscCall(MatDuplicate(P.jac.J, MAT_COPY_VALUES, &P.jac.J0));
-  if (P.sys->Damped() && P.L.dof == P.L.fields) { // second order: Jd = C/m on the same pattern
-    PetscCall(MatDuplicate(P.jac.J, MAT_DO_NOT_COPY_VALUES, &P.jac.Jd));
-    PetscCall(AssembleConstantPart(P, P.jac.Jd, true));
-  }
+  PetscCall(CreateAssembled(P, &P.jac.J, &P.jac.J0, &P.jac.Jd));
   P.jac.shift = -1; // the first real assembly happens at the first solve
   PetscFunctionReturn(0);
 }
@@ -386,6 +482,7 @@ PetscErrorCode TSJacobianDestroy(TSProblem &P)
   }
   P.jac.factors.clear();
   P.jac.current = nullptr;
+  PetscCall(FallbackDestroy(P.jac.fallback));
   PetscCall(MatDestroy(&P.jac.B0));
   PetscCall(MatDestroy(&P.jac.Bd));
   PetscCall(VecDestroy(&P.jac.u));
@@ -394,6 +491,12 @@ PetscErrorCode TSJacobianDestroy(TSProblem &P)
 }
 
 PetscInt TSJacobianFactorizations() { return n_factorizations; }
+
+bool RankOneDenominator(PetscReal kc, PetscReal vw, PetscReal *den)
+{
+  *den = 1 + kc * vw;
+  return std::isfinite(kc) && std::isfinite(*den) && std::abs(*den) > kRankOneCancellation * (1 + std::abs(kc * vw));
+}
 
 namespace {
 
@@ -510,6 +613,7 @@ PetscErrorCode TSJacobianNewPoint(TSProblem &P, TS ts)
   PetscFunctionBeginUser;
   if (P.jac.rank_one) {
     if (StructureFingerprint(P) != P.jac.structure) PetscCall(BuildBeamPart(P)); // another beam on the same grid: its own factors
+    PetscCall(FallbackDestroy(P.jac.fallback)); // its pattern holds the last point
     PetscCall(SetCouplingVectors(P));
     PetscFunctionReturn(0);
   }

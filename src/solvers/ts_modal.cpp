@@ -761,22 +761,23 @@ PetscErrorCode TSDestroy_Modal(TS ts)
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSyncSolution_C", nullptr));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalCompression_C", nullptr));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalDissipationRate_C", nullptr));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalNewPoint_C", nullptr));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSSetUp_Modal(TS ts)
+// What depends on the point (and on the structure, from the shared cache of the modes): the
+// modes of -modal_modes / -modal_tolerance for this beam and ball, gamma_k at the contact point,
+// the static correction there (cached per point in the modes), the step weights (gamma and the
+// ball's mass are folded in: dropped, their arrays kept when the modes kept are as many), the
+// modal state (projected from the initial state at the first step). The TS's own objects (the
+// gather of the physical state, the written copy) are the structure's and stay. Collective.
+PetscErrorCode PointSetUp(TS ts)
 {
-  ModalTS      &m = *Data(ts);
-  TSRHSFunction f = nullptr;
-  void         *ctx = nullptr;
-  std::string   why;
+  ModalTS          &m   = *Data(ts);
+  const BeamSystem &sys = *m.P->sys;
+  std::string       why;
 
   PetscFunctionBeginUser;
-  PetscCall(TSGetRHSFunction(ts, nullptr, &f, &ctx));
-  PetscCheck(f == TSRHSExplicit && ctx, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONGSTATE,
-             "TS modal integrates the beam-and-ball problem of beamimpact only (its explicit right-hand side, solvers/ts_problem.hpp)");
-  m.P                  = static_cast<TSProblem *>(ctx);
-  const BeamSystem &sys = *m.P->sys;
   PetscCheck(BeamModesAvailable(sys, &why), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP, "-ts_type modal needs the beam's modes: %s; use another -ts_type", why.c_str());
   {
     ModalTruncation tr;
@@ -787,10 +788,12 @@ PetscErrorCode TSSetUp_Modal(TS ts)
   const ModalSystem &S = m.modes->S;
   const ModalBasis  &B = m.modes->B;
   const PetscInt     n = S.n;
+  const bool         same_count = m.n == m.modes->Count();
   m.n                  = m.modes->Count();
   m.nd                 = n;
-  m.omega              = B.omega;
-  m.sigma              = B.rate.empty() ? std::vector<PetscReal>(m.n, 0.0) : B.rate;
+  m.omega.assign(B.omega.begin(), B.omega.end());
+  if (B.rate.empty()) m.sigma.assign(m.n, 0.0);
+  else m.sigma.assign(B.rate.begin(), B.rate.end());
   m.isqm.resize(n);
   m.free_of.assign(sys.ndof, -1);
   // gamma_k = sum over the coupled dofs of w_q phi_k[d_q] / sqrt(m_{d_q}).
@@ -816,8 +819,32 @@ PetscErrorCode TSSetUp_Modal(TS ts)
   PetscCall(m.modes->StaticCorrection(g, &m.corr));
   m.Gr = m.corr->Gr;
   PetscCall(PetscInfo(ts, "%s\n", BeamModesSummary(*m.modes, m.corr).c_str()));
-  m.weights.clear();
+  if (same_count)
+    for (StepWeights &w : m.weights) w.h = -1, w.used = 0; // refilled as new (no length matches -1)
+  else m.weights.clear();
   m.have_modal = m.have_step = m.phys_valid = m.c_valid = false;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSSetUp_Modal(TS ts)
+{
+  ModalTS      &m = *Data(ts);
+  TSRHSFunction f = nullptr;
+  void         *ctx = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(TSGetRHSFunction(ts, nullptr, &f, &ctx));
+  PetscCheck(f == TSRHSExplicit && ctx, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONGSTATE,
+             "TS modal integrates the beam-and-ball problem of beamimpact only (its explicit right-hand side, solvers/ts_problem.hpp)");
+  m.P = static_cast<TSProblem *>(ctx);
+  PetscCall(PointSetUp(ts));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode NewPoint_Modal(TS ts)
+{
+  PetscFunctionBeginUser;
+  if (Data(ts)->P) PetscCall(PointSetUp(ts)); // (not set up yet: TSSetUp will)
   PetscFunctionReturn(0);
 }
 
@@ -868,6 +895,7 @@ PetscErrorCode TSCreate_Modal(TS ts)
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSyncSolution_C", SyncSolution_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalCompression_C", Compression_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalDissipationRate_C", DissipationRate_Modal));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalNewPoint_C", NewPoint_Modal));
   PetscFunctionReturn(0);
 }
 
@@ -911,6 +939,16 @@ PetscErrorCode TSModalDissipationRate(TS ts, PetscReal *rate, PetscReal *rate_do
   PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalDissipationRate_C", &f));
   *done = f ? PETSC_TRUE : PETSC_FALSE;
   if (f) PetscCall((*f)(ts, rate, rate_dot));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSModalNewPoint(TS ts)
+{
+  PetscErrorCode (*f)(TS) = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalNewPoint_C", &f));
+  if (f) PetscCall((*f)(ts));
   PetscFunctionReturn(0);
 }
 

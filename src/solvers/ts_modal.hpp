@@ -54,6 +54,11 @@ PetscErrorCode TSModalSyncSolution(TS ts);
 PetscErrorCode TSModalCompression(TS ts, PetscReal *c, PetscReal *cdot, PetscBool *done);
 // Damped beam: P = v^T C v = sum_k 2 sigma_k zd_k^2 and dP/dt = 2 a^T C v at the current state.
 PetscErrorCode TSModalDissipationRate(TS ts, PetscReal *rate, PetscReal *rate_dot, PetscBool *done);
+// A reused TS's next point (the per-structure context, ts_stepper.hpp: the same grid, another
+// contact point, ball or beam on it): the per-point set-up again (the modes from the shared
+// cache, gamma_k and the static correction at the point, the step weights and the modal state
+// anew); the TS, its vectors and its gather of the physical state kept.
+PetscErrorCode TSModalNewPoint(TS ts);
 // The beam's modes the TS integrates in (null for any other type, or before its set-up).
 std::shared_ptr<const BeamModes> TSModalModes(TS ts);
 

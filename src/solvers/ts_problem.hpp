@@ -63,8 +63,17 @@ struct BeamFactor {
   KSP       ksp = nullptr;           // preonly + LU of B (MUMPS on more than one rank)
   Vec       w = nullptr;             // B^-1 u for the point of generation `point`
   PetscReal vw = 0;                  // v^T w
+  bool      finite = true;             // every entry of w is finite
   PetscInt  point = -1;
   PetscInt  used = 0;                // uses, halved at each new point (the least used is replaced)
+};
+// The assembled J of the rank-one path's fallback (RankOneApply): created at the first solve
+// whose Sherman-Morrison step is not finite or cancels, refactored when (shift, kc) changed,
+// dropped at a new point (its pattern holds the contact point).
+struct AssembledFallback {
+  Mat       J = nullptr, J0 = nullptr, Jd = nullptr;
+  KSP       ksp = nullptr;                 // preonly + LU (MUMPS on more than one rank), as -pc_type lu
+  PetscReal shift = -1, shiftV = -1, kc = -1; // what J holds
 };
 struct JacobianCache {
   Mat       J = nullptr, J0 = nullptr, Jd = nullptr;
@@ -80,6 +89,8 @@ struct JacobianCache {
   std::vector<PetscInt>   v_idx;  // v's owned nonzeros: local offsets in a global vector's array
   std::vector<PetscReal>  v_val;
   PetscInt                point = 0, factored = 0; // the point's generation; factorizations done (all runs)
+  AssembledFallback       fallback;                // the solves the rank-one formula could not do
+  PetscInt                fallbacks = 0;           // solves done by it (this context)
   std::uint64_t           structure = 0;           // the fingerprint of the structure B0 was built from
 };
 struct TSCounters {
@@ -148,6 +159,15 @@ PetscErrorCode TSJacobianSetDefaultPC(TSProblem &P, PC pc);
 PetscErrorCode TSJacobianInstall(TSProblem &P, TS ts);
 PetscErrorCode TSJacobianNewPoint(TSProblem &P, TS ts);
 PetscInt       TSJacobianFactorizations(); // all contexts, since the start
+// The Sherman-Morrison step of the rank-one solve, J^-1 b = z - kc w (v^T z) / (1 + kc v^T w):
+// its denominator 1 + kc v^T w, or false where the step cannot be trusted: kc or the
+// denominator not finite, or the denominator within kRankOneCancellation (1 + |kc v^T w|) of
+// zero (the step would lose more than half the digits: J is singular to that accuracy, or
+// v^T w = v^T B^-1 u is wrong; for a contact, kc >= 0 and v^T w > 0 make it >= 1). Then
+// RankOneApply solves with the assembled J instead (its LU, PETSc's own path, as -pc_type lu),
+// as it does when B^-1 b or w is not finite.
+constexpr PetscReal kRankOneCancellation = 1.5e-8; // sqrt(eps)
+bool RankOneDenominator(PetscReal kc, PetscReal vw, PetscReal *den);
 
 // Diagnostics (ts_diagnostics.cpp): a Newton convergence test that accepts the residual's
 // round-off floor, and the explanation of a failed step.

@@ -761,6 +761,7 @@ PetscErrorCode TSContextReuse(TSStepper &S, const char *type)
   PetscBool        fixed;
 
   PetscFunctionBeginUser;
+  if (TSModalIsType(type)) PetscCall(TSModalNewPoint(S.ts)); // -ts_type modal: the modes (shared), gamma and the static correction at this point
   if (P.form != Formulation::Explicit) {
     PetscCall(TSJacobianNewPoint(P, S.ts)); // the beam's factors kept; the contact point's vectors (or the assembled J's pattern) anew
     S.newton_floor.omega2 = S.info.omega_max_bound * S.info.omega_max_bound;
@@ -794,9 +795,8 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   PetscFunctionBeginUser;
   // The formulation depends on the TS type: read it before building the problem.
   PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_type", type, sizeof(type), &flg));
-  // A run that checks its options builds its own TS (the check is of what that set-up read);
-  // -ts_type modal keeps per-run state of its own (ts_modal.cpp).
-  const bool cacheable = !set.check_unused_options && !TSModalIsType(type);
+  // A run that checks its options builds its own TS (the check is of what that set-up read).
+  const bool cacheable = !set.check_unused_options;
   if (cacheable) PetscCall(TSContextKey(comm, sys, type, &key));
   std::shared_ptr<TSContext> C     = cacheable ? TSContextFind(key) : nullptr;
   const bool                 reuse = C != nullptr;

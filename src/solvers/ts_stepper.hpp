@@ -30,7 +30,8 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
 // The per-structure contexts (the layout, the configured TS, its vectors and the Jacobian's
 // storage): TSStepperCreate reuses one built for the same communicator, grid, type and solver
 // options (-ts_, -snes_, -ksp_, -pc_, -mat_) when no run holds it, so a sweep's points cost
-// their stepping only. A run that checks its options (-task impact) or uses -ts_type modal or a
+// their stepping only (-ts_type modal too: its modes, gamma and static correction set per point,
+// TSModalNewPoint). A run that checks its options (-task impact) or a
 // TS monitor builds its own. built / reused: the contexts made and the runs that reused one,
 // since the start; the cache is emptied at PetscFinalize, or by TSStepperContextCacheClear.
 void           TSStepperContextCounts(PetscInt *built, PetscInt *reused);
