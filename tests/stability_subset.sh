@@ -114,10 +114,12 @@ elif [[ $rc -eq 1 ]] && grep -q "the Newton iteration stalled at a residual norm
 else fail "alpha2 on N = 201: neither right nor diagnosed: $out"; fi
 # The hysteretic baseball at 40 m/s reloads during unloading; at this step the maximum compression
 # right after the reload is missed (a known defect): either right, or refused with that diagnosis.
+# Right is -0.219907 since the reload climbs the unloading curve (issue 23; cn at half this step and
+# rk4 at 1e-7 s agree to 6 digits); -0.214664 was the old rule's, which jumped to the loading branch.
 run -beam_length 1.1 -beam_nodes 41 -ball_law hysteresis -ball_mass 0.145 -ball_speed 40 -ball_k1 1.5e6 -ball_n 7 -impact_x 0.9 \
     -impact_window 1e-3 -ts_type cn -ts_dt 2.45437e-7 -output none
 no_nan "reload"
-if [[ $rc -eq 0 ]] && close "$(field acor)" -0.214664 1e-3; then pass "hysteretic reload: ACOR $(field acor) is right"
+if [[ $rc -eq 0 ]] && close "$(field acor)" -0.219907 1e-3; then pass "hysteretic reload: ACOR $(field acor) is right"
 elif [[ $rc -eq 1 ]] && grep -q "while the hysteretic law was still in its loading branch: the maximum-compression event was missed after the reload" <<<"$out"; then
   pass "hysteretic reload: the missed maximum compression is refused, not reported as a number"
 else fail "hysteretic reload: neither right nor diagnosed: $out"; fi

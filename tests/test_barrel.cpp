@@ -232,3 +232,23 @@ TEST(BarrelHoop, EveryToolAgrees)
   const ImpactResult b    = Reference(Scenario(bare, ball, ip));
   EXPECT_GT(std::abs(ref.acor - b.acor), 1e-3) << "a wall this soft changes the ACOR";
 }
+
+// -barrel_wall_thickness: the rows at the largest outer diameter (the barrel) get d = D - 2 t,
+// the rest of the profile is the file's; refused on a solid barrel and for t >= D/2.
+TEST(BarrelWall, ThicknessOverridesTheBarrelRows)
+{
+  const std::vector<ProfileRow> bat = {{0.0, 0.046, 0.034}, {0.45, 0.052, 0.047}, {0.53, 0.0667, 0.0617}, {0.84, 0.0667, 0.0617}};
+  std::vector<ProfileRow>       rows = bat;
+  std::string                   why;
+  ASSERT_TRUE(BarrelWallThicknessApply(0.004, &rows, &why)) << why;
+  for (size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_EQ(rows[k].D, bat[k].D);
+    EXPECT_NEAR(rows[k].d, k >= 2 ? 0.0667 - 0.008 : bat[k].d, 1e-15) << k;
+  }
+  rows = bat;
+  EXPECT_FALSE(BarrelWallThicknessApply(0.0667 / 2, &rows, &why));
+  EXPECT_NE(why.find("outer radius"), std::string::npos) << why;
+  std::vector<ProfileRow> solid = {{0.0, 0.03, 0.0}, {0.84, 0.06, 0.0}};
+  EXPECT_FALSE(BarrelWallThicknessApply(0.003, &solid, &why));
+  EXPECT_NE(why.find("solid"), std::string::npos) << why;
+}

@@ -201,6 +201,50 @@ TEST(ContactLaw, HysteresisReturnsRestitutionSquaredOnAWall)
   }
 }
 
+// A reload (the compression growing again before the ball left, as a ringing barrel wall makes
+// it): the ball climbs back along the curve it unloaded on, without loss and without a jump of
+// the force, to the last maximum; beyond it the loading branch. So a loop inside the cycle loses
+// nothing, and a cycle to c2 with an inner loop loses what one cycle to c2 loses (the area
+// between k1 c^m and the unloading curve from c2). The rule it replaced jumped to k1 c^m at the
+// reload (the force up by (c1/c_r)^(n-m) and the dissipated energy down).
+TEST(ContactLaw, HysteresisReloadClimbsTheUnloadingCurveWithoutLoss)
+{
+  const BallParams b = BallWithLaw("hysteresis"); // k1 = 2e4, m = 1, n = 1.768
+  const double     c1 = 1e-3, cr = 0.6e-3, c2 = 1.3e-3, k1 = 2e4;
+  ContactState     s;
+  ContactBegin(b, &s, 1.0);
+  const auto dissipated = [&](double c) { return ContactWork(b, s, c) - ContactStoredEnergy(b, s, c); };
+  ContactSwitch(b, &s, ContactPhase::Unloading, c1);
+  const double F_unload = ContactForce(b, s, 0.5e-3), F_r = ContactForce(b, s, cr), D_r = dissipated(cr), W_r = ContactWork(b, s, cr);
+  ContactSwitch(b, &s, ContactPhase::Loading, cr); // the reload
+  EXPECT_NEAR(ContactForce(b, s, cr), F_r, 1e-12 * F_r) << "the force must not jump at a reload";
+  EXPECT_NEAR(ContactWork(b, s, cr), W_r, 1e-12 * W_r);
+  EXPECT_NEAR(dissipated(cr), D_r, 1e-12 * W_r) << "the ball gives back none of what it dissipated";
+  ContactSwitch(b, &s, ContactPhase::Unloading, 0.9e-3); // a maximum below the knee: the same curve
+  EXPECT_NEAR(ContactForce(b, s, 0.5e-3), F_unload, 1e-12 * F_unload);
+  EXPECT_NEAR(dissipated(0.9e-3), D_r, 1e-12 * W_r) << "a loop inside the cycle is elastic";
+  ContactSwitch(b, &s, ContactPhase::Loading, 0.7e-3); // reload again, past the knee c1 this time
+  for (double c : {0.8e-3, 0.99e-3, 1.01e-3, 1.2e-3}) {
+    const double h = 1e-10, fd = (ContactForce(b, s, c + h) - ContactForce(b, s, c - h)) / (2 * h);
+    EXPECT_NEAR(ContactStiffness(b, s, c), fd, 1e-5 * std::abs(fd)) << c;
+    const int    n = 2000; // Simpson: the stored energy is the integral of the force along the path
+    double       I = 0;
+    for (int i = 0; i <= n; ++i) {
+      const double x = 0.7e-3 + (c - 0.7e-3) * i / n;
+      I += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) * ContactForce(b, s, x);
+    }
+    I *= (c - 0.7e-3) / (3 * n);
+    EXPECT_NEAR(ContactStoredEnergy(b, s, c) - ContactStoredEnergy(b, s, 0.7e-3), I, 1e-7 * I) << c; // Simpson over the kink at c1: 3e-9
+  }
+  EXPECT_NEAR(ContactForce(b, s, 1.2e-3), k1 * 1.2e-3, 1e-12 * k1 * 1.2e-3) << "beyond the knee: the loading branch";
+  ContactSwitch(b, &s, ContactPhase::Unloading, c2);
+  EXPECT_NEAR(ContactForce(b, s, c2), k1 * c2, 1e-12 * k1 * c2);
+  EXPECT_NEAR(ContactWork(b, s, 0.0), ContactCycleLoss(b, c2), 1e-12 * ContactCycleLoss(b, c2)) << "the inner loops lost nothing";
+  ContactBegin(b, &s, 1.0); // a new contact: the ball has recovered
+  ContactSwitch(b, &s, ContactPhase::Loading, 0.0);
+  EXPECT_NEAR(ContactForce(b, s, 0.5e-3), k1 * 0.5e-3, 1e-12 * k1 * 0.5e-3);
+}
+
 TEST(ContactLaw, HysteresisStiffnessIsTheDerivativeOfTheForce)
 {
   const BallParams b = BallWithLaw("hysteresis");

@@ -285,3 +285,32 @@ TEST(Shell, LoadPatch)
   EXPECT_LT(std::abs(r.angular_momentum_error), 1e-12);
   EXPECT_NEAR(r.acor, ref.acor, 1e-7);
 }
+
+// The results column hoop_frequency (ShellLowestFrequency: the harmonic's band, LAPACK dsbevx)
+// against the Ritz solution and the published FE value, the same cases as above at N = 161; the
+// wall's own modulus (-shell_youngs_modulus) scales it as sqrt(E) (K is linear in E, M is not in
+// it) and leaves the beam alone; Rayleigh's ring in the long-tube limit.
+TEST(Shell, LowestFrequencyColumn)
+{
+  const BeamParams ff = TubeBeam(kBarrel, 161, Support::Free, Support::Free), cc = TubeBeam(kADINA, 161, Support::Clamped, Support::Clamped);
+  EXPECT_NEAR(ShellLowestFrequency(ff, 2), 1607.910, 1e-4 * 1607.910) << "Ritz, free-free barrel";
+  EXPECT_NEAR(ShellLowestFrequency(TubeBeam(kBarrel, 161, Support::Clamped, Support::Clamped), 3), 4667.7, 1e-4 * 4667.7) << "Ritz, n = 3";
+  EXPECT_NEAR(ShellLowestFrequency(cc, 2), 1701.0, 2e-3 * 1701.0) << "ADINA's shell FE";
+  BeamParams stiff          = ff;
+  stiff.shell.youngs_modulus = 4 * kBarrel.E;
+  EXPECT_NEAR(ShellLowestFrequency(stiff, 2) / ShellLowestFrequency(ff, 2), 2.0, 1e-9);
+  const BeamSystem a = SystemOf(ff), b = SystemOf(stiff);
+  PetscInt         ca[64], cb[64];
+  PetscReal        va[64], vb[64];
+  for (PetscInt i : {0, 80, 160}) { // the beam's rows (the bending, n = 1) keep the profile's E
+    const PetscInt na = BeamSystemStiffnessRow(a, a.Dof(i), ca, va), nb = BeamSystemStiffnessRow(b, b.Dof(i), cb, vb);
+    ASSERT_EQ(na, nb);
+    for (PetscInt q = 0; q < na; ++q) EXPECT_EQ(va[q], vb[q]);
+  }
+  const Tube long_tube = {kBarrel.E, kBarrel.nu, kBarrel.rho, kBarrel.R, kBarrel.t, 20 * kBarrel.R};
+  const PetscReal ring = RayleighRingFrequency(long_tube.E, long_tube.rho, long_tube.nu, long_tube.R, long_tube.t, 2);
+  EXPECT_NEAR(ShellLowestFrequency(TubeBeam(long_tube, 81, Support::Free, Support::Free), 2), ring, 5e-3 * ring);
+  BeamParams solid = ff; // no wall: NaN
+  solid.section.profile = {{0.0, 0.05, 0.0}, {kBarrel.L, 0.05, 0.0}};
+  EXPECT_TRUE(std::isnan(ShellLowestFrequency(solid, 2)));
+}

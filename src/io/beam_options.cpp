@@ -3,6 +3,7 @@
 
 #include "io/section_file.hpp"
 #include "io/text.hpp"
+#include "model/barrel.hpp"
 #include "model/beam_theory.hpp"
 
 #include <algorithm>
@@ -57,6 +58,8 @@ const OptionModule &BeamOptionTable()
       OptionFlag("-beam_shell", "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, in series with the ball (-beam_profile with inner diameters)"),
       OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
       OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()), {"-beam_shell"}),
+      OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa", "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps -beam_youngs_modulus (default: that)", "", Positive()), {"-beam_shell"}),
+      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 0 < t < D/2", "", Positive()), {"-beam_profile"}),
       OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass)", "", Positive()),
       OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
     },
@@ -70,6 +73,8 @@ namespace {
 struct BeamOptionValues {
   PetscReal E = 7e10, rho = 2700, a = 0.006, b = 0.032, M = 0, Erho = 0, EI = 0, mu = 0; // the paper's aluminium beam
   PetscReal G = 0, kappa = 0, nu = 0.3;
+  PetscReal wall = 0; // m, -barrel_wall_thickness
+  PetscBool setwall = PETSC_FALSE;
   PetscBool setE = PETSC_FALSE, setrho = PETSC_FALSE, seta = PETSC_FALSE, setb = PETSC_FALSE, setM = PETSC_FALSE, setErho = PETSC_FALSE, setEI = PETSC_FALSE, setmu = PETSC_FALSE;
   PetscBool setlength = PETSC_FALSE, setprofile = PETSC_FALSE, setproperties = PETSC_FALSE;
   std::string profile, properties, theory = "euler";
@@ -130,6 +135,8 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_shell", &shell, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_harmonics", &harmonics, &setharmonics));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_contact_radius", &p->shell.contact_radius, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_youngs_modulus", &p->shell.youngs_modulus, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_wall_thickness", &o->wall, &o->setwall));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();
@@ -259,6 +266,7 @@ PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, Bea
     const PetscReal x0 = s.profile.front().x;
     for (ProfileRow &r : s.profile) r.x -= x0;
     PetscCall(SectionShiftNote(comm, option, s.file, x0));
+    if (o.setwall) PetscCheck(BarrelWallThicknessApply(o.wall, &s.profile, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "-barrel_wall_thickness %g is not allowed with -beam_profile %s: %s", (double)o.wall, s.file.c_str(), why.c_str());
     PetscCall(SectionRowsCheck(comm, option, s));
     p->input.youngs_modulus = o.E;
     p->input.density        = o.rho;

@@ -15,6 +15,9 @@
 
 #include "model/beam_theory.hpp"
 
+#include <string>
+#include <vector>
+
 namespace beamimpact {
 
 // k_h = m_h (2 pi f_h)^2 (N/m).
@@ -24,6 +27,12 @@ PetscReal BarrelHoopStiffness(const BarrelHoop &hoop);
 // the new field held at nodes 1..N-1, mass m_h everywhere so that no held dof has zero mass).
 // Returns the wall's dof (node 0's new field).
 PetscInt BarrelHoopAppend(const BarrelHoop &hoop, BeamDiscretization *d);
+
+// -barrel_wall_thickness t (m): the profile's rows at its largest outer diameter D (the barrel,
+// to 1e-9 relative) get the inner diameter d = D - 2 t; the diameters stay linear between rows,
+// so a taper into the barrel follows. False (with the reason in *why) where such a row is solid
+// (no wall to change) or t is not in (0, D/2) (t >= D/2: a solid section).
+bool BarrelWallThicknessApply(PetscReal t, std::vector<ProfileRow> *rows, std::string *why);
 
 // Restitution of a linear ball (e0 on a rigid wall) on a rigid target through a massless wall
 // spring, r = k_b / k_h: e^2 = (e0^2 + r) / (1 + r) (MODEL.md section 9; the ball and the wall

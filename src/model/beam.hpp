@@ -57,6 +57,7 @@ struct BarrelShell {
   bool                  on        = false;
   std::vector<PetscInt> harmonics = {2, 3, 4}; // circumferential orders n >= 2
   PetscReal contact_radius = -1;               // m, the ball's load patch a (-shell_contact_radius; 0: a point load; < 0: not yet derived from the ball)
+  PetscReal youngs_modulus = 0;                // Pa, the wall's E in the shell (-shell_youngs_modulus; 0: the profile's, -beam_youngs_modulus)
 };
 
 struct BeamParams {

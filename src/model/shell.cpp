@@ -5,6 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+extern "C" void dsbevx_(const char *jobz, const char *range, const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, double *q, const int *ldq, const double *vl, const double *vu,
+                        const int *il, const int *iu, const double *abstol, int *m, double *w, double *z, const int *ldz, double *work, int *iwork, int *ifail, int *info);
 
 namespace beamimpact {
 
@@ -24,6 +28,8 @@ bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t)
   *t = (D - d) / 2;
   return true;
 }
+
+PetscReal ShellYoungsModulus(const BeamParams &p) { return p.shell.youngs_modulus > 0 ? p.shell.youngs_modulus : p.section.material.E; }
 
 PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n)
 {
@@ -64,7 +70,7 @@ ShellCells CellsOf(const BeamParams &p)
 ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
 {
   const PetscInt               F = d->fields, N = p.nodes, nh = (PetscInt)p.shell.harmonics.size(), G = F + 3 * nh;
-  const PetscReal              h = p.length / (N - 1), E = p.section.material.E, rho = p.section.material.rho, nu = p.section.material.nu;
+  const PetscReal              h = p.length / (N - 1), E = ShellYoungsModulus(p), rho = p.section.material.rho, nu = p.section.material.nu;
   const auto                   renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
   const std::vector<NodeHold>  hold     = BeamNodeHolds(p);
   const ShellCells             c        = CellsOf(p);
@@ -182,6 +188,49 @@ PetscReal ShellContactRadiusDefault(const BallParams &b, PetscReal v)
 {
   if (!(b.radius > 0) || !(v > 0)) return 0.0;
   return std::sqrt(b.radius * ContactWallMaxCompression(b, v));
+}
+
+} // namespace beamimpact
+
+namespace beamimpact {
+
+PetscReal ShellLowestFrequency(const BeamParams &p, PetscInt n)
+{
+  const PetscReal nan = std::numeric_limits<PetscReal>::quiet_NaN();
+  BeamParams      q   = p;
+  q.shell.harmonics   = {n};
+  BeamDiscretization d; // a placeholder field per node, held: the harmonic's fields alone
+  d.fields = 1;
+  d.mass.assign(p.nodes, 1.0);
+  d.held.assign(p.nodes, 1);
+  ShellAppend(q, &d);
+  std::vector<PetscInt> index(d.mass.size(), -1);
+  PetscInt              size = 0;
+  for (size_t i = 0; i < d.mass.size(); ++i)
+    if (!d.held[i]) index[i] = size++;
+  if (size == 0) return nan;
+  int kd = 0; // the band of K over the free dofs (node-major: a few nodes' fields)
+  for (const StrainTerm &t : d.strain)
+    for (PetscInt a = 0; a < t.n; ++a)
+      for (PetscInt b = 0; b < t.n; ++b)
+        if (index[t.dof[a]] >= 0 && index[t.dof[b]] >= 0) kd = std::max(kd, (int)std::abs(index[t.dof[a]] - index[t.dof[b]]));
+  const int           ldab = kd + 1, nn = (int)size;
+  std::vector<double> ab((size_t)ldab * nn, 0.0), scale(nn); // lower band: ab[(i - j) + j ldab] = A(i, j), i >= j
+  for (size_t i = 0; i < d.mass.size(); ++i)
+    if (index[i] >= 0) scale[index[i]] = 1 / std::sqrt(d.mass[i]);
+  for (const StrainTerm &t : d.strain)
+    for (PetscInt a = 0; a < t.n; ++a)
+      for (PetscInt b = 0; b < t.n; ++b) {
+        const PetscInt i = index[t.dof[a]], j = index[t.dof[b]];
+        if (i >= 0 && j >= i) ab[(size_t)(j - i) + (size_t)i * ldab] += t.weight * t.b[a] * t.b[b] * scale[i] * scale[j];
+      }
+  int                 il = 1, iu = 1, found = 0, info = 0, ldq = 1, ldz = 1;
+  double              vl = 0, vu = 0, abstol = 0, qd = 0, z = 0;
+  std::vector<double> work(7 * (size_t)nn), lam(nn);
+  std::vector<int>    iwork(5 * (size_t)nn), ifail(nn);
+  dsbevx_("N", "I", "L", &nn, &kd, ab.data(), &ldab, &qd, &ldq, &vl, &vu, &il, &iu, &abstol, &found, lam.data(), &z, &ldz, work.data(), iwork.data(), ifail.data(), &info);
+  if (info != 0 || found < 1 || !(lam[0] >= 0)) return nan;
+  return std::sqrt(lam[0]) / (2 * PETSC_PI);
 }
 
 } // namespace beamimpact

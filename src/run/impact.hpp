@@ -180,6 +180,7 @@ struct ImpactOutcome {
   // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
+  PetscReal hoop_frequency = 0; // Hz, the wall's lowest n = 2 frequency (the shell's, model/shell.hpp) or -barrel_hoop_frequency
   // The rigid-body model, Eq. (11), for a free beam at rest (no support, pivot, grip or swing):
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
   // for which it gives acor_corrected (the forced fit).

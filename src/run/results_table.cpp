@@ -2,6 +2,7 @@
 #include "run/results_table.hpp"
 
 #include "model/rigid.hpp"
+#include "model/shell.hpp"
 #include "run/oblique.hpp"
 #include "run/scenario.hpp"
 
@@ -188,6 +189,9 @@ std::vector<ResultColumn> OutcomeColumns()
          "the barrel wall's largest energy over the steps (NaN from the modal reference)"),
     Real("wall_deflection_peak", "m", &R::wall_deflection_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->wall_deflection; },
          "the barrel wall's largest displacement under the ball over the steps (NaN from the modal reference)"),
+    Real("hoop_frequency", "Hz", &R::hoop_frequency, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
+         [](F f) -> double { return f.sc->beam.hoop.on ? f.sc->beam.hoop.frequency : ShellLowestFrequency(f.sc->beam, 2); },
+         "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h"),
     Real("segment_kinetic_peak", "J", &R::segment_kinetic_peak, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic; },
          "peak kinetic energy of the monitored segment"),
     Real("segment_kinetic_peak_time", "s", &R::segment_kinetic_peak_time, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic_time; }, "when"),

@@ -2,8 +2,9 @@
 // the compression grows (loading), F = k2 c^n while it shrinks (unloading), n >= m >= 1, with
 // k2 = k1 c_max^(m-n) (N/m^n) set at the maximum compression so that F is continuous there. On a
 // rigid wall it returns e = sqrt((m+1)/(n+1)) at every speed and one cycle loses
-// (n-m) k1 c_max^(m+1) / ((m+1)(n+1)); a reload (the compression growing again) returns to the
-// loading branch. A real ball is characterised as it is tested (MODEL section 6): by its wall
+// (n-m) k1 c_max^(m+1) / ((m+1)(n+1)); a reload (the compression growing again before the ball
+// left) climbs the unloading curve back to its knee (the last c_max), elastically, and the loading
+// branch beyond: F = min(k1 c^m, k2 c^n). A real ball is characterised as it is tested (MODEL section 6): by its wall
 // COR e (-ball_cor: n = (m+1)/e^2 - 1) and contact time tau at a test speed (-ball_contact_time,
 // -ball_test_speed: k1 in closed form), and e may follow a table e(v) of each contact's approach
 // speed (-ball_cor_table: n set at the start of each contact).
@@ -40,21 +41,38 @@ public:
 
   PetscReal Force(const BallParams &b, const ContactState &s, PetscReal c) const override
   {
+    if (s.phase == ContactPhase::Loading && Reloading(b, s, c)) return s.law[kK2] * ContactOddPow(c, UnloadingExponent(b, s));
     return s.phase == ContactPhase::Loading ? b.value[kK1] * ContactOddPow(c, b.value[kM]) : s.law[kK2] * ContactOddPow(c, UnloadingExponent(b, s));
   }
   PetscReal Stiffness(const BallParams &b, const ContactState &s, PetscReal c) const override
   {
-    const PetscReal p    = s.phase == ContactPhase::Loading ? b.value[kM] : UnloadingExponent(b, s);
-    const PetscReal coef = s.phase == ContactPhase::Loading ? b.value[kK1] : s.law[kK2];
+    const bool      unloading_curve = s.phase == ContactPhase::Unloading || Reloading(b, s, c);
+    const PetscReal p               = unloading_curve ? UnloadingExponent(b, s) : b.value[kM];
+    const PetscReal coef            = unloading_curve ? s.law[kK2] : b.value[kK1];
     if (p == 1.0) return coef;
     return coef * p * std::pow(std::abs(c), p - 1);
   }
   PetscReal Stored(const BallParams &b, const ContactState &s, PetscReal c) const override
   {
+    if (s.phase == ContactPhase::Loading && s.law[kK2] > 0) { // a reload: the unloading curve up to its knee, the loading branch beyond
+      const PetscReal n = UnloadingExponent(b, s), m = b.value[kM], ck = ReloadKnee(b, s);
+      if (Reloading(b, s, c)) return s.law[kK2] * ContactPowAntiderivative(c, n);
+      return s.law[kK2] * ContactPowAntiderivative(ck, n) + b.value[kK1] * (ContactPowAntiderivative(c, m) - ContactPowAntiderivative(ck, m));
+    }
     return s.phase == ContactPhase::Loading ? b.value[kK1] * ContactPowAntiderivative(c, b.value[kM]) : s.law[kK2] * ContactPowAntiderivative(c, UnloadingExponent(b, s));
   }
-  void Begin(const BallParams &b, ContactState *s, PetscReal v) const override { s->law[kNContact] = BallExponentAt(b, v); } // this contact's e(v_approach)
-  void Unload(const BallParams &b, ContactState *s, PetscReal c) const override { s->law[kK2] = b.value[kK1] * std::pow(std::abs(c), b.value[kM] - UnloadingExponent(b, *s)); }
+  void Begin(const BallParams &b, ContactState *s, PetscReal v) const override // this contact's e(v_approach); a ball that left has recovered: no unloading curve
+  {
+    s->law[kNContact] = BallExponentAt(b, v);
+    s->law[kK2]       = 0;
+  }
+  // k2 = k1 c^(m-n) at a maximum compression beyond the last one's (k2 only falls as c_max grows); a
+  // maximum reached on a reload below the knee keeps the unloading curve the ball is on.
+  void Unload(const BallParams &b, ContactState *s, PetscReal c) const override
+  {
+    const PetscReal k2 = b.value[kK1] * std::pow(std::abs(c), b.value[kM] - UnloadingExponent(b, *s));
+    s->law[kK2]        = s->law[kK2] > 0 ? std::min(s->law[kK2], k2) : k2;
+  }
   bool Hysteretic(const BallParams &b) const override { return b.value[kM] != b.value[kN] || !b.cor_table.empty(); }
   bool Elastic() const override { return false; }
   PetscReal UnloadingExponent(const BallParams &b, const ContactState &s) const override { return s.law[kNContact] > 0 ? s.law[kNContact] : b.value[kN]; }
@@ -92,6 +110,20 @@ public:
   PetscReal StiffnessBound(const BallParams &b) const override { return std::max(b.value[kM], b.value[kN]) * b.value[kK1] * std::pow(2 * CompressionScale(b), b.value[kM] - 1); }
 
   std::vector<ContactLawRecord> Record(const BallParams &b) const override;
+
+private:
+  // A reload (the compression growing again before the ball left: ContactPhase::Loading after an
+  // unloading, k2 set) follows the unloading curve k2 c^n back up to its knee c_k, where it meets
+  // the loading branch (k2 c_k^n = k1 c_k^m: c_k is the last maximum compression), and the loading
+  // branch beyond: F = min(k1 c^m, k2 c^n), continuous, and a reload below c_k is elastic (no
+  // loss: the ball retraces the curve it unloaded on). Returning to k1 c^m at once would make the
+  // force jump up at the reload and the ball give back energy it had dissipated.
+  PetscReal ReloadKnee(const BallParams &b, const ContactState &s) const
+  {
+    const PetscReal n = UnloadingExponent(b, s), m = b.value[kM];
+    return n > m ? std::pow(s.law[kK2] / b.value[kK1], 1.0 / (m - n)) : PETSC_MAX_REAL;
+  }
+  bool Reloading(const BallParams &b, const ContactState &s, PetscReal c) const { return s.law[kK2] > 0 && std::abs(c) < ReloadKnee(b, s); }
 };
 
 // Two sources for one parameter, and the pair (contact time, test speed) incomplete.
