@@ -230,3 +230,29 @@ TEST(ObliqueImpact, ModalReferenceCarriesTheSecondPlane)
   EXPECT_NEAR(fine.exit_speed, e.exit_speed, 1e-8 * e.exit_speed);
   EXPECT_NEAR(fine.bat_vibration_tangential, e.bat_vibration_tangential, 1e-6 * e.bat_vibration_tangential);
 }
+
+// A ball at rest struck by the swinging bat (-ball_speed 0), -ts_type modal: its modes are chosen
+// from the contact's time scale at the bat's approach speed (at the ball's own speed 0 the
+// hysteretic and linear laws' scales are infinite: the cut-off fell to 0, one mode was kept and
+// the run never separated). Against the exact modal reference of the same impact.
+TEST(ObliqueImpact, BallAtRestStruckByTheModalIntegrator)
+{
+  Scenario sc;
+  ReadScene({"options/bats/r161.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}, {"-ball_mass", "0.145"}, {"-ball_radius", "0.0369"}, {"-ball_law", "linear"}, {"-ball_k", "2e6"}}, &sc.beam,
+            &sc.ball);
+  sc.impact.x                   = 0.7;
+  sc.impact.window              = 0;
+  sc.swing.bat_speed            = 24;
+  sc.swing.bat_angular_velocity = 51;
+  sc.ball.speed                 = 0;
+  ReferenceSolution ref;
+  ASSERT_EQ(0, ReferenceMethodFind("modal")->run(PETSC_COMM_WORLD, sc, ReferenceSettings(), &ref));
+  const std::vector<std::pair<std::string, std::string>> modal = {{"-ts_type", "modal"}, {"-ts_dt", "2e-7"}, {"-modal_modes", "auto"}};
+  for (auto &kv : modal) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
+  ImpactResult r;
+  EXPECT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &r));
+  for (auto &kv : modal) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
+  EXPECT_GT(ref.result.bbs, 20);
+  EXPECT_NEAR(r.bbs, ref.result.bbs, 1e-7 * ref.result.bbs);
+  EXPECT_GT(r.modal.kept, 2);
+}

@@ -28,6 +28,12 @@ PetscReal ContactLinearStiffness(const BallParams &b) { return b.law->LinearStif
 PetscReal ContactUnloadingExponent(const BallParams &b, const ContactState &s) { return b.law->UnloadingExponent(b, s); }
 
 PetscReal ContactTimeScale(const BallParams &b) { return b.law->TimeScale(b); }
+PetscReal ContactTimeScale(const BallParams &b, PetscReal approach)
+{
+  BallParams at = b;
+  if (approach > 0) at.speed = approach;
+  return at.law->TimeScale(at);
+}
 PetscReal ContactCompressionScale(const BallParams &b) { return b.law->CompressionScale(b); }
 PetscReal ContactStiffnessBound(const BallParams &b) { return b.law->StiffnessBound(b); }
 

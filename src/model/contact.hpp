@@ -50,6 +50,10 @@ PetscReal ContactUnloadingExponent(const BallParams &b, const ContactState &s);
 // the secant stiffness at the wall's maximum compression), the compression (m; v_i sqrt(m_b/k_eff))
 // and a bound on dF/dc over the contact (N/m) for explicit stability limits.
 PetscReal ContactTimeScale(const BallParams &b);
+// The same at the ball's and the beam's approach speed (m/s): a ball at rest struck by a
+// swinging bat has the bat's speed as its approach, and a speed-dependent law's scale at
+// -ball_speed 0 would be infinite (approach <= 0: the ball's own speed).
+PetscReal ContactTimeScale(const BallParams &b, PetscReal approach);
 PetscReal ContactCompressionScale(const BallParams &b);
 PetscReal ContactStiffnessBound(const BallParams &b);
 

@@ -264,9 +264,14 @@ private:
   ImpactStage stage_  = ImpactStage::Setup;
 };
 
+struct Scenario;
+
+// The ball's and the bat's approach speed at the impact point (m/s): -ball_speed plus a
+// swinging bat's speed there toward the ball.
+PetscReal ImpactApproachSpeed(const Scenario &sc);
+
 // Runs one impact on comm (the DMDA is distributed over its ranks). The TS is
 // configured from the options database (no prefix): -ts_type and friends.
-struct Scenario;
 PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &scenario, ImpactResult *result);
 
 // The same impact with the hand-written leapfrog baseline (solvers/leapfrog.hpp), serial.

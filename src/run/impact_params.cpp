@@ -4,6 +4,7 @@
 
 #include "run/impact_params.hpp"
 #include "run/impact_point.hpp"
+#include "run/scenario.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,12 @@ ImpactTimes ImpactTimesOf(const BeamParams &beam, const BallParams &ball, const 
   if (!(at.speed > 0)) at.speed = 1;
   t.max_time = ip.max_time > 0 ? ip.max_time : 4 * t.window + 100 * ContactTimeScale(at);
   return t;
+}
+
+PetscReal ImpactApproachSpeed(const Scenario &sc)
+{
+  if (!sc.swing.Swings()) return sc.ball.speed;
+  return sc.ball.speed + SwingSpeedAt(sc.swing, BeamRigidBodyOf(sc.beam), sc.impact.x);
 }
 
 const OptionModule &ImpactOptionTable()

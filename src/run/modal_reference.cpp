@@ -255,7 +255,7 @@ PetscErrorCode ModalObliqueFinish(const Scenario &sc, const BeamSystem &sys, con
   beam.sys                = &sys;
   beam.g                  = &g;
   beam.truncation         = truncation;
-  if (!(beam.truncation.contact_time > 0)) beam.truncation.contact_time = ContactTimeScale(sc.ball);
+  if (!(beam.truncation.contact_time > 0)) beam.truncation.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
   PetscCall(ObliqueFinish(sc, rec->series, -rec->end.ball_v, beam, &rec->oblique));
   rec->series = ImpactSeries();
   PetscFunctionReturn(0);
@@ -403,7 +403,7 @@ PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, ip);
   run.S = &T.R, run.ball = &sc.ball, run.c_scale = T.c_scale;
   run.t_cap = times.max_time;
-  run.s_min = 1e-13 * ContactTimeScale(sc.ball);
+  run.s_min = 1e-13 * ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
   if (sc.oblique.on) run.forces = &rec.series;
   FullToTruncated(m, full.q, run.q);
   FullToTruncated(m, full.qd, run.qd);
@@ -436,7 +436,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   PetscFunctionBeginUser;
   PetscCheck(ModalReferenceApplies(sc, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "-reference modal %s", why.c_str());
   if (t.modes != ModalModes::All && !sys.Damped()) { // a damped beam: every mode (its contact phases are the first-order modes')
-    if (!(t.contact_time > 0)) t.contact_time = ContactTimeScale(sc.ball); // as -ts_type modal and the free flight take it
+    if (!(t.contact_time > 0)) t.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // as -ts_type modal and the free flight take it
     PetscCall(BeamModesShared(PETSC_COMM_SELF, sys, t, &modes));
   }
   if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(sc, sys, *modes, t, res));
@@ -497,7 +497,7 @@ PetscErrorCode ModalReferenceDense(const Scenario &sc, const BeamSystem &sys, co
   run.S                   = &S;
   run.ball                = &ball;
   run.t_cap               = times.max_time;
-  run.s_min               = 1e-13 * ContactTimeScale(ball);
+  run.s_min               = 1e-13 * ContactTimeScale(ball, ImpactApproachSpeed(sc));
   if (sc.oblique.on) run.forces = &rec.series;
   ModalStart(sc, sys, &run, &V_x, &E0);
   rec.start            = ModalMeasures(run, ip.x, 0);

@@ -782,7 +782,7 @@ PetscErrorCode PointSetUp(TS ts)
   {
     ModalTruncation tr;
     PetscCall(ModalTruncationFromOptions(PetscObjectComm((PetscObject)ts), &tr));
-    tr.contact_time = ContactTimeScale(m.P->ball);
+    tr.contact_time = ContactTimeScale(m.P->ball, m.P->approach);
     PetscCall(BeamModesShared(PetscObjectComm((PetscObject)ts), sys, tr, &m.modes));
   }
   const ModalSystem &S = m.modes->S;

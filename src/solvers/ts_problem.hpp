@@ -103,6 +103,7 @@ struct TSProblem {
   const FrameMotion *frame = nullptr; // the swing's frame (owned by the run driver)
   ContactCoupling    g;
   BallParams        ball;
+  PetscReal         approach = 0; // m/s, the ball's and the beam's approach speed (the contact's scales; a ball at rest: the bat's)
   ContactState     *contact = nullptr; // owned by the run driver
   Formulation       form    = Formulation::Explicit;
   TSLayout          L;

@@ -808,6 +808,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   P.frame               = frame;
   P.g                   = g;
   P.ball                = ball;
+  P.approach            = scales.speed;
   P.contact             = contact;
   P.form                = FormulationOfType(type);
   P.jac.contact         = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
