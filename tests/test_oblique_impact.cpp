@@ -45,6 +45,20 @@ Scenario R161(PetscReal V_cm = 0, PetscReal Omega = 0)
   return sc;
 }
 
+// The R161 of R161() swinging at 24 m/s and 51 rad/s, and a baseball of linear stiffness 2e6 N/m
+// (the law -reference modal solves).
+Scenario LinearBallR161()
+{
+  Scenario sc;
+  ReadScene({"options/bats/r161.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}, {"-ball_mass", "0.145"}, {"-ball_radius", "0.0369"}, {"-ball_law", "linear"}, {"-ball_k", "2e6"}}, &sc.beam,
+            &sc.ball);
+  sc.impact.x                   = 0.7;
+  sc.impact.window              = 0;
+  sc.swing.bat_speed            = 24;
+  sc.swing.bat_angular_velocity = 51;
+  return sc;
+}
+
 ImpactResult RunRK4(const Scenario &sc, const char *dt = "2e-7")
 {
   for (auto &kv : kRK4) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.first == "-ts_dt" ? dt : kv.second.c_str()));
@@ -200,13 +214,7 @@ TEST(ObliqueImpact, TangentialRestitutionOnTheBat)
 // (measured errors in the spin -1.54e-5, -3.74e-6, -8.3e-7 rad/s at 4e-7, 2e-7, 1e-7 s).
 TEST(ObliqueImpact, ModalReferenceCarriesTheSecondPlane)
 {
-  Scenario sc;
-  ReadScene({"options/bats/r161.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}, {"-ball_mass", "0.145"}, {"-ball_radius", "0.0369"}, {"-ball_law", "linear"}, {"-ball_k", "2e6"}}, &sc.beam,
-            &sc.ball);
-  sc.impact.x                   = 0.7;
-  sc.impact.window              = 0;
-  sc.swing.bat_speed            = 24;
-  sc.swing.bat_angular_velocity = 51;
+  Scenario sc = LinearBallR161();
   sc.ball.speed                 = 40;
   sc.impact.offset              = 0.015;
   sc.ball.spin                  = 150;
@@ -237,13 +245,7 @@ TEST(ObliqueImpact, ModalReferenceCarriesTheSecondPlane)
 // the run never separated). Against the exact modal reference of the same impact.
 TEST(ObliqueImpact, BallAtRestStruckByTheModalIntegrator)
 {
-  Scenario sc;
-  ReadScene({"options/bats/r161.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}, {"-ball_mass", "0.145"}, {"-ball_radius", "0.0369"}, {"-ball_law", "linear"}, {"-ball_k", "2e6"}}, &sc.beam,
-            &sc.ball);
-  sc.impact.x                   = 0.7;
-  sc.impact.window              = 0;
-  sc.swing.bat_speed            = 24;
-  sc.swing.bat_angular_velocity = 51;
+  Scenario sc = LinearBallR161();
   sc.ball.speed                 = 0;
   ReferenceSolution ref;
   ASSERT_EQ(0, ReferenceMethodFind("modal")->run(PETSC_COMM_WORLD, sc, ReferenceSettings(), &ref));
