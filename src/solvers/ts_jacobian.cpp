@@ -14,6 +14,8 @@
 // rank-one term is inverted by Sherman-Morrison, and J is applied as a shell.
 #include "solvers/ts_problem.hpp"
 
+#include "solvers/irk_stage_pc.hpp"
+
 #include <petscdm.h>
 
 #include <algorithm>
@@ -573,21 +575,22 @@ PetscErrorCode TSJacobianSetDefaultPC(TSProblem &P, PC pc)
 }
 
 // After the options: the rank-one path if the preconditioner is still the program's shell
-// (B0, Bd without the coupling entries; J a shell), else the assembled J.
+// (B0, Bd without the coupling entries; J a shell), else (and for irk) the assembled J.
 PetscErrorCode TSJacobianInstall(TSProblem &P, TS ts)
 {
   SNES      snes;
   KSP       ksp;
   PC        pc;
-  PetscBool shell;
+  PetscBool shell, irk;
 
   PetscFunctionBeginUser;
   PetscCall(TSGetSNES(ts, &snes));
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCSHELL, &shell));
-  P.jac.rank_one = shell;
-  if (!shell) {
+  PetscCall(PetscObjectTypeCompare((PetscObject)ts, TSIRK, &irk));
+  P.jac.rank_one = shell && !irk; // irk's shell is the stage LU (irk_stage_pc.hpp), built from the assembled J
+  if (!P.jac.rank_one) {
     PetscCall(TSJacobianCreate(P));
     PetscCall(SetJacobianOnTS(P, ts));
     PetscFunctionReturn(0);
@@ -623,6 +626,7 @@ PetscErrorCode TSJacobianNewPoint(TSProblem &P, TS ts)
   P.jac.contact      = contact;
   PetscCall(TSJacobianCreate(P));
   PetscCall(SetJacobianOnTS(P, ts));
+  PetscCall(IrkStageNewJacobian(ts, P.jac.J)); // -ts_type irk: its stage matrix over the new J
   PetscFunctionReturn(0);
 }
 

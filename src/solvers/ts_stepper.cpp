@@ -4,6 +4,7 @@
 #include "solvers/ts_stepper.hpp"
 
 #include "base/options_util.hpp"
+#include "solvers/irk_stage_pc.hpp"
 #include "solvers/rk_stability.hpp"
 #include "solvers/ts_galpha2.hpp"
 #include "solvers/ts_modal.hpp"
@@ -30,6 +31,25 @@ bool TypeCanRollBack(const char *type)
   for (const char *t : {TSRK, TSTHETA, TSCN, TSBEULER, TSBDF, TSARKIMEX, TSROSW, TSALPHA, TSALPHA2, TSIRK, TSMODAL})
     if (!std::strcmp(t, type)) return true;
   return false;
+}
+
+// -ts_type names a type PETSc or the program registers; else our message before TSSetType's
+// "Unknown TS type", naming the types to use, and for rk2 ... rk5 (a method, not a type) the
+// rk type with its tableau.
+PetscErrorCode TSCheckTypeKnown(const char *type, MPI_Comm comm)
+{
+  void (*create)(void) = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(TSInitializePackage()); // TSList
+  PetscCall(PetscFunctionListFind(TSList, type, &create));
+  if (create || TSModalIsType(type) || !std::strcmp(type, TSALPHA2)) PetscFunctionReturn(0);
+  char hint[200] = "";
+  if (std::strlen(type) == 3 && !std::strncmp(type, "rk", 2) && type[2] >= '3' && type[2] <= '5')
+    std::snprintf(hint, sizeof hint, "; for the Runge-Kutta method of order %c use -ts_type rk -ts_rk_type %s", type[2], type[2] == '3' ? "3 (or 3bs)" : type[2] == '4' ? "4" : "5dp (or 5bs)");
+  else if (!std::strcmp(type, "rk2"))
+    std::snprintf(hint, sizeof hint, "; for a Runge-Kutta method use -ts_type rk -ts_rk_type 3bs, 4 or 5dp (the order-2 tableaus 2a, 2b are refused: unstable for an undamped oscillation)");
+  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-ts_type %s is not an integrator: use one of rk (with -ts_rk_type 3bs, 4, 5dp, ...), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, irk, modal%s", type, hint);
 }
 
 // The per-structure context: the layout, the TS configured from the options (type, its
@@ -511,10 +531,11 @@ PetscErrorCode CreateTS(TSStepper &S, const char *type)
     PetscCall(KSPGetPC(ksp, &pc));
     PetscBool irk;
     PetscCall(PetscStrcmp(type, TSIRK, &irk));
-    if (irk) { // the stages' coupled system is a KAIJ matrix (A^-1/dt x I + I x J), which PETSc cannot factor: Krylov on it
+    if (irk) { // the stages' coupled system is a KAIJ matrix (I x A^-1/dt + J x I), which PETSc cannot factor:
+               // GMRES on it, preconditioned by its exact LU assembled from J (irk_stage_pc.hpp)
       PetscCall(KSPSetType(ksp, KSPGMRES));
       PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-      PetscCall(PCSetType(pc, PCNONE));
+      PetscCall(IrkStagePCSet(P, pc));
     } else { // a direct solve: the beam's LU kept per step, the contact by Sherman-Morrison (ts_problem.hpp)
       PetscCall(KSPSetType(ksp, KSPPREONLY));
       PetscCall(TSJacobianSetDefaultPC(P, pc));
@@ -795,6 +816,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   PetscFunctionBeginUser;
   // The formulation depends on the TS type: read it before building the problem.
   PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_type", type, sizeof(type), &flg));
+  PetscCall(TSCheckTypeKnown(type, comm));
   // A run that checks its options builds its own TS (the check is of what that set-up read).
   const bool cacheable = !set.check_unused_options;
   if (cacheable) PetscCall(TSContextKey(comm, sys, type, &key));

@@ -1,0 +1,240 @@
+// The stage-system LU of -ts_type irk (irk_stage_pc.hpp).
+#include "solvers/irk_stage_pc.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace beamimpact {
+
+namespace {
+
+PetscInt n_factorizations = 0;
+
+// The PC's state: the stage matrix A, its LU, and what A was built from: J (its id and nonzero
+// state; its values are J0 + shift I + the contact's kc block, so the values of (shift, shiftV,
+// kc) it was assembled at, ts_jacobian.cpp) and S and T as the KAIJ held them.
+struct IrkStagePC {
+  TSProblem               *P   = nullptr;
+  Mat                      A   = nullptr; // (s n) x (s n), AIJ
+  KSP                      ksp = nullptr; // preonly + LU of A
+  PetscObjectId            jid      = 0;  // the J A was built from (P.jac.J)
+  PetscObjectState         jnonzero = -1;
+  PetscReal                shift = -1, shiftV = -1, kc = -1; // what J held
+  PetscInt                 s = 0;
+  bool                     tI = true;   // T is the identity
+  std::vector<PetscScalar> S, T;        // s x s, column-major
+};
+
+// The KAIJ's S and T (T empty: the identity), and whether they differ from what A holds.
+PetscErrorCode ReadShifts(IrkStagePC &c, Mat K, bool *changed)
+{
+  const PetscScalar *S, *T;
+  PetscInt           p, q;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatKAIJGetSRead(K, &p, &q, &S));
+  PetscCheck(p == q && p > 0 && S, PetscObjectComm((PetscObject)K), PETSC_ERR_SUP, "-ts_type irk: the stage matrix's shift block is %" PetscInt_FMT " x %" PetscInt_FMT ", expected s x s with s = -ts_irk_nstages", p, q);
+  std::vector<PetscScalar> s_new(S, S + p * q), t_new;
+  PetscCall(MatKAIJRestoreSRead(K, &S));
+  PetscCall(MatKAIJGetTRead(K, NULL, NULL, &T));
+  bool identity = true;
+  if (T) {
+    t_new.assign(T, T + p * q);
+    for (PetscInt i = 0; i < p; ++i)
+      for (PetscInt j = 0; j < p; ++j) identity = identity && T[i + p * j] == (i == j ? 1.0 : 0.0);
+  }
+  PetscCall(MatKAIJRestoreTRead(K, &T));
+  if (identity) t_new.clear();
+  *changed = p != c.s || s_new != c.S || t_new != c.T;
+  c.s      = p;
+  c.S      = s_new;
+  c.T      = t_new;
+  c.tI     = identity;
+  PetscFunctionReturn(0);
+}
+
+// A with its pattern from J's rows (J's columns c s + j of each stage row, and the stage
+// coupling r s + j) and the LU's solver.
+PetscErrorCode CreateStageMatrix(IrkStagePC &c, Mat J)
+{
+  PetscInt rs, re, N, nc;
+  const PetscInt *cols;
+  const PetscInt  s = c.s, width = c.tI ? 1 : s; // stage columns per column of J
+
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&c.A));
+  PetscCall(MatGetOwnershipRange(J, &rs, &re));
+  PetscCall(MatGetSize(J, &N, NULL));
+  std::vector<PetscInt> d((re - rs) * s), o((re - rs) * s);
+  for (PetscInt r = rs; r < re; ++r) {
+    PetscInt nd = 0;
+    PetscCall(MatGetRow(J, r, &nc, &cols, NULL));
+    for (PetscInt k = 0; k < nc; ++k) nd += cols[k] >= rs && cols[k] < re;
+    for (PetscInt i = 0; i < s; ++i) {
+      d[(r - rs) * s + i] = std::min(nd * width + s, (re - rs) * s);
+      o[(r - rs) * s + i] = (nc - nd) * width;
+    }
+    PetscCall(MatRestoreRow(J, r, &nc, &cols, NULL));
+  }
+  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)J), (re - rs) * s, (re - rs) * s, N * s, N * s, 0, d.data(), 0, o.data(), &c.A));
+  if (!c.ksp) {
+    PC pc;
+    PetscMPIInt size;
+    PetscCall(KSPCreate(PetscObjectComm((PetscObject)J), &c.ksp));
+    PetscCall(KSPSetType(c.ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(c.ksp, &pc));
+    PetscCall(PCSetType(pc, PCLU));
+    PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)J), &size));
+    if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  }
+  PetscFunctionReturn(0);
+}
+
+// A's entries from J, S and T (IrkStageEntry), then its LU.
+PetscErrorCode FillAndFactor(IrkStagePC &c, Mat J)
+{
+  PetscInt           rs, re, nc;
+  const PetscInt    *cols;
+  const PetscScalar *vals;
+  const PetscInt     s = c.s;
+  const PetscScalar *T = c.tI ? nullptr : c.T.data();
+  std::vector<PetscInt>    ac;
+  std::vector<PetscScalar> av;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatZeroEntries(c.A));
+  PetscCall(MatGetOwnershipRange(J, &rs, &re));
+  for (PetscInt r = rs; r < re; ++r) {
+    PetscCall(MatGetRow(J, r, &nc, &cols, &vals));
+    for (PetscInt i = 0; i < s; ++i) {
+      const PetscInt row = r * s + i;
+      ac.clear();
+      av.clear();
+      for (PetscInt k = 0; k < nc; ++k)
+        for (PetscInt j = c.tI ? i : 0; j < (c.tI ? i + 1 : s); ++j) {
+          ac.push_back(cols[k] * s + j);
+          av.push_back(IrkStageEntry(s, c.S.data(), T, i, j, vals[k], false));
+        }
+      for (PetscInt j = 0; j < s; ++j) { // the diagonal block's shift (J's own part added above)
+        ac.push_back(r * s + j);
+        av.push_back(IrkStageEntry(s, c.S.data(), T, i, j, 0.0, true));
+      }
+      PetscCall(MatSetValues(c.A, 1, &row, (PetscInt)ac.size(), ac.data(), av.data(), ADD_VALUES));
+    }
+    PetscCall(MatRestoreRow(J, r, &nc, &cols, &vals));
+  }
+  PetscCall(MatAssemblyBegin(c.A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(c.A, MAT_FINAL_ASSEMBLY));
+  PetscCall(KSPSetOperators(c.ksp, c.A, c.A));
+  PetscCall(KSPSetUp(c.ksp)); // the LU
+  n_factorizations++;
+  PetscFunctionReturn(0);
+}
+
+// A and its LU for the KAIJ the outer KSP holds now: rebuilt when J is another matrix or
+// its pattern changed, refilled and refactored when J's values, S or T changed.
+PetscErrorCode StageUpdate(PC pc, IrkStagePC &c)
+{
+  const JacobianCache &jac = c.P->jac;
+  Mat                  K, J = jac.J;
+  PetscBool            kaij;
+  PetscObjectId        id;
+  PetscObjectState     nz;
+  bool                 shifts = true;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCGetOperators(pc, NULL, &K));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)K, &kaij, MATSEQKAIJ, MATMPIKAIJ, ""));
+  PetscCheck(kaij && J && !jac.rank_one, PetscObjectComm((PetscObject)pc), PETSC_ERR_SUP, "the irk stage preconditioner needs TSIRK's KAIJ stage matrix and the assembled Jacobian (-ts_type irk)");
+  const PetscInt s0  = c.s;
+  const bool     tI0 = c.tI;
+  PetscCall(ReadShifts(c, K, &shifts));
+  PetscCall(PetscObjectGetId((PetscObject)J, &id));
+  PetscCall(MatGetNonzeroState(J, &nz));
+  const bool values = jac.shift != c.shift || jac.shiftV != c.shiftV || jac.kc != c.kc;
+  if (!c.A || id != c.jid || nz != c.jnonzero || c.s != s0 || c.tI != tI0) PetscCall(CreateStageMatrix(c, J));
+  else if (!values && !shifts) PetscFunctionReturn(0);
+  PetscCall(FillAndFactor(c, J));
+  c.jid      = id;
+  c.jnonzero = nz;
+  c.shift    = jac.shift;
+  c.shiftV   = jac.shiftV;
+  c.kc       = jac.kc;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode StageApply(PC pc, Vec x, Vec y)
+{
+  IrkStagePC *c;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &c));
+  PetscCall(StageUpdate(pc, *c));
+  PetscCall(KSPSolve(c->ksp, x, y));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode StageDestroy(PC pc)
+{
+  IrkStagePC *c;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &c));
+  PetscCall(MatDestroy(&c->A));
+  PetscCall(KSPDestroy(&c->ksp));
+  delete c;
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscScalar IrkStageEntry(PetscInt s, const PetscScalar *S, const PetscScalar *T, PetscInt i, PetscInt j, PetscScalar Jrc, bool diagonal)
+{
+  const PetscScalar t = T ? T[i + s * j] : (i == j ? 1.0 : 0.0);
+  return Jrc * t + (diagonal ? S[i + s * j] : 0.0);
+}
+
+PetscErrorCode IrkStagePCSet(TSProblem &P, PC pc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PCSetType(pc, PCSHELL));
+  IrkStagePC *c = new IrkStagePC;
+  c->P          = &P;
+  PetscCall(PCShellSetContext(pc, c));
+  PetscCall(PCShellSetApply(pc, StageApply));
+  PetscCall(PCShellSetDestroy(pc, StageDestroy));
+  PetscCall(PCShellSetName(pc, "irk stages: the (s n) x (s n) stage matrix assembled from J and factored (LU; MUMPS on more than one rank)"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode IrkStageNewJacobian(TS ts, Mat J)
+{
+  SNES               snes;
+  Mat                K, K2;
+  PetscBool          irk, kaij;
+  PetscInt           p, q;
+  const PetscScalar *S, *T;
+  PetscErrorCode (*fn)(SNES, Vec, Mat, Mat, void *);
+  void *ctx;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)ts, TSIRK, &irk));
+  if (!irk) PetscFunctionReturn(0);
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(SNESGetJacobian(snes, &K, NULL, &fn, &ctx));
+  if (!K) PetscFunctionReturn(0); // not set up yet: TSSetUp makes the KAIJ over the TS's J
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)K, &kaij, MATSEQKAIJ, MATMPIKAIJ, ""));
+  if (!kaij) PetscFunctionReturn(0);
+  PetscCall(MatKAIJGetSRead(K, &p, &q, &S));
+  PetscCall(MatKAIJGetTRead(K, NULL, NULL, &T));
+  PetscCall(MatCreateKAIJ(J, p, q, S, T, &K2));
+  PetscCall(MatKAIJRestoreTRead(K, &T));
+  PetscCall(MatKAIJRestoreSRead(K, &S));
+  PetscCall(SNESSetJacobian(snes, K2, K2, fn, ctx));
+  PetscCall(MatDestroy(&K2)); // the SNES holds it
+  PetscFunctionReturn(0);
+}
+
+PetscInt IrkStagePCFactorizations() { return n_factorizations; }
+
+} // namespace beamimpact
