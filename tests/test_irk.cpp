@@ -2,10 +2,11 @@
 // stage matrix's LU (solvers/irk_stage_pc.hpp):
 //   * the stage matrix's entries are those of the KAIJ I_n x S + J x T (formula, a 2 x 2 case
 //     written out by hand);
+//   * the paper's beam converges to the exact modal reference (-reference modal) at order 4
+//     (2 stages): the errors at two steps and their ratio;
 //   * the swinging R161 (options/bats/r161.opts, 85 nodes, the linear 2e6 N/m baseball; it broke
 //     down at every solve without the preconditioner and ended "cut off in contact") completes
-//     head-on and oblique, and agrees with the exact modal reference (-reference modal) at
-//     order 4 (2 stages): the errors at two steps and their ratio;
+//     head-on and oblique, and agrees with the modal reference;
 //   * about one GMRES iteration per Newton iteration (an upper bound with margin);
 //   * the same impact on one rank and on all (np2);
 //   * the barrel shell (-beam_shell, the aluminium bat of options/scenes) completes and agrees
@@ -37,7 +38,7 @@ Options Irk(const char *dt, const char *stages = "2")
   return {{"-ts_type", "irk"}, {"-ts_irk_nstages", stages}, {"-ts_adapt_type", "none"}, {"-ts_dt", dt}};
 }
 
-ImpactResult Run(MPI_Comm comm, const Scenario &sc, const Options &opts)
+ImpactResult RunWith(MPI_Comm comm, const Scenario &sc, const Options &opts)
 {
   for (auto &kv : opts) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
   ImpactResult r;
@@ -90,28 +91,52 @@ TEST(IrkStageMatrix, EntriesAreTheKAIJs)
   EXPECT_EQ(IrkStageEntry(2, S, T, 1, 0, 5.0, true), 10.0 - 3 - 2 * r3);
 }
 
-// Head-on: irk completes (it used to end cut off in contact), each Newton step's linear solve
-// takes about one GMRES iteration, and the batted-ball speed converges to the exact one at
-// order 4 (measured: see the expectations).
-TEST(IrkSwingingBat, HeadOnAgreesWithTheModalReferenceAtOrderFour)
+// The paper's beam (1.1 m aluminium, N = 41, free) and the linear superball at 1 m/s, 0.9 m:
+// order 4 against the exact modal reference (measured acor errors -3.72e-8, -2.41e-9,
+// -1.51e-10, -9.49e-12 at 4e-5, 2e-5, 1e-5, 5e-6 s: ratios 15.5, 15.9, 15.9), one GMRES
+// iteration per Newton iteration (the stage LU is exact).
+TEST(IrkPaperBeam, OrderFourAgainstTheModalReference)
+{
+  Scenario sc;
+  sc.beam              = test::AluminiumBeam(1.1, 41);
+  sc.ball              = test::Superball();
+  sc.impact.x          = 0.9;
+  sc.impact.window     = 0;
+  const ImpactResult e = Reference(sc);
+  const PetscInt     f0 = IrkStagePCFactorizations();
+  const ImpactResult c = RunWith(PETSC_COMM_WORLD, sc, Irk("2e-5")), f = RunWith(PETSC_COMM_WORLD, sc, Irk("1e-5"));
+  EXPECT_GT(IrkStagePCFactorizations(), f0);
+  for (const ImpactResult *r : {&c, &f}) {
+    EXPECT_FALSE(r->ended_in_contact);
+    EXPECT_EQ(r->failed_solves, 0);
+    EXPECT_GE(r->nonlinear_its, r->steps);
+    EXPECT_LE(r->linear_its, r->nonlinear_its + r->nonlinear_its / 2) << "GMRES iterations per Newton iteration";
+  }
+  const PetscReal ec = c.acor - e.acor, ef = f.acor - e.acor;
+  EXPECT_LT(std::abs(ef), 1e-9) << "irk at 1e-5 s against the reference";
+  EXPECT_GT(ec / ef, 13.0) << "order 4: " << ec << " then " << ef;
+  EXPECT_LT(ec / ef, 19.0) << "order 4: " << ec << " then " << ef;
+}
+
+// The swinging bat head-on: irk completes (it used to end cut off in contact, every GMRES solve
+// broken down at 60 iterations), about one GMRES iteration per Newton iteration, and the
+// batted-ball speed agrees with the exact one. Measured errors 7.29e-5, -1.93e-5, -9.74e-7,
+// 7.6e-9, 4.05e-8, -4.2e-10 m/s at 3.2e-5 ... 1e-6 s: no clean order on this stiff grid (its
+// highest modes have omega dt >> 1, where a Gauss method's stage order 2 governs), so a bound.
+TEST(IrkSwingingBat, HeadOnAgreesWithTheModalReference)
 {
   const Scenario     sc = SwingingR161();
   const ImpactResult e  = Reference(sc);
-  const PetscInt     f0 = IrkStagePCFactorizations();
-  const ImpactResult c = Run(PETSC_COMM_WORLD, sc, Irk("4e-6")), f = Run(PETSC_COMM_WORLD, sc, Irk("2e-6"));
+  const ImpactResult c = RunWith(PETSC_COMM_WORLD, sc, Irk("4e-6")), f = RunWith(PETSC_COMM_WORLD, sc, Irk("2e-6"));
   for (const ImpactResult *r : {&c, &f}) {
     EXPECT_FALSE(r->ended_in_contact);
     EXPECT_EQ(r->contacts, 1);
-    EXPECT_GT(r->nonlinear_its, r->steps);
-    EXPECT_LE(r->linear_its, 2 * r->nonlinear_its) << "GMRES iterations per Newton iteration";
     EXPECT_EQ(r->failed_solves, 0);
+    EXPECT_GE(r->nonlinear_its, r->steps);
+    EXPECT_LE(r->linear_its, r->nonlinear_its + r->nonlinear_its / 2) << "GMRES iterations per Newton iteration (measured 1.09 and 1.05)";
+    EXPECT_LT(std::abs(r->bbs - e.bbs), 2e-9 * e.bbs) << "irk at " << r->dt_nominal << " s against the reference";
+    EXPECT_NEAR(r->contact_time, e.contact_time, 1e-6 * e.contact_time);
   }
-  EXPECT_GT(IrkStagePCFactorizations(), f0);
-  const PetscReal ec = c.bbs - e.bbs, ef = f.bbs - e.bbs;
-  EXPECT_LT(std::abs(ef), 1e-6 * e.bbs) << "irk at 2e-6 s against the reference";
-  EXPECT_GT(std::abs(ec / ef), 10.0) << "order 4: " << ec << " then " << ef;
-  EXPECT_LT(std::abs(ec / ef), 24.0) << "order 4: " << ec << " then " << ef;
-  EXPECT_NEAR(f.contact_time, e.contact_time, 1e-6 * e.contact_time);
 }
 
 // Oblique (an undercut of 1.5 cm, 150 rad/s of backspin, mu 0.5, e_T 0.3, the second plane
@@ -124,7 +149,7 @@ TEST(IrkSwingingBat, ObliqueCompletesAndAgrees)
   sc.ball.friction        = 0.5;
   sc.ball.tangential_cor  = 0.3;
   const ImpactResult e    = Reference(sc);
-  const ImpactResult r    = Run(PETSC_COMM_WORLD, sc, Irk("2e-6"));
+  const ImpactResult r    = RunWith(PETSC_COMM_WORLD, sc, Irk("2e-6"));
   EXPECT_FALSE(r.ended_in_contact);
   EXPECT_LE(r.linear_its, 2 * r.nonlinear_its);
   EXPECT_NEAR(r.bbs, e.bbs, 1e-6 * e.bbs);
@@ -136,8 +161,8 @@ TEST(IrkSwingingBat, ObliqueCompletesAndAgrees)
 TEST(IrkParallel, SameOnOneAndAllRanks)
 {
   const Scenario     sc   = SwingingR161();
-  const ImpactResult all  = Run(PETSC_COMM_WORLD, sc, Irk("4e-6"));
-  const ImpactResult self = Run(PETSC_COMM_SELF, sc, Irk("4e-6"));
+  const ImpactResult all  = RunWith(PETSC_COMM_WORLD, sc, Irk("4e-6"));
+  const ImpactResult self = RunWith(PETSC_COMM_SELF, sc, Irk("4e-6"));
   EXPECT_FALSE(all.ended_in_contact);
   EXPECT_NEAR(all.bbs, self.bbs, 1e-10 * self.bbs);
   EXPECT_NEAR(all.contact_time, self.contact_time, 1e-10 * self.contact_time);
@@ -156,12 +181,12 @@ TEST(IrkSwingingBat, ReusedContextIsAFreshOne)
   b.impact.x       = 0.6;
   b.ball.speed     = 30;
   ASSERT_EQ(TSStepperContextCacheClear(), 0);
-  const ImpactResult fresh = Run(PETSC_COMM_WORLD, b, Irk("4e-6"));
+  const ImpactResult fresh = RunWith(PETSC_COMM_WORLD, b, Irk("4e-6"));
   ASSERT_EQ(TSStepperContextCacheClear(), 0);
-  (void)Run(PETSC_COMM_WORLD, a, Irk("4e-6"));
+  (void)RunWith(PETSC_COMM_WORLD, a, Irk("4e-6"));
   PetscInt built0, reused0, built1, reused1;
   TSStepperContextCounts(&built0, &reused0);
-  const ImpactResult again = Run(PETSC_COMM_WORLD, b, Irk("4e-6"));
+  const ImpactResult again = RunWith(PETSC_COMM_WORLD, b, Irk("4e-6"));
   TSStepperContextCounts(&built1, &reused1);
   EXPECT_EQ(reused1, reused0 + 1) << "the second point did not reuse the first one's context";
   EXPECT_EQ(again.bbs, fresh.bbs);

@@ -1,7 +1,11 @@
 // The stage-system LU of -ts_type irk (irk_stage_pc.hpp).
 #include "solvers/irk_stage_pc.hpp"
 
+#include <petscdm.h>
+#include <petsc/private/tsimpl.h> // ts->data: TSIRK's stage vector (IrkStageLayout)
+
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 namespace beamimpact {
@@ -207,31 +211,106 @@ PetscErrorCode IrkStagePCSet(TSProblem &P, PC pc)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode IrkStageNewJacobian(TS ts, Mat J)
+namespace {
+
+// TSIRK's Jacobian (SNESTSFormJacobian: J at the last stage, then S = A^-1/dt written into the
+// KAIJ), and then, on more than one rank, J's state bumped by a (no-op) assembly: PETSc 3.18's
+// MPIKAIJ multiplies by copies of S in its per-rank blocks, rebuilt only when J's state changes,
+// so a new step size with an unchanged J (event location in a linear contact) kept the old S
+// and GMRES took 13-18 iterations against the exact preconditioner.
+PetscErrorCode IrkFormJacobian(SNES snes, Vec Z, Mat K, Mat Kp, void *ctx)
 {
-  SNES               snes;
-  Mat                K, K2;
-  PetscBool          irk, kaij;
-  PetscInt           p, q;
-  const PetscScalar *S, *T;
-  PetscErrorCode (*fn)(SNES, Vec, Mat, Mat, void *);
-  void *ctx;
+  PetscMPIInt size;
+  Mat         J;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESTSFormJacobian(snes, Z, K, Kp, ctx));
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)K), &size));
+  if (size == 1) PetscFunctionReturn(0);
+  PetscCall(MatKAIJGetAIJ(K, &J));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode IrkStageAfterSetUp(TS ts)
+{
+  SNES      snes;
+  Mat       K;
+  PetscBool irk, kaij;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)ts, TSIRK, &irk));
   if (!irk) PetscFunctionReturn(0);
   PetscCall(TSGetSNES(ts, &snes));
-  PetscCall(SNESGetJacobian(snes, &K, NULL, &fn, &ctx));
-  if (!K) PetscFunctionReturn(0); // not set up yet: TSSetUp makes the KAIJ over the TS's J
+  PetscCall(SNESGetJacobian(snes, &K, NULL, NULL, NULL));
   PetscCall(PetscObjectTypeCompareAny((PetscObject)K, &kaij, MATSEQKAIJ, MATMPIKAIJ, ""));
-  if (!kaij) PetscFunctionReturn(0);
-  PetscCall(MatKAIJGetSRead(K, &p, &q, &S));
-  PetscCall(MatKAIJGetTRead(K, NULL, NULL, &T));
-  PetscCall(MatCreateKAIJ(J, p, q, S, T, &K2));
-  PetscCall(MatKAIJRestoreTRead(K, &T));
-  PetscCall(MatKAIJRestoreSRead(K, &S));
-  PetscCall(SNESSetJacobian(snes, K2, K2, fn, ctx));
-  PetscCall(MatDestroy(&K2)); // the SNES holds it
+  PetscCheck(kaij, PetscObjectComm((PetscObject)ts), PETSC_ERR_PLIB, "-ts_type irk: after its set-up the Newton solver's matrix is not TSIRK's KAIJ stage matrix");
+  PetscCall(SNESSetJacobian(snes, K, K, IrkFormJacobian, ts));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode IrkStageNewJacobian(TS ts, Mat J)
+{
+  SNES      snes;
+  Mat       K;
+  PetscBool irk;
+  PetscInt  s;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)ts, TSIRK, &irk));
+  if (!irk) PetscFunctionReturn(0);
+  PetscCall(TSIRKGetNumStages(ts, &s));
+  std::vector<PetscScalar> S(s * s, 0.0), T(s * s, 0.0); // S = A^-1/dt: TSIRK writes it at each Jacobian
+  for (PetscInt i = 0; i < s; ++i) T[i + s * i] = 1.0;
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(MatCreateKAIJ(J, s, s, S.data(), T.data(), &K));
+  PetscCall(SNESSetJacobian(snes, K, K, IrkFormJacobian, ts)); // as TSSetUp_IRK and IrkStageAfterSetUp (TSSetIJacobian just set J itself there)
+  PetscCall(MatDestroy(&K)); // the SNES holds it
+  PetscFunctionReturn(0);
+}
+
+namespace {
+// The leading members of PETSc 3.18's TS_IRK (src/ts/impls/implicit/irk/irk.c), as far as Z.
+struct TSIRKLeading {
+  char     *method_name;
+  PetscInt  order, nstages;
+  PetscBool stiffly_accurate;
+  PetscInt  pinterp;
+  void     *tableau;
+  Vec       U0, Z;
+};
+} // namespace
+
+PetscErrorCode IrkStageLayout(TS ts, DM dm)
+{
+  PetscBool   irk;
+  PetscMPIInt size;
+  PetscInt    s, n, bs;
+  TSIRKType   type;
+  Vec         U, Z;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)ts, TSIRK, &irk));
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)ts), &size));
+  if (!irk || size == 1) PetscFunctionReturn(0);
+  PetscCall(TSIRKGetNumStages(ts, &s));
+  PetscCall(TSIRKGetType(ts, &type));
+  TSIRKLeading *data = static_cast<TSIRKLeading *>(ts->data);
+  PetscCheck(data && data->nstages == s && data->method_name && type && !std::strcmp(data->method_name, type), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP,
+             "-ts_type irk on %d ranks: this PETSc's TSIRK is not laid out as 3.18's, so its stage vector cannot be split as the state is; run irk on one rank", (int)size);
+  if (data->Z) PetscFunctionReturn(0); // set up already
+  PetscCall(DMCreateGlobalVector(dm, &U));
+  PetscCall(VecGetLocalSize(U, &n));
+  PetscCall(VecGetBlockSize(U, &bs));
+  PetscCall(VecDestroy(&U));
+  PetscCall(VecCreate(PetscObjectComm((PetscObject)ts), &Z));
+  PetscCall(VecSetSizes(Z, s * n, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(Z, s * bs));
+  PetscCall(VecSetFromOptions(Z));
+  data->Z = Z; // TSSetUp_IRK keeps a Z it finds; TSReset_IRK destroys it
   PetscFunctionReturn(0);
 }
 

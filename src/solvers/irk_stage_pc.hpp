@@ -28,10 +28,25 @@ namespace beamimpact {
 // fresh context, and a stale one after a reused context's new point).
 PetscErrorCode IrkStagePCSet(TSProblem &P, PC pc);
 
-// A reused context's new point rebuilds the assembled J (its pattern holds the contact point):
-// TSIRK's KAIJ, made once at its set-up, would keep multiplying by the old J. This gives the
-// SNES a KAIJ over J (the same S and T, the same Jacobian callback); nothing for another type.
+// A reused context's new point rebuilds the assembled J (its pattern holds the contact point)
+// and sets it on the TS, whose TSSetIJacobian hands J itself to the SNES in place of TSIRK's
+// KAIJ (made once, at TSSetUp): the next step failed ("Matrix passed in is not of type KAIJ").
+// This gives the SNES a KAIJ over the new J, as TSSetUp_IRK does; nothing for another type.
 PetscErrorCode IrkStageNewJacobian(TS ts, Mat J);
+
+// Before TSSetUp, on more than one rank: TSIRK (PETSc 3.18) makes its stage vector Z with
+// PETSc's own split of s N entries (PETSC_DECIDE), which is not s times the state's split
+// (the ball's dofs live on rank 0, and the beam's nodes split unevenly), so its first step
+// failed ("Subvector length * blocksize ... not correct for scatter to multicomponent
+// vector"). This gives TSIRK a Z laid out as s times the DM's global vector, per rank; the one
+// use of TSIRK's private data (its leading members, checked against TSIRKGetNumStages and
+// TSIRKGetType first). Nothing on one rank or for another type.
+PetscErrorCode IrkStageLayout(TS ts, DM dm);
+
+// After TSSetUp: TSIRK's Jacobian callback wrapped so that, on more than one rank, a new step
+// size reaches the KAIJ's per-rank blocks (PETSc 3.18's MPIKAIJ copies S into them and renews
+// the copies only when J's state changes; see irk_stage_pc.cpp). Nothing for another type.
+PetscErrorCode IrkStageAfterSetUp(TS ts);
 
 // Factorizations of the stage matrix done since the start (all contexts): for tests and -info.
 PetscInt IrkStagePCFactorizations();

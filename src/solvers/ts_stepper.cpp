@@ -620,7 +620,9 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   }
   PetscCall(TSSetErrorIfStepFails(S.ts, PETSC_FALSE)); // failures are explained by TSCheckStep
   PetscCall(TSCheckTypeSettings(S.ts, now, S.P.L.comm)); // before TSSetUp, whose errors would not say why
+  PetscCall(IrkStageLayout(S.ts, S.P.L.pack));            // -ts_type irk on more than one rank: its stage vector split as the state
   PetscCall(TSSetUp(S.ts));
+  PetscCall(IrkStageAfterSetUp(S.ts)); // -ts_type irk: a new step size reaches its stage matrix on every rank
   if (set.check_unused_options) PetscCall(OptionsCheckUnused(S.P.L.comm, {}, set.strict_solver_options));
   if (S.P.form != Formulation::Explicit) { // the last Newton solve's residual history explains a failure
     SNES snes;
