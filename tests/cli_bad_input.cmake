@@ -99,7 +99,7 @@ set(cases
   "-ts_type ssp|-ts_type ssp cannot roll back a step"
   "-ts_type basicsymplectic|-ts_type basicsymplectic cannot roll back a step"
   "-ts_type mprk|-ts_type mprk cannot roll back a step"
-  "-ts_type rk4|-ts_type rk4 is not an integrator: use one of rk .*irk, modal; for the Runge-Kutta method of order 4 use -ts_type rk -ts_rk_type 4"
+  "-ts_type rk4|-ts_type rk4 is not an integrator: use one of rk .*irk, modal. for the Runge-Kutta method of order 4 use -ts_type rk -ts_rk_type 4"
   "-ts_type rk5|-ts_type rk5 is not an integrator: .*use -ts_type rk -ts_rk_type 5dp"
   "-ts_type rk2|-ts_type rk2 is not an integrator: .*use -ts_type rk -ts_rk_type 3bs, 4 or 5dp \\(the order-2 tableaus"
   "-ts_type gauss|-ts_type gauss is not an integrator: use one of rk \\(with -ts_rk_type 3bs, 4, 5dp, ...\\), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, irk, modal"
