@@ -464,16 +464,21 @@ struct ModeKernel {
 void ModePhi4(PetscReal w, PetscReal sigma, PetscReal tau, Mat2 P[5])
 {
   const Mat2 X{0, w * tau, -w * tau, -2 * sigma * tau};
-  if (tau * (w + 2 * sigma) < 1) {
+  const PetscReal norm = tau * (w + 2 * sigma);
+  if (norm < 1) { // phi_4 by its series (to a term below 1e-18 of it), then phi_(j-1) = I/(j-1)! + X phi_j
     Mat2      pw{1, 0, 0, 1};
-    PetscReal f[5] = {1, 1, 0.5, 1.0 / 6, 1.0 / 24}; // 1/(i + j)!
-    for (int j = 0; j < 5; ++j) P[j] = Mat2();
-    for (int i = 0; i < 26; ++i) {
-      for (int j = 0; j < 5; ++j) {
-        P[j].a += f[j] * pw.a, P[j].b += f[j] * pw.b, P[j].c += f[j] * pw.c, P[j].d += f[j] * pw.d;
-        f[j] /= i + j + 1;
-      }
+    PetscReal f = 1.0 / 24, size = 1; // 1/(i + 4)!, a bound on |X^i|
+    P[4] = Mat2();
+    for (int i = 0; i < 30 && f * size > 1e-18 / 24; ++i) {
+      P[4].a += f * pw.a, P[4].b += f * pw.b, P[4].c += f * pw.c, P[4].d += f * pw.d;
       pw = pw * X;
+      f /= i + 5;
+      size *= 2 * norm;
+    }
+    const PetscReal inv_fact[4] = {1, 1, 0.5, 1.0 / 6};
+    for (int j = 4; j > 0; --j) {
+      const Mat2 xp = X * P[j];
+      P[j - 1]      = {inv_fact[j - 1] + xp.a, xp.b, xp.c, inv_fact[j - 1] + xp.d};
     }
     return;
   }
@@ -525,12 +530,38 @@ struct PlaneKernels {
   PetscReal               tau = 0;
   std::vector<ModeKernel> mode;
 };
-PlaneKernels PlaneKernelsOf(const TangentialPlane &p, PetscReal tau)
+
+} // namespace
+
+// The kernels of the last sub-step lengths (a fixed-step run's steps repeat the rest length and
+// its Gauss points), for the omega and sigma they were made for.
+struct TangentialKernelCache {
+  std::vector<PetscReal>                            omega, sigma;
+  std::vector<std::shared_ptr<const PlaneKernels>> entry; // at most kSize, replaced in turn
+  size_t                                            next = 0;
+  static constexpr size_t                           kSize = 8;
+};
+
+namespace {
+
+// The kernels over tau: from the cache where a length equal to tau to 1e-12 (the steps' lengths
+// are differences of times that carry that round-off) is kept, else computed and kept.
+std::shared_ptr<const PlaneKernels> PlaneKernelsOf(const TangentialPlane &p, PetscReal tau)
 {
-  PlaneKernels K;
-  K.tau = tau;
-  K.mode.resize(p.omega.size());
-  for (size_t k = 0; k < p.omega.size(); ++k) K.mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
+  if (!p.cache || p.cache->omega != p.omega || p.cache->sigma != p.sigma) {
+    p.cache        = std::make_shared<TangentialKernelCache>();
+    p.cache->omega = p.omega;
+    p.cache->sigma = p.sigma;
+  }
+  TangentialKernelCache &C = *p.cache;
+  for (const auto &e : C.entry)
+    if (std::abs(e->tau - tau) <= 1e-12 * tau) return e;
+  auto K  = std::make_shared<PlaneKernels>();
+  K->tau  = tau;
+  K->mode.resize(p.omega.size());
+  for (size_t k = 0; k < p.omega.size(); ++k) K->mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
+  if (C.entry.size() < TangentialKernelCache::kSize) C.entry.push_back(K);
+  else C.entry[C.next++ % TangentialKernelCache::kSize] = K;
   return K;
 }
 
@@ -605,7 +636,8 @@ void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels 
   const PetscReal        tau   = K.tau;
   for (int i = 0; i < 3; ++i) {
     const PetscReal    si = 0.5 * tau * (1 + gx[i]);
-    const PlaneKernels Ki = PlaneKernelsOf(*p, si);
+    const auto         Kp = PlaneKernelsOf(*p, si); // held: a later insertion may replace it in the cache
+    const PlaneKernels &Ki = *Kp;
     s->dissipated += 0.5 * tau * gw[i] * (-f(si) * PlaneTry(*p, Ki, inv_me, f).U());
     for (size_t k = 0; k < p->sigma.size(); ++k) { // the modes' damping: integral 2 sigma z'^2
       if (!(p->sigma[k] > 0)) continue;
@@ -651,7 +683,8 @@ void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const
     if (s->phase == TangentialPhase::Slip && s->slip_sign == 0) s->phase = TangentialPhase::Grip;
     const PetscReal    rest = h - tau;
     const ForceCubic   Fb   = Fn.Shift(tau);
-    const PlaneKernels K    = PlaneKernelsOf(*p, rest);
+    const auto         Kp   = PlaneKernelsOf(*p, rest);
+    const PlaneKernels &K    = *Kp;
     ForceCubic         f    = PhaseForce(m, inv_me, *p, K, *s, Fb);
     if (s->phase == TangentialPhase::Slip) p->force = f(0); // continuous into a slip: -s mu F_n
     if (!PhaseEnds(m, *s, PlaneTry(*p, K, inv_me, f), f, rest, Fb) || it == 15) {
@@ -661,13 +694,13 @@ void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const
     PetscReal lo = 0, hi = rest;
     for (int b = 0; b < 200 && hi - lo > 1e-15 * rest; ++b) {
       const PetscReal    mid = 0.5 * (lo + hi);
-      const PlaneKernels Km  = PlaneKernelsOf(*p, mid);
-      f                      = PhaseForce(m, inv_me, *p, Km, *s, Fb);
-      if (PhaseEnds(m, *s, PlaneTry(*p, Km, inv_me, f), f, mid, Fb)) hi = mid;
+      const auto         Km  = PlaneKernelsOf(*p, mid);
+      f                      = PhaseForce(m, inv_me, *p, *Km, *s, Fb);
+      if (PhaseEnds(m, *s, PlaneTry(*p, *Km, inv_me, f), f, mid, Fb)) hi = mid;
       else lo = mid;
     }
-    const PlaneKernels Kh = PlaneKernelsOf(*p, hi);
-    PlaneCommit(m, inv_me, Kh, PhaseForce(m, inv_me, *p, Kh, *s, Fb), p, s);
+    const auto Kh = PlaneKernelsOf(*p, hi);
+    PlaneCommit(m, inv_me, *Kh, PhaseForce(m, inv_me, *p, *Kh, *s, Fb), p, s);
     PhaseSwitch(m, p, s);
     tau += hi;
   }

@@ -56,6 +56,7 @@
 
 #include <petscsys.h>
 
+#include <memory>
 #include <vector>
 
 namespace beamimpact {
@@ -156,6 +157,7 @@ void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, Pet
 // and the modes' energies; stiffness_work stays 0: the spring's part is in it).
 // Damped modes (Rayleigh damping: sigma) decay exactly in the same way; their loss is summed into
 // TangentialPlane::damped (Gauss on each sub-step, the energy drop in free vibration).
+struct TangentialKernelCache; // the modes' responses over the sub-step lengths last used (model/oblique.cpp)
 struct TangentialPlane {
   std::vector<PetscReal> omega, gamma;    // rad/s, m/(N s^2)^(1/2): per mode
   std::vector<PetscReal> sigma;           // 1/s, each mode's decay rate (z'' + 2 sigma z' + w^2 z = f; Rayleigh damping); empty: undamped
@@ -167,6 +169,9 @@ struct TangentialPlane {
   PetscReal              time      = 0;   // s, the time the state is at
   PetscInt               substeps  = 0;   // sub-steps taken
   PetscReal Sigma(size_t k) const { return sigma.empty() ? 0 : sigma[k]; }
+  // The modes' responses over the last sub-step lengths (a fixed-step run repeats them), kept with
+  // the omega and sigma they were made for; made on first use.
+  mutable std::shared_ptr<TangentialKernelCache> cache;
   PetscReal PointVelocity() const;        // m/s, sum gamma_k z_k' (the static correction's rate left out)
   PetscReal ModeEnergy() const;           // J, 1/2 sum (z_k'^2 + w_k^2 z_k^2) + 1/2 G_r F_t^2
 };
