@@ -1,7 +1,10 @@
 // The bat flexible in its second plane (model/oblique.hpp TangentialPlane, run/oblique.cpp):
 //   * a mode under a linear force against its closed forms (rest, constant and ramp loads); a
 //     damped mode (under-, critically, over-damped, a damped rigid mode) against a fine rk4
-//     integration of its equation, on both sides of the series' threshold;
+//     integration of its equation, on both sides of the series' threshold; a mode under a cubic
+//     force (phi_1 ... phi_4) against rk4, and the cubic Hermite of F_n exact for a cubic;
+//   * driven by the cubic Hermite of a half-sine F_n and its rate, the impulse converges at order
+//     4 in the pieces (rigid bat and the R161's plane; linear pieces: order 2);
 //   * a plane of one rigid mode of mass M_t is the rigid bat of effective mass M_t: the same
 //     impulse as the rigid model's closed-form slip and Runge-Kutta grip (an independent solver);
 //   * a plane of no modes is a massive fixed target: rolling, v_t' = v_t / (1 + alpha);
