@@ -14,7 +14,9 @@
 #     units the datasets' unit attributes;
 #   * scripts/plot_sweep.py on a free and a clamped sweep: the points with two or more contacts
 #     ringed (counted here from /results/contacts), the Eq. (11) rigid-body curve drawn for the
-#     free beam only.
+#     free beam only;
+#   * scripts/plot_bbcor_map.py and plot_oblique_map.py on small sweeps: the best point they
+#     print is the one h5py finds, each refuses the other's file.
 #
 #   tests/plots.sh path/to/beamimpact scratch_dir
 # Runs from the repository root (found from this script's path); needs a Python with h5py,
@@ -200,6 +202,56 @@ for name in free clamped; do
     && pass "plot_sweep.py $name: $multi double contact(s) ringed, Eq. (11) curve $curve" || fail "plot_sweep.py $name: expected $multi ringed and the curve $curve: $out"
 done
 images PNG "$dir/free.png" "$dir/clamped.png" && pass "plot_sweep.py PNGs valid" || fail "plot_sweep.py PNGs"
+
+# The maps of issues 23 and 24, each on a small sweep (coarse grids), its printed best point
+# against the same maximum found here with h5py, and each refusing the other's file:
+#   * plot_bbcor_map.py on a 2 x 2 x 2 sweep of the aluminium bat's shell (x, wall thickness x shell
+#     modulus, N = 43, n = 2 only) in the BBCOR rig: "best BBCOR" the largest bbcor of the file;
+#   * plot_oblique_map.py on a 2 x 3 sweep of the R161 swing over impact_x x impact_offset with
+#     -flight: "best distance" the largest distance, and at each impact point the best offset.
+run bbmap -options_file options/scenes/bbcor-shell.opts -task sweep -impact_after time -impact_window 1e-3 -beam_nodes 43 -shell_harmonics 2 -sweep_x 0.62,0.66 \
+  -sweep barrel_wall_thickness=2e-3:3e-3:2,shell_youngs_modulus=5e10:1e11:2 -sweep_quiet
+run obmap -options_file options/scenes/oblique-map.opts -beam_nodes 43 -sweep impact_x=0.62:0.7:2,impact_offset=0:0.02:3 -sweep_quiet
+if out=$("$python" scripts/plot_bbcor_map.py "$dir/bbmap.h5" -o "$dir/bbmap.png" 2>&1); then
+  want=$("$python" - "$dir/bbmap.h5" <<'EOF'
+import sys, h5py, numpy as np
+r = h5py.File(sys.argv[1])["results"]
+ok = (r["status"][()] == 0) & np.isfinite(r["bbcor"][()])
+b = np.where(ok, r["bbcor"][()], -np.inf)
+k = int(np.argmax(b))
+print("best BBCOR %.4f at wall %.2f mm" % (b[k], r["barrel_wall_thickness"][k] * 1e3))
+print("hoop frequency %.0f Hz" % r["hoop_frequency"][k])
+print("%d ok" % ok.sum())
+EOF
+)
+  best=$(sed -n 1p <<<"$want"); hoop=$(sed -n 2p <<<"$want"); nok=$(sed -n 3p <<<"$want")
+  grep -qF "$best" <<<"$out" && grep -qF "$hoop" <<<"$(head -1 <<<"$out")" && [[ $nok == "8 ok" ]] \
+    && pass "plot_bbcor_map.py: '$best', $hoop, as h5py finds it ($nok points)" || fail "plot_bbcor_map.py: expected '$best' ($hoop, $nok points): $out"
+  [[ $(grep -c "^  wall " <<<"$out") == 2 ]] && pass "plot_bbcor_map.py: one line per wall thickness (2)" || fail "plot_bbcor_map.py per-thickness lines: $out"
+else fail "plot_bbcor_map.py bbmap.h5: $out"; fi
+if out=$("$python" scripts/plot_oblique_map.py "$dir/obmap.h5" -o "$dir/obmap.png" 2>&1); then
+  want=$("$python" - "$dir/obmap.h5" <<'EOF'
+import sys, h5py, numpy as np
+r = h5py.File(sys.argv[1])["results"]
+ok = (r["status"][()] == 0) & np.isfinite(r["distance"][()])
+d = np.where(ok, r["distance"][()], -np.inf)
+x, D = r["impact_x"][()], r["impact_offset"][()]
+k = int(np.argmax(d))
+print("best distance: %.4g m at impact_x %.3f m, impact_offset %.4f m" % (d[k], x[k], D[k]))
+for xv in np.unique(x):
+    j = np.where(x == xv)[0][np.argmax(d[x == xv])]
+    print("  impact_x %.3f m: best impact_offset %.4f m (distance %.4g)" % (xv, D[j], d[j]))
+EOF
+)
+  [[ $(grep -v "^wrote" <<<"$out") == "$want" ]] && pass "plot_oblique_map.py: the best point and the best offset at each x as h5py finds them ($(head -1 <<<"$want"))" \
+    || fail "plot_oblique_map.py: expected
+$want
+got
+$out"
+else fail "plot_oblique_map.py obmap.h5: $out"; fi
+images PNG "$dir/bbmap.png" "$dir/obmap.png" && pass "map PNGs valid" || fail "map PNGs"
+expect_fail "plot_bbcor_map.py on the oblique map" "is not a sweep over barrel_wall_thickness" "$python" scripts/plot_bbcor_map.py "$dir/obmap.h5" -o "$dir/x.png"
+expect_fail "plot_oblique_map.py on the BBCOR map" "is not a sweep over impact_x and impact_offset" "$python" scripts/plot_oblique_map.py "$dir/bbmap.h5" -o "$dir/x.png"
 
 # plot_convergence.py's orders rest only on points above the error floor, and say so: errors
 # c h^4 at h = 1/2, 1/4, 1/8 then two points at a floor of 1e-10 give p = 4 from 3 points with
