@@ -184,6 +184,85 @@ TEST(FreeFlight, DoubleImpactAsTimeIntegration)
   EXPECT_LT(std::abs(m.energy_error), 1e-9);
 }
 
+// -ts_type modal hands the free flight its own modal state and takes the flight's end back in
+// modes (Stepper::GetModalState/SetModalState: no projection through the physical state); the
+// same double impact with the free flight stepped by the same integrator (-impact_after time:
+// the exact flow over steps, the second contact found by the event locator) has the same
+// contacts at the same times (to the event locator's tolerance), and the same ACOR and energy balance.
+TEST(FreeFlight, ModalIntegratorHandsItsModesToTheFlight)
+{
+  const BeamParams beam = AluminiumBeam(0.3, 41, Support::Clamped, Support::Free);
+  ImpactParams     ip;
+  ip.x        = 0.29;
+  ip.after    = ImpactAfter::Time;
+  const auto t = RunImpact(PETSC_COMM_WORLD, beam, Superball(), ip, {{"-ts_type", "modal"}});
+  ip.after     = ImpactAfter::Modal;
+  const auto m = RunImpact(PETSC_COMM_WORLD, beam, Superball(), ip, {{"-ts_type", "modal"}});
+  EXPECT_GE(m.contacts, 2);
+  EXPECT_EQ(m.contacts, t.contacts);
+  EXPECT_NEAR(m.acor, t.acor, 1e-10);
+  ASSERT_EQ(m.events.size(), t.events.size());
+  for (size_t i = 0; i < m.events.size(); ++i) {
+    EXPECT_EQ(m.events[i].kind, t.events[i].kind);
+    EXPECT_NEAR(m.events[i].time, t.events[i].time, 1e-8) << i; // the event locator's tolerance (a maximum compression: 9e-10 apart)
+  }
+  EXPECT_LT(m.steps, t.steps / 3);
+  EXPECT_LT(std::abs(m.energy_error), 1e-9); // the contact's own (4.3e-10), the flight adds none
+  EXPECT_NEAR(m.energy_error, t.energy_error, 1e-12);
+}
+
+// The flight from modal coordinates (FreeFlightStartModal) is the flight from the physical
+// state they stand for (FreeFlightStart, which projects it): the same coupling, bounds and
+// compression, and its end in modes (FreeFlightModalState) expands to FreeFlightState's.
+TEST(FreeFlight, StartInModesIsStartInDofs)
+{
+  const BeamSystem                 sys = SystemOf(AluminiumBeam(1.1, 81));
+  std::shared_ptr<const BeamModes> modes;
+  ModalTruncation                  t;
+  t.modes = ModalModes::Count;
+  t.count = 30;
+  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, &modes));
+  const PetscInt n = modes->S.n, nm = modes->Count();
+  ModalState     q;
+  for (PetscInt k = 0; k < nm; ++k) q.z.push_back(1e-4 * std::cos(0.7 * k)), q.zd.push_back(0.02 * std::sin(1.3 * k + 0.2));
+  q.ball_y = -1e-4, q.ball_v = -0.4, q.dissipated = 0.01;
+  FullState s; // M^{-1/2} Phi z over the free dofs
+  s.y.assign(sys.ndof, 0.0), s.v.assign(sys.ndof, 0.0);
+  for (PetscInt k = 0; k < nm; ++k)
+    for (PetscInt d = 0; d < n; ++d) {
+      s.y[modes->S.dof[d]] += modes->B.Phi[(size_t)k * n + d] * q.z[k] / std::sqrt(modes->S.mass[d]);
+      s.v[modes->S.dof[d]] += modes->B.Phi[(size_t)k * n + d] * q.zd[k] / std::sqrt(modes->S.mass[d]);
+    }
+  s.ball_y = q.ball_y, s.ball_v = q.ball_v, s.dissipated = q.dissipated;
+  const ContactCoupling g = BeamSystemCoupling(sys, 0.83);
+  FreeFlight            a, b;
+  FreeFlightStart(modes, g, 0.0, s, &a);
+  FreeFlightStartModal(modes, g, 0.0, q, &b);
+  ASSERT_EQ(a.gamma.size(), b.gamma.size());
+  for (PetscInt k = 0; k < nm; ++k) {
+    EXPECT_EQ(a.gamma[k], b.gamma[k]) << k; // the same sum over the coupled dofs
+    EXPECT_NEAR(a.z[k], b.z[k], 1e-13 * 1e-4) << k;
+    EXPECT_NEAR(a.zd[k], b.zd[k], 1e-13 * 0.02) << k;
+  }
+  EXPECT_NEAR(a.L1, b.L1, 1e-12 * a.L1);
+  EXPECT_NEAR(a.L2, b.L2, 1e-12 * a.L2);
+  for (PetscReal x : {0.0, 1.1e-3, 7.3e-3}) {
+    EXPECT_NEAR(FreeFlightCompression(a, x, 0), FreeFlightCompression(b, x, 0), 1e-12 * 1e-3);
+    ModalState e;
+    FullState  f;
+    FreeFlightModalState(b, x, &e);
+    FreeFlightState(b, x, &f);
+    EXPECT_EQ(f.ball_y, e.ball_y);
+    EXPECT_EQ(f.ball_v, e.ball_v);
+    EXPECT_EQ(f.dissipated, e.dissipated);
+    const PetscInt d = modes->S.dof[n / 3]; // one free dof, expanded from e by hand
+    PetscReal      y = 0, ymax = 0;
+    for (PetscInt k = 0; k < nm; ++k) y += modes->B.Phi[(size_t)k * n + n / 3] * e.z[k] / std::sqrt(modes->S.mass[n / 3]);
+    for (PetscReal v : f.y) ymax = std::max(ymax, std::abs(v));
+    EXPECT_NEAR(f.y[d], y, 1e-13 * ymax) << "s = " << x;
+  }
+}
+
 // The energy per mode after the ball has left: its sum is the beam's kinetic and strain energy
 // of the state the free flight holds (an independent sum over the dofs, the strain energy from
 // the strain terms), at the separation and later, for every mode and for the 20 lowest (the

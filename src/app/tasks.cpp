@@ -193,8 +193,8 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(OptionsCheckUnused(comm)); // after the solve: the eigensolver reads its -modes_eps_*, -modes_st_* options
   PetscCall(PrintBeamBody(comm, beam));
   const bool wall = !modes.shell_n.empty(); // a barrel wall: each mode's family
-  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT "):\n  mode  frequency (Hz)  period (ms)  %snodes (m)\n", (double)beam.length, beam.theory.c_str(),
-                        SupportName(beam.left), SupportName(beam.right), beam.nodes, wall ? "family   " : ""));
+  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT ", %s):\n  mode  frequency (Hz)  period (ms)  %snodes (m)\n", (double)beam.length, beam.theory.c_str(),
+                        SupportName(beam.left), SupportName(beam.right), beam.nodes, modes.method.c_str(), wall ? "family   " : ""));
   int rigid = 0, flexible = 0; // numbered apart: mode 1 is the fundamental, the rigid ones r1, r2
   for (size_t q = 0; q < modes.frequency.size(); ++q) {
     std::string nodes;

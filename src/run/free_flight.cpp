@@ -84,6 +84,42 @@ PetscReal ModalEnergyOf(const BeamModes &m, const std::vector<PetscReal> &z, con
 
 } // namespace
 
+namespace {
+
+// gamma_k = sum_q w_q phi_k[d_q] / sqrt(m_{d_q}) over the coupled free dofs (the coupling's
+// few entries, in the free dofs' order: the dense dot product's value, its other terms being
+// zeros), the beam's energy and the bounds on c', c'' over s >= 0, from ff's z, zd.
+void FreeFlightCouple(const ContactCoupling &g, FreeFlight *ff)
+{
+  const BeamModes       &m = *ff->modes;
+  const PetscInt         n = m.S.n, nm = m.Count();
+  std::vector<PetscInt>  coupled;
+  std::vector<PetscReal> gw;
+  for (PetscInt d = 0; d < n; ++d) {
+    PetscReal w = 0;
+    for (PetscInt q = 0; q < g.n; ++q)
+      if (m.S.dof[d] == g.dof[q]) w += g.w[q] / std::sqrt(m.S.mass[d]);
+    if (w != 0.0) coupled.push_back(d), gw.push_back(w);
+  }
+  ff->gamma.assign(nm, 0.0);
+  for (PetscInt k = 0; k < nm; ++k) {
+    const PetscReal *phi = &m.B.Phi[(size_t)k * n];
+    PetscReal        c   = 0;
+    for (size_t j = 0; j < coupled.size(); ++j) c += phi[coupled[j]] * gw[j];
+    ff->gamma[k] = c;
+  }
+  ff->energy0 = ModalEnergyOf(m, ff->z, ff->zd);
+  ff->L1      = std::abs(ff->vb0);
+  ff->L2      = 0;
+  for (PetscInt k = 0; k < nm; ++k) {
+    if (ff->gamma[k] == 0.0) continue;
+    ff->L1 += std::abs(ff->gamma[k]) * ModeSup(m, k, ff->z[k], ff->zd[k], 1);
+    ff->L2 += std::abs(ff->gamma[k]) * ModeSup(m, k, ff->z[k], ff->zd[k], 2);
+  }
+}
+
+} // namespace
+
 void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const FullState &s, FreeFlight *ff)
 {
   const BeamModes &m = *modes;
@@ -96,36 +132,37 @@ void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupli
   ff->dissipated0    = s.dissipated;
   ff->z.assign(nm, 0.0);
   ff->zd.assign(nm, 0.0);
-  ff->gamma.assign(nm, 0.0);
-  // z = Phi^T M^{1/2} q over the free dofs; gamma_k = sum_q w_q phi_k[d_q] / sqrt(m_{d_q}).
-  std::vector<PetscReal> sy(n), sv(n), gw(n, 0.0);
+  // z = Phi^T M^{1/2} q over the free dofs.
+  std::vector<PetscReal> sy(n), sv(n);
   for (PetscInt d = 0; d < n; ++d) {
     const PetscReal sm = std::sqrt(m.S.mass[d]);
     sy[d]              = sm * s.y[m.S.dof[d]];
     sv[d]              = sm * s.v[m.S.dof[d]];
-    for (PetscInt q = 0; q < g.n; ++q)
-      if (m.S.dof[d] == g.dof[q]) gw[d] += g.w[q] / sm;
   }
   for (PetscInt k = 0; k < nm; ++k) {
     const PetscReal *phi = &m.B.Phi[(size_t)k * n];
-    PetscReal        a = 0, b = 0, c = 0;
+    PetscReal        a = 0, b = 0;
     for (PetscInt d = 0; d < n; ++d) {
       a += phi[d] * sy[d];
       b += phi[d] * sv[d];
-      c += phi[d] * gw[d];
     }
-    ff->z[k]     = a;
-    ff->zd[k]    = b;
-    ff->gamma[k] = c;
+    ff->z[k]  = a;
+    ff->zd[k] = b;
   }
-  ff->energy0 = ModalEnergyOf(m, ff->z, ff->zd);
-  ff->L1      = std::abs(ff->vb0);
-  ff->L2      = 0;
-  for (PetscInt k = 0; k < nm; ++k) {
-    if (ff->gamma[k] == 0.0) continue;
-    ff->L1 += std::abs(ff->gamma[k]) * ModeSup(m, k, ff->z[k], ff->zd[k], 1);
-    ff->L2 += std::abs(ff->gamma[k]) * ModeSup(m, k, ff->z[k], ff->zd[k], 2);
-  }
+  FreeFlightCouple(g, ff);
+}
+
+void FreeFlightStartModal(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const ModalState &s, FreeFlight *ff)
+{
+  *ff             = FreeFlight();
+  ff->modes       = modes;
+  ff->t0          = t0;
+  ff->yb0         = s.ball_y;
+  ff->vb0         = s.ball_v;
+  ff->dissipated0 = s.dissipated;
+  ff->z           = s.z;
+  ff->zd          = s.zd;
+  FreeFlightCouple(g, ff);
 }
 
 PetscReal FreeFlightCompression(const FreeFlight &ff, PetscReal s, int p, PetscReal *mag)
@@ -222,6 +259,23 @@ void FreeFlightState(const FreeFlight &ff, PetscReal s, FullState *out)
   out->ball_y     = ff.yb0 + ff.vb0 * s;
   out->ball_v     = ff.vb0;
   out->dissipated = ff.dissipated0 + (m.sys.Damped() ? ff.energy0 - ModalEnergyOf(m, zs, zds) : 0.0);
+}
+
+void FreeFlightModalState(const FreeFlight &ff, PetscReal s, ModalState *out)
+{
+  const BeamModes &m  = *ff.modes;
+  const PetscInt   nm = m.Count();
+  PetscReal        d[3];
+  out->z.resize(nm);
+  out->zd.resize(nm);
+  for (PetscInt k = 0; k < nm; ++k) {
+    ModeAt(m, k, ff.z[k], ff.zd[k], s, d);
+    out->z[k]  = d[0];
+    out->zd[k] = d[1];
+  }
+  out->ball_y     = ff.yb0 + ff.vb0 * s;
+  out->ball_v     = ff.vb0;
+  out->dissipated = ff.dissipated0 + (m.sys.Damped() ? ff.energy0 - ModalEnergyOf(m, out->z, out->zd) : 0.0);
 }
 
 std::vector<ModeEnergy> FreeFlightModeEnergies(const FreeFlight &ff, PetscReal s)

@@ -42,6 +42,9 @@ PetscErrorCode StepperGatherState(Stepper &st, const BeamSystem &sys, FullState 
 // Projects the state s at time t0 on the modes; g: the ball's coupling.
 void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const FullState &s, FreeFlight *ff);
 
+// The same from a state already in those modes (the stepper's own, Stepper::GetModalState): O(modes).
+void FreeFlightStartModal(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const ModalState &s, FreeFlight *ff);
+
 // d^p c / ds^p at s (p = 0, 1, 2); *mag (if given): the sum of the magnitudes of its terms.
 PetscReal FreeFlightCompression(const FreeFlight &ff, PetscReal s, int p, PetscReal *mag = nullptr);
 
@@ -51,6 +54,8 @@ bool FreeFlightFirstContact(FreeFlight &ff, PetscReal s_end, PetscReal s_min, Pe
 
 // The exact state at s (time t0 + s).
 void FreeFlightState(const FreeFlight &ff, PetscReal s, FullState *out);
+// The same in the modes (O(modes), for Stepper::SetModalState).
+void FreeFlightModalState(const FreeFlight &ff, PetscReal s, ModalState *out);
 
 // The energy each kept mode carries at s (ModeEnergy: frequency, energy, rigid; the fraction is
 // the outcome's). Their sum is the beam's kinetic and strain energy of FreeFlightState(ff, s).

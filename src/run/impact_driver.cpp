@@ -165,10 +165,16 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
 
   PetscFunctionBeginUser;
   if (!modes) PetscCall(BeamModesShared(st.Comm(), sys, truncation, &modes));
-  PetscCall(StepperGatherState(st, sys, &s0));
   const PetscReal t0 = st.Time();
+  ModalState      m0;
+  bool            in_modes; // the stepper's own modes (-ts_type modal): no projection either way
+  PetscCall(st.GetModalState(*modes, &m0, &in_modes));
   if (series) PetscCall(rec.Record(t0)); // the separation itself, as a stepped run records it
-  FreeFlightStart(modes, g, t0, s0, &ff);
+  if (in_modes) FreeFlightStartModal(modes, g, t0, m0, &ff);
+  else {
+    PetscCall(StepperGatherState(st, sys, &s0));
+    FreeFlightStart(modes, g, t0, s0, &ff);
+  }
   PetscReal pair[2] = {0, 0};
   if (FreeFlightFirstContact(ff, t_stop - t0, s_min, &root)) pair[0] = 1, pair[1] = root;
   PetscCallMPI(MPI_Bcast(pair, 2, MPIU_REAL, 0, st.Comm())); // one decision on every rank
@@ -188,10 +194,17 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
       if (tn < ts) --k; // a snapshot first: the sample is still due
     }
   }
-  FreeFlightState(ff, t_end - t0, &s);
   if (*again) energies->clear();
   else *energies = FreeFlightModeEnergies(ff, t_end - t0);
-  PetscCall(st.SetState(t_end, s));
+  bool set = false;
+  if (in_modes) {
+    FreeFlightModalState(ff, t_end - t0, &m0);
+    PetscCall(st.SetModalState(t_end, *modes, m0, &set));
+  }
+  if (!set) {
+    FreeFlightState(ff, t_end - t0, &s);
+    PetscCall(st.SetState(t_end, s));
+  }
   PetscCall(st.Restart());
   PetscFunctionReturn(0);
 }

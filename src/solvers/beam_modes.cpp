@@ -114,18 +114,21 @@ static double FactoredPrecisionIndex(const BeamSystem &sys)
   return std::numeric_limits<double>::epsilon() * std::sqrt(StiffnessSpread(sys)) / sys.frequency_unit;
 }
 
+bool BeamModesFactoredForm(const BeamSystem &sys, BeamFactor *F) { return ModesPrecisionIndex(sys) > kFactoredSwitch && BeamFactorCreate(sys, F); }
+
 // The factored form the modes of sys come from (see above), or null (the primal path: K).
 static std::shared_ptr<const BeamFactor> FactoredFormFor(const BeamSystem &sys)
 {
-  if (!(ModesPrecisionIndex(sys) > kFactoredSwitch)) return nullptr;
   auto F = std::make_shared<BeamFactor>();
-  if (!BeamFactorCreate(sys, F.get())) return nullptr;
+  if (!BeamModesFactoredForm(sys, F.get())) return nullptr;
   return F;
 }
 
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 {
   if (!ForceOperatorModal(sys, nullptr, nullptr, why)) return false; // a force term the modes cannot carry (the grip: a drive in time, a damper not proportional)
+  for (const auto &m : cache) // modes built for the same beam (a sweep's next point): available, without building its factor again (O(N), 15 ms at N = 40961)
+    if (SameBeam(m->sys, sys)) return true;
   const double index = ModesPrecisionIndex(sys);
   if (index > kModesPrecisionLimit) {
     BeamFactor  F;
@@ -504,13 +507,22 @@ PetscErrorCode BeamModes::StaticCorrection(const ContactCoupling &g, const Modal
     }
     c->ur     = u;
     PetscReal kept = 0;
+    // g_k = f . M^{-1/2} phi_k over the loaded dofs only (f's other entries are zeros: the same
+    // sum), the square roots once (the same quotients); the kept modes' static part taken off ur.
+    std::vector<PetscReal> sm(n);
+    std::vector<PetscInt>  loaded;
+    for (PetscInt d = 0; d < n; ++d) {
+      sm[d] = std::sqrt(S.mass[d]);
+      if (f[d] != 0.0) loaded.push_back(d);
+    }
+    PetscReal *ur = c->ur.data();
     for (PetscInt k = rigid; k < count; ++k) {
       const PetscReal *phi = &B.Phi[(size_t)k * n];
       PetscReal        gk  = 0;
-      for (PetscInt d = 0; d < n; ++d) gk += f[d] * phi[d] / std::sqrt(S.mass[d]);
+      for (PetscInt d : loaded) gk += f[d] * phi[d] / sm[d];
       const PetscReal a = gk / (B.omega[k] * B.omega[k]);
       kept += gk * a;
-      for (PetscInt d = 0; d < n; ++d) c->ur[d] -= a * phi[d] / std::sqrt(S.mass[d]);
+      for (PetscInt d = 0; d < n; ++d) ur[d] -= a * phi[d] / sm[d];
     }
     c->Gr = std::max<PetscReal>(0.0, c->G - kept);
   }

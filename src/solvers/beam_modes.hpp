@@ -117,6 +117,11 @@ PetscInt BeamModesCountBelow(const BeamSystem &sys, PetscReal omega);
 // modal: no grip); if not, *why says so. Any size: a truncated basis has no size limit, the
 // dense one a memory check (BeamModesShared).
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why);
+// Whether the modes of sys come from the factored form (solvers/beam_flexibility.hpp) when fewer
+// than all are asked: where the primal path's round-off index passes its switch (N > ~4000 for
+// the paper's beam) and the structure is statically determinate; then *F is its factor. The
+// truncated engine and -task modes take the same choice.
+bool BeamModesFactoredForm(const BeamSystem &sys, BeamFactor *F);
 
 // The beam's modes, from the cache when the same system was decomposed before in this
 // process with the same truncation, else computed (collectively on comm) and cached (the last

@@ -3,6 +3,7 @@
 #include "solvers/modes.hpp"
 
 #include "solvers/beam_flexibility.hpp"
+#include "solvers/beam_modes.hpp"
 
 #include <slepceps.h>
 
@@ -301,6 +302,16 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "BeamModesCompute: out must not be NULL");
   PetscCheck(op.ndof >= 3 && op.frequency_unit > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.ndof && (PetscInt)op.held.size() == op.ndof, comm, PETSC_ERR_ARG_WRONG,
              "BeamModesCompute: the beam system is not built (%" PetscInt_FMT " dofs, frequency unit %g rad/s, L = %g)", op.ndof, (double)op.frequency_unit, (double)op.L);
+  {
+    BeamFactor F; // a fine grid of a statically determinate beam: the factored form, as the modal engine takes it (beam_modes.hpp)
+    if (BeamModesFactoredForm(op, &F)) {
+      PetscCall(BeamModesLowestFactored(comm, op, F, count, 0, &lambda, &phis));
+      for (std::vector<PetscReal> &phi : phis) ModeNormalise(op, phi); // the sign convention (already mass-normalised)
+      ModesReport(op, lambda, phis, out, shapes);
+      out->method = "factored form";
+      PetscFunctionReturn(0);
+    }
+  }
   PetscCall(ModesEnsureSlepc());
   PetscCall(ModesProblemAssemble(comm, op, count, &pb));
   PetscCall(ModesSolverCreate(comm, pb, count, op.frequency_unit, &eps));
@@ -309,6 +320,7 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "BeamModesCompute: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " modes requested by -modes_count", nconv, count);
   PetscCall(ModesExtract(comm, eps, op, pb, count, &lambda, &phis));
   ModesReport(op, lambda, phis, out, shapes);
+  out->method = "shift-and-invert on K";
   {
     const PetscInt want = std::min(count, BeamSystemRigidCount(op));
     if (out->rigid_count < want) {

@@ -22,6 +22,7 @@
 
 #include <petscsys.h>
 
+#include <string>
 #include <vector>
 
 namespace beamimpact {
@@ -51,6 +52,9 @@ struct ModesResult {
   // fields holding most of its kinetic energy: 0 the beam's bending, n a shell harmonic's, 2 the
   // hoop oscillator; empty without a wall.
   std::vector<PetscInt>  shell_n;
+  // How they were found: "shift-and-invert on K" (SLEPc on the stiffness), or "factored form"
+  // (a fine grid of a statically determinate beam: BeamModesFactoredForm, beam_modes.hpp).
+  std::string            method;
 };
 
 // Relative threshold for rigid modes: a computed mode is rigid (reported as
@@ -74,7 +78,11 @@ PetscInt BeamFreeDofCount(const BeamSystem &op);
 // with |phi_i| > 1e-3 max_d |phi_d| is positive.
 // Degenerate modes (the two free-free rigid modes) are an arbitrary
 // M-orthonormal basis of their space.
-// The EPS takes options with the prefix "modes_" (e.g. -modes_eps_view).
+// The EPS takes options with the prefix "modes_" (e.g. -modes_eps_view). On a fine grid of a
+// statically determinate beam (BeamModesFactoredForm: N > ~4000 for the paper's free beam) the
+// modes come from the factored form instead (BeamModesLowestFactored, serial on each rank; the
+// -modes_eps_* options are not read), as the modal engine's do: shift-and-invert on K loses them
+// to round-off there (out->method says which).
 PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out,
                                 std::vector<std::vector<PetscReal>> *shapes = nullptr);
 

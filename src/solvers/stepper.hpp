@@ -30,6 +30,14 @@ struct FullState {
   PetscReal              ball_y = 0, ball_v = 0, dissipated = 0;
 };
 
+// The state in the modes of a basis (solvers/beam_modes.hpp, mass-normalised: the beam's free
+// dofs are M^{-1/2} Phi z): the amplitudes and their rates per kept mode, the ball, and the
+// energy dissipated by the beam's damping since t = 0 (J). The same on every rank.
+struct ModalState {
+  std::vector<PetscReal> z, zd;          // m kg^{1/2}, m kg^{1/2}/s per mode
+  PetscReal              ball_y = 0, ball_v = 0, dissipated = 0;
+};
+
 // What the stepper itself counted.
 struct StepperCounts {
   PetscInt rejected_steps = 0; // rejected by the error controller
@@ -76,6 +84,22 @@ public:
   // run/free_flight.hpp). Each rank takes its owned part. The caller calls Restart() before
   // stepping on from it; reading it (views, measures) needs nothing more. Not undone by RollBack.
   virtual PetscErrorCode SetState(PetscReal t, const FullState &s) = 0;
+  // The same in the modes `m`, for a stepper that integrates in exactly that basis (-ts_type
+  // modal, when the free flight's modes are its own): O(modes), no projection through the
+  // physical state (which is written from the modes when read). *done false for any other
+  // stepper or basis: then use the physical state (ViewBegin, SetState). Collective.
+  virtual PetscErrorCode GetModalState(const BeamModes &m, ModalState *s, bool *done)
+  {
+    (void)m, (void)s;
+    *done = false;
+    return 0;
+  }
+  virtual PetscErrorCode SetModalState(PetscReal t, const BeamModes &m, const ModalState &s, bool *done)
+  {
+    (void)t, (void)m, (void)s;
+    *done = false;
+    return 0;
+  }
 };
 
 } // namespace beamimpact

@@ -733,6 +733,43 @@ PetscErrorCode Compression_Modal(TS ts, PetscReal *c, PetscReal *cdot)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode GetState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb)
+{
+  ModalTS &m = *Data(ts);
+
+  PetscFunctionBeginUser;
+  PetscCall(Reconcile(ts));
+  z->assign(m.z.begin(), m.z.end());
+  zd->assign(m.zd.begin(), m.zd.end());
+  *yb = m.yb;
+  *vb = m.vb;
+  PetscFunctionReturn(0);
+}
+
+// The modal state replaced; the physical vector left as it is, marked stale (written from the
+// modes at its next read) and its object state recorded, so that Reconcile does not take it
+// for an outside write and project it back.
+PetscErrorCode SetState_Modal(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb, PetscReal vb)
+{
+  ModalTS &m = *Data(ts);
+  Vec      X = ts->vec_sol;
+
+  PetscFunctionBeginUser;
+  PetscCheck(m.P && X && (PetscInt)z.size() == m.n && (PetscInt)zd.size() == m.n, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_SIZ,
+             "TS modal: a modal state of %zu modes set on a TS with %" PetscInt_FMT " (not set up, or another basis)", z.size(), m.n);
+  m.z.assign(z.begin(), z.end());
+  m.zd.assign(zd.begin(), zd.end());
+  m.yb         = yb;
+  m.vb         = vb;
+  m.have_modal = true;
+  m.have_step  = false;
+  m.c_valid    = false;
+  m.phys_valid = false;
+  PetscCall(PetscObjectGetId((PetscObject)X, &m.vec_id));
+  PetscCall(PetscObjectStateGet((PetscObject)X, &m.vec_state));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode DissipationRate_Modal(TS ts, PetscReal *rate, PetscReal *rate_dot)
 {
   ModalTS &m = *Data(ts);
@@ -762,6 +799,8 @@ PetscErrorCode TSDestroy_Modal(TS ts)
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalCompression_C", nullptr));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalDissipationRate_C", nullptr));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalNewPoint_C", nullptr));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetState_C", nullptr));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSetState_C", nullptr));
   PetscFunctionReturn(0);
 }
 
@@ -896,6 +935,8 @@ PetscErrorCode TSCreate_Modal(TS ts)
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalCompression_C", Compression_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalDissipationRate_C", DissipationRate_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalNewPoint_C", NewPoint_Modal));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetState_C", GetState_Modal));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSetState_C", SetState_Modal));
   PetscFunctionReturn(0);
 }
 
@@ -957,6 +998,28 @@ std::shared_ptr<const BeamModes> TSModalModes(TS ts)
   const char *type = nullptr;
   if (!ts || TSGetType(ts, &type) || !type || !TSModalIsType(type) || !ts->data) return nullptr;
   return Data(ts)->modes;
+}
+
+PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done)
+{
+  PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *, PetscReal *) = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalGetState_C", &f));
+  *done = f ? PETSC_TRUE : PETSC_FALSE;
+  if (f) PetscCall((*f)(ts, z, zd, yb, vb));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb, PetscReal vb, PetscBool *done)
+{
+  PetscErrorCode (*f)(TS, const std::vector<PetscReal> &, const std::vector<PetscReal> &, PetscReal, PetscReal) = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalSetState_C", &f));
+  *done = f ? PETSC_TRUE : PETSC_FALSE;
+  if (f) PetscCall((*f)(ts, z, zd, yb, vb));
+  PetscFunctionReturn(0);
 }
 
 } // namespace beamimpact

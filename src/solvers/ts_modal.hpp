@@ -39,6 +39,7 @@
 #include <petscts.h>
 
 #include <memory>
+#include <vector>
 
 #define TSMODAL "modal"
 
@@ -61,5 +62,12 @@ PetscErrorCode TSModalDissipationRate(TS ts, PetscReal *rate, PetscReal *rate_do
 PetscErrorCode TSModalNewPoint(TS ts);
 // The beam's modes the TS integrates in (null for any other type, or before its set-up).
 std::shared_ptr<const BeamModes> TSModalModes(TS ts);
+// The modal state in those modes (z, zd per kept mode; the ball), an outside write of the
+// physical vector projected first. O(modes). Collective; *done false for any other type.
+PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done);
+// Replaces the modal state by (z, zd, yb, vb) in those modes (the exact free flight's end,
+// run/free_flight.hpp): O(modes); the physical vector is written from it when next read (no
+// projection). The caller sets the time and restarts. Collective; *done false for any other type.
+PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb, PetscReal vb, PetscBool *done);
 
 } // namespace beamimpact

@@ -253,6 +253,8 @@ public:
   }
   PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) override;
   PetscErrorCode SetState(PetscReal t, const FullState &s) override;
+  PetscErrorCode GetModalState(const BeamModes &m, ModalState *s, bool *done) override;
+  PetscErrorCode SetModalState(PetscReal t, const BeamModes &m, const ModalState &s, bool *done) override;
   PetscErrorCode ViewBegin(StateView *v) override;
   PetscErrorCode ViewEnd(StateView *v) override;
   PetscErrorCode GatherDisplacement(std::vector<PetscReal> *y) override;
@@ -338,6 +340,35 @@ PetscErrorCode TSStepper::SetState(PetscReal t, const FullState &s)
   }
   PetscCall(TSSetTime(ts, t));
   if (damped) D.Set(s.dissipated);
+  PetscFunctionReturn(0);
+}
+
+// -ts_type modal in the basis m: its own modal state, no projection (ts_modal.hpp).
+PetscErrorCode TSStepper::GetModalState(const BeamModes &m, ModalState *s, bool *done)
+{
+  PetscBool ok = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  *done = false;
+  if (TSModalModes(ts).get() != &m) PetscFunctionReturn(0);
+  PetscCall(TSModalGetState(ts, &s->z, &s->zd, &s->ball_y, &s->ball_v, &ok));
+  s->dissipated = D.dissipated;
+  *done         = ok;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::SetModalState(PetscReal t, const BeamModes &m, const ModalState &s, bool *done)
+{
+  PetscBool ok = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  *done = false;
+  if (TSModalModes(ts).get() != &m) PetscFunctionReturn(0);
+  PetscCall(TSModalSetState(ts, s.z, s.zd, s.ball_y, s.ball_v, &ok));
+  if (!ok) PetscFunctionReturn(0);
+  PetscCall(TSSetTime(ts, t));
+  if (damped) D.Set(s.dissipated);
+  *done = true;
   PetscFunctionReturn(0);
 }
 
