@@ -10,7 +10,8 @@
 #   fixed to a wall. Here: a 30 cm solid ash cylinder of 3 in (options/bats/cylinder-3in.profile),
 #   clamped at both ends, struck at its middle; offsets 0 to 1.5 in; mu 0.5; e_T 0.2 and 0.4.
 # kensrud2017: Kensrud, Nathan & Smith, Sports Eng. (2017): a bat swung at 75 mph at the impact
-#   point onto a ball at rest. Here: the R161 (the ball at 1 m/s: at 0 the normal run is cut off) (Timoshenko, free) turning about its knob at
+#   point onto a ball at rest. Here: the R161 (Timoshenko, free) struck with the ball at rest
+#   (-ball_speed 0: the run's contact scales come from the bat's approach speed), turning about its knob at
 #   48.55 rad/s (V_cm 27.25 m/s), struck 15 cm from the tip (x = 0.69 m); offsets 0 to 1.5 in;
 #   mu 0.5; e_T 0.4 (their "up to 40 % above rolling").
 # Each row: the program (-impact_tangential_plane flexible and rigid) and the impulse model with
@@ -46,7 +47,7 @@ if [[ $what == all || $what == nathan2012 ]]; then
   "$PY" scripts/study_oblique.py nathan2012 "$OUT"
 fi
 if [[ $what == all || $what == kensrud2017 ]]; then
-  BAT=(-options_file options/bats/r161.opts -beam_theory timoshenko -bat_speed 27.25 -bat_angular_velocity 48.55 -ball_speed 1 -impact_x 0.69 -ball_tangential_cor 0.4)
+  BAT=(-options_file options/bats/r161.opts -beam_theory timoshenko -bat_speed 27.25 -bat_angular_velocity 48.55 -ball_speed 0 -impact_x 0.69 -ball_tangential_cor 0.4)
   sweep kensrud "${BAT[@]}" -sweep "$OFFSETS"
   sweep kensrud-rigid "${BAT[@]}" -impact_tangential_plane rigid -sweep "$OFFSETS"
   "$PY" scripts/study_oblique.py kensrud2017 "$OUT"

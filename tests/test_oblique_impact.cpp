@@ -11,8 +11,9 @@
 //   * the refusals: a strip (no radius), an offset that misses the bat, -reference modal with a
 //     nonlinear law (the reason is the law, not the obliqueness);
 //   * -reference modal on an oblique impact (the linear law): the exact run along the normal
-//     drives the tangential contact and the second plane; rk4's outputs converge to it at order 2
-//     (the tangential contact takes F_n linear between steps), the normal ones far below.
+//     drives the tangential contact and the second plane; rk4's outputs agree with it to 1e-12
+//     at 2e-7 s, and the spin converges at the integrator's order (rk4 4, cn 2: the tangential
+//     contact takes F_n as the cubic Hermite of the steps' forces and rates).
 #include "run/reference.hpp"
 #include "run/results_table.hpp"
 #include "run/scenario.hpp"
@@ -209,9 +210,10 @@ TEST(ObliqueImpact, TangentialRestitutionOnTheBat)
 
 // -reference modal on an oblique impact: the swinging R161 (85 nodes, Euler-Bernoulli) and a
 // baseball of linear stiffness 2e6 N/m, an undercut of 1.5 cm, 150 rad/s of incoming backspin,
-// mu 0.5, e_T 0.3, the bat flexible in both planes. The normal outputs of rk4 at 2e-7 s agree
-// with the exact ones to 1e-9 m/s; the tangential ones converge to the reference at order 2
-// (measured errors in the spin -1.54e-5, -3.74e-6, -8.3e-7 rad/s at 4e-7, 2e-7, 1e-7 s).
+// mu 0.5, e_T 0.3, the bat flexible in both planes. rk4 at 4e-7 and 2e-7 s agrees with the exact
+// run in every output: the tangential contact takes F_n as the cubic Hermite of the steps' forces
+// and rates, so the spin is within 1e-10 rad/s of the reference (it was -1.5e-5 and -3.7e-6 rad/s
+// with F_n linear between the steps).
 TEST(ObliqueImpact, ModalReferenceCarriesTheSecondPlane)
 {
   Scenario sc = LinearBallR161();
@@ -228,15 +230,47 @@ TEST(ObliqueImpact, ModalReferenceCarriesTheSecondPlane)
   const ImpactResult &e = ref.result;
   ASSERT_TRUE(std::isfinite(e.spin) && std::isfinite(e.bat_vibration_tangential));
   EXPECT_GT(e.spin, 150); // an undercut adds backspin
-  const ImpactResult coarse = RunRK4(sc, "4e-7"), fine = RunRK4(sc, "2e-7");
-  EXPECT_NEAR(fine.bbs, e.bbs, 1e-9 * e.bbs);
-  const PetscReal ec = coarse.spin - e.spin, ef = fine.spin - e.spin;
-  EXPECT_LT(std::abs(ef), 1e-7 * std::abs(e.spin)) << "rk4 at 2e-7 s against the reference";
-  EXPECT_GT(std::abs(ec / ef), 3.0) << "order 2: " << ec << " then " << ef;
-  EXPECT_LT(std::abs(ec / ef), 5.5) << "order 2: " << ec << " then " << ef;
-  EXPECT_NEAR(fine.launch_angle, e.launch_angle, 1e-6);
-  EXPECT_NEAR(fine.exit_speed, e.exit_speed, 1e-8 * e.exit_speed);
-  EXPECT_NEAR(fine.bat_vibration_tangential, e.bat_vibration_tangential, 1e-6 * e.bat_vibration_tangential);
+  for (const char *dt : {"4e-7", "2e-7"}) {
+    const ImpactResult r = RunRK4(sc, dt);
+    EXPECT_NEAR(r.bbs, e.bbs, 1e-9 * e.bbs) << dt;
+    EXPECT_NEAR(r.spin, e.spin, 1e-12 * e.spin) << "rk4 at " << dt << " s against the reference";
+    EXPECT_NEAR(r.launch_angle, e.launch_angle, 1e-10) << dt;
+    EXPECT_NEAR(r.exit_speed, e.exit_speed, 1e-10 * e.exit_speed) << dt;
+    EXPECT_NEAR(r.bat_vibration_tangential, e.bat_vibration_tangential, 1e-9 * e.bat_vibration_tangential) << dt;
+  }
+}
+
+// The tangential outputs converge at the integrator's order: the same impact on 21 nodes (rk4's
+// stability limit 1.5e-5 s), mu 0.05 (the ball slips through most of the contact, so the spin
+// follows the normal force's impulse), against the modal reference. rk4 at 1.2e-5 and 6e-6 s:
+// spin errors -4.7e-5, -3.3e-6 rad/s, a ratio of 14 (order 4; with F_n linear between the steps
+// they were -4.6e-2, -7.8e-3); cn at 2.4e-5 and 1.2e-5 s: a ratio near 4 (order 2).
+TEST(ObliqueImpact, SpinConvergesAtTheIntegratorsOrder)
+{
+  Scenario sc = LinearBallR161();
+  sc.beam.nodes          = 21;
+  sc.ball.speed          = 40;
+  sc.impact.offset       = 0.015;
+  sc.ball.spin           = 150;
+  sc.ball.friction       = 0.05;
+  sc.ball.tangential_cor = 0.3;
+  ReferenceSolution ref;
+  ASSERT_EQ(0, ReferenceMethodFind("modal")->run(PETSC_COMM_WORLD, sc, ReferenceSettings(), &ref));
+  const PetscReal s = ref.result.spin;
+  const PetscReal e1 = RunRK4(sc, "1.2e-5").spin - s, e2 = RunRK4(sc, "6e-6").spin - s;
+  EXPECT_GT(std::abs(e1 / e2), 10) << "rk4, order 4: " << e1 << " then " << e2;
+  EXPECT_LT(std::abs(e1 / e2), 24) << "rk4, order 4: " << e1 << " then " << e2;
+  auto cn = [&](const char *dt) {
+    const std::vector<std::pair<std::string, std::string>> o = {{"-ts_type", "cn"}, {"-ts_dt", dt}};
+    for (auto &kv : o) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
+    ImpactResult r;
+    EXPECT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &r));
+    for (auto &kv : o) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
+    return r.spin - s;
+  };
+  const PetscReal c1 = cn("2.4e-5"), c2 = cn("1.2e-5");
+  EXPECT_GT(std::abs(c1 / c2), 3.3) << "cn, order 2: " << c1 << " then " << c2;
+  EXPECT_LT(std::abs(c1 / c2), 5) << "cn, order 2: " << c1 << " then " << c2;
 }
 
 // A ball at rest struck by the swinging bat (-ball_speed 0), -ts_type modal: its modes are chosen

@@ -68,26 +68,27 @@ PetscReal FirstPositive(F f, PetscReal b, PetscInt n)
   return -1;
 }
 
-// One stretch of slip from sigma = 0 (force F_a, slope dF) for at most sigma_max: how long it
-// lasts (sigma_max if it does not end), and the state moved to its end. The spring, if any, is
-// held at its limit, xi = s mu l (k_t |xi| = mu F_n), so the sliding rate is u itself.
-PetscReal SlipStretch(const TangentialModel &m, PetscReal m_e, PetscReal Fa, PetscReal dF, PetscReal sigma_max, TangentialState *s)
+// One stretch of slip from sigma = 0 (F_n the cubic F from there) for at most sigma_max: how long
+// it lasts (sigma_max if it does not end), and the state moved to its end. The spring, if any,
+// is held at its limit, xi = s mu l (k_t |xi| = mu F_n), so the sliding rate is u itself.
+PetscReal SlipStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic &F, PetscReal sigma_max, TangentialState *s)
 {
   const PetscReal mu = m.friction, l = m.compliance_length, sg = (PetscReal)s->slip_sign, ua = s->u;
-  auto            F     = [&](PetscReal x) { return Fa + dF * x; };
-  auto            u     = [&](PetscReal x) { return ua - sg * mu / m_e * (Fa * x + 0.5 * dF * x * x); };
+  auto            u     = [&](PetscReal x) { return ua - sg * mu / m_e * F.Integral(x); };
   auto            srate = [&](PetscReal x) { return sg * u(x); };
   PetscReal       end   = srate(0) <= 0 ? 0 : FirstPositive([&](PetscReal x) { return -srate(x); }, sigma_max, 16);
   const bool      grips = end >= 0;
   if (!grips) end = sigma_max;
-  // mu F s u is a cubic in sigma: Simpson's rule is exact.
-  auto rate = [&](PetscReal x) { return mu * F(x) * std::max<PetscReal>(srate(x), 0); };
-  s->dissipated += end / 6 * (rate(0) + 4 * rate(0.5 * end) + rate(end));
-  s->impulse += -sg * mu * (Fa * end + 0.5 * dF * end * end);
+  // mu F s u is a polynomial of degree 7 in sigma: 4-point Gauss is exact.
+  static const PetscReal gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  static const PetscReal gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  auto                   rate  = [&](PetscReal x) { return mu * F(x) * std::max<PetscReal>(srate(x), 0); };
+  for (int i = 0; i < 4; ++i) s->dissipated += 0.5 * end * gw[i] * rate(0.5 * end * (1 + gx[i]));
+  s->impulse += -sg * mu * F.Integral(end);
   s->u = u(end);
   if (l > 0) {
     s->xi = sg * mu * l;
-    s->stiffness_work += 0.5 * dF / l * s->xi * s->xi * end; // the spring's stiffness F_n/l changes under a fixed stretch
+    s->stiffness_work += 0.5 * (F(end) - F(0)) / l * s->xi * s->xi; // the spring's stiffness F_n/l changes under a fixed stretch
   }
   if (grips) {
     s->phase = TangentialPhase::Grip;
@@ -96,24 +97,25 @@ PetscReal SlipStretch(const TangentialModel &m, PetscReal m_e, PetscReal Fa, Pet
   return end;
 }
 
-// The grip of a compliant contact on [0, sigma]: xi' = u, u' = -F(t) xi / (l m_e), with the
-// integral of xi^2 (for the stiffness's work), by classical Runge-Kutta in n steps.
+// The grip of a compliant contact on [0, sigma] (F_n the cubic F): xi' = u, u' = -F(t) xi /
+// (l m_e), with the integral of dF/dt xi^2 (for the stiffness's work), by classical Runge-Kutta
+// in n steps.
 struct GripState {
-  PetscReal xi = 0, u = 0, xi2 = 0;
+  PetscReal xi = 0, u = 0, fxi2 = 0;
 };
-GripState GripIntegrate(PetscReal l_me, PetscReal Fa, PetscReal dF, GripState y, PetscReal sigma, PetscInt n)
+GripState GripIntegrate(PetscReal l_me, const ForceCubic &F, GripState y, PetscReal sigma, PetscInt n)
 {
   const PetscReal h = sigma / n;
   auto            f = [&](PetscReal x, const GripState &z) {
     GripState d;
-    d.xi  = z.u;
-    d.u   = -(Fa + dF * x) / l_me * z.xi;
-    d.xi2 = z.xi * z.xi;
+    d.xi   = z.u;
+    d.u    = -F(x) / l_me * z.xi;
+    d.fxi2 = F.Rate(x) * z.xi * z.xi;
     return d;
   };
   auto axpy = [](const GripState &z, PetscReal a, const GripState &d) {
     GripState r;
-    r.xi = z.xi + a * d.xi, r.u = z.u + a * d.u, r.xi2 = z.xi2 + a * d.xi2;
+    r.xi = z.xi + a * d.xi, r.u = z.u + a * d.u, r.fxi2 = z.fxi2 + a * d.fxi2;
     return r;
   };
   for (PetscInt k = 0; k < n; ++k) {
@@ -121,22 +123,22 @@ GripState GripIntegrate(PetscReal l_me, PetscReal Fa, PetscReal dF, GripState y,
     const GripState k1 = f(x, y), k2 = f(x + h / 2, axpy(y, h / 2, k1)), k3 = f(x + h / 2, axpy(y, h / 2, k2)), k4 = f(x + h, axpy(y, h, k3));
     y.xi += h / 6 * (k1.xi + 2 * k2.xi + 2 * k3.xi + k4.xi);
     y.u += h / 6 * (k1.u + 2 * k2.u + 2 * k3.u + k4.u);
-    y.xi2 += h / 6 * (k1.xi2 + 2 * k2.xi2 + 2 * k3.xi2 + k4.xi2);
+    y.fxi2 += h / 6 * (k1.fxi2 + 2 * k2.fxi2 + 2 * k3.fxi2 + k4.fxi2);
   }
   return y;
 }
 
 // Steps for a grip over sigma: 40 per radian of the fastest tangential oscillation, at least 4.
-PetscInt GripSteps(PetscReal l_me, PetscReal Fa, PetscReal dF, PetscReal sigma)
+PetscInt GripSteps(PetscReal l_me, const ForceCubic &F, PetscReal sigma)
 {
-  const PetscReal w = std::sqrt(std::max<PetscReal>(std::max(Fa, Fa + dF * sigma), 0) / l_me);
+  const PetscReal w = std::sqrt(std::max<PetscReal>(std::max(F(0), F(sigma)), 0) / l_me);
   return std::max<PetscInt>(4, (PetscInt)std::ceil(40 * w * sigma));
 }
 
 // One stretch of grip from sigma = 0. A compliant contact (l > 0): the spring k_t = F_n / l takes
 // the surfaces' relative motion until its stretch reaches the Coulomb limit |xi| = mu l; a rigid
 // grip (l = 0) keeps u = 0 and F_t = 0 to the end.
-PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, PetscReal Fa, PetscReal dF, PetscReal sigma_max, TangentialState *s)
+PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic &F, PetscReal sigma_max, TangentialState *s)
 {
   const PetscReal mu = m.friction, l = m.compliance_length, l_me = l * m_e;
   if (l == 0) {
@@ -144,22 +146,23 @@ PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, PetscReal Fa, Pet
     return sigma_max;
   }
   const PetscReal limit = mu * l;
-  const PetscInt  n     = GripSteps(l_me, Fa, dF, sigma_max);
+  const PetscInt  n     = GripSteps(l_me, F, sigma_max);
   const PetscReal h     = sigma_max / n;
   GripState       y;
   y.xi = s->xi, y.u = s->u;
   PetscReal end = sigma_max;
   bool      slips = false;
   for (PetscInt k = 0; k < n; ++k) { // step by step, so that the first crossing of the limit is found
-    const GripState z = GripIntegrate(l_me, Fa + dF * k * h, dF, y, h, 1);
+    const ForceCubic Fk = F.Shift(k * h);
+    const GripState  z  = GripIntegrate(l_me, Fk, y, h, 1);
     if (std::abs(z.xi) > limit) {
       PetscReal lo = 0, hi = h; // bisect the step's length onto the limit
       for (int it = 0; it < 200 && hi - lo > 1e-15 * h; ++it) {
         const PetscReal mid = 0.5 * (lo + hi);
-        if (std::abs(GripIntegrate(l_me, Fa + dF * k * h, dF, y, mid, 1).xi) > limit) hi = mid;
+        if (std::abs(GripIntegrate(l_me, Fk, y, mid, 1).xi) > limit) hi = mid;
         else lo = mid;
       }
-      y     = GripIntegrate(l_me, Fa + dF * k * h, dF, y, hi, 1);
+      y     = GripIntegrate(l_me, Fk, y, hi, 1);
       end   = k * h + hi;
       slips = true;
       break;
@@ -167,7 +170,7 @@ PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, PetscReal Fa, Pet
     y = z;
   }
   s->impulse += m_e * (y.u - s->u);
-  s->stiffness_work += 0.5 * dF / l * y.xi2;
+  s->stiffness_work += 0.5 / l * y.fxi2;
   s->u  = y.u;
   s->xi = y.xi;
   if (slips) {
@@ -180,9 +183,38 @@ PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, PetscReal Fa, Pet
 
 } // namespace
 
-PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F)
+ForceCubic ForceCubic::Shift(PetscReal a) const
+{
+  ForceCubic r;
+  r.c[0] = (*this)(a);
+  r.c[1] = Rate(a);
+  r.c[2] = c[2] + 3 * c[3] * a;
+  r.c[3] = c[3];
+  return r;
+}
+
+ForceCubic ForceCubic::Scaled(PetscReal k) const
+{
+  ForceCubic r;
+  for (int i = 0; i < 4; ++i) r.c[i] = k * c[i];
+  return r;
+}
+
+ForceCubic ForceCubic::Hermite(PetscReal h, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1)
+{
+  const PetscReal d = (F1 - F0) / h;
+  ForceCubic      r;
+  r.c[0] = F0;
+  r.c[1] = dF0;
+  r.c[2] = (3 * d - 2 * dF0 - dF1) / h;
+  r.c[3] = (dF0 + dF1 - 2 * d) / (h * h);
+  return r;
+}
+
+PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F, const std::vector<PetscReal> &dF)
 {
   const size_t n = std::min(t.size(), F.size());
+  const bool   rates = dF.size() >= n;
   // The grip throughout from xi = 0, u = 1: -u at the end.
   auto reversal = [&](PetscReal l) {
     GripState y;
@@ -190,8 +222,9 @@ PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::ve
     for (size_t k = 0; k + 1 < n; ++k) {
       const PetscReal h = t[k + 1] - t[k];
       if (!(h > 0)) continue;
-      const PetscReal F0 = std::max<PetscReal>(F[k], 0), F1 = std::max<PetscReal>(F[k + 1], 0), dF = (F1 - F0) / h;
-      y = GripIntegrate(l * m_e, F0, dF, y, h, GripSteps(l * m_e, F0, dF, h));
+      const PetscReal  F0 = std::max<PetscReal>(F[k], 0), F1 = std::max<PetscReal>(F[k + 1], 0), d = (F1 - F0) / h;
+      const ForceCubic Fk = F0 == 0 && F1 == 0 ? ForceCubic() : ForceCubic::Hermite(h, F0, F1, rates ? dF[k] : d, rates ? dF[k + 1] : d);
+      y = GripIntegrate(l * m_e, Fk, y, h, GripSteps(l * m_e, Fk, h));
     }
     return -y.u;
   };
@@ -213,23 +246,30 @@ PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::ve
 
 void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialState *s)
 {
+  const PetscReal d = t1 > t0 ? (F1 - F0) / (t1 - t0) : 0;
+  TangentialAdvance(m, t0, t1, F0, F1, d, d, s);
+}
+
+void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialState *s)
+{
   const PetscReal h = t1 - t0;
   if (!(h > 0)) return;
-  s->normal_impulse += 0.5 * h * (F0 + F1);
   if (F0 == 0 && F1 == 0) { // not touching: no tangential force, the spring (stiffness F_n / l) relaxed
     s->xi = 0;
     return;
   }
-  const PetscReal m_e = m.EffectiveMass(), dF = (F1 - F0) / h;
+  const ForceCubic Fn = ForceCubic::Hermite(h, F0, F1, dF0, dF1);
+  s->normal_impulse += Fn.Integral(h);
+  const PetscReal m_e = m.EffectiveMass();
   PetscReal       tau = 0;
   for (int it = 0; it < 200 && tau < h; ++it) {
     const TangentialPhase before = s->phase;
-    const PetscReal       Fa     = F0 + dF * tau;
     if (s->phase == TangentialPhase::Slip && s->slip_sign == 0) { // no slip yet: grip
       s->phase = TangentialPhase::Grip;
       continue;
     }
-    const PetscReal d = s->phase == TangentialPhase::Slip ? SlipStretch(m, m_e, Fa, dF, h - tau, s) : GripStretch(m, m_e, Fa, dF, h - tau, s);
+    const ForceCubic Fa = Fn.Shift(tau);
+    const PetscReal  d  = s->phase == TangentialPhase::Slip ? SlipStretch(m, m_e, Fa, h - tau, s) : GripStretch(m, m_e, Fa, h - tau, s);
     tau += d;
     if (s->phase != before) {
       TangentialSwitch sw;
@@ -239,9 +279,9 @@ void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, Pet
     }
   }
   if (tau < h) { // a grip/slip chatter at one instant (a degenerate touch): the rest of the piece in the phase reached
-    const PetscReal Fa = F0 + dF * tau;
-    if (s->phase == TangentialPhase::Slip) (void)SlipStretch(m, m_e, Fa, dF, h - tau, s);
-    else (void)GripStretch(m, m_e, Fa, dF, h - tau, s);
+    const ForceCubic Fa = Fn.Shift(tau);
+    if (s->phase == TangentialPhase::Slip) (void)SlipStretch(m, m_e, Fa, h - tau, s);
+    else (void)GripStretch(m, m_e, Fa, h - tau, s);
   }
 }
 
@@ -403,11 +443,129 @@ void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal z
   *qd = E.c * y0 + E.d * y1 + tau * P1.d * f0 + tau * tau * P2.d * f1;
 }
 
+namespace {
+
+// The response of a mode over tau (ModeKernelOf): (z, z')(tau) = [[zz, zv], [vz, vv]] (z, z')(0)
+// plus sum_k c_k (gz[k], gv[k]) under the force sum_k c_k s^k.
+struct ModeKernel {
+  PetscReal zz = 1, zv = 0, vz = 0, vv = 1;
+  PetscReal gz[4] = {0, 0, 0, 0}, gv[4] = {0, 0, 0, 0};
+  void Apply(PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal *q, PetscReal *qd) const
+  {
+    PetscReal fz = 0, fv = 0;
+    for (int k = 0; k < 4; ++k) fz += f.c[k] * gz[k], fv += f.c[k] * gv[k];
+    *q  = zz * z + zv * zd + fz;
+    *qd = vz * z + vv * zd + fv;
+  }
+};
+
+// P[j] = phi_j(X), j = 0..4, of X = tau [[0, w], [-w, -2 sigma]] (w > 0): the series where
+// |X| < 1; else e^X in closed form (ModeExponential) and phi_j = X^-1 (phi_(j-1) - I/(j-1)!).
+void ModePhi4(PetscReal w, PetscReal sigma, PetscReal tau, Mat2 P[5])
+{
+  const Mat2 X{0, w * tau, -w * tau, -2 * sigma * tau};
+  const PetscReal norm = tau * (w + 2 * sigma);
+  if (norm < 1) { // phi_4 by its series (to a term below 1e-18 of it), then phi_(j-1) = I/(j-1)! + X phi_j
+    Mat2      pw{1, 0, 0, 1};
+    PetscReal f = 1.0 / 24, size = 1; // 1/(i + 4)!, a bound on |X^i|
+    P[4] = Mat2();
+    for (int i = 0; i < 30 && f * size > 1e-18 / 24; ++i) {
+      P[4].a += f * pw.a, P[4].b += f * pw.b, P[4].c += f * pw.c, P[4].d += f * pw.d;
+      pw = pw * X;
+      f /= i + 5;
+      size *= 2 * norm;
+    }
+    const PetscReal inv_fact[4] = {1, 1, 0.5, 1.0 / 6};
+    for (int j = 4; j > 0; --j) {
+      const Mat2 xp = X * P[j];
+      P[j - 1]      = {inv_fact[j - 1] + xp.a, xp.b, xp.c, inv_fact[j - 1] + xp.d};
+    }
+    return;
+  }
+  ModeExponential(w, sigma, tau, &P[0], &P[1], &P[2]);
+  const PetscReal inv = 1 / (w * w * tau);
+  const auto      solve = [&](const Mat2 &r) { return Mat2{inv * (-2 * sigma * r.a - w * r.c), inv * (-2 * sigma * r.b - w * r.d), inv * (w * r.a), inv * (w * r.b)}; };
+  P[3] = solve({P[2].a - 0.5, P[2].b, P[2].c, P[2].d - 0.5});
+  P[4] = solve({P[3].a - 1.0 / 6, P[3].b, P[3].c, P[3].d - 1.0 / 6});
+}
+
+// The mode (w, sigma) over tau: its response to the state and to s^k, k = 0..3, exact: k! tau^(k+1)
+// phi_(k+1)(X) applied to (0, 1) in the scaled state (w z, z'); a rigid mode (w = 0) in closed form.
+ModeKernel ModeKernelOf(PetscReal w, PetscReal sigma, PetscReal tau)
+{
+  ModeKernel K;
+  PetscReal  fact[4] = {1, 1, 2, 6}, tk = tau; // k!, tau^(k+1)
+  if (w == 0 && !(sigma > 0)) { // z'' = f
+    K.zv = tau;
+    for (int k = 0; k < 4; ++k, tk *= tau) K.gv[k] = tk / (k + 1), K.gz[k] = tk * tau / ((k + 1) * (k + 2));
+    return K;
+  }
+  if (w == 0) { // z'' + 2 sigma z' = f: z' through phi_j(-2 sigma tau)
+    const PetscReal x = -2 * sigma * tau;
+    K.vv = PhiScalar(0, x);
+    K.zv = tau * PhiScalar(1, x);
+    for (int k = 0; k < 4; ++k, tk *= tau) K.gv[k] = fact[k] * tk * PhiScalar(k + 1, x), K.gz[k] = fact[k] * tk * tau * PhiScalar(k + 2, x);
+    return K;
+  }
+  Mat2 P[5];
+  ModePhi4(w, sigma, tau, P);
+  K.zz = P[0].a, K.zv = P[0].b / w, K.vz = P[0].c * w, K.vv = P[0].d;
+  for (int k = 0; k < 4; ++k, tk *= tau) K.gz[k] = fact[k] * tk * P[k + 1].b / w, K.gv[k] = fact[k] * tk * P[k + 1].d;
+  return K;
+}
+
+} // namespace
+
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal tau, PetscReal *q, PetscReal *qd)
+{
+  ModeKernelOf(w, std::max<PetscReal>(sigma, 0), tau).Apply(z, zd, f, q, qd);
+}
+
 TangentialState TangentialFlexibleStart(const TangentialModel &m, const TangentialPlane &p) { return TangentialStart(m, p.ball_side - p.PointVelocity()); }
 
 namespace {
 
-// A trial sub-step of length tau from the plane's state with F_t = Fa + dF s: the point's
+// The plane's modes over one length tau.
+struct PlaneKernels {
+  PetscReal               tau = 0;
+  std::vector<ModeKernel> mode;
+};
+
+} // namespace
+
+// The kernels of the last sub-step lengths (a fixed-step run's steps repeat the rest length and
+// its Gauss points), for the omega and sigma they were made for.
+struct TangentialKernelCache {
+  std::vector<PetscReal>                            omega, sigma;
+  std::vector<std::shared_ptr<const PlaneKernels>> entry; // at most kSize, replaced in turn
+  size_t                                            next = 0;
+  static constexpr size_t                           kSize = 8;
+};
+
+namespace {
+
+// The kernels over tau: from the cache where a length equal to tau to 1e-12 (the steps' lengths
+// are differences of times that carry that round-off) is kept, else computed and kept.
+std::shared_ptr<const PlaneKernels> PlaneKernelsOf(const TangentialPlane &p, PetscReal tau)
+{
+  if (!p.cache || p.cache->omega != p.omega || p.cache->sigma != p.sigma) {
+    p.cache        = std::make_shared<TangentialKernelCache>();
+    p.cache->omega = p.omega;
+    p.cache->sigma = p.sigma;
+  }
+  TangentialKernelCache &C = *p.cache;
+  for (const auto &e : C.entry)
+    if (std::abs(e->tau - tau) <= 1e-12 * tau) return e;
+  auto K  = std::make_shared<PlaneKernels>();
+  K->tau  = tau;
+  K->mode.resize(p.omega.size());
+  for (size_t k = 0; k < p.omega.size(); ++k) K->mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
+  if (C.entry.size() < TangentialKernelCache::kSize) C.entry.push_back(K);
+  else C.entry[C.next++ % TangentialKernelCache::kSize] = K;
+  return K;
+}
+
+// A trial sub-step of length K.tau from the plane's state with the cubic F_t = f(s): the point's
 // displacement change and end velocity, the ball side at the end and its integral.
 struct PlaneTrial {
   PetscReal disp = 0, vel = 0, ws = 0, ws_int = 0;
@@ -415,78 +573,87 @@ struct PlaneTrial {
 };
 
 // rest: from rest (the state left out), for the responses to a unit force.
-PlaneTrial PlaneTry(const TangentialPlane &p, PetscReal inv_me, PetscReal tau, PetscReal Fa, PetscReal dF, bool rest = false)
+PlaneTrial PlaneTry(const TangentialPlane &p, const PlaneKernels &K, PetscReal inv_me, const ForceCubic &f, bool rest = false)
 {
-  PlaneTrial t;
+  const PetscReal tau = K.tau;
+  PlaneTrial      t;
   for (size_t k = 0; k < p.omega.size(); ++k) {
     const PetscReal z = rest ? 0 : p.z[k], zd = rest ? 0 : p.zd[k];
     PetscReal       q, qd;
-    TangentialModeForced(p.omega[k], p.Sigma(k), z, zd, -p.gamma[k] * Fa, -p.gamma[k] * dF, tau, &q, &qd);
+    K.mode[k].Apply(z, zd, f.Scaled(-p.gamma[k]), &q, &qd);
     t.disp += p.gamma[k] * (q - z);
     t.vel += p.gamma[k] * qd;
   }
-  t.disp -= p.flexibility * dF * tau; // the modes left out: the point at -G_r F_t
-  t.vel -= p.flexibility * dF;
-  const PetscReal w0 = rest ? 0 : p.ball_side;
-  t.ws               = w0 + (Fa * tau + 0.5 * dF * tau * tau) * inv_me;
-  t.ws_int           = w0 * tau + (0.5 * Fa * tau * tau + dF * tau * tau * tau / 6) * inv_me;
+  t.disp -= p.flexibility * (f(tau) - f(0)); // the modes left out: the point at -G_r F_t
+  t.vel -= p.flexibility * f.Rate(tau);
+  const PetscReal w0  = rest ? 0 : p.ball_side;
+  const PetscReal ff  = tau * tau * (f.c[0] / 2 + tau * (f.c[1] / 6 + tau * (f.c[2] / 12 + tau * f.c[3] / 20))); // the double integral
+  t.ws                = w0 + f.Integral(tau) * inv_me;
+  t.ws_int            = w0 * tau + ff * inv_me;
   return t;
 }
 
-// The force over a sub-step of length tau the current phase gives (F_n = Fn + dFn s).
-void PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const TangentialState &s, PetscReal tau, PetscReal Fn, PetscReal dFn, PetscReal *Fa, PetscReal *dF)
+// The force over a sub-step of length K.tau the current phase gives (F_n = Fn(s)).
+ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const PlaneKernels &K, const TangentialState &s, const ForceCubic &Fn)
 {
-  const PetscReal mu = m.friction, l = m.compliance_length;
-  if (s.phase == TangentialPhase::Slip) {
-    *Fa = -s.slip_sign * mu * Fn;
-    *dF = -s.slip_sign * mu * dFn;
-  } else if (l > 0) { // F_t(tau) = -F_n(tau) xi(tau) / l, xi affine in dF
-    const PetscReal Fe = Fn + dFn * tau;
-    const PlaneTrial a = PlaneTry(p, inv_me, tau, p.force, 0), b = PlaneTry(p, inv_me, tau, 0, 1, true);
-    const PetscReal  X0 = s.xi + a.ws_int - a.disp, X1 = b.ws_int - b.disp;
-    *Fa = p.force;
-    *dF = -(p.force + Fe * X0 / l) / (tau + Fe * X1 / l);
-  } else { // rigid grip: a constant force over the sub-step that ends it at u = 0
-    const PlaneTrial a = PlaneTry(p, inv_me, tau, 0, 0), b = PlaneTry(p, inv_me, tau, 1, 0, true);
-    *Fa = -a.U() / b.U();
-    *dF = 0;
+  const PetscReal mu = m.friction, l = m.compliance_length, tau = K.tau;
+  if (s.phase == TangentialPhase::Slip) return Fn.Scaled(-s.slip_sign * mu);
+  if (l > 0) { // Hermite: F_t and dF_t/dt at the start and (unknown: Fe, De) at the end, the law's
+    const PetscReal  D0 = -(Fn.Rate(0) * s.xi + Fn(0) * s.u) / l;
+    const PlaneTrial a  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, p.force, 0, D0, 0));
+    const PlaneTrial b  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 1, 0, 0), true);
+    const PlaneTrial c  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 0, 0, 1), true);
+    // xi(tau) = X0 + Fe Xb + De Xc, u(tau) = U0 + Fe Ub + De Uc; Fe = -P xi, De = -(Q xi + P u)
+    const PetscReal X0 = s.xi + a.ws_int - a.disp, Xb = b.ws_int - b.disp, Xc = c.ws_int - c.disp;
+    const PetscReal P = Fn(tau) / l, Q = Fn.Rate(tau) / l;
+    const PetscReal a11 = 1 + P * Xb, a12 = P * Xc, r1 = -P * X0;
+    const PetscReal a21 = Q * Xb + P * b.U(), a22 = 1 + Q * Xc + P * c.U(), r2 = -(Q * X0 + P * a.U());
+    const PetscReal det = a11 * a22 - a12 * a21;
+    return ForceCubic::Hermite(tau, p.force, (r1 * a22 - a12 * r2) / det, D0, (a11 * r2 - a21 * r1) / det);
   }
+  // rigid grip: a constant force over the sub-step that ends it at u = 0
+  ForceCubic      unit, f;
+  unit.c[0]      = 1;
+  f.c[0]         = -PlaneTry(p, K, inv_me, ForceCubic()).U() / PlaneTry(p, K, inv_me, unit, true).U();
+  return f;
 }
 
 // Whether the current phase ends within the sub-step tried.
-bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTrial &t, PetscReal Fa, PetscReal tau, PetscReal Fn, PetscReal dFn)
+bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTrial &t, const ForceCubic &f, PetscReal tau, const ForceCubic &Fn)
 {
   const PetscReal mu = m.friction, l = m.compliance_length;
   // (margins of round-off: a slip that starts from a rigid grip starts at u = 0)
   if (s.phase == TangentialPhase::Slip) return s.slip_sign * t.U() < -1e-13 * (std::abs(t.ws) + std::abs(t.vel));
   if (l > 0) return std::abs(s.xi + t.ws_int - t.disp) > mu * l;
-  return std::abs(Fa) > (1 + 1e-12) * mu * std::min(Fn, Fn + dFn * tau);
+  return std::abs(f(0)) > (1 + 1e-12) * mu * std::min(Fn(0), Fn(tau));
 }
 
-// Moves the plane and the contact's state over tau with F_t = Fa + dF s; the energy taken,
-// integral -F_t u, by 3-point Gauss from the exact u.
-void PlaneCommit(const TangentialModel &m, PetscReal inv_me, PetscReal tau, PetscReal Fa, PetscReal dF, TangentialPlane *p, TangentialState *s)
+// Moves the plane and the contact's state over K.tau with F_t = f(s); the energy taken,
+// integral -F_t u, and the modes' damping loss by 3-point Gauss from the exact u and z'.
+void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels &K, const ForceCubic &f, TangentialPlane *p, TangentialState *s)
 {
   static const PetscReal gx[3] = {-std::sqrt(0.6), 0, std::sqrt(0.6)}, gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+  const PetscReal        tau   = K.tau;
   for (int i = 0; i < 3; ++i) {
-    const PetscReal  si = 0.5 * tau * (1 + gx[i]);
-    const PlaneTrial ti = PlaneTry(*p, inv_me, si, Fa, dF);
-    s->dissipated += 0.5 * tau * gw[i] * (-(Fa + dF * si) * ti.U());
+    const PetscReal    si = 0.5 * tau * (1 + gx[i]);
+    const auto         Kp = PlaneKernelsOf(*p, si); // held: a later insertion may replace it in the cache
+    const PlaneKernels &Ki = *Kp;
+    s->dissipated += 0.5 * tau * gw[i] * (-f(si) * PlaneTry(*p, Ki, inv_me, f).U());
     for (size_t k = 0; k < p->sigma.size(); ++k) { // the modes' damping: integral 2 sigma z'^2
       if (!(p->sigma[k] > 0)) continue;
       PetscReal q, qd;
-      TangentialModeForced(p->omega[k], p->sigma[k], p->z[k], p->zd[k], -p->gamma[k] * Fa, -p->gamma[k] * dF, si, &q, &qd);
+      Ki.mode[k].Apply(p->z[k], p->zd[k], f.Scaled(-p->gamma[k]), &q, &qd);
       p->damped += 0.5 * tau * gw[i] * 2 * p->sigma[k] * qd * qd;
     }
   }
-  const PlaneTrial t = PlaneTry(*p, inv_me, tau, Fa, dF);
-  for (size_t k = 0; k < p->omega.size(); ++k) TangentialModeForced(p->omega[k], p->Sigma(k), p->z[k], p->zd[k], -p->gamma[k] * Fa, -p->gamma[k] * dF, tau, &p->z[k], &p->zd[k]);
+  const PlaneTrial t = PlaneTry(*p, K, inv_me, f);
+  for (size_t k = 0; k < p->omega.size(); ++k) K.mode[k].Apply(p->z[k], p->zd[k], f.Scaled(-p->gamma[k]), &p->z[k], &p->zd[k]);
   if (s->phase == TangentialPhase::Grip && m.compliance_length > 0) s->xi += t.ws_int - t.disp;
   p->ball_side = t.ws;
-  p->force     = Fa + dF * tau;
+  p->force     = f(tau);
   p->time += tau;
   p->substeps++;
-  s->impulse += Fa * tau + 0.5 * dF * tau * tau;
+  s->impulse += f.Integral(tau);
   s->u = t.U();
 }
 
@@ -507,38 +674,37 @@ void PhaseSwitch(const TangentialModel &m, TangentialPlane *p, TangentialState *
   s->switches.push_back(sw);
 }
 
-// One sub-step of length h with F_n = Fn + dFn s: the phase's force, its end located by
-// bisection of the length where it ends, the switch, and the rest in the new phase.
-void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, PetscReal Fn, PetscReal dFn, TangentialPlane *p, TangentialState *s)
+// One sub-step of length h with F_n = Fn(s): the phase's force, its end located by bisection of
+// the length where it ends, the switch, and the rest in the new phase.
+void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const ForceCubic &Fn, TangentialPlane *p, TangentialState *s)
 {
   PetscReal tau = 0;
   for (int it = 0; it < 16 && tau < (1 - 1e-12) * h; ++it) {
     if (s->phase == TangentialPhase::Slip && s->slip_sign == 0) s->phase = TangentialPhase::Grip;
-    const PetscReal rest = h - tau, Fb = Fn + dFn * tau;
-    PetscReal       Fa, dF;
-    PhaseForce(m, inv_me, *p, *s, rest, Fb, dFn, &Fa, &dF);
-    if (s->phase == TangentialPhase::Slip) p->force = Fa; // continuous into a slip: -s mu F_n
-    if (!PhaseEnds(m, *s, PlaneTry(*p, inv_me, rest, Fa, dF), Fa, rest, Fb, dFn) || it == 15) {
-      PlaneCommit(m, inv_me, rest, Fa, dF, p, s);
+    const PetscReal    rest = h - tau;
+    const ForceCubic   Fb   = Fn.Shift(tau);
+    const auto         Kp   = PlaneKernelsOf(*p, rest);
+    const PlaneKernels &K    = *Kp;
+    ForceCubic         f    = PhaseForce(m, inv_me, *p, K, *s, Fb);
+    if (s->phase == TangentialPhase::Slip) p->force = f(0); // continuous into a slip: -s mu F_n
+    if (!PhaseEnds(m, *s, PlaneTry(*p, K, inv_me, f), f, rest, Fb) || it == 15) {
+      PlaneCommit(m, inv_me, K, f, p, s);
       return;
     }
     PetscReal lo = 0, hi = rest;
     for (int b = 0; b < 200 && hi - lo > 1e-15 * rest; ++b) {
-      const PetscReal mid = 0.5 * (lo + hi);
-      PhaseForce(m, inv_me, *p, *s, mid, Fb, dFn, &Fa, &dF);
-      if (PhaseEnds(m, *s, PlaneTry(*p, inv_me, mid, Fa, dF), Fa, mid, Fb, dFn)) hi = mid;
+      const PetscReal    mid = 0.5 * (lo + hi);
+      const auto         Km  = PlaneKernelsOf(*p, mid);
+      f                      = PhaseForce(m, inv_me, *p, *Km, *s, Fb);
+      if (PhaseEnds(m, *s, PlaneTry(*p, *Km, inv_me, f), f, mid, Fb)) hi = mid;
       else lo = mid;
     }
-    PhaseForce(m, inv_me, *p, *s, hi, Fb, dFn, &Fa, &dF);
-    PlaneCommit(m, inv_me, hi, Fa, dF, p, s);
+    const auto Kh = PlaneKernelsOf(*p, hi);
+    PlaneCommit(m, inv_me, *Kh, PhaseForce(m, inv_me, *p, *Kh, *s, Fb), p, s);
     PhaseSwitch(m, p, s);
     tau += hi;
   }
 }
-
-} // namespace
-
-namespace {
 
 // The plane free (F_t = 0) over h: each mode exactly; a damped mode's loss is its energy's drop.
 void PlaneFree(PetscReal h, TangentialPlane *p)
@@ -554,9 +720,14 @@ void PlaneFree(PetscReal h, TangentialPlane *p)
 
 void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialPlane *p, TangentialState *s)
 {
+  const PetscReal d = t1 > t0 ? (F1 - F0) / (t1 - t0) : 0;
+  TangentialAdvanceFlexible(m, t0, t1, F0, F1, d, d, p, s);
+}
+
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialPlane *p, TangentialState *s)
+{
   const PetscReal h = t1 - t0;
   if (!(h > 0)) return;
-  s->normal_impulse += 0.5 * h * (F0 + F1);
   TangentialModel ball = m;
   ball.bat_mass        = PETSC_INFINITY; // the plane is the bat's translation
   const PetscReal inv_me = 1 / ball.EffectiveMass();
@@ -573,16 +744,17 @@ void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal
     s->u     = p->ball_side - p->PointVelocity();
     return;
   }
+  const ForceCubic Fn = ForceCubic::Hermite(h, F0, F1, dF0, dF1);
+  s->normal_impulse += Fn.Integral(h);
   // Sub-steps: 100 per radian of the compliant grip's fastest oscillation, at least one.
   PetscReal G = p->flexibility;
   for (PetscReal g : p->gamma) G += g * g;
   const PetscReal l = m.compliance_length;
   const PetscReal w = l > 0 ? std::sqrt(std::max(F0, F1) / l * (inv_me + G)) : 0;
   const PetscInt  n = std::max<PetscInt>(1, (PetscInt)std::ceil(100 * w * h));
-  const PetscReal dFn = (F1 - F0) / h;
   for (PetscInt k = 0; k < n; ++k) {
     const PetscReal a = h * k / n, b = h * (k + 1) / n;
-    PlaneSubStep(ball, inv_me, b - a, F0 + dFn * a, dFn, p, s);
+    PlaneSubStep(ball, inv_me, b - a, Fn.Shift(a), p, s);
   }
   p->time = t1; // the sub-steps' sum, to round-off
 }

@@ -43,16 +43,20 @@
 // F_n changes (the stiffness's work, 1/2 (dF_n/dt / l) xi^2, kept apart from friction's
 // dissipation); it is 0 before the first touch and after the separation.
 //
-// F_n is given as samples (t_k, F_k), linear between them (the stepper's steps); on each piece
-// slip is solved in closed form (u quadratic in t), grip by classical Runge-Kutta (40 steps per
-// radian of the tangential oscillation), and each switch between them is located by bisection
-// to round-off; the frictional dissipation integral mu F_n |u| dt over the slips is exact.
+// F_n is given as samples (t_k, F_k) with its rates dF_k/dt (the stepper's steps; the rate is the
+// contact law's dF/dc times the compression rate), the cubic Hermite of both on each piece (exact
+// to O(h^4), so the tangential outputs keep the normal run's order up to 4; without rates, the
+// secant: F_n linear, order 2). On each piece slip is solved in closed form (u a quartic in t),
+// grip by classical Runge-Kutta (40 steps per radian of the tangential oscillation, at least 4),
+// and each switch between them is located by bisection to round-off; the frictional dissipation
+// integral mu F_n |u| dt over the slips is exact (4-point Gauss).
 #pragma once
 
 #include "model/section.hpp"
 
 #include <petscsys.h>
 
+#include <memory>
 #include <vector>
 
 namespace beamimpact {
@@ -78,11 +82,24 @@ struct TangentialModel {
   PetscReal EffectiveMass() const;                           // m_e (kg)
 };
 
+// A cubic in the time s (s) from the start of a piece: c[0] + c[1] s + c[2] s^2 + c[3] s^3 (N).
+struct ForceCubic {
+  PetscReal c[4] = {0, 0, 0, 0};
+  PetscReal operator()(PetscReal s) const { return c[0] + s * (c[1] + s * (c[2] + s * c[3])); }
+  PetscReal Rate(PetscReal s) const { return c[1] + s * (2 * c[2] + s * 3 * c[3]); }
+  PetscReal Integral(PetscReal s) const { return s * (c[0] + s * (c[1] / 2 + s * (c[2] / 3 + s * c[3] / 4))); } // from 0 to s
+  ForceCubic Shift(PetscReal a) const;         // the same cubic in s - a (from s = a)
+  ForceCubic Scaled(PetscReal k) const;        // k times it
+  // The cubic Hermite on [0, h] of the values F0, F1 and rates dF0, dF1 at its ends.
+  static ForceCubic Hermite(PetscReal h, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1);
+};
+
 // The length l (m) of k_t = F_n / l for which a contact of effective mass m_e (kg) gripping
-// throughout the normal force F(t) (samples, linear between them) reverses the surfaces'
-// tangential speed by e_T in [0, 1): bisection on the first branch (the tangential oscillation's
-// phase below pi); 0 when F is 0 throughout.
-PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F);
+// throughout the normal force F(t) (samples with their rates dF, the cubic Hermite between them;
+// dF empty: linear between them) reverses the surfaces' tangential speed by e_T in [0, 1):
+// bisection on the first branch (the tangential oscillation's phase below pi); 0 when F is 0
+// throughout.
+PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F, const std::vector<PetscReal> &dF = {});
 
 enum class TangentialPhase { Slip = 0, Grip = 1 };
 
@@ -108,7 +125,9 @@ struct TangentialState {
 // unstretched takes the motion), a rigid one slides (unless u0 = 0).
 TangentialState TangentialStart(const TangentialModel &m, PetscReal u0);
 
-// Advances the tangential contact over [t0, t1] with F_n linear from F0 to F1 (N, >= 0).
+// Advances the tangential contact over [t0, t1] with F_n the cubic Hermite of F0, F1 (N, >= 0) and
+// the rates dF0, dF1 (N/s) at the ends; without rates, linear from F0 to F1.
+void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialState *s);
 void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialState *s);
 
 // The bat flexible in its second plane (docs/model.md "Oblique impacts"): a round, straight bat
@@ -121,12 +140,16 @@ void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, Pet
 // (1/m* = 1/m + R_b^2/I_b + R_bat^2/I_a), and the slip speed is u = w - V_c with the point's
 // velocity V_c = sum gamma_k z_k' - G_r dF_t/dt.
 //
-// The force is piecewise linear on sub-steps (at least one per piece of F_n, more where the
-// tangential oscillation is fast: 100 per radian of sqrt(k_t (1/m* + G)), G = sum gamma_k^2 +
-// G_r the point's flexibility in mass); on each the modes and w are exact for the linear force,
-// and the force's end value is what the contact's law gives at the end (slip: -s mu F_n; a
-// compliant grip: -F_n xi / l with xi = xi0 + integral u, which is affine in it; a rigid grip:
-// u = 0): one scalar equation, so the stiff modes never limit the sub-step. Switches (slip ends
+// The force is a cubic on sub-steps (at least one per piece of F_n, more where the tangential
+// oscillation is fast: 100 per radian of sqrt(k_t (1/m* + G)), G = sum gamma_k^2 + G_r the
+// point's flexibility in mass); on each the modes and w are exact for the cubic force (the
+// phi-functions phi_1 ... phi_4 of the sub-step), and the force is what the contact's law gives:
+// slip: -s mu F_n, the cubic of F_n itself; a compliant grip: the cubic Hermite whose value and
+// rate at the sub-step's end are the law's there, F_t = -F_n xi / l and dF_t/dt =
+// -(dF_n/dt xi + F_n u) / l, with xi = xi0 + integral u and u affine in the two unknowns (a 2 x 2
+// linear solve: Hermite collocation, local error O(tau^5), so order 4); a rigid grip: a constant
+// force that ends the sub-step at u = 0 (order 1: give e_T for the higher orders). So the stiff
+// modes never limit the sub-step. Switches (slip ends
 // where u changes sign; a compliant grip slips where |xi| reaches mu l, a rigid one where
 // |F_t| reaches mu F_n) are located by bisection of the sub-step. The energy the tangential
 // contact takes, integral -F_t u dt, is summed by 3-point Gauss on each sub-step from the exact
@@ -134,6 +157,7 @@ void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, Pet
 // and the modes' energies; stiffness_work stays 0: the spring's part is in it).
 // Damped modes (Rayleigh damping: sigma) decay exactly in the same way; their loss is summed into
 // TangentialPlane::damped (Gauss on each sub-step, the energy drop in free vibration).
+struct TangentialKernelCache; // the modes' responses over the sub-step lengths last used (model/oblique.cpp)
 struct TangentialPlane {
   std::vector<PetscReal> omega, gamma;    // rad/s, m/(N s^2)^(1/2): per mode
   std::vector<PetscReal> sigma;           // 1/s, each mode's decay rate (z'' + 2 sigma z' + w^2 z = f; Rayleigh damping); empty: undamped
@@ -145,6 +169,9 @@ struct TangentialPlane {
   PetscReal              time      = 0;   // s, the time the state is at
   PetscInt               substeps  = 0;   // sub-steps taken
   PetscReal Sigma(size_t k) const { return sigma.empty() ? 0 : sigma[k]; }
+  // The modes' responses over the last sub-step lengths (a fixed-step run repeats them), kept with
+  // the omega and sigma they were made for; made on first use.
+  mutable std::shared_ptr<TangentialKernelCache> cache;
   PetscReal PointVelocity() const;        // m/s, sum gamma_k z_k' (the static correction's rate left out)
   PetscReal ModeEnergy() const;           // J, 1/2 sum (z_k'^2 + w_k^2 z_k^2) + 1/2 G_r F_t^2
 };
@@ -153,9 +180,11 @@ struct TangentialPlane {
 // tangential contact as TangentialStart gives it.
 TangentialState TangentialFlexibleStart(const TangentialModel &m, const TangentialPlane &p);
 
-// Advances the tangential contact and the plane over [t0, t1] with F_n linear from F0 to F1 (N,
-// >= 0); a gap since the plane's time is free vibration (F_t = 0). m: the ball, the roll and
-// the contact (bat_mass is ignored: the plane is the bat's translation).
+// Advances the tangential contact and the plane over [t0, t1] with F_n the cubic Hermite of F0,
+// F1 (N, >= 0) and the rates dF0, dF1 (N/s) at the ends (without rates: linear); a piece with
+// F_n = 0 at both ends is free, and a gap since the plane's time is free vibration (F_t = 0).
+// m: the ball, the roll and the contact (bat_mass is ignored: the plane is the bat's translation).
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialPlane *p, TangentialState *s);
 void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialPlane *p, TangentialState *s);
 
 // Mode w from z, zd under the force f0 + f1 s over [0, tau]: z and z' at tau, exact (w = 0: a
@@ -165,6 +194,10 @@ void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, 
 // damping (under-, critically and over-damped, a damped rigid mode), through the exponential of
 // the mode's 2 x 2 matrix and its phi-functions (a series where their argument is small).
 void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd);
+// The same under a cubic force f(s), z'' + 2 sigma z' + w^2 z = f(s): the response to s^k is
+// k! tau^(k+1) phi_(k+1)(tau A) of the mode's 2 x 2 matrix A (a series where |tau A| < 1, else
+// from e^(tau A) by phi_k = (phi_(k-1) - I/(k-1)!) (tau A)^-1); a rigid mode in closed form.
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal tau, PetscReal *q, PetscReal *qd);
 
 // The four motions after an impulse J, from their values at the first touch.
 struct TangentialBodies {

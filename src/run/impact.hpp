@@ -68,6 +68,10 @@ struct MonitorRequest {
 struct ImpactSeries {
   std::vector<PetscReal> time;                                           // s
   std::vector<PetscReal> ball_y, ball_v, compression, force;             // m, m/s, m, N
+  // N/s, dF/dt at each step (the law's dF/dc times dc/dt; at a separation, on the branch the ball
+  // left by): with force, the cubic Hermite F_n(t) an oblique impact's tangential contact takes.
+  // Recorded with force, not written to the output.
+  std::vector<PetscReal> force_rate;
   std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated;     // J
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
   std::vector<PetscReal> beam_dissipated;                                // J, by the beam's damping (damped beams only)

@@ -407,7 +407,7 @@ PetscErrorCode ObliqueRunFinish(MPI_Comm comm, const ImpactSetup &s, const Scena
   beam.g    = &s.g;
   PetscCall(FreeFlightTruncation(comm, sc, &beam.truncation));
   PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, beam, &rec->oblique));
-  if (!sc.oblique.ball_series_asked) S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear();
+  if (!sc.oblique.ball_series_asked) S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear(), S.force_rate.clear();
   if (!sc.oblique.series_asked) S.time.clear();
   PetscFunctionReturn(0);
 }

@@ -63,6 +63,8 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscCall(stepper.Compression(&m->c, &cdot));
   const BallParams &ball = *ctx.ball;
   m->force               = ContactForce(ball, *ctx.contact, m->c);
+  m->c_rate              = cdot;
+  m->force_rate          = ContactStiffness(ball, *ctx.contact, m->c) * cdot;
   m->ball_kinetic        = 0.5 * ball.mass * m->ball_v * m->ball_v;
   m->ball_stored         = ContactStoredEnergy(ball, *ctx.contact, m->c);
   m->ball_work           = ContactWork(ball, *ctx.contact, m->c);

@@ -12,6 +12,7 @@ namespace beamimpact {
 
 struct StateMeasures {
   PetscReal ball_y = 0, ball_v = 0, c = 0, force = 0;                                      // m, m/s, m, N
+  PetscReal c_rate = 0, force_rate = 0; // m/s, N/s: dc/dt and dF/dt = dF/dc dc/dt on the active branch (0 when separated)
   PetscReal ball_kinetic = 0, ball_stored = 0, ball_work = 0, beam_kinetic = 0, beam_strain = 0; // J
   PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)

@@ -36,12 +36,14 @@ struct ModalRun {
   ImpactSeries      *forces = nullptr; // an oblique impact's run along the normal: F_n(t) sampled in each contact phase
 };
 
-// The samples of F_n(t) a contact phase gives an oblique impact's tangential contact
-// (run/oblique.hpp), which takes F_n linear between samples: an error of order
-// kForceSamples^-2 in the tangential outputs (docs/model.md section 13 gives it measured).
+// The samples of F_n(t) and dF_n/dt a contact phase gives an oblique impact's tangential contact
+// (run/oblique.hpp), which takes the cubic Hermite of both between samples: an error of order
+// kForceSamples^-4 in the tangential outputs (about 1e-13 relative at 20000; docs/model.md
+// section 13 and docs/convergence.md give it measured).
 constexpr PetscInt kForceSamples = 20000;
 
-// F_n = k c at kForceSamples equal pieces of the contact phase [0, s_sep] of the exact solution.
+// F_n = k c and its rate k dc/dt at kForceSamples equal pieces of the contact phase [0, s_sep] of
+// the exact solution (the rates at both ends from inside the contact).
 template <class Phase>
 void ModalSampleForce(const ModalRun &run, const Phase &ph, PetscReal s_sep)
 {
@@ -53,6 +55,7 @@ void ModalSampleForce(const ModalRun &run, const Phase &ph, PetscReal s_sep)
     if (!f.time.empty() && !(t > f.time.back())) continue;
     f.time.push_back(t);
     f.force.push_back(i == 0 || i == kForceSamples ? 0.0 : std::max<PetscReal>(0, k * ph.Derivative(s, 0)));
+    f.force_rate.push_back(k * ph.Derivative(s, 1));
   }
 }
 

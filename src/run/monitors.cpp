@@ -1,6 +1,8 @@
 // Recording during a run. See monitors.hpp.
 #include "run/monitors.hpp"
 
+#include "model/contact.hpp"
+
 #include <cmath>
 
 namespace beamimpact {
@@ -42,6 +44,15 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
     S.ball_v.push_back(m.ball_v);
     S.compression.push_back(m.c);
     S.force.push_back(m.force);
+    // At a separation (the phase already Separated, the last record in contact) the rate from
+    // inside, on the branch the ball left by: the force's end slope there (the linear law's k dc/dt).
+    PetscReal rate = m.force_rate;
+    if (ctx_.contact->phase == ContactPhase::Separated && last_phase_ != ContactPhase::Separated) {
+      ContactState inside = *ctx_.contact;
+      inside.phase        = last_phase_;
+      rate                = ContactStiffness(*ctx_.ball, inside, m.c) * m.c_rate;
+    }
+    S.force_rate.push_back(rate);
   }
   if (mon_.energy) {
     S.ball_kinetic.push_back(m.ball_kinetic);
@@ -54,6 +65,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
     if (ctx_.sys->Damped()) S.beam_dissipated.push_back(m.beam_dissipated);
   }
   for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
+  last_phase_ = ctx_.contact->phase;
   if (mon_.grip && ctx_.sys->Gripped()) {
     S.grip_force.push_back(m.grip_force);
     S.grip_moment.push_back(m.grip_moment);

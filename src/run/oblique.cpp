@@ -6,6 +6,7 @@
 #include "run/results_table.hpp"
 #include "run/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -150,6 +151,26 @@ PetscErrorCode TangentialPlaneFinish(const ObliqueBeam &beam, ObliqueRecord *rec
 
 } // namespace
 
+namespace {
+
+// The normal force on the piece [t_k, t_k+1] of the run's steps: its values (the odd extension's
+// round-off below 0 at a separation clipped) and rates at the ends, the rates the secant's where
+// the series has none (F_n linear).
+struct NormalPiece {
+  PetscReal F0 = 0, F1 = 0, dF0 = 0, dF1 = 0;
+};
+NormalPiece NormalPieceOf(const ImpactSeries &S, size_t k)
+{
+  NormalPiece f;
+  f.F0 = std::max<PetscReal>(S.force[k], 0);
+  f.F1 = std::max<PetscReal>(S.force[k + 1], 0);
+  if (S.force_rate.size() > k + 1) f.dF0 = S.force_rate[k], f.dF1 = S.force_rate[k + 1];
+  else f.dF0 = f.dF1 = (f.F1 - f.F0) / (S.time[k + 1] - S.time[k]);
+  return f;
+}
+
+} // namespace
+
 PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, const ObliqueBeam &beam, ObliqueRecord *rec)
 {
   const ObliqueIncoming &in = sc.oblique;
@@ -169,7 +190,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   const PetscReal     V_in    = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
   const PetscReal     s       = in.geometry.sin_theta;
   // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models)
-  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force);
+  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force, series.force_rate);
   rec->model          = m;
   rec->before.v_ball  = in.ball_speed * s;
   rec->before.spin    = -ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise
@@ -179,6 +200,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   rec->contact        = TangentialStart(m, u0);
   const bool touches  = m.ball_radius > 0 && m.ball_inertia > 0;
   const bool flexible = touches && u0 != 0 && m.friction > 0 && !sc.impact.tangential_rigid;
+  const size_t n      = std::min(series.time.size(), series.force.size());
   if (flexible) { // the swing's -V(x) per dof times sin theta: its component along t
     std::vector<PetscReal> v;
     PetscReal              L;
@@ -189,13 +211,17 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     rec->plane.ball_side = (rec->before.v_ball - m.ball_radius * rec->before.spin) - m.bat_radius * rec->before.roll;
     rec->flexible        = true;
     rec->contact         = TangentialFlexibleStart(m, rec->plane);
-    for (size_t k = 0; k + 1 < series.time.size() && k + 1 < series.force.size(); ++k)
-      TangentialAdvanceFlexible(m, series.time[k], series.time[k + 1], std::max<PetscReal>(series.force[k], 0), std::max<PetscReal>(series.force[k + 1], 0), &rec->plane, &rec->contact);
+    for (size_t k = 0; k + 1 < n; ++k) {
+      const NormalPiece f = NormalPieceOf(series, k);
+      TangentialAdvanceFlexible(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, &rec->plane, &rec->contact);
+    }
     PetscCall(TangentialPlaneFinish(beam, rec));
     rec->model.bat_mass = PETSC_INFINITY; // the bat's translation is the plane's: the ball and the roll from J
   } else if (touches && u0 != 0)
-    for (size_t k = 0; k + 1 < series.time.size() && k + 1 < series.force.size(); ++k)
-      TangentialAdvance(m, series.time[k], series.time[k + 1], std::max<PetscReal>(series.force[k], 0), std::max<PetscReal>(series.force[k + 1], 0), &rec->contact);
+    for (size_t k = 0; k + 1 < n; ++k) {
+      const NormalPiece f = NormalPieceOf(series, k);
+      TangentialAdvance(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, &rec->contact);
+    }
   rec->after = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
   if (flexible) rec->after.v_bat = rec->plane.PointVelocity();
   rec->exit  = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);

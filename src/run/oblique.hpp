@@ -6,9 +6,9 @@
 //     scenario with the ball's and the swing's speeds projected on n (times cos theta; exactly
 //     today's run head-on, cos theta = 1);
 //   * along t, the friction force, driven by that run's normal force F_n(t) (the run records the
-//     ball's series for it, at every step: linear between them), on the ball (translation and
-//     spin), the bat's roll about its axis (free bat: the profile's polar inertia 2 int rho I dx;
-//     otherwise held) and the bat in its second plane:
+//     ball's series for it, F_n and dF_n/dt at every step: the cubic Hermite between them), on
+//     the ball (translation and spin), the bat's roll about its axis (free bat: the profile's
+//     polar inertia 2 int rho I dx; otherwise held) and the bat in its second plane:
 //       - flexible (-impact_tangential_plane flexible, the default): the same beam system in the
 //         same modes (solvers/beam_modes: -modal_modes, -modal_tolerance, the static
 //         correction), driven at the impact point by -F_t and moving with the swing's component
