@@ -27,6 +27,7 @@
 #include <vector>
 
 using namespace beamimpact;
+using beamimpact::test::LinearBallR161;
 using beamimpact::test::ReadScene;
 
 namespace {
@@ -47,18 +48,11 @@ ImpactResult RunWith(MPI_Comm comm, const Scenario &sc, const Options &opts)
   return r;
 }
 
-// The swinging R161 at 24 m/s and 51 rad/s struck 70 cm from the knob by a baseball of linear
-// stiffness 2e6 N/m at 40 m/s (the law -reference modal solves); to the first separation.
+// LinearBallR161 (test_helpers.hpp) with the ball at 40 m/s; to the first separation.
 Scenario SwingingR161()
 {
-  Scenario sc;
-  ReadScene({"options/bats/r161.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}, {"-ball_mass", "0.145"}, {"-ball_radius", "0.0369"}, {"-ball_law", "linear"}, {"-ball_k", "2e6"}}, &sc.beam,
-            &sc.ball);
-  sc.impact.x                   = 0.7;
-  sc.impact.window              = 0;
-  sc.swing.bat_speed            = 24;
-  sc.swing.bat_angular_velocity = 51;
-  sc.ball.speed                 = 40;
+  Scenario sc   = LinearBallR161();
+  sc.ball.speed = 40;
   return sc;
 }
 

@@ -29,6 +29,7 @@
 #include <vector>
 
 using namespace beamimpact;
+using beamimpact::test::LinearBallR161;
 using beamimpact::test::ReadScene;
 
 namespace {
@@ -43,20 +44,6 @@ Scenario R161(PetscReal V_cm = 0, PetscReal Omega = 0)
   sc.impact.window               = 0; // to the first separation
   sc.swing.bat_speed             = V_cm;
   sc.swing.bat_angular_velocity  = Omega;
-  return sc;
-}
-
-// The R161 of R161() swinging at 24 m/s and 51 rad/s, and a baseball of linear stiffness 2e6 N/m
-// (the law -reference modal solves).
-Scenario LinearBallR161()
-{
-  Scenario sc;
-  ReadScene({"options/bats/r161.opts"}, {{"-beam_theory", "euler"}, {"-beam_nodes", "85"}, {"-ball_mass", "0.145"}, {"-ball_radius", "0.0369"}, {"-ball_law", "linear"}, {"-ball_k", "2e6"}}, &sc.beam,
-            &sc.ball);
-  sc.impact.x                   = 0.7;
-  sc.impact.window              = 0;
-  sc.swing.bat_speed            = 24;
-  sc.swing.bat_angular_velocity = 51;
   return sc;
 }
 
