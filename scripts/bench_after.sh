@@ -21,14 +21,8 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
-exe="${1:-}"
-if [[ -z $exe ]]; then
-  for c in "$root/build/release/beamimpact" "$root"/build/*/beamimpact; do
-    if [[ -x "$c" ]]; then exe="$c"; break; fi
-  done
-fi
-[[ -x $exe ]] || { echo "no beamimpact executable (build first, or give its path)" >&2; exit 1; }
-exe=$(readlink -f "$exe")
+source "$here/find-exe.sh"
+exe=$(find_beamimpact bench_after.sh "${1:-}") || exit 1
 source "$here/mpi-env.sh"
 cd "$root"
 nodes=${BENCH_NODES:-"161 641"}

@@ -20,16 +20,10 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
-exe=""
-if [[ $# -gt 0 && -x "$1" && ! -d "$1" ]]; then
-  exe="$(readlink -f "$1")"
-  shift
-else
-  for c in "$root/build/release/beamimpact" "$root"/build/*/beamimpact; do
-    if [[ -x "$c" ]]; then exe="$c"; break; fi
-  done
-fi
-[[ -x $exe ]] || { echo "bench_defaults.sh: no beamimpact executable (build first, or give its path)" >&2; exit 2; }
+source "$here/find-exe.sh"
+arg=""
+if [[ $# -gt 0 && -x "$1" && ! -d "$1" ]]; then arg=$1; shift; fi
+exe=$(find_beamimpact bench_defaults.sh "$arg") || exit 2
 source "$here/mpi-env.sh"
 ref_exe=$(readlink -f "${BENCH_REFERENCE:-$exe}") # the executable of -reference modal
 py=/usr/bin/python3

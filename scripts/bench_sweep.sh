@@ -58,19 +58,10 @@ elif [[ ${1:-} == --perpoint ]]; then
   perpoint=1
   shift
 fi
-exe=""
-if [[ $# -gt 0 && -x "$1" && ! -d "$1" ]]; then
-  exe="$(readlink -f "$1")"
-  shift
-else
-  for c in "$root/build/release/beamimpact" "$root"/build/*/beamimpact; do
-    if [[ -x "$c" ]]; then exe="$c"; break; fi
-  done
-fi
-if [[ -z "$exe" ]]; then
-  echo "bench_sweep.sh: no beamimpact executable found; pass its path or build one (cmake --preset release && cmake --build --preset release)" >&2
-  exit 2
-fi
+source "$here/find-exe.sh"
+arg=""
+if [[ $# -gt 0 && -x "$1" && ! -d "$1" ]]; then arg=$1; shift; fi
+exe=$(find_beamimpact bench_sweep.sh "$arg") || exit 2
 
 ranks=${BENCH_RANKS:-"1 2"}
 repeat=${BENCH_REPEAT:-3}

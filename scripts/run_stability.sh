@@ -14,18 +14,10 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
-exe=""
-if [[ $# -gt 0 && "$1" != -* ]]; then
-  exe="$1"
-  shift
-  [[ -x "$exe" && ! -d "$exe" ]] || { echo "run_stability.sh: $exe is not an executable" >&2; exit 2; }
-else
-  for c in "$root/build/release/beamimpact" "$root"/build/*/beamimpact; do
-    if [[ -x "$c" ]]; then exe="$c"; break; fi
-  done
-  [[ -n "$exe" ]] || { echo "run_stability.sh: no build/*/beamimpact; build it (cmake --preset release && cmake --build --preset release) or pass its path" >&2; exit 2; }
-fi
-exe="$(readlink -f "$exe")"
+source "$here/find-exe.sh"
+arg=""
+if [[ $# -gt 0 && "$1" != -* ]]; then arg=$1; shift; fi
+exe=$(find_beamimpact run_stability.sh "$arg") || exit 2
 
 # Debian's python has numpy and h5py; the script re-executes itself with it otherwise.
 python=python3
