@@ -8,7 +8,7 @@
 namespace beamimpact {
 
 ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks)
-  : stepper_(stepper), ctx_(ctx), mon_(mon), ip_(ip), E0_(E0), series_(series), peaks_(peaks)
+  : stepper_(stepper), ctx_(ctx), mon_(mon), ip_(ip), E0_(E0), series_(series), peaks_(peaks), last_phase_(ctx.contact ? ctx.contact->phase : ContactPhase::Loading)
 {
   series->velocity_at.assign(mon.velocity_at.size(), {});
   series->velocity_at_x = mon.velocity_at;

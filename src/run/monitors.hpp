@@ -32,7 +32,7 @@ private:
   ImpactSeries         *series_;
   MonitorPeaks         *peaks_;
   size_t                next_ = 0;
-  ContactPhase          last_phase_ = ContactPhase::Loading; // the contact's phase at the last record
+  ContactPhase          last_phase_; // the contact's phase at the last record (at construction: the contact's own)
 };
 
 } // namespace beamimpact

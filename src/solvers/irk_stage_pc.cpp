@@ -94,8 +94,9 @@ PetscErrorCode CreateStageMatrix(IrkStagePC &c, Mat J)
   PetscFunctionReturn(0);
 }
 
-// A's entries from J, S and T (IrkStageEntry), then its LU.
-PetscErrorCode FillAndFactor(IrkStagePC &c, Mat J)
+// A's entries from J, S and T (IrkStageEntry), then its LU; *ok false when the factorization
+// failed (a zero pivot, MUMPS' INFOG(1) < 0: PETSc records it on the PC, it does not raise).
+PetscErrorCode FillAndFactor(IrkStagePC &c, Mat J, bool *ok)
 {
   PetscInt           rs, re, nc;
   const PetscInt    *cols;
@@ -132,11 +133,17 @@ PetscErrorCode FillAndFactor(IrkStagePC &c, Mat J)
   PetscCall(KSPSetOperators(c.ksp, c.A, c.A));
   PetscCall(KSPSetUp(c.ksp)); // the LU
   n_factorizations++;
+  PC             lu;
+  PCFailedReason failed;
+  PetscCall(KSPGetPC(c.ksp, &lu));
+  PetscCall(PCGetFailedReason(lu, &failed));
+  *ok = failed == PC_NOERROR;
   PetscFunctionReturn(0);
 }
 
 // A and its LU for the KAIJ the outer KSP holds now: rebuilt when J is another matrix or
-// its pattern changed, refilled and refactored when J's values, S or T changed.
+// its pattern changed, refilled and refactored when J's values, S or T changed. A failed
+// factorization is not remembered as current: the next application factors again.
 PetscErrorCode StageUpdate(PC pc, IrkStagePC &c)
 {
   const JacobianCache &jac = c.P->jac;
@@ -158,7 +165,12 @@ PetscErrorCode StageUpdate(PC pc, IrkStagePC &c)
   const bool values = jac.shift != c.shift || jac.shiftV != c.shiftV || jac.kc != c.kc;
   if (!c.A || id != c.jid || nz != c.jnonzero || c.s != s0 || c.tI != tI0) PetscCall(CreateStageMatrix(c, J));
   else if (!values && !shifts) PetscFunctionReturn(0);
-  PetscCall(FillAndFactor(c, J));
+  bool ok = false;
+  PetscCall(FillAndFactor(c, J, &ok));
+  if (!ok) {
+    c.jid = 0;
+    PetscFunctionReturn(0);
+  }
   c.jid      = id;
   c.jnonzero = nz;
   c.shift    = jac.shift;
@@ -175,6 +187,7 @@ PetscErrorCode StageApply(PC pc, Vec x, Vec y)
   PetscCall(PCShellGetContext(pc, &c));
   PetscCall(StageUpdate(pc, *c));
   PetscCall(KSPSolve(c->ksp, x, y));
+  PetscCall(KSPCheckSolve(c->ksp, pc, y)); // a failed LU: the PC marked failed and y Inf, so the outer KSP and SNES stop on it
   PetscFunctionReturn(0);
 }
 
