@@ -195,6 +195,25 @@ TEST(DampingMomentum, StiffnessDampingConservesMomentumOfFreeBeam)
   }
 }
 
+// The program's default solve for an implicit type (the beam's LU kept per shift, the contact
+// by Sherman-Morrison) is the exact inverse of the Jacobian on a damped beam in the second-order
+// form too: alpha2 on a linear problem takes one Newton iteration a step, as -pc_type lu does,
+// and the same result. (The kept factor once lacked shiftV C: Newton then took ~11 iterations a
+// step with beta = 1e-4 s and stalled at 2 ms, the stability matrix's damped-beta x alpha2.)
+TEST(DampingSecondOrder, DefaultSolveIsExactLikeLU)
+{
+  const Options base{{"-ts_type", "alpha2"}, {"-ts_alpha_radius", "0.8"}, {"-ts_dt", "1.09842e-5"}};
+  Options       lu = base;
+  lu.push_back({"-pc_type", "lu"});
+  for (double beta : {2e-6, 1e-4}) {
+    const ImpactResult d = DampedImpact(base, 2.0, beta), a = DampedImpact(lu, 2.0, beta);
+    ASSERT_GT(d.steps, 100) << "beta " << beta;
+    EXPECT_LE(d.nonlinear_its, a.nonlinear_its) << "beta " << beta;
+    EXPECT_LE(d.nonlinear_its, d.steps + d.event_steps + 20) << "one Newton iteration a step; beta " << beta;
+    EXPECT_NEAR(d.acor, a.acor, 1e-10) << "beta " << beta;
+  }
+}
+
 // Without damping nothing is computed or recorded: alpha = beta = 0 given explicitly is the
 // undamped run to the bit, and a vanishing damping changes the result continuously.
 TEST(DampingOff, ZeroDampingIsTheUndampedRun)

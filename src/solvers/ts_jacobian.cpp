@@ -459,7 +459,7 @@ PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscRe
   TSProblem &P = *static_cast<TSProblem *>(ctx);
 
   PetscFunctionBeginUser;
-  PetscCall(UpdateJacobian(P, X, shiftA, P.jac.Jd ? shiftV : 0.0));
+  PetscCall(UpdateJacobian(P, X, shiftA, P.jac.Jd || P.jac.Bd ? shiftV : 0.0)); // Jd: the assembled path, Bd: the rank-one path
   PetscFunctionReturn(0);
 }
 
