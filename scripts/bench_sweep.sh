@@ -144,7 +144,7 @@ if ((perpoint)); then
     awk -v b="$label" -v n="$n" -v ts="$ts_label" -v c="$comp" -v su="$su" -v co="$co" -v ff="$ff" -v o="$out" -v p="$points" 'BEGIN {
       s = 1e3 * su / p; k = 1e3 * co / p; f = 1e3 * ff / p; w = 1e3 * o / p; over = c - k - f
       printf "%-10s %5d %6s  %7.4f ms  %7.4f ms %7.4f ms %7.4f ms %7.4f ms %7.4f ms  %9.4f ms %9.1f%%\n", b, n, ts, c, s, k, f, w, c - s - k - f - w, over, 100 * over / k }'
-    grep -E "^sweep: integrator contexts" "$log" | sed 's/^/             /' || true
+    grep -E "^sweep: (integrator contexts|per structure)" "$log" | sed 's/^/             /' || true
   }
   for n in ${BENCH_PERPOINT_NODES:-41 161}; do
     for x in "${exes[@]}"; do

@@ -1,6 +1,7 @@
 // The scenario from the options. See scenario_options.hpp.
 #include "io/scenario_options.hpp"
 
+#include "base/option_table.hpp"
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
 
@@ -59,21 +60,53 @@ PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
 
 } // namespace
 
+unsigned ScenarioPartOf(const std::string &name)
+{
+  const std::string option = name.empty() || name[0] == '-' ? name : "-" + name;
+  for (const OptionModule *m : OptionModules()) {
+    if (!m->Find(option)) continue;
+    if (m->name == "ball") return ScenarioBall;
+    if (m->name == "bat") return ScenarioSwing;
+    if (m->name == "impact") return ScenarioImpact;
+    if (m->name == "monitor") return ScenarioMonitors;
+    if (m->name == "flight" || m->name == "air") return ScenarioFlight;
+    return ScenarioAll;
+  }
+  return ScenarioAll;
+}
+
 PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Scenario *sc)
 {
+  const unsigned read = how.reuse && !(how.read & ScenarioBeam) ? how.read : ScenarioAll; // a beam read again: everything
+  auto           part = [&](ScenarioPart p) { return (read & p) != 0; };
+
   PetscFunctionBeginUser;
-  PetscCall(BeamParamsFromOptions(comm, &sc->beam));
-  PetscCall(BallParamsFromOptions(comm, &sc->ball));
-  PetscCall(SwingFromOptions(comm, sc->beam, &sc->swing));
+  if (how.reuse) { // the parts not read again, as read before
+    const Scenario &r = *how.reuse;
+    if (!part(ScenarioBeam)) sc->beam = r.beam;
+    if (!part(ScenarioBall)) sc->ball = r.ball;
+    if (!part(ScenarioSwing)) sc->swing = r.swing;
+    if (!part(ScenarioImpact)) sc->impact = r.impact;
+    if (!part(ScenarioMonitors)) sc->monitor = r.monitor;
+    if (!part(ScenarioFlight)) sc->flight = r.flight;
+  }
+  if (part(ScenarioBeam)) PetscCall(BeamParamsFromOptions(comm, &sc->beam));
+  if (part(ScenarioBall)) PetscCall(BallParamsFromOptions(comm, &sc->ball));
+  if (part(ScenarioSwing)) PetscCall(SwingFromOptions(comm, sc->beam, &sc->swing));
   // A ball at rest is struck only by a swinging bat (the approach speed v_i + V(x) > 0 is then
   // checked at the impact point, naming both options).
   PetscCheck(sc->ball.speed > 0 || sc->swing.Swings(), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-ball_speed 0 is not allowed for a bat at rest: ball and beam would never meet; give -ball_speed > 0 (m/s), or swing the bat (-bat_speed, -bat_angular_velocity)");
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
-  PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
+  if (part(ScenarioImpact)) PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
+  const PetscReal radius_as_read = sc->beam.shell.contact_radius;
   if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
-  if (how.monitors) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
-  PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
+  if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
+  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
+  if (how.read_as) {
+    *how.read_as                           = *sc;
+    how.read_as->beam.shell.contact_radius = radius_as_read;
+  }
   PetscFunctionReturn(0);
 }
 

@@ -14,10 +14,12 @@
 #include "model/beam.hpp"
 #include "model/contact.hpp"
 #include "solvers/stepper.hpp"
+#include "system/beam_system.hpp"
 
 #include <petscsys.h>
 
 #include <cmath>
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -277,6 +279,15 @@ PetscReal ImpactApproachSpeed(const Scenario &sc);
 // Runs one impact on comm (the DMDA is distributed over its ranks). The TS is
 // configured from the options database (no prefix): -ts_type and friends.
 PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &scenario, ImpactResult *result);
+
+// The system of one structure, kept by a caller whose next runs are on the same beam (a sweep's
+// points on one structure): ImpactRun with it uses `sys` when set, which must be the system of
+// the scenario's beam (BeamSystemBuild of scenario.beam: the caller's promise), and else builds
+// the system and leaves it there. Reset it when the beam changes.
+struct ImpactStructure {
+  std::shared_ptr<const BeamSystem> sys;
+};
+PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &scenario, ImpactResult *result, ImpactStructure *structure);
 
 // The same impact with the hand-written leapfrog baseline (solvers/leapfrog.hpp), serial.
 struct LeapfrogParams;

@@ -62,7 +62,8 @@ namespace {
 
 // Everything one run holds apart from its stepper: built once per scenario.
 struct ImpactSetup {
-  BeamSystem      sys;
+  std::shared_ptr<const BeamSystem> system; // built for this run, or the structure's (ImpactStructure)
+  const BeamSystem &sys() const { return *system; }
   ContactCoupling g;
   ContactScales   scales;
   ContactState    contact;  // touching, loading: the phase the stepper's force law reads
@@ -72,13 +73,19 @@ struct ImpactSetup {
   FrameMotion     frame;    // the swing's rigid frame, which a grip ties the handle to (at rest for a bat at rest)
 };
 
-PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *s)
+PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *s, ImpactStructure *structure)
 {
   std::string why;
 
   PetscFunctionBeginUser;
-  PetscCheck(BeamSystemBuild(sc.beam, &s->sys, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  s->g        = BeamSystemCoupling(s->sys, sc.impact.x);
+  if (structure && structure->sys) s->system = structure->sys;
+  else {
+    auto built = std::make_shared<BeamSystem>();
+    PetscCheck(BeamSystemBuild(sc.beam, built.get(), &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
+    s->system = built;
+    if (structure) structure->sys = s->system;
+  }
+  s->g        = BeamSystemCoupling(s->sys(), sc.impact.x);
   s->approach = sc.ball.speed;
   if (sc.swing.Swings()) { // the bat moves rigidly toward the ball (-y): V(x) = V_cm + Omega (x - x_cm)
     const BeamRigidBody body = BeamRigidBodyOf(sc.beam);
@@ -86,22 +93,22 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
     s->approach              = sc.ball.speed + s->V_x;
     PetscCheck(s->approach > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_speed %g, -bat_angular_velocity %g: the bat moves at %g m/s at x = %g m, so ball (-ball_speed %g) and bat do not approach",
                (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x, (double)sc.ball.speed);
-    s->beam_velocity = BeamSystemSwingVelocity(s->sys, sc.swing, body);
+    s->beam_velocity = BeamSystemSwingVelocity(s->sys(), sc.swing, body);
     s->frame.v       = s->beam_velocity; // the frame moves with the bat's rigid swing
   }
-  if (ForceOperatorDriven(s->sys, &s->frame)) { // the hands' work is counted from Q(0)
-    const std::vector<PetscReal> zero(s->sys.ndof, 0.0);
+  if (ForceOperatorDriven(s->sys(), &s->frame)) { // the hands' work is counted from Q(0)
+    const std::vector<PetscReal> zero(s->sys().ndof, 0.0);
     ForceState                   at0; // t = 0: undeformed, moving with the frame
     at0.y        = zero.data();
-    at0.ys       = s->sys.fields;
+    at0.ys       = s->sys().fields;
     at0.v        = s->frame.v.data();
-    at0.vs       = s->sys.fields;
+    at0.vs       = s->sys().fields;
     at0.frame    = &s->frame;
-    s->frame.q0  = ForceOperatorFrameMomentum(s->sys, at0, 0, s->sys.ndof) + sc.ball.mass * FrameMotionAt(s->frame, s->g) * sc.ball.speed;
+    s->frame.q0  = ForceOperatorFrameMomentum(s->sys(), at0, 0, s->sys().ndof) + sc.ball.mass * FrameMotionAt(s->frame, s->g) * sc.ball.speed;
   }
   BallParams approaching = sc.ball; // the contact's scales are those of the approach speed
   approaching.speed      = s->approach;
-  s->scales              = ContactScalesOf(s->sys, approaching);
+  s->scales              = ContactScalesOf(s->sys(), approaching);
   s->contact             = ContactState();
   ContactBegin(sc.ball, &s->contact, s->approach); // the first contact's law state (its exponent), from its approach speed
   PetscFunctionReturn(0);
@@ -403,7 +410,7 @@ PetscErrorCode ObliqueRunFinish(MPI_Comm comm, const ImpactSetup &s, const Scena
   ObliqueBeam   beam; // the bat's second plane, in the modes of the same system
   PetscFunctionBeginUser;
   beam.comm = comm;
-  beam.sys  = &s.sys;
+  beam.sys  = &s.sys();
   beam.g    = &s.g;
   PetscCall(FreeFlightTruncation(comm, sc, &beam.truncation));
   PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, beam, &rec->oblique));
@@ -418,18 +425,25 @@ PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario 
   ImpactRecord rec;
 
   PetscFunctionBeginUser;
-  const MeasureContext ctx{&s.sys, &s.g, &sc.ball, &s.contact, &s.frame};
+  const MeasureContext ctx{&s.sys(), &s.g, &sc.ball, &s.contact, &s.frame};
   PetscCall(ImpactDrive(st, ctx, &s.contact, sc, s.scales, s.approach, *res, &rec, res));
   if (sc.oblique.on) PetscCall(ObliqueRunFinish(st.Comm(), s, sc, &rec));
   rec.V_x      = s.V_x;
   rec.scales   = s.scales;
-  ImpactOutcomeFinish(sc, s.sys, std::move(rec), res);
+  ImpactOutcomeFinish(sc, s.sys(), std::move(rec), res);
   PetscFunctionReturn(0);
 }
 
 } // namespace
 
 PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ImpactRun(comm, given, res, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res, ImpactStructure *structure)
 {
   ImpactSetup              s;
   std::unique_ptr<Stepper> st;
@@ -441,13 +455,13 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res
   const Scenario &sc = ObliqueImpact(given) ? normal : given;
   *res = ImpactResult();
   ImpactStageScope stage(ImpactStage::Setup);
-  PetscCall(ImpactSetupBuild(comm, sc, &s));
+  PetscCall(ImpactSetupBuild(comm, sc, &s, structure));
   set.check_unused_options = sc.impact.check_unused_options;
   set.report_setup         = sc.impact.report_setup;
   set.strict_solver_options = sc.impact.strict_solver_options;
-  PetscCall(TSStepperCreate(comm, s.sys, s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
+  PetscCall(TSStepperCreate(comm, s.sys(), s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
   stage.End(); // ImpactDrive holds the contact and free-flight stages
-  if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys, s.scales, *res));
+  if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys(), s.scales, *res));
   PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
   PetscFunctionReturn(0);
 }
@@ -462,8 +476,8 @@ PetscErrorCode LeapfrogRun(const Scenario &given, const LeapfrogParams &lp, Impa
   if (ObliqueImpact(given)) PetscCall(ObliqueNormalScenario(PETSC_COMM_SELF, given, &normal));
   const Scenario &sc = ObliqueImpact(given) ? normal : given;
   *res = ImpactResult();
-  PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s));
-  PetscCall(LeapfrogStepperCreate(s.sys, s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));
+  PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s, nullptr));
+  PetscCall(LeapfrogStepperCreate(s.sys(), s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));
   PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
   PetscFunctionReturn(0);
 }

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <map>
 
@@ -55,7 +56,7 @@ int SweepStatusOfError(PetscErrorCode ierr)
   }
 }
 
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result)
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result, SweepReuse *reuse)
 {
   Scenario       c;
   int            status = SweepOk;
@@ -63,10 +64,19 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
 
   PetscFunctionBeginUser;
   // The case's options stay set while it runs (the integrator reads its own from them).
-  ierr = SweepCaseScenario(comm, plan, index, true, &c, &status, reason);
+  ierr = SweepCaseScenario(comm, plan, index, true, &c, &status, reason, reuse ? &reuse->scenario : nullptr);
   if (!ierr && status == SweepOk) {
     c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
-    ierr = ImpactRun(comm, c, result);
+    ImpactStructure *structure   = nullptr;
+    if (reuse) { // the structure's system, unless this point is on another beam
+      const PetscReal radius = c.beam.shell.contact_radius;
+      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0) reuse->structure.sys.reset();
+      reuse->shell_radius = radius;
+      structure           = &reuse->structure;
+    }
+    const BeamSystem *kept = structure ? structure->sys.get() : nullptr;
+    ierr                   = ImpactRun(comm, c, result, structure);
+    if (structure && structure->sys && structure->sys.get() != kept) ++reuse->systems;
     if (ierr) {
       status = SweepStatusOfError(ierr);
       *reason = SweepErrorReason(ierr);
@@ -114,6 +124,7 @@ struct SweepShare {
   std::map<PetscInt, std::string> reasons;
   PetscInt                        computed = 0, failed = 0, shown = 0;
   double                          busy = 0, journal = 0, handout = 0; // s
+  PetscInt                        reuse[3] = {0, 0, 0}; // scenarios read whole, point's parts only; systems built (SweepReuse)
 };
 
 std::string Points(PetscInt n) { return std::to_string((long long)n) + (n == 1 ? " point" : " points"); }
@@ -142,7 +153,8 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   const PetscInt n = help ? 1 : plan->cases(); // -help: print the options once
   candidates->clear();
-  const double t0 = MPI_Wtime();
+  SweepScenarioCache cache; // the structure's scenario: a point reads only its own parts again
+  const double       t0 = MPI_Wtime();
   for (PetscInt i = 0; i < n; ++i) {
     if (i == 1000 && n > 1000000) { // a huge plan: its set-up (every point's options read and checked) is announced
       const double per = (MPI_Wtime() - t0) / i;
@@ -152,7 +164,7 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
     Scenario       c;
     int            status;
     std::string    reason;
-    PetscErrorCode ierr = SweepCaseScenario(comm, *plan, i, true, &c, &status, &reason);
+    PetscErrorCode ierr = SweepCaseScenario(comm, *plan, i, true, &c, &status, &reason, &cache);
     PetscCall(SweepCaseOptionsClear(*plan));
     if (ierr) {
       const std::string msg = LastErrorMessage(ierr);
@@ -347,6 +359,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
   journal.signature = S.signature_hash;
   PetscCallMPI(MPI_Bcast(&journal.signature, 1, MPI_UINT64_T, 0, farm.world));
   journal.ncols = (uint32_t)SweepColumns(plan).size();
+  SweepReuse reuse; // the structure's scenario and system, kept across this rank's points
   auto run_case = [&](MPI_Comm group, PetscInt t) -> PetscErrorCode {
     const PetscInt      index = todo[t];
     std::vector<double> row;
@@ -354,7 +367,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
     ImpactResult        result;
     PetscFunctionBeginUser;
     const double tc = MPI_Wtime();
-    PetscCall(SweepCaseRun(group, plan, index, &row, &reason, &result));
+    PetscCall(SweepCaseRun(group, plan, index, &row, &reason, &result, &reuse));
     SweepNotesPointDone(farm.group_rank == 0); // its notes, counted once for the sweep
     const double tj = MPI_Wtime();
     mine->busy += tj - tc;
@@ -380,6 +393,9 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
   SweepNotesCollect();
   if (!todo.empty()) PetscCall(TaskFarmRun(farm, (PetscInt)todo.size(), run_case, between));
   journal.Close();
+  mine->reuse[0] = reuse.scenario.full;
+  mine->reuse[1] = reuse.scenario.partial;
+  mine->reuse[2] = reuse.systems;
   PetscFunctionReturn(0);
 }
 
@@ -458,6 +474,8 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
   PetscInt contexts[2]; // the integrator's per-structure contexts built, and the runs that reused one (all ranks)
   TSStepperContextCounts(&contexts[0], &contexts[1]);
   PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : contexts, contexts, 2, MPIU_INT, MPI_SUM, 0, comm));
+  PetscInt reuse[3] = {mine.reuse[0], mine.reuse[1], mine.reuse[2]}; // the points' readings and systems (all ranks)
+  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : reuse, reuse, 3, MPIU_INT, MPI_SUM, 0, comm));
   if (rank == 0 && S.status_column >= 0) {
     std::map<int, PetscInt> count;
     int                     beyond = -1; // the column compression_beyond_radius
@@ -494,6 +512,9 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
                               1e3 * journal_sum / computed, 1e3 * S.write_total / computed, S.writes, 1e3 * (size * farm_time - busy_sum - handout_sum - journal_sum - S.write_total) / computed, setup));
       if (computed > 0) // solvers/ts_stepper.hpp: a point on a structure already run reuses its TS, layout and vectors
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: integrator contexts: %" PetscInt_FMT " built, %" PetscInt_FMT " runs reused one (all ranks, the probe included)\n", contexts[0], contexts[1]));
+      if (computed > 0) // studies/sweep.hpp, SweepReuse: a point on the structure of the one before reads only its own options and reuses the system
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: per structure: %" PetscInt_FMT " points read every option, %" PetscInt_FMT " only their own axes' (ball, bat, impact, ...); %" PetscInt_FMT " beam system(s) built (all ranks)\n", reuse[0],
+                              reuse[1], reuse[2]));
     }
   }
   if (failed)

@@ -38,8 +38,23 @@ std::vector<SweepColumn> SweepColumns(const SweepPlan &plan);
 
 // Runs case `index` on comm (all its ranks) and returns its row on every rank; a case that
 // fails gives a row with its status, NaN numbers and *reason (the error's first line).
-// Errors out only when the case's scenario cannot be read (checked before any work).
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result);
+// Errors out only when the case's scenario cannot be read (checked before any work). reuse
+// (may be NULL): what the rank keeps across its cases; the row is the same with or without it,
+// bit for bit.
+struct SweepReuse;
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result, SweepReuse *reuse = nullptr);
+
+// What a rank keeps across the points it runs, so that a point redoes only what changes with
+// it: the structure's scenario (only the point's parts read again: SweepCaseScenario) and the
+// structure's system (BeamSystemBuild once per structure: ImpactStructure), dropped when a
+// point is on another structure (a structure axis changes: beam_nodes, a beam_* property,
+// ts_type, ...) or a shell's contact radius, resolved per point from the ball, changes.
+struct SweepReuse {
+  SweepScenarioCache scenario;
+  ImpactStructure    structure;
+  PetscReal          shell_radius = 0; // m, the contact radius the structure's system has
+  PetscInt           systems = 0;      // systems built (structure.sys set by a run)
+};
 
 // The status of a failed run from its PETSc error code (SweepStatus).
 int SweepStatusOfError(PetscErrorCode ierr);

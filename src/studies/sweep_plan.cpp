@@ -499,15 +499,42 @@ std::string SweepErrorReason(PetscErrorCode ierr)
   return msg;
 }
 
-PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason)
+namespace {
+
+// The reading of case `index` with the cache: the structure's scenario reused when the case is
+// on it (how->reuse, how->read: the point's parts), else a whole reading that replaces it.
+void SweepCacheReading(const SweepPlan &plan, PetscInt index, bool monitors, SweepScenarioCache *cache, std::vector<PetscReal> *key, ScenarioReading *how)
 {
-  ScenarioReading how;
-  bool            bodies_read = false;
-  BeamParams      beam;
+  if (cache->axis_part.size() != plan.axes.size()) {
+    cache->axis_part.clear();
+    for (const SweepAxis &a : plan.axes) cache->axis_part.push_back(ScenarioPartOf(a.name));
+  }
+  const std::vector<PetscReal> v    = plan.CaseValues(index);
+  unsigned                     read = 0;
+  key->clear();
+  for (size_t k = 0; k < v.size(); ++k) {
+    if (cache->axis_part[k] == ScenarioAll) key->push_back(v[k]);
+    else read |= cache->axis_part[k];
+  }
+  if (!cache->valid || cache->monitors != monitors || *key != cache->key) return; // a whole reading
+  how->reuse = &cache->base;
+  how->read  = read;
+}
+
+} // namespace
+
+PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason, SweepScenarioCache *cache)
+{
+  ScenarioReading        how;
+  bool                   bodies_read = false;
+  BeamParams             beam;
+  std::vector<PetscReal> key;
+  Scenario               read_as;
 
   PetscFunctionBeginUser;
   *status = SweepOk;
   reason->clear();
+  if (cache) cache->last_partial = false;
   PetscCall(SweepCaseOptionsSet(plan, index));
   how.monitors    = monitors;
   how.after_bodies = [&](const Scenario &bodies) -> PetscErrorCode {
@@ -515,6 +542,10 @@ PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt 
     beam        = bodies.beam;
     return 0;
   };
+  if (cache) {
+    SweepCacheReading(plan, index, monitors, cache, &key, &how);
+    how.read_as = how.reuse ? nullptr : &read_as; // the structure's reading, kept once it succeeded
+  }
   *sc                 = Scenario();
   PetscErrorCode ierr = ScenarioFromOptions(comm, how, sc);
   if (ierr) {
@@ -531,6 +562,15 @@ PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt 
       }
     }
     return ierr;
+  }
+  if (cache) cache->last_partial = how.reuse != nullptr;
+  if (cache && how.reuse) ++cache->partial;
+  else if (cache) {
+    ++cache->full;
+    cache->valid    = true;
+    cache->monitors = monitors;
+    cache->key      = key;
+    cache->base     = std::move(read_as);
   }
   PetscFunctionReturn(0);
 }

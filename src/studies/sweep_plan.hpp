@@ -103,12 +103,29 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan);
 PetscErrorCode SweepCaseOptionsSet(const SweepPlan &plan, PetscInt index);
 PetscErrorCode SweepCaseOptionsClear(const SweepPlan &plan);
 
+// What the points of one structure share: the scenario as read at the structure's first point.
+// The structure is the values of the axes that are not one part of the scenario alone
+// (ScenarioPartOf: a beam_* axis, beam_nodes, ts_type, ...); the other axes (impact_x,
+// ball_speed, ball_mass, bat_speed, impact_offset, ...) are the point's, and a point on the
+// structure of the one before reads only their parts again (io/scenario_options.hpp).
+struct SweepScenarioCache {
+  bool                   valid = false;
+  bool                   monitors = true;  // the reading's (a key too)
+  std::vector<PetscReal> key;              // the structure axes' values
+  Scenario               base;             // as read (ScenarioReading::read_as)
+  std::vector<unsigned>  axis_part;        // ScenarioPartOf of each axis (ScenarioAll: a structure axis)
+  PetscInt               full = 0, partial = 0; // readings of the whole scenario, of the point's parts only
+  bool                   last_partial = false;  // the last reading was on the cached structure
+};
+
 // The scenario of case `index`: the options read as -task impact reads them, with the
 // case's values set (and left set: the run reads the integrator's from the database; clear
 // them with SweepCaseOptionsClear). An impact point off the beam or held fixed is not an
 // error: *status says so (SweepOffBeam, SweepHeldPoint) and *reason has the option's message;
-// any other error is returned. monitors: read the -monitor_* options too.
-PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason);
+// any other error is returned. monitors: read the -monitor_* options too. cache (may be NULL):
+// the structure's scenario, reused when this case is on it (only the point's parts are read),
+// else replaced by this case's.
+PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason, SweepScenarioCache *cache = nullptr);
 
 // The values of case `index`, "impact_x = 0.3 m, ts_type = cn", formatted as C's printf
 // does (petsc_format false) or as PETSc's messages do (true: 1 reads "1.").
