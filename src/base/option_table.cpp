@@ -278,6 +278,16 @@ std::string Text17(double v)
   return buf;
 }
 
+// A number logged with its text, unless its entry already holds this value, given or not (a
+// sweep's point reading its module again): the text would be the same.
+void LogNumber(const OptionSpec &s, double v, PetscBool given)
+{
+  const auto &log = UsedLog();
+  const auto  it  = log.find(s.name);
+  if (it != log.end() && it->second.kind == s.kind && it->second.list.empty() && !std::memcmp(&it->second.number, &v, sizeof v) && it->second.given == (given ? true : false)) return;
+  Log(s, Text17(v), v, {}, given);
+}
+
 // A whole word parsed as a number (strtod: also inf, nan, 1e3); false if it is not one.
 bool ParseReal(const std::string &w, double *v)
 {
@@ -341,7 +351,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   }
   PetscCall(PetscOptionsReal(name, HelpWithUnit(*s).c_str(), "", *value, value, &given));
   if (given) *value = v; // PETSc's parse agrees; the checked value is the one kept
-  Log(*s, Text17(*value), *value, {}, given);
+  LogNumber(*s, *value, given);
   if (set) *set = given;
   PetscFunctionReturn(0);
 }

@@ -19,7 +19,6 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
-#include <sstream>
 
 namespace beamimpact {
 
@@ -142,17 +141,20 @@ PetscErrorCode TSContextKey(MPI_Comm comm, const BeamSystem &sys, const char *ty
   key->assign(reinterpret_cast<const char *>(&comm), sizeof comm);
   *key += " " + std::to_string((long long)sys.nodes) + " " + std::to_string((long long)sys.fields) + " " + std::to_string((long long)sys.GhostNodes()) + " " + type + " |";
   PetscCall(PetscOptionsGetAll(NULL, &all));
-  std::istringstream in(all ? all : "");
-  PetscCall(PetscFree(all));
-  std::string tok;
-  bool        keep = false;
-  while (in >> tok) {
-    if (tok.size() > 1 && tok[0] == '-' && std::isalpha(static_cast<unsigned char>(tok[1]))) {
+  bool keep = false;
+  for (const char *p = all ? all : "";;) { // the words of the database, split at white space (once a point: no stream)
+    while (*p && std::isspace(static_cast<unsigned char>(*p))) ++p;
+    const char *word = p;
+    while (*p && !std::isspace(static_cast<unsigned char>(*p))) ++p;
+    const size_t n = (size_t)(p - word);
+    if (!n) break;
+    if (n > 1 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]))) {
       keep = false;
-      for (const char *prefix : {"-ts_", "-snes_", "-ksp_", "-pc_", "-mat_"}) keep = keep || tok.compare(0, std::strlen(prefix), prefix) == 0;
+      for (const char *prefix : {"-ts_", "-snes_", "-ksp_", "-pc_", "-mat_"}) keep = keep || (n >= std::strlen(prefix) && !std::strncmp(word, prefix, std::strlen(prefix)));
     }
-    if (keep) *key += " " + tok;
+    if (keep) key->append(" ").append(word, n);
   }
+  PetscCall(PetscFree(all));
   PetscFunctionReturn(0);
 }
 
