@@ -30,7 +30,9 @@
 # would take ~1 s a point at 641). Per point it
 # prints the compute (the farm's busy time), the stages of -log_view (set-up, contact, free
 # flight, output; the rest is the sweep's own work: options, row) and the overhead = compute -
-# contact - free flight, also as a share of the contact's stepping. With BENCH_BEFORE=path to
+# contact - free flight, also as a share of the contact's stepping, and the sweep's reuse lines
+# (integrator contexts built; scenarios read whole or only the point's parts; beam systems
+# built: docs/sweep.md). With BENCH_BEFORE=path to
 # another executable (e.g. a build of ade16c0) each sweep runs with it too, back to back. Then a
 # two-axis sweep (impact_x x ball_speed, N = 41) at 500 and 2000 points: its time per point at
 # 2000 over that at 500 (a total linear in the points: 1). Prints the load average.
