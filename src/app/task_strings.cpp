@@ -7,6 +7,8 @@
 #include "solvers/modes.hpp"
 #include "solvers/string_bed_modes.hpp"
 
+#include <slepceps.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -26,8 +28,14 @@ PetscErrorCode TaskModesIsStringBed(MPI_Comm comm, PetscBool *bed)
 PetscErrorCode StringBedHelpOptions(MPI_Comm comm)
 {
   StringBedParams p;
+  EPS             eps; // the bed's eigensolver options (-strings_modes_eps_*, -strings_modes_st_*)
   PetscFunctionBeginUser;
   PetscCall(StringBedParamsFromOptions(comm, &p));
+  if (!EPSCreate(comm, &eps)) {
+    (void)EPSSetOptionsPrefix(eps, "strings_modes_");
+    (void)EPSSetFromOptions(eps);
+    (void)EPSDestroy(&eps);
+  }
   PetscFunctionReturn(0);
 }
 
