@@ -46,6 +46,16 @@ out=$("$exe" -options_file options/impact.opts -options_file options/integrators
 if [[ $rc -eq 0 ]] && grep -q "note: 1 PETSc solver option(s) set but not used by this integrator: -ts_rk_type 4" <<<"$out"; then
   pass "options/impact.opts with rk4.opts and -ts_type cn runs, the leftover -ts_rk_type is a note"
 else fail "options/impact.opts rk4.opts -ts_type cn: exit $rc: $out"; fi
+# a solver's viewers are read at each solve, after the set-up's check: they act under an
+# implicit integrator (no note) and are leftovers under an explicit one
+out=$("$exe" -options_file options/impact.opts -ts_type cn -ksp_converged_reason -snes_converged_reason -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "Linear solve converged" <<<"$out" && grep -q "Nonlinear solve converged" <<<"$out" && ! grep -q "note: .*not used" <<<"$out"; then
+  pass "-ksp_converged_reason and -snes_converged_reason under cn act and are not called unused"
+else fail "cn -ksp_converged_reason: exit $rc: $(grep -v 'solve converged' <<<"$out")"; fi
+out=$("$exe" -options_file options/impact.opts -ts_type rk -ts_rk_type 4 -ksp_converged_reason -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "note: 1 PETSc solver option(s) set but not used by this integrator: -ksp_converged_reason" <<<"$out"; then
+  pass "-ksp_converged_reason under rk4 (no linear solve) is a leftover note"
+else fail "rk4 -ksp_converged_reason: exit $rc: $out"; fi
 out=$("$exe" -options_file options/impact.opts -beam_thicknes 0.01 -output none 2>&1); rc=$?
 if [[ $rc -ne 0 ]] && grep -q "option(s) unknown (set but read by no task): -beam_thicknes 0.01 (did you mean -beam_thickness?)" <<<"$out" && ! grep -q "^x " <<<"$out"; then
   pass "a misspelt program option is an error before the run, suggesting the closest known option"

@@ -544,6 +544,17 @@ struct TangentialKernelCache {
 
 namespace {
 
+// The kernels over exactly tau, not kept (a bisection's trial lengths: each is used once, and a
+// kept length within 1e-12 would stand in for it and stall the bisection at that resolution).
+std::shared_ptr<const PlaneKernels> PlaneKernelsExact(const TangentialPlane &p, PetscReal tau)
+{
+  auto K = std::make_shared<PlaneKernels>();
+  K->tau = tau;
+  K->mode.resize(p.omega.size());
+  for (size_t k = 0; k < p.omega.size(); ++k) K->mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
+  return K;
+}
+
 // The kernels over tau: from the cache where a length equal to tau to 1e-12 (the steps' lengths
 // are differences of times that carry that round-off) is kept, else computed and kept.
 std::shared_ptr<const PlaneKernels> PlaneKernelsOf(const TangentialPlane &p, PetscReal tau)
@@ -556,10 +567,7 @@ std::shared_ptr<const PlaneKernels> PlaneKernelsOf(const TangentialPlane &p, Pet
   TangentialKernelCache &C = *p.cache;
   for (const auto &e : C.entry)
     if (std::abs(e->tau - tau) <= 1e-12 * tau) return e;
-  auto K  = std::make_shared<PlaneKernels>();
-  K->tau  = tau;
-  K->mode.resize(p.omega.size());
-  for (size_t k = 0; k < p.omega.size(); ++k) K->mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
+  auto K = PlaneKernelsExact(p, tau);
   if (C.entry.size() < TangentialKernelCache::kSize) C.entry.push_back(K);
   else C.entry[C.next++ % TangentialKernelCache::kSize] = K;
   return K;
@@ -694,12 +702,12 @@ void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const
     PetscReal lo = 0, hi = rest;
     for (int b = 0; b < 200 && hi - lo > 1e-15 * rest; ++b) {
       const PetscReal    mid = 0.5 * (lo + hi);
-      const auto         Km  = PlaneKernelsOf(*p, mid);
+      const auto         Km  = PlaneKernelsExact(*p, mid);
       f                      = PhaseForce(m, inv_me, *p, *Km, *s, Fb);
       if (PhaseEnds(m, *s, PlaneTry(*p, *Km, inv_me, f), f, mid, Fb)) hi = mid;
       else lo = mid;
     }
-    const auto Kh = PlaneKernelsOf(*p, hi);
+    const auto Kh = PlaneKernelsExact(*p, hi); // the switch at exactly hi (tau += hi below)
     PlaneCommit(m, inv_me, *Kh, PhaseForce(m, inv_me, *p, *Kh, *s, Fb), p, s);
     PhaseSwitch(m, p, s);
     tau += hi;

@@ -29,7 +29,8 @@ struct IrkStagePC {
   std::vector<PetscScalar> S, T;        // s x s, column-major
 };
 
-// The KAIJ's S and T (T empty: the identity), and whether they differ from what A holds.
+// The KAIJ's S and T (T empty: the identity), and whether they differ from what A holds;
+// compared in place, copied only when they changed (this runs at every PC apply).
 PetscErrorCode ReadShifts(IrkStagePC &c, Mat K, bool *changed)
 {
   const PetscScalar *S, *T;
@@ -38,21 +39,23 @@ PetscErrorCode ReadShifts(IrkStagePC &c, Mat K, bool *changed)
   PetscFunctionBeginUser;
   PetscCall(MatKAIJGetSRead(K, &p, &q, &S));
   PetscCheck(p == q && p > 0 && S, PetscObjectComm((PetscObject)K), PETSC_ERR_SUP, "-ts_type irk: the stage matrix's shift block is %" PetscInt_FMT " x %" PetscInt_FMT ", expected s x s with s = -ts_irk_nstages", p, q);
-  std::vector<PetscScalar> s_new(S, S + p * q), t_new;
+  const size_t n      = (size_t)(p * q);
+  const bool   s_same = p == c.s && c.S.size() == n && std::equal(S, S + n, c.S.begin());
+  if (!s_same) c.S.assign(S, S + n);
   PetscCall(MatKAIJRestoreSRead(K, &S));
   PetscCall(MatKAIJGetTRead(K, NULL, NULL, &T));
   bool identity = true;
-  if (T) {
-    t_new.assign(T, T + p * q);
+  if (T)
     for (PetscInt i = 0; i < p; ++i)
       for (PetscInt j = 0; j < p; ++j) identity = identity && T[i + p * j] == (i == j ? 1.0 : 0.0);
+  const bool t_same = identity ? c.T.empty() : c.T.size() == n && std::equal(T, T + n, c.T.begin());
+  if (!t_same) {
+    if (identity) c.T.clear();
+    else c.T.assign(T, T + n);
   }
   PetscCall(MatKAIJRestoreTRead(K, &T));
-  if (identity) t_new.clear();
-  *changed = p != c.s || s_new != c.S || t_new != c.T;
+  *changed = !s_same || !t_same;
   c.s      = p;
-  c.S      = s_new;
-  c.T      = t_new;
   c.tI     = identity;
   PetscFunctionReturn(0);
 }

@@ -608,6 +608,28 @@ PetscErrorCode TSCheckTypeSettings(TS ts, const char *type, MPI_Comm comm)
 
 // Defaults that options override (a step resolving the contact, capped so one step cannot
 // hold two events), then the options, then what the run needs of the solver.
+// KSPSolve and SNESSolve read their viewers (-ksp_converged_reason, -snes_view, ...) at each
+// solve, after ConfigureTS's unused-option check: where the integrator has the solver they act,
+// so they are marked read here (PetscOptionsHasName) instead of being reported unused.
+PetscErrorCode MarkSolveTimeViewers(TS ts)
+{
+  static const char *ksp_names[]  = {"-ksp_converged_reason", "-ksp_converged_rate", "-ksp_view", "-ksp_view_pre", "-ksp_view_mat", "-ksp_view_pmat", "-ksp_view_rhs", "-ksp_view_solution", "-ksp_view_mat_explicit", "-ksp_view_preconditioned_operator_explicit", "-ksp_view_final_residual", "-ksp_view_eigenvalues", "-ksp_view_eigenvalues_explicit", "-ksp_view_singularvalues"};
+  static const char *snes_names[] = {"-snes_converged_reason", "-snes_view", "-snes_view_pre", "-snes_view_solution"};
+  SNES        snes;
+  KSP         ksp;
+  const char *prefix;
+  PetscBool   set;
+
+  PetscFunctionBeginUser;
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(SNESGetOptionsPrefix(snes, &prefix));
+  for (const char *n : snes_names) PetscCall(PetscOptionsHasName(NULL, prefix, n, &set));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  for (const char *n : ksp_names) PetscCall(PetscOptionsHasName(NULL, prefix, n, &set));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettings &set)
 {
   TSAdapt   adapt;
@@ -654,6 +676,7 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   PetscCall(IrkStageLayout(S.ts, S.P.L.pack));            // -ts_type irk on more than one rank: its stage vector split as the state
   PetscCall(TSSetUp(S.ts));
   PetscCall(IrkStageAfterSetUp(S.ts)); // -ts_type irk: a new step size reaches its stage matrix on every rank
+  if (S.P.form != Formulation::Explicit) PetscCall(MarkSolveTimeViewers(S.ts));
   if (set.check_unused_options) PetscCall(OptionsCheckUnused(S.P.L.comm, {}, set.strict_solver_options));
   if (S.P.form != Formulation::Explicit) { // the last Newton solve's residual history explains a failure
     SNES snes;
