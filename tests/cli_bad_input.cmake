@@ -139,6 +139,14 @@ set(cases
   "${HYST} ${CHAR} -ball_cor_table ${T}/columns.txt|-ball_cor_table ${T}/columns.txt, line 2: expected 2 columns"
   "${HYST} ${CHAR} -ball_cor_table ${T}/good.txt -ball_cor 0.5|-ball_cor_table and -ball_cor both set the coefficient of restitution"
   "${HYST} ${CHAR} -ball_cor_table ${T}/good.txt -ball_n 8|-ball_cor_table and -ball_n both set the unloading exponent n"
+  # the string bed (issue 25): every value named with what is allowed
+  "-task modes -strings_frame held -strings_tension 0|-strings_tension 0\\.? is not allowed: it must be > 0 \\(N\\)"
+  "-task modes -strings_frame held -strings_spacing_crosses -0.01|-strings_spacing_crosses -0.01 is not allowed: it must be > 0 \\(m\\)"
+  "-task modes -strings_frame held -head_width 0|-head_width 0\\.? is not allowed: it must be > 0 \\(m\\)"
+  "-task modes -strings_frame held -head_shape oval|-head_shape oval is not known: use one of ellipse, rectangle"
+  "-task modes -strings_frame held -strings_nodes 4|-strings_nodes 4\\.? is not allowed: it must be a whole number >= 5"
+  "-task modes -strings_frame held -strings_nodes 5 -head_width 0.05|-strings_nodes 5 with -head_length 0.34 and -head_width 0.05 puts 2 nodes across the width: at least 5"
+  "-task modes -strings_frame clamped|-strings_frame clamped is not known: use one of none, held"
 )
 foreach(c IN LISTS cases)
   string(FIND "${c}" "|" bar)

@@ -271,5 +271,13 @@ EOF
 grep -qx "p = 4.00, expected 4; from the 3 points above the error floor, 2 at it left out" <<<"$conv" && grep -qx "at the error floor: no order (5 of 5 points at or below it, expected 4)" <<<"$conv" \
   && pass "plot_convergence.py: orders from points above the error floor only, labelled" || fail "plot_convergence.py orders: $conv"
 
+# The string bed's shapes (issue 25): scripts/plot_strings.py on the shipped scene at 31 nodes (a
+# valid PNG, one line naming it), and a beam's modes file refused with what writes the bed's.
+if run strings -options_file options/scenes/strings-modes.opts -strings_nodes 31; then
+  if out=$("$python" scripts/plot_strings.py "$dir/strings.h5" -o "$dir/strings.png" 2>&1) && images PNG "$dir/strings.png" >/dev/null; then pass "plot_strings.py: $out"
+  else fail "plot_strings.py strings.h5: $out"; fi
+  expect_fail "plot_strings.py on a beam's modes file" "no string bed's modes" "$python" scripts/plot_strings.py "$dir/modes.h5" -o "$dir/not-strings.png"
+fi
+
 echo "plots: $fails failure(s), $SECONDS s"
 [[ $fails -eq 0 ]]

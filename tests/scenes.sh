@@ -289,6 +289,14 @@ if run oblique-pitches 1 options/scenes/oblique-pitches.opts -sweep "ball_spin=2
   check "oblique-pitches: batted spin $s rpm (fastball, curveball)" 'split(s, a, ",") == 2 && a[2] > a[1] && a[1] > 1000' s="$s"
 fi
 
+# --- strings-modes (issue 25): the string bed's modes in a held frame, on 2 ranks (the DMDA split) ---
+if run strings-modes 2 options/scenes/strings-modes.opts; then
+  f="$dir/strings-modes.h5"
+  fr="$(col "$f" /modes/frequency | paste -sd,)"
+  check "strings-modes: frequencies $fr Hz (the header's 781.5 Hz fundamental), shape_6 of dims $(dims "$f" /modes/shape_6) ([z][x])" \
+    'split(fr, a, ",") == 6 && a[1] > 781.45 && a[1] < 781.55 && a[6] > a[5] && d == "43,61"' fr="$fr" d="$(dims "$f" /modes/shape_6)"
+fi
+
 # every scene file was run above
 for f in options/scenes/*.opts; do
   grep -q -- "$f" "$self" || fail "$f is not exercised by tests/scenes.sh"

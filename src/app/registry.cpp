@@ -8,6 +8,7 @@
 #include "io/beam_options.hpp"
 #include "io/flight_options.hpp"
 #include "io/scenario_options.hpp"
+#include "io/string_bed_options.hpp"
 #include "run/impact_params.hpp"
 #include "run/reference.hpp"
 #include "solvers/beam_modes.hpp"
@@ -46,6 +47,7 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&FlightOptionTable());
   OptionModuleRegister(&AirOptionTable());
   OptionModuleRegister(&FlightTSOptionTable());
+  OptionModuleRegister(&StringBedOptionTable());
   PetscFunctionReturn(0);
 }
 

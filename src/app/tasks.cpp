@@ -2,6 +2,7 @@
 #include "app/tasks.hpp"
 
 #include "app/task_flight.hpp"
+#include "app/task_strings.hpp"
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
@@ -186,6 +187,12 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   std::string why;
 
   PetscFunctionBeginUser;
+  PetscBool bed; // -strings_frame held: the string bed's modes (app/task_strings.hpp)
+  PetscCall(TaskModesIsStringBed(comm, &bed));
+  if (bed) {
+    PetscCall(TaskStringBedModes(comm, output));
+    PetscFunctionReturn(0);
+  }
   PetscCall(BeamParamsFromOptions(comm, &beam));
   PetscCheck(BeamSystemBuild(beam, &op, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(ModesParamsFromOptions(comm, &mp, &op));
@@ -242,6 +249,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)LeapfrogParamsFromOptions(comm, &lp);
   (void)ModalTruncationFromOptions(comm, &modal_modes);
   (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
+  (void)StringBedHelpOptions(comm); // -strings_*, -head_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);

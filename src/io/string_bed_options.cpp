@@ -1,0 +1,76 @@
+// The -strings_* and -head_* options. See string_bed_options.hpp.
+#include "io/string_bed_options.hpp"
+
+namespace beamimpact {
+
+const OptionModule &StringBedOptionTable()
+{
+  static const OptionModule m = {
+    "strings",
+    "The racket's string bed: a membrane on the head's outline (-strings_frame held -task modes: its modes in a held frame)",
+    {
+      OptionChoice("-strings_frame", "The frame holding the bed: none (no string bed; the racket is the beam) or held (a rigid frame, w = 0 on the outline: -task modes gives the bed's modes)",
+                   {"none", "held"}, "none"),
+      OptionReal("-strings_tension", "N", "Tension of each main string (along the frame's axis)", "250", Positive()),
+      OptionReal("-strings_tension_crosses", "N", "Tension of each cross string (default: -strings_tension)", "", Positive()),
+      OptionReal("-strings_spacing", "m", "Spacing of the mains (centre to centre, across the face)", "0.0151", Positive()),
+      OptionReal("-strings_spacing_crosses", "m", "Spacing of the crosses (along the frame's axis; default: -strings_spacing)", "", Positive()),
+      OptionReal("-strings_linear_density", "kg/m", "Mass per length of a string (nylon 1.30 mm: 1.51e-3)", "1.51e-3", Positive()),
+      OptionChoice("-head_shape", "Outline of the head", {"ellipse", "rectangle"}, "ellipse"),
+      OptionReal("-head_length", "m", "Length of the head's outline along the frame's axis (the ellipse's major axis)", "0.34", Positive()),
+      OptionReal("-head_width", "m", "Width of the head's outline across the face", "0.24", Positive()),
+      OptionReal("-head_center", "m", "Centre of the head along the frame's axis, from x = 0 (for the coupling to the frame, a later slice)", "0.175", NonNegative()),
+      OptionInt("-strings_nodes", "Grid nodes across the head's length, edges included", "61", AtLeast(5)),
+      OptionInt("-strings_nodes_width", "Grid nodes across the head's width (default: from the aspect, so that h_z ~ h_x)", "", AtLeast(5)),
+    },
+  };
+  return m;
+}
+
+PetscErrorCode StringBedRequested(MPI_Comm comm, PetscBool *on)
+{
+  const OptionModule &t     = StringBedOptionTable();
+  PetscInt            frame = 0;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, t.title.c_str(), "beamimpact");
+  PetscCall(OptionsReadChoice(PetscOptionsObject, t, "-strings_frame", &frame, NULL));
+  PetscOptionsEnd();
+  *on = frame == 1 ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode StringBedParamsFromOptions(MPI_Comm comm, StringBedParams *p)
+{
+  const OptionModule &t     = StringBedOptionTable();
+  PetscInt            shape = p->shape == HeadShape::Ellipse ? 0 : 1, frame = 0;
+  PetscBool           set_tc, set_sc, set_nw;
+  PetscInt            nw = 0;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, t.title.c_str(), "beamimpact");
+  PetscCall(OptionsReadChoice(PetscOptionsObject, t, "-strings_frame", &frame, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_tension", &p->tension, NULL));
+  p->tension_crosses = p->tension; // the default shown by -help is the mains'
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_tension_crosses", &p->tension_crosses, &set_tc));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_spacing", &p->spacing, NULL));
+  p->spacing_crosses = p->spacing;
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_spacing_crosses", &p->spacing_crosses, &set_sc));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_linear_density", &p->linear_density, NULL));
+  PetscCall(OptionsReadChoice(PetscOptionsObject, t, "-head_shape", &shape, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-head_length", &p->head_length, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-head_width", &p->head_width, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-head_center", &p->head_center, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_nodes", &p->nodes, NULL));
+  nw = StringBedGrid(*p).nz; // -help shows the aspect's count
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_nodes_width", &nw, &set_nw));
+  PetscOptionsEnd();
+  p->shape       = shape == 0 ? HeadShape::Ellipse : HeadShape::Rectangle;
+  p->frame       = frame == 1 ? "held" : "none";
+  p->nodes_width = set_nw ? nw : 0;
+  const BedGrid g = StringBedGrid(*p);
+  PetscCheck(g.nz >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-strings_nodes %" PetscInt_FMT " with -head_length %g and -head_width %g puts %" PetscInt_FMT " nodes across the width: at least 5 are needed (more -strings_nodes, or -strings_nodes_width)",
+             p->nodes, (double)p->head_length, (double)p->head_width, g.nz);
+  PetscFunctionReturn(0);
+}
+
+} // namespace beamimpact

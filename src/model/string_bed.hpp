@@ -1,0 +1,78 @@
+// The racket's string bed as a membrane (docs/model.md, "The string bed"; MODEL.md section 11):
+//
+//   sigma w_tt = N_x w_xx + N_z w_zz - p(x, z, t)       on the head's outline,
+//   w = 0 on the outline and outside it                  (-strings_frame held: a rigid frame)
+//
+// x along the frame's axis (the mains' direction), z across the face (the crosses'), both from
+// the head's centre. A woven bed of strings of tension T per string, mass lambda per length and
+// spacings s_m (between mains) and s_c (between crosses) acts as a membrane of tension per
+// length N_x = T_m / s_m, N_z = T_c / s_c (N/m) and areal mass sigma = lambda/s_m + lambda/s_c
+// (kg/m^2). The outline is an ellipse or a rectangle of length 2a (along x) and width 2b.
+// Plain structs and functions; the options are read in io/string_bed_options.cpp.
+// Units: SI (m, kg, N).
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+
+namespace beamimpact {
+
+enum class HeadShape { Ellipse, Rectangle };
+const char *HeadShapeName(HeadShape s);
+
+struct StringBedParams {
+  PetscReal tension         = 250.0;   // N, tension of each main string (-strings_tension)
+  PetscReal tension_crosses = 250.0;   // N, of each cross string (-strings_tension_crosses; default the mains')
+  PetscReal spacing         = 0.0151;  // m, between neighbouring mains (-strings_spacing)
+  PetscReal spacing_crosses = 0.0151;  // m, between neighbouring crosses (-strings_spacing_crosses; default the mains')
+  PetscReal linear_density  = 1.51e-3; // kg/m, mass per length of a string (-strings_linear_density)
+  HeadShape shape           = HeadShape::Ellipse; // -head_shape
+  PetscReal head_length     = 0.34;    // m, the outline's extent along the frame's axis (-head_length)
+  PetscReal head_width      = 0.24;    // m, across the face (-head_width)
+  PetscReal head_center     = 0.175;   // m, the head's centre along the frame's axis from x = 0 (-head_center)
+  PetscInt  nodes           = 61;      // grid nodes across the head's length, edges included (-strings_nodes)
+  PetscInt  nodes_width     = 0;       // across its width (-strings_nodes_width); 0: from the aspect, h_z ~ h_x
+  std::string frame         = "none";  // -strings_frame: none (no bed) or held (a rigid frame; the only one of this slice)
+};
+
+// The woven bed as a membrane: tension per length and areal mass.
+struct Membrane {
+  PetscReal N_x   = 0; // N/m, along x (the mains' tension over their spacing)
+  PetscReal N_z   = 0; // N/m, along z (the crosses')
+  PetscReal sigma = 0; // kg/m^2
+};
+Membrane StringBedMembrane(const StringBedParams &p);
+
+// The grid over the head's bounding box [-a, a] x [-b, b] (a = head_length/2, b = head_width/2):
+// nx x nz nodes, edges included, h_x = 2a/(nx - 1), h_z = 2b/(nz - 1). Node (i, j) is at
+// x_i = -a + i h_x, z_j = -b + j h_z.
+struct BedGrid {
+  PetscInt  nx = 0, nz = 0;
+  PetscReal a = 0, b = 0;   // m, half-length and half-width
+  PetscReal hx = 0, hz = 0; // m
+  HeadShape shape = HeadShape::Ellipse;
+  PetscReal X(PetscInt i) const { return -a + i * hx; }
+  PetscReal Z(PetscInt j) const { return -b + j * hz; }
+};
+// nz from the aspect: (nx - 1) * width / length + 1, rounded, unless nodes_width > 0.
+BedGrid StringBedGrid(const StringBedParams &p);
+
+// Whether (x, z) lies strictly inside the outline (a point within 1e-12 of the edge, relative,
+// is on it: held).
+bool BedInside(const BedGrid &g, PetscReal x, PetscReal z);
+
+// Distance (m) from the inside point (x, z) to the outline along the grid line in direction
+// dir (0: +x, 1: -x, 2: +z, 3: -z), exact for both shapes.
+PetscReal BedEdgeDistance(const BedGrid &g, PetscReal x, PetscReal z, int dir);
+
+// References (scripts/references/membrane.py):
+// rectangle 2a x 2b: f_mn = 1/2 sqrt((N_x (m/(2a))^2 + N_z (n/(2b))^2) / sigma) (Hz);
+PetscReal MembraneRectangleFrequency(const Membrane &m, PetscReal length, PetscReal width, PetscInt mm, PetscInt nn);
+// circle of radius R, N_x = N_z = N: f = j / (2 pi R) sqrt(N/sigma), j a zero of a Bessel function;
+PetscReal MembraneCircleFrequency(const Membrane &m, PetscReal R, PetscReal bessel_zero);
+// the deflection at the centre of a circular bed of radius R under a total force F spread
+// uniformly over the central disc of radius c: F / (2 pi N) (ln(R/c) + 1/2) (m).
+PetscReal MembranePatchCentreDeflection(PetscReal N, PetscReal R, PetscReal c, PetscReal F);
+
+} // namespace beamimpact
