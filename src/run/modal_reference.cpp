@@ -248,13 +248,14 @@ void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run,
 // An oblique impact (sc: its run along the normal, sc.oblique.on): the tangential contact driven
 // by the sampled F_n(t), the bat's second plane in the modes of `truncation`, the exit and the
 // flight, as a stepped run finishes it (run/impact_driver.cpp); the samples are then dropped.
-PetscErrorCode ModalObliqueFinish(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactRecord *rec)
+PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactRecord *rec)
 {
   ObliqueBeam beam;
 
   PetscFunctionBeginUser;
   if (!sc.oblique.on) PetscFunctionReturn(0);
   const ContactCoupling g = BeamSystemCoupling(sys, sc.impact.x);
+  beam.comm               = comm; // the modes of the second plane on the reference's ranks
   beam.sys                = &sys;
   beam.g                  = &g;
   beam.truncation         = truncation;
@@ -268,7 +269,7 @@ PetscErrorCode ModalObliqueFinish(const Scenario &sc, const BeamSystem &sys, con
 
 namespace {
 
-PetscErrorCode ModalReferenceDense(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
+PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
 
 // The truncated system (docs/model.md §12): the kept beam modes z_j (mass-normalised: mass 1,
 // stiffness w_j^2) and the ball, with c = y_b - sum_j gamma_j z_j, in contact through the series
@@ -386,7 +387,7 @@ PetscErrorCode TruncatedPhases(ModalRun &run, const TruncatedSystem &T, const Im
 
 // The reference on the modes kept (m truncated, the beam undamped): the same events and
 // outcome as the dense one, the state carried in the kept modes and the ball.
-PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys, const BeamModes &m, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const BeamModes &m, const ModalTruncation &truncation, ImpactResult *res)
 {
   const ImpactParams    &ip = sc.impact;
   const ModalCorrection *corr;
@@ -417,7 +418,7 @@ PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys
   TruncatedToFull(m, run.qd, full.qd);
   full.t = run.t;
   ModalFinish(sc, sys, full, E0, 0, V_x, &rec);
-  PetscCall(ModalObliqueFinish(sc, sys, truncation, &rec));
+  PetscCall(ModalObliqueFinish(comm, sc, sys, truncation, &rec));
   rec.after_used = "modal";
   rec.modal      = {m.Count(), m.S.n, BeamModesCutoffHz(m)};
   *res           = ImpactResult();
@@ -430,7 +431,7 @@ PetscErrorCode ModalReferenceTruncated(const Scenario &sc, const BeamSystem &sys
 
 } // namespace
 
-PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceRunSystem(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
 {
   std::shared_ptr<const BeamModes> modes;
   ModalTruncation                  t = truncation;
@@ -440,10 +441,10 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
   PetscCheck(ModalReferenceApplies(sc, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "-reference modal %s", why.c_str());
   if (t.modes != ModalModes::All && !sys.Damped()) { // a damped beam: every mode (its contact phases are the first-order modes')
     if (!(t.contact_time > 0)) t.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // as -ts_type modal and the free flight take it
-    PetscCall(BeamModesShared(PETSC_COMM_SELF, sys, t, &modes));
+    PetscCall(BeamModesShared(comm, sys, t, &modes));
   }
-  if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(sc, sys, *modes, t, res));
-  else PetscCall(ModalReferenceDense(sc, sys, t, res)); // every mode kept: the dense reference
+  if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(comm, sc, sys, *modes, t, res));
+  else PetscCall(ModalReferenceDense(comm, sc, sys, t, res)); // every mode kept: the dense reference
   PetscFunctionReturn(0);
 }
 
@@ -453,7 +454,7 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys
 
   PetscFunctionBeginUser;
   all.modes = ModalModes::All;
-  PetscCall(ModalReferenceDense(sc, sys, all, res));
+  PetscCall(ModalReferenceDense(PETSC_COMM_SELF, sc, sys, all, res));
   PetscFunctionReturn(0);
 }
 
@@ -461,7 +462,7 @@ namespace {
 
 // The dense reference (every mode; a damped beam's first-order modes in contact); an oblique
 // impact's second plane in the modes of `truncation`.
-PetscErrorCode ModalReferenceDense(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
 {
   const BallParams   &ball = sc.ball;
   const ImpactParams &ip   = sc.impact;
@@ -528,7 +529,7 @@ PetscErrorCode ModalReferenceDense(const Scenario &sc, const BeamSystem &sys, co
     if (damped) D += dph.Dissipated(run.t - t0);
   }
   ModalFinish(sc, sys, run, E0, D, V_x, &rec);
-  PetscCall(ModalObliqueFinish(sc, sys, truncation, &rec));
+  PetscCall(ModalObliqueFinish(comm, sc, sys, truncation, &rec));
   ImpactOutcomeFinish(sc, sys, std::move(rec), res);
   res->wall_time = MPI_Wtime() - wall0;
   PetscFunctionReturn(0);
@@ -548,13 +549,27 @@ PetscErrorCode ModalReferenceRun(const Scenario &sc, ImpactResult *res)
 
 PetscErrorCode ModalReferenceRun(const Scenario &sc, const ModalTruncation &truncation, ImpactResult *res)
 {
+  PetscFunctionBeginUser;
+  PetscCall(ModalReferenceRun(PETSC_COMM_SELF, sc, truncation, res));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalReferenceRun(MPI_Comm comm, const Scenario &sc, const ModalTruncation &truncation, ImpactResult *res)
+{
   BeamSystem  sys;
   std::string why;
 
   PetscFunctionBeginUser;
   ImpactStageScope stage(ImpactStage::ModalReference); // -log_view: its own stage
   PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  PetscCall(ModalReferenceRunSystem(sc, sys, truncation, res));
+  PetscCall(ModalReferenceRunSystem(comm, sc, sys, truncation, res));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ModalReferenceRunSystem(PETSC_COMM_SELF, sc, sys, truncation, res));
   PetscFunctionReturn(0);
 }
 

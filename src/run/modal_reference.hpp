@@ -37,8 +37,15 @@ PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
 // exactly (the reference of the truncated model, formulation "exact, truncated"; no memory
 // limit: O(n k)). All, a truncation that keeps every mode, or a damped beam: the dense reference
 // above, bit for bit. T (truncation.contact_time) defaults to the contact's time scale.
+// The forms with comm are collective on it: a truncated basis (and an oblique impact's second
+// plane) come from BeamModesShared on comm, the run's communicator when the reference is run
+// by the ranks of a run (-reference modal, a study's reference); every rank then solves the
+// same exact reference redundantly. The forms without comm run on PETSC_COMM_SELF: for a caller
+// on one rank alone (a test, a rank-local study).
 PetscErrorCode ModalReferenceRun(const Scenario &scenario, const ModalTruncation &truncation, ImpactResult *res);
+PetscErrorCode ModalReferenceRun(MPI_Comm comm, const Scenario &scenario, const ModalTruncation &truncation, ImpactResult *res);
 PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
+PetscErrorCode ModalReferenceRunSystem(MPI_Comm comm, const Scenario &scenario, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
 
 // Whether it can solve the scenario: the linear law, no grip; *why (may be null) says why not,
 // naming the options, as "-reference modal <why>" reads. (The memory limit is checked when it

@@ -50,7 +50,7 @@ PetscErrorCode ModalRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettin
   // tangential contact and the bat's second plane, as for a stepped run.
   Scenario normal;
   if (ObliqueImpact(sc)) PetscCall(ObliqueNormalScenario(comm, sc, &normal));
-  PetscCall(ModalReferenceRun(ObliqueImpact(sc) ? normal : sc, truncation, &sol->result));
+  PetscCall(ModalReferenceRun(comm, ObliqueImpact(sc) ? normal : sc, truncation, &sol->result)); // collective on the run's comm (its modes)
   if (sc.impact.report_setup) PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", sol->result.ts_type.c_str(), sol->result.formulation.c_str(), (double)sol->result.dt_nominal));
   sol->method = "modal";
   PetscFunctionReturn(0);

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <deque>
 #include <limits>
+#include <map>
 
 #include <unistd.h>
 
@@ -67,8 +68,33 @@ bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
   return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) && (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff());
 }
 
-std::deque<std::shared_ptr<const BeamModes>> cache; // most recent first
-PetscInt                                     n_computed = 0, n_reused = 0;
+// One cache per group of processes (the ranks of MPI_COMM_WORLD a communicator holds, in its
+// order): a basis is computed collectively on its communicator and kept whole on each of its
+// ranks, and only calls collective on the same group may find or evict it, so the caches of
+// a group's ranks stay identical and either all of them compute (collectively) or none does. A
+// call on PETSC_COMM_SELF of one rank alone fills and evicts only that rank's own cache. (On
+// one rank PETSC_COMM_SELF and the run's communicator are the same group: one cache, as before.)
+using ModesCache = std::deque<std::shared_ptr<const BeamModes>>; // most recent first
+std::map<std::vector<int>, ModesCache> caches;
+PetscInt                               n_computed = 0, n_reused = 0;
+
+PetscErrorCode CacheOf(MPI_Comm comm, ModesCache **cache)
+{
+  MPI_Group   group, world;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<int> ranks(size), key(size);
+  for (int r = 0; r < size; ++r) ranks[r] = r;
+  PetscCallMPI(MPI_Comm_group(comm, &group));
+  PetscCallMPI(MPI_Comm_group(MPI_COMM_WORLD, &world));
+  PetscCallMPI(MPI_Group_translate_ranks(group, size, ranks.data(), world, key.data()));
+  PetscCallMPI(MPI_Group_free(&group));
+  PetscCallMPI(MPI_Group_free(&world));
+  *cache = &caches[key];
+  PetscFunctionReturn(0);
+}
 
 } // namespace
 
@@ -127,8 +153,9 @@ static std::shared_ptr<const BeamFactor> FactoredFormFor(const BeamSystem &sys)
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 {
   if (!ForceOperatorModal(sys, nullptr, nullptr, why)) return false; // a force term the modes cannot carry (the grip: a drive in time, a damper not proportional)
-  for (const auto &m : cache) // modes built for the same beam (a sweep's next point): available, without building its factor again (O(N), 15 ms at N = 40961)
-    if (SameBeam(m->sys, sys)) return true;
+  for (const auto &c : caches) // modes built for the same beam (a sweep's next point): available, without building its factor again (O(N), 15 ms at N = 40961)
+    for (const auto &m : c.second)
+      if (SameBeam(m->sys, sys)) return true;
   const double index = ModesPrecisionIndex(sys);
   if (index > kModesPrecisionLimit) {
     BeamFactor  F;
@@ -375,8 +402,11 @@ PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const Beam
 PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t, std::shared_ptr<const BeamModes> *modes)
 {
   std::string why;
+  ModesCache *pcache;
 
   PetscFunctionBeginUser;
+  PetscCall(CacheOf(comm, &pcache));
+  ModesCache &cache = *pcache;
   for (auto it = cache.begin(); it != cache.end(); ++it)
     if (SameTruncation((*it)->request, t) && SameBeam((*it)->sys, sys)) {
       *modes = *it;

@@ -22,7 +22,7 @@
 // carries the paper's beam to N = 40961.
 //
 // Computed once per beam and shared: BeamModesShared keeps the last few bases in a small
-// cache of this process keyed by the system's content (nodes, fields, masses, held dofs, the
+// cache of this process per group of ranks (the communicator's), keyed by the system's content (nodes, fields, masses, held dofs, the
 // bands of K and C of the force operator, compared exactly) and the truncation (modes kept,
 // cut-off), so every point of a sweep, every run of a study and every repetition of a scene
 // that builds the same BeamSystem reuses one decomposition. The ball and the impact point are
@@ -123,9 +123,19 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why);
 // truncated engine and -task modes take the same choice.
 bool BeamModesFactoredForm(const BeamSystem &sys, BeamFactor *F);
 
-// The beam's modes, from the cache when the same system was decomposed before in this
-// process with the same truncation, else computed (collectively on comm) and cached (the last
-// BeamModesCacheSize are kept). The first form: every mode (ModalModes::All), on PETSC_COMM_SELF.
+// The beam's modes, from the cache when the same system was decomposed before with the same
+// truncation on the same group of ranks, else computed and cached (the last BeamModesCacheSize
+// per group are kept). Collective on comm: every rank of comm calls it, with the same system and
+// truncation, in the same order as its other calls on comm. The comm is the structure's own, the
+// communicator of the run that owns the beam (its DMDA's, the TS's, the modal reference's when it
+// is run by ImpactRun's ranks): the stepped run, -ts_type modal, the free flight, the oblique
+// impact's second plane and -reference modal all call it on that one, so that a cached basis is
+// found by all of its ranks or by none. The partial eigen-solve is distributed over comm
+// (SLEPc's basis and orthogonalisation split by rows; the factored form's banded solves done
+// redundantly on each rank) and the basis is then whole on every rank. PETSC_COMM_SELF is for a
+// caller that runs on one rank alone (a rank-local study, a test): its bases are that rank's
+// own (one cache per group: ranks of MPI_COMM_WORLD in comm's order). The first form: every mode
+// (ModalModes::All, the dense decomposition, no communication), on PETSC_COMM_SELF.
 constexpr int  BeamModesCacheSize = 4;
 PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const BeamModes> *modes);
 PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t, std::shared_ptr<const BeamModes> *modes);

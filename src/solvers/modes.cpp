@@ -391,43 +391,87 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
 }
 
 // The factored eigen-problem (BeamModesLowestFactored): z -> M^{1/2} K^+ M^{1/2} z on the free
-// dofs, K^+ by the two banded solves of the factored form (solvers/beam_flexibility.hpp).
+// dofs, K^+ by the two banded solves of the factored form (solvers/beam_flexibility.hpp). The
+// vectors are split over the communicator by rows (PETSC_DECIDE): each rank gathers z whole,
+// applies the solves redundantly (O(n)) and keeps its own rows, so that SLEPc's basis and its
+// orthogonalisation (O(n k^2), the cost at N = 40961) split over the ranks. On one rank, no
+// gather: the arithmetic of the serial operator.
+struct FactoredShell {
+  const BeamFactor      *F = nullptr;
+  PetscMPIInt            size = 1;
+  PetscInt               rstart = 0, rend = 0; // rows owned by this rank
+  VecScatter             toall = nullptr;      // z to every rank (size > 1)
+  Vec                    zall  = nullptr;
+  std::vector<PetscReal> f, u;
+};
+
+static PetscErrorCode FactoredShellDestroy(FactoredShell *sh)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterDestroy(&sh->toall));
+  PetscCall(VecDestroy(&sh->zall));
+  PetscFunctionReturn(0);
+}
+
+// The whole of a distributed vector, read-only, on every rank (x itself on one rank).
+static PetscErrorCode FactoredGather(FactoredShell *sh, Vec x, const PetscScalar **a)
+{
+  PetscFunctionBeginUser;
+  if (sh->size == 1) PetscCall(VecGetArrayRead(x, a));
+  else {
+    PetscCall(VecScatterBegin(sh->toall, x, sh->zall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(sh->toall, x, sh->zall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(sh->zall, a));
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode FactoredGatherEnd(FactoredShell *sh, Vec x, const PetscScalar **a)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreArrayRead(sh->size == 1 ? x : sh->zall, a));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode FactoredMult(Mat A, Vec z, Vec y)
 {
-  const BeamFactor  *F;
+  FactoredShell     *sh;
   const PetscScalar *a;
   PetscScalar       *b;
 
   PetscFunctionBeginUser;
-  PetscCall(MatShellGetContext(A, &F));
-  std::vector<PetscReal> f(F->n), u(F->n);
-  PetscCall(VecGetArrayRead(z, &a));
-  for (PetscInt d = 0; d < F->n; ++d) f[d] = std::sqrt(F->mass[d]) * PetscRealPart(a[d]);
-  PetscCall(VecRestoreArrayRead(z, &a));
-  BeamFactorFlexibility(*F, f.data(), u.data(), nullptr);
+  PetscCall(MatShellGetContext(A, &sh));
+  const BeamFactor &F = *sh->F;
+  PetscCall(FactoredGather(sh, z, &a));
+  for (PetscInt d = 0; d < F.n; ++d) sh->f[d] = std::sqrt(F.mass[d]) * PetscRealPart(a[d]);
+  PetscCall(FactoredGatherEnd(sh, z, &a));
+  BeamFactorFlexibility(F, sh->f.data(), sh->u.data(), nullptr);
   PetscCall(VecGetArray(y, &b));
-  for (PetscInt d = 0; d < F->n; ++d) b[d] = std::sqrt(F->mass[d]) * u[d];
+  for (PetscInt d = sh->rstart; d < sh->rend; ++d) b[d - sh->rstart] = std::sqrt(F.mass[d]) * sh->u[d];
   PetscCall(VecRestoreArray(y, &b));
   PetscFunctionReturn(0);
 }
 
 // The flexible modes' vectors z_k (orthonormal, ascending in omega) of the solved EPS as modes
-// over all dofs (phi = M^{-1/2} z: mass-normalised), each lambda the Rayleigh quotient of the
-// strain energy.
-static PetscErrorCode FactoredExtract(EPS eps, const BeamSystem &op, const BeamFactor &F, PetscInt nflex, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
+// over all dofs (phi = M^{-1/2} z: mass-normalised), gathered whole on every rank, each lambda
+// the Rayleigh quotient of the strain energy.
+static PetscErrorCode FactoredExtract(EPS eps, Mat A, const BeamSystem &op, PetscInt nflex, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
 {
-  Vec x;
+  FactoredShell *sh;
+  Vec            x;
 
   PetscFunctionBeginUser;
-  PetscCall(VecCreateSeq(PETSC_COMM_SELF, F.n, &x));
+  PetscCall(MatShellGetContext(A, &sh));
+  const BeamFactor &F = *sh->F;
+  PetscCall(MatCreateVecs(A, &x, NULL));
   for (PetscInt k = 0; k < nflex; ++k) {
     PetscScalar            kr;
     const PetscScalar     *a;
     std::vector<PetscReal> phi(op.ndof, 0.0);
     PetscCall(EPSGetEigenpair(eps, k, &kr, NULL, x, NULL));
-    PetscCall(VecGetArrayRead(x, &a));
+    PetscCall(FactoredGather(sh, x, &a));
     for (PetscInt d = 0; d < F.n; ++d) phi[F.dof[d]] = PetscRealPart(a[d]) / std::sqrt(F.mass[d]);
-    PetscCall(VecRestoreArrayRead(x, &a));
+    PetscCall(FactoredGatherEnd(sh, x, &a));
     const PetscReal l = 2.0 * BeamSystemStrainEnergy(op, phi.data(), op.fields, 0, op.ndof); // phi^T M phi = 1
     PetscCall(PetscInfo(eps, "factored mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2\n", k, 1.0 / (double)PetscRealPart(kr), (double)l));
     lambda->push_back(l);
@@ -437,11 +481,34 @@ static PetscErrorCode FactoredExtract(EPS eps, const BeamSystem &op, const BeamF
   PetscFunctionReturn(0);
 }
 
+// The operator of the factored form on comm (FactoredShell), its rows split by PETSC_DECIDE.
+static PetscErrorCode FactoredShellCreate(MPI_Comm comm, FactoredShell *sh, Mat *A)
+{
+  Vec x;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &sh->size));
+  sh->f.assign(sh->F->n, 0.0);
+  sh->u.assign(sh->F->n, 0.0);
+  PetscCall(MatCreateShell(comm, PETSC_DECIDE, PETSC_DECIDE, sh->F->n, sh->F->n, (void *)sh, A));
+  PetscCall(MatShellSetOperation(*A, MATOP_MULT, (void (*)(void))FactoredMult));
+  PetscCall(MatSetOption(*A, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(MatSetUp(*A));
+  PetscCall(MatGetOwnershipRange(*A, &sh->rstart, &sh->rend));
+  if (sh->size > 1) {
+    PetscCall(MatCreateVecs(*A, &x, NULL));
+    PetscCall(VecScatterCreateToAll(x, &sh->toall, &sh->zall));
+    PetscCall(VecDestroy(&x));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda,
                                        std::vector<std::vector<PetscReal>> *phis)
 {
   const PetscInt nrigid = (PetscInt)F.rigid.size(), nflex = std::min(count, F.n) - nrigid;
   Mat            A;
+  FactoredShell  sh;
   EPS            eps;
   Vec            x0;
   PetscScalar   *a;
@@ -459,10 +526,9 @@ PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, cons
   }
   if (nflex <= 0) PetscFunctionReturn(0);
   PetscCall(ModesEnsureSlepc());
-  PetscCall(MatCreateShell(PETSC_COMM_SELF, F.n, F.n, F.n, F.n, (void *)&F, &A));
-  PetscCall(MatShellSetOperation(A, MATOP_MULT, (void (*)(void))FactoredMult));
-  PetscCall(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(EPSCreate(PETSC_COMM_SELF, &eps));
+  sh.F = &F;
+  PetscCall(FactoredShellCreate(comm, &sh, &A));
+  PetscCall(EPSCreate(comm, &eps));
   PetscCall(EPSSetOperators(eps, A, NULL));
   PetscCall(EPSSetProblemType(eps, EPS_HEP));
   PetscCall(EPSSetType(eps, EPSKRYLOVSCHUR));
@@ -471,7 +537,7 @@ PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, cons
   PetscCall(EPSSetTolerances(eps, 1e-12, 1000));
   PetscCall(MatCreateVecs(A, &x0, NULL));
   PetscCall(VecGetArray(x0, &a));
-  for (PetscInt d = 0; d < F.n; ++d) a[d] = 1.0 + 0.5 * HashUniform(d);
+  for (PetscInt d = sh.rstart; d < sh.rend; ++d) a[d - sh.rstart] = 1.0 + 0.5 * HashUniform(d); // the same whatever the number of ranks
   PetscCall(VecRestoreArray(x0, &a));
   PetscCall(EPSSetInitialSpace(eps, 1, &x0));
   PetscCall(VecDestroy(&x0));
@@ -483,9 +549,10 @@ PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, cons
   PetscCall(EPSSolve(eps));
   PetscCall(EPSGetConverged(eps, &nconv));
   PetscCheck(nconv >= nflex, comm, PETSC_ERR_CONV_FAILED, "the beam's modes (factored form): the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest flexible modes (-modal_modes, -modal_tolerance)", nconv, nflex);
-  PetscCall(FactoredExtract(eps, op, F, nflex, lambda, phis));
+  PetscCall(FactoredExtract(eps, A, op, nflex, lambda, phis));
   PetscCall(EPSDestroy(&eps));
   PetscCall(MatDestroy(&A));
+  PetscCall(FactoredShellDestroy(&sh));
   std::vector<PetscInt> order(nflex); // ascending in the Rayleigh quotient, as the solver's (descending 1/omega^2) up to round-off
   for (PetscInt k = 0; k < nflex; ++k) order[k] = nrigid + k;
   std::stable_sort(order.begin(), order.end(), [&](PetscInt p, PetscInt q) { return (*lambda)[p] < (*lambda)[q]; });

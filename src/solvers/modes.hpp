@@ -80,7 +80,7 @@ PetscInt BeamFreeDofCount(const BeamSystem &op);
 // M-orthonormal basis of their space.
 // The EPS takes options with the prefix "modes_" (e.g. -modes_eps_view). On a fine grid of a
 // statically determinate beam (BeamModesFactoredForm: N > ~4000 for the paper's free beam) the
-// modes come from the factored form instead (BeamModesLowestFactored, serial on each rank; the
+// modes come from the factored form instead (BeamModesLowestFactored, distributed over comm; the
 // -modes_eps_* options are not read), as the modal engine's do: shift-and-invert on K loses them
 // to round-off there (out->method says which).
 PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out,
@@ -98,8 +98,12 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
 // eps cond(K) ~ eps 16 (L/h)^4 (the paper's beam at N = 40961): the rigid modes exactly
 // (F.rigid, omega = 0), then the largest eigenvalues 1/omega^2 of M^{1/2} K^+ M^{1/2} by
 // Krylov-Schur (SLEPc, a shell operator: two banded solves with S's LU per product), exact to
-// eps (L/h)^2, each omega^2 the Rayleigh quotient of the strain energy. Serial: every rank of
-// comm solves the same problem (comm prints the progress). Ascending, as BeamModesLowest.
+// eps (L/h)^2, each omega^2 the Rayleigh quotient of the strain energy. Collective on comm: the
+// EPS's vectors are split over its ranks by rows (PETSC_DECIDE), so that the Krylov basis and
+// its orthogonalisation are distributed; each product gathers z whole on every rank and does
+// the two banded solves redundantly (O(n)); the eigenvectors are gathered whole to every rank.
+// On P ranks the result agrees with one rank's to round-off (the reductions' order); on one
+// rank it is the serial solve's, bit for bit. Ascending, as BeamModesLowest.
 struct BeamFactor;
 PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda,
                                        std::vector<std::vector<PetscReal>> *phis);
