@@ -548,7 +548,12 @@ PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, cons
   PetscCall(EPSMonitorSet(eps, ModesProgressMonitor, &prog, NULL));
   PetscCall(EPSSolve(eps));
   PetscCall(EPSGetConverged(eps, &nconv));
-  PetscCheck(nconv >= nflex, comm, PETSC_ERR_CONV_FAILED, "the beam's modes (factored form): the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest flexible modes (-modal_modes, -modal_tolerance)", nconv, nflex);
+  if (nconv < nflex) { // freed before the error: a sweep carries on to its next point
+    PetscCall(EPSDestroy(&eps));
+    PetscCall(MatDestroy(&A));
+    PetscCall(FactoredShellDestroy(&sh));
+    SETERRQ(comm, PETSC_ERR_CONV_FAILED, "the beam's modes (factored form): the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest flexible modes (-modal_modes, -modal_tolerance)", nconv, nflex);
+  }
   PetscCall(FactoredExtract(eps, A, op, nflex, lambda, phis));
   PetscCall(EPSDestroy(&eps));
   PetscCall(MatDestroy(&A));
