@@ -56,7 +56,7 @@ PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamS
 // SlepcInitialize itself; a program that only called PetscInitialize (the test
 // main) gets it here on first use, with SlepcFinalize run by PetscFinalize.
 // Without -dynamic_library_preload this does no communication.
-static PetscErrorCode ModesEnsureSlepc(void)
+PetscErrorCode ModesEnsureSlepc()
 {
   PetscBool initialized;
 
@@ -66,6 +66,20 @@ static PetscErrorCode ModesEnsureSlepc(void)
     PetscCall(SlepcInitializeNoArguments());
     PetscCall(PetscRegisterFinalize(SlepcFinalize));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModesDirectSolver(MPI_Comm comm, KSP ksp)
+{
+  PetscMPIInt size;
+  PC          pc;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscFunctionReturn(0);
 }
 
@@ -138,15 +152,12 @@ static PetscErrorCode ModesProblemAssemble(MPI_Comm comm, const BeamSystem &op, 
 // vector is a hash of the free row, the same whatever the number of ranks.
 static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, PetscInt count, PetscReal unit, EPS *eps)
 {
-  PetscMPIInt size;
   ST          st;
   KSP         ksp;
-  PC          pc;
   Vec         x0;
   PetscScalar *a;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(EPSCreate(comm, eps));
   PetscCall(EPSSetOptionsPrefix(*eps, "modes_"));
   PetscCall(EPSSetOperators(*eps, pb.K, pb.M));
@@ -159,10 +170,7 @@ static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, P
   PetscCall(EPSGetST(*eps, &st));
   PetscCall(STSetType(st, STSINVERT));
   PetscCall(STGetKSP(st, &ksp));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(ModesDirectSolver(comm, ksp));
   PetscCall(MatCreateVecs(pb.K, &x0, NULL));
   PetscCall(VecGetArray(x0, &a));
   for (PetscInt r = pb.rstart; r < pb.rend; ++r) a[r - pb.rstart] = 1.0 + 0.5 * HashUniform(r);

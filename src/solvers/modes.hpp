@@ -20,6 +20,7 @@
 #include "base/option_table.hpp"
 #include "system/beam_system.hpp"
 
+#include <petscksp.h>
 #include <petscsys.h>
 
 #include <string>
@@ -30,6 +31,12 @@ namespace beamimpact {
 struct ModesParams {
   PetscInt count = 4; // number of modes to report, rigid ones included (-modes_count)
 };
+
+// SLEPc initialised on first use (a program that called only PetscInitialize: the tests);
+// SlepcFinalize then runs with PetscFinalize.
+PetscErrorCode ModesEnsureSlepc();
+// A KSP (an ST's, a static solve's) as a direct solve: PETSc's LU on one rank, MUMPS on more.
+PetscErrorCode ModesDirectSolver(MPI_Comm comm, KSP ksp);
 
 // -modes_count: the modes module's table (registered by app/registry.cpp).
 const OptionModule &ModesOptionTable();

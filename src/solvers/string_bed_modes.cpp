@@ -1,6 +1,7 @@
 // The string bed on a 2-D DMDA: K and M, its modes (SLEPc) and its static deflection. See
 // string_bed_modes.hpp.
 #include "solvers/string_bed_modes.hpp"
+#include "solvers/modes.hpp"
 
 #include "system/string_bed_operator.hpp"
 
@@ -66,34 +67,6 @@ PetscErrorCode GatherNatural(DM da, Vec x, std::vector<PetscReal> *out)
   PetscCall(VecScatterDestroy(&sc));
   PetscCall(VecDestroy(&all));
   PetscCall(VecDestroy(&nat));
-  PetscFunctionReturn(0);
-}
-
-// SLEPc must be initialised before its classes are used (a program that only called
-// PetscInitialize, the test main, gets it here; SlepcFinalize runs with PetscFinalize).
-PetscErrorCode EnsureSlepc()
-{
-  PetscBool initialized;
-  PetscFunctionBeginUser;
-  PetscCall(SlepcInitialized(&initialized));
-  if (!initialized) {
-    PetscCall(SlepcInitializeNoArguments());
-    PetscCall(PetscRegisterFinalize(SlepcFinalize));
-  }
-  PetscFunctionReturn(0);
-}
-
-// The LU of the operator of a KSP or an ST: PETSc's on one rank, MUMPS on more.
-PetscErrorCode DirectSolver(MPI_Comm comm, KSP ksp)
-{
-  PetscMPIInt size;
-  PC          pc;
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscFunctionReturn(0);
 }
 
@@ -164,7 +137,7 @@ PetscErrorCode BedSolverCreate(MPI_Comm comm, const BedGrid &g, DM da, Mat K, Ma
   PetscCall(EPSGetST(*eps, &st));
   PetscCall(STSetType(st, STSINVERT));
   PetscCall(STGetKSP(st, &ksp));
-  PetscCall(DirectSolver(comm, ksp));
+  PetscCall(ModesDirectSolver(comm, ksp));
   PetscCall(DMCreateGlobalVector(da, &x0));
   PetscCall(DMDAGetLocalInfo(da, &info));
   PetscCall(DMDAVecGetArray(da, x0, &a));
@@ -219,7 +192,7 @@ PetscErrorCode StringBedModesCompute(MPI_Comm comm, const BedGrid &g, const Memb
   EPS      eps;
   PetscInt nconv;
   PetscFunctionBeginUser;
-  PetscCall(EnsureSlepc());
+  PetscCall(ModesEnsureSlepc());
   out->free_nodes = StringBedFreeCount(g);
   PetscCheck(count >= 1 && count <= out->free_nodes, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-modes_count %" PetscInt_FMT " is not allowed: the string bed has %" PetscInt_FMT " free nodes, so 1..%" PetscInt_FMT " modes exist (more -strings_nodes for more)", count,
@@ -267,7 +240,7 @@ PetscErrorCode StringBedStaticSolve(MPI_Comm comm, const BedGrid &g, const Membr
   PetscCall(DMDAVecRestoreArray(da, b, &a));
   PetscCall(KSPCreate(comm, &ksp));
   PetscCall(KSPSetOperators(ksp, K, K));
-  PetscCall(DirectSolver(comm, ksp));
+  PetscCall(ModesDirectSolver(comm, ksp));
   PetscCall(KSPSolve(ksp, b, x));
   PetscCall(GatherNatural(da, x, w));
   PetscCall(KSPDestroy(&ksp));
