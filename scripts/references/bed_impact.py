@@ -4,7 +4,7 @@ An independent reference for the racket head of issue 25 (MODEL.md section 11): 
 solves the bed on a finite-difference grid, this script by exact modes and an exact solution in
 time.
 
-    /usr/bin/python3 scripts/references/bed_impact.py            # tables, ~25 s of CPU
+    /usr/bin/python3 scripts/references/bed_impact.py            # tables, ~30 s of CPU
     /usr/bin/python3 scripts/references/bed_impact.py --json     # the results as one JSON object
 
 Bed: sigma w_tt = N_x w_xx + N_z w_zz + p(x, z, t), w = 0 on the edge; w is the deflection in the
