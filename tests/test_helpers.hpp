@@ -107,6 +107,7 @@ inline BeamSystem TwoFieldCopies(const BeamSystem &a, PetscReal mass_factor)
   EXPECT_EQ(1, a.fields);
   BeamSystem s = a; // L, h, nodes, frequency unit, force terms
   s.fields     = 2;
+  s.field_part.assign(2, Part::Beam);
   s.ndof       = 2 * a.ndof;
   s.mass.assign(s.ndof, 0.0);
   s.held.assign(s.ndof, 0);

@@ -311,7 +311,7 @@ TEST(SectionFile, BadProfilesNameFileAndLine)
 TEST(SectionFile, BadPropertiesNameFileAndLine)
 {
   std::vector<PropertiesRow> rows;
-  bool                       shear;
+  bool                       shear, torsion;
   std::string                why;
   struct Case {
     const char *text, *expect;
@@ -324,14 +324,20 @@ TEST(SectionFile, BadPropertiesNameFileAndLine)
   };
   for (const Case &c : cases) {
     TempFile f(c.text);
-    EXPECT_FALSE(PropertiesFileRead(f.path(), &rows, &shear, &why)) << c.text;
+    EXPECT_FALSE(PropertiesFileRead(f.path(), &rows, &shear, &torsion, &why)) << c.text;
     EXPECT_NE(std::string::npos, why.find(c.expect)) << why << " (expected '" << c.expect << "')";
   }
   TempFile good("# x EI mu kGA rhoI\n0.1 100 0.5 1e5 1e-5\n0.6 50 0.25 5e4 5e-6 # end\n");
-  ASSERT_TRUE(PropertiesFileRead(good.path(), &rows, &shear, &why)) << why;
+  ASSERT_TRUE(PropertiesFileRead(good.path(), &rows, &shear, &torsion, &why)) << why;
   EXPECT_TRUE(shear);
+  EXPECT_FALSE(torsion);
   ASSERT_EQ(2u, rows.size());
   EXPECT_EQ(0.6, rows[1].x);
+  TempFile twist("0 100 0.5 1e5 1e-5 40 2e-3\n0.5 100 0.5 1e5 1e-5 60 4e-3\n");
+  ASSERT_TRUE(PropertiesFileRead(twist.path(), &rows, &shear, &torsion, &why)) << why;
+  EXPECT_TRUE(shear && torsion);
+  EXPECT_EQ(60, rows[1].s.GJ);
+  EXPECT_EQ(4e-3, rows[1].s.rhoJ);
 }
 
 TEST(SectionOptions, BadCombinationsNameTheOption)

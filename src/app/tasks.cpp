@@ -147,9 +147,19 @@ PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
 {
   const BeamRigidBody b = BeamRigidBodyOf(beam);
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "beam: %s section%s%s, mass %.4f kg, centre of mass %.4f m from x = 0, moment of inertia %.5f kg m^2 about it, %.5f kg m^2 about x = 0\n",
+  if (beam.strings.On()) {
+    const StringBedParams &s = beam.strings;
+    const Membrane         m = StringBedMembrane(s);
+    PetscCall(PetscPrintf(comm, "strings: %s %g x %g m, N_x %.6g N/m, N_z %.6g N/m, sigma %.4g kg/m^2, the ball's disc %.4g m, %s\n", HeadShapeName(s.shape), (double)s.head_length,
+                          (double)s.head_width, (double)m.N_x, (double)m.N_z, (double)m.sigma, (double)s.patch_radius,
+                          s.Held() ? "in a held frame" : "on the beam's frame"));
+    if (s.Held()) PetscFunctionReturn(0); // the frame is not a body
+  }
+  PetscCall(PetscPrintf(comm, "beam: %s section%s%s, mass %.4f kg, centre of mass %.4f m from x = 0, moment of inertia %.5f kg m^2 about it, %.5f kg m^2 about x = 0",
                         SectionSourceName(beam.section.source), beam.section.file.empty() ? "" : " ", beam.section.file.c_str(), (double)b.mass, (double)b.x_cm, (double)b.inertia_cm,
                         (double)b.inertia_end));
+  if (beam.torsion.on) PetscCall(PetscPrintf(comm, ", %.6f kg m^2 about its axis", (double)b.inertia_roll));
+  PetscCall(PetscPrintf(comm, "\n"));
   PetscFunctionReturn(0);
 }
 
@@ -199,16 +209,22 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(BeamModesCompute(comm, op, mp.count, &modes, &shapes));
   PetscCall(OptionsCheckUnused(comm)); // after the solve: the eigensolver reads its -modes_eps_*, -modes_st_* options
   PetscCall(PrintBeamBody(comm, beam));
-  const bool wall = !modes.shell_n.empty(); // a barrel wall: each mode's family
+  const bool wall = !modes.shell_n.empty() || !modes.part.empty(); // a barrel wall, a roll or a string bed: each mode's family
   PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT ", %s):\n  mode  frequency (Hz)  period (ms)  %snodes (m)\n", (double)beam.length, beam.theory.c_str(),
                         SupportName(beam.left), SupportName(beam.right), beam.nodes, modes.method.c_str(), wall ? "family   " : ""));
   int rigid = 0, flexible = 0; // numbered apart: mode 1 is the fundamental, the rigid ones r1, r2
   for (size_t q = 0; q < modes.frequency.size(); ++q) {
     std::string nodes;
-    if (modes.omega[q] != 0 && !(wall && modes.shell_n[q] != 0)) // a wall's mode: the beam's deflection is round-off
+    if (modes.omega[q] != 0 && !(!modes.shell_n.empty() && modes.shell_n[q] != 0) && !(!modes.part.empty() && modes.part[q] != (PetscInt)Part::Beam)) // a wall's, roll's or bed's mode: no bending nodes
       for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1))) nodes += " " + std::to_string(x).substr(0, 6);
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
-    const std::string family = !wall ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
+    std::string family = !wall ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
+    if (!modes.part.empty()) { // a roll field or a string bed: the part with most of the mode's kinetic energy, and its share
+      static const char *const names[kParts] = {"bending", "roll", "wall", "strings"};
+      char                     text[64];
+      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", names[modes.part[q]], (double)(100 * modes.part_share[q]));
+      family = text;
+    }
     PetscCall(PetscPrintf(comm, "  %4s  %14.4f  %11.4f %s%s\n", number.c_str(), (double)modes.frequency[q], (double)modes.period[q] * 1e3, family.c_str(), modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
   }
   auto record = [&](RunRecord *rec) -> PetscErrorCode {

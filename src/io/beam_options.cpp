@@ -3,8 +3,10 @@
 
 #include "io/section_file.hpp"
 #include "io/text.hpp"
+#include "io/string_bed_options.hpp"
 #include "model/barrel.hpp"
 #include "model/beam_theory.hpp"
+#include "model/torsion.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -60,6 +62,9 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()), {"-beam_shell"}),
       OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa", "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps -beam_youngs_modulus (default: that)", "", Positive()), {"-beam_shell"}),
       OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 0 < t < D/2", "", Positive()), {"-beam_profile"}),
+      OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll phi (G J phi'^2/2 per length, rho J per length), so that a hit off the axis (-impact_z) rolls it (a racket's head; docs/model.md section 16)"),
+      OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2", "Torsional stiffness G J of a uniform section (default: the section's: a round profile's G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)", "", Positive()), {"-beam_torsion"}),
+      OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m", "Polar mass moment per length rho J of a uniform section about its axis (default: the section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' rhoJ)", "", Positive()), {"-beam_torsion"}),
       OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass)", "", Positive()),
       OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
     },
@@ -137,6 +142,13 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_contact_radius", &p->shell.contact_radius, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_youngs_modulus", &p->shell.youngs_modulus, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_wall_thickness", &o->wall, &o->setwall));
+  {
+    PetscBool torsion = PETSC_FALSE;
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_torsion", &torsion, NULL));
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_torsion_stiffness", &p->torsion.stiffness, NULL));
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_torsion_inertia", &p->torsion.inertia, NULL));
+    p->torsion.on = torsion;
+  }
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();
@@ -273,7 +285,7 @@ PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, Bea
     p->input.parameter_set  = "profile";
   } else {
     PetscCheck(!(o.setE || o.setrho), comm, PETSC_ERR_ARG_INCOMP, "-beam_properties gives EI and mu directly: do not also give %s", o.setE ? "-beam_youngs_modulus" : "-beam_density");
-    PetscCheck(PropertiesFileRead(o.properties.c_str(), &s.table, &s.table_has_shear, &why), comm, PETSC_ERR_FILE_READ, "-beam_properties: %s", why.c_str());
+    PetscCheck(PropertiesFileRead(o.properties.c_str(), &s.table, &s.table_has_shear, &s.table_has_torsion, &why), comm, PETSC_ERR_FILE_READ, "-beam_properties: %s", why.c_str());
     s.source           = SectionSource::Table;
     s.file             = o.properties;
     const PetscReal x0 = s.table.front().x;
@@ -404,7 +416,7 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
     PetscCheck(!p.has_pivot, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a pivot (-beam_pivot %g) is not allowed: the hands hold a free bat (the pivot is the certification rig's)", (double)g.x_a,
                (double)g.x_b, (double)p.pivot_x);
   }
-  if (p.has_clamp) {
+  if (p.has_clamp && !p.strings.Held()) { // a held string bed's frame is clamped everywhere
     PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-beam_clamp %g,%g is not allowed: need 0 <= x0 < x1 <= L = %g (m)", (double)p.clamp_x0, (double)p.clamp_x1, (double)p.length);
     PetscInt nfree = 0;
@@ -412,6 +424,56 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
     PetscCheck(nfree >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_clamp %g,%g holds all but %" PetscInt_FMT " of the %" PetscInt_FMT " nodes: at least 3 must stay free", (double)p.clamp_x0,
                (double)p.clamp_x1, nfree, p.nodes);
   }
+  PetscFunctionReturn(0);
+}
+
+// -beam_torsion: G J and rho J > 0 over the whole beam, from the uniform options or the section.
+PetscErrorCode TorsionCheck(MPI_Comm comm, const BeamParams &p)
+{
+  PetscFunctionBeginUser;
+  if (!p.torsion.on) PetscFunctionReturn(0);
+  const PetscInt n = 64;
+  for (PetscInt k = 0; k < n; ++k) {
+    PetscReal GJ, rhoJ;
+    TorsionSectionMean(p, k * p.length / n, (k + 1) * p.length / n, &GJ, &rhoJ);
+    PetscCheck(GJ > 0 && std::isfinite(GJ) && rhoJ > 0 && std::isfinite(rhoJ), comm, PETSC_ERR_ARG_WRONG,
+               "-beam_torsion needs the section's G J and rho J: give -beam_torsion_stiffness (N m^2) and -beam_torsion_inertia (kg m), or a round -beam_profile, or a seven-column -beam_properties 'x EI mu kappaGA rhoI GJ rhoJ' (%s gives G J = %g, rho J = %g near x = %g m)",
+               p.section.source == SectionSource::Uniform ? "the uniform section" : p.section.file.c_str(), (double)GJ, (double)rhoJ, (double)((k + 0.5) * p.length / n));
+  }
+  PetscFunctionReturn(0);
+}
+
+// A racket's string bed (-strings_frame, read only when given): held, the frame is the head's
+// outline held still (a beam of the head's length on the bed's columns, clamped everywhere); beam,
+// the beam is the frame, its head inside the beam and rolling with it.
+PetscErrorCode StringBedOnFrame(MPI_Comm comm, BeamParams *p)
+{
+  PetscBool given;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-strings_frame", &given));
+  if (!given) PetscFunctionReturn(0);
+  PetscCall(StringBedParamsFromOptions(comm, &p->strings));
+  StringBedParams &s = p->strings;
+  if (!s.On()) PetscFunctionReturn(0);
+  PetscCheck(!p->shell.on && !p->hoop.on, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame %s with a barrel wall (%s) is not allowed: a racket has no barrel", s.frame.c_str(), p->shell.on ? "-beam_shell" : "-barrel_hoop_frequency");
+  if (s.Held()) {
+    PetscCheck(!p->grip.on && !p->has_pivot, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame held holds the whole frame: %s has nothing to hold", p->grip.on ? "-grip" : "-beam_pivot");
+    p->length      = s.head_length; // the frame: the head's length on the bed's columns, held everywhere
+    p->nodes       = s.nodes;
+    p->has_clamp   = true;
+    p->clamp_x0    = 0, p->clamp_x1 = p->length;
+    s.head_center  = 0.5 * s.head_length;
+    p->section     = BeamSection(); // a held frame's section is never used
+    PetscFunctionReturn(0);
+  }
+  const PetscReal a = 0.5 * s.head_length, h = p->length / (p->nodes - 1);
+  PetscCheck(s.head_center - a > 0 && s.head_center + a < p->length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-head_center %g with -head_length %g is not allowed on this %g m frame: the head (%g to %g m) must lie inside the beam, 0 < x < L", (double)s.head_center, (double)s.head_length,
+             (double)p->length, (double)(s.head_center - a), (double)(s.head_center + a));
+  PetscCheck(p->torsion.on, comm, PETSC_ERR_ARG_WRONG, "-strings_frame beam needs the frame's roll: give -beam_torsion (with its G J and rho J) so that the head can roll under an off-centre hit");
+  PetscCheck(s.head_length >= 4 * h, comm, PETSC_ERR_ARG_OUTOFRANGE, "-strings_frame beam: the head (-head_length %g m) spans fewer than 4 of the frame's cells (h = %g m): give more -beam_nodes", (double)s.head_length, (double)h);
+  const BedGrid g = StringBedFrameGrid(s, p->nodes, p->length);
+  PetscCheck(g.nz >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-strings_frame beam: %" PetscInt_FMT " nodes across the head's width (h_x %g m from -beam_nodes): at least 5 are needed (more -beam_nodes, or -strings_nodes_width)", g.nz, (double)h);
   PetscFunctionReturn(0);
 }
 
@@ -423,6 +485,8 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
   if (o.setprofile || o.setproperties) PetscCall(BeamSectionFromFile(comm, o, p));
   else PetscCall(BeamUniformSection(comm, o, p));
   PetscCall(TimoshenkoCheck(comm, o, *p));
+  PetscCall(StringBedOnFrame(comm, p));
+  PetscCall(TorsionCheck(comm, *p));
   PetscCall(BeamParamsCheck(comm, *p));
   if (p->has_pivot) { // the pivot sits on a node: say where when that moves it
     const PetscReal h = p->length / (p->nodes - 1), xk = BeamPivotNode(*p) * h;

@@ -509,9 +509,29 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
       std::vector<PetscReal> fam(modes.shell_n.begin(), modes.shell_n.end());
       PetscCall(H5WriteDataset1D(g, "shell_n", fam, "1 (0: the beam's bending; n: the wall's harmonic cos n theta; 2: the hoop oscillator)"));
     }
+    if (!modes.part.empty()) { // a roll field or a string bed: each mode's part and its share of the kinetic energy
+      std::vector<PetscReal> part(modes.part.begin(), modes.part.end());
+      PetscCall(H5WriteDataset1D(g, "part", part, "1 (the part with most of the mode's kinetic energy: 0 the frame's bending, 1 its roll, 3 the string bed)"));
+      PetscCall(H5WriteDataset1D(g, "part_share", modes.part_share, "1 (that part's share of the mode's kinetic energy)"));
+    }
+    if (!modes.bed_shape.empty()) { // the string bed's deflection of each mode on its grid, [z][x], as the held bed's /modes/shape_k
+      const BedGrid g2 = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
+      std::vector<PetscReal> x(g2.nx), z(g2.nz);
+      for (PetscInt i = 0; i < g2.nx; ++i) x[i] = g2.X(i);
+      for (PetscInt j = 0; j < g2.nz; ++j) z[j] = g2.Z(j);
+      PetscCall(H5WriteDataset1D(g, "bed_x", x, "m (from the head's centre, along the frame)"));
+      PetscCall(H5WriteDataset1D(g, "bed_z", z, "m (across the face)"));
+      for (size_t m = 0; m < modes.bed_shape.size(); ++m) {
+        std::vector<std::vector<PetscReal>> rows(g2.nz, std::vector<PetscReal>(g2.nx));
+        for (PetscInt j = 0; j < g2.nz; ++j)
+          for (PetscInt i = 0; i < g2.nx; ++i) rows[j][i] = modes.bed_shape[m][j * g2.nx + i];
+        PetscCall(H5WriteDataset2D(g, ("bed_shape_" + std::to_string(m + 1)).c_str(), rows, "1 (the bed's deflection, [z][x], normalised as shapes)"));
+      }
+    }
     const PetscReal h = beam.length / (beam.nodes - 1);
     for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m) // the first two bending modes
-      if (modes.shell_n.empty() || modes.shell_n[m] == 0) PetscCall(H5WriteDataset1D(g, k++ == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
+      if ((modes.shell_n.empty() || modes.shell_n[m] == 0) && (modes.part.empty() || modes.part[m] == (PetscInt)Part::Beam))
+        PetscCall(H5WriteDataset1D(g, k++ == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
     H5Gclose(g);
     PetscCall(H5WriteBeamSection(file, beam));
     PetscFunctionReturn(0);

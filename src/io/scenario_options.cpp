@@ -58,6 +58,28 @@ PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
   PetscFunctionReturn(0);
 }
 
+// -strings_patch_radius: its default from the ball as the shell's (ShellContactRadiusDefault: the
+// Hertz radius on a rigid flat at the approach speed), and the disc's entries within the contact
+// coupling's room.
+PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
+{
+  StringBedParams &bed = sc->beam.strings;
+  PetscFunctionBeginUser;
+  if (bed.patch_radius < 0) bed.patch_radius = ShellContactRadiusDefault(sc->ball, ImpactApproachSpeed(*sc));
+  const BedGrid   g = StringBedFrameGrid(bed, sc->beam.nodes, sc->beam.length);
+  const PetscReal x = sc->impact.x - bed.head_center, z = sc->impact.z, a = bed.patch_radius;
+  PetscInt        n = 0;
+  for (PetscInt i = 0; i < g.nx; ++i)
+    for (PetscInt j = 0; j < g.nz; ++j) {
+      const PetscReal dx = g.X(i) - x, dz = g.Z(j) - z;
+      n += dx * dx + dz * dz < a * a && BedInside(g, g.X(i), g.Z(j)) ? (BedNodeFree(g, i, j) ? 1 : 2) : 0;
+    }
+  PetscCheck(n <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %" PetscInt_FMT " coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
+             (double)a, (double)g.hx, (double)g.hz, n, ContactCoupling::kMaxEntries);
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 unsigned ScenarioPartOf(const std::string &name)
@@ -99,13 +121,15 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
              "-ball_speed 0 is not allowed for a bat at rest: ball and beam would never meet; give -ball_speed > 0 (m/s), or swing the bat (-bat_speed, -bat_angular_velocity)");
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
   if (part(ScenarioImpact)) PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
-  const PetscReal radius_as_read = sc->beam.shell.contact_radius;
+  const PetscReal radius_as_read = sc->beam.shell.contact_radius, patch_as_read = sc->beam.strings.patch_radius;
   if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
+  if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
   if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
   if (how.read_as) {
     *how.read_as                           = *sc;
     how.read_as->beam.shell.contact_radius = radius_as_read;
+    how.read_as->beam.strings.patch_radius = patch_as_read;
   }
   PetscFunctionReturn(0);
 }

@@ -100,19 +100,20 @@ bool ProfileFileRead(const std::string &path, std::vector<ProfileRow> *out, std:
   return true;
 }
 
-bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *out, bool *has_shear, std::string *why)
+bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *out, bool *has_shear, bool *has_torsion, std::string *why)
 {
   std::vector<std::vector<double>> rows;
   std::vector<int>                 lines;
   if (!NumberRows(path, &rows, &lines, why)) return false;
   out->clear();
   const size_t cols = rows[0].size();
-  *has_shear        = cols == 5;
-  static const char *const names[] = {"x", "EI", "mu", "kappaGA", "rhoI"};
+  *has_shear        = cols >= 5;
+  *has_torsion      = cols == 7;
+  static const char *const names[] = {"x", "EI", "mu", "kappaGA", "rhoI", "GJ", "rhoJ"};
   for (size_t r = 0; r < rows.size(); ++r) {
     const std::vector<double> &v = rows[r];
-    if ((v.size() != 3 && v.size() != 5) || v.size() != cols) {
-      *why = At(path, lines[r]) + "a properties row is 'x EI mu' or 'x EI mu kappaGA rhoI' (the same on every row; SI units); this row has " + std::to_string(v.size()) +
+    if ((v.size() != 3 && v.size() != 5 && v.size() != 7) || v.size() != cols) {
+      *why = At(path, lines[r]) + "a properties row is 'x EI mu', 'x EI mu kappaGA rhoI' or 'x EI mu kappaGA rhoI GJ rhoJ' (the same on every row; SI units); this row has " + std::to_string(v.size()) +
              " numbers and the first has " + std::to_string(cols);
       return false;
     }
@@ -125,7 +126,8 @@ bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *out
     p.x    = v[0];
     p.line = lines[r];
     p.s.EI = v[1], p.s.mu = v[2];
-    if (cols == 5) p.s.kGA = v[3], p.s.rhoI = v[4];
+    if (cols >= 5) p.s.kGA = v[3], p.s.rhoI = v[4];
+    if (cols == 7) p.s.GJ = v[5], p.s.rhoJ = v[6];
     if (!out->empty() && !(p.x > out->back().x)) {
       *why = At(path, lines[r]) + "x = " + Num(p.x) + " does not increase (the row before has x = " + Num(out->back().x) + "): rows go from one end to the other";
       return false;

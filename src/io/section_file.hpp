@@ -14,8 +14,9 @@ namespace beamimpact {
 // Returns false with *why ("FILE:LINE: what is wrong") on any fault.
 bool ProfileFileRead(const std::string &path, std::vector<ProfileRow> *rows, std::string *why);
 
-// Rows of a properties file: at least two, 3 or 5 numbers per row (the same on every row),
-// x strictly increasing, every property > 0 and finite. *has_shear: rows carry kappaGA, rhoI.
-bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *rows, bool *has_shear, std::string *why);
+// Rows of a properties file: at least two, 3, 5 or 7 numbers per row (the same on every row),
+// x strictly increasing, every property > 0 and finite. *has_shear: rows carry kappaGA, rhoI;
+// *has_torsion: and GJ, rhoJ (the twist, model/torsion.hpp).
+bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *rows, bool *has_shear, bool *has_torsion, std::string *why);
 
 } // namespace beamimpact

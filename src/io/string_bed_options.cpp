@@ -9,8 +9,10 @@ const OptionModule &StringBedOptionTable()
     "strings",
     "The racket's string bed: a membrane on the head's outline (-strings_frame held -task modes: its modes in a held frame)",
     {
-      OptionChoice("-strings_frame", "The frame holding the bed: none (no string bed; the racket is the beam) or held (a rigid frame, w = 0 on the outline: -task modes gives the bed's modes)",
-                   {"none", "held"}, "none"),
+      OptionChoice("-strings_frame",
+                   "The frame holding the bed: none (no string bed; the racket is the beam), held (a rigid frame, w = 0 on the outline; -impact_x from the head's end, -task modes the bed's modes on a 2-D DMDA) or beam (the beam is the frame: the bed on its nodes, the head bending and rolling with it; needs -beam_torsion)",
+                   {"none", "held", "beam"}, "none"),
+      OptionReal("-strings_patch_radius", "m", "The ball's load on the bed spread over a disc of this radius with the weights 1 - r^2/a^2 (0: the nearest node; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()),
       OptionReal("-strings_tension", "N", "Tension of each main string (along the frame's axis)", "250", Positive()),
       OptionReal("-strings_tension_crosses", "N", "Tension of each cross string (default: -strings_tension)", "", Positive()),
       OptionReal("-strings_spacing", "m", "Spacing of the mains (centre to centre, across the face)", "0.0151", Positive()),
@@ -19,8 +21,8 @@ const OptionModule &StringBedOptionTable()
       OptionChoice("-head_shape", "Outline of the head", {"ellipse", "rectangle"}, "ellipse"),
       OptionReal("-head_length", "m", "Length of the head's outline along the frame's axis (the ellipse's major axis)", "0.34", Positive()),
       OptionReal("-head_width", "m", "Width of the head's outline across the face", "0.24", Positive()),
-      OptionReal("-head_center", "m", "Centre of the head along the frame's axis, from x = 0 (for the coupling to the frame, a later slice)", "0.175", NonNegative()),
-      OptionInt("-strings_nodes", "Grid nodes across the head's length, edges included", "61", AtLeast(5)),
+      OptionReal("-head_center", "m", "Centre of the head along the frame's axis, from x = 0 (-strings_frame beam; held: the head's middle)", "0.175", NonNegative()),
+      OptionInt("-strings_nodes", "Grid nodes across the head's length, edges included (-strings_frame held; on a beam frame the bed's columns are the beam's nodes, -beam_nodes)", "61", AtLeast(5)),
       OptionInt("-strings_nodes_width", "Grid nodes across the head's width (default: from the aspect, so that h_z ~ h_x)", "", AtLeast(5)),
     },
   };
@@ -35,7 +37,7 @@ PetscErrorCode StringBedRequested(MPI_Comm comm, PetscBool *on)
   PetscOptionsBegin(comm, NULL, t.title.c_str(), "beamimpact");
   PetscCall(OptionsReadChoice(PetscOptionsObject, t, "-strings_frame", &frame, NULL));
   PetscOptionsEnd();
-  *on = frame == 1 ? PETSC_TRUE : PETSC_FALSE;
+  *on = frame == 1 ? PETSC_TRUE : PETSC_FALSE; // held: the bed's own modes
   PetscFunctionReturn(0);
 }
 
@@ -60,11 +62,12 @@ PetscErrorCode StringBedParamsFromOptions(MPI_Comm comm, StringBedParams *p)
   PetscCall(OptionsRead(PetscOptionsObject, t, "-head_width", &p->head_width, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, t, "-head_center", &p->head_center, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_nodes", &p->nodes, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_patch_radius", &p->patch_radius, NULL));
   nw = StringBedGrid(*p).nz; // -help shows the aspect's count
   PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_nodes_width", &nw, &set_nw));
   PetscOptionsEnd();
   p->shape       = shape == 0 ? HeadShape::Ellipse : HeadShape::Rectangle;
-  p->frame       = frame == 1 ? "held" : "none";
+  p->frame       = frame == 1 ? "held" : frame == 2 ? "beam" : "none";
   p->nodes_width = set_nw ? nw : 0;
   const BedGrid g = StringBedGrid(*p);
   PetscCheck(g.nz >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE,

@@ -15,27 +15,17 @@ PetscReal BarrelHoopStiffness(const BarrelHoop &hoop)
 
 PetscInt BarrelHoopAppend(const BarrelHoop &hoop, BeamDiscretization *d)
 {
-  const PetscInt F = d->fields, N = (PetscInt)d->mass.size() / F, G = F + 1;
-  const auto     renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
-  std::vector<PetscReal> mass(N * G, hoop.mass);
-  std::vector<char>      held(N * G, 1);
-  for (PetscInt i = 0; i < N * F; ++i) mass[renumber(i)] = d->mass[i], held[renumber(i)] = d->held[i];
-  const PetscInt wall = F; // node 0's new field
-  held[wall]          = 0;
-  for (StrainTerm &t : d->strain) {
-    t.owner = renumber(t.owner);
-    for (PetscInt q = 0; q < t.n; ++q) t.dof[q] = renumber(t.dof[q]);
-  }
+  const PetscInt wall = d->fields; // node 0's new field
+  BeamDiscretizationWiden(d, d->fields + 1, hoop.mass);
+  d->held[wall] = 0;
   StrainTerm s; // 1/2 k_h w^2
   s.n      = 1;
   s.dof[0] = wall;
   s.b[0]   = 1.0;
   s.weight = BarrelHoopStiffness(hoop);
   s.owner  = wall;
+  s.part   = Part::Wall;
   d->strain.push_back(s);
-  d->fields = G;
-  d->mass   = std::move(mass);
-  d->held   = std::move(held);
   return wall;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "model/section.hpp"
+#include "model/string_bed.hpp"
 #include "model/support.hpp"
 
 #include <petscsys.h>
@@ -60,6 +61,15 @@ struct BarrelShell {
   PetscReal youngs_modulus = 0;                // Pa, the wall's E in the shell (-shell_youngs_modulus; 0: the profile's, -beam_youngs_modulus)
 };
 
+// The frame's twist about its own axis (-beam_torsion; model/torsion.hpp): one more field per
+// node, the roll phi (rad), with G J (phi')^2/2 per length and rho J phi_t^2/2. A racket's head
+// rolls under an off-axis hit (-impact_z). Off by default.
+struct BeamTorsion {
+  bool      on        = false;
+  PetscReal stiffness = 0; // N m^2, G J of a uniform section (-beam_torsion_stiffness; 0: the section's)
+  PetscReal inertia   = 0; // kg m, rho J per length of a uniform section (-beam_torsion_inertia; 0: the section's)
+};
+
 struct BeamParams {
   PetscReal length = 1.1;  // m
   PetscReal EI     = 0;    // N m^2, bending stiffness (uniform; with a profile or table, its mean)
@@ -80,6 +90,8 @@ struct BeamParams {
   BeamGrip  grip;                   // the hands on the handle (none by default)
   BarrelHoop hoop;                  // the barrel wall's hoop oscillator (none by default)
   BarrelShell shell;                // the barrel wall as a shell (none by default)
+  BeamTorsion torsion;              // the frame's twist (none by default)
+  StringBedParams strings;          // a racket's string bed on the frame (-strings_frame; none by default)
   BeamMaterialInput input;
 };
 
@@ -97,6 +109,7 @@ struct BeamRigidBody {
   PetscReal x_cm        = 0; // m, centre of mass from x = 0
   PetscReal inertia_cm  = 0; // kg m^2, about the centre of mass
   PetscReal inertia_end = 0; // kg m^2, about the x = 0 end (the knob of a bat)
+  PetscReal inertia_roll = 0; // kg m^2, about the frame's own axis (int rho J and a string bed's sigma z^2; 0 without -beam_torsion)
 };
 BeamRigidBody BeamRigidBodyOf(const BeamParams &p);
 

@@ -53,6 +53,9 @@ static SectionProperties RoundProperties(const SectionMaterial &m, PetscReal D, 
   p.rhoI              = m.rho * I;
   const PetscReal k   = m.kappa > 0 ? m.kappa : CowperRound(m.nu, d / D);
   p.kGA               = k * m.G * A;
+  const PetscReal G   = m.G > 0 ? m.G : m.E / (2 * (1 + m.nu)); // the twist's: an isotropic wall's G when none is given
+  p.GJ                = G * 2 * I;
+  p.rhoJ              = m.rho * 2 * I;
   return p;
 }
 
@@ -72,6 +75,8 @@ SectionProperties SectionAt(const BeamSection &s, PetscReal x)
   p.mu   = (1 - t) * a.mu + t * b.mu;
   p.kGA  = (1 - t) * a.kGA + t * b.kGA;
   p.rhoI = (1 - t) * a.rhoI + t * b.rhoI;
+  p.GJ   = (1 - t) * a.GJ + t * b.GJ;
+  p.rhoJ = (1 - t) * a.rhoJ + t * b.rhoJ;
   return p;
 }
 
@@ -99,7 +104,7 @@ SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b
 {
   SectionProperties sum;
   SectionQuadrature(s, a, b, [&](PetscReal, const SectionProperties &q, PetscReal w) {
-    sum.EI += w * q.EI, sum.mu += w * q.mu, sum.kGA += w * q.kGA, sum.rhoI += w * q.rhoI;
+    sum.EI += w * q.EI, sum.mu += w * q.mu, sum.kGA += w * q.kGA, sum.rhoI += w * q.rhoI, sum.GJ += w * q.GJ, sum.rhoJ += w * q.rhoJ;
   });
   return sum;
 }
@@ -108,7 +113,7 @@ SectionMoments SectionMomentsOf(const BeamSection &s, PetscReal a, PetscReal b)
 {
   SectionMoments m;
   SectionQuadrature(s, a, b, [&](PetscReal x, const SectionProperties &q, PetscReal w) {
-    m.m0 += w * q.mu, m.m1 += w * q.mu * x, m.m2 += w * q.mu * x * x, m.j += w * q.rhoI;
+    m.m0 += w * q.mu, m.m1 += w * q.mu * x, m.m2 += w * q.mu * x * x, m.j += w * q.rhoI, m.roll += w * q.rhoJ;
   });
   return m;
 }

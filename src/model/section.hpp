@@ -9,7 +9,9 @@
 // a profile of round sections (rows x D [d], diameters linear between rows, E, rho, G from
 // the material), or a table of properties (rows x EI mu [kappaGA rhoI], each linear between
 // rows) for frames that are not round. The files are read by io/section_file.hpp; here the
-// rows are only evaluated.
+// rows are only evaluated. The twist (model/torsion.hpp) takes GJ and rho J: a round section's
+// J = 2 I = pi (D^4 - d^4)/32, G from the material (or E/(2 (1 + nu))); a table's columns 6 and
+// 7 (rows x EI mu kappaGA rhoI GJ rhoJ).
 #pragma once
 
 #include <petscsys.h>
@@ -28,6 +30,8 @@ struct SectionProperties {
   PetscReal mu   = 0; // kg/m, mass per length
   PetscReal kGA  = 0; // N, shear stiffness kappa G A (0: unknown)
   PetscReal rhoI = 0; // kg m, rotary inertia per length rho I (0: unknown)
+  PetscReal GJ   = 0; // N m^2, torsional stiffness (0: unknown)
+  PetscReal rhoJ = 0; // kg m, polar mass moment per length rho J about the axis (0: unknown)
 };
 
 struct ProfileRow {
@@ -55,6 +59,7 @@ struct BeamSection {
   std::vector<ProfileRow>    profile;           // source Profile
   std::vector<PropertiesRow> table;             // source Table
   bool                       table_has_shear = false; // the table gives kappaGA and rhoI
+  bool                       table_has_torsion = false; // the table gives GJ and rhoJ too (seven columns)
   SectionMaterial            material;          // source Profile
 };
 
@@ -74,9 +79,10 @@ SectionProperties SectionAt(const BeamSection &s, PetscReal x);
 // than point values, so that steps in the section (a knob, a wall change) keep second order.
 SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b);
 // Mass moments over [a, b]: m0 = int mu (kg), m1 = int mu x (kg m), m2 = int mu x^2 (kg m^2),
-// and j = int rho I (kg m^2, the sections' own rotary inertia); exact as SectionIntegral.
+// j = int rho I (kg m^2, the sections' own rotary inertia) and roll = int rho J (kg m^2, about the
+// axis); exact as SectionIntegral.
 struct SectionMoments {
-  PetscReal m0 = 0, m1 = 0, m2 = 0, j = 0;
+  PetscReal m0 = 0, m1 = 0, m2 = 0, j = 0, roll = 0;
 };
 SectionMoments SectionMomentsOf(const BeamSection &s, PetscReal a, PetscReal b);
 // The span (m) of the rows: last x minus first x.

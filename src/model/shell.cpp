@@ -44,6 +44,7 @@ StrainTerm Term(PetscInt owner, PetscReal weight, std::initializer_list<std::pai
   StrainTerm t;
   t.owner  = owner;
   t.weight = weight;
+  t.part   = Part::Wall;
   for (const auto &e : entries)
     if (e.second != 0.0) t.dof[t.n] = e.first, t.b[t.n++] = e.second;
   return t;
@@ -77,13 +78,9 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
   ShellLayout                  out;
   out.first     = F;
   out.harmonics = p.shell.harmonics;
-  std::vector<PetscReal> mass(N * G, 0.0);
-  std::vector<char>      held(N * G, 1);
-  for (PetscInt i = 0; i < N * F; ++i) mass[renumber(i)] = d->mass[i], held[renumber(i)] = d->held[i];
-  for (StrainTerm &t : d->strain) {
-    t.owner = renumber(t.owner);
-    for (PetscInt q = 0; q < t.n; ++q) t.dof[q] = renumber(t.dof[q]);
-  }
+  BeamDiscretizationWiden(d, G, 0.0); // every new dof's mass is set below
+  std::vector<PetscReal> &mass = d->mass;
+  std::vector<char>      &held = d->held;
   const auto dof = [&](PetscInt node, size_t k, PetscInt comp) { return node * G + out.first + 3 * (PetscInt)k + comp; }; // comp 0 U, 1 V, 2 W
   const auto Cm  = [&](PetscInt k) { return E * c.t[k] / (1 - nu * nu); };
   const auto Bb  = [&](PetscInt k) { return E * std::pow(c.t[k], 3) / (12 * (1 - nu * nu)); };
@@ -139,9 +136,6 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
       d->strain.push_back(Term(Wa, w * 2 * (1 - nu) * B, {{Wa, -n * ih / R}, {Wb, n * ih / R}, {Va, -0.75 * ih / R}, {Vb, 0.75 * ih / R}, {Ua, n / (8 * R * R)}, {Ub, n / (8 * R * R)}})); // tw
     }
   }
-  d->fields = G;
-  d->mass   = std::move(mass);
-  d->held   = std::move(held);
   return out;
 }
 

@@ -33,7 +33,10 @@ struct StringBedParams {
   PetscReal head_center     = 0.175;   // m, the head's centre along the frame's axis from x = 0 (-head_center)
   PetscInt  nodes           = 61;      // grid nodes across the head's length, edges included (-strings_nodes)
   PetscInt  nodes_width     = 0;       // across its width (-strings_nodes_width); 0: from the aspect, h_z ~ h_x
-  std::string frame         = "none";  // -strings_frame: none (no bed) or held (a rigid frame; the only one of this slice)
+  std::string frame         = "none";  // -strings_frame: none (no bed), held (a rigid frame) or beam (the beam is the frame: it bends and rolls)
+  PetscReal patch_radius    = -1;      // m, the ball's load on the bed spread over a disc of this radius (-strings_patch_radius; < 0: not yet derived from the ball)
+  bool On() const { return frame != "none"; }
+  bool Held() const { return frame == "held"; }
 };
 
 // The woven bed as a membrane: tension per length and areal mass.
@@ -44,19 +47,38 @@ struct Membrane {
 };
 Membrane StringBedMembrane(const StringBedParams &p);
 
-// The grid over the head's bounding box [-a, a] x [-b, b] (a = head_length/2, b = head_width/2):
-// nx x nz nodes, edges included, h_x = 2a/(nx - 1), h_z = 2b/(nz - 1). Node (i, j) is at
-// x_i = -a + i h_x, z_j = -b + j h_z.
+// The grid of the bed: nx x nz nodes, node (i, j) at x_i = x0 + i h_x, z_j = -b + j h_z from the
+// head's centre (a = head_length/2, b = head_width/2). In a held frame the grid spans the head's
+// bounding box [-a, a] x [-b, b], edges included (x0 = -a); on a beam frame its columns are the
+// beam's nodes (x0 = -head_center, h_x the beam's h), so that each column of the bed moves with
+// its section of the frame.
 struct BedGrid {
   PetscInt  nx = 0, nz = 0;
   PetscReal a = 0, b = 0;   // m, half-length and half-width
   PetscReal hx = 0, hz = 0; // m
+  PetscReal x0 = 0;         // m, x of column 0 from the head's centre
   HeadShape shape = HeadShape::Ellipse;
-  PetscReal X(PetscInt i) const { return -a + i * hx; }
+  PetscReal X(PetscInt i) const { return x0 + i * hx; }
   PetscReal Z(PetscInt j) const { return -b + j * hz; }
 };
-// nz from the aspect: (nx - 1) * width / length + 1, rounded, unless nodes_width > 0.
+// The held frame's grid: nx = nodes, nz from the aspect ((nx - 1) width / length + 1, rounded)
+// unless nodes_width > 0.
 BedGrid StringBedGrid(const StringBedParams &p);
+// The grid on a beam frame of `nodes` nodes over [0, length] (m): a column per node, nz =
+// nodes_width, or from h_z ~ h_x (width / h_x + 1, rounded).
+BedGrid StringBedFrameGrid(const StringBedParams &p, PetscInt nodes, PetscReal length);
+
+// The area (m^2) of node (i, j)'s cell [x_i - h_x/2, x_i + h_x/2] x [z_j - h_z/2, z_j + h_z/2]
+// inside the outline: the node's share of the bed's mass sigma |cell ∩ head| (exact for the
+// rectangle; the ellipse's by quadrature along x of the chord, to ~1e-9 of the cell).
+PetscReal BedCellArea(const BedGrid &g, PetscInt i, PetscInt j);
+
+// The outline's area and second moments (m^2, m^4) about the head's centre: int dA, int x^2 dA
+// (along the frame), int z^2 dA (across it). The bed's rigid-body share: sigma times these.
+struct HeadMoments {
+  PetscReal area = 0, xx = 0, zz = 0;
+};
+HeadMoments HeadMomentsOf(const StringBedParams &p);
 
 // Whether (x, z) lies strictly inside the outline (a point within 1e-12 of the edge, relative,
 // is on it: held).

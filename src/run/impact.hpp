@@ -36,6 +36,7 @@ struct ImpactParams {
   ImpactAfter after     = ImpactAfter::Modal; // modal wherever the beam allows it (else time, saying why)
   PetscBool after_set   = PETSC_FALSE;        // -impact_after was given: modal where it cannot be is an error
   PetscReal x            = 0.55;  // m, impact point measured from the x = 0 end
+  PetscReal z            = 0;     // m, -impact_z: across the face from the frame's axis (a racket's off-centre hit; 0: on the axis)
   PetscReal offset       = 0;     // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
   PetscBool tangential_rigid = PETSC_FALSE; // -impact_tangential_plane rigid: the bat rigid in its second plane (default flexible, run/oblique.hpp)
   PetscReal window       = -1;    // s, time simulated after each separation (< 0: 2 fundamental periods)
@@ -78,6 +79,7 @@ struct ImpactSeries {
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
   std::vector<PetscReal> beam_dissipated;                                // J, by the beam's damping (damped beams only)
   std::vector<PetscReal> shell_energy;                                   // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
+  std::vector<PetscReal> bed_energy, twist_energy;                       // J, the string bed's (-strings_frame) and the frame's roll (-beam_torsion), in beam_*
   std::vector<PetscReal> velocity_at_x;                                  // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
   std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
@@ -123,6 +125,9 @@ struct MonitorPeaks {
   // The barrel wall (-barrel_hoop_frequency or -beam_shell): its largest displacement under the ball
   // (m, into the bat) and energy (J) over the steps; NaN where no stepper measured them (the modal reference).
   PetscReal wall_deflection = NAN, shell_energy = NAN;
+  // A racket's string bed (-strings_frame): its largest deflection from the frame (m) and its
+  // largest energy (J) over the steps; NaN where no stepper measured them (the modal reference).
+  PetscReal bed_deflection = NAN, bed_energy = NAN;
 };
 
 // The scales of one impact, for studies that judge a step or a run against them (the stability
@@ -187,6 +192,13 @@ struct ImpactOutcome {
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
   PetscReal hoop_frequency = 0; // Hz, the wall's lowest n = 2 frequency (the shell's, model/shell.hpp) or -barrel_hoop_frequency
+  // A racket (-strings_frame, -beam_torsion): the string bed's energy at the end and its largest
+  // over the steps (J), its largest deflection from the frame (m); the roll's energy at the end
+  // (J: the twist's strain and the sections' spin); a free frame's roll rate at the end (rad/s)
+  // and its rigid roll energy L_x^2 / 2 I_x as a fraction of E_in; the angular momentum about
+  // the frame's axis, its change over the run / (m_b v_i L).
+  PetscReal bed_energy_end = 0, bed_energy_peak = 0, bed_deflection_peak = 0, twist_energy_end = 0;
+  PetscReal roll_rate_end = 0, roll_fraction = 0, roll_momentum_error = 0;
   // The rigid-body model, Eq. (11), for a free beam at rest (no support, pivot, grip or swing):
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
   // for which it gives acor_corrected (the forced fit).

@@ -85,7 +85,7 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
     s->system = built;
     if (structure) structure->sys = s->system;
   }
-  s->g        = BeamSystemCoupling(s->sys(), sc.impact.x);
+  s->g        = BeamSystemCoupling(s->sys(), sc.impact.x, sc.impact.z);
   s->approach = sc.ball.speed;
   if (sc.swing.Swings()) { // the bat moves rigidly toward the ball (-y): V(x) = V_cm + Omega (x - x_cm)
     const BeamRigidBody body = BeamRigidBodyOf(sc.beam);

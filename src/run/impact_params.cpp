@@ -40,6 +40,8 @@ const OptionModule &ImpactOptionTable()
     "Impact: where the ball strikes and how long to follow it",
     {
       OptionReal("-impact_x", "m", "Impact point, metres from the x = 0 end", "0.55"),
+      OptionNeeds(OptionReal("-impact_z", "m", "Impact point across the face, metres from the frame's axis (a racket's off-centre hit: it rolls the head; > 0 toward +z of the string bed's grid); needs -beam_torsion or a string bed", "0"),
+                  {"-beam_torsion|-strings_frame"}),
       OptionNeeds(OptionReal("-impact_offset", "m", "Offset D of the ball's line of flight from the bat's axis (> 0: the ball's centre passes above it, the bat strikes below its centre: launched up with backspin); needs a round bat (-beam_profile) and -ball_radius; 0: head-on", "0"), {"-ball_radius"}),
       OptionChoice("-impact_tangential_plane", "An oblique impact: the bat in its second bending plane (across the line of centres), flexible (the same beam in its modes, driven by the friction force) or rigid (its effective mass at the impact point)", {"flexible", "rigid"}, "flexible"),
       OptionReal("-impact_window", "s", "Time followed after each separation; < 0: two fundamental periods of the beam (the file records the value used)", "-1"),
@@ -84,6 +86,7 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_x", &p->x, &x_set));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_z", &p->z, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_offset", &p->offset, NULL));
   {
     PetscInt plane = p->tangential_rigid ? 1 : 0; // the row's choices: flexible, rigid
@@ -108,7 +111,8 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   {
     char what[64];
     PetscCall(PetscSNPrintf(what, sizeof(what), "-impact_x %.12g", (double)p->x));
-    PetscCall(ImpactPointCheck(comm, beam, p->x, what));
+    PetscCall(ImpactAcrossCheck(comm, beam, p->z));
+    PetscCall(ImpactPointCheck(comm, beam, p->x, what, p->z));
   }
   PetscFunctionReturn(0);
 }

@@ -1,6 +1,9 @@
 // Measures of the current state of a stepper. See measures.hpp.
 #include "run/measures.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace beamimpact {
 
 PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m, std::vector<PetscReal> *point_v)
@@ -15,7 +18,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscCall(stepper.ViewBegin(&sv));
   const PetscInt         np = (PetscInt)points.size();
   const PetscInt         G  = 5 + np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
-  std::vector<PetscReal> sums(G + 7, 0.0); // + the wall's stored and kinetic energy and displacement
+  std::vector<PetscReal> sums(G + 10, 0.0); // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the roll's momentum
   ForceState             fs;
   fs.y     = sv.y;
   fs.ys    = sv.y_stride;
@@ -27,19 +30,34 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   ForceOperatorEnergy(S, fs, sv.d0, sv.d1, &sums[1], &sums[G]);
   sums[G + 1] = ForceOperatorFrameMomentum(S, fs, sv.d0, sv.d1);
   ForceOperatorFrameReaction(S, fs, sv.d0, sv.d1, &sums[G + 2], &sums[G + 3]);
-  BeamSystemWallEnergy(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, &sums[G + 4], &sums[G + 5]);
+  PetscReal stored[kParts], kinetic[kParts];
+  BeamSystemPartEnergies(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, stored, kinetic);
+  sums[G + 4] = stored[(int)Part::Wall], sums[G + 5] = kinetic[(int)Part::Wall];
+  sums[G + 7] = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
+  sums[G + 8] = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
   for (PetscInt q = 0; q < ctx.g->n; ++q) { // the wall's share of the compression: its displacement under the ball, into the bat
     const PetscInt d = ctx.g->dof[q];
-    if (d % F >= S.beam_fields && d >= sv.d0 && d < sv.d1) sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
+    if (S.Wall(d % F) && d >= sv.d0 && d < sv.d1) sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
   }
-  // Translational dofs (field 0) of the owned nodes.
-  auto vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
+  // The deflections (the beam's field 0 and a string bed's) and the rotations of the owned nodes.
+  auto           vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
   const PetscInt n0 = sv.d0 / F, n1 = sv.d1 / F;
+  PetscReal      bed_max = 0;
   for (PetscInt i = n0; i < n1; ++i) {
-    const PetscReal mi = S.mass[S.Dof(i)];
+    const PetscReal mi = S.mass[S.Dof(i)], x = S.NodeX(i);
     sums[2] += mi * vel(i);
-    sums[3] += mi * S.NodeX(i) * vel(i);
+    sums[3] += mi * x * vel(i);
     if (S.Rotation(1)) sums[3] += S.mass[S.Dof(i, 1)] * sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
+    if (S.roll_field >= 0) sums[G + 9] += S.mass[S.Dof(i, S.roll_field)] * sv.v[i * sv.v_stride + S.roll_field];
+    if (S.bed_first < 0) continue;
+    const PetscReal y = sv.y[i * sv.y_stride], phi = S.roll_field >= 0 ? sv.y[i * sv.y_stride + S.roll_field] : 0.0;
+    for (PetscInt j = 0; j < S.bed.nz; ++j) {
+      const PetscInt d = S.Dof(i, S.bed_first + j);
+      if (S.held[d]) continue;
+      const PetscReal mv = S.mass[d] * sv.v[i * sv.v_stride + S.bed_first + j], z = S.bed.Z(j);
+      sums[2] += mv, sums[3] += x * mv, sums[G + 9] += z * mv;
+      bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + S.bed_first + j] - y - z * phi));
+    }
   }
   if (mon && mon->segment) {
     const PetscReal tol = 1e-9 * S.h;
@@ -59,6 +77,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(stepper.Comm(), &size));
   if (size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, stepper.Comm()));
+  if (size > 1 && S.bed_first >= 0) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bed_max, 1, MPIU_REAL, MPIU_MAX, stepper.Comm()));
   PetscReal cdot;
   PetscCall(stepper.Compression(&m->c, &cdot));
   const BallParams &ball = *ctx.ball;
@@ -72,6 +91,11 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   m->beam_strain         = sums[1] - sums[G + 4];
   m->shell_energy        = sums[G + 4] + sums[G + 5];
   m->wall_deflection     = sums[G + 6];
+  m->twist_energy        = sums[G + 7];
+  m->bed_energy          = sums[G + 8];
+  m->bed_deflection      = bed_max;
+  m->beam_roll           = sums[G + 9];
+  m->roll_momentum       = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
   m->momentum            = sums[2] + ball.mass * m->ball_v;
   m->angular_momentum    = sums[3] + ball.mass * ctx.g->x * m->ball_v;
   m->beam_momentum       = sums[2];

@@ -20,6 +20,12 @@ struct StateMeasures {
   // The barrel wall (-barrel_hoop_frequency or -beam_shell): its stored and kinetic energy (J), not
   // in beam_kinetic and beam_strain; its displacement under the ball (m, into the bat). 0 without.
   PetscReal shell_energy = 0, wall_deflection = 0;
+  // The frame's roll (-beam_torsion) and a racket's string bed (-strings_frame), each stored plus
+  // kinetic (J; in beam_kinetic and beam_strain); the bed's largest deflection from its frame,
+  // max |w - y - z phi| over its nodes (m); the angular momentum about the frame's axis of the
+  // structure and the ball (kg m^2/s: sum rho J phi_t + sum m z v + m_b z_b v_b). 0 without.
+  PetscReal twist_energy = 0, bed_energy = 0, bed_deflection = 0, roll_momentum = 0;
+  PetscReal beam_roll = 0; // kg m^2/s, the structure's share of roll_momentum
   PetscReal beam_dissipated = 0;                // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its damper's share too)
   // The hands (-grip), from the force operator (system/force_operator.hpp): the energy stored in
   // the force terms other than the elastic one (the grip's 1/2 sum k_i (y_i - v_f,i t)^2), the

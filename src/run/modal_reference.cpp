@@ -154,39 +154,52 @@ void ModalTallyClose(const BallParams &ball, ContactTally *tally)
 // The measures of the state (separated; the linear spring stores nothing then) as a stepper's
 // are taken (run/measures.cpp): energies, momenta about x = 0 (a Timoshenko section's spin
 // included), and D, the energy the beam's damping dissipated.
-StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal D)
+StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_imp, PetscReal D)
 {
   const ModalSystem     &S   = *run.S;
   const BeamSystem      &sys = *S.sys;
   const BallParams      &ball = *run.ball;
-  std::vector<PetscReal> shape(sys.ndof, 0.0);
+  std::vector<PetscReal> shape(sys.ndof, 0.0), rate(sys.ndof, 0.0);
   StateMeasures          m;
-  PetscReal              T = 0, p = 0, l = 0;
+  PetscReal              p = 0, l = 0, r = 0;
   for (PetscInt d = 0; d + 1 < S.n; ++d) {
-    T += 0.5 * S.mass[d] * run.qd[d] * run.qd[d];
     shape[S.dof[d]] = run.q[d];
-    const PetscInt dof = S.dof[d], node = dof / sys.fields;
-    if (dof % sys.fields == 0) {
+    rate[S.dof[d]]  = run.qd[d];
+    const PetscInt dof = S.dof[d], f = dof % sys.fields, node = dof / sys.fields;
+    if (sys.Deflection(f)) {
       p += S.mass[d] * run.qd[d];
       l += S.mass[d] * sys.NodeX(node) * run.qd[d];
-    } else if (sys.Rotation(dof % sys.fields)) l += S.mass[d] * run.qd[d];
+      r += S.mass[d] * sys.DofZ(dof) * run.qd[d];
+    } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
+    else if (f == sys.roll_field) r += S.mass[d] * run.qd[d];
   }
   m.ball_y           = run.q[S.n - 1];
   m.ball_v           = run.qd[S.n - 1];
   m.ball_kinetic     = 0.5 * ball.mass * m.ball_v * m.ball_v;
-  std::vector<PetscReal> rate(sys.ndof, 0.0);
-  for (PetscInt d = 0; d + 1 < S.n; ++d) rate[S.dof[d]] = run.qd[d];
-  PetscReal wall_stored, wall_kinetic; // the barrel wall's (0 without), apart as run/measures.cpp keeps them
-  BeamSystemWallEnergy(sys, shape.data(), sys.fields, rate.data(), sys.fields, 0, sys.ndof, &wall_stored, &wall_kinetic);
-  m.beam_kinetic     = T - wall_kinetic;
-  m.beam_strain      = BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof) - wall_stored;
-  m.shell_energy     = wall_stored + wall_kinetic;
+  PetscReal stored[kParts], kinetic[kParts]; // each part's, as run/measures.cpp keeps them
+  BeamSystemPartEnergies(sys, shape.data(), sys.fields, rate.data(), sys.fields, 0, sys.ndof, stored, kinetic);
+  const int W = (int)Part::Wall;
+  m.beam_kinetic = m.beam_strain = 0;
+  for (int q = 0; q < kParts; ++q)
+    if (q != W) m.beam_kinetic += kinetic[q], m.beam_strain += stored[q];
+  m.shell_energy     = stored[W] + kinetic[W];
+  m.twist_energy     = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
+  m.bed_energy       = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
   for (PetscInt d = 0; d < S.BeamDofs(); ++d) // the wall's share of the compression (S.g = dc/dq = -w)
-    if (S.dof[d] % sys.fields >= sys.beam_fields) m.wall_deflection -= S.g[d] * run.q[d];
+    if (sys.Wall(S.dof[d] % sys.fields)) m.wall_deflection -= S.g[d] * run.q[d];
+  if (sys.bed_first >= 0)
+    for (PetscInt d = 0; d < sys.ndof; ++d) {
+      const PetscInt f = d % sys.fields, i = d / sys.fields;
+      if (!sys.Bed(f) || sys.held[d]) continue;
+      const PetscReal phi = sys.roll_field >= 0 ? shape[sys.Dof(i, sys.roll_field)] : 0.0;
+      m.bed_deflection    = std::max(m.bed_deflection, std::abs(shape[d] - shape[sys.Dof(i)] - sys.DofZ(d) * phi));
+    }
   m.beam_momentum    = p;
   m.beam_moment      = l;
   m.momentum         = p + ball.mass * m.ball_v;
   m.angular_momentum = l + ball.mass * x_imp * m.ball_v;
+  m.beam_roll        = r;
+  m.roll_momentum    = r + ball.mass * z_imp * m.ball_v;
   m.beam_dissipated  = D;
   return m;
 }
@@ -235,7 +248,7 @@ void ModalStart(const Scenario &sc, const BeamSystem &sys, ModalRun *run, PetscR
 void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run, PetscReal E0, PetscReal D, PetscReal V_x, ImpactRecord *rec)
 {
   ModalTallyClose(sc.ball, &rec->contact);
-  rec->end        = ModalMeasures(run, sc.impact.x, D);
+  rec->end        = ModalMeasures(run, sc.impact.x, sc.impact.z, D);
   rec->energy_in  = E0;
   rec->energy_end = ModalEnergy(*run.S, run.q, run.qd, false) + D;
   rec->final_time = run.t;
@@ -254,7 +267,7 @@ PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamS
 
   PetscFunctionBeginUser;
   if (!sc.oblique.on) PetscFunctionReturn(0);
-  const ContactCoupling g = BeamSystemCoupling(sys, sc.impact.x);
+  const ContactCoupling g = BeamSystemCoupling(sys, sc.impact.x, sc.impact.z);
   beam.comm               = comm; // the modes of the second plane on the reference's ranks
   beam.sys                = &sys;
   beam.g                  = &g;
@@ -398,12 +411,12 @@ PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const 
 
   PetscFunctionBeginUser;
   const double wall0 = MPI_Wtime();
-  PetscCall(m.StaticCorrection(BeamSystemCoupling(sys, ip.x), &corr));
+  PetscCall(m.StaticCorrection(BeamSystemCoupling(sys, ip.x, ip.z), &corr));
   PetscCall(TruncatedSystemBuild(m, *corr, sc.ball, &T));
   const ModalSystem S = ModalSystemBuild(sys, corr->g, sc.ball.mass, ContactLinearStiffness(sc.ball)); // the full state's layout
   full.S = &S, full.ball = &sc.ball;
   ModalStart(sc, sys, &full, &V_x, &E0);
-  rec.start = ModalMeasures(full, ip.x, 0);
+  rec.start = ModalMeasures(full, ip.x, ip.z, 0);
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, ip);
   run.S = &T.R, run.ball = &sc.ball, run.c_scale = T.c_scale;
   run.t_cap = times.max_time;
@@ -485,7 +498,7 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
   res->ts_type       = "modal";
   res->formulation   = "exact";
   rec.after_used     = "modal"; // exact throughout
-  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x), ball.mass, ContactLinearStiffness(ball));
+  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x, ip.z), ball.mass, ContactLinearStiffness(ball));
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
   // which also give the dissipated energy of every phase exactly.
   const bool       damped = sys.Damped();
@@ -504,7 +517,7 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
   run.s_min               = 1e-13 * ContactTimeScale(ball, ImpactApproachSpeed(sc));
   if (sc.oblique.on) run.forces = &rec.series;
   ModalStart(sc, sys, &run, &V_x, &E0);
-  rec.start            = ModalMeasures(run, ip.x, 0);
+  rec.start            = ModalMeasures(run, ip.x, ip.z, 0);
   rec.contact.contacts = 1;
   rec.contact.events.push_back({ContactEventKind::ContactStart, 0.0, 0.0, 0.0});
   for (bool more = true; more;) {

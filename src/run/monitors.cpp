@@ -21,12 +21,17 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   ImpactSeries          &S = *series_;
 
   PetscFunctionBeginUser;
-  const bool wall = ctx_.sys->fields > ctx_.sys->beam_fields; // a barrel wall (hoop oscillator or shell)
-  if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall) PetscFunctionReturn(0);
+  const bool wall = ctx_.sys->wall_dof >= 0 || ctx_.sys->shell_first >= 0; // a barrel wall (hoop oscillator or shell)
+  const bool bed  = ctx_.sys->bed_first >= 0;                             // a racket's string bed
+  if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall && !bed) PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
   if (wall) { // the barrel wall's peaks, always (NaN until the first step)
     if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection)) peaks_->wall_deflection = std::abs(m.wall_deflection);
     if (!(m.shell_energy <= peaks_->shell_energy)) peaks_->shell_energy = m.shell_energy;
+  }
+  if (bed) { // the string bed's peaks, always (NaN until the first step)
+    if (!(m.bed_deflection <= peaks_->bed_deflection)) peaks_->bed_deflection = m.bed_deflection;
+    if (!(m.bed_energy <= peaks_->bed_energy)) peaks_->bed_energy = m.bed_energy;
   }
   if (ctx_.sys->Gripped() && std::abs(m.grip_force) > peaks_->grip_force) { // the hands' peak force, always
     peaks_->grip_force      = std::abs(m.grip_force);
@@ -60,7 +65,9 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
     S.ball_dissipated.push_back(m.ball_work - m.ball_stored);
     S.beam_kinetic.push_back(m.beam_kinetic);
     S.beam_strain.push_back(m.beam_strain);
-    if (ctx_.sys->fields > ctx_.sys->beam_fields) S.shell_energy.push_back(m.shell_energy);
+    if (wall) S.shell_energy.push_back(m.shell_energy);
+    if (bed) S.bed_energy.push_back(m.bed_energy);
+    if (ctx_.sys->roll_field >= 0) S.twist_energy.push_back(m.twist_energy);
     S.total_energy.push_back(m.total());
     if (ctx_.sys->Damped()) S.beam_dissipated.push_back(m.beam_dissipated);
   }

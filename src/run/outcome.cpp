@@ -13,15 +13,16 @@ namespace {
 // rigid rotation of a Timoshenko beam also turns its sections (psi = theta).
 void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
 {
-  PetscReal M = 0, Mx = 0, Mxx = 0;
-  for (PetscInt i = 0; i < S.nodes; ++i) {
-    const PetscInt d = S.Dof(i);
+  PetscReal M = 0, Mx = 0, Mxx = 0, Izz = 0;
+  for (PetscInt d = 0; d < S.ndof; ++d) {
     if (S.held[d]) continue;
-    const PetscReal x = S.NodeX(i);
-    M += S.mass[d];
-    Mx += S.mass[d] * x;
-    Mxx += S.mass[d] * x * x;
-    if (S.Rotation(1) && !S.held[S.Dof(i, 1)]) Mxx += S.mass[S.Dof(i, 1)]; // rotary inertia of a Timoshenko section
+    const PetscInt  fld = d % S.fields;
+    const PetscReal x = S.NodeX(d / S.fields), m = S.mass[d];
+    if (S.Deflection(fld)) { // the beam's and a string bed's deflections
+      const PetscReal z = S.DofZ(d);
+      M += m, Mx += m * x, Mxx += m * x * x, Izz += m * z * z;
+    } else if (S.Rotation(fld)) Mxx += m; // rotary inertia of a Timoshenko section
+    else if (fld == S.roll_field) Izz += m; // the sections' rho J
   }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
   const PetscReal L_cm = f->end.beam_moment - x_cm * f->end.beam_momentum;
@@ -30,6 +31,10 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
   f->moment_cm         = L_cm;
   f->E_translation     = f->end.beam_momentum * f->end.beam_momentum / (2 * M);
   f->E_rotation        = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
+  if (S.roll_field < 0) return;
+  f->inertia_roll = Izz; // about the axis z = 0: the bed is symmetric across it, its centre of mass on the axis
+  f->moment_roll  = f->end.beam_roll;
+  f->E_roll       = Izz > 0 ? f->moment_roll * f->moment_roll / (2 * Izz) : 0;
 }
 
 } // namespace

@@ -29,6 +29,10 @@ bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
 bool ResultBarrelWall(const Scenario &sc) { return sc.beam.hoop.on || sc.beam.shell.on; }
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
+bool ResultStringBed(const Scenario &sc) { return sc.beam.strings.On(); }
+bool ResultTwist(const Scenario &sc) { return sc.beam.torsion.on; }
+bool ResultTwistInvariant(const Scenario &sc) { return ResultTwist(sc) && ResultMomentumInvariant(sc); }
+bool ResultTwistNoHeld(const Scenario &sc) { return ResultTwist(sc) && ResultNoHeldDof(sc) && sc.ball.speed > 0; }
 
 // Asked of the scenario as given (the run record, a file's `applies`) and of the run's projected
 // one (the outcome): ObliqueImpact answers the same for both.
@@ -95,6 +99,7 @@ ResultColumn Flag(const char *name, PetscBool ImpactResult::*field, Compute comp
 }
 
 const char *const kAlways = "always";
+const char *const kStrings = "with a string bed (-strings_frame held or beam)";
 const char *const kNoHeld = "a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
 // A ball at rest (-ball_speed 0, struck by a swinging bat) has no ACOR and no incident energy E_in.
 bool              BallMoves(const Scenario &sc) { return sc.ball.speed > 0; }
@@ -117,7 +122,9 @@ PivotRig  RigOf(const OutcomeFacts &f) { return PivotRigOf(BeamRigidBodyOf(f.sc-
 PetscReal RigidMassAt(const OutcomeFacts &f)
 {
   const BeamRigidBody body = BeamRigidBodyOf(f.sc->beam);
-  return RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(f.sc->impact.x - body.x_cm));
+  const PetscReal     M_e  = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(f.sc->impact.x - body.x_cm));
+  const PetscReal     z    = f.sc->impact.z; // off the axis: the roll adds z^2 / I_x to 1/M_e
+  return z != 0 && body.inertia_roll > 0 ? 1 / (1 / M_e + z * z / body.inertia_roll) : M_e;
 }
 
 using R = ImpactResult;
@@ -166,7 +173,7 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("rotation_fraction", "1", &R::rotation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_rotation / f.E_in; },
          "the beam's rigid rotation L_cm^2/2I_cm about its centre of mass at the end / E_in"),
     Real("vibration_fraction", "1", &R::vibration_fraction, BallMovesNoHeld, kBallMovesNoHeld,
-         [](F f) -> double { return (f.end.beam_kinetic + f.end.beam_strain - f.E_translation - f.E_rotation) / f.E_in; }, "the rest of the beam's energy at the end / E_in"),
+         [](F f) -> double { return (f.end.beam_kinetic + f.end.beam_strain - f.E_translation - f.E_rotation - f.E_roll) / f.E_in; }, "the rest of the beam's energy at the end / E_in"),
     Real("bbs", "m/s", &R::bbs, ResultAlways, kAlways, [](F f) -> double { return -f.end.ball_v; }, "batted-ball speed, away from the bat (lab frame; a bat at rest: acor v_i)"),
     Real("collision_efficiency", "1", &R::collision_efficiency, ResultAlways, kAlways, [](F f) -> double { return CollisionEfficiency(f); },
          "q = (bbs - V(x)) / (v_ball + V(x)), the ACOR in the bat's frame (a bat at rest: acor)"),
@@ -192,6 +199,21 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("hoop_frequency", "Hz", &R::hoop_frequency, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
          [](F f) -> double { return f.sc->beam.hoop.on ? f.sc->beam.hoop.frequency : ShellLowestFrequency(f.sc->beam, 2); },
          "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h"),
+    Real("bed_energy_end", "J", &R::bed_energy_end, ResultStringBed, kStrings, [](F f) -> double { return f.end.bed_energy; },
+         "the string bed's energy at the end (its strain relative to the frame and its strings' kinetic energy)"),
+    Real("bed_energy_peak", "J", &R::bed_energy_peak, ResultStringBed, kStrings, [](F f) -> double { return f.peaks->bed_energy; },
+         "the string bed's largest energy over the steps (NaN from the modal reference)"),
+    Real("bed_deflection_peak", "m", &R::bed_deflection_peak, ResultStringBed, kStrings, [](F f) -> double { return f.peaks->bed_deflection; },
+         "the string bed's largest deflection from its frame, max |w - y - z phi| over its nodes and the steps (NaN from the modal reference)"),
+    Real("twist_energy_end", "J", &R::twist_energy_end, ResultTwist, "with -beam_torsion", [](F f) -> double { return f.end.twist_energy; },
+         "the frame's roll energy at the end: the twist's strain and the sections' spin rho J phi_t^2/2 (a string bed's roll is in bed_energy_end)"),
+    Real("roll_rate_end", "rad/s", &R::roll_rate_end, ResultTwistNoHeld, "with -beam_torsion, a moving ball and no held dof",
+         [](F f) -> double { return f.inertia_roll > 0 ? f.moment_roll / f.inertia_roll : 0; }, "the frame's rigid roll rate about its axis at the end (> 0: the +z side moves toward +y, away from the ball's approach)"),
+    Real("roll_fraction", "1", &R::roll_fraction, ResultTwistNoHeld, "with -beam_torsion, a moving ball and no held dof", [](F f) -> double { return f.E_roll / f.E_in; },
+         "the frame's rigid roll L_x^2/2I_x about its axis at the end / E_in (not in vibration_fraction)"),
+    Real("roll_momentum_error", "1", &R::roll_momentum_error, ResultTwistInvariant, "with -beam_torsion where momentum is an invariant",
+         [](F f) -> double { return (f.end.roll_momentum - f.start.roll_momentum) / (MomentumScale(f) * f.sc->beam.length); },
+         "change of the angular momentum about the frame's axis / (m_b v_i L)"),
     Real("segment_kinetic_peak", "J", &R::segment_kinetic_peak, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic; },
          "peak kinetic energy of the monitored segment"),
     Real("segment_kinetic_peak_time", "s", &R::segment_kinetic_peak_time, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic_time; }, "when"),

@@ -38,6 +38,10 @@ struct OutcomeFacts {
   // angular momentum about the centre of mass (kg m^2/s), and the kinetic energies of the rigid
   // translation P^2/2M and rotation L_cm^2/2I_cm (J).
   PetscReal beam_mass = 0, inertia_cm = 0, moment_cm = 0, E_translation = 0, E_rotation = 0;
+  // With a roll field (-beam_torsion): the moment of inertia about the frame's axis (kg m^2: the
+  // sections' rho J and a string bed's m z^2), the structure's angular momentum about it (kg m^2/s)
+  // and the rigid roll's energy L_x^2 / 2 I_x (J); 0 without.
+  PetscReal inertia_roll = 0, moment_roll = 0, E_roll = 0;
   const ObliqueRecord *oblique = nullptr; // an oblique impact's tangential contact, exit and flight
 };
 
@@ -54,6 +58,8 @@ bool ResultMomentumInvariant(const Scenario &sc);  // no held dof, no grip, no m
 bool ResultFreeBeamAtRest(const Scenario &sc);     // no held dof, no grip, no swing (Eq. 11)
 bool ResultFreePivot(const Scenario &sc);          // -beam_pivot and no other support or grip: the rig turns freely
 bool ResultGripped(const Scenario &sc);            // -grip
+bool ResultStringBed(const Scenario &sc);          // -strings_frame held or beam
+bool ResultTwist(const Scenario &sc);              // -beam_torsion
 bool ResultBarrelWall(const Scenario &sc);         // -barrel_hoop_frequency or -beam_shell
 bool ResultSegment(const Scenario &sc);            // -monitor_segment
 

@@ -12,54 +12,20 @@ extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const in
 
 namespace beamimpact {
 
-std::vector<std::vector<PetscReal>> BeamRigidMotions(const BeamSystem &sys)
-{
-  const PetscInt         nd = sys.ndof, nf = sys.fields;
-  std::vector<PetscReal> c[2] = {std::vector<PetscReal>(nd, 0.0), std::vector<PetscReal>(nd, 0.0)};
-  for (PetscInt d = 0; d < nd; ++d) {
-    const PetscInt f = d % nf;
-    c[0][d]          = f == 0 ? 1.0 : 0.0;
-    c[1][d]          = f == 0 ? sys.NodeX(d / nf) / sys.L : (sys.Rotation(f) ? 1.0 / sys.L : 0.0);
-  }
-  // Combinations a c0 + b c1 vanishing on the held dofs: the null space of the 2-column H.
-  PetscReal hh[2][2] = {{0, 0}, {0, 0}}; // H^T H
-  for (PetscInt d = 0; d < nd; ++d)
-    if (sys.held[d])
-      for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) hh[i][j] += c[i][d] * c[j][d];
-  std::vector<std::array<PetscReal, 2>> combos;
-  const PetscReal                       tr = hh[0][0] + hh[1][1], det = hh[0][0] * hh[1][1] - hh[0][1] * hh[1][0];
-  if (tr == 0.0) combos = {{1.0, 0.0}, {0.0, 1.0}};
-  else if (std::abs(det) <= 1e-12 * tr * tr) { // rank 1: the eigenvector of H^T H for eigenvalue 0
-    if (hh[0][0] >= hh[1][1]) combos = {{-hh[0][1], hh[0][0]}};
-    else combos = {{hh[1][1], -hh[1][0]}};
-  }
-  std::vector<std::vector<PetscReal>> out;
-  std::vector<PetscReal>              f(nd);
-  for (const auto &ab : combos) {
-    std::vector<PetscReal> v(nd);
-    PetscReal              vmax = 0, fmax = 0, kmax = 0;
-    for (PetscInt d = 0; d < nd; ++d) {
-      v[d] = sys.held[d] ? 0.0 : ab[0] * c[0][d] + ab[1] * c[1][d];
-      vmax = std::max(vmax, std::abs(v[d]));
-    }
-    for (PetscReal b : sys.band) kmax = std::max(kmax, std::abs(b));
-    BeamSystemStiffnessApply(sys, v.data(), nf, 0, nd, f.data(), 1);
-    for (PetscInt d = 0; d < nd; ++d) fmax = std::max(fmax, std::abs(f[d]));
-    if (vmax > 0 && fmax <= 1e-9 * kmax * vmax) out.push_back(v);
-  }
-  return out;
-}
-
 std::vector<PetscInt> BeamTemporarySupports(const BeamSystem &sys, const std::vector<PetscInt> &dof, const std::vector<std::vector<PetscReal>> &R)
 {
   const PetscInt                      n = (PetscInt)dof.size();
   std::vector<PetscInt>               sup;
   std::vector<std::vector<PetscReal>> r = R;
   for (size_t i = 0; i < r.size(); ++i) {
-    PetscInt best = -1;
-    for (PetscInt d = 0; d < n; ++d)
+    PetscInt  best = -1, any = 0;
+    PetscReal rmax = 0;
+    for (PetscInt d = 0; d < n; ++d) {
+      if (std::abs(r[i][d]) > std::abs(r[i][any])) any = d;
       if (dof[d] % sys.fields == 0 && (best < 0 || std::abs(r[i][d]) > std::abs(r[i][best]))) best = d;
+      rmax = std::max(rmax, std::abs(r[i][d]));
+    }
+    if (best < 0 || std::abs(r[i][best]) <= 1e-12 * rmax) best = any; // a motion no deflection takes: the roll
     sup.push_back(best);
     for (size_t j = i + 1; j < r.size(); ++j) { // eliminate the chosen dof from the later modes
       const PetscReal f = r[j][best] / r[i][best];
@@ -81,7 +47,7 @@ bool Refuse(std::string *why, const char *text)
 std::vector<std::vector<PetscReal>> RigidModesOnFree(const BeamSystem &sys, const BeamFactor &F)
 {
   std::vector<std::vector<PetscReal>> R;
-  for (const auto &v : BeamRigidMotions(sys)) {
+  for (const auto &v : BeamSystemRigidMotions(sys)) {
     std::vector<PetscReal> r(F.n);
     for (PetscInt d = 0; d < F.n; ++d) r[d] = v[F.dof[d]];
     for (int pass = 0; pass < 2; ++pass) {

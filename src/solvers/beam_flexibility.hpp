@@ -29,15 +29,11 @@
 
 namespace beamimpact {
 
-// The beam's rigid motions that its held dofs allow: deflection a + b x (field 0) and rotation
-// b (a Timoshenko rotation field), zero on every held dof, verified to be strain-free (K v = 0
-// to round-off of the factored K). Each as a full dof vector (not normalised).
-std::vector<std::vector<PetscReal>> BeamRigidMotions(const BeamSystem &sys);
-
-// The temporary supports of a flexibility solve: one deflection dof (an index into dof, the
-// free dofs) per rigid mode R[i] (over the same free dofs), chosen so that the rigid modes'
-// values there are independent (each the largest after the earlier ones are eliminated):
-// statically determinate, so a self-equilibrated load has no reactions.
+// The temporary supports of a flexibility solve: one dof (an index into dof, the free dofs) per
+// rigid mode R[i] (over the same free dofs; BeamSystemRigidMotions), chosen so that the rigid
+// modes' values there are independent (each the largest after the earlier ones are eliminated):
+// statically determinate, so a self-equilibrated load has no reactions. A deflection dof where
+// one moves the mode (translation, pitch), else any (a roll: the roll field).
 std::vector<PetscInt> BeamTemporarySupports(const BeamSystem &sys, const std::vector<PetscInt> &dof, const std::vector<std::vector<PetscReal>> &R);
 
 // The factored form of a statically determinate beam (BeamFactorCreate).

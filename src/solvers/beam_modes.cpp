@@ -44,7 +44,7 @@ void ExactRigidModes(BeamModes *m)
   ModalBasis        &B = m->B;
   PetscInt           nz = 0;
   while (nz < count && B.omega[nz] < 1e-3 * m->sys.frequency_unit) nz++;
-  const auto rigid = BeamRigidMotions(m->sys);
+  const auto rigid = BeamSystemRigidMotions(m->sys);
   if (nz > 0 && (PetscInt)rigid.size() == nz) {
     for (PetscInt k = 0; k < nz; ++k) { // M^{1/2} v on the free dofs, orthonormal
       PetscReal *phi = &B.Phi[(size_t)k * n];

@@ -260,7 +260,8 @@ static PetscInt ModeFamily(const BeamSystem &op, const std::vector<PetscReal> &p
   std::vector<PetscReal> e(groups + 1, 0.0);
   for (PetscInt d = 0; d < op.ndof; ++d) {
     const PetscInt f = d % op.fields;
-    const PetscInt g = f < op.beam_fields ? 0 : (op.shell_first >= 0 ? 1 + (f - op.shell_first) / 3 : groups);
+    if (!op.Wall(f) && op.PartOf(f) != Part::Beam) continue;
+    const PetscInt g = !op.Wall(f) ? 0 : (op.shell_first >= 0 ? 1 + (f - op.shell_first) / 3 : groups);
     e[g] += op.mass[d] * phi[d] * phi[d];
   }
   const PetscInt best = (PetscInt)(std::max_element(e.begin(), e.end()) - e.begin());
@@ -281,9 +282,26 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->period.assign(count, 0.0);
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
-  if (op.fields > op.beam_fields) out->shell_n.assign(count, 0);
+  const bool wall = op.wall_dof >= 0 || op.shell_first >= 0, parts = op.roll_field >= 0 || op.bed_first >= 0;
+  if (wall) out->shell_n.assign(count, 0);
+  if (parts) out->part.assign(count, 0), out->part_share.assign(count, 0.0);
+  if (parts && shapes && op.bed_first >= 0) out->bed_shape.resize(count);
   for (PetscInt m = 0; m < count; ++m) {
-    if (op.fields > op.beam_fields) out->shell_n[m] = ModeFamily(op, phis[order[m]]);
+    const std::vector<PetscReal> &phi = phis[order[m]];
+    if (wall) out->shell_n[m] = ModeFamily(op, phi);
+    if (parts) {
+      PetscReal e[kParts] = {0}, sum = 0;
+      for (PetscInt d = 0; d < op.ndof; ++d) e[(int)op.PartOf(d % op.fields)] += op.mass[d] * phi[d] * phi[d], sum += op.mass[d] * phi[d] * phi[d];
+      const int best      = (int)(std::max_element(e, e + kParts) - e);
+      out->part[m]       = best;
+      out->part_share[m] = sum > 0 ? e[best] / sum : 0;
+      if (!out->bed_shape.empty()) {
+        const BedGrid &g = op.bed;
+        out->bed_shape[m].assign((size_t)g.nx * g.nz, 0.0);
+        for (PetscInt j = 0; j < g.nz; ++j)
+          for (PetscInt i = 0; i < g.nx; ++i) out->bed_shape[m][j * g.nx + i] = phi[op.Dof(i, op.bed_first + j)];
+      }
+    }
     if (shapes) (*shapes)[m] = DeflectionField(op, std::move(phis[order[m]]));
     const PetscReal w = std::sqrt(std::max<PetscReal>(lambda[order[m]], 0.0));
     if (w < kModesRigidThreshold * op.frequency_unit) {
@@ -587,58 +605,7 @@ std::vector<PetscReal> ModeNodes(const std::vector<PetscReal> &w, PetscReal h)
   return x;
 }
 
-PetscInt BeamSystemRigidCount(const BeamSystem &op)
-{
-  // The rigid motions the held dofs leave: (a, b) with a + b x_i = 0 at every held deflection
-  // and b = 0 at every held rotation.
-  bool      any = false, independent = false;
-  PetscReal a0 = 0, b0 = 0; // the first constraint row (a0, b0) on (a, b)
-  for (PetscInt i = 0; i < op.nodes && !independent; ++i)
-    for (PetscInt f = 0; f < op.beam_fields && !independent; ++f) {
-      if (!op.held[op.Dof(i, f)]) continue;
-      const PetscReal a = f == 0 ? 1.0 : 0.0, b = f == 0 ? op.NodeX(i) : 1.0;
-      if (!any) any = true, a0 = a, b0 = b;
-      else independent = a0 * b - b0 * a != 0;
-    }
-  if (independent) return 0;
-  std::vector<std::pair<PetscReal, PetscReal>> basis; // (a, b) of each candidate
-  if (any) basis.push_back({-b0, a0});
-  else basis = {{1.0, 0.0}, {0.0, 1.0}};
-  // A candidate is rigid only if it strains nothing (an Euler-Bernoulli clamp holds the
-  // rotation through its mirrored curvature, not a held dof): the count is the number of
-  // eigenvalues of the strain energy over the mass on the candidates' span below the rigid
-  // threshold.
-  const auto motion = [&](PetscReal a, PetscReal b) {
-    std::vector<PetscReal> v(op.ndof, 0.0);
-    for (PetscInt i = 0; i < op.nodes; ++i) {
-      v[op.Dof(i)] = a + b * op.NodeX(i);
-      if (op.Rotation(1)) v[op.Dof(i, 1)] = b;
-    }
-    for (PetscInt d = 0; d < op.ndof; ++d)
-      if (op.held[d]) v[d] = 0.0;
-    return v;
-  };
-  const size_t                        k = basis.size();
-  std::vector<std::vector<PetscReal>> v;
-  for (auto &ab : basis) v.push_back(motion(ab.first, ab.second));
-  PetscReal A[2][2] = {{0, 0}, {0, 0}}, B[2][2] = {{0, 0}, {0, 0}};
-  for (size_t p = 0; p < k; ++p)
-    for (size_t q = p; q < k; ++q) {
-      std::vector<PetscReal> sum(op.ndof);
-      for (PetscInt d = 0; d < op.ndof; ++d) sum[d] = v[p][d] + v[q][d], B[p][q] += op.mass[d] * v[p][d] * v[q][d];
-      const PetscReal Us = BeamSystemStrainEnergy(op, sum.data(), op.fields, 0, op.ndof);
-      const PetscReal Up = BeamSystemStrainEnergy(op, v[p].data(), op.fields, 0, op.ndof), Uq = BeamSystemStrainEnergy(op, v[q].data(), op.fields, 0, op.ndof);
-      A[p][q] = p == q ? 2 * Up : Us - Up - Uq; // the bilinear form of 2 U
-      A[q][p] = A[p][q], B[q][p] = B[p][q];
-    }
-  const PetscReal zero = std::pow(kModesRigidThreshold * op.frequency_unit, 2);
-  if (k == 1) return A[0][0] <= zero * B[0][0] ? 1 : 0;
-  // det(A - l B) = 0: l^2 det B - l (a00 b11 + a11 b00 - 2 a01 b01) + det A = 0
-  const PetscReal qa = B[0][0] * B[1][1] - B[0][1] * B[0][1], qb = -(A[0][0] * B[1][1] + A[1][1] * B[0][0] - 2 * A[0][1] * B[0][1]), qc = A[0][0] * A[1][1] - A[0][1] * A[0][1];
-  const PetscReal disc = std::sqrt(std::max<PetscReal>(0.0, qb * qb - 4 * qa * qc));
-  const PetscReal l1 = (-qb - disc) / (2 * qa), l2 = (-qb + disc) / (2 * qa);
-  return (l1 <= zero ? 1 : 0) + (l2 <= zero ? 1 : 0);
-}
+PetscInt BeamSystemRigidCount(const BeamSystem &op) { return (PetscInt)BeamSystemRigidMotions(op).size(); }
 
 PetscInt BeamModesRigidCount(Support left, Support right) { return SupportRigidModes(left, right); }
 

@@ -59,6 +59,14 @@ struct ModesResult {
   // fields holding most of its kinetic energy: 0 the beam's bending, n a shell harmonic's, 2 the
   // hoop oscillator; empty without a wall.
   std::vector<PetscInt>  shell_n;
+  // With a roll field or a string bed (-beam_torsion, -strings_frame): each mode's part
+  // (model/beam_theory.hpp's Part: the beam's bending, the twist, the bed) holding most of its
+  // kinetic energy, and that part's share of it (a coupled mode has none near 1); the bed's
+  // deflection of each mode on its grid, [z][x] (mass-normalised, 0 where not an unknown; with
+  // the shapes only). Empty without them.
+  std::vector<PetscInt>  part;
+  std::vector<PetscReal> part_share;
+  std::vector<std::vector<PetscReal>> bed_shape;
   // How they were found: "shift-and-invert on K" (SLEPc on the stiffness), or "factored form"
   // (a fine grid of a statically determinate beam: BeamModesFactoredForm, beam_modes.hpp).
   std::string            method;
@@ -115,9 +123,9 @@ struct BeamFactor;
 PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda,
                                        std::vector<std::vector<PetscReal>> *phis);
 
-// Rigid modes the held dofs allow, for any supports, clamped region or pivot: 2 (w = a + b x,
-// and psi = b for a second field) minus the rank of the constraints the held dofs put on
-// (a, b): a held deflection at x gives a + b x = 0, a held rotation b = 0.
+// Rigid modes the held dofs allow, for any supports, clamped region or pivot: the number of
+// BeamSystemRigidMotions (w = a + b x + c z, psi = b for a second field, the roll c with one;
+// those that vanish on every held dof and strain nothing).
 PetscInt BeamSystemRigidCount(const BeamSystem &op);
 
 // BeamModesCompute checks that its lowest min(count, BeamSystemRigidCount(op)) modes are rigid

@@ -99,7 +99,7 @@ PetscErrorCode StringBedOperatorCreate(MPI_Comm comm, const BedGrid &g, const Me
           cols[n].i = i + di[d], cols[n].j = j + dj[d];
           vals[n++] = r.off[d];
         }
-      const PetscScalar mass = m.sigma * g.hx * g.hz; // a held node's too: its eigenvalue kHeldScale dmax / mass
+      const PetscScalar mass = r.held ? m.sigma * g.hx * g.hz : r.mass; // a held node's: its eigenvalue kHeldScale dmax / (sigma h_x h_z)
       PetscCall(MatSetValuesStencil(*K, 1, &row, n, cols, vals, INSERT_VALUES));
       PetscCall(MatSetValuesStencil(*M, 1, &row, 1, &row, &mass, INSERT_VALUES));
     }
@@ -172,7 +172,7 @@ PetscErrorCode BedModeExtract(EPS eps, DM da, Mat K, Mat M, const BedGrid &g, co
     for (PetscInt i = 0; i < g.nx; ++i) {
       PetscReal &v = (*shape)[j * g.nx + i];
       if (!BedNodeFree(g, i, j)) v = 0;
-      norm += m.sigma * g.hx * g.hz * v * v;
+      else norm += BedStiffnessRow(g, m, i, j).mass * v * v;
       amax = std::max(amax, std::abs(v));
     }
   norm = std::sqrt(norm);

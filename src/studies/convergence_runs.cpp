@@ -30,7 +30,7 @@ PetscErrorCode StableStep(const ConvergenceConfig &cfg, const Scenario &sc, Pets
   BeamSystem  sys;
   std::string why;
   PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  const PetscReal lf = LeapfrogStableStep(sys, BeamSystemCoupling(sys, sc.impact.x), sc.ball); // 2 / omega_max
+  const PetscReal lf = LeapfrogStableStep(sys, BeamSystemCoupling(sys, sc.impact.x, sc.impact.z), sc.ball); // 2 / omega_max
   if (cfg.method == "leapfrog") {
     *dt = lf;
     PetscFunctionReturn(0);

@@ -69,9 +69,10 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
     c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
     ImpactStructure *structure   = nullptr;
     if (reuse) { // the structure's system, unless this point is on another beam
-      const PetscReal radius = c.beam.shell.contact_radius;
-      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0) reuse->structure.sys.reset();
+      const PetscReal radius = c.beam.shell.contact_radius, patch = c.beam.strings.patch_radius; // follow the ball: a new one is a new system
+      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0 || std::memcmp(&patch, &reuse->patch_radius, sizeof patch) != 0) reuse->structure.sys.reset();
       reuse->shell_radius = radius;
+      reuse->patch_radius = patch;
       structure           = &reuse->structure;
     }
     const BeamSystem *kept = structure ? structure->sys.get() : nullptr;

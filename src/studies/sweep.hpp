@@ -53,6 +53,7 @@ struct SweepReuse {
   SweepScenarioCache scenario;
   ImpactStructure    structure;
   PetscReal          shell_radius = 0; // m, the contact radius the structure's system has
+  PetscReal          patch_radius = 0; // m, the string bed's load disc the structure's system has
   PetscInt           systems = 0;      // systems built (structure.sys set by a run)
 };
 

@@ -551,10 +551,10 @@ PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt 
   if (ierr) {
     // The impact point of this case may be off the beam or held fixed (e.g. across a
     // clamped region): a failed case, not a bad option.
-    PetscReal x = ImpactParams().x;
+    PetscReal x = ImpactParams().x, z = 0;
     PetscBool set;
-    if (bodies_read && !PetscOptionsGetReal(NULL, NULL, "-impact_x", &x, &set)) {
-      const ImpactPointWhere where = ImpactPointLocate(beam, x);
+    if (bodies_read && !PetscOptionsGetReal(NULL, NULL, "-impact_x", &x, &set) && !PetscOptionsGetReal(NULL, NULL, "-impact_z", &z, &set)) {
+      const ImpactPointWhere where = ImpactPointLocate(beam, x, z);
       if (where != ImpactPointWhere::Movable) {
         *status = where == ImpactPointWhere::OffBeam ? SweepOffBeam : SweepHeldPoint;
         *reason = SweepErrorReason(ierr);

@@ -4,8 +4,10 @@
 
 #include "model/barrel.hpp"
 #include "model/shell.hpp"
+#include "model/torsion.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace beamimpact {
@@ -22,6 +24,8 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   BeamSystem &S    = *sys;
   S                = BeamSystem();
   S.beam_fields    = d.fields;
+  S.field_part.assign(d.fields, Part::Beam);
+  if (p.torsion.on) S.roll_field = TorsionAppend(p, &d), S.field_part.push_back(Part::Twist);
   if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d), S.wall_stiffness = BarrelHoopStiffness(p.hoop);
   if (p.shell.on) {
     const ShellLayout shell = ShellAppend(p, &d);
@@ -33,6 +37,15 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
       PetscReal t;
       ShellWallAt(p, p.length * i / (p.nodes - 1), &S.shell_radius[i], &t);
     }
+  }
+  S.field_part.resize(d.fields, Part::Wall); // the hoop's or the shell's
+  if (p.strings.On()) {
+    const BedLayout bed = StringBedAppend(p.strings, StringBedFrameGrid(p.strings, p.nodes, p.length), S.roll_field, &d);
+    S.bed_first         = bed.first;
+    S.bed               = bed.grid;
+    S.bed_head_center   = p.strings.head_center;
+    S.bed_patch_radius  = std::max<PetscReal>(0, p.strings.patch_radius);
+    S.field_part.resize(d.fields, Part::Bed);
   }
   S.nodes          = p.nodes;
   S.fields         = d.fields;
@@ -65,16 +78,89 @@ void BeamSystemAssemble(BeamSystem *sys)
   ForceOperatorAssemble(&S); // K and C
 }
 
-ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp)
+namespace {
+
+// The bed's nodes under a disc of radius a about (x, z) from the head's centre, with the weights
+// 1 - r^2/a^2 (a parabolic pressure; the nearest node alone when a < the grid's step leaves none
+// inside), normalised to 1: (bed column i, row j, weight).
+std::vector<std::array<PetscReal, 3>> BedPatch(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
 {
+  const BedGrid                        &g = sys.bed;
+  const PetscReal                       x = x_imp - sys.bed_head_center, a = sys.bed_patch_radius;
+  std::vector<std::array<PetscReal, 3>> out;
+  PetscReal                             sum = 0;
+  if (a > 0) {
+    const PetscInt i0 = std::max<PetscInt>(0, (PetscInt)std::floor((x - a - g.x0) / g.hx)), i1 = std::min<PetscInt>(g.nx - 1, (PetscInt)std::ceil((x + a - g.x0) / g.hx));
+    const PetscInt j0 = std::max<PetscInt>(0, (PetscInt)std::floor((z_imp - a + g.b) / g.hz)), j1 = std::min<PetscInt>(g.nz - 1, (PetscInt)std::ceil((z_imp + a + g.b) / g.hz));
+    for (PetscInt i = i0; i <= i1; ++i)
+      for (PetscInt j = j0; j <= j1; ++j) {
+        const PetscReal dx = g.X(i) - x, dz = g.Z(j) - z_imp, r2 = (dx * dx + dz * dz) / (a * a);
+        if (r2 >= 1 || !BedInside(g, g.X(i), g.Z(j))) continue;
+        out.push_back({(PetscReal)i, (PetscReal)j, 1 - r2});
+        sum += 1 - r2;
+      }
+  }
+  if (out.empty()) { // a point load on the nearest node
+    const PetscInt i = std::min<PetscInt>(g.nx - 1, std::max<PetscInt>(0, (PetscInt)std::lround((x - g.x0) / g.hx)));
+    const PetscInt j = std::min<PetscInt>(g.nz - 1, std::max<PetscInt>(0, (PetscInt)std::lround((z_imp + g.b) / g.hz)));
+    out.push_back({(PetscReal)i, (PetscReal)j, 1.0});
+    sum = 1.0;
+  }
+  for (auto &e : out) e[2] /= sum;
+  return out;
+}
+
+// Adds weight w on dof d to g (merging a dof already there; a held dof's share is 0); false when
+// g is full.
+bool CouplingAdd(const BeamSystem &sys, PetscInt d, PetscReal w, ContactCoupling *g)
+{
+  if (sys.held[d] || w == 0.0) return true;
+  for (PetscInt q = 0; q < g->n; ++q)
+    if (g->dof[q] == d) return g->w[q] += w, true;
+  if (g->n == ContactCoupling::kMaxEntries) return false;
+  g->dof[g->n] = d, g->w[g->n++] = w;
+  return true;
+}
+
+} // namespace
+
+bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp) { return sys.bed_first >= 0 && BedInside(sys.bed, x_imp - sys.bed_head_center, z_imp); }
+
+PetscInt BeamSystemCouplingSize(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
+{
+  if (!BeamSystemOnBed(sys, x_imp, z_imp)) return BeamSystemCoupling(sys, x_imp, z_imp).n;
+  PetscInt n = 0; // a free node's own entry, or its column's deflection and roll
+  for (const auto &e : BedPatch(sys, x_imp, z_imp)) n += BedNodeFree(sys.bed, (PetscInt)e[0], (PetscInt)e[1]) ? 1 : 2;
+  return n;
+}
+
+ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
+{
+  ContactCoupling g;
+  g.x = x_imp;
+  g.z = z_imp;
+  if (BeamSystemOnBed(sys, x_imp, z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
+    for (const auto &e : BedPatch(sys, x_imp, z_imp)) {
+      const PetscInt i = (PetscInt)e[0], j = (PetscInt)e[1];
+      if (BedNodeFree(sys.bed, i, j)) {
+        if (!CouplingAdd(sys, sys.Dof(i, sys.bed_first + j), e[2], &g)) return g; // refused before: the scenario's check
+        continue;
+      }
+      if (!CouplingAdd(sys, sys.Dof(i), e[2], &g)) return g;
+      if (sys.roll_field >= 0 && !CouplingAdd(sys, sys.Dof(i, sys.roll_field), e[2] * sys.bed.Z(j), &g)) return g;
+    }
+    return g;
+  }
   const ImpactStencil st = GridImpactStencil(sys.nodes, sys.L, x_imp);
-  ContactCoupling     g;
-  g.x      = x_imp;
   g.n      = 2; // the hat entries of the two nodes around the point
   g.dof[0] = sys.Dof(st.j);
   g.dof[1] = sys.Dof(st.j + 1);
   g.w[0]   = sys.held[g.dof[0]] ? 0.0 : st.w;
   g.w[1]   = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
+  if (sys.roll_field >= 0 && z_imp != 0.0) { // off the axis: the sections' roll times z
+    g.dof[g.n] = sys.Dof(st.j, sys.roll_field), g.w[g.n] = sys.held[g.dof[g.n]] ? 0.0 : st.w * z_imp, g.n++;
+    g.dof[g.n] = sys.Dof(st.j + 1, sys.roll_field), g.w[g.n] = sys.held[g.dof[g.n]] ? 0.0 : (1.0 - st.w) * z_imp, g.n++;
+  }
   if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0; // the wall under the ball, in series
   if (sys.shell_harmonics.empty()) return g;
   // each harmonic's W_n under the ball's patch (outward: the inward displacement is -W_n)
@@ -143,25 +229,20 @@ PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, Pets
   return 0.5 * U;
 }
 
-void BeamSystemWallEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic)
+void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal stored[kParts], PetscReal kinetic[kParts])
 {
   const PetscInt F = sys.fields;
-  PetscReal      U = 0.0, T = 0.0;
-  *stored = *kinetic = 0.0;
-  if (F == sys.beam_fields) return; // no wall
+  for (int p = 0; p < kParts; ++p) stored[p] = kinetic[p] = 0.0;
   for (PetscInt i = d0; i < d1; ++i) {
-    if (i % F < sys.beam_fields) continue;
     const PetscReal vi = v[(i / F) * vs + i % F];
-    T += sys.mass[i] * vi * vi;
-    for (PetscInt k = sys.strain_begin[i]; k < sys.strain_begin[i + 1]; ++k) {
-      const StrainTerm &t = sys.strain[k];
-      PetscReal         e = 0.0;
-      for (PetscInt q = 0; q < t.n; ++q) e += t.b[q] * y[(t.dof[q] / F) * ys + t.dof[q] % F];
-      U += t.weight * e * e;
-    }
+    kinetic[(int)sys.PartOf(i % F)] += 0.5 * sys.mass[i] * vi * vi;
   }
-  *stored  = 0.5 * U;
-  *kinetic = 0.5 * T;
+  for (PetscInt k = sys.strain_begin[d0]; k < sys.strain_begin[d1]; ++k) {
+    const StrainTerm &t = sys.strain[k];
+    PetscReal         e = 0.0;
+    for (PetscInt q = 0; q < t.n; ++q) e += t.b[q] * y[(t.dof[q] / F) * ys + t.dof[q] % F];
+    stored[(int)t.part] += 0.5 * t.weight * e * e;
+  }
 }
 
 PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1)
@@ -175,15 +256,94 @@ PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, Pet
   return 0.5 * T;
 }
 
-std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope)
+std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll)
 {
   std::vector<PetscReal> v(sys.ndof, 0.0);
   for (PetscInt i = 0; i < sys.nodes; ++i)
     for (PetscInt f = 0; f < sys.fields; ++f) {
       const PetscInt d = sys.Dof(i, f);
-      if (!sys.held[d]) v[d] = f == 0 ? v0 + slope * sys.NodeX(i) : (sys.Rotation(f) ? slope : 0.0);
+      if (sys.held[d]) continue;
+      if (sys.Deflection(f)) v[d] = v0 + slope * sys.NodeX(i) + roll * sys.DofZ(d);
+      else if (sys.Rotation(f)) v[d] = slope;
+      else if (f == sys.roll_field) v[d] = roll;
     }
   return v;
+}
+
+std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &sys)
+{
+  std::vector<std::vector<PetscReal>> c;
+  const auto                          all = [&](PetscReal v0, PetscReal slope, PetscReal roll) {
+    std::vector<PetscReal> v(sys.ndof, 0.0);
+    for (PetscInt d = 0; d < sys.ndof; ++d) {
+      const PetscInt f = d % sys.fields;
+      if (sys.Deflection(f)) v[d] = v0 + slope * sys.NodeX(d / sys.fields) + roll * sys.DofZ(d);
+      else if (sys.Rotation(f)) v[d] = slope;
+      else if (f == sys.roll_field) v[d] = roll;
+    }
+    return v;
+  };
+  c.push_back(all(1, 0, 0));
+  c.push_back(all(0, 1.0 / sys.L, 0)); // scaled like the translation (a slope of 1/L)
+  if (sys.roll_field >= 0) c.push_back(all(0, 0, 1.0 / sys.L));
+  return c;
+}
+
+std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys)
+{
+  const std::vector<std::vector<PetscReal>> c = BeamSystemRigidCandidates(sys);
+  const int                                 k = (int)c.size();
+  // The null space of H (the candidates' values at the held dofs): eigenvectors of H^T H for
+  // eigenvalues below 1e-12 of its trace (Jacobi on a k x k symmetric matrix, k <= 3).
+  PetscReal A[3][3] = {{0}}, V[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (PetscInt d = 0; d < sys.ndof; ++d)
+    if (sys.held[d])
+      for (int a = 0; a < k; ++a)
+        for (int b = 0; b < k; ++b) A[a][b] += c[a][d] * c[b][d];
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    PetscReal off = 0;
+    for (int p = 0; p < k; ++p)
+      for (int q = p + 1; q < k; ++q) off += A[p][q] * A[p][q];
+    if (off == 0) break;
+    for (int p = 0; p < k; ++p)
+      for (int q = p + 1; q < k; ++q) {
+        if (A[p][q] == 0) continue;
+        const PetscReal th = 0.5 * (A[q][q] - A[p][p]) / A[p][q];
+        const PetscReal t = (th >= 0 ? 1 : -1) / (std::abs(th) + std::sqrt(th * th + 1)), cs = 1 / std::sqrt(t * t + 1), sn = t * cs;
+        for (int r = 0; r < k; ++r) { // A <- J^T A J
+          const PetscReal arp = A[r][p], arq = A[r][q];
+          A[r][p] = cs * arp - sn * arq, A[r][q] = sn * arp + cs * arq;
+        }
+        for (int r = 0; r < k; ++r) {
+          const PetscReal apr = A[p][r], aqr = A[q][r];
+          A[p][r] = cs * apr - sn * aqr, A[q][r] = sn * apr + cs * aqr;
+        }
+        for (int r = 0; r < k; ++r) {
+          const PetscReal vrp = V[r][p], vrq = V[r][q];
+          V[r][p] = cs * vrp - sn * vrq, V[r][q] = sn * vrp + cs * vrq;
+        }
+      }
+  }
+  PetscReal trace = 0;
+  for (int a = 0; a < k; ++a) trace += A[a][a];
+  PetscReal kmax = 0;
+  for (PetscReal b : sys.band) kmax = std::max(kmax, std::abs(b));
+  std::vector<std::vector<PetscReal>> out;
+  std::vector<PetscReal>              f(sys.ndof);
+  for (int e = 0; e < k; ++e) {
+    if (trace > 0 && A[e][e] > 1e-12 * trace) continue;
+    std::vector<PetscReal> v(sys.ndof, 0.0);
+    PetscReal              vmax = 0, fmax = 0;
+    for (PetscInt d = 0; d < sys.ndof; ++d) {
+      if (!sys.held[d])
+        for (int a = 0; a < k; ++a) v[d] += V[a][e] * c[a][d];
+      vmax = std::max(vmax, std::abs(v[d]));
+    }
+    BeamSystemStiffnessApply(sys, v.data(), sys.fields, 0, sys.ndof, f.data(), sys.fields);
+    for (PetscInt d = 0; d < sys.ndof; ++d) fmax = std::max(fmax, std::abs(f[d]));
+    if (vmax > 0 && fmax <= 1e-9 * kmax * vmax) out.push_back(std::move(v));
+  }
+  return out;
 }
 
 std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body)
@@ -195,7 +355,7 @@ std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const Swin
 PetscReal BeamSystemFreeMass(const BeamSystem &sys)
 {
   PetscReal M = 0;
-  for (PetscInt i = 0; i < sys.nodes; ++i) M += sys.held[sys.Dof(i)] ? 0.0 : sys.mass[sys.Dof(i)];
+  for (PetscInt d = 0; d < sys.ndof; ++d) M += sys.held[d] || !sys.Deflection(d % sys.fields) ? 0.0 : sys.mass[d];
   return M;
 }
 

@@ -12,13 +12,17 @@
 // are node-major: dof = node x fields + field; field 0 is the transverse deflection (m). The
 // motion of the swing's frame is the run's (FrameMotion), passed to the operator, never stored
 // here. A barrel's hoop oscillator (-barrel_hoop_frequency, model/barrel.hpp) is one more field
-// per node, free only at node 0 (wall_dof), a coupled dof of weight 1. Plain arrays only.
+// per node, free only at node 0 (wall_dof), a coupled dof of weight 1; the frame's roll
+// (-beam_torsion, model/torsion.hpp) one more field; a racket's string bed
+// (system/string_bed_operator.hpp) one field per node of the bed's column across the face, the
+// ball's coupling its nodes under the ball's patch. Plain arrays only.
 #pragma once
 
 #include "model/beam_theory.hpp"
 #include "model/contact.hpp"
 #include "model/swing.hpp"
 #include "system/force_operator.hpp"
+#include "system/string_bed_operator.hpp"
 
 #include <petscsys.h>
 
@@ -37,6 +41,12 @@ struct BeamSystem {
   std::vector<PetscInt> shell_harmonics;   // n of each harmonic
   PetscReal shell_contact_radius = 0;      // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
   std::vector<PetscReal> shell_radius;     // m, the wall's midsurface radius R per node (0 where solid)
+  PetscInt  roll_field = -1;               // the frame's roll phi (rad; -beam_torsion), -1 without
+  PetscInt  bed_first  = -1;               // the string bed's first field (-strings_frame): field bed_first + j is w at (x_i, z_j)
+  BedGrid   bed;                           // the bed's grid (its columns: the nodes), with bed_first
+  PetscReal bed_head_center = 0;           // m, the head's centre along the frame
+  PetscReal bed_patch_radius = 0;          // m, the ball's load disc on the bed (-strings_patch_radius)
+  std::vector<Part> field_part;            // the part each field belongs to (model/beam_theory.hpp)
   PetscReal L = 0, h = 0;                  // m, length and node spacing
   std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof (with a grip's hands)
   std::vector<char>       held;            // 1 where the dof is held at 0
@@ -54,6 +64,14 @@ struct BeamSystem {
   bool      Gripped() const { return forces.Find("grip") != nullptr; }
   // Whether field f is a section rotation (Timoshenko's field 1), which a rigid rotation turns.
   bool      Rotation(PetscInt f) const { return f == 1 && beam_fields > 1; }
+  Part      PartOf(PetscInt f) const { return f < (PetscInt)field_part.size() ? field_part[f] : Part::Beam; } // a system laid out by hand: the beam's
+  bool      Wall(PetscInt f) const { return PartOf(f) == Part::Wall; }
+  bool      Bed(PetscInt f) const { return PartOf(f) == Part::Bed; }
+  // Whether field f is a deflection (m) toward the ball: the beam's (field 0) or the bed's. Their
+  // masses carry the momentum; a rigid motion y = a + b x + c z moves them all.
+  bool      Deflection(PetscInt f) const { return f == 0 || Bed(f); }
+  // The point (x along the beam, z across from its axis; m) of dof d's deflection.
+  PetscReal DofZ(PetscInt d) const { return Bed(d % fields) ? bed.Z(d % fields - bed_first) : 0.0; }
   // Ghost width (nodes) a distributed state needs for the forces and the strain energy.
   PetscInt  GhostNodes() const { return (std::max({bw, 2 * reach, forces.reach}) + fields - 1) / fields; }
 };
@@ -71,11 +89,12 @@ void BeamSystemAssemble(BeamSystem *sys);
 // impact point's nodes (weights of held dofs 0); a shell's radial dofs under the ball or a
 // second bending plane would be more entries. Every consumer loops over the n entries.
 struct ContactCoupling {
-  static constexpr PetscInt kMaxEntries = 64; // a shell's patch: up to 20 nodes per harmonic
+  static constexpr PetscInt kMaxEntries = 256; // a shell's patch: up to 20 nodes per harmonic; a string bed's patch
   PetscInt  n = 0;                  // entries used
   PetscInt  dof[kMaxEntries] = {};  // coupled dofs
   PetscReal w[kMaxEntries]   = {};  // their weights (1)
   PetscReal x                = 0;   // m, the impact point
+  PetscReal z                = 0;   // m, across the face from the frame's axis (-impact_z; 0: on it)
   // Whether dof d is coupled, and its weight (the sum over its entries; 0 if not coupled).
   bool Couples(PetscInt d) const
   {
@@ -92,7 +111,15 @@ struct ContactCoupling {
     return s;
   }
 };
-ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp);
+// The coupling of a ball striking at x_imp along the beam and z_imp across it (m): on a string
+// bed's head, the bed's nodes under the ball's disc (BeamSystemBedPatch); elsewhere the hat of
+// the beam's nodes, and with a roll field their roll times z_imp.
+ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp = 0);
+// Whether (x_imp, z_imp) strikes the string bed (strictly inside its head's outline).
+bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp);
+// The number of coupled entries a strike at (x_imp, z_imp) takes (the room it needs in
+// ContactCoupling::kMaxEntries), before any is dropped.
+PetscInt BeamSystemCouplingSize(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp);
 
 // f_i = (K y)_i (N) for dofs i in [d0, d1), K = df/dy of every force term (the elastic
 // strain terms in the factored form B^T W B y, a grip's springs): the force of the deflection y
@@ -109,22 +136,32 @@ PetscInt BeamSystemDampingRow(const BeamSystem &sys, PetscInt i, PetscInt *cols,
 // Strain energy (J) of the terms owned by dofs [d0, d1) (a sum of squares); y as above.
 PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1);
 
-// The barrel wall's energies (J) over the dofs [d0, d1): *stored (its strain terms: 1/2 k_h w^2 of
-// the hoop oscillator, the shell's) and *kinetic, its shares of BeamSystemStrainEnergy and
-// BeamSystemKineticEnergy (the fields after the beam's); 0 without a wall. y, v as y above.
-void BeamSystemWallEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v, PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic);
+// The energies (J) of each part (model/beam_theory.hpp: the beam, the twist, the barrel's wall,
+// the string bed) over the dofs [d0, d1): stored[p] the strain terms of part p owned there,
+// kinetic[p] its dofs'; they sum to BeamSystemStrainEnergy and BeamSystemKineticEnergy. y, v as
+// y above.
+void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v, PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal stored[kParts], PetscReal kinetic[kParts]);
 
 // Kinetic energy (J) of dofs [d0, d1); v as y above.
 PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
 
-// Velocities (per dof) of the rigid motion with deflection velocity v0 + slope x (m/s) and,
-// for a beam with rotation dofs, section spin `slope` (rad/s): a free motion (K annihilates
-// it). Held dofs get 0.
-std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope);
+// Velocities (per dof) of the rigid motion with deflection velocity v0 + slope x + roll z (m/s)
+// at every deflection (the beam's and a string bed's), section spin `slope` (rad/s) for a beam
+// with rotation dofs and `roll` (rad/s) for its roll field: a free motion (K annihilates it).
+// Held dofs get 0.
+std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll = 0);
+// The structure's rigid motions before its holds (translation, pitch about x = 0, and with a roll
+// field the roll about the axis), as displacements per dof (held dofs included): v0 = 1, slope =
+// 1 (rad), roll = 1 (rad) of BeamSystemRigidVelocity without the holds.
+std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &sys);
+// The rigid motions the holds leave: the combinations of the candidates that vanish on every
+// held dof and that the stiffness annihilates (|K v| <= 1e-9 max|K| max|v|: an Euler-Bernoulli
+// clamp holds the rotation through its mirrored curvature, not a held dof), held dofs 0.
+std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys);
 // The swinging bat's velocities at contact (model/swing.hpp): V(x) toward the ball, i.e. -y.
 std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body);
 
-// Mass (kg) of the translational dofs that are not held.
+// Mass (kg) of the deflection dofs (the beam's and a string bed's) that are not held.
 PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 
 // Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K plus a

@@ -25,6 +25,12 @@ PetscReal ArmLength(const BedGrid &g, PetscInt i, PetscInt j, int dir, bool *cut
 }
 } // namespace
 
+PetscReal BedArmLength(const BedGrid &g, PetscInt i, PetscInt j, int dir)
+{
+  bool cut;
+  return ArmLength(g, i, j, dir, &cut);
+}
+
 bool BedNodeFree(const BedGrid &g, PetscInt i, PetscInt j)
 {
   if (i <= 0 || i >= g.nx - 1 || j <= 0 || j >= g.nz - 1 || !BedInside(g, g.X(i), g.Z(j))) return false;
@@ -42,7 +48,7 @@ BedRow BedStiffnessRow(const BedGrid &g, const Membrane &m, PetscInt i, PetscInt
   BedRow r;
   if (!BedNodeFree(g, i, j)) return r;
   r.held = false;
-  r.mass = m.sigma * g.hx * g.hz;
+  r.mass = m.sigma * BedCellArea(g, i, j);
   for (int dir = 0; dir < 4; ++dir) {
     bool            cut;
     const PetscReal l = ArmLength(g, i, j, dir, &cut);
@@ -53,6 +59,56 @@ BedRow BedStiffnessRow(const BedGrid &g, const Membrane &m, PetscInt i, PetscInt
     if (!cut) r.off[dir] = -c;
   }
   return r;
+}
+
+BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt roll_field, BeamDiscretization *d)
+{
+  const Membrane m = StringBedMembrane(p);
+  const PetscInt F = d->fields, N = g.nx, G = F + g.nz;
+  BedLayout      out;
+  out.first = F;
+  out.grid  = g;
+  out.roll  = roll_field;
+  BeamDiscretizationWiden(d, G, m.sigma * g.hx * g.hz);
+  const auto w   = [&](PetscInt i, PetscInt j) { return i * G + F + j; };
+  const auto y   = [&](PetscInt i) { return i * G; };
+  const auto phi = [&](PetscInt i) { return i * G + roll_field; };
+  // a term over (dof, b) entries, the roll's entries left out without a roll field or when 0
+  const auto term = [&](PetscInt owner, PetscReal weight, std::initializer_list<std::pair<PetscInt, PetscReal>> e, std::initializer_list<std::pair<PetscInt, PetscReal>> roll) {
+    StrainTerm t;
+    t.owner = owner, t.weight = weight, t.part = Part::Bed;
+    for (const auto &q : e) t.dof[t.n] = q.first, t.b[t.n++] = q.second;
+    if (roll_field >= 0)
+      for (const auto &q : roll)
+        if (q.second != 0.0) t.dof[t.n] = q.first, t.b[t.n++] = q.second;
+    d->strain.push_back(t);
+  };
+  for (PetscInt i = 0; i < N; ++i)
+    for (PetscInt j = 0; j < g.nz; ++j) {
+      const PetscReal area = BedCellArea(g, i, j), z = g.Z(j);
+      if (!BedNodeFree(g, i, j)) { // in the head but not an unknown: its strings' mass moves with the frame
+        if (area > 0) {
+          d->mass[y(i)] += m.sigma * area;
+          if (roll_field >= 0) d->mass[phi(i)] += m.sigma * area * z * z;
+        }
+        continue;
+      }
+      d->held[w(i, j)] = 0;
+      d->mass[w(i, j)] = m.sigma * area;
+      const BedRow r   = BedStiffnessRow(g, m, i, j);
+      for (int dir = 0; dir < 4; ++dir) {
+        const PetscReal c = dir < 2 ? m.N_x * g.hz : m.N_z * g.hx; // times 1/l
+        if (r.off[dir] != 0.0) {                                   // a link to a free neighbour: once, from its lower end
+          if (dir == 0) term(w(i, j), -r.off[dir], {{w(i + 1, j), 1}, {w(i, j), -1}, {y(i + 1), -1}, {y(i), 1}}, {{phi(i + 1), -z}, {phi(i), z}});
+          if (dir == 2) term(w(i, j), -r.off[dir], {{w(i, j + 1), 1}, {w(i, j), -1}}, {{phi(i), -g.hz}});
+          continue;
+        }
+        // an arm to the edge, or to a node held by the d_min rule: the frame's section at x_i
+        const PetscReal l = BedArmLength(g, i, j, dir);
+        term(w(i, j), c / l, {{w(i, j), 1}, {y(i), -1}}, {{phi(i), -z}});
+      }
+    }
+  return out;
 }
 
 } // namespace beamimpact
