@@ -17,7 +17,8 @@
 #   * a run expected to take long prints its cost first (-impact_cost_warn), progress lines
 #     (-impact_progress), -ts_type modal's modes too, and a sweep of more than 1e6 points
 #     announces its set-up cost; a sweep whose remaining points are expected to take longer
-#     than -impact_cost_warn says so once.
+#     than -impact_cost_warn says so once;
+#   * -modal_tolerance under a stepped integrator acts (the free flight's modes): no note.
 #
 #   tests/cli_policy.sh path/to/beamimpact scratch_dir
 set -uo pipefail
@@ -163,6 +164,15 @@ over=$(awk -v w="${want:-0}" '$5 > w' <<<"$lines")
 if [[ -n $want ]] && grep -q "after 0 restarts" <<<"$lines" && grep -q "^beamimpact: the beam's modes: $want of $want converged" <<<"$lines" && [[ -z $over ]]; then
   pass "-ts_type modal: its modes' cost line and progress (within a restart too, at most $want of $want converged)"
 else fail "-ts_type modal's modes: cost/progress: want '$want', over '$over': $(head -c 3000 <<<"$out")"; fi
+# -modal_tolerance acts under a stepped integrator (its free flight's modes): no note; a note
+# where it does not (-impact_after time)
+out=$("$exe" -ts_type cn -beam_nodes 641 -impact_x 0.9 -modal_tolerance 1e-6 -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && ! grep -q "note: .*-modal_tolerance" <<<"$out" && grep -q "modes 100/641 cut-off" <<<"$out"; then
+  pass "-ts_type cn -modal_tolerance 1e-6: the free flight keeps 100 of 641 modes, no 'not used' note"
+else fail "cn -modal_tolerance: exit $rc: $out"; fi
+out=$("$exe" -ts_type cn -beam_nodes 641 -impact_x 0.9 -modal_tolerance 1e-6 -impact_after time -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && grep -q "note: 1 option(s) set but not used by this task: -modal_tolerance 1e-6" <<<"$out" \
+  && pass "-modal_tolerance with -impact_after time (no modes): a note" || fail "cn -impact_after time -modal_tolerance: exit $rc: $out"
 out=$(output_until "^sweep: 1000001 points planned" 60 "$exe" -task sweep -sweep_x 0:1.1:1000001 -output "$dir/huge.h5")
 grep -q "^sweep: 1000001 points planned: checking every point's options takes about [0-9.e+]* s" <<<"$out" && pass "a sweep of 1e6 points announces its set-up cost" || fail "huge sweep: $out"
 rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"
