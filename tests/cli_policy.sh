@@ -15,8 +15,10 @@
 #   * -log_view lists the program's stages (set-up, contact, free flight, output);
 #   * a sweep whose runs -impact_max_time cuts off in contact gives failed rows (status 7);
 #   * a run expected to take long prints its cost first (-impact_cost_warn), progress lines
-#     (-impact_progress), and a sweep of more than 1e6 points announces its set-up cost; a sweep
-#     whose remaining points are expected to take longer than -impact_cost_warn says so once.
+#     (-impact_progress), -ts_type modal's modes too, and a sweep of more than 1e6 points
+#     announces its set-up cost; a sweep whose remaining points are expected to take longer
+#     than -impact_cost_warn says so once;
+#   * -modal_tolerance under a stepped integrator acts (the free flight's modes): no note.
 #
 #   tests/cli_policy.sh path/to/beamimpact scratch_dir
 set -uo pipefail
@@ -151,6 +153,26 @@ grep -q "^cost: -ts_type rk's step is bound by h^2: the stability limit dt_max =
 out=$("$exe" -impact_cost_warn 1e-9 -impact_progress 1e-9 -output none 2>&1)
 grep -q "^cost: at least [0-9.e+]* steps .* the explicit stability limit) on 41 nodes" <<<"$out" && grep -q "^progress: t = [0-9.e-]* s simulated (the run stops by [0-9.e-]* s), [0-9]* steps" <<<"$out" \
   && pass "-impact_cost_warn and -impact_progress set when the cost and progress lines appear" || fail "cost/progress lines: $out"
+# -ts_type modal's own modes: -impact_cost_warn and -impact_progress reach its set-up (the cost
+# line and progress lines, as the free flight's under cn); progress comes within a restart too
+# (per application of the operator), and the converged count never passes the modes wanted
+# (Krylov-Schur converges more of its basis: "146 of 108" before)
+out=$("$exe" -ts_type modal -beam_nodes 641 -impact_x 0.9 -modal_tolerance 1e-6 -impact_cost_warn 1e-9 -impact_progress 1e-9 -output none 2>&1)
+want=$(sed -nE "s/^cost: the beam's modes: a partial eigen-solve of ([0-9]+) modes of 641 free dofs \(SLEPc\).*/\1/p" <<<"$out")
+lines=$(grep -E "^beamimpact: the beam's modes: [0-9]+ of ${want:-none} converged after [0-9]+ restarts? \([0-9]+ operator applications?\)" <<<"$out")
+over=$(awk -v w="${want:-0}" '$5 > w' <<<"$lines")
+if [[ -n $want ]] && grep -q "after 0 restarts" <<<"$lines" && grep -q "^beamimpact: the beam's modes: $want of $want converged" <<<"$lines" && [[ -z $over ]]; then
+  pass "-ts_type modal: its modes' cost line and progress (within a restart too, at most $want of $want converged)"
+else fail "-ts_type modal's modes: cost/progress: want '$want', over '$over': $(head -c 3000 <<<"$out")"; fi
+# -modal_tolerance acts under a stepped integrator (its free flight's modes): no note; a note
+# where it does not (-impact_after time)
+out=$("$exe" -ts_type cn -beam_nodes 641 -impact_x 0.9 -modal_tolerance 1e-6 -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && ! grep -q "note: .*-modal_tolerance" <<<"$out" && grep -q "modes 100/641 cut-off" <<<"$out"; then
+  pass "-ts_type cn -modal_tolerance 1e-6: the free flight keeps 100 of 641 modes, no 'not used' note"
+else fail "cn -modal_tolerance: exit $rc: $out"; fi
+out=$("$exe" -ts_type cn -beam_nodes 641 -impact_x 0.9 -modal_tolerance 1e-6 -impact_after time -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && grep -q "note: 1 option(s) set but not used by this task: -modal_tolerance 1e-6" <<<"$out" \
+  && pass "-modal_tolerance with -impact_after time (no modes): a note" || fail "cn -impact_after time -modal_tolerance: exit $rc: $out"
 out=$(output_until "^sweep: 1000001 points planned" 60 "$exe" -task sweep -sweep_x 0:1.1:1000001 -output "$dir/huge.h5")
 grep -q "^sweep: 1000001 points planned: checking every point's options takes about [0-9.e+]* s" <<<"$out" && pass "a sweep of 1e6 points announces its set-up cost" || fail "huge sweep: $out"
 rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"

@@ -6,6 +6,9 @@
 #   * scripts/plot_impact.py draws force, energy and snapshot PNGs (and the modes PNG) that PIL
 #     reads back with the expected size; asked for the energies of the file run without
 #     -monitor_energy it fails naming -monitor_energy (and -snapshot_times for snapshots);
+#   * /modes_energy of a truncated modal free flight: the flexible modes' energies sum to
+#     vibration_fraction x E_in, the rigid ones' are the translation and rotation fractions, and
+#     plot_impact.py --mode-energies draws it;
 #   * scripts/animate_impact.py writes a GIF with exactly the frames asked for (--frames 4 of 7)
 #     and all 7 by default; an .mp4 without ffmpeg on PATH fails naming ffmpeg;
 #   * scripts/h5_to_csv.py: /results (impact and sweep, with its axes, status and reason),
@@ -91,6 +94,41 @@ expect_fail "plot_impact.py --snapshots without -snapshot_times" "-snapshot_time
 if scripts/plot_impact.py "$dir/plain.h5" -o "$dir/plain" >"$dir/plotp.log" 2>&1 && grep -q "no energy plot.*-monitor_energy" "$dir/plotp.log" &&
    [[ -f $dir/plain-force.png && ! -e $dir/plain-energy.png ]]; then pass "plot_impact.py plain.h5: the force only, the missing plots named with their options"
 else fail "plot_impact.py plain.h5: $(cat "$dir/plotp.log")"; fi
+# /modes_energy (docs/model.md section 12) of a truncated modal free flight (the paper's beam at
+# N = 161, -modal_tolerance 1e-6: 133 of 161 modes): one row per kept mode, frequencies ascending
+# and 0 for the two rigid modes, fraction = energy / E_in (E_in = m v^2 / 2 from the root's
+# ball_mass and ball_speed, the beam at rest), the flexible modes' energies summing to
+# /results/vibration_fraction times E_in and the rigid ones' to translation_fraction and
+# rotation_fraction (1e-9); then plot_impact.py --mode-energies draws it.
+if run modal -options_file options/impact.opts -beam_nodes 161 -modal_tolerance 1e-6 -impact_x 0.9; then
+  me=$("$python" - "$dir/modal.h5" <<'EOF'
+import sys, h5py, numpy as np
+with h5py.File(sys.argv[1], "r") as f:
+    if "modes_energy" not in f:
+        print("no /modes_energy"); sys.exit()
+    g, R = f["modes_energy"], f["results"]
+    e, x, fr, rig = g["energy"][()], g["fraction"][()], g["frequency"][()], g["rigid"][()].astype(bool)
+    E_in = 0.5 * f.attrs["ball_mass"] * f.attrs["ball_speed"] ** 2
+    vib, tr, rot = (float(R[k][0]) for k in ("vibration_fraction", "translation_fraction", "rotation_fraction"))
+    kept = int(f.attrs["modal_modes_kept"])
+    bad = []
+    if not (len(e) == len(x) == len(fr) == len(rig) == kept < 161): bad.append("rows %d, modal_modes_kept %d (of 161)" % (len(e), kept))
+    if rig.sum() != 2 or np.any(fr[rig] != 0) or not np.all(np.diff(fr[~rig]) > 0) or not fr[~rig][0] > 0: bad.append("frequencies %s, rigid %s" % (fr[:4], rig[:4]))
+    if not np.allclose(x, e / E_in, rtol=1e-12, atol=0): bad.append("fraction is not energy / E_in")
+    if not abs(e[~rig].sum() - vib * E_in) <= 1e-9 * vib * E_in: bad.append("flexible sum %.15g J, vibration_fraction x E_in %.15g J" % (e[~rig].sum(), vib * E_in))
+    if not np.allclose(x[rig], [tr, rot], rtol=1e-9, atol=0): bad.append("rigid %s, translation and rotation fractions %g %g" % (x[rig], tr, rot))
+    print("ok %d modes, flexible sum %.6g J = %.6g x E_in" % (len(e), e[~rig].sum(), vib) if not bad else "bad: " + "; ".join(bad))
+EOF
+)
+  [[ $me == ok* ]] && pass "/modes_energy: ${me#ok }; rigid ones the translation and rotation fractions" || fail "/modes_energy: $me"
+  rm -f "$dir/modal-mode-energies.png"
+  if scripts/plot_impact.py "$dir/modal.h5" --mode-energies -o "$dir/modal" >"$dir/plotme.log" 2>&1 && images PNG "$dir/modal-mode-energies.png"; then
+    pass "plot_impact.py --mode-energies: modal-mode-energies.png"
+  else fail "plot_impact.py --mode-energies: $(tail -3 "$dir/plotme.log")"; fi
+fi
+if run nowindow -options_file options/impact.opts -impact_window 0; then # no free flight: no /modes_energy
+  expect_fail "plot_impact.py --mode-energies with -impact_window 0" "(-impact_window > 0)" scripts/plot_impact.py "$dir/nowindow.h5" --mode-energies -o "$dir/nowindow"
+fi
 
 # --- animate_impact.py ---------------------------------------------------------------------------
 # frames FILE: the GIF's frame count per PIL

@@ -228,6 +228,22 @@ PetscErrorCode FreeFlightTruncation(MPI_Comm comm, const Scenario &sc, ModalTrun
   PetscFunctionReturn(0);
 }
 
+// -modal_modes and -modal_tolerance read (so marked used) before the stepper's check of unused
+// options where they act in a run whose integrator does not read them (cn, rk, ...): the free
+// flight after a separation is modal and there is a window to follow (or an oblique impact's
+// second plane, which is modal). -ts_type modal reads them in its own set-up.
+PetscErrorCode FreeFlightOptionsRead(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys)
+{
+  bool            after_modal;
+  ModalTruncation t;
+
+  PetscFunctionBeginUser;
+  if (!sc.oblique.on && !(ImpactTimesOf(sc.beam, sc.ball, sc.impact).window > 0)) PetscFunctionReturn(0);
+  PetscCall(ImpactAfterResolve(comm, sc.impact, sys, &after_modal));
+  if (after_modal || sc.oblique.on) PetscCall(FreeFlightTruncation(comm, sc, &t));
+  PetscFunctionReturn(0);
+}
+
 // The cost model of a stepped run (measured on the development machine, 2 cores, with
 // fixed steps at -beam_nodes 2001 to 20001, docs/model.md "Cost"): wall time per step = per node x dofs,
 // explicit types (rk, ...) kCostNodeStepExplicit, the others kCostNodeStepImplicit.
@@ -457,8 +473,11 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res
   ImpactStageScope stage(ImpactStage::Setup);
   PetscCall(ImpactSetupBuild(comm, sc, &s, structure));
   set.check_unused_options = sc.impact.check_unused_options;
+  if (set.check_unused_options) PetscCall(FreeFlightOptionsRead(comm, sc, s.sys()));
   set.report_setup         = sc.impact.report_setup;
   set.strict_solver_options = sc.impact.strict_solver_options;
+  set.modes_cost_warn       = sc.impact.report_setup ? sc.impact.cost_warn : 0; // as FreeFlightTruncation
+  set.modes_progress        = sc.impact.report_setup ? sc.impact.progress : 0;
   PetscCall(TSStepperCreate(comm, s.sys(), s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
   stage.End(); // ImpactDrive holds the contact and free-flight stages
   if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys(), s.scales, *res));

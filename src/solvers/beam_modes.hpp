@@ -67,9 +67,12 @@ std::string ModalModesText(const ModalTruncation &t);
 // The static correction at a contact point (docs/model.md §12): with f the coupling (the
 // point's weights on the free dofs), G = f^T K^+ f the flexibility on the flexible subspace
 // (one banded Cholesky solve with temporary supports under the load less its rigid-body
-// inertia, then made M-orthogonal to the rigid modes) and G_r = G - sum over the kept
-// flexible modes of gamma_k^2 / w_k^2 what the modes left out contribute, quasi-statically:
-// the point moves by -G_r F more than the kept modes say. 0 for an untruncated basis.
+// inertia, then made M-orthogonal to the rigid modes), and what the modes left out contribute,
+// quasi-statically, from the residual load f_r = f - M Phi Phi^T f (f less the kept modes'
+// share, rigid ones included): u_r = K^+ f_r and G_r = f_r^T u_r (in exact arithmetic
+// G - sum over the kept flexible modes of gamma_k^2 / w_k^2, which cancels to G_r/G ~ 1e-7 and
+// takes the kept modes' errors to first order). The point moves by -G_r F more than the kept
+// modes say. 0 for an untruncated basis.
 struct ModalCorrection {
   ContactCoupling        g;      // the point
   PetscReal              G  = 0; // m/N: flexibility at the point (flexible subspace)

@@ -363,24 +363,50 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   PetscFunctionReturn(0);
 }
 
-// Progress of a partial solve: a line every `every` seconds of wall time (0: none).
+// Progress of a partial solve: a line every `every` seconds of wall time (0: none), checked at
+// each restart of Krylov-Schur (EPSMonitor) and at each application of its operator (the
+// shift-and-invert's solve, KSPSetPostSolve; the factored form's shell product), so that a
+// restart that takes long (n ncv^2: 20 s and more at N = 40961) still says that it runs. The
+// converged count is the solver's, capped at the modes wanted (Krylov-Schur converges more of
+// its basis than it was asked for: "455 of 317" before).
 struct ModesProgress {
   PetscReal every = 0, start = 0, last = 0;
   PetscInt  want  = 0;
-  MPI_Comm  comm  = MPI_COMM_NULL; // where to print (the solver's own communicator if null)
+  PetscInt  nconv = 0, restarts = 0, applications = 0; // as of the last restart; operator applications so far
+  MPI_Comm  comm  = MPI_COMM_NULL; // where to print
 };
 
-static PetscErrorCode ModesProgressMonitor(EPS eps, PetscInt its, PetscInt nconv, PetscScalar *, PetscScalar *, PetscReal *, PetscInt, void *ctx)
+static PetscErrorCode ModesProgressTick(ModesProgress *p)
 {
-  ModesProgress  *p   = static_cast<ModesProgress *>(ctx);
   const PetscReal now = MPI_Wtime();
 
   PetscFunctionBeginUser;
   if (p->every > 0 && now - p->last >= p->every) {
     p->last = now;
-    PetscCall(PetscPrintf(p->comm != MPI_COMM_NULL ? p->comm : PetscObjectComm((PetscObject)eps), "beamimpact: the beam's modes: %" PetscInt_FMT " of %" PetscInt_FMT " converged after %" PetscInt_FMT " restarts, %.1f s\n", nconv, p->want, its,
-                          (double)(now - p->start)));
+    PetscCall(PetscPrintf(p->comm, "beamimpact: the beam's modes: %" PetscInt_FMT " of %" PetscInt_FMT " converged after %" PetscInt_FMT " restart%s (%" PetscInt_FMT " operator application%s), %.1f s\n", p->nconv, p->want, p->restarts,
+                          p->restarts == 1 ? "" : "s", p->applications, p->applications == 1 ? "" : "s", (double)(now - p->start)));
   }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ModesProgressMonitor(EPS, PetscInt its, PetscInt nconv, PetscScalar *, PetscScalar *, PetscReal *, PetscInt, void *ctx)
+{
+  ModesProgress *p = static_cast<ModesProgress *>(ctx);
+
+  PetscFunctionBeginUser;
+  p->nconv    = std::min(nconv, p->want);
+  p->restarts = its;
+  PetscCall(ModesProgressTick(p));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ModesProgressApplied(KSP, Vec, Vec, void *ctx)
+{
+  ModesProgress *p = static_cast<ModesProgress *>(ctx);
+
+  PetscFunctionBeginUser;
+  p->applications++;
+  PetscCall(ModesProgressTick(p));
   PetscFunctionReturn(0);
 }
 
@@ -398,7 +424,15 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
   prog.every = progress;
   prog.start = prog.last = MPI_Wtime();
   prog.want              = count;
-  PetscCall(EPSMonitorSet(eps, ModesProgressMonitor, &prog, NULL));
+  prog.comm              = comm;
+  if (progress > 0) {
+    ST  st;
+    KSP ksp;
+    PetscCall(EPSGetST(eps, &st));
+    PetscCall(STGetKSP(st, &ksp));
+    PetscCall(KSPSetPostSolve(ksp, ModesProgressApplied, &prog));
+    PetscCall(EPSMonitorSet(eps, ModesProgressMonitor, &prog, NULL));
+  }
   PetscCall(EPSSolve(eps));
   PetscCall(EPSGetConverged(eps, &nconv));
   PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "the beam's modes: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest modes (-modal_modes, -modal_tolerance)", nconv, count);
@@ -424,6 +458,7 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
 // gather: the arithmetic of the serial operator.
 struct FactoredShell {
   const BeamFactor      *F = nullptr;
+  ModesProgress         *progress = nullptr; // a line now and then during a long solve (null: none)
   PetscMPIInt            size = 1;
   PetscInt               rstart = 0, rend = 0; // rows owned by this rank
   VecScatter             toall = nullptr;      // z to every rank (size > 1)
@@ -475,6 +510,7 @@ static PetscErrorCode FactoredMult(Mat A, Vec z, Vec y)
   PetscCall(VecGetArray(y, &b));
   for (PetscInt d = sh->rstart; d < sh->rend; ++d) b[d - sh->rstart] = std::sqrt(F.mass[d]) * sh->u[d];
   PetscCall(VecRestoreArray(y, &b));
+  if (sh->progress) PetscCall(ModesProgressApplied(nullptr, nullptr, nullptr, sh->progress));
   PetscFunctionReturn(0);
 }
 
@@ -571,7 +607,10 @@ PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, cons
   prog.start = prog.last = MPI_Wtime();
   prog.want              = nflex;
   prog.comm              = comm;
-  PetscCall(EPSMonitorSet(eps, ModesProgressMonitor, &prog, NULL));
+  if (progress > 0) {
+    sh.progress = &prog;
+    PetscCall(EPSMonitorSet(eps, ModesProgressMonitor, &prog, NULL));
+  }
   PetscCall(EPSSolve(eps));
   PetscCall(EPSGetConverged(eps, &nconv));
   if (nconv < nflex) { // freed before the error: a sweep carries on to its next point

@@ -105,7 +105,8 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
 // shift-and-invert Krylov-Schur solve (SLEPc, on comm, the factorization of K + unit^2 M by
 // PETSc's LU, MUMPS on more ranks), ascending, each omega^2 the Rayleigh quotient of the strain
 // energy, each vector over all dofs, mass-normalised (0 at held dofs; signs as the solver's).
-// progress > 0: a line every `progress` seconds while the solver runs.
+// progress > 0: a line every `progress` seconds while the solver runs (checked at each restart and each
+// application of its operator; the converged count capped at `count`).
 PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis);
 
 // The same from the factored form F of a statically determinate beam (BeamFactorCreate,

@@ -104,6 +104,7 @@ struct TSProblem {
   ContactCoupling    g;
   BallParams        ball;
   PetscReal         approach = 0; // m/s, the ball's and the beam's approach speed (the contact's scales; a ball at rest: the bat's)
+  PetscReal         modes_cost_warn = 0, modes_progress = 0; // s: -ts_type modal's modes: cost line and progress (TSStepperSettings)
   ContactState     *contact = nullptr; // owned by the run driver
   Formulation       form    = Formulation::Explicit;
   TSLayout          L;

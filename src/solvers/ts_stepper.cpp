@@ -889,6 +889,8 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   P.g                   = g;
   P.ball                = ball;
   P.approach            = scales.speed;
+  P.modes_cost_warn     = set.modes_cost_warn;
+  P.modes_progress      = set.modes_progress;
   P.contact             = contact;
   P.form                = FormulationOfType(type);
   P.jac.contact         = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;

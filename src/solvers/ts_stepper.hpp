@@ -18,6 +18,10 @@ struct TSStepperSettings {
   bool check_unused_options = false; // an option set but not used by the TS set-up is an error
   bool report_setup         = false; // print the integrator, its step and stability limit, and resolution warnings
   bool strict_solver_options = false; // with check_unused_options: left-over PETSc solver options are errors too, not notes
+  // -ts_type modal: its modes' cost line before a decomposition expected to take longer than
+  // modes_cost_warn, and a progress line every modes_progress during a partial solve (s of wall
+  // time; 0: none), as the free flight's (-impact_cost_warn, -impact_progress with report_setup)
+  PetscReal modes_cost_warn = 0, modes_progress = 0;
 };
 
 // Creates the stepper at t = 0 with the beam undeformed, moving with beam_velocity (per dof;
