@@ -218,7 +218,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
     if (modes.omega[q] != 0 && !(!modes.shell_n.empty() && modes.shell_n[q] != 0) && !(!modes.part.empty() && modes.part[q] != (PetscInt)Part::Beam)) // a wall's, roll's or bed's mode: no bending nodes
       for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1))) nodes += " " + std::to_string(x).substr(0, 6);
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
-    std::string family = !wall ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
+    std::string family = modes.shell_n.empty() ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
     if (!modes.part.empty()) { // a roll field or a string bed: the part with most of the mode's kinetic energy, and its share
       static const char *const names[kParts] = {"bending", "roll", "wall", "strings"};
       char                     text[64];
