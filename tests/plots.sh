@@ -19,7 +19,8 @@
 #     ringed (counted here from /results/contacts), the Eq. (11) rigid-body curve drawn for the
 #     free beam only;
 #   * scripts/plot_bbcor_map.py and plot_oblique_map.py on small sweeps: the best point they
-#     print is the one h5py finds, each refuses the other's file.
+#     print is the one h5py finds, each refuses the other's file; plot_racket_map.py on a small
+#     face map: its largest ACOR and centre of percussion as h5py finds them.
 #
 #   tests/plots.sh path/to/beamimpact scratch_dir
 # Runs from the repository root (found from this script's path); needs a Python with h5py,
@@ -290,6 +291,37 @@ else fail "plot_oblique_map.py obmap.h5: $out"; fi
 images PNG "$dir/bbmap.png" "$dir/obmap.png" && pass "map PNGs valid" || fail "map PNGs"
 expect_fail "plot_bbcor_map.py on the oblique map" "is not a sweep over barrel_wall_thickness" "$python" scripts/plot_bbcor_map.py "$dir/obmap.h5" -o "$dir/x.png"
 expect_fail "plot_oblique_map.py on the BBCOR map" "is not a sweep over impact_x and impact_offset" "$python" scripts/plot_oblique_map.py "$dir/bbmap.h5" -o "$dir/x.png"
+
+# plot_racket_map.py on a 3 x 3 face map of the strung racket: the largest ACOR and the centre of
+# percussion it prints are h5py's maximum and I_cm / (M d) from the file's attributes; the frame's
+# node from a -task modes file of the same racket lies on the head; it refuses the oblique map.
+run facemap -options_file options/scenes/racket-face-map.opts -sweep impact_x=0.10:0.28:3,impact_z=-0.10:0.10:3 -sweep_quiet
+run racketmodes -options_file options/base/racket-strung.opts -task modes
+if out=$("$python" scripts/plot_racket_map.py "$dir/facemap.h5" --modes "$dir/racketmodes.h5" -o "$dir/facemap.png" 2>&1); then
+  want=$("$python" - "$dir/facemap.h5" <<'EOF'
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1])
+r = f["results"]
+ok = (r["status"][()] == 0) & np.isfinite(r["acor"][()])
+a = np.where(ok, r["acor"][()], -np.inf)
+k = int(np.argmax(a))
+print("largest ACOR %.4f at impact_x %.3f m, impact_z %.3f m" % (a[k], r["impact_x"][k], r["impact_z"][k]))
+g = lambda n: float(np.ravel(f.attrs[n])[0])
+hand = g("beam_length") - 0.03
+print("cop %.4f" % (g("beam_center_of_mass") - g("beam_inertia_cm") / (g("beam_mass") * (hand - g("beam_center_of_mass")))))
+EOF
+)
+  got_best=$(grep '^largest ACOR' <<<"$out") got_cop=$(sed -nE 's/^centre of percussion .*: x = ([0-9.]+) m .*/cop \1/p' <<<"$out")
+  node=$(sed -nE 's/^node: x = ([0-9.]+) m .*/\1/p' <<<"$out")
+  [[ "$got_best"$'\n'"$got_cop" == "$want" ]] && awk -v n="$node" 'BEGIN { exit !(n > 0.015 && n < 0.335) }' \
+    && pass "plot_racket_map.py: the largest ACOR and the centre of percussion as h5py finds them ($(head -1 <<<"$want")), the node on the head ($node m)" \
+    || fail "plot_racket_map.py: expected
+$want
+and a node on the head, got
+$out"
+else fail "plot_racket_map.py facemap.h5: $out"; fi
+images PNG "$dir/facemap.png" && pass "face map PNG valid" || fail "face map PNG"
+expect_fail "plot_racket_map.py on the oblique map" "is not a sweep over impact_x and impact_z" "$python" scripts/plot_racket_map.py "$dir/obmap.h5" -o "$dir/x.png"
 
 # plot_convergence.py's orders rest only on points above the error floor, and say so: errors
 # c h^4 at h = 1/2, 1/4, 1/8 then two points at a floor of 1e-10 give p = 4 from 3 points with

@@ -297,6 +297,36 @@ if run strings-modes 2 options/scenes/strings-modes.opts; then
     'split(fr, a, ",") == 6 && a[1] > 781.45 && a[1] < 781.55 && a[6] > a[5] && d == "43,61"' fr="$fr" d="$(dims "$f" /modes/shape_6)"
 fi
 
+# --- the racket with strings (issue 25): a held bed, the strung racket off its axis, the face map, the tension sweep ---
+if run strings-impact 1 options/scenes/strings-impact.opts -strings_nodes 31 -impact_after time; then
+  f="$dir/strings-impact.h5"
+  check "strings-impact: ACOR $(col "$f" /results/acor) on a held bed, above the ball's 0.85 on a rigid wall and below 1; dwell $(col "$f" /results/contact_time) s longer than the wall's 5.50 ms" \
+    'a > 0.86 && a < 1 && t > 0.0060 && t < 0.0080' a="$(col "$f" /results/acor)" t="$(col "$f" /results/contact_time)"
+fi
+if run racket-strings 2 options/scenes/racket-strings.opts; then
+  f="$dir/racket-strings.h5"
+  check "racket-strings: 5 cm off the axis the racket rolls ($(col "$f" /results/roll_rate_end) rad/s, $(col "$f" /results/roll_fraction) of E_in), the momenta kept (roll $(col "$f" /results/roll_momentum_error))" \
+    'w > 1 && r > 0.05 && lm < 1e-9 && lm > -1e-9 && am < 1e-9 && am > -1e-9' w="$(col "$f" /results/roll_rate_end)" r="$(col "$f" /results/roll_fraction)" \
+    lm="$(col "$f" /results/linear_momentum_error)" am="$(col "$f" /results/roll_momentum_error)"
+fi
+if run racket-strings-axis 1 options/scenes/racket-strings.opts -impact_z 0; then
+  check "racket-strings: on the axis no roll ($(col "$dir/racket-strings-axis.h5" /results/roll_rate_end) rad/s) and a higher ACOR ($(col "$dir/racket-strings-axis.h5" /results/acor) > $(col "$dir/racket-strings.h5" /results/acor))" \
+    'w < 1e-9 && w > -1e-9 && a > b' w="$(col "$dir/racket-strings-axis.h5" /results/roll_rate_end)" a="$(col "$dir/racket-strings-axis.h5" /results/acor)" b="$(col "$dir/racket-strings.h5" /results/acor)"
+fi
+if run racket-face-map 2 options/scenes/racket-face-map.opts -sweep impact_x=0.10:0.28:3,impact_z=-0.10:0.10:3; then
+  f="$dir/racket-face-map.h5"
+  st="$(col "$f" /results/status | paste -sd,)" ac="$(col "$f" /results/acor | paste -sd,)"
+  # points (x, z) in sweep order, z fastest: (0.28, -0.10) and (0.28, 0.10) are off the ellipse
+  check "racket-face-map: status $st (the corners off the face: 8, not failed), ACOR on the axis rising toward the throat ($ac)" \
+    'split(s, q, ",") == 9 && q[7] == 8 && q[9] == 8 && q[1] == 0 && q[2] == 0 && q[5] == 0 && q[8] == 0 && split(a, c, ",") == 9 && c[2] < c[5] && c[5] < c[8] && c[4] < c[5]' s="$st" a="$ac"
+fi
+if run racket-tension 1 options/scenes/racket-tension.opts -sweep strings_tension=150:350:3; then
+  f="$dir/racket-tension.h5"
+  ac="$(col "$f" /results/acor | paste -sd,)" ct="$(col "$f" /results/contact_time | paste -sd,)"
+  check "racket-tension: tighter strings, less power ($ac) and a shorter dwell ($ct)" \
+    'split(a, c, ",") == 3 && split(t, d, ",") == 3 && c[1] > c[2] && c[2] > c[3] && d[1] > d[2] && d[2] > d[3]' a="$ac" t="$ct"
+fi
+
 # every scene file was run above
 for f in options/scenes/*.opts; do
   grep -q -- "$f" "$self" || fail "$f is not exercised by tests/scenes.sh"

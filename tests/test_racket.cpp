@@ -194,7 +194,7 @@ TEST(Racket, FreeFrameKeepsItsMomentaAndRollsOffAxis)
 
 // A frame and bed made nearly rigid (EI, GJ x 1e4, the strings' tension x 1e4): the ACOR tends to
 // Eq. (11) with the effective mass 1/M_e = 1/M + b^2/I_cm + z^2/I_x, on the axis and 5 cm off it
-// (where the roll's term lowers M_e by a fifth).
+// (where the roll's term lowers M_e by a quarter).
 TEST(Racket, StiffRacketFollowsEquation11WithTheRoll)
 {
   const Extra stiff = {{"-beam_youngs_over_density", "1e11"}, {"-beam_torsion_stiffness", "6.3e6"}, {"-strings_tension", "2.5e6"}};

@@ -127,6 +127,13 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
     if (sc.flight.on)
       PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n", (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
   }
+  if (sc.beam.strings.On())
+    PetscCall(PetscPrintf(comm, "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its energy %.4e J at most, %.4e J at the end (%.4f of the incident energy)\n",
+                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak, (double)r.bed_energy_peak, (double)r.bed_energy_end,
+                          sc.ball.speed > 0 ? (double)(r.bed_energy_end / (0.5 * sc.ball.mass * sc.ball.speed * sc.ball.speed)) : 0.0));
+  if (sc.beam.torsion.on && ResultNoHeldDof(sc) && sc.ball.speed > 0)
+    PetscCall(PetscPrintf(comm, "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of the incident energy; its twist and spin hold %.4e J at the end\n", (double)r.roll_rate_end,
+                          (double)r.roll_fraction, (double)r.twist_energy_end));
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
                           (double)sc.beam.grip.x_b, (double)r.grip_force_peak, (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));

@@ -142,6 +142,33 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_thickness", beam.input.thickness);
   rec->add("beam_width", beam.input.width);
   rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
+  if (beam.torsion.on) { // the frame's roll
+    rec->add("beam_torsion_stiffness", beam.torsion.stiffness); // 0: the section's
+    rec->add("beam_torsion_inertia", beam.torsion.inertia);
+    rec->add("beam_inertia_roll", body.inertia_roll);
+  }
+  if (beam.strings.On()) { // a racket's string bed
+    const StringBedParams &b = beam.strings;
+    const Membrane         m = StringBedMembrane(b);
+    rec->add("strings_frame", b.frame);
+    rec->add("head_shape", std::string(HeadShapeName(b.shape)));
+    rec->add("head_length", b.head_length);
+    rec->add("head_width", b.head_width);
+    rec->add("head_center", b.head_center);
+    rec->add("strings_tension", b.tension);
+    rec->add("strings_tension_crosses", b.tension_crosses);
+    rec->add("strings_spacing", b.spacing);
+    rec->add("strings_spacing_crosses", b.spacing_crosses);
+    rec->add("strings_linear_density", b.linear_density);
+    rec->add("membrane_N_x", m.N_x);
+    rec->add("membrane_N_z", m.N_z);
+    rec->add("membrane_sigma", m.sigma);
+    rec->add("strings_patch_radius", b.patch_radius); // m, as used (< 0 in a sweep's structure record: each point's from its ball)
+    const BedGrid g = StringBedFrameGrid(b, beam.nodes, beam.length);
+    rec->add("strings_h_x", g.hx);
+    rec->add("strings_h_z", g.hz);
+    rec->add("strings_nodes_width", g.nz);
+  }
   PetscFunctionReturn(0);
 }
 
@@ -160,6 +187,7 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   // The values used: a derived default (-impact_window, -impact_max_time < 0) as computed.
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
   rec->add("impact_x", sc.impact.x);
+  if (sc.impact.z != 0 || sc.beam.strings.On() || sc.beam.torsion.on) rec->add("impact_z", sc.impact.z);
   rec->add("impact_window", times.window);
   rec->add("impact_max_time", times.max_time);
   rec->add("impact_window_default", sc.impact.window < 0 ? 1 : 0);

@@ -17,7 +17,7 @@ ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x, PetscRea
 {
   if (!(x >= 0 && x <= beam.length)) return ImpactPointWhere::OffBeam;
   if (OnBed(beam, x, z)) return ImpactPointWhere::Movable;
-  if (beam.strings.On() && z != 0) return ImpactPointWhere::OffBeam; // off the racket's face
+  if (beam.strings.On() && z != 0) return ImpactPointWhere::OffFace; // off the racket's face
   const std::vector<NodeHold> hold = BeamNodeHolds(beam);
   auto                        held = [&](PetscInt i) { return hold[i] != NodeHold::None; };
   const ImpactStencil         st            = GridImpactStencil(beam.nodes, beam.length, x);
@@ -30,7 +30,7 @@ PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal
 {
   PetscFunctionBeginUser;
   const ImpactPointWhere where = ImpactPointLocate(beam, x, z);
-  PetscCheck(!(where == ImpactPointWhere::OffBeam && beam.strings.On() && z != 0), comm, PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(where != ImpactPointWhere::OffFace, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "%s with -impact_z %g is not allowed: off the frame's axis the ball must strike the string bed, inside the head's outline (centre x = %g m, %g x %g m, -head_*)", what, (double)z,
              (double)beam.strings.head_center, (double)beam.strings.head_length, (double)beam.strings.head_width);
   PetscCheck(where != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s is not allowed: the impact point must lie on the beam, 0 <= x <= L = %.12g (m)", what, (double)beam.length);

@@ -12,7 +12,7 @@ namespace beamimpact {
 
 // Where (x, z) (m) lies: on the beam (or the bed) and free to move, off the beam (or off a
 // racket's face), or on a held point.
-enum class ImpactPointWhere { Movable, OffBeam, Held };
+enum class ImpactPointWhere { Movable, OffBeam, Held, OffFace };
 ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x, PetscReal z = 0);
 
 // Errors out on comm when x (m) is off the beam or held fixed. `what` names the value in

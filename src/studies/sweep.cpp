@@ -374,7 +374,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
     mine->busy += tj - tc;
     if (farm.group_rank == 0) {
       const int status = (int)row[1 + plan.axes.size()];
-      if (status != SweepOk) {
+      if (SweepFailed(status)) {
         ++mine->failed;
         mine->reasons[index] = reason;
         if (mine->shown < show) {
@@ -460,7 +460,7 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
 PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P, double setup, double t0, double farm_time, const std::string &output, const SweepStore &S, PetscInt *failed_total)
 {
   PetscMPIInt rank, size;
-  PetscInt    computed = mine.computed, failed = 0, absurd = 0;
+  PetscInt    computed = mine.computed, failed = 0, absurd = 0, off_face = 0;
   double      busy_sum = 0, busy_min = 0, journal_sum = 0, handout_sum = 0;
   std::string by_status;
 
@@ -484,10 +484,11 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
       if (S.columns[c].name == "compression_beyond_radius") beyond = (int)c;
     for (auto &kv : S.rows) {
       const double st = kv.second[S.status_column];
-      if (st != 0) {
+      if (SweepFailed(st)) {
         ++failed;
         ++count[(int)st];
-      } else if (beyond >= 0 && kv.second[beyond] == 1) ++absurd;
+      } else if (st == SweepOffFace) ++off_face;
+      else if (beyond >= 0 && kv.second[beyond] == 1) ++absurd;
     }
     for (auto &kv : count) by_status += (by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " + std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
   }
@@ -521,6 +522,9 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
   if (failed)
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points failed: %s; their rows have status != 0, the reason in /results/reason and NaN numbers\n", failed, P.ncases,
                            by_status.c_str()));
+  if (off_face) // a map over a racket's face: the product of its axes reaches beyond the head's outline
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points are off the racket's face (outside the head's outline): no impact there, status %d and NaN numbers; not failed\n", off_face,
+                           P.ncases, (int)SweepOffFace));
   // Points whose numbers exist but mean nothing physically (-ball_radius given): counted like
   // the failed ones, also with -sweep_quiet.
   if (absurd)

@@ -556,7 +556,7 @@ PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt 
     if (bodies_read && !PetscOptionsGetReal(NULL, NULL, "-impact_x", &x, &set) && !PetscOptionsGetReal(NULL, NULL, "-impact_z", &z, &set)) {
       const ImpactPointWhere where = ImpactPointLocate(beam, x, z);
       if (where != ImpactPointWhere::Movable) {
-        *status = where == ImpactPointWhere::OffBeam ? SweepOffBeam : SweepHeldPoint;
+        *status = where == ImpactPointWhere::OffBeam ? SweepOffBeam : where == ImpactPointWhere::OffFace ? SweepOffFace : SweepHeldPoint;
         *reason = SweepErrorReason(ierr);
         PetscFunctionReturn(0);
       }
@@ -610,6 +610,8 @@ const char *SweepStatusName(int status)
     return "solution not finite";
   case SweepCutInContact:
     return "cut off in contact by -impact_max_time";
+  case SweepOffFace:
+    return "off the racket's face: no impact";
   default:
     return "run failed";
   }

@@ -673,7 +673,7 @@ static PetscErrorCode StoreRetryCheck(SweepStore &S, const SweepAttributes &stor
 
   PetscFunctionBeginUser;
   for (auto &kv : S.rows)
-    if (S.status_column >= 0 && kv.second[S.status_column] != 0 && S.reasons.count(kv.first)) failed[kv.first] = S.reasons[kv.first];
+    if (S.status_column >= 0 && SweepFailed(kv.second[S.status_column]) && S.reasons.count(kv.first)) failed[kv.first] = S.reasons[kv.first];
   const std::set<std::string> named = OptionsNamed(failed);
   const std::string           rest  = DiffBeyond(stored, S.signature, named, &changed);
   if (!rest.empty() || changed.empty()) {
@@ -839,7 +839,7 @@ static PetscErrorCode StoreOpenLocked(SweepStore &S, int *run)
   // -sweep_retry_failed: the failed cases are computed again (their rows are dropped).
   if (S.plan.retry_failed && S.status_column >= 0)
     for (auto it = S.rows.begin(); it != S.rows.end();) {
-      if (it->second[S.status_column] != 0) {
+      if (SweepFailed(it->second[S.status_column])) {
         S.reasons.erase(it->first);
         it = S.rows.erase(it);
       } else ++it;
