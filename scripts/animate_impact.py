@@ -9,7 +9,9 @@ at the impact point at its position y_b (/series/ball_y, -monitor_ball; read at 
 time by linear interpolation between the recorded steps): its front at y_b, so while in contact
 it overlaps the beam by the compression c = y_b - y(x_imp). The displacements are magnified
 (the vertical axis is in mm, the beam in m) and the ball is drawn round on the screen, not to
-scale. Each frame shows the time and, with /series/force, the contact force.
+scale. Each frame shows the time and, with /series/force, the contact force. A racket with a
+string bed (-strings_frame beam or held) adds a panel below: the bed's deflection from its frame
+(/snapshots/bed, w - y - z phi, mm) on the head at the same times, one colour scale for all.
 
 The file that animates, from the repository root (101 snapshots, 0 to 10 ms, ~0.1 s to compute):
 
@@ -80,6 +82,11 @@ def main():
         label = labels.config_label(f)
         left, right = files.attr(f, "beam_left", "free"), files.attr(f, "beam_right", "free")
         x0, x1 = files.attr(f, "beam_clamp_x0", -1), files.attr(f, "beam_clamp_x1", -1)
+        bed = None
+        if "bed" in f["snapshots"]:  # a racket's string bed: its deflection from the frame on the head
+            bx, bz = f["snapshots/bed_x"][()], f["snapshots/bed_z"][()]
+            bed = f["snapshots/bed"][()].reshape(len(ts), len(bz), len(bx)) * 1e3
+            head = (files.attr(f, "head_shape"), files.attr(f, "head_length"), files.attr(f, "head_width"))
     pick = np.arange(len(ts))
     if a.frames and a.frames < len(ts):
         pick = np.unique(np.round(np.linspace(0, len(ts) - 1, a.frames)).astype(int))
@@ -93,7 +100,10 @@ def main():
     ylim = (lo - ball_h - 0.08 * span, hi + 0.12 * span)
     xlim = (-0.03 * L, 1.03 * L)
 
-    fig, ax = plt.subplots(figsize=(8, 4))
+    if bed is None:
+        fig, ax = plt.subplots(figsize=(8, 4))
+    else:
+        fig, (ax, bax) = plt.subplots(2, 1, figsize=(8, 7), gridspec_kw={"height_ratios": [1, 1.3]})
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
     ax.set_xlabel("x (m) from the x = 0 end")
@@ -108,6 +118,22 @@ def main():
     if xi is not None:
         ax.axvline(xi, color="C3", lw=0.6, ls="--")
     (beam,) = ax.plot(x, Ymm[pick[0]], color="0.25", lw=3, solid_capstyle="round")
+    mesh = None
+    if bed is not None:
+        shape, length, width = head
+        m = float(np.nanmax(np.abs(bed[pick]))) or 1.0
+        mesh = bax.pcolormesh(bx, bz, np.ma.masked_invalid(bed[pick[0]]), cmap="RdBu_r", vmin=-m, vmax=m, shading="auto")
+        t = np.linspace(0, 2 * np.pi, 241)
+        if shape == "rectangle":
+            bax.plot([-length / 2, length / 2, length / 2, -length / 2, -length / 2], [-width / 2, -width / 2, width / 2, width / 2, -width / 2], "k-", lw=1)
+        else:
+            bax.plot(length / 2 * np.cos(t), width / 2 * np.sin(t), "k-", lw=1)
+        bax.set_xlim(-0.52 * length, 0.52 * length)
+        bax.set_ylim(-0.52 * width, 0.52 * width)
+        bax.set_aspect("equal")
+        bax.set_xlabel("x along the frame from the head's centre (m)")
+        bax.set_ylabel("z across (m)")
+        fig.colorbar(mesh, ax=bax, label="strings: w - y - z phi (mm)")
     text = ax.text(0.01, 0.97, "", transform=ax.transAxes, va="top", fontsize=9, family="monospace")
     ball = None
     if yb is not None and xi is not None:
@@ -134,7 +160,9 @@ def main():
         if force is not None:
             line += "   F = %6.2f N" % force[k]
         text.set_text(line)
-        return (beam, text) + ((ball,) if ball is not None else ())
+        if mesh is not None:
+            mesh.set_array(np.ma.masked_invalid(bed[k]).ravel())
+        return (beam, text) + ((ball,) if ball is not None else ()) + ((mesh,) if mesh is not None else ())
 
     anim = animation.FuncAnimation(fig, frame, frames=len(pick), blit=False)
     if ext == ".gif":

@@ -351,7 +351,7 @@ public:
   }
   PetscErrorCode ViewBegin(StateView *) override { return 0; }
   PetscErrorCode ViewEnd(StateView *) override { return 0; }
-  PetscErrorCode GatherDisplacement(std::vector<PetscReal> *) override { return 0; }
+  PetscErrorCode GatherFields(PetscInt, PetscInt, std::vector<PetscReal> *) override { return 0; }
   PetscErrorCode Counts(StepperCounts *) override { return 0; }
   std::string    EnergyGrowthCause() const override { return ""; }
   PetscErrorCode SetState(PetscReal, const FullState &) override { return 0; }

@@ -463,7 +463,8 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, BeamParams *p)
     p->has_clamp   = true;
     p->clamp_x0    = 0, p->clamp_x1 = p->length;
     s.head_center  = 0.5 * s.head_length;
-    p->section     = BeamSection(); // a held frame's section is never used
+    p->section     = BeamSection(); // a held frame's section and roll are never used
+    p->torsion     = BeamTorsion();
     PetscFunctionReturn(0);
   }
   const PetscReal a = 0.5 * s.head_length, h = p->length / (p->nodes - 1);

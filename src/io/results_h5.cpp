@@ -312,6 +312,8 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
     PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
     PetscCall(opt("beam_strain", S.beam_strain, "J"));
     PetscCall(opt("shell_energy", S.shell_energy, "J"));
+    PetscCall(opt("bed_energy", S.bed_energy, "J"));
+    PetscCall(opt("twist_energy", S.twist_energy, "J"));
     PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
     PetscCall(opt("total_energy", S.total_energy, "J"));
     if (!S.velocity_at.empty()) {
@@ -332,6 +334,15 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
     PetscCall(H5WriteDataset1D(gn, "x", x, "m"));
     PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
     PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
+    if (!S.snapshot_bed.empty() && beam.strings.On()) { // the string bed's deflection on its grid: [time][z * nodes + x]
+      const BedGrid          g = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
+      std::vector<PetscReal> bx(g.nx), bz(g.nz);
+      for (PetscInt i = 0; i < g.nx; ++i) bx[i] = g.X(i);
+      for (PetscInt j = 0; j < g.nz; ++j) bz[j] = g.Z(j);
+      PetscCall(H5WriteDataset1D(gn, "bed_x", bx, "m (the bed's columns from the head's centre: the beam's nodes)"));
+      PetscCall(H5WriteDataset1D(gn, "bed_z", bz, "m (across the face)"));
+      PetscCall(H5WriteDataset2D(gn, "bed", S.snapshot_bed, "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] (NaN off the bed)"));
+    }
     H5Gclose(gn);
   }
   PetscFunctionReturn(0);

@@ -88,6 +88,7 @@ struct ImpactSeries {
   std::vector<PetscReal> flight_time, flight_x, flight_y, flight_z, flight_spin;
   std::vector<PetscReal> snapshot_time;                                  // s
   std::vector<std::vector<PetscReal>> snapshot_y;                        // m, [snapshot][node]
+  std::vector<std::vector<PetscReal>> snapshot_bed;                      // m, a string bed's deflection from its frame, w - y - z phi, [snapshot][z * nodes + x] (NaN off the bed; rank 0)
 };
 
 enum class ContactEventKind { ContactStart = 0, MaxCompression = 1, Reload = 2, Separation = 3 };

@@ -97,6 +97,16 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
     PetscCall(stepper_.GatherDisplacement(&y));
     series_->snapshot_time.push_back(mon_.snapshot_times[next_]);
     series_->snapshot_y.push_back(y);
+    const BeamSystem &S = *ctx_.sys;
+    if (S.bed_first >= 0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
+      std::vector<PetscReal> u, bed((size_t)S.bed.nz * S.nodes);
+      PetscCall(stepper_.GatherFields(0, S.fields, &u)); // rank 0: every field of every node
+      for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i) {
+        const PetscReal *node = &u[(size_t)i * S.fields], phi = S.roll_field >= 0 ? node[S.roll_field] : 0.0;
+        for (PetscInt j = 0; j < S.bed.nz; ++j) bed[j * S.nodes + i] = S.held[S.Dof(i, S.bed_first + j)] ? NAN : node[S.bed_first + j] - node[0] - S.bed.Z(j) * phi;
+      }
+      series_->snapshot_bed.push_back(std::move(bed));
+    }
     ++next_;
   }
   PetscFunctionReturn(0);

@@ -221,10 +221,11 @@ public:
     *sv = StateView();
     return 0;
   }
-  PetscErrorCode GatherDisplacement(std::vector<PetscReal> *y) override
+  PetscErrorCode GatherFields(PetscInt f0, PetscInt nf, std::vector<PetscReal> *y) override
   {
-    y->resize(sys->nodes);
-    for (PetscInt i = 0; i < sys->nodes; ++i) (*y)[i] = cur->y[sys->Dof(i) + bw];
+    y->resize((size_t)sys->nodes * nf);
+    for (PetscInt i = 0; i < sys->nodes; ++i)
+      for (PetscInt f = 0; f < nf; ++f) (*y)[i * nf + f] = cur->y[sys->Dof(i, f0 + f) + bw];
     return 0;
   }
   PetscErrorCode Counts(StepperCounts *c) override

@@ -73,7 +73,10 @@ public:
   virtual PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) = 0; // m, m/s at the current state (every rank)
   virtual PetscErrorCode ViewBegin(StateView *v) = 0;
   virtual PetscErrorCode ViewEnd(StateView *v)   = 0;
-  virtual PetscErrorCode GatherDisplacement(std::vector<PetscReal> *y) = 0; // rank 0: deflection per node (m)
+  // Rank 0: fields [f0, f0 + nf) of every node's displacement, node-major (y[i nf + f - f0]; m or
+  // rad): field 0 alone is the deflection per node, a string bed's fields its columns.
+  virtual PetscErrorCode GatherFields(PetscInt f0, PetscInt nf, std::vector<PetscReal> *y) = 0;
+  PetscErrorCode         GatherDisplacement(std::vector<PetscReal> *y) { return GatherFields(0, 1, y); } // rank 0: deflection per node (m)
   virtual PetscErrorCode Counts(StepperCounts *n) = 0;
   // Why the energy may have grown at the current step (the likely cause, for the error message).
   virtual std::string EnergyGrowthCause() const = 0;

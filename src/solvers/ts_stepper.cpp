@@ -279,7 +279,7 @@ public:
   PetscErrorCode SetModalState(PetscReal t, const BeamModes &m, const ModalState &s, bool *done) override;
   PetscErrorCode ViewBegin(StateView *v) override;
   PetscErrorCode ViewEnd(StateView *v) override;
-  PetscErrorCode GatherDisplacement(std::vector<PetscReal> *y) override;
+  PetscErrorCode GatherFields(PetscInt f0, PetscInt nf, std::vector<PetscReal> *y) override;
   PetscErrorCode Counts(StepperCounts *n) override;
   std::string    EnergyGrowthCause() const override;
 };
@@ -442,8 +442,8 @@ PetscErrorCode TSStepper::ViewEnd(StateView *sv)
   PetscFunctionReturn(0);
 }
 
-// Deflection y(x) on rank 0 (gathered in natural node order).
-PetscErrorCode TSStepper::GatherDisplacement(std::vector<PetscReal> *y)
+// Fields [f0, f0 + nf) of the displacement on rank 0 (gathered in natural node order).
+PetscErrorCode TSStepper::GatherFields(PetscInt f0, PetscInt nf, std::vector<PetscReal> *y)
 {
   const TSLayout &L = P.L;
   Vec             X, Vel, Xb, Xr, y0, yall;
@@ -453,13 +453,14 @@ PetscErrorCode TSStepper::GatherDisplacement(std::vector<PetscReal> *y)
   PetscCall(Solution(&X, &Vel));
   PetscCall(DMCompositeGetAccess(L.pack, X, &Xb, &Xr));
   const PetscInt n = L.xe - L.xs;
-  PetscCall(VecCreateMPI(L.comm, n, PETSC_DETERMINE, &y0));
+  PetscCall(VecCreateMPI(L.comm, n * nf, PETSC_DETERMINE, &y0));
   {
     const PetscScalar *x;
     PetscScalar       *o;
     PetscCall(VecGetArrayRead(Xb, &x));
     PetscCall(VecGetArray(y0, &o));
-    for (PetscInt i = 0; i < n; ++i) o[i] = x[i * L.dof];
+    for (PetscInt i = 0; i < n; ++i)
+      for (PetscInt f = 0; f < nf; ++f) o[i * nf + f] = x[i * L.dof + f0 + f];
     PetscCall(VecRestoreArray(y0, &o));
     PetscCall(VecRestoreArrayRead(Xb, &x));
   }
@@ -470,7 +471,7 @@ PetscErrorCode TSStepper::GatherDisplacement(std::vector<PetscReal> *y)
   if (L.rank == 0) {
     const PetscScalar *a;
     PetscCall(VecGetArrayRead(yall, &a));
-    y->assign(a, a + L.nodes);
+    y->assign(a, a + L.nodes * nf);
     PetscCall(VecRestoreArrayRead(yall, &a));
   }
   PetscCall(VecScatterDestroy(&sc));
