@@ -8,11 +8,11 @@
 //     the load's disc), converging with the grid;
 //   * the free strung racket: momentum, angular momentum and the angular momentum about the
 //     frame's axis conserved to round-off, no roll from a hit on the axis, a roll of the right
-//     sign from one off it, the same on 1 and 2 ranks;
+//     sign from one off it, the same on 1 and 4 ranks;
 //   * limits: a stiff frame and bed follow Eq. (11) with the roll's z^2/I_x; a stiff, massless
 //     bed is the frame struck at the same point.
 //
-//   mpiexec -n 2 ./test_racket --gtest_filter='RacketParallel.*'
+//   mpiexec -n 4 ./test_racket --gtest_filter='RacketParallel.*'
 #include "model/torsion.hpp"
 #include "run/impact.hpp"
 #include "solvers/modes.hpp"
@@ -233,7 +233,7 @@ TEST(Racket, StiffMasslessBedIsTheFrame)
   }
 }
 
-// The same off-axis hit on 1 and 2 ranks (the bed's columns split with the frame's nodes).
+// The same off-axis hit on 1 and 4 ranks (the bed's columns split with the frame's nodes).
 TEST(RacketParallel, SameOnOneAndManyRanks)
 {
   const Scenario     sc  = StrungRacket(0.15, 0.05);
