@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# The strung racket's cost (issue 25; not a test): one impact and the ~100-point face map of
+# options/scenes/racket-face-map.opts at the shipped grid and finer, and how they grow with the
+# grid. The bed's columns are the frame's nodes, so -beam_nodes sets both (73 nodes: h = 1 cm,
+# 25 nodes across the face; the bed's nodes grow as N^2). For each N:
+#   dofs        the system's free dofs (frame, roll and bed; the modal run's "modes kept/free")
+#   modal       one impact, -ts_type modal: wall time of the whole process (the modes once, the
+#               contact, the modal free flight after it)
+#   cn          one impact, -ts_type cn at 20 us with -impact_after time (no modes at all)
+#   map         the face map (110 points, 98 on the face) with -ts_type modal, the sweep's own
+#               "computed N points in T s" (the modes once, every point on them)
+# and writes a PNG (time against free dofs, log-log) when a Python with matplotlib is found.
+#
+#   scripts/bench_racket.sh [path/to/beamimpact]
+# Environment:
+#   BENCH_NODES   frame nodes (default "37 73 145")
+#   BENCH_MAP     0: skip the face map (default 1)
+#   BENCH_PNG     the figure's path (default out/bench-racket.png; "" for none)
+# Prints `uptime` first: the machine's load makes single runs noisy.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(dirname "$here")"
+source "$here/find-exe.sh"
+exe=$(find_beamimpact bench_racket.sh "${1:-}") || exit 1
+source "$here/mpi-env.sh"
+cd "$root"
+nodes=${BENCH_NODES:-"37 73 145"}
+png=${BENCH_PNG-out/bench-racket.png}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+base=(-options_file options/base/racket-strung.opts -options_file options/base/tennis-ball.opts -impact_x 0.15 -impact_z 0.05)
+
+# wall SECONDS of one command (its output in $tmp/log); fails loudly
+wall() {
+  local t0 t1
+  t0=$(date +%s.%N)
+  "$@" >"$tmp/log" 2>&1 || { echo "bench_racket.sh: failed: $*" >&2; tail -3 "$tmp/log" >&2; exit 1; }
+  t1=$(date +%s.%N)
+  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f", b - a }'
+}
+
+uptime
+printf "%6s %8s %12s %12s %12s %10s\n" N dofs "modal (s)" "cn (s)" "map (s)" "map pts/s"
+rows=""
+for n in $nodes; do
+  tm=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -output none)
+  dofs=$(sed -nE 's/.*modes [0-9]+\/([0-9]+).*/\1/p' "$tmp/log" | tail -1) # the summary's "modes kept/free"
+  tc=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type cn -ts_dt 2e-5 -ts_adapt_type none -impact_after time -output none)
+  tmap=nan rate=nan
+  if [[ ${BENCH_MAP:-1} != 0 ]]; then
+    wall "$exe" -options_file options/scenes/racket-face-map.opts -beam_nodes "$n" -output "$tmp/map.h5" >/dev/null
+    tmap=$(sed -nE 's/.*computed ([0-9]+) points in ([0-9.e+-]+) s.*/\2/p' "$tmp/log")
+    rate=$(sed -nE 's/.*computed [0-9]+ points in [0-9.e+-]+ s \(([0-9.e+-]+) points\/s\).*/\1/p' "$tmp/log")
+    rm -rf "$tmp/map.h5" "$tmp/map.h5.parts"
+  fi
+  printf "%6s %8s %12s %12s %12s %10s\n" "$n" "$dofs" "$tm" "$tc" "$tmap" "$rate"
+  rows+="$n $dofs $tm $tc $tmap"$'\n'
+done
+
+[[ -n $png ]] || exit 0
+py=""
+for c in /usr/bin/python3 python3; do
+  if command -v "$c" >/dev/null && "$c" -c 'import matplotlib' 2>/dev/null; then py=$c; break; fi
+done
+[[ -n $py ]] || { echo "bench_racket.sh: no Python with matplotlib (Debian: python3-matplotlib): no figure" >&2; exit 0; }
+mkdir -p "$(dirname "$png")"
+"$py" - "$png" <<<"$rows" 3<&0 <<'EOF'
+import sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+rows = [l.split() for l in open("/dev/fd/3").read().splitlines() if l.strip()]  # the table, on fd 3
+n = [int(r[0]) for r in rows]
+dofs = [float(r[1]) for r in rows]
+fig, ax = plt.subplots(figsize=(6, 4))
+for k, label in ((2, "one impact, -ts_type modal (the modes once)"), (3, "one impact, cn, -impact_after time"), (4, "face map, 110 points, modal")):
+    t = [float(r[k]) for r in rows]
+    if all(v == v for v in t):
+        ax.loglog(dofs, t, "o-", label=label)
+for d, m in zip(dofs, n):
+    ax.annotate("N = %d" % m, (d, ax.get_ylim()[0]), fontsize=7, rotation=90, va="bottom")
+ax.set_xlabel("free dofs (frame, roll and string bed)")
+ax.set_ylabel("wall time (s)")
+ax.set_title("the strung racket's cost against the grid", fontsize=10)
+ax.grid(True, which="both", lw=0.3)
+ax.legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(sys.argv[1], dpi=110)
+print("wrote %s" % sys.argv[1])
+EOF
