@@ -161,6 +161,16 @@ inline Scenario LinearBallR161()
   return sc;
 }
 
+// Runs the impact of a scenario with the given options set only for this run.
+inline ImpactResult RunWith(MPI_Comm comm, const Scenario &sc, const std::vector<std::pair<std::string, std::string>> &opts)
+{
+  for (auto &kv : opts) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
+  ImpactResult r;
+  EXPECT_EQ(0, ImpactRun(comm, sc, &r));
+  for (auto &kv : opts) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
+  return r;
+}
+
 // Runs one impact with the given TS options set only for this run.
 inline ImpactResult RunImpact(MPI_Comm comm, const BeamParams &beam, const BallParams &ball, const ImpactParams &ip, const std::vector<std::pair<std::string, std::string>> &ts_options,
                               const MonitorRequest &mon = MonitorRequest())

@@ -39,14 +39,7 @@ Options Irk(const char *dt, const char *stages = "2")
   return {{"-ts_type", "irk"}, {"-ts_irk_nstages", stages}, {"-ts_adapt_type", "none"}, {"-ts_dt", dt}};
 }
 
-ImpactResult RunWith(MPI_Comm comm, const Scenario &sc, const Options &opts)
-{
-  for (auto &kv : opts) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
-  ImpactResult r;
-  EXPECT_EQ(0, ImpactRun(comm, sc, &r));
-  for (auto &kv : opts) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
-  return r;
-}
+using test::RunWith;
 
 // LinearBallR161 (test_helpers.hpp) with the ball at 40 m/s; to the first separation.
 Scenario SwingingR161()

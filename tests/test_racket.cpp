@@ -76,13 +76,16 @@ Scenario StrungRacket(PetscReal x, PetscReal z, const Extra &extra = {})
   return sc;
 }
 
-ImpactResult RunWith(MPI_Comm comm, const Scenario &sc, const Extra &ts)
+using test::RunWith;
+
+// The aluminium strip of 1.1 m that twists: G J = 50 N m^2, rho J = 1e-4 kg m.
+BeamParams Shaft(PetscInt nodes, Support left = Support::Free)
 {
-  for (auto &kv : ts) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
-  ImpactResult r;
-  EXPECT_EQ(0, ImpactRun(comm, sc, &r));
-  for (auto &kv : ts) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
-  return r;
+  BeamParams p        = test::AluminiumBeam(1.1, nodes, left, Support::Free);
+  p.torsion.on        = true;
+  p.torsion.stiffness = 50;
+  p.torsion.inertia   = 1e-4;
+  return p;
 }
 
 const Extra kCn = {{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}, {"-ts_adapt_type", "none"}};
@@ -97,11 +100,7 @@ TEST(Twist, FreeShaftFrequenciesOrderTwo)
   std::vector<PetscReal> err[2];
   const PetscInt         N[2] = {41, 81};
   for (int k = 0; k < 2; ++k) {
-    BeamParams p        = test::AluminiumBeam(1.1, N[k]);
-    p.torsion.on        = true;
-    p.torsion.stiffness = 50;
-    p.torsion.inertia   = 1e-4;
-    const BeamSystem sys = SystemOf(p);
+    const BeamSystem sys = SystemOf(Shaft(N[k]));
     EXPECT_EQ(3, BeamSystemRigidCount(sys));
     const std::vector<PetscReal> f = ModesOf(sys, 20, Part::Twist);
     ASSERT_GE(f.size(), 3u);
@@ -116,11 +115,7 @@ TEST(Twist, FreeShaftFrequenciesOrderTwo)
 // A clamped end holds the roll: no rigid roll, the quarter-wave modes (2n - 1)/(4L) sqrt(GJ/rhoJ).
 TEST(Twist, ClampedShaftHoldsItsRoll)
 {
-  BeamParams p        = test::AluminiumBeam(1.1, 81, Support::Clamped, Support::Free);
-  p.torsion.on        = true;
-  p.torsion.stiffness = 50;
-  p.torsion.inertia   = 1e-4;
-  const BeamSystem sys = SystemOf(p);
+  const BeamSystem sys = SystemOf(Shaft(81, Support::Clamped));
   EXPECT_EQ(0, BeamSystemRigidCount(sys));
   const std::vector<PetscReal> f = ModesOf(sys, 12, Part::Twist);
   ASSERT_GE(f.size(), 2u);

@@ -335,12 +335,7 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const Bea
     PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
     PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
     if (!S.snapshot_bed.empty() && beam.strings.On()) { // the string bed's deflection on its grid: [time][z * nodes + x]
-      const BedGrid          g = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
-      std::vector<PetscReal> bx(g.nx), bz(g.nz);
-      for (PetscInt i = 0; i < g.nx; ++i) bx[i] = g.X(i);
-      for (PetscInt j = 0; j < g.nz; ++j) bz[j] = g.Z(j);
-      PetscCall(H5WriteDataset1D(gn, "bed_x", bx, "m (the bed's columns from the head's centre: the beam's nodes)"));
-      PetscCall(H5WriteDataset1D(gn, "bed_z", bz, "m (across the face)"));
+      PetscCall(H5WriteBedGrid(gn, StringBedFrameGrid(beam.strings, beam.nodes, beam.length), "bed_x", "bed_z"));
       PetscCall(H5WriteDataset2D(gn, "bed", S.snapshot_bed, "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] (NaN off the bed)"));
     }
     H5Gclose(gn);
@@ -505,6 +500,17 @@ static PetscErrorCode H5WriteBeamSection(hid_t file, const BeamParams &beam)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode H5WriteBedGrid(long long loc, const BedGrid &g, const char *x_name, const char *z_name)
+{
+  std::vector<double> x(g.nx), z(g.nz);
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < g.nx; ++i) x[i] = g.X(i);
+  for (PetscInt j = 0; j < g.nz; ++j) z[j] = g.Z(j);
+  PetscCall(H5WriteDataset1D(loc, x_name, x, "m (along the frame's axis, from the head's centre)"));
+  PetscCall(H5WriteDataset1D(loc, z_name, z, "m (across the face, from the head's centre)"));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
                                      const BeamParams &beam)
 {
@@ -527,11 +533,7 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
     }
     if (!modes.bed_shape.empty()) { // the string bed's deflection of each mode on its grid, [z][x], as the held bed's /modes/shape_k
       const BedGrid g2 = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
-      std::vector<PetscReal> x(g2.nx), z(g2.nz);
-      for (PetscInt i = 0; i < g2.nx; ++i) x[i] = g2.X(i);
-      for (PetscInt j = 0; j < g2.nz; ++j) z[j] = g2.Z(j);
-      PetscCall(H5WriteDataset1D(g, "bed_x", x, "m (from the head's centre, along the frame)"));
-      PetscCall(H5WriteDataset1D(g, "bed_z", z, "m (across the face)"));
+      PetscCall(H5WriteBedGrid(g, g2, "bed_x", "bed_z"));
       for (size_t m = 0; m < modes.bed_shape.size(); ++m) {
         std::vector<std::vector<PetscReal>> rows(g2.nz, std::vector<PetscReal>(g2.nx));
         for (PetscInt j = 0; j < g2.nz; ++j)

@@ -86,6 +86,9 @@ private:
 // Small HDF5 helpers (rank 0 only; return negative hid_t/herr_t on failure).
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record);
 PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);
+// A string bed's grid as two datasets x_name, z_name (m, from the head's centre: along the
+// frame's axis and across the face) in loc.
+PetscErrorCode H5WriteBedGrid(long long loc, const BedGrid &g, const char *x_name, const char *z_name);
 PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v, const char *unit); // 64-bit integers
 // Counts that must stay double (NaN in a failed sweep row): the dataset carries the integer
 // attribute integer = 1, so that readers write its finite values as whole numbers.

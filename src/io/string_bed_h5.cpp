@@ -46,11 +46,7 @@ PetscErrorCode ResultsWriteStringBedModesFile(MPI_Comm comm, const std::string &
     PetscCheck(gm >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /modes in %s", path.c_str());
     PetscCall(H5WriteDataset1D(gm, "frequency", modes.frequency, "Hz"));
     PetscCall(H5WriteDataset1D(gm, "omega", modes.omega, "rad/s"));
-    std::vector<double> x(g.nx), z(g.nz);
-    for (PetscInt i = 0; i < g.nx; ++i) x[i] = g.X(i);
-    for (PetscInt j = 0; j < g.nz; ++j) z[j] = g.Z(j);
-    PetscCall(H5WriteDataset1D(gm, "x", x, "m (along the frame's axis, from the head's centre)"));
-    PetscCall(H5WriteDataset1D(gm, "z", z, "m (across the face, from the head's centre)"));
+    PetscCall(H5WriteBedGrid(gm, g, "x", "z"));
     for (size_t q = 0; q < modes.shape.size(); ++q) {
       std::vector<std::vector<double>> rows(g.nz);
       for (PetscInt j = 0; j < g.nz; ++j) rows[j].assign(modes.shape[q].begin() + j * g.nx, modes.shape[q].begin() + (j + 1) * g.nx);
