@@ -67,13 +67,9 @@ PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
   PetscFunctionBeginUser;
   if (bed.patch_radius < 0) bed.patch_radius = ShellContactRadiusDefault(sc->ball, ImpactApproachSpeed(*sc));
   const BedGrid   g = StringBedFrameGrid(bed, sc->beam.nodes, sc->beam.length);
-  const PetscReal x = sc->impact.x - bed.head_center, z = sc->impact.z, a = bed.patch_radius;
-  PetscInt        n = 0;
-  for (PetscInt i = 0; i < g.nx; ++i)
-    for (PetscInt j = 0; j < g.nz; ++j) {
-      const PetscReal dx = g.X(i) - x, dz = g.Z(j) - z;
-      n += dx * dx + dz * dz < a * a && BedInside(g, g.X(i), g.Z(j)) ? (BedNodeFree(g, i, j) ? 1 : 2) : 0;
-    }
+  const PetscReal a = bed.patch_radius;
+  PetscInt        n = 0; // the coupling's entries: a free node's own, or its frame section's deflection and roll
+  for (const BedPatchNode &e : BedPatch(g, sc->impact.x - bed.head_center, sc->impact.z, a)) n += e.free ? 1 : 2;
   PetscCheck(n <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %" PetscInt_FMT " coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
              (double)a, (double)g.hx, (double)g.hz, n, ContactCoupling::kMaxEntries);

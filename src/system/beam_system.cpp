@@ -80,36 +80,6 @@ void BeamSystemAssemble(BeamSystem *sys)
 
 namespace {
 
-// The bed's nodes under a disc of radius a about (x, z) from the head's centre, with the weights
-// 1 - r^2/a^2 (a parabolic pressure; the nearest node alone when a < the grid's step leaves none
-// inside), normalised to 1: (bed column i, row j, weight).
-std::vector<std::array<PetscReal, 3>> BedPatch(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
-{
-  const BedGrid                        &g = sys.bed;
-  const PetscReal                       x = x_imp - sys.bed_head_center, a = sys.bed_patch_radius;
-  std::vector<std::array<PetscReal, 3>> out;
-  PetscReal                             sum = 0;
-  if (a > 0) {
-    const PetscInt i0 = std::max<PetscInt>(0, (PetscInt)std::floor((x - a - g.x0) / g.hx)), i1 = std::min<PetscInt>(g.nx - 1, (PetscInt)std::ceil((x + a - g.x0) / g.hx));
-    const PetscInt j0 = std::max<PetscInt>(0, (PetscInt)std::floor((z_imp - a + g.b) / g.hz)), j1 = std::min<PetscInt>(g.nz - 1, (PetscInt)std::ceil((z_imp + a + g.b) / g.hz));
-    for (PetscInt i = i0; i <= i1; ++i)
-      for (PetscInt j = j0; j <= j1; ++j) {
-        const PetscReal dx = g.X(i) - x, dz = g.Z(j) - z_imp, r2 = (dx * dx + dz * dz) / (a * a);
-        if (r2 >= 1 || !BedInside(g, g.X(i), g.Z(j))) continue;
-        out.push_back({(PetscReal)i, (PetscReal)j, 1 - r2});
-        sum += 1 - r2;
-      }
-  }
-  if (out.empty()) { // a point load on the nearest node
-    const PetscInt i = std::min<PetscInt>(g.nx - 1, std::max<PetscInt>(0, (PetscInt)std::lround((x - g.x0) / g.hx)));
-    const PetscInt j = std::min<PetscInt>(g.nz - 1, std::max<PetscInt>(0, (PetscInt)std::lround((z_imp + g.b) / g.hz)));
-    out.push_back({(PetscReal)i, (PetscReal)j, 1.0});
-    sum = 1.0;
-  }
-  for (auto &e : out) e[2] /= sum;
-  return out;
-}
-
 // Adds weight w on dof d to g (merging a dof already there; a held dof's share is 0); false when
 // g is full.
 bool CouplingAdd(const BeamSystem &sys, PetscInt d, PetscReal w, ContactCoupling *g)
@@ -126,28 +96,19 @@ bool CouplingAdd(const BeamSystem &sys, PetscInt d, PetscReal w, ContactCoupling
 
 bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp) { return sys.bed_first >= 0 && BedInside(sys.bed, x_imp - sys.bed_head_center, z_imp); }
 
-PetscInt BeamSystemCouplingSize(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
-{
-  if (!BeamSystemOnBed(sys, x_imp, z_imp)) return BeamSystemCoupling(sys, x_imp, z_imp).n;
-  PetscInt n = 0; // a free node's own entry, or its column's deflection and roll
-  for (const auto &e : BedPatch(sys, x_imp, z_imp)) n += BedNodeFree(sys.bed, (PetscInt)e[0], (PetscInt)e[1]) ? 1 : 2;
-  return n;
-}
-
 ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
 {
   ContactCoupling g;
   g.x = x_imp;
   g.z = z_imp;
   if (BeamSystemOnBed(sys, x_imp, z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
-    for (const auto &e : BedPatch(sys, x_imp, z_imp)) {
-      const PetscInt i = (PetscInt)e[0], j = (PetscInt)e[1];
-      if (BedNodeFree(sys.bed, i, j)) {
-        if (!CouplingAdd(sys, sys.Dof(i, sys.bed_first + j), e[2], &g)) return g; // refused before: the scenario's check
+    for (const BedPatchNode &e : BedPatch(sys.bed, x_imp - sys.bed_head_center, z_imp, sys.bed_patch_radius)) {
+      if (e.free) {
+        if (!CouplingAdd(sys, sys.Dof(e.i, sys.bed_first + e.j), e.w, &g)) return g; // refused before: the scenario's check
         continue;
       }
-      if (!CouplingAdd(sys, sys.Dof(i), e[2], &g)) return g;
-      if (sys.roll_field >= 0 && !CouplingAdd(sys, sys.Dof(i, sys.roll_field), e[2] * sys.bed.Z(j), &g)) return g;
+      if (!CouplingAdd(sys, sys.Dof(e.i), e.w, &g)) return g;
+      if (sys.roll_field >= 0 && !CouplingAdd(sys, sys.Dof(e.i, sys.roll_field), e.w * sys.bed.Z(e.j), &g)) return g;
     }
     return g;
   }

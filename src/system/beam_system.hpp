@@ -117,9 +117,6 @@ struct ContactCoupling {
 ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp = 0);
 // Whether (x_imp, z_imp) strikes the string bed (strictly inside its head's outline).
 bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp);
-// The number of coupled entries a strike at (x_imp, z_imp) takes (the room it needs in
-// ContactCoupling::kMaxEntries), before any is dropped.
-PetscInt BeamSystemCouplingSize(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp);
 
 // f_i = (K y)_i (N) for dofs i in [d0, d1), K = df/dy of every force term (the elastic
 // strain terms in the factored form B^T W B y, a grip's springs): the force of the deflection y

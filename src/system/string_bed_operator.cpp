@@ -61,6 +61,31 @@ BedRow BedStiffnessRow(const BedGrid &g, const Membrane &m, PetscInt i, PetscInt
   return r;
 }
 
+std::vector<BedPatchNode> BedPatch(const BedGrid &g, PetscReal x, PetscReal z, PetscReal a)
+{
+  std::vector<BedPatchNode> out;
+  PetscReal                 sum = 0;
+  if (a > 0) {
+    const PetscInt i0 = std::max<PetscInt>(0, (PetscInt)std::floor((x - a - g.x0) / g.hx)), i1 = std::min<PetscInt>(g.nx - 1, (PetscInt)std::ceil((x + a - g.x0) / g.hx));
+    const PetscInt j0 = std::max<PetscInt>(0, (PetscInt)std::floor((z - a + g.b) / g.hz)), j1 = std::min<PetscInt>(g.nz - 1, (PetscInt)std::ceil((z + a + g.b) / g.hz));
+    for (PetscInt i = i0; i <= i1; ++i)
+      for (PetscInt j = j0; j <= j1; ++j) {
+        const PetscReal dx = g.X(i) - x, dz = g.Z(j) - z, r2 = (dx * dx + dz * dz) / (a * a);
+        if (r2 >= 1 || !BedInside(g, g.X(i), g.Z(j))) continue;
+        out.push_back({i, j, 1 - r2, BedNodeFree(g, i, j)});
+        sum += 1 - r2;
+      }
+  }
+  if (out.empty()) { // a point load on the nearest node
+    const PetscInt i = std::min<PetscInt>(g.nx - 1, std::max<PetscInt>(0, (PetscInt)std::lround((x - g.x0) / g.hx)));
+    const PetscInt j = std::min<PetscInt>(g.nz - 1, std::max<PetscInt>(0, (PetscInt)std::lround((z + g.b) / g.hz)));
+    out.push_back({i, j, 1.0, BedNodeFree(g, i, j)});
+    sum = 1.0;
+  }
+  for (BedPatchNode &e : out) e.w /= sum;
+  return out;
+}
+
 BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt roll_field, BeamDiscretization *d)
 {
   const Membrane m = StringBedMembrane(p);

@@ -9,6 +9,8 @@
 #include "model/beam_theory.hpp"
 #include "model/string_bed.hpp"
 
+#include <vector>
+
 namespace beamimpact {
 
 // One row of the membrane's stiffness K (N/m) at node (i, j): K w = sum over the four arms of
@@ -52,6 +54,17 @@ PetscReal BedArmLength(const BedGrid &g, PetscInt i, PetscInt j, int dir);
 // that is not an unknown but lies in the head moves with the frame: it is added to y_i and, as
 // sigma |cell| z_j^2, to phi_i. With the frame held (every y, phi held) this is the held frame's
 // bed exactly.
+// The ball's load on the bed: the nodes (i, j) of grid g under a disc of radius a (m) about
+// (x, z) from the head's centre, inside the outline, with the weights 1 - r^2/a^2 (a parabolic
+// pressure), normalised to 1; the nearest node alone when the disc covers none (a = 0: a point
+// load). Each entry also says whether the node is an unknown (else it moves with its frame section).
+struct BedPatchNode {
+  PetscInt  i = 0, j = 0;
+  PetscReal w = 0;
+  bool      free = false;
+};
+std::vector<BedPatchNode> BedPatch(const BedGrid &g, PetscReal x, PetscReal z, PetscReal a);
+
 struct BedLayout {
   PetscInt first = -1;   // the bed's first field
   BedGrid  grid;         // its grid (columns: the beam's nodes)
