@@ -13,7 +13,8 @@ caught and classified rather than fatal. Each cell is then one of
                within the tolerances in TOL (ACOR, first contact time, peak force,
                maximum compression, number of contacts, ended-in-contact), with no
                NaN/Inf anywhere in /results, and any physics check of the case (the
-               rigid-body formula Eq. 11, the wall formulas, the energy bound) held;
+               rigid-body formula Eq. 11, the wall formulas, the energy bound, a free
+               racket's three momenta) held;
   clear error  the program exited nonzero with a one-line message that names the
                cause, and the message is one of those the case declares acceptable
                for that integrator (ACCEPT: the right diagnosis for that cell);
@@ -68,6 +69,7 @@ TOL = {
     "reference": 1e-4,       # two tight reference runs must agree to this (ACOR)
     "spin": 1e-3,            # oblique rows: relative, the batted ball's spin (rad/s)
     "launch_angle": 0.05,    # oblique rows: degrees, the batted ball's launch angle
+    "momentum": 1e-9,        # free racket rows: |change| of momentum, angular momentum and roll momentum (normalized, /results)
 }
 
 # Columns of /results that are NaN where they do not apply (the results table, issue 20: a swinging
@@ -140,6 +142,11 @@ BASE = {
 }
 # A bat from options/bats/ replaces the strip: the uniform section's options are removed.
 BAT = {"-beam_length": None, "-beam_youngs_modulus": None, "-beam_density": None, "-beam_thickness": None, "-beam_width": None}
+# A held circular bed (bed_impact.py's defaults, tests/test_racket.cpp: R = 15 cm, 240 N strings
+# 15 mm apart, 1.5 g/m), struck by a linear ball of 57 g, k = 3e4 N/m.
+HELD_BED = {"-strings_frame": "held", "-head_shape": "ellipse", "-head_length": 0.30, "-head_width": 0.30, "-strings_tension": 240.0,
+            "-strings_spacing": 0.015, "-strings_linear_density": 0.0015, "-strings_nodes": 41, "-strings_patch_radius": 0.0165,
+            "-ball_mass": 0.057, "-ball_k": 3e4}
 HYST = {"-ball_law": "hysteresis", "-ball_k": None, "-ball_k1": 2e4, "-ball_m": 1.0, "-ball_n": 1.768}
 
 
@@ -152,7 +159,8 @@ class Case:
     accept   {integrator id or "*": [diagnosis names]}: errors that are the right
              diagnosis for that cell
     per_int  {integrator id: extra options} (placed last: they win)
-    checks   physics checks: "rigid", "wall", "negative_acor", "energy_bound"
+    checks   physics checks: "rigid", "wall", "negative_acor", "energy_bound", "oblique",
+             "momenta" (a free racket: momentum, angular momentum and roll momentum kept)
     """
 
     def __init__(self, cid, title, params, expect="result", accept=None, per_int=None, checks=(),
@@ -174,6 +182,10 @@ class Case:
     def law(self):
         return self.params["-ball_law"]
 
+    def nodes(self):
+        """The grid's nodes along the frame (a held string bed's frame is its -strings_nodes)."""
+        return self.params.get("-beam_nodes", self.params.get("-strings_nodes"))
+
     def args(self):
         out = []
         for k, v in self.params.items():
@@ -188,19 +200,29 @@ class Case:
 
 
 def preset(path):
-    """The options of a ball or bat preset file (options/balls/*.opts, options/bats/*.opts) as
-    {option: value}, so that a matrix row runs the preset's own numbers (no nested -options_file
-    in those files). A file path in it is relative to the preset file, as the program reads it."""
+    """The options of a ball, bat or base file (options/balls/*.opts, options/bats/*.opts,
+    options/base/*.opts) as {option: value}, so that a matrix row runs the preset's own numbers.
+    A nested -options_file is read in its place (options/base/racket-strung.opts includes
+    racket.opts), later lines winning as in the program; a flag is written "true". A file path in
+    it is relative to the preset file, as the program reads it."""
     out = {}
     with open(os.path.join(ROOT, path)) as f:
         for line in f:
             line = line.split("#", 1)[0].split()
-            if line:
-                out[line[0]] = line[1] if len(line) > 1 else ""
+            if not line:
+                continue
+            if line[0] == "-options_file":
+                out.update(preset(os.path.normpath(os.path.join(os.path.dirname(path), line[1]))))
+            else:
+                out[line[0]] = line[1] if len(line) > 1 else "true"  # a flag (-beam_torsion)
     for name in ("-beam_profile", "-beam_properties", "-ball_cor_table"):
         if name in out and not os.path.isabs(out[name]):
             out[name] = os.path.normpath(os.path.join(os.path.dirname(path), out[name]))
     return out
+
+
+# The strung racket of issue 25 (the uniform frame, its roll, the bed), its options written out.
+RACKET = preset("options/base/racket-strung.opts")
 
 
 def fmt(v):
@@ -355,6 +377,31 @@ def cases():
              per_int={"rk4": "-ts_dt {1.02*dtmax_rk4}", "rk5dp": "-ts_adapt_type none -ts_dt {1.02*dtmax_rk5dp}", "*": "-ts_dt {1.02*dtmax_rk4}"},
              accept={"rk4": ["stability"], "rk5dp": ["stability"]},
              why="fixed-step RK refused naming the damped dt_max; implicit types run at that step"),
+        # The racket (issue 25; options/base/racket-strung.opts: the uniform frame that rolls, a
+        # string bed on its head): the bed's membrane dofs and the roll next to the beam's. A held
+        # bed alone; the free racket struck off its axis; a bed 1e3 times tighter, whose grid modes
+        # set the explicit limit (RK4's dt_max 2.5e-7 s against the frame's 3.9e-6 s at 250 N);
+        # the hysteretic tennis ball. The linear rows have the exact modal solution (with the bed's
+        # and the roll's modes); the free racket's three momenta are invariants of every integrator.
+        Case("bed-held", "string bed in a held frame (circle R = 15 cm, N 16000 N/m, 41 nodes), linear ball 57 g, k = 3e4, load on a 16.5 mm disc, centre",
+             {**BAT, **HELD_BED, **{"-beam_nodes": None, "-beam_left": None, "-beam_right": None, "-impact_x": 0.15}},
+             why="the bed alone (a 2-D membrane on the system's fields); the exact modal solution as reference"),
+        Case("racket-offaxis", "free strung racket (racket-strung.opts), linear ball 57 g, k = 2e4, x = 15 cm, 5 cm off the axis",
+             {**BAT, **RACKET, **{"-ball_mass": 0.057, "-ball_radius": 0.0335, "-ball_k": 2e4, "-impact_x": 0.15, "-impact_z": 0.05}},
+             checks=("momenta",), why="the bed on the rolling frame; the exact modal solution as reference; momentum, angular momentum and roll momentum kept"),
+        Case("bed-stiff", "the same racket with the strings' tension x 1e3 (250 kN a string), 3 cm off the axis",
+             {**BAT, **RACKET, **{"-strings_tension": 2.5e5, "-ball_mass": 0.057, "-ball_radius": 0.0335, "-ball_k": 2e4, "-impact_x": 0.15, "-impact_z": 0.03}},
+             checks=("momenta",), why="stiff bed dofs: explicit types step-limited (RK4's default step 15 times finer than "
+                                      "at 250 N, the limit now the bed's), implicit ones not"),
+        Case("bed-stiff-above", "the stiff bed, every type at 1.02 x RK4's limit",
+             {**BAT, **RACKET, **{"-strings_tension": 2.5e5, "-ball_mass": 0.057, "-ball_radius": 0.0335, "-ball_k": 2e4, "-impact_x": 0.15, "-impact_z": 0.03}},
+             per_int={"rk4": "-ts_dt {1.02*dtmax_rk4}", "rk5dp": "-ts_adapt_type none -ts_dt {1.02*dtmax_rk5dp}", "*": "-ts_dt {1.02*dtmax_rk4}"},
+             accept={"rk4": ["stability"], "rk5dp": ["stability"]}, checks=("momenta",), timeout=600,
+             why="the explicit limit counts the bed's fastest modes: a fixed RK step above it is refused naming dt_max; implicit types run at that step"),
+        Case("racket-hysteresis", "free strung racket, the tennis-ball preset (options/base/tennis-ball.opts), x = 15 cm, 5 cm off the axis",
+             {**BAT, **RACKET, **preset("options/base/tennis-ball.opts"),
+              **{"-ball_k": None, "-impact_x": 0.15, "-impact_z": 0.05}},
+             checks=("energy_bound", "momenta"), why="the hysteretic ball on the bed; tight runs as reference"),
     ]
     return c
 
@@ -507,7 +554,7 @@ class Study:
         tight = [("CN at T_r/8000", ["-ts_type", "cn", "-ts_dt", "%.6g" % (tr / 8000)], "cn8000"),
                  ("RK 5dp at -ts_rtol 1e-11", ["-ts_type", "rk", "-ts_rk_type", "5dp", "-ts_rtol", "1e-11", "-ts_atol", "1e-14"], "rk5dp"),
                  ("CN at T_r/4000", ["-ts_type", "cn", "-ts_dt", "%.6g" % (tr / 4000)], "cn4000")]
-        if int(case.params["-beam_nodes"]) > 201:
+        if int(case.nodes()) > 201:
             tight = [t for t in tight if t[2] != "rk5dp"]
         runs = []
         for name, extra, tag in tight:
@@ -608,6 +655,11 @@ def classify(case, cell, ref):
             m[k] = res.get(k, float("nan"))
             if not np.isfinite(m[k]):
                 problems.append("oblique: %s is %s" % (k, m[k]))
+    if "momenta" in case.checks:  # a free racket: momentum, angular momentum and the roll's about the axis
+        for k in ("linear_momentum_error", "angular_momentum_error", "roll_momentum_error"):
+            m[k] = res.get(k, float("nan"))
+            if not abs(m[k]) <= TOL["momentum"]:
+                problems.append("%s %.1e (> %.0e)" % (k, m[k], TOL["momentum"]))
     if "wall" in case.checks:
         # the ball's contact time on a rigid wall (checked for the linear law: pi sqrt(m/k)) and its
         # wall COR (1, or sqrt((m+1)/(n+1)) for the hysteretic law), as the program records them
@@ -704,6 +756,7 @@ def write_markdown(path, study_args, table, refs, integ, all_cases, counts, elap
     add("| rigid limit (`rigid`, `heavy-rigid`) | ACOR within %g of Eq. (11), f = 0, I = M L²/12 |" % TOL["rigid"])
     add("| wall (`wall`, `wall-hyst`) | contact time within %g (relative) of π√(m/k); ACOR within %g of 1 (linear) or √((m+1)/(n+1)) |" % (TOL["wall"], TOL["wall"]))
     add("| hysteretic ball | ACOR² ≤ 1 (energy can only be lost) |")
+    add("| free racket (`racket-*`, `bed-stiff*`) | momentum, angular momentum about x = 0 and about the frame's axis (the roll) conserved: each change, normalized as in /results, within %g |" % TOL["momentum"])
     add("| tight references (hysteretic ball) | two of CN at T_r/8000, RK 5dp at -ts_rtol 1e-11 (N <= 201), CN at T_r/4000 agree within %g in ACOR and in contacts |" % TOL["reference"])
     add("")
     add("References: the exact modal solution (`-reference modal`) for the linear spring; for the hysteretic ball the first "
@@ -849,6 +902,8 @@ cannot roll back a step, and impact points that are held.
 | double and triple impacts near a free end | every column | each contact located; counts match the exact solution |
 | long windows (1 s after the impact) | every column | energy drift over 1 s in the table above: cn/theta conserve the linear system's energy to round-off; bdf 2, arkimex, rosw lose ~3e-5 to 5e-5 of it; alpha2 ~1e-6 |
 | explicit steps at the limit | RK4 at 0.98 dt_max is correct; above dt_max it is refused; adaptive RK 5dp started above its limit recovers | |
+| the racket: a held string bed, the free strung racket struck 5 cm off its axis, the tennis ball on it | every column | every column keeps the free racket's momentum, angular momentum and roll momentum to 1e-11; a held bed's cell takes ~20 s, nearly all of it the exact free flight's 1245 dense modes after the separation |
+| a bed 1e3 times tighter (250 kN a string) | every column | its grid modes set the explicit limit (RK4's dt_max 2.5e-7 s; 3.9e-6 s, the frame's, at 250 N): RK4 takes 20,100 steps (11 s), RK 5dp 30,600 (30 s), the implicit types 375 (3-5 s); a fixed RK step above dt_max is refused |
 
 **Defects this study found, now fixed** (their diagnoses remain as safety nets; no cell needs them):
 
@@ -887,7 +942,8 @@ def write_h5(path, table, refs, all_cases, integ, counts, elapsed, exe):
         g.create_dataset("command", data=[" ".join(shlex.quote(a) for a in table[k][3]) for k in keys], dtype=str_t)
         for col in ("acor", "acor_ref", "acor_error", "contacts", "contact_time", "contact_time_ref", "peak_force",
                     "peak_force_ref", "max_compression", "max_compression_ref", "energy_error", "steps", "rejected_steps",
-                    "failed_solves", "wall_time", "dt_nominal", "dt_stable", "elapsed", "rigid_acor"):
+                    "failed_solves", "wall_time", "dt_nominal", "dt_stable", "elapsed", "rigid_acor",
+                    "linear_momentum_error", "angular_momentum_error", "roll_momentum_error"):
             d = g.create_dataset(col, data=np.array([table[k][2].get(col, np.nan) for k in keys], dtype=float))
             d.attrs["note"] = "NaN: not applicable or no result"
         r = f.create_group("references")
@@ -960,7 +1016,7 @@ def main():
 
     # Longest first (the stiff grids and the long windows), so the pool finishes together.
     def cost(c):
-        return (float(c.params["-beam_nodes"]) ** 2) * (1 + 50 * float(c.params.get("-impact_window", 0.08))) * c.ranks
+        return (float(c.nodes()) ** 2) * (1 + 50 * float(c.params.get("-impact_window", 0.08))) * c.ranks
 
     table, refs = {}, {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
