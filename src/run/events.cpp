@@ -119,6 +119,12 @@ PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta
   const PetscReal step_len = tb - ta; // a located event is within 1e-4 of this: an O(1e-8 dt^2) local error at a C^0 force switch
   bool            at_post  = true;
   int             side     = 0;
+  // The bracket is lost when a re-step to its post end lands on the pre side (another path to
+  // the same time: the event's time moves with the path, by up to the local error): the post
+  // end is then unknown, and steps of doubling length from the least one walk on until the
+  // indicator is past the event, which closes a new bracket.
+  bool            lost     = false;
+  PetscReal       walk     = 0;
 
   PetscFunctionBeginUser;
   for (int it = 0;; ++it) {
@@ -126,19 +132,24 @@ PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta
     if (!at_post && std::abs(ga) <= tol) break; // on the root from the pre-event side: as good
     PetscCheck(it < 100, stepper.Comm(), PETSC_ERR_NOT_CONVERGED, "event %s could not be located in [%g, %g] s with %s (indicator %g -> %g)", ContactEventName(kind), (double)ta, (double)tb,
                stepper.Method().c_str(), (double)ga, (double)gb);
-    PetscReal tn = tb - gb * (tb - ta) / (gb - ga);
-    if (!(tn > ta && tn < tb)) tn = 0.5 * (ta + tb);
-    // Never re-step by a vanishing amount (implicit second-order schemes are ill-conditioned
-    // there): a bracket this narrow is located; take the post side.
     const PetscReal min_step = 1e-4 * step_len;
-    if (tn - ta < min_step) tn = std::min(tb, ta + min_step);
-    if (tb - ta <= 2 * min_step) {
-      if (at_post) break;
-      // The step to tb landed on the pre side this time (another path to the same time: its
-      // round-off; on a grid beyond double precision, N = 40961 with cn, by more than tol): the
-      // bracket has closed to round-off, and a step to tb would be of length 0 (a NaN residual
-      // in an implicit solve). On past tb by the least step instead.
-      tn = tb - ta > 8 * PETSC_MACHINE_EPSILON * std::abs(tb) ? tb : ta + min_step;
+    PetscReal       tn;
+    if (lost) tn = ta + (walk = std::min(2 * walk, step_len));
+    else {
+      tn = tb - gb * (tb - ta) / (gb - ga);
+      if (!(tn > ta && tn < tb)) tn = 0.5 * (ta + tb);
+      // Never re-step by a vanishing amount (implicit second-order schemes are ill-conditioned
+      // there): a bracket this narrow is located; take the post side.
+      if (tn - ta < min_step) tn = std::min(tb, ta + min_step);
+      if (tb - ta <= 2 * min_step) {
+        if (at_post) break;
+        // The step to tb landed on the pre side this time (another path to the same time: its
+        // round-off; on a grid beyond double precision, N = 40961 with cn, by more than tol; at
+        // a coarse implicit step, its local error): the bracket has closed, and a step to tb
+        // would be of length 0 (a NaN residual in an implicit solve). Walk on past tb.
+        if (tb - ta > 8 * PETSC_MACHINE_EPSILON * std::abs(tb)) tn = tb;
+        else lost = true, tn = ta + (walk = min_step);
+      }
     }
     if (at_post) PetscCall(stepper.RollBack());
     PetscCall(stepper.Step(tn - ta));
@@ -153,12 +164,14 @@ PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta
       if (side == 1) ga *= 0.5; // Illinois
       side    = 1;
       at_post = true;
+      lost    = false; // a new bracket [ta, tb]
     } else {
       ta = stepper.Time();
       ga = gv;
       if (side == -1) gb *= 0.5;
       side    = -1;
       at_post = false;
+      if (!lost && ta >= tb * (1 - 8 * PETSC_MACHINE_EPSILON)) lost = true, walk = min_step; // at or past the old post end, still before the event
     }
   }
   PetscFunctionReturn(0);
