@@ -1,10 +1,125 @@
 // Measures of the current state of a stepper. See measures.hpp.
 #include "run/measures.hpp"
 
+#include "solvers/beam_modes.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace beamimpact {
+
+namespace {
+
+// Per-mode weights of the beam's momenta, computed once per basis (ModalMomentaOf). A unit rate
+// of mode k moves free dof r at phi_k[r] / sqrt(m_r) (mass-normalised, solvers/beam_modes.hpp),
+// so its momentum sum m v over the beam's deflections (field 0) is sum_r sqrt(m_r) phi_k[r] and
+// its moment about x = 0 the same with x_r, plus a Timoshenko section's spin sqrt(m_r) phi_k[r]:
+// the sums MeasureState takes over the dofs, moved onto the modes.
+struct ModalMomenta {
+  std::weak_ptr<const BeamModes> basis;
+  std::vector<PetscReal>         momentum, moment; // kg^{1/2}, kg^{1/2} m per mode
+};
+
+const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes)
+{
+  static ModalMomenta last; // the last basis measured: a sweep's points share it
+  if (last.basis.lock() == modes) return last;
+  const BeamSystem  &sys = modes->sys;
+  const ModalSystem &S   = modes->S;
+  const PetscInt     n = S.n, F = sys.fields, nm = modes->Count();
+  std::vector<PetscReal> sm(n), x(n);
+  std::vector<int>       kind(n); // 0: the deflection (field 0), 1: a section's rotation, 2: neither
+  for (PetscInt r = 0; r < n; ++r) {
+    const PetscInt d = S.dof[r], f = d % F;
+    sm[r]            = std::sqrt(S.mass[r]);
+    x[r]             = sys.NodeX(d / F);
+    kind[r]          = f == 0 ? 0 : f == 1 && sys.Rotation(1) ? 1 : 2;
+  }
+  last.momentum.assign(nm, 0.0);
+  last.moment.assign(nm, 0.0);
+  for (PetscInt k = 0; k < nm; ++k) { // compensated sums (Neumaier): a rigid mode's n terms of one sign, its weight to round-off
+    const PetscReal *phi = &modes->B.Phi[(size_t)k * n];
+    PetscReal        p = 0, q = 0, cp = 0, cq = 0;
+    auto             add = [](PetscReal &sum, PetscReal &c, PetscReal a) {
+      const PetscReal t = sum + a;
+      c += std::abs(sum) >= std::abs(a) ? (sum - t) + a : (a - t) + sum;
+      sum = t;
+    };
+    for (PetscInt r = 0; r < n; ++r) {
+      if (kind[r] == 0) add(p, cp, sm[r] * phi[r]), add(q, cq, sm[r] * x[r] * phi[r]);
+      else if (kind[r] == 1) add(q, cq, sm[r] * phi[r]);
+    }
+    last.momentum[k] = p + cp;
+    last.moment[k]   = q + cq;
+  }
+  last.basis = modes;
+  return last;
+}
+
+// Whether the measures of a state held in modes can be taken in them: the energies are then sums
+// over the modes (mass-normalised: kinetic 1/2 sum zd_k^2, strain 1/2 sum w_k^2 z_k^2) and the
+// momenta the projections above. Not with a monitor that asks for the physical state (point
+// velocities, a segment's energy), nor with parts whose energies are kept apart (a barrel wall,
+// the frame's roll, a string bed) or a grip (its springs and the hands' work): those are taken
+// over the dofs.
+// Whether the system has parts whose energies are kept apart from the beam's (a barrel wall, the
+// frame's roll, a string bed): without, their sums are 0 and BeamSystemPartEnergies is not needed.
+bool SeparateParts(const BeamSystem &S)
+{
+  if (S.wall_dof >= 0 || S.shell_first >= 0 || S.roll_field >= 0 || S.bed_first >= 0) return true;
+  for (PetscInt f = 0; f < S.fields; ++f)
+    if (S.PartOf(f) != Part::Beam) return true;
+  return false;
+}
+
+bool MeasuresInModes(const BeamSystem &S, const MeasureContext &ctx, const MonitorRequest *mon)
+{
+  if (mon && (mon->segment || !mon->velocity_at.empty())) return false;
+  return !SeparateParts(S) && !S.Gripped() && !ForceOperatorDriven(S, ctx.frame);
+}
+
+// The measures from the sums over the state (MeasureState's layout of `sums`, G the end of its
+// point velocities) and the bed's largest deflection, with the contact, the ball (m->ball_y and
+// m->ball_v set) and the stepper's dissipation.
+PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, PetscInt G, const std::vector<PetscReal> &sums, PetscReal bed_max, StateMeasures *m, std::vector<PetscReal> *point_v)
+{
+  const BeamSystem &S = *ctx.sys;
+  PetscReal         cdot;
+
+  PetscFunctionBeginUser;
+  PetscCall(stepper.Compression(&m->c, &cdot));
+  const BallParams &ball = *ctx.ball;
+  m->force               = ContactForce(ball, *ctx.contact, m->c);
+  m->c_rate              = cdot;
+  m->force_rate          = ContactStiffness(ball, *ctx.contact, m->c) * cdot;
+  m->ball_kinetic        = 0.5 * ball.mass * m->ball_v * m->ball_v;
+  m->ball_stored         = ContactStoredEnergy(ball, *ctx.contact, m->c);
+  m->ball_work           = ContactWork(ball, *ctx.contact, m->c);
+  m->beam_kinetic        = sums[0] - sums[G + 5]; // without the wall's share (exact: 0 without a wall)
+  m->beam_strain         = sums[1] - sums[G + 4];
+  m->shell_energy        = sums[G + 4] + sums[G + 5];
+  m->wall_deflection     = sums[G + 6];
+  m->twist_energy        = sums[G + 7];
+  m->bed_energy          = sums[G + 8];
+  m->bed_deflection      = bed_max;
+  m->beam_roll           = sums[G + 9];
+  m->roll_momentum       = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
+  m->momentum            = sums[2] + ball.mass * m->ball_v;
+  m->angular_momentum    = sums[3] + ball.mass * ctx.g->x * m->ball_v;
+  m->beam_momentum       = sums[2];
+  m->beam_moment         = sums[3];
+  m->segment_kinetic     = sums[4];
+  m->beam_dissipated     = stepper.Dissipated();
+  m->grip_stored = sums[G];
+  m->grip_force  = sums[G + 2];
+  m->grip_moment = sums[G + 3];
+  if (ForceOperatorDriven(S, ctx.frame)) m->hand_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v - ctx.frame->q0; // 0 for a frame at rest
+  if (point_v) point_v->assign(sums.begin() + 5, sums.begin() + G);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
 
 PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m, std::vector<PetscReal> *point_v)
 {
@@ -15,10 +130,32 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   StateView                           sv;
 
   PetscFunctionBeginUser;
-  PetscCall(stepper.ViewBegin(&sv));
   const PetscInt         np = (PetscInt)points.size();
   const PetscInt         G  = 5 + np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
   std::vector<PetscReal> sums(G + 10, 0.0); // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the roll's momentum
+  if (MeasuresInModes(S, ctx, mon)) { // -ts_type modal after a step: O(modes), without writing the physical state (O(n modes))
+    std::shared_ptr<const BeamModes> modes;
+    ModalState                       ms;
+    bool                             in_modes;
+    PetscCall(stepper.ModalStateUnwritten(&modes, &ms, &in_modes));
+    if (in_modes) {
+      const ModalMomenta &w = ModalMomentaOf(modes);
+      const PetscReal    *omega = modes->B.omega.data();
+      PetscReal           T = 0, U = 0, P = 0, L = 0;
+      for (PetscInt k = 0; k < (PetscInt)ms.z.size(); ++k) {
+        T += ms.zd[k] * ms.zd[k];
+        U += omega[k] * omega[k] * ms.z[k] * ms.z[k];
+        P += w.momentum[k] * ms.zd[k];
+        L += w.moment[k] * ms.zd[k];
+      }
+      sums[0]   = 0.5 * T, sums[1] = 0.5 * U, sums[2] = P, sums[3] = L;
+      m->ball_y = ms.ball_y;
+      m->ball_v = ms.ball_v;
+      PetscCall(MeasuresFinish(stepper, ctx, G, sums, 0.0, m, point_v)); // the same on every rank: no reduction
+      PetscFunctionReturn(0);
+    }
+  }
+  PetscCall(stepper.ViewBegin(&sv));
   ForceState             fs;
   fs.y     = sv.y;
   fs.ys    = sv.y_stride;
@@ -30,11 +167,13 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   ForceOperatorEnergy(S, fs, sv.d0, sv.d1, &sums[1], &sums[G]);
   sums[G + 1] = ForceOperatorFrameMomentum(S, fs, sv.d0, sv.d1);
   ForceOperatorFrameReaction(S, fs, sv.d0, sv.d1, &sums[G + 2], &sums[G + 3]);
-  PetscReal stored[kParts], kinetic[kParts];
-  BeamSystemPartEnergies(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, stored, kinetic);
-  sums[G + 4] = stored[(int)Part::Wall], sums[G + 5] = kinetic[(int)Part::Wall];
-  sums[G + 7] = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
-  sums[G + 8] = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
+  if (SeparateParts(S)) { // else 0
+    PetscReal stored[kParts], kinetic[kParts];
+    BeamSystemPartEnergies(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, stored, kinetic);
+    sums[G + 4] = stored[(int)Part::Wall], sums[G + 5] = kinetic[(int)Part::Wall];
+    sums[G + 7] = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
+    sums[G + 8] = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
+  }
   for (PetscInt q = 0; q < ctx.g->n; ++q) { // the wall's share of the compression: its displacement under the ball, into the bat
     const PetscInt d = ctx.g->dof[q];
     if (S.Wall(d % F) && d >= sv.d0 && d < sv.d1) sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
@@ -78,35 +217,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscCallMPI(MPI_Comm_size(stepper.Comm(), &size));
   if (size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, stepper.Comm()));
   if (size > 1 && S.bed_first >= 0) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bed_max, 1, MPIU_REAL, MPIU_MAX, stepper.Comm()));
-  PetscReal cdot;
-  PetscCall(stepper.Compression(&m->c, &cdot));
-  const BallParams &ball = *ctx.ball;
-  m->force               = ContactForce(ball, *ctx.contact, m->c);
-  m->c_rate              = cdot;
-  m->force_rate          = ContactStiffness(ball, *ctx.contact, m->c) * cdot;
-  m->ball_kinetic        = 0.5 * ball.mass * m->ball_v * m->ball_v;
-  m->ball_stored         = ContactStoredEnergy(ball, *ctx.contact, m->c);
-  m->ball_work           = ContactWork(ball, *ctx.contact, m->c);
-  m->beam_kinetic        = sums[0] - sums[G + 5]; // without the wall's share (exact: 0 without a wall)
-  m->beam_strain         = sums[1] - sums[G + 4];
-  m->shell_energy        = sums[G + 4] + sums[G + 5];
-  m->wall_deflection     = sums[G + 6];
-  m->twist_energy        = sums[G + 7];
-  m->bed_energy          = sums[G + 8];
-  m->bed_deflection      = bed_max;
-  m->beam_roll           = sums[G + 9];
-  m->roll_momentum       = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
-  m->momentum            = sums[2] + ball.mass * m->ball_v;
-  m->angular_momentum    = sums[3] + ball.mass * ctx.g->x * m->ball_v;
-  m->beam_momentum       = sums[2];
-  m->beam_moment         = sums[3];
-  m->segment_kinetic     = sums[4];
-  m->beam_dissipated     = stepper.Dissipated();
-  m->grip_stored = sums[G];
-  m->grip_force  = sums[G + 2];
-  m->grip_moment = sums[G + 3];
-  if (ForceOperatorDriven(S, ctx.frame)) m->hand_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v - ctx.frame->q0; // 0 for a frame at rest
-  if (point_v) point_v->assign(sums.begin() + 5, sums.begin() + G);
+  PetscCall(MeasuresFinish(stepper, ctx, G, sums, bed_max, m, point_v));
   PetscFunctionReturn(0);
 }
 

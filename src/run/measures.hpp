@@ -1,5 +1,7 @@
 // Energies, momenta, point velocities and the contact of the current state of any stepper
-// (identical on every rank: one reduction for all).
+// (identical on every rank: one reduction for all). A state the stepper holds in its modes
+// (-ts_type modal after a step) is measured in them, O(modes), where no monitor asks for the
+// physical state and no part's energy is kept apart: the same measures to round-off.
 #pragma once
 
 #include "run/impact.hpp"

@@ -103,6 +103,17 @@ public:
     *done = false;
     return 0;
   }
+  // The current state in the stepper's own modes (*modes, its basis) where reading the physical
+  // state (ViewBegin) would first write it from them, O(n k): -ts_type modal after a step, the
+  // physical state the modes' expansion alone (no static shape of the modes left out under a
+  // contact force). The measures then take it in modes (run/measures.cpp). *done false otherwise
+  // (the physical state is current, or the stepper has no modes): read the physical state. Collective.
+  virtual PetscErrorCode ModalStateUnwritten(std::shared_ptr<const BeamModes> *modes, ModalState *s, bool *done)
+  {
+    (void)modes, (void)s;
+    *done = false;
+    return 0;
+  }
 };
 
 } // namespace beamimpact

@@ -746,6 +746,27 @@ PetscErrorCode GetState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<Pets
   PetscFunctionReturn(0);
 }
 
+// The modal state when the physical vector does not hold it and would be its expansion alone:
+// not written since the last step or modal state set (writing it is O(n k)), and no static shape
+// of the modes left out in it (every mode kept, or no contact force). *done false otherwise.
+PetscErrorCode UnwrittenState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done)
+{
+  ModalTS &m = *Data(ts);
+
+  PetscFunctionBeginUser;
+  *done = PETSC_FALSE;
+  if (!m.P || !ts->vec_sol) PetscFunctionReturn(0);
+  PetscCall(Reconcile(ts)); // an outside write is projected (then the vector holds the state)
+  if (m.phys_valid) PetscFunctionReturn(0);
+  if (m.Gr > 0 && ContactForce(m.P->ball, *m.P->contact, CompressionNow(m, nullptr)) != 0.0) PetscFunctionReturn(0);
+  z->assign(m.z.begin(), m.z.end());
+  zd->assign(m.zd.begin(), m.zd.end());
+  *yb   = m.yb;
+  *vb   = m.vb;
+  *done = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
 // The modal state replaced; the physical vector left as it is, marked stale (written from the
 // modes at its next read) and its object state recorded, so that Reconcile does not take it
 // for an outside write and project it back.
@@ -801,6 +822,7 @@ PetscErrorCode TSDestroy_Modal(TS ts)
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalNewPoint_C", nullptr));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetState_C", nullptr));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSetState_C", nullptr));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetUnwrittenState_C", nullptr));
   PetscFunctionReturn(0);
 }
 
@@ -939,6 +961,7 @@ PetscErrorCode TSCreate_Modal(TS ts)
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalNewPoint_C", NewPoint_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetState_C", GetState_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSetState_C", SetState_Modal));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetUnwrittenState_C", UnwrittenState_Modal));
   PetscFunctionReturn(0);
 }
 
@@ -1021,6 +1044,17 @@ PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std
   PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalSetState_C", &f));
   *done = f ? PETSC_TRUE : PETSC_FALSE;
   if (f) PetscCall((*f)(ts, z, zd, yb, vb));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done)
+{
+  PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *, PetscReal *, PetscBool *) = nullptr;
+
+  PetscFunctionBeginUser;
+  *done = PETSC_FALSE;
+  PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalGetUnwrittenState_C", &f));
+  if (f) PetscCall((*f)(ts, z, zd, yb, vb, done));
   PetscFunctionReturn(0);
 }
 

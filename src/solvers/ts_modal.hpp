@@ -69,5 +69,11 @@ PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<Pet
 // run/free_flight.hpp): O(modes); the physical vector is written from it when next read (no
 // projection). The caller sets the time and restarts. Collective; *done false for any other type.
 PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb, PetscReal vb, PetscBool *done);
+// The modal state as TSModalGetState gives it, but only where reading the physical vector would
+// first write it from the modes (O(n k): after a step or TSModalSetState, before any read) and it
+// would be their expansion alone (every mode kept, or no contact force on the static shape of the
+// modes left out): the measures then take it in modes (run/measures.cpp). *done false otherwise
+// (the vector holds the state: read it), and for any other type. Collective.
+PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done);
 
 } // namespace beamimpact

@@ -277,6 +277,7 @@ public:
   PetscErrorCode SetState(PetscReal t, const FullState &s) override;
   PetscErrorCode GetModalState(const BeamModes &m, ModalState *s, bool *done) override;
   PetscErrorCode SetModalState(PetscReal t, const BeamModes &m, const ModalState &s, bool *done) override;
+  PetscErrorCode ModalStateUnwritten(std::shared_ptr<const BeamModes> *modes, ModalState *s, bool *done) override;
   PetscErrorCode ViewBegin(StateView *v) override;
   PetscErrorCode ViewEnd(StateView *v) override;
   PetscErrorCode GatherFields(PetscInt f0, PetscInt nf, std::vector<PetscReal> *y) override;
@@ -391,6 +392,20 @@ PetscErrorCode TSStepper::SetModalState(PetscReal t, const BeamModes &m, const M
   PetscCall(TSSetTime(ts, t));
   if (damped) D.Set(s.dissipated);
   *done = true;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::ModalStateUnwritten(std::shared_ptr<const BeamModes> *modes, ModalState *s, bool *done)
+{
+  PetscBool ok = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  *done  = false;
+  *modes = TSModalModes(ts);
+  if (!*modes) PetscFunctionReturn(0);
+  PetscCall(TSModalGetUnwrittenState(ts, &s->z, &s->zd, &s->ball_y, &s->ball_v, &ok));
+  s->dissipated = D.dissipated;
+  *done         = ok;
   PetscFunctionReturn(0);
 }
 
