@@ -151,7 +151,8 @@ TEST(SweepReuse, StructureAxisRebuilds)
   struct Case {
     const char *sweep, *what;
   };
-  for (const Case &c : {Case{"beam_nodes=41;61,impact_x=0.4:0.9:3", "beam_nodes"}, Case{"beam_thickness=0.006;0.008,impact_x=0.4:0.9:3", "beam_thickness"}}) {
+  for (const Case &c : {Case{"beam_nodes=41;61,impact_x=0.4:0.9:3", "beam_nodes"}, Case{"beam_thickness=0.006;0.008,impact_x=0.4:0.9:3", "beam_thickness"},
+                        Case{"ts_dt=2e-5;1e-5,impact_x=0.4:0.9:3", "ts_dt"}}) { // the integrator's: a new context key too (ImpactStructure)
     Database   d(PaperSweep(c.sweep, {{"-ts_type", "modal"}}));
     const Rows fresh = RunAll(false), kept = RunAll(true);
     ExpectSameRows(kept, fresh, 2, c.what);

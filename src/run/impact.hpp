@@ -296,9 +296,12 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &scenario, ImpactResult *
 // The system of one structure, kept by a caller whose next runs are on the same beam (a sweep's
 // points on one structure): ImpactRun with it uses `sys` when set, which must be the system of
 // the scenario's beam (BeamSystemBuild of scenario.beam: the caller's promise), and else builds
-// the system and leaves it there. Reset it when the beam changes.
+// the system and leaves it there; likewise the key of the integrator's context (TSStepperSettings::
+// context_key: the caller promises the integrator's options unchanged too). Reset both (a new
+// ImpactStructure) when the beam or any option outside the point's own changes.
 struct ImpactStructure {
   std::shared_ptr<const BeamSystem> sys;
+  std::string                       stepper_key; // the integrator context's key (empty: not computed yet)
 };
 PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &scenario, ImpactResult *result, ImpactStructure *structure);
 

@@ -478,6 +478,7 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res
   set.strict_solver_options = sc.impact.strict_solver_options;
   set.modes_cost_warn       = sc.impact.report_setup ? sc.impact.cost_warn : 0; // as FreeFlightTruncation
   set.modes_progress        = sc.impact.report_setup ? sc.impact.progress : 0;
+  set.context_key           = structure ? &structure->stepper_key : nullptr;
   PetscCall(TSStepperCreate(comm, s.sys(), s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
   stage.End(); // ImpactDrive holds the contact and free-flight stages
   if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys(), s.scales, *res));

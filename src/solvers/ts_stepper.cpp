@@ -893,7 +893,11 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   PetscCall(TSCheckTypeKnown(type, comm));
   // A run that checks its options builds its own TS (the check is of what that set-up read).
   const bool cacheable = !set.check_unused_options;
-  if (cacheable) PetscCall(TSContextKey(comm, sys, type, &key));
+  if (cacheable && set.context_key && !set.context_key->empty()) key = *set.context_key;
+  else if (cacheable) {
+    PetscCall(TSContextKey(comm, sys, type, &key)); // every option of the database, joined and split
+    if (set.context_key) *set.context_key = key;
+  }
   std::shared_ptr<TSContext> C     = cacheable ? TSContextFind(key) : nullptr;
   const bool                 reuse = C != nullptr;
   if (!reuse) C = std::make_shared<TSContext>();

@@ -22,6 +22,11 @@ struct TSStepperSettings {
   // modes_cost_warn, and a progress line every modes_progress during a partial solve (s of wall
   // time; 0: none), as the free flight's (-impact_cost_warn, -impact_progress with report_setup)
   PetscReal modes_cost_warn = 0, modes_progress = 0;
+  // The key of the integrator's context (its communicator, grid, type and the -ts_, -snes_, -ksp_,
+  // -pc_, -mat_ options) kept by a caller whose runs change none of these (a sweep's points on one
+  // structure: ImpactStructure): used when not empty, else computed from the options database and
+  // stored there. nullptr: computed for this run.
+  std::string *context_key = nullptr;
 };
 
 // Creates the stepper at t = 0 with the beam undeformed, moving with beam_velocity (per dof;

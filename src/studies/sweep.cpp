@@ -70,7 +70,7 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
     ImpactStructure *structure   = nullptr;
     if (reuse) { // the structure's system, unless this point is on another beam
       const PetscReal radius = c.beam.shell.contact_radius, patch = c.beam.strings.patch_radius; // follow the ball: a new one is a new system
-      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0 || std::memcmp(&patch, &reuse->patch_radius, sizeof patch) != 0) reuse->structure.sys.reset();
+      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0 || std::memcmp(&patch, &reuse->patch_radius, sizeof patch) != 0) reuse->structure = ImpactStructure();
       reuse->shell_radius = radius;
       reuse->patch_radius = patch;
       structure           = &reuse->structure;
