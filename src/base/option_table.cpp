@@ -333,6 +333,14 @@ bool PrintsHelp(PetscOptionItems *PetscOptionsObject)
   return PetscOptionsObject->printhelp && PetscOptionsObject->count == 1 && !PetscOptionsObject->alreadyprinted;
 }
 
+// The help text handed to PETSc with a value: with its unit where PETSc prints it (-help) or
+// keeps it (a published block's first pass), else none (PETSc does not read it then: a sweep's
+// point reads its modules again without building every option's text).
+std::string HelpForPetsc(PetscOptionItems *PetscOptionsObject, const OptionSpec &s)
+{
+  return PrintsHelp(PetscOptionsObject) || PetscOptionsObject->count < 1 ? HelpWithUnit(s) : std::string();
+}
+
 } // namespace
 
 PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscReal *value, PetscBool *set)
@@ -349,7 +357,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
     PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: it must be a number; %s", name, written.c_str(), s->Allowed().c_str());
     PetscCall(CheckReal(*s, written, v));
   }
-  PetscCall(PetscOptionsReal(name, HelpWithUnit(*s).c_str(), "", *value, value, &given));
+  PetscCall(PetscOptionsReal(name, HelpForPetsc(PetscOptionsObject, *s).c_str(), "", *value, value, &given));
   if (given) *value = v; // PETSc's parse agrees; the checked value is the one kept
   LogNumber(*s, *value, given);
   if (set) *set = given;
@@ -376,7 +384,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
     std::snprintf(digits, sizeof digits, "%lld", (long long)v);
     if (written != digits) PetscCall(PetscOptionsSetValue(NULL, name, digits));
   }
-  PetscCall(PetscOptionsInt(name, HelpWithUnit(*s).c_str(), "", *value, value, &given));
+  PetscCall(PetscOptionsInt(name, HelpForPetsc(PetscOptionsObject, *s).c_str(), "", *value, value, &given));
   Log(*s, std::to_string((long long)*value), (double)*value, {}, given);
   if (set) *set = given;
   PetscFunctionReturn(0);

@@ -881,7 +881,9 @@ PetscErrorCode PointSetUp(TS ts)
   }
   PetscCall(m.modes->StaticCorrection(g, &m.corr));
   m.Gr = m.corr->Gr;
-  PetscCall(PetscInfo(ts, "%s\n", BeamModesSummary(*m.modes, m.corr).c_str()));
+  PetscBool info;
+  PetscCall(PetscInfoEnabled(TS_CLASSID, &info)); // the summary's text only for -info (a sweep's points: not formatted)
+  if (info) PetscCall(PetscInfo(ts, "%s\n", BeamModesSummary(*m.modes, m.corr).c_str()));
   if (same_count)
     for (StepWeights &w : m.weights) w.h = -1, w.used = 0; // refilled as new (no length matches -1)
   else m.weights.clear();
