@@ -97,6 +97,29 @@ TEST(ContextReuse, SecondOrderNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "
 // at each point) and every mode.
 TEST(ContextReuse, Modal) { ExpectReuseIsFresh({{"-ts_type", "modal"}, {"-modal_tolerance", "1e-4"}}); }
 TEST(ContextReuse, ModalNonlinearLaw) { ExpectReuseIsFresh({{"-ts_type", "modal"}, {"-ts_modal_order", "2"}}, "options/base/superball-hysteresis.opts"); }
+// -ts_type modal: a point after another with the same ball (the same nominal step) folds its
+// gamma_k into the parts of that step's weights the first point kept (ts_modal.cpp, StepShapes)
+// instead of computing them: bit for bit its fresh run, undamped and damped (each mode's exact
+// damped response), at order 4 and 2.
+TEST(ContextReuse, ModalNominalStepShapes)
+{
+  for (const char *order : {"4", "2"})
+    for (PetscReal alpha : {0.0, 2.0}) {
+      const Opts  ts   = {{"-ts_type", "modal"}, {"-ts_modal_order", order}};
+      std::string what = std::string("modal order ") + order + (alpha > 0 ? ", damped" : "");
+      Scenario    a = Scene(0.825, 1.0), b = Scene(0.3, 1.0);
+      for (Scenario *sc : {&a, &b}) sc->beam.damping_mass = alpha, sc->beam.damping_stiffness = alpha > 0 ? 2e-6 : 0.0;
+      ASSERT_EQ(TSStepperContextCacheClear(), 0);
+      const ImpactResult fresh = RunImpact(b, ts);
+      ASSERT_EQ(TSStepperContextCacheClear(), 0);
+      (void)RunImpact(a, ts);
+      const ImpactResult again = RunImpact(b, ts);
+      ASSERT_EQ(fresh.dt_nominal, again.dt_nominal) << what;
+      ExpectSameRow(fresh, again, what);
+      EXPECT_GT(again.beam_dissipated_end, alpha > 0 ? 0.0 : -1.0) << what;
+    }
+}
+
 TEST(ContextReuse, AssembledLU) { ExpectReuseIsFresh({{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}, {"-pc_type", "lu"}}); }
 
 // Another beam on the same grid (a sweep over the thickness): the context is reused, but not

@@ -122,6 +122,19 @@ struct StepWeights {
 };
 constexpr size_t kWeightsCache = 8; // the nominal step and a few event steps
 
+// The parts of a step's weights that do not depend on the contact point (gamma_k), per mode, for
+// one step length: the free propagator, the first row over h/2 (order 4), the forced responses
+// at h (R, V) and the forced displacements W sums over the modes (an undamped mode: at node
+// tau_i h of the basis function l_j, X[3 (i - 1) + j]; a damped one: of the monomial q,
+// X[2 q + i - 1]). Kept for the nominal step across the points on one basis (WeightsOf): the
+// next point folds its gamma_k in, O(modes), without a sincos per mode; the same numbers.
+struct StepShapes {
+  PetscReal              h     = -1; // s (-1: none kept)
+  PetscInt               order = 0;
+  std::vector<PetscReal> a0, a1, a2, a3, m0, m1;
+  std::vector<PetscReal> R[3], V[3], X[6];
+};
+
 struct ModalTS {
   PetscInt order = 4;
   // Set up once (TSSetUp_Modal).
@@ -136,6 +149,8 @@ struct ModalTS {
   std::vector<PetscInt>            free_of;                    // beam dof -> free dof (-1: held)
   std::vector<StepWeights>         weights;                    // at most kWeightsCache slots
   unsigned long                    uses = 0;
+  StepShapes                       shapes;                     // the nominal step's, across points
+  bool                             keep_shapes = false;        // the point's first weights computed: keep their shapes
   // The modal state and the start of the last step (rollback); the compression c = y_b -
   // gamma . z and its rate at the current state (c_valid) and at the start of the last step.
   std::vector<PetscReal> z, zd, z0, zd0;
@@ -162,20 +177,39 @@ const PetscReal kTau2[2] = {0, 1}, kTau4[3] = {0, 0.5, 1};
 const PetscReal kL2[2][3] = {{1, -1, 0}, {0, 1, 0}};
 const PetscReal kL4[3][3] = {{1, -3, 2}, {0, 4, -4}, {0, -1, 2}};
 
-// The weights of a step of length h into W (its arrays sized already), for s = StageCount
-// nodes (a template: the small loops over nodes and powers unroll into registers).
+// The ball's share of a step's weights (y_b'' = -F/m_b; int_0^t (t - u) u^q du = t^(q+2)/((q+1)(q+2)),
+// int_0^t u^q du = t^(q+1)/(q+1)), added to the modes' Wacc, which is then W.W.
 template <PetscInt s>
-void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W)
+void WeightsBall(const ModalTS &m, PetscReal h, const PetscReal hq[3], PetscReal Wacc[3][3], StepWeights &W)
+{
+  const PetscReal *tau = s == 2 ? kTau2 : kTau4;
+  auto             Lc  = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
+  const PetscReal  mb  = m.P->ball.mass;
+  for (PetscInt i = 0; i < 3; ++i) W.by[i] = W.bv[i] = 0;
+  for (PetscInt q = 0; q < s; ++q) {
+    for (PetscInt j = 0; j < s; ++j) {
+      W.by[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q];
+      W.bv[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 1) / (q + 1) / hq[q];
+      for (PetscInt i = 1; i < s; ++i) Wacc[i][j] += Lc(j, q) * std::pow(tau[i] * h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q] / mb;
+    }
+  }
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < 3; ++j) W.W[i][j] = Wacc[i][j];
+}
+
+// The weights of a step of length h into W (its arrays sized already), for s = StageCount
+// nodes (a template: the small loops over nodes and powers unroll into registers); with Sh (its
+// arrays sized) also their parts free of gamma_k (StepShapes, for WeightsFold).
+template <PetscInt s>
+void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W, StepShapes *Sh)
 {
   const PetscInt   n    = m.n;
   const PetscReal *tau  = s == 2 ? kTau2 : kTau4;
   auto             Lc   = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
-  const PetscReal  mb   = m.P->ball.mass;
   PetscReal        coef[3][3] = {{0}}; // l_j(s/h) = sum_q coef[j][q] s^q
   PetscReal        hq[3] = {1, h, h * h};
   PetscReal        Wacc[3][3] = {{0}}; // W.W, accumulated here (not through memory the stores below may alias)
   W.h = h;
-  for (PetscInt i = 0; i < 3; ++i) W.by[i] = W.bv[i] = 0;
   for (PetscInt j = 0; j < s; ++j)
     for (PetscInt q = 0; q < s; ++q) coef[j][q] = Lc(j, q) / hq[q];
   for (PetscInt k = 0; k < n; ++k) {
@@ -198,7 +232,10 @@ void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W)
         if (i == s - 1) {
           W.a0[k] = u.c, W.a1[k] = t * u.sinc, W.a2[k] = -w * u.sn, W.a3[k] = u.c;
           W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
-        } else W.gm0[k] = gk * u.c, W.gm1[k] = gk * (t * u.sinc);
+        } else {
+          W.gm0[k] = gk * u.c, W.gm1[k] = gk * (t * u.sinc);
+          if (Sh) Sh->m0[k] = u.c, Sh->m1[k] = t * u.sinc;
+        }
         for (PetscInt j = 0; j < s; ++j) {
           PetscReal zz = 0, v = 0;
           for (PetscInt q = 0; q < s; ++q) {
@@ -206,22 +243,27 @@ void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W)
             v += coef[j][q] * rv[q];
           }
           Wacc[i][j] += g2 * zz;
+          if (Sh) Sh->X[3 * (i - 1) + j][k] = zz;
           if (i == s - 1) {
             W.R[j][k] = gk * zz;
             W.V[j][k] = gk * v;
+            if (Sh) Sh->R[j][k] = zz, Sh->V[j][k] = v;
           }
         }
       }
+      if (Sh) Sh->a0[k] = W.a0[k], Sh->a1[k] = W.a1[k], Sh->a2[k] = W.a2[k], Sh->a3[k] = W.a3[k];
       continue;
     }
     ModalModeAt(w, sg, 1.0, 0.0, h, &W.a0[k], &W.a2[k]);
     ModalModeAt(w, sg, 0.0, 1.0, h, &W.a1[k], &W.a3[k]);
     W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
+    if (Sh) Sh->a0[k] = W.a0[k], Sh->a1[k] = W.a1[k], Sh->a2[k] = W.a2[k], Sh->a3[k] = W.a3[k];
     if (s == 3) {
       PetscReal dummy, am0, am1;
       ModalModeAt(w, sg, 1.0, 0.0, 0.5 * h, &am0, &dummy);
       ModalModeAt(w, sg, 0.0, 1.0, 0.5 * h, &am1, &dummy);
       W.gm0[k] = gk * am0, W.gm1[k] = gk * am1;
+      if (Sh) Sh->m0[k] = am0, Sh->m1[k] = am1;
     }
     PetscReal Rk[3] = {0, 0, 0}, Vk[3] = {0, 0, 0};
     for (PetscInt q = 0; q < s; ++q) { // the monomial (s/h)^q
@@ -235,20 +277,44 @@ void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W)
         PetscReal rzi = rz, rvi;
         if (tau[i] != 1.0) ModeForced(w, sg, (int)q, tau[i] * h, &rzi, &rvi);
         for (PetscInt j = 0; j < s; ++j) Wacc[i][j] += g2 * Lc(j, q) * rzi / hq[q];
+        if (Sh) Sh->X[2 * q + i - 1][k] = rzi;
       }
     }
     for (PetscInt j = 0; j < s; ++j) W.R[j][k] = gk * Rk[j], W.V[j][k] = gk * Vk[j];
+    if (Sh)
+      for (PetscInt j = 0; j < s; ++j) Sh->R[j][k] = Rk[j], Sh->V[j][k] = Vk[j];
   }
-  // The ball: y_b'' = -F/m_b; int_0^t (t - u) u^q du = t^(q+2)/((q+1)(q+2)), int_0^t u^q du = t^(q+1)/(q+1).
-  for (PetscInt q = 0; q < s; ++q) {
-    for (PetscInt j = 0; j < s; ++j) {
-      W.by[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q];
-      W.bv[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 1) / (q + 1) / hq[q];
-      for (PetscInt i = 1; i < s; ++i) Wacc[i][j] += Lc(j, q) * std::pow(tau[i] * h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q] / mb;
+  WeightsBall<s>(m, h, hq, Wacc, W);
+}
+
+// The weights of a step of length h from the parts of it kept free of gamma_k (Sh, computed by
+// WeightsCompute for the same basis, order and h): gamma_k folded in with the same operations in
+// the same order, so the same numbers, O(modes) without a sincos.
+template <PetscInt s>
+void WeightsFold(const ModalTS &m, const StepShapes &Sh, StepWeights &W)
+{
+  const PetscInt  n  = m.n;
+  const PetscReal h  = Sh.h;
+  auto            Lc = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
+  PetscReal       hq[3] = {1, h, h * h};
+  PetscReal       Wacc[3][3] = {{0}};
+  W.h = h;
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal gk = m.gamma[k], g2 = gk * gk;
+    W.a0[k] = Sh.a0[k], W.a1[k] = Sh.a1[k], W.a2[k] = Sh.a2[k], W.a3[k] = Sh.a3[k];
+    W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
+    if (s == 3) W.gm0[k] = gk * Sh.m0[k], W.gm1[k] = gk * Sh.m1[k];
+    if (m.sigma[k] == 0.0) {
+      for (PetscInt i = 1; i < s; ++i)
+        for (PetscInt j = 0; j < s; ++j) Wacc[i][j] += g2 * Sh.X[3 * (i - 1) + j][k];
+    } else {
+      for (PetscInt q = 0; q < s; ++q)
+        for (PetscInt i = 1; i < s; ++i)
+          for (PetscInt j = 0; j < s; ++j) Wacc[i][j] += g2 * Lc(j, q) * Sh.X[2 * q + i - 1][k] / hq[q];
     }
+    for (PetscInt j = 0; j < s; ++j) W.R[j][k] = gk * Sh.R[j][k], W.V[j][k] = gk * Sh.V[j][k];
   }
-  for (PetscInt i = 0; i < 3; ++i)
-    for (PetscInt j = 0; j < 3; ++j) W.W[i][j] = Wacc[i][j];
+  WeightsBall<s>(m, h, hq, Wacc, W);
 }
 
 // The weights of a step of length h: from the cache, else computed into the least recently
@@ -270,8 +336,24 @@ const StepWeights &WeightsOf(ModalTS &m, PetscReal h)
     for (std::vector<PetscReal> *v : {&W->a0, &W->a1, &W->a2, &W->a3, &W->gm0, &W->gm1, &W->g0, &W->g1}) v->assign(n, 0.0);
     for (int j = 0; j < 3; ++j) W->R[j].assign(n, 0.0), W->V[j].assign(n, 0.0);
   } else W = &*std::min_element(m.weights.begin(), m.weights.end(), [](const StepWeights &a, const StepWeights &b) { return a.used < b.used; });
-  if (m.order == 2) WeightsCompute<2>(m, h, *W);
-  else WeightsCompute<3>(m, h, *W);
+  // The point's first step (the nominal one): folded from the shapes kept by an earlier point on
+  // this basis, else computed and its shapes kept for the next point. Other lengths: computed.
+  if (m.shapes.h == h && m.shapes.order == m.order) {
+    if (m.order == 2) WeightsFold<2>(m, m.shapes, *W);
+    else WeightsFold<3>(m, m.shapes, *W);
+  } else {
+    StepShapes *keep = m.keep_shapes ? &m.shapes : nullptr;
+    if (keep) {
+      keep->h     = h;
+      keep->order = m.order;
+      for (std::vector<PetscReal> *v : {&keep->a0, &keep->a1, &keep->a2, &keep->a3, &keep->m0, &keep->m1}) v->assign((size_t)m.n, 0.0);
+      for (int j = 0; j < 3; ++j) keep->R[j].assign((size_t)m.n, 0.0), keep->V[j].assign((size_t)m.n, 0.0);
+      for (int j = 0; j < 6; ++j) keep->X[j].assign((size_t)m.n, 0.0);
+    }
+    if (m.order == 2) WeightsCompute<2>(m, h, *W, keep);
+    else WeightsCompute<3>(m, h, *W, keep);
+  }
+  m.keep_shapes = false;
   W->used = m.uses;
   m.weight_sets++;
   return *W;
@@ -840,6 +922,7 @@ PetscErrorCode PointSetUp(TS ts)
 
   PetscFunctionBeginUser;
   PetscCheck(BeamModesAvailable(sys, &why), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP, "-ts_type modal needs the beam's modes: %s; use another -ts_type", why.c_str());
+  const BeamModes *before = m.modes.get(); // alive until replaced: another basis has another address
   {
     ModalTruncation tr;
     PetscCall(ModalTruncationFromOptions(PetscObjectComm((PetscObject)ts), &tr));
@@ -887,6 +970,8 @@ PetscErrorCode PointSetUp(TS ts)
   if (same_count)
     for (StepWeights &w : m.weights) w.h = -1, w.used = 0; // refilled as new (no length matches -1)
   else m.weights.clear();
+  if (m.modes.get() != before) m.shapes.h = -1; // the shapes are the basis' (omega_k, sigma_k)
+  m.keep_shapes = true;
   m.have_modal = m.have_step = m.phys_valid = m.c_valid = false;
   PetscFunctionReturn(0);
 }
@@ -924,7 +1009,7 @@ PetscErrorCode TSSetFromOptions_Modal(TS ts, PetscOptionItems *PetscOptionsObjec
   PetscCall(PetscOptionsInt("-ts_modal_order", "Order: 2 (force linear over the step, trapezoidal collocation) or 4 (force quadratic, Lobatto collocation at 0, h/2, h); the beam's modes are exact for the force", "TSModal", order, &order, &flg));
   PetscOptionsHeadEnd();
   PetscCheck(order == 2 || order == 4, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "-ts_modal_order %" PetscInt_FMT " is not allowed: use 2 or 4", order);
-  if (order != m.order) m.weights.clear();
+  if (order != m.order) m.weights.clear(), m.shapes.h = -1;
   m.order = order;
   PetscFunctionReturn(0);
 }
