@@ -17,11 +17,14 @@
 // costs O(modes) in two passes over the modes (no allocation), from weights cached per step
 // length in a few reused slots (least recently used refilled; one sincos per undamped mode for
 // each new length: the nominal step and the event location's steps; the coupling gamma_k
-// folded into the weights). The compression at the step's end comes out of the update pass and
+// folded into the weights). The nominal step's parts free of gamma_k are kept across the points
+// on one basis, so a sweep's next point only folds its gamma_k in (O(modes), no sincos). The
+// compression at the step's end comes out of the update pass and
 // is kept until the state changes. The physical vector TSGetSolution returns is
 // written from the modes only when it is read (TSModalSyncSolution, O(n^2 / ranks): the dense
 // modes); the driver's per-step read, the compression, is answered from the modal state
-// (TSModalCompression, O(1) after a step), and so is the damped beam's dissipation rate. A write
+// (TSModalCompression, O(1) after a step), and so are the damped beam's dissipation rate and
+// the end of a run's measures (TSModalGetUnwrittenState: energies and momenta in modes). A write
 // into the physical vector from outside (the initial state, SetState after a free flight) is
 // detected (object state and an O(N) comparison with the last written copy) and projected on
 // the modes at the next step (O(n^2), once), unless it changed the vector by round-off only
