@@ -507,8 +507,8 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
   if (damped) {
     PetscCall(ModalDampedBasisBuild(S, true, &damped_contact));
     PetscCall(ModalDampedBasisBuild(S, false, &damped_free));
-  } else PetscCall(ModalBasisBuild(S, true, &contact_basis));
-  PetscCall(ModalBasisBuild(S, false, &free_basis));
+  } else PetscCall(ModalBasisBuild(S, true, &contact_basis, truncation.refine_all));
+  PetscCall(ModalBasisBuild(S, false, &free_basis, truncation.refine_all));
 
   const ImpactTimes times = ImpactTimesOf(sc.beam, ball, ip);
   run.S                   = &S;

@@ -65,7 +65,7 @@ void ExactRigidModes(BeamModes *m)
 // The truncation as it decides the basis: the kind, the count, the cut-off.
 bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
 {
-  return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) && (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff());
+  return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) && (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff()) && a.refine_all == b.refine_all;
 }
 
 // One cache per group of processes (the ranks of MPI_COMM_WORLD a communicator holds, in its
@@ -177,14 +177,46 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 namespace {
 
 // The time models of the decompositions, in CPU seconds measured on the development machine
-// (reference BLAS; docs/convergence.md; on a loaded machine the wall time is a few times more):
-// the dense one (dsyevd and the refinement) per free dof cubed (the R161's whole run at
-// n = 2562: 41.8 s, at n = 1282: 4.3 s); a partial eigen-solve per free dof per mode asked
-// squared (Krylov-Schur's orthogonalisation dominates; 300 of 1282 free dofs 1.18 s, of 2562
-// 2.04 s; measured for nev <= n/4). The dense one is chosen where it is expected to be quicker:
-// above n sqrt(kDense/kPartial) = n/2 modes.
-constexpr double kDenseModesCost   = 2.5e-9; // s
-constexpr double kPartialSolveCost = 1e-8;   // s
+// (reference BLAS; docs/convergence.md; on a loaded machine the wall time is a few times more),
+// which depend on the band through the refinement (solvers/modal_basis.hpp):
+// * Where every mode is refined (ModalRefinesEveryMode: a beam's narrow band), the dense one
+//   (dsyevd, then Gram-Schmidt and the refinement over every mode) per free dof cubed (the
+//   R161's whole run at n = 2562: 41.8 s, at n = 1282: 4.3 s); a partial eigen-solve and its
+//   refinement per free dof per mode asked squared (Krylov-Schur's orthogonalisation dominates;
+//   300 of 1282 free dofs 1.18 s, of 2562 2.04 s; measured for nev <= n/4). The dense one is
+//   chosen where it is expected to be quicker: above n sqrt(kDense/kPartial) = n/2 modes.
+// * Where the band is wide (a string bed: kl ~ 2 fields per node), refining every mode would
+//   cost 4 n kl^2 per mode, more than the decomposition; the modes are refined by need instead
+//   (a few, by sparse LU), so the models are the decompositions' alone: dsyevd 1.2e-9 n^3 (the
+//   held bed at n = 1967 10.3 s, the strung racket at n = 2683 and the rectangular bed at
+//   n = 4108), Krylov-Schur 6e-9 n nev^2 (the held bed, 300 to 900 of 1967 modes: 4.4e-9 to
+//   6e-9; 400 of 9401: 7.8e-9): the dense one from about 0.45 n modes.
+// * With -modal_refine all on a wide band, each mode's banded refinement is added,
+//   ModalRefineModeFlops(n, kl) at 1.1e-10 s a flop (dgbtrf and dgbtrs on the held bed of
+//   n = 1967, kl = 87: 14 s for every mode).
+constexpr double kDenseModesCost           = 2.5e-9;  // s
+constexpr double kPartialSolveCost         = 1e-8;    // s
+constexpr double kDenseDecompositionCost   = 1.2e-9;  // s
+constexpr double kPartialDecompositionCost = 6e-9;    // s
+constexpr double kBandRefineFlopCost       = 1.1e-10; // s
+
+// The expected seconds of the dense decomposition of the beam's n free dofs and of a partial
+// solve of nev modes (the models above, chosen by the band), with their refinement.
+double RefineSeconds(const ModalSystem &S, PetscInt count, bool refine_all)
+{
+  const PetscInt kl = ModalRefineHalfWidth(S);
+  if (ModalRefinesEveryMode(S.n, kl, count) || !refine_all) return 0; // in the constants, or a few modes
+  return kBandRefineFlopCost * (double)count * ModalRefineModeFlops(S.n, kl);
+}
+double DenseSeconds(const ModalSystem &S, bool refine_all)
+{
+  const double n = (double)S.n;
+  return (ModalRefinesEveryMode(S.n, ModalRefineHalfWidth(S), S.n) ? kDenseModesCost : kDenseDecompositionCost) * n * n * n + RefineSeconds(S, S.n, refine_all);
+}
+double PartialSeconds(const ModalSystem &S, PetscInt nev, bool refine_all)
+{
+  return (ModalRefinesEveryMode(S.n, ModalRefineHalfWidth(S), nev) ? kPartialSolveCost : kPartialDecompositionCost) * (double)S.n * (double)nev * (double)nev + RefineSeconds(S, nev, refine_all);
+}
 
 // The modes with omega^2 below sigma (rigid ones included), counted exactly by Sylvester's law
 // of inertia: the negative pivots of the banded LDL^T of K - sigma M on the free dofs (no
@@ -223,13 +255,13 @@ PetscInt ModesBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal sigma
 // a few above, so that its last is past the cut-off.
 PetscInt ModesAskedBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal wc) { return std::min<PetscInt>(S.n, ModesBelow(sys, S, wc * wc) + 8); }
 
-// Whether the dense decomposition of n free dofs is expected to be quicker than a partial
+// Whether the dense decomposition of the n free dofs is expected to be quicker than a partial
 // solve of nev modes (the time models above; below 65 dofs always).
-bool DenseIsQuicker(PetscInt n, PetscInt nev) { return n <= 64 || kDenseModesCost * (double)n * (double)n * (double)n <= kPartialSolveCost * (double)n * (double)nev * (double)nev; }
+bool DenseIsQuicker(const ModalSystem &S, PetscInt nev, bool refine_all) { return S.n <= 64 || DenseSeconds(S, refine_all) <= PartialSeconds(S, nev, refine_all); }
 
 // The dense decomposition of every mode, with its memory check (3 n^2 doubles: the matrix,
 // which becomes the basis, and dsyevd's workspace of 2 n^2) against half the physical memory.
-PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m)
+PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m, const char *why = "-modal_modes auto keeps only the modes the contact moves")
 {
   const double n = (double)m->S.n, need = 3 * n * n * sizeof(PetscReal);
   const long   pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
@@ -239,11 +271,11 @@ PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m)
   PetscCheck(need <= limit, comm, PETSC_ERR_MEM,
              "-modal_modes %s: every mode of %" PetscInt_FMT " free dofs needs about %.3g GB for the dense decomposition, above half the physical memory (%.3g GB); use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes",
              ModalModesText(m->request).c_str(), m->S.n, need / 1e9, limit / 1e9);
-  const double expected = kDenseModesCost * n * n * n; // s
+  const double expected = DenseSeconds(m->S, m->request.refine_all); // s
   if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-    PetscCall(PetscPrintf(comm, "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT " free dofs, expected to take about %.0f s (-modal_modes auto keeps only the modes the contact moves)\n", m->S.n, expected));
+    PetscCall(PetscPrintf(comm, "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT " free dofs, expected to take about %.0f s (%s)\n", m->S.n, expected, why));
   m->method = "dense";
-  PetscCall(ModalBasisBuild(m->S, false, &m->B));
+  PetscCall(ModalBasisBuild(m->S, false, &m->B, m->request.refine_all));
   PetscFunctionReturn(0);
 }
 
@@ -251,6 +283,7 @@ PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m)
 void KeepModes(BeamModes *m, PetscInt keep)
 {
   ModalBasis &B = m->B;
+  if (!B.by_need) B.refined = std::min(B.refined, keep); // every mode refined: every kept one
   B.Phi.resize((size_t)m->S.n * keep);
   B.omega.resize(keep);
   B.gamma.resize(keep);
@@ -272,11 +305,11 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
   PetscFunctionBeginUser;
   if (want < 0) nev = ModesAskedBelow(sys, m->S, wc);
   for (;;) {
-    if (DenseIsQuicker(n, nev)) { // and exact
+    if (DenseIsQuicker(m->S, nev, m->request.refine_all)) { // and exact
       PetscCall(DenseModes(comm, m));
       break;
     }
-    const double expected = kPartialSolveCost * (double)n * (double)nev * (double)nev; // s
+    const double expected = PartialSeconds(m->S, nev, m->request.refine_all); // s
     if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
       PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
     PetscCall(BeamModesLowest(comm, sys, nev, m->request.progress, &lambda, &phis));
@@ -285,7 +318,7 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
       std::vector<PetscReal> Phi((size_t)n * nev);
       for (PetscInt k = 0; k < nev; ++k)
         for (PetscInt d = 0; d < n; ++d) Phi[d + (size_t)k * n] = std::sqrt(m->S.mass[d]) * phis[k][m->S.dof[d]];
-      PetscCall(ModalBasisFromModes(m->S, lambda, std::move(Phi), &m->B));
+      PetscCall(ModalBasisFromModes(m->S, lambda, std::move(Phi), &m->B, true, m->request.refine_all));
       break;
     }
     const PetscReal grow = std::sqrt(wc / std::sqrt(std::max(lambda.back(), (PetscReal)1e-300)));
@@ -362,7 +395,12 @@ PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
   m->cutoff = t.modes == ModalModes::Auto && !dense ? wc : PETSC_INFINITY;
   m->factor = dense ? nullptr : FactoredFormFor(m->sys);
   if (!m->factor) PetscCall(PrimalCheck(comm, m));
-  if (dense) PetscCall(DenseModes(comm, m));
+  if (dense && t.modes == ModalModes::Auto && std::isfinite(wc) && wmax > 0) { // every mode below the cut-off: the tolerance from which fewer are kept (the cut-off below the bound)
+    char why[256];
+    std::snprintf(why, sizeof why, "every mode lies below the cut-off of -modal_tolerance %g, %.3g kHz, above the highest mode's bound %.3g kHz; a -modal_tolerance above %.2g keeps fewer", (double)t.tolerance,
+                  (double)(wc / (2e3 * M_PI)), (double)(wmax / (2e3 * M_PI)), (double)(t.tolerance * (wc / wmax) * (wc / wmax)));
+    PetscCall(DenseModes(comm, m, why));
+  } else if (dense) PetscCall(DenseModes(comm, m));
   else if (m->factor) PetscCall(FactoredModes(comm, m, t.modes == ModalModes::Count ? t.count : -1, wc));
   else PetscCall(TruncatedModes(comm, m, t.modes == ModalModes::Count ? t.count : -1, t.modes == ModalModes::Count ? PETSC_INFINITY : wc));
   m->truncated = m->Count() < n;
@@ -373,17 +411,17 @@ PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
 
 double BeamModesExpectedSeconds(const BeamSystem &sys, const ModalTruncation &t)
 {
-  const PetscInt n     = ModalSystemBeamOnly(sys).n;
-  const double   dense = kDenseModesCost * (double)n * (double)n * (double)n;
-  PetscInt       nev   = n;
+  const ModalSystem S   = ModalSystemBeamOnly(sys);
+  const PetscInt    n   = S.n;
+  PetscInt          nev = n;
   if (t.modes == ModalModes::Count) nev = std::min(t.count, n);
   else if (t.modes == ModalModes::Auto) {
     ContactCoupling none;
     const PetscReal wc = t.Cutoff();
-    if (wc < BeamSystemMaxFrequencyBound(sys, none, 0.0, 0.0)) nev = ModesAskedBelow(sys, ModalSystemBeamOnly(sys), wc);
+    if (wc < BeamSystemMaxFrequencyBound(sys, none, 0.0, 0.0)) nev = ModesAskedBelow(sys, S, wc);
   }
-  if (DenseIsQuicker(n, nev)) return dense; // as TruncatedModes decides
-  return kPartialSolveCost * (double)n * (double)nev * (double)nev;
+  if (DenseIsQuicker(S, nev, t.refine_all)) return DenseSeconds(S, t.refine_all); // as TruncatedModes decides
+  return PartialSeconds(S, nev, t.refine_all);
 }
 
 PetscInt BeamModesCountBelow(const BeamSystem &sys, PetscReal omega) { return ModesBelow(sys, ModalSystemBeamOnly(sys), omega * omega); }
@@ -583,6 +621,9 @@ const OptionModule &ModalOptionTable()
                  "all (every mode: the dense decomposition, the exact check), auto (the modes up to the cut-off pi/(T sqrt(-modal_tolerance)), T the contact time scale; the rest through the static correction at the contact point) or a number K (the K lowest)",
                  "auto"),
       OptionReal("-modal_tolerance", "1", "-modal_modes auto: the quasi-static error (pi/(omega T))^2 allowed for a mode left out; sets the cut-off", "1e-9", Between(0, 1e-2, true, false)),
+      OptionChoice("-modal_refine",
+                   "auto (every mode refined by inverse iteration where the stiffness' band is narrow, as a beam's; where it is wide, as a string bed's, the modes whose residual is above 1e-12 of their eigenvalue) or all (every mode: the check)",
+                   {"auto", "all"}, "auto"),
     },
   };
   return m;
@@ -596,6 +637,10 @@ std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
   std::snprintf(buf, sizeof buf, "modal engine: %d of %d modes (cut-off %s, -modal_modes %s, -modal_tolerance %g; %s, %.3g s)", (int)m.Count(), (int)m.S.n, cut, ModalModesText(m.request).c_str(),
                 (double)m.request.tolerance, m.method.c_str(), m.build_seconds);
   std::string s = buf;
+  if (m.B.by_need) { // refined by need (a wide band: ModalRefinesEveryMode)
+    std::snprintf(buf, sizeof buf, ", %d modes refined (residual above %g)", (int)m.B.refined, (double)ModalRefineResidual());
+    s += buf;
+  }
   if (c && m.truncated) {
     std::snprintf(buf, sizeof buf, ", static correction G_r = %.4g m/N (G_r/G = %.3g)", (double)c->Gr, (double)(c->G > 0 ? c->Gr / c->G : 0.0));
     s += buf;
@@ -616,6 +661,9 @@ PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t)
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
   PetscCall(OptionsRead(PetscOptionsObject, T, "-modal_modes", &text, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-modal_tolerance", &t->tolerance, NULL));
+  PetscInt refine = t->refine_all ? 1 : 0;
+  PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-modal_refine", &refine, NULL));
+  t->refine_all = refine == 1;
   PetscOptionsEnd();
   if (text == "all") t->modes = ModalModes::All;
   else if (text == "auto") t->modes = ModalModes::Auto;

@@ -54,10 +54,11 @@ struct ModalTruncation {
   PetscReal  contact_time = 0;    // s: Auto, the contact's time scale T (ContactTimeScale)
   PetscReal  cost_warn    = 30;   // s: a cost line before a decomposition expected to take longer
   PetscReal  progress     = 10;   // s: a progress line this often during a partial solve (0: none)
+  bool       refine_all   = false; // -modal_refine all: every mode refined by inverse iteration (the check); false: by need where the band is wide (ModalRefinesEveryMode)
   // rad/s: the cut-off of Auto, pi / (T sqrt(tol)); infinite for All and Count
   PetscReal Cutoff() const { return modes == ModalModes::Auto && contact_time > 0 ? M_PI / (contact_time * std::sqrt(tolerance)) : PETSC_INFINITY; }
 };
-// -modal_modes and -modal_tolerance: the modal engine's table (registered by app/registry.cpp).
+// -modal_modes, -modal_tolerance and -modal_refine: the modal engine's table (registered by app/registry.cpp).
 const OptionModule &ModalOptionTable();
 // Reads them (T, cost_warn and progress are the caller's).
 PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t);

@@ -2,6 +2,7 @@
 #include "solvers/modal_basis.hpp"
 
 #include <petscblaslapack.h>
+#include <petscmat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -135,19 +136,40 @@ void ModalApply(const ModalSystem &S, bool contact, const PetscReal *x, std::vec
   for (PetscInt d = 0; d < S.n; ++d) y[d] = ((d < S.BeamDofs() ? f[S.dof[d]] : 0.0) + (contact ? S.k * S.g[d] * c : 0.0)) / std::sqrt(S.mass[d]);
 }
 
-// Two steps of inverse iteration on phi (unit length, orientation kept) with the banded LU of
-// A - sigma I (LAPACK dgbtrf; ab of leading dimension 2 kl + ku + 1), each solve corrected
-// once with its residual in the factored form (ModalApply). The band's entries carry the
-// round-off of their assembly (eps |K|, ~eps omega_max^2 per entry): solved against the band
-// alone, a low mode is the band's, off the system's by ~eps omega_max^2 / gap (the reference's
-// ACOR off by 1e-8 at N = 641); the correction makes it the factored system's.
+// Two steps of inverse iteration on phi (unit length, orientation kept), solve(b) overwriting b
+// by (A - sigma I)^{-1} b from a factorization of the assembled A, each solve corrected once with
+// its residual in the factored form (ModalApply). The assembled entries carry the round-off of
+// their assembly (eps |K|, ~eps omega_max^2 per entry): solved against them alone, a low mode is
+// the assembled matrix's, off the system's by ~eps omega_max^2 / gap (the reference's ACOR off by
+// 1e-8 at N = 641); the correction makes it the factored system's.
+template <class Solve>
+void InverseSteps(const ModalSystem &S, bool contact, PetscReal sigma, Solve &&solve, PetscReal *phi)
+{
+  const PetscInt         n = S.n;
+  std::vector<double>    x(n), ax(n), res(n);
+  std::vector<PetscReal> q(S.sys->ndof), f(S.sys->ndof);
+  for (int it = 0; it < 2; ++it) {
+    for (PetscInt d = 0; d < n; ++d) x[d] = phi[d];
+    solve(x);
+    ModalApply(S, contact, x.data(), q, f, ax.data());
+    for (PetscInt d = 0; d < n; ++d) res[d] = phi[d] - (ax[d] - sigma * x[d]);
+    solve(res);
+    for (PetscInt d = 0; d < n; ++d) x[d] += res[d];
+    PetscReal nrm = 0, sgn = 0; // keep the orientation
+    for (PetscInt d = 0; d < n; ++d) nrm += x[d] * x[d], sgn += x[d] * phi[d];
+    nrm = std::sqrt(nrm);
+    for (PetscInt d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[d] / nrm;
+  }
+}
+
+// InverseSteps with the banded LU of A - sigma I (LAPACK dgbtrf; ab of leading dimension
+// 2 kl + ku + 1): 4 n kl^2 flops to factor.
 PetscErrorCode InverseIterate(const ModalSystem &S, bool contact, const std::vector<BandEntry> &entries, const std::vector<int> &pos, int kl, PetscReal sigma, PetscReal *phi)
 {
-  const int              n = (int)pos.size(), ku = kl, ldab = 2 * kl + ku + 1, one = 1;
-  std::vector<double>    ab((size_t)ldab * n, 0.0), x(n), r(n), ax(n);
-  std::vector<int>       ipiv(n);
-  std::vector<PetscReal> q(S.sys->ndof), f(S.sys->ndof);
-  int                    info;
+  const int           n = (int)pos.size(), ku = kl, ldab = 2 * kl + ku + 1, one = 1;
+  std::vector<double> ab((size_t)ldab * n, 0.0), r(n);
+  std::vector<int>    ipiv(n);
+  int                 info;
 
   PetscFunctionBeginUser;
   for (const BandEntry &e : entries) {
@@ -158,24 +180,132 @@ PetscErrorCode InverseIterate(const ModalSystem &S, bool contact, const std::vec
   dgbtrf_(&n, &n, &kl, &ku, ab.data(), &ldab, ipiv.data(), &info);
   PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbtrf failed (info %d)", info);
   if (info > 0) PetscFunctionReturn(0); // exactly singular: the vector is already exact
-  auto solve = [&](std::vector<double> &b) { // b in free-dof order, overwritten by (LU)^{-1} b
+  InverseSteps(S, contact, sigma, [&](std::vector<double> &b) { // b in free-dof order, overwritten by (LU)^{-1} b
     for (int d = 0; d < n; ++d) r[pos[d]] = b[d];
     dgbtrs_("N", &n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), r.data(), &n, &info);
     for (int d = 0; d < n; ++d) b[d] = r[pos[d]];
-  };
-  std::vector<double> res(n);
-  for (int it = 0; it < 2; ++it) {
-    for (int d = 0; d < n; ++d) x[d] = phi[d];
-    solve(x);
-    ModalApply(S, contact, x.data(), q, f, ax.data());
-    for (int d = 0; d < n; ++d) res[d] = phi[d] - (ax[d] - sigma * x[d]);
-    solve(res);
-    for (int d = 0; d < n; ++d) x[d] += res[d];
-    PetscReal nrm = 0, sgn = 0; // keep the orientation
-    for (int d = 0; d < n; ++d) nrm += x[d] * x[d], sgn += x[d] * phi[d];
-    nrm = std::sqrt(nrm);
-    for (int d = 0; d < n; ++d) phi[d] = (sgn < 0 ? -1 : 1) * x[d] / nrm;
+  }, phi);
+  PetscFunctionReturn(0);
+}
+
+// The same with a sparse LU of A - sigma I (MUMPS, its fill-reducing ordering and threshold
+// pivoting, on PETSC_COMM_SELF): where the band is wide (a string bed's kl is twice its fields
+// per node) the band's 4 n kl^2 per mode is what the refinement cost; a 2-D bed's nested
+// dissection fills far less. The pattern is analysed once, each mode factors numerically. The
+// pivoting of an indefinite A - sigma I can outgrow the analysis' workspace (MUMPS -9): the
+// factor is then analysed again with twice the room (ICNTL(14), from 100 %), and a mode it still
+// fails falls back to the band (*solved false).
+struct SparseShift {
+  Mat                    A = nullptr, F = nullptr;
+  Vec                    diag = nullptr, b = nullptr, x = nullptr;
+  std::vector<PetscReal> a_diag; // A's diagonal (every row has one, a zero row's included)
+  bool                   analysed = false;
+  PetscInt               room     = 100; // ICNTL(14): % more workspace than the analysis estimates
+};
+
+PetscErrorCode SparseShiftCreate(PetscInt n, const std::vector<BandEntry> &entries, SparseShift *sp)
+{
+  std::vector<PetscInt>                                    nnz(n, 1); // the diagonal
+  std::vector<std::vector<std::pair<PetscInt, PetscReal>>> rows(n);
+
+  PetscFunctionBeginUser;
+  sp->a_diag.assign(n, 0.0);
+  for (const BandEntry &e : entries) {
+    if (e.r == e.c) sp->a_diag[e.r] += e.v;
+    else rows[e.r].push_back({e.c, e.v});
   }
+  for (PetscInt r = 0; r < n; ++r) {
+    std::sort(rows[r].begin(), rows[r].end(), [](const auto &a, const auto &b) { return a.first < b.first; });
+    PetscInt distinct = 0;
+    for (size_t q = 0; q < rows[r].size(); ++q)
+      if (q == 0 || rows[r][q].first != rows[r][q - 1].first) distinct++;
+    nnz[r] += distinct;
+  }
+  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), &sp->A));
+  for (PetscInt r = 0; r < n; ++r) {
+    for (const auto &e : rows[r]) PetscCall(MatSetValue(sp->A, r, e.first, e.second, ADD_VALUES));
+    PetscCall(MatSetValue(sp->A, r, r, sp->a_diag[r], ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(sp->A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(sp->A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreateVecs(sp->A, &sp->x, &sp->b));
+  PetscCall(VecDuplicate(sp->b, &sp->diag));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SparseShiftDestroy(SparseShift *sp)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&sp->F));
+  PetscCall(MatDestroy(&sp->A));
+  PetscCall(VecDestroy(&sp->diag));
+  PetscCall(VecDestroy(&sp->b));
+  PetscCall(VecDestroy(&sp->x));
+  PetscFunctionReturn(0);
+}
+
+// A fresh factor of A's pattern with the current workspace (analysed on its first numeric use).
+static PetscErrorCode SparseShiftFactor(SparseShift *sp)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&sp->F));
+  PetscCall(MatGetFactor(sp->A, MATSOLVERMUMPS, MAT_FACTOR_LU, &sp->F));
+  PetscCall(MatMumpsSetIcntl(sp->F, 14, (PetscInt)sp->room));
+  sp->analysed = false;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode InverseIterateSparse(const ModalSystem &S, bool contact, SparseShift *sp, PetscReal sigma, PetscReal *phi, bool *solved)
+{
+  const PetscInt n = S.n;
+  MatFactorInfo  info;
+  MatFactorError err = MAT_FACTOR_OUTMEMORY;
+  PetscScalar   *a;
+
+  PetscFunctionBeginUser;
+  *solved = true;
+  PetscCall(VecGetArray(sp->diag, &a));
+  for (PetscInt d = 0; d < n; ++d) a[d] = sp->a_diag[d] - sigma;
+  PetscCall(VecRestoreArray(sp->diag, &a));
+  PetscCall(MatDiagonalSet(sp->A, sp->diag, INSERT_VALUES));
+  PetscCall(MatFactorInfoInitialize(&info));
+  for (int attempt = 0; attempt < 4 && err == MAT_FACTOR_OUTMEMORY; ++attempt) {
+    if (!sp->F || attempt > 0) {
+      if (attempt > 0) sp->room *= 2;
+      PetscCall(SparseShiftFactor(sp));
+    }
+    if (!sp->analysed) {
+      PetscCall(MatLUFactorSymbolic(sp->F, sp->A, NULL, NULL, &info));
+      sp->analysed = true;
+    }
+    PetscCall(MatLUFactorNumeric(sp->F, sp->A, &info));
+    PetscCall(MatFactorGetError(sp->F, &err));
+  }
+  if (err == MAT_FACTOR_NUMERIC_ZEROPIVOT) PetscFunctionReturn(0); // (numerically) singular: the vector is already exact
+  if (err != MAT_FACTOR_NOERROR) {                                  // the factor is spoilt for the next modes too
+    PetscCall(SparseShiftFactor(sp));
+    *solved = false;
+    PetscFunctionReturn(0);
+  }
+  PetscErrorCode ierr = 0;
+  InverseSteps(
+    S, contact, sigma,
+    [&](std::vector<double> &bv) {
+      if (ierr) return;
+      PetscScalar       *pb;
+      const PetscScalar *px;
+      ierr = VecGetArray(sp->b, &pb);
+      if (ierr) return;
+      std::copy(bv.begin(), bv.end(), pb);
+      ierr = VecRestoreArray(sp->b, &pb);
+      if (!ierr) ierr = MatSolve(sp->F, sp->b, sp->x);
+      if (!ierr) ierr = VecGetArrayRead(sp->x, &px);
+      if (ierr) return;
+      std::copy(px, px + n, bv.begin());
+      ierr = VecRestoreArrayRead(sp->x, &px);
+    },
+    phi);
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
@@ -202,13 +332,66 @@ void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
 
 } // namespace
 
+// Which modes are refined. The refinement costs, per mode, a banded LU of A - sigma I and four
+// solves with it (ModalRefineModeFlops): nothing next to the decomposition for a beam (kl = 3
+// for Euler-Bernoulli, 4 for Timoshenko, 23 with a shell's three harmonics), more than the
+// decomposition itself for a string bed, whose half-bandwidth is twice its fields per node
+// (kl = 55 to 163 for 25 to 81 nodes across the face). There the modes are refined by
+// need: a mode is refined where its residual in the factored form, |A phi - rho phi| with rho
+// its Rayleigh quotient, exceeds kRefineResidual rho (ModalRefineResidual). A residual r makes
+// (rho, phi) an exact eigenpair of A + E with |E| = |r|: the computed basis propagates a system
+// whose mode k is off by |r| / (2 rho) in its frequency, whatever the gap to its neighbours (two
+// modes mixed by an angle |r| / gap move apart by that angle times their frequencies'
+// difference: |r| t / (omega_k + omega_j) over a time t). dsyevd leaves |r| ~ 1-2 eps lambda_max
+// in every mode (measured on the held bed of 61 x 43 nodes), so only the modes with lambda_k <
+// ~2 eps lambda_max / kRefineResidual are refined: the beam's h^-4 spread puts most of its low
+// modes there (eps lambda_max / lambda_1 ~ 1e-6 at N = 641), the bed's h^-2 spread a handful
+// (1.6e-12 at 61 x 43). Where refining every mode costs at most the decomposition's own share per
+// mode (4 n^2 flops) or 2e9 flops in all (every beam, shell and hoop of the suite, and the small
+// beds), every mode is refined as before: their results are unchanged, bit for bit.
+constexpr PetscReal kRefineResidual   = 1e-12;
+constexpr double    kRefineEveryFlops = 2e9;
+
+double ModalRefineModeFlops(PetscInt n, PetscInt kl) { return 4.0 * (double)n * (double)kl * (double)kl + 24.0 * (double)n * (double)kl; }
+
+PetscInt ModalRefineHalfWidth(const ModalSystem &S) { return BandHalfWidth(S); }
+
+bool ModalRefinesEveryMode(PetscInt n, PetscInt kl, PetscInt count)
+{
+  const double per_mode = ModalRefineModeFlops(n, kl);
+  return n <= 64 || per_mode <= 4.0 * (double)n * (double)n || (double)count * per_mode <= kRefineEveryFlops;
+}
+
+PetscReal ModalRefineResidual() { return kRefineResidual; }
+
+// |A phi - rho phi| / |rho| of each column of Phi (n x count), rho = phi^T A phi, A in the
+// factored form (ModalApply): O(n) per mode.
+std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi, PetscInt count)
+{
+  const PetscInt         n = S.n;
+  std::vector<PetscReal> q(S.sys->ndof), f(S.sys->ndof), ax(n), rel(count);
+  for (PetscInt k = 0; k < count; ++k) {
+    const PetscReal *phi = &Phi[(size_t)k * n];
+    PetscReal        rho = 0, r2 = 0, nrm = 0;
+    ModalApply(S, contact, phi, q, f, ax.data());
+    for (PetscInt d = 0; d < n; ++d) rho += phi[d] * ax[d], nrm += phi[d] * phi[d];
+    rho /= nrm;
+    for (PetscInt d = 0; d < n; ++d) r2 += (ax[d] - rho * phi[d]) * (ax[d] - rho * phi[d]);
+    rel[k] = std::sqrt(r2 / nrm) / std::abs(rho); // inf for a zero mode: refined
+  }
+  return rel;
+}
+
 // The dense eigenvectors (dsyevd's or syev's) are accurate only to eps * lambda_max / gap: with the h^-4 spread of
 // the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
 // shifted by its eigenvalue, with a banded LU of A - sigma I and each solve corrected by its
 // residual in the factored form (InverseIterate), then modified Gram-Schmidt (which cleans up
 // (near-)degenerate pairs such as the rigid modes), bring each vector to round-off relative
-// to its own eigenvalue.
-static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B)
+// to its own eigenvalue. Every mode where that is cheap (ModalRefinesEveryMode); elsewhere the
+// modes whose residual asks for it, Gram-Schmidt among them in order, and every other mode
+// then made orthogonal to them (it was orthogonal to the old vectors to round-off; what the
+// refinement moved is ~|r| / gap) and normalised.
+static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B, bool refine_all)
 {
   const PetscInt               n       = S.n;
   const int                    kl      = BandHalfWidth(S);
@@ -218,8 +401,57 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   const PetscInt               count   = (PetscInt)lambda.size(); // the columns of Phi
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < count; ++k) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
-  GramSchmidt(n, B->Phi);
+  if (refine_all || ModalRefinesEveryMode(n, kl, count)) {
+    for (PetscInt k = 0; k < count; ++k) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
+    GramSchmidt(n, B->Phi);
+    B->refined = count;
+    PetscFunctionReturn(0);
+  }
+  const std::vector<PetscReal> rel = ModalResiduals(S, contact, B->Phi, count);
+  std::vector<PetscInt>        need;
+  for (PetscInt k = 0; k < count; ++k)
+    if (!(rel[k] <= kRefineResidual)) need.push_back(k);
+  if (!need.empty()) { // the sparse LU: the band is wide here
+    SparseShift sp;
+    PetscCall(SparseShiftCreate(n, entries, &sp));
+    for (PetscInt k : need) {
+      bool solved;
+      PetscCall(InverseIterateSparse(S, contact, &sp, lambda[k] - 1e-14 * scale, &B->Phi[k * n], &solved));
+      if (!solved) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n]));
+    }
+    PetscCall(SparseShiftDestroy(&sp));
+  }
+  std::vector<PetscReal> R((size_t)n * need.size()); // the refined columns, orthonormal (modified Gram-Schmidt in order)
+  for (size_t i = 0; i < need.size(); ++i) {
+    std::copy_n(&B->Phi[(size_t)need[i] * n], n, &R[i * n]);
+    ModalOrthonormalize(R, n, (PetscInt)i, 1, &R[i * n]);
+  }
+  if (!need.empty()) { // every other column less its projection on R, Phi -= R (R^T Phi), by BLAS 3; then normalised
+    PetscBLASInt           bn, bk, bc;
+    const PetscScalar      one = 1, zero = 0, minus = -1;
+    std::vector<PetscReal> C(need.size() * (size_t)count);
+    PetscCall(PetscBLASIntCast(n, &bn));
+    PetscCall(PetscBLASIntCast((PetscInt)need.size(), &bk));
+    PetscCall(PetscBLASIntCast(count, &bc));
+    PetscCallBLAS("BLASgemm", BLASgemm_("T", "N", &bk, &bc, &bn, &one, R.data(), &bn, B->Phi.data(), &bn, &zero, C.data(), &bk));
+    for (PetscInt k : need) std::fill_n(&C[(size_t)k * need.size()], need.size(), 0.0); // the refined columns are R's
+    PetscCallBLAS("BLASgemm", BLASgemm_("N", "N", &bn, &bc, &bk, &minus, R.data(), &bn, C.data(), &bk, &one, B->Phi.data(), &bn));
+    std::vector<char> refined(count, 0);
+    for (size_t i = 0; i < need.size(); ++i) {
+      refined[need[i]] = 1;
+      std::copy_n(&R[i * n], n, &B->Phi[(size_t)need[i] * n]);
+    }
+    for (PetscInt k = 0; k < count; ++k) {
+      if (refined[k]) continue;
+      PetscReal *phi = &B->Phi[(size_t)k * n], nrm = 0;
+      for (PetscInt d = 0; d < n; ++d) nrm += phi[d] * phi[d];
+      nrm = std::sqrt(nrm);
+      for (PetscInt d = 0; d < n; ++d) phi[d] /= nrm;
+    }
+  }
+  B->refined = (PetscInt)need.size();
+  B->by_need = true;
+  PetscCall(PetscInfo(NULL, "modal basis: %" PetscInt_FMT " of %" PetscInt_FMT " modes refined (relative residual above %g in the factored form; half-bandwidth %d)\n", (PetscInt)need.size(), count, (double)kRefineResidual, kl));
   PetscFunctionReturn(0);
 }
 
@@ -345,7 +577,7 @@ static PetscErrorCode SymmetricEigenQR(PetscInt n, std::vector<PetscReal> &A, st
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B)
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all)
 {
   const PetscInt         n = S.n;
   std::vector<PetscReal> A, w(n);
@@ -370,13 +602,13 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   B->omega.assign(n, 0.0);
   B->gamma.assign(n, 0.0);
   B->rate.assign(n, 0.0);
-  PetscCall(RefineBasis(S, contact, w, B));
+  PetscCall(RefineBasis(S, contact, w, B, refine_all));
   if (!contact && damped && S.ball) IsolateBall(S, w, B);
   ModalQuotients(S, contact, B);
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine)
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine, bool refine_all)
 {
   const PetscInt count = (PetscInt)lambda.size();
 
@@ -386,7 +618,7 @@ PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<Petsc
   B->omega.assign(count, 0.0);
   B->gamma.assign(count, 0.0);
   B->rate.assign(count, 0.0);
-  if (refine) PetscCall(RefineBasis(S, false, lambda, B));
+  if (refine) PetscCall(RefineBasis(S, false, lambda, B, refine_all));
   ModalQuotients(S, false, B);
   PetscFunctionReturn(0);
 }

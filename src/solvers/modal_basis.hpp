@@ -56,12 +56,15 @@ struct ModalBasis {
   std::vector<PetscReal> Phi;   // n x modes, column-major: Phi[r + k n] (orthonormal eigenvectors)
   std::vector<PetscReal> gamma; // g^T M^{-1/2} Phi_k: contribution of mode k to c
   std::vector<PetscReal> rate;  // 1/s, sigma_k = zeta_k omega_k: z_k'' + 2 sigma_k z_k' + omega_k^2 z_k = 0
+  PetscInt               refined = 0;     // modes refined by inverse iteration (all of them where the band is narrow: ModalRefinesEveryMode)
+  bool                   by_need = false; // refined where the residual asked for it (a wide band), not every mode
 };
 // The basis in contact (K + k g g^T) or separated (K). With Rayleigh damping C = alpha M +
 // beta K on the beam dofs (ModalSystem::Rayleigh, from the force operator) the separated basis
 // decouples it exactly (sigma = alpha/2 + beta omega^2/2 a beam mode, alpha/2 a rigid one, 0
 // the ball's); in contact it does not (the ball and the spring are undamped): PETSC_ERR_SUP.
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B);
+// refine_all: every mode refined whatever the band (-modal_refine all).
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all = false);
 
 // The beam alone (S from ModalSystemBeamOnly), from `count` of its modes found elsewhere (a
 // partial eigen-solve): Phi (S.n x count, column-major) the columns M^{1/2} phi_k, lambda their
@@ -70,7 +73,20 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
 // decay rates): omega, Phi, rate of count modes. refine false: Phi is kept as given (modes
 // already exact and orthonormal, from the factored form: inverse iteration with K's band would
 // spoil them where eps cond(K) > 1), only the quotients and rates are computed.
-PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine = true);
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine = true, bool refine_all = false);
+
+// The refinement of a basis (ModalBasisBuild, ModalBasisFromModes): two steps of inverse
+// iteration per mode with a banded LU of A - sigma I (half-bandwidth kl, ModalRefineHalfWidth),
+// ModalRefineModeFlops(n, kl) flops a mode. Every mode where that costs at most 4 n^2 flops (the
+// dense decomposition's share of a mode) or 2e9 flops in all (ModalRefinesEveryMode: every beam,
+// shell and hoop); elsewhere (a string bed: kl ~ 2 fields per node) only the modes whose
+// relative residual |A phi - rho phi| / rho in the factored form (ModalResiduals) exceeds
+// ModalRefineResidual() (1e-12).
+PetscInt               ModalRefineHalfWidth(const ModalSystem &S);
+double                 ModalRefineModeFlops(PetscInt n, PetscInt kl);
+bool                   ModalRefinesEveryMode(PetscInt n, PetscInt kl, PetscInt count);
+PetscReal              ModalRefineResidual();
+std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi, PetscInt count);
 
 // Mode (omega w, rate sigma) from z, zd at s = 0: z and z' at s, exact for every damping
 // (under-, critically and overdamped, rigid). Bound: sup over s >= 0 of |d^p z / ds^p|.
