@@ -146,7 +146,16 @@ set(cases
   "-task modes -strings_frame held -head_shape oval|-head_shape oval is not known: use one of ellipse, rectangle"
   "-task modes -strings_frame held -strings_nodes 4|-strings_nodes 4\\.? is not allowed: it must be a whole number >= 5"
   "-task modes -strings_frame held -strings_nodes 5 -head_width 0.05|-strings_nodes 5 with -head_length 0.34 and -head_width 0.05 puts 2 nodes across the width: at least 5"
-  "-task modes -strings_frame clamped|-strings_frame clamped is not known: use one of none, held"
+  "-task modes -strings_frame clamped|-strings_frame clamped is not known: use one of none, held, beam"
+  # the racket (issue 25): the roll, the bed on the frame, the ball's disc, off the face
+  "-impact_z 0.05|-impact_z 0.05 is not allowed on a beam that cannot roll: give -beam_torsion"
+  "-beam_torsion|-beam_torsion needs the section's G J and rho J: give -beam_torsion_stiffness"
+  "-options_file ${SRC}/options/base/racket-strung.opts -beam_torsion false|-strings_frame beam needs the frame's roll: give -beam_torsion"
+  "-options_file ${SRC}/options/base/racket-strung.opts -head_center 0.1|-head_center 0.1 with -head_length 0.32 is not allowed on this 0.72 m frame"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -impact_z 0.2|-impact_x 0.15 with -impact_z 0.2 is not allowed: off the frame's axis the ball must strike the string bed"
+  "-options_file ${SRC}/options/base/racket-strung.opts -strings_patch_radius -1|-strings_patch_radius -1 is not allowed: it must be >= 0 \\(m\\)"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_patch_radius 0.2|-strings_patch_radius 0.2 m is not allowed with this grid"
+  "-strings_frame held -impact_x 0.5|-impact_x 0.5 is not allowed: the impact point must lie on the beam, 0 <= x <= L = 0.34"
 )
 foreach(c IN LISTS cases)
   string(FIND "${c}" "|" bar)
