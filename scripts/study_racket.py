@@ -194,6 +194,23 @@ less energy lost in the ball and partly from less vibration; "a significant incr
 power can be achieved by increasing the stiffness of the racket frame". Lindsey (TWU, "stringbeds"):
 "string tension and material have only a small effect on ball speed". USRSA: dwell time "typically
 .004-.005 seconds", longer for softer strings. Cross's own numbers (his figures) were not found.""")
+    b = load(out, "bower", ("ball_speed", "strings_tension", "acor"))
+    v_play = 108.1 / 3.6  # m/s: Bower & Cross's mean rebound speed at 180 N
+    body = []
+    for v in np.unique(b["ball_speed"]):
+        lo = float(b["acor"][(b["ball_speed"] == v) & (b["strings_tension"] == 180)][0])
+        hi = float(b["acor"][(b["ball_speed"] == v) & (b["strings_tension"] == 280)][0])
+        # the same swing: v_out = e_A v_rel + V (lab frame), so 180 -> 280 N changes it by dE_A v_rel
+        body.append([v, lo, hi, hi - lo, 100 * (hi - lo) * v / v_play])
+    table("180 -> 280 N in play (Bower & Cross 2005): free racket at the head's centre, relative speed v_rel",
+          ["v_rel m/s", "ACOR 180", "ACOR 280", "dACOR", "dv_out %"], body, ["%.0f", "%.4f", "%.4f", "%+.4f", "%+.1f"])
+    print("""  dv_out: the change of the ball's speed off a racket swung the same, dACOR v_rel, over their 108.1 km/h
+  (v_out = e_A v_rel + V in the ground's frame: V, the racket's speed at the impact, cancels).
+Published (Bower & Cross 2005, abstract; J. Sports Sci. 23, 765): players stroking balls from a ball
+machine cross-court with three rackets at 180 and 280 N: 108.1 +- 9.9 km/h at 180 N, 105.3 +- 9.6 km/h
+at 280 N (-2.6 %, P < 0.05). Their ball and swing speeds and impact sites were not found: the
+relative speed is ours (their rebound ~30 m/s off a groundstroke), and the sites of play spread
+over the face where the program strikes the centre.""")
 
 
 def modes_lines(out, name):

@@ -2,7 +2,7 @@
 # The strung racket against the published anchors (issue 25, docs/racket-anchors.md): rebound
 # speed over impact sites and speeds in the conditions of Glynn, King & Mitchell 2011, Goodwill &
 # Haake 2001 and Cross & Lindsey's hand-held racket; power and dwell time against string tension
-# (Cross 2000) with a stiffer frame; the free frame's fundamental and the bed's frequency against
+# (Cross 2000; Bower & Cross 2005 in play) with a stiffer frame; the free frame's fundamental and the bed's frequency against
 # measured rackets. The racket is options/bats/racket-pure-drive.opts (mass, balance and
 # swingweight of a measured Babolat Pure Drive), the ball options/balls/tennis-ball-fast.opts.
 #
@@ -15,7 +15,8 @@
 #          head clamped (-strings_frame held) at the string centre, 15-30 m/s, and the racket
 #          pinned at its tip (-beam_right pinned), 3 sites on the axis, 25 m/s.
 # tension: a free racket struck at the head's centre, 200-300 N, 15 and 25 m/s; the same with
-#          the frame's EI doubled (a property table written into OUT).
+#          the frame's EI doubled (a property table written into OUT); 180 and 280 N at 25 and
+#          30 m/s against the ball speeds Bower & Cross 2005 measured in play.
 # modes:   -task modes of the free strung racket, and of the bed in a held frame at 250 N and at
 #          175 N (the tension left after stringing, Cross & Bower 2001).
 # REUSE=1 keeps the files of an earlier run. Every impact by -ts_type modal (the structure is linear; exact between the contact's steps).
@@ -58,6 +59,8 @@ fi
 if [[ $what == all || $what == tension ]]; then
   run tension -task sweep -impact_x $XC -sweep "ball_speed=15;25,strings_tension=200:300:5"
   run tension-stiff -task sweep -beam_properties "$OUT/stiff.properties" -impact_x $XC -sweep "ball_speed=15;25,strings_tension=200:300:5"
+  # Bower & Cross 2005's two tensions in play, at the relative speeds of a groundstroke
+  run bower -task sweep -impact_x $XC -sweep "ball_speed=25;30,strings_tension=180;280"
   "$PY" scripts/study_racket.py tension "$OUT"
 fi
 if [[ $what == all || $what == modes ]]; then
