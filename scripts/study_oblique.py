@@ -11,7 +11,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "references"))
 
-from beamimpact import files  # noqa: E402
+from beamimpact import files, tables  # noqa: E402
 
 import numpy as np  # noqa: E402
 import oblique as ref  # noqa: E402  (scripts/references/oblique.py)
@@ -31,12 +31,7 @@ def rows(path):
 
 
 def fmt_table(title, head, body, fmts):
-    print("\n" + title)
-    w = [max(len(h), 8) for h in head]
-    print("  ".join(h.rjust(n) for h, n in zip(head, w)))
-    print("  ".join("-" * n for n in w))
-    for b in body:
-        print("  ".join((f % v).rjust(n) for f, v, n in zip(fmts, b, w)))
+    tables.print_table(title, head, body, fmts, min_width=8)
 
 
 def nathan2012(out):

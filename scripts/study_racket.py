@@ -16,7 +16,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from beamimpact import files  # noqa: E402
+from beamimpact import files, tables  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -50,12 +50,7 @@ def racket_inertia(out, name):
 
 
 def table(title, head, body, fmts):
-    print("\n" + title)
-    w = [max(len(h), 7) for h in head]
-    print("  ".join(h.rjust(n) for h, n in zip(head, w)))
-    print("  ".join("-" * n for n in w))
-    for b in body:
-        print("  ".join((f % v).rjust(n) for f, v, n in zip(fmts, b, w)))
+    tables.print_table(title, head, body, fmts, min_width=7)
 
 
 def rigid_acor(e_c, inv_me):

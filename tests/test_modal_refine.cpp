@@ -46,6 +46,17 @@ ImpactResult RunWith(const Scenario &sc, const Extra &options)
   return r;
 }
 
+// The system's every mode (the dense basis), refined by need and refined all.
+void EveryModeByNeedAndAll(const BeamSystem &sys, std::shared_ptr<const BeamModes> *need, std::shared_ptr<const BeamModes> *all)
+{
+  ModalTruncation t;
+  t.modes     = ModalModes::All;
+  t.cost_warn = t.progress = 0;
+  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, need));
+  t.refine_all = true;
+  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, all));
+}
+
 void ExpectSameImpact(const ImpactResult &all, const ImpactResult &need, const char *what)
 {
   EXPECT_EQ(all.contacts, need.contacts) << what;
@@ -103,13 +114,8 @@ TEST(ModalRefine, HeldBedAsWithEveryModeRefined)
 {
   const Scenario   sc  = HeldBed(35);
   const BeamSystem sys = SystemOf(sc.beam);
-  ModalTruncation  t;
-  t.modes     = ModalModes::All;
-  t.cost_warn = t.progress = 0;
   std::shared_ptr<const BeamModes> need, all;
-  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, &need));
-  t.refine_all = true;
-  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, &all));
+  ASSERT_NO_FATAL_FAILURE(EveryModeByNeedAndAll(sys, &need, &all));
   ASSERT_EQ(need->Count(), all->Count());
   const PetscInt n = need->Count();
   EXPECT_GT(n, 600);
@@ -205,13 +211,8 @@ TEST(ModalRefine, StrungRacketAsWithEveryModeRefined)
 {
   const Scenario   sc  = StrungRacket();
   const BeamSystem sys = SystemOf(sc.beam);
-  ModalTruncation  t;
-  t.modes     = ModalModes::All;
-  t.cost_warn = t.progress = 0;
   std::shared_ptr<const BeamModes> need, all;
-  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, &need));
-  t.refine_all = true;
-  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, t, &all));
+  ASSERT_NO_FATAL_FAILURE(EveryModeByNeedAndAll(sys, &need, &all));
   EXPECT_TRUE(need->B.by_need);
   EXPECT_GT(need->B.refined, 0);
   EXPECT_LT(need->B.refined, need->Count() / 10);

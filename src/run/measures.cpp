@@ -198,11 +198,16 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
       bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + S.bed_first + j] - y - z * phi));
     }
   }
-  if (mon && mon->segment) {
+  if (mon && mon->segment) { // the frame's sections in [x0, x1]: every field of theirs (the deflections, a Timoshenko section's spin, the roll, a shell's wall) but a string bed's
     const PetscReal tol = 1e-9 * S.h;
     for (PetscInt i = n0; i < n1; ++i) {
       const PetscReal x = S.NodeX(i);
-      if (x >= mon->segment_x0 - tol && x <= mon->segment_x1 + tol) sums[4] += 0.5 * S.mass[S.Dof(i)] * vel(i) * vel(i);
+      if (x < mon->segment_x0 - tol || x > mon->segment_x1 + tol) continue;
+      for (PetscInt f = 0; f < F; ++f) {
+        if (S.bed_first >= 0 && f >= S.bed_first && f < S.bed_first + S.bed.nz) continue;
+        const PetscReal v = sv.v[i * sv.v_stride + f];
+        sums[4] += 0.5 * S.mass[S.Dof(i, f)] * v * v;
+      }
     }
   }
   for (PetscInt q = 0; q < np; ++q) {
