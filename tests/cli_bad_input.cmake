@@ -46,6 +46,8 @@ set(cases
   "-grip 0.1,0.2 -grip_stiffness -1|-grip_stiffness -1\\.? +is not allowed: it must be >= 0"
   "-grip 0.1,0.2 -grip_damping -1|-grip_damping -1\\.? +is not allowed: it must be >= 0"
   "-grip 0.1,0.2 -grip_mass -1|-grip_mass -1\\.? +is not allowed: it must be >= 0"
+  "-grip 0.1,0.2 -grip_torsion_stiffness -1|-grip_torsion_stiffness -1\\.? +is not allowed: it must be >= 0"
+  "-grip 0.1,0.2 -grip_torsion_damping 2|-grip_torsion_damping 2 without -beam_torsion is not allowed: the hands hold the frame's roll"
   "-grip 0.1,0.2 -beam_left clamped|-grip 0.1,0.2 with a clamped end \\(-beam_left clamped\\) is not allowed"
   "-grip 0.1,0.2 -beam_clamp 0.3,0.4|-grip 0.1,0.2 with a clamped region"
   "-grip 0.1,0.2 -beam_pivot 0.5|-grip 0.1,0.2 with a pivot \\(-beam_pivot 0.5\\) is not allowed"

@@ -57,6 +57,8 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
+      OptionNeeds(OptionReal("-grip_torsion_stiffness", "N m/rad/m", "The hands' hold on the frame's roll (-beam_torsion): torque -k'_phi phi per metre of handle", "0", NonNegative()), {"-grip"}),
+      OptionNeeds(OptionReal("-grip_torsion_damping", "N m s/rad/m", "The hands' damping of the frame's roll: torque -c'_phi phi_t per metre of handle", "0", NonNegative()), {"-grip"}),
       OptionFlag("-beam_shell", "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, in series with the ball (-beam_profile with inner diameters)"),
       OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
       OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()), {"-beam_shell"}),
@@ -137,6 +139,8 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_stiffness", &p->grip.stiffness, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_damping", &p->grip.damping, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_mass", &p->grip.mass, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_torsion_stiffness", &p->grip.torsion_stiffness, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_torsion_damping", &p->grip.torsion_damping, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_shell", &shell, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_harmonics", &harmonics, &setharmonics));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_contact_radius", &p->shell.contact_radius, NULL));
@@ -409,6 +413,12 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
     PetscCheck(g.stiffness >= 0 && std::isfinite(g.stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_stiffness %g is not allowed: it must be >= 0 (N/m^2)", (double)g.stiffness);
     PetscCheck(g.damping >= 0 && std::isfinite(g.damping), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_damping %g is not allowed: it must be >= 0 (N s/m^2)", (double)g.damping);
     PetscCheck(g.mass >= 0 && std::isfinite(g.mass), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_mass %g is not allowed: it must be >= 0 (kg)", (double)g.mass);
+    PetscCheck(g.torsion_stiffness >= 0 && std::isfinite(g.torsion_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_torsion_stiffness %g is not allowed: it must be >= 0 (N m/rad per m)",
+               (double)g.torsion_stiffness);
+    PetscCheck(g.torsion_damping >= 0 && std::isfinite(g.torsion_damping), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_torsion_damping %g is not allowed: it must be >= 0 (N m s/rad per m)",
+               (double)g.torsion_damping);
+    PetscCheck(p.torsion.on || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm, PETSC_ERR_ARG_INCOMP, "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion gives it",
+               g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping", (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
     const std::string end = HeldEnd(p, HoldsAnything);
     PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with %s is not allowed: the hands hold a free bat", (double)g.x_a, (double)g.x_b, end.c_str());
     PetscCheck(!p.has_clamp, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a clamped region (-beam_clamp %g,%g) is not allowed: the hands hold a free bat", (double)g.x_a, (double)g.x_b, (double)p.clamp_x0,

@@ -41,6 +41,8 @@ struct BeamGrip {
   PetscReal stiffness = 0;     // N/m per m of handle
   PetscReal damping   = 0;     // N s/m per m
   PetscReal mass      = 0;     // kg, the hands (added to the translational dofs of the grip)
+  PetscReal torsion_stiffness = 0; // N m/rad per m of handle: the hands' hold on the frame's roll (-beam_torsion)
+  PetscReal torsion_damping   = 0; // N m s/rad per m
 };
 
 // The barrel wall's hoop oscillator in series with the ball (issue 23, MODEL.md section 9, the
