@@ -856,7 +856,7 @@ and none fires on the default scene.
 **Before the run** (`-task impact`): the integrator, its step and, for explicit types, the stability limit
 
     ts rk (explicit)  dt 2.276e-05 s
-    explicit stability limit dt_max 6.0596e-05 s (omega_max <= 4.6677e+04 rad/s)
+    explicit stability limit dt_max 6.0596e-05 s (omega_max <= 4.6677e+04 rad/s, set by the beam's bending)
 
 and a warning when the step or the tolerance cannot resolve the contact:
 
@@ -865,8 +865,9 @@ and a warning when the step or the tolerance cannot resolve the contact:
     WARNING: adaptive step with -ts_rtol 0.0001 -ts_atol 0.0001 cannot resolve the contact (compression scale 0.00145 m, contact time 0.00439 s): ...
 
 Refused before any step: a fixed explicit step above dt_max (`-ts_dt 2.5e-06 is above the stability limit
-dt_max = 2.42538e-06 s of -ts_type rk -ts_rk_type 4 on this grid (N = 201, ...); use -ts_dt <= 2.42538e-06,
-fewer nodes, or an implicit type`), RK tableaus unstable on the imaginary axis, types that cannot roll back a
+dt_max = 2.42538e-06 s of -ts_type rk -ts_rk_type 4 on this grid (N = 201, ..., set by the beam's bending); use
+-ts_dt <= 2.42538e-06, fewer nodes, or an implicit type`: the part named is the one whose row of `M⁻¹K` sets the
+bound, the string bed's in `bed-stiff-above`), RK tableaus unstable on the imaginary axis, types that cannot roll back a
 step, an impact point that is held.
 
 **During the run** (`-impact_energy_check`, on in the study): growth of the total energy beyond

@@ -52,6 +52,7 @@ struct IntegratorInfo {
   PetscReal   dt_stable = 0;       // s, explicit stability limit (0: not explicit)
   PetscReal   dt_nominal = 0;      // s, the fixed step, or the initial step of an adaptive run
   PetscReal   omega_max_bound = 0; // rad/s, Gershgorin bound used for dt_stable
+  PetscInt    omega_max_dof   = -1; // the dof whose row sets it (-1: the ball's contact spring)
   bool        fixed_step = false;  // the step is fixed (-ts_adapt_type none): dt_nominal throughout
 };
 

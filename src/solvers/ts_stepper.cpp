@@ -735,8 +735,9 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   if (!dt_set) PetscCall(TSSetTimeStep(S.ts, std::min(dt, 0.9 * S.info.dt_stable)));
   else if (S.fixed_step)
     PetscCheck(dt <= S.info.dt_stable, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s%s); use -ts_dt <= %g, fewer nodes, or an implicit type",
-               (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound, sys.Damped() ? ", with the beam's Rayleigh damping" : "", (double)S.info.dt_stable);
+               "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s, set by %s%s); use -ts_dt <= %g, fewer nodes, or an implicit type",
+               (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound, BeamSystemPartWords(sys, S.info.omega_max_dof), sys.Damped() ? ", with the beam's Rayleigh damping" : "",
+               (double)S.info.dt_stable);
   if (S.info.dt_stable < 0.05 / S.info.omega_max_bound) { // strong damping: overdamped grid modes, dt_max far below 1/omega_max
     // An adaptive step let past dt_max there leaves those modes ringing from step to step (the
     // contact's rate of compression with them), which no event can be located on: cap it.
@@ -758,7 +759,8 @@ PetscErrorCode ReportSetup(TSStepper &S)
 
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", S.info.ts_type.c_str(), S.info.formulation.c_str(), (double)dt, S.fixed_step ? "" : " (initial; adaptive)"));
-  if (S.info.dt_stable > 0) PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s)\n", (double)S.info.dt_stable, (double)S.info.omega_max_bound));
+  if (S.info.dt_stable > 0)
+    PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s, set by %s)\n", (double)S.info.dt_stable, (double)S.info.omega_max_bound, BeamSystemPartWords(*S.P.sys, S.info.omega_max_dof)));
   if (S.fixed_step && dt > T / 8)
     PetscCall(PetscPrintf(comm, "WARNING: fixed step -ts_dt %g s is more than 1/8 of the contact time scale %g s: the contact is poorly resolved and events may be missed\n", (double)dt, (double)T));
   else if (S.fixed_step && dt > T / 100)
@@ -918,7 +920,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   S->scales             = scales;
   S->info.formulation   = FormulationName(P.form);
   if (TSModalIsType(type)) S->info.formulation = "modal (exact beam flow, polynomial contact force)"; // explicit right-hand side, exact beam flow
-  S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass);
+  S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass, &S->info.omega_max_dof);
   if (reuse) PetscCall(TSContextReuse(*S, type));
   else PetscCall(TSContextBuild(comm, *S, type, set));
   PetscCall(ExplicitStability(*S));

@@ -320,8 +320,9 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys)
   return M;
 }
 
-PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra)
+PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra, PetscInt *where)
 {
+  if (where) *where = -1;
   const PetscInt width = 2 * sys.bw + 1;
   PetscReal      lam = 0.0, gsum = 0.0; // gsum: sum_q |w_q|
   for (PetscInt q = 0; q < g.n; ++q) gsum = q == 0 ? std::abs(g.w[q]) : gsum + std::abs(g.w[q]);
@@ -334,10 +335,31 @@ PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupli
     }
     for (PetscInt q = 0; q < g.n; ++q)
       if (g.dof[q] == i && g.w[q] != 0.0) sum += k_extra * std::abs(g.w[q]) * (gsum + 1.0); // Gershgorin: |entries| (a shell's weights are negative)
-    lam = std::max(lam, sum / sys.mass[i]);
+    if (sum / sys.mass[i] > lam) {
+      lam = sum / sys.mass[i];
+      if (where) *where = i;
+    }
   }
-  if (m_extra > 0) lam = std::max(lam, 2.0 * k_extra / m_extra);
+  if (m_extra > 0 && 2.0 * k_extra / m_extra > lam) {
+    lam = 2.0 * k_extra / m_extra;
+    if (where) *where = -1;
+  }
   return std::sqrt(lam);
+}
+
+const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)
+{
+  if (dof < 0) return "the ball's contact spring";
+  switch (sys.PartOf(dof % sys.fields)) {
+  case Part::Twist:
+    return "the frame's roll";
+  case Part::Wall:
+    return "the barrel wall";
+  case Part::Bed:
+    return "the string bed";
+  default:
+    return sys.Rotation(1) ? "the beam's shear and its sections' rotation" : "the beam's bending";
+  }
 }
 
 void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt os)

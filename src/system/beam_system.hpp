@@ -163,7 +163,12 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 
 // Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K plus a
 // contact stiffness k_extra (N/m) through the coupling to a ball of mass m_extra (kg).
-PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra);
+// With `where`, the dof whose row sets the bound (-1: the ball's own 2 k_extra / m_extra).
+PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra, PetscInt *where = nullptr);
+
+// Words for the part of the structure a dof belongs to ("the beam's bending", "the frame's roll",
+// "the barrel wall", "the string bed"), for messages.
+const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof);
 
 // f_i = (C v)_i (N) for dofs i in [d0, d1), C = df/dv of every force term (Rayleigh: alpha m_i v_i
 // + beta (K v)_i, K v of the strain terms in the factored form, so C annihilates rigid motion
