@@ -35,14 +35,7 @@ void Paper(const Opts &extra, BeamParams *beam, BallParams *ball)
   test::ReadScene({"options/base/aluminium-6mm.opts", "options/base/superball-linear.opts"}, all, beam, ball);
 }
 
-ImpactResult RunSc(const Scenario &sc, const Opts &ts)
-{
-  for (auto &kv : ts) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
-  ImpactResult r;
-  EXPECT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &r));
-  for (auto &kv : ts) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
-  return r;
-}
+ImpactResult RunSc(const Scenario &sc, const Opts &ts) { return test::RunWith(PETSC_COMM_WORLD, sc, ts); }
 
 const Opts    kRK4  = {{"-ts_type", "rk"}, {"-ts_rk_type", "4"}, {"-ts_adapt_type", "none"}, {"-ts_dt", "1e-6"}};
 const Opts    kGrip = {{"-grip", "0,0.15"}, {"-grip_stiffness", "1e5"}, {"-grip_damping", "100"}};

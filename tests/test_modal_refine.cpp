@@ -37,14 +37,7 @@ Scenario HeldBed(PetscInt nodes)
   return sc;
 }
 
-ImpactResult RunWith(const Scenario &sc, const Extra &options)
-{
-  for (auto &kv : options) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
-  ImpactResult r;
-  EXPECT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &r));
-  for (auto &kv : options) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
-  return r;
-}
+ImpactResult RunWith(const Scenario &sc, const Extra &options) { return test::RunWith(PETSC_COMM_WORLD, sc, options); }
 
 // The system's every mode (the dense basis), refined by need and refined all.
 void EveryModeByNeedAndAll(const BeamSystem &sys, std::shared_ptr<const BeamModes> *need, std::shared_ptr<const BeamModes> *all)
