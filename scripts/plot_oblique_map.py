@@ -40,11 +40,7 @@ def main():
     ap.add_argument("-o", "--output", default=None, help="PNG to write (default: FILE without .h5, -map.png)")
     ap.add_argument("--best", default="distance", help="the column whose largest value is marked (default distance)")
     args = ap.parse_args()
-    f = files.open_file(PROG, args.file)
-    r = f["results"] if "results" in f else sys.exit("%s: %s has no /results" % (PROG, args.file))
-    names = [a.name for a in files.sweep_axes(f)]
-    if sorted(names) != ["impact_offset", "impact_x"]:
-        sys.exit("%s: %s is not a sweep over impact_x and impact_offset (its axes: %s)" % (PROG, args.file, ", ".join(names)))
+    f, r = files.open_map(PROG, args.file, ("impact_x", "impact_offset"))
     for c in PANELS + (args.best,):
         if c not in r:
             sys.exit("%s: %s has no /results/%s (was the sweep run with -flight?)" % (PROG, args.file, c))

@@ -57,11 +57,7 @@ def main():
     ap.add_argument("--modes", default=None, help="a -task modes file of the same racket: its fundamental's node on the head")
     ap.add_argument("--hand", type=float, default=None, help="the hand's point x (m) for the centre of percussion (default: 3 cm from the x = L end)")
     args = ap.parse_args()
-    f = files.open_file(PROG, args.file)
-    r = f["results"] if "results" in f else sys.exit("%s: %s has no /results" % (PROG, args.file))
-    names = [a.name for a in files.sweep_axes(f)]
-    if sorted(names) != ["impact_x", "impact_z"]:
-        sys.exit("%s: %s is not a sweep over impact_x and impact_z (its axes: %s)" % (PROG, args.file, ", ".join(names)))
+    f, r = files.open_map(PROG, args.file, ("impact_x", "impact_z"))
     if files.attr(f, "strings_frame") != "beam":
         sys.exit("%s: %s is not a racket with a string bed on its frame (-strings_frame beam)" % (PROG, args.file))
     for c in ("acor", "contact_time", "bed_deflection_peak", "vibration_fraction", "roll_fraction"):

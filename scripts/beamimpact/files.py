@@ -120,6 +120,18 @@ def sweep_axes(f):
     return out or [Axis("x", False, unit(r["x"]) if "x" in r else "m", np.unique(r["x"][()]) if "x" in r else np.array([]))]
 
 
+def open_map(prog, path, axes):
+    """A sweep over exactly the two AXES (in either order), read-only: the file and its /results;
+    exits naming the file and its axes otherwise (a map script given another map's file)."""
+    f = open_file(prog, path)
+    if "results" not in f:
+        sys.exit("%s: %s has no /results" % (prog, path))
+    names = [a.name for a in sweep_axes(f)]
+    if sorted(names) != sorted(axes):
+        sys.exit("%s: %s is not a sweep over %s (its axes: %s)" % (prog, path, " and ".join(axes), ", ".join(names)))
+    return f, f["results"]
+
+
 def status(group, n):
     """/results/status as integers (0 for a file without it)."""
     return counts(group, "status", missing=1) if "status" in group else np.zeros(n, dtype=int)

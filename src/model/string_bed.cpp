@@ -52,7 +52,7 @@ PetscReal BedCellArea(const BedGrid &g, PetscInt i, PetscInt j)
   const auto      overlap = [](PetscReal a0, PetscReal a1, PetscReal b0, PetscReal b1) { return std::max<PetscReal>(0, std::min(a1, b1) - std::max(a0, b0)); };
   if (g.shape == HeadShape::Rectangle) return overlap(x0, x1, -g.a, g.a) * overlap(z0, z1, -g.b, g.b);
   const auto inside = [&](PetscReal x, PetscReal z) { return (x / g.a) * (x / g.a) + (z / g.b) * (z / g.b) <= 1; };
-  bool all = true, none = true;
+  bool all = true;
   for (PetscReal x : {x0, x1})
     for (PetscReal z : {z0, z1}) all = all && inside(x, z);
   if (all) return g.hx * g.hz;
@@ -65,7 +65,7 @@ PetscReal BedCellArea(const BedGrid &g, PetscInt i, PetscInt j)
   };
   const PetscReal xa = std::max(x0, -g.a), xb = std::min(x1, g.a);
   if (!(xb > xa)) return 0;
-  none = true;
+  bool           none = true;
   const PetscInt n = 4096; // midpoints: the chord has a kink where it meets z0 or z1 and a square root at x = +-a
   PetscReal      s = 0;
   for (PetscInt k = 0; k < n; ++k) {

@@ -57,12 +57,6 @@ const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes
   return last;
 }
 
-// Whether the measures of a state held in modes can be taken in them: the energies are then sums
-// over the modes (mass-normalised: kinetic 1/2 sum zd_k^2, strain 1/2 sum w_k^2 z_k^2) and the
-// momenta the projections above. Not with a monitor that asks for the physical state (point
-// velocities, a segment's energy), nor with parts whose energies are kept apart (a barrel wall,
-// the frame's roll, a string bed) or a grip (its springs and the hands' work): those are taken
-// over the dofs.
 // Whether the system has parts whose energies are kept apart from the beam's (a barrel wall, the
 // frame's roll, a string bed): without, their sums are 0 and BeamSystemPartEnergies is not needed.
 bool SeparateParts(const BeamSystem &S)
@@ -73,6 +67,12 @@ bool SeparateParts(const BeamSystem &S)
   return false;
 }
 
+// Whether the measures of a state held in modes can be taken in them: the energies are then sums
+// over the modes (mass-normalised: kinetic 1/2 sum zd_k^2, strain 1/2 sum w_k^2 z_k^2) and the
+// momenta the projections above. Not with a monitor that asks for the physical state (point
+// velocities, a segment's energy), nor with parts whose energies are kept apart (a barrel wall,
+// the frame's roll, a string bed) or a grip (its springs and the hands' work): those are taken
+// over the dofs.
 bool MeasuresInModes(const BeamSystem &S, const MeasureContext &ctx, const MonitorRequest *mon)
 {
   if (mon && (mon->segment || !mon->velocity_at.empty())) return false;

@@ -6,6 +6,8 @@
 #include "model/shell.hpp"
 #include "model/torsion.hpp"
 
+#include <petscblaslapack.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -217,36 +219,34 @@ PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, Pet
   return 0.5 * T;
 }
 
-std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll)
+namespace {
+
+// The velocity field of a rigid motion: v0 + slope x (+ roll z on a string bed's deflections) on
+// the deflections, slope on a Timoshenko section's rotation, roll on the frame's roll; with
+// `holds`, 0 on the held dofs.
+std::vector<PetscReal> RigidField(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll, bool holds)
 {
   std::vector<PetscReal> v(sys.ndof, 0.0);
-  for (PetscInt i = 0; i < sys.nodes; ++i)
-    for (PetscInt f = 0; f < sys.fields; ++f) {
-      const PetscInt d = sys.Dof(i, f);
-      if (sys.held[d]) continue;
-      if (sys.Deflection(f)) v[d] = v0 + slope * sys.NodeX(i) + roll * sys.DofZ(d);
-      else if (sys.Rotation(f)) v[d] = slope;
-      else if (f == sys.roll_field) v[d] = roll;
-    }
+  for (PetscInt d = 0; d < sys.ndof; ++d) {
+    const PetscInt f = d % sys.fields;
+    if (holds && sys.held[d]) continue;
+    if (sys.Deflection(f)) v[d] = v0 + slope * sys.NodeX(d / sys.fields) + roll * sys.DofZ(d);
+    else if (sys.Rotation(f)) v[d] = slope;
+    else if (f == sys.roll_field) v[d] = roll;
+  }
   return v;
 }
+
+} // namespace
+
+std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll) { return RigidField(sys, v0, slope, roll, true); }
 
 std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &sys)
 {
   std::vector<std::vector<PetscReal>> c;
-  const auto                          all = [&](PetscReal v0, PetscReal slope, PetscReal roll) {
-    std::vector<PetscReal> v(sys.ndof, 0.0);
-    for (PetscInt d = 0; d < sys.ndof; ++d) {
-      const PetscInt f = d % sys.fields;
-      if (sys.Deflection(f)) v[d] = v0 + slope * sys.NodeX(d / sys.fields) + roll * sys.DofZ(d);
-      else if (sys.Rotation(f)) v[d] = slope;
-      else if (f == sys.roll_field) v[d] = roll;
-    }
-    return v;
-  };
-  c.push_back(all(1, 0, 0));
-  c.push_back(all(0, 1.0 / sys.L, 0)); // scaled like the translation (a slope of 1/L)
-  if (sys.roll_field >= 0) c.push_back(all(0, 0, 1.0 / sys.L));
+  c.push_back(RigidField(sys, 1, 0, 0, false));
+  c.push_back(RigidField(sys, 0, 1.0 / sys.L, 0, false)); // scaled like the translation (a slope of 1/L)
+  if (sys.roll_field >= 0) c.push_back(RigidField(sys, 0, 0, 1.0 / sys.L, false));
   return c;
 }
 
@@ -255,49 +255,28 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys
   const std::vector<std::vector<PetscReal>> c = BeamSystemRigidCandidates(sys);
   const int                                 k = (int)c.size();
   // The null space of H (the candidates' values at the held dofs): eigenvectors of H^T H for
-  // eigenvalues below 1e-12 of its trace (Jacobi on a k x k symmetric matrix, k <= 3).
-  PetscReal A[3][3] = {{0}}, V[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  // eigenvalues below 1e-12 of its trace (LAPACK's syev on the k x k matrix, k <= 3).
+  PetscReal A[9] = {0}, lambda[3] = {0}, work[32];
   for (PetscInt d = 0; d < sys.ndof; ++d)
     if (sys.held[d])
       for (int a = 0; a < k; ++a)
-        for (int b = 0; b < k; ++b) A[a][b] += c[a][d] * c[b][d];
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    PetscReal off = 0;
-    for (int p = 0; p < k; ++p)
-      for (int q = p + 1; q < k; ++q) off += A[p][q] * A[p][q];
-    if (off == 0) break;
-    for (int p = 0; p < k; ++p)
-      for (int q = p + 1; q < k; ++q) {
-        if (A[p][q] == 0) continue;
-        const PetscReal th = 0.5 * (A[q][q] - A[p][p]) / A[p][q];
-        const PetscReal t = (th >= 0 ? 1 : -1) / (std::abs(th) + std::sqrt(th * th + 1)), cs = 1 / std::sqrt(t * t + 1), sn = t * cs;
-        for (int r = 0; r < k; ++r) { // A <- J^T A J
-          const PetscReal arp = A[r][p], arq = A[r][q];
-          A[r][p] = cs * arp - sn * arq, A[r][q] = sn * arp + cs * arq;
-        }
-        for (int r = 0; r < k; ++r) {
-          const PetscReal apr = A[p][r], aqr = A[q][r];
-          A[p][r] = cs * apr - sn * aqr, A[q][r] = sn * apr + cs * aqr;
-        }
-        for (int r = 0; r < k; ++r) {
-          const PetscReal vrp = V[r][p], vrq = V[r][q];
-          V[r][p] = cs * vrp - sn * vrq, V[r][q] = sn * vrp + cs * vrq;
-        }
-      }
-  }
+        for (int b = 0; b < k; ++b) A[a * k + b] += c[a][d] * c[b][d];
   PetscReal trace = 0;
-  for (int a = 0; a < k; ++a) trace += A[a][a];
+  for (int a = 0; a < k; ++a) trace += A[a * k + a];
+  PetscBLASInt n = k, lwork = 32, info = 0;
+  LAPACKsyev_("V", "U", &n, A, &n, lambda, work, &lwork, &info); // column e of A: the eigenvector of lambda[e]
+  if (info != 0) return {};
   PetscReal kmax = 0;
   for (PetscReal b : sys.band) kmax = std::max(kmax, std::abs(b));
   std::vector<std::vector<PetscReal>> out;
   std::vector<PetscReal>              f(sys.ndof);
   for (int e = 0; e < k; ++e) {
-    if (trace > 0 && A[e][e] > 1e-12 * trace) continue;
+    if (trace > 0 && lambda[e] > 1e-12 * trace) continue;
     std::vector<PetscReal> v(sys.ndof, 0.0);
     PetscReal              vmax = 0, fmax = 0;
     for (PetscInt d = 0; d < sys.ndof; ++d) {
       if (!sys.held[d])
-        for (int a = 0; a < k; ++a) v[d] += V[a][e] * c[a][d];
+        for (int a = 0; a < k; ++a) v[d] += A[e * k + a] * c[a][d];
       vmax = std::max(vmax, std::abs(v[d]));
     }
     BeamSystemStiffnessApply(sys, v.data(), sys.fields, 0, sys.ndof, f.data(), sys.fields);
