@@ -1,6 +1,7 @@
 // Task drivers and the table -task chooses from. See tasks.hpp.
 #include "app/tasks.hpp"
 
+#include "app/docs_markdown.hpp"
 #include "app/task_flight.hpp"
 #include "app/task_strings.hpp"
 #include "base/option_table.hpp"
@@ -246,7 +247,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
 }
 
 namespace {
-PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out);
+PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, std::string *markdown = nullptr);
 
 // Every reader of every task, once, their own checks skipped (their errors ignored): under
 // -help each prints its block; defaults may not make a runnable sweep, and that is not what
@@ -386,6 +387,11 @@ const OptionModule &TaskOptionTable()
         OptionFlag("-output_overwrite", "Let -output replace a file another task wrote"),
         OptionFlag("-allow_unused_options", "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
         OptionFlag("-error_traceback", "PETSc's full traceback on errors instead of the one-line message"),
+        OptionChoice("-help_markdown",
+                     "Print a reference generated from the program's tables, as Markdown, and run nothing: "
+                     "options (every option's row, docs/options.md) or results (every task's columns, "
+                     "docs/results.md)",
+                     {"options", "results"}, "options"),
       },
     };
   }();
@@ -394,15 +400,16 @@ const OptionModule &TaskOptionTable()
 
 namespace {
 
-// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback (task and output
-// null: only read, as for -help; the last two are acted on by the unused-option check and
-// main, and read here for -help and the run record).
-PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out)
+// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback, -help_markdown
+// (task and output null: only read, as for -help; -allow_unused_options and -error_traceback
+// are acted on by the unused-option check and main, and read here for -help and the run
+// record). *markdown: the reference -help_markdown asks for, "" when not given.
+PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, std::string *markdown)
 {
   const OptionModule &T = TaskOptionTable();
   PetscInt            t = 0;
-  std::string         output;
-  PetscBool           set_output, flag = PETSC_FALSE;
+  std::string         output, reference = "options";
+  PetscBool           set_output, set_reference, flag = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
@@ -413,7 +420,9 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out)
   PetscCall(OptionsRead(PetscOptionsObject, T, "-allow_unused_options", &flag, NULL));
   flag = PETSC_FALSE;
   PetscCall(OptionsRead(PetscOptionsObject, T, "-error_traceback", &flag, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-help_markdown", &reference, &set_reference));
   PetscOptionsEnd();
+  if (markdown) *markdown = set_reference ? reference : std::string();
   if (task) *task = t;
   if (out) {
     PetscCheck(!set_output || !output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output needs a file name (or 'none' to write nothing); it was given empty");
@@ -437,7 +446,12 @@ PetscErrorCode RunTask(MPI_Comm comm)
     PetscCall(PrintAllOptions(comm));
     PetscFunctionReturn(0);
   }
-  PetscCall(RunTaskOptions(comm, &task, &out));
+  std::string markdown;
+  PetscCall(RunTaskOptions(comm, &task, &out, &markdown));
+  if (!markdown.empty()) { // a reference generated from the tables (docs/options.md, docs/results.md)
+    PetscCall(DocsPrintMarkdown(comm, markdown));
+    PetscFunctionReturn(0);
+  }
   PetscCall(OutputCheck(comm, out, Tasks[task].name));
   PetscCall(Tasks[task].run(comm, out));
   PetscFunctionReturn(0);

@@ -52,21 +52,25 @@ OptionRange Between(double lo, double hi, bool lo_open, bool hi_open)
   return r;
 }
 
+std::string OptionSpec::CountText() const
+{
+  if (count_min > 0 && count_min == count_max)
+    return std::to_string(count_min) + (count_min == 1 ? " value" : " values");
+  if (count_min > 0 && count_max > 0) return std::to_string(count_min) + " to " + std::to_string(count_max) + " values";
+  if (count_min > 1) return "at least " + std::to_string(count_min) + " values";
+  if (count_max > 0) return "at most " + std::to_string(count_max) + " values";
+  return "one or more values";
+}
+
 std::string OptionSpec::Allowed() const
 {
   const std::string u = unit.empty() || unit == "1" ? "" : " (" + unit + ")";
   switch (kind) {
   case OptionKind::Real: return "it must be " + (range_text.empty() ? range.Text() : range_text) + u;
   case OptionKind::Int: return "it must be a whole number " + (range_text.empty() ? range.Text() : range_text);
-  case OptionKind::RealList: {
-    std::string n;
-    if (count_min > 0 && count_min == count_max) n = std::to_string(count_min) + (count_min == 1 ? " value" : " values");
-    else if (count_min > 0 && count_max > 0) n = std::to_string(count_min) + " to " + std::to_string(count_max) + " values";
-    else if (count_min > 1) n = "at least " + std::to_string(count_min) + " values";
-    else if (count_max > 0) n = "at most " + std::to_string(count_max) + " values";
-    else n = "one or more values";
-    return "it takes " + n + " separated by commas, each " + (range_text.empty() ? range.Text() : range_text) + u;
-  }
+  case OptionKind::RealList:
+    return "it takes " + CountText() + " separated by commas, each " + (range_text.empty() ? range.Text() : range_text) +
+           u;
   case OptionKind::Choice: {
     std::string s;
     for (const std::string &c : choices) s += (s.empty() ? "" : ", ") + c;

@@ -6,7 +6,8 @@
 //   * the check of unknown options (base/options_util.hpp): the known names are the rows of the
 //     registered tables, nothing is captured and nothing calls up into the application;
 //   * a sweep's axes: the unit of a numeric axis, the choices of a categorical one;
-//   * the run record: every value a reader read, as used, with its unit (OptionsUsed).
+//   * the run record: every value a reader read, as used, with its unit (OptionsUsed);
+//   * the options reference docs/options.md (app/docs_markdown.hpp: -help_markdown options).
 // A read checks the value against the row (finite, in range, a known choice, a list of the
 // right length without empty items; NaN and inf are never numbers here) and an error names the
 // option, the value as written and what is allowed: "-impact_window nan is not allowed: it must
@@ -56,7 +57,8 @@ struct OptionSpec {
   // "-other=value" (that option's value as used, e.g. "-beam_theory=timoshenko"). Empty: always.
   // An option given where a condition fails has no effect: a note (OptionsWithoutEffect).
   std::vector<std::string> needs;
-  std::string Allowed() const; // the words of an error message: "it must be > 0 (N/m)"
+  std::string Allowed() const;   // the words of an error message: "it must be > 0 (N/m)"
+  std::string CountText() const; // a RealList's number of values: "2 values", "one or more values"
 };
 
 // Rows, built readably (the row's fields in order: name, unit, help, default, range).

@@ -35,8 +35,10 @@ const OptionModule &BeamOptionTable()
       OptionReal("-beam_youngs_over_density", "N m/kg", "E/rho; with -beam_mass and a", "", Positive()),
       OptionReal("-beam_EI", "N m^2", "Bending stiffness EI; with -beam_mu", "", Positive()),
       OptionReal("-beam_mu", "kg/m", "Mass per length mu; with -beam_EI", "", Positive()),
-      OptionFile("-beam_profile", "Round sections along the beam: file of rows 'x D [d]' (m), with E and rho"),
-      OptionFile("-beam_properties", "Section properties along the beam: file of rows 'x EI mu [kappaGA rhoI]' (SI)"),
+      OptionFile("-beam_profile", "Round sections along the beam: file of rows 'x D [d]' (m: the outer and an "
+                                  "optional inner diameter, linear between rows), with E and rho"),
+      OptionFile("-beam_properties", "Section properties along the beam: file of rows 'x EI mu [kappaGA rhoI [GJ "
+                                     "rhoJ]]' (SI; linear between rows; GJ, rhoJ for -beam_torsion)"),
       OptionChoice("-beam_theory", "Beam theory (model/beam_theory.hpp): euler (Euler-Bernoulli), timoshenko (shear and rotary inertia)", TheoryChoices(), "euler"),
       OptionNeeds(OptionReal("-beam_shear_modulus", "Pa", "Shear modulus G: Timoshenko with E, rho (uniform or profile)", "", Positive()), {"-beam_theory=timoshenko"}),
       [] {

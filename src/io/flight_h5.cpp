@@ -45,29 +45,50 @@ PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m,
   PetscFunctionReturn(0);
 }
 
+const std::vector<FlightResultColumn> &FlightResultColumns()
+{
+  using R = const FlightResult &;
+  static const std::vector<FlightResultColumn> table = {
+    {"distance", "m", "the carry: launch point to landing, horizontal", false,
+     [](R r) -> double { return r.landing.distance; }},
+    {"apex", "m", "the highest point above the ground (the launch height when launched downward)", false,
+     [](R r) -> double { return r.apex; }},
+    {"apex_time", "s", "when the ball is highest", false, [](R r) -> double { return r.apex_time; }},
+    {"hang_time", "s", "time from launch to landing", false, [](R r) -> double { return r.landing.hang_time; }},
+    {"landing_speed", "m/s", "the ball's speed at the landing", false,
+     [](R r) -> double { return r.landing.landing_speed; }},
+    {"landing_angle", "deg", "the landing's direction below the horizontal", false,
+     [](R r) -> double { return r.landing.landing_angle; }},
+    {"landing_x", "m", "the landing point's x: to the right, seen from the launch point looking down the field", false,
+     [](R r) -> double { return r.landing.landing_x; }},
+    {"landing_y", "m", "the landing point's y: down the field (the launch direction at -flight_direction 0)", false,
+     [](R r) -> double { return r.landing.landing_y; }},
+    {"bearing", "deg", "the landing point's direction from the y axis toward +x, seen from the launch point", false,
+     [](R r) -> double { return r.landing.bearing; }},
+    {"landing_residual", "m", "|z| of the located landing state", false,
+     [](R r) -> double { return r.landing_residual; }},
+    {"wall_time", "s", "wall-clock time of the flight's integration", false, [](R r) -> double { return r.wall_time; }},
+    {"steps", "1", "accepted steps", true, [](R r) -> double { return (double)r.steps; }},
+    {"rejected_steps", "1", "steps rejected by the error controller", true,
+     [](R r) -> double { return (double)r.rejected_steps; }},
+    {"locate_steps", "1", "the landing's re-steps (located onto z = 0)", true,
+     [](R r) -> double { return (double)r.locate_steps; }},
+    {"function_evals", "1", "right-hand side evaluations", true,
+     [](R r) -> double { return (double)r.function_evals; }},
+  };
+  return table;
+}
+
 // /results (one row) and /series of the flight r, into the open file.
 static PetscErrorCode FlightWriteGroups(hid_t file, const std::string &path, const FlightResult &r)
 {
   PetscFunctionBeginUser;
-  const FlightLanding &l = r.landing;
-  hid_t                g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t g = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /results in %s", path.c_str());
-  const struct {
-    const char *name, *unit;
-    PetscReal   value;
-  } columns[] = {
-    {"distance", "m", l.distance},         {"apex", "m", r.apex},
-    {"apex_time", "s", r.apex_time},       {"hang_time", "s", l.hang_time},
-    {"landing_speed", "m/s", l.landing_speed}, {"landing_angle", "deg", l.landing_angle},
-    {"landing_x", "m", l.landing_x},       {"landing_y", "m", l.landing_y},
-    {"bearing", "deg", l.bearing},         {"landing_residual", "m", r.landing_residual},
-    {"wall_time", "s", r.wall_time},
-  };
-  for (const auto &c : columns) PetscCall(H5WriteDataset1D(g, c.name, {c.value}, c.unit));
-  PetscCall(H5WriteDatasetInt1D(g, "steps", {(long long)r.steps}, "1"));
-  PetscCall(H5WriteDatasetInt1D(g, "rejected_steps", {(long long)r.rejected_steps}, "1"));
-  PetscCall(H5WriteDatasetInt1D(g, "locate_steps", {(long long)r.locate_steps}, "1"));
-  PetscCall(H5WriteDatasetInt1D(g, "function_evals", {(long long)r.function_evals}, "1"));
+  for (const FlightResultColumn &c : FlightResultColumns()) {
+    if (c.integer) PetscCall(H5WriteDatasetInt1D(g, c.name, {(long long)c.get(r)}, c.unit));
+    else PetscCall(H5WriteDataset1D(g, c.name, {(PetscReal)c.get(r)}, c.unit));
+  }
   H5Gclose(g);
   const FlightSeries &q = r.series;
   g                     = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);

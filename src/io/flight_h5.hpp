@@ -12,8 +12,20 @@
 #include <petscsys.h>
 
 #include <string>
+#include <vector>
 
 namespace beamimpact {
+
+// A column of the flight's /results (one row), defined once: the file and the results
+// reference (docs/results.md, beamimpact -help_markdown results) follow this table.
+struct FlightResultColumn {
+  const char *name;
+  const char *unit;        // "1": dimensionless
+  const char *description; // one line
+  bool        integer;     // a count: an integer dataset
+  double (*get)(const FlightResult &r);
+};
+const std::vector<FlightResultColumn> &FlightResultColumns();
 
 // Program and provenance, the parameters of the flight as used and what the run derived.
 PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m, const FlightSolveParams &s, const FlightResult &r, RunRecord *rec);

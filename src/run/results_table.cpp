@@ -1,4 +1,4 @@
-// The results table. See results_table.hpp; docs/model.md section 9 lists it for readers.
+// The results table. See results_table.hpp; docs/results.md lists it for readers (beamimpact -help_markdown results).
 #include "run/results_table.hpp"
 
 #include "model/rigid.hpp"
@@ -137,8 +137,10 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("x", "m", &R::x, ResultAlways, kAlways, [](F f) -> double { return f.sc->impact.x; }, "impact point x_imp"),
     Real("acor", "1", &R::acor, BallMoves, kBallMoves, [](F f) -> double { return Acor(f); }, "apparent coefficient of restitution -v_b,final / v_i"),
     Real("acor_corrected", "1", &R::acor_corrected, BallMoves, kBallMoves, [](F f) -> double { return AcorCorrected(f); },
-         "linear law: acor x -ball_loss_factor; otherwise acor"),
-    Real("contact_time", "s", &R::contact_time, ResultAlways, kAlways, [](F f) -> double { return f.contact->contact_time; }, "duration of the first contact"),
+         "an elastic law (linear, hertz): acor x -ball_loss_factor; otherwise acor"),
+    Real("contact_time", "s", &R::contact_time, ResultAlways, kAlways,
+         [](F f) -> double { return f.contact->contact_time; },
+         "duration of the first contact (its start to the first separation)"),
     Real("contact_time_total", "s", &R::contact_time_total, ResultAlways, kAlways, [](F f) -> double { return f.contact->contact_time_total; }, "contact time summed over all contacts"),
     Real("peak_force", "N", &R::peak_force, ResultAlways, kAlways, [](F f) -> double { return f.contact->peak_force; }, "largest force at a maximum-compression event"),
     Real("max_compression", "m", &R::max_compression, ResultAlways, kAlways, [](F f) -> double { return f.contact->max_compression; },
@@ -147,7 +149,7 @@ std::vector<ResultColumn> OutcomeColumns()
     Flag("ended_in_contact", &R::ended_in_contact, [](F f) -> double { return f.contact->touching ? 1 : 0; }, "1 if the run reached -impact_max_time while touching"),
     Flag("compression_beyond_radius", &R::compression_beyond_radius,
          [](F f) -> double { return f.sc->ball.radius > 0 && f.contact->max_compression > f.sc->ball.radius ? 1 : 0; },
-         "1 if max_compression exceeds -ball_radius (given): physically absurd"),
+         "1 if max_compression exceeds -ball_radius (given): physically absurd (a sweep's summary counts such rows)"),
     Real("ball_final_velocity", "m/s", &R::ball_final_velocity, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_v; }, "the ball's velocity at the end (negative: rebound)"),
     Real("final_time", "s", &R::final_time, ResultAlways, kAlways, [](F f) -> double { return f.final_time; }, "simulated time at the end"),
     Real("energy_error", "1", &R::energy_error, ResultAlways, kAlways, [](F f) -> double { return (f.energy_end - f.energy_in) / f.energy_in; },
@@ -161,13 +163,13 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("beam_strain_end", "J", &R::beam_strain_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_strain; }, "the beam's strain energy at the end"),
     Real("ball_kinetic_end", "J", &R::ball_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_kinetic; }, "the ball's kinetic energy at the end (its rebound)"),
     Real("ball_dissipated_end", "J", &R::ball_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return BallDissipated(f); },
-         "energy dissipated in the ball (0 for the linear law)"),
+         "energy dissipated in the ball (0 for an elastic law)"),
     Real("ball_loss_fraction", "1", &R::ball_loss_fraction, BallMoves, kBallMoves,
          [](F f) -> double {
            const BallParams &b = f.sc->ball;
            return (ContactElastic(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic : BallDissipated(f)) / f.E_in;
          },
-         "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (linear)"),
+         "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (elastic)"),
     Real("translation_fraction", "1", &R::translation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_translation / f.E_in; },
          "the beam's rigid translation P^2/2M at the end / E_in"),
     Real("rotation_fraction", "1", &R::rotation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_rotation / f.E_in; },

@@ -6,6 +6,8 @@
 // /results datasets of an impact file (their units, and the order in the root attribute
 // results_columns that scripts/h5_to_csv.py follows), a sweep's columns.
 //
+// The results reference docs/results.md is printed from this table (-help_markdown results;
+// `cmake --build --preset dev --target docs` rewrites it, the test docs_generated checks it).
 // A new column is one row in results_table.cpp and its field in ImpactOutcome (run/impact.hpp);
 // a quantity the measures do not hold yet needs it in the record the driver hands the outcome
 // (run/outcome.hpp), from the events (ContactTally) or the monitors (MonitorPeaks).

@@ -13,8 +13,74 @@
 namespace beamimpact {
 
 namespace {
-
 const PetscReal NaN = std::numeric_limits<PetscReal>::quiet_NaN();
+} // namespace
+
+const std::vector<ConvergenceRunColumn> &ConvergenceRunColumns()
+{
+  using C = const ConvergenceConfig &;
+  using R = const ConvergenceRun &;
+  static const std::vector<ConvergenceRunColumn> table = {
+    {"level", "1", "the level of the sequence, from 0 (the largest step or loosest tolerance)", true,
+     [](C, R r) -> double { return (double)r.level; }},
+    {"dt", "s (tol runs: initial step)", "the fixed step (a tolerance sequence: the initial step)", false,
+     [](C, R r) -> double { return r.dt; }},
+    {"rtol", "1", "the relative tolerance (a tolerance sequence)", false,
+     [](C, R r) -> double { return r.rtol; }},
+    {"atol", "m or m/s (the state's displacements and velocities)", "the absolute tolerance (a tolerance sequence)",
+     false,
+     [](C, R r) -> double { return r.atol; }},
+    {"mean_step", "s", "simulated time / accepted steps", false,
+     [](C, R r) -> double { return r.mean_step; }},
+    {"step", "s (dt, or mean_step for tol runs)", "the step the orders are measured against", false,
+     [](C cfg, R r) -> double { return r.failed ? NaN : ConvergenceStepOf(cfg, r); }},
+    {"failed", "1 (1: the level failed)", "1 if the level's run failed (its numbers NaN)", true,
+     [](C, R r) -> double { return r.failed ? 1 : 0; }},
+    {"acor", "1", "the level's ACOR", false,
+     [](C, R r) -> double { return r.failed ? NaN : r.result.acor; }},
+    {"acor_error", "1 (absolute)", "|acor - the reference's acor|", false,
+     [](C, R r) -> double { return r.acor_error; }},
+    {"contact_time_error", "1 (relative)", "the contact time's error against the reference", false,
+     [](C, R r) -> double { return r.contact_time_error; }},
+    {"peak_force_error", "1 (relative)", "the peak force's error against the reference", false,
+     [](C, R r) -> double { return r.peak_force_error; }},
+    {"max_compression_error", "1 (relative)", "the maximum compression's error against the reference", false,
+     [](C, R r) -> double { return r.max_compression_error; }},
+    {"energy_error", "1 (|E_end - E_0| / E_0)", "the run's own energy balance", false,
+     [](C, R r) -> double { return r.energy_error; }},
+    {"exit_speed_error", "1 (relative; NaN unless oblique)", "the batted ball's speed against the reference", false,
+     [](C, R r) -> double { return r.exit_speed_error; }},
+    {"launch_angle_error", "deg (absolute; NaN unless oblique)", "the launch angle against the reference", false,
+     [](C, R r) -> double { return r.launch_angle_error; }},
+    {"spin_error", "1 (relative; NaN unless oblique)", "the batted ball's spin against the reference", false,
+     [](C, R r) -> double { return r.spin_error; }},
+    {"contacts", "1", "separate contacts", true,
+     [](C, R r) -> double { return (double)r.result.contacts; }},
+    {"wall_time", "s, minimum of the repeats", "wall-clock time of the time stepping, the least of the repeats", false,
+     [](C, R r) -> double { return r.failed ? NaN : r.result.wall_time; }},
+    {"wall_time_max", "s, maximum of the repeats", "the same, the largest of the repeats", false,
+     [](C, R r) -> double { return r.failed ? NaN : r.wall_time_max; }},
+    {"steps", "1", "accepted steps", true,
+     [](C, R r) -> double { return (double)r.result.steps; }},
+    {"rejected_steps", "1", "steps rejected by the error controller", true,
+     [](C, R r) -> double { return (double)r.result.rejected_steps; }},
+    {"event_steps", "1", "extra steps to locate events", true,
+     [](C, R r) -> double { return (double)r.result.event_steps; }},
+    {"function_evals", "1", "residual evaluations", true,
+     [](C, R r) -> double { return (double)r.result.function_evals; }},
+    {"jacobian_evals", "1", "Jacobian requests", true,
+     [](C, R r) -> double { return (double)r.result.jacobian_evals; }},
+    {"jacobian_assemblies", "1", "Jacobian re-assemblies", true,
+     [](C, R r) -> double { return (double)r.result.jacobian_assemblies; }},
+    {"nonlinear_its", "1", "Newton iterations", true,
+     [](C, R r) -> double { return (double)r.result.nonlinear_its; }},
+    {"linear_its", "1 (linear solves; preonly LU: one per solve)", "Krylov iterations", true,
+     [](C, R r) -> double { return (double)r.result.linear_its; }},
+  };
+  return table;
+}
+
+namespace {
 
 // ---------------------------------------------------------------------------
 // The HDF5 file
@@ -45,49 +111,18 @@ PetscErrorCode WriteReference(hid_t file, const ConvergenceReference &ref)
 // One column per quantity of a configuration's runs, one row per level.
 PetscErrorCode WriteConfigRuns(hid_t g, const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs)
 {
-  auto col = [&](const char *name, const char *unit, auto get) -> PetscErrorCode {
-    std::vector<double> v;
-    PetscFunctionBeginUser;
-    for (auto &r : runs) v.push_back((double)get(r));
-    PetscCall(H5WriteDataset1D(g, name, v, unit));
-    PetscFunctionReturn(0);
-  };
-  auto icol = [&](const char *name, const char *unit, auto get) -> PetscErrorCode { // a count: an integer dataset
-    std::vector<long long> v;
-    PetscFunctionBeginUser;
-    for (auto &r : runs) v.push_back((long long)get(r));
-    PetscCall(H5WriteDatasetInt1D(g, name, v, unit));
-    PetscFunctionReturn(0);
-  };
-
   PetscFunctionBeginUser;
-  PetscCall(icol("level", "1", [](const ConvergenceRun &r) { return (double)r.level; }));
-  PetscCall(col("dt", "s (tol runs: initial step)", [](const ConvergenceRun &r) { return r.dt; }));
-  PetscCall(col("rtol", "1", [](const ConvergenceRun &r) { return r.rtol; }));
-  PetscCall(col("atol", "m or m/s (the state's displacements and velocities)", [](const ConvergenceRun &r) { return r.atol; }));
-  PetscCall(col("mean_step", "s", [](const ConvergenceRun &r) { return r.mean_step; }));
-  PetscCall(col("step", "s (dt, or mean_step for tol runs)", [&](const ConvergenceRun &r) { return r.failed ? NaN : ConvergenceStepOf(cfg, r); }));
-  PetscCall(icol("failed", "1 (1: the level failed)", [](const ConvergenceRun &r) { return r.failed ? 1 : 0; }));
-  PetscCall(col("acor", "1", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.acor; }));
-  PetscCall(col("acor_error", "1 (absolute)", [](const ConvergenceRun &r) { return r.acor_error; }));
-  PetscCall(col("contact_time_error", "1 (relative)", [](const ConvergenceRun &r) { return r.contact_time_error; }));
-  PetscCall(col("peak_force_error", "1 (relative)", [](const ConvergenceRun &r) { return r.peak_force_error; }));
-  PetscCall(col("max_compression_error", "1 (relative)", [](const ConvergenceRun &r) { return r.max_compression_error; }));
-  PetscCall(col("energy_error", "1 (|E_end - E_0| / E_0)", [](const ConvergenceRun &r) { return r.energy_error; }));
-  PetscCall(col("exit_speed_error", "1 (relative; NaN unless oblique)", [](const ConvergenceRun &r) { return r.exit_speed_error; }));
-  PetscCall(col("launch_angle_error", "deg (absolute; NaN unless oblique)", [](const ConvergenceRun &r) { return r.launch_angle_error; }));
-  PetscCall(col("spin_error", "1 (relative; NaN unless oblique)", [](const ConvergenceRun &r) { return r.spin_error; }));
-  PetscCall(icol("contacts", "1", [](const ConvergenceRun &r) { return (double)r.result.contacts; }));
-  PetscCall(col("wall_time", "s, minimum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.result.wall_time; }));
-  PetscCall(col("wall_time_max", "s, maximum of the repeats", [](const ConvergenceRun &r) { return r.failed ? NaN : r.wall_time_max; }));
-  PetscCall(icol("steps", "1", [](const ConvergenceRun &r) { return (double)r.result.steps; }));
-  PetscCall(icol("rejected_steps", "1", [](const ConvergenceRun &r) { return (double)r.result.rejected_steps; }));
-  PetscCall(icol("event_steps", "1", [](const ConvergenceRun &r) { return (double)r.result.event_steps; }));
-  PetscCall(icol("function_evals", "1", [](const ConvergenceRun &r) { return (double)r.result.function_evals; }));
-  PetscCall(icol("jacobian_evals", "1", [](const ConvergenceRun &r) { return (double)r.result.jacobian_evals; }));
-  PetscCall(icol("jacobian_assemblies", "1", [](const ConvergenceRun &r) { return (double)r.result.jacobian_assemblies; }));
-  PetscCall(icol("nonlinear_its", "1", [](const ConvergenceRun &r) { return (double)r.result.nonlinear_its; }));
-  PetscCall(icol("linear_its", "1 (linear solves; preonly LU: one per solve)", [](const ConvergenceRun &r) { return (double)r.result.linear_its; }));
+  for (const ConvergenceRunColumn &c : ConvergenceRunColumns()) {
+    if (c.integer) {
+      std::vector<long long> v;
+      for (const ConvergenceRun &r : runs) v.push_back((long long)c.get(cfg, r));
+      PetscCall(H5WriteDatasetInt1D(g, c.name, v, c.unit));
+    } else {
+      std::vector<double> v;
+      for (const ConvergenceRun &r : runs) v.push_back(c.get(cfg, r));
+      PetscCall(H5WriteDataset1D(g, c.name, v, c.unit));
+    }
+  }
   PetscFunctionReturn(0);
 }
 

@@ -11,6 +11,17 @@
 
 namespace beamimpact {
 
+// A column of /configs/<name> (one row per level of the configuration), defined once: the file
+// and the results reference (docs/results.md, beamimpact -help_markdown results) follow it.
+struct ConvergenceRunColumn {
+  const char *name;
+  const char *unit;        // the dataset's unit attribute, as written ("1 (relative)")
+  const char *description; // one line
+  bool        integer;     // a count or a flag: an integer dataset
+  double (*get)(const ConvergenceConfig &cfg, const ConvergenceRun &run);
+};
+const std::vector<ConvergenceRunColumn> &ConvergenceRunColumns();
+
 // The file's root attributes: the scenario, its effective times and the plan.
 PetscErrorCode ConvergenceRecordBuild(const Scenario &sc, const ConvergencePlan &plan, RunRecord *record);
 

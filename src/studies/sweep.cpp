@@ -29,10 +29,12 @@ namespace beamimpact {
 std::vector<SweepColumn> SweepColumns(const SweepPlan &plan)
 {
   std::vector<SweepColumn> c;
-  c.push_back({"case_index", "1", false, true});
-  for (const SweepAxis &a : plan.axes) c.push_back({a.name, a.unit, false, false, a.labels});
-  c.push_back({"status", "1", false, true});
-  for (auto &rc : ImpactResultColumns()) c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time", rc.integer});
+  c.push_back({"case_index", "1", false, true, {}, "the point's index in the plan (the first axis slowest)"});
+  for (const SweepAxis &a : plan.axes)
+    c.push_back({a.name, a.unit, false, false, a.labels, "the point's value of -" + a.name + " (a text axis: its label)"});
+  c.push_back({"status", "1", false, true, {}, "0: ok; else a code (below), its numbers NaN: a failed run or no impact"});
+  for (auto &rc : ImpactResultColumns())
+    c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time", rc.integer, {}, rc.description});
   return c;
 }
 

@@ -45,6 +45,7 @@ struct SweepColumn {
   bool                     timing;          // differs from run to run (wall_time): excluded from identity checks
   bool                     integer = false; // a count (double on disk for NaN rows, with the attribute integer = 1)
   std::vector<std::string> labels = {};     // a text axis (categorical): the row holds the index of its label; on disk the labels, as strings
+  std::string              description = {}; // one line, for the results reference (docs/results.md)
 };
 
 // The journal of the group leader on world rank `rank` in run (attempt) `run` of -output.
