@@ -5,7 +5,7 @@
 #     (racket-strings.opts) and the barrel wall's harmonics (the aluminium bat with -beam_shell);
 #     parsed with xml.etree, every DataItem names a dataset of the .h5 beside it (by relative
 #     name) with the declared dimensions and type, every grid's time is /snapshots/time's and its
-#     hyperslab that snapshot's row (tests/fields_check.py xdmf);
+#     part of the dataset it reads is that snapshot's row (tests/fields_check.py xdmf);
 #   * the wall's W_n under the ball (a point load at a node) against the run's own measure
 #     wall_deflection_peak, taken over every step by another path (run/measures.cpp);
 #   * every group of an impact, a sweep, a flight, a modes, a string bed's modes and a convergence

@@ -43,9 +43,12 @@ def text(v):
 # XDMF
 # ---------------------------------------------------------------------------------------------
 def hdf_item(item, xmf_dir, h5name, f):
-    """An HDF DataItem against the file: relative name, path, dimensions and type; its dataset."""
+    """An HDF DataItem against the file: its relative name, path, dimensions and type. Returns the
+    dataset and the part read (start, stride, count: Xdmf 3's "path|start:stride:count:dataspace";
+    the whole dataset without one), or None."""
     ref = item.text.strip()
     name, _, path = ref.partition(":")
+    path, _, part = path.partition("|")
     dims = tuple(int(d) for d in item.get("Dimensions").split())
     where = "DataItem %s" % ref
     if name != h5name or not os.path.exists(os.path.join(xmf_dir, name)):
@@ -57,10 +60,16 @@ def hdf_item(item, xmf_dir, h5name, f):
     ds = f[path]
     kind = {("Float", "8"): "f8", ("Float", "4"): "f4", ("Int", "8"): "i8", ("Int", "4"): "i4"}.get(
         (item.get("NumberType", "Float"), item.get("Precision", "4")))
-    if ds.shape != dims or ds.dtype.str[1:] != kind:
-        check(False, "%s: declared %s %s, the file has %s %s" % (where, dims, kind, ds.shape, ds.dtype))
+    if part:
+        start, stride, count, space = ([int(v) for v in p.split()] for p in part.split(":"))
+    else:
+        start, stride, count, space = [0] * ds.ndim, [1] * ds.ndim, list(ds.shape), list(ds.shape)
+    ok = tuple(space) == ds.shape and len(start) == len(stride) == len(count) == ds.ndim and all(
+        0 <= a and a + (c - 1) * t < n for a, t, c, n in zip(start, stride, count, ds.shape))
+    if not ok or ds.dtype.str[1:] != kind or np.prod(count) != np.prod(dims):
+        check(False, "%s: declared %s %s, part %s, the file has %s %s" % (where, dims, kind, part, ds.shape, ds.dtype))
         return None
-    return ds
+    return ds, start, stride, count
 
 
 def xml_values(item):
@@ -69,7 +78,7 @@ def xml_values(item):
 
 
 def check_grid(grid, k, time, xmf_dir, h5name, f):
-    """One grid of a temporal collection: its time, geometry, and the hyperslab of snapshot k."""
+    """One grid of a temporal collection: its time, geometry, and the values of snapshot k."""
     name = grid.get("Name")
     bad = []
     t = float(grid.find("Time").get("Value"))
@@ -85,23 +94,20 @@ def check_grid(grid, k, time, xmf_dir, h5name, f):
         bad.append("geometry %s with %d items" % (geo.get("GeometryType"), len(axes)))
     else:
         for item, n in zip(axes, (nx, ny)):
-            v = hdf_item(item, xmf_dir, h5name, f) if item.get("Format") == "HDF" else xml_values(item)
-            if v is None or v.shape != (n,):
+            read = hdf_item(item, xmf_dir, h5name, f) if item.get("Format") == "HDF" else (xml_values(item),)
+            if read is None or read[0].shape != (n,):
                 bad.append("axis %s: not %d values" % (item.text.strip(), n))
     attr = grid.find("Attribute")
-    slab = attr.find("DataItem")
-    sel, src = slab.findall("DataItem")
-    ds = hdf_item(src, xmf_dir, h5name, f)
-    if ds is None:
-        bad.append("no dataset for %s" % src.text.strip())
+    items = attr.findall("DataItem")
+    read = hdf_item(items[0], xmf_dir, h5name, f) if len(items) == 1 and items[0].get("Format") == "HDF" else None
+    if read is None:
+        bad.append("no HDF5 values for attribute %s" % attr.get("Name"))
     else:
-        start, stride, count = xml_values(sel).astype(int)
-        want_count = (1,) + ds.shape[1:]
-        if list(start) != [k] + [0] * (ds.ndim - 1) or list(stride) != [1] * ds.ndim or tuple(count) != want_count:
-            bad.append("hyperslab start %s stride %s count %s: not row %d of %s" % (start, stride, count, k, ds.shape))
-        declared = np.prod([int(d) for d in slab.get("Dimensions").split()])
-        if not (declared == np.prod(count) == nx * ny):
-            bad.append("%d values declared, %d selected, %d nodes" % (declared, np.prod(count), nx * ny))
+        ds, start, stride, count = read
+        if list(start) != [k] + [0] * (ds.ndim - 1) or list(stride) != [1] * ds.ndim or tuple(count) != (1,) + ds.shape[1:]:
+            bad.append("reads start %s stride %s count %s: not row %d of %s" % (start, stride, count, k, ds.shape))
+        if np.prod(count) != nx * ny:
+            bad.append("%d values read for %d nodes" % (np.prod(count), nx * ny))
     if attr.get("Center") != "Node":
         bad.append("attribute centred on %s" % attr.get("Center"))
     for b in bad:
@@ -126,7 +132,7 @@ def cmd_xdmf(xmf, h5, fields):
             good = all([check_grid(g, k, time, xmf_dir, h5name, f) for k, g in enumerate(grids)])
             if good:
                 print("ok:   %s: every grid's time is /snapshots/time's, every DataItem names a dataset of %s with its "
-                      "dimensions and type, each hyperslab is its snapshot's row" % (c.get("Name"), h5name))
+                      "dimensions and type, each grid's values are its snapshot's row" % (c.get("Name"), h5name))
 
 
 # ---------------------------------------------------------------------------------------------

@@ -58,19 +58,14 @@ void WriteGrid(std::ostringstream &o, const std::string &h5, const XdmfField &f,
     o << in << "<DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">0</DataItem>\n";
   else o << in << HdfItem(ny, h5, f.y) << "\n";
   o << "        </Geometry>\n";
-  o << "        <Attribute Name=\"" << f.attribute << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-  o << in << "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" << ny << " " << nx << "\" Type=\"HyperSlab\">\n";
+  // Row k of the values as Xdmf 3 reads a part of an HDF5 dataset, path|start:stride:count:dataspace
+  // (ParaView's Xdmf3 readers do not read an attribute through an XDMF HyperSlab item: its type is
+  // asked before its values are read).
   const std::string K = std::to_string(k), ts = std::to_string(T);
-  if (f.flat) { // row k of [time][ny * nx]: start, stride, count
-    o << in << "  <DataItem Dimensions=\"3 2\" NumberType=\"Int\" Format=\"XML\">" << K << " 0 1 1 1 " << n
-      << "</DataItem>\n";
-    o << in << "  " << HdfItem(ts + " " + n, h5, f.values) << "\n";
-  } else { // [k][:][:] of [time][ny][nx]
-    o << in << "  <DataItem Dimensions=\"3 3\" NumberType=\"Int\" Format=\"XML\">" << K << " 0 0 1 1 1 1 " << ny << " "
-      << nx << "</DataItem>\n";
-    o << in << "  " << HdfItem(ts + " " + ny + " " + nx, h5, f.values) << "\n";
-  }
-  o << in << "</DataItem>\n";
+  const std::string part = f.flat ? K + " 0:1 1:1 " + n + ":" + ts + " " + n // [time][ny * nx]
+                                  : K + " 0 0:1 1 1:1 " + ny + " " + nx + ":" + ts + " " + ny + " " + nx;
+  o << "        <Attribute Name=\"" << f.attribute << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+  o << in << HdfItem(ny + " " + nx, h5, f.values + "|" + part) << "\n";
   o << "        </Attribute>\n";
   o << "      </Grid>\n";
 }

@@ -1,8 +1,10 @@
-// The XDMF description of a results file's snapshots, so that ParaView (and VisIt) open them as a
-// time series: beside out.h5, out.xmf (XDMF 3) holds one temporal collection per field (the beam,
-// the string bed, the barrel's wall), one grid per snapshot time: a rectilinear grid (a line of
-// the beam's nodes, or a 2-D grid) whose node values are that time's row of the field's
-// [time][...] dataset in out.h5 (an XDMF HyperSlab), the file named relative to out.xmf.
+// The XDMF description of a results file's snapshots, so that ParaView opens them as a time series:
+// beside out.h5, out.xmf (XDMF 3) holds one temporal collection per field (the beam, the string
+// bed, the barrel's wall), one grid per snapshot time: a rectilinear grid (a line of the beam's
+// nodes, or a 2-D grid) whose node values are that time's row of the field's [time][...] dataset
+// in out.h5, named relative to out.xmf. The row is given as Xdmf 3 writes a part of an HDF5
+// dataset, "out.h5:/snapshots/y|k 0:1 1:1 N:T N" (start:stride:count:dataspace), which ParaView's
+// Xdmf3 readers (its default for .xmf) read; its legacy "XDMF Reader" (Xdmf 2) does not.
 #pragma once
 
 #include <petscsys.h>
