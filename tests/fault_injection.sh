@@ -2,7 +2,8 @@
 # Faults while results are written: nothing lost, nothing half-written, no crash.
 #   1. A full disk during an impact, a modes run and a sweep: a 100 kB tmpfs made here (root, as
 #      in CI), else an LD_PRELOAD (tests/enospc_preload.c) that makes writes under a directory
-#      fail with ENOSPC. Each run ends with an error naming -output and "disk full", exit status
+#      fail with ENOSPC (an impact with snapshots: also once its XDMF description is written and
+#      the file is not). Each run ends with an error naming -output and "disk full", exit status
 #      1 (no signal: no crash at PetscFinalize), no "wrote", no temporary file left, and the
 #      file of an earlier run at that path unchanged. The sweep, given room again, resumes and
 #      its file equals an uninterrupted run's.
@@ -81,7 +82,18 @@ if [[ -n $mode ]]; then
   full_run impact_full.log "${small[@]}" -monitor_energy -monitor_ball -snapshot_times 1e-5,2e-5,3e-5,4e-5,5e-5,6e-5,7e-5,8e-5 -output "$full/impact.h5"
   refused_cleanly "impact on a full disk" impact_full.log $? "$full/impact.h5"
   cmp -s impact_old.h5 "$full/impact.h5" && pass "impact: the earlier file is unchanged" || fail "impact: the earlier file was changed"
+  [[ -e "$full/impact.xmf" ]] && fail "impact: its snapshots' description impact.xmf was left" || pass "impact: no impact.xmf left"
   rm -f "$full/impact.h5"
+  # the snapshots' description (7 kB, written first) fits, the file does not: neither is installed,
+  # the description there before is unchanged
+  printf '<?xml version="1.0" ?>\n<!-- Written by beamimpact: an earlier description -->\n' >"$full/impact.xmf"
+  cp "$full/impact.xmf" impact_old.xmf
+  room 12
+  full_run impact_xmf.log "${small[@]}" -monitor_energy -monitor_ball -snapshot_times 1e-5,2e-5,3e-5,4e-5,5e-5,6e-5,7e-5,8e-5 -output "$full/impact.h5"
+  refused_cleanly "impact on a full disk after its description" impact_xmf.log $? "$full/impact.h5"
+  cmp -s impact_old.xmf "$full/impact.xmf" && [[ ! -e "$full/impact.h5" ]] && pass "impact: the earlier impact.xmf unchanged, no impact.h5" ||
+    fail "impact: impact.xmf changed or impact.h5 written: $(ls "$full")"
+  rm -f "$full/impact.xmf"
   # modes: no file before: none after
   room 4
   full_run modes_full.log -task modes -beam_nodes 401 -modes_count 30 -output "$full/modes.h5"

@@ -9,6 +9,7 @@
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
+#include "io/xdmf.hpp"
 #include "run/outcome.hpp"
 #include "run/reference.hpp"
 #include "solvers/beam_modes.hpp"
@@ -343,11 +344,35 @@ PetscErrorCode OutputCheckNotLocked(MPI_Comm comm, const std::string &out)
   PetscFunctionReturn(0);
 }
 
+// The snapshots' XDMF description beside -output (io/xdmf.hpp: out.xmf for out.h5), when the run
+// may write one (-task impact with -snapshot_times): refused before any work if that path is a
+// directory or a file this program did not write (an empty one may be replaced).
+PetscErrorCode OutputCheckDescription(MPI_Comm comm, const std::string &out, const char *task)
+{
+  PetscBool   snapshots = PETSC_FALSE;
+  struct stat st;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-snapshot_times", &snapshots));
+  const std::string x = XdmfPathFor(out);
+  if (std::strcmp(task, "impact") != 0 || !snapshots || stat(x.c_str(), &st) != 0) PetscFunctionReturn(0);
+  PetscCheck(!S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: the description of its snapshots goes to %s, which is a directory; "
+             "give another -output",
+             out.c_str(), x.c_str());
+  PetscCheck(st.st_size == 0 || XdmfFileOurs(x), comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: the description of its snapshots would replace %s, which exists and is not "
+             "an XDMF file of beamimpact; give another -output, or remove the file first",
+             out.c_str(), x.c_str());
+  PetscFunctionReturn(0);
+}
+
 // -output: refused before any work if it cannot be written (empty name, missing or read-only
 // directory), if it is an input of the run or a file a running sweep holds, if it is a file of
 // another program (not an HDF5 results file of beamimpact: a text file, another program's HDF5;
 // an empty file may be replaced), or if it would replace a file another task wrote (without
-// -output_overwrite).
+// -output_overwrite); and if the snapshots' description beside it would replace a file of
+// another program (OutputCheckDescription).
 PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *task)
 {
   PetscBool       overwrite = PETSC_FALSE;
@@ -368,6 +393,7 @@ PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *ta
              out.c_str(), info.hdf5 ? "an HDF5 file of another program" : "not an HDF5 file", task);
   PetscCheck(info.task.empty() || info.task == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
              "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", out.c_str(), info.task.c_str(), task);
+  PetscCall(OutputCheckDescription(comm, out, task));
   PetscFunctionReturn(0);
 }
 

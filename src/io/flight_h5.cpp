@@ -1,6 +1,7 @@
 // The results file of -task flight. See flight_h5.hpp.
 #include "io/flight_h5.hpp"
 
+#include "io/h5_dims.hpp"
 #include "io/results_h5.hpp"
 
 #include <hdf5.h>
@@ -89,6 +90,7 @@ static PetscErrorCode FlightWriteGroups(hid_t file, const std::string &path, con
     if (c.integer) PetscCall(H5WriteDatasetInt1D(g, c.name, {(long long)c.get(r)}, c.unit));
     else PetscCall(H5WriteDataset1D(g, c.name, {(PetscReal)c.get(r)}, c.unit));
   }
+  PetscCall(H5DimsTable(g, "flight")); // one row: the flight
   H5Gclose(g);
   const FlightSeries &q = r.series;
   g                     = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -101,6 +103,7 @@ static PetscErrorCode FlightWriteGroups(hid_t file, const std::string &path, con
   PetscCall(H5WriteDataset1D(g, "vy", q.vy, "m/s"));
   PetscCall(H5WriteDataset1D(g, "vz", q.vz, "m/s"));
   PetscCall(H5WriteDataset1D(g, "spin", q.spin, "rad/s"));
+  PetscCall(H5DimsTable(g, "time"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }

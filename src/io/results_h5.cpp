@@ -3,7 +3,9 @@
 
 #include <hdf5.h>
 
+#include "io/h5_dims.hpp"
 #include "io/text.hpp"
+#include "io/xdmf.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -122,16 +124,19 @@ PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
   PetscFunctionReturn(0);
 }
 
-// A dataset of `dims` (rank 1 or 2) in memory type `mem`, stored as `file_type`, with its unit.
+// A dataset of `dims` (rank 1 to 3) in memory type `mem`, stored as `file_type`, with its unit (the
+// text, attribute unit) and its CF units (attribute units: H5UnitsOf the text).
 static PetscErrorCode WriteDataset(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data, int rank, const hsize_t *dims, const char *unit)
 {
   PetscFunctionBeginUser;
   const hid_t space = H5Screate_simple(rank, dims, NULL);
   const hid_t ds    = space >= 0 ? H5Dcreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
-  const bool  empty = dims[0] == 0 || (rank > 1 && dims[1] == 0);
-  bool        ok    = ds >= 0 && (empty || H5Dwrite(ds, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0);
+  bool        empty = false;
+  for (int k = 0; k < rank; ++k) empty = empty || dims[k] == 0;
+  bool           ok   = ds >= 0 && (empty || H5Dwrite(ds, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0);
   PetscErrorCode ierr = 0;
   if (ok && unit) ierr = WriteStringAttr(ds, "unit", unit);
+  if (ok && unit && !ierr) ierr = WriteStringAttr(ds, "units", H5UnitsOf(unit));
   if (ds >= 0) ok = H5Dclose(ds) >= 0 && ok;
   if (space >= 0) H5Sclose(space);
   PetscCall(ierr);
@@ -168,18 +173,38 @@ PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::v
   return WriteDataset1D((hid_t)loc, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, v.data(), v.size(), unit);
 }
 
-PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit)
+// rows (each of nc values) one after the other, for a dataset [row][...].
+static PetscErrorCode FlattenRows(const char *name, const std::vector<std::vector<double>> &rows, size_t nc,
+                                  std::vector<double> *flat)
 {
   PetscFunctionBeginUser;
-  const size_t        nr = rows.size(), nc = nr ? rows[0].size() : 0;
-  std::vector<double> flat;
-  flat.reserve(nr * nc);
+  flat->reserve(rows.size() * nc);
   for (auto &r : rows) {
     PetscCheck(r.size() == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB, "ragged rows for dataset %s", name);
-    flat.insert(flat.end(), r.begin(), r.end());
+    flat->insert(flat->end(), r.begin(), r.end());
   }
-  const hsize_t dims[2] = {nr, nc};
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows,
+                                const char *unit)
+{
+  std::vector<double> flat;
+  PetscFunctionBeginUser;
+  const hsize_t dims[2] = {rows.size(), rows.empty() ? 0 : rows[0].size()};
+  PetscCall(FlattenRows(name, rows, dims[1], &flat));
   PetscCall(WriteDataset((hid_t)loc, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, flat.data(), 2, dims, unit));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode H5WriteDataset3D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, size_t n1,
+                                size_t n2, const char *unit)
+{
+  std::vector<double> flat;
+  PetscFunctionBeginUser;
+  const hsize_t dims[3] = {rows.size(), n1, n2};
+  PetscCall(FlattenRows(name, rows, n1 * n2, &flat));
+  PetscCall(WriteDataset((hid_t)loc, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, flat.data(), 3, dims, unit));
   PetscFunctionReturn(0);
 }
 
@@ -209,6 +234,7 @@ static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult>
     PetscCall(H5WriteAttributes(ds, a));
     H5Dclose(ds);
   }
+  PetscCall(H5DimsTable(g, "impact")); // one row per impact
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
@@ -252,6 +278,7 @@ static PetscErrorCode H5WriteEvents(hid_t file, const ImpactResult &r)
   PetscCall(H5WriteDataset1D(ge, "approach_speed", va, "m/s (contact starts; NaN on other events)"));
   PetscCall(H5WriteDataset1D(ge, "cor", cor, "1, wall COR used for this contact (contact starts of the hysteretic law; NaN otherwise)"));
   PetscCall(H5WriteDataset1D(ge, "n", n, "1, unloading exponent used for this contact (contact starts of the hysteretic law; NaN otherwise)"));
+  PetscCall(H5DimsTable(ge, "event"));
   H5Gclose(ge);
   PetscFunctionReturn(0);
 }
@@ -280,67 +307,126 @@ static PetscErrorCode H5WriteModeEnergies(hid_t file, const ImpactResult &r)
   a.add("time", (double)r.final_time);
   a.add("description", "the energy each kept mode carries at the end of the run (time, s), after the ball has left (docs/model.md section 12)");
   PetscCall(H5WriteAttributes(g, a));
+  PetscCall(H5DimsTable(g, "mode"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
 
-// /series (the requested ones only) and /snapshots of one run.
-static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S, const BeamParams &beam)
+// /series of one run (the requested ones only): each on the steps' time (coordinate time), the
+// flight's on flight_time, velocity_at on (velocity_at_x, time).
+static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
 {
   PetscFunctionBeginUser;
-  if (!S.time.empty() || !S.flight_time.empty()) {
-    hid_t gs = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    auto opt = [&](const char *name, const std::vector<double> &v, const char *unit) -> PetscErrorCode {
-      PetscFunctionBeginUser;
-      if (!v.empty()) PetscCall(H5WriteDataset1D(gs, name, v, unit));
-      PetscFunctionReturn(0);
-    };
-    PetscCall(opt("time", S.time, "s"));
-    // -flight: the batted ball's trajectory, on its own time axis from the launch
-    PetscCall(opt("flight_time", S.flight_time, "s"));
-    PetscCall(opt("flight_x", S.flight_x, "m, across the field"));
-    PetscCall(opt("flight_y", S.flight_y, "m, down the field"));
-    PetscCall(opt("flight_z", S.flight_z, "m, height above the ground"));
-    PetscCall(opt("flight_spin", S.flight_spin, "rad/s"));
-    PetscCall(opt("ball_y", S.ball_y, "m"));
-    PetscCall(opt("ball_v", S.ball_v, "m/s"));
-    PetscCall(opt("compression", S.compression, "m"));
-    PetscCall(opt("force", S.force, "N"));
-    PetscCall(opt("ball_kinetic", S.ball_kinetic, "J"));
-    PetscCall(opt("ball_stored", S.ball_stored, "J"));
-    PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
-    PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
-    PetscCall(opt("beam_strain", S.beam_strain, "J"));
-    PetscCall(opt("shell_energy", S.shell_energy, "J"));
-    PetscCall(opt("bed_energy", S.bed_energy, "J"));
-    PetscCall(opt("twist_energy", S.twist_energy, "J"));
-    PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
-    PetscCall(opt("total_energy", S.total_energy, "J"));
-    if (!S.velocity_at.empty()) {
-      PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
-      PetscCall(H5WriteDataset1D(gs, "velocity_at_x", S.velocity_at_x, "m"));
-    }
-    PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
-    PetscCall(opt("grip_force", S.grip_force, "N"));
-    PetscCall(opt("grip_moment", S.grip_moment, "N m"));
-    PetscCall(opt("grip_stored", S.grip_stored, "J"));
-    PetscCall(opt("hand_work", S.hand_work, "J"));
-    H5Gclose(gs);
+  if (S.time.empty() && S.flight_time.empty()) PetscFunctionReturn(0);
+  hid_t gs  = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  auto  opt = [&](const char *name, const std::vector<double> &v, const char *unit) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (!v.empty()) PetscCall(H5WriteDataset1D(gs, name, v, unit));
+    PetscFunctionReturn(0);
+  };
+  PetscCall(opt("time", S.time, "s"));
+  // -flight: the batted ball's trajectory, on its own time axis from the launch
+  PetscCall(opt("flight_time", S.flight_time, "s"));
+  PetscCall(opt("flight_x", S.flight_x, "m, across the field"));
+  PetscCall(opt("flight_y", S.flight_y, "m, down the field"));
+  PetscCall(opt("flight_z", S.flight_z, "m, height above the ground"));
+  PetscCall(opt("flight_spin", S.flight_spin, "rad/s"));
+  for (const char *f : {"flight_x", "flight_y", "flight_z", "flight_spin"})
+    if (H5Lexists(gs, f, H5P_DEFAULT) > 0) PetscCall(H5DimsAttach(gs, f, {"flight_time"}));
+  PetscCall(opt("ball_y", S.ball_y, "m"));
+  PetscCall(opt("ball_v", S.ball_v, "m/s"));
+  PetscCall(opt("compression", S.compression, "m"));
+  PetscCall(opt("force", S.force, "N"));
+  PetscCall(opt("ball_kinetic", S.ball_kinetic, "J"));
+  PetscCall(opt("ball_stored", S.ball_stored, "J"));
+  PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
+  PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
+  PetscCall(opt("beam_strain", S.beam_strain, "J"));
+  PetscCall(opt("shell_energy", S.shell_energy, "J"));
+  PetscCall(opt("bed_energy", S.bed_energy, "J"));
+  PetscCall(opt("twist_energy", S.twist_energy, "J"));
+  PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
+  PetscCall(opt("total_energy", S.total_energy, "J"));
+  if (!S.velocity_at.empty()) {
+    PetscCall(H5WriteDataset2D(gs, "velocity_at", S.velocity_at, "m/s, [point][step]"));
+    PetscCall(H5WriteDataset1D(gs, "velocity_at_x", S.velocity_at_x, "m"));
+    PetscCall(H5DimsAttach(gs, "velocity_at", {"velocity_at_x", "time"}));
   }
-  if (!S.snapshot_time.empty()) {
-    hid_t               gn = H5Gcreate2(file, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    std::vector<double> x(beam.nodes);
-    for (PetscInt i = 0; i < beam.nodes; ++i) x[i] = beam.length * i / (beam.nodes - 1);
-    PetscCall(H5WriteDataset1D(gn, "x", x, "m"));
-    PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
-    PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
-    if (!S.snapshot_bed.empty() && beam.strings.On()) { // the string bed's deflection on its grid: [time][z * nodes + x]
-      PetscCall(H5WriteBedGrid(gn, StringBedFrameGrid(beam.strings, beam.nodes, beam.length), "bed_x", "bed_z"));
-      PetscCall(H5WriteDataset2D(gn, "bed", S.snapshot_bed, "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] (NaN off the bed)"));
-    }
-    H5Gclose(gn);
-  }
+  PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
+  PetscCall(opt("grip_force", S.grip_force, "N"));
+  PetscCall(opt("grip_moment", S.grip_moment, "N m"));
+  PetscCall(opt("grip_stored", S.grip_stored, "J"));
+  PetscCall(opt("hand_work", S.hand_work, "J"));
+  PetscCall(H5DimsTable(gs, "time"));
+  H5Gclose(gs);
   PetscFunctionReturn(0);
+}
+
+// What /snapshots holds of the series S: the beam's deflection always, the string bed's and the
+// barrel wall's when recorded (the conditions H5WriteSnapshots writes them on).
+static bool SnapshotsHaveBed(const ImpactSeries &S, const BeamParams &beam)
+{
+  return !S.snapshot_bed.empty() && beam.strings.On();
+}
+static bool SnapshotsHaveWall(const ImpactSeries &S) { return !S.snapshot_wall.empty() && !S.snapshot_wall_n.empty(); }
+
+// /snapshots of one run: the nodes x, the times and the deflection y [time][x]; a string bed's
+// deflection on its grid (bed_x, bed_z), [time][bed_point] with bed_point = z * len(bed_x) + x;
+// the barrel wall's W_n, [time][wall_n][x].
+static PetscErrorCode H5WriteSnapshots(hid_t file, const ImpactSeries &S, const BeamParams &beam)
+{
+  PetscFunctionBeginUser;
+  if (S.snapshot_time.empty()) PetscFunctionReturn(0);
+  hid_t               gn = H5Gcreate2(file, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<double> x(beam.nodes);
+  for (PetscInt i = 0; i < beam.nodes; ++i) x[i] = beam.length * i / (beam.nodes - 1);
+  PetscCall(H5WriteDataset1D(gn, "x", x, "m"));
+  PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
+  PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
+  PetscCall(H5DimsAttach(gn, "y", {"time", "x"}));
+  if (SnapshotsHaveBed(S, beam)) { // the string bed's deflection on its grid: [time][z * nodes + x]
+    PetscCall(H5WriteBedGrid(gn, StringBedFrameGrid(beam.strings, beam.nodes, beam.length), "bed_x", "bed_z"));
+    PetscCall(H5WriteDataset2D(gn, "bed", S.snapshot_bed,
+                               "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] "
+                               "(NaN off the bed)"));
+    PetscCall(H5DimsAttach(gn, "bed", {"time", "bed_point"}));
+    for (const char *axis : {"bed_x", "bed_z"}) PetscCall(H5DimsAttach(gn, axis, {axis})); // the grid's coordinates
+  }
+  if (SnapshotsHaveWall(S)) {
+    std::vector<double> n(S.snapshot_wall_n.begin(), S.snapshot_wall_n.end());
+    PetscCall(H5WriteDataset1D(gn, "wall_n", n, "1 (the harmonic n of the wall's cos n theta)"));
+    PetscCall(H5WriteDataset3D(gn, "wall", S.snapshot_wall, n.size(), (size_t)beam.nodes,
+                               "m, the barrel wall's radial displacement W_n (outward; w = sum_n W_n cos n theta, "
+                               "theta = 0 under the ball), [time][wall_n][node] (NaN where solid)"));
+    PetscCall(H5DimsAttach(gn, "wall", {"time", "wall_n", "x"}));
+  }
+  PetscCall(H5DimsTable(gn, "time"));
+  H5Gclose(gn);
+  PetscFunctionReturn(0);
+}
+
+// The XDMF description of what H5WriteSnapshots writes ("" without snapshots), for the file at path.
+static std::string SnapshotsXdmf(const std::string &path, const ImpactSeries &S, const BeamParams &beam)
+{
+  if (S.snapshot_time.empty()) return std::string();
+  std::vector<XdmfField> fields;
+  XdmfField              f;
+  f.name = "beam", f.attribute = "y", f.x = "/snapshots/x", f.nx = beam.nodes, f.values = "/snapshots/y";
+  fields.push_back(f);
+  if (SnapshotsHaveBed(S, beam)) {
+    const BedGrid g = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
+    f.name = "bed", f.attribute = "w", f.x = "/snapshots/bed_x", f.y = "/snapshots/bed_z", f.nx = g.nx, f.ny = g.nz;
+    f.values = "/snapshots/bed";
+    fields.push_back(f);
+  }
+  if (SnapshotsHaveWall(S)) {
+    f.name = "wall", f.attribute = "W", f.x = "/snapshots/x", f.y = "/snapshots/wall_n", f.nx = beam.nodes;
+    f.ny = (PetscInt)S.snapshot_wall_n.size();
+    f.values = "/snapshots/wall", f.flat = false;
+    fields.push_back(f);
+  }
+  const size_t slash = path.find_last_of('/');
+  return XdmfTimeSeries(slash == std::string::npos ? path : path.substr(slash + 1), S.snapshot_time, fields);
 }
 
 namespace {
@@ -356,8 +442,43 @@ bool FsyncDirectoryOf(const std::string &path)
   return ok;
 }
 
+// Bytes written to path (created or truncated) with checked write(2) calls and an fsync: "" on
+// success, else what went wrong.
+std::string SaveBytes(const std::string &path, const char *data, size_t size)
+{
+  std::string error;
+  const int   fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) return "cannot open " + path + " (" + std::strerror(errno) + ")";
+  for (size_t done = 0; done < size && error.empty();) {
+    const ssize_t w = ::write(fd, data + done, size - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) error = "writing " + path + " failed (" + std::strerror(w < 0 ? errno : ENOSPC) + ")";
+    else done += (size_t)w;
+  }
+  if (error.empty() && ::fsync(fd) != 0) error = "fsync of " + path + " failed (" + std::strerror(errno) + ")";
+  if (::close(fd) != 0 && error.empty()) error = "closing " + path + " failed (" + std::strerror(errno) + ")";
+  return error;
+}
+
+// A new unique temporary file beside path, path.XXXXXX.tmp (the rename onto path stays on one
+// file system), with the permissions a plain create gives, in *tmp: "" on success, else what
+// went wrong.
+std::string MakeTemporaryBeside(const std::string &path, std::string *tmp)
+{
+  std::string name = path + ".XXXXXX.tmp";
+  const int   fd   = ::mkstemps(name.data(), 4);
+  if (fd < 0) return "cannot create a temporary file " + name + " beside it (" + std::strerror(errno) + ")";
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  (void)::fchmod(fd, 0666 & ~mask); // as a plain create would (mkstemp makes 0600)
+  ::close(fd);
+  *tmp = name;
+  return "";
+}
+
 // Rank 0's part of H5ResultsFileWrite: "" on success, else what went wrong.
-std::string WriteWholeFile(const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long)> &write)
+std::string WriteWholeFile(const std::string &path, const RunRecord &record,
+                           const std::function<PetscErrorCode(long long)> &write, const std::string &xdmf)
 {
   H5ErrorsQuiet quiet;
   std::string   error;
@@ -366,7 +487,7 @@ std::string WriteWholeFile(const std::string &path, const RunRecord &record, con
   PetscErrorCode ierr = H5WriteAttributes(file, record);
   if (!ierr) ierr = write(file);
   if (ierr) error = LastErrorMessage(ierr);
-  return H5MemoryFileInstall(file, path, "", error);
+  return H5MemoryFileInstall(file, path, "", error, xdmf);
 }
 
 } // namespace
@@ -399,38 +520,29 @@ std::string H5MemoryFileSave(long long file_in, const std::string &path)
   }
   if (H5Fclose(file) < 0 && error.empty() && !path.empty()) error = "HDF5 cannot close the file in memory";
   if (path.empty() || !error.empty()) return error;
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) return "cannot open " + path + " (" + std::strerror(errno) + ")";
-  for (size_t done = 0; done < image.size() && error.empty();) {
-    const ssize_t w = ::write(fd, image.data() + done, image.size() - done);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) error = "writing " + path + " failed (" + std::strerror(w < 0 ? errno : ENOSPC) + ")";
-    else done += (size_t)w;
-  }
-  if (error.empty() && ::fsync(fd) != 0) error = "fsync of " + path + " failed (" + std::strerror(errno) + ")";
-  if (::close(fd) != 0 && error.empty()) error = "closing " + path + " failed (" + std::strerror(errno) + ")";
-  return error;
+  return SaveBytes(path, image.data(), image.size());
 }
 
-std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp_in, const std::string &error_in)
+std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp_in,
+                                const std::string &error_in, const std::string &xdmf)
 {
-  std::string error = error_in, tmp = tmp_in.empty() ? path + ".XXXXXX.tmp" : tmp_in; // beside path: the rename stays on one file system
-  bool        made  = false;
-  if (error.empty() && tmp_in.empty()) {
-    const int fd = ::mkstemps(tmp.data(), 4);
-    if (fd < 0) error = "cannot create a temporary file " + tmp + " beside it (" + std::strerror(errno) + ")";
-    else {
-      const mode_t mask = ::umask(0);
-      ::umask(mask);
-      (void)::fchmod(fd, 0666 & ~mask); // as a plain create would (mkstemp makes 0600)
-      ::close(fd);
-    }
+  std::string       error = error_in, tmp = tmp_in, xtmp;
+  const std::string xpath = XdmfPathFor(path);
+  if (error.empty() && !xdmf.empty()) { // the description first: a full disk shows before the file is replaced
+    error = MakeTemporaryBeside(xpath, &xtmp);
+    if (error.empty()) error = SaveBytes(xtmp, xdmf.data(), xdmf.size());
   }
+  if (error.empty() && tmp_in.empty()) error = MakeTemporaryBeside(path, &tmp);
   const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // closes the file in any case
-  made                    = error.empty();
+  const bool        made  = error.empty();
   if (error.empty()) error = saved;
   if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
   if (made && !error.empty()) ::unlink(tmp.c_str());
+  if (!xtmp.empty()) { // the file's description onto its place after the file
+    if (error.empty() && std::rename(xtmp.c_str(), xpath.c_str()) != 0)
+      error = "cannot rename " + xtmp + " onto " + xpath + " (" + std::strerror(errno) + ")";
+    if (!error.empty()) ::unlink(xtmp.c_str());
+  } else if (error.empty() && XdmfFileOurs(xpath)) ::unlink(xpath.c_str()); // it described the file replaced
   if (error.empty()) FsyncDirectoryOf(path);
   return error;
 }
@@ -445,14 +557,15 @@ H5ErrorsQuiet::H5ErrorsQuiet()
 
 H5ErrorsQuiet::~H5ErrorsQuiet() { H5Eset_auto2(H5E_DEFAULT, reinterpret_cast<H5E_auto2_t>(func_), data_); }
 
-PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long file)> &write)
+PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                  const std::function<PetscErrorCode(long long file)> &write, const std::string &xdmf)
 {
   PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank != 0) PetscFunctionReturn(0);
-  const std::string error = WriteWholeFile(path, record, write);
+  const std::string error = WriteWholeFile(path, record, write, xdmf);
   PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s could not be written (disk full? %s); nothing was written there, a file it held before is unchanged", path.c_str(), error.c_str());
   PetscFunctionReturn(0);
 }
@@ -466,11 +579,12 @@ PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, co
     if (!results.empty()) {
       PetscCall(H5WriteImpactAttributes(file));
       PetscCall(H5WriteEvents(file, results[0]));
-      PetscCall(H5WriteSeries(file, results[0].series, sc.beam));
+      PetscCall(H5WriteSeries(file, results[0].series));
+      PetscCall(H5WriteSnapshots(file, results[0].series, sc.beam));
       PetscCall(H5WriteModeEnergies(file, results[0]));
     }
     PetscFunctionReturn(0);
-  }));
+  }, results.empty() ? std::string() : SnapshotsXdmf(path, results[0].series, sc.beam)));
   PetscFunctionReturn(0);
 }
 
@@ -495,7 +609,9 @@ static PetscErrorCode H5WriteBeamSection(hid_t file, const BeamParams &beam)
     PetscCall(H5WriteDataset1D(g, "profile_x", x, "m"));
     PetscCall(H5WriteDataset1D(g, "profile_D", D, "m"));
     PetscCall(H5WriteDataset1D(g, "profile_d", d, "m"));
+    for (const char *name : {"profile_D", "profile_d"}) PetscCall(H5DimsAttach(g, name, {"profile_x"}));
   }
+  PetscCall(H5DimsTable(g, "x"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
@@ -538,13 +654,19 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
         std::vector<std::vector<PetscReal>> rows(g2.nz, std::vector<PetscReal>(g2.nx));
         for (PetscInt j = 0; j < g2.nz; ++j)
           for (PetscInt i = 0; i < g2.nx; ++i) rows[j][i] = modes.bed_shape[m][j * g2.nx + i];
-        PetscCall(H5WriteDataset2D(g, ("bed_shape_" + std::to_string(m + 1)).c_str(), rows, "1 (the bed's deflection, [z][x], normalised as shapes)"));
+        const std::string name = "bed_shape_" + std::to_string(m + 1);
+        PetscCall(H5WriteDataset2D(g, name.c_str(), rows, "1 (the bed's deflection, [z][x], normalised as shapes)"));
+        PetscCall(H5DimsAttach(g, name.c_str(), {"bed_z", "bed_x"}));
       }
     }
     const PetscReal h = beam.length / (beam.nodes - 1);
     for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m) // the first two bending modes
       if ((modes.shell_n.empty() || modes.shell_n[m] == 0) && (modes.part.empty() || modes.part[m] == (PetscInt)Part::Beam))
         PetscCall(H5WriteDataset1D(g, k++ == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
+    for (const char *name : {"nodes_1", "nodes_2"}) // positions of a mode's nodes: each its own coordinate
+      if (H5Lexists(g, name, H5P_DEFAULT) > 0) PetscCall(H5DimsAttach(g, name, {name}));
+    PetscCall(H5DimsAttach(g, "shapes", {"mode", "node"})); // node: the nodes of /beam/x
+    PetscCall(H5DimsTable(g, "mode"));
     H5Gclose(g);
     PetscCall(H5WriteBeamSection(file, beam));
     PetscFunctionReturn(0);

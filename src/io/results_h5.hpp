@@ -23,7 +23,9 @@ namespace beamimpact {
 // results_columns), /results (every column of the table, one row per result, with the
 // attributes unit, description, applies (1 or 0: whether the column applies to sc; NaN where it
 // does not) and applies_when (in words)), and for the first result its /events, /series,
-// /snapshots and /modes_energy (a modal free flight's energy per mode at the end) when they hold data.
+// /snapshots and /modes_energy (a modal free flight's energy per mode at the end) when they hold
+// data. Every dataset carries its CF units and netCDF dimensions (io/h5_dims.hpp); with snapshots,
+// their XDMF description beside the file (io/xdmf.hpp: path.xmf for path.h5).
 PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc);
 
 // Writes a new file (replacing any, H5ResultsFileWrite) on rank 0 of comm: root attributes; /modes with the
@@ -53,8 +55,10 @@ PetscErrorCode ResultsFileTask(const std::string &path, std::string *task);
 // is closed (every write checked, the close too: a full disk shows there) and renamed onto
 // path only when all of it succeeded. On a failure the temporary file is removed, a file at
 // path is left as it was, and the error names -output (no crash at exit: every HDF5 handle is
-// closed with the file). The other ranks write nothing.
-PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::function<PetscErrorCode(long long file)> &write);
+// closed with the file). The other ranks write nothing. xdmf: the XDMF description of the
+// file's snapshots (io/xdmf.hpp), installed with it at XdmfPathFor(path) (H5MemoryFileInstall).
+PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                  const std::function<PetscErrorCode(long long file)> &write, const std::string &xdmf = "");
 
 // An HDF5 file built in memory (the core driver, no backing store), -1 on failure; written out
 // by H5MemoryFileSave, which closes it in any case (path empty: only closes) and writes its
@@ -67,8 +71,12 @@ std::string H5MemoryFileSave(long long file, const std::string &path);
 // tmp beside path (tmp empty: a new unique path.XXXXXX.tmp, with the permissions a plain create
 // gives), renamed onto path and the directory fsync'ed; "" on success, else what went wrong,
 // with tmp removed and a file at path left as it was. error not empty: only closes the file
-// and returns error (a writer that failed before its file was complete).
-std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp, const std::string &error);
+// and returns error (a writer that failed before its file was complete). The file's XDMF
+// description xdmf (not empty: the file has snapshots) goes to XdmfPathFor(path) the same way,
+// saved before the file and renamed onto its place after it; xdmf empty: a description this
+// program wrote there is removed with the file it described (XdmfFileOurs).
+std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp, const std::string &error,
+                                const std::string &xdmf = "");
 
 // HDF5's own error printing off while an object lives: a failed call is reported once, by us.
 class H5ErrorsQuiet {
@@ -94,5 +102,8 @@ PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::v
 // attribute integer = 1, so that readers write its finite values as whole numbers.
 PetscErrorCode H5WriteCounts1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);
 PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit);
+// A dataset [row][n1][n2] of rows of n1 * n2 values each.
+PetscErrorCode H5WriteDataset3D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, size_t n1,
+                                size_t n2, const char *unit);
 
 } // namespace beamimpact

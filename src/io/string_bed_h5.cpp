@@ -1,6 +1,7 @@
 // The results file of the string bed's modes. See string_bed_h5.hpp.
 #include "io/string_bed_h5.hpp"
 
+#include "io/h5_dims.hpp"
 #include "io/results_h5.hpp"
 
 #include <hdf5.h>
@@ -52,7 +53,9 @@ PetscErrorCode ResultsWriteStringBedModesFile(MPI_Comm comm, const std::string &
       for (PetscInt j = 0; j < g.nz; ++j) rows[j].assign(modes.shape[q].begin() + j * g.nx, modes.shape[q].begin() + (j + 1) * g.nx);
       const std::string name = "shape_" + std::to_string(q + 1);
       PetscCall(H5WriteDataset2D(gm, name.c_str(), rows, "kg^-1/2 (deflection, mass-normalised), [z][x]"));
+      PetscCall(H5DimsAttach(gm, name.c_str(), {"z", "x"}));
     }
+    PetscCall(H5DimsTable(gm, "mode"));
     H5Gclose(gm);
     PetscFunctionReturn(0);
   }));

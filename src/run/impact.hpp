@@ -89,6 +89,10 @@ struct ImpactSeries {
   std::vector<PetscReal> snapshot_time;                                  // s
   std::vector<std::vector<PetscReal>> snapshot_y;                        // m, [snapshot][node]
   std::vector<std::vector<PetscReal>> snapshot_bed;                      // m, a string bed's deflection from its frame, w - y - z phi, [snapshot][z * nodes + x] (NaN off the bed; rank 0)
+  // m, the barrel wall's radial displacement W_n(x) of each harmonic (-beam_shell; model/shell.hpp),
+  // [snapshot][k * nodes + node] for the harmonic n = snapshot_wall_n[k] (NaN where the section is solid; rank 0)
+  std::vector<std::vector<PetscReal>> snapshot_wall;
+  std::vector<PetscInt>               snapshot_wall_n; // 1, the harmonics of snapshot_wall
 };
 
 enum class ContactEventKind { ContactStart = 0, MaxCompression = 1, Reload = 2, Separation = 3 };

@@ -93,19 +93,29 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
 {
   PetscFunctionBeginUser;
   while (next_ < mon_.snapshot_times.size() && mon_.snapshot_times[next_] <= t * (1 + 1e-12) + 1e-15) {
-    std::vector<PetscReal> y;
+    std::vector<PetscReal> y, u;
     PetscCall(stepper_.GatherDisplacement(&y));
     series_->snapshot_time.push_back(mon_.snapshot_times[next_]);
     series_->snapshot_y.push_back(y);
     const BeamSystem &S = *ctx_.sys;
+    if (S.bed_first >= 0 || S.shell_first >= 0) // rank 0: every field of every node
+      PetscCall(stepper_.GatherFields(0, S.fields, &u));
     if (S.bed_first >= 0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
-      std::vector<PetscReal> u, bed((size_t)S.bed.nz * S.nodes);
-      PetscCall(stepper_.GatherFields(0, S.fields, &u)); // rank 0: every field of every node
+      std::vector<PetscReal> bed((size_t)S.bed.nz * S.nodes);
       for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i) {
         const PetscReal *node = &u[(size_t)i * S.fields], phi = S.roll_field >= 0 ? node[S.roll_field] : 0.0;
         for (PetscInt j = 0; j < S.bed.nz; ++j) bed[j * S.nodes + i] = S.held[S.Dof(i, S.bed_first + j)] ? NAN : node[S.bed_first + j] - node[0] - S.bed.Z(j) * phi;
       }
       series_->snapshot_bed.push_back(std::move(bed));
+    }
+    if (S.shell_first >= 0) { // the wall's W_n of each harmonic k (field shell_first + 3 k + 2), [k][node] flattened
+      const size_t           H = S.shell_harmonics.size();
+      std::vector<PetscReal> wall(H * (size_t)S.nodes);
+      for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i)
+        for (size_t k = 0; k < H; ++k)
+          wall[k * S.nodes + i] = S.shell_radius[i] > 0 ? u[(size_t)i * S.fields + S.shell_first + 3 * k + 2] : NAN;
+      series_->snapshot_wall.push_back(std::move(wall));
+      series_->snapshot_wall_n = S.shell_harmonics;
     }
     ++next_;
   }

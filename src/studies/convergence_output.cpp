@@ -1,6 +1,7 @@
 // -task convergence, the output: the HDF5 file and the printed tables. See convergence_output.hpp.
 #include "studies/convergence_output.hpp"
 
+#include "io/h5_dims.hpp"
 #include "io/results_h5.hpp"
 
 #include <hdf5.h>
@@ -159,6 +160,7 @@ PetscErrorCode WriteConfig(hid_t gc, size_t index, const ConvergenceConfig &cfg,
   PetscCall(H5WriteDataset1D(g, "order_acor_pairwise", oa.pairwise, "1 (between level k-1 and k)"));
   PetscCall(H5WriteDataset1D(g, "order_contact_time_pairwise", ot.pairwise, "1 (between level k-1 and k)"));
   PetscCall(H5WriteDataset1D(g, "order_peak_force_pairwise", op.pairwise, "1 (between level k-1 and k)"));
+  PetscCall(H5DimsTable(g, "level"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
@@ -187,6 +189,7 @@ PetscErrorCode WriteSpatial(hid_t file, const ConvergencePlan &plan, const Conve
   a.add("peak_force_order_lsq", sp.peak_force_order_lsq);
   a.add("reference", ConvergenceReferenceLabel(plan));
   PetscCall(H5WriteAttributes(g, a));
+  PetscCall(H5DimsTable(g, "nodes"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }

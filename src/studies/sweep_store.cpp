@@ -1,6 +1,7 @@
 // The store of a sweep's rows: journals, atomic rewrites, signature and resume. See sweep_store.hpp.
 #include "studies/sweep_store.hpp"
 
+#include "io/h5_dims.hpp"
 #include "io/options_files.hpp"
 #include "io/results_h5.hpp"
 #include "io/text.hpp"
@@ -598,6 +599,7 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
     reasons.push_back(it == S.reasons.end() ? std::string() : it->second);
   }
   PetscCheck(WriteStrings(g, "reason", reasons), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write /results/reason");
+  PetscCall(H5DimsTable(g, "case_index")); // the rows done, by their case
   H5Gclose(g);
   // The plan: every axis's value for every case (also those not yet done).
   hid_t gp = H5Gcreate2(file, "sweep", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -608,6 +610,7 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
     if (a.Text()) PetscCall(WriteTextColumn(gp, S.output, a.name.c_str(), v, a.labels));
     else PetscCall(H5WriteDataset1D(gp, a.name.c_str(), v, a.unit.c_str()));
   }
+  PetscCall(H5DimsTable(gp, "case")); // every case of the plan, done or not
   H5Gclose(gp);
   PetscFunctionReturn(0);
 }
