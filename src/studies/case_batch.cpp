@@ -469,17 +469,23 @@ PetscErrorCode CaseBatchGetCounts(const CaseBatch &b, CaseBatchCounts *c)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CaseBatchDestroy(CaseBatch *b)
+void CaseBatchRelease(CaseBatch *b)
 {
-  PetscFunctionBeginUser;
   b->journal.Close();
-  PetscCall(TaskFarmDestroy(&b->farm));
   if (b->lock_fd >= 0) {
     ::unlink((b->parts + "/lock").c_str()); // while still held
     ::close(b->lock_fd);
     b->lock_fd = -1;
     ::rmdir(b->parts.c_str()); // only when empty: the journals of a resumable run stay
   }
+}
+
+PetscErrorCode CaseBatchDestroy(CaseBatch *b)
+{
+  PetscFunctionBeginUser;
+  CaseBatchRelease(b);
+  PetscCall(TaskFarmDestroy(&b->farm));
+  b->world = MPI_COMM_NULL;
   PetscFunctionReturn(0);
 }
 

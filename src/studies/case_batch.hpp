@@ -144,7 +144,11 @@ PetscErrorCode CaseBatchWrite(const CaseBatch &b, long long file);
 PetscErrorCode CaseBatchFinish(CaseBatch &b);
 // Collective: the counts summed over the ranks (computed, run_time).
 PetscErrorCode CaseBatchGetCounts(const CaseBatch &b, CaseBatchCounts *c);
-// Releases the farm and the lock (the journals stay unless CaseBatchFinish ran: a rerun resumes).
+// Collective: releases the farm and the lock (the journals stay unless CaseBatchFinish ran: a rerun
+// resumes).
 PetscErrorCode CaseBatchDestroy(CaseBatch *b);
+// Not collective (a study stopped by an error on some rank): closes this rank's journal and releases
+// the lock rank 0 holds; the farm is left to MPI_Finalize.
+void CaseBatchRelease(CaseBatch *b);
 
 } // namespace beamimpact
