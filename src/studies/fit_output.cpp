@@ -167,6 +167,20 @@ PetscErrorCode WriteTables(const FitProblem &f, const FitResult &res, hid_t file
   PetscCall(H5WriteDataset1D(g, "fitted", res.fitted, "the column's (/fit/residuals/unit)"));
   PetscCall(H5WriteDataset1D(g, "weighted_residual", res.r, "1 ((fitted - measured)/sigma)"));
   H5Gclose(g);
+  // /fit/rows: each data row's numeric settings (NaN where a row does not set the option), for plots.
+  g = H5Gcreate2(file, "fit/rows", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /fit/rows");
+  for (const std::string &name : f.data.option_columns) {
+    std::vector<double> v;
+    for (const CaseOptions &c : f.data.rows) {
+      double x = NAN;
+      for (const CaseSetting &s : c)
+        if (s.name == name && s.text.empty()) x = s.value;
+      v.push_back(x);
+    }
+    PetscCall(H5WriteDataset1D(g, name.c_str(), v, OptionUnit("-" + name).empty() ? "1" : OptionUnit("-" + name).c_str()));
+  }
+  H5Gclose(g);
   g = H5Gcreate2(file, "fit/history", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /fit/history");
   std::vector<double>              it, chi2, step, runs;
