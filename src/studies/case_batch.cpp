@@ -315,6 +315,10 @@ PetscErrorCode RunOne(CaseBatch &b, const CaseOptions &c, const std::string &key
   PetscCall(CasePlan(b, c, &plan));
   *row = CaseRow();
   PetscCall(b.settings.task->run(PETSC_COMM_SELF, plan, b.settings.columns, &b.state, row));
+  for (const SweepAxis &a : plan.axes) { // a value the options gave, put back after the case: used (the case read its own)
+    PetscBool has;
+    if (a.overrides) PetscCall(PetscOptionsHasName(NULL, NULL, ("-" + a.name).c_str(), &has));
+  }
   SweepNotesPointDone(true);
   if (!b.parts.empty()) {
     std::vector<double> record = {ordinal, (double)row->status};

@@ -60,7 +60,8 @@ using CaseOptions = std::vector<CaseSetting>;
 std::string CaseOptionsText(const CaseOptions &c, bool exact = true);
 
 // What one case gave: its status (SweepStatus: 0 ok), the task's columns in the order asked
-// (NaN where the run gives none) and, for a failed run, the first line of its error.
+// (NaN where the run gives none) and, for a failed run, the first line of its error (for a run
+// that did not fail: why a column is NaN, or empty).
 struct CaseRow {
   int                 status = SweepOk;
   std::vector<double> values;

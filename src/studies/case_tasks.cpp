@@ -7,9 +7,11 @@
 #include "base/option_table.hpp"
 #include "io/beam_options.hpp"
 #include "io/flight_options.hpp"
+#include "io/string_bed_options.hpp"
 #include "run/results_table.hpp"
 #include "solvers/flight_ts.hpp"
 #include "solvers/modes.hpp"
+#include "solvers/string_bed_modes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -162,10 +164,8 @@ void ModesValues(const ModesResult &modes, const BeamRigidBody &body, PetscInt c
       int seen = 0;
       for (size_t q = 0; q < modes.frequency.size() && std::isnan(row->values[k]); ++q)
         if (modes.omega[q] != 0 && (family.empty() || ModeFamily(modes, q) == family) && ++seen == want) row->values[k] = modes.frequency[q];
-      if (std::isnan(row->values[k]) && row->status == SweepOk) {
-        row->status = SweepRefused;
-        row->reason = columns[k] + " is not among the " + std::to_string((long long)count) + " modes computed: give a larger -modes_count";
-      }
+      if (std::isnan(row->values[k])) // not a failure: the row may not measure it (the reason says why it is NaN)
+        row->reason += (row->reason.empty() ? "" : "; ") + columns[k] + " is not among the " + std::to_string((long long)count) + " modes computed (a larger -modes_count?)";
       continue;
     }
     for (const BodyColumn &c : kBodyColumns)
@@ -173,16 +173,56 @@ void ModesValues(const ModesResult &modes, const BeamRigidBody &body, PetscInt c
   }
 }
 
-PetscErrorCode ModesCompute(MPI_Comm comm, const std::vector<std::string> &columns, CaseRow *row)
+// A string bed in a held frame (-strings_frame held, as -task modes computes it): its modes are
+// all the strings'; it has no body (the rigid-body columns are NaN).
+PetscErrorCode HeldBedModes(MPI_Comm comm, const std::vector<std::string> &columns, CaseRow *row)
+{
+  StringBedParams p;
+  StringBedModes  modes;
+  PetscInt        count = 0;
+  PetscBool       set   = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(StringBedParamsFromOptions(comm, &p));
+  for (const std::string &c : columns) {
+    std::string family;
+    int         k;
+    if (ParseFrequency(c, &family, &k)) count = std::max(count, (PetscInt)k);
+  }
+  PetscCall(PetscOptionsGetInt(NULL, NULL, "-modes_count", &count, &set));
+  PetscCall(StringBedModesCompute(comm, StringBedGrid(p), StringBedMembrane(p), std::max<PetscInt>(count, 1), &modes));
+  ModesResult m; // as a beam's modes: every one the strings', none rigid
+  m.omega     = modes.omega;
+  m.frequency = modes.frequency;
+  m.part.assign(modes.frequency.size(), (PetscInt)Part::Bed);
+  ModesValues(m, BeamRigidBody(), (PetscInt)modes.frequency.size(), columns, row);
+  for (size_t k = 0; k < columns.size(); ++k)
+    for (const BodyColumn &c : kBodyColumns)
+      if (columns[k] == c.name) row->values[k] = kNaN; // a held bed is no body
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModesCompute(MPI_Comm comm, const std::vector<std::string> &columns, CaseRow *row, bool *held)
 {
   BeamParams  beam;
   BeamSystem  op;
   ModesResult modes;
   std::string why;
+  PetscBool   given = PETSC_FALSE, bed = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-strings_frame", &given));
+  if (given) PetscCall(StringBedRequested(comm, &bed));
+  if (bed) { // as -task modes decides (app/task_strings.hpp): the bed in a held frame
+    StringBedParams p;
+    PetscCall(StringBedParamsFromOptions(comm, &p));
+    if (p.Held()) {
+      *held = true;
+      PetscCall(HeldBedModes(comm, columns, row));
+      PetscFunctionReturn(0);
+    }
+  }
   PetscCall(BeamParamsFromOptions(comm, &beam));
-  PetscCheck(!beam.strings.Held(), comm, PETSC_ERR_SUP, "-strings_frame held: the modes of a held string bed are not a case of a batch (the frame is not a body); use -strings_frame beam");
   PetscCheck(BeamSystemBuild(beam, &op, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   const PetscInt count = ModesCount(op, columns);
   PetscCall(BeamModesCompute(comm, op, count, &modes));
@@ -193,13 +233,14 @@ PetscErrorCode ModesCompute(MPI_Comm comm, const std::vector<std::string> &colum
 PetscErrorCode ModesCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns, CaseRunState *state, CaseRow *row)
 {
   PetscFunctionBeginUser;
+  bool held = false; // a held string bed reads none of the frame's options: not a whole reading
   PetscCall(SweepCaseOptionsSet(plan, 0));
-  const PetscErrorCode ierr = ModesCompute(comm, columns, row);
+  const PetscErrorCode ierr = ModesCompute(comm, columns, row, &held);
   if (ierr) {
     row->status = SweepStatusOfError(ierr);
     row->reason = SweepErrorReason(ierr);
     row->values.assign(columns.size(), kNaN);
-  } else CheckSettingsRead(plan, "modes", state, row);
+  } else if (!held) CheckSettingsRead(plan, "modes", state, row);
   PetscCall(SweepCaseOptionsClear(plan));
   PetscFunctionReturn(0);
 }

@@ -32,7 +32,8 @@ const OptionModule &FitOptionTable()
         OptionChoice("-fit_differences", "The differences of TAO's Jacobian: forward (n runs a row) or central (2n)", {"forward", "central"}, "forward"),
         OptionReal("-fit_difference_step", "1", "Relative step of the parameters for TAO's Jacobian (about the square root of a run's relative precision)", "1e-6", Between(0, 0.1, true, false)),
         OptionReal("-fit_covariance_step", "1", "Relative step of the central differences of the Jacobian at the optimum (standard errors, identifiability)", "1e-4", Between(0, 0.1, true, false)),
-        OptionReal("-fit_xtol", "1", "brgn stops when no parameter moves by more than this in its scaled range [0, 1] (TAO's -tao_gatol, -tao_grtol also stop it)", "1e-9", Positive()),
+        OptionReal("-fit_xtol", "1", "brgn stops when no parameter moves by more than this in its scaled range [0, 1] (TAO's -tao_gatol, -tao_grtol also stop it)", "1e-8", Positive()),
+        OptionReal("-fit_ftol", "1", "brgn stops when chi^2 changes by less than this times itself from one iteration to the next", "1e-10", NonNegative()),
         OptionReal("-fit_identifiability_tol", "1", "A singular value of the parameter-scaled Jacobian below this times the largest: that combination is not determined by the data", "1e-8",
                    Between(0, 1, true, true)),
         OptionText("-fit_options_output", "The fitted values as an options file to include (default: -output with .opts; none with -output none)"),
@@ -84,6 +85,7 @@ PetscErrorCode FitSettingsFromOptions(MPI_Comm comm, const std::string &output, 
   PetscCall(OptionsRead(PetscOptionsObject, m, "-fit_difference_step", &s->step, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, m, "-fit_covariance_step", &s->covariance_step, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, m, "-fit_xtol", &s->xtol, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-fit_ftol", &s->ftol, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, m, "-fit_identifiability_tol", &s->identifiability, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, m, "-fit_options_output", &s->options_output, &set_opts));
   PetscCall(OptionsRead(PetscOptionsObject, m, "-fit_quiet", &s->quiet, NULL));

@@ -32,7 +32,8 @@ struct FitSettings {
   bool            central = false;       // -fit_differences central (else forward) for TAO's Jacobian
   PetscReal       step = 1e-6;           // -fit_difference_step: relative step of TAO's Jacobian (1)
   PetscReal       covariance_step = 1e-4; // -fit_covariance_step: relative step of the central differences at the optimum (1)
-  PetscReal       xtol = 1e-9;           // -fit_xtol: brgn stops when no scaled parameter moves more than this (1)
+  PetscReal       xtol = 1e-8;           // -fit_xtol: brgn stops when no scaled parameter moves more than this (1)
+  PetscReal       ftol = 1e-10;          // -fit_ftol: brgn stops when chi^2 changes by less than this, relative (1)
   PetscReal       identifiability = 1e-8; // -fit_identifiability_tol: a singular value below this times the largest is not determined (1)
   std::string     options_output;        // -fit_options_output ("" with -output none and not given)
   PetscBool       quiet = PETSC_FALSE;   // -fit_quiet: no iteration lines

@@ -75,8 +75,8 @@ PetscErrorCode Fitted(const FitProblem &f, const std::vector<CaseRow> &rows, siz
     PetscCheck(row.status == SweepOk, f.world, PETSC_ERR_USER, "-fit_data %s %s: the run at %s failed (status %d, %s): %s", f.data.file.c_str(), FitRowText(f.data, v.row).c_str(),
                ParametersText(f, p).c_str(), row.status, SweepStatusName(row.status), row.reason.c_str());
     (*fitted)[i] = row.values[v.column];
-    PetscCheck(std::isfinite((*fitted)[i]), f.world, PETSC_ERR_USER, "-fit_data %s %s, column '%s': the run at %s gives no value (%g): the column does not apply to this run", f.data.file.c_str(),
-               FitRowText(f.data, v.row).c_str(), f.data.measured[v.column].c_str(), ParametersText(f, p).c_str(), (*fitted)[i]);
+    PetscCheck(std::isfinite((*fitted)[i]), f.world, PETSC_ERR_USER, "-fit_data %s %s, column '%s': the run at %s gives no value (%g): %s", f.data.file.c_str(), FitRowText(f.data, v.row).c_str(),
+               f.data.measured[v.column].c_str(), ParametersText(f, p).c_str(), (*fitted)[i], row.reason.empty() ? "the column does not apply to this run" : row.reason.c_str());
   }
   PetscFunctionReturn(0);
 }

@@ -46,6 +46,8 @@ struct FitProblem {
   std::vector<FitIteration> history;
   std::vector<double>       u_prev;  // the last iteration's scaled parameters (the step test)
   bool                      u_prev_set = false;
+  double                    f_prev     = 0;  // the last iteration's objective (chi^2/2: the chi^2 test)
+  std::string               stop;            // which of the program's tests stopped brgn ("" none: TAO's own)
   bool                      options_checked = false; // the unused-option check ran (after the first residual)
 
   size_t m() const { return data.values.size(); }

@@ -11,7 +11,8 @@
 // regularizer weight 0 (PETSc's default is 1e-4 with the proximal regularizer 1/2 lambda |u -
 // u_prev|^2, which vanishes at convergence but damps each step: 0 makes it plain Gauss-Newton with
 // bounds), gradient tolerances 0 (they do not fit residuals that are all noise) and at most 50
-// iterations; brgn stops when no scaled parameter moves by more than -fit_xtol.
+// iterations; brgn stops when no scaled parameter moves by more than -fit_xtol or chi^2 by less
+// than -fit_ftol of itself.
 #include "studies/fit_problem.hpp"
 
 #include "base/options_util.hpp"
@@ -174,28 +175,37 @@ PetscErrorCode FitTaoMonitor(Tao tao, void *ctx)
 
 PetscErrorCode FitContainerDestroy(void **ctx) { return PetscContainerDestroy((PetscContainer *)ctx); }
 
-// brgn's subsolver: TAO's own tests first (every -tao_* tolerance), then the step: no scaled
-// parameter moved by more than -fit_xtol since the last iteration.
+// brgn's subsolver: TAO's own tests first (every -tao_* tolerance), then the program's: no scaled
+// parameter moved by more than -fit_xtol, or chi^2 changed by less than -fit_ftol of itself, since
+// the last iteration (a fit whose residuals are noise stops when the steps are the differences'
+// noise, not a gradient that never vanishes).
 PetscErrorCode FitTaoConverged(Tao tao, void *ctx)
 {
   FitProblem        &f = *static_cast<FitProblem *>(ctx);
   TaoConvergedReason reason;
   Vec                X;
   PetscInt           it;
+  PetscReal          fc, gnorm, cnorm, xdiff;
 
   PetscFunctionBeginUser;
   PetscCall(TaoDefaultConvergenceTest(tao, NULL));
-  PetscCall(TaoGetConvergedReason(tao, &reason));
-  PetscCall(TaoGetIterationNumber(tao, &it));
+  PetscCall(TaoGetSolutionStatus(tao, &it, &fc, &gnorm, &cnorm, &xdiff, &reason));
   PetscCall(TaoGetSolution(tao, &X));
   const std::vector<double> u = FromVec(X);
   if (reason == TAO_CONTINUE_ITERATING && it > 0 && f.u_prev_set) {
     double moved = 0;
     for (size_t j = 0; j < u.size(); ++j) moved = std::max(moved, std::fabs(u[j] - f.u_prev[j]));
-    if (moved <= f.settings.xtol) PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_STEPTOL));
+    char text[160] = "";
+    if (moved <= f.settings.xtol) std::snprintf(text, sizeof text, "no scaled parameter moved by more than -fit_xtol %g", f.settings.xtol);
+    else if (std::fabs(f.f_prev - fc) <= f.settings.ftol * fc) std::snprintf(text, sizeof text, "chi^2 changed by less than -fit_ftol %g of itself", f.settings.ftol);
+    if (text[0]) {
+      f.stop = text;
+      PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_STEPTOL));
+    }
   }
   f.u_prev     = u;
   f.u_prev_set = true;
+  f.f_prev     = fc;
   PetscFunctionReturn(0);
 }
 
@@ -266,7 +276,7 @@ PetscErrorCode FitSolve(FitProblem &f, FitResult *res)
   PetscCall(TaoGetSolution(tao, &X));
   res->p        = f.ToP(FromVec(X));
   res->tao_type = type;
-  res->reason   = TaoConvergedReasons[reason];
+  res->reason   = std::string(TaoConvergedReasons[reason]) + (f.stop.empty() ? "" : " (" + f.stop + ")");
   PetscCall(TaoDestroy(&tao));
   PetscCall(MatDestroy(&J));
   PetscCall(VecDestroy(&r));
