@@ -10,7 +10,10 @@
 #              values bit for bit;
 #   identify   E and rho fitted to a uniform free beam's frequencies alone: the warning names both
 #              (they enter only as E/rho); with the measured mass added: no warning, both recovered;
-#   input      bad input: errors that name the option, the file's line and column, the row.
+#   input      bad input: errors that name the option, the file's line and column, the row;
+#   shipped    the shipped fits that take seconds (options/fits/baseball-wall, baseball-wall-table,
+#              r161-tap, racket-frame) give the numbers docs/fit.md reports (to 1e-3 of the value,
+#              1e-2 of the standard error), a second run of each computes nothing.
 #
 #   tests/fit_cli.sh path/to/beamimpact scratch_dir mpiexec part
 set -uo pipefail
@@ -20,6 +23,7 @@ mpiexec=${3:-${MPIEXEC:-mpiexec}}
 part=${4:?usage: fit_cli.sh beamimpact scratch_dir mpiexec part}
 exe=$(readlink -f "$exe")
 source "$(dirname "$0")/lib.sh" # MPI env, fail/pass, $python
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 dir="$dir/$part"
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 2
 [[ -n "$python" ]] || { echo "SKIP: no Python with h5py"; exit 0; }
@@ -138,6 +142,29 @@ input)
   expect "-fit_options_output note.txt is not allowed: it exists and is not an options file a fit wrote" "${base[@]}" -fit_options_output note.txt
   expect "-fit_sigmaa acor=0.01 \\(did you mean -fit_sigma\\?\\)" "${base[@]}" -fit_sigmaa acor=0.01
   grep -q "iteration  1" bad.log && fail "... but only after the fit ran" || pass "... before the fit's first iteration"
+  ;;
+shipped)
+  # check FIT NAME VALUE SE: /fit/value and standard_error of NAME in FIT-fit.h5
+  check() {
+    local v s
+    v=$(value "$1-fit.h5" "$2")
+    s=$("$python" -c "import h5py,sys; f=h5py.File(sys.argv[1],'r')['fit']; n=[x.decode() if isinstance(x,bytes) else x for x in f['names'][()]]; print('%.17g' % f['standard_error'][n.index(sys.argv[2])])" "$1-fit.h5" "$2")
+    near "$v" "$3" 1e-3 && near "$s" "$4" 1e-2 && pass "$1: $2 = $v +- $s (docs: $3 +- $4)" || fail "$1: $2 = $v +- $s, docs/fit.md says $3 +- $4"
+  }
+  for fit in baseball-wall baseball-wall-table r161-tap racket-frame; do
+    "$exe" -options_file "$root/options/fits/$fit.opts" -fit_quiet >"$fit.log" 2>&1 || { fail "$fit failed"; cat "$fit.log"; continue; }
+  done
+  check baseball-wall ball_m 1.905 0.05654
+  check baseball-wall ball_k1 4.716e8 1.886e8
+  check baseball-wall ball_n 10.432 0.3104
+  check baseball-wall-table ball_m 2.0021 0.06035
+  check r161-tap beam_youngs_modulus 1.6848e10 3.615e8
+  check r161-tap beam_shear_modulus 1.369e9 1.309e8
+  check r161-tap beam_density 660.86 7.618
+  check racket-frame beam_EI 126.18 50.49
+  check racket-frame beam_mu 0.45165 0.001388
+  check racket-frame strings_tension 148.59 49.53
+  "$exe" -options_file "$root/options/fits/r161-tap.opts" -fit_quiet >again.log 2>&1 && [[ $(computed again.log) == 0 ]] && pass "r161-tap again: no run computed" || fail "r161-tap again: $(computed again.log) runs"
   ;;
 *) echo "unknown part $part"; exit 2 ;;
 esac
