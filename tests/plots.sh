@@ -379,5 +379,17 @@ if run strings -options_file options/scenes/strings-modes.opts -strings_nodes 31
   expect_fail "plot_strings.py on a beam's modes file" "no string bed's picture" "$python" scripts/plot_strings.py "$dir/modes.h5" -o "$dir/not-strings.png"
 fi
 
+# scripts/plot_fit.py (issue 36) on a small fit of data made by the program (3 impacts, ball_k): a
+# valid PNG, its line naming the columns and parameters; a modes file refused as not a fit.
+"$exe" -task sweep -beam_nodes 21 -ts_type modal -ball_law linear -ball_k 2.2e4 -sweep "impact_x=0.3;0.6;0.9" -sweep_quiet -output "$dir/fitgen.h5" >"$dir/fitgen.log" 2>&1
+"$python" -c "
+import h5py; r = h5py.File('$dir/fitgen.h5', 'r')['results']
+print('impact_x,acor,contact_time'); [print('%.17g,%.17g,%.17g' % (r['impact_x'][i], r['acor'][i], r['contact_time'][i])) for i in range(3)]" >"$dir/fit.csv"
+if run fit -task fit -beam_nodes 21 -ts_type modal -ball_law linear -fit_data "$dir/fit.csv" -fit_parameters "ball_k=1e4:5e4"; then
+  if out=$("$python" scripts/plot_fit.py "$dir/fit.h5" -o "$dir/fit.png" 2>&1) && images PNG "$dir/fit.png" >/dev/null && grep -q "2 measured columns, 1 parameters" <<<"$out"; then pass "plot_fit.py: $out"
+  else fail "plot_fit.py fit.h5: $out"; fi
+  expect_fail "plot_fit.py on a modes file" "is not a -task fit file" "$python" scripts/plot_fit.py "$dir/modes.h5" -o "$dir/not-fit.png"
+fi
+
 echo "plots: $fails failure(s), $SECONDS s"
 [[ $fails -eq 0 ]]

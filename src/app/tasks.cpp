@@ -16,6 +16,7 @@
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence.hpp"
+#include "studies/fit.hpp"
 #include "studies/sweep.hpp"
 #include "studies/sweep_plan.hpp"
 #include "solvers/leapfrog.hpp"
@@ -50,6 +51,7 @@ const TaskEntry Tasks[] = {
   {"sweep", TaskSweep},
   {"convergence", TaskConvergence},
   {"flight", TaskFlight},
+  {"fit", TaskFit},
 };
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
@@ -275,6 +277,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)ModalTruncationFromOptions(comm, &modal_modes);
   (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   (void)StringBedHelpOptions(comm); // -strings_*, -head_*
+  (void)FitHelpOptions(comm);       // -fit_*, TAO's -tao_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);

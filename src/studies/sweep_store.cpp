@@ -318,8 +318,13 @@ herr_t CollectAttribute(hid_t loc, const char *name, const H5A_info_t *, void *o
   return 0;
 }
 
-bool ReadDataset(hid_t g, const char *name, std::vector<double> *v)
+bool ReadDataset(hid_t g, const char *name, std::vector<double> *v) { return H5ReadDoubleColumn(g, name, v); }
+
+} // namespace
+
+bool H5ReadDoubleColumn(long long loc, const char *name, std::vector<double> *v)
 {
+  const hid_t g = (hid_t)loc;
   if (H5Lexists(g, name, H5P_DEFAULT) <= 0) return false;
   hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
   if (ds < 0) return false;
@@ -332,7 +337,6 @@ bool ReadDataset(hid_t g, const char *name, std::vector<double> *v)
   return ok;
 }
 
-} // namespace
 
 // ---------------------------------------------------------------------------
 // Journal files and checked options
@@ -465,6 +469,8 @@ SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signatu
   return Ok;
 }
 
+std::map<std::string, std::string> SweepOptionsParse(const std::string &all) { return ParseOptions(all); }
+
 std::string SweepCheckedOptions(const std::string &all)
 {
   std::string out;
@@ -497,8 +503,10 @@ void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std:
     if (columns[c].name == "status") S->status_column = (int)c;
 }
 
-// A 1-D dataset of variable-length UTF-8 strings.
-static bool WriteStrings(hid_t g, const char *name, const std::vector<std::string> &v)
+// Every /results dataset has a unit; the reasons' and text axes' is this text.
+static const char *const kReasonUnit = "text (the error of a failed point; empty where status = 0)";
+
+bool H5WriteStringColumn(long long loc, const char *name, const std::vector<std::string> &v, const char *unit_text)
 {
   std::vector<const char *> p;
   for (auto &s : v) p.push_back(s.c_str());
@@ -507,10 +515,10 @@ static bool WriteStrings(hid_t g, const char *name, const std::vector<std::strin
   H5Tset_size(t, H5T_VARIABLE);
   H5Tset_cset(t, H5T_CSET_UTF8);
   hid_t s  = H5Screate_simple(1, &n, NULL);
-  hid_t d  = H5Dcreate2(g, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t d  = H5Dcreate2((hid_t)loc, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   bool  ok = d >= 0 && (n == 0 || H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
   RunRecord unit; // every /results dataset has a unit
-  unit.add("unit", "text (the error of a failed point; empty where status = 0)");
+  unit.add("unit", unit_text);
   ok = ok && H5WriteAttributes(d, unit) == 0;
   if (d >= 0) H5Dclose(d);
   H5Sclose(s);
@@ -518,8 +526,9 @@ static bool WriteStrings(hid_t g, const char *name, const std::vector<std::strin
   return ok;
 }
 
-static bool ReadStrings(hid_t g, const char *name, std::vector<std::string> *v)
+bool H5ReadStringColumn(long long loc, const char *name, std::vector<std::string> *v)
 {
+  const hid_t g = (hid_t)loc;
   v->clear();
   if (H5Lexists(g, name, H5P_DEFAULT) <= 0) return false;
   hid_t d = H5Dopen2(g, name, H5P_DEFAULT);
@@ -570,7 +579,7 @@ static PetscErrorCode WriteTextColumn(hid_t g, const std::string &output, const 
 
   PetscFunctionBeginUser;
   for (double i : v) text.push_back(i >= 0 && i < (double)labels.size() ? labels[(size_t)i] : std::string());
-  PetscCheck(WriteStrings(g, name, text) && WriteValuesAttribute(g, name, labels), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write the text column %s", output.c_str(), name);
+  PetscCheck(H5WriteStringColumn(g, name, text, kReasonUnit) && WriteValuesAttribute(g, name, labels), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write the text column %s", output.c_str(), name);
   PetscFunctionReturn(0);
 }
 
@@ -598,7 +607,7 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
     const auto it = S.reasons.find(kv.first);
     reasons.push_back(it == S.reasons.end() ? std::string() : it->second);
   }
-  PetscCheck(WriteStrings(g, "reason", reasons), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write /results/reason");
+  PetscCheck(H5WriteStringColumn(g, "reason", reasons, kReasonUnit), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write /results/reason");
   PetscCall(H5DimsTable(g, "case_index")); // the rows done, by their case
   H5Gclose(g);
   // The plan: every axis's value for every case (also those not yet done).
@@ -657,7 +666,7 @@ static bool ReadTextColumn(hid_t g, const char *name, const std::vector<std::str
 {
   std::vector<std::string> text;
   v->clear();
-  if (!ReadStrings(g, name, &text)) return false;
+  if (!H5ReadStringColumn(g, name, &text)) return false;
   for (const std::string &t : text) {
     const auto it = std::find(labels.begin(), labels.end(), t);
     v->push_back(it == labels.end() ? std::numeric_limits<double>::quiet_NaN() : (double)(it - labels.begin()));
@@ -731,7 +740,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
                cols[c].name.c_str());
   }
   std::vector<std::string> reasons;
-  const bool               reasons_ok = ReadStrings(g, "reason", &reasons) && reasons.size() == data[0].size();
+  const bool               reasons_ok = H5ReadStringColumn(g, "reason", &reasons) && reasons.size() == data[0].size();
   H5Gclose(g);
   H5Fclose(file);
   PetscCheck(reasons_ok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/reason is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str());
@@ -752,49 +761,61 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
   PetscFunctionReturn(0);
 }
 
-static void RemoveJournals(const SweepStore &S)
+std::vector<std::string> SweepJournalFiles(const std::string &parts, int *last_run)
 {
-  DIR *d = ::opendir(S.parts.c_str());
-  if (!d) return;
   std::vector<std::string> names;
+  if (last_run) *last_run = 0;
+  DIR *d = ::opendir(parts.c_str());
+  if (!d) return names;
   while (dirent *e = ::readdir(d)) {
     int run, rank;
-    if (ParseJournalName(e->d_name, &run, &rank)) names.push_back(e->d_name);
+    if (ParseJournalName(e->d_name, &run, &rank)) {
+      names.push_back(parts + "/" + e->d_name);
+      if (last_run) *last_run = std::max(*last_run, run);
+    }
   }
   ::closedir(d);
-  for (auto &n : names) ::unlink((S.parts + "/" + n).c_str());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
-// Takes F.parts/lock (flock, not blocking). A lock file unlinked by the run that held it
-// between our open() and flock() would leave us holding a lock nobody else sees: then the
-// path no longer names the inode we locked, and we try again (so too when that run removed
-// F.parts under us).
-static PetscErrorCode StoreLock(SweepStore &S)
+static void RemoveJournals(const SweepStore &S)
 {
-  const std::string path = S.parts + "/lock";
+  for (const std::string &path : SweepJournalFiles(S.parts, nullptr)) ::unlink(path.c_str());
+}
+
+// A lock file unlinked by the run that held it between our open() and flock() would leave us
+// holding a lock nobody else sees: then the path no longer names the inode we locked, and we
+// try again (so too when that run removed the directory under us).
+PetscErrorCode SweepPartsLock(const std::string &output, const std::string &parts, const char *who, int *lock_fd)
+{
+  const std::string path = parts + "/lock";
 
   PetscFunctionBeginUser;
   for (int attempt = 0;; ++attempt) {
     const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0 && errno == ENOENT && attempt < 100) { // F.parts just removed by the sweep that ended
-      ::mkdir(S.parts.c_str(), 0755);
+    if (fd < 0 && errno == ENOENT && attempt < 100) { // the directory just removed by the run that ended
+      ::mkdir(parts.c_str(), 0755);
       continue;
     }
-    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (%s)", S.output.c_str(), path.c_str(), std::strerror(errno));
+    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (%s)", output.c_str(), path.c_str(), std::strerror(errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       ::close(fd);
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", S.output.c_str(),
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another %s that is still running (%s is held); wait for it or choose another -output", output.c_str(), who,
               path.c_str());
     }
     struct stat held, named;
     if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &named) == 0 && held.st_dev == named.st_dev && held.st_ino == named.st_ino) {
-      S.lock_fd = fd;
+      *lock_fd = fd;
       PetscFunctionReturn(0);
     }
     ::close(fd);
-    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: %s keeps being replaced by another sweep; wait for it or choose another -output", S.output.c_str(), path.c_str());
+    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: %s keeps being replaced by another %s; wait for it or choose another -output", output.c_str(), path.c_str(), who);
   }
 }
+
+// Takes F.parts/lock (flock, not blocking).
+static PetscErrorCode StoreLock(SweepStore &S) { return SweepPartsLock(S.output, S.parts, "sweep", &S.lock_fd); }
 
 void SweepStoreRelease(SweepStore &S)
 {
@@ -814,22 +835,12 @@ static PetscErrorCode StoreOpenLocked(SweepStore &S, int *run)
     ::unlink(S.output.c_str());
   } else PetscCall(StoreLoadFile(S));
   // Journals of earlier runs (killed before they finished).
-  *run = 0;
   DIR *d = ::opendir(S.parts.c_str());
   PetscCheck(d, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot read %s", S.output.c_str(), S.parts.c_str());
-  std::vector<std::string> names;
-  while (dirent *e = ::readdir(d)) {
-    int r, rank;
-    if (ParseJournalName(e->d_name, &r, &rank)) {
-      names.push_back(e->d_name);
-      *run = std::max(*run, r);
-    }
-  }
   ::closedir(d);
-  std::sort(names.begin(), names.end());
-  for (auto &n : names) {
+  for (const std::string &path : SweepJournalFiles(S.parts, run)) {
     SweepJournalReader j;
-    j.path = S.parts + "/" + n;
+    j.path = path;
     SweepJournalReader::Status st = j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr);
     if (st == SweepJournalReader::WrongParameters && S.retry_signature_hash) { // written before this retry's change
       SweepJournalReader former;
