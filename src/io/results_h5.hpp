@@ -94,5 +94,7 @@ PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::v
 // attribute integer = 1, so that readers write its finite values as whole numbers.
 PetscErrorCode H5WriteCounts1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);
 PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit);
+// A 1-D dataset of variable-length UTF-8 strings, with its unit.
+PetscErrorCode H5WriteText1D(long long loc, const char *name, const std::vector<std::string> &v, const char *unit);
 
 } // namespace beamimpact
