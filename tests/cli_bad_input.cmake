@@ -69,7 +69,7 @@ set(cases
   "-monitor_velocity_at 0.5,,0.6|-monitor_velocity_at 0.5,,0.6 is not allowed: an empty value between commas"
   "-snapshot_times 0.001,nan|-snapshot_times 0.001,nan is not allowed: nan is not a finite number"
   "-snapshot_times 0.001,-0.5|-snapshot_times 0.001,-0.5 is not allowed: -0.5. it takes one or more values separated by commas, each >= 0 \\(s\\)"
-  "-impact_window nan|-impact_window nan is not allowed: it must be a finite number \\(s\\)"
+  "-impact_window nan|-impact_window nan is not allowed: it must be a finite number >= 0 \\(s\\)"
   "-impact_x nan|-impact_x nan is not allowed: it must be a finite number \\(m\\)"
   "-impact_max_time inf|-impact_max_time inf is not allowed: it must be a finite number \\(s\\)"
   "-beam_damping_mass nan|-beam_damping_mass nan is not allowed: it must be a finite number >= 0 \\(1/s\\)"
@@ -159,6 +159,14 @@ set(cases
   "-options_file ${SRC}/options/base/racket-strung.opts -strings_patch_radius -1|-strings_patch_radius -1 is not allowed: it must be >= 0 \\(m\\)"
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_patch_radius 0.2|-strings_patch_radius 0.2 m is not allowed with this grid"
   "-strings_frame held -impact_x 0.5|-impact_x 0.5 is not allowed: the impact point must lie on the beam, 0 <= x <= L = 0.34"
+  # issue 34: a negative window (it silently became the default), the barrel wall's absurd inputs
+  "-impact_window -0.001|-impact_window -0.001 is not allowed: it must be >= 0 \\(s\\)"
+  "-barrel_hoop_frequency 1000 -barrel_hoop_mass 0.27|-barrel_hoop_frequency 1000 is not allowed on a beam with no round hollow section \\(a uniform beam or -beam_properties has no wall\\)"
+  "-options_file ${SRC}/options/bats/r161.opts -barrel_hoop_frequency 1000 -barrel_hoop_mass 0.27|-barrel_hoop_frequency 1000 is not allowed on a solid profile"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -options_file ${SRC}/options/balls/baseball.opts -beam_shell -impact_x 0.66 -shell_contact_radius 1|-shell_contact_radius 1 m is not allowed: the ball's patch on the wall can be no wider than the barrel wall.s midsurface radius at the impact point, 0.0321 m"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -impact_x 0.66 -ball_radius 0.02 -shell_contact_radius 0.025|-shell_contact_radius 0.025 m is not allowed: the ball's patch on the wall can be no wider than the ball's radius \\(-ball_radius\\), 0.02 m"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -shell_youngs_modulus 1|-shell_youngs_modulus 1\\.? is not allowed"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -barrel_wall_thickness 1e-6|-barrel_wall_thickness 1e-6 is not allowed: it must be >= 0.0001 \\(m\\)"
 )
 foreach(c IN LISTS cases)
   string(FIND "${c}" "|" bar)

@@ -18,7 +18,8 @@
 #     (-impact_progress), -ts_type modal's modes too, and a sweep of more than 1e6 points
 #     announces its set-up cost; a sweep whose remaining points are expected to take longer
 #     than -impact_cost_warn says so once;
-#   * -modal_tolerance under a stepped integrator acts (the free flight's modes): no note.
+#   * -modal_tolerance under a stepped integrator acts (the free flight's modes): no note;
+#   * the barrel wall: a displacement beyond a quarter of its radius flagged, a thick wall noted.
 #
 #   tests/cli_policy.sh path/to/beamimpact scratch_dir
 set -uo pipefail
@@ -196,6 +197,24 @@ if [[ $rc -eq 0 ]] && grep -q "^warning: the maximum compression 124[01] m is be
 else fail "-ball_speed 1e6: exit $rc, flag '$flag': $out"; fi
 out=$("$exe" -options_file options/base/superball-linear.opts -output none 2>&1)
 ! grep -q "beyond the ball's radius" <<<"$out" && pass "no flag at 1 m/s" || fail "flag at 1 m/s: $out"
+
+# the barrel wall (issue 34): a displacement under the ball beyond a quarter of the wall's radius is
+# flagged like the ball's compression (a hoop of 10 Hz on the aluminium bat lets the baseball push
+# its wall in by far more than the 32 mm radius), a wall of 1000 Hz is not; the thin-shell model on
+# the corked R161's 19 mm wall is noted (t/R above 0.1), on the aluminium bat's 2.5 mm it is not
+out=$("$exe" -options_file options/bats/aluminium-bat.opts -options_file options/balls/baseball.opts -beam_nodes 41 -impact_x 0.66 -barrel_hoop_frequency 10 -barrel_hoop_mass 0.27 -ts_type modal -output "$dir/wall.h5" 2>&1); rc=$?
+flag=$(h5dump -d /results/wall_deflection_large "$dir/wall.h5" 2>/dev/null | sed -nE 's/^ *\(0\): *([0-9.]+).*/\1/p')
+if [[ $rc -eq 0 ]] && grep -q "^warning: the barrel wall's largest displacement under the ball, [0-9.]* m, is [0-9.]* times its midsurface radius (R = 0.0321 m at x = 0.66 m), beyond 0.25 of it: physically absurd, the wall's model is linear .* check -barrel_hoop_frequency and -barrel_hoop_mass" <<<"$out" && [[ $flag == 1* ]]; then
+  pass "a 10 Hz hoop: the wall's displacement beyond a quarter of its radius is flagged (summary and wall_deflection_large)"
+else fail "hoop 10 Hz: exit $rc, flag '$flag': $out"; fi
+out=$("$exe" -options_file options/bats/aluminium-bat.opts -options_file options/balls/baseball.opts -beam_nodes 41 -impact_x 0.66 -barrel_hoop_frequency 1000 -barrel_hoop_mass 0.27 -ts_type modal -output none 2>&1)
+! grep -q "barrel wall's largest displacement" <<<"$out" && pass "no flag for a 1000 Hz hoop" || fail "flag at 1000 Hz: $out"
+out=$("$exe" -task modes -options_file options/bats/r161-corked.opts -beam_shell -beam_nodes 41 -modes_count 2 -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "^note: -beam_shell on a thick wall: the barrel's wall is t = 0.01945 m on a midsurface radius R = 0.02243 m (t/R = 0.87, above 0.1): the thin-shell model" <<<"$out"; then
+  pass "-beam_shell on the corked R161's 19 mm wall: noted (t/R 0.87 > 0.1)"
+else fail "corked R161 -beam_shell: exit $rc: $out"; fi
+out=$("$exe" -task modes -options_file options/bats/aluminium-bat.opts -beam_shell -beam_nodes 41 -modes_count 2 -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && ! grep -q "thick wall" <<<"$out" && pass "-beam_shell on the aluminium bat's 2.5 mm wall: no note (t/R 0.078)" || fail "aluminium -beam_shell: exit $rc: $out"
 
 # a contact cut short by -impact_max_time: an error for one impact (tests/cli_bad_input.cmake),
 # a failed row (status 7) in a sweep, never a number

@@ -118,8 +118,12 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   }
   const std::string absurd = CompressionBeyondRadiusText(sc, r);
   if (!absurd.empty()) PetscCall(PetscPrintf(comm, "%s\n", absurd.c_str()));
+  const std::string wall = WallDeflectionLargeText(sc, r);
+  if (!wall.empty()) PetscCall(PetscPrintf(comm, "%s\n", wall.c_str()));
+  const std::string energy = ImpactEnergyShareText(sc, r); // where it went (docs/model.md section 4)
+  if (!energy.empty()) PetscCall(PetscPrintf(comm, "%s\n", energy.c_str()));
   if (r.beam_dissipated_end > 0) // a damped beam
-    PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of the incident energy); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
+    PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of E_in); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
   if (sc.swing.Swings())
     PetscCall(PetscPrintf(comm, "swinging bat (V_cm %g m/s, Omega %g rad/s): batted-ball speed %.4f m/s, collision efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
                           (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs, (double)r.collision_efficiency, (double)r.bat_speed_end,
@@ -132,11 +136,10 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
       PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n", (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
   }
   if (sc.beam.strings.On())
-    PetscCall(PetscPrintf(comm, "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its energy %.4e J at most, %.4e J at the end (%.4f of the incident energy)\n",
-                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak, (double)r.bed_energy_peak, (double)r.bed_energy_end,
-                          sc.ball.speed > 0 ? (double)(r.bed_energy_end / (0.5 * sc.ball.mass * sc.ball.speed * sc.ball.speed)) : 0.0));
+    PetscCall(PetscPrintf(comm, "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
+                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak, (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
   if (sc.beam.torsion.on && ResultNoHeldDof(sc) && sc.ball.speed > 0)
-    PetscCall(PetscPrintf(comm, "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of the incident energy; its twist and spin hold %.4e J at the end\n", (double)r.roll_rate_end,
+    PetscCall(PetscPrintf(comm, "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of E_in; its twist and spin hold %.4e J at the end\n", (double)r.roll_rate_end,
                           (double)r.roll_fraction, (double)r.twist_energy_end));
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
@@ -231,9 +234,8 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
     std::string family = modes.shell_n.empty() ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
     if (!modes.part.empty()) { // a roll field or a string bed: the part with most of the mode's kinetic energy, and its share
-      static const char *const names[kParts] = {"bending", "roll", "wall", "strings"};
-      char                     text[64];
-      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", names[modes.part[q]], (double)(100 * modes.part_share[q]));
+      char text[64];
+      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", BeamSystemPartName((Part)modes.part[q]), (double)(100 * modes.part_share[q]));
       family = text;
     }
     PetscCall(PetscPrintf(comm, "  %4s  %14.4f  %11.4f %s%s\n", number.c_str(), (double)modes.frequency[q], (double)modes.period[q] * 1e3, family.c_str(), modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));

@@ -46,6 +46,16 @@ PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
 {
   BarrelShell &shell = sc->beam.shell;
   PetscFunctionBeginUser;
+  if (shell.contact_radius >= 0) { // given: a patch wider than the ball or the wall spreads the load off the wall (sin(n a/R)/(n a/R) -> 0)
+    const PetscReal R = ShellRadiusAt(sc->beam, sc->impact.x), Rb = sc->ball.radius;
+    PetscReal       limit = PETSC_INFINITY;
+    const char     *what  = "";
+    if (Rb > 0) limit = Rb, what = "the ball's radius (-ball_radius)";
+    if (R > 0 && R < limit) limit = R, what = "the barrel wall's midsurface radius at the impact point";
+    PetscCheck(!(shell.contact_radius > limit), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-shell_contact_radius %g m is not allowed: the ball's patch on the wall can be no wider than %s, %g m; allowed 0 <= a <= %g m (a wider patch spreads the load off the wall)",
+               (double)shell.contact_radius, what, (double)limit, (double)limit);
+  }
   if (shell.contact_radius < 0) {
     const PetscReal v    = sc->ball.speed + (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
     shell.contact_radius = ShellContactRadiusDefault(sc->ball, v);

@@ -170,6 +170,7 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
       p += S.mass[d] * run.qd[d];
       l += S.mass[d] * sys.NodeX(node) * run.qd[d];
       r += S.mass[d] * sys.DofZ(dof) * run.qd[d];
+      if (sys.Bed(f)) m.bed_momentum += S.mass[d] * run.qd[d], m.bed_moment += S.mass[d] * sys.NodeX(node) * run.qd[d], m.bed_roll += S.mass[d] * sys.DofZ(dof) * run.qd[d];
     } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
     else if (f == sys.roll_field) r += S.mass[d] * run.qd[d];
   }
