@@ -6,6 +6,7 @@
 #include "system/beam_system.hpp"
 
 #include <cmath>
+#include <set>
 
 namespace beamimpact {
 
@@ -59,20 +60,28 @@ PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
 }
 
 // -strings_patch_radius: its default from the ball as the shell's (ShellContactRadiusDefault: the
-// Hertz radius on a rigid flat at the approach speed), and the disc's entries within the contact
-// coupling's room.
+// Hertz radius on a rigid flat at the approach speed); the load's nodes (BedPatch) within the
+// frame's ends on a beam frame, and its coupled dofs within the contact coupling's room.
 PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
 {
   StringBedParams &bed = sc->beam.strings;
   PetscFunctionBeginUser;
   if (bed.patch_radius < 0) bed.patch_radius = ShellContactRadiusDefault(sc->ball, ImpactApproachSpeed(*sc));
-  const BedGrid   g = StringBedFrameGrid(bed, sc->beam.nodes, sc->beam.length);
-  const PetscReal a = bed.patch_radius;
-  PetscInt        n = 0; // the coupling's entries: a free node's own, or its frame section's deflection and roll
-  for (const BedPatchNode &e : BedPatch(g, sc->impact.x - bed.head_center, sc->impact.z, a)) n += e.free ? 1 : 2;
-  PetscCheck(n <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %" PetscInt_FMT " coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
-             (double)a, (double)g.hx, (double)g.hz, n, ContactCoupling::kMaxEntries);
+  const BedGrid      g = StringBedFrameGrid(bed, sc->beam.nodes, sc->beam.length);
+  const PetscReal    a = bed.patch_radius;
+  std::set<PetscInt> dofs; // the coupling's entries: a free node's own, or its frame section's deflection and roll
+  bool               beyond = false;
+  for (const BedPatchNode &e : BedPatch(g, sc->impact.x - bed.head_center, sc->impact.z, a)) {
+    beyond = beyond || e.beyond;
+    if (e.free) dofs.insert(e.i * (g.nz + 2) + 2 + e.j);
+    else if (!bed.Held()) dofs.insert(e.i * (g.nz + 2)), dofs.insert(e.i * (g.nz + 2) + 1); // a held frame's dofs: none
+  }
+  PetscCheck(!beyond || bed.Held(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-impact_x %g with -strings_patch_radius %g m is not allowed: the ball's load on the bed (its disc, spread over the nodes around the point, h_x %g m) reaches past the frame's end (0 <= x <= L = %g m); strike further from the end or give a smaller -strings_patch_radius",
+             (double)sc->impact.x, (double)a, (double)g.hx, (double)sc->beam.length);
+  PetscCheck((PetscInt)dofs.size() <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %zu coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
+             (double)a, (double)g.hx, (double)g.hz, dofs.size(), ContactCoupling::kMaxEntries);
   PetscFunctionReturn(0);
 }
 

@@ -12,7 +12,7 @@ const OptionModule &StringBedOptionTable()
       OptionChoice("-strings_frame",
                    "The frame holding the bed: none (no string bed; the racket is the beam), held (a rigid frame, w = 0 on the outline; -impact_x from the head's end, -task modes the bed's modes on a 2-D DMDA) or beam (the beam is the frame: the bed on its nodes, the head bending and rolling with it; needs -beam_torsion)",
                    {"none", "held", "beam"}, "none"),
-      OptionReal("-strings_patch_radius", "m", "The ball's load on the bed spread over a disc of this radius with the weights 1 - r^2/a^2 (0: the nearest node; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()),
+      OptionReal("-strings_patch_radius", "m", "The ball's load on the bed: the point's bilinear hat weights on its cell's four nodes, each node's share spread over a disc of this radius about it with the weights 1 - r^2/a^2, so that the load's resultant and moments are the point's (0: the hat weights alone; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()),
       OptionReal("-strings_tension", "N", "Tension of each main string (along the frame's axis)", "250", Positive()),
       OptionReal("-strings_tension_crosses", "N", "Tension of each cross string (default: -strings_tension)", "", Positive()),
       OptionReal("-strings_spacing", "m", "Spacing of the mains (centre to centre, across the face)", "0.0151", Positive()),
