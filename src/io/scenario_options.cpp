@@ -2,10 +2,12 @@
 #include "io/scenario_options.hpp"
 
 #include "base/option_table.hpp"
+#include "io/text.hpp"
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace beamimpact {
@@ -85,6 +87,32 @@ PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
   PetscFunctionReturn(0);
 }
 
+// -flight: the flight flies the impact's own ball (its mass and size: run/oblique.cpp), which
+// needs its radius; with Nathan's baseball coefficients unless the run gives its own, a note
+// when the ball is not a baseball (its mass or radius 10 % or more from the calculator's).
+PetscErrorCode FlightBallResolve(MPI_Comm comm, const Scenario &sc)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(sc.ball.radius > 0, comm, PETSC_ERR_ARG_WRONG, "-flight needs the ball's size for its drag and lift in the air: give -ball_radius (m)");
+  const FlightBall baseball;
+  const bool       other = std::abs(sc.ball.mass / baseball.mass - 1) >= 0.1 || std::abs(sc.ball.radius / baseball.radius - 1) >= 0.1;
+  bool             aero  = false;
+  for (const char *c : {"-flight_cd0", "-flight_cd_spin", "-flight_cl0", "-flight_cl1", "-flight_cl2"}) {
+    PetscBool given;
+    PetscCall(PetscOptionsHasName(NULL, NULL, c, &given));
+    aero = aero || given;
+  }
+  if (!other || aero) PetscFunctionReturn(0);
+  const FlightAero &a = sc.flight.params.aero;
+  char              text[600];
+  std::snprintf(text, sizeof text,
+                "note: -flight flies the impact's ball (%g kg, radius %g m) with Nathan's baseball aerodynamics (C_D = %g + %g per 1000 rpm, C_L = %g S/(%g + %g S)): another ball has its own (a tennis ball's C_D is "
+                "about 0.55); give -flight_cd0, -flight_cd_spin, -flight_cl0, -flight_cl1, -flight_cl2 (docs/flight.md)\n",
+                (double)sc.ball.mass, (double)sc.ball.radius, (double)a.cd0, (double)a.cd_spin, (double)a.cl2, (double)a.cl0, (double)a.cl1);
+  PetscCall(PrintOnce(comm, text));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 unsigned ScenarioPartOf(const std::string &name)
@@ -131,6 +159,7 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
   if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
+  if (sc->flight.on && (part(ScenarioFlight) || part(ScenarioBall))) PetscCall(FlightBallResolve(comm, *sc));
   if (how.read_as) {
     *how.read_as                           = *sc;
     how.read_as->beam.shell.contact_radius = radius_as_read;

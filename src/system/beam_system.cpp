@@ -259,7 +259,7 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys
   // eigenvalues below 1e-12 of its trace (LAPACK's syev on the k x k matrix, k <= 3).
   PetscReal A[9] = {0}, lambda[3] = {0}, work[32];
   for (PetscInt d = 0; d < sys.ndof; ++d)
-    if (sys.held[d])
+    if (sys.held[d] && !sys.Bed(d % sys.fields)) // a bed's held node is not a support
       for (int a = 0; a < k; ++a)
         for (int b = 0; b < k; ++b) A[a * k + b] += c[a][d] * c[b][d];
   PetscReal trace = 0;

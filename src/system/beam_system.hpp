@@ -153,7 +153,9 @@ std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal 
 std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &sys);
 // The rigid motions the holds leave: the combinations of the candidates that vanish on every
 // held dof and that the stiffness annihilates (|K v| <= 1e-9 max|K| max|v|: an Euler-Bernoulli
-// clamp holds the rotation through its mirrored curvature, not a held dof), held dofs 0.
+// clamp holds the rotation through its mirrored curvature, not a held dof), held dofs 0. A string
+// bed's held dofs (its nodes outside the head or on its edge) are no supports: nothing of the
+// structure is there (the bed's edge moves with its frame section), so they do not count.
 std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys);
 // The swinging bat's velocities at contact (model/swing.hpp): V(x) toward the ball, i.e. -y.
 std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body);
