@@ -157,7 +157,7 @@ set(cases
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -impact_z 0.2|-impact_x 0.15 with -impact_z 0.2 is not allowed: off the frame's axis the ball must strike the string bed"
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_tension 2.5e5 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 1e-6|-ts_dt 1e-06 is above the stability limit .* set by the string bed\\)"
   "-options_file ${SRC}/options/base/racket-strung.opts -strings_patch_radius -1|-strings_patch_radius -1 is not allowed: it must be >= 0 \\(m\\)"
-  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_patch_radius 0.2|-strings_patch_radius 0.2 m is not allowed with this grid"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.3 -strings_patch_radius 0.2|-strings_patch_radius 0.2 m is not allowed with this grid"
   "-strings_frame held -impact_x 0.5|-impact_x 0.5 is not allowed: the impact point must lie on the beam, 0 <= x <= L = 0.34"
   # issue 34: a negative window (it silently became the default), the barrel wall's absurd inputs
   "-impact_window -0.001|-impact_window -0.001 is not allowed: it must be >= 0 \\(s\\)"
@@ -167,6 +167,16 @@ set(cases
   "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -impact_x 0.66 -ball_radius 0.02 -shell_contact_radius 0.025|-shell_contact_radius 0.025 m is not allowed: the ball's patch on the wall can be no wider than the ball's radius \\(-ball_radius\\), 0.02 m"
   "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -shell_youngs_modulus 1|-shell_youngs_modulus 1\\.? is not allowed"
   "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -barrel_wall_thickness 1e-6|-barrel_wall_thickness 1e-6 is not allowed: it must be >= 0.0001 \\(m\\)"
+  # issue 34: an impact point off the frame's section, strings wider apart than the head, a load
+  # past the frame's end, a roll too light for the modes, the flight's ball
+  "-options_file ${SRC}/options/base/racket.opts -beam_torsion -beam_torsion_stiffness 630 -beam_torsion_inertia 1.9e-3 -impact_z 5|-impact_x 0.55 with -impact_z 5 is not allowed: off the frame's section. a frame without a string bed is struck within its half-width across the face, \\|z\\| <= 0.36 m \\(half the frame's length"
+  "-beam_torsion -beam_torsion_stiffness 50 -beam_torsion_inertia 1e-4 -impact_z 0.02|-impact_x 0.55 with -impact_z 0.02 is not allowed: off the frame's section. .* \\|z\\| <= 0.016 m \\(half -beam_width"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_spacing 0.34|-strings_spacing 0.34 m is not allowed with -head_width 0.24 m: the mains, 0.34 m apart across the face, leave no string on the head. it must be < -head_width"
+  "-task modes -strings_frame held -strings_spacing_crosses 0.5|-strings_spacing_crosses 0.5 m is not allowed with -head_length 0.34 m: .* it must be < -head_length"
+  "-options_file ${SRC}/options/base/racket-strung.opts -head_center 0.165 -impact_x 0.012 -strings_patch_radius 0.025|-impact_x 0.012 with -strings_patch_radius 0.025 m is not allowed: the ball's load on the bed .* reaches past the frame's end"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -impact_z 0.05 -beam_torsion_inertia 1e-14 -ts_type modal|set by the frame's roll at x = .* raise -beam_torsion_inertia at least 7.1 times"
+  "-flight|-flight needs the ball's size for its drag and lift in the air: give -ball_radius"
+  "-flight -ball_radius 0.03 -flight_ball_mass 0.1|-flight_ball_mass 0.1 with -flight: after an impact the flight flies the impact's own ball"
 )
 foreach(c IN LISTS cases)
   string(FIND "${c}" "|" bar)

@@ -17,8 +17,8 @@ const OptionModule &FlightOptionTable()
       OptionReal("-flight_spin", "rad/s", "Backspin about the horizontal axis across the launch direction (< 0: topspin; 2500 rpm = 261.8 rad/s)", "250"),
       OptionReal("-flight_sidespin", "rad/s", "Sidespin about the axis across the launch in its vertical plane (> 0 curves the ball toward -x, the calculator's sign)", "0"),
       OptionReal("-flight_height", "m", "Launch height above the ground (the ground is z = 0)", "1", NonNegative()),
-      OptionReal("-flight_ball_mass", "kg", "Mass of the ball (default: the calculator's baseball, 5.125 oz)", "0.145291", Positive()),
-      OptionReal("-flight_ball_radius", "m", "Radius of the ball (default: circumference 9.125 in)", "0.0368881", Positive()),
+      OptionReal("-flight_ball_mass", "kg", "Mass of the ball, -task flight (default: the calculator's baseball, 5.125 oz; after an impact, -flight, the impact's ball: -ball_mass)", "0.145291", Positive()),
+      OptionReal("-flight_ball_radius", "m", "Radius of the ball, -task flight (default: circumference 9.125 in; after an impact the impact's ball: -ball_radius)", "0.0368881", Positive()),
       OptionReal("-flight_cd0", "1", "Drag coefficient without spin, C_D = cd0 + cd_spin (spin / 1000 rpm)", "0.3008", NonNegative()),
       OptionReal("-flight_cd_spin", "1 per 1000 rpm", "Increase of C_D with the spin, in the calculator's unit", "0.0292"),
       OptionReal("-flight_cl0", "1", "Lift C_L = cl2 S / (cl0 + cl1 S), S = R spin / speed", "0.583", Positive()),
@@ -30,7 +30,7 @@ const OptionModule &FlightOptionTable()
                    {"calculator", "exact"}, "calculator"),
       OptionReal("-flight_gravity", "m/s^2", "Acceleration of gravity (the calculator: 32.174 ft/s^2 = 9.8066352)", "9.80665", NonNegative()),
       OptionReal("-flight_series_dt", "s", "Interval of the trajectory's samples in /series (0: only launch and landing)", "0.01", NonNegative()),
-      OptionFlag("-flight", "-task impact: fly the batted ball after the impact from its exit speed, launch angle and spin (distance, apex, hang_time in /results, the trajectory in /series); the launch options -flight_speed, -flight_angle, -flight_spin then come from the impact"),
+      OptionFlag("-flight", "-task impact: fly the batted ball after the impact from its exit speed, launch angle and spin (distance, apex, hang_time in /results, the trajectory in /series); the launch options -flight_speed, -flight_angle, -flight_spin then come from the impact, the ball (its mass and size) is the impact's (-ball_mass, -ball_radius), the aerodynamics Nathan's baseball's unless -flight_cd*/-flight_cl* are given"),
     },
   };
   return m;
@@ -91,6 +91,12 @@ PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, Flight
     PetscCall(PetscOptionsHasName(NULL, NULL, launch, &given));
     PetscCheck(!given, comm, PETSC_ERR_ARG_INCOMP, "%s %s with -flight: after an impact the launch (speed, angle, spin) is the batted ball's; remove %s, or fly a given launch with -task flight", launch,
                OptionWritten(launch).c_str(), launch);
+  }
+  for (const char *ball : {"-flight_ball_mass", "-flight_ball_radius"}) {
+    PetscBool given;
+    PetscCall(PetscOptionsHasName(NULL, NULL, ball, &given));
+    PetscCheck(!given, comm, PETSC_ERR_ARG_INCOMP, "%s %s with -flight: after an impact the flight flies the impact's own ball (-ball_mass, -ball_radius); remove %s, or fly a ball of your own with -task flight", ball,
+               OptionWritten(ball).c_str(), ball);
   }
   PetscCall(FlightParamsFromOptions(comm, p, s));
   PetscFunctionReturn(0);

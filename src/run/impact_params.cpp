@@ -40,7 +40,7 @@ const OptionModule &ImpactOptionTable()
     "Impact: where the ball strikes and how long to follow it",
     {
       OptionReal("-impact_x", "m", "Impact point, metres from the x = 0 end", "0.55"),
-      OptionNeeds(OptionReal("-impact_z", "m", "Impact point across the face, metres from the frame's axis (a racket's off-centre hit: it rolls the head; > 0 toward +z of the string bed's grid); needs -beam_torsion or a string bed", "0"),
+      OptionNeeds(OptionReal("-impact_z", "m", "Impact point across the face, metres from the frame's axis (a racket's off-centre hit: it rolls the head; > 0 toward +z of the string bed's grid); needs -beam_torsion or a string bed; inside the head's outline, or without a bed within the section's half-width (half -beam_width, a profile's radius; else half the frame's length)", "0"),
                   {"-beam_torsion|-strings_frame"}),
       OptionNeeds(OptionReal("-impact_offset", "m", "Offset D of the ball's line of flight from the bat's axis (> 0: the ball's centre passes above it, the bat strikes below its centre: launched up with backspin); needs a round bat (-beam_profile) and -ball_radius; 0: head-on", "0"), {"-ball_radius"}),
       OptionChoice("-impact_tangential_plane", "An oblique impact: the bat in its second bending plane (across the line of centres), flexible (the same beam in its modes, driven by the friction force) or rigid (its effective mass at the impact point)", {"flexible", "rigid"}, "flexible"),

@@ -227,6 +227,8 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   rec->exit  = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
   if (sc.flight.on) {
     FlightParams p    = sc.flight.params;
+    p.ball.mass       = sc.ball.mass; // the impact's own ball (its radius is required with -flight: FlightBallResolve)
+    p.ball.radius     = sc.ball.radius > 0 ? sc.ball.radius : p.ball.radius;
     p.launch.speed    = rec->exit.speed;
     p.launch.angle    = rec->exit.launch_angle;
     p.launch.backspin = rec->after.spin;

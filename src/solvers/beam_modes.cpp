@@ -37,6 +37,11 @@ bool SameBeam(const BeamSystem &a, const BeamSystem &b)
 // that the computed flexible modes carry a little momentum and a free beam would lose some
 // over a window; with the exact rigid modes momentum and angular momentum are kept to
 // round-off. Their omega is exactly 0 and they decay only by alpha (C phi = alpha M phi).
+// The system has exactly as many rigid motions as BeamSystemRigidMotions finds (K annihilates
+// them): when fewer computed modes fall below the threshold but that many lie three decades
+// below the next, those are the rigid ones, lifted by round-off (a mass spread over many decades,
+// -beam_torsion_inertia 1e-12 on the strung racket: 0.037 rad/s against the threshold 0.035; the
+// static correction then held only the translation and failed on the free roll, issue 34).
 void ExactRigidModes(BeamModes *m)
 {
   const ModalSystem &S = m->S;
@@ -44,7 +49,9 @@ void ExactRigidModes(BeamModes *m)
   ModalBasis        &B = m->B;
   PetscInt           nz = 0;
   while (nz < count && B.omega[nz] < 1e-3 * m->sys.frequency_unit) nz++;
-  const auto rigid = BeamSystemRigidMotions(m->sys);
+  const auto     rigid = BeamSystemRigidMotions(m->sys);
+  const PetscInt r     = (PetscInt)rigid.size();
+  if (nz < r && r < count && B.omega[r - 1] < 1e-3 * B.omega[r]) nz = r;
   if (nz > 0 && (PetscInt)rigid.size() == nz) {
     for (PetscInt k = 0; k < nz; ++k) { // M^{1/2} v on the free dofs, orthonormal
       PetscReal *phi = &B.Phi[(size_t)k * n];
@@ -114,8 +121,9 @@ PetscErrorCode CacheOf(MPI_Comm comm, ModesCache **cache)
 constexpr double kModesPrecisionLimit = 100;
 constexpr double kFactoredSwitch      = 1;
 
-// The spread of M^-1 K: Gershgorin's bound on its largest eigenvalue (1/s^2).
-static double StiffnessSpread(const BeamSystem &sys)
+// The spread of M^-1 K: Gershgorin's bound on its largest eigenvalue (1/s^2); *where (may be
+// null) the dof of that row.
+static double StiffnessSpread(const BeamSystem &sys, PetscInt *where = nullptr)
 {
   double         top = 0;
   const PetscInt w   = 2 * sys.bw + 1;
@@ -123,9 +131,28 @@ static double StiffnessSpread(const BeamSystem &sys)
     if (!(sys.mass[i] > 0)) continue;
     double row = 0;
     for (PetscInt o = 0; o < w; ++o) row += std::abs(sys.band[(size_t)w * i + o]);
+    if (row / sys.mass[i] > top && where) *where = i;
     top = std::max(top, row / sys.mass[i]);
   }
   return top;
+}
+
+// What to change when the spread is too wide by `factor`, by the part whose dof sets it: the
+// frame's roll (its rho J too light for its G J), the strings (too light for their tension), or
+// the grid (the beam's h^-4).
+static std::string SpreadRemedy(const BeamSystem &sys, PetscInt dof, double factor)
+{
+  char            text[400];
+  const PetscInt  f = dof % sys.fields;
+  const PetscReal h = sys.L / (sys.nodes - 1);
+  if (f == sys.roll_field)
+    std::snprintf(text, sizeof text, "set by the frame's roll at x = %.3g m (rho J = %.3g kg m there against its G J): raise -beam_torsion_inertia at least %.2g times (or lower -beam_torsion_stiffness)",
+                  (double)sys.NodeX(dof / sys.fields), (double)(sys.mass[dof] / h), factor);
+  else if (sys.Bed(f))
+    std::snprintf(text, sizeof text, "set by the strings at x = %.3g m (their mass against their tension): raise -strings_linear_density at least %.2g times (or lower -strings_tension)",
+                  (double)sys.NodeX(dof / sys.fields), factor);
+  else std::snprintf(text, sizeof text, "fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)");
+  return text;
 }
 
 static double ModesPrecisionIndex(const BeamSystem &sys)
@@ -163,10 +190,12 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
     const bool  factored = BeamFactorCreate(sys, &F, &whynot);
     if (factored && FactoredPrecisionIndex(sys) <= kModesPrecisionLimit) return true;
     if (why) {
-      char text[600];
-      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e), and the factored form %s: fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)",
+      char     text[1000];
+      PetscInt where = 0;
+      StiffnessSpread(sys, &where);
+      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e), and the factored form %s: %s",
                     (int)sys.nodes, index / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon(),
-                    factored ? "is beyond it too" : ("does not apply (" + whynot + ")").c_str());
+                    factored ? "is beyond it too" : ("does not apply (" + whynot + ")").c_str(), SpreadRemedy(sys, where, index / kModesPrecisionLimit).c_str());
       *why = text;
     }
     return false;
@@ -592,8 +621,12 @@ PetscErrorCode BeamModes::StaticCorrection(const ContactCoupling &g, const Modal
           for (PetscInt d = 0; d < n; ++d) a += r[d] * (*l)[d];
           for (PetscInt d = 0; d < n; ++d) (*l)[d] -= S.mass[d] * r[d] * a;
         }
-      std::vector<std::vector<PetscReal>> u;
-      PetscCall(FlexibilitySolve(*this, BeamTemporarySupports(sys, S.dof, R), {&load, &load_r}, &u));
+      std::vector<std::vector<PetscReal>> u, motions; // the supports from the exact motions (R's entries are over sqrt(m): a light dof's round-off is large)
+      for (const auto &v : BeamSystemRigidMotions(sys)) {
+        motions.emplace_back(n);
+        for (PetscInt d = 0; d < n; ++d) motions.back()[d] = v[S.dof[d]];
+      }
+      PetscCall(FlexibilitySolve(*this, BeamTemporarySupports(sys, S.dof, motions), {&load, &load_r}, &u));
       for (auto &v : u)
         for (const auto &r : R) { // M-orthogonal to the rigid modes
           PetscReal a = 0;

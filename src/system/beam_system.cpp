@@ -105,6 +105,7 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
   g.z = z_imp;
   if (BeamSystemOnBed(sys, x_imp, z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
     for (const BedPatchNode &e : BedPatch(sys.bed, x_imp - sys.bed_head_center, z_imp, sys.bed_patch_radius)) {
+      if (e.beyond) continue; // past a held frame's end (refused on a beam frame: StringBedPatchResolve)
       if (e.free) {
         if (!CouplingAdd(sys, sys.Dof(e.i, sys.bed_first + e.j), e.w, &g)) return g; // refused before: the scenario's check
         continue;

@@ -152,8 +152,10 @@ std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal 
 // 1 (rad), roll = 1 (rad) of BeamSystemRigidVelocity without the holds.
 std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &sys);
 // The rigid motions the holds leave: the combinations of the candidates that vanish on every
-// held dof (but a string bed's, which are not unknowns) and that the stiffness annihilates (|K v| <= 1e-9 max|K| max|v|: an Euler-Bernoulli
-// clamp holds the rotation through its mirrored curvature, not a held dof), held dofs 0.
+// held dof and that the stiffness annihilates (|K v| <= 1e-9 max|K| max|v|: an Euler-Bernoulli
+// clamp holds the rotation through its mirrored curvature, not a held dof), held dofs 0. A string
+// bed's held dofs (its nodes outside the head or on its edge) are no supports: nothing of the
+// structure is there (the bed's edge moves with its frame section), so they do not count.
 std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys);
 // The swinging bat's velocities at contact (model/swing.hpp): V(x) toward the ball, i.e. -y.
 std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body);
