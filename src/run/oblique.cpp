@@ -189,8 +189,9 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   const BeamRigidBody body    = BeamRigidBodyOf(sc.beam);
   const PetscReal     V_in    = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
   const PetscReal     s       = in.geometry.sin_theta;
-  // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models)
-  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force, series.force_rate);
+  // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models);
+  // without friction the spring carries no force: none (its zero-force steps left -6e-71 J of round-off)
+  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0 && ball.friction > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force, series.force_rate);
   rec->model          = m;
   rec->before.v_ball  = in.ball_speed * s;
   rec->before.spin    = -ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise

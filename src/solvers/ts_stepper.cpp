@@ -3,6 +3,7 @@
 // ts_residuals.cpp, ts_jacobian.cpp and ts_diagnostics.cpp.
 #include "solvers/ts_stepper.hpp"
 
+#include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "solvers/irk_stage_pc.hpp"
 #include "solvers/rk_stability.hpp"
@@ -681,6 +682,10 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   PetscCall(PetscObjectTypeCompare((PetscObject)adapt, TSADAPTNONE, &fixed));
   S.fixed_step = fixed;
   S.info.fixed_step = fixed;
+  // The error tolerances control an adaptive step only; a fixed one (-ts_adapt_type none, the
+  // default of modal, cn, theta, beuler, alpha, alpha2) they leave as it is: a note when given.
+  for (const char *tol : {"-ts_rtol", "-ts_atol"})
+    OptionWithoutEffectSet(tol, fixed ? std::string("the step is fixed, -ts_type ") + now + " with -ts_adapt_type none: -ts_dt sets it" : "", {"-ts_type", "-ts_adapt_type"});
   if (S.P.form != Formulation::Explicit) {
     PetscBool user_test;
     SNES      snes;
