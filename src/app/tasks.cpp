@@ -3,6 +3,7 @@
 
 #include "app/task_flight.hpp"
 #include "app/task_strings.hpp"
+#include "base/memory.hpp"
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
@@ -386,6 +387,8 @@ const OptionModule &TaskOptionTable()
         OptionFlag("-output_overwrite", "Let -output replace a file another task wrote"),
         OptionFlag("-allow_unused_options", "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
         OptionFlag("-error_traceback", "PETSc's full traceback on errors instead of the one-line message"),
+        OptionReal("-max_memory", "GB", "Refuse a run whose largest allocations (a grid's state and modes, the flight's series) are estimated beyond this (default half of the physical memory)", "",
+                   Positive()), // no fixed default: the machine's
       },
     };
   }();
@@ -394,9 +397,9 @@ const OptionModule &TaskOptionTable()
 
 namespace {
 
-// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback (task and output
-// null: only read, as for -help; the last two are acted on by the unused-option check and
-// main, and read here for -help and the run record).
+// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback, -max_memory (task
+// and output null: only read, as for -help; the last three are acted on by the unused-option
+// check, main and the memory checks, and read here for -help and the run record).
 PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out)
 {
   const OptionModule &T = TaskOptionTable();
@@ -413,6 +416,8 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out)
   PetscCall(OptionsRead(PetscOptionsObject, T, "-allow_unused_options", &flag, NULL));
   flag = PETSC_FALSE;
   PetscCall(OptionsRead(PetscOptionsObject, T, "-error_traceback", &flag, NULL));
+  PetscReal max_gb = MemoryLimit() / 1e9; // checked here (> 0), used where an estimate is checked (base/memory.hpp)
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-max_memory", &max_gb, NULL));
   PetscOptionsEnd();
   if (task) *task = t;
   if (out) {
