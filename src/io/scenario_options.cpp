@@ -121,7 +121,7 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
   if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
-  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
+  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve, how.monitors && how.flight_series));
   if (how.read_as) {
     *how.read_as                           = *sc;
     how.read_as->beam.shell.contact_radius = radius_as_read;
