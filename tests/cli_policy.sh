@@ -287,6 +287,10 @@ if [[ $rc -eq 0 ]] && notes "$out" "-ts_atol 1e-2 $fixed" "-ts_rtol 1e-3 $fixed"
 else fail "-ts_type modal -ts_rtol: exit $rc: $out"; fi
 out=$("$exe" -ts_type rk -ts_rk_type 5dp -ts_rtol 1e-6 -ts_atol 1e-6 -output none 2>&1); rc=$?
 [[ $rc -eq 0 ]] && ! grep -q "no effect" <<<"$out" && pass "an adaptive -ts_type rk: -ts_rtol and -ts_atol act, no note" || fail "rk 5dp -ts_rtol: exit $rc: $out"
+# a sweep whose axis varies what an option needs: the option acts at some points, no note
+out=$("$exe" -task sweep -sweep "beam_theory=euler;timoshenko" -beam_shear_modulus 1e9 -output "$dir/theories.h5" 2>&1); rc=$?
+[[ $rc -eq 0 ]] && ! grep -q "no effect" <<<"$out" && pass "-sweep beam_theory=euler;timoshenko with -beam_shear_modulus: no 'no effect' note" \
+  || fail "sweep over beam_theory with -beam_shear_modulus: exit $rc: $out"
 
 echo "cli_policy: $fails failure(s)"
 [[ $fails -eq 0 ]]

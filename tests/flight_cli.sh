@@ -143,13 +143,22 @@ expect_run "a spin just below the bound flies" "flight: distance" -flight_spin 9
 
 # -task impact -flight: the flight's integrator options act and are checked before the impact;
 # a pitch spinning beyond the bound is refused (a round bat, its modes: cheap)
-bat=(-options_file options/bats/r161.opts -options_file options/balls/baseball.opts -beam_theory timoshenko -ts_type modal -impact_x 0.7 -ball_speed 40 -impact_offset 0.02 -flight -output none)
+hit=(-options_file options/bats/r161.opts -options_file options/balls/baseball.opts -beam_theory timoshenko -ts_type modal -impact_x 0.7 -ball_speed 40 -flight)
+bat=("${hit[@]}" -impact_offset 0.02 -output none)
 out=$("$exe" "${bat[@]}" -flight_ts_rtol 1e-8 -flight_ts_rk_type 3bs 2>&1); rc=$?
 if [[ $rc -eq 0 ]] && grep -q "^flight: distance" <<<"$out" && ! grep -q "not used" <<<"$out"; then pass "-task impact -flight with -flight_ts_*: used, no note"
 else fail "-task impact -flight -flight_ts_rtol: exit $rc: $out"; fi
 out=$("$exe" "${bat[@]}" -flight_ts_type bogus 2>&1); rc=$?
 if [[ $rc -ne 0 ]] && grep -q "flight_ts_type bogus is not allowed" <<<"$out" && ! grep -q "^x " <<<"$out"; then pass "-task impact -flight -flight_ts_type bogus: refused before the impact"
 else fail "-task impact -flight -flight_ts_type bogus: exit $rc: $out"; fi
+# a sweep writes no trajectory: it keeps none, so -flight_series_dt is a note and no memory
+# limit applies to it (a point kept 680 MB at 1e-6 s); the numbers are the single runs'
+out=$("$exe" "${hit[@]}" -task sweep -sweep "impact_offset=0.01;0.02" -flight_series_dt 1e-6 -max_memory 0.01 -output "$dir/flights.h5" 2>&1); rc=$?
+single=$("$exe" "${bat[@]}" 2>&1 | sed -nE 's/^flight: distance ([0-9.]+) m.*/\1/p')
+swept=$("$python" -c "import h5py,sys; print('%.2f' % h5py.File(sys.argv[1],'r')['results/distance'][1])" "$dir/flights.h5" 2>/dev/null)
+if [[ $rc -eq 0 ]] && grep -q "note: 1 option(s) set but not used by this task: -flight_series_dt 1e-6" <<<"$out" && [[ -n $single && $swept == "$single" ]]; then
+  pass "a sweep with -flight keeps no series: -flight_series_dt 1e-6 a note under -max_memory 0.01, the carry the single run's ($swept m)"
+else fail "sweep -flight -flight_series_dt: exit $rc, carry '$swept' against '$single': $out"; fi
 out=$("$exe" "${bat[@]}" -ball_spin 1e9 2>&1); rc=$?
 if [[ $rc -ne 0 ]] && grep -q "ball_spin 1e9 is not allowed: it moves the ball's surface at 3.69e+07 m/s (-ball_radius 0.0369 m), beyond the speed of sound in air (343 m/s)" <<<"$out"; then pass "-ball_spin 1e9: refused"
 else fail "-ball_spin 1e9 -flight: exit $rc: $out"; fi

@@ -96,7 +96,7 @@ PetscErrorCode FlightTSTypeDefaults(MPI_Comm comm, TS ts, FlightContext *ctx)
       PetscCall(TSAdaptSetType(adapt, TSADAPTBASIC));
     }
   const bool irk = !std::strcmp(type, TSIRK);
-  if (irk) PetscCall(MatCreateSeqAIJ(comm, 6, 6, 6, NULL, &J));
+  if (irk) PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, 6, 6, 6, NULL, 6, NULL, &J)); // -help's on the task's comm
   else PetscCall(MatCreateDense(comm, PETSC_DECIDE, PETSC_DECIDE, 6, 6, NULL, &J));
   PetscCall(TSSetRHSJacobian(ts, J, J, FlightRHSJacobian, ctx));
   PetscCall(MatDestroy(&J));
