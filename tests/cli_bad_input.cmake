@@ -122,6 +122,13 @@ set(cases
   "-reference modal -beam_nodes 100000|-reference modal with N = 100000 nodes \\(100000 free dofs\\) would need about 320 GB for its dense modal matrices, above the limit"
   "-reference modal -reference_max_memory 1e-6|-reference modal with N = 41 nodes .* above the limit of 1e-06 GB \\(-reference_max_memory"
   "-reference modal -reference_max_memory 0|-reference_max_memory 0\\.? is not allowed: it must be > 0"
+  # the run's memory (issue 34: -beam_nodes 1000001 -ts_type modal grew to 9 GB, its modes' time
+  # printed and no memory): estimated before the allocation, refused beyond -max_memory
+  "-max_memory 0|-max_memory 0\\.? is not allowed: it must be > 0 \\(GB\\)"
+  "-beam_nodes 100001 -ts_type irk -max_memory 0.1|-ts_type irk on 100001 nodes \\(100001 dofs: its state, and an implicit type's Jacobian and factor\\) would need about 0.4[0-9]* GB, above the limit of 0.1 GB \\(-max_memory, default half of the physical memory\\): use fewer -beam_nodes, or raise -max_memory"
+  "-beam_nodes 20001 -ts_type modal -max_memory 0.05|the beam's modes: a partial eigen-solve of 560 modes of 20001 free dofs would need about 0.3[0-9]* GB, above the limit of 0.05 GB \\(-max_memory.*a larger -modal_tolerance"
+  "-beam_nodes 1000001 -ts_type modal -max_memory 8|the beam's modes: a partial eigen-solve of 560 modes of 1000001 free dofs would need about 13.[0-9]* GB, above the limit of 8 GB \\(-max_memory"
+  "-options_file ${SRC}/options/scenes/oblique.opts -ball_spin 1e9|-ball_spin 1e9 is not allowed: it moves the ball's surface at 3.69e\\+07 m/s \\(-ball_radius 0.0369 m\\), beyond the speed of sound in air \\(343 m/s\\)"
   "${HYST} -ball_cor 1.2|-ball_cor 1.2 is not allowed: .*must be in \\(0, 1."
   "${HYST} -ball_cor 0|-ball_cor 0\\.? is not allowed"
   "${HYST} -ball_cor 0.5 -ball_contact_time 0 -ball_test_speed 26.8|-ball_contact_time 0\\.? is not allowed: .*must be > 0"

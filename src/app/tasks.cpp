@@ -4,6 +4,7 @@
 #include "app/docs_markdown.hpp"
 #include "app/task_flight.hpp"
 #include "app/task_strings.hpp"
+#include "base/memory.hpp"
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
@@ -423,6 +424,8 @@ const OptionModule &TaskOptionTable()
                      "options (every option's row, docs/options.md) or results (every task's columns, "
                      "docs/results.md)",
                      {"options", "results"}, "options"),
+        OptionReal("-max_memory", "GB", "Refuse a run whose largest allocations (a grid's state and modes, the flight's series) are estimated beyond this (default half of the physical memory)", "",
+                   Positive()), // no fixed default: the machine's
       },
     };
   }();
@@ -431,10 +434,11 @@ const OptionModule &TaskOptionTable()
 
 namespace {
 
-// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback, -help_markdown
-// (task and output null: only read, as for -help; -allow_unused_options and -error_traceback
-// are acted on by the unused-option check and main, and read here for -help and the run
-// record). *markdown: the reference -help_markdown asks for, "" when not given.
+// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback, -help_markdown,
+// -max_memory (task and output null: only read, as for -help; -allow_unused_options,
+// -error_traceback and -max_memory are acted on by the unused-option check, main and the memory
+// checks, and read here for -help and the run record). *markdown: the reference -help_markdown
+// asks for, "" when not given.
 PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, std::string *markdown)
 {
   const OptionModule &T = TaskOptionTable();
@@ -452,6 +456,8 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, s
   flag = PETSC_FALSE;
   PetscCall(OptionsRead(PetscOptionsObject, T, "-error_traceback", &flag, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-help_markdown", &reference, &set_reference));
+  PetscReal max_gb = MemoryLimit() / 1e9; // checked here (> 0), used where an estimate is checked (base/memory.hpp)
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-max_memory", &max_gb, NULL));
   PetscOptionsEnd();
   if (markdown) *markdown = set_reference ? reference : std::string();
   if (task) *task = t;

@@ -168,7 +168,7 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
   if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
-  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
+  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve, how.monitors && how.flight_series));
   if (sc->flight.on && (part(ScenarioFlight) || part(ScenarioBall))) PetscCall(FlightBallResolve(comm, *sc));
   if (how.read_as) {
     *how.read_as                           = *sc;

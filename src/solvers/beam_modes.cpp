@@ -1,6 +1,7 @@
 // The beam's modes, computed once per beam. See beam_modes.hpp.
 #include "solvers/beam_modes.hpp"
 
+#include "base/memory.hpp"
 #include "solvers/beam_flexibility.hpp"
 #include "solvers/modes.hpp"
 
@@ -12,8 +13,6 @@
 #include <deque>
 #include <limits>
 #include <map>
-
-#include <unistd.h>
 
 extern "C" void dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, int *info);
 extern "C" void dpbtrs_(const char *uplo, const int *n, const int *kd, const int *nrhs, const double *ab, const int *ldab, double *b, const int *ldb, int *info);
@@ -284,22 +283,39 @@ PetscInt ModesBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal sigma
 // a few above, so that its last is past the cut-off.
 PetscInt ModesAskedBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal wc) { return std::min<PetscInt>(S.n, ModesBelow(sys, S, wc * wc) + 8); }
 
+// The memory of a partial eigen-solve of nev modes of n free dofs (bytes): SLEPc's Krylov-Schur
+// basis of ncv = max(2 nev, nev + 15) vectors (its default) and the nev eigenvectors returned,
+// 3 nev vectors of n doubles, and its projected problem's dense ncv x ncv matrices (a few).
+// Measured (the factored form, 560 modes, 1e4 to 4e4 free dofs): 13.2 kB a free dof; the
+// model's 24 nev = 13.4 kB.
+double PartialModesBytes(PetscInt n, PetscInt nev)
+{
+  const double ncv = std::max(2.0 * nev, nev + 15.0);
+  return sizeof(PetscReal) * ((ncv + nev) * (double)n + 4 * ncv * ncv);
+}
+
+// Refuses a partial solve of nev modes whose memory (PartialModesBytes) is above the run's limit.
+PetscErrorCode PartialModesMemoryCheck(MPI_Comm comm, PetscInt n, PetscInt nev)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MemoryCheck(comm, PartialModesBytes(n, nev), "the beam's modes: a partial eigen-solve of " + std::to_string(nev) + " modes of " + std::to_string(n) + " free dofs",
+                        "use fewer -beam_nodes, a larger -modal_tolerance (fewer modes) or a -ts_type other than modal"));
+  PetscFunctionReturn(0);
+}
+
 // Whether the dense decomposition of the n free dofs is expected to be quicker than a partial
 // solve of nev modes (the time models above; below 65 dofs always).
 bool DenseIsQuicker(const ModalSystem &S, PetscInt nev, bool refine_all) { return S.n <= 64 || DenseSeconds(S, refine_all) <= PartialSeconds(S, nev, refine_all); }
 
 // The dense decomposition of every mode, with its memory check (3 n^2 doubles: the matrix,
-// which becomes the basis, and dsyevd's workspace of 2 n^2) against half the physical memory.
+// which becomes the basis, and dsyevd's workspace of 2 n^2) against the run's limit.
 PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m, const char *why = "-modal_modes auto keeps only the modes the contact moves")
 {
   const double n = (double)m->S.n, need = 3 * n * n * sizeof(PetscReal);
-  const long   pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  const double limit = pages > 0 && page > 0 ? 0.5 * (double)pages * (double)page : 8e9;
 
   PetscFunctionBeginUser;
-  PetscCheck(need <= limit, comm, PETSC_ERR_MEM,
-             "-modal_modes %s: every mode of %" PetscInt_FMT " free dofs needs about %.3g GB for the dense decomposition, above half the physical memory (%.3g GB); use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes",
-             ModalModesText(m->request).c_str(), m->S.n, need / 1e9, limit / 1e9);
+  PetscCall(MemoryCheck(comm, need, "-modal_modes " + ModalModesText(m->request) + ": the dense decomposition of every mode of " + std::to_string(m->S.n) + " free dofs",
+                        "use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes"));
   const double expected = DenseSeconds(m->S, m->request.refine_all); // s
   if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
     PetscCall(PetscPrintf(comm, "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT " free dofs, expected to take about %.0f s (%s)\n", m->S.n, expected, why));
@@ -340,7 +356,8 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
     }
     const double expected = PartialSeconds(m->S, nev, m->request.refine_all); // s
     if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
+      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s and %.2g GB; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected, PartialModesBytes(n, nev) / 1e9));
+    PetscCall(PartialModesMemoryCheck(comm, n, nev));
     PetscCall(BeamModesLowest(comm, sys, nev, m->request.progress, &lambda, &phis));
     if (want >= 0 || lambda.back() > wc * wc) {
       m->method = "slepc";
@@ -379,7 +396,8 @@ PetscErrorCode FactoredModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscRe
   for (;;) {
     const double expected = kPartialSolveCost * (double)n * (double)nev * (double)nev; // s
     if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc, the factored form), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
+      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc, the factored form), expected to take about %.0f s and %.2g GB; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected, PartialModesBytes(n, nev) / 1e9));
+    PetscCall(PartialModesMemoryCheck(comm, n, nev));
     PetscCall(BeamModesLowestFactored(comm, m->sys, *m->factor, nev, m->request.progress, &lambda, &phis));
     if (want >= 0 || nev >= n || lambda.back() > wc * wc) break;
     const PetscReal grow = std::sqrt(wc / std::sqrt(std::max(lambda.back(), (PetscReal)1e-300)));

@@ -228,12 +228,14 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
     // An axis that changes nothing: every point the same (unless another axis varies what it needs).
     for (const OptionWithoutEffect &o : OptionsWithoutEffect()) {
       bool varied = false;
-      for (const SweepAxis &a : plan.axes) varied = varied || o.needs == "-" + a.name;
+      for (const SweepAxis &a : plan.axes) varied = varied || std::find(o.needs.begin(), o.needs.end(), "-" + a.name) != o.needs.end();
       for (const SweepAxis &a : plan.axes)
         PetscCheck(varied || o.name != "-" + a.name, farm.group, PETSC_ERR_ARG_WRONG, "-sweep %s=%s is not allowed: %s has no effect in this sweep (%s), so every point would be the same", a.name.c_str(), a.spec.c_str(), o.name.c_str(),
                    o.why.c_str());
     }
-    PetscCall(OptionsCheckUnused(farm.group));
+    std::vector<std::string> axes; // an option that acts at other points is no note
+    for (const SweepAxis &a : plan.axes) axes.push_back("-" + a.name);
+    PetscCall(OptionsCheckUnused(farm.group, {}, false, axes));
     PetscCall(SweepCaseOptionsClear(plan));
     PetscFunctionReturn(0);
   }

@@ -91,6 +91,7 @@ bool OptionIsVolatile(const std::string &name)
   static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_retry_failed", "sweep_progress_interval", "sweep_write_interval", "error_traceback", "allow_unused_options", "help", "version"};
   static const char *const           prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_", "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view", "snes_view", "ksp_view"};
   if (exact.count(name)) return true;
+  if (name == "max_memory" || name == "flight_series_dt") return true; // a limit on what may be allocated; a series a sweep does not keep
   for (const char *p : prefix)
     if (name.compare(0, std::strlen(p), p) == 0) return true;
   return false;
