@@ -33,7 +33,7 @@ rm -rf "$dir" && mkdir -p "$full" && cd "$dir" || exit 1
 mode=""
 if [[ $(id -u) == 0 ]] && mount -t tmpfs -o size=400k tmpfs "$full" 2>/dev/null; then
   mode=tmpfs
-  trap 'cd /; umount "$full" 2>/dev/null' EXIT
+  lib_exit_trap 'cd /; umount "$full" 2>/dev/null'
   echo "      disk full: a 400 kB tmpfs at $full"
 elif [[ -n "$preload" && -f "$preload" ]]; then
   mode=preload
@@ -135,7 +135,7 @@ print(" ".join(bad)); sys.exit(1 if bad else 0)
 PY
 }
 [[ -n $mode && -f sweep_full.h5 ]] && { same_rows sweep_ref.h5 sweep_full.h5 && pass "resumed after the full disk: identical to the uninterrupted sweep" || fail "resumed after the full disk: rows differ"; }
-if [[ $mode == tmpfs ]]; then cd "$dir" && umount "$full"; trap - EXIT; fi
+if [[ $mode == tmpfs ]]; then cd "$dir" && umount "$full"; lib_exit_trap :; fi
 
 # --- 2. kill -9 at random moments of the writes ----------------------------------------------
 complete_or_absent() {

@@ -51,7 +51,7 @@ std::vector<PetscReal> HarmonicFrequencies(const BeamSystem &sys, size_t k)
   std::vector<PetscInt> dofs, index(sys.ndof, -1);
   for (PetscInt d = 0; d < sys.ndof; ++d) {
     const PetscInt f = d % sys.fields;
-    if (!sys.held[d] && f >= sys.shell_first + 3 * (PetscInt)k && f < sys.shell_first + 3 * (PetscInt)k + 3) index[d] = (PetscInt)dofs.size(), dofs.push_back(d);
+    if (!sys.held[d] && f >= sys.shell.first + 3 * (PetscInt)k && f < sys.shell.first + 3 * (PetscInt)k + 3) index[d] = (PetscInt)dofs.size(), dofs.push_back(d);
   }
   const PetscInt         n = (PetscInt)dofs.size();
   std::vector<PetscReal> A((size_t)n * n, 0.0);
@@ -89,7 +89,7 @@ TEST(Shell, FieldsApartFromTheBeam)
   p.shell.on            = false;
   const BeamSystem bare = SystemOf(p);
   ASSERT_EQ(sys.fields, bare.fields + 9);
-  EXPECT_EQ(sys.shell_first, 1);
+  EXPECT_EQ(sys.shell.first, 1);
   for (PetscInt i = 0; i < bare.nodes; ++i) {
     PetscInt  cb[16], cs[64];
     PetscReal vb[16], vs[64];
@@ -145,7 +145,7 @@ TEST(Shell, RayleighRingLimit)
   c.L    = 20 * c.R;
   const BeamSystem sys = SystemOf(TubeBeam(c, 81, Support::Free, Support::Free));
   for (size_t k = 0; k < 3; ++k) {
-    const PetscInt  n = sys.shell_harmonics[k];
+    const PetscInt  n = sys.shell.harmonics[k];
     const PetscReal f = HarmonicFrequencies(sys, k).front(), ring = RayleighRingFrequency(c.E, c.rho, c.nu, c.R, c.t, n);
     PetscPrintf(PETSC_COMM_WORLD, "long free-free tube n = %d: %.3f Hz, Rayleigh's ring %.3f Hz (%+.3f %%)\n", (int)n, (double)f, (double)ring, (double)(100 * (f / ring - 1)));
     EXPECT_LT(f / ring, 1.0) << "n " << n;
@@ -198,7 +198,7 @@ PetscReal WallCompliance(const BeamSystem &sys, const ContactCoupling &g)
 {
   std::vector<PetscInt> dofs, at(sys.ndof, -1);
   for (PetscInt d = 0; d < sys.ndof; ++d)
-    if (d % sys.fields >= sys.shell_first && !sys.held[d]) at[d] = (PetscInt)dofs.size(), dofs.push_back(d);
+    if (d % sys.fields >= sys.shell.first && !sys.held[d]) at[d] = (PetscInt)dofs.size(), dofs.push_back(d);
   const size_t           n = dofs.size();
   std::vector<PetscReal> K(n * n, 0.0), b(n, 0.0);
   for (size_t r = 0; r < n; ++r) {

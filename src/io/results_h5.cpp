@@ -104,16 +104,6 @@ PetscErrorCode ResultsFileInspect(const std::string &path, ResultsFileInfo *info
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsFileTask(const std::string &path, std::string *task)
-{
-  ResultsFileInfo info;
-
-  PetscFunctionBeginUser;
-  PetscCall(ResultsFileInspect(path, &info));
-  *task = info.task;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
 {
   PetscFunctionBeginUser;

@@ -46,10 +46,6 @@ struct ResultsFileInfo {
 };
 PetscErrorCode ResultsFileInspect(const std::string &path, ResultsFileInfo *info);
 
-// The -task that wrote the HDF5 file at path (its root attribute "task"), or "" when the file
-// does not exist, is not HDF5 or has no such attribute.
-PetscErrorCode ResultsFileTask(const std::string &path, std::string *task);
-
 // A task's results file at path, whole or not at all: on rank 0 of comm a temporary file
 // beside it (path.XXXXXX.tmp) gets the run record as root attributes and what write adds; it
 // is closed (every write checked, the close too: a full disk shows there) and renamed onto

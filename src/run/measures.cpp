@@ -61,7 +61,7 @@ const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes
 // frame's roll, a string bed): without, their sums are 0 and BeamSystemPartEnergies is not needed.
 bool SeparateParts(const BeamSystem &S)
 {
-  if (S.wall_dof >= 0 || S.shell_first >= 0 || S.roll_field >= 0 || S.bed_first >= 0) return true;
+  if (S.wall_dof >= 0 || S.shell.first >= 0 || S.roll_field >= 0 || S.bed_first >= 0) return true;
   for (PetscInt f = 0; f < S.fields; ++f)
     if (S.PartOf(f) != Part::Beam) return true;
   return false;

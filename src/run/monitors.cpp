@@ -21,7 +21,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   ImpactSeries          &S = *series_;
 
   PetscFunctionBeginUser;
-  const bool wall = ctx_.sys->wall_dof >= 0 || ctx_.sys->shell_first >= 0; // a barrel wall (hoop oscillator or shell)
+  const bool wall = ctx_.sys->wall_dof >= 0 || ctx_.sys->shell.first >= 0; // a barrel wall (hoop oscillator or shell)
   const bool bed  = ctx_.sys->bed_first >= 0;                             // a racket's string bed
   if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall && !bed) PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
@@ -98,7 +98,7 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
     series_->snapshot_time.push_back(mon_.snapshot_times[next_]);
     series_->snapshot_y.push_back(y);
     const BeamSystem &S = *ctx_.sys;
-    if (S.bed_first >= 0 || S.shell_first >= 0) // rank 0: every field of every node
+    if (S.bed_first >= 0 || S.shell.first >= 0) // rank 0: every field of every node
       PetscCall(stepper_.GatherFields(0, S.fields, &u));
     if (S.bed_first >= 0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
       std::vector<PetscReal> bed((size_t)S.bed.nz * S.nodes);
@@ -108,14 +108,14 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
       }
       series_->snapshot_bed.push_back(std::move(bed));
     }
-    if (S.shell_first >= 0) { // the wall's W_n of each harmonic k (field shell_first + 3 k + 2), [k][node] flattened
-      const size_t           H = S.shell_harmonics.size();
+    if (S.shell.first >= 0) { // the wall's W_n of each harmonic k (field shell.WField(k)), [k][node] flattened
+      const size_t           H = S.shell.harmonics.size();
       std::vector<PetscReal> wall(H * (size_t)S.nodes);
       for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i)
         for (size_t k = 0; k < H; ++k)
-          wall[k * S.nodes + i] = S.shell_radius[i] > 0 ? u[(size_t)i * S.fields + S.shell_first + 3 * k + 2] : NAN;
+          wall[k * S.nodes + i] = S.shell_radius[i] > 0 ? u[(size_t)i * S.fields + S.shell.WField(k)] : NAN;
       series_->snapshot_wall.push_back(std::move(wall));
-      series_->snapshot_wall_n = S.shell_harmonics;
+      series_->snapshot_wall_n = S.shell.harmonics;
     }
     ++next_;
   }

@@ -256,16 +256,16 @@ static std::vector<PetscReal> DeflectionField(const BeamSystem &op, std::vector<
 // m phi^2, the beam's (0) or a shell harmonic's (n); the hoop oscillator counts as n = 2.
 static PetscInt ModeFamily(const BeamSystem &op, const std::vector<PetscReal> &phi)
 {
-  const PetscInt         groups = 1 + (PetscInt)op.shell_harmonics.size();
+  const PetscInt         groups = 1 + (PetscInt)op.shell.harmonics.size();
   std::vector<PetscReal> e(groups + 1, 0.0);
   for (PetscInt d = 0; d < op.ndof; ++d) {
     const PetscInt f = d % op.fields;
     if (!op.Wall(f) && op.PartOf(f) != Part::Beam) continue;
-    const PetscInt g = !op.Wall(f) ? 0 : (op.shell_first >= 0 ? 1 + (f - op.shell_first) / 3 : groups);
+    const PetscInt g = !op.Wall(f) ? 0 : (op.shell.first >= 0 ? 1 + (f - op.shell.first) / 3 : groups);
     e[g] += op.mass[d] * phi[d] * phi[d];
   }
   const PetscInt best = (PetscInt)(std::max_element(e.begin(), e.end()) - e.begin());
-  return best == 0 ? 0 : (best == groups ? 2 : op.shell_harmonics[best - 1]);
+  return best == 0 ? 0 : (best == groups ? 2 : op.shell.harmonics[best - 1]);
 }
 
 // The result in ascending order (the solver's, up to round-off among nearly equal modes);
@@ -282,7 +282,7 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->period.assign(count, 0.0);
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
-  const bool wall = op.wall_dof >= 0 || op.shell_first >= 0, parts = op.roll_field >= 0 || op.bed_first >= 0;
+  const bool wall = op.wall_dof >= 0 || op.shell.first >= 0, parts = op.roll_field >= 0 || op.bed_first >= 0;
   if (wall) out->shell_n.assign(count, 0);
   if (parts) out->part.assign(count, 0), out->part_share.assign(count, 0.0);
   if (parts && shapes && op.bed_first >= 0) out->bed_shape.resize(count);

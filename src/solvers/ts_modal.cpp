@@ -197,6 +197,8 @@ void WeightsBall(const ModalTS &m, PetscReal h, const PetscReal hq[3], PetscReal
     for (PetscInt j = 0; j < 3; ++j) W.W[i][j] = Wacc[i][j];
 }
 
+PetscInt folds = 0; // steps whose weights were folded from an earlier point's shapes (TSModalFoldCount)
+
 // The weights of a step of length h into W (its arrays sized already), for s = StageCount
 // nodes (a template: the small loops over nodes and powers unroll into registers); with Sh (its
 // arrays sized) also their parts free of gamma_k (StepShapes, for WeightsFold).
@@ -339,6 +341,7 @@ const StepWeights &WeightsOf(ModalTS &m, PetscReal h)
   // The point's first step (the nominal one): folded from the shapes kept by an earlier point on
   // this basis, else computed and its shapes kept for the next point. Other lengths: computed.
   if (m.shapes.h == h && m.shapes.order == m.order) {
+    ++folds;
     if (m.order == 2) WeightsFold<2>(m, m.shapes, *W);
     else WeightsFold<3>(m, m.shapes, *W);
   } else {
@@ -1062,6 +1065,8 @@ PetscErrorCode TSModalRegister()
 }
 
 bool TSModalIsType(const char *type) { return type && !std::strcmp(type, TSMODAL); }
+
+PetscInt TSModalFoldCount() { return folds; }
 
 PetscErrorCode TSModalSyncSolution(TS ts)
 {

@@ -50,6 +50,9 @@ namespace beamimpact {
 
 PetscErrorCode TSModalRegister();
 bool           TSModalIsType(const char *type);
+// How many steps so far (this process) took their weights folded from the shapes an earlier point
+// kept for the same nominal step, instead of computing them (a sweep's reuse, observable by tests).
+PetscInt TSModalFoldCount();
 
 // Hooks for the TS stepper; for any other TS type they do nothing (*done = false).
 // The physical state of TSGetSolution's vector, written from the modal state if stale.

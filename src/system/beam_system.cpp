@@ -28,12 +28,10 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S.beam_fields    = d.fields;
   S.field_part.assign(d.fields, Part::Beam);
   if (p.torsion.on) S.roll_field = TorsionAppend(p, &d), S.field_part.push_back(Part::Twist);
-  if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d), S.wall_stiffness = BarrelHoopStiffness(p.hoop);
+  if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d);
   if (p.shell.on) {
-    const ShellLayout shell = ShellAppend(p, &d);
-    S.shell_first           = shell.first;
-    S.shell_harmonics       = shell.harmonics;
-    S.shell_contact_radius  = std::max<PetscReal>(0, p.shell.contact_radius);
+    S.shell                = ShellAppend(p, &d);
+    S.shell_contact_radius = std::max<PetscReal>(0, p.shell.contact_radius);
     S.shell_radius.assign(p.nodes, 0.0);
     for (PetscInt i = 0; i < p.nodes; ++i) {
       PetscReal t;
@@ -126,15 +124,15 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
     g.dof[g.n] = sys.Dof(st.j + 1, sys.roll_field), g.w[g.n] = sys.held[g.dof[g.n]] ? 0.0 : (1.0 - st.w) * z_imp, g.n++;
   }
   if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0; // the wall under the ball, in series
-  if (sys.shell_harmonics.empty()) return g;
+  if (sys.shell.harmonics.empty()) return g;
   // each harmonic's W_n under the ball's patch (outward: the inward displacement is -W_n)
   const PetscReal a = sys.shell_contact_radius, R = st.w * sys.shell_radius[st.j] + (1 - st.w) * sys.shell_radius[st.j + 1];
   const std::vector<std::pair<PetscInt, PetscReal>> nodes = ShellPatchNodeWeights(sys.nodes, sys.L, x_imp, a);
-  for (size_t k = 0; k < sys.shell_harmonics.size(); ++k) {
-    const PetscReal wn = ShellPatchHarmonicWeight(sys.shell_harmonics[k], a, R);
+  for (size_t k = 0; k < sys.shell.harmonics.size(); ++k) {
+    const PetscReal wn = ShellPatchHarmonicWeight(sys.shell.harmonics[k], a, R);
     for (const auto &[i, wi] : nodes) {
       if (g.n == ContactCoupling::kMaxEntries) return g; // refused before: ShellPatchEntries
-      const PetscInt d = i * sys.fields + sys.shell_first + 3 * (PetscInt)k + 2;
+      const PetscInt d = i * sys.fields + sys.shell.WField(k);
       g.dof[g.n]       = d;
       g.w[g.n++]       = sys.held[d] ? 0.0 : -(wn * wi);
     }

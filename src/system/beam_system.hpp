@@ -20,6 +20,7 @@
 
 #include "model/beam_theory.hpp"
 #include "model/contact.hpp"
+#include "model/shell.hpp"
 #include "model/swing.hpp"
 #include "system/force_operator.hpp"
 #include "system/string_bed_operator.hpp"
@@ -36,9 +37,7 @@ struct BeamSystem {
   PetscInt  nodes = 0, fields = 1, ndof = 0;
   PetscInt  beam_fields = 1;               // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
   PetscInt  wall_dof    = -1;              // the hoop oscillator's dof (model/barrel.hpp), -1 without
-  PetscReal wall_stiffness = 0;            // N/m, its spring k_h
-  PetscInt  shell_first = -1;              // the shell's first field (-beam_shell, model/shell.hpp): harmonic k's W_n is field shell_first + 3 k + 2
-  std::vector<PetscInt> shell_harmonics;   // n of each harmonic
+  ShellLayout shell;                       // the shell's fields (-beam_shell, model/shell.hpp; first -1 without): harmonic k's W_n is field shell.WField(k)
   PetscReal shell_contact_radius = 0;      // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
   std::vector<PetscReal> shell_radius;     // m, the wall's midsurface radius R per node (0 where solid)
   PetscInt  roll_field = -1;               // the frame's roll phi (rad; -beam_torsion), -1 without
