@@ -174,6 +174,12 @@ def text_of(v):
     return v.decode() if isinstance(v, bytes) else str(v)
 
 
+def cell(d, p):
+    """Value p of a 1-D dataset: a count (attribute integer = 1) as a whole number."""
+    v = d[p]
+    return str(int(v)) if int(d.attrs.get("integer", 0)) == 1 and np.isfinite(v) else fmt_float(v)
+
+
 def uq_table(f, path):
     """/statistics, /exceedance or /sobol as one long table: a row per column (condition), grid
     point (and input: /sobol), the grid axes' values from /statistics."""
@@ -196,11 +202,11 @@ def uq_table(f, path):
                     for k in ("first", "total"):
                         ci = sub[k + "_ci"][p, i]
                         row += [(k, "1", fmt_float(sub[k][p, i])), (k + "_low", "1", fmt_float(ci[0])), (k + "_high", "1", fmt_float(ci[1]))]
-                    row += [("groups", "1", fmt_float(sub["groups"][p]))]
+                    row += [("groups", "1", cell(sub["groups"], p))]
                     rows.append(row)
             else:
                 unit = files.unit(sub["mean"]) if "mean" in sub else "1"
-                rows.append(head + [("unit", "", short_unit("", unit))] + [(k, short_unit(k, files.unit(sub[k])), fmt_float(sub[k][p])) for k in fields])
+                rows.append(head + [("unit", "", short_unit("", unit))] + [(k, short_unit(k, files.unit(sub[k])), cell(sub[k], p)) for k in fields])
     if not rows:
         return []
     heads = [(h[0], h[1]) for h in rows[0]]
