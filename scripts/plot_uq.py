@@ -8,10 +8,11 @@ total Sobol' indices as bars with their 95 % intervals; or the convergence of th
 
 COLUMN: /results columns (default: acor). The numbers drawn are the file's own /statistics and
 /sobol (nothing recomputed); with Saltelli's design the histogram and scatter use the A and B rows.
---certify (the certification study): the reported value is the mean of --hits consecutive valid
-hits; printed: its mean and spread, and for each nominal B the probability that a bat whose
-reported value is centred on B reports above --cap (the spread of the six-hit mean shifted to B,
-with Wilson's 95 % interval).
+--certify (the certification study): the reported value is the mean of --hits independent valid
+hits; printed: the single hit's mean and spread, the reported value's spread s/sqrt(hits), and for
+each nominal B the probability that a bat whose reported value is centred on B reports above
+--cap (normal; with random points also counted over groups of consecutive hits, with Wilson's
+95 % interval).
 --convergence: |mean of the first n rows - the reference| against n for each file (its
 -sweep_sampling in the legend) with the line n^(-1/2); the reference is the mean of COLUMN over
 the grid sweep GRID.h5 of the one sampled input's range (Simpson's rule on its uniform grid).
@@ -54,17 +55,27 @@ def wilson(k, n, z=1.959963984540054):
 
 
 def certify(f, col, nominals, cap, hits):
+    """The reported value is the mean of `hits` independent hits: its spread s / sqrt(hits), the
+    chance of reporting above the cap at nominal b 1 - Phi((cap - b) / that) (normal); with random
+    points also counted over groups of consecutive hits (Sobol' and LHS points are stratified:
+    their consecutive groups are too even to count)."""
+    from math import erf, sqrt
     rows, _ = design_rows(f)
     y = files.numbers(f["results"], col)[rows]
     y = y[np.isfinite(y)]
-    groups = y[: len(y) // hits * hits].reshape(-1, hits).mean(axis=1)
-    print("%s: one hit %.4f +- %.4f (std); the reported value (mean of %d hits): %.4f, spread %.4f (std over %d groups)"
-          % (col, y.mean(), y.std(ddof=1), hits, groups.mean(), groups.std(ddof=1), len(groups)))
+    s6 = y.std(ddof=1) / np.sqrt(hits)
+    print("%s: one hit %.4f, std %.4f (%d hits); the reported value (mean of %d hits) spreads by %.4f"
+          % (col, y.mean(), y.std(ddof=1), len(y), hits, s6))
+    random = str(files.attr(f, "sweep_sampling", "")) == "random"
+    groups = y[: len(y) // hits * hits].reshape(-1, hits).mean(axis=1) if random else None
     for b in nominals:
-        shifted = groups - groups.mean() + b
-        k = int(np.sum(shifted > cap))
-        lo, hi = wilson(k, len(shifted))
-        print("  nominal %.3f: P(reported > %.3f) = %.3f (%d of %d), 95%% interval [%.3f, %.3f]" % (b, cap, k / len(shifted), k, len(shifted), lo, hi))
+        p = 0.5 * (1 - erf((cap - b) / (s6 * sqrt(2))))
+        line = "  nominal %.3f: P(reported > %.3f) = %.3f (normal)" % (b, cap, p)
+        if random:
+            k = int(np.sum(groups - groups.mean() + b > cap))
+            lo, hi = wilson(k, len(groups))
+            line += "; counted over %d groups of %d: %.3f, 95%% interval [%.3f, %.3f]" % (len(groups), hits, k / len(groups), lo, hi)
+        print(line)
 
 
 def draw_file(f, cols, out):
