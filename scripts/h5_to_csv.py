@@ -14,6 +14,13 @@ GROUP (default results; the leading / is optional) is one of the file's groups:
   snapshots  one row per node: x and y at each snapshot time, y[t=0.001];
   modes      one row per mode (-task modes): frequency, period, omega and the shape at each
              node, shapes[x=0.0275];
+  statistics a sampled sweep's statistics (docs/uncertainty.md): one row per results column (and
+             per point of its grid axes): count, mean, std, sem, q05, q50, q95 and the
+             quantiles' standard errors, in the column's unit;
+  exceedance one row per -sweep_exceedance condition (and grid point): probability, its
+             Wilson 95 % interval, count and n;
+  sobol      one row per results column and sampled input (and grid point): first, its
+             interval first_low, first_high, total, total_low, total_high;
   or any other group (beam, sweep, spatial, configs/rk4, ...), or one dataset (modes/nodes_1:
   its values; a 2-D dataset: one row per first index).
 Datasets of another length than the table's rows are left out, with a note on stderr.
@@ -163,6 +170,49 @@ def table_of_group(f, g, gname):
     return cols
 
 
+def text_of(v):
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def cell(d, p):
+    """Value p of a 1-D dataset: a count (attribute integer = 1) as a whole number."""
+    v = d[p]
+    return str(int(v)) if int(d.attrs.get("integer", 0)) == 1 and np.isfinite(v) else fmt_float(v)
+
+
+def uq_table(f, path):
+    """/statistics, /exceedance or /sobol as one long table: a row per column (condition), grid
+    point (and input: /sobol), the grid axes' values from /statistics."""
+    st = f["statistics"] if "statistics" in f else None
+    grid = [k for k, d in st.items() if isinstance(d, h5py.Dataset) and k not in ("points", "failed")] if st else []
+    g = f[path]
+    inputs = [text_of(x) for x in g.attrs.get("inputs", st.attrs.get("inputs", []) if st else [])]
+    rows = []
+    for name, sub in g.items():
+        if not isinstance(sub, h5py.Group):
+            continue
+        fields = [k for k in sub.keys() if k not in ("first_ci", "total_ci")]
+        n = sub[fields[0]].shape[0]
+        for p in range(n):
+            head = [("column" if path != "exceedance" else "condition", "", name)]
+            head += [(k, files.unit(st[k]), text_of(st[k][p]) if st[k].dtype.kind in "OS" else fmt_float(st[k][p])) for k in grid]
+            if path == "sobol":
+                for i, inp in enumerate(inputs):
+                    row = head + [("input", "", inp)]
+                    for k in ("first", "total"):
+                        ci = sub[k + "_ci"][p, i]
+                        row += [(k, "1", fmt_float(sub[k][p, i])), (k + "_low", "1", fmt_float(ci[0])), (k + "_high", "1", fmt_float(ci[1]))]
+                    row += [("groups", "1", cell(sub["groups"], p))]
+                    rows.append(row)
+            else:
+                unit = files.unit(sub["mean"]) if "mean" in sub else "1"
+                rows.append(head + [("unit", "", short_unit("", unit))] + [(k, short_unit(k, files.unit(sub[k])), cell(sub[k], p)) for k in fields])
+    if not rows:
+        return []
+    heads = [(h[0], h[1]) for h in rows[0]]
+    return [(h, short_unit(h, u), [r[j][2] for r in rows]) for j, (h, u) in enumerate(heads)]
+
+
 def table_of_dataset(d, path):
     u = files.unit(d)
     if d.ndim == 0:
@@ -197,7 +247,10 @@ def main():
                 sys.stderr.write("  (/snapshots is written only with -snapshot_times t1,t2,...)\n")
             return 1
         obj = f[path]
-        cols = table_of_group(f, obj, path) if isinstance(obj, h5py.Group) else table_of_dataset(obj, path)
+        if path in ("statistics", "exceedance", "sobol"):
+            cols = uq_table(f, path)
+        else:
+            cols = table_of_group(f, obj, path) if isinstance(obj, h5py.Group) else table_of_dataset(obj, path)
     heads = [("%s (%s)" % (c[0], c[1]) if c[1] and a.units == "header" else c[0]) for c in cols]
     out = open(a.output, "w", newline="") if a.output else sys.stdout
     try:

@@ -4,7 +4,7 @@
 set -euo pipefail
 pkgs=(cmake g++ make pkg-config
       libpetsc-real-dev libslepc-real-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
-      liblapack-dev libgtest-dev hdf5-tools python3-numpy python3-matplotlib python3-h5py
+      liblapack-dev libgsl-dev libgtest-dev hdf5-tools python3-numpy python3-matplotlib python3-h5py
       python3-scipy  # scipy: only the independent references in scripts/references/
       python3-xarray python3-h5netcdf)  # the results files as xarray datasets (tests/fields.sh)
 missing=()

@@ -14,7 +14,9 @@
 #   4. a third run finds everything done; a changed parameter is refused with
 #      a message naming it; -sweep_restart starts over;
 #   5. steps 1-3 again for a sweep with a text (categorical) axis, ts_type=rk;cn by
-#      impact point: killed, resumed, identical to its uninterrupted run.
+#      impact point: killed, resumed, identical to its uninterrupted run;
+#   6. and for a sampled sweep (a grid axis times a Latin hypercube of impact points): its
+#      points and /statistics identical to the uninterrupted run's.
 #
 #   tests/sweep_resume.sh path/to/beamimpact scratch_dir [mpiexec]
 set -uo pipefail
@@ -140,6 +142,15 @@ kill_resume text_ "${base[@]}" -sweep "ts_type=rk;cn,impact_x=0.05:1.05:$((N / 2
 if [[ -n "$python" ]]; then
   "$python" -c "import h5py, sys; r = h5py.File(sys.argv[1], 'r')['results']; assert [v.decode() for v in r['ts_type'][()]] == ['rk'] * 6 + ['cn'] * 6 and list(r['ts_type'].attrs['values']) == ['rk', 'cn']" resume_text_k.h5 \
     && pass "text axis resumed: /results/ts_type rk (6 points) then cn (6) in case order, values attribute" || fail "text axis column of the resumed file"
+fi
+
+# 6. a sampled sweep (docs/uncertainty.md): a grid axis times a sample drawn from the seed, killed,
+# resumed: the same points and statistics bit for bit (a sample is a function of seed and index).
+N=24
+kill_resume uq_ "${base[@]}" -sweep "ball_speed=1;2,impact_x=uniform:0.05:1.05" -sweep_samples 12 -sweep_sampling lhs -sweep_seed 3
+if [[ -n "$python" ]]; then
+  "$python" -c "import h5py, sys; f = h5py.File(sys.argv[1], 'r'); assert f['statistics/acor/mean'].shape == (2,) and list(f['statistics/ball_speed'][()]) == [1, 2]" resume_uq_k.h5 \
+    && pass "sampled sweep resumed: /statistics per ball_speed" || fail "the resumed sampled sweep's /statistics"
 fi
 
 if ((fails)); then echo "$fails check(s) failed"; exit 1; fi

@@ -68,6 +68,19 @@ std::string ResolveList(const std::string &dir, const std::string &list)
   return out;
 }
 
+// -sweep's sampled axes NAME=csv:FILE[:COLUMN]: FILE relative to the options file's directory.
+std::string ResolveSweepFiles(const std::string &dir, const std::string &sweep)
+{
+  std::string out = sweep;
+  for (size_t at = out.find("=csv:"); at != std::string::npos; at = out.find("=csv:", at + 5)) {
+    const size_t a = at + 5, b = std::min(out.find_first_of(":,", a), out.size());
+    const std::string path = Resolve(dir, out.substr(a, b - a));
+    out.replace(a, b - a, path);
+    at = a + path.size() - 5;
+  }
+  return out;
+}
+
 bool Expand(const std::string &file, const std::string &includer, int depth, std::vector<std::string> *tokens, std::string *error)
 {
   const std::string by = includer.empty() ? "" : " (included by " + includer + ")";
@@ -105,7 +118,7 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
       continue;
     }
     tokens->push_back(t[0]);
-    if (t.size() == 2) tokens->push_back(std::find(paths.begin(), paths.end(), t[0]) != paths.end() ? ResolveList(dir, t[1]) : t[1]);
+    if (t.size() == 2) tokens->push_back(std::find(paths.begin(), paths.end(), t[0]) != paths.end() ? ResolveList(dir, t[1]) : t[0] == "-sweep" ? ResolveSweepFiles(dir, t[1]) : t[1]);
   }
   return true;
 }

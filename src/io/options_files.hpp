@@ -3,7 +3,8 @@
 // file), with one difference that makes a scene runnable from any directory: a relative path
 // written inside a file is relative to that file's directory. That holds for an include
 // (-options_file) and for the value of every option that names a file (-beam_profile,
-// -beam_properties, -ball_cor_table, -convergence_configs, ...: OptionsFilePathOptions()).
+// -beam_properties, -ball_cor_table, -convergence_configs, ...: OptionsFilePathOptions()), and for
+// the file of a sampled -sweep axis, NAME=csv:FILE (docs/uncertainty.md).
 // Paths on the command line stay relative to the working directory, as everywhere.
 //
 //   options/scenes/r161-acor.opts:   -options_file ../bats/r161.opts

@@ -7,6 +7,7 @@
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
+#include "io/sha256.hpp"
 #include "io/text.hpp"
 #include "model/shell.hpp"
 #include "run/outcome.hpp"
@@ -154,6 +155,16 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
 
   PetscFunctionBeginUser;
   PetscCall(SweepPlanFromOptions(comm, plan));
+  if (!plan->sampled.empty() && !plan->exceedance.empty()) { // its columns: the numeric results and the sampled axes
+    std::vector<std::string> numeric;
+    std::vector<UqCondition> conds;
+    std::string              why;
+    for (const SweepColumn &c : SweepColumns(*plan))
+      if (c.labels.empty() && !c.timing && c.name != "case_index" && c.name != "status" &&
+          std::none_of(plan->axes.begin(), plan->axes.end(), [&](const SweepAxis &a) { return a.name == c.name && !a.sampled; }))
+        numeric.push_back(c.name);
+    PetscCheck(UqConditionsParse(plan->exceedance, numeric, &conds, &why), comm, PETSC_ERR_ARG_WRONG, "-sweep_exceedance \"%s\" is not allowed: %s", plan->exceedance.c_str(), why.c_str());
+  }
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   const PetscInt n = help ? 1 : plan->cases(); // -help: print the options once
   candidates->clear();
@@ -267,6 +278,15 @@ PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, con
   rec->add("sweep_ranks_per_case", plan.ranks_per_case);
   rec->add("rigid_loss_fraction", plan.rigid_loss_fraction);
   rec->add("sweep_cases_total", plan.cases());
+  if (!plan.sampled.empty()) { // the sample: its options, and a digest of its values (a CSV's contents, the generator's)
+    rec->add("sweep_samples", plan.samples);
+    rec->add("sweep_sampling", SampleDesignName(plan.design));
+    rec->add("sweep_seed", plan.seed);
+    rec->add("sweep_sobol", plan.sobol ? 1 : 0);
+    Sha256 h;
+    h.Update(plan.sample_rows.data(), plan.sample_rows.size() * sizeof(double));
+    rec->add("sweep_sample_sha256", h.HexDigest());
+  }
   rec->add("sweep_columns", columns);
   rec->add("sweep_checked_options", SweepCheckedOptions(options));
   PetscFunctionReturn(0);
@@ -453,6 +473,7 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
       if (tab < end) S.reasons[(PetscInt)std::strtoll(std::string(all_text.begin() + p, all_text.begin() + tab).c_str(), nullptr, 10)] = std::string(all_text.begin() + tab + 1, all_text.begin() + end);
       p = end + 1;
     }
+    if ((PetscInt)S.rows.size() == S.ncases) PetscCall(SweepUqCompute(S, &S.uq)); // a sampled sweep's statistics, written with the file
     PetscCall(SweepStoreClose(S));
   }
   PetscFunctionReturn(0);
@@ -547,6 +568,7 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
                            "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points pushed the barrel wall in by more than %g of its radius: physically absurd, the wall's linear model far outside its range; "
                            "their rows have status 0 but wall_deflection_large = 1 in /results: leave them out of plots and fits\n",
                            absurd_wall, P.ncases, (double)kWallDeflectionLimit));
+  if (!plan.quiet) PetscCall(SweepUqPrint(S, S.uq));
   if (!plan.quiet) PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s (%s)\n", output.c_str(), Points(P.ncases).c_str()));
   PetscFunctionReturn(0);
 }

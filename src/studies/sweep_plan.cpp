@@ -31,20 +31,49 @@ namespace beamimpact {
 PetscInt SweepPlan::cases() const
 {
   if (axes.empty()) return 0;
-  PetscInt n = 1;
-  for (auto &a : axes) n *= (PetscInt)a.values.size();
+  PetscInt n = sampled.empty() ? 1 : SampleRows();
+  for (auto &a : axes)
+    if (!a.sampled) n *= (PetscInt)a.values.size();
   return n;
 }
 
 std::vector<PetscReal> SweepPlan::CaseValues(PetscInt index) const
 {
   std::vector<PetscReal> v(axes.size());
+  if (!sampled.empty()) { // the sample's row varies fastest
+    const PetscInt rows = SampleRows(), s = index % rows;
+    for (size_t k = 0; k < sampled.size(); ++k) v[sampled[k]] = sample_rows[(size_t)s * sampled.size() + k];
+    index /= rows;
+  }
   for (size_t k = axes.size(); k-- > 0;) {
+    if (axes[k].sampled) continue;
     const PetscInt n = (PetscInt)axes[k].values.size();
     v[k]             = axes[k].values[index % n];
     index /= n;
   }
   return v;
+}
+
+bool SweepPlanSample(SweepPlan *plan, std::string *why)
+{
+  plan->sampled.clear();
+  plan->sample_rows.clear();
+  for (size_t k = 0; k < plan->axes.size(); ++k)
+    if (plan->axes[k].sampled) plan->sampled.push_back(k);
+  if (plan->sampled.empty()) return true;
+  const int           d   = (int)plan->sampled.size();
+  const PetscInt      n   = plan->samples;
+  std::vector<double> u, rows;
+  if (!SampleUnitDesign(plan->design, (uint64_t)plan->seed, n, plan->sobol ? 2 * d : d, &u, why)) return false;
+  rows = plan->sobol ? SampleSaltelliRows(u, n, d) : u;
+  plan->sample_rows.resize(rows.size());
+  for (size_t r = 0; r < rows.size(); ++r) plan->sample_rows[r] = plan->axes[plan->sampled[r % d]].dist.Quantile(rows[r]);
+  for (int k = 0; k < d; ++k) {
+    SweepAxis &a = plan->axes[plan->sampled[k]];
+    a.values.clear();
+    for (size_t r = (size_t)k; r < plan->sample_rows.size(); r += (size_t)d) a.values.push_back(plan->sample_rows[r]);
+  }
+  return true;
 }
 
 static bool ParseReal(const std::string &text, PetscReal *v)
@@ -256,13 +285,23 @@ static bool ParseAxis(const std::string &item, SweepAxis *a, std::string *why)
     return false;
   }
   if (a->spec.empty()) {
-    *why = a->name + " has no values: " + a->name + "=start:stop:count, start:stop:count:log or v1;v2;...";
+    *why = a->name + " has no values: " + a->name + "=start:stop:count, start:stop:count:log, v1;v2;... or a distribution (normal:MEAN:STD, uniform:LO:HI, ...)";
     return false;
   }
   const AxisKind kind   = KindOfOption(a->name);
+  std::string    w;
+  if (SampleSpecIsDistribution(a->spec)) { // a sampled axis: its values are drawn later (SweepPlanSample)
+    const OptionSpec *s = OptionSpecFind(a->name);
+    if (kind == AxisKind::Text) {
+      *why = a->name + "=" + a->spec + ": -" + a->name + " takes text; only a numeric option can follow a distribution";
+      return false;
+    }
+    a->sampled = SampleDistributionParse(a->spec, a->unit, s && s->kind == OptionKind::Int, &a->dist, &w);
+    if (!a->sampled) *why = a->name + "=" + a->spec + ": " + w;
+    return a->sampled;
+  }
   const bool     quoted = a->spec.find('\'') != std::string::npos || a->spec.find('"') != std::string::npos;
   const bool     text   = kind == AxisKind::Text || quoted || (kind == AxisKind::Unknown && a->spec.find(':') == std::string::npos && !AllNumbers(a->spec));
-  std::string    w;
   if (text) {
     a->unit.clear();
     if (!ParseLabels(a->spec, &a->labels, &w)) {
@@ -379,7 +418,9 @@ const OptionModule kSweepOptions = {
   {
     OptionText("-sweep", "Axes NAME=SPEC[,NAME=SPEC...]: NAME any option without its dash, numeric (impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ...) or text (ts_type, beam_theory, "
                          "beam_left, ball_law, ts_rk_type, ...), SPEC start:stop:count, start:stop:count:log or v1;v2;... (a text value quoted, 'v', stays text: ts_rk_type='4';'3'); the cases are "
-                         "their product, the last axis varying fastest"),
+                         "their product, the last axis varying fastest. A numeric axis may be sampled from a distribution instead (with -sweep_samples): normal:MEAN:STD, "
+                         "truncnormal:MEAN:STD:LO:HI, uniform:LO:HI, lognormal:MEAN:STD, triangular:LO:MODE:HI, a table V1@W1;V2@W2;... (relative weights) or csv:FILE[:COLUMN] "
+                         "(measured values, drawn with equal probability); the grid axes' points times the sample's rows (docs/uncertainty.md)"),
     OptionText("-sweep_x", "Impact points (m), shorthand for -sweep impact_x=SPEC: start:stop:count (both ends included) or x1,x2,..."),
     OptionInt("-sweep_ranks_per_case", "Ranks that solve one impact together (the beam's DMDA is distributed over them)", "1", AtLeast(1)),
     WithRangeText(OptionReal("-rigid_loss_fraction", "1", "Loss fraction f of the rigid-body model, Eq. (11), for the rigid_acor column", "0", Between(0, 1, false, true)),
@@ -389,6 +430,15 @@ const OptionModule kSweepOptions = {
     OptionFlag("-sweep_retry_failed", "On resuming, compute again the points that failed (status != 0) instead of keeping their rows"),
     OptionReal("-sweep_progress_interval", "s", "Seconds between progress lines on rank 0", "2", Positive()),
     OptionReal("-sweep_write_interval", "s", "Minimum seconds between rewrites of -output while the sweep runs (0: as often as a 5% cost cap on rank 0 allows)", "5", NonNegative()),
+    OptionInt("-sweep_samples", "Points N of the sample of the sampled axes (-sweep NAME=normal:..., uniform:..., ...); with -sweep_sobol N (d + 2) runs for d sampled axes", "", Between(1, 1e8)),
+    OptionChoice("-sweep_sampling", "How the sample covers the unit cube before the inverse CDFs: random (independent draws), lhs (Latin hypercube), sobol (GSL's Sobol' sequence, "
+                                     "at most 40 dimensions, digitally shifted from -sweep_seed) or halton (GSL's, shifted modulo 1)",
+                 {"random", "lhs", "sobol", "halton"}, "random"),
+    OptionInt("-sweep_seed", "Seed of the sample (and of the bootstrap): every point is a pure function of the seed and its index", "0", Between(0, 2147483647)),
+    OptionFlag("-sweep_sobol", "First and total Sobol' indices of every results column for each sampled axis: Saltelli's design (A, B and A_B^(i): N (d + 2) runs), Saltelli 2010 and Jansen "
+                               "estimators with bootstrap intervals, in /sobol"),
+    OptionText("-sweep_exceedance", "Probabilities of exceedance of a sampled sweep, COLUMN>VALUE[,COLUMN<=VALUE,...] (>, >=, <, <=; a /results column), with Wilson's 95% interval, in /exceedance"),
+    OptionInt("-sweep_bootstrap", "Bootstrap resamples of the quantiles' standard errors and the Sobol' indices' intervals", "200", Between(10, 1e5)),
   },
 };
 
@@ -408,7 +458,37 @@ static PetscErrorCode SweepOptionsRead(MPI_Comm comm, SweepPlan *plan, PetscBool
   PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_retry_failed", &plan->retry_failed, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_progress_interval", &plan->progress_interval, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_write_interval", &plan->write_interval, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_samples", &plan->samples, NULL));
+  PetscInt design = 0;
+  PetscCall(OptionsReadChoice(PetscOptionsObject, m, "-sweep_sampling", &design, NULL));
+  plan->design = (SampleDesign)design; // the row's choices in the enum's order
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_seed", &plan->seed, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_sobol", &plan->sobol, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_exceedance", &plan->exceedance, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, m, "-sweep_bootstrap", &plan->bootstrap, NULL));
   PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+// The sample of the sampled axes, and its options checked: -sweep_samples needed with a sampled
+// axis; the sampling options without one are notes.
+static PetscErrorCode SweepPlanSampleFromOptions(MPI_Comm comm, SweepPlan *plan)
+{
+  std::string why;
+  bool        any = false;
+
+  PetscFunctionBeginUser;
+  for (const SweepAxis &a : plan->axes) any = any || a.sampled;
+  if (!any) {
+    for (const char *o : {"-sweep_samples", "-sweep_sampling", "-sweep_seed", "-sweep_sobol", "-sweep_exceedance", "-sweep_bootstrap"}) {
+      PetscBool given = PETSC_FALSE;
+      PetscCall(PetscOptionsHasName(NULL, NULL, o, &given));
+      if (given) PetscCall(PetscPrintf(comm, "note: %s has no effect: no axis of the sweep is sampled (a distribution: -sweep \"impact_x=normal:0.7:0.02\", ...)\n", o));
+    }
+    PetscFunctionReturn(0);
+  }
+  PetscCheck(plan->samples > 0, comm, PETSC_ERR_ARG_WRONG, "-sweep \"%s\" samples its axes from distributions: give the sample's size, -sweep_samples N (e.g. 1000)", plan->sweep.c_str());
+  PetscCheck(SweepPlanSample(plan, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_sampling %s is not allowed here: %s", SampleDesignName(plan->design), why.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -445,8 +525,9 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
     }
     plan->axes.insert(plan->axes.end(), more.begin(), more.end());
   }
-  double n = 1;
-  for (const SweepAxis &a : plan->axes) n *= (double)a.values.size();
+  PetscCall(SweepPlanSampleFromOptions(comm, plan));
+  double n = plan->sampled.empty() ? 1 : (double)plan->SampleRows();
+  for (const SweepAxis &a : plan->axes) n *= a.sampled ? 1.0 : (double)a.values.size();
   PetscCheck(n <= 1e9, comm, PETSC_ERR_ARG_OUTOFRANGE, "the sweep has %.3g points (the product of its axes): at most 1e9 are allowed", n);
   // An axis's own option given too (a scene's options file sets -beam_thickness, say): the
   // axis overrides it at every case (the announcement says so), and it is put back after.

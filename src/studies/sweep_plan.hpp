@@ -6,6 +6,7 @@
 
 #include "base/option_table.hpp"
 #include "run/scenario.hpp"
+#include "studies/sweep_sampling.hpp"
 
 #include <petscsys.h>
 
@@ -25,6 +26,8 @@ struct SweepAxis {
   std::vector<std::string> labels; // a text axis: its values as written, in order (empty: numeric)
   bool                     overrides = false; // -NAME was also given (options file or command line): the axis wins
   std::string              given;             // its value there, restored after each case
+  bool                     sampled = false;   // a distribution (SPEC normal:..., uniform:..., V@W;..., csv:...): values are its samples
+  SampleDistribution       dist;              // a sampled axis's distribution (studies/sweep_sampling.hpp)
 
   bool Text() const { return !labels.empty(); }
   // Value v of this axis (an entry of values) as the options database gets it: the label, or
@@ -69,7 +72,18 @@ struct SweepPlan {
   PetscReal              progress_interval = 2;    // s, at most one progress line per interval
   PetscReal              write_interval = 5;       // s, minimum time between live rewrites of the file
   PetscReal              cost_warn = 30;           // s, -impact_cost_warn: the expected time of the remaining points is said above this
+  // Sampled axes (docs/uncertainty.md): the cases are every point of the grid axes (the others)
+  // times the sample's rows, the rows varying fastest (the same rows at every grid point).
+  PetscInt               samples = 0;              // -sweep_samples N: points of the design (0: not given)
+  SampleDesign           design  = SampleDesign::Random; // -sweep_sampling
+  PetscInt               seed    = 0;              // -sweep_seed
+  PetscBool              sobol   = PETSC_FALSE;    // -sweep_sobol: Saltelli's design, N (d + 2) rows
+  PetscInt               bootstrap = 200;          // -sweep_bootstrap: resamples of the intervals
+  std::string            exceedance;               // -sweep_exceedance as given
+  std::vector<size_t>    sampled;                  // the sampled axes (indices into axes), in order
+  std::vector<double>    sample_rows;              // the sample: rows of one value per sampled axis (option units)
 
+  PetscInt SampleRows() const { return sampled.empty() ? 0 : (PetscInt)(sample_rows.size() / sampled.size()); }
   PetscInt cases() const;
   // The value of every axis for case `index` (axis order).
   std::vector<PetscReal> CaseValues(PetscInt index) const;
@@ -90,6 +104,10 @@ bool SweepParsePoints(const std::string &spec, std::vector<PetscReal> *values, s
 // ':'), or when a list's values are not all numbers (ts_type=rk;cn); it is numeric when its
 // option has a unit (SweepOptionUnit), for a range start:stop:count and for a list of numbers.
 bool SweepParseAxes(const std::string &text, std::vector<SweepAxis> *axes, std::string *why);
+
+// Draws the sample of the plan's sampled axes (plan->sample_rows and each sampled axis's values)
+// from -sweep_samples, -sweep_sampling, -sweep_seed and -sweep_sobol. False with a reason.
+bool SweepPlanSample(SweepPlan *plan, std::string *why);
 
 // Checks the values of a text axis where the program knows the choices: a Choice row of its
 // module's table (beam_theory, beam_left, ball_law, ...) and -ts_type (PETSc's registry of TS

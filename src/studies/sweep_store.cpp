@@ -88,7 +88,7 @@ bool ParseJournalName(const char *name, int *run, int *rank)
 // Options that do not change any number in the file.
 bool OptionIsVolatile(const std::string &name)
 {
-  static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_retry_failed", "sweep_progress_interval", "sweep_write_interval", "error_traceback", "allow_unused_options", "help", "version"};
+  static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_retry_failed", "sweep_progress_interval", "sweep_write_interval", "sweep_exceedance", "sweep_bootstrap", "error_traceback", "allow_unused_options", "help", "version"};
   static const char *const           prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_", "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view", "snes_view", "ksp_view"};
   if (exact.count(name)) return true;
   if (name == "max_memory" || name == "flight_series_dt") return true; // a limit on what may be allocated; a series a sweep does not keep
@@ -607,6 +607,7 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
   }
   PetscCall(H5DimsTable(gp, "case")); // every case of the plan, done or not
   H5Gclose(gp);
+  PetscCall(SweepUqWrite(S, S.uq, file)); // a sampled sweep's /statistics, /exceedance, /sobol (complete)
   PetscFunctionReturn(0);
 }
 

@@ -26,6 +26,7 @@
 
 #include "io/run_record.hpp"
 #include "studies/sweep_plan.hpp"
+#include "studies/sweep_uq.hpp"
 
 #include <petscsys.h>
 
@@ -121,6 +122,7 @@ struct SweepStore {
   PetscInt                                rows_written = -1;
   double                                  last_write = 0, write_cost = 0; // s (MPI_Wtime), s
   int                                     writes      = 0;                // live rewrites (SweepStoreRefresh) so far
+  SweepUq                                 uq;                             // a sampled sweep's statistics, once complete (written with the file)
   double                                  write_total = 0;                // s, their time, reading the journals included
 };
 
