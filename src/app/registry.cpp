@@ -5,6 +5,7 @@
 #include "app/tasks.hpp"
 #include "base/option_table.hpp"
 #include "io/ball_options.hpp"
+#include "io/bat_maker_options.hpp"
 #include "io/beam_options.hpp"
 #include "io/flight_options.hpp"
 #include "io/scenario_options.hpp"
@@ -34,6 +35,7 @@ PetscErrorCode RegisterAll()
   // One line per module (after the methods: the reference choices come from the registry).
   OptionModuleRegister(&TaskOptionTable());
   OptionModuleRegister(&BeamOptionTable());
+  OptionModuleRegister(&BatMakerOptionTable());
   OptionModuleRegister(&BallOptionModule());
   OptionModuleRegister(&SwingOptionTable());
   OptionModuleRegister(&ImpactOptionTable());

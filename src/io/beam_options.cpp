@@ -1,6 +1,7 @@
 // The -beam_* options. See beam_options.hpp.
 #include "io/beam_options.hpp"
 
+#include "io/bat_maker_options.hpp"
 #include "io/section_file.hpp"
 #include "io/text.hpp"
 #include "io/string_bed_options.hpp"
@@ -65,7 +66,7 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
       OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()), {"-beam_shell"}),
       OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa", "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps -beam_youngs_modulus (default: that)", "", Positive()), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 0 < t < D/2", "", Positive()), {"-beam_profile"}),
+      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 0 < t < D/2; with -bat_length, the maker's barrel wall (a hollow bat)", "", Positive()), {"-beam_profile|-bat_length"}),
       OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll phi (G J phi'^2/2 per length, rho J per length), so that a hit off the axis (-impact_z) rolls it (a racket's head; docs/model.md section 16)"),
       OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2", "Torsional stiffness G J of a uniform section (default: the section's: a round profile's G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)", "", Positive()), {"-beam_torsion"}),
       OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m", "Polar mass moment per length rho J of a uniform section about its axis (default: the section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' rhoJ)", "", Positive()), {"-beam_torsion"}),
@@ -265,6 +266,20 @@ PetscErrorCode SectionPlausibility(MPI_Comm comm, const char *option, const Beam
   PetscFunctionReturn(0);
 }
 
+// Scales only (default windows, frequency unit): the mean EI and mu over the length of a profile or table.
+PetscErrorCode SectionScales(BeamParams *p)
+{
+  const PetscInt n  = 4096;
+  PetscReal      EI = 0, mu = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < n; ++k) {
+    const SectionProperties q = SectionAt(p->section, (k + 0.5) * p->length / n);
+    EI += q.EI / n, mu += q.mu / n;
+  }
+  p->EI = EI, p->mu = mu;
+  PetscFunctionReturn(0);
+}
+
 // -beam_profile or -beam_properties: the rows, the length, and mean EI and mass per length.
 PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, BeamParams *p)
 {
@@ -301,14 +316,33 @@ PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, Bea
   }
   p->length = SectionLength(s);
   PetscCall(SectionPlausibility(comm, option, s, p->length));
-  // Scales only (default windows, frequency unit): the mean EI and mu over the length.
-  const PetscInt n  = 4096;
-  PetscReal      EI = 0, mu = 0;
-  for (PetscInt k = 0; k < n; ++k) {
-    const SectionProperties q = SectionAt(s, (k + 0.5) * p->length / n);
-    EI += q.EI / n, mu += q.mu / n;
-  }
-  p->EI = EI, p->mu = mu;
+  PetscCall(SectionScales(p));
+  PetscFunctionReturn(0);
+}
+
+// -bat_length: the profile of a bat by its maker's numbers (model/bat_maker.hpp), hollow with
+// -barrel_wall_thickness, in the material of -beam_youngs_modulus and -beam_density.
+PetscErrorCode BeamSectionFromMaker(MPI_Comm comm, const BeamOptionValues &o, BeamParams *p)
+{
+  BeamSection   &s = p->section;
+  BatMakerParams b;
+  std::string    why;
+  PetscFunctionBeginUser;
+  const char *other = o.setprofile ? "-beam_profile" : o.setproperties ? "-beam_properties" : UniformOptionGiven(o);
+  PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "-bat_length (a bat by its maker's numbers) fixes the beam's length and sections: do not also give %s", other);
+  PetscCheck(o.setE && o.setrho, comm, PETSC_ERR_ARG_WRONG, "-bat_length (a bat by its maker's numbers) needs the material: give -beam_youngs_modulus (Pa) and -beam_density (kg/m^3)");
+  PetscCall(BatMakerParamsFromOptions(comm, o.setwall ? o.wall : 0, &b));
+  PetscCheck(BatMakerProfile(b, o.rho, &s.profile, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "the bat's maker's numbers describe no bat: %s", why.c_str());
+  s.source     = SectionSource::Profile;
+  s.file       = "(the bat maker's numbers: -bat_*)";
+  s.material.E = o.E, s.material.rho = o.rho, s.material.G = o.G, s.material.nu = o.nu, s.material.kappa = o.kappa;
+  PetscCall(SectionRowsCheck(comm, "-bat_length", s));
+  p->input.youngs_modulus = o.E;
+  p->input.density        = o.rho;
+  p->input.parameter_set  = "profile";
+  p->length               = SectionLength(s);
+  PetscCall(SectionPlausibility(comm, "-bat_length", s, p->length));
+  PetscCall(SectionScales(p));
   PetscFunctionReturn(0);
 }
 
@@ -494,8 +528,11 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
 {
   BeamOptionValues o;
   PetscFunctionBeginUser;
+  PetscBool        maker = PETSC_FALSE;
   PetscCall(BeamOptionsRead(comm, p, &o));
-  if (o.setprofile || o.setproperties) PetscCall(BeamSectionFromFile(comm, o, p));
+  PetscCall(BatMakerRequested(comm, &maker));
+  if (maker) PetscCall(BeamSectionFromMaker(comm, o, p));
+  else if (o.setprofile || o.setproperties) PetscCall(BeamSectionFromFile(comm, o, p));
   else PetscCall(BeamUniformSection(comm, o, p));
   PetscCall(TimoshenkoCheck(comm, o, *p));
   PetscCall(StringBedOnFrame(comm, p));
