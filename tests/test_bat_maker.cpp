@@ -2,9 +2,11 @@
 // point and moments of inertia against the closed forms of the cylinders and truncated cones it is
 // made of (a solid wood bat with a narrowing end, a hollow bat with its handle's and barrel's walls
 // and an end cap, a cupped end), read through the options as a run reads them; the drop; numbers
-// that describe no bat refused with the option named.
+// that describe no bat refused with the option named; the batter's swing law (-bat_swing_*).
 #include "io/beam_options.hpp"
+#include "io/scenario_options.hpp"
 #include "model/bat_maker.hpp"
+#include "model/swing.hpp"
 
 #include <gtest/gtest.h>
 
@@ -160,4 +162,43 @@ TEST(BatMaker, RefusedWithTheOptionNamed)
   Read({{"-bat_length", "0.84"}, {"-beam_profile", "x.profile"}, {"-beam_youngs_modulus", "7e10"}, {"-beam_density", "2700"}}, &ierr);
   EXPECT_EQ(0, PetscPopErrorHandler());
   EXPECT_NE(ierr, 0) << "-bat_length with -beam_profile must be refused";
+}
+
+// The swing's law (model/swing.hpp): Nathan's game case of the R161 (V_cm 24 m/s, Omega 51 rad/s)
+// is a turn at 51 rad/s about x_s = x_cm - 24/51; as a law without I_0 it is the same rigid motion;
+// with I_0 half the bat's I_s the swing is 2^(-n) slower everywhere; the bat's speed at x is
+// s (v_s + omega_0 (x - x_s)).
+TEST(SwingLaw, NathansGameCaseAndTheInertiaLaw)
+{
+  const std::string     profile = std::string(BEAMIMPACT_SOURCE_DIR) + "/options/bats/r161.profile";
+  std::vector<std::pair<std::string, std::string>> bat = {{"-beam_profile", profile}, {"-beam_youngs_modulus", "1.814e10"}, {"-beam_density", "649"}, {"-impact_x", "0.7"}};
+  auto scene = [&](std::vector<std::pair<std::string, std::string>> extra) {
+    for (auto &kv : bat) extra.push_back(kv);
+    for (auto &kv : extra) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
+    Scenario sc;
+    EXPECT_EQ(0, ScenarioFromOptions(PETSC_COMM_SELF, &sc));
+    for (auto &kv : extra) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
+    return sc;
+  };
+  const Scenario      given = scene({{"-bat_speed", "24"}, {"-bat_angular_velocity", "51"}});
+  const BeamRigidBody body  = BeamRigidBodyOf(given.beam);
+  char                xs[40];
+  std::snprintf(xs, sizeof xs, "%.17g", body.x_cm - 24.0 / 51.0);
+  const Scenario law = scene({{"-bat_swing_angular_velocity", "51"}, {"-bat_swing_pivot", xs}});
+  EXPECT_NEAR(law.swing.bat_speed, 24, 1e-13);
+  EXPECT_NEAR(law.swing.bat_angular_velocity, 51, 1e-13);
+  SwingLaw l;
+  l.pivot = body.x_cm - 24.0 / 51.0, l.angular_velocity = 51;
+  const double Is = SwingLawInertia(l, body);
+  EXPECT_NEAR(Is, body.inertia_cm + body.mass * (24.0 / 51.0) * (24.0 / 51.0), 1e-15);
+  char i0[40];
+  std::snprintf(i0, sizeof i0, "%.17g", Is / 2);
+  const Scenario slower = scene({{"-bat_swing_angular_velocity", "51"}, {"-bat_swing_pivot", xs}, {"-bat_swing_reference_inertia", i0}, {"-bat_swing_exponent", "0.27"}});
+  const double   s      = std::pow(2.0, -0.27);
+  EXPECT_NEAR(slower.swing.bat_angular_velocity, 51 * s, 1e-12);
+  for (double x : {0.0, 0.5, 0.84}) EXPECT_NEAR(SwingSpeedAt(slower.swing, body, x), s * 51 * (x - l.pivot), 1e-12) << "x = " << x;
+  // a point that moves: V(x) = s (v_s + omega_0 (x - x_s))
+  const Scenario moving = scene({{"-bat_swing_angular_velocity", "40"}, {"-bat_swing_pivot", "0.15"}, {"-bat_swing_pivot_speed", "3"}, {"-bat_swing_reference_inertia", i0}});
+  const double   s2     = std::pow((body.inertia_cm + body.mass * (body.x_cm - 0.15) * (body.x_cm - 0.15)) / (Is / 2), -0.26);
+  EXPECT_NEAR(SwingSpeedAt(moving.swing, body, 0.7), s2 * (3 + 40 * (0.7 - 0.15)), 1e-12);
 }
