@@ -2,10 +2,12 @@
 // point and moments of inertia against the closed forms of the cylinders and truncated cones it is
 // made of (a solid wood bat with a narrowing end, a hollow bat with its handle's and barrel's walls
 // and an end cap, a cupped end), read through the options as a run reads them; the drop; numbers
-// that describe no bat refused with the option named; the batter's swing law (-bat_swing_*).
+// that describe no bat refused with the option named; the batter's swing law (-bat_swing_*); a
+// racket by its maker's numbers (-racket_*).
 #include "io/beam_options.hpp"
 #include "io/scenario_options.hpp"
 #include "model/bat_maker.hpp"
+#include "model/racket_maker.hpp"
 #include "model/swing.hpp"
 
 #include <gtest/gtest.h>
@@ -201,4 +203,35 @@ TEST(SwingLaw, NathansGameCaseAndTheInertiaLaw)
   const Scenario moving = scene({{"-bat_swing_angular_velocity", "40"}, {"-bat_swing_pivot", "0.15"}, {"-bat_swing_pivot_speed", "3"}, {"-bat_swing_reference_inertia", i0}});
   const double   s2     = std::pow((body.inertia_cm + body.mass * (body.x_cm - 0.15) * (body.x_cm - 0.15)) / (Is / 2), -0.26);
   EXPECT_NEAR(SwingSpeedAt(moving.swing, body, 0.7), s2 * (3 + 40 * (0.7 - 0.15)), 1e-12);
+}
+
+// A racket by its maker's numbers (model/racket_maker.hpp), strung: the strung racket's mass,
+// balance and twistweight as given (the frame's two levels solve them with the strings' own
+// moments), the head's strung area and its tip 1 cm below the frame's, the frame's EI and GJ; a
+// balance no two positive levels can make refused with the range it allows.
+TEST(RacketMaker, StrungMassBalanceTwistweightAndHead)
+{
+  std::vector<std::pair<std::string, std::string>> opts = {{"-racket_length", "0.685"}, {"-racket_mass", "0.305"}, {"-racket_balance", "0.335"}, {"-racket_head_size", "0.0632"},
+                                                           {"-racket_twistweight", "0.0015"}, {"-racket_frame_stiffness", "180"}, {"-beam_torsion", "true"}, {"-strings_frame", "beam"},
+                                                           {"-beam_nodes", "70"}};
+  const BeamParams p = Read(opts);
+  const BeamRigidBody b = BeamRigidBodyOf(p);
+  EXPECT_NEAR(b.mass, 0.305, 1e-14);
+  EXPECT_NEAR(b.x_cm, 0.335, 1e-14);
+  EXPECT_NEAR(b.inertia_roll, 0.0015, 1e-15);
+  EXPECT_NEAR(M_PI * p.strings.head_length * p.strings.head_width / 4, 0.0632, 1e-15);
+  EXPECT_NEAR(p.strings.head_length / p.strings.head_width, 1.37, 1e-14);
+  EXPECT_NEAR(p.strings.head_center + p.strings.head_length / 2, 0.685 - 0.01, 1e-14);
+  EXPECT_DOUBLE_EQ(SectionAt(p.section, 0.5).EI, 180);
+  EXPECT_DOUBLE_EQ(SectionAt(p.section, 0.05).GJ, 350);
+  // the frame alone (no strings): the same mass and balance from the frame's own levels
+  const BeamParams bare = Read({{"-racket_length", "0.685"}, {"-racket_mass", "0.305"}, {"-racket_balance", "0.335"}});
+  EXPECT_NEAR(BeamRigidBodyOf(bare).mass, 0.305, 1e-14);
+  EXPECT_NEAR(BeamRigidBodyOf(bare).x_cm, 0.335, 1e-14);
+  std::vector<PropertiesRow> rows;
+  std::string                why;
+  RacketMakerParams          r;
+  r.balance = 0.60; // more head-heavy than a head-only frame
+  EXPECT_FALSE(RacketMakerTable(r, nullptr, &rows, &why));
+  EXPECT_NE(why.find("-racket_balance 0.6 m makes no racket"), std::string::npos) << why;
 }

@@ -6,6 +6,7 @@
 #include "base/option_table.hpp"
 #include "io/ball_options.hpp"
 #include "io/bat_maker_options.hpp"
+#include "io/racket_maker_options.hpp"
 #include "io/beam_options.hpp"
 #include "io/flight_options.hpp"
 #include "io/scenario_options.hpp"
@@ -36,6 +37,7 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&TaskOptionTable());
   OptionModuleRegister(&BeamOptionTable());
   OptionModuleRegister(&BatMakerOptionTable());
+  OptionModuleRegister(&RacketMakerOptionTable());
   OptionModuleRegister(&BallOptionModule());
   OptionModuleRegister(&SwingOptionTable());
   OptionModuleRegister(&ImpactOptionTable());

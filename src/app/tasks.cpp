@@ -7,6 +7,7 @@
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/bat_maker_options.hpp"
+#include "io/racket_maker_options.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
@@ -279,6 +280,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   (void)StringBedHelpOptions(comm); // -strings_*, -head_*
   (void)BatMakerHelpOptions(comm);  // -bat_* of a bat by its maker's numbers
+  (void)RacketMakerHelpOptions(comm); // -racket_* of a racket by its maker's numbers
   (void)FitHelpOptions(comm);       // -fit_*, TAO's -tao_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);

@@ -2,6 +2,7 @@
 #include "io/beam_options.hpp"
 
 #include "io/bat_maker_options.hpp"
+#include "io/racket_maker_options.hpp"
 #include "io/section_file.hpp"
 #include "io/text.hpp"
 #include "io/string_bed_options.hpp"
@@ -346,6 +347,25 @@ PetscErrorCode BeamSectionFromMaker(MPI_Comm comm, const BeamOptionValues &o, Be
   PetscFunctionReturn(0);
 }
 
+// -racket_length: the frame's table of a racket by its maker's numbers (model/racket_maker.hpp),
+// strung with the bed the options give (the head's outline the maker's). Called after the bed is read.
+PetscErrorCode BeamSectionFromRacket(MPI_Comm comm, const BeamOptionValues &o, const RacketMakerParams &r, BeamParams *p)
+{
+  BeamSection &s = p->section;
+  std::string  why;
+  PetscFunctionBeginUser;
+  PetscCheck(RacketMakerTable(r, p->strings.On() ? &p->strings : nullptr, &s.table, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "the racket's maker's numbers describe no racket: %s", why.c_str());
+  s.source            = SectionSource::Table;
+  s.file              = "(the racket maker's numbers: -racket_*)";
+  s.table_has_shear   = true;
+  s.table_has_torsion = true;
+  (void)o;
+  p->input.parameter_set = "table";
+  p->length              = SectionLength(s);
+  PetscCall(SectionScales(p));
+  PetscFunctionReturn(0);
+}
+
 // The uniform parameter sets: (EI, mu), (M, L, a, E/rho) or (E, rho, a, b), and for the last
 // the Timoshenko section of the rectangle (kappa G A, rho I) when G is given.
 PetscErrorCode BeamUniformSection(MPI_Comm comm, const BeamOptionValues &o, BeamParams *p)
@@ -492,7 +512,7 @@ PetscErrorCode TorsionCheck(MPI_Comm comm, const BeamParams &p)
 // A racket's string bed (-strings_frame, read only when given): held, the frame is the head's
 // outline held still (a beam of the head's length on the bed's columns, clamped everywhere); beam,
 // the beam is the frame, its head inside the beam and rolling with it.
-PetscErrorCode StringBedOnFrame(MPI_Comm comm, BeamParams *p)
+PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, BeamParams *p)
 {
   PetscBool given;
   PetscFunctionBeginUser;
@@ -501,6 +521,14 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, BeamParams *p)
   PetscCall(StringBedParamsFromOptions(comm, &p->strings));
   StringBedParams &s = p->strings;
   if (!s.On()) PetscFunctionReturn(0);
+  if (racket) { // the maker's head
+    for (const char *o : {"-head_length", "-head_width", "-head_center"}) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(NULL, NULL, o, &set));
+      PetscCheck(!set, comm, PETSC_ERR_ARG_INCOMP, "%s with -racket_length is not allowed: the racket's maker's numbers place the head (-racket_head_size, -racket_head_aspect, -racket_head_margin)", o);
+    }
+    RacketMakerHead(*racket, &s);
+  }
   PetscCheck(!p->shell.on && !p->hoop.on, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame %s with a barrel wall (%s) is not allowed: a racket has no barrel", s.frame.c_str(), p->shell.on ? "-beam_shell" : "-barrel_hoop_frequency");
   if (s.Held()) {
     PetscCheck(!p->grip.on && !p->has_pivot, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame held holds the whole frame: %s has nothing to hold", p->grip.on ? "-grip" : "-beam_pivot");
@@ -528,14 +556,27 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
 {
   BeamOptionValues o;
   PetscFunctionBeginUser;
-  PetscBool        maker = PETSC_FALSE;
+  PetscBool         maker = PETSC_FALSE, racket_on = PETSC_FALSE;
+  RacketMakerParams racket;
   PetscCall(BeamOptionsRead(comm, p, &o));
   PetscCall(BatMakerRequested(comm, &maker));
-  if (maker) PetscCall(BeamSectionFromMaker(comm, o, p));
+  PetscCall(RacketMakerRequested(comm, &racket_on));
+  PetscCheck(!(maker && racket_on), comm, PETSC_ERR_ARG_INCOMP, "-bat_length and -racket_length both describe the beam: give one");
+  if (racket_on) {
+    const char *other = o.setprofile ? "-beam_profile" : o.setproperties ? "-beam_properties" : UniformOptionGiven(o);
+    PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "-racket_length (a racket by its maker's numbers) fixes the frame's length and sections: do not also give %s", other);
+    PetscCall(RacketMakerParamsFromOptions(comm, &racket));
+    p->length = racket.length;
+    p->EI = racket.frame_stiffness, p->mu = racket.mass / racket.length; // until the table is made
+  } else if (maker) PetscCall(BeamSectionFromMaker(comm, o, p));
   else if (o.setprofile || o.setproperties) PetscCall(BeamSectionFromFile(comm, o, p));
   else PetscCall(BeamUniformSection(comm, o, p));
-  PetscCall(TimoshenkoCheck(comm, o, *p));
-  PetscCall(StringBedOnFrame(comm, p));
+  if (!racket_on) PetscCall(TimoshenkoCheck(comm, o, *p));
+  PetscCall(StringBedOnFrame(comm, racket_on ? &racket : nullptr, p));
+  if (racket_on && !p->strings.Held()) { // a held bed has no frame
+    PetscCall(BeamSectionFromRacket(comm, o, racket, p));
+    PetscCall(TimoshenkoCheck(comm, o, *p));
+  }
   PetscCall(TorsionCheck(comm, *p));
   PetscCall(BeamParamsCheck(comm, *p));
   if (p->has_pivot) { // the pivot sits on a node: say where when that moves it
