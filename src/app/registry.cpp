@@ -20,6 +20,7 @@
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence_plan.hpp"
 #include "studies/convergence_runs.hpp"
+#include "studies/design.hpp"
 #include "studies/fit_data.hpp"
 #include "studies/sweep_plan.hpp"
 
@@ -55,6 +56,7 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&StringBedOptionTable());
   OptionModuleRegister(&FitOptionTable());
   OptionModuleRegister(&TaoOptionTable());
+  OptionModuleRegister(&DesignOptionTable());
   PetscFunctionReturn(0);
 }
 

@@ -91,6 +91,7 @@ bool OptionIsVolatile(const std::string &name)
   static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_retry_failed", "sweep_progress_interval", "sweep_write_interval", "error_traceback", "allow_unused_options", "help", "version"};
   static const char *const           prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_", "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view", "snes_view", "ksp_view"};
   if (exact.count(name)) return true;
+  if (name == "max_memory" || name == "flight_series_dt") return true; // a limit on what may be allocated; a series a sweep does not keep
   for (const char *p : prefix)
     if (name.compare(0, std::strlen(p), p) == 0) return true;
   return false;
@@ -508,22 +509,7 @@ static const char *const kReasonUnit = "text (the error of a failed point; empty
 
 bool H5WriteStringColumn(long long loc, const char *name, const std::vector<std::string> &v, const char *unit_text)
 {
-  std::vector<const char *> p;
-  for (auto &s : v) p.push_back(s.c_str());
-  const hsize_t n = v.size();
-  hid_t         t = H5Tcopy(H5T_C_S1);
-  H5Tset_size(t, H5T_VARIABLE);
-  H5Tset_cset(t, H5T_CSET_UTF8);
-  hid_t s  = H5Screate_simple(1, &n, NULL);
-  hid_t d  = H5Dcreate2((hid_t)loc, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  bool  ok = d >= 0 && (n == 0 || H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
-  RunRecord unit; // every /results dataset has a unit
-  unit.add("unit", unit_text);
-  ok = ok && H5WriteAttributes(d, unit) == 0;
-  if (d >= 0) H5Dclose(d);
-  H5Sclose(s);
-  H5Tclose(t);
-  return ok;
+  return H5WriteText1D(loc, name, v, unit_text) == 0;
 }
 
 bool H5ReadStringColumn(long long loc, const char *name, std::vector<std::string> *v)
