@@ -17,12 +17,12 @@ import argparse
 import os
 import sys
 
+from beamimpact import style  # re-executes with a Python that has numpy, h5py and matplotlib
+
 import h5py
 import numpy as np
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.plt
 
 
 def text(v):
