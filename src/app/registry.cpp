@@ -5,6 +5,8 @@
 #include "app/tasks.hpp"
 #include "base/option_table.hpp"
 #include "io/ball_options.hpp"
+#include "io/bat_maker_options.hpp"
+#include "io/racket_maker_options.hpp"
 #include "io/beam_options.hpp"
 #include "io/flight_options.hpp"
 #include "io/scenario_options.hpp"
@@ -18,6 +20,7 @@
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence_plan.hpp"
 #include "studies/convergence_runs.hpp"
+#include "studies/design.hpp"
 #include "studies/fit_data.hpp"
 #include "studies/sweep_plan.hpp"
 
@@ -34,6 +37,8 @@ PetscErrorCode RegisterAll()
   // One line per module (after the methods: the reference choices come from the registry).
   OptionModuleRegister(&TaskOptionTable());
   OptionModuleRegister(&BeamOptionTable());
+  OptionModuleRegister(&BatMakerOptionTable());
+  OptionModuleRegister(&RacketMakerOptionTable());
   OptionModuleRegister(&BallOptionModule());
   OptionModuleRegister(&SwingOptionTable());
   OptionModuleRegister(&ImpactOptionTable());
@@ -51,6 +56,7 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&StringBedOptionTable());
   OptionModuleRegister(&FitOptionTable());
   OptionModuleRegister(&TaoOptionTable());
+  OptionModuleRegister(&DesignOptionTable());
   PetscFunctionReturn(0);
 }
 

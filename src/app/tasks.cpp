@@ -7,6 +7,8 @@
 #include "base/memory.hpp"
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
+#include "io/bat_maker_options.hpp"
+#include "io/racket_maker_options.hpp"
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
@@ -17,6 +19,7 @@
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence.hpp"
+#include "studies/design.hpp"
 #include "studies/fit.hpp"
 #include "studies/sweep.hpp"
 #include "studies/sweep_plan.hpp"
@@ -53,6 +56,7 @@ const TaskEntry Tasks[] = {
   {"convergence", TaskConvergence},
   {"flight", TaskFlight},
   {"fit", TaskFit},
+  {"design", TaskDesign},
 };
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
@@ -280,7 +284,10 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)ModalTruncationFromOptions(comm, &modal_modes);
   (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   (void)StringBedHelpOptions(comm); // -strings_*, -head_*
+  (void)BatMakerHelpOptions(comm);  // -bat_* of a bat by its maker's numbers
+  (void)RacketMakerHelpOptions(comm); // -racket_* of a racket by its maker's numbers
   (void)FitHelpOptions(comm);       // -fit_*, TAO's -tao_*
+  (void)DesignHelpOptions(comm);    // -design_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);

@@ -1,6 +1,8 @@
 // The -beam_* options. See beam_options.hpp.
 #include "io/beam_options.hpp"
 
+#include "io/bat_maker_options.hpp"
+#include "io/racket_maker_options.hpp"
 #include "io/section_file.hpp"
 #include "io/text.hpp"
 #include "io/string_bed_options.hpp"
@@ -66,11 +68,11 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
       OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius); at most the ball's radius and the wall's midsurface radius at the impact point", "", NonNegative()), {"-beam_shell"}),
       OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa", "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps -beam_youngs_modulus (default: that); 1e8 (a soft polymer) to 1e12 (stiffer than any bat's wall)", "", Between(1e8, 1e12)), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 1e-4 (0.1 mm, a drink can's wall) <= t < D/2", "", AtLeast(1e-4)), {"-beam_profile"}),
+      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 1e-4 (0.1 mm, a drink can's wall) <= t < D/2; with -bat_length, the maker's barrel wall (a hollow bat)", "", AtLeast(1e-4)), {"-beam_profile|-bat_length"}),
       OptionNeeds(OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll phi (G J phi'^2/2 per length, rho J per length), so that a hit off the axis (-impact_z) rolls it (a racket's head; docs/model.md section 16; not with -strings_frame held: the frame is held)"), {"-strings_frame=none|-strings_frame=beam"}),
       OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2", "Torsional stiffness G J of a uniform section (default: the section's: a round profile's G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)", "", Positive()), {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
       OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m", "Polar mass moment per length rho J of a uniform section about its axis (default: the section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' rhoJ)", "", Positive()), {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
-      OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass); a hollow barrel's: needs -beam_profile with inner diameters", "", Positive()),
+      OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass); a hollow barrel's: needs -beam_profile with inner diameters or a hollow -bat_length bat", "", Positive()),
       OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
     },
   };
@@ -266,6 +268,20 @@ PetscErrorCode SectionPlausibility(MPI_Comm comm, const char *option, const Beam
   PetscFunctionReturn(0);
 }
 
+// Scales only (default windows, frequency unit): the mean EI and mu over the length of a profile or table.
+PetscErrorCode SectionScales(BeamParams *p)
+{
+  const PetscInt n  = 4096;
+  PetscReal      EI = 0, mu = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < n; ++k) {
+    const SectionProperties q = SectionAt(p->section, (k + 0.5) * p->length / n);
+    EI += q.EI / n, mu += q.mu / n;
+  }
+  p->EI = EI, p->mu = mu;
+  PetscFunctionReturn(0);
+}
+
 // -beam_profile or -beam_properties: the rows, the length, and mean EI and mass per length.
 PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, BeamParams *p)
 {
@@ -302,14 +318,52 @@ PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, Bea
   }
   p->length = SectionLength(s);
   PetscCall(SectionPlausibility(comm, option, s, p->length));
-  // Scales only (default windows, frequency unit): the mean EI and mu over the length.
-  const PetscInt n  = 4096;
-  PetscReal      EI = 0, mu = 0;
-  for (PetscInt k = 0; k < n; ++k) {
-    const SectionProperties q = SectionAt(s, (k + 0.5) * p->length / n);
-    EI += q.EI / n, mu += q.mu / n;
-  }
-  p->EI = EI, p->mu = mu;
+  PetscCall(SectionScales(p));
+  PetscFunctionReturn(0);
+}
+
+// -bat_length: the profile of a bat by its maker's numbers (model/bat_maker.hpp), hollow with
+// -barrel_wall_thickness, in the material of -beam_youngs_modulus and -beam_density.
+PetscErrorCode BeamSectionFromMaker(MPI_Comm comm, const BeamOptionValues &o, BeamParams *p)
+{
+  BeamSection   &s = p->section;
+  BatMakerParams b;
+  std::string    why;
+  PetscFunctionBeginUser;
+  const char *other = o.setprofile ? "-beam_profile" : o.setproperties ? "-beam_properties" : UniformOptionGiven(o);
+  PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "-bat_length (a bat by its maker's numbers) fixes the beam's length and sections: do not also give %s", other);
+  PetscCheck(o.setE && o.setrho, comm, PETSC_ERR_ARG_WRONG, "-bat_length (a bat by its maker's numbers) needs the material: give -beam_youngs_modulus (Pa) and -beam_density (kg/m^3)");
+  PetscCall(BatMakerParamsFromOptions(comm, o.setwall ? o.wall : 0, &b));
+  PetscCheck(BatMakerProfile(b, o.rho, &s.profile, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "the bat's maker's numbers describe no bat: %s", why.c_str());
+  s.source     = SectionSource::Profile;
+  s.file       = "(the bat maker's numbers: -bat_*)";
+  s.material.E = o.E, s.material.rho = o.rho, s.material.G = o.G, s.material.nu = o.nu, s.material.kappa = o.kappa;
+  PetscCall(SectionRowsCheck(comm, "-bat_length", s));
+  p->input.youngs_modulus = o.E;
+  p->input.density        = o.rho;
+  p->input.parameter_set  = "profile";
+  p->length               = SectionLength(s);
+  PetscCall(SectionPlausibility(comm, "-bat_length", s, p->length));
+  PetscCall(SectionScales(p));
+  PetscFunctionReturn(0);
+}
+
+// -racket_length: the frame's table of a racket by its maker's numbers (model/racket_maker.hpp),
+// strung with the bed the options give (the head's outline the maker's). Called after the bed is read.
+PetscErrorCode BeamSectionFromRacket(MPI_Comm comm, const BeamOptionValues &o, const RacketMakerParams &r, BeamParams *p)
+{
+  BeamSection &s = p->section;
+  std::string  why;
+  PetscFunctionBeginUser;
+  PetscCheck(RacketMakerTable(r, p->strings.On() ? &p->strings : nullptr, &s.table, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "the racket's maker's numbers describe no racket: %s", why.c_str());
+  s.source            = SectionSource::Table;
+  s.file              = "(the racket maker's numbers: -racket_*)";
+  s.table_has_shear   = true;
+  s.table_has_torsion = true;
+  (void)o;
+  p->input.parameter_set = "table";
+  p->length              = SectionLength(s);
+  PetscCall(SectionScales(p));
   PetscFunctionReturn(0);
 }
 
@@ -465,7 +519,7 @@ PetscErrorCode TorsionCheck(MPI_Comm comm, const BeamParams &p)
 // A racket's string bed (-strings_frame, read only when given): held, the frame is the head's
 // outline held still (a beam of the head's length on the bed's columns, clamped everywhere); beam,
 // the beam is the frame, its head inside the beam and rolling with it.
-PetscErrorCode StringBedOnFrame(MPI_Comm comm, BeamParams *p)
+PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, BeamParams *p)
 {
   PetscBool given;
   PetscFunctionBeginUser;
@@ -474,6 +528,14 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, BeamParams *p)
   PetscCall(StringBedParamsFromOptions(comm, &p->strings));
   StringBedParams &s = p->strings;
   if (!s.On()) PetscFunctionReturn(0);
+  if (racket) { // the maker's head
+    for (const char *o : {"-head_length", "-head_width", "-head_center"}) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(NULL, NULL, o, &set));
+      PetscCheck(!set, comm, PETSC_ERR_ARG_INCOMP, "%s with -racket_length is not allowed: the racket's maker's numbers place the head (-racket_head_size, -racket_head_aspect, -racket_head_margin)", o);
+    }
+    RacketMakerHead(*racket, &s);
+  }
   PetscCheck(!p->shell.on && !p->hoop.on, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame %s with a barrel wall (%s) is not allowed: a racket has no barrel", s.frame.c_str(), p->shell.on ? "-beam_shell" : "-barrel_hoop_frequency");
   if (s.Held()) {
     PetscCheck(!p->grip.on && !p->has_pivot, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame held holds the whole frame: %s has nothing to hold", p->grip.on ? "-grip" : "-beam_pivot");
@@ -501,11 +563,27 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
 {
   BeamOptionValues o;
   PetscFunctionBeginUser;
+  PetscBool         maker = PETSC_FALSE, racket_on = PETSC_FALSE;
+  RacketMakerParams racket;
   PetscCall(BeamOptionsRead(comm, p, &o));
-  if (o.setprofile || o.setproperties) PetscCall(BeamSectionFromFile(comm, o, p));
+  PetscCall(BatMakerRequested(comm, &maker));
+  PetscCall(RacketMakerRequested(comm, &racket_on));
+  PetscCheck(!(maker && racket_on), comm, PETSC_ERR_ARG_INCOMP, "-bat_length and -racket_length both describe the beam: give one");
+  if (racket_on) {
+    const char *other = o.setprofile ? "-beam_profile" : o.setproperties ? "-beam_properties" : UniformOptionGiven(o);
+    PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "-racket_length (a racket by its maker's numbers) fixes the frame's length and sections: do not also give %s", other);
+    PetscCall(RacketMakerParamsFromOptions(comm, &racket));
+    p->length = racket.length;
+    p->EI = racket.frame_stiffness, p->mu = racket.mass / racket.length; // until the table is made
+  } else if (maker) PetscCall(BeamSectionFromMaker(comm, o, p));
+  else if (o.setprofile || o.setproperties) PetscCall(BeamSectionFromFile(comm, o, p));
   else PetscCall(BeamUniformSection(comm, o, p));
-  PetscCall(TimoshenkoCheck(comm, o, *p));
-  PetscCall(StringBedOnFrame(comm, p));
+  if (!racket_on) PetscCall(TimoshenkoCheck(comm, o, *p));
+  PetscCall(StringBedOnFrame(comm, racket_on ? &racket : nullptr, p));
+  if (racket_on && !p->strings.Held()) { // a held bed has no frame
+    PetscCall(BeamSectionFromRacket(comm, o, racket, p));
+    PetscCall(TimoshenkoCheck(comm, o, *p));
+  }
   PetscCall(TorsionCheck(comm, *p));
   PetscCall(BeamParamsCheck(comm, *p));
   if (p->has_pivot) { // the pivot sits on a node: say where when that moves it

@@ -16,10 +16,15 @@ const OptionModule &SwingOptionTable()
 {
   static const OptionModule m = {
     "bat",
-    "Swinging bat: its rigid motion toward the ball before the impact",
+    "Swinging bat: its rigid motion toward the ball before the impact (given, or the batter's swing law of the bat's moment of inertia)",
     {
       OptionReal("-bat_speed", "m/s", "Centre-of-mass speed V_cm of the bat toward the ball", "0"),
       OptionReal("-bat_angular_velocity", "rad/s", "Angular velocity Omega about the centre of mass (> 0: the x = L end moves faster toward the ball)", "0"),
+      OptionReal("-bat_swing_angular_velocity", "rad/s", "The batter's swing as a law instead of -bat_speed/-bat_angular_velocity: the bat turns at omega_0 about -bat_swing_pivot, both scaled by (I_s/I_0)^(-n) (Cross & Bower 2006)", ""),
+      OptionNeeds(OptionReal("-bat_swing_pivot", "m", "The point x_s the swing turns about (the hands), from x = 0; I_s is the bat's moment of inertia about it", "0", NonNegative()), {"-bat_swing_angular_velocity"}),
+      OptionNeeds(OptionReal("-bat_swing_pivot_speed", "m/s", "The speed v_s of the point x_s toward the ball (at I_0)", "0"), {"-bat_swing_angular_velocity"}),
+      OptionNeeds(OptionReal("-bat_swing_exponent", "1", "n of the swing speed's law V = V_0 (I_s/I_0)^(-n) (Cross & Bower 2006: 0.25 softball bats, 0.26 golf clubs, 0.27 rods and rackets)", "0.26", Between(0, 2)), {"-bat_swing_reference_inertia"}),
+      OptionNeeds(OptionReal("-bat_swing_reference_inertia", "kg m^2", "I_0: the moment of inertia about x_s at which the batter swings at omega_0 (default: none, the swing does not depend on the bat)", "", Positive()), {"-bat_swing_angular_velocity"}),
     },
   };
   return m;
@@ -27,15 +32,29 @@ const OptionModule &SwingOptionTable()
 
 namespace {
 
-// -bat_speed, -bat_angular_velocity: a swinging bat, free at both ends.
+// -bat_speed, -bat_angular_velocity (or the swing's law, -bat_swing_*: the rigid motion from the
+// bat's moment of inertia, model/swing.hpp): a swinging bat, free at both ends.
 PetscErrorCode SwingFromOptions(MPI_Comm comm, const BeamParams &beam, SwingParams *s)
 {
   const OptionModule &T = SwingOptionTable();
+  SwingLaw            law;
+  PetscBool           setlaw = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_speed", &s->bat_speed, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_angular_velocity", &s->bat_angular_velocity, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_angular_velocity", &law.angular_velocity, &setlaw));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_pivot", &law.pivot, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_pivot_speed", &law.pivot_speed, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_exponent", &law.exponent, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_reference_inertia", &law.reference_inertia, NULL));
   PetscOptionsEnd();
+  if (setlaw) {
+    PetscCheck(!s->Swings(), comm, PETSC_ERR_ARG_INCOMP, "-bat_swing_angular_velocity with %s is not allowed: the swing is either the law's or the bat's own rigid motion", s->bat_speed != 0 ? "-bat_speed" : "-bat_angular_velocity");
+    PetscCheck(law.pivot < beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_swing_pivot %g is not allowed: the swing turns about a point of the bat, 0 <= x_s < L = %g (m)", (double)law.pivot, (double)beam.length);
+    law.on = true;
+    *s     = SwingFromLaw(law, BeamRigidBodyOf(beam));
+  }
   if (s->Swings()) {
     const char *held = beam.left.Holds() != NodeHold::None ? "-beam_left" : beam.right.Holds() != NodeHold::None ? "-beam_right" : beam.has_clamp ? "-beam_clamp" : beam.has_pivot ? "-beam_pivot" : nullptr;
     PetscCheck(!held, comm, PETSC_ERR_ARG_INCOMP, "-bat_speed/-bat_angular_velocity swing a free bat: %s holds it (remove it, or do not swing)", held);

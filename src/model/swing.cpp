@@ -1,9 +1,32 @@
 // A swinging bat and a pivoted rig as rigid bodies. See swing.hpp.
 #include "model/swing.hpp"
 
+#include <cmath>
+
 namespace beamimpact {
 
 PetscReal SwingSpeedAt(const SwingParams &s, const BeamRigidBody &body, PetscReal x) { return s.bat_speed + s.bat_angular_velocity * (x - body.x_cm); }
+
+PetscReal SwingLawInertia(const SwingLaw &law, const BeamRigidBody &body)
+{
+  const PetscReal d = body.x_cm - law.pivot;
+  return body.inertia_cm + body.mass * d * d;
+}
+
+PetscReal SwingLawFactor(const SwingLaw &law, const BeamRigidBody &body)
+{
+  if (!(law.reference_inertia > 0)) return 1;
+  return std::pow(SwingLawInertia(law, body) / law.reference_inertia, -law.exponent);
+}
+
+SwingParams SwingFromLaw(const SwingLaw &law, const BeamRigidBody &body)
+{
+  const PetscReal s = SwingLawFactor(law, body);
+  SwingParams     p;
+  p.bat_angular_velocity = s * law.angular_velocity;
+  p.bat_speed            = s * (law.pivot_speed + law.angular_velocity * (body.x_cm - law.pivot));
+  return p;
+}
 
 PetscReal SwingCollisionEfficiency(PetscReal bbs, PetscReal v_ball, PetscReal V_x) { return (bbs - V_x) / (v_ball + V_x); }
 

@@ -23,6 +23,29 @@ struct SwingParams {
   bool      Swings() const { return bat_speed != 0 || bat_angular_velocity != 0; }
 };
 
+// The batter's swing as a law (MODEL.md section 14; Cross & Bower, J. Sports Sci. 24 (2006) 23-30:
+// the speed at which a batter swings an implement of swing-weight I falls as V = C I^(-n), n = 0.27
+// for their rods above 0.03 kg m^2, 0.25 for softball bats, 0.26 for golf clubs): the bat turns at
+// omega about the point x_s (the hands) moving at v_s, both scaled by (I_s/I_0)^(-n) with I_s the
+// bat's moment of inertia about x_s,
+//
+//   V(x) = s (v_s + omega_0 (x - x_s)),   s = (I_s / I_0)^(-n)   (s = 1 without I_0),
+//
+// so a heavier (or barrel-heavier) bat is swung slower. As a free bat's rigid motion: Omega = s
+// omega_0 and V_cm = V(x_cm).
+struct SwingLaw {
+  bool      on                = false; // the law gives the swing (-bat_swing_angular_velocity given)
+  PetscReal pivot             = 0;     // m, x_s from x = 0
+  PetscReal pivot_speed       = 0;     // m/s, v_s toward the ball
+  PetscReal angular_velocity  = 0;     // rad/s, omega_0 (at I_0)
+  PetscReal exponent          = 0.26;  // n (1)
+  PetscReal reference_inertia = 0;     // kg m^2, I_0 about x_s (0: no dependence, s = 1)
+};
+// I_s of a body about x_s (kg m^2) and the factor s (1).
+PetscReal   SwingLawInertia(const SwingLaw &law, const BeamRigidBody &body);
+PetscReal   SwingLawFactor(const SwingLaw &law, const BeamRigidBody &body);
+SwingParams SwingFromLaw(const SwingLaw &law, const BeamRigidBody &body);
+
 // The bat's speed toward the ball at x (m/s).
 PetscReal SwingSpeedAt(const SwingParams &s, const BeamRigidBody &body, PetscReal x);
 

@@ -201,7 +201,7 @@ bool FitParseParameters(const std::string &text, std::vector<FitParameter> *para
         *why = p.name + "'s start '" + Trim(r[2]) + "' is not a number within its bounds " + Trim(r[0]) + ":" + Trim(r[1]);
         return false;
       }
-      p.start_from = "given in -fit_parameters";
+      p.start_from = "given as NAME=LO:HI:START";
     } else if (!ParameterStart(&p, why)) {
       *why = p.name + ": " + *why;
       return false;

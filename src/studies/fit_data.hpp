@@ -53,7 +53,7 @@ struct FitParameter {
   std::string unit;         // of its values ("" when not known)
   PetscReal   lo = 0, hi = 0; // the bounds (the option's unit)
   PetscReal   start = 0;    // the start: NAME=LO:HI:START, else the option's given value, else the middle
-  std::string start_from;   // "given in -fit_parameters", "the option's value", "the middle of the bounds"
+  std::string start_from;   // "given as NAME=LO:HI:START", "the option's value", "the middle of the bounds"
   bool        log = false;  // log-scaled
 
   PetscReal ToInternal(PetscReal p) const; // u of p

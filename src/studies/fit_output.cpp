@@ -1,6 +1,7 @@
 // -task fit's outputs: the summary, the results file (/fit and the case batch's rows) and the
 // fitted values as an options file. See fit_problem.hpp; the layout is in docs/fit.md.
 #include "studies/fit_problem.hpp"
+#include "studies/study_common.hpp"
 
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
@@ -80,33 +81,6 @@ std::string OptionsText(const FitProblem &f, const FitResult &res, const std::st
   for (const std::string &w : Warnings(f, res)) o << "# " << w << "\n";
   for (size_t j = 0; j < f.n(); ++j) o << Fmt("-%s %.17g\n", f.params[j].name.c_str(), res.p[j]);
   return o.str();
-}
-
-// Rank 0: text put at path whole or not at all (a temporary file beside it, fsync'ed, renamed).
-PetscErrorCode WriteAtomically(const std::string &path, const std::string &text)
-{
-  std::string tmp = path + ".XXXXXX";
-  PetscFunctionBeginUser;
-  std::vector<char> name(tmp.begin(), tmp.end());
-  name.push_back('\0');
-  const int fd = ::mkstemp(name.data());
-  PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-fit_options_output %s: cannot create a file beside it (%s)", path.c_str(), std::strerror(errno));
-  tmp          = name.data();
-  size_t done  = 0;
-  bool   ok    = true;
-  while (ok && done < text.size()) {
-    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
-    if (w < 0 && errno == EINTR) continue;
-    ok = w > 0;
-    if (ok) done += (size_t)w;
-  }
-  ok = ok && ::fchmod(fd, 0644) == 0 && ::fsync(fd) == 0;
-  ok = (::close(fd) == 0) && ok;
-  if (ok) ok = ::rename(tmp.c_str(), path.c_str()) == 0;
-  const int err = errno;
-  if (!ok) ::unlink(tmp.c_str());
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-fit_options_output %s: writing it failed (%s); a file there is as it was", path.c_str(), std::strerror(err));
-  PetscFunctionReturn(0);
 }
 
 // /fit's datasets (rank 0).
@@ -223,40 +197,12 @@ PetscErrorCode FitRecord(const FitProblem &f, const FitResult &res, RunRecord *r
   PetscFunctionReturn(0);
 }
 
-// An existing file at path that the fit would replace must be a fit's options file.
-PetscErrorCode CheckOptionsOutput(MPI_Comm comm, const std::string &path, const std::string &output)
-{
-  std::vector<InputFile> inputs;
-  struct stat            o, i;
-
-  PetscFunctionBeginUser;
-  if (path.empty()) PetscFunctionReturn(0);
-  PetscCheck(path != output, comm, PETSC_ERR_ARG_WRONG, "-fit_options_output %s is not allowed: it is -output too", path.c_str());
-  const size_t      slash = path.find_last_of('/');
-  const std::string dir   = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-  PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-fit_options_output %s is not allowed: the directory %s does not exist or is not writable", path.c_str(), dir.c_str());
-  if (::stat(path.c_str(), &o) != 0) PetscFunctionReturn(0);
-  PetscCheck(S_ISREG(o.st_mode), comm, PETSC_ERR_FILE_OPEN, "-fit_options_output %s is not allowed: it is not a regular file", path.c_str());
-  PetscCall(RunInputFiles(&inputs));
-  for (const InputFile &f : inputs)
-    PetscCheck(::stat(f.path.c_str(), &i) != 0 || i.st_dev != o.st_dev || i.st_ino != o.st_ino, comm, PETSC_ERR_FILE_OPEN,
-               "-fit_options_output %s is not allowed: it is an input of this run (%s %s); it would be replaced by the fitted values. Give another -fit_options_output (or -output)", path.c_str(),
-               f.option.c_str(), f.path.c_str());
-  std::ifstream in(path);
-  std::string   first;
-  std::getline(in, first);
-  PetscCheck(first.compare(0, std::strlen(kOptionsMarker), kOptionsMarker) == 0, comm, PETSC_ERR_FILE_OPEN,
-             "-fit_options_output %s is not allowed: it exists and is not an options file a fit wrote (its first line is not '%s ...'); -task fit will not replace it: give another name, or remove the file",
-             path.c_str(), kOptionsMarker);
-  PetscFunctionReturn(0);
-}
-
 } // namespace
 
 PetscErrorCode FitCheckOutputs(MPI_Comm comm, const std::string &output, const FitSettings &s)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckOptionsOutput(comm, s.options_output, output));
+  PetscCall(StudyCheckOptionsOutput(comm, s.options_output, output, "-fit_options_output", kOptionsMarker, "a fit"));
   PetscFunctionReturn(0);
 }
 
@@ -296,7 +242,7 @@ PetscErrorCode FitWriteOutputs(FitProblem &f, const FitResult &res, const std::s
   }
   const std::string &opts = f.settings.options_output;
   PetscErrorCode     ierr = 0;
-  if (!opts.empty() && f.rank == 0) ierr = WriteAtomically(opts, OptionsText(f, res, output));
+  if (!opts.empty() && f.rank == 0) ierr = StudyWriteAtomically(opts, OptionsText(f, res, output), "-fit_options_output");
   PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, f.world));
   PetscCheck(!ierr || f.rank == 0, f.world, ierr, "-fit_options_output %s could not be written", opts.c_str());
   PetscCall(ierr);

@@ -14,6 +14,7 @@
 // iterations; brgn stops when no scaled parameter moves by more than -fit_xtol or chi^2 by less
 // than -fit_ftol of itself.
 #include "studies/fit_problem.hpp"
+#include "studies/study_common.hpp"
 
 #include "base/options_util.hpp"
 #include "studies/sweep_notes.hpp"
@@ -26,55 +27,6 @@
 namespace beamimpact {
 
 namespace {
-
-// ---------------------------------------------------------------------------
-// The ranks other than 0 quiet while TAO runs
-// ---------------------------------------------------------------------------
-
-PetscErrorCode (*g_loud)(FILE *, const char[], va_list) = nullptr; // the printer to restore
-
-PetscErrorCode QuietVFPrintf(FILE *fd, const char format[], va_list ap)
-{
-  if (fd == PETSC_STDOUT) return 0;
-  return g_loud(fd, format, ap);
-}
-
-// While it lives, on a rank other than 0, PETSc's printing to stdout is dropped.
-struct QuietRanks {
-  bool on = false;
-  explicit QuietRanks(PetscMPIInt rank)
-  {
-    if (rank == 0 || g_loud) return;
-    g_loud        = PetscVFPrintf;
-    PetscVFPrintf = QuietVFPrintf;
-    on            = true;
-  }
-  ~QuietRanks()
-  {
-    if (!on) return;
-    PetscVFPrintf = g_loud;
-    g_loud        = nullptr;
-  }
-  QuietRanks(const QuietRanks &)            = delete;
-  QuietRanks &operator=(const QuietRanks &) = delete;
-};
-
-// Inside a TAO callback: the printer as it was (the cases' notes go through the sweep's filter).
-struct LoudScope {
-  PetscErrorCode (*quiet)(FILE *, const char[], va_list) = nullptr;
-  LoudScope()
-  {
-    if (!g_loud) return;
-    quiet         = PetscVFPrintf;
-    PetscVFPrintf = g_loud;
-  }
-  ~LoudScope()
-  {
-    if (quiet) PetscVFPrintf = quiet;
-  }
-  LoudScope(const LoudScope &)            = delete;
-  LoudScope &operator=(const LoudScope &) = delete;
-};
 
 std::vector<double> FromVec(Vec x)
 {

@@ -1,0 +1,42 @@
+// What the studies that drive TAO over the case batch share (-task fit, -task design): the ranks
+// other than 0 kept quiet while TAO runs redundantly on each of them, and the study's options file
+// of the optimum, written whole or not at all and never over a file it did not write.
+#pragma once
+
+#include <petscsys.h>
+
+#include <cstdarg>
+#include <cstdio>
+#include <string>
+
+namespace beamimpact {
+
+// While it lives, on a rank other than 0, PETSc's printing to stdout is dropped (TAO's monitors
+// and views would print once per rank).
+struct QuietRanks {
+  bool on = false; // this object silenced the rank
+  explicit QuietRanks(PetscMPIInt rank);
+  ~QuietRanks();
+  QuietRanks(const QuietRanks &)            = delete;
+  QuietRanks &operator=(const QuietRanks &) = delete;
+};
+
+// Inside a TAO callback: the printer as it was (the cases' notes go through the sweep's filter).
+struct LoudScope {
+  PetscErrorCode (*quiet)(FILE *, const char[], va_list) = nullptr; // the quiet printer to put back
+  LoudScope();
+  ~LoudScope();
+  LoudScope(const LoudScope &)            = delete;
+  LoudScope &operator=(const LoudScope &) = delete;
+};
+
+// Rank 0: text put at path whole or not at all (a temporary file beside it, fsync'ed, renamed);
+// errors name `option`.
+PetscErrorCode StudyWriteAtomically(const std::string &path, const std::string &text, const char *option);
+
+// Collective: path (the study's options file, "" none) may be written: not -output, its directory
+// writable, not an input of the run, and an existing file there one the study wrote (its first
+// line starts with `marker`). Errors name `option`; `who` ("a fit") says whose file it would be.
+PetscErrorCode StudyCheckOptionsOutput(MPI_Comm comm, const std::string &path, const std::string &output, const char *option, const char *marker, const char *who);
+
+} // namespace beamimpact
