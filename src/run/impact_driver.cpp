@@ -373,6 +373,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
   if (after_modal) PetscCall(FreeFlightTruncation(st.Comm(), sc, &truncation));
+  truncation.at = *ctx.g; // -modal_weight share: weighed under this load, as -ts_type modal's (one basis for both)
   rec->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
