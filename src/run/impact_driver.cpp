@@ -223,6 +223,7 @@ PetscErrorCode FreeFlightTruncation(MPI_Comm comm, const Scenario &sc, ModalTrun
   PetscFunctionBeginUser;
   PetscCall(ModalTruncationFromOptions(comm, t));
   t->contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // a ball at rest: the bat's approach
+  t->force_exponent = ContactStartExponent(sc.ball, ImpactApproachSpeed(sc));
   t->cost_warn    = sc.impact.report_setup ? sc.impact.cost_warn : 0;
   t->progress     = sc.impact.report_setup ? sc.impact.progress : 0;
   PetscFunctionReturn(0);

@@ -73,7 +73,7 @@ bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
 {
   if (ModalWeighsShare(a) != ModalWeighsShare(b)) return false;
   if (ModalWeighsShare(a)) { // the same load, tolerance and time scale
-    if (a.at.n != b.at.n || a.tolerance != b.tolerance || a.contact_time != b.contact_time || a.refine_all != b.refine_all) return false;
+    if (a.at.n != b.at.n || a.tolerance != b.tolerance || a.contact_time != b.contact_time || a.force_exponent != b.force_exponent || a.refine_all != b.refine_all) return false;
     for (PetscInt q = 0; q < a.at.n; ++q)
       if (a.at.dof[q] != b.at.dof[q] || a.at.w[q] != b.at.w[q]) return false;
     return true;
@@ -435,32 +435,54 @@ PetscErrorCode PrimalCheck(MPI_Comm comm, const BeamModes *m)
   PetscFunctionReturn(0);
 }
 
+// Share: gamma_k under the load and G (c the correction of every computed mode; of a dense basis
+// G is the sum over its modes of gamma_k^2 / w_k^2).
+void ShareGammas(const BeamModes &m, const ModalCorrection &c, std::vector<PetscReal> *gamma, PetscReal *G)
+{
+  const ModalTruncation &t = m.request;
+  const PetscInt         n = m.S.n, count = m.Count();
+  gamma->assign(count, 0.0);
+  *G = c.G;
+  for (PetscInt k = m.rigid; k < count; ++k) {
+    const PetscReal *phi = &m.B.Phi[(size_t)k * n];
+    for (PetscInt q = 0; q < t.at.n; ++q)
+      for (PetscInt d = 0; d < n; ++d) // the coupled dofs are few: found by their dof
+        if (m.S.dof[d] == t.at.dof[q]) (*gamma)[k] += t.at.w[q] * phi[d] / std::sqrt(m.S.mass[d]);
+    if (!m.truncated) *G += (*gamma)[k] * (*gamma)[k] / (m.B.omega[k] * m.B.omega[k]);
+  }
+}
+
+// Share: the error of the modes not computed (ModalTruncation's weight): their exact moment for
+// q = 2, else G_r/G (pi / (w_last T))^q; 0 for a basis of every mode.
+PetscReal ShareRest(const BeamModes &m, const ModalCorrection &c, PetscReal G)
+{
+  const ModalTruncation &t = m.request;
+  const PetscReal        q = std::min<PetscReal>(2, t.force_exponent), T = t.contact_time;
+  if (!m.truncated || !(G > 0)) return 0.0;
+  if (q >= 2) return (M_PI / T) * (M_PI / T) * c.Hr / G;
+  return c.Gr / G * std::pow(M_PI / (m.B.omega.back() * T), q);
+}
+
 // Share: the fewest of the computed modes whose left-out rest keeps the share-weighted error
-// (pi/T)^2 H_r(K) / G within the tolerance, H_r(K) = H_r + sum over the computed modes from K on
-// of gamma_k^2 / w_k^4 (c the correction of every computed mode; of a dense basis G is the sum
-// over its modes of gamma_k^2 / w_k^2 and H_r 0).
+// within the tolerance: ShareRest and the computed modes from `keep` on, each
+// (gamma_k^2 / w_k^2 / G) (pi / (w_k T))^q.
 void ShareTrim(BeamModes *m, const ModalCorrection &c)
 {
   const ModalTruncation &t = m->request;
   const PetscInt         n = m->S.n, count = m->Count();
-  std::vector<PetscReal> gamma(count, 0.0);
-  PetscReal              G = c.G, tail = c.Hr;
-  for (PetscInt k = m->rigid; k < count; ++k) {
-    const PetscReal *phi = &m->B.Phi[(size_t)k * n];
-    for (PetscInt q = 0; q < t.at.n; ++q)
-      for (PetscInt d = 0; d < n; ++d) // the coupled dofs are few: found by their dof
-        if (m->S.dof[d] == t.at.dof[q]) gamma[k] += t.at.w[q] * phi[d] / std::sqrt(m->S.mass[d]);
-    if (!m->truncated) G += gamma[k] * gamma[k] / (m->B.omega[k] * m->B.omega[k]);
-  }
-  const PetscReal allowed = t.tolerance * G * (t.contact_time / M_PI) * (t.contact_time / M_PI); // H_r at most this
-  PetscInt        keep    = count;
-  while (keep > m->rigid + 1) {
-    const PetscReal w2 = m->B.omega[keep - 1] * m->B.omega[keep - 1], more = gamma[keep - 1] * gamma[keep - 1] / (w2 * w2);
-    if (tail + more > allowed) break;
-    tail += more;
+  const PetscReal        q = std::min<PetscReal>(2, t.force_exponent), T = t.contact_time;
+  std::vector<PetscReal> gamma;
+  PetscReal              G;
+  ShareGammas(*m, c, &gamma, &G);
+  PetscReal error = ShareRest(*m, c, G);
+  PetscInt  keep  = count;
+  while (keep > m->rigid + 1 && G > 0) {
+    const PetscReal w = m->B.omega[keep - 1], more = gamma[keep - 1] * gamma[keep - 1] / (w * w * G) * std::pow(M_PI / (w * T), q);
+    if (error + more > t.tolerance) break;
+    error += more;
     keep--;
   }
-  m->share_error = G > 0 ? tail / allowed * t.tolerance : 0.0;
+  m->share_error = error;
   if (keep < count) KeepModes(m, keep);
   m->truncated = m->Count() < n;
   m->ForgetCorrections();
@@ -468,7 +490,7 @@ void ShareTrim(BeamModes *m, const ModalCorrection &c)
 
 // Share (ModalWeighsShare): the lowest modes from a partial eigen-solve, their number grown
 // from 64 until the share-weighted error of the rest under the load t.at (the static correction
-// there, ModalCorrection::ShareError) is within the tolerance, or the dense decomposition (where
+// there and ShareRest) is within the tolerance, or the dense decomposition (where
 // the time models expect it quicker); then the fewest of them that keep it (ShareTrim).
 PetscErrorCode ShareModes(MPI_Comm comm, BeamModes *m)
 {
@@ -487,10 +509,14 @@ PetscErrorCode ShareModes(MPI_Comm comm, BeamModes *m)
     m->truncated = m->Count() < n;
     ExactRigidModes(m);
     PetscCall(m->StaticCorrection(t.at, &c));
-    if (!m->truncated || c->ShareError(t.contact_time) <= t.tolerance) break;
-    PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " leave a share-weighted error %g above %g\n", m->Count(), (double)c->ShareError(t.contact_time), (double)t.tolerance));
-    m->ForgetCorrections(); // the error falls about as 1/nev^2 (the shell, the string bed): that, with a margin, at most 4 times
-    const PetscReal grow = 1.2 * std::sqrt(c->ShareError(t.contact_time) / t.tolerance);
+    std::vector<PetscReal> gamma;
+    PetscReal              G;
+    ShareGammas(*m, *c, &gamma, &G);
+    const PetscReal rest = ShareRest(*m, *c, G);
+    if (!m->truncated || rest <= t.tolerance) break;
+    PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " leave a share-weighted error %g above %g\n", m->Count(), (double)rest, (double)t.tolerance));
+    m->ForgetCorrections(); // the error falls about as 1/nev^q (the shell, the string bed): that, with a margin, at most 4 times
+    const PetscReal grow = 1.2 * std::pow(rest / t.tolerance, 1 / std::min<PetscReal>(2, t.force_exponent));
     nev                  = std::min<PetscInt>(n, (PetscInt)(nev * std::min<PetscReal>(4, std::max<PetscReal>(1.5, grow))));
   }
   ShareTrim(m, *c);
@@ -793,13 +819,16 @@ std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
   std::snprintf(buf, sizeof buf, "modal engine: %d of %d modes (cut-off %s, -modal_modes %s, -modal_tolerance %g; %s, %.3g s)", (int)m.Count(), (int)m.S.n, cut, ModalModesText(m.request).c_str(),
                 (double)m.request.tolerance, m.method.c_str(), m.build_seconds);
   std::string s = buf;
+  if (m.share_error >= 0) {
+    std::snprintf(buf, sizeof buf, ", share-weighted error %.3g (force exponent %.3g)", (double)m.share_error, (double)m.request.force_exponent);
+    s += buf;
+  }
   if (m.B.by_need) { // refined by need (a wide band: ModalRefinesEveryMode)
     std::snprintf(buf, sizeof buf, ", %d modes refined (residual above %g)", (int)m.B.refined, (double)ModalRefineResidual());
     s += buf;
   }
   if (c && m.truncated) {
-    std::snprintf(buf, sizeof buf, ", static correction G_r = %.4g m/N (G_r/G = %.3g, share-weighted error %.3g)", (double)c->Gr, (double)(c->G > 0 ? c->Gr / c->G : 0.0),
-                  (double)c->ShareError(m.request.contact_time));
+    std::snprintf(buf, sizeof buf, ", static correction G_r = %.4g m/N (G_r/G = %.3g)", (double)c->Gr, (double)(c->G > 0 ? c->Gr / c->G : 0.0));
     s += buf;
   }
   return s;

@@ -50,8 +50,10 @@ enum class ModalModes { All, Auto, Count };
 // How Auto chooses the modes (-modal_weight): by each mode's quasi-static error alone (Mode:
 // every mode below the cut-off kept), or by that error weighed with the mode's share of the
 // flexibility under the ball's load (Share: the fewest lowest modes whose left-out rest has a
-// share-weighted error (pi/T)^2 H_r/G at most the tolerance, ModalCorrection::ShareError; at
-// the coupling `at`, which the impact's callers set; without it, Mode).
+// share-weighted error e = sum_k (gamma_k^2 / w_k^2 / G) (pi / (w_k T))^q, q = min(p, 2) from the
+// force's start F ~ c^p, at most the tolerance; under the coupling `at`, which the impact's
+// callers set; without it, Mode). The modes not computed enter e by their exact moment H_r
+// (q = 2: (pi/T)^2 H_r / G) or bounded by G_r/G (pi / (w_last T))^q (q < 2).
 enum class ModalWeight { Mode, Share };
 struct ModalTruncation {
   ModalModes modes        = ModalModes::Auto;
@@ -59,6 +61,7 @@ struct ModalTruncation {
   PetscReal  tolerance    = 1e-9; // 1: Auto, the quasi-static error allowed (per mode left out, or in all: Share)
   ModalWeight     weight  = ModalWeight::Mode; // -modal_weight
   ContactCoupling at;             // Share: the load the modes are weighed under (at.n == 0: none, Mode)
+  PetscReal  force_exponent = 2;  // 1: Share, the force's exponent at the first touch, F ~ c^p (ContactStartExponent; capped at 2)
   PetscReal  contact_time = 0;    // s: Auto, the contact's time scale T (ContactTimeScale)
   PetscReal  cost_warn    = 30;   // s: a cost line before a decomposition expected to take longer
   PetscReal  progress     = 10;   // s: a progress line this often during a partial solve (0: none)
@@ -90,9 +93,6 @@ struct ModalCorrection {
   PetscReal              Gr = 0; // m/N: its residual part, the modes left out
   std::vector<PetscReal> ur;     // m/N per free dof: the static shape of the modes left out per unit force
   PetscReal              Hr = 0; // m s^2/N: u_r^T M u_r = sum over the modes left out of gamma_k^2 / w_k^4
-  // The share-weighted quasi-static error of the modes left out at a contact of time scale T (s):
-  // sum_k (gamma_k^2 / w_k^2 / G) (pi / (w_k T))^2 = (pi/T)^2 H_r / G (ModalWeight::Share).
-  PetscReal ShareError(PetscReal T) const { return G > 0 && T > 0 ? (M_PI / T) * (M_PI / T) * Hr / G : 0.0; }
 };
 
 struct BeamModes {
@@ -104,7 +104,7 @@ struct BeamModes {
   PetscReal       cutoff    = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
   bool            truncated = false;          // fewer modes than free dofs
   std::string     method;                     // "dense", "slepc" or "slepc, factored form"
-  PetscReal       share_error = -1;           // Share: the share-weighted error of the modes left out at the point (ModalCorrection::ShareError); < 0: not weighed
+  PetscReal       share_error = -1;           // Share: the share-weighted error of the modes left out under the load (ShareTrim); < 0: not weighed
   std::shared_ptr<const BeamFactor> factor;   // the factored form the modes and the static correction came from (solvers/beam_flexibility.hpp), or null
   double          build_seconds = 0;
   PetscInt        Count() const { return (PetscInt)B.omega.size(); }
