@@ -515,9 +515,11 @@ PetscErrorCode ShareModes(MPI_Comm comm, BeamModes *m)
     const PetscReal rest = ShareRest(*m, *c, G);
     if (!m->truncated || rest <= t.tolerance) break;
     PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " leave a share-weighted error %g above %g\n", m->Count(), (double)rest, (double)t.tolerance));
-    m->ForgetCorrections(); // the error falls about as 1/nev^q (the shell, the string bed): that, with a margin, at most 4 times
+    m->ForgetCorrections(); // the error falls about as 1/nev^q (the shell, the string bed): that, with a margin, at most 4 times,
     const PetscReal grow = 1.2 * std::pow(rest / t.tolerance, 1 / std::min<PetscReal>(2, t.force_exponent));
+    const PetscInt  need = (PetscInt)std::min<PetscReal>((PetscReal)n, nev * std::max<PetscReal>(1.5, grow));
     nev                  = std::min<PetscInt>(n, (PetscInt)(nev * std::min<PetscReal>(4, std::max<PetscReal>(1.5, grow))));
+    if (!m->factor && DenseIsQuicker(m->S, need, t.refine_all)) nev = need; // or at once the dense decomposition where that many would be slower than it
   }
   ShareTrim(m, *c);
   m->method += ", share-weighted";
