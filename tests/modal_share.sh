@@ -65,4 +65,8 @@ check shell85 bbcor 1e-6 -options_file options/scenes/bbcor-shell.opts -task imp
 out=$("$exe" -options_file options/scenes/racket-strings.opts -beam_nodes 37 -modal_weight shares -output none 2>&1)
 if grep -q -- "-modal_weight" <<<"$out" && grep -q "shares" <<<"$out" && grep -q "share" <<<"$out"; then pass "-modal_weight shares refused"; else fail "-modal_weight shares: $out"; fi
 
+# -modal_weight share where -modal_modes is not auto: a note that it has no effect.
+out=$("$exe" -options_file options/scenes/racket-strings.opts -beam_nodes 37 -modal_modes all -modal_weight share -output none 2>&1)
+if grep -q "note:.*-modal_weight share (it acts only with -modal_modes auto" <<<"$out"; then pass "-modal_weight share under -modal_modes all: a note"; else fail "-modal_weight share under -modal_modes all: no note: $out"; fi
+
 [[ $fails == 0 ]] && echo "modal_share: all passed" || { echo "modal_share: $fails failed"; exit 1; }
