@@ -10,12 +10,20 @@
 #   map         the face map (110 points, 98 on the face) with -ts_type modal, the sweep's own
 #               "computed N points in T s" (the modes once, every point on them)
 # and writes a PNG (time against free dofs, log-log) when a Python with matplotlib is found.
+# Then the two routes of the modal engine in the same run (issue 39), one impact each, -ts_type
+# modal at the same step: the dense decomposition of every mode (-modal_modes all) and
+# -modal_weight share at -modal_tolerance BENCH_SHARE_TOL (the modes from a partial eigen-solve
+# weighed under the ball's load; docs/model.md section 12): wall times, the modes kept and the
+# ACOR difference, for the racket at each N and the shelled bat in the rig at one point
+# (options/scenes/bbcor-shell.opts at 66 cm: its BBCOR difference).
 #
 #   scripts/bench_racket.sh [path/to/beamimpact]
 # Environment:
 #   BENCH_NODES   frame nodes (default "37 73 145")
 #   BENCH_MAP     0: skip the face map (default 1)
 #   BENCH_PNG     the figure's path (default out/bench-racket.png; "" for none)
+#   BENCH_ROUTES  0: skip the dense-against-share table (default 1)
+#   BENCH_SHARE_TOL  -modal_tolerance of the share route (default 1e-6)
 # Prints `uptime` first: the machine's load makes single runs noisy.
 set -euo pipefail
 
@@ -57,6 +65,27 @@ for n in $nodes; do
   printf "%6s %8s %12s %12s %12s %10s\n" "$n" "$dofs" "$tm" "$tc" "$tmap" "$rate"
   rows+="$n $dofs $tm $tc $tmap"$'\n'
 done
+
+# key FILE NAME: a result of the impact's file, all its digits
+key() { /usr/bin/python3 -c "import h5py; print(repr(float(h5py.File('$1')['results']['$2'][()])))"; }
+routes() { # routes LABEL KEY OPTIONS...: the dense route and the share route, one row
+  local label=$1 k=$2; shift 2
+  local td ts kd ks ad as
+  td=$(wall "$exe" "$@" -ts_type modal -modal_modes all -output "$tmp/dense.h5")
+  kd=$(sed -nE 's/.*modes ([0-9]+\/[0-9]+).*/\1/p' "$tmp/log" | tail -1)
+  ts=$(wall "$exe" "$@" -ts_type modal -modal_weight share -modal_tolerance "$tol" -output "$tmp/share.h5")
+  ks=$(sed -nE 's/.*modes ([0-9]+\/[0-9]+).*/\1/p' "$tmp/log" | tail -1)
+  ad=$(key "$tmp/dense.h5" "$k") as=$(key "$tmp/share.h5" "$k")
+  printf "%-22s %10s %10s %12s %12s %-6s %.3e\n" "$label" "$td" "$ts" "$kd" "$ks" "$k" "$(awk -v a="$ad" -v b="$as" 'BEGIN { d = b - a; print d < 0 ? -d : d }')"
+}
+if [[ ${BENCH_ROUTES:-1} != 0 ]]; then
+  tol=${BENCH_SHARE_TOL:-1e-6}
+  echo "the modal engine's routes: dense (-modal_modes all) and -modal_weight share -modal_tolerance $tol"
+  uptime
+  printf "%-22s %10s %10s %12s %12s %-6s %s\n" case "dense (s)" "share (s)" "dense modes" "share modes" key "|difference|"
+  for n in $nodes; do routes "racket N = $n" acor "${base[@]}" -beam_nodes "$n"; done
+  routes "shelled bat, 66 cm" bbcor -options_file options/scenes/bbcor-shell.opts -task impact -impact_x 0.66
+fi
 
 [[ -n $png ]] || exit 0
 py=""

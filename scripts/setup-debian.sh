@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages beamimpact needs, as root or with sudo.
 # Safe to run again: it installs only what is missing (no apt-get update otherwise).
+# libopenblas0: Debian's optimised BLAS/LAPACK, chosen by update-alternatives over the reference
+# libblas3/liblapack3 that PETSc links (the dense decompositions of the modal engine: README, "Performance").
 set -euo pipefail
 pkgs=(cmake g++ make pkg-config
       libpetsc-real-dev libslepc-real-dev libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
-      liblapack-dev libgsl-dev libgtest-dev hdf5-tools python3-numpy python3-matplotlib python3-h5py
+      liblapack-dev libopenblas0 libgsl-dev libgtest-dev hdf5-tools python3-numpy python3-matplotlib python3-h5py
       python3-scipy  # scipy: only the independent references in scripts/references/
       python3-xarray python3-h5netcdf)  # the results files as xarray datasets (tests/fields.sh)
 missing=()

@@ -1,6 +1,8 @@
 // The contact facade: each function asks the ball's law. See contact.hpp.
 #include "model/contact.hpp"
 
+#include <cmath>
+
 namespace beamimpact {
 
 PetscReal ContactForce(const BallParams &b, const ContactState &s, PetscReal c) { return s.phase == ContactPhase::Separated ? 0.0 : b.law->Force(b, s, c); }
@@ -35,6 +37,16 @@ PetscReal ContactTimeScale(const BallParams &b, PetscReal approach)
   return at.law->TimeScale(at);
 }
 PetscReal ContactCompressionScale(const BallParams &b) { return b.law->CompressionScale(b); }
+PetscReal ContactStartExponent(const BallParams &b, PetscReal approach)
+{
+  BallParams at = b;
+  if (approach > 0) at.speed = approach;
+  ContactState    s;
+  const PetscReal c = 1e-6 * at.law->CompressionScale(at);
+  at.law->Begin(at, &s, at.speed);
+  const PetscReal f1 = at.law->Force(at, s, c), f2 = at.law->Force(at, s, 2 * c);
+  return f1 > 0 && f2 > 0 ? std::log2(f2 / f1) : 1.0;
+}
 PetscReal ContactStiffnessBound(const BallParams &b) { return b.law->StiffnessBound(b); }
 
 PetscReal BallCorAt(const BallParams &b, PetscReal v) { return b.law->WallCor(b, v); }

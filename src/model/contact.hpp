@@ -56,6 +56,11 @@ PetscReal ContactTimeScale(const BallParams &b);
 PetscReal ContactTimeScale(const BallParams &b, PetscReal approach);
 PetscReal ContactCompressionScale(const BallParams &b);
 PetscReal ContactStiffnessBound(const BallParams &b);
+// The exponent p of the force at the first touch, F ~ c^p (1 for the linear law and a hysteretic
+// law of -ball_m 1, 1.5 for Hertz), measured on the loading branch at 1e-6 and 2e-6 of the
+// compression scale (approach: as ContactTimeScale). The modal engine's share weight
+// (solvers/beam_modes.hpp): a mode left out responds to the force's start by (pi/(w T))^min(p, 2).
+PetscReal ContactStartExponent(const BallParams &b, PetscReal approach);
 
 // Closed forms on a rigid, fixed wall, arriving at speed v (m/s): the coefficient of
 // restitution (the table's with -ball_cor_table), the maximum compression (m), the loading and

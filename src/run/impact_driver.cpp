@@ -223,6 +223,7 @@ PetscErrorCode FreeFlightTruncation(MPI_Comm comm, const Scenario &sc, ModalTrun
   PetscFunctionBeginUser;
   PetscCall(ModalTruncationFromOptions(comm, t));
   t->contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // a ball at rest: the bat's approach
+  t->force_exponent = ContactStartExponent(sc.ball, ImpactApproachSpeed(sc));
   t->cost_warn    = sc.impact.report_setup ? sc.impact.cost_warn : 0;
   t->progress     = sc.impact.report_setup ? sc.impact.progress : 0;
   PetscFunctionReturn(0);
@@ -373,6 +374,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
   if (after_modal) PetscCall(FreeFlightTruncation(st.Comm(), sc, &truncation));
+  truncation.at = *ctx.g; // -modal_weight share: weighed under this load, as -ts_type modal's (one basis for both)
   rec->after_used = after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;

@@ -71,6 +71,13 @@ void ExactRigidModes(BeamModes *m)
 // The truncation as it decides the basis: the kind, the count, the cut-off.
 bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
 {
+  if (ModalWeighsShare(a) != ModalWeighsShare(b)) return false;
+  if (ModalWeighsShare(a)) { // the same load, tolerance and time scale
+    if (a.at.n != b.at.n || a.tolerance != b.tolerance || a.contact_time != b.contact_time || a.force_exponent != b.force_exponent || a.refine_all != b.refine_all) return false;
+    for (PetscInt q = 0; q < a.at.n; ++q)
+      if (a.at.dof[q] != b.at.dof[q] || a.at.w[q] != b.at.w[q]) return false;
+    return true;
+  }
   return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) && (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff()) && a.refine_all == b.refine_all;
 }
 
@@ -428,6 +435,97 @@ PetscErrorCode PrimalCheck(MPI_Comm comm, const BeamModes *m)
   PetscFunctionReturn(0);
 }
 
+// Share: gamma_k under the load and G (c the correction of every computed mode; of a dense basis
+// G is the sum over its modes of gamma_k^2 / w_k^2).
+void ShareGammas(const BeamModes &m, const ModalCorrection &c, std::vector<PetscReal> *gamma, PetscReal *G)
+{
+  const ModalTruncation &t = m.request;
+  const PetscInt         n = m.S.n, count = m.Count();
+  gamma->assign(count, 0.0);
+  *G = c.G;
+  for (PetscInt k = m.rigid; k < count; ++k) {
+    const PetscReal *phi = &m.B.Phi[(size_t)k * n];
+    for (PetscInt q = 0; q < t.at.n; ++q)
+      for (PetscInt d = 0; d < n; ++d) // the coupled dofs are few: found by their dof
+        if (m.S.dof[d] == t.at.dof[q]) (*gamma)[k] += t.at.w[q] * phi[d] / std::sqrt(m.S.mass[d]);
+    if (!m.truncated) *G += (*gamma)[k] * (*gamma)[k] / (m.B.omega[k] * m.B.omega[k]);
+  }
+}
+
+// Share: the error of the modes not computed (ModalTruncation's weight): their exact moment for
+// q = 2, else G_r/G (pi / (w_last T))^q; 0 for a basis of every mode.
+PetscReal ShareRest(const BeamModes &m, const ModalCorrection &c, PetscReal G)
+{
+  const ModalTruncation &t = m.request;
+  const PetscReal        q = std::min<PetscReal>(2, t.force_exponent), T = t.contact_time;
+  if (!m.truncated || !(G > 0)) return 0.0;
+  if (q >= 2) return (M_PI / T) * (M_PI / T) * c.Hr / G;
+  return c.Gr / G * std::pow(M_PI / (m.B.omega.back() * T), q);
+}
+
+// Share: the fewest of the computed modes whose left-out rest keeps the share-weighted error
+// within the tolerance: ShareRest and the computed modes from `keep` on, each
+// (gamma_k^2 / w_k^2 / G) (pi / (w_k T))^q.
+void ShareTrim(BeamModes *m, const ModalCorrection &c)
+{
+  const ModalTruncation &t = m->request;
+  const PetscInt         n = m->S.n, count = m->Count();
+  const PetscReal        q = std::min<PetscReal>(2, t.force_exponent), T = t.contact_time;
+  std::vector<PetscReal> gamma;
+  PetscReal              G;
+  ShareGammas(*m, c, &gamma, &G);
+  PetscReal error = ShareRest(*m, c, G);
+  PetscInt  keep  = count;
+  while (keep > m->rigid + 1 && G > 0) {
+    const PetscReal w = m->B.omega[keep - 1], more = gamma[keep - 1] * gamma[keep - 1] / (w * w * G) * std::pow(M_PI / (w * T), q);
+    if (error + more > t.tolerance) break;
+    error += more;
+    keep--;
+  }
+  m->share_error = error;
+  if (keep < count) KeepModes(m, keep);
+  m->truncated = m->Count() < n;
+  m->ForgetCorrections();
+}
+
+// Share (ModalWeighsShare): the lowest modes from a partial eigen-solve, their number grown
+// from 64 until the share-weighted error of the rest under the load t.at (the static correction
+// there and ShareRest) is within the tolerance, or the dense decomposition (where
+// the time models expect it quicker); then the fewest of them that keep it (ShareTrim).
+PetscErrorCode ShareModes(MPI_Comm comm, BeamModes *m)
+{
+  const ModalTruncation &t   = m->request;
+  const PetscInt         n   = m->S.n;
+  PetscInt               nev = std::min<PetscInt>(n, 64);
+  const ModalCorrection *c   = nullptr;
+
+  PetscFunctionBeginUser;
+  m->factor = FactoredFormFor(m->sys);
+  if (!m->factor) PetscCall(PrimalCheck(comm, m));
+  for (;;) {
+    if (!m->factor && DenseIsQuicker(m->S, nev, t.refine_all)) PetscCall(DenseModes(comm, m, "-modal_weight share: the modes the load needs are more than the partial solve's time model allows"));
+    else if (m->factor) PetscCall(FactoredModes(comm, m, nev, PETSC_INFINITY));
+    else PetscCall(TruncatedModes(comm, m, nev, PETSC_INFINITY));
+    m->truncated = m->Count() < n;
+    ExactRigidModes(m);
+    PetscCall(m->StaticCorrection(t.at, &c));
+    std::vector<PetscReal> gamma;
+    PetscReal              G;
+    ShareGammas(*m, *c, &gamma, &G);
+    const PetscReal rest = ShareRest(*m, *c, G);
+    if (!m->truncated || rest <= t.tolerance) break;
+    PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " leave a share-weighted error %g above %g\n", m->Count(), (double)rest, (double)t.tolerance));
+    m->ForgetCorrections(); // the error falls about as 1/nev^q (the shell, the string bed): that, with a margin, at most 4 times,
+    const PetscReal grow = 1.2 * std::pow(rest / t.tolerance, 1 / std::min<PetscReal>(2, t.force_exponent));
+    const PetscInt  need = (PetscInt)std::min<PetscReal>((PetscReal)n, nev * std::max<PetscReal>(1.5, grow));
+    nev                  = std::min<PetscInt>(n, (PetscInt)(nev * std::min<PetscReal>(4, std::max<PetscReal>(1.5, grow))));
+    if (!m->factor && DenseIsQuicker(m->S, need, t.refine_all)) nev = need; // or at once the dense decomposition where that many would be slower than it
+  }
+  ShareTrim(m, *c);
+  m->method += ", share-weighted";
+  PetscFunctionReturn(0);
+}
+
 // The basis the request asks for (All: dense; Auto below every mode's bound: dense too); a
 // truncated one from the factored form where FactoredFormFor gives one, else the primal path.
 PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
@@ -439,6 +537,10 @@ PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
   const bool             dense = t.modes == ModalModes::All || (t.modes == ModalModes::Count && t.count >= n) || (t.modes == ModalModes::Auto && !(wc < wmax)); // every mode is below the cut-off: all of them, exactly
 
   PetscFunctionBeginUser;
+  if (ModalWeighsShare(t)) {
+    PetscCall(ShareModes(comm, m));
+    PetscFunctionReturn(0);
+  }
   m->cutoff = t.modes == ModalModes::Auto && !dense ? wc : PETSC_INFINITY;
   m->factor = dense ? nullptr : FactoredFormFor(m->sys);
   if (!m->factor) PetscCall(PrimalCheck(comm, m));
@@ -530,50 +632,77 @@ namespace beamimpact {
 
 namespace {
 
-// u = K^+ f on the free dofs for each load f of fs (self-equilibrated; sup the temporary
-// supports): banded Cholesky of K with the supports' rows and columns replaced by the identity
-// (factored once for all the loads), and two corrections by the residual in the factored form of
-// K (BeamSystemStiffnessApply), whose round-off is relative to K u, not to |K| |u| as the band's
-// (the flexibility of a low mode is ~1/w_1^2, the band's round-off ~eps w_max^2).
-PetscErrorCode FlexibilitySolve(const BeamModes &m, const std::vector<PetscInt> &sup, const std::vector<const std::vector<PetscReal> *> &fs, std::vector<std::vector<PetscReal>> *us)
+// The stiffness K on the free dofs with one temporary support per rigid mode (statically
+// determinate: a self-equilibrated load has no reactions), banded Cholesky factored once: the
+// supports' rows and columns replaced by the identity.
+struct SupportedStiffness {
+  int                    n = 0, kd = 0, ldab = 1; // free dofs, half-bandwidth, leading dimension
+  std::vector<char>      held;                    // per free dof: a temporary support
+  std::vector<PetscReal> ab;                      // the factor (LAPACK dpbtrf, lower)
+};
+
+PetscErrorCode SupportedStiffnessFactor(const BeamModes &m, const std::vector<PetscInt> &sup, SupportedStiffness *F)
 {
-  const BeamSystem      &sys = m.sys;
-  const int              n = (int)m.S.n, kd = (int)sys.bw, ldab = kd + 1, one = 1;
-  std::vector<PetscInt>  free_of(sys.ndof, -1), cols(2 * sys.bw + 1);
-  std::vector<PetscReal> vals(2 * sys.bw + 1), ab((size_t)ldab * n, 0.0), y(sys.ndof), Ky(sys.ndof), r(n);
-  std::vector<char>      held(n, 0);
-  int                    info;
+  const BeamSystem     &sys = m.sys;
+  const int             n = (int)m.S.n, kd = (int)sys.bw, ldab = kd + 1;
+  std::vector<PetscInt> free_of(sys.ndof, -1), cols(2 * sys.bw + 1);
+  std::vector<PetscReal> vals(2 * sys.bw + 1);
+  int                   info;
 
   PetscFunctionBeginUser;
+  F->n = n, F->kd = kd, F->ldab = ldab;
+  F->held.assign(n, 0);
+  F->ab.assign((size_t)ldab * n, 0.0);
   for (PetscInt d = 0; d < n; ++d) free_of[m.S.dof[d]] = d;
-  for (PetscInt s : sup) held[s] = 1;
+  for (PetscInt s : sup) F->held[s] = 1;
   for (PetscInt d = 0; d < n; ++d) {
-    if (held[d]) {
-      ab[(size_t)d * ldab] = 1.0;
+    if (F->held[d]) {
+      F->ab[(size_t)d * ldab] = 1.0;
       continue;
     }
     const PetscInt nc = BeamSystemStiffnessRow(sys, m.S.dof[d], cols.data(), vals.data());
     for (PetscInt q = 0; q < nc; ++q) {
       const PetscInt c = free_of[cols[q]];
-      if (c <= d && !held[c]) ab[(size_t)(d - c) + (size_t)c * ldab] = vals[q]; // lower band: (row d, column c)
+      if (c <= d && !F->held[c]) F->ab[(size_t)(d - c) + (size_t)c * ldab] = vals[q]; // lower band: (row d, column c)
     }
   }
-  dpbtrf_("L", &n, &kd, ab.data(), &ldab, &info);
+  dpbtrf_("L", &n, &kd, F->ab.data(), &ldab, &info);
   PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "the static correction: the supported stiffness is not positive definite (LAPACK dpbtrf, info %d)", info);
-  us->assign(fs.size(), std::vector<PetscReal>());
-  for (size_t i = 0; i < fs.size(); ++i) {
-    const std::vector<PetscReal> &f = *fs[i];
-    std::vector<PetscReal>       &u = (*us)[i];
-    u.assign(n, 0.0);
-    for (int pass = 0; pass < 3; ++pass) { // u = 0, then two corrections: r = f - K u
-      std::fill(y.begin(), y.end(), 0.0);
-      for (PetscInt d = 0; d < n; ++d) y[m.S.dof[d]] = u[d];
-      BeamSystemStiffnessApply(sys, y.data(), sys.fields, 0, sys.ndof, Ky.data(), sys.fields);
-      for (PetscInt d = 0; d < n; ++d) r[d] = held[d] ? 0.0 : f[d] - Ky[m.S.dof[d]];
-      dpbtrs_("L", &n, &kd, &one, ab.data(), &ldab, r.data(), &n, &info);
-      for (PetscInt d = 0; d < n; ++d) u[d] += r[d];
-    }
+  PetscFunctionReturn(0);
+}
+
+// u = K^+ f for a self-equilibrated f on the free dofs: the supported solve and two corrections
+// by the residual in the factored form of K (BeamSystemStiffnessApply), whose round-off is
+// relative to K u, not to |K| |u| as the band's (the flexibility of a low mode is ~1/w_1^2, the
+// band's round-off ~eps w_max^2).
+void SupportedStiffnessSolve(const BeamModes &m, const SupportedStiffness &F, const std::vector<PetscReal> &f, std::vector<PetscReal> *pu)
+{
+  const BeamSystem      &sys = m.sys;
+  const int              n = F.n, one = 1;
+  std::vector<PetscReal> y(sys.ndof), Ky(sys.ndof), r(n);
+  std::vector<PetscReal> &u = *pu;
+  int                    info;
+  u.assign(n, 0.0);
+  for (int pass = 0; pass < 3; ++pass) { // u = 0, then two corrections: r = f - K u
+    std::fill(y.begin(), y.end(), 0.0);
+    for (PetscInt d = 0; d < n; ++d) y[m.S.dof[d]] = u[d];
+    BeamSystemStiffnessApply(sys, y.data(), sys.fields, 0, sys.ndof, Ky.data(), sys.fields);
+    for (PetscInt d = 0; d < n; ++d) r[d] = F.held[d] ? 0.0 : f[d] - Ky[m.S.dof[d]];
+    dpbtrs_("L", &n, &F.kd, &one, F.ab.data(), &F.ldab, r.data(), &n, &info);
+    for (PetscInt d = 0; d < n; ++d) u[d] += r[d];
   }
+}
+
+// u = K^+ f on the free dofs for each load f of fs (self-equilibrated; sup the temporary
+// supports), one factor for all the loads.
+PetscErrorCode FlexibilitySolve(const BeamModes &m, const std::vector<PetscInt> &sup, const std::vector<const std::vector<PetscReal> *> &fs, std::vector<std::vector<PetscReal>> *us)
+{
+  SupportedStiffness F;
+
+  PetscFunctionBeginUser;
+  PetscCall(SupportedStiffnessFactor(m, sup, &F));
+  us->assign(fs.size(), std::vector<PetscReal>());
+  for (size_t i = 0; i < fs.size(); ++i) SupportedStiffnessSolve(m, F, *fs[i], &(*us)[i]);
   PetscFunctionReturn(0);
 }
 
@@ -656,6 +785,7 @@ PetscErrorCode BeamModes::StaticCorrection(const ContactCoupling &g, const Modal
       c->ur = std::move(u[1]);
     }
   }
+  for (PetscInt d = 0; d < (PetscInt)c->ur.size(); ++d) c->Hr += S.mass[d] * c->ur[d] * c->ur[d];
   corrections_.push_back(c);
   if (corrections_.size() > 64) corrections_.erase(corrections_.begin());
   *out = c.get();
@@ -672,6 +802,10 @@ const OptionModule &ModalOptionTable()
                  "all (every mode: the dense decomposition, the exact check), auto (the modes up to the cut-off pi/(T sqrt(-modal_tolerance)), T the contact time scale; the rest through the static correction at the contact point) or a number K (the K lowest)",
                  "auto"),
       OptionReal("-modal_tolerance", "1", "-modal_modes auto: the quasi-static error (pi/(omega T))^2 allowed for a mode left out; sets the cut-off", "1e-9", Between(0, 1e-2, true, false)),
+      OptionNeeds(OptionChoice("-modal_weight",
+                               "-modal_modes auto in an impact: mode (every mode below the cut-off of -modal_tolerance) or share (the fewest lowest modes, from a partial eigen-solve, whose left-out rest, each mode weighed by its share gamma^2/(omega^2 G) of the flexibility under the ball's load times (pi/(omega T))^q, q the force's exponent at the first touch capped at 2, has an error at most -modal_tolerance; the rest by the static correction; docs/model.md section 12)",
+                               {"mode", "share"}, "mode"),
+                  {"-modal_modes=auto"}),
       OptionChoice("-modal_refine",
                    "auto (every mode refined by inverse iteration where the stiffness' band is narrow, as a beam's; where it is wide, as a string bed's, the modes whose residual is above 1e-12 of their eigenvalue) or all (every mode: the check)",
                    {"auto", "all"}, "auto"),
@@ -688,6 +822,10 @@ std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
   std::snprintf(buf, sizeof buf, "modal engine: %d of %d modes (cut-off %s, -modal_modes %s, -modal_tolerance %g; %s, %.3g s)", (int)m.Count(), (int)m.S.n, cut, ModalModesText(m.request).c_str(),
                 (double)m.request.tolerance, m.method.c_str(), m.build_seconds);
   std::string s = buf;
+  if (m.share_error >= 0) {
+    std::snprintf(buf, sizeof buf, ", share-weighted error %.3g (force exponent %.3g)", (double)m.share_error, (double)m.request.force_exponent);
+    s += buf;
+  }
   if (m.B.by_need) { // refined by need (a wide band: ModalRefinesEveryMode)
     std::snprintf(buf, sizeof buf, ", %d modes refined (residual above %g)", (int)m.B.refined, (double)ModalRefineResidual());
     s += buf;
@@ -715,6 +853,9 @@ PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t)
   PetscInt refine = t->refine_all ? 1 : 0;
   PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-modal_refine", &refine, NULL));
   t->refine_all = refine == 1;
+  PetscInt weight = t->weight == ModalWeight::Share ? 1 : 0;
+  PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-modal_weight", &weight, NULL));
+  t->weight = weight == 1 ? ModalWeight::Share : ModalWeight::Mode;
   PetscOptionsEnd();
   if (text == "all") t->modes = ModalModes::All;
   else if (text == "auto") t->modes = ModalModes::Auto;

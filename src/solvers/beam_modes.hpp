@@ -45,12 +45,23 @@ namespace beamimpact {
 
 struct BeamFactor;
 
-// Which modes the engine keeps (-modal_modes, -modal_tolerance) and the scales that choose them.
+// Which modes the engine keeps (-modal_modes, -modal_tolerance, -modal_weight) and the scales that choose them.
 enum class ModalModes { All, Auto, Count };
+// How Auto chooses the modes (-modal_weight): by each mode's quasi-static error alone (Mode:
+// every mode below the cut-off kept), or by that error weighed with the mode's share of the
+// flexibility under the ball's load (Share: the fewest lowest modes whose left-out rest has a
+// share-weighted error e = sum_k (gamma_k^2 / w_k^2 / G) (pi / (w_k T))^q, q = min(p, 2) from the
+// force's start F ~ c^p, at most the tolerance; under the coupling `at`, which the impact's
+// callers set; without it, Mode). The modes not computed enter e by their exact moment H_r
+// (q = 2: (pi/T)^2 H_r / G) or bounded by G_r/G (pi / (w_last T))^q (q < 2).
+enum class ModalWeight { Mode, Share };
 struct ModalTruncation {
   ModalModes modes        = ModalModes::Auto;
   PetscInt   count        = 0;    // Count: modes kept (rigid ones included)
-  PetscReal  tolerance    = 1e-9; // 1: Auto, the quasi-static error allowed per mode left out
+  PetscReal  tolerance    = 1e-9; // 1: Auto, the quasi-static error allowed (per mode left out, or in all: Share)
+  ModalWeight     weight  = ModalWeight::Mode; // -modal_weight
+  ContactCoupling at;             // Share: the load the modes are weighed under (at.n == 0: none, Mode)
+  PetscReal  force_exponent = 2;  // 1: Share, the force's exponent at the first touch, F ~ c^p (ContactStartExponent; capped at 2)
   PetscReal  contact_time = 0;    // s: Auto, the contact's time scale T (ContactTimeScale)
   PetscReal  cost_warn    = 30;   // s: a cost line before a decomposition expected to take longer
   PetscReal  progress     = 10;   // s: a progress line this often during a partial solve (0: none)
@@ -58,7 +69,9 @@ struct ModalTruncation {
   // rad/s: the cut-off of Auto, pi / (T sqrt(tol)); infinite for All and Count
   PetscReal Cutoff() const { return modes == ModalModes::Auto && contact_time > 0 ? M_PI / (contact_time * std::sqrt(tolerance)) : PETSC_INFINITY; }
 };
-// -modal_modes, -modal_tolerance and -modal_refine: the modal engine's table (registered by app/registry.cpp).
+// Whether t weighs the modes by their share under a load (Auto, Share and a coupling given).
+inline bool ModalWeighsShare(const ModalTruncation &t) { return t.modes == ModalModes::Auto && t.weight == ModalWeight::Share && t.at.n > 0; }
+// -modal_modes, -modal_tolerance, -modal_refine and -modal_weight: the modal engine's table (registered by app/registry.cpp).
 const OptionModule &ModalOptionTable();
 // Reads them (T, cost_warn and progress are the caller's).
 PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t);
@@ -79,6 +92,7 @@ struct ModalCorrection {
   PetscReal              G  = 0; // m/N: flexibility at the point (flexible subspace)
   PetscReal              Gr = 0; // m/N: its residual part, the modes left out
   std::vector<PetscReal> ur;     // m/N per free dof: the static shape of the modes left out per unit force
+  PetscReal              Hr = 0; // m s^2/N: u_r^T M u_r = sum over the modes left out of gamma_k^2 / w_k^4
 };
 
 struct BeamModes {
@@ -90,11 +104,13 @@ struct BeamModes {
   PetscReal       cutoff    = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
   bool            truncated = false;          // fewer modes than free dofs
   std::string     method;                     // "dense", "slepc" or "slepc, factored form"
+  PetscReal       share_error = -1;           // Share: the share-weighted error of the modes left out under the load (ShareTrim); < 0: not weighed
   std::shared_ptr<const BeamFactor> factor;   // the factored form the modes and the static correction came from (solvers/beam_flexibility.hpp), or null
   double          build_seconds = 0;
   PetscInt        Count() const { return (PetscInt)B.omega.size(); }
   // The static correction at the point of coupling g (computed on first use, then cached).
   PetscErrorCode StaticCorrection(const ContactCoupling &g, const ModalCorrection **c) const;
+  void           ForgetCorrections() const { corrections_.clear(); } // the basis changed (BeamModesBuild)
 
 private:
   mutable std::vector<std::shared_ptr<ModalCorrection>> corrections_;

@@ -932,6 +932,8 @@ PetscErrorCode PointSetUp(TS ts)
     tr.contact_time = ContactTimeScale(m.P->ball, m.P->approach);
     tr.cost_warn    = m.P->modes_cost_warn; // the run's -impact_cost_warn and -impact_progress (0 in a sweep: its own lines)
     tr.progress     = m.P->modes_progress;
+    tr.at             = m.P->g; // -modal_weight share: the modes weighed under this load and the force's start
+    tr.force_exponent = ContactStartExponent(m.P->ball, m.P->approach);
     PetscCall(BeamModesShared(PetscObjectComm((PetscObject)ts), sys, tr, &m.modes));
   }
   const ModalSystem &S = m.modes->S;
