@@ -4,6 +4,9 @@ way to write a figure.
     fig, ax = style.plt.subplots()
     style.save(fig, "out.png", dpi=130)             # tight layout, written, closed; returns the path
 """
+import os
+import sys
+
 from .interpreter import require
 
 require("matplotlib")
@@ -19,7 +22,18 @@ def colours():
 def save(fig, path, dpi=120, layout=True, tight_box=False, extra_artists=None):
     """Writes fig to path and closes it: layout tightens the subplots first (fig.tight_layout),
     tight_box crops the image to what is drawn (bbox_inches="tight", with extra_artists such as
-    a legend outside the axes). Returns the path."""
+    a legend outside the axes). Returns the path. Exits 1, writing nothing, when path is a file
+    the script read (files.check_output: an input overwritten) or its extension is no image
+    format matplotlib writes (-o out.h5)."""
+    from . import files  # the files the script read
+
+    prog = os.path.basename(sys.argv[0]) or "beamimpact"
+    files.check_output(prog, path)
+    ext = os.path.splitext(path)[1][1:].lower()
+    formats = fig.canvas.get_supported_filetypes()
+    if ext and ext not in formats:
+        sys.exit("%s: -o %s is not allowed: .%s is not an image format (matplotlib writes %s); give -o NAME.png, .pdf or .svg"
+                 % (prog, path, ext, ", ".join("." + k for k in sorted(formats))))
     if layout:
         fig.tight_layout()
     kw = {}
