@@ -6,7 +6,10 @@
 #      the file is not). Each run ends with an error naming -output and "disk full", exit status
 #      1 (no signal: no crash at PetscFinalize), no "wrote", no temporary file left, and the
 #      file of an earlier run at that path unchanged. The sweep, given room again, resumes and
-#      its file equals an uninterrupted run's.
+#      its file equals an uninterrupted run's. A sweep on 2 ranks whose first write fails says
+#      that no point had been computed, names no FILE.h5.parts (the failed run removes it) and
+#      ends every rank with that one message (it ended in MPI_ABORT and ORTE_ERROR_LOG); one
+#      whose rewrite fails later stops every rank with one message naming the journals kept.
 #   2. kill -9 at random moments of a sweep that rewrites its file after every point, 20
 #      times (every fifth under mpiexec on 2 ranks): after each kill the file is absent or a
 #      complete HDF5 file (its rows and sweep_cases_done agree); the last resume completes it,
@@ -113,6 +116,23 @@ if [[ -n $mode ]]; then
   rc=$?
   ((rc != 0 && rc < 128)) && grep -q "disk full" sweep_full.log && ! ls "$full" | grep -q '\.tmp$' && pass "sweep on a full disk: an error, no crash, no .tmp ($(grep -m1 error sweep_full.log | cut -c1-120))" ||
     { fail "sweep on a full disk: exit $rc"; cat sweep_full.log; ls -la "$full"; }
+  # the first write fails on 2 ranks: one message, every rank ends, nothing named that is not there
+  room 4
+  full_run sweep_first.log -np2 "${sweep[@]}" -output "$full/first.h5"
+  rc=$?
+  if ((rc == 1)) && grep -q "beamimpact: error: -output $full/first.h5: writing it failed (disk full: .*); nothing was written at $full/first.h5; no point had been computed" sweep_first.log &&
+    ! grep -qE "MPI_ABORT|ORTE_ERROR_LOG|\.parts" sweep_first.log && [[ ! -e $full/first.h5.parts && ! -e $full/first.h5 ]] && [[ $(grep -c "beamimpact: error" sweep_first.log) == 1 ]]; then
+    pass "a sweep's first write on a full disk, 2 ranks: one message, no point lost, no MPI_ABORT"
+  else fail "a sweep's first write on a full disk, 2 ranks: exit $rc: $(cat sweep_first.log)"; ls -la "$full"; fi
+  # a later rewrite fails on 2 ranks: no further point handed out, every rank ends, one message
+  room 80
+  full_run sweep_later.log -np2 "${sweep[@]}" -sweep_write_interval 0 -output "$full/later.h5"
+  rc=$?
+  if ((rc == 1)) && grep -q "beamimpact: error: -output $full/later.h5: writing it failed (disk full: .*); $full/later.h5 is as it was, and the [0-9]* journal(s) in $full/later.h5.parts keep the rows not in it" sweep_later.log &&
+    ! grep -qE "MPI_ABORT|ORTE_ERROR_LOG" sweep_later.log && [[ $(grep -c "beamimpact: error" sweep_later.log) == 1 && -d $full/later.h5.parts ]]; then
+    pass "a sweep's later rewrite on a full disk, 2 ranks: one message naming the journals, no MPI_ABORT"
+  else fail "a sweep's later rewrite on a full disk, 2 ranks: exit $rc: $(cat sweep_later.log)"; ls -la "$full"; fi
+  rm -rf "$full/later.h5" "$full/later.h5.parts"
   # given room (the file and its journals moved to a larger disk: the sweep's file alone is
   # near the tmpfs's size), the same command resumes and completes it
   rm -f "$full/filler"

@@ -480,7 +480,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
 }
 
 // Rank 0 gathers this run's rows and reasons over MPI (the journals need not be visible
-// there) and writes the complete file.
+// there) and writes the complete file; its failure is every rank's.
 PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
 {
   PetscMPIInt              rank, size;
@@ -527,8 +527,13 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
       if (tab < end) S.reasons[(PetscInt)std::strtoll(std::string(all_text.begin() + p, all_text.begin() + tab).c_str(), nullptr, 10)] = std::string(all_text.begin() + tab + 1, all_text.begin() + end);
       p = end + 1;
     }
-    PetscCall(SweepStoreClose(S));
   }
+  // The complete file: a failed write (a full disk) fails every rank together (rank 0's message)
+  PetscErrorCode ierr   = rank == 0 ? SweepStoreClose(S) : 0;
+  PetscInt       failed = ierr ? 1 : 0;
+  PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
+  PetscCall(ierr);
+  PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "rank 0 could not write the sweep's file (its message is the run's)");
   PetscFunctionReturn(0);
 }
 
