@@ -186,11 +186,13 @@ const OptionModule *OptionModuleOf(const std::string &name)
 
 std::string ShortestText(double v)
 {
-  char buf[64];
+  char buf[64], whole[400];
   for (int digits = 1; digits <= 17; ++digits) { // %.17g always reads back (IEEE double)
     std::snprintf(buf, sizeof buf, "%.*g", digits, v);
     if (std::strtod(buf, nullptr) == v || std::isnan(v)) break;
   }
+  // a whole number %g puts in exponent form (1.17640458049676e+16): its digits when shorter
+  if (std::isfinite(v) && v == std::floor(v) && std::snprintf(whole, sizeof whole, "%.0f", v) < (int)std::strlen(buf)) return whole;
   return buf;
 }
 
