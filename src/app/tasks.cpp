@@ -358,12 +358,14 @@ PetscErrorCode OutputCheckKind(MPI_Comm comm, std::string *out, const char *task
   PetscFunctionBeginUser;
   if (lstat(out->c_str(), &st) != 0) PetscFunctionReturn(0); // a new name
   if (S_ISLNK(st.st_mode)) {
-    char             *real = stat(out->c_str(), &target) == 0 ? realpath(out->c_str(), NULL) : NULL;
+    PetscCheck(stat(out->c_str(), &target) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to nothing (a name that does not exist); give the file's own name",
+               out->c_str());
+    char             *real = realpath(out->c_str(), NULL); // NULL for a link into /proc (/dev/stdout: a pipe)
     const std::string resolved = real ? real : "";
     free(real);
-    PetscCheck(!resolved.empty(), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to nothing (a name that does not exist); give the file's own name", out->c_str());
-    PetscCheck(S_ISREG(target.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to %s, %s, not a file; beamimpact writes only to a regular file or a new name%s",
-               out->c_str(), resolved.c_str(), FileKind(target.st_mode), S_ISDIR(target.st_mode) ? "" : " (-output none writes nothing)");
+    PetscCheck(S_ISREG(target.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to %s%s, not a file; beamimpact writes only to a regular file or a new name%s",
+               out->c_str(), resolved.empty() ? "" : (resolved + ", ").c_str(), FileKind(target.st_mode), S_ISDIR(target.st_mode) ? "" : " (-output none writes nothing)");
+    PetscCheck(!resolved.empty(), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the file its symbolic link names cannot be resolved; give the file's own name", out->c_str());
     *out = resolved;
     PetscFunctionReturn(0);
   }
@@ -463,7 +465,8 @@ const OptionModule &TaskOptionTable()
       "beamimpact: task and output",
       {
         OptionChoice("-task", "What to compute", names, Tasks[0].name),
-        OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)"),
+        OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing): a regular file or a new name, never a device, FIFO, socket, "
+                              "directory or a file inside a sweep's FILE.h5.parts; a link to a results file is followed"),
         OptionFlag("-output_overwrite", "Let -output replace a file another task wrote"),
         OptionFlag("-allow_unused_options", "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
         OptionFlag("-error_traceback", "PETSc's full traceback on errors instead of the one-line message"),
