@@ -16,10 +16,12 @@ Draws what the file holds and nothing it does not (every curve is read, none com
                         the impact point marked (at most --curves of them, evenly chosen);
   PREFIX-mode-energies.png  where the impact's energy went, mode by mode (/modes_energy: written when
                         the free flight after the separation is modal, the default): bars of the
-                        fraction of the incident kinetic energy E_in in the ball's rebound and
-                        loss, the beam's translation and rotation and each flexible mode at the
-                        end (the first --mode-bars of them, the rest as one bar), from /results and
-                        /modes_energy/fraction;
+                        fraction of the energy brought in, E_in, in the ball's rebound and loss,
+                        the damping, each rigid mode (translation, rotation, roll) and each
+                        flexible mode at the end, labelled by its part (bending, roll, wall,
+                        strings: /modes_energy/part) and coloured by it (the first --mode-bars of
+                        them, the rest as one bar), from /results and /modes_energy; it prints
+                        each part's sum beside the /results column it adds up to;
   PREFIX-modes.png      for a -task modes file: the flexible mode shapes (scaled to unit
                         peak) with their frequencies in the legend, and the nodes of the first
                         two modes the file records (/modes/nodes_1, nodes_2).
@@ -194,9 +196,42 @@ def modes_plot(f, path, out, count):
     return save(fig, out)
 
 
+# A mode's label in /modes_energy/part (run/energy_parts.hpp) and the /results column its modes add up
+# to: a rigid mode's motion, a flexible mode's part (as -task modes names it).
+RIGID_COLUMNS = {"translation": "translation_fraction", "rotation": "rotation_fraction", "roll": "roll_fraction"}
+PART_COLUMNS = {"bending": "vibration_fraction", "roll": "twist_fraction", "wall": "wall_fraction", "strings": "bed_fraction"}
+PART_COLORS = {"bending": "C3", "roll": "C6", "wall": "C8", "strings": "C9"}
+
+
+def mode_labels(g, rigid):
+    """Each mode's label: /modes_energy/part, or (a file from before it) the free beam's rigid pair and 'bending'."""
+    if "part" in g:
+        return [p.decode() if isinstance(p, bytes) else str(p) for p in g["part"][()]]
+    rk = np.flatnonzero(rigid)
+    names = ["bending"] * len(rigid)
+    for j, k in enumerate(rk):
+        names[k] = ("translation", "rotation", "roll")[j] if len(rk) <= 3 else "rigid"
+    return names
+
+
+def part_sums(part, rigid, frac, r):
+    """Lines: each label's modes summed, beside the /results column they add up to."""
+    lines, done = [], set()
+    for p, rg in zip(part, rigid):
+        col = (RIGID_COLUMNS if rg else PART_COLUMNS).get(p)
+        if (p, bool(rg)) in done:
+            continue
+        done.add((p, bool(rg)))
+        total = float(np.sum(frac[(np.array(part) == p) & (rigid == rg)]))
+        ref = float(r[col][0]) if col and col in r else float("nan")
+        lines.append("%s%s %.6g (%s %.6g)" % ("rigid " if rg else "", p, total, col or "no column", ref))
+    return lines
+
+
 def mode_energies_plot(f, path, out, bars):
     g, r = f["modes_energy"], f["results"]
     freq, frac, rigid = g["frequency"][()], g["fraction"][()], g["rigid"][()].astype(bool)
+    part = mode_labels(g, rigid)
 
     def col(name):
         return float(r[name][0]) if name in r else float("nan")
@@ -204,21 +239,22 @@ def mode_energies_plot(f, path, out, bars):
     names, vals, colors = [], [], []
 
     def bar(name, v, c):
-        if np.isfinite(v):
+        if np.isfinite(v) and (v != 0 or c == "C0"):
             names.append(name), vals.append(v), colors.append(c)
 
-    bar("ball rebound", col("acor_corrected") ** 2, "C0")  # 1/2 m v_f^2 / E_in (the linear law: after its loss factor)
+    rebound = col("rebound_fraction") if "rebound_fraction" in r else col("acor_corrected") ** 2  # files from before the column
+    bar("ball rebound", rebound, "C0")
     bar("ball loss", col("ball_loss_fraction"), "C1")
-    bar("beam damping", col("damping_fraction") if col("damping_fraction") > 0 else float("nan"), "C5")
-    rk = np.flatnonzero(rigid)
-    free_beam = np.isfinite(col("translation_fraction")) and len(rk) == 2
-    for j, k in enumerate(rk):
-        bar(("translation", "rotation")[j] if free_beam else "rigid mode %d" % (j + 1), frac[k], "C2")
+    bar("beam damping", col("damping_fraction"), "C5")
+    bar("grip (stored)", col("grip_fraction"), "C7")
+    bar("to the hands", col("hands_fraction"), "C7")
+    for k in np.flatnonzero(rigid):
+        bar(part[k], frac[k], "C2")
     flex = np.flatnonzero(~rigid)
-    for j, k in enumerate(flex[:bars]):
-        bar("mode %d\n%.4g Hz" % (j + 1, freq[k]), frac[k], "C3")
+    for k in flex[:bars]:
+        bar("%s\n%.4g Hz" % (part[k], freq[k]), frac[k], PART_COLORS.get(part[k], "C3"))
     if len(flex) > bars:
-        bar("modes %d-%d" % (bars + 1, len(flex)), float(np.sum(frac[flex[bars:]])), "C4")
+        bar("%d more modes" % (len(flex) - bars), float(np.sum(frac[flex[bars:]])), "C4")
     fig, ax = plt.subplots(figsize=(max(8, 0.55 * len(names) + 2), 4.8))
     x = np.arange(len(names))
     ax.bar(x, vals, color=colors)
@@ -226,12 +262,11 @@ def mode_energies_plot(f, path, out, bars):
         ax.annotate("%.3g" % v, (xi, v), textcoords="offset points", xytext=(0, 2), ha="center", fontsize=7)
     ax.set_xticks(x)
     ax.set_xticklabels(names, rotation=45, ha="right", fontsize=7)
-    ax.set_ylabel("fraction of the incident kinetic energy E_in")
+    ax.set_ylabel("fraction of the energy brought in, E_in")
     ax.grid(True, axis="y", alpha=0.3)
-    vib = col("vibration_fraction")
-    extra = "%d modes kept; their flexible sum %.4g" % (len(freq), float(np.sum(frac[flex])))
-    if np.isfinite(vib):
-        extra += " (/results/vibration_fraction %.4g)" % vib
+    sums = part_sums(part, rigid, frac, r)
+    print("%s: mode energies by part (their /results column): %s" % (PROG, "; ".join(sums)))
+    extra = "%d modes kept; by part: %s" % (len(freq), "; ".join(s for s in sums if not s.startswith("rigid")))
     legend(ax, f, extra=extra, handles=[], loc="upper right")
     ax.set_title("Where the impact's energy went, mode by mode, at t = %.4g ms: %s"
                  % (1e3 * float(g.attrs.get("time", float("nan"))), os.path.basename(path)), fontsize=9)

@@ -7,7 +7,9 @@ FILE.h5 is a -task sweep over impact_x and impact_z of a racket with a string be
 (-strings_frame beam; options/scenes/racket-face-map.opts). Four maps over the face: the ACOR
 (the rebound, "power"), the contact time (the dwell), the string bed's largest deflection from
 its frame, and the energy the frame keeps in its vibration and roll (vibration_fraction +
-roll_fraction), each with the head's outline. Marked, and printed, are the sweet spots of the
+twist_fraction + roll_fraction: its bending, its twisting and its rigid roll, of the energy brought
+in; a file from before twist_fraction: vibration_fraction, which then held the twist and the
+strings too, + roll_fraction), each with the head's outline. Marked, and printed, are the sweet spots of the
 racket literature (Brody, Cross and Lindsey, The Physics and Technology of Tennis):
   * the largest ACOR (a star);
   * the centre of percussion for a hand at x = --hand (default: 3 cm from the handle's end): the
@@ -68,7 +70,8 @@ def main():
         sys.exit("%s: no point of %s succeeded" % (PROG, args.file))
     xs, zs = np.unique(r["impact_x"][()]), np.unique(r["impact_z"][()])
     values = {c: r[c][()] for c in ("acor", "contact_time", "bed_deflection_peak")}
-    values["frame_fraction"] = r["vibration_fraction"][()] + r["roll_fraction"][()]
+    twist = r["twist_fraction"][()] if "twist_fraction" in r else 0.0  # (in vibration_fraction before the column)
+    values["frame_fraction"] = r["vibration_fraction"][()] + twist + r["roll_fraction"][()]
     maps = {c: grid(r, xs, zs, values[c], ok) for c in PANELS}
 
     acor = maps["acor"]
@@ -111,7 +114,7 @@ def main():
         if node is not None:
             ax.axvline(node, color="orange", linestyle=":", linewidth=1.4)
         ax.plot(xs[j], zs[i] * 100, "*", color="r", markersize=14, markeredgecolor="w")
-        label = labels.axis_label(r, c) if c != "frame_fraction" else "vibration_fraction + roll_fraction (1)"
+        label = labels.axis_label(r, c) if c != "frame_fraction" else "vibration_ + twist_ + roll_fraction (1)"
         fig.colorbar(m, ax=ax, label=label)
         ax.set_title(titles[c])
     for ax in axes[1]:

@@ -35,7 +35,10 @@ def load(out, name, cols):
     n = r["acor"].shape[0]
     if np.any(files.status(r, n) != 0):
         sys.exit("%s: %s has failed points" % (PROG, path))
-    return {c: (r[c][()] if c in r else np.full(n, np.nan)) for c in cols}
+    got = {c: (r[c][()] if c in r else np.full(n, np.nan)) for c in cols}
+    if "vibration_fraction" in got and "bed_fraction" in r:  # the racket's vibration, frame and strings (the bending alone since issue 34)
+        got["vibration_fraction"] = got["vibration_fraction"] + r["bed_fraction"][()] + (r["twist_fraction"][()] if "twist_fraction" in r else 0.0)
+    return got
 
 
 def racket_inertia(out, name):

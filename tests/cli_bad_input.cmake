@@ -69,7 +69,7 @@ set(cases
   "-monitor_velocity_at 0.5,,0.6|-monitor_velocity_at 0.5,,0.6 is not allowed: an empty value between commas"
   "-snapshot_times 0.001,nan|-snapshot_times 0.001,nan is not allowed: nan is not a finite number"
   "-snapshot_times 0.001,-0.5|-snapshot_times 0.001,-0.5 is not allowed: -0.5. it takes one or more values separated by commas, each >= 0 \\(s\\)"
-  "-impact_window nan|-impact_window nan is not allowed: it must be a finite number \\(s\\)"
+  "-impact_window nan|-impact_window nan is not allowed: it must be a finite number >= 0 \\(s\\)"
   "-impact_x nan|-impact_x nan is not allowed: it must be a finite number \\(m\\)"
   "-impact_max_time inf|-impact_max_time inf is not allowed: it must be a finite number \\(s\\)"
   "-beam_damping_mass nan|-beam_damping_mass nan is not allowed: it must be a finite number >= 0 \\(1/s\\)"
@@ -122,6 +122,13 @@ set(cases
   "-reference modal -beam_nodes 100000|-reference modal with N = 100000 nodes \\(100000 free dofs\\) would need about 320 GB for its dense modal matrices, above the limit"
   "-reference modal -reference_max_memory 1e-6|-reference modal with N = 41 nodes .* above the limit of 1e-06 GB \\(-reference_max_memory"
   "-reference modal -reference_max_memory 0|-reference_max_memory 0\\.? is not allowed: it must be > 0"
+  # the run's memory (issue 34: -beam_nodes 1000001 -ts_type modal grew to 9 GB, its modes' time
+  # printed and no memory): estimated before the allocation, refused beyond -max_memory
+  "-max_memory 0|-max_memory 0\\.? is not allowed: it must be > 0 \\(GB\\)"
+  "-beam_nodes 100001 -ts_type irk -max_memory 0.1|-ts_type irk on 100001 nodes \\(100001 dofs: its state, and an implicit type's Jacobian and factor\\) would need about 0.4[0-9]* GB, above the limit of 0.1 GB \\(-max_memory, default half of the physical memory\\): use fewer -beam_nodes, or raise -max_memory"
+  "-beam_nodes 20001 -ts_type modal -max_memory 0.05|the beam's modes: a partial eigen-solve of 560 modes of 20001 free dofs would need about 0.3[0-9]* GB, above the limit of 0.05 GB \\(-max_memory.*a larger -modal_tolerance"
+  "-beam_nodes 1000001 -ts_type modal -max_memory 8|the beam's modes: a partial eigen-solve of 560 modes of 1000001 free dofs would need about 13.[0-9]* GB, above the limit of 8 GB \\(-max_memory"
+  "-options_file ${SRC}/options/scenes/oblique.opts -ball_spin 1e9|-ball_spin 1e9 is not allowed: it moves the ball's surface at 3.69e\\+07 m/s \\(-ball_radius 0.0369 m\\), beyond the speed of sound in air \\(343 m/s\\)"
   "${HYST} -ball_cor 1.2|-ball_cor 1.2 is not allowed: .*must be in \\(0, 1."
   "${HYST} -ball_cor 0|-ball_cor 0\\.? is not allowed"
   "${HYST} -ball_cor 0.5 -ball_contact_time 0 -ball_test_speed 26.8|-ball_contact_time 0\\.? is not allowed: .*must be > 0"
@@ -157,8 +164,26 @@ set(cases
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -impact_z 0.2|-impact_x 0.15 with -impact_z 0.2 is not allowed: off the frame's axis the ball must strike the string bed"
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_tension 2.5e5 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 1e-6|-ts_dt 1e-06 is above the stability limit .* set by the string bed\\)"
   "-options_file ${SRC}/options/base/racket-strung.opts -strings_patch_radius -1|-strings_patch_radius -1 is not allowed: it must be >= 0 \\(m\\)"
-  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_patch_radius 0.2|-strings_patch_radius 0.2 m is not allowed with this grid"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.3 -strings_patch_radius 0.2|-strings_patch_radius 0.2 m is not allowed with this grid"
   "-strings_frame held -impact_x 0.5|-impact_x 0.5 is not allowed: the impact point must lie on the beam, 0 <= x <= L = 0.34"
+  # issue 34: a negative window (it silently became the default), the barrel wall's absurd inputs
+  "-impact_window -0.001|-impact_window -0.001 is not allowed: it must be >= 0 \\(s\\)"
+  "-barrel_hoop_frequency 1000 -barrel_hoop_mass 0.27|-barrel_hoop_frequency 1000 is not allowed on a beam with no round hollow section \\(a uniform beam or -beam_properties has no wall\\)"
+  "-options_file ${SRC}/options/bats/r161.opts -barrel_hoop_frequency 1000 -barrel_hoop_mass 0.27|-barrel_hoop_frequency 1000 is not allowed on a solid profile"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -options_file ${SRC}/options/balls/baseball.opts -beam_shell -impact_x 0.66 -shell_contact_radius 1|-shell_contact_radius 1 m is not allowed: the ball's patch on the wall can be no wider than the barrel wall.s midsurface radius at the impact point, 0.0321 m"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -impact_x 0.66 -ball_radius 0.02 -shell_contact_radius 0.025|-shell_contact_radius 0.025 m is not allowed: the ball's patch on the wall can be no wider than the ball's radius \\(-ball_radius\\), 0.02 m"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -shell_youngs_modulus 1|-shell_youngs_modulus 1\\.? is not allowed"
+  "-options_file ${SRC}/options/bats/aluminium-bat.opts -beam_shell -barrel_wall_thickness 1e-6|-barrel_wall_thickness 1e-6 is not allowed: it must be >= 0.0001 \\(m\\)"
+  # issue 34: an impact point off the frame's section, strings wider apart than the head, a load
+  # past the frame's end, a roll too light for the modes, the flight's ball
+  "-options_file ${SRC}/options/base/racket.opts -beam_torsion -beam_torsion_stiffness 630 -beam_torsion_inertia 1.9e-3 -impact_z 5|-impact_x 0.55 with -impact_z 5 is not allowed: off the frame's section. a frame without a string bed is struck within its half-width across the face, \\|z\\| <= 0.36 m \\(half the frame's length"
+  "-beam_torsion -beam_torsion_stiffness 50 -beam_torsion_inertia 1e-4 -impact_z 0.02|-impact_x 0.55 with -impact_z 0.02 is not allowed: off the frame's section. .* \\|z\\| <= 0.016 m \\(half -beam_width"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_spacing 0.34|-strings_spacing 0.34 m is not allowed with -head_width 0.24 m: the mains, 0.34 m apart across the face, leave no string on the head. it must be < -head_width"
+  "-task modes -strings_frame held -strings_spacing_crosses 0.5|-strings_spacing_crosses 0.5 m is not allowed with -head_length 0.34 m: .* it must be < -head_length"
+  "-options_file ${SRC}/options/base/racket-strung.opts -head_center 0.165 -impact_x 0.012 -strings_patch_radius 0.025|-impact_x 0.012 with -strings_patch_radius 0.025 m is not allowed: the ball's load on the bed .* reaches past the frame's end"
+  "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -impact_z 0.05 -beam_torsion_inertia 1e-14 -ts_type modal|set by the frame's roll at x = .* raise -beam_torsion_inertia at least 7.1 times"
+  "-flight|-flight needs the ball's size for its drag and lift in the air: give -ball_radius"
+  "-flight -ball_radius 0.03 -flight_ball_mass 0.1|-flight_ball_mass 0.1 with -flight: after an impact the flight flies the impact's own ball"
 )
 foreach(c IN LISTS cases)
   string(FIND "${c}" "|" bar)

@@ -2,7 +2,9 @@
 # Issue 22's silently-wrong and refused inputs, through the real executable: each case failed
 # (or was silent) before and passes now.
 #   * options that have no effect in the run are a note, once (also in a sweep); a sweep axis
-#     over such an option is refused before any point runs;
+#     over such an option is refused before any point runs; a racket's (issue 34): the bed's and
+#     the head's options without a bed, the frame's own in a held frame, -strings_nodes on a
+#     beam frame; -flight after a tennis ball's hit notes the baseball's aerodynamics;
 #   * section files: rows that do not start at x = 0 are shifted with a note; a file far outside
 #     any bat (a profile in centimetres) is a warning naming the file, the values and the units;
 #     a NUL byte in an options file, a profile or a COR table is refused naming file and line;
@@ -53,6 +55,33 @@ run -task sweep -sweep_x 0.3:0.9:7 -beam_pivot 0.5 -beam_nodes 40 -grip_mass 1 -
 if [[ $rc -eq 0 ]] && [[ $(grep -c "note: -beam_pivot 0.5 is placed on the nearest node" <<<"$out") -eq 1 ]] && [[ $(grep -c "no effect in this run" <<<"$out") -eq 1 ]]; then
   pass "a 7-point sweep says the pivot note and the no-effect note once each"
 else fail "notes once per sweep: exit $rc: $(grep -c "nearest node" <<<"$out") pivot notes: $out"; fi
+# issue 34: a racket's options that change nothing in its frame are notes; a sweep over one refused
+run -options_file options/scenes/racket-strings.opts -strings_frame none -impact_z 0 -head_width 0.3 -strings_nodes 81 -output none
+if [[ $rc -eq 0 ]] && grep -q "note: option(s) with no effect in this run: .*-head_width 0.3 (it acts only with -strings_frame held or -strings_frame beam)" <<<"$out" &&
+   grep -q -- "-strings_nodes 81 (it acts only with -strings_frame held; -strings_frame is none)" <<<"$out" && grep -q -- "-head_center 0.175 (it acts only with -strings_frame beam; -strings_frame is none)" <<<"$out"; then
+  pass "-strings_frame none: the bed's and the head's options are noted"
+else fail "-strings_frame none with -head_*: exit $rc: $out"; fi
+run -options_file options/scenes/strings-impact.opts -head_center 0.3 -beam_torsion -beam_torsion_stiffness 50 -beam_torsion_inertia 1e-4 -beam_nodes 55 -beam_length 0.9 -ts_dt 1e-4 -output none
+if [[ $rc -eq 0 ]] && grep -q -- "-head_center 0.3 (it acts only with -strings_frame beam; -strings_frame is held)" <<<"$out" &&
+   grep -q -- "-beam_nodes 55 (it acts only with -strings_frame none or -strings_frame beam)" <<<"$out" && grep -q -- "-beam_length 0.9 (it acts" <<<"$out" &&
+   grep -q -- "-beam_torsion (it acts" <<<"$out" && grep -q -- "-beam_torsion_inertia 1e-4 (it acts" <<<"$out"; then
+  pass "-strings_frame held: the frame's own options are noted"
+else fail "-strings_frame held with -head_center, -beam_*: exit $rc: $out"; fi
+run -options_file options/scenes/racket-strings.opts -strings_nodes 81 -beam_nodes 37 -output none
+if [[ $rc -eq 0 ]] && grep -q -- "-strings_nodes 81 (it acts only with -strings_frame held; -strings_frame is beam)" <<<"$out" && ! grep -q -- "-beam_nodes 37 (it acts" <<<"$out"; then
+  pass "-strings_frame beam: -strings_nodes is noted, -beam_nodes acts"
+else fail "-strings_frame beam with -strings_nodes: exit $rc: $out"; fi
+run -options_file options/scenes/racket-strings.opts -beam_nodes 37 -task sweep -sweep "strings_nodes=41;81" -output "$dir/strings-nodes.h5"
+if [[ $rc -ne 0 ]] && grep -q -- "-sweep strings_nodes=41;81 is not allowed: -strings_nodes has no effect in this sweep (it acts only with -strings_frame held; -strings_frame is beam)" <<<"$out"; then
+  pass "a sweep over -strings_nodes on a beam frame is refused"
+else fail "sweep strings_nodes on a beam frame: exit $rc: $out"; fi
+# -flight after a tennis ball's hit flies the tennis ball, with a note on the baseball's aerodynamics
+run -options_file options/scenes/racket-strings.opts -beam_nodes 37 -impact_z 0 -flight -output none
+if [[ $rc -eq 0 ]] && grep -q "note: -flight flies the impact's ball (0.057 kg, radius 0.0335 m) with Nathan's baseball aerodynamics" <<<"$out"; then
+  pass "-flight after a tennis ball's hit: the impact's ball, a note on the aerodynamics"
+else fail "-flight with the tennis ball: exit $rc: $out"; fi
+run -options_file options/scenes/racket-strings.opts -beam_nodes 37 -impact_z 0 -flight -flight_cd0 0.55 -output none
+if [[ $rc -eq 0 ]] && ! grep -q "baseball aerodynamics" <<<"$out"; then pass "-flight with the ball's own drag: no note"; else fail "-flight -flight_cd0: exit $rc: $out"; fi
 
 # --- section files ---------------------------------------------------------------------------
 printf '# x D (m), rows from 0.1 m\n0.1 0.03\n0.5 0.03\n0.94 0.066\n' >"$dir/shifted.profile"

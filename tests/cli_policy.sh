@@ -19,7 +19,10 @@
 #     (-impact_progress), -ts_type modal's modes too, and a sweep of more than 1e6 points
 #     announces its set-up cost; a sweep whose remaining points are expected to take longer
 #     than -impact_cost_warn says so once;
-#   * -modal_tolerance under a stepped integrator acts (the free flight's modes): no note.
+#   * -modal_tolerance under a stepped integrator acts (the free flight's modes): no note;
+#   * the barrel wall: a displacement beyond a quarter of its radius flagged, a thick wall noted.
+#   * the oblique impact's tangential options on a head-on hit, or without friction, and the
+#     error tolerances under a fixed step are notes, the numbers unchanged (issue 34).
 #
 #   tests/cli_policy.sh path/to/beamimpact scratch_dir
 set -uo pipefail
@@ -207,6 +210,24 @@ else fail "-ball_speed 1e6: exit $rc, flag '$flag': $out"; fi
 out=$("$exe" -options_file options/base/superball-linear.opts -output none 2>&1)
 ! grep -q "beyond the ball's radius" <<<"$out" && pass "no flag at 1 m/s" || fail "flag at 1 m/s: $out"
 
+# the barrel wall (issue 34): a displacement under the ball beyond a quarter of the wall's radius is
+# flagged like the ball's compression (a hoop of 10 Hz on the aluminium bat lets the baseball push
+# its wall in by far more than the 32 mm radius), a wall of 1000 Hz is not; the thin-shell model on
+# the corked R161's 19 mm wall is noted (t/R above 0.1), on the aluminium bat's 2.5 mm it is not
+out=$("$exe" -options_file options/bats/aluminium-bat.opts -options_file options/balls/baseball.opts -beam_nodes 41 -impact_x 0.66 -barrel_hoop_frequency 10 -barrel_hoop_mass 0.27 -ts_type modal -output "$dir/wall.h5" 2>&1); rc=$?
+flag=$(h5dump -d /results/wall_deflection_large "$dir/wall.h5" 2>/dev/null | sed -nE 's/^ *\(0\): *([0-9.]+).*/\1/p')
+if [[ $rc -eq 0 ]] && grep -q "^warning: the barrel wall's largest displacement under the ball, [0-9.]* m, is [0-9.]* times its midsurface radius (R = 0.0321 m at x = 0.66 m), beyond 0.25 of it: physically absurd, the wall's model is linear .* check -barrel_hoop_frequency and -barrel_hoop_mass" <<<"$out" && [[ $flag == 1* ]]; then
+  pass "a 10 Hz hoop: the wall's displacement beyond a quarter of its radius is flagged (summary and wall_deflection_large)"
+else fail "hoop 10 Hz: exit $rc, flag '$flag': $out"; fi
+out=$("$exe" -options_file options/bats/aluminium-bat.opts -options_file options/balls/baseball.opts -beam_nodes 41 -impact_x 0.66 -barrel_hoop_frequency 1000 -barrel_hoop_mass 0.27 -ts_type modal -output none 2>&1)
+! grep -q "barrel wall's largest displacement" <<<"$out" && pass "no flag for a 1000 Hz hoop" || fail "flag at 1000 Hz: $out"
+out=$("$exe" -task modes -options_file options/bats/r161-corked.opts -beam_shell -beam_nodes 41 -modes_count 2 -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "^note: -beam_shell on a thick wall: the barrel's wall is t = 0.01945 m on a midsurface radius R = 0.02243 m (t/R = 0.87, above 0.1): the thin-shell model" <<<"$out"; then
+  pass "-beam_shell on the corked R161's 19 mm wall: noted (t/R 0.87 > 0.1)"
+else fail "corked R161 -beam_shell: exit $rc: $out"; fi
+out=$("$exe" -task modes -options_file options/bats/aluminium-bat.opts -beam_shell -beam_nodes 41 -modes_count 2 -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && ! grep -q "thick wall" <<<"$out" && pass "-beam_shell on the aluminium bat's 2.5 mm wall: no note (t/R 0.078)" || fail "aluminium -beam_shell: exit $rc: $out"
+
 # a contact cut short by -impact_max_time: an error for one impact (tests/cli_bad_input.cmake),
 # a failed row (status 7) in a sweep, never a number
 out=$("$exe" -task sweep -sweep_x 0.5,0.6 -impact_max_time 1e-3 -output "$dir/cut.h5" 2>&1); rc=$?
@@ -256,6 +277,49 @@ PY
 )
   [[ $rec == ok ]] && pass "the run record carries every option read, with units: grip, swing, damping, pivot" || fail "run record: $rec"
 fi
+
+# Options without effect (issue 34): a head-on hit (no -impact_offset, no -ball_spin, -flight or
+# not) slides nothing along the tangent, so friction, the tangential compliance, the ball's
+# inertia and the bat's second plane change nothing: each a note, the numbers bit-identical to a
+# run without them; the compliance, the inertia and the plane without friction likewise; the
+# error tolerances under a fixed step (-ts_type modal).
+bat=(-options_file options/bats/r161.opts -options_file options/balls/baseball.opts -beam_theory timoshenko -ts_type modal -impact_x 0.7 -output none)
+numbers() { grep -E "^(x |flight:|oblique:)" <<<"$1" | sed -E 's/  wall [0-9.e+-]+ s//'; }
+# notes OUTPUT ITEM...: the note line holds every ITEM
+notes() {
+  local line item
+  line=$(grep "^note: option(s) with no effect in this run:" <<<"$1") || return 1
+  shift
+  for item in "$@"; do grep -qF -- "$item" <<<"$line" || return 1; done
+}
+head_on="(it acts only with -impact_offset not 0 or -ball_spin not 0)"
+plain=$("$exe" "${bat[@]}" -flight 2>&1)
+out=$("$exe" "${bat[@]}" -flight -ball_friction 0.9 -ball_tangential_cor 0.3 -ball_inertia_factor 0.6 -impact_tangential_plane rigid 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && notes "$out" "-ball_friction 0.9 $head_on" "-ball_inertia_factor 0.6 $head_on" "-ball_tangential_cor 0.3 $head_on" "-impact_tangential_plane rigid $head_on" &&
+   [[ -n $(numbers "$out") && $(numbers "$out") == $(numbers "$plain") ]]; then
+  pass "a head-on hit with -flight: the four tangential options are notes, the numbers those of a run without them"
+else fail "head-on tangential options: exit $rc: $out"; fi
+no_friction="(it acts only with -ball_friction not 0; -ball_friction is 0)"
+plain=$("$exe" "${bat[@]}" -impact_offset 0.01 -ball_friction 0 2>&1)
+out=$("$exe" "${bat[@]}" -impact_offset 0.01 -ball_friction 0 -ball_tangential_cor 0.3 -impact_tangential_plane rigid 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && notes "$out" "-ball_tangential_cor 0.3 $no_friction" "-impact_tangential_plane rigid $no_friction" "-ball_inertia_factor 0.4 $no_friction" &&
+   [[ -n $(numbers "$out") && $(numbers "$out") == $(numbers "$plain") ]]; then
+  pass "-ball_friction 0: -ball_tangential_cor, -impact_tangential_plane and the inertia are notes, the numbers unchanged"
+else fail "-ball_friction 0 with -ball_tangential_cor: exit $rc: $out"; fi
+out=$("$exe" "${bat[@]}" -impact_offset 0.01 -ball_friction 0.5 -ball_tangential_cor 0.3 2>&1); rc=$?
+[[ $rc -eq 0 ]] && ! grep -q "no effect" <<<"$out" && pass "an oblique hit with friction: no note" || fail "oblique hit with friction: exit $rc: $out"
+fixed="(the step is fixed, -ts_type modal with -ts_adapt_type none: -ts_dt sets it)"
+plain=$("$exe" "${bat[@]}" 2>&1)
+out=$("$exe" "${bat[@]}" -ts_rtol 1e-3 -ts_atol 1e-2 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && notes "$out" "-ts_atol 1e-2 $fixed" "-ts_rtol 1e-3 $fixed" && [[ $(numbers "$out") == $(numbers "$plain") ]]; then
+  pass "-ts_rtol and -ts_atol under the fixed-step -ts_type modal: notes, the numbers unchanged"
+else fail "-ts_type modal -ts_rtol: exit $rc: $out"; fi
+out=$("$exe" -ts_type rk -ts_rk_type 5dp -ts_rtol 1e-6 -ts_atol 1e-6 -output none 2>&1); rc=$?
+[[ $rc -eq 0 ]] && ! grep -q "no effect" <<<"$out" && pass "an adaptive -ts_type rk: -ts_rtol and -ts_atol act, no note" || fail "rk 5dp -ts_rtol: exit $rc: $out"
+# a sweep whose axis varies what an option needs: the option acts at some points, no note
+out=$("$exe" -task sweep -sweep "beam_theory=euler;timoshenko" -beam_shear_modulus 1e9 -output "$dir/theories.h5" 2>&1); rc=$?
+[[ $rc -eq 0 ]] && ! grep -q "no effect" <<<"$out" && pass "-sweep beam_theory=euler;timoshenko with -beam_shear_modulus: no 'no effect' note" \
+  || fail "sweep over beam_theory with -beam_shear_modulus: exit $rc: $out"
 
 echo "cli_policy: $fails failure(s)"
 [[ $fails -eq 0 ]]

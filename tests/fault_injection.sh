@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Faults while results are written: nothing lost, nothing half-written, no crash.
-#   1. A full disk during an impact, a modes run and a sweep: a 100 kB tmpfs made here (root, as
+#   1. A full disk during an impact, a modes run and a sweep: a 400 kB tmpfs made here (root, as
 #      in CI), else an LD_PRELOAD (tests/enospc_preload.c) that makes writes under a directory
 #      fail with ENOSPC (an impact with snapshots: also once its XDMF description is written and
 #      the file is not). Each run ends with an error naming -output and "disk full", exit status
@@ -34,10 +34,10 @@ rm -rf "$dir" && mkdir -p "$full" && cd "$dir" || exit 1
 
 # --- 1. a full disk --------------------------------------------------------------------------
 mode=""
-if [[ $(id -u) == 0 ]] && mount -t tmpfs -o size=100k tmpfs "$full" 2>/dev/null; then
+if [[ $(id -u) == 0 ]] && mount -t tmpfs -o size=400k tmpfs "$full" 2>/dev/null; then
   mode=tmpfs
   trap 'cd /; umount "$full" 2>/dev/null' EXIT
-  echo "      disk full: a 100 kB tmpfs at $full"
+  echo "      disk full: a 400 kB tmpfs at $full"
 elif [[ -n "$preload" && -f "$preload" ]]; then
   mode=preload
   echo "      disk full: no tmpfs can be mounted here (not root?): writes under $full fail with ENOSPC by LD_PRELOAD=$preload"
@@ -49,7 +49,7 @@ fi
 room() {
   if [[ $mode == tmpfs ]]; then
     rm -f "$full/filler"
-    dd if=/dev/zero of="$full/filler" bs=1k count=200 2>/dev/null
+    dd if=/dev/zero of="$full/filler" bs=1k count=400 2>/dev/null
     truncate -s "-$1K" "$full/filler"
   else
     export ENOSPC_BYTES=$(($1 * 1024))

@@ -8,6 +8,10 @@
 #     height to the located landing (|z| <= 1e-12 m) every 0.01 s; /options_used with units;
 #   * bad input refused with the option, the value and what is allowed; a typo suggesting the
 #     option meant; -help listing the flight's, the air's and the flight TS's options;
+#   * issue 34: the flight's integrator (types, adaptors, steps, tolerances refused or said as
+#     they act: a fixed step is printed as one, an adaptive type holds its tolerance, irk runs),
+#     the spin's bound (the surface below the speed of sound), the series' memory limit, and
+#     -task impact -flight: the -flight_ts_* options used and checked before the impact;
 #   * scripts/plot_flight.py on two files (a PNG PIL reads) and refusing an impact file;
 #     scripts/h5_to_csv.py reading the flight's /results and /series.
 #
@@ -105,11 +109,59 @@ expect_fail "negative speed" "-flight_speed -3 is not allowed: it must be > 0 (m
 expect_fail "humidity above 100" "-air_humidity 120 is not allowed: it must be in [0, 100] (%)" -air_humidity 120
 expect_fail "launch into the ground" "-flight_height 0 with -flight_angle -5" -flight_height 0 -flight_angle -5
 expect_fail "air without density" "give an air density of" -air_pressure 1000 -air_temperature 50 -air_humidity 100
-expect_fail "a type that cannot roll back" "-flight_ts_type euler cannot roll back a step" -flight_ts_type euler
+expect_fail "a type that cannot roll back" "-flight_ts_type euler is not allowed: use one of rk, cn, theta, beuler, bdf, arkimex, rosw, irk, alpha (the types that can roll back a step" -flight_ts_type euler
 expect_fail "no landing in time" "has not landed after -flight_ts_max_time 1 s" -flight_ts_max_time 1
 expect_fail "a typo" "(did you mean -flight_speed?)" -flight_sped 40
 expect_fail "a typo of the flight TS's option" "(did you mean -flight_ts_rtol?)" -flight_ts_rtoll 1e-8
 expect_fail "an unknown -flight_constants" "-flight_constants si is not known: use one of calculator, exact" -flight_constants si
+
+# issue 34, the flight's integrator and its bounds: each refusal names the option, the value and
+# what is allowed; each run that PETSc's defaults made silently wrong now says what it does.
+expect_fail "an unknown type" "-flight_ts_type bogus is not allowed: use one of rk, cn, theta, beuler, bdf, arkimex, rosw, irk, alpha" -flight_ts_type bogus
+expect_fail "an unknown adaptor" "-flight_ts_adapt_type cfl is not allowed: use one of none, basic, dsp" -flight_ts_adapt_type cfl
+expect_fail "a negative step" "-flight_ts_dt -1 is not allowed: it must be > 0 (s)" -flight_ts_dt -1
+expect_fail "a negative tolerance" "-flight_ts_rtol -1 is not allowed: it must be >= 0" -flight_ts_rtol -1
+expect_fail "a fixed step far too long" "the ball's state is not finite at t = 20 s after a step of 10 s (the fixed -flight_ts_dt is far too long" -flight_ts_adapt_type none -flight_ts_dt 10
+expect_fail "an adaptor for a tableau without an estimate" "-flight_ts_adapt_type basic is not allowed with -flight_ts_type rk 1fe: that method has no embedded error estimate" -flight_ts_rk_type 1fe -flight_ts_adapt_type basic
+expect_fail "a spin beyond the speed of sound" "-flight_spin 1e9 is not allowed: a spin of 1e+09 rad/s moves the ball's surface at 3.68881e+07 m/s (-flight_ball_radius 0.0368881 m), beyond the speed of sound in air (343 m/s)" -flight_spin 1e9
+expect_fail "a spin whose sum is beyond it" "-flight_spin 7000 with -flight_sidespin 7000 is not allowed" -flight_spin 7000 -flight_sidespin 7000
+expect_fail "a series beyond the memory limit" "-flight_series_dt 1e-09 s (a sample every 1e-09 s for up to -flight_ts_max_time 60 s) would need about 3.84e+03 GB, above the limit of 1 GB (-max_memory" -flight_series_dt 1e-9 -max_memory 1
+# expect_run WHAT PATTERN options...: the executable must succeed and print PATTERN
+expect_run() {
+  local what=$1 pat=$2 rc; shift 2
+  "$exe" -task flight -output none "$@" >"$dir/out.txt" 2>&1
+  rc=$?
+  if [[ $rc -eq 0 ]] && grep -qF -- "$pat" "$dir/out.txt"; then pass "$what: '$(grep -F -- "$pat" "$dir/out.txt" | head -1 | cut -c1-160)'"
+  else fail "$what: exit $rc, expected '$pat'; output: $(head -c 400 "$dir/out.txt")"; fi
+}
+expect_run "rk 5dp with rtol 1e-3 (the landing was not located)" "ts rk 5dp  rtol 0.001  atol 1e-10" -flight_ts_rtol 1e-3
+expect_run "irk (it failed in MatKAIJSetAIJ): a fixed step, said" "ts irk  fixed step 0.001 s (no error control)" -flight_ts_type irk
+expect_run "beuler adapts (it took fixed 1 ms steps)" "ts beuler  rtol 1e-06  atol 1e-06" -flight_ts_type beuler -flight_ts_rtol 1e-6 -flight_ts_atol 1e-6
+expect_run "rk 1fe: its fixed step is said, not a tolerance" "ts rk 1fe  fixed step 0.001 s (no error control)" -flight_ts_rk_type 1fe
+expect_run "rk 4 with -flight_ts_rtol: a note" "note: option(s) with no effect in this run: -flight_ts_rtol 1e-6 (the flight's step is fixed, -flight_ts_dt 0.001 s: -flight_ts_type rk 4 has no error estimate)" -flight_ts_rk_type 4 -flight_ts_rtol 1e-6
+expect_run "a spin just below the bound flies" "flight: distance" -flight_spin 9290
+
+# -task impact -flight: the flight's integrator options act and are checked before the impact;
+# a pitch spinning beyond the bound is refused (a round bat, its modes: cheap)
+hit=(-options_file options/bats/r161.opts -options_file options/balls/baseball.opts -beam_theory timoshenko -ts_type modal -impact_x 0.7 -ball_speed 40 -flight)
+bat=("${hit[@]}" -impact_offset 0.02 -output none)
+out=$("$exe" "${bat[@]}" -flight_ts_rtol 1e-8 -flight_ts_rk_type 3bs 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "^flight: distance" <<<"$out" && ! grep -q "not used" <<<"$out"; then pass "-task impact -flight with -flight_ts_*: used, no note"
+else fail "-task impact -flight -flight_ts_rtol: exit $rc: $out"; fi
+out=$("$exe" "${bat[@]}" -flight_ts_type bogus 2>&1); rc=$?
+if [[ $rc -ne 0 ]] && grep -q "flight_ts_type bogus is not allowed" <<<"$out" && ! grep -q "^x " <<<"$out"; then pass "-task impact -flight -flight_ts_type bogus: refused before the impact"
+else fail "-task impact -flight -flight_ts_type bogus: exit $rc: $out"; fi
+# a sweep writes no trajectory: it keeps none, so -flight_series_dt is a note and no memory
+# limit applies to it (a point kept 680 MB at 1e-6 s); the numbers are the single runs'
+out=$("$exe" "${hit[@]}" -task sweep -sweep "impact_offset=0.01;0.02" -flight_series_dt 1e-6 -max_memory 0.01 -output "$dir/flights.h5" 2>&1); rc=$?
+single=$("$exe" "${bat[@]}" 2>&1 | sed -nE 's/^flight: distance ([0-9.]+) m.*/\1/p')
+swept=$("$python" -c "import h5py,sys; print('%.2f' % h5py.File(sys.argv[1],'r')['results/distance'][1])" "$dir/flights.h5" 2>/dev/null)
+if [[ $rc -eq 0 ]] && grep -q "note: 1 option(s) set but not used by this task: -flight_series_dt 1e-6" <<<"$out" && [[ -n $single && $swept == "$single" ]]; then
+  pass "a sweep with -flight keeps no series: -flight_series_dt 1e-6 a note under -max_memory 0.01, the carry the single run's ($swept m)"
+else fail "sweep -flight -flight_series_dt: exit $rc, carry '$swept' against '$single': $out"; fi
+out=$("$exe" "${bat[@]}" -ball_spin 1e9 2>&1); rc=$?
+if [[ $rc -ne 0 ]] && grep -q "ball_spin 1e9 is not allowed: it moves the ball's surface at 3.69e+07 m/s (-ball_radius 0.0369 m), beyond the speed of sound in air (343 m/s)" <<<"$out"; then pass "-ball_spin 1e9: refused"
+else fail "-ball_spin 1e9 -flight: exit $rc: $out"; fi
 
 "$exe" -help >"$dir/help.txt" 2>&1
 for o in -flight_speed -flight_spin -flight_spin_decay_time -air_pressure -air_density -flight_ts_type -flight_ts_rtol; do

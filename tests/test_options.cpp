@@ -467,6 +467,8 @@ const OptionModule &NeedsTable()
       OptionNeeds(OptionReal("-needs_k", "N/m", "Acts only with -needs_grip", "0", NonNegative()), {"-needs_grip"}),
       OptionChoice("-needs_theory", "A theory", {"euler", "timoshenko"}, "euler"),
       OptionNeeds(OptionReal("-needs_G", "Pa", "Acts only under -needs_theory timoshenko", "", Positive()), {"-needs_theory=timoshenko"}),
+      OptionNeeds(OptionReal("-needs_e", "1", "Acts only where -needs_k is not 0", "", Positive()), {"-needs_k!=0"}),
+      OptionNeeds(OptionReal("-needs_mu", "1", "Acts only where -needs_k is not 0 or under timoshenko", "0.5", NonNegative()), {"-needs_k!=0|-needs_theory=timoshenko"}),
     },
   };
   return m;
@@ -480,7 +482,7 @@ std::vector<OptionWithoutEffect> NoEffectWith(const std::vector<std::pair<const 
   OptionsUsedClear();
   for (auto &o : set) PetscOptionsSetValue(NULL, o.first, o.second);
   std::vector<PetscReal> grip;
-  PetscReal              k = 0, G = 0;
+  PetscReal              k = 0, G = 0, e = 1, mu = 0.5;
   PetscInt               theory = 0;
   EXPECT_EQ(0, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -489,6 +491,8 @@ std::vector<OptionWithoutEffect> NoEffectWith(const std::vector<std::pair<const 
     PetscCall(OptionsRead(PetscOptionsObject, T, "-needs_k", &k, NULL));
     PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-needs_theory", &theory, NULL));
     PetscCall(OptionsRead(PetscOptionsObject, T, "-needs_G", &G, NULL));
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-needs_e", &e, NULL));
+    PetscCall(OptionsRead(PetscOptionsObject, T, "-needs_mu", &mu, NULL));
     PetscOptionsEnd();
     PetscFunctionReturn(0);
   }());
@@ -516,6 +520,118 @@ TEST(OptionTables, AnOptionWithoutEffectIsNamedWithWhy)
   EXPECT_TRUE(NoEffectWith({{"-needs_G", "1e9"}, {"-needs_theory", "timoshenko"}}).empty());
   EXPECT_TRUE(NoEffectWith({}).empty());
   OptionsUsedClear();
+}
+
+// The oblique impact's tangential options (issue 34): head-on (-impact_offset and -ball_spin 0,
+// -flight or not) nothing slides along the tangent, so friction, the tangential compliance, the
+// ball's inertia and the bat's second plane change nothing: each a note; with an offset they
+// act, and without friction (-ball_friction 0) only the friction itself does.
+TEST(OptionTables, TheTangentialOptionsOfAHeadOnHitAreNotes)
+{
+  const std::vector<std::pair<const char *, const char *>> tangential = {
+    {"-ball_radius", "0.0366"}, {"-ball_friction", "0.3"}, {"-ball_tangential_cor", "0.3"}, {"-ball_inertia_factor", "0.5"}, {"-impact_tangential_plane", "rigid"}};
+  auto noted = [&](const std::vector<std::pair<const char *, const char *>> &more) {
+    std::vector<std::pair<const char *, const char *>> set = tangential;
+    set.insert(set.end(), more.begin(), more.end());
+    OptionsUsedClear();
+    for (auto &o : set) PetscOptionsSetValue(NULL, o.first, o.second);
+    Scenario sc;
+    EXPECT_EQ(0, ScenarioFromOptions(PETSC_COMM_WORLD, &sc));
+    std::map<std::string, std::string> why;
+    for (const OptionWithoutEffect &o : OptionsWithoutEffect()) why[o.name] = o.why;
+    for (auto &o : set) PetscOptionsClearValue(NULL, o.first);
+    OptionsUsedClear();
+    return why;
+  };
+  const std::string head_on = "it acts only with -impact_offset not 0 or -ball_spin not 0";
+  for (auto more : std::vector<std::vector<std::pair<const char *, const char *>>>{{}, {{"-flight", NULL}}, {{"-impact_offset", "0.0"}, {"-ball_spin", "-0"}}}) {
+    std::map<std::string, std::string> why = noted(more);
+    EXPECT_EQ(4u, why.size()) << (more.empty() ? "" : more[0].first);
+    for (const char *o : {"-ball_friction", "-ball_tangential_cor", "-ball_inertia_factor", "-impact_tangential_plane"}) EXPECT_EQ(head_on, why[o]) << o;
+  }
+  EXPECT_TRUE(noted({{"-impact_offset", "0.01"}}).empty());
+  EXPECT_TRUE(noted({{"-ball_spin", "200"}}).empty());
+  std::map<std::string, std::string> why = noted({{"-impact_offset", "0.01"}, {"-ball_friction", "0"}});
+  EXPECT_EQ(3u, why.size());
+  for (const char *o : {"-ball_tangential_cor", "-ball_inertia_factor", "-impact_tangential_plane"}) EXPECT_EQ("it acts only with -ball_friction not 0; -ball_friction is 0", why[o]) << o;
+}
+
+// A condition "-other!=value" on a number compares numbers (issue 34: -ball_tangential_cor with
+// -ball_friction 0; head-on hits, -impact_offset and -ball_spin 0): "-0" and "0.0" are 0, the
+// note names the value as used; alternatives of "!=" and "=" are met when one is.
+TEST(OptionTables, ANotEqualConditionComparesNumbers)
+{
+  std::vector<OptionWithoutEffect> r = NoEffectWith({{"-needs_e", "0.3"}});
+  ASSERT_EQ(1u, r.size());
+  EXPECT_EQ("-needs_e", r[0].name);
+  EXPECT_EQ("it acts only with -needs_k not 0; -needs_k is 0", r[0].why);
+  EXPECT_EQ(std::vector<std::string>{"-needs_k"}, r[0].needs);
+  // -needs_k given is itself a note (it needs -needs_grip): only -needs_e and -needs_mu are counted
+  auto noted = [](const std::vector<OptionWithoutEffect> &v, const char *name) {
+    for (const OptionWithoutEffect &o : v)
+      if (o.name == name) return true;
+    return false;
+  };
+  for (const char *zero : {"0.0", "-0", "0e3"}) EXPECT_TRUE(noted(NoEffectWith({{"-needs_e", "0.3"}, {"-needs_k", zero}}), "-needs_e")) << zero;
+  EXPECT_FALSE(noted(NoEffectWith({{"-needs_e", "0.3"}, {"-needs_k", "1e-300"}}), "-needs_e"));
+  r = NoEffectWith({{"-needs_mu", "0.7"}});
+  ASSERT_EQ(1u, r.size());
+  EXPECT_EQ("it acts only with -needs_k not 0 or -needs_theory timoshenko", r[0].why);
+  EXPECT_EQ((std::vector<std::string>{"-needs_k", "-needs_theory"}), r[0].needs);
+  EXPECT_FALSE(noted(NoEffectWith({{"-needs_mu", "0.7"}, {"-needs_k", "5"}}), "-needs_mu"));
+  EXPECT_TRUE(NoEffectWith({{"-needs_mu", "0.7"}, {"-needs_theory", "timoshenko"}}).empty());
+  OptionsUsedClear();
+}
+
+// A run's own finding (OptionWithoutEffectSet) is listed while the option is given, with the
+// rows' notes, and withdrawn by an empty reason.
+TEST(OptionTables, ARunsOwnNoteOfNoEffect)
+{
+  OptionsUsedClear();
+  OptionWithoutEffectSet("-needs_G", "the step is fixed", {"-needs_theory"});
+  EXPECT_TRUE(OptionsWithoutEffect().empty()); // not given
+  PetscOptionsSetValue(NULL, "-needs_G", "2e9");
+  std::vector<OptionWithoutEffect> r = OptionsWithoutEffect();
+  ASSERT_EQ(1u, r.size());
+  EXPECT_EQ("-needs_G", r[0].name);
+  EXPECT_EQ("2e9", r[0].written);
+  EXPECT_EQ("the step is fixed", r[0].why);
+  OptionWithoutEffectSet("-needs_G", "");
+  EXPECT_TRUE(OptionsWithoutEffect().empty());
+  PetscOptionsClearValue(NULL, "-needs_G");
+}
+
+// A PETSc table's rows as given are checked before PETSc reads them: a number in its range, a
+// choice among the row's (with why these), each error naming the option and the value.
+TEST(OptionTables, APetscTablesValuesAreCheckedAsGiven)
+{
+  static const OptionModule m = {
+    "given",
+    "Test: a table no reader reads",
+    {
+      OptionReal("-given_dt", "s", "A step", "0.001", Positive()),
+      [] {
+        OptionSpec s = OptionChoice("-given_type", "A type", {"rk", "cn"}, "rk");
+        s.range_text = "the types that roll back";
+        return s;
+      }(),
+    },
+    true,
+    {"-given_"},
+  };
+  PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+  auto error = [&](const char *name, const char *value) {
+    PetscOptionsSetValue(NULL, name, value);
+    const PetscErrorCode ierr = OptionsCheckGiven(m);
+    PetscOptionsClearValue(NULL, name);
+    return ierr ? LastErrorMessage(ierr) : std::string("no error");
+  };
+  EXPECT_NE(std::string::npos, error("-given_dt", "-1").find("-given_dt -1 is not allowed: it must be > 0 (s)"));
+  EXPECT_NE(std::string::npos, error("-given_dt", "abc").find("-given_dt abc is not allowed: it must be a number"));
+  EXPECT_NE(std::string::npos, error("-given_type", "euler").find("-given_type euler is not allowed: use one of rk, cn (the types that roll back)"));
+  EXPECT_EQ("no error", error("-given_dt", "0.5"));
+  EXPECT_EQ("no error", error("-given_type", "cn"));
+  PetscPopErrorHandler();
 }
 
 // The program's own rows: the hands' settings without hands, shear settings of an

@@ -186,7 +186,13 @@ std::string ImpactSection()
                    "(*applies*) is NaN, never a number that could be read as a value; a count always applies. In an "
                    "impact file each dataset carries its `unit`, this `description`, `applies` (1 or 0 for this run) "
                    "and `applies_when` (the rule in words); *integer* columns are integer datasets there, and the "
-                   "root attribute `results_columns` lists the columns in this order.\n\n";
+                   "root attribute `results_columns` lists the columns in this order.";
+  std::string shares; // the shares of E_in (ResultColumn::share), which close to 1
+  for (const ResultColumn &c : ImpactResultColumns())
+    if (c.share) shares += (shares.empty() ? "" : ", ") + Code(c.name);
+  md += " Where the energy went: " + shares + ", each where its energy exists, are shares of the energy brought in, `energy_in`; "
+        "for every structure they add up to 1 + `energy_error`, so to 1 within the integrator's error "
+        "([model.md, section 4](model.md#4-energies-and-invariants)).\n\n";
   md += Header({"column", "unit", "integer", "applies", "description"});
   for (const ResultColumn &c : ImpactResultColumns())
     md += Row({Code(c.name), Cell(c.unit), c.integer ? "yes" : "", Cell(c.applies_text), Cell(c.description)});

@@ -18,6 +18,7 @@
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence_plan.hpp"
 #include "studies/convergence_runs.hpp"
+#include "studies/fit_data.hpp"
 #include "studies/sweep_plan.hpp"
 
 namespace beamimpact {
@@ -48,6 +49,8 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&AirOptionTable());
   OptionModuleRegister(&FlightTSOptionTable());
   OptionModuleRegister(&StringBedOptionTable());
+  OptionModuleRegister(&FitOptionTable());
+  OptionModuleRegister(&TaoOptionTable());
   PetscFunctionReturn(0);
 }
 

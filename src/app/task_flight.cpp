@@ -24,8 +24,11 @@ PetscErrorCode FlightPrintSummary(MPI_Comm comm, const FlightParams &p, const Fl
                 (double)p.launch.angle, (double)p.launch.height, (double)m.spin, (double)(m.spin * 30 / M_PI), (double)m.rho, (double)m.K,
                 p.aero.constants == FlightConstants::Calculator ? "calculator" : "exact");
   PetscCall(PetscPrintf(comm, "%s\n", line));
-  std::snprintf(line, sizeof line, "ts %s  rtol %g  atol %g  steps %lld  rejected %lld  landing re-steps %lld  fevals %lld  wall %.3e s", r.ts_type.c_str(), (double)r.rtol, (double)r.atol,
-                (long long)r.steps, (long long)r.rejected_steps, (long long)r.locate_steps, (long long)r.function_evals, (double)r.wall_time);
+  char control[96]; // the error control, or the truth: a fixed step without one
+  if (r.fixed_step) std::snprintf(control, sizeof control, "fixed step %g s (no error control)", (double)r.dt);
+  else std::snprintf(control, sizeof control, "rtol %g  atol %g", (double)r.rtol, (double)r.atol);
+  std::snprintf(line, sizeof line, "ts %s  %s  steps %lld  rejected %lld  landing re-steps %lld  fevals %lld  wall %.3e s", r.ts_type.c_str(), control, (long long)r.steps, (long long)r.rejected_steps,
+                (long long)r.locate_steps, (long long)r.function_evals, (double)r.wall_time);
   PetscCall(PetscPrintf(comm, "%s\n", line));
   PetscFunctionReturn(0);
 }

@@ -4,6 +4,7 @@
 #include "app/docs_markdown.hpp"
 #include "app/task_flight.hpp"
 #include "app/task_strings.hpp"
+#include "base/memory.hpp"
 #include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "io/results_h5.hpp"
@@ -16,6 +17,7 @@
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
 #include "studies/convergence.hpp"
+#include "studies/fit.hpp"
 #include "studies/sweep.hpp"
 #include "studies/sweep_plan.hpp"
 #include "solvers/leapfrog.hpp"
@@ -51,6 +53,7 @@ const TaskEntry Tasks[] = {
   {"sweep", TaskSweep},
   {"convergence", TaskConvergence},
   {"flight", TaskFlight},
+  {"fit", TaskFit},
 };
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
@@ -117,8 +120,12 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   }
   const std::string absurd = CompressionBeyondRadiusText(sc, r);
   if (!absurd.empty()) PetscCall(PetscPrintf(comm, "%s\n", absurd.c_str()));
+  const std::string wall = WallDeflectionLargeText(sc, r);
+  if (!wall.empty()) PetscCall(PetscPrintf(comm, "%s\n", wall.c_str()));
+  const std::string energy = ImpactEnergyShareText(sc, r); // where it went (docs/model.md section 4)
+  if (!energy.empty()) PetscCall(PetscPrintf(comm, "%s\n", energy.c_str()));
   if (r.beam_dissipated_end > 0) // a damped beam
-    PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of the incident energy); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
+    PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of E_in); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
   if (sc.swing.Swings())
     PetscCall(PetscPrintf(comm, "swinging bat (V_cm %g m/s, Omega %g rad/s): batted-ball speed %.4f m/s, collision efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
                           (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs, (double)r.collision_efficiency, (double)r.bat_speed_end,
@@ -131,11 +138,10 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
       PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n", (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
   }
   if (sc.beam.strings.On())
-    PetscCall(PetscPrintf(comm, "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its energy %.4e J at most, %.4e J at the end (%.4f of the incident energy)\n",
-                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak, (double)r.bed_energy_peak, (double)r.bed_energy_end,
-                          sc.ball.speed > 0 ? (double)(r.bed_energy_end / (0.5 * sc.ball.mass * sc.ball.speed * sc.ball.speed)) : 0.0));
+    PetscCall(PetscPrintf(comm, "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
+                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak, (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
   if (sc.beam.torsion.on && ResultNoHeldDof(sc) && sc.ball.speed > 0)
-    PetscCall(PetscPrintf(comm, "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of the incident energy; its twist and spin hold %.4e J at the end\n", (double)r.roll_rate_end,
+    PetscCall(PetscPrintf(comm, "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of E_in; its twist and spin hold %.4e J at the end\n", (double)r.roll_rate_end,
                           (double)r.roll_fraction, (double)r.twist_energy_end));
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
@@ -230,9 +236,8 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
     std::string family = modes.shell_n.empty() ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
     if (!modes.part.empty()) { // a roll field or a string bed: the part with most of the mode's kinetic energy, and its share
-      static const char *const names[kParts] = {"bending", "roll", "wall", "strings"};
-      char                     text[64];
-      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", names[modes.part[q]], (double)(100 * modes.part_share[q]));
+      char text[64];
+      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", BeamSystemPartName((Part)modes.part[q]), (double)(100 * modes.part_share[q]));
       family = text;
     }
     PetscCall(PetscPrintf(comm, "  %4s  %14.4f  %11.4f %s%s\n", number.c_str(), (double)modes.frequency[q], (double)modes.period[q] * 1e3, family.c_str(), modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
@@ -276,6 +281,7 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)ModalTruncationFromOptions(comm, &modal_modes);
   (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
   (void)StringBedHelpOptions(comm); // -strings_*, -head_*
+  (void)FitHelpOptions(comm);       // -fit_*, TAO's -tao_*
   if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);
@@ -475,6 +481,8 @@ const OptionModule &TaskOptionTable()
                      "options (every option's row, docs/options.md) or results (every task's columns, "
                      "docs/results.md)",
                      {"options", "results"}, "options"),
+        OptionReal("-max_memory", "GB", "Refuse a run whose largest allocations (a grid's state and modes, the flight's series) are estimated beyond this (default half of the physical memory)", "",
+                   Positive()), // no fixed default: the machine's
       },
     };
   }();
@@ -483,10 +491,11 @@ const OptionModule &TaskOptionTable()
 
 namespace {
 
-// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback, -help_markdown
-// (task and output null: only read, as for -help; -allow_unused_options and -error_traceback
-// are acted on by the unused-option check and main, and read here for -help and the run
-// record). *markdown: the reference -help_markdown asks for, "" when not given.
+// -task, -output, -output_overwrite, -allow_unused_options, -error_traceback, -help_markdown,
+// -max_memory (task and output null: only read, as for -help; -allow_unused_options,
+// -error_traceback and -max_memory are acted on by the unused-option check, main and the memory
+// checks, and read here for -help and the run record). *markdown: the reference -help_markdown
+// asks for, "" when not given.
 PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, std::string *markdown)
 {
   const OptionModule &T = TaskOptionTable();
@@ -504,6 +513,8 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, s
   flag = PETSC_FALSE;
   PetscCall(OptionsRead(PetscOptionsObject, T, "-error_traceback", &flag, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-help_markdown", &reference, &set_reference));
+  PetscReal max_gb = MemoryLimit() / 1e9; // checked here (> 0), used where an estimate is checked (base/memory.hpp)
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-max_memory", &max_gb, NULL));
   PetscOptionsEnd();
   if (markdown) *markdown = set_reference ? reference : std::string();
   if (task) *task = t;

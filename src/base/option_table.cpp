@@ -74,7 +74,7 @@ std::string OptionSpec::Allowed() const
   case OptionKind::Choice: {
     std::string s;
     for (const std::string &c : choices) s += (s.empty() ? "" : ", ") + c;
-    return "use one of " + s;
+    return "use one of " + s + (range_text.empty() ? "" : " (" + range_text + ")");
   }
   default: return range_text.empty() ? "see -help" : range_text;
   }
@@ -224,6 +224,56 @@ std::string OptionWritten(const char *name)
   return value;
 }
 
+namespace {
+
+// One condition of a row's `needs`: "-other" (that option given), "-other=value" or
+// "-other!=value" (its value as used; a number compared as a number: "-impact_offset!=0").
+struct NeedCondition {
+  std::string other, value;
+  bool        has_value = false, negated = false;
+};
+
+NeedCondition NeedParse(const std::string &c)
+{
+  NeedCondition n;
+  const size_t  eq = c.find('=');
+  n.has_value      = eq != std::string::npos;
+  n.negated        = n.has_value && eq > 0 && c[eq - 1] == '!';
+  n.other          = c.substr(0, n.has_value ? eq - (n.negated ? 1 : 0) : std::string::npos);
+  if (n.has_value) n.value = c.substr(eq + 1);
+  return n;
+}
+
+bool NeedMet(const NeedCondition &n, const OptionUsed &o)
+{
+  if (!n.has_value) return o.given;
+  bool equal = o.text == n.value;
+  if (o.kind == OptionKind::Real || o.kind == OptionKind::Int) {
+    char        *end = nullptr;
+    const double v   = std::strtod(n.value.c_str(), &end);
+    if (end && *end == '\0') equal = o.number == v;
+  }
+  return equal != n.negated;
+}
+
+// "-beam_theory timoshenko", "-impact_offset not 0", "-grip"
+std::string NeedText(const NeedCondition &n) { return n.other + (n.has_value ? (n.negated ? " not " : " ") + n.value : ""); }
+
+// The options given that a run found without effect for reasons no row states (OptionWithoutEffectSet).
+std::map<std::string, OptionWithoutEffect> &NotedLog()
+{
+  static std::map<std::string, OptionWithoutEffect> noted;
+  return noted;
+}
+
+} // namespace
+
+void OptionWithoutEffectSet(const std::string &name, const std::string &why, const std::vector<std::string> &needs)
+{
+  if (why.empty()) NotedLog().erase(name);
+  else NotedLog()[name] = {name, "", why, needs};
+}
+
 std::vector<OptionWithoutEffect> OptionsWithoutEffect()
 {
   const std::map<std::string, OptionUsed> &used = UsedLog();
@@ -231,36 +281,30 @@ std::vector<OptionWithoutEffect> OptionsWithoutEffect()
   for (const auto &[name, u] : used) {
     const OptionSpec *s = OptionSpecFind(name);
     if (!s || !u.given || s->needs.empty() || (u.kind == OptionKind::Bool && u.number == 0)) continue;
-    for (const std::string &need : s->needs) {
-      if (need.find('|') != std::string::npos) { // alternatives: 'A|B', met when one is
-        std::string why = "it acts only with ", first;
-        bool        met = false, known = false;
-        for (size_t a = 0, b; a <= need.size(); a = b + 1) {
-          b                       = std::min(need.find('|', a), need.size());
-          const std::string alt   = need.substr(a, b - a);
-          const size_t      eq    = alt.find('=');
-          const std::string other = alt.substr(0, eq);
-          const auto        it    = used.find(other);
-          if (first.empty()) first = other;
-          why += (a ? " or " : "") + other + (eq == std::string::npos ? "" : " " + alt.substr(eq + 1));
-          if (it == used.end()) continue;
-          known = true;
-          met   = met || (eq == std::string::npos ? it->second.given : it->second.text == alt.substr(eq + 1));
-        }
-        if (!known || met) continue;
-        out.push_back({name, OptionWritten(name.c_str()), why, first});
-        break;
+    for (const std::string &need : s->needs) { // alternatives 'A|B': met when one is
+      std::string              why = "it acts only with ", last;
+      std::vector<std::string> others;
+      bool                     met = false, known = false;
+      for (size_t a = 0, b; a <= need.size(); a = b + 1) {
+        b                     = std::min(need.find('|', a), need.size());
+        const NeedCondition n = NeedParse(need.substr(a, b - a));
+        const auto          it = used.find(n.other);
+        why += (a ? " or " : "") + NeedText(n);
+        others.push_back(n.other);
+        if (it == used.end()) continue; // not read in this run: nothing known
+        known = true;
+        met   = met || NeedMet(n, it->second);
+        if (others.size() == 1 && n.has_value) last = "; " + n.other + " is " + it->second.text;
       }
-      const size_t      eq    = need.find('=');
-      const std::string other = need.substr(0, eq);
-      const auto        it    = used.find(other);
-      if (it == used.end()) continue; // not read in this run: nothing known
-      const OptionUsed &o = it->second;
-      if (eq == std::string::npos ? o.given : o.text == need.substr(eq + 1)) continue;
-      const std::string why = eq == std::string::npos ? "it acts only with " + other : "it acts only with " + other + " " + need.substr(eq + 1) + "; " + other + " is " + o.text;
-      out.push_back({name, OptionWritten(name.c_str()), why, other});
+      if (!known || met) continue;
+      out.push_back({name, OptionWritten(name.c_str()), why + (others.size() == 1 ? last : ""), others});
       break;
     }
+  }
+  for (const auto &[name, o] : NotedLog()) { // given now, and not said above
+    PetscBool given = PETSC_FALSE;
+    if (PetscOptionsHasName(NULL, NULL, name.c_str(), &given) || !given) continue;
+    if (std::none_of(out.begin(), out.end(), [&](const OptionWithoutEffect &e) { return e.name == name; })) out.push_back({name, OptionWritten(name.c_str()), o.why, o.needs});
   }
   return out;
 }
@@ -522,6 +566,23 @@ bool OptionIsPetsc(const std::string &name)
       for (const std::string &p : m->prefixes)
         if (name.compare(0, p.size(), p) == 0) return true;
   return false;
+}
+
+PetscErrorCode OptionsCheckGiven(const OptionModule &m)
+{
+  PetscFunctionBeginUser;
+  for (const OptionSpec &s : m.options) {
+    const std::string written = OptionWritten(s.name.c_str());
+    if (written.empty()) continue; // not given, or a flag
+    if (s.kind == OptionKind::Real) {
+      double v;
+      PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: it must be a number; %s", s.name.c_str(), written.c_str(), s.Allowed().c_str());
+      PetscCall(CheckReal(s, written, v));
+    } else if (s.kind == OptionKind::Choice)
+      PetscCheck(std::find(s.choices.begin(), s.choices.end(), written) != s.choices.end(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(),
+                 s.Allowed().c_str());
+  }
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode OptionModulePrintHelp(MPI_Comm comm, const OptionModule &m)

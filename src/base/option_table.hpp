@@ -52,10 +52,12 @@ struct OptionSpec {
   OptionRange              range;             // Real, Int, RealList values
   std::vector<std::string> choices;           // Choice: the allowed names (index 0 first)
   PetscInt                 count_min = 0, count_max = 0; // RealList: the number of values allowed (0: any)
-  std::string              range_text;        // what is allowed, in words, when range.Text() is not enough
+  std::string              range_text;        // what is allowed, in words, when range.Text() is not enough (a Choice: why these)
   // When the option acts at all: every condition must hold, each "-other" (that option given),
-  // "-other=value" (that option's value as used, e.g. "-beam_theory=timoshenko"). Empty: always.
-  // An option given where a condition fails has no effect: a note (OptionsWithoutEffect).
+  // "-other=value" or "-other!=value" (that option's value as used, e.g.
+  // "-beam_theory=timoshenko", "-ball_friction!=0": a number compared as a number), or
+  // alternatives "A|B" (one of them holds). Empty: always. An option given where a condition
+  // fails has no effect: a note (OptionsWithoutEffect).
   std::vector<std::string> needs;
   std::string Allowed() const;   // the words of an error message: "it must be > 0 (N/m)"
   std::string CountText() const; // a RealList's number of values: "2 values", "one or more values"
@@ -105,6 +107,12 @@ std::string                               OptionUnit(const std::string &name);  
 // Whether `name` (with the dash) falls under a prefix of a registered PETSc table (-ts_, -snes_, ...).
 bool                                      OptionIsPetsc(const std::string &name);
 
+// A table no reader reads (PETSc's: `petsc`): each of its number and choice rows given in the
+// options database is checked as a reader checks it (a number, finite, in the row's range; one
+// of its choices), so that a bad value is refused naming the option, the value as written and
+// what is allowed, before PETSc reads it in its own words ("Unknown TS type").
+PetscErrorCode OptionsCheckGiven(const OptionModule &m);
+
 // Under -help, prints a table no reader reads (PETSc's: `petsc`) as a block of PETSc's -help
 // format ("  -name <default>: help (unit)"), so that -help lists it; nothing otherwise.
 PetscErrorCode OptionModulePrintHelp(MPI_Comm comm, const OptionModule &m);
@@ -122,14 +130,20 @@ const std::map<std::string, OptionUsed> &OptionsUsed();
 void                                     OptionsUsedClear();
 
 // The options given in this process that have no effect: a row whose `needs` fail against the
-// values read (a condition on an option no reader read is taken as met: nothing is known).
-// Each entry: the option (with the dash), its value as written, and why ("it acts only with
-// -grip", "it acts only with -beam_theory timoshenko; -beam_theory is euler").
+// values read (a condition on an option no reader read is taken as met: nothing is known), and
+// those a run said so of (OptionWithoutEffectSet). Each entry: the option (with the dash), its
+// value as written, and why ("it acts only with -grip", "it acts only with -beam_theory
+// timoshenko; -beam_theory is euler").
 struct OptionWithoutEffect {
-  std::string name, written, why;
-  std::string needs; // the option of the condition that fails ("-grip")
+  std::string              name, written, why;
+  std::vector<std::string> needs; // the options of the condition that fails ("-grip"; each of "A|B")
 };
 std::vector<OptionWithoutEffect> OptionsWithoutEffect();
+// A run's own finding that option `name` (with the dash), when given, has no effect, for a reason
+// no row's `needs` can state (the impact's -ts_rtol under a fixed step: why "the step is fixed:
+// -ts_type modal", needs {"-ts_type", "-ts_adapt_type"}, the options that would give it one). It
+// stays until the run says otherwise: an empty why withdraws it.
+void OptionWithoutEffectSet(const std::string &name, const std::string &why, const std::vector<std::string> &needs = {});
 
 // Readers, inside a module's PetscOptionsBegin/End block (PetscOptionsObject is the block's).
 // Each finds `name` in the module's table (an internal error if it is not a row), hands PETSc

@@ -57,7 +57,7 @@ std::string OptionsClosest(const std::string &name, const std::vector<std::strin
   return best;
 }
 
-PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes, bool strict_solver_options)
+PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes, bool strict_solver_options, const std::vector<std::string> &varied)
 {
   PetscInt  n;
   char    **names, **values;
@@ -88,7 +88,10 @@ PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> 
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   std::string no_effect; // read, but a condition of its row fails (OptionSpec::needs)
-  for (const OptionWithoutEffect &o : OptionsWithoutEffect()) no_effect += (no_effect.empty() ? " " : "; ") + o.name + (o.written.empty() ? "" : " " + o.written) + " (" + o.why + ")";
+  for (const OptionWithoutEffect &o : OptionsWithoutEffect()) {
+    const bool depends = std::any_of(o.needs.begin(), o.needs.end(), [&](const std::string &n) { return std::find(varied.begin(), varied.end(), n) != varied.end(); });
+    if (!depends && !StartsWithAny(o.name.substr(1), ignore_prefixes)) no_effect += (no_effect.empty() ? " " : "; ") + o.name + (o.written.empty() ? "" : " " + o.written) + " (" + o.why + ")";
+  }
   if (!no_effect.empty()) PetscCall(PetscPrintf(comm, "note: option(s) with no effect in this run:%s\n", no_effect.c_str()));
   if (n_notes > 0) PetscCall(PetscPrintf(comm, "note: %" PetscInt_FMT " PETSc solver option(s) set but not used by this integrator:%s\n", n_notes, notes.c_str()));
   if (n_unused > 0) PetscCall(PetscPrintf(comm, "note: %" PetscInt_FMT " option(s) set but not used by this task:%s\n", n_unused, unused.c_str()));

@@ -26,6 +26,9 @@ std::string LossFactorHelp()
   return "Factor applied to the ACOR of an elastic law (" + elastic + ") for the ball's losses (reported as acor_corrected; a lossy law's acor_corrected is its acor)";
 }
 
+// The condition of an oblique impact's tangential options (OptionSpec::needs).
+const char *const kOblique = "-impact_offset!=0|-ball_spin!=0";
+
 OptionModule BuildBallOptions()
 {
   OptionModule m;
@@ -37,12 +40,14 @@ OptionModule BuildBallOptions()
     OptionChoice("-ball_law", LawHelp().c_str(), ContactLawNames(), ContactLaws().front()->Name()),
     OptionReal("-ball_radius", "m", "Ball radius: a compression beyond it is flagged as physically absurd (a sweep's summary counts such points; default: none, no check)", "", Positive()),
     OptionReal("-ball_loss_factor", "1", LossFactorHelp().c_str(), "0.85", Between(0, 1, true, false)),
-    // The oblique impact (docs/model.md "Oblique impacts"): they act when the impact is oblique
-    // (-impact_offset or -ball_spin not 0, or -flight), which `needs` cannot say (one of two).
+    // The oblique impact (docs/model.md "Oblique impacts"): the friction and the ball's inertia
+    // act only where the surfaces slide across each other, -impact_offset or -ball_spin not 0
+    // (head-on, even with -flight, nothing moves along the tangent), and the tangential
+    // compliance only where there is friction.
     OptionReal("-ball_spin", "rad/s", "Incoming spin about the bat's axis direction (> 0: backspin of the incoming ball, as a fastball; < 0: topspin, as a curveball); needs -ball_radius and a round bat (-beam_profile)", "0"),
-    OptionNeeds(OptionReal("-ball_inertia_factor", "1", "Moment of inertia of the ball I/(m R^2) (0.4: a solid sphere; a baseball about 0.4, a tennis ball about 0.55), for an oblique impact", "0.4", Between(0, 2.0 / 3.0, true, false)), {"-ball_radius"}),
-    OptionNeeds(OptionReal("-ball_friction", "1", "Coulomb friction coefficient mu of ball on bat, for an oblique impact (0: frictionless)", "0.5", NonNegative()), {"-ball_radius"}),
-    OptionNeeds(OptionReal("-ball_tangential_cor", "1", "Tangential restitution e_T of the contact's tangential compliance (0: the surfaces leave rolling; baseball on wood about 0.3, Cross & Nathan 2006); not given: no compliance, a rigid grip", "", Between(0, 1, false, true)), {"-ball_radius"}),
+    OptionNeeds(OptionReal("-ball_inertia_factor", "1", "Moment of inertia of the ball I/(m R^2) (0.4: a solid sphere; a baseball about 0.4, a tennis ball about 0.55), for an oblique impact", "0.4", Between(0, 2.0 / 3.0, true, false)), {"-ball_radius", kOblique, "-ball_friction!=0"}),
+    OptionNeeds(OptionReal("-ball_friction", "1", "Coulomb friction coefficient mu of ball on bat, for an oblique impact (0: frictionless)", "0.5", NonNegative()), {"-ball_radius", kOblique}),
+    OptionNeeds(OptionReal("-ball_tangential_cor", "1", "Tangential restitution e_T of the contact's tangential compliance (0: the surfaces leave rolling; baseball on wood about 0.3, Cross & Nathan 2006); not given: no compliance, a rigid grip", "", Between(0, 1, false, true)), {"-ball_radius", kOblique, "-ball_friction!=0"}),
   };
   for (const ContactLaw *law : ContactLaws()) m.options.insert(m.options.end(), law->Options().begin(), law->Options().end());
   return m;

@@ -6,6 +6,7 @@
 #include "io/string_bed_options.hpp"
 #include "model/barrel.hpp"
 #include "model/beam_theory.hpp"
+#include "model/shell.hpp"
 #include "model/torsion.hpp"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ const OptionModule &BeamOptionTable()
     "beam",
     "Beam: geometry, material, section, theory and supports (SI units)",
     {
-      OptionReal("-beam_length", "m", "Beam length L; not with a profile or table (they span their rows)", "1.1", Positive()),
+      OptionNeeds(OptionReal("-beam_length", "m", "Beam length L; not with a profile or table (they span their rows); not with -strings_frame held (the frame is the head's length)", "1.1", Positive()), {"-strings_frame=none|-strings_frame=beam"}),
       OptionReal("-beam_thickness", "m", "Thickness a in the direction of motion", "0.006", Positive()),
       OptionReal("-beam_width", "m", "Width b; with E and rho", "0.032", Positive()),
       OptionReal("-beam_youngs_modulus", "Pa", "Young's modulus E; with rho, a, b, or with -beam_profile", "7e10", Positive()),
@@ -48,7 +49,7 @@ const OptionModule &BeamOptionTable()
         return s;
       }(),
       OptionNeeds(OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient; the barrel's shell)", "0.3", Between(-1, 0.5, true, true)), {"-beam_theory=timoshenko|-beam_shell"}),
-      OptionInt("-beam_nodes", "Number of grid nodes N", "41", AtLeast(5)),
+      OptionNeeds(OptionInt("-beam_nodes", "Number of grid nodes N (not with -strings_frame held: the bed's -strings_nodes)", "41", AtLeast(5)), {"-strings_frame=none|-strings_frame=beam"}),
       OptionChoice("-beam_left", SupportHelp("x = 0").c_str(), SupportNames(), "free"),
       OptionChoice("-beam_right", SupportHelp("x = L").c_str(), SupportNames(), "free"),
       OptionList("-beam_clamp", "m", "Clamped region x0,x1 held fixed (a handle in a vice)", 2, 2, NonNegative()),
@@ -61,15 +62,15 @@ const OptionModule &BeamOptionTable()
       OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_torsion_stiffness", "N m/rad/m", "The hands' hold on the frame's roll (-beam_torsion): torque -k'_phi phi per metre of handle", "0", NonNegative()), {"-grip"}),
       OptionNeeds(OptionReal("-grip_torsion_damping", "N m s/rad/m", "The hands' damping of the frame's roll: torque -c'_phi phi_t per metre of handle", "0", NonNegative()), {"-grip"}),
-      OptionFlag("-beam_shell", "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, in series with the ball (-beam_profile with inner diameters)"),
+      OptionFlag("-beam_shell", "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, in series with the ball (-beam_profile with inner diameters); a barrel wall thicker than 0.1 of its radius is noted (the thin-shell model drops terms of order t/R)"),
       OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius)", "", NonNegative()), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa", "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps -beam_youngs_modulus (default: that)", "", Positive()), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 0 < t < D/2", "", Positive()), {"-beam_profile"}),
-      OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll phi (G J phi'^2/2 per length, rho J per length), so that a hit off the axis (-impact_z) rolls it (a racket's head; docs/model.md section 16)"),
-      OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2", "Torsional stiffness G J of a uniform section (default: the section's: a round profile's G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)", "", Positive()), {"-beam_torsion"}),
-      OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m", "Polar mass moment per length rho J of a uniform section about its axis (default: the section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' rhoJ)", "", Positive()), {"-beam_torsion"}),
-      OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass)", "", Positive()),
+      OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius); at most the ball's radius and the wall's midsurface radius at the impact point", "", NonNegative()), {"-beam_shell"}),
+      OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa", "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps -beam_youngs_modulus (default: that); 1e8 (a soft polymer) to 1e12 (stiffer than any bat's wall)", "", Between(1e8, 1e12)), {"-beam_shell"}),
+      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 1e-4 (0.1 mm, a drink can's wall) <= t < D/2", "", AtLeast(1e-4)), {"-beam_profile"}),
+      OptionNeeds(OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll phi (G J phi'^2/2 per length, rho J per length), so that a hit off the axis (-impact_z) rolls it (a racket's head; docs/model.md section 16; not with -strings_frame held: the frame is held)"), {"-strings_frame=none|-strings_frame=beam"}),
+      OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2", "Torsional stiffness G J of a uniform section (default: the section's: a round profile's G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)", "", Positive()), {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
+      OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m", "Polar mass moment per length rho J of a uniform section about its axis (default: the section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' rhoJ)", "", Positive()), {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
+      OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass); a hollow barrel's: needs -beam_profile with inner diameters", "", Positive()),
       OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
     },
   };
@@ -408,6 +409,12 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
     PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell with a solid profile is not allowed: no row of -beam_profile has an inner diameter d > 0");
     PetscCheck(!p.hoop.on, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell with -barrel_hoop_frequency is not allowed: the wall is either the shell or the lumped hoop oscillator");
   }
+  if (p.hoop.on) { // the hoop is a hollow barrel's wall, as the shell is
+    bool hollow = false;
+    for (const ProfileRow &r : p.section.profile) hollow = hollow || (p.section.source == SectionSource::Profile && r.d > 0);
+    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP, "-barrel_hoop_frequency %g is not allowed on %s: the hoop oscillator is a hollow barrel's wall; give -beam_profile with rows 'x D d', d > 0",
+               (double)p.hoop.frequency, p.section.source == SectionSource::Profile ? "a solid profile (no row of -beam_profile has an inner diameter d > 0)" : "a beam with no round hollow section (a uniform beam or -beam_properties has no wall)");
+  }
   if (p.grip.on) {
     const BeamGrip &g = p.grip;
     PetscCheck(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b, comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = %g (m)",
@@ -509,6 +516,15 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
       PetscCall(PrintOnce(comm, text)); // once, also in a sweep
     }
     p->pivot_x = xk;
+  }
+  PetscReal R, t;
+  if (p->shell.on && ShellBarrelWall(*p, &R, &t) && t > kShellThinLimit * R) { // beyond the thin-shell model's range: say so, once
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "note: -beam_shell on a thick wall: the barrel's wall is t = %.4g m on a midsurface radius R = %.4g m (t/R = %.2f, above %g): the thin-shell model (Sanders-Koiter) drops terms "
+                  "of order t/R against 1, so the wall's frequencies and compliance are rough here (docs/model.md section 14)\n",
+                  (double)t, (double)R, (double)(t / R), (double)kShellThinLimit);
+    PetscCall(PrintOnce(comm, text));
   }
   if (p->has_clamp) { // the nodes inside [x0, x1] are held: say where the held region ends when an edge falls between nodes
     const PetscReal h = p->length / (p->nodes - 1), tol = 1e-9 * h;

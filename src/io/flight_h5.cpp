@@ -43,6 +43,7 @@ PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m,
   rec->add("ts_type", r.ts_type);
   rec->add("flight_ts_rtol", r.rtol);
   rec->add("flight_ts_atol", r.atol);
+  rec->add("flight_ts_fixed_step", r.fixed_step ? r.dt : 0.0); // s; 0: adaptive, by the two tolerances
   PetscFunctionReturn(0);
 }
 

@@ -20,10 +20,13 @@ const OptionModule &AirOptionTable();
 // -air_*: the air; a density <= 0 from the formula is refused, naming the options.
 PetscErrorCode AirParamsFromOptions(MPI_Comm comm, AirParams *air);
 
-// -flight_* and -air_*: everything -task flight reads but the TS's own options.
-PetscErrorCode FlightParamsFromOptions(MPI_Comm comm, FlightParams *p, FlightSolveParams *s);
+// -flight_* and -air_*: everything -task flight reads but the TS's own options; a spin beyond
+// FlightSpinMax is refused, naming -flight_spin and -flight_sidespin. Without `series` (a
+// task that writes none) -flight_series_dt is not read (a note if given) and s->series is false.
+PetscErrorCode FlightParamsFromOptions(MPI_Comm comm, FlightParams *p, FlightSolveParams *s, bool series = true);
 // -flight (-task impact): whether to fly the batted ball after the impact, and then the flight's
-// ball, air and aerodynamics (the launch options are refused: the impact gives the launch).
-PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, FlightParams *p, FlightSolveParams *s);
+// ball, air and aerodynamics (the launch options are refused: the impact gives the launch), and
+// the flight's integrator options checked (FlightTSCheckOptions) before the impact runs.
+PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, FlightParams *p, FlightSolveParams *s, bool series = true);
 
 } // namespace beamimpact

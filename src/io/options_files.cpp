@@ -122,7 +122,7 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
 
 const std::vector<std::string> &OptionsFilePathOptions()
 {
-  static const std::vector<std::string> names = {"-beam_profile", "-beam_properties", "-ball_cor_table", "-convergence_configs", "-convergence_reference_config", "-convergence_common_options"};
+  static const std::vector<std::string> names = {"-beam_profile", "-beam_properties", "-ball_cor_table", "-convergence_configs", "-convergence_reference_config", "-convergence_common_options", "-fit_data"};
   return names;
 }
 

@@ -185,6 +185,19 @@ PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::v
   return WriteDataset1D((hid_t)loc, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, v.data(), v.size(), unit);
 }
 
+PetscErrorCode H5WriteText1D(long long loc, const char *name, const std::vector<std::string> &v, const char *unit)
+{
+  std::vector<const char *> p;
+  for (const std::string &s : v) p.push_back(s.c_str());
+  PetscFunctionBeginUser;
+  const hid_t t = H5Tcopy(H5T_C_S1);
+  PetscCheck(t >= 0 && H5Tset_size(t, H5T_VARIABLE) >= 0 && H5Tset_cset(t, H5T_CSET_UTF8) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot make the string type of dataset %s", name);
+  const PetscErrorCode ierr = WriteDataset1D((hid_t)loc, name, t, t, p.data(), p.size(), unit);
+  H5Tclose(t);
+  PetscCall(ierr);
+  PetscFunctionReturn(0);
+}
+
 // rows (each of nc values) one after the other, for a dataset [row][...].
 static PetscErrorCode FlattenRows(const char *name, const std::vector<std::vector<double>> &rows, size_t nc,
                                   std::vector<double> *flat)
@@ -304,17 +317,22 @@ static PetscErrorCode H5WriteModeEnergies(hid_t file, const ImpactResult &r)
   if (r.mode_energies.empty()) PetscFunctionReturn(0);
   hid_t                  g = H5Gcreate2(file, "modes_energy", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   std::vector<double>    f, e, x;
-  std::vector<long long> rigid;
+  std::vector<long long>   rigid;
+  std::vector<std::string> part;
   for (const ModeEnergy &m : r.mode_energies) {
     f.push_back(m.frequency);
     e.push_back(m.energy);
     x.push_back(m.fraction);
     rigid.push_back(m.rigid ? 1 : 0);
+    part.push_back(m.part);
   }
   PetscCall(H5WriteDataset1D(g, "frequency", f, "Hz (0 for a rigid mode)"));
   PetscCall(H5WriteDataset1D(g, "energy", e, "J, 1/2 (zd^2 + w^2 z^2) in mass-normalised coordinates at the end"));
-  PetscCall(H5WriteDataset1D(g, "fraction", x, "1 (of the incident kinetic energy E_in; NaN for a ball at rest)"));
-  PetscCall(H5WriteDatasetInt1D(g, "rigid", rigid, "1 for a rigid mode (a free beam: translation, then rotation about the centre of mass), else 0"));
+  PetscCall(H5WriteDataset1D(g, "fraction", x, "1 (of the energy brought in, E_in: the ball's and a swinging bat's kinetic energy)"));
+  PetscCall(H5WriteDatasetInt1D(g, "rigid", rigid, "1 for a rigid mode (a free beam: translation, then rotation about the centre of mass, then the roll), else 0"));
+  PetscCall(H5WriteText1D(g, "part", part,
+                          "text: a rigid mode's motion (translation, rotation, roll), a flexible one's part (bending, roll, wall, strings); each label's modes add up to "
+                          "translation_, rotation_, roll_, vibration_, twist_, wall_ and bed_fraction"));
   RunRecord a;
   a.add("time", (double)r.final_time);
   a.add("description", "the energy each kept mode carries at the end of the run (time, s), after the ball has left (docs/model.md section 12)");

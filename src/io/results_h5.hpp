@@ -116,5 +116,7 @@ PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vect
 // A dataset [row][n1][n2] of rows of n1 * n2 values each.
 PetscErrorCode H5WriteDataset3D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, size_t n1,
                                 size_t n2, const char *unit);
+// A 1-D dataset of variable-length UTF-8 strings, with its unit.
+PetscErrorCode H5WriteText1D(long long loc, const char *name, const std::vector<std::string> &v, const char *unit);
 
 } // namespace beamimpact

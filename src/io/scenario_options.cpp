@@ -2,10 +2,13 @@
 #include "io/scenario_options.hpp"
 
 #include "base/option_table.hpp"
+#include "io/text.hpp"
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <set>
 
 namespace beamimpact {
 
@@ -46,6 +49,16 @@ PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
 {
   BarrelShell &shell = sc->beam.shell;
   PetscFunctionBeginUser;
+  if (shell.contact_radius >= 0) { // given: a patch wider than the ball or the wall spreads the load off the wall (sin(n a/R)/(n a/R) -> 0)
+    const PetscReal R = ShellRadiusAt(sc->beam, sc->impact.x), Rb = sc->ball.radius;
+    PetscReal       limit = PETSC_INFINITY;
+    const char     *what  = "";
+    if (Rb > 0) limit = Rb, what = "the ball's radius (-ball_radius)";
+    if (R > 0 && R < limit) limit = R, what = "the barrel wall's midsurface radius at the impact point";
+    PetscCheck(!(shell.contact_radius > limit), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-shell_contact_radius %g m is not allowed: the ball's patch on the wall can be no wider than %s, %g m; allowed 0 <= a <= %g m (a wider patch spreads the load off the wall)",
+               (double)shell.contact_radius, what, (double)limit, (double)limit);
+  }
   if (shell.contact_radius < 0) {
     const PetscReal v    = sc->ball.speed + (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
     shell.contact_radius = ShellContactRadiusDefault(sc->ball, v);
@@ -59,20 +72,54 @@ PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
 }
 
 // -strings_patch_radius: its default from the ball as the shell's (ShellContactRadiusDefault: the
-// Hertz radius on a rigid flat at the approach speed), and the disc's entries within the contact
-// coupling's room.
+// Hertz radius on a rigid flat at the approach speed); the load's nodes (BedPatch) within the
+// frame's ends on a beam frame, and its coupled dofs within the contact coupling's room.
 PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
 {
   StringBedParams &bed = sc->beam.strings;
   PetscFunctionBeginUser;
   if (bed.patch_radius < 0) bed.patch_radius = ShellContactRadiusDefault(sc->ball, ImpactApproachSpeed(*sc));
-  const BedGrid   g = StringBedFrameGrid(bed, sc->beam.nodes, sc->beam.length);
-  const PetscReal a = bed.patch_radius;
-  PetscInt        n = 0; // the coupling's entries: a free node's own, or its frame section's deflection and roll
-  for (const BedPatchNode &e : BedPatch(g, sc->impact.x - bed.head_center, sc->impact.z, a)) n += e.free ? 1 : 2;
-  PetscCheck(n <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %" PetscInt_FMT " coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
-             (double)a, (double)g.hx, (double)g.hz, n, ContactCoupling::kMaxEntries);
+  const BedGrid      g = StringBedFrameGrid(bed, sc->beam.nodes, sc->beam.length);
+  const PetscReal    a = bed.patch_radius;
+  std::set<PetscInt> dofs; // the coupling's entries: a free node's own, or its frame section's deflection and roll
+  bool               beyond = false;
+  for (const BedPatchNode &e : BedPatch(g, sc->impact.x - bed.head_center, sc->impact.z, a)) {
+    beyond = beyond || e.beyond;
+    if (e.free) dofs.insert(e.i * (g.nz + 2) + 2 + e.j);
+    else if (!bed.Held()) dofs.insert(e.i * (g.nz + 2)), dofs.insert(e.i * (g.nz + 2) + 1); // a held frame's dofs: none
+  }
+  PetscCheck(!beyond || bed.Held(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-impact_x %g with -strings_patch_radius %g m is not allowed: the ball's load on the bed (its disc, spread over the nodes around the point, h_x %g m) reaches past the frame's end (0 <= x <= L = %g m); strike further from the end or give a smaller -strings_patch_radius",
+             (double)sc->impact.x, (double)a, (double)g.hx, (double)sc->beam.length);
+  PetscCheck((PetscInt)dofs.size() <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %zu coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
+             (double)a, (double)g.hx, (double)g.hz, dofs.size(), ContactCoupling::kMaxEntries);
+  PetscFunctionReturn(0);
+}
+
+// -flight: the flight flies the impact's own ball (its mass and size: run/oblique.cpp), which
+// needs its radius; with Nathan's baseball coefficients unless the run gives its own, a note
+// when the ball is not a baseball (its mass or radius 10 % or more from the calculator's).
+PetscErrorCode FlightBallResolve(MPI_Comm comm, const Scenario &sc)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(sc.ball.radius > 0, comm, PETSC_ERR_ARG_WRONG, "-flight needs the ball's size for its drag and lift in the air: give -ball_radius (m)");
+  const FlightBall baseball;
+  const bool       other = std::abs(sc.ball.mass / baseball.mass - 1) >= 0.1 || std::abs(sc.ball.radius / baseball.radius - 1) >= 0.1;
+  bool             aero  = false;
+  for (const char *c : {"-flight_cd0", "-flight_cd_spin", "-flight_cl0", "-flight_cl1", "-flight_cl2"}) {
+    PetscBool given;
+    PetscCall(PetscOptionsHasName(NULL, NULL, c, &given));
+    aero = aero || given;
+  }
+  if (!other || aero) PetscFunctionReturn(0);
+  const FlightAero &a = sc.flight.params.aero;
+  char              text[600];
+  std::snprintf(text, sizeof text,
+                "note: -flight flies the impact's ball (%g kg, radius %g m) with Nathan's baseball aerodynamics (C_D = %g + %g per 1000 rpm, C_L = %g S/(%g + %g S)): another ball has its own (a tennis ball's C_D is "
+                "about 0.55); give -flight_cd0, -flight_cd_spin, -flight_cl0, -flight_cl1, -flight_cl2 (docs/flight.md)\n",
+                (double)sc.ball.mass, (double)sc.ball.radius, (double)a.cd0, (double)a.cd_spin, (double)a.cl2, (double)a.cl0, (double)a.cl1);
+  PetscCall(PrintOnce(comm, text));
   PetscFunctionReturn(0);
 }
 
@@ -121,7 +168,8 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
   if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
-  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve));
+  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve, how.monitors && how.flight_series));
+  if (sc->flight.on && (part(ScenarioFlight) || part(ScenarioBall))) PetscCall(FlightBallResolve(comm, *sc));
   if (how.read_as) {
     *how.read_as                           = *sc;
     how.read_as->beam.shell.contact_radius = radius_as_read;

@@ -45,6 +45,9 @@ struct ScenarioReading {
   std::function<PetscErrorCode(const Scenario &)> after_bodies;
   // false: the monitors stay unread, so a task that records none reports them as unused options.
   bool monitors = true;
+  // false (and without monitors): the flight after the impact keeps no series and leaves
+  // -flight_series_dt unread (a task that writes no trajectory: a sweep, a study).
+  bool flight_series = true;
   // A sweep's points on one structure: the parts not in `read` are copied from *reuse instead of
   // read again; *reuse must be a scenario as read (`read_as` of an earlier reading) from the same
   // values of every option of those parts. The checks that join parts (a ball at rest needs a

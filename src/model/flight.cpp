@@ -28,6 +28,8 @@ constexpr PetscReal kLbFt3PerKgM3  = 0.06261;   // the sheet's conversion of rho
 
 const PetscReal kFlightDecaySpeed = 146.7 * kFoot; // m/s: 100 mph as the sheet converts it (1.467 ft/s per mph)
 
+PetscReal FlightSpinMax(PetscReal radius) { return kSpeedOfSound / radius; }
+
 PetscReal FlightCalculatorFactor()
 {
   const PetscReal circ = 9.125 / 12, mass = 5.125 / 16;            // ft, lb: the reference ball

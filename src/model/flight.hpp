@@ -81,6 +81,17 @@ struct FlightParams {
   PetscReal    gravity = 9.80665; // m/s^2
 };
 
+// The bound on a ball's spin: its surface speed |w| R below the speed of sound in air, 343 m/s
+// (dry air at 20 degC). Beyond it the flow over the ball is supersonic and no drag or lift model
+// applies; the lift here is fitted to spins of 1500-4500 rpm, spin factors S = R |w| / |v| of
+// 0.09-0.6 (A. M. Nathan, Am. J. Phys. 76, 119 (2008)), so even below the bound a large S is an
+// extrapolation. For a baseball (R = 36.9 mm) the bound is 9300 rad/s, 89,000 rpm, 35 times the
+// 2500 rpm of a well-hit fly ball: it refuses only what no bat or pitcher gives (issue 34: a spin
+// of 1e9 rad/s flew 1.6e-27 m).
+constexpr PetscReal kSpeedOfSound = 343; // m/s
+// The largest spin (rad/s) a ball of radius R (m) may have: kSpeedOfSound / R.
+PetscReal FlightSpinMax(PetscReal radius);
+
 // The speed (m/s) the calculator's spin decay refers to: 100 mph as it converts it, 146.7 ft/s.
 extern const PetscReal kFlightDecaySpeed;
 // K(calculator) / K(exact): 0.07182 / (1/2 A/m of its reference ball in ft^2/lb) times

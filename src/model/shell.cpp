@@ -29,6 +29,30 @@ bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t)
   return true;
 }
 
+bool ShellBarrelWall(const BeamParams &p, PetscReal *R, PetscReal *t)
+{
+  const std::vector<ProfileRow> &rows = p.section.profile;
+  PetscReal                      D    = 0;
+  bool                           any  = false;
+  *R = *t = 0;
+  if (p.section.source != SectionSource::Profile) return false;
+  for (const ProfileRow &r : rows) D = std::max(D, r.D);
+  for (const ProfileRow &r : rows) {
+    if (r.D < D * (1 - 1e-9) || !(r.d > 0)) continue;
+    const PetscReal Rr = (r.D + r.d) / 4, tr = (r.D - r.d) / 2;
+    if (!any || tr / Rr > *t / *R) *R = Rr, *t = tr;
+    any = true;
+  }
+  return any;
+}
+
+PetscReal ShellRadiusAt(const BeamParams &p, PetscReal x)
+{
+  PetscReal R, t;
+  if (ShellWallAt(p, x, &R, &t) || ShellBarrelWall(p, &R, &t)) return R;
+  return 0;
+}
+
 PetscReal ShellYoungsModulus(const BeamParams &p) { return p.shell.youngs_modulus > 0 ? p.shell.youngs_modulus : p.section.material.E; }
 
 PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n)

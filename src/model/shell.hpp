@@ -49,6 +49,22 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d);
 
 // The wall's midsurface radius R and thickness t (m) of a profile at x (m); false where solid.
 bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t);
+// The barrel's wall (the profile's rows at its largest outer diameter, as -barrel_wall_thickness
+// takes them): R and t (m) of the row whose t/R is largest; false when no row there is hollow.
+bool ShellBarrelWall(const BeamParams &p, PetscReal *R, PetscReal *t);
+// The wall's radius (m) a displacement under the ball at x is judged against: the midsurface
+// radius there, else (a hoop oscillator struck where the profile is solid) the barrel's; 0 if
+// neither is hollow.
+PetscReal ShellRadiusAt(const BeamParams &p, PetscReal x);
+
+// The thin-shell model's range (docs/model.md section 14): Sanders-Koiter, like every thin-shell
+// theory of the Kirchhoff-Love kind, drops terms of order t/R against 1; a wall thicker than
+// kShellThinLimit R is noted.
+constexpr PetscReal kShellThinLimit = 0.1;
+// Both wall models are linear (strains and the ring's curvature linear in the displacements,
+// taken small against the wall's thickness and radius): a displacement under the ball beyond
+// kWallDeflectionLimit R is physically absurd, flagged in the results (wall_deflection_large).
+constexpr PetscReal kWallDeflectionLimit = 0.25;
 
 // The ball's load as a patch (issue 23): a nominal contact radius a (m) spreads the load over
 // the wall. Around the wall, a uniform pressure over the half-angle phi = a/R: the virtual work

@@ -39,7 +39,7 @@ struct ImpactParams {
   PetscReal z            = 0;     // m, -impact_z: across the face from the frame's axis (a racket's off-centre hit; 0: on the axis)
   PetscReal offset       = 0;     // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
   PetscBool tangential_rigid = PETSC_FALSE; // -impact_tangential_plane rigid: the bat rigid in its second plane (default flexible, run/oblique.hpp)
-  PetscReal window       = -1;    // s, time simulated after each separation (< 0: 2 fundamental periods)
+  PetscReal window       = -1;    // s, time simulated after each separation (-1: not given, 2 fundamental periods; a given one is >= 0)
   PetscReal max_time     = -1;    // s, cap on the simulated time (< 0: window + 100 contact times)
   PetscReal full_max_time = 0;    // s, not an option: 0, or this run is a probe capped by max_time (a sweep's 1 ns) and the cost
                                   // estimates are a full point's, capped by full_max_time (< 0: the default cap)
@@ -169,6 +169,7 @@ struct ImpactOutcome {
   PetscBool compression_beyond_radius = PETSC_FALSE; // max_compression > -ball_radius (given): physically absurd
   // Invariants at the end (relative to the incident kinetic energy / momentum). The momenta
   // only where they are invariants (no held dof, no grip, no mass-proportional damping).
+  PetscReal energy_in       = 0; // J, E_in: the ball's 1/2 m_b v_i^2 and a swinging bat's kinetic energy, the fractions' denominator
   PetscReal energy_error    = 0; // (E_end - E_0) / E_0, E including the ball's work W
   PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i)
   PetscReal angular_momentum_error = 0; // about x = 0, / (m_b v_i L)
@@ -177,11 +178,14 @@ struct ImpactOutcome {
   // The energy the beam's damping (Rayleigh, and a grip's damper) dissipated by the end (J; it is
   // in energy_error's E; 0 for an undamped beam), and as a fraction of the incident kinetic energy.
   PetscReal beam_dissipated_end = 0, damping_fraction = 0;
-  // Where the incident kinetic energy went, as fractions of it, at the end of the run: lost
-  // in the ball (hysteresis; for the linear spring 1 - loss_factor^2 of the rebound energy),
-  // and, for a beam with no held dof, its rigid translation P^2/2M and rotation L_cm^2/2I_cm
-  // about its centre of mass and its vibration (the rest of the beam's energy).
-  PetscReal ball_loss_fraction = 0, translation_fraction = 0, rotation_fraction = 0, vibration_fraction = 0;
+  // Where the energy brought in (E_in: the ball's and a swinging bat's kinetic energy) went, as
+  // fractions of it, at the end of the run (docs/model.md section 4; with damping_fraction and
+  // the wall's, bed's, twist's, roll's, grip's and hands' fractions below they add up to 1): lost
+  // in the ball (hysteresis; for an elastic law 1 - loss_factor^2 of the rebound energy), the
+  // ball's rebound (an elastic law: loss_factor^2 of it), the structure's rigid translation P^2/2M
+  // and rotation (about its centre of mass, or its pin), and its bending vibration (the beam's
+  // energy less its share of the rigid motions).
+  PetscReal ball_loss_fraction = 0, rebound_fraction = 0, translation_fraction = 0, rotation_fraction = 0, vibration_fraction = 0;
   // The bat in play: the batted-ball speed (m/s, away from the bat, lab frame), the collision
   // efficiency q = (bbs - V(x)) / (v_ball + V(x)) (= acor for a bat at rest); a beam with no held
   // dof: its recoil, the centre-of-mass speed (m/s, toward the ball) and angular velocity
@@ -195,9 +199,12 @@ struct ImpactOutcome {
   // steps taken) and when (s), and at the end the grip's stored energy and the work the hands
   // have done on the bat (J; the grip's damper is in beam_dissipated_end).
   PetscReal grip_force_peak = 0, grip_force_peak_time = 0, grip_stored_end = 0, hand_work_end = 0;
+  PetscReal grip_fraction = 0, hands_fraction = 0; // grip_stored_end / E_in, -hand_work_end / E_in
   // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
+  PetscReal wall_fraction = 0; // shell_energy_end / E_in
+  PetscBool wall_deflection_large = PETSC_FALSE; // wall_deflection_peak > kWallDeflectionLimit R (model/shell.hpp): physically absurd
   PetscReal hoop_frequency = 0; // Hz, the wall's lowest n = 2 frequency (the shell's, model/shell.hpp) or -barrel_hoop_frequency
   // A racket (-strings_frame, -beam_torsion): the string bed's energy at the end and its largest
   // over the steps (J), its largest deflection from the frame (m); the roll's energy at the end
@@ -206,6 +213,8 @@ struct ImpactOutcome {
   // the frame's axis, its change over the run / (m_b v_i L).
   PetscReal bed_energy_end = 0, bed_energy_peak = 0, bed_deflection_peak = 0, twist_energy_end = 0;
   PetscReal roll_rate_end = 0, roll_fraction = 0, roll_momentum_error = 0;
+  // The string bed's and the twist's energies at the end less their shares of the rigid motions, / E_in.
+  PetscReal bed_fraction = 0, twist_fraction = 0;
   // The rigid-body model, Eq. (11), for a free beam at rest (no support, pivot, grip or swing):
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
   // for which it gives acor_corrected (the forced fit).
@@ -234,8 +243,12 @@ struct ImpactCost : StepperCounts {
 struct ModeEnergy {
   PetscReal frequency = 0;     // Hz (0: a rigid mode)
   PetscReal energy    = 0;     // J
-  PetscReal fraction  = 0;     // 1: energy / E_in, the incident kinetic energy (NaN for a ball at rest)
+  PetscReal fraction  = 0;     // 1: energy / E_in, the energy brought in (the outcome's)
   bool      rigid     = false; // a rigid mode
+  // What it is (run/energy_parts.hpp): a rigid mode's motion ("translation", "rotation", "roll"),
+  // a flexible one's part as -task modes names it ("bending", "roll", "wall", "strings"); the
+  // modes of one label add up to the matching fraction column.
+  const char *part = "";
 };
 
 // The modal engine a run used (the free flight's basis, else -ts_type modal's, else the truncated

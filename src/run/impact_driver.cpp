@@ -415,6 +415,7 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     PetscCall(recorder.Snapshots(t));
   }
   cost->wall_time = MPI_Wtime() - wall0;
+  if (modes && !rec->mode_energies.empty()) ModeEnergiesLabel(sc.beam, *modes, &rec->mode_energies); // the free flight's
   if (!modes) modes = st.Modes(); // no free flight: -ts_type modal's basis, if it is
   if (modes) rec->modal = {modes->Count(), modes->S.n, BeamModesCutoffHz(*modes)};
   PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, t, info, rec, cost));

@@ -104,6 +104,9 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
   m->bed_energy          = sums[G + 8];
   m->bed_deflection      = bed_max;
   m->beam_roll           = sums[G + 9];
+  m->bed_momentum        = sums[G + 10];
+  m->bed_moment          = sums[G + 11];
+  m->bed_roll            = sums[G + 12];
   m->roll_momentum       = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
   m->momentum            = sums[2] + ball.mass * m->ball_v;
   m->angular_momentum    = sums[3] + ball.mass * ctx.g->x * m->ball_v;
@@ -132,7 +135,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscFunctionBeginUser;
   const PetscInt         np = (PetscInt)points.size();
   const PetscInt         G  = 5 + np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
-  std::vector<PetscReal> sums(G + 10, 0.0); // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the roll's momentum
+  std::vector<PetscReal> sums(G + 13, 0.0); // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the roll's momentum, the bed's three momenta
   if (MeasuresInModes(S, ctx, mon)) { // -ts_type modal after a step: O(modes), without writing the physical state (O(n modes))
     std::shared_ptr<const BeamModes> modes;
     ModalState                       ms;
@@ -195,6 +198,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
       if (S.held[d]) continue;
       const PetscReal mv = S.mass[d] * sv.v[i * sv.v_stride + S.bed_first + j], z = S.bed.Z(j);
       sums[2] += mv, sums[3] += x * mv, sums[G + 9] += z * mv;
+      sums[G + 10] += mv, sums[G + 11] += x * mv, sums[G + 12] += z * mv;
       bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + S.bed_first + j] - y - z * phi));
     }
   }

@@ -28,6 +28,10 @@ struct StateMeasures {
   // structure and the ball (kg m^2/s: sum rho J phi_t + sum m z v + m_b z_b v_b). 0 without.
   PetscReal twist_energy = 0, bed_energy = 0, bed_deflection = 0, roll_momentum = 0;
   PetscReal beam_roll = 0; // kg m^2/s, the structure's share of roll_momentum
+  // The string bed's share of beam_momentum, beam_moment and beam_roll (kg m/s, kg m^2/s, kg m^2/s:
+  // sum m v, sum m x v, sum m z v over its deflections; 0 without a bed), for the split of the
+  // energy into rigid motions and parts (run/energy_parts.hpp).
+  PetscReal bed_momentum = 0, bed_moment = 0, bed_roll = 0;
   PetscReal beam_dissipated = 0;                // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its damper's share too)
   // The hands (-grip), from the force operator (system/force_operator.hpp): the energy stored in
   // the force terms other than the elastic one (the grip's 1/2 sum k_i (y_i - v_f,i t)^2), the

@@ -1,6 +1,7 @@
 // The exact modal reference of one impact. See modal_reference.hpp.
 #include "run/modal_reference.hpp"
 
+#include "base/memory.hpp"
 #include "run/impact.hpp"
 #include "run/oblique.hpp"
 #include "run/outcome.hpp"
@@ -17,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
 #include <utility>
 
 namespace beamimpact {
@@ -170,6 +170,7 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
       p += S.mass[d] * run.qd[d];
       l += S.mass[d] * sys.NodeX(node) * run.qd[d];
       r += S.mass[d] * sys.DofZ(dof) * run.qd[d];
+      if (sys.Bed(f)) m.bed_momentum += S.mass[d] * run.qd[d], m.bed_moment += S.mass[d] * sys.NodeX(node) * run.qd[d], m.bed_roll += S.mass[d] * sys.DofZ(dof) * run.qd[d];
     } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
     else if (f == sys.roll_field) r += S.mass[d] * run.qd[d];
   }
@@ -597,8 +598,7 @@ double ModalReferenceMemoryLimit()
   PetscReal gb  = 0;
   PetscBool set = PETSC_FALSE;
   if (!PetscOptionsGetReal(NULL, NULL, "-reference_max_memory", &gb, &set) && set) return gb * 1e9;
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? 0.5 * (double)pages * (double)page : 8e9;
+  return MemoryLimit(); // -max_memory, default half of the physical memory
 }
 
 } // namespace beamimpact

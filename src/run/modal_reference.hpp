@@ -62,7 +62,8 @@ PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSyste
 double ModalReferenceMemory(const BeamSystem &sys);
 
 // The limit (bytes) ModalReferenceRunSystem refuses beyond: -reference_max_memory (GB, 1e9
-// bytes) if given, else half of the physical memory (sysconf), else 8 GB.
+// bytes) if given, else the run's limit (base/memory.hpp: -max_memory, default half of the
+// physical memory).
 double ModalReferenceMemoryLimit();
 
 } // namespace beamimpact

@@ -28,6 +28,10 @@ PetscErrorCode ObliqueNormalScenario(MPI_Comm comm, const Scenario &sc, Scenario
                "table of properties is not round)",
                what, OptionWritten(what).c_str(), SectionSourceName(sc.beam.section.source));
     PetscCheck(R_b > 0, comm, PETSC_ERR_ARG_INCOMP, "%s %s: an oblique impact needs the ball's radius: give -ball_radius (m)", what, OptionWritten(what).c_str());
+    PetscCheck(std::abs(sc.ball.spin) < FlightSpinMax(R_b), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-ball_spin %s is not allowed: it moves the ball's surface at %g m/s (-ball_radius %g m), beyond the speed of sound in air (%g m/s), where neither the contact nor the flight "
+               "models hold; |spin| must be below %g rad/s",
+               OptionWritten("-ball_spin").c_str(), (double)(std::abs(sc.ball.spin) * R_b), (double)R_b, (double)kSpeedOfSound, (double)FlightSpinMax(R_b));
     PetscCheck(std::abs(D) < R_b + R, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-impact_offset %s misses the bat: |D| must be < R_b + R_bat = %g m (-ball_radius %g m plus the bat's radius %g m at -impact_x %g m)", OptionWritten("-impact_offset").c_str(),
                (double)(R_b + R), (double)R_b, (double)R, (double)sc.impact.x);
@@ -189,8 +193,9 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   const BeamRigidBody body    = BeamRigidBodyOf(sc.beam);
   const PetscReal     V_in    = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
   const PetscReal     s       = in.geometry.sin_theta;
-  // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models)
-  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force, series.force_rate);
+  // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models);
+  // without friction the spring carries no force: none (its zero-force steps left -6e-71 J of round-off)
+  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0 && ball.friction > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force, series.force_rate);
   rec->model          = m;
   rec->before.v_ball  = in.ball_speed * s;
   rec->before.spin    = -ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise
@@ -227,6 +232,8 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   rec->exit  = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
   if (sc.flight.on) {
     FlightParams p    = sc.flight.params;
+    p.ball.mass       = sc.ball.mass; // the impact's own ball (its radius is required with -flight: FlightBallResolve)
+    p.ball.radius     = sc.ball.radius > 0 ? sc.ball.radius : p.ball.radius;
     p.launch.speed    = rec->exit.speed;
     p.launch.angle    = rec->exit.launch_angle;
     p.launch.backspin = rec->after.spin;
@@ -234,6 +241,10 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     FlightInitialState(p.launch, u);
     PetscCheck(p.launch.height > 0 || p.launch.angle > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
                "-flight with -flight_height 0: the batted ball leaves at %g deg, downward, from the ground; give -flight_height > 0", (double)p.launch.angle);
+    PetscCheck(std::abs(p.launch.backspin) < FlightSpinMax(p.ball.radius), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "-flight: the batted ball leaves spinning at %g rad/s, its surface at %g m/s (-flight_ball_radius %g m), beyond the speed of sound in air (%g m/s), where the flight's drag and "
+               "lift do not hold (check -ball_speed, -ball_spin and the swing)",
+               (double)p.launch.backspin, (double)(std::abs(p.launch.backspin) * p.ball.radius), (double)p.ball.radius, (double)kSpeedOfSound);
     PetscCall(FlightSolve(FlightModelOf(p), u, sc.flight.solve, &rec->flight));
     rec->flew = true;
   }

@@ -1,6 +1,8 @@
 // The outcome of a run. See outcome.hpp.
 #include "run/outcome.hpp"
 
+#include "model/shell.hpp"
+
 #include <cstdio>
 #include <limits>
 #include <utility>
@@ -25,16 +27,12 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
     else if (fld == S.roll_field) Izz += m; // the sections' rho J
   }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
-  const PetscReal L_cm = f->end.beam_moment - x_cm * f->end.beam_momentum;
   f->beam_mass         = M;
   f->inertia_cm        = I_cm;
-  f->moment_cm         = L_cm;
-  f->E_translation     = f->end.beam_momentum * f->end.beam_momentum / (2 * M);
-  f->E_rotation        = I_cm > 0 ? L_cm * L_cm / (2 * I_cm) : 0;
+  f->moment_cm         = f->end.beam_moment - x_cm * f->end.beam_momentum;
   if (S.roll_field < 0) return;
   f->inertia_roll = Izz; // about the axis z = 0: the bed is symmetric across it, its centre of mass on the axis
   f->moment_roll  = f->end.beam_roll;
-  f->E_roll       = Izz > 0 ? f->moment_roll * f->moment_roll / (2 * Izz) : 0;
 }
 
 } // namespace
@@ -61,9 +59,10 @@ void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord
   f.energy_end = rec.energy_end;
   f.final_time = rec.final_time;
   f.V_x        = rec.V_x;
-  f.E_in       = 0.5 * sc.ball.mass * sc.ball.speed * sc.ball.speed;
+  f.E_in       = 0.5 * sc.ball.mass * sc.ball.speed * sc.ball.speed + rec.start.beam_kinetic; // a swinging bat's too
   f.oblique    = &rec.oblique;
   RigidPartAtEnd(sys, &f);
+  f.split = EnergySplitOf(sc.beam, sys, f.end);
   for (const ResultColumn &c : ImpactResultColumns())
     if (c.compute) c.Set(res, c.applies(sc) ? c.compute(f) : nan);
   res->events     = std::move(rec.contact.events);
@@ -88,6 +87,19 @@ std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &
                 "warning: the maximum compression %.4g m is beyond the ball's radius (-ball_radius %g m, %.3g times it): physically absurd, the contact law is used far outside its range "
                 "(check -ball_speed %g m/s and the stiffness)",
                 (double)r.max_compression, (double)sc.ball.radius, (double)(r.max_compression / sc.ball.radius), (double)sc.ball.speed);
+  return msg;
+}
+
+std::string WallDeflectionLargeText(const Scenario &sc, const ImpactResult &r)
+{
+  if (!r.wall_deflection_large) return "";
+  const PetscReal R = ShellRadiusAt(sc.beam, sc.impact.x);
+  char            msg[640];
+  std::snprintf(msg, sizeof msg,
+                "warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the "
+                "wall's model is linear (its displacements small against its thickness and radius); check %s and -ball_speed %g m/s",
+                (double)r.wall_deflection_peak, (double)(r.wall_deflection_peak / R), (double)R, (double)sc.impact.x, (double)kWallDeflectionLimit,
+                sc.beam.hoop.on ? "-barrel_hoop_frequency and -barrel_hoop_mass" : "-shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius", (double)sc.ball.speed);
   return msg;
 }
 

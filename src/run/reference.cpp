@@ -119,7 +119,7 @@ const OptionModule &ReferenceOptionModule()
     OptionModule r{"reference", "Impact task: the method that solves it (-task impact)", {}};
     const std::vector<std::string> names = ReferenceMethodNames(false);
     r.options.push_back(OptionChoice("-reference", ("How the impact is solved: " + ReferenceMethodHelp(false)).c_str(), names, names.empty() ? "" : names[0].c_str()));
-    r.options.push_back(OptionReal("-reference_max_memory", "GB", "-reference modal: refuse a beam whose dense modal matrices need more than this (default half of the physical memory)",
+    r.options.push_back(OptionReal("-reference_max_memory", "GB", "-reference modal: refuse a beam whose dense modal matrices need more than this (default -max_memory's limit: half of the physical memory)",
                                    "", Positive())); // no fixed default: the machine's
     return r;
   }();

@@ -7,6 +7,7 @@
 #include "run/scenario.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace beamimpact {
@@ -80,6 +81,13 @@ ResultColumn Real(const char *name, const char *unit, PetscReal ImpactResult::*f
   return c;
 }
 
+// A share of E_in (ResultColumn::share).
+ResultColumn Share(ResultColumn c, const char *label)
+{
+  c.share = label;
+  return c;
+}
+
 ResultColumn Count(const char *name, PetscInt ImpactResult::*field, Compute compute, const char *description)
 {
   ResultColumn c{name, "1", description, ResultAlways, "always"};
@@ -101,11 +109,25 @@ ResultColumn Flag(const char *name, PetscBool ImpactResult::*field, Compute comp
 const char *const kAlways = "always";
 const char *const kStrings = "with a string bed (-strings_frame held or beam)";
 const char *const kNoHeld = "a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
-// A ball at rest (-ball_speed 0, struck by a swinging bat) has no ACOR and no incident energy E_in.
+// A ball at rest (-ball_speed 0, struck by a swinging bat) has no ACOR.
 bool              BallMoves(const Scenario &sc) { return sc.ball.speed > 0; }
-bool              BallMovesNoHeld(const Scenario &sc) { return BallMoves(sc) && ResultNoHeldDof(sc); }
-const char *const kBallMoves       = "a moving ball (-ball_speed > 0; a ball at rest has no ACOR and no E_in)";
-const char *const kBallMovesNoHeld = "a moving ball (-ball_speed > 0) and a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
+const char *const kBallMoves       = "a moving ball (-ball_speed > 0; a ball at rest has no ACOR)";
+// The fractions of the energy brought in, E_in (the ball's and a swinging bat's kinetic energy):
+// always (a ball at rest is refused without a swing), each where its energy is tracked. Together
+// they close to 1 (run/energy_parts.hpp, docs/model.md section 4).
+bool              EnergyIn(const Scenario &sc) { return sc.ball.speed > 0 || sc.swing.Swings(); }
+bool              EnergyInTranslation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Translation); }
+bool              EnergyInRotation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Rotation); }
+bool              EnergyInRoll(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Roll); }
+bool              EnergyInTwist(const Scenario &sc) { return EnergyIn(sc) && ResultTwist(sc); }
+bool              EnergyInBed(const Scenario &sc) { return EnergyIn(sc) && ResultStringBed(sc); }
+bool              EnergyInWall(const Scenario &sc) { return EnergyIn(sc) && ResultBarrelWall(sc); }
+bool              EnergyInGrip(const Scenario &sc) { return EnergyIn(sc) && ResultGripped(sc); }
+const char *const kEnergyIn = "always (E_in > 0: a moving ball or a swinging bat)";
+const char *const kTranslation = "a structure with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
+const char *const kRotation =
+  "a structure with no held dof, or held at one pin only (-beam_pivot or one pinned end, no clamp): its rigid rotation about the centre of mass, or about the pin";
+const char *const kRoll = "with -beam_torsion and no clamp (a clamped end or -beam_clamp holds the roll)";
 // The momenta's reference: the ball's, or a ball at rest's swinging bat's.
 PetscReal MomentumScale(const OutcomeFacts &f) { return f.sc->ball.speed > 0 ? f.sc->ball.mass * f.sc->ball.speed : std::abs(f.start.momentum); }
 
@@ -152,6 +174,8 @@ std::vector<ResultColumn> OutcomeColumns()
          "1 if max_compression exceeds -ball_radius (given): physically absurd (a sweep's summary counts such rows)"),
     Real("ball_final_velocity", "m/s", &R::ball_final_velocity, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_v; }, "the ball's velocity at the end (negative: rebound)"),
     Real("final_time", "s", &R::final_time, ResultAlways, kAlways, [](F f) -> double { return f.final_time; }, "simulated time at the end"),
+    Real("energy_in", "J", &R::energy_in, ResultAlways, kAlways, [](F f) -> double { return f.E_in; },
+         "E_in, the energy brought in: the ball's 1/2 m_b v_i^2 and a swinging bat's kinetic energy (lab frame); the *_fraction columns' denominator"),
     Real("energy_error", "1", &R::energy_error, ResultAlways, kAlways, [](F f) -> double { return (f.energy_end - f.energy_in) / f.energy_in; },
          "(E_end - E_0) / E_0 of the conserved total (ball work and dissipated energy included)"),
     Real("linear_momentum_error", "1", &R::linear_momentum_error, ResultMomentumInvariant, "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
@@ -164,18 +188,21 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("ball_kinetic_end", "J", &R::ball_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_kinetic; }, "the ball's kinetic energy at the end (its rebound)"),
     Real("ball_dissipated_end", "J", &R::ball_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return BallDissipated(f); },
          "energy dissipated in the ball (0 for an elastic law)"),
-    Real("ball_loss_fraction", "1", &R::ball_loss_fraction, BallMoves, kBallMoves,
+    Share(Real("ball_loss_fraction", "1", &R::ball_loss_fraction, EnergyIn, kEnergyIn,
          [](F f) -> double {
            const BallParams &b = f.sc->ball;
            return (ContactElastic(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic : BallDissipated(f)) / f.E_in;
          },
-         "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (elastic)"),
-    Real("translation_fraction", "1", &R::translation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_translation / f.E_in; },
-         "the beam's rigid translation P^2/2M at the end / E_in"),
-    Real("rotation_fraction", "1", &R::rotation_fraction, BallMovesNoHeld, kBallMovesNoHeld, [](F f) -> double { return f.E_rotation / f.E_in; },
-         "the beam's rigid rotation L_cm^2/2I_cm about its centre of mass at the end / E_in"),
-    Real("vibration_fraction", "1", &R::vibration_fraction, BallMovesNoHeld, kBallMovesNoHeld,
-         [](F f) -> double { return (f.end.beam_kinetic + f.end.beam_strain - f.E_translation - f.E_rotation - f.E_roll) / f.E_in; }, "the rest of the beam's energy at the end / E_in"),
+         "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (elastic)"), "ball loss"),
+    Share(Real("rebound_fraction", "1", &R::rebound_fraction, EnergyIn, kEnergyIn,
+         [](F f) -> double { return (ContactElastic(f.sc->ball) ? f.sc->ball.loss_factor * f.sc->ball.loss_factor : 1) * f.end.ball_kinetic / f.E_in; },
+         "the ball's rebound energy 1/2 m_b v_b,final^2 / E_in (lab frame; elastic laws: times loss_factor^2); a bat at rest: acor_corrected^2"), "ball rebound"),
+    Share(Real("translation_fraction", "1", &R::translation_fraction, EnergyInTranslation, kTranslation,
+         [](F f) -> double { return f.split.rigid[(int)RigidKind::Translation] / f.E_in; }, "the structure's rigid translation P^2/2M at the end / E_in"), "translation"),
+    Share(Real("rotation_fraction", "1", &R::rotation_fraction, EnergyInRotation, kRotation, [](F f) -> double { return f.split.rigid[(int)RigidKind::Rotation] / f.E_in; },
+         "the structure's rigid rotation at the end / E_in: L_cm^2/2I_cm about its centre of mass (no held dof), L_p^2/2I_p about its pin"), "rotation"),
+    Share(Real("vibration_fraction", "1", &R::vibration_fraction, EnergyIn, kEnergyIn, [](F f) -> double { return f.split.flexible[(int)Part::Beam] / f.E_in; },
+         "the beam's bending (and shear) at the end / E_in: its kinetic and strain energy less its share of the rigid motions"), "bending"),
     Real("bbs", "m/s", &R::bbs, ResultAlways, kAlways, [](F f) -> double { return -f.end.ball_v; }, "batted-ball speed, away from the bat (lab frame; a bat at rest: acor v_i)"),
     Real("collision_efficiency", "1", &R::collision_efficiency, ResultAlways, kAlways, [](F f) -> double { return CollisionEfficiency(f); },
          "q = (bbs - V(x)) / (v_ball + V(x)), the ACOR in the bat's frame (a bat at rest: acor)"),
@@ -192,27 +219,43 @@ std::vector<ResultColumn> OutcomeColumns()
     Real("grip_force_peak_time", "s", &R::grip_force_peak_time, ResultGripped, "with -grip", [](F f) -> double { return f.peaks->grip_force_time; }, "when"),
     Real("grip_stored_end", "J", &R::grip_stored_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.grip_stored; }, "the grip's stored energy at the end"),
     Real("hand_work_end", "J", &R::hand_work_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.hand_work; }, "work the hands did on the bat by the end"),
+    Share(Real("grip_fraction", "1", &R::grip_fraction, EnergyInGrip, "with -grip", [](F f) -> double { return f.end.grip_stored / f.E_in; }, "grip_stored_end / E_in"), "grip"),
+    Share(Real("hands_fraction", "1", &R::hands_fraction, EnergyInGrip, "with -grip", [](F f) -> double { return -f.end.hand_work / f.E_in; },
+         "the energy the bat gave the hands, -hand_work_end / E_in (< 0: the hands gave energy)"), "to the hands"),
     Real("shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.end.shell_energy; },
          "the barrel wall's energy at the end (stored and kinetic): what it did not give back"),
+    Share(Real("wall_fraction", "1", &R::wall_fraction, EnergyInWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.split.flexible[(int)Part::Wall] / f.E_in; },
+         "shell_energy_end / E_in"), "wall"),
     Real("shell_energy_peak", "J", &R::shell_energy_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->shell_energy; },
          "the barrel wall's largest energy over the steps (NaN from the modal reference)"),
     Real("wall_deflection_peak", "m", &R::wall_deflection_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->wall_deflection; },
          "the barrel wall's largest displacement under the ball over the steps (NaN from the modal reference)"),
+    Flag("wall_deflection_large", &R::wall_deflection_large,
+         [](F f) -> double {
+           const BeamParams &b = f.sc->beam;
+           const PetscReal   R = b.hoop.on || b.shell.on ? ShellRadiusAt(b, f.sc->impact.x) : 0;
+           return R > 0 && f.peaks->wall_deflection > kWallDeflectionLimit * R ? 1 : 0;
+         },
+         "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear wall far outside its range, physically absurd"),
     Real("hoop_frequency", "Hz", &R::hoop_frequency, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
          [](F f) -> double { return f.sc->beam.hoop.on ? f.sc->beam.hoop.frequency : ShellLowestFrequency(f.sc->beam, 2); },
          "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h"),
     Real("bed_energy_end", "J", &R::bed_energy_end, ResultStringBed, kStrings, [](F f) -> double { return f.end.bed_energy; },
          "the string bed's energy at the end (its strain relative to the frame and its strings' kinetic energy)"),
+    Share(Real("bed_fraction", "1", &R::bed_fraction, EnergyInBed, kStrings, [](F f) -> double { return f.split.flexible[(int)Part::Bed] / f.E_in; },
+         "the string bed's vibration at the end / E_in: bed_energy_end less its share of the rigid motions"), "strings"),
     Real("bed_energy_peak", "J", &R::bed_energy_peak, ResultStringBed, kStrings, [](F f) -> double { return f.peaks->bed_energy; },
          "the string bed's largest energy over the steps (NaN from the modal reference)"),
     Real("bed_deflection_peak", "m", &R::bed_deflection_peak, ResultStringBed, kStrings, [](F f) -> double { return f.peaks->bed_deflection; },
          "the string bed's largest deflection from its frame, max |w - y - z phi| over its nodes and the steps (NaN from the modal reference)"),
     Real("twist_energy_end", "J", &R::twist_energy_end, ResultTwist, "with -beam_torsion", [](F f) -> double { return f.end.twist_energy; },
          "the frame's roll energy at the end: the twist's strain and the sections' spin rho J phi_t^2/2 (a string bed's roll is in bed_energy_end)"),
+    Share(Real("twist_fraction", "1", &R::twist_fraction, EnergyInTwist, "with -beam_torsion", [](F f) -> double { return f.split.flexible[(int)Part::Twist] / f.E_in; },
+         "the frame's twisting at the end / E_in: twist_energy_end less its share of the rigid roll"), "twist"),
     Real("roll_rate_end", "rad/s", &R::roll_rate_end, ResultTwistNoHeld, "with -beam_torsion, a moving ball and no held dof",
          [](F f) -> double { return f.inertia_roll > 0 ? f.moment_roll / f.inertia_roll : 0; }, "the frame's rigid roll rate about its axis at the end (> 0: the +z side moves toward +y, away from the ball's approach)"),
-    Real("roll_fraction", "1", &R::roll_fraction, ResultTwistNoHeld, "with -beam_torsion, a moving ball and no held dof", [](F f) -> double { return f.E_roll / f.E_in; },
-         "the frame's rigid roll L_x^2/2I_x about its axis at the end / E_in (not in vibration_fraction)"),
+    Share(Real("roll_fraction", "1", &R::roll_fraction, EnergyInRoll, kRoll, [](F f) -> double { return f.split.rigid[(int)RigidKind::Roll] / f.E_in; },
+         "the structure's rigid roll L_x^2/2I_x about the frame's axis at the end / E_in (not in twist_fraction or bed_fraction)"), "roll"),
     Real("roll_momentum_error", "1", &R::roll_momentum_error, ResultTwistInvariant, "with -beam_torsion where momentum is an invariant",
          [](F f) -> double { return (f.end.roll_momentum - f.start.roll_momentum) / (MomentumScale(f) * f.sc->beam.length); },
          "change of the angular momentum about the frame's axis / (m_b v_i L)"),
@@ -267,7 +310,7 @@ std::vector<ResultColumn> CostAndLaterColumns()
     Real("dt_stable", "s", &R::dt_stable, ResultAlways, kAlways, nullptr, "explicit stability limit y*/omega_max (0: not explicit)"),
     Real("beam_dissipated_end", "J", &R::beam_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_dissipated; },
          "energy the beam's damping (and a grip's damper) dissipated by the end (0 undamped)"),
-    Real("damping_fraction", "1", &R::damping_fraction, BallMoves, kBallMoves, [](F f) -> double { return f.end.beam_dissipated / f.E_in; }, "beam_dissipated_end / E_in"),
+    Share(Real("damping_fraction", "1", &R::damping_fraction, EnergyIn, kEnergyIn, [](F f) -> double { return f.end.beam_dissipated / f.E_in; }, "beam_dissipated_end / E_in"), "damping"),
     Real("rigid_acor", "1", &R::rigid_acor, ResultFreeBeamAtRest, "a free beam at rest: no held dof, no -grip, no swing",
          [](F f) -> double { return RigidACOR(f.sc->ball.mass, RigidMassAt(f), f.sc->impact.rigid_loss_fraction); },
          "Eq. (11) with the loss fraction f (a sweep's -rigid_loss_fraction; 0 for -task impact)"),
@@ -285,6 +328,24 @@ std::vector<ResultColumn> BuildTable()
 }
 
 } // namespace
+
+std::string ImpactEnergyShareText(const Scenario &sc, const ImpactResult &r)
+{
+  std::string text;
+  PetscReal   sum = 0;
+  char        item[96];
+  for (const ResultColumn &c : ImpactResultColumns()) {
+    if (!c.share || !c.applies(sc)) continue;
+    std::snprintf(item, sizeof item, "%s%s %.4g", text.empty() ? "" : ", ", c.share, c.Get(r));
+    text += item;
+    sum += c.Get(r);
+  }
+  if (text.empty()) return "";
+  char head[96], tail[96];
+  std::snprintf(head, sizeof head, "energy: fractions of E_in = %.5g J: ", (double)r.energy_in);
+  std::snprintf(tail, sizeof tail, "; their sum 1 %c %.2g (the energy error)", sum - 1 < 0 ? '-' : '+', (double)std::abs(sum - 1));
+  return head + text + tail;
+}
 
 const std::vector<ResultColumn> &ImpactResultColumns()
 {

@@ -13,6 +13,7 @@
 // (run/outcome.hpp), from the events (ContactTally) or the monitors (MonitorPeaks).
 #pragma once
 
+#include "run/energy_parts.hpp"
 #include "run/impact.hpp"
 #include "run/measures.hpp"
 #include "run/scenario.hpp"
@@ -34,16 +35,21 @@ struct OutcomeFacts {
   PetscReal           energy_end = 0;      // J, the same at the end
   PetscReal           final_time = 0;      // s
   PetscReal           V_x        = 0;      // m/s, the swinging bat's speed toward the ball at the impact point (0 at rest)
-  PetscReal           E_in       = 0;      // J, the ball's incident kinetic energy 1/2 m_b v_i^2
+  // J, the energy brought into the impact: the ball's incident kinetic energy 1/2 m_b v_i^2 and a
+  // swinging bat's kinetic energy at t = 0 (lab frame; 0 for a bat at rest). The fractions'
+  // denominator (0: a ball at rest and a bat at rest, which -ball_speed refuses).
+  PetscReal           E_in       = 0;
   // The beam's rigid-body part at the end, over the dofs that can move: mass (kg), moment of
   // inertia about its centre of mass (kg m^2, with a Timoshenko section's rotary inertia),
-  // angular momentum about the centre of mass (kg m^2/s), and the kinetic energies of the rigid
-  // translation P^2/2M and rotation L_cm^2/2I_cm (J).
-  PetscReal beam_mass = 0, inertia_cm = 0, moment_cm = 0, E_translation = 0, E_rotation = 0;
+  // angular momentum about the centre of mass (kg m^2/s).
+  PetscReal beam_mass = 0, inertia_cm = 0, moment_cm = 0;
   // With a roll field (-beam_torsion): the moment of inertia about the frame's axis (kg m^2: the
-  // sections' rho J and a string bed's m z^2), the structure's angular momentum about it (kg m^2/s)
-  // and the rigid roll's energy L_x^2 / 2 I_x (J); 0 without.
-  PetscReal inertia_roll = 0, moment_roll = 0, E_roll = 0;
+  // sections' rho J and a string bed's m z^2) and the structure's angular momentum about it
+  // (kg m^2/s); 0 without.
+  PetscReal inertia_roll = 0, moment_roll = 0;
+  // The structure's energy at the end in its rigid motions and, part by part, the rest (J;
+  // run/energy_parts.hpp): the fraction columns' numerators.
+  EnergySplit split;
   const ObliqueRecord *oblique = nullptr; // an oblique impact's tangential contact, exit and flight
 };
 
@@ -76,6 +82,9 @@ struct ResultColumn {
   ResultApplies applies;     // false: NaN in this row
   const char   *applies_text; // the same in words ("always", "with -grip")
   bool          integer = false; // a count: an integer dataset in an impact file (a count always applies)
+  // A share of the energy brought in (the fractions that close to 1: docs/model.md section 4): its
+  // short name in the summary's energy line ("ball rebound", "wall", ...); nullptr for the rest.
+  const char   *share = nullptr;
   // How the outcome computes it (nullptr: the stepper's own counts and settings, written by the
   // driver and the stepper: the cost and integrator columns).
   double (*compute)(const OutcomeFacts &f) = nullptr;
@@ -87,6 +96,10 @@ struct ResultColumn {
   double Get(const ImpactResult &r) const;      // the value as a double
   void   Set(ImpactResult *r, double v) const;  // (the outcome's writes)
 };
+
+// The energy line of the summary: every share of E_in that applies, "energy: E_in 116 J: ball
+// rebound 0.055, ...; their sum 1 - 8.8e-09 (the energy error)" (empty when none applies).
+std::string ImpactEnergyShareText(const Scenario &sc, const ImpactResult &r);
 
 // The table, in the order of the files (a sweep adds its own columns before it).
 const std::vector<ResultColumn> &ImpactResultColumns();

@@ -1,6 +1,7 @@
 // The beam's modes, computed once per beam. See beam_modes.hpp.
 #include "solvers/beam_modes.hpp"
 
+#include "base/memory.hpp"
 #include "solvers/beam_flexibility.hpp"
 #include "solvers/modes.hpp"
 
@@ -12,8 +13,6 @@
 #include <deque>
 #include <limits>
 #include <map>
-
-#include <unistd.h>
 
 extern "C" void dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, int *info);
 extern "C" void dpbtrs_(const char *uplo, const int *n, const int *kd, const int *nrhs, const double *ab, const int *ldab, double *b, const int *ldb, int *info);
@@ -37,6 +36,11 @@ bool SameBeam(const BeamSystem &a, const BeamSystem &b)
 // that the computed flexible modes carry a little momentum and a free beam would lose some
 // over a window; with the exact rigid modes momentum and angular momentum are kept to
 // round-off. Their omega is exactly 0 and they decay only by alpha (C phi = alpha M phi).
+// The system has exactly as many rigid motions as BeamSystemRigidMotions finds (K annihilates
+// them): when fewer computed modes fall below the threshold but that many lie three decades
+// below the next, those are the rigid ones, lifted by round-off (a mass spread over many decades,
+// -beam_torsion_inertia 1e-12 on the strung racket: 0.037 rad/s against the threshold 0.035; the
+// static correction then held only the translation and failed on the free roll, issue 34).
 void ExactRigidModes(BeamModes *m)
 {
   const ModalSystem &S = m->S;
@@ -44,7 +48,9 @@ void ExactRigidModes(BeamModes *m)
   ModalBasis        &B = m->B;
   PetscInt           nz = 0;
   while (nz < count && B.omega[nz] < 1e-3 * m->sys.frequency_unit) nz++;
-  const auto rigid = BeamSystemRigidMotions(m->sys);
+  const auto     rigid = BeamSystemRigidMotions(m->sys);
+  const PetscInt r     = (PetscInt)rigid.size();
+  if (nz < r && r < count && B.omega[r - 1] < 1e-3 * B.omega[r]) nz = r;
   if (nz > 0 && (PetscInt)rigid.size() == nz) {
     for (PetscInt k = 0; k < nz; ++k) { // M^{1/2} v on the free dofs, orthonormal
       PetscReal *phi = &B.Phi[(size_t)k * n];
@@ -114,8 +120,9 @@ PetscErrorCode CacheOf(MPI_Comm comm, ModesCache **cache)
 constexpr double kModesPrecisionLimit = 100;
 constexpr double kFactoredSwitch      = 1;
 
-// The spread of M^-1 K: Gershgorin's bound on its largest eigenvalue (1/s^2).
-static double StiffnessSpread(const BeamSystem &sys)
+// The spread of M^-1 K: Gershgorin's bound on its largest eigenvalue (1/s^2); *where (may be
+// null) the dof of that row.
+static double StiffnessSpread(const BeamSystem &sys, PetscInt *where = nullptr)
 {
   double         top = 0;
   const PetscInt w   = 2 * sys.bw + 1;
@@ -123,9 +130,28 @@ static double StiffnessSpread(const BeamSystem &sys)
     if (!(sys.mass[i] > 0)) continue;
     double row = 0;
     for (PetscInt o = 0; o < w; ++o) row += std::abs(sys.band[(size_t)w * i + o]);
+    if (row / sys.mass[i] > top && where) *where = i;
     top = std::max(top, row / sys.mass[i]);
   }
   return top;
+}
+
+// What to change when the spread is too wide by `factor`, by the part whose dof sets it: the
+// frame's roll (its rho J too light for its G J), the strings (too light for their tension), or
+// the grid (the beam's h^-4).
+static std::string SpreadRemedy(const BeamSystem &sys, PetscInt dof, double factor)
+{
+  char            text[400];
+  const PetscInt  f = dof % sys.fields;
+  const PetscReal h = sys.L / (sys.nodes - 1);
+  if (f == sys.roll_field)
+    std::snprintf(text, sizeof text, "set by the frame's roll at x = %.3g m (rho J = %.3g kg m there against its G J): raise -beam_torsion_inertia at least %.2g times (or lower -beam_torsion_stiffness)",
+                  (double)sys.NodeX(dof / sys.fields), (double)(sys.mass[dof] / h), factor);
+  else if (sys.Bed(f))
+    std::snprintf(text, sizeof text, "set by the strings at x = %.3g m (their mass against their tension): raise -strings_linear_density at least %.2g times (or lower -strings_tension)",
+                  (double)sys.NodeX(dof / sys.fields), factor);
+  else std::snprintf(text, sizeof text, "fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)");
+  return text;
 }
 
 static double ModesPrecisionIndex(const BeamSystem &sys)
@@ -163,10 +189,12 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
     const bool  factored = BeamFactorCreate(sys, &F, &whynot);
     if (factored && FactoredPrecisionIndex(sys) <= kModesPrecisionLimit) return true;
     if (why) {
-      char text[600];
-      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e), and the factored form %s: fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)",
+      char     text[1000];
+      PetscInt where = 0;
+      StiffnessSpread(sys, &where);
+      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e), and the factored form %s: %s",
                     (int)sys.nodes, index / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon(),
-                    factored ? "is beyond it too" : ("does not apply (" + whynot + ")").c_str());
+                    factored ? "is beyond it too" : ("does not apply (" + whynot + ")").c_str(), SpreadRemedy(sys, where, index / kModesPrecisionLimit).c_str());
       *why = text;
     }
     return false;
@@ -255,22 +283,39 @@ PetscInt ModesBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal sigma
 // a few above, so that its last is past the cut-off.
 PetscInt ModesAskedBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal wc) { return std::min<PetscInt>(S.n, ModesBelow(sys, S, wc * wc) + 8); }
 
+// The memory of a partial eigen-solve of nev modes of n free dofs (bytes): SLEPc's Krylov-Schur
+// basis of ncv = max(2 nev, nev + 15) vectors (its default) and the nev eigenvectors returned,
+// 3 nev vectors of n doubles, and its projected problem's dense ncv x ncv matrices (a few).
+// Measured (the factored form, 560 modes, 1e4 to 4e4 free dofs): 13.2 kB a free dof; the
+// model's 24 nev = 13.4 kB.
+double PartialModesBytes(PetscInt n, PetscInt nev)
+{
+  const double ncv = std::max(2.0 * nev, nev + 15.0);
+  return sizeof(PetscReal) * ((ncv + nev) * (double)n + 4 * ncv * ncv);
+}
+
+// Refuses a partial solve of nev modes whose memory (PartialModesBytes) is above the run's limit.
+PetscErrorCode PartialModesMemoryCheck(MPI_Comm comm, PetscInt n, PetscInt nev)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MemoryCheck(comm, PartialModesBytes(n, nev), "the beam's modes: a partial eigen-solve of " + std::to_string(nev) + " modes of " + std::to_string(n) + " free dofs",
+                        "use fewer -beam_nodes, a larger -modal_tolerance (fewer modes) or a -ts_type other than modal"));
+  PetscFunctionReturn(0);
+}
+
 // Whether the dense decomposition of the n free dofs is expected to be quicker than a partial
 // solve of nev modes (the time models above; below 65 dofs always).
 bool DenseIsQuicker(const ModalSystem &S, PetscInt nev, bool refine_all) { return S.n <= 64 || DenseSeconds(S, refine_all) <= PartialSeconds(S, nev, refine_all); }
 
 // The dense decomposition of every mode, with its memory check (3 n^2 doubles: the matrix,
-// which becomes the basis, and dsyevd's workspace of 2 n^2) against half the physical memory.
+// which becomes the basis, and dsyevd's workspace of 2 n^2) against the run's limit.
 PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m, const char *why = "-modal_modes auto keeps only the modes the contact moves")
 {
   const double n = (double)m->S.n, need = 3 * n * n * sizeof(PetscReal);
-  const long   pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  const double limit = pages > 0 && page > 0 ? 0.5 * (double)pages * (double)page : 8e9;
 
   PetscFunctionBeginUser;
-  PetscCheck(need <= limit, comm, PETSC_ERR_MEM,
-             "-modal_modes %s: every mode of %" PetscInt_FMT " free dofs needs about %.3g GB for the dense decomposition, above half the physical memory (%.3g GB); use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes",
-             ModalModesText(m->request).c_str(), m->S.n, need / 1e9, limit / 1e9);
+  PetscCall(MemoryCheck(comm, need, "-modal_modes " + ModalModesText(m->request) + ": the dense decomposition of every mode of " + std::to_string(m->S.n) + " free dofs",
+                        "use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes"));
   const double expected = DenseSeconds(m->S, m->request.refine_all); // s
   if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
     PetscCall(PetscPrintf(comm, "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT " free dofs, expected to take about %.0f s (%s)\n", m->S.n, expected, why));
@@ -311,7 +356,8 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
     }
     const double expected = PartialSeconds(m->S, nev, m->request.refine_all); // s
     if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
+      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s and %.2g GB; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected, PartialModesBytes(n, nev) / 1e9));
+    PetscCall(PartialModesMemoryCheck(comm, n, nev));
     PetscCall(BeamModesLowest(comm, sys, nev, m->request.progress, &lambda, &phis));
     if (want >= 0 || lambda.back() > wc * wc) {
       m->method = "slepc";
@@ -350,7 +396,8 @@ PetscErrorCode FactoredModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscRe
   for (;;) {
     const double expected = kPartialSolveCost * (double)n * (double)nev * (double)nev; // s
     if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc, the factored form), expected to take about %.0f s; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected));
+      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc, the factored form), expected to take about %.0f s and %.2g GB; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected, PartialModesBytes(n, nev) / 1e9));
+    PetscCall(PartialModesMemoryCheck(comm, n, nev));
     PetscCall(BeamModesLowestFactored(comm, m->sys, *m->factor, nev, m->request.progress, &lambda, &phis));
     if (want >= 0 || nev >= n || lambda.back() > wc * wc) break;
     const PetscReal grow = std::sqrt(wc / std::sqrt(std::max(lambda.back(), (PetscReal)1e-300)));
@@ -592,8 +639,12 @@ PetscErrorCode BeamModes::StaticCorrection(const ContactCoupling &g, const Modal
           for (PetscInt d = 0; d < n; ++d) a += r[d] * (*l)[d];
           for (PetscInt d = 0; d < n; ++d) (*l)[d] -= S.mass[d] * r[d] * a;
         }
-      std::vector<std::vector<PetscReal>> u;
-      PetscCall(FlexibilitySolve(*this, BeamTemporarySupports(sys, S.dof, R), {&load, &load_r}, &u));
+      std::vector<std::vector<PetscReal>> u, motions; // the supports from the exact motions (R's entries are over sqrt(m): a light dof's round-off is large)
+      for (const auto &v : BeamSystemRigidMotions(sys)) {
+        motions.emplace_back(n);
+        for (PetscInt d = 0; d < n; ++d) motions.back()[d] = v[S.dof[d]];
+      }
+      PetscCall(FlexibilitySolve(*this, BeamTemporarySupports(sys, S.dof, motions), {&load, &load_r}, &u));
       for (auto &v : u)
         for (const auto &r : R) { // M-orthogonal to the rigid modes
           PetscReal a = 0;

@@ -24,6 +24,7 @@ namespace beamimpact {
 
 struct FlightSolveParams {
   PetscReal series_dt = 0.01; // s between series samples (0: only the launch and the landing)
+  bool      series    = true; // false: no series at all (nobody writes one: a sweep's points)
 };
 
 // The trajectory as sampled: time, position, velocity and the spin in effect.
@@ -38,14 +39,27 @@ struct FlightResult {
   PetscInt      steps = 0, rejected_steps = 0, locate_steps = 0, function_evals = 0;
   PetscReal     wall_time = 0; // s
   std::string   ts_type;       // "rk 5dp", "cn", ...
-  PetscReal     rtol = 0, atol = 0;
+  PetscReal     rtol = 0, atol = 0; // 1; m, m/s: the tolerances of an adaptive step
+  bool          fixed_step = false; // the step is fixed at dt (no error control: rtol, atol unused)
+  PetscReal     dt         = 0;     // s, the fixed step (the first step when adaptive)
   FlightSeries  series;
 };
 
-// Flies the ball from state u0 (x, y, z, vx, vy, vz; z >= 0) until it lands. Errors: a state
-// that starts below the ground or on it going down, a TS type that cannot roll back a step,
-// no landing within the TS's max time (-flight_ts_max_time).
+// Flies the ball from state u0 (x, y, z, vx, vy, vz; z >= 0) until it lands. The step is adaptive
+// (rtol, atol held) wherever the type estimates its error: theta, beuler, cn and alpha get the
+// basic adaptor, which PETSc leaves them without, unless -flight_ts_adapt_type is given; an rk
+// tableau without an embedded pair (1fe, 3, 4) steps at the fixed -flight_ts_dt, as does
+// -flight_ts_adapt_type none: r->fixed_step says so, and a given -flight_ts_rtol/atol is noted
+// as without effect. Errors: a state that starts below the ground or on it going down, a spin
+// beyond FlightSpinMax, a -flight_ts_* value outside its row (a type that cannot roll back a
+// step, a step <= 0, ...), a series beyond the memory limit (-max_memory), a state that stops
+// being finite (a fixed step far too long), no landing within -flight_ts_max_time.
 PetscErrorCode FlightSolve(const FlightModel &m, const PetscReal u0[6], const FlightSolveParams &p, FlightResult *r);
+// The checks FlightSolve makes of the options before it flies (the TS's, the series' memory),
+// made without flying: -task impact -flight runs them before the impact, whose launch the flight
+// takes after it; this also reads the -flight_ts_* options, which the impact's check of unused
+// options then counts as used.
+PetscErrorCode FlightTSCheckOptions(const FlightSolveParams &p);
 
 // The flight TS's PETSc options the program advertises, with its defaults (a PETSc table:
 // prefixes -flight_ts_, -flight_snes_, -flight_ksp_, -flight_pc_; PETSc's TS reads them).

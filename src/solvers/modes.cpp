@@ -290,11 +290,9 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
     const std::vector<PetscReal> &phi = phis[order[m]];
     if (wall) out->shell_n[m] = ModeFamily(op, phi);
     if (parts) {
-      PetscReal e[kParts] = {0}, sum = 0;
-      for (PetscInt d = 0; d < op.ndof; ++d) e[(int)op.PartOf(d % op.fields)] += op.mass[d] * phi[d] * phi[d], sum += op.mass[d] * phi[d] * phi[d];
-      const int best      = (int)(std::max_element(e, e + kParts) - e);
-      out->part[m]       = best;
-      out->part_share[m] = sum > 0 ? e[best] / sum : 0;
+      std::vector<PetscReal> e(op.ndof);
+      for (PetscInt d = 0; d < op.ndof; ++d) e[d] = op.mass[d] * phi[d] * phi[d];
+      out->part[m] = (PetscInt)BeamSystemDominantPart(op, nullptr, e.data(), op.ndof, &out->part_share[m]);
       if (!out->bed_shape.empty()) {
         const BedGrid &g = op.bed;
         out->bed_shape[m].assign((size_t)g.nx * g.nz, 0.0);

@@ -3,6 +3,8 @@
 // ts_residuals.cpp, ts_jacobian.cpp and ts_diagnostics.cpp.
 #include "solvers/ts_stepper.hpp"
 
+#include "base/memory.hpp"
+#include "base/option_table.hpp"
 #include "base/options_util.hpp"
 #include "solvers/irk_stage_pc.hpp"
 #include "solvers/rk_stability.hpp"
@@ -681,6 +683,10 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   PetscCall(PetscObjectTypeCompare((PetscObject)adapt, TSADAPTNONE, &fixed));
   S.fixed_step = fixed;
   S.info.fixed_step = fixed;
+  // The error tolerances control an adaptive step only; a fixed one (-ts_adapt_type none, the
+  // default of modal, cn, theta, beuler, alpha, alpha2) they leave as it is: a note when given.
+  for (const char *tol : {"-ts_rtol", "-ts_atol"})
+    OptionWithoutEffectSet(tol, fixed ? std::string("the step is fixed, -ts_type ") + now + " with -ts_adapt_type none: -ts_dt sets it" : "", {"-ts_type", "-ts_adapt_type"});
   if (S.P.form != Formulation::Explicit) {
     PetscBool user_test;
     SNES      snes;
@@ -880,6 +886,29 @@ PetscErrorCode TSContextReuse(TSStepper &S, const char *type)
   PetscFunctionReturn(0);
 }
 
+// The memory of a run's state on the grid of sys under the TS type (bytes), estimated before it
+// is allocated: 320 B a node (the grid's own arrays) and a number of doubles a dof: the state and
+// the stages, 40 (rk; 0 for alpha2's second-order form, 72 for arkimex and rosw, 100 for bdf:
+// their stages and history), for an implicit type its Jacobian and factor, 11 (2 bw + 1) (bw the
+// half-band in dofs; an upper bound on a string bed's wide band, whose factor is sparser), and
+// for irk's s-stage system (s = 2) 30 s + 20 s^2 (2 bw + 1) more. Measured on uniform beams (PETSc
+// 3.18, one rank, the growth of the peak resident memory from 1e5 to 4e5 nodes, Euler-Bernoulli:
+// one dof a node, bw 2): rk 625 B a node (Timoshenko, two dofs: 940 B), alpha2 750, cn 1070,
+// arkimex 1260, bdf 1580, irk 4600 B; the model gives 640 (960), 760, 1080, 1336, 1560, 4760 B.
+// -ts_type modal's modes are estimated where they are computed (solvers/beam_modes.cpp).
+double TSStepperMemory(const BeamSystem &sys, Formulation form, const char *type)
+{
+  const double dofs = (double)sys.nodes * sys.fields, band = 2.0 * sys.bw + 1, s = 2;
+  double       per  = 40; // doubles a dof
+  if (form == Formulation::SecondOrder) per = 0;
+  for (const char *t : {TSARKIMEX, TSROSW})
+    if (!std::strcmp(type, t)) per = 72;
+  if (!std::strcmp(type, TSBDF)) per = 100;
+  if (form != Formulation::Explicit) per += 11 * band;
+  if (!std::strcmp(type, TSIRK)) per += 30 * s + 20 * s * s * band;
+  return 320 * (double)sys.nodes + per * sizeof(PetscReal) * dofs;
+}
+
 } // namespace
 
 PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
@@ -922,7 +951,12 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   if (TSModalIsType(type)) S->info.formulation = "modal (exact beam flow, polynomial contact force)"; // explicit right-hand side, exact beam flow
   S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass, &S->info.omega_max_dof);
   if (reuse) PetscCall(TSContextReuse(*S, type));
-  else PetscCall(TSContextBuild(comm, *S, type, set));
+  else {
+    char what[160];
+    std::snprintf(what, sizeof what, "-ts_type %s on %" PetscInt_FMT " nodes (%" PetscInt_FMT " dofs: its state, and an implicit type's Jacobian and factor)", type, sys.nodes, sys.nodes * sys.fields);
+    PetscCall(MemoryCheck(comm, TSStepperMemory(sys, P.form, type), what, "use fewer -beam_nodes"));
+    PetscCall(TSContextBuild(comm, *S, type, set));
+  }
   PetscCall(ExplicitStability(*S));
   PetscCall(TSGetTimeStep(S->ts, &S->dt_nominal));
   PetscCheck(S->dt_nominal > 0 && std::isfinite(S->dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);

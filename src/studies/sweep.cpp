@@ -8,6 +8,7 @@
 #include "io/run_record.hpp"
 #include "io/scenario_options.hpp"
 #include "io/text.hpp"
+#include "model/shell.hpp"
 #include "run/outcome.hpp"
 #include "solvers/ts_stepper.hpp"
 #include "studies/sweep_farm.hpp"
@@ -265,12 +266,14 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
     // An axis that changes nothing: every point the same (unless another axis varies what it needs).
     for (const OptionWithoutEffect &o : OptionsWithoutEffect()) {
       bool varied = false;
-      for (const SweepAxis &a : plan.axes) varied = varied || o.needs == "-" + a.name;
+      for (const SweepAxis &a : plan.axes) varied = varied || std::find(o.needs.begin(), o.needs.end(), "-" + a.name) != o.needs.end();
       for (const SweepAxis &a : plan.axes)
         PetscCheck(varied || o.name != "-" + a.name, farm.group, PETSC_ERR_ARG_WRONG, "-sweep %s=%s is not allowed: %s has no effect in this sweep (%s), so every point would be the same", a.name.c_str(), a.spec.c_str(), o.name.c_str(),
                    o.why.c_str());
     }
-    PetscCall(OptionsCheckUnused(farm.group));
+    std::vector<std::string> axes; // an option that acts at other points is no note
+    for (const SweepAxis &a : plan.axes) axes.push_back("-" + a.name);
+    PetscCall(OptionsCheckUnused(farm.group, {}, false, axes));
     PetscCall(SweepCaseOptionsClear(plan));
     PetscFunctionReturn(0);
   }
@@ -544,7 +547,7 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
 PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P, double setup, double t0, double farm_time, const std::string &output, const SweepStore &S, PetscInt *failed_total)
 {
   PetscMPIInt rank, size;
-  PetscInt    computed = mine.computed, failed = 0, absurd = 0, off_face = 0;
+  PetscInt    computed = mine.computed, failed = 0, absurd = 0, absurd_wall = 0, off_face = 0;
   double      busy_sum = 0, busy_min = 0, journal_sum = 0, handout_sum = 0;
   std::string by_status;
 
@@ -563,16 +566,21 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
   PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : reuse, reuse, 3, MPIU_INT, MPI_SUM, 0, comm));
   if (rank == 0 && S.status_column >= 0) {
     std::map<int, PetscInt> count;
-    int                     beyond = -1; // the column compression_beyond_radius
-    for (size_t c = 0; c < S.columns.size(); ++c)
+    int                     beyond = -1, wall = -1; // the columns compression_beyond_radius and wall_deflection_large
+    for (size_t c = 0; c < S.columns.size(); ++c) {
       if (S.columns[c].name == "compression_beyond_radius") beyond = (int)c;
+      if (S.columns[c].name == "wall_deflection_large") wall = (int)c;
+    }
     for (auto &kv : S.rows) {
       const double st = kv.second[S.status_column];
       if (SweepFailed(st)) {
         ++failed;
         ++count[(int)st];
       } else if (st == SweepOffFace) ++off_face;
-      else if (beyond >= 0 && kv.second[beyond] == 1) ++absurd;
+      else {
+        if (beyond >= 0 && kv.second[beyond] == 1) ++absurd;
+        if (wall >= 0 && kv.second[wall] == 1) ++absurd_wall;
+      }
     }
     for (auto &kv : count) by_status += (by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " + std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
   }
@@ -616,6 +624,11 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
                            "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points compressed the ball beyond its radius (-ball_radius): physically absurd, the contact law far outside its range; "
                            "their rows have status 0 but compression_beyond_radius = 1 in /results: leave them out of plots and fits\n",
                            absurd, P.ncases));
+  if (absurd_wall)
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
+                           "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points pushed the barrel wall in by more than %g of its radius: physically absurd, the wall's linear model far outside its range; "
+                           "their rows have status 0 but wall_deflection_large = 1 in /results: leave them out of plots and fits\n",
+                           absurd_wall, P.ncases, (double)kWallDeflectionLimit));
   if (!plan.quiet) PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s (%s)\n", output.c_str(), Points(P.ncases).c_str()));
   PetscFunctionReturn(0);
 }

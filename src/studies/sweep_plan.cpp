@@ -534,7 +534,8 @@ PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt 
   reason->clear();
   if (cache) cache->last_partial = false;
   PetscCall(SweepCaseOptionsSet(plan, index));
-  how.monitors    = monitors;
+  how.monitors      = monitors;
+  how.flight_series = false; // a sweep writes no trajectory
   how.after_bodies = [&](const Scenario &bodies) -> PetscErrorCode {
     bodies_read = true;
     beam        = bodies.beam;

@@ -44,7 +44,7 @@ enum SweepStatus {
   SweepNotConverged = 5, // the run stopped: a solve or event location failed, energy grew, the ball chattered
   SweepNotFinite    = 6, // the solution became NaN/Inf (an unstable step)
   SweepCutInContact = 7, // the run reached -impact_max_time with the ball still in contact
-  SweepOffFace      = 8, // not failed: the point is off a racket's face (outside the head's outline, off the frame's axis): no impact there
+  SweepOffFace      = 8, // not failed: the point is off a racket's face (outside the head's outline, off the frame's axis; without a bed, beyond the section's half-width): no impact there
 };
 const char *SweepStatusName(int status);
 // Whether a row's status is a failure (not ok, and not a point that has no impact by design: off a racket's face).

@@ -92,6 +92,7 @@ bool OptionIsVolatile(const std::string &name)
   static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_retry_failed", "sweep_progress_interval", "sweep_write_interval", "error_traceback", "allow_unused_options", "help", "version"};
   static const char *const           prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_", "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view", "snes_view", "ksp_view"};
   if (exact.count(name)) return true;
+  if (name == "max_memory" || name == "flight_series_dt") return true; // a limit on what may be allocated; a series a sweep does not keep
   for (const char *p : prefix)
     if (name.compare(0, std::strlen(p), p) == 0) return true;
   return false;
@@ -434,8 +435,13 @@ herr_t CollectAttribute(hid_t loc, const char *name, const H5A_info_t *, void *o
   return 0;
 }
 
-bool ReadDataset(hid_t g, const char *name, std::vector<double> *v)
+bool ReadDataset(hid_t g, const char *name, std::vector<double> *v) { return H5ReadDoubleColumn(g, name, v); }
+
+} // namespace
+
+bool H5ReadDoubleColumn(long long loc, const char *name, std::vector<double> *v)
 {
+  const hid_t g = (hid_t)loc;
   if (H5Lexists(g, name, H5P_DEFAULT) <= 0) return false;
   hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
   if (ds < 0) return false;
@@ -448,7 +454,6 @@ bool ReadDataset(hid_t g, const char *name, std::vector<double> *v)
   return ok;
 }
 
-} // namespace
 
 // ---------------------------------------------------------------------------
 // Journal files and checked options
@@ -581,6 +586,8 @@ SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signatu
   return Ok;
 }
 
+std::map<std::string, std::string> SweepOptionsParse(const std::string &all) { return ParseOptions(all); }
+
 std::string SweepCheckedOptions(const std::string &all)
 {
   std::string out;
@@ -613,29 +620,17 @@ void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std:
     if (columns[c].name == "status") S->status_column = (int)c;
 }
 
-// A 1-D dataset of variable-length UTF-8 strings.
-static bool WriteStrings(hid_t g, const char *name, const std::vector<std::string> &v)
+// Every /results dataset has a unit; the reasons' and text axes' is this text.
+static const char *const kReasonUnit = "text (the error of a failed point; empty where status = 0)";
+
+bool H5WriteStringColumn(long long loc, const char *name, const std::vector<std::string> &v, const char *unit_text)
 {
-  std::vector<const char *> p;
-  for (auto &s : v) p.push_back(s.c_str());
-  const hsize_t n = v.size();
-  hid_t         t = H5Tcopy(H5T_C_S1);
-  H5Tset_size(t, H5T_VARIABLE);
-  H5Tset_cset(t, H5T_CSET_UTF8);
-  hid_t s  = H5Screate_simple(1, &n, NULL);
-  hid_t d  = H5Dcreate2(g, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  bool  ok = d >= 0 && (n == 0 || H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
-  RunRecord unit; // every /results dataset has a unit
-  unit.add("unit", "text (the error of a failed point; empty where status = 0)");
-  ok = ok && H5WriteAttributes(d, unit) == 0;
-  if (d >= 0) H5Dclose(d);
-  H5Sclose(s);
-  H5Tclose(t);
-  return ok;
+  return H5WriteText1D(loc, name, v, unit_text) == 0;
 }
 
-static bool ReadStrings(hid_t g, const char *name, std::vector<std::string> *v)
+bool H5ReadStringColumn(long long loc, const char *name, std::vector<std::string> *v)
 {
+  const hid_t g = (hid_t)loc;
   v->clear();
   if (H5Lexists(g, name, H5P_DEFAULT) <= 0) return false;
   hid_t d = H5Dopen2(g, name, H5P_DEFAULT);
@@ -686,7 +681,7 @@ static PetscErrorCode WriteTextColumn(hid_t g, const std::string &output, const 
 
   PetscFunctionBeginUser;
   for (double i : v) text.push_back(i >= 0 && i < (double)labels.size() ? labels[(size_t)i] : std::string());
-  PetscCheck(WriteStrings(g, name, text) && WriteValuesAttribute(g, name, labels), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write the text column %s", output.c_str(), name);
+  PetscCheck(H5WriteStringColumn(g, name, text, kReasonUnit) && WriteValuesAttribute(g, name, labels), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write the text column %s", output.c_str(), name);
   PetscFunctionReturn(0);
 }
 
@@ -714,7 +709,7 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
     const auto it = S.reasons.find(kv.first);
     reasons.push_back(it == S.reasons.end() ? std::string() : it->second);
   }
-  PetscCheck(WriteStrings(g, "reason", reasons), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write /results/reason");
+  PetscCheck(H5WriteStringColumn(g, "reason", reasons, kReasonUnit), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write /results/reason");
   PetscCall(H5DimsTable(g, "case_index")); // the rows done, by their case
   H5Gclose(g);
   // The plan: every axis's value for every case (also those not yet done).
@@ -731,20 +726,6 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
   PetscFunctionReturn(0);
 }
 
-// The journal files in F.parts (their names).
-static std::vector<std::string> JournalNames(const SweepStore &S)
-{
-  std::vector<std::string> names;
-  DIR                     *d = ::opendir(S.parts.c_str());
-  if (!d) return names;
-  while (dirent *e = ::readdir(d)) {
-    int run, rank;
-    if (ParseJournalName(e->d_name, &run, &rank)) names.push_back(e->d_name);
-  }
-  ::closedir(d);
-  return names;
-}
-
 // What a failed rewrite left, for its message: F as it was (or still nothing there), and where
 // the rows computed since F was last written are (the journals in F.parts), or that there are
 // none (the first write of a run, no journal of an earlier run: F.parts goes with the run).
@@ -752,7 +733,7 @@ static std::string StoreWriteLeft(const SweepStore &S)
 {
   struct stat       st;
   const bool        there = ::stat(S.output.c_str(), &st) == 0 && st.st_size > 0;
-  const size_t      n     = JournalNames(S).size();
+  const size_t      n     = SweepJournalFiles(S.parts, nullptr).size();
   const std::string left  = there ? S.output + " is as it was" : "nothing was written at " + S.output;
   if (n > 0) return left + ", and the " + std::to_string(n) + " journal(s) in " + S.parts + " keep the rows not in it, for a resume (the same command once there is room)";
   return left + (there ? "; it holds every row computed so far" : "; no point had been computed") + ": run the same command again once there is room";
@@ -799,7 +780,7 @@ static bool ReadTextColumn(hid_t g, const char *name, const std::vector<std::str
 {
   std::vector<std::string> text;
   v->clear();
-  if (!ReadStrings(g, name, &text)) return false;
+  if (!H5ReadStringColumn(g, name, &text)) return false;
   for (const std::string &t : text) {
     const auto it = std::find(labels.begin(), labels.end(), t);
     v->push_back(it == labels.end() ? std::numeric_limits<double>::quiet_NaN() : (double)(it - labels.begin()));
@@ -874,7 +855,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
                cols[c].name.c_str());
   }
   std::vector<std::string> reasons;
-  const bool               reasons_ok = ReadStrings(g, "reason", &reasons) && reasons.size() == data[0].size();
+  const bool               reasons_ok = H5ReadStringColumn(g, "reason", &reasons) && reasons.size() == data[0].size();
   H5Gclose(g);
   H5Fclose(file);
   PetscCheck(reasons_ok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/reason is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str());
@@ -895,41 +876,61 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
   PetscFunctionReturn(0);
 }
 
-static void RemoveJournals(const SweepStore &S)
+std::vector<std::string> SweepJournalFiles(const std::string &parts, int *last_run)
 {
-  for (auto &n : JournalNames(S)) ::unlink((S.parts + "/" + n).c_str());
+  std::vector<std::string> names;
+  if (last_run) *last_run = 0;
+  DIR *d = ::opendir(parts.c_str());
+  if (!d) return names;
+  while (dirent *e = ::readdir(d)) {
+    int run, rank;
+    if (ParseJournalName(e->d_name, &run, &rank)) {
+      names.push_back(parts + "/" + e->d_name);
+      if (last_run) *last_run = std::max(*last_run, run);
+    }
+  }
+  ::closedir(d);
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
-// Takes F.parts/lock (flock, not blocking). A lock file unlinked by the run that held it
-// between our open() and flock() would leave us holding a lock nobody else sees: then the
-// path no longer names the inode we locked, and we try again (so too when that run removed
-// F.parts under us).
-static PetscErrorCode StoreLock(SweepStore &S)
+static void RemoveJournals(const SweepStore &S)
 {
-  const std::string path = S.parts + "/lock";
+  for (const std::string &path : SweepJournalFiles(S.parts, nullptr)) ::unlink(path.c_str());
+}
+
+// A lock file unlinked by the run that held it between our open() and flock() would leave us
+// holding a lock nobody else sees: then the path no longer names the inode we locked, and we
+// try again (so too when that run removed the directory under us).
+PetscErrorCode SweepPartsLock(const std::string &output, const std::string &parts, const char *who, int *lock_fd)
+{
+  const std::string path = parts + "/lock";
 
   PetscFunctionBeginUser;
   for (int attempt = 0;; ++attempt) {
     const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0 && errno == ENOENT && attempt < 100) { // F.parts just removed by the sweep that ended
-      ::mkdir(S.parts.c_str(), 0755);
+    if (fd < 0 && errno == ENOENT && attempt < 100) { // the directory just removed by the run that ended
+      ::mkdir(parts.c_str(), 0755);
       continue;
     }
-    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (%s)", S.output.c_str(), path.c_str(), std::strerror(errno));
+    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (%s)", output.c_str(), path.c_str(), std::strerror(errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       ::close(fd);
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", S.output.c_str(),
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another %s that is still running (%s is held); wait for it or choose another -output", output.c_str(), who,
               path.c_str());
     }
     struct stat held, named;
     if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &named) == 0 && held.st_dev == named.st_dev && held.st_ino == named.st_ino) {
-      S.lock_fd = fd;
+      *lock_fd = fd;
       PetscFunctionReturn(0);
     }
     ::close(fd);
-    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: %s keeps being replaced by another sweep; wait for it or choose another -output", S.output.c_str(), path.c_str());
+    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: %s keeps being replaced by another %s; wait for it or choose another -output", output.c_str(), path.c_str(), who);
   }
 }
+
+// Takes F.parts/lock (flock, not blocking).
+static PetscErrorCode StoreLock(SweepStore &S) { return SweepPartsLock(S.output, S.parts, "sweep", &S.lock_fd); }
 
 void SweepStoreRelease(SweepStore &S)
 {
@@ -949,22 +950,12 @@ static PetscErrorCode StoreOpenLocked(SweepStore &S, int *run)
     ::unlink(S.output.c_str());
   } else PetscCall(StoreLoadFile(S));
   // Journals of earlier runs (killed before they finished).
-  *run = 0;
   DIR *d = ::opendir(S.parts.c_str());
   PetscCheck(d, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot read %s", S.output.c_str(), S.parts.c_str());
-  std::vector<std::string> names;
-  while (dirent *e = ::readdir(d)) {
-    int r, rank;
-    if (ParseJournalName(e->d_name, &r, &rank)) {
-      names.push_back(e->d_name);
-      *run = std::max(*run, r);
-    }
-  }
   ::closedir(d);
-  std::sort(names.begin(), names.end());
-  for (auto &n : names) {
+  for (const std::string &path : SweepJournalFiles(S.parts, run)) {
     SweepJournalReader j;
-    j.path = S.parts + "/" + n;
+    j.path = path;
     SweepJournalReader::Status st = j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr);
     if (st == SweepJournalReader::WrongParameters && S.retry_signature_hash) { // written before this retry's change
       SweepJournalReader former;

@@ -50,6 +50,18 @@ struct SweepColumn {
 
 // The journal of the group leader on world rank `rank` in run (attempt) `run` of -output.
 std::string SweepJournalName(const std::string &output, int run, int rank);
+// The journals in the directory `parts` (F.parts), as paths in name order, and the largest run
+// number among them in *last_run (0 when none; may be NULL).
+std::vector<std::string> SweepJournalFiles(const std::string &parts, int *last_run);
+// Takes parts/lock for one run writing `output` (flock, not blocking; *lock_fd holds it): an
+// error when another run holds it ("another <who> that is still running").
+PetscErrorCode SweepPartsLock(const std::string &output, const std::string &parts, const char *who, int *lock_fd);
+// A 1-D dataset of variable-length UTF-8 strings in loc (an HDF5 file or group id) with the
+// attribute unit = unit_text, and its read-back (false when missing or unreadable).
+bool H5WriteStringColumn(long long loc, const char *name, const std::vector<std::string> &v, const char *unit_text);
+bool H5ReadStringColumn(long long loc, const char *name, std::vector<std::string> *v);
+// A 1-D dataset of numbers read as doubles (false when missing or unreadable).
+bool H5ReadDoubleColumn(long long loc, const char *name, std::vector<double> *v);
 
 // Appends rows to one journal file (opened on the first row). A journal that cannot be
 // written is not fatal (one warning): the row is also kept in memory and gathered at the
@@ -116,6 +128,8 @@ struct SweepStore {
 // sweep_checked_options, part of the signature): all but -output, the progress and
 // restart options, and logging, monitoring and viewing options.
 std::string SweepCheckedOptions(const std::string &all);
+// "-name value -name2 -name3 value3 ..." as name (no dash) -> value ("" for a flag given bare).
+std::map<std::string, std::string> SweepOptionsParse(const std::string &all);
 
 // Rank 0: the store of `output` for the plan, its row columns and its record (whose
 // attributes, all but the volatile ones, make the parameter signature).

@@ -105,6 +105,7 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
   g.z = z_imp;
   if (BeamSystemOnBed(sys, x_imp, z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
     for (const BedPatchNode &e : BedPatch(sys.bed, x_imp - sys.bed_head_center, z_imp, sys.bed_patch_radius)) {
+      if (e.beyond) continue; // past a held frame's end (refused on a beam frame: StringBedPatchResolve)
       if (e.free) {
         if (!CouplingAdd(sys, sys.Dof(e.i, sys.bed_first + e.j), e.w, &g)) return g; // refused before: the scenario's check
         continue;
@@ -258,7 +259,7 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys
   // eigenvalues below 1e-12 of its trace (LAPACK's syev on the k x k matrix, k <= 3).
   PetscReal A[9] = {0}, lambda[3] = {0}, work[32];
   for (PetscInt d = 0; d < sys.ndof; ++d)
-    if (sys.held[d])
+    if (sys.held[d] && !sys.Bed(d % sys.fields)) // a string bed's held dofs are not unknowns (their strings' mass moves with the frame): they hold nothing
       for (int a = 0; a < k; ++a)
         for (int b = 0; b < k; ++b) A[a * k + b] += c[a][d] * c[b][d];
   PetscReal trace = 0;
@@ -324,6 +325,21 @@ PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupli
     if (where) *where = -1;
   }
   return std::sqrt(lam);
+}
+
+const char *BeamSystemPartName(Part p)
+{
+  static const char *const names[kParts] = {"bending", "roll", "wall", "strings"};
+  return names[(int)p];
+}
+
+Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n, PetscReal *share)
+{
+  PetscReal sum = 0, by[kParts] = {0};
+  for (PetscInt r = 0; r < n; ++r) by[(int)sys.PartOf((dof ? dof[r] : r) % sys.fields)] += e[r], sum += e[r];
+  const int best = (int)(std::max_element(by, by + kParts) - by);
+  if (share) *share = sum > 0 ? by[best] / sum : 0;
+  return (Part)best;
 }
 
 const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)

@@ -153,7 +153,9 @@ std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal 
 std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &sys);
 // The rigid motions the holds leave: the combinations of the candidates that vanish on every
 // held dof and that the stiffness annihilates (|K v| <= 1e-9 max|K| max|v|: an Euler-Bernoulli
-// clamp holds the rotation through its mirrored curvature, not a held dof), held dofs 0.
+// clamp holds the rotation through its mirrored curvature, not a held dof), held dofs 0. A string
+// bed's held dofs (its nodes outside the head or on its edge) are no supports: nothing of the
+// structure is there (the bed's edge moves with its frame section), so they do not count.
 std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys);
 // The swinging bat's velocities at contact (model/swing.hpp): V(x) toward the ball, i.e. -y.
 std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body);
@@ -165,6 +167,13 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 // contact stiffness k_extra (N/m) through the coupling to a ball of mass m_extra (kg).
 // With `where`, the dof whose row sets the bound (-1: the ball's own 2 k_extra / m_extra).
 PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra, PetscInt *where = nullptr);
+
+// The short name of a part, as -task modes and /modes_energy label a mode by it: "bending", "roll"
+// (the frame's twisting), "wall", "strings".
+const char *BeamSystemPartName(Part p);
+// The part holding most of a motion's kinetic energy: e[r] the kinetic energy (any unit) of dof
+// dof[r] (dof == nullptr: of dof r), r < n; *share (if given) its fraction of the sum (0 if the sum is 0).
+Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n, PetscReal *share);
 
 // Words for the part of the structure a dof belongs to ("the beam's bending", "the frame's roll",
 // "the barrel wall", "the string bed"), for messages.

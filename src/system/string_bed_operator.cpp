@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace beamimpact {
 
@@ -61,28 +62,60 @@ BedRow BedStiffnessRow(const BedGrid &g, const Membrane &m, PetscInt i, PetscInt
   return r;
 }
 
+namespace {
+
+// Adds the disc of radius a (m) about node (ic, jc), its weights 1 - r^2/a^2 normalised and
+// scaled by share, to *w (keyed by node). The node alone when the disc covers no other (a < h).
+// The offsets are taken from the centre node ((i - ic) h_x, (j - jc) h_z), so the disc is
+// symmetric about it to the last bit and its first moments are those of the node.
+void BedDiscAdd(const BedGrid &g, PetscInt ic, PetscInt jc, PetscReal a, PetscReal share, std::map<std::pair<PetscInt, PetscInt>, PetscReal> *w)
+{
+  const PetscInt ri = a > 0 ? (PetscInt)std::ceil(a / g.hx) : 0, rj = a > 0 ? (PetscInt)std::ceil(a / g.hz) : 0;
+  std::vector<std::pair<std::pair<PetscInt, PetscInt>, PetscReal>> disc;
+  PetscReal                                                        sum = 0;
+  for (PetscInt di = -ri; di <= ri; ++di)
+    for (PetscInt dj = -rj; dj <= rj; ++dj) {
+      const PetscReal dx = di * g.hx, dz = dj * g.hz, r2 = di == 0 && dj == 0 ? 0.0 : (dx * dx + dz * dz) / (a * a);
+      if (r2 >= 1) continue;
+      disc.push_back({{ic + di, jc + dj}, 1 - r2});
+      sum += 1 - r2;
+    }
+  for (const auto &e : disc) (*w)[e.first] += share * e.second / sum;
+}
+
+// The cell coordinate s of a point (s = (x - x_0)/h): its lower node and the fraction t in [0, 1)
+// beyond it; a point within 1e-9 of a node is on it (t = 0), as the beam's hat
+// (GridImpactStencil).
+PetscInt CellOf(PetscReal s, PetscReal *t)
+{
+  const PetscReal sr = std::round(s);
+  if (std::abs(s - sr) < 1e-9) return *t = 0.0, (PetscInt)sr;
+  const PetscReal sf = std::floor(s);
+  *t                 = s - sf;
+  return (PetscInt)sf;
+}
+
+} // namespace
+
 std::vector<BedPatchNode> BedPatch(const BedGrid &g, PetscReal x, PetscReal z, PetscReal a)
 {
+  PetscReal      tx, tz;
+  const PetscInt i = CellOf((x - g.x0) / g.hx, &tx), j = CellOf((z + g.b) / g.hz, &tz);
+  // the bilinear hat weights of the point on its cell's four corners, each spreading its share
+  // over the disc about it
+  std::map<std::pair<PetscInt, PetscInt>, PetscReal> w;
+  const PetscReal                                    wx[2] = {1 - tx, tx}, wz[2] = {1 - tz, tz};
+  for (int p = 0; p < 2; ++p)
+    for (int q = 0; q < 2; ++q)
+      if (wx[p] * wz[q] != 0.0) BedDiscAdd(g, i + p, j + q, a, wx[p] * wz[q], &w);
   std::vector<BedPatchNode> out;
-  PetscReal                 sum = 0;
-  if (a > 0) {
-    const PetscInt i0 = std::max<PetscInt>(0, (PetscInt)std::floor((x - a - g.x0) / g.hx)), i1 = std::min<PetscInt>(g.nx - 1, (PetscInt)std::ceil((x + a - g.x0) / g.hx));
-    const PetscInt j0 = std::max<PetscInt>(0, (PetscInt)std::floor((z - a + g.b) / g.hz)), j1 = std::min<PetscInt>(g.nz - 1, (PetscInt)std::ceil((z + a + g.b) / g.hz));
-    for (PetscInt i = i0; i <= i1; ++i)
-      for (PetscInt j = j0; j <= j1; ++j) {
-        const PetscReal dx = g.X(i) - x, dz = g.Z(j) - z, r2 = (dx * dx + dz * dz) / (a * a);
-        if (r2 >= 1 || !BedInside(g, g.X(i), g.Z(j))) continue;
-        out.push_back({i, j, 1 - r2, BedNodeFree(g, i, j)});
-        sum += 1 - r2;
-      }
+  for (const auto &e : w) {
+    BedPatchNode n;
+    n.i = e.first.first, n.j = e.first.second, n.w = e.second;
+    n.beyond = n.i < 0 || n.i >= g.nx;
+    n.free   = !n.beyond && BedNodeFree(g, n.i, n.j);
+    out.push_back(n);
   }
-  if (out.empty()) { // a point load on the nearest node
-    const PetscInt i = std::min<PetscInt>(g.nx - 1, std::max<PetscInt>(0, (PetscInt)std::lround((x - g.x0) / g.hx)));
-    const PetscInt j = std::min<PetscInt>(g.nz - 1, std::max<PetscInt>(0, (PetscInt)std::lround((z + g.b) / g.hz)));
-    out.push_back({i, j, 1.0, BedNodeFree(g, i, j)});
-    sum = 1.0;
-  }
-  for (BedPatchNode &e : out) e.w /= sum;
   return out;
 }
 

@@ -54,14 +54,21 @@ PetscReal BedArmLength(const BedGrid &g, PetscInt i, PetscInt j, int dir);
 // that is not an unknown but lies in the head moves with the frame: it is added to y_i and, as
 // sigma |cell| z_j^2, to phi_i. With the frame held (every y, phi held) this is the held frame's
 // bed exactly.
-// The ball's load on the bed: the nodes (i, j) of grid g under a disc of radius a (m) about
-// (x, z) from the head's centre, inside the outline, with the weights 1 - r^2/a^2 (a parabolic
-// pressure), normalised to 1; the nearest node alone when the disc covers none (a = 0: a point
-// load). Each entry also says whether the node is an unknown (else it moves with its frame section).
+// The ball's load on the bed (docs/model.md section 16): the point (x, z) from the head's centre
+// is shared between the four nodes of its cell with the bilinear hat weights, and each node's
+// share is spread over the disc of radius a (m) about it with the weights 1 - r^2/a^2 (a parabolic
+// pressure, normalised; the node alone when a < h: a point load is the hat weights). The weights
+// sum to 1 and their first moments are the point's, sum w x_i = x and sum w z_j = z, on any grid
+// and near the rim: a node outside the outline, or past the grid's edge across the face (j < 0 or
+// j >= nz), is not dropped but carried by its frame section (y_i + z_j phi_i, z_j = -b + j h_z),
+// so the load's resultant and moments about both axes are the ball's. A node past the grid's
+// columns (i < 0 or i >= nx: the disc reaches beyond the frame's end) is marked `beyond`.
+// Entries in (i, j) order, each node once.
 struct BedPatchNode {
-  PetscInt  i = 0, j = 0;
-  PetscReal w = 0;
-  bool      free = false;
+  PetscInt  i = 0, j = 0;   // the node (j may lie outside [0, nz): a frame section's point)
+  PetscReal w = 0;          // 1, its share of the load
+  bool      free   = false; // an unknown of the bed (else it moves with its frame section)
+  bool      beyond = false; // its column lies past the grid's ends: no frame section there
 };
 std::vector<BedPatchNode> BedPatch(const BedGrid &g, PetscReal x, PetscReal z, PetscReal a);
 
