@@ -20,8 +20,9 @@
 #      a symbolic link to any of them or to nothing, and any name inside a sweep's FILE.h5.parts
 #      (its lock too, also through a link) are refused, left as they were, the message naming
 #      what it is (and -output none where that is what was meant); a link to a results file is
-#      followed (the file replaced, the link kept, a note); an empty file is replaced with a
-#      note; a sweep's file replaced by a FIFO while the sweep runs is not written over.
+#      followed (the file replaced, the link kept, a note); an empty file (directly or through a
+#      link) is refused, left as the same empty file; a directory merely named *.parts is written
+#      into; a sweep's file replaced by a FIFO while the sweep runs is not written over.
 #
 #   tests/output_safety.sh path/to/beamimpact scratch_dir [mpiexec]
 set -uo pipefail
@@ -79,14 +80,25 @@ for task in impact modes convergence sweep; do
   refused "-task $task -output onto another program's HDF5, -output_overwrite too" "not a results file of beamimpact" other.h5 \
     "$exe" -task $task "${small[@]}" "${extra[@]}" -output other.h5 -output_overwrite
 done
+# an empty file (another program's lock or marker, like a sweep's own FILE.h5.parts/lock): refused
+# by every task, -output_overwrite or not, directly or through a link, the file left empty (the
+# same inode); impact replaced it, sweep refused it as "not an HDF5 file"
 : >empty.h5
-out=$("$exe" -task modes -beam_nodes 21 -output empty.h5 2>&1)
-(($? == 0)) && grep -q "note: -output empty.h5 exists and is empty: it is replaced by this run's results" <<<"$out" && [[ -s empty.h5 ]] \
-  && pass "an empty file is replaced, with a note saying so" || fail "an empty file: $out"
-: >empty_sweep.h5
-out=$("$exe" -task sweep "${small[@]}" -impact_after time -sweep "impact_x=0.3;0.6" -sweep_quiet -output empty_sweep.h5 2>&1)
-(($? == 0)) && grep -q "note: -output empty_sweep.h5 exists and is empty" <<<"$out" && [[ -s empty_sweep.h5 ]] \
-  && pass "a sweep onto an empty file: started, with the note (it was 'not an HDF5 file')" || fail "a sweep onto an empty file: $out"
+ln -s empty.h5 link_to_empty
+inode=$(stat -c %i empty.h5)
+for task in impact modes sweep; do
+  extra=()
+  [[ $task == sweep ]] && extra=(-sweep "impact_x=0.3;0.6")
+  for target in empty.h5 link_to_empty; do
+    refused "-task $task -output $target (an empty file): refused" "it exists and is empty, not a results file of beamimpact .*or -output none to write nothing" empty.h5 \
+      "$exe" -task $task "${small[@]}" "${extra[@]}" -output $target -output_overwrite
+  done
+done
+[[ ! -s empty.h5 && $(stat -c %i empty.h5) == "$inode" && -L link_to_empty ]] && pass "the empty file is the same empty file after the refusals" || fail "empty.h5 was replaced: $(ls -li empty.h5)"
+# a directory whose name merely ends in .parts (no sweep's lock in it, no FILE beside it) is anyone's
+mkdir -p mine.parts
+"$exe" -task modes -beam_nodes 21 -output mine.parts/modes.h5 >mine_parts.log 2>&1 && [[ -s mine.parts/modes.h5 ]] \
+  && pass "-output into a directory named mine.parts that is no sweep's: written" || fail "-output mine.parts/modes.h5: $(cat mine_parts.log)"
 
 # a running sweep's file: no other task replaces it, -output_overwrite or not
 "$exe" -task sweep "${small[@]}" -impact_after time -sweep "impact_x=0.05:1.05:40" -sweep_quiet -output locked.h5 >locked_sweep.log 2>&1 &

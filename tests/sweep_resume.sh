@@ -142,13 +142,21 @@ else
 fi
 same_file resume_ref.h5 resume_k.h5 || fail "the refused runs modified the file"
 # the same sweep written otherwise, or with options that change nothing: resumed, nothing computed
-same=(-sweep "impact_x=0.05:1.05:$((N / 2)),ball_speed=1.0;2.0")
-for extra in "same values written 1.0;2.0|" "-impact_offset 0 (its default)|-impact_offset 0" "-ts_theta_theta 0.6 (unused under rk)|-ts_theta_theta 0.6"; do
-  what=${extra%%|*} args=${extra#*|}
+# (each change alone: the file's plan is ball_speed=1;2, no -impact_offset, no -ts_theta_theta)
+for extra in "same values written 1.0;2.0|ball_speed=1.0;2.0|" "-impact_offset 0 (its default)|ball_speed=1;2|-impact_offset 0" \
+             "-ts_theta_theta 0.6 (unused under rk)|ball_speed=1;2|-ts_theta_theta 0.6"; do
+  IFS='|' read -r what speeds args <<<"$extra"
   # shellcheck disable=SC2086
-  "$exe" "${base[@]}" "${same[@]}" $args -output resume_k.h5 >resume_same.log 2>&1 && grep -q "all $N points were already done" resume_same.log \
+  "$exe" "${base[@]}" -sweep "impact_x=0.05:1.05:$((N / 2)),$speeds" $args -output resume_k.h5 >resume_same.log 2>&1 && grep -q "all $N points were already done" resume_same.log \
     && pass "resume accepts $what: nothing to compute" || { fail "resume with $what refused"; cat resume_same.log; }
 done
+# ... but a real change beside them is still refused, with its difference alone
+if "$exe" "${base[@]}" -sweep "impact_x=0.05:1.05:$((N / 2)),ball_speed=1.0;2.0" -impact_offset 0 -ts_theta_theta 0.6 -beam_nodes 23 -output resume_k.h5 >resume_changed.log 2>&1; then
+  fail "a changed -beam_nodes beside the harmless changes was accepted"
+elif diffs=$(sed -n '/cannot be resumed:/,/^Rerun/p' resume_changed.log) && grep -q "option -beam_nodes: '21' in the file, '23' now" <<<"$diffs" &&
+  ! grep -qE "impact_offset|ts_theta_theta|sweep axis|sweep:|option -sweep|ball_speed" <<<"$diffs"; then
+  pass "-beam_nodes 23 beside the harmless changes: refused, the difference list -beam_nodes alone"
+else fail "-beam_nodes beside harmless changes: unclear"; cat resume_changed.log; fi
 "$exe" "${base[@]}" -beam_nodes 23 -sweep_x 0.3,0.6 -sweep_restart -sweep_quiet -output resume_k.h5 >resume_restart.log 2>&1 && readable resume_k.h5 \
   && pass "-sweep_restart starts a new file" || { fail "-sweep_restart"; cat resume_restart.log; }
 

@@ -383,20 +383,25 @@ PetscErrorCode OutputCheckKind(MPI_Comm comm, std::string *out, const char *task
 }
 
 // No -output inside a sweep's journal directory F.parts (its lock and journals, studies/sweep_store.hpp):
-// the directory it is in, links resolved, must not be named *.parts.
+// the directory it is in, links resolved, is refused when it is named F.parts and holds a lock
+// or F exists beside it (a directory that merely ends in .parts is anyone's).
 PetscErrorCode OutputCheckNotInParts(MPI_Comm comm, const std::string &out, const std::string &dir)
 {
-  char *real = realpath(dir.c_str(), NULL);
+  char             *real      = realpath(dir.c_str(), NULL);
   const std::string canonical = real ? real : dir;
+  const std::string ext       = ".parts";
+  struct stat       st;
 
   PetscFunctionBeginUser;
   free(real);
   const size_t      slash = canonical.find_last_of('/');
   const std::string base  = slash == std::string::npos ? canonical : canonical.substr(slash + 1);
-  const std::string ext   = ".parts";
-  PetscCheck(base.size() <= ext.size() || base.compare(base.size() - ext.size(), ext.size(), ext) != 0, comm, PETSC_ERR_FILE_OPEN,
+  if (base.size() <= ext.size() || base.compare(base.size() - ext.size(), ext.size(), ext) != 0) PetscFunctionReturn(0);
+  const std::string file  = canonical.substr(0, canonical.size() - ext.size());
+  const bool        sweep = lstat((canonical + "/lock").c_str(), &st) == 0 || lstat(file.c_str(), &st) == 0;
+  PetscCheck(!sweep, comm, PETSC_ERR_FILE_OPEN,
              "-output %s is not allowed: it is inside %s, the journal directory of a sweep writing %s (its lock and its journals live there); give a name outside it",
-             out.c_str(), canonical.c_str(), canonical.substr(0, canonical.size() - ext.size()).c_str());
+             out.c_str(), canonical.c_str(), file.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -430,8 +435,8 @@ PetscErrorCode OutputCheckDescription(MPI_Comm comm, const std::string &out, con
 // or a file a running sweep holds, if it is a file of another program (not an HDF5 results file
 // of beamimpact: a text file, another program's HDF5), or if it would replace a file another task
 // wrote (without -output_overwrite); and if the snapshots' description beside it would replace
-// something else than a file of ours (OutputCheckDescription). An empty file is replaced, with a
-// note saying so.
+// something else than a file of ours (OutputCheckDescription). An empty file is refused too (it may
+// be another program's lock or marker); -output none is the way to write nothing.
 PetscErrorCode OutputCheck(MPI_Comm comm, std::string *out, const char *task)
 {
   PetscBool       overwrite = PETSC_FALSE;
@@ -448,14 +453,17 @@ PetscErrorCode OutputCheck(MPI_Comm comm, std::string *out, const char *task)
   PetscCall(OutputCheckNotAnInput(comm, *out));
   PetscCall(OutputCheckNotLocked(comm, *out));
   PetscCall(ResultsFileInspect(*out, &info));
-  PetscCheck(!info.exists || info.size == 0 || info.Ours(), comm, PETSC_ERR_FILE_OPEN,
+  PetscCheck(!info.exists || info.size != 0, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: it exists and is empty, not a results file of beamimpact (an empty file may be another program's lock or marker); -task %s will not replace it "
+             "(-output_overwrite neither): give another -output, remove the file first, or -output none to write nothing",
+             given.c_str(), task);
+  PetscCheck(!info.exists || info.Ours(), comm, PETSC_ERR_FILE_OPEN,
              "-output %s is not allowed: it exists and is %s, not a results file of beamimpact; -task %s will not replace it (-output_overwrite neither): give another -output, or remove the file first",
              given.c_str(), info.hdf5 ? "an HDF5 file of another program" : "not an HDF5 file", task);
   PetscCheck(info.task.empty() || info.task == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
              "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", given.c_str(), info.task.c_str(), task);
   PetscCall(OutputCheckDescription(comm, *out, task));
   if (given != *out) PetscCall(PetscPrintf(comm, "note: -output %s is a symbolic link: the results go to the file it names, %s (the link stays)\n", given.c_str(), out->c_str()));
-  if (info.exists && info.size == 0) PetscCall(PetscPrintf(comm, "note: -output %s exists and is empty: it is replaced by this run's results\n", given.c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -472,7 +480,7 @@ const OptionModule &TaskOptionTable()
       {
         OptionChoice("-task", "What to compute", names, Tasks[0].name),
         OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing): a regular file or a new name, never a device, FIFO, socket, "
-                              "directory or a file inside a sweep's FILE.h5.parts; a link to a results file is followed"),
+                              "directory, empty file or a file inside a sweep's FILE.h5.parts; a link to a results file is followed"),
         OptionFlag("-output_overwrite", "Let -output replace a file another task wrote"),
         OptionFlag("-allow_unused_options", "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
         OptionFlag("-error_traceback", "PETSc's full traceback on errors instead of the one-line message"),

@@ -820,7 +820,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
   struct stat st;
 
   PetscFunctionBeginUser;
-  if (::stat(S.output.c_str(), &st) != 0 || st.st_size == 0) PetscFunctionReturn(0); // new, or empty (-output said so): no rows
+  if (::stat(S.output.c_str(), &st) != 0) PetscFunctionReturn(0);
   H5ErrorsQuiet quiet;
   PetscCheck(H5Fis_hdf5(S.output.c_str()) > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
              "-output %s exists and is not an HDF5 file; add -sweep_restart to overwrite it or choose another -output", S.output.c_str());
