@@ -390,6 +390,8 @@ def main():
     if args.map and args.curves:
         p.error("give --map or --curves, not both")
     opened = [(path, load(path)) for path in paths]
+    if args.output:
+        style.check_image_output(args.output)  # not onto an input, an image: before any drawing
     swings = [path for path, f in opened if checks.swinging(f)]
     if swings and column in ("acor", "acor_corrected"):  # no ACOR of a bat at rest, no Eq. (11)
         if given:

@@ -23,10 +23,10 @@
 #     print is the one h5py finds, each refuses the other's file; plot_racket_map.py on a small
 #     face map: its largest ACOR and centre of percussion as h5py finds them;
 #   * the scripts check what they are given before drawing: -o naming the file they read is
-#     refused, the file unchanged (plot_sweep.py, h5_to_csv.py; it was a traceback), -o with no
-#     image format refused; plot_sweep.py --relative-to a value its text axis lacks, or on a map
-#     or a file without a text axis, refused naming the value (it was ignored); plot_strings.py
-#     --modes 0 refused naming the option (it said "has no bed modes").
+#     refused before any drawing, the file unchanged (plot_sweep.py, h5_to_csv.py; it was a
+#     traceback), -o with no image format refused; plot_sweep.py --relative-to a value its text
+#     axis lacks, or on a map or a file without a text axis, refused naming the value (it was
+#     ignored); plot_strings.py --modes 0 refused naming the option (it said "has no bed modes").
 #
 #   tests/plots.sh path/to/beamimpact scratch_dir
 # Runs from the repository root (found from this script's path); needs a Python with h5py,
@@ -310,6 +310,7 @@ images PNG "$dir/free.png" "$dir/clamped.png" && pass "plot_sweep.py PNGs valid"
 before=$(sha256sum "$dir/free.h5" | cut -c1-64)
 expect_fail "plot_sweep.py FILE acor -o FILE" "-o $dir/free.h5 is not allowed: it is the input file $dir/free.h5, which the output would overwrite; give another -o (e.g. $dir/free.png)" \
   "$python" scripts/plot_sweep.py "$dir/free.h5" acor -o "$dir/free.h5"
+grep -q "point(s)" "$dir/out.txt" && fail "plot_sweep.py -o FILE: refused only after drawing ($(cat "$dir/out.txt"))"
 expect_fail "h5_to_csv.py FILE -o FILE" "it is the input file $dir/free.h5, which the output would overwrite; give another -o (e.g. $dir/free.csv)" scripts/h5_to_csv.py "$dir/free.h5" -o "$dir/free.h5"
 [[ $(sha256sum "$dir/free.h5" | cut -c1-64) == "$before" ]] && pass "the input is unchanged after both" || fail "the input free.h5 was changed"
 expect_fail "plot_sweep.py -o out.h5 (not an image)" "-o $dir/new.h5 is not allowed: .h5 is not an image format" "$python" scripts/plot_sweep.py "$dir/free.h5" -o "$dir/new.h5"
