@@ -726,17 +726,57 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
   PetscFunctionReturn(0);
 }
 
+// The cases whose rows F holds as it is on disk (/results/case_index; none when F is absent or
+// unreadable), and those the journals in F.parts hold (every complete record of this signature).
+static void StoreCasesOnDisk(const SweepStore &S, std::set<PetscInt> *in_file, std::set<PetscInt> *in_journals)
+{
+  {
+    H5ErrorsQuiet       quiet;
+    std::vector<double> index;
+    const hid_t         file = H5Fopen(S.output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file >= 0) {
+      const hid_t g = H5Gopen2(file, "results", H5P_DEFAULT);
+      if (g >= 0 && H5ReadDoubleColumn(g, "case_index", &index))
+        for (double v : index) in_file->insert((PetscInt)v);
+      if (g >= 0) H5Gclose(g);
+      H5Fclose(file);
+    }
+  }
+  for (const std::string &path : SweepJournalFiles(S.parts, nullptr)) {
+    SweepJournalReader                      j;
+    std::map<PetscInt, std::vector<double>> rows;
+    std::map<PetscInt, std::string>         reasons;
+    PetscInt                                added = 0;
+    j.path                                        = path;
+    j.ReadNew(S.signature_hash, S.ncols, S.ncases, &rows, &reasons, &added);
+    for (auto &kv : rows) in_journals->insert(kv.first);
+  }
+}
+
 // What a failed rewrite left, for its message: F as it was (or still nothing there), and where
-// the rows computed since F was last written are (the journals in F.parts), or that there are
-// none (the first write of a run, no journal of an earlier run: F.parts goes with the run).
+// the rows computed that F does not hold are: in the journals in F.parts (a resume reads them),
+// in none (the journals could not be written either: those rows are computed again), or that
+// there are none (every row is in F, or no point had been computed).
 static std::string StoreWriteLeft(const SweepStore &S)
 {
-  struct stat       st;
+  struct stat        st;
+  std::set<PetscInt> in_file, in_journals;
+  size_t             kept = 0, lost = 0; // rows not in F: in a journal, in none
+  StoreCasesOnDisk(S, &in_file, &in_journals);
+  for (auto &kv : S.rows) {
+    if (in_file.count(kv.first)) continue;
+    if (in_journals.count(kv.first)) ++kept;
+    else ++lost;
+  }
   const bool        there = ::stat(S.output.c_str(), &st) == 0 && st.st_size > 0;
-  const size_t      n     = SweepJournalFiles(S.parts, nullptr).size();
   const std::string left  = there ? S.output + " is as it was" : "nothing was written at " + S.output;
-  if (n > 0) return left + ", and the " + std::to_string(n) + " journal(s) in " + S.parts + " keep the rows not in it, for a resume (the same command once there is room)";
-  return left + (there ? "; it holds every row computed so far" : "; no point had been computed") + ": run the same command again once there is room";
+  const std::string again = "run the same command again once there is room";
+  const std::string journals = std::to_string(kept) + " row(s) not in it are kept by the journal(s) in " + S.parts + " for a resume";
+  if (lost > 0)
+    return left + "; " + std::to_string(lost) + " row(s) computed are neither in it nor in a journal (the journals could not be written either) and will be computed again" +
+           (kept > 0 ? "; " + journals : "") + ": " + again;
+  if (kept > 0) return left + ", and the " + journals + " (the same command once there is room)";
+  return left + (S.rows.empty() ? "; no point had been computed" : "; it holds every row computed so far") + ": " + again;
 }
 
 // F rewritten whole: built in memory, written to F.tmp (every write checked: a full disk shows
