@@ -726,11 +726,13 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
   PetscFunctionReturn(0);
 }
 
-// The cases whose rows F holds as it is on disk (/results/case_index; none when F is absent or
-// unreadable), and those the journals in F.parts hold (every complete record of this signature).
+// The cases whose rows F holds as it is on disk (/results/case_index; none when F is absent,
+// unreadable or no regular file: a FIFO put there would block the open), and those the journals
+// in F.parts hold (every complete record of this signature).
 static void StoreCasesOnDisk(const SweepStore &S, std::set<PetscInt> *in_file, std::set<PetscInt> *in_journals)
 {
-  {
+  struct stat st;
+  if (::lstat(S.output.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
     H5ErrorsQuiet       quiet;
     std::vector<double> index;
     const hid_t         file = H5Fopen(S.output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -753,11 +755,12 @@ static void StoreCasesOnDisk(const SweepStore &S, std::set<PetscInt> *in_file, s
   }
 }
 
-// What a failed rewrite left, for its message: F as it was (or still nothing there), and where
-// the rows computed that F does not hold are: in the journals in F.parts (a resume reads them),
-// in none (the journals could not be written either: those rows are computed again), or that
-// there are none (every row is in F, or no point had been computed).
-static std::string StoreWriteLeft(const SweepStore &S)
+// What a failed rewrite left, for its message: F as it was (or still nothing there, or what was
+// put there meanwhile), and where the rows computed that F does not hold are: in the journals in
+// F.parts (a resume reads them), in none (the journals could not be written either: those rows
+// are computed again), or that there are none (every row is in F, or no point had been computed).
+// full: the cause was a full disk (the same command resumes once there is room).
+static std::string StoreWriteLeft(const SweepStore &S, bool full)
 {
   struct stat        st;
   std::set<PetscInt> in_file, in_journals;
@@ -768,14 +771,16 @@ static std::string StoreWriteLeft(const SweepStore &S)
     if (in_journals.count(kv.first)) ++kept;
     else ++lost;
   }
-  const bool        there = ::stat(S.output.c_str(), &st) == 0 && st.st_size > 0;
-  const std::string left  = there ? S.output + " is as it was" : "nothing was written at " + S.output;
-  const std::string again = "run the same command again once there is room";
+  const bool        there    = ::lstat(S.output.c_str(), &st) == 0;
+  const std::string left     = !there ? "nothing was written at " + S.output
+                               : S_ISREG(st.st_mode) ? S.output + " is as it was"
+                                                      : S.output + " is left as it is (" + FileKind(st.st_mode) + ")";
+  const std::string again    = full ? "run the same command again once there is room" : "run the same command again once the cause is removed";
   const std::string journals = std::to_string(kept) + " row(s) not in it are kept by the journal(s) in " + S.parts + " for a resume";
   if (lost > 0)
     return left + "; " + std::to_string(lost) + " row(s) computed are neither in it nor in a journal (the journals could not be written either) and will be computed again" +
            (kept > 0 ? "; " + journals : "") + ": " + again;
-  if (kept > 0) return left + ", and the " + journals + " (the same command once there is room)";
+  if (kept > 0) return left + ", and the " + journals + ": " + again;
   return left + (S.rows.empty() ? "; no point had been computed" : "; it holds every row computed so far") + ": " + again;
 }
 
@@ -797,7 +802,8 @@ static PetscErrorCode StoreWrite(SweepStore &S)
     if (ierr) error = LastErrorMessage(ierr);
     error = H5MemoryFileInstall(file, S.output, tmp, error); // F.tmp, fsync'ed, renamed onto F
   }
-  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing it failed (%s); %s", S.output.c_str(), WriteFailureCause(error).c_str(), StoreWriteLeft(S).c_str());
+  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing it failed (%s); %s", S.output.c_str(), WriteFailureCause(error).c_str(),
+             StoreWriteLeft(S, WriteFailureCause(error) != error).c_str());
   S.rows_written = (PetscInt)S.rows.size();
   S.last_write   = MPI_Wtime();
   S.write_cost   = S.last_write - t0;
