@@ -29,7 +29,7 @@ import os
 import shutil
 import sys
 
-from beamimpact import files, labels, style
+from beamimpact import checks, files, labels, style
 
 import numpy as np
 from matplotlib import animation
@@ -48,7 +48,7 @@ def main():
     ap.add_argument("-o", "--output", required=True, help="out.gif (or out.mp4 with ffmpeg on PATH)")
     ap.add_argument("--frames", type=int, default=0, help="at most this many frames, evenly chosen from the snapshots (default: all)")
     ap.add_argument("--fps", type=float, default=20, help="frames per second (default 20)")
-    ap.add_argument("--dpi", type=int, default=80, help="resolution (default 80: 640 x 320 pixels)")
+    ap.add_argument("--dpi", type=checks.count(1, "dots per inch"), default=80, help="resolution (default 80: 640 x 320 pixels)")
     ap.add_argument("--no-ball", action="store_true", help="the beam only (a file without -monitor_ball)")
     a = ap.parse_args()
     ext = os.path.splitext(a.output)[1].lower()
@@ -164,6 +164,7 @@ def main():
             mesh.set_array(np.ma.masked_invalid(bed[k]).ravel())
         return (beam, text) + ((ball,) if ball is not None else ()) + ((mesh,) if mesh is not None else ())
 
+    files.check_output(PROG, a.output, ext)  # not onto the file it reads
     anim = animation.FuncAnimation(fig, frame, frames=len(pick), blit=False)
     if ext == ".gif":
         writer = animation.PillowWriter(fps=a.fps)

@@ -252,6 +252,7 @@ def main():
         else:
             cols = table_of_group(f, obj, path) if isinstance(obj, h5py.Group) else table_of_dataset(obj, path)
     heads = [("%s (%s)" % (c[0], c[1]) if c[1] and a.units == "header" else c[0]) for c in cols]
+    files.check_output(PROG, a.output, ".csv")  # not onto the file it reads
     out = open(a.output, "w", newline="") if a.output else sys.stdout
     try:
         w = csv.writer(out, lineterminator="\n")

@@ -69,7 +69,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("file", help="HDF5 file written by -task modes")
     ap.add_argument("-o", "--output", help="PNG to write (default: FILE with .png)")
-    ap.add_argument("--modes", type=int, default=3, help="flexible modes to draw (default 3)")
+    ap.add_argument("--modes", type=checks.count(1, "flexible modes to draw"), default=3, help="flexible modes to draw (default 3)")
     ap.add_argument("--sweep", help="a -task sweep file of the same bat: its curve and the sweet spots")
     ap.add_argument("--column", default="bbs", help="the sweep column to draw (default bbs; acor for a bat at rest)")
     ap.add_argument("--pivot", type=float, default=0.152, help="pivot or hands position x_p (m) for the centre of percussion (default 0.152)")

@@ -44,7 +44,7 @@ import os
 import sys
 import textwrap
 
-from beamimpact import files, labels, style
+from beamimpact import checks, files, labels, style
 
 import numpy as np
 
@@ -284,8 +284,8 @@ def main():
     ap.add_argument("--mode-energies", action="store_true", help="the energy per mode at the end (a modal free flight, /modes_energy)")
     ap.add_argument("--modes", action="store_true", help="the mode shapes (a -task modes file)")
     ap.add_argument("--full", action="store_true", help="force plot over the whole run, not zoomed to the contacts")
-    ap.add_argument("--curves", type=int, default=8, help="at most this many snapshot curves (default 8)")
-    ap.add_argument("--mode-count", type=int, default=4, help="flexible modes to draw (default 4)")
+    ap.add_argument("--curves", type=checks.count(1, "snapshot curves"), default=8, help="at most this many snapshot curves (default 8)")
+    ap.add_argument("--mode-count", type=checks.count(1, "flexible modes to draw"), default=4, help="flexible modes to draw (default 4)")
     ap.add_argument("--mode-bars", type=int, default=8, help="flexible modes with a bar of their own in the mode energies (default 8)")
     a = ap.parse_args()
     prefix = a.output or files.default_prefix(a.file)

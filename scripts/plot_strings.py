@@ -22,7 +22,7 @@ import argparse
 import os
 import sys
 
-from beamimpact import files, style
+from beamimpact import checks, files, style
 
 import numpy as np
 
@@ -74,8 +74,8 @@ def main():
     ap = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
     ap.add_argument("file", help="HDF5 file: a string bed's or a strung racket's -task modes, or a racket's -task impact with -snapshot_times")
     ap.add_argument("-o", "--output", help="PNG to write (default: FILE with .png)")
-    ap.add_argument("--modes", type=int, default=6, help="modes to draw (default 6)")
-    ap.add_argument("--snapshots", type=int, default=6, help="snapshot times to draw, evenly chosen (default 6)")
+    ap.add_argument("--modes", type=checks.count(1, "modes to draw"), default=6, help="modes to draw (default 6)")
+    ap.add_argument("--snapshots", type=checks.count(1, "snapshot times to draw"), default=6, help="snapshot times to draw, evenly chosen (default 6)")
     a = ap.parse_args()
     with files.open_file(PROG, a.file) as f:
         kind, x, z, panels, scale, marker = read(f, a)

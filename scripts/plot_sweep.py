@@ -277,10 +277,7 @@ def plot_text_curves(args, path, f, column, numeric, text_axes):
     multi_all = files.counts(r, "contacts", 0) >= 2 if "contacts" in r else np.zeros(len(y_all), dtype=bool)
     rigid_all = files.numbers(r, "rigid_acor") if acor_mode and "rigid_acor" in r and not args.no_rigid and not args.relative_to else None
     ylabel = "ACOR" if acor_mode else labels.axis_label(r, column)
-    if args.relative_to:  # COLUMN minus its value at the same point with the text value given
-        if len(text_axes) != 1 or not numeric or args.relative_to not in text_axes[0].values:
-            sys.exit("%s: --relative-to %s needs one text axis with that value and a numeric axis; %s has text axes %s"
-                     % (PROG, args.relative_to, path, ", ".join("%s (%s)" % (a.name, ";".join(a.values)) for a in text_axes) or "none"))
+    if args.relative_to:  # COLUMN minus its value at the same point with the text value given (check_relative_to)
         ref = text_rows(r, text_axes, (args.relative_to,)) & (st_all == 0)
         at = dict(zip(x_all[ref], y_all[ref]))
         y_all = y_all - np.array([at.get(x, np.nan) for x in x_all])
@@ -337,6 +334,28 @@ def plot_text_curves(args, path, f, column, numeric, text_axes):
     style.save(fig, args.output, dpi=args.dpi, layout=False, tight_box=True)
 
 
+def check_relative_to(value, opened, axes):
+    """--relative-to VALUE draws COLUMN minus its value at the same point for VALUE of a text axis:
+    curves of one sweep with one text axis holding VALUE and one numeric axis. Anything else (more
+    files, no such text axis or value, a map over two numeric axes, no numeric axis) exits naming
+    the value and what the file has, before anything is drawn."""
+    head = "%s: --relative-to %s is not allowed: " % (PROG, value)
+    need = ("it draws COLUMN minus its value at %s of a text axis, as curves along one numeric axis "
+            "(one sweep such as -sweep \"ts_type=rk;modal,impact_x=0.4:0.9:6\")" % value)
+    if len(opened) != 1:
+        sys.exit(head + need + "; it takes one file, not %d" % len(opened))
+    path = opened[0][0]
+    text = [a for a in axes[0] if a.text]
+    numeric = [a for a in axes[0] if not a.text]
+    if len(text) != 1:
+        sys.exit(head + need + "; %s has %s" % (path, "text axes %s" % ", ".join(a.name for a in text) if text else "no text axis"))
+    if value not in text[0].values:
+        sys.exit(head + "the text axis %s of %s has the values %s" % (text[0].name, path, ", ".join(text[0].values)))
+    if len(numeric) != 1:
+        sys.exit(head + need + "; %s has %s" % (path, "%d numeric axes (%s): a map of each value, not curves" % (len(numeric), ", ".join(a.name for a in numeric))
+                                              if numeric else "no numeric axis"))
+
+
 def plot_text(args, path, f, column, axes):
     """A file with text (categorical) axes."""
     numeric = [a for a in axes if not a.text]
@@ -361,7 +380,7 @@ def main():
     p.add_argument("--relative-to", metavar="VALUE", default=None, help="text axis: draw COLUMN minus its value at the same point with this value of the text axis (e.g. modal: each integrator's difference to -ts_type modal, whose beam flow is exact)")
     p.add_argument("--no-raw", action="store_true", help="ACOR: omit the raw (uncorrected) ACOR")
     p.add_argument("--no-rigid", action="store_true", help="ACOR: omit the rigid-body curves")
-    p.add_argument("--dpi", type=int, default=150)
+    p.add_argument("--dpi", type=checks.count(1, "dots per inch"), default=150)
     args = p.parse_args()
     paths, column, given = list(args.inputs), "acor_corrected", False
     if len(paths) > 1 and not paths[-1].endswith(".h5") and not os.path.exists(paths[-1]):
@@ -371,6 +390,8 @@ def main():
     if args.map and args.curves:
         p.error("give --map or --curves, not both")
     opened = [(path, load(path)) for path in paths]
+    if args.output:
+        style.check_image_output(args.output)  # not onto an input, an image: before any drawing
     swings = [path for path, f in opened if checks.swinging(f)]
     if swings and column in ("acor", "acor_corrected"):  # no ACOR of a bat at rest, no Eq. (11)
         if given:
@@ -387,6 +408,8 @@ def main():
             sys.exit("%s: %s: /results/%s is text, not numbers: draw a numeric column against it (acor, contact_time, wall_time, ...)" % (PROG, path, column))
     axes = [files.sweep_axes(f) for _, f in opened]
     naxes = {len(a) for a in axes}
+    if args.relative_to is not None:
+        check_relative_to(args.relative_to, opened, axes)
     if any(a.text for ax in axes for a in ax):
         if len(opened) != 1:
             sys.exit("%s: a sweep with text axes is drawn alone (one curve per value): give one file" % PROG)

@@ -8,6 +8,12 @@
 #   * section files: rows that do not start at x = 0 are shifted with a note; a file far outside
 #     any bat (a profile in centimetres) is a warning naming the file, the values and the units;
 #     a NUL byte in an options file, a profile or a COR table is refused naming file and line;
+#     a UTF-8 byte order mark at the start and CR-only (classic Mac) or CR LF line ends are read:
+#     the same numbers as the plain file (it was "'<BOM>-impact_x' is not an option", "the file has
+#     no rows"); a UTF-16 file is refused naming its encoding;
+#   * a sweep's messages: every point off a racket's face says so (it said "off the beam or held
+#     fixed"); an axis over an option of another task names it (it said "not an option of this
+#     program"); a failed row quotes the value as written (-0.1, not -0.10000000000000001);
 #     a -beam_clamp edge between nodes is a note with the held region's ends;
 #   * explicit RK under strong Rayleigh damping runs at its computed limit (it was "-ts_dt 0 is
 #     not allowed"), and a fixed step 1% above that limit is refused;
@@ -105,6 +111,53 @@ if [[ $rc -ne 0 ]] && grep -q "$dir/nul.profile:2: the line holds a NUL byte" <<
 printf '10 0.6\n20 0.5\0\n' >"$dir/nul-cor.txt"
 run -ball_law hysteresis -ball_contact_time 1e-3 -ball_test_speed 26.8 -ball_cor_table "$dir/nul-cor.txt" -output none
 if [[ $rc -ne 0 ]] && grep -q "ball_cor_table $dir/nul-cor.txt, line 2: the line holds a NUL byte" <<<"$out"; then pass "a NUL byte in a COR table: refused naming the file and line"; else fail "NUL in COR table: exit $rc: $out"; fi
+# a UTF-8 byte order mark, CR and CR LF line ends: read as the plain file is (the same numbers)
+printf -- '-impact_x 0.3\n-ball_speed 2\n' >"$dir/plain.opts"
+printf -- '\xEF\xBB\xBF-impact_x 0.3\n-ball_speed 2\n' >"$dir/bom.opts"
+printf -- '-impact_x 0.3\r-ball_speed 2\r' >"$dir/cr.opts"
+printf -- '\xEF\xBB\xBF-impact_x 0.3\r\n-ball_speed 2\r\n' >"$dir/crlf.opts"
+run -options_file "$dir/plain.opts" -impact_window 1e-3 -output none
+want=$(field acor)
+for f in bom cr crlf; do
+  run -options_file "$dir/$f.opts" -impact_window 1e-3 -output none
+  [[ $rc -eq 0 && -n $want && $(field acor) == "$want" ]] && grep -q "x 0.3000 m" <<<"$out" && pass "an options file ($f): read as the plain one (acor $want)" ||
+    fail "$f.opts: exit $rc, acor $(field acor) against $want: $out"
+done
+printf '\xFF\xFE-\0i\0' >"$dir/utf16.opts"
+run -options_file "$dir/utf16.opts" -output none
+[[ $rc -ne 0 ]] && grep -q -- "-options_file $dir/utf16.opts: the file is UTF-16 text (it starts with the bytes FF FE): save it as UTF-8 or plain ASCII" <<<"$out" &&
+  pass "a UTF-16 options file: refused naming its encoding" || fail "utf16.opts: exit $rc: $out"
+printf '# x D\n0 0.03\n0.5 0.03\n0.84 0.066\n' >"$dir/plain.profile"
+printf '\xEF\xBB\xBF0 0.03\n0.5 0.03\n0.84 0.066\n' >"$dir/bom.profile"
+printf '0 0.03\r0.5 0.03\r0.84 0.066\r' >"$dir/cr.profile"
+bat=(-beam_youngs_modulus 1.8e10 -beam_density 650 -impact_x 0.7 -impact_window 1e-3 -output none)
+run -beam_profile "$dir/plain.profile" "${bat[@]}"
+want=$(field acor)
+for f in bom cr; do
+  run -beam_profile "$dir/$f.profile" "${bat[@]}"
+  [[ $rc -eq 0 && -n $want && $(field acor) == "$want" ]] && pass "a profile ($f): read as the plain one (acor $want)" || fail "$f.profile: exit $rc, acor $(field acor) against $want: $out"
+done
+printf '10 0.6\n20 0.5\n' >"$dir/plain-cor.txt"
+printf '\xEF\xBB\xBF10 0.6\r20 0.5\r' >"$dir/bom-cr-cor.txt"
+cor=(-ball_law hysteresis -ball_contact_time 1e-3 -ball_test_speed 26.8 -impact_window 1e-3 -output none)
+run "${cor[@]}" -ball_cor_table "$dir/plain-cor.txt"
+want=$(field acor)
+run "${cor[@]}" -ball_cor_table "$dir/bom-cr-cor.txt"
+[[ $rc -eq 0 && -n $want && $(field acor) == "$want" ]] && pass "a COR table with a BOM and CR line ends: read as the plain one (acor $want)" || fail "bom-cr-cor.txt: exit $rc, acor $(field acor) against $want: $out"
+
+# --- a sweep's messages ----------------------------------------------------------------------
+run -options_file options/scenes/racket-face-map.opts -sweep "impact_x=0.1;0.2,impact_z=0.2" -output "$dir/offface.h5"
+[[ $rc -ne 0 ]] && grep -q "no point of the sweep can run: every impact point is off the racket's face (outside the head's outline, where there are no strings)" <<<"$out" &&
+  ! grep -q "off the beam or held fixed" <<<"$out" && pass "every point off the racket's face: said so" || fail "off-face sweep: exit $rc: $out"
+run -task sweep -sweep "flight_speed=30;40" -output "$dir/flight_axis.h5"
+[[ $rc -ne 0 ]] && grep -q -- "-flight_speed is an option of this program, but the impact a sweep runs at each point (-task sweep farms -task impact) does not read it.*-task flight" <<<"$out" &&
+  pass "a sweep axis over -flight_speed: named an option of -task flight" || fail "flight_speed axis: exit $rc: $out"
+run -task sweep -sweep "bogus_option=1;2" -output "$dir/bogus_axis.h5"
+[[ $rc -ne 0 ]] && grep -q -- "-bogus_option is not an option of this program" <<<"$out" && pass "an axis over no option at all: still 'not an option of this program'" || fail "bogus axis: exit $rc: $out"
+run -options_file options/scenes/oblique-map.opts -beam_nodes 43 -sweep "impact_x=0.65,impact_offset=-0.1;0.01" -output "$dir/offset.h5"
+grep -q "sweep: point 0 (impact_x = 0.65 m, impact_offset = -0.1 m) failed, status 4 (refused by the run's set-up): -impact_offset -0.1 misses the bat" <<<"$out" &&
+  pass "a failed row quotes -impact_offset -0.1 as written" || fail "failed row's value: exit $rc: $(grep failed <<<"$out")"
+
 run -beam_clamp 0,0.13 -impact_x 0.6 -output none
 if [[ $rc -eq 0 ]] && grep -q "note: -beam_clamp 0,0.13 holds the nodes from x = 0 to x = 0.11 m (h = 0.0275 m)" <<<"$out"; then
   pass "a clamp edge between nodes: a note with the held region's ends"

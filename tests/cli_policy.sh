@@ -14,6 +14,7 @@
 #     and every option read, as used, with its unit (/options_used).
 #   * -log_view lists the program's stages (set-up, contact, free flight, output);
 #   * a sweep whose runs -impact_max_time cuts off in contact gives failed rows (status 7);
+#   * a sweep's h^2 note is a whole point's, not its 1 ns set-up probe's;
 #   * a run expected to take long prints its cost first (-impact_cost_warn), progress lines
 #     (-impact_progress), -ts_type modal's modes too, and a sweep of more than 1e6 points
 #     announces its set-up cost; a sweep whose remaining points are expected to take longer
@@ -153,6 +154,15 @@ out=$("$exe" -output none 2>&1)
 out=$(output_until "^cost: -ts_type rk's step" 60 "$exe" -beam_nodes 641 -output none)
 grep -q "^cost: -ts_type rk's step is bound by h^2: the stability limit dt_max = [0-9.e-]* s at N = 641 .*-ts_type modal takes this run in ~[0-9.e-]* s at the same accuracy ([0-9]*x faster)" <<<"$out" \
   && pass "rk4's h^2-bound step on 641 nodes is said at set-up, with -ts_type modal's time" || fail "no h^2 note at N = 641: $out"
+# a sweep's set-up probe steps 1 ns: the h^2 note quotes a whole point's stepping (it quoted the
+# probe's: "at least 2.83e-09 s"), at least the contact time over the stability limit's steps
+# and within a factor 100 of what a point measures
+out=$("$exe" -options_file options/scenes/acor-6mm.opts -sweep_x 0.3,0.5 -ts_type rk -ts_rk_type 4 -beam_nodes 201 -output "$dir/probe_cost.h5" 2>&1)
+at_least=$(sed -nE "s/^cost: -ts_type rk's step is bound by h\^2: .*: at least ([0-9.e+-]+) s of stepping a point; -ts_type modal takes each point in .*/\1/p" <<<"$out")
+per=$(sed -nE 's/^sweep: per point: compute ([0-9.e+-]+) ms.*/\1/p' <<<"$out")
+if [[ -n $at_least && -n $per ]] && awk -v a="$at_least" -v p="$per" 'BEGIN { exit !(a > 1e-4 && a < 100 * p / 1e3 && p / 1e3 < 100 * a) }'; then
+  pass "a sweep's h^2 note quotes a point's stepping: at least $at_least s, a point measured $per ms"
+else fail "sweep cost note: at least '$at_least' s, per point '$per' ms: $(grep -E '^cost|per point' <<<"$out")"; fi
 out=$("$exe" -impact_cost_warn 1e-9 -impact_progress 1e-9 -output none 2>&1)
 grep -q "^cost: at least [0-9.e+]* steps .* the explicit stability limit) on 41 nodes" <<<"$out" && grep -q "^progress: t = [0-9.e-]* s simulated (the run stops by [0-9.e-]* s), [0-9]* steps" <<<"$out" \
   && pass "-impact_cost_warn and -impact_progress set when the cost and progress lines appear" || fail "cost/progress lines: $out"

@@ -6,7 +6,12 @@
 #      the file is not). Each run ends with an error naming -output and "disk full", exit status
 #      1 (no signal: no crash at PetscFinalize), no "wrote", no temporary file left, and the
 #      file of an earlier run at that path unchanged. The sweep, given room again, resumes and
-#      its file equals an uninterrupted run's.
+#      its file equals an uninterrupted run's. A sweep on 2 ranks whose first write fails says
+#      that no point had been computed, names no FILE.h5.parts (the failed run removes it) and
+#      ends every rank with that one message (it ended in MPI_ABORT and ORTE_ERROR_LOG); one
+#      whose rewrite fails later stops every rank with one message saying truly where the rows
+#      are (how many the journals keep, how many are in none: a resume finds exactly F's and the
+#      journals' rows done).
 #   2. kill -9 at random moments of a sweep that rewrites its file after every point, 20
 #      times (every fifth under mpiexec on 2 ranks): after each kill the file is absent or a
 #      complete HDF5 file (its rows and sweep_cases_done agree); the last resume completes it,
@@ -113,6 +118,36 @@ if [[ -n $mode ]]; then
   rc=$?
   ((rc != 0 && rc < 128)) && grep -q "disk full" sweep_full.log && ! ls "$full" | grep -q '\.tmp$' && pass "sweep on a full disk: an error, no crash, no .tmp ($(grep -m1 error sweep_full.log | cut -c1-120))" ||
     { fail "sweep on a full disk: exit $rc"; cat sweep_full.log; ls -la "$full"; }
+  # the first write fails on 2 ranks: one message, every rank ends, nothing named that is not there
+  room 4
+  full_run sweep_first.log -np2 "${sweep[@]}" -output "$full/first.h5"
+  rc=$?
+  if ((rc == 1)) && grep -q "beamimpact: error: -output $full/first.h5: writing it failed (disk full: .*); nothing was written at $full/first.h5; no point had been computed" sweep_first.log &&
+    ! grep -qE "MPI_ABORT|ORTE_ERROR_LOG|\.parts" sweep_first.log && [[ ! -e $full/first.h5.parts && ! -e $full/first.h5 ]] && [[ $(grep -c "beamimpact: error" sweep_first.log) == 1 ]]; then
+    pass "a sweep's first write on a full disk, 2 ranks: one message, no point lost, no MPI_ABORT"
+  else fail "a sweep's first write on a full disk, 2 ranks: exit $rc: $(cat sweep_first.log)"; ls -la "$full"; fi
+  # a later rewrite fails on 2 ranks: no further point handed out, every rank ends, one message,
+  # and what it says is where the rows are is true: F's rows and the journals' (K kept) are what a
+  # resume finds done, the L it says are in neither are computed again (the journals fail on this
+  # disk too: it said "the journals in F.parts keep the rows" of journals that held none)
+  room 80
+  full_run sweep_later.log -np2 "${sweep[@]}" -sweep_write_interval 0 -output "$full/later.h5"
+  rc=$?
+  msg=$(grep "beamimpact: error: -output $full/later.h5: writing it failed (disk full: " sweep_later.log)
+  kept=$(sed -nE 's/.* ([0-9]+) row\(s\) not in it are kept by the journal\(s\) in .*later.h5.parts for a resume.*/\1/p' <<<"$msg")
+  lost=$(sed -nE 's/.* ([0-9]+) row\(s\) computed are neither in it nor in a journal .*/\1/p' <<<"$msg")
+  in_file=0
+  [[ -e $full/later.h5 && -n $python ]] && in_file=$("$python" -c "import h5py, sys; print(len(h5py.File(sys.argv[1], 'r')['results/case_index']))" "$full/later.h5")
+  if ((rc == 1)) && [[ -n $msg && -n $kept$lost ]] && ! grep -qE "MPI_ABORT|ORTE_ERROR_LOG" sweep_later.log && [[ $(grep -c "beamimpact: error" sweep_later.log) == 1 ]]; then
+    pass "a sweep's later rewrite on a full disk, 2 ranks: one message (F holds $in_file rows, ${kept:-0} in journals, ${lost:-0} lost), no MPI_ABORT"
+  else fail "a sweep's later rewrite on a full disk, 2 ranks: exit $rc: $(cat sweep_later.log)"; ls -la "$full"; fi
+  rm -f "$full/filler"
+  "$exe" "${sweep[@]}" -sweep_quiet false -output "$full/later.h5" >sweep_later_resumed.log 2>&1
+  done_before=$(sed -nE 's/^sweep: computed ([0-9]+) points .*, ([0-9]+) already done$/\2/p' sweep_later_resumed.log)
+  if [[ -n $done_before ]] && ((done_before == in_file + ${kept:-0} && in_file + ${kept:-0} + ${lost:-0} <= 10)); then
+    pass "... and it was true: the resume found $done_before rows done (F's $in_file + the journals' ${kept:-0}), computed the rest"
+  else fail "the message's account: F $in_file + kept ${kept:-0} (lost ${lost:-0}), the resume found '$done_before' done: $msg / $(grep -E 'computed|error' sweep_later_resumed.log)"; fi
+  rm -rf "$full/later.h5" "$full/later.h5.parts"
   # given room (the file and its journals moved to a larger disk: the sweep's file alone is
   # near the tmpfs's size), the same command resumes and completes it
   rm -f "$full/filler"

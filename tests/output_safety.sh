@@ -15,6 +15,14 @@
 #   4. A per-point note (a pivot moved onto a node) is said once per sweep, not once per point.
 #   5. scripts/plot_bat.py --sweep refuses a sweep of another beam; plot_sweep.py of a swinging
 #      bat draws the batted-ball speed without the Eq. (11) curve, and refuses its acor.
+#   6. -output writes only to a regular file or a new name, for every task: a character device
+#      (a /dev/null twin made with mknod here, never the real one), a FIFO, a socket, a directory,
+#      a symbolic link to any of them or to nothing, and any name inside a sweep's FILE.h5.parts
+#      (its lock too, also through a link) are refused, left as they were, the message naming
+#      what it is (and -output none where that is what was meant); a link to a results file is
+#      followed (the file replaced, the link kept, a note); an empty file (directly or through a
+#      link) is refused, left as the same empty file; a directory merely named *.parts is written
+#      into; a sweep's file replaced by a FIFO while the sweep runs is not written over.
 #
 #   tests/output_safety.sh path/to/beamimpact scratch_dir [mpiexec]
 set -uo pipefail
@@ -72,8 +80,25 @@ for task in impact modes convergence sweep; do
   refused "-task $task -output onto another program's HDF5, -output_overwrite too" "not a results file of beamimpact" other.h5 \
     "$exe" -task $task "${small[@]}" "${extra[@]}" -output other.h5 -output_overwrite
 done
+# an empty file (another program's lock or marker, like a sweep's own FILE.h5.parts/lock): refused
+# by every task, -output_overwrite or not, directly or through a link, the file left empty (the
+# same inode); impact replaced it, sweep refused it as "not an HDF5 file"
 : >empty.h5
-"$exe" -task modes -beam_nodes 21 -output empty.h5 >/dev/null 2>&1 && pass "an empty file may be replaced" || fail "an empty file was refused"
+ln -s empty.h5 link_to_empty
+inode=$(stat -c %i empty.h5)
+for task in impact modes sweep; do
+  extra=()
+  [[ $task == sweep ]] && extra=(-sweep "impact_x=0.3;0.6")
+  for target in empty.h5 link_to_empty; do
+    refused "-task $task -output $target (an empty file): refused" "it exists and is empty, not a results file of beamimpact .*or -output none to write nothing" empty.h5 \
+      "$exe" -task $task "${small[@]}" "${extra[@]}" -output $target -output_overwrite
+  done
+done
+[[ ! -s empty.h5 && $(stat -c %i empty.h5) == "$inode" && -L link_to_empty ]] && pass "the empty file is the same empty file after the refusals" || fail "empty.h5 was replaced: $(ls -li empty.h5)"
+# a directory whose name merely ends in .parts (no sweep's lock in it, no FILE beside it) is anyone's
+mkdir -p mine.parts
+"$exe" -task modes -beam_nodes 21 -output mine.parts/modes.h5 >mine_parts.log 2>&1 && [[ -s mine.parts/modes.h5 ]] \
+  && pass "-output into a directory named mine.parts that is no sweep's: written" || fail "-output mine.parts/modes.h5: $(cat mine_parts.log)"
 
 # a running sweep's file: no other task replaces it, -output_overwrite or not
 "$exe" -task sweep "${small[@]}" -impact_after time -sweep "impact_x=0.05:1.05:40" -sweep_quiet -output locked.h5 >locked_sweep.log 2>&1 &
@@ -83,7 +108,69 @@ if kill -0 $sweep_pid 2>/dev/null; then
   refused "-output_overwrite does not replace a file a running sweep holds" "is being written by another sweep that is still running" locked.h5 \
     "$exe" -task modes -beam_nodes 21 -output locked.h5 -output_overwrite
 else fail "the sweep ended before the lock could be tried"; fi
+# ... nor a name inside its journal directory: the lock itself, a link to it, a new name there
+if kill -0 $sweep_pid 2>/dev/null; then
+  ln -sf locked.h5.parts/lock link_to_lock
+  for target in locked.h5.parts/lock link_to_lock locked.h5.parts/new.h5; do
+    out=$("$exe" -task modes -beam_nodes 21 -output $target -output_overwrite 2>&1)
+    if (($? != 0)) && grep -q "it is inside .*locked.h5.parts, the journal directory of a sweep writing .*locked.h5" <<<"$out" && [[ -f locked.h5.parts/lock && ! -s locked.h5.parts/lock ]] &&
+      [[ ! -e locked.h5.parts/new.h5 ]]; then pass "-output $target (inside the running sweep's .parts) is refused, the lock left as it was"
+    else fail "-output $target: $out"; fi
+  done
+fi
 kill $sweep_pid 2>/dev/null; wait $sweep_pid 2>/dev/null
+
+# --- 6. -output only to a regular file or a new name --------------------------------------------
+# kind_left NAME TEST: NAME still passes `test TEST` (-c a character device, -p a FIFO, ...)
+mkfifo fifo.h5
+mkdir adir
+ln -s fifo.h5 link_to_fifo
+ln -s adir link_to_dir
+ln -s nowhere.h5 link_to_nothing
+if [[ $(id -u) == 0 ]] && mknod null_twin c 1 3 2>/dev/null; then ln -s null_twin link_to_device; else echo "      (not root: no device node; the character device cases are skipped)"; fi
+if [[ -n "$python" ]]; then "$python" -c "import socket; socket.socket(socket.AF_UNIX).bind('sock.h5')"; fi
+flight=(-flight_series_dt 0.1)
+# every kind for impact and sweep (their files are written by two writers); the device and the
+# FIFO for the other tasks (the check before any work is one, RunTask's)
+for task in impact sweep modes convergence flight; do
+  extra=()
+  [[ $task == sweep ]] && extra=(-sweep "impact_x=0.3;0.6")
+  [[ $task == flight ]] && extra=("${flight[@]}")
+  for case in "null_twin|-c|a character device, not a file.*Use -output none to write nothing" "fifo.h5|-p|a FIFO (named pipe), not a file.*Use -output none to write nothing" \
+              "sock.h5|-S|a socket, not a file" "adir|-d|it is a directory; give a file name" "link_to_device|-L|a symbolic link to .*null_twin, a character device" \
+              "link_to_fifo|-L|a symbolic link to .*fifo.h5, a FIFO" "link_to_dir|-L|a symbolic link to .*adir, a directory" "link_to_nothing|-L|a symbolic link to nothing"; do
+    IFS='|' read -r target kind text <<<"$case"
+    [[ -e $target || -L $target ]] || continue
+    [[ $task == impact || $task == sweep || $target == null_twin || $target == fifo.h5 ]] || continue
+    out=$(timeout 30 "$exe" -task $task "${extra[@]}" -output $target -output_overwrite 2>&1)
+    rc=$?
+    if ((rc == 1)) && grep -q -- "-output $target is not allowed: .*$text" <<<"$out" && test $kind $target && [[ ! -e null_twin || -c null_twin ]] && [[ -p fifo.h5 ]]; then
+      pass "-task $task -output $target: refused, left as it was ($(grep -o 'it is [^;]*' <<<"$out" | head -1 | sed "s|$PWD/||" | cut -c1-70))"
+    else fail "-task $task -output $target: exit $rc, $(ls -ld $target): $out"; fi
+  done
+done
+ls | grep -q '\.tmp$' && fail "a temporary file was left: $(ls | grep '\.tmp$')"
+# a link to a results file of this program: followed, the file replaced, the link kept
+"$exe" -task modes -beam_nodes 21 -output modes_target.h5 >/dev/null 2>&1
+ln -s modes_target.h5 link_to_results
+before=$(sha256sum modes_target.h5 | cut -c1-64)
+out=$("$exe" -task modes -beam_nodes 23 -output link_to_results 2>&1)
+if (($? == 0)) && [[ -L link_to_results && $(readlink link_to_results) == modes_target.h5 ]] && [[ $(sha256sum modes_target.h5 | cut -c1-64) != "$before" ]] &&
+  grep -q "note: -output link_to_results is a symbolic link: the results go to the file it names, .*modes_target.h5 (the link stays)" <<<"$out"; then
+  pass "-output a link to a results file: the file replaced through it, the link kept, a note"
+else fail "-output link_to_results: $(ls -l link_to_results): $out"; fi
+# the check at the rename: a sweep's file replaced by a FIFO while the sweep runs is not replaced
+"$exe" -task sweep "${small[@]}" -impact_after time -sweep "impact_x=0.05:1.05:40" -sweep_write_interval 0 -sweep_quiet -output swapped.h5 >swapped.log 2>&1 &
+sweep_pid=$!
+for ((i = 0; i < 300; ++i)); do [[ -s swapped.h5 ]] && break; sleep 0.05; done
+rm -f swapped.h5 && mkfifo swapped.h5
+wait $sweep_pid
+rc=$?
+if ((rc == 1)) && [[ -p swapped.h5 ]] && grep -q "it is now a FIFO (named pipe), not a regular file, and is not replaced); swapped.h5 is left as it is (a FIFO" swapped.log &&
+  ! grep -q "there is room" swapped.log; then
+  pass "a sweep's file replaced by a FIFO while it runs: the FIFO is left, the sweep stops saying why"
+else fail "swapped for a FIFO: exit $rc, $(ls -ld swapped.h5): $(cat swapped.log)"; fi
+rm -rf swapped.h5 swapped.h5.parts swapped.h5.tmp
 
 # --- 2. input files by contents ----------------------------------------------------------------
 "$exe" "${small[@]}" -ball_law hysteresis -ball_cor_table cor.txt -output hashed.h5 >hashed.log 2>&1 || { fail "impact with a COR table"; cat hashed.log; }

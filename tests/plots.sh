@@ -21,7 +21,12 @@
 #     free beam only;
 #   * scripts/plot_bbcor_map.py and plot_oblique_map.py on small sweeps: the best point they
 #     print is the one h5py finds, each refuses the other's file; plot_racket_map.py on a small
-#     face map: its largest ACOR and centre of percussion as h5py finds them.
+#     face map: its largest ACOR and centre of percussion as h5py finds them;
+#   * the scripts check what they are given before drawing: -o naming the file they read is
+#     refused before any drawing, the file unchanged (plot_sweep.py, h5_to_csv.py; it was a
+#     traceback), -o with no image format refused; plot_sweep.py --relative-to a value its text
+#     axis lacks, or on a map or a file without a text axis, refused naming the value (it was
+#     ignored); plot_strings.py --modes 0 refused naming the option (it said "has no bed modes").
 #
 #   tests/plots.sh path/to/beamimpact scratch_dir
 # Runs from the repository root (found from this script's path); needs a Python with h5py,
@@ -301,6 +306,23 @@ for name in free clamped; do
     && pass "plot_sweep.py $name: $multi double contact(s) ringed, Eq. (11) curve $curve" || fail "plot_sweep.py $name: expected $multi ringed and the curve $curve: $out"
 done
 images PNG "$dir/free.png" "$dir/clamped.png" && pass "plot_sweep.py PNGs valid" || fail "plot_sweep.py PNGs"
+# -o naming the input: refused, the file unchanged; -o with no image format: refused
+before=$(sha256sum "$dir/free.h5" | cut -c1-64)
+expect_fail "plot_sweep.py FILE acor -o FILE" "-o $dir/free.h5 is not allowed: it is the input file $dir/free.h5, which the output would overwrite; give another -o (e.g. $dir/free.png)" \
+  "$python" scripts/plot_sweep.py "$dir/free.h5" acor -o "$dir/free.h5"
+grep -q "point(s)" "$dir/out.txt" && fail "plot_sweep.py -o FILE: refused only after drawing ($(cat "$dir/out.txt"))"
+expect_fail "h5_to_csv.py FILE -o FILE" "it is the input file $dir/free.h5, which the output would overwrite; give another -o (e.g. $dir/free.csv)" scripts/h5_to_csv.py "$dir/free.h5" -o "$dir/free.h5"
+[[ $(sha256sum "$dir/free.h5" | cut -c1-64) == "$before" ]] && pass "the input is unchanged after both" || fail "the input free.h5 was changed"
+expect_fail "plot_sweep.py -o out.h5 (not an image)" "-o $dir/new.h5 is not allowed: .h5 is not an image format" "$python" scripts/plot_sweep.py "$dir/free.h5" -o "$dir/new.h5"
+[[ -e $dir/new.h5 ]] && fail "plot_sweep.py wrote $dir/new.h5"
+# --relative-to: a value of the text axis, on curves; anything else refused naming the value
+run textaxis -task sweep -beam_nodes 21 -impact_window 1e-3 -sweep "ts_type=rk;cn,impact_x=0.3;0.6" -sweep_quiet
+out=$("$python" scripts/plot_sweep.py "$dir/textaxis.h5" --relative-to cn -o "$dir/textaxis.png" 2>&1) && images PNG "$dir/textaxis.png" >/dev/null \
+  && pass "plot_sweep.py --relative-to cn on a ts_type sweep draws" || fail "plot_sweep.py --relative-to cn: $out"
+expect_fail "plot_sweep.py --relative-to a value the text axis lacks" "--relative-to bogus is not allowed: the text axis ts_type of $dir/textaxis.h5 has the values rk, cn" \
+  "$python" scripts/plot_sweep.py "$dir/textaxis.h5" --relative-to bogus -o "$dir/x.png"
+expect_fail "plot_sweep.py --relative-to on a file without a text axis" "--relative-to rk is not allowed: it draws COLUMN minus its value at rk of a text axis" \
+  "$python" scripts/plot_sweep.py "$dir/free.h5" --relative-to rk -o "$dir/x.png"
 
 # The maps of issues 23 and 24, each on a small sweep (coarse grids), its printed best point
 # against the same maximum found here with h5py, and each refusing the other's file:
@@ -351,6 +373,9 @@ else fail "plot_oblique_map.py obmap.h5: $out"; fi
 images PNG "$dir/bbmap.png" "$dir/obmap.png" && pass "map PNGs valid" || fail "map PNGs"
 expect_fail "plot_bbcor_map.py on the oblique map" "is not a sweep over barrel_wall_thickness" "$python" scripts/plot_bbcor_map.py "$dir/obmap.h5" -o "$dir/x.png"
 expect_fail "plot_oblique_map.py on the BBCOR map" "is not a sweep over impact_x and impact_offset" "$python" scripts/plot_oblique_map.py "$dir/bbmap.h5" -o "$dir/x.png"
+expect_fail "plot_sweep.py --map --relative-to on a map of two numeric axes" "--relative-to bogus is not allowed: it draws COLUMN minus its value at bogus of a text axis" \
+  "$python" scripts/plot_sweep.py "$dir/obmap.h5" distance --map --relative-to bogus -o "$dir/x.png"
+[[ -e $dir/x.png ]] && fail "a refused plot wrote $dir/x.png"
 
 # plot_racket_map.py on a 3 x 3 face map of the strung racket: the largest ACOR and the centre of
 # percussion it prints are h5py's maximum and I_cm / (M d) from the file's attributes; the frame's
@@ -411,6 +436,8 @@ if run strings -options_file options/scenes/strings-modes.opts -strings_nodes 31
   if out=$("$python" scripts/plot_strings.py "$dir/strings.h5" -o "$dir/strings.png" 2>&1) && images PNG "$dir/strings.png" >/dev/null; then pass "plot_strings.py: $out"
   else fail "plot_strings.py strings.h5: $out"; fi
   expect_fail "plot_strings.py on a beam's modes file" "no string bed's picture" "$python" scripts/plot_strings.py "$dir/modes.h5" -o "$dir/not-strings.png"
+  expect_fail "plot_strings.py --modes 0" "argument --modes: 0 is not allowed: the number of modes to draw must be at least 1" \
+    "$python" scripts/plot_strings.py "$dir/strings.h5" --modes 0 -o "$dir/no-modes.png"
 fi
 
 # scripts/plot_fit.py (issue 36) on a small fit of data made by the program (3 impacts, ball_k): a

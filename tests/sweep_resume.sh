@@ -11,8 +11,11 @@
 #      computes exactly the other N - A (nothing recomputed) and leaves a file
 #      identical to the reference (datasets but wall_time within 1e-12, every
 #      attribute but the command line 'options');
-#   4. a third run finds everything done; a changed parameter is refused with
-#      a message naming it; -sweep_restart starts over;
+#   4. a third run finds everything done; so do runs that change nothing: the axis's values
+#      written differently (ball_speed=1.0;2.0 for 1;2), an option given at its default
+#      (-impact_offset 0), an option the run does not read (-ts_theta_theta under rk); a changed
+#      parameter (-beam_nodes, an axis's value) is refused with a message naming it;
+#      -sweep_restart starts over;
 #   5. steps 1-3 again for a sweep with a text (categorical) axis, ts_type=rk;cn by
 #      impact point: killed, resumed, identical to its uninterrupted run;
 #   6. and for a sampled sweep (a grid axis times a Latin hypercube of impact points): its
@@ -125,6 +128,13 @@ kill_resume "" "${opts[@]}"
 # 4. done, changed parameters, restart
 "$mpiexec" -n 2 "$exe" "${opts[@]}" -output resume_k.h5 >resume_again.log 2>&1 && grep -q "all $N points were already done" resume_again.log \
   && pass "third run: nothing to compute" || { fail "third run"; cat resume_again.log; }
+if "$exe" "${base[@]}" -sweep "impact_x=0.05:1.05:$((N / 2)),ball_speed=1;2.5" -output resume_k.h5 >resume_changed.log 2>&1; then
+  fail "a changed axis value was accepted for resume"
+elif grep -q "sweep axis ball_speed: '1;2' in the file, '1;2.5' now" resume_changed.log; then
+  pass "a changed axis value refused: $(grep -m1 "sweep axis" resume_changed.log | sed 's/^ *//')"
+else
+  fail "changed axis value: unclear message"; cat resume_changed.log
+fi
 if "$exe" "${opts[@]}" -beam_nodes 23 -output resume_k.h5 >resume_changed.log 2>&1; then
   fail "a changed parameter was accepted for resume"
 elif grep -q "different parameters" resume_changed.log && grep -q "option -beam_nodes: '21' in the file, '23' now" resume_changed.log && grep -q -- "-sweep_restart" resume_changed.log; then
@@ -132,13 +142,34 @@ elif grep -q "different parameters" resume_changed.log && grep -q "option -beam_
 else
   fail "changed parameter: unclear message"; cat resume_changed.log
 fi
-same_file resume_ref.h5 resume_k.h5 || fail "the refused run modified the file"
+same_file resume_ref.h5 resume_k.h5 || fail "the refused runs modified the file"
+# the same sweep written otherwise, or with options that change nothing: resumed, nothing computed
+# (each change alone: the file's plan is ball_speed=1;2, no -impact_offset, no -ts_theta_theta)
+for extra in "same values written 1.0;2.0|ball_speed=1.0;2.0|" "-impact_offset 0 (its default)|ball_speed=1;2|-impact_offset 0" \
+             "-ts_theta_theta 0.6 (unused under rk)|ball_speed=1;2|-ts_theta_theta 0.6"; do
+  IFS='|' read -r what speeds args <<<"$extra"
+  # shellcheck disable=SC2086
+  "$exe" "${base[@]}" -sweep "impact_x=0.05:1.05:$((N / 2)),$speeds" $args -output resume_k.h5 >resume_same.log 2>&1 && grep -q "all $N points were already done" resume_same.log \
+    && pass "resume accepts $what: nothing to compute" || { fail "resume with $what refused"; cat resume_same.log; }
+done
+# ... but a real change beside them is still refused, with its difference alone
+if "$exe" "${base[@]}" -sweep "impact_x=0.05:1.05:$((N / 2)),ball_speed=1.0;2.0" -impact_offset 0 -ts_theta_theta 0.6 -beam_nodes 23 -output resume_k.h5 >resume_changed.log 2>&1; then
+  fail "a changed -beam_nodes beside the harmless changes was accepted"
+elif diffs=$(sed -n '/cannot be resumed:/,/^Rerun/p' resume_changed.log) && grep -q "option -beam_nodes: '21' in the file, '23' now" <<<"$diffs" &&
+  ! grep -qE "impact_offset|ts_theta_theta|sweep axis|sweep:|option -sweep|ball_speed" <<<"$diffs"; then
+  pass "-beam_nodes 23 beside the harmless changes: refused, the difference list -beam_nodes alone"
+else fail "-beam_nodes beside harmless changes: unclear"; cat resume_changed.log; fi
 "$exe" "${base[@]}" -beam_nodes 23 -sweep_x 0.3,0.6 -sweep_restart -sweep_quiet -output resume_k.h5 >resume_restart.log 2>&1 && readable resume_k.h5 \
   && pass "-sweep_restart starts a new file" || { fail "-sweep_restart"; cat resume_restart.log; }
 
 # 5. a text axis (the integrator) by impact point: the same kill, resume and identity
 N=12
 kill_resume text_ "${base[@]}" -sweep "ts_type=rk;cn,impact_x=0.05:1.05:$((N / 2))"
+# a text axis changes what is read (the integrator): an option the first point did not read still counts
+if "$exe" "${base[@]}" -sweep "ts_type=rk;cn,impact_x=0.05:1.05:$((N / 2))" -ts_theta_theta 0.6 -output resume_text_k.h5 >resume_text_theta.log 2>&1; then
+  fail "a text (ts_type) sweep resumed with -ts_theta_theta added"
+elif grep -q "option -ts_theta_theta: not set in the file, '0.6' now" resume_text_theta.log; then pass "a ts_type sweep: -ts_theta_theta added is refused, named"
+else fail "ts_type sweep with -ts_theta_theta: unclear"; cat resume_text_theta.log; fi
 if [[ -n "$python" ]]; then
   "$python" -c "import h5py, sys; r = h5py.File(sys.argv[1], 'r')['results']; assert [v.decode() for v in r['ts_type'][()]] == ['rk'] * 6 + ['cn'] * 6 and list(r['ts_type'].attrs['values']) == ['rk', 'cn']" resume_text_k.h5 \
     && pass "text axis resumed: /results/ts_type rk (6 points) then cn (6) in case order, values attribute" || fail "text axis column of the resumed file"

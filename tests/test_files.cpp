@@ -1,19 +1,58 @@
-// The contents of input files: SHA-256 against the FIPS 180-2 test vectors (one block, two
+// The contents of input files: the lines of a text file whatever its line ends and a UTF-8 byte
+// order mark (UTF-16/32 refused, naming the bytes); SHA-256 against the FIPS 180-2 test vectors (one block, two
 // blocks, a million bytes, empty input) and the run record's input files: an options file and
 // a table an option names, each with the hash of its bytes, the paths apart from the hashes.
 #include "io/options_files.hpp"
 #include "io/run_record.hpp"
 #include "io/sha256.hpp"
+#include "io/text.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
 using namespace beamimpact;
+
+// The same three lines (one of them empty) written with LF, CR LF, CR alone and mixed ends, with
+// and without a UTF-8 byte order mark and a final line end: the same lines, no BOM or CR left.
+TEST(TextLines, LineEndsAndByteOrderMark)
+{
+  const std::vector<std::string> want = {"-ball_speed 2", "", "# last"};
+  for (const std::string bom : {"", "\xEF\xBB\xBF"})
+    for (const std::string text : {"-ball_speed 2\n\n# last", "-ball_speed 2\r\n\r\n# last\r\n", "-ball_speed 2\r\r# last\r", "-ball_speed 2\r\n\r# last\n"}) {
+      std::istringstream       in(bom + text);
+      std::vector<std::string> lines;
+      std::string              why;
+      ASSERT_TRUE(TextLines(in, &lines, &why)) << why;
+      EXPECT_EQ(want, lines) << "BOM " << bom.size() << " bytes, text '" << text << "'";
+    }
+  std::istringstream       empty("");
+  std::vector<std::string> lines = {"stale"};
+  std::string              why;
+  EXPECT_TRUE(TextLines(empty, &lines, &why));
+  EXPECT_TRUE(lines.empty());
+}
+
+// UTF-16 and UTF-32 (either byte order) are refused, naming the encoding and the first bytes.
+TEST(TextLines, WideEncodingsRefused)
+{
+  const std::vector<std::pair<std::string, std::string>> cases = {{std::string("\xFF\xFE-\0b\0", 6), "UTF-16 text (it starts with the bytes FF FE)"},
+                                                                  {std::string("\xFE\xFF\0-\0b", 6), "UTF-16 text (it starts with the bytes FE FF)"},
+                                                                  {std::string("\xFF\xFE\0\0-\0\0\0", 8), "UTF-32 text (it starts with the bytes FF FE 00 00)"},
+                                                                  {std::string("\0\0\xFE\xFF\0\0\0-", 8), "UTF-32 text (it starts with the bytes 00 00 FE FF)"}};
+  for (const auto &c : cases) {
+    std::istringstream       in(c.first);
+    std::vector<std::string> lines;
+    std::string              why;
+    EXPECT_FALSE(TextLines(in, &lines, &why));
+    EXPECT_NE(std::string::npos, why.find(c.second)) << why;
+  }
+}
 
 TEST(Sha256, FipsVectors)
 {

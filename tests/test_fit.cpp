@@ -115,3 +115,27 @@ TEST(FitData, ColumnsWeightsAndErrors)
   EXPECT_FALSE(FitParseData("t.csv", "impact_x,acor\n0.3,0.5\n", impact, "peak_force=1", p, &d, &why));
   EXPECT_NE(std::string::npos, why.find("-fit_sigma peak_force: no measured column")) << why;
 }
+
+// A spreadsheet's CSV: a UTF-8 byte order mark and CR or CR LF line ends read as the plain file is
+// (the BOM made the first column "'<BOM>impact_x' is neither an option ...", CR-only lines one
+// header 'contact_time0.3...'); a UTF-16 file refused naming its encoding (issue 34).
+TEST(FitData, ByteOrderMarkAndLineEnds)
+{
+  std::vector<FitParameter> p;
+  std::string               why;
+  FitData                   plain, d;
+  const CaseTask           &impact = *CaseTaskFind("impact");
+  ASSERT_TRUE(FitParseParameters("ball_k=1e4:5e4", &p, &why)) << why;
+  ASSERT_TRUE(FitParseData("t.csv", "impact_x,acor\n0.3,0.5\n0.6,0.4\n", impact, "", p, &plain, &why)) << why;
+  for (const std::string &text : {std::string("\xEF\xBB\xBFimpact_x,acor\n0.3,0.5\n0.6,0.4\n"), std::string("impact_x,acor\r0.3,0.5\r0.6,0.4\r"),
+                                 std::string("\xEF\xBB\xBFimpact_x,acor\r\n0.3,0.5\r\n0.6,0.4\r\n")}) {
+    ASSERT_TRUE(FitParseData("t.csv", text, impact, "", p, &d, &why)) << why;
+    EXPECT_EQ(plain.option_columns, d.option_columns);
+    EXPECT_EQ(plain.measured, d.measured);
+    ASSERT_EQ(2u, d.rows.size());
+    EXPECT_EQ(0.6, d.rows[1][0].value);
+    EXPECT_EQ(3, d.line[1]); // the lines counted as an editor shows them
+  }
+  EXPECT_FALSE(FitParseData("t.csv", std::string("\xFF\xFEi\0m\0", 6), impact, "", p, &d, &why));
+  EXPECT_NE(std::string::npos, why.find("-fit_data t.csv: the file is UTF-16 text (it starts with the bytes FF FE)")) << why;
+}

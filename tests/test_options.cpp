@@ -401,6 +401,28 @@ TEST(UnusedOptions, AMisspeltPetscOptionIsAnErrorALeftOverOneANote)
   EXPECT_NE(std::string::npos, printed.find("WARNING: 1 option(s) unknown (set but read by no task): -ts_dtt 1 (did you mean -ts_dt?)")) << printed;
 }
 
+// A number as a user writes it: the shortest text that strtod reads back as the same double
+// (the sweep's axis values, /options_used): never longer than %.17g's, and exactly the digits
+// a person wrote for decimal inputs (0.06, not 0.059999999999999998).
+TEST(ShortestText, ReadsBackExactlyAndIsShortest)
+{
+  EXPECT_EQ("-0.06", ShortestText(-0.06));
+  EXPECT_EQ("0.1", ShortestText(0.1));
+  EXPECT_EQ("1", ShortestText(1.0));
+  EXPECT_EQ("0", ShortestText(0.0));
+  EXPECT_EQ("1e+300", ShortestText(1e300));
+  EXPECT_EQ("0.30000000000000004", ShortestText(0.1 + 0.2)); // not 0.3: another double
+  std::srand(7);
+  for (int k = 0; k < 20000; ++k) {
+    const double v = std::ldexp((double)std::rand() / RAND_MAX - 0.5, std::rand() % 200 - 100);
+    const std::string t = ShortestText(v);
+    char              full[64];
+    std::snprintf(full, sizeof full, "%.17g", v);
+    ASSERT_EQ(v, std::strtod(t.c_str(), nullptr)) << t;
+    ASSERT_LE(t.size(), std::string(full).size()) << t << " against " << full;
+  }
+}
+
 // The run record holds every option the readers read, as used, with its unit: the hands, the
 // swing and the damping among them (they had no attribute before).
 TEST(RunRecord, CarriesTheOptionsReadWithUnits)

@@ -9,8 +9,10 @@ command-line wrapper over.
     derived      the program's derived scales of an impact (contact time, compression, wall
                  contact, masses, Eq. (11)), read from its file, never recomputed here
     labels       axis labels with their units from the file, the run's configuration in one line
-    checks       what a script is given: two files of the same beam, a swinging bat
-    style        matplotlib (Agg, no display) and figure saving
+    checks       what a script is given: two files of the same beam, a swinging bat; counts
+                 for argparse (--modes 0 refused naming the option)
+    style        matplotlib (Agg, no display) and figure saving (never onto a file the script
+                 read, files.check_output; only to an image format)
 
 A script in scripts/ imports it with one line, because Python puts the script's directory on
 sys.path:

@@ -5,9 +5,11 @@ text, so that the script refuses with a message naming the files, or marks what 
 
     why = checks.other_beam(modes_file, sweep_file)   # [] for the same bat
     if checks.swinging(f): ...                          # -bat_speed / -bat_angular_velocity given
+    ap.add_argument("--modes", type=checks.count(1, "modes to draw"))   # "--modes 0 is not allowed: ..."
 """
 from .files import attr
 
+import argparse
 import math
 
 # The beam as the run records it: attribute, what it is, relative tolerance (None: equal text).
@@ -62,3 +64,18 @@ def swinging(f):
             if v is None or float(v) != 0:
                 return True
     return False
+
+
+def count(least, what):
+    """An argparse type: a whole number >= least; anything else refused by argparse with a message
+    naming the option, the value and what is allowed ("argument --modes: 0 is not allowed: the
+    number of modes to draw must be at least 1")."""
+    def parse(text):
+        try:
+            n = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError("%r is not a whole number (the number of %s)" % (text, what))
+        if n < least:
+            raise argparse.ArgumentTypeError("%s is not allowed: the number of %s must be at least %d" % (text, what, least))
+        return n
+    return parse

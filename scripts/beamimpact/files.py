@@ -3,6 +3,7 @@ numbers, counts or text with their units, a sweep's axes, and what an impact fil
 the option that makes a missing part).
 
     f = files.open_file(PROG, "out/default.h5")      # exits 1 with a message when unreadable
+    files.check_output(PROG, "out/default.png")       # exits 1 when that is a file the script read
     L = files.attr(f, "beam_length")                  # 1.1 (float); strings decoded; None if absent
     x = files.numbers(f["results"], "x")             # float64 array
     axes = files.sweep_axes(f)                        # [Axis(name="ts_type", text=True, ...), ...]
@@ -85,13 +86,31 @@ def text(group, name):
     return [_text(v) if isinstance(v, bytes) else str(v) for v in group[name][()]]
 
 
+# Every file open_file read, as given: no output of the script may be one of them.
+_READ = []
+
+
 def open_file(prog, path):
     """The HDF5 file, read-only; exits 1 naming it when it cannot be read."""
     try:
-        return h5py.File(path, "r")
+        f = h5py.File(path, "r")
     except OSError as err:
         sys.stderr.write("%s: cannot read %s: %s\n" % (prog, path, err))
         sys.exit(1)
+    _READ.append(path)
+    return f
+
+
+def check_output(prog, path, suffix=".png"):
+    """Exits 1 before anything is written when `path`, an output of the script (its -o), is a file
+    it read (open_file; the same file by any name): the output would overwrite its own input
+    (an HDF5 results file lost for a picture)."""
+    if not path or not os.path.exists(path):
+        return
+    for read in _READ:
+        if os.path.exists(read) and os.path.samefile(read, path):
+            sys.exit("%s: -o %s is not allowed: it is the input file %s, which the output would overwrite; give another -o (e.g. %s)"
+                     % (prog, path, read, os.path.splitext(read)[0] + suffix))
 
 
 # A sweep axis as the file records it: the option's name (its /results column), whether its

@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -357,9 +358,64 @@ PetscErrorCode OutputCheckNotLocked(MPI_Comm comm, const std::string &out)
   PetscFunctionReturn(0);
 }
 
+// What -output names, by lstat (a link not followed). A new name or a regular file is written;
+// a symbolic link to a regular file is followed (out becomes the file it names, which the
+// results replace; the link stays); anything else is refused, naming what it is: a device (as
+// root, /dev/null would have been replaced by the file), a FIFO or a socket (the file is written
+// whole beside its place and renamed there, never streamed), a directory, a link to one of them
+// or to nothing. OutputCheck notes a followed link once the file passed its checks.
+PetscErrorCode OutputCheckKind(MPI_Comm comm, std::string *out, const char *task)
+{
+  struct stat st, target;
+
+  PetscFunctionBeginUser;
+  if (lstat(out->c_str(), &st) != 0) PetscFunctionReturn(0); // a new name
+  if (S_ISLNK(st.st_mode)) {
+    PetscCheck(stat(out->c_str(), &target) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to nothing (a name that does not exist); give the file's own name",
+               out->c_str());
+    char             *real = realpath(out->c_str(), NULL); // NULL for a link into /proc (/dev/stdout: a pipe)
+    const std::string resolved = real ? real : "";
+    free(real);
+    PetscCheck(S_ISREG(target.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to %s%s, not a file; beamimpact writes only to a regular file or a new name%s",
+               out->c_str(), resolved.empty() ? "" : (resolved + ", ").c_str(), FileKind(target.st_mode), S_ISDIR(target.st_mode) ? "" : " (-output none writes nothing)");
+    PetscCheck(!resolved.empty(), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the file its symbolic link names cannot be resolved; give the file's own name", out->c_str());
+    *out = resolved;
+    PetscFunctionReturn(0);
+  }
+  PetscCheck(!S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s%s%s.h5)", out->c_str(), out->c_str(), out->back() == '/' ? "" : "/", task);
+  PetscCheck(S_ISREG(st.st_mode), comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: it is %s, not a file; beamimpact writes its results whole beside it and renames them into place, which would replace %s itself. Use -output none to write nothing",
+             out->c_str(), FileKind(st.st_mode), S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) ? "the FIFO or socket" : "the device");
+  PetscFunctionReturn(0);
+}
+
+// No -output inside a sweep's journal directory F.parts (its lock and journals, studies/sweep_store.hpp):
+// the directory it is in, links resolved, is refused when it is named F.parts and holds a lock
+// or F exists beside it (a directory that merely ends in .parts is anyone's).
+PetscErrorCode OutputCheckNotInParts(MPI_Comm comm, const std::string &out, const std::string &dir)
+{
+  char             *real      = realpath(dir.c_str(), NULL);
+  const std::string canonical = real ? real : dir;
+  const std::string ext       = ".parts";
+  struct stat       st;
+
+  PetscFunctionBeginUser;
+  free(real);
+  const size_t      slash = canonical.find_last_of('/');
+  const std::string base  = slash == std::string::npos ? canonical : canonical.substr(slash + 1);
+  if (base.size() <= ext.size() || base.compare(base.size() - ext.size(), ext.size(), ext) != 0) PetscFunctionReturn(0);
+  const std::string file  = canonical.substr(0, canonical.size() - ext.size());
+  const bool        sweep = lstat((canonical + "/lock").c_str(), &st) == 0 || lstat(file.c_str(), &st) == 0;
+  PetscCheck(!sweep, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: it is inside %s, the journal directory of a sweep writing %s (its lock and its journals live there); give a name outside it",
+             out.c_str(), canonical.c_str(), file.c_str());
+  PetscFunctionReturn(0);
+}
+
 // The snapshots' XDMF description beside -output (io/xdmf.hpp: out.xmf for out.h5), when the run
-// may write one (-task impact with -snapshot_times): refused before any work if that path is a
-// directory or a file this program did not write (an empty one may be replaced).
+// may write one (-task impact with -snapshot_times): refused before any work if that path is
+// not a regular file (a directory, a device, a FIFO, a link: FileKind) or a file this program did
+// not write (an empty one may be replaced).
 PetscErrorCode OutputCheckDescription(MPI_Comm comm, const std::string &out, const char *task)
 {
   PetscBool   snapshots = PETSC_FALSE;
@@ -368,11 +424,11 @@ PetscErrorCode OutputCheckDescription(MPI_Comm comm, const std::string &out, con
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, NULL, "-snapshot_times", &snapshots));
   const std::string x = XdmfPathFor(out);
-  if (std::strcmp(task, "impact") != 0 || !snapshots || stat(x.c_str(), &st) != 0) PetscFunctionReturn(0);
-  PetscCheck(!S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN,
-             "-output %s is not allowed: the description of its snapshots goes to %s, which is a directory; "
+  if (std::strcmp(task, "impact") != 0 || !snapshots || lstat(x.c_str(), &st) != 0) PetscFunctionReturn(0);
+  PetscCheck(S_ISREG(st.st_mode), comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: the description of its snapshots goes to %s, which is %s, not a file; "
              "give another -output",
-             out.c_str(), x.c_str());
+             out.c_str(), x.c_str(), FileKind(st.st_mode));
   PetscCheck(st.st_size == 0 || XdmfFileOurs(x), comm, PETSC_ERR_FILE_OPEN,
              "-output %s is not allowed: the description of its snapshots would replace %s, which exists and is not "
              "an XDMF file of beamimpact; give another -output, or remove the file first",
@@ -381,32 +437,40 @@ PetscErrorCode OutputCheckDescription(MPI_Comm comm, const std::string &out, con
 }
 
 // -output: refused before any work if it cannot be written (empty name, missing or read-only
-// directory), if it is an input of the run or a file a running sweep holds, if it is a file of
-// another program (not an HDF5 results file of beamimpact: a text file, another program's HDF5;
-// an empty file may be replaced), or if it would replace a file another task wrote (without
-// -output_overwrite); and if the snapshots' description beside it would replace a file of
-// another program (OutputCheckDescription).
-PetscErrorCode OutputCheck(MPI_Comm comm, const std::string &out, const char *task)
+// directory), if it is not a regular file or a new name (OutputCheckKind: a link to a regular file
+// is followed, out then names that file), if it is inside a sweep's F.parts, an input of the run
+// or a file a running sweep holds, if it is a file of another program (not an HDF5 results file
+// of beamimpact: a text file, another program's HDF5), or if it would replace a file another task
+// wrote (without -output_overwrite); and if the snapshots' description beside it would replace
+// something else than a file of ours (OutputCheckDescription). An empty file is refused too (it may
+// be another program's lock or marker); -output none is the way to write nothing.
+PetscErrorCode OutputCheck(MPI_Comm comm, std::string *out, const char *task)
 {
   PetscBool       overwrite = PETSC_FALSE;
   ResultsFileInfo info;
   PetscFunctionBeginUser;
-  if (out.empty()) PetscFunctionReturn(0);
+  if (out->empty()) PetscFunctionReturn(0);
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_overwrite", &overwrite, NULL));
-  const size_t      slash = out.find_last_of('/');
-  const std::string dir   = slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
-  PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", out.c_str(), dir.c_str());
-  struct stat st;
-  PetscCheck(stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s%s%s.h5)", out.c_str(), out.c_str(), out.back() == '/' ? "" : "/", task);
-  PetscCall(OutputCheckNotAnInput(comm, out));
-  PetscCall(OutputCheckNotLocked(comm, out));
-  PetscCall(ResultsFileInspect(out, &info));
-  PetscCheck(!info.exists || info.size == 0 || info.Ours(), comm, PETSC_ERR_FILE_OPEN,
+  const std::string given = *out;
+  PetscCall(OutputCheckKind(comm, out, task));
+  const size_t      slash = out->find_last_of('/');
+  const std::string dir   = slash == std::string::npos ? "." : (slash == 0 ? "/" : out->substr(0, slash));
+  PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", given.c_str(), dir.c_str());
+  PetscCall(OutputCheckNotInParts(comm, given, dir));
+  PetscCall(OutputCheckNotAnInput(comm, *out));
+  PetscCall(OutputCheckNotLocked(comm, *out));
+  PetscCall(ResultsFileInspect(*out, &info));
+  PetscCheck(!info.exists || info.size != 0, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: it exists and is empty, not a results file of beamimpact (an empty file may be another program's lock or marker); -task %s will not replace it "
+             "(-output_overwrite neither): give another -output, remove the file first, or -output none to write nothing",
+             given.c_str(), task);
+  PetscCheck(!info.exists || info.Ours(), comm, PETSC_ERR_FILE_OPEN,
              "-output %s is not allowed: it exists and is %s, not a results file of beamimpact; -task %s will not replace it (-output_overwrite neither): give another -output, or remove the file first",
-             out.c_str(), info.hdf5 ? "an HDF5 file of another program" : "not an HDF5 file", task);
+             given.c_str(), info.hdf5 ? "an HDF5 file of another program" : "not an HDF5 file", task);
   PetscCheck(info.task.empty() || info.task == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
-             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", out.c_str(), info.task.c_str(), task);
-  PetscCall(OutputCheckDescription(comm, out, task));
+             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", given.c_str(), info.task.c_str(), task);
+  PetscCall(OutputCheckDescription(comm, *out, task));
+  if (given != *out) PetscCall(PetscPrintf(comm, "note: -output %s is a symbolic link: the results go to the file it names, %s (the link stays)\n", given.c_str(), out->c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -422,7 +486,8 @@ const OptionModule &TaskOptionTable()
       "beamimpact: task and output",
       {
         OptionChoice("-task", "What to compute", names, Tasks[0].name),
-        OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing)"),
+        OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing): a regular file or a new name, never a device, FIFO, socket, "
+                              "directory, empty file or a file inside a sweep's FILE.h5.parts; a link to a results file is followed"),
         OptionFlag("-output_overwrite", "Let -output replace a file another task wrote"),
         OptionFlag("-allow_unused_options", "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
         OptionFlag("-error_traceback", "PETSc's full traceback on errors instead of the one-line message"),
@@ -496,7 +561,7 @@ PetscErrorCode RunTask(MPI_Comm comm)
     PetscCall(DocsPrintMarkdown(comm, markdown));
     PetscFunctionReturn(0);
   }
-  PetscCall(OutputCheck(comm, out, Tasks[task].name));
+  PetscCall(OutputCheck(comm, &out, Tasks[task].name));
   PetscCall(Tasks[task].run(comm, out));
   PetscFunctionReturn(0);
 }

@@ -176,6 +176,26 @@ const OptionSpec *OptionSpecFind(const std::string &name)
   return nullptr;
 }
 
+const OptionModule *OptionModuleOf(const std::string &name)
+{
+  const std::string n = !name.empty() && name[0] == '-' ? name : "-" + name;
+  for (const OptionModule *m : Registry())
+    if (m->Find(n)) return m;
+  return nullptr;
+}
+
+std::string ShortestText(double v)
+{
+  char buf[64], whole[400];
+  for (int digits = 1; digits <= 17; ++digits) { // %.17g always reads back (IEEE double)
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v || std::isnan(v)) break;
+  }
+  // a whole number %g puts in exponent form (1.17640458049676e+16): its digits when shorter
+  if (std::isfinite(v) && v == std::floor(v) && std::snprintf(whole, sizeof whole, "%.0f", v) < (int)std::strlen(buf)) return whole;
+  return buf;
+}
+
 std::vector<std::string> OptionNames()
 {
   std::vector<std::string> names;
@@ -319,12 +339,6 @@ void Log(const OptionSpec &s, const std::string &text, double number, const std:
   u.given       = given ? true : false;
 }
 
-std::string Text17(double v)
-{
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 // A number logged with its text, unless its entry already holds this value, given or not (a
 // sweep's point reading its module again): the text would be the same.
@@ -333,7 +347,7 @@ void LogNumber(const OptionSpec &s, double v, PetscBool given)
   const auto &log = UsedLog();
   const auto  it  = log.find(s.name);
   if (it != log.end() && it->second.kind == s.kind && it->second.list.empty() && !std::memcmp(&it->second.number, &v, sizeof v) && it->second.given == (given ? true : false)) return;
-  Log(s, Text17(v), v, {}, given);
+  Log(s, ShortestText(v), v, {}, given);
 }
 
 // A whole word parsed as a number (strtod: also inf, nan, 1e3); false if it is not one.
@@ -539,7 +553,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
     *value = std::vector<PetscReal>(parsed.begin(), parsed.end());
   }
   std::string text;
-  for (PetscReal v : *value) text += (text.empty() ? "" : ",") + Text17(v);
+  for (PetscReal v : *value) text += (text.empty() ? "" : ",") + ShortestText(v);
   Log(*s, text, 0, std::vector<double>(value->begin(), value->end()), present);
   if (set) *set = present;
   PetscFunctionReturn(0);

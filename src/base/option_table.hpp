@@ -98,6 +98,10 @@ struct OptionModule {
 void                                      OptionModuleRegister(const OptionModule *m);
 const std::vector<const OptionModule *>  &OptionModules();
 const OptionSpec                         *OptionSpecFind(const std::string &name); // any module; nullptr if none
+const OptionModule                       *OptionModuleOf(const std::string &name); // the module whose table has it; nullptr if none
+// v as the shortest text that reads back (strtod) as exactly v: "0.06", not %.17g's
+// "0.059999999999999998"; what a user would write, and the same double.
+std::string ShortestText(double v);
 std::vector<std::string>                  OptionNames();                           // every registered name (with the dash), sorted
 std::string                               OptionUnit(const std::string &name);     // "" when unknown or not a number; name with or without dash
 // Whether `name` (with the dash) falls under a prefix of a registered PETSc table (-ts_, -snes_, ...).

@@ -1,6 +1,8 @@
 // Reading e(v) tables. See cor_table_file.hpp.
 #include "io/cor_table_file.hpp"
 
+#include "io/text.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -28,7 +30,14 @@ bool CorTableParse(std::istream &in, const std::string &name, CorTable *t, std::
     *why = "-ball_cor_table " + name + ", line " + std::to_string(lineno) + ": " + what;
     return false;
   };
-  while (std::getline(in, line)) {
+  std::vector<std::string> lines;
+  std::string              encoding;
+  if (!TextLines(in, &lines, &encoding)) { // a UTF-8 byte order mark skipped, CR line ends read
+    *why = "-ball_cor_table " + name + ": " + encoding;
+    return false;
+  }
+  for (std::string &text : lines) {
+    line = text;
     ++lineno;
     if (line.find('\0') != std::string::npos) return bad("the line holds a NUL byte (binary data?): a COR table is plain text");
     const size_t hash = line.find('#');

@@ -1,6 +1,8 @@
 // Options files with paths relative to the file. See options_files.hpp.
 #include "io/options_files.hpp"
 
+#include "io/text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -97,9 +99,15 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
   if (std::find(FilesRead().begin(), FilesRead().end(), file) == FilesRead().end()) FilesRead().push_back(file);
   const std::string        dir = std::filesystem::path(file).parent_path().string();
   const std::vector<std::string> &paths = OptionsFilePathOptions();
-  std::string              line;
-  for (int lineno = 1; std::getline(in, line); ++lineno) {
-    const std::string where = file + ":" + std::to_string(lineno);
+  std::vector<std::string>        lines;
+  std::string                     why;
+  if (!TextLines(in, &lines, &why)) { // a UTF-8 byte order mark skipped, CR line ends read
+    *error = "-options_file " + file + by + ": " + why;
+    return false;
+  }
+  for (size_t lineno = 1; lineno <= lines.size(); ++lineno) {
+    const std::string &line  = lines[lineno - 1];
+    const std::string  where = file + ":" + std::to_string(lineno);
     if (line.find('\0') != std::string::npos) { // binary data: a message would stop at the NUL
       *error = where + ": the line holds a NUL byte (binary data?): an options file is plain text";
       return false;

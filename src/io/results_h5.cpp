@@ -104,6 +104,17 @@ PetscErrorCode ResultsFileInspect(const std::string &path, ResultsFileInfo *info
   PetscFunctionReturn(0);
 }
 
+const char *FileKind(unsigned mode)
+{
+  if (S_ISREG(mode)) return "a regular file";
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISLNK(mode)) return "a symbolic link";
+  return "not a regular file";
+}
 PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
 {
   PetscFunctionBeginUser;
@@ -455,8 +466,14 @@ bool FsyncDirectoryOf(const std::string &path)
 std::string SaveBytes(const std::string &path, const char *data, size_t size)
 {
   std::string error;
-  const int   fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  // Not through a link, not blocking on a FIFO; and only into a regular file (a device opens)
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0666);
   if (fd < 0) return "cannot open " + path + " (" + std::strerror(errno) + ")";
+  struct stat st;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    return path + " is not a regular file; nothing was written into it";
+  }
   for (size_t done = 0; done < size && error.empty();) {
     const ssize_t w = ::write(fd, data + done, size - done);
     if (w < 0 && errno == EINTR) continue;
@@ -544,6 +561,11 @@ std::string H5MemoryFileInstall(long long file, const std::string &path, const s
   const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // closes the file in any case
   const bool        made  = error.empty();
   if (error.empty()) error = saved;
+  struct stat st; // what path (and its description) names now (-output was checked at the start: a sweep may have run for hours since)
+  if (error.empty() && ::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    error = std::string("it is now ") + FileKind(st.st_mode) + ", not a regular file, and is not replaced";
+  if (error.empty() && !xtmp.empty() && ::lstat(xpath.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    error = xpath + " is now " + FileKind(st.st_mode) + ", not a regular file, and is not replaced";
   if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
   if (made && !error.empty()) ::unlink(tmp.c_str());
   if (!xtmp.empty()) { // the file's description onto its place after the file
@@ -553,6 +575,12 @@ std::string H5MemoryFileInstall(long long file, const std::string &path, const s
   } else if (error.empty() && XdmfFileOurs(xpath)) ::unlink(xpath.c_str()); // it described the file replaced
   if (error.empty()) FsyncDirectoryOf(path);
   return error;
+}
+
+std::string WriteFailureCause(const std::string &error)
+{
+  const bool full = error.find(std::strerror(ENOSPC)) != std::string::npos || error.find(std::strerror(EDQUOT)) != std::string::npos;
+  return (full ? "disk full: " : "") + error;
 }
 
 H5ErrorsQuiet::H5ErrorsQuiet()
@@ -574,7 +602,8 @@ PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const 
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank != 0) PetscFunctionReturn(0);
   const std::string error = WriteWholeFile(path, record, write, xdmf);
-  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s could not be written (disk full? %s); nothing was written there, a file it held before is unchanged", path.c_str(), error.c_str());
+  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s could not be written (%s); nothing was written there, a file it held before is unchanged", path.c_str(),
+             WriteFailureCause(error).c_str());
   PetscFunctionReturn(0);
 }
 

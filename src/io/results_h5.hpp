@@ -46,6 +46,10 @@ struct ResultsFileInfo {
 };
 PetscErrorCode ResultsFileInspect(const std::string &path, ResultsFileInfo *info);
 
+// What a stat mode is, in words for a message: "a regular file", "a directory", "a character
+// device", "a block device", "a FIFO (named pipe)", "a socket", "a symbolic link".
+const char *FileKind(unsigned mode);
+
 // A task's results file at path, whole or not at all: on rank 0 of comm a temporary file
 // beside it (path.XXXXXX.tmp) gets the run record as root attributes and what write adds; it
 // is closed (every write checked, the close too: a full disk shows there) and renamed onto
@@ -66,13 +70,20 @@ std::string H5MemoryFileSave(long long file, const std::string &path);
 // The memory file put at path whole or not at all: saved (H5MemoryFileSave, which closes it) to
 // tmp beside path (tmp empty: a new unique path.XXXXXX.tmp, with the permissions a plain create
 // gives), renamed onto path and the directory fsync'ed; "" on success, else what went wrong,
-// with tmp removed and a file at path left as it was. error not empty: only closes the file
-// and returns error (a writer that failed before its file was complete). The file's XDMF
-// description xdmf (not empty: the file has snapshots) goes to XdmfPathFor(path) the same way,
-// saved before the file and renamed onto its place after it; xdmf empty: a description this
-// program wrote there is removed with the file it described (XdmfFileOurs).
+// with tmp removed and a file at path left as it was. Only a new name or a regular file at path
+// is replaced: path checked by lstat just before the rename (a device, FIFO, socket, directory
+// or symbolic link put there since -output was checked is left alone, an error); a tmp that is
+// not a regular file (a link, a device, a FIFO) is not written through. error not empty: only
+// closes the file and returns error (a writer that failed before its file was complete). The
+// file's XDMF description xdmf (not empty: the file has snapshots) goes to XdmfPathFor(path) the
+// same way, saved before the file and renamed onto its place after it; xdmf empty: a description
+// this program wrote there is removed with the file it described (XdmfFileOurs).
 std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp, const std::string &error,
                                 const std::string &xdmf = "");
+
+// A write failure's cause for a message: error itself, after "disk full: " when it is one
+// (ENOSPC or EDQUOT's text in it).
+std::string WriteFailureCause(const std::string &error);
 
 // HDF5's own error printing off while an object lives: a failed call is reported once, by us.
 class H5ErrorsQuiet {

@@ -1,6 +1,8 @@
 // Reading section files. See section_file.hpp.
 #include "io/section_file.hpp"
 
+#include "io/text.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -22,8 +24,13 @@ bool NumberRows(const std::string &path, std::vector<std::vector<double>> *rows,
     *why = path + ": cannot open the file (" + std::strerror(errno) + ")";
     return false;
   }
-  std::string line;
-  for (int no = 1; std::getline(in, line); ++no) {
+  std::vector<std::string> text;
+  if (!TextLines(in, &text, why)) { // a UTF-8 byte order mark skipped, CR line ends read
+    *why = path + ": " + *why;
+    return false;
+  }
+  for (int no = 1; no <= (int)text.size(); ++no) {
+    std::string line = text[no - 1];
     if (line.find('\0') != std::string::npos) { // binary data: the text would stop at the NUL
       *why = path + ":" + std::to_string(no) + ": the line holds a NUL byte (binary data?): a section file is plain text";
       return false;

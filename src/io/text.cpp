@@ -1,6 +1,7 @@
 // Small text helpers. See text.hpp.
 #include "io/text.hpp"
 
+#include <iterator>
 #include <regex>
 #include <set>
 
@@ -15,6 +16,32 @@ static std::string TrimSet(const std::string &s, const char *leading, const char
 std::string Trim(const std::string &s) { return TrimSet(s, " \t\r\n", " \t\r\n"); }
 
 std::string CommentText(const std::string &line) { return TrimSet(line, " \t\r\n#", " \t\r\n"); }
+
+bool TextLines(std::istream &in, std::vector<std::string> *lines, std::string *why)
+{
+  struct Mark {
+    const char *bytes, *hex, *encoding;
+  };
+  static const Mark wide[] = {{"\xFF\xFE\x00\x00", "FF FE 00 00", "UTF-32"}, {"\x00\x00\xFE\xFF", "00 00 FE FF", "UTF-32"},
+                              {"\xFF\xFE", "FF FE", "UTF-16"}, {"\xFE\xFF", "FE FF", "UTF-16"}};
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  lines->clear();
+  for (const Mark &m : wide) {
+    const std::string mark(m.bytes, m.encoding[4] == '3' ? 4 : 2);
+    if (text.compare(0, mark.size(), mark) == 0) {
+      *why = std::string("the file is ") + m.encoding + " text (it starts with the bytes " + m.hex + "): save it as UTF-8 or plain ASCII";
+      return false;
+    }
+  }
+  size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0; // UTF-8's byte order mark
+  while (i < text.size()) {
+    const size_t end = text.find_first_of("\r\n", i);
+    lines->push_back(text.substr(i, end == std::string::npos ? std::string::npos : end - i));
+    if (end == std::string::npos) break;
+    i = end + (text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? 2 : 1);
+  }
+  return true;
+}
 
 // PETSc's %g writes a whole number, inf and nan with a trailing dot ("-beam_length inf. is not
 // allowed", "-1."): the values in a message are shown as the user wrote them. A full stop at the

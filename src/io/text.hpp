@@ -4,7 +4,9 @@
 
 #include <petscsys.h>
 
+#include <istream>
 #include <string>
+#include <vector>
 
 namespace beamimpact {
 
@@ -13,6 +15,14 @@ std::string Trim(const std::string &s);
 
 // The text of a comment line: without its leading '#' marks and blanks, nor trailing blanks.
 std::string CommentText(const std::string &line);
+
+// The lines of a text file's contents as an editor shows them: a UTF-8 byte order mark at the
+// start skipped (Windows editors write one; kept, it made the first option unknown under an
+// invisible name), each line ended by LF, CR LF or a lone CR (classic Mac files: read by LF alone
+// the whole file was one line), the ends not kept. False with *why when the contents start with
+// a UTF-16 or UTF-32 byte order mark ("the file is UTF-16 text (it starts with the bytes FF FE):
+// save it as UTF-8 or plain ASCII"); *why names no file: the caller adds it.
+bool TextLines(std::istream &in, std::vector<std::string> *lines, std::string *why);
 
 // The message of the PETSc error ierr just raised: its specific text (what PetscCheck or
 // SETERRQ said), else PETSc's generic text for the code; values as the user wrote them (without

@@ -41,6 +41,8 @@ struct ImpactParams {
   PetscBool tangential_rigid = PETSC_FALSE; // -impact_tangential_plane rigid: the bat rigid in its second plane (default flexible, run/oblique.hpp)
   PetscReal window       = -1;    // s, time simulated after each separation (-1: not given, 2 fundamental periods; a given one is >= 0)
   PetscReal max_time     = -1;    // s, cap on the simulated time (< 0: window + 100 contact times)
+  PetscReal full_max_time = 0;    // s, not an option: 0, or this run is a probe capped by max_time (a sweep's 1 ns) and the cost
+                                  // estimates are a full point's, capped by full_max_time (< 0: the default cap)
   PetscReal event_tol    = 1e-10; // event indicators (c / c_scale, dc/dt / v_i) are located to this
   PetscInt  max_contacts = 50;    // a run with more separate contacts stops with an error
   PetscBool energy_check = PETSC_FALSE; // stop when the total energy grows beyond -impact_energy_growth_tol

@@ -280,9 +280,10 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
   const double modal  = steps + (anyway ? 0 : modes);
   if (!(modal < 0.5 * seconds)) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(comm,
-                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs only T_r/200 = %.3g s): at least %.3g s of stepping; "
-                        "-ts_type modal takes this run in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g s, once per beam%s)\n",
-                        info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds, modal, seconds / modal, modes,
+                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs only T_r/200 = %.3g s): at least %.3g s of stepping%s; "
+                        "-ts_type modal takes %s in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g s, once per beam%s)\n",
+                        info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds, sc.impact.full_max_time != 0 ? " a point" : "",
+                        sc.impact.full_max_time != 0 ? "each point" : "this run", modal, seconds / modal, modes,
                         anyway ? ": the free flight after the separation computes them too" : ", shared by a sweep's points"));
   PetscFunctionReturn(0);
 }
@@ -296,7 +297,9 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
 PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info)
 {
   PetscFunctionBeginUser;
-  const ImpactTimes times  = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+  ImpactParams ip = sc.impact; // a probe (a sweep's 1 ns): the estimate is a whole point's
+  if (ip.full_max_time != 0) ip.max_time = ip.full_max_time;
+  const ImpactTimes times  = ImpactTimesOf(sc.beam, sc.ball, ip);
   const bool        modal  = sc.impact.after == ImpactAfter::Modal && BeamModesAvailable(sys, nullptr);
   const PetscReal   T      = std::min<PetscReal>(times.max_time, modal ? scales.time : scales.time + times.window);
   const PetscReal   dt     = info.fixed_step ? info.dt_nominal : info.dt_stable;
@@ -308,8 +311,8 @@ PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamS
   if (explicit_type) PetscCall(ImpactStepBoundNote(comm, sc, sys, scales, info, T, seconds));
   if (seconds <= sc.impact.cost_warn) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(comm,
-                        "cost: at least %.3g steps (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
-                        steps, (double)T, (double)dt, info.fixed_step ? "-ts_dt" : "the explicit stability limit", sys.nodes, seconds, per_step,
+                        "cost: at least %.3g steps%s (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
+                        steps, ip.full_max_time != 0 ? " a point" : "", (double)T, (double)dt, info.fixed_step ? "-ts_dt" : "the explicit stability limit", sys.nodes, seconds, per_step,
                         info.fixed_step ? "a larger -ts_dt" : "looser -ts_rtol/-ts_atol",
                         explicit_type ? " (the explicit limit grows as h^2)" : "", explicit_type ? ", or an implicit -ts_type (cn, alpha2, bdf) or -ts_type modal, whose step is not bound by the stability limit" : ""));
   PetscFunctionReturn(0);

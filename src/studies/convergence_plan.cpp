@@ -37,9 +37,11 @@ std::vector<std::string> SplitList(const std::string &s)
 // The header of an options file: its leading comment lines, joined.
 std::string FileDescription(const std::string &file)
 {
-  std::ifstream in(file);
-  std::string   line, text;
-  while (std::getline(in, line)) {
+  std::ifstream            in(file);
+  std::vector<std::string> lines;
+  std::string              text, why;
+  if (!TextLines(in, &lines, &why)) return text; // its options' reading says why
+  for (const std::string &line : lines) {
     const size_t a = line.find_first_not_of(" \t");
     if (a == std::string::npos) continue;
     if (line[a] != '#') break;

@@ -383,13 +383,18 @@ bool ChooseSigma(const std::string &file, const std::string &sigma_text, FitData
 
 bool FitParseData(const std::string &file, const std::string &text, const CaseTask &task, const std::string &sigma, const std::vector<FitParameter> &params, FitData *d, std::string *why)
 {
-  TableReader        t{file, task, {}, {}, {}, {}};
-  std::istringstream lines(text);
-  int                lineno = 0;
-  *d                        = FitData();
-  d->file                   = file;
-  d->sha256                 = Sha256Hex(text);
-  for (std::string line; std::getline(lines, line);) {
+  TableReader              t{file, task, {}, {}, {}, {}};
+  std::istringstream       in(text);
+  std::vector<std::string> lines;
+  int                      lineno = 0;
+  *d                              = FitData();
+  d->file                         = file;
+  d->sha256                       = Sha256Hex(text);
+  if (!TextLines(in, &lines, why)) { // a UTF-8 byte order mark skipped (a spreadsheet's CSV), CR line ends read
+    *why = "-fit_data " + file + ": " + *why;
+    return false;
+  }
+  for (const std::string &line : lines) {
     ++lineno;
     const std::string s = Trim(line);
     if (s.empty() || s[0] == '#') continue;

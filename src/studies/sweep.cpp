@@ -144,6 +144,21 @@ std::string FormatDuration(double s)
   return buf;
 }
 
+// Where the points that cannot run are, in words: "off the racket's face (outside the head's
+// outline)", "off the beam", "held fixed", joined by "or", each with its count when there are several kinds.
+static std::string SkippedText(const std::map<int, PetscInt> &skipped)
+{
+  std::string text;
+  for (const auto &kv : skipped) {
+    const char *where = kv.first == SweepOffFace ? "off the racket's face (outside the head's outline, where there are no strings)"
+                        : kv.first == SweepOffBeam ? "off the beam"
+                        : kv.first == SweepHeldPoint ? "held fixed (a clamped or pinned end, -beam_clamp)"
+                                                     : SweepStatusName(kv.first);
+    text += (text.empty() ? "" : " or ") + std::string(where) + (skipped.size() > 1 ? " (" + Points(kv.second) + ")" : "");
+  }
+  return text;
+}
+
 // The plan, and every case's scenario read before any work, as the case runner reads it:
 // a value its option does not allow stops the sweep here with the option's own message
 // (an impact point off the beam or held fixed does not: that case becomes a failed row).
@@ -170,6 +185,8 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
   candidates->clear();
   SweepScenarioCache cache; // the structure's scenario: a point reads only its own parts again
   const double       t0 = MPI_Wtime();
+  std::map<int, PetscInt> skipped;     // the points that cannot run, by status (off the beam, held, off the face)
+  std::string             first_why;  // the first one's reason
   for (PetscInt i = 0; i < n; ++i) {
     if (i == 1000 && n > 1000000) { // a huge plan: its set-up (every point's options read and checked) is announced
       const double per = (MPI_Wtime() - t0) / i;
@@ -185,16 +202,42 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
       const std::string msg = LastErrorMessage(ierr);
       SETERRQ(comm, ierr, "-task sweep point %" PetscInt_FMT " (%s): %s", i, SweepCaseText(*plan, i, false).c_str(), msg.c_str());
     }
-    if (status != SweepOk) continue;
+    if (status != SweepOk) {
+      if (skipped.empty()) first_why = reason;
+      ++skipped[status];
+      continue;
+    }
     if (candidates->empty()) *base = c;
     if (candidates->size() < 8) candidates->push_back(i);
   }
-  PetscCheck(!candidates->empty() || help, comm, PETSC_ERR_ARG_OUTOFRANGE, "-task sweep: no point of the sweep can run: every impact point is off the beam or held fixed (point 0: %s)",
-             SweepCaseText(*plan, 0, true).c_str());
+  PetscCheck(!candidates->empty() || help, comm, PETSC_ERR_ARG_OUTOFRANGE, "-task sweep: no point of the sweep can run: every impact point is %s (point 0: %s: %s)", SkippedText(skipped).c_str(),
+             SweepCaseText(*plan, 0, true).c_str(), first_why.c_str());
   const MonitorRequest &m = base->monitor;
   PetscCheck(!(m.ball || m.energy || !m.velocity_at.empty() || !m.snapshot_times.empty()), comm, PETSC_ERR_ARG_INCOMP,
              "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, -snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a column) works in a sweep");
   PetscFunctionReturn(0);
+}
+
+// An axis the probe's impact did not read: refused, saying why. An option of the program that
+// an impact does not read with these options (an option of -task flight or -task modes, a
+// PETSc option of another -ts_type) is named with its module's title; any other name is not an
+// option of this program at all.
+static PetscErrorCode SweepAxisReadCheck(MPI_Comm comm, const SweepPlan &plan, const SweepAxis &a)
+{
+  PetscBool used = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsUsed(NULL, a.name.c_str(), &used)); // the database keeps names without the dash
+  if (used) PetscFunctionReturn(0);
+  const char         *which  = a.name == "impact_x" && !plan.sweep_x.empty() ? "-sweep_x:" : "-sweep";
+  const OptionModule *module = OptionModuleOf(a.name);
+  PetscCheck(!module, comm, PETSC_ERR_ARG_WRONG,
+             "%s %s=%s is not allowed: -%s is an option of this program, but the impact a sweep runs at each point (-task sweep farms -task impact) does not read it with these "
+             "options; it belongs to: %s",
+             which, a.name.c_str(), a.spec.c_str(), a.name.c_str(), module->title.c_str());
+  SETERRQ(comm, PETSC_ERR_ARG_WRONG,
+          "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is an option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ts_type, beam_theory",
+          which, a.name.c_str(), a.spec.c_str(), a.name.c_str());
 }
 
 // A probe on rank 0's group before any work: sets up the integrator for the first case that
@@ -215,6 +258,7 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
     int         status;
     std::string reason;
     PetscCall(SweepCaseScenario(farm.group, plan, candidates[k], true, &c, &status, &reason));
+    c.impact.full_max_time        = c.impact.max_time > 0 ? c.impact.max_time : -1; // the cost estimates: a whole point's
     c.impact.max_time             = 1e-9;
     c.impact.check_unused_options = PETSC_FALSE; // below, once the axes are checked
     c.impact.report_setup         = plan.quiet || k > 0 ? PETSC_FALSE : PETSC_TRUE; // integrator, step, warnings: once
@@ -229,13 +273,7 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
       PetscCall(SweepCaseOptionsClear(plan));
       continue;
     }
-    for (const SweepAxis &a : plan.axes) {
-      PetscBool used = PETSC_FALSE;
-      PetscCall(PetscOptionsUsed(NULL, a.name.c_str(), &used)); // the database keeps names without the dash
-      PetscCheck(used, farm.group, PETSC_ERR_ARG_WRONG,
-                 "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is an option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ts_type, beam_theory",
-                 a.name == "impact_x" && !plan.sweep_x.empty() ? "-sweep_x:" : "-sweep", a.name.c_str(), a.spec.c_str(), a.name.c_str());
-    }
+    for (const SweepAxis &a : plan.axes) PetscCall(SweepAxisReadCheck(farm.group, plan, a));
     // An axis that changes nothing: every point the same (unless another axis varies what it needs).
     for (const OptionWithoutEffect &o : OptionsWithoutEffect()) {
       bool varied = false;
@@ -252,6 +290,25 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
   }
   SETERRQ(farm.group, first_ierr, "-task sweep: the first %zu points that can run all failed to start; point %" PetscInt_FMT " (%s): %s", candidates.size(), first_case, SweepCaseText(plan, first_case, true).c_str(),
           first_msg.c_str());
+}
+
+// The options set that the probe's impact did not read ("-ts_theta_theta -modes_count"): the
+// options this run calls unused, which change no number. Every point reads what the probe read
+// unless an axis is text (a -ts_type, -beam_theory or -strings_frame axis changes what is read):
+// then none is listed.
+static PetscErrorCode SweepUnusedOptions(const SweepPlan &plan, std::string *unused)
+{
+  PetscInt n;
+  char   **names, **values;
+
+  PetscFunctionBeginUser;
+  unused->clear();
+  for (const SweepAxis &a : plan.axes)
+    if (a.Text()) PetscFunctionReturn(0);
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  for (PetscInt i = 0; i < n; ++i) *unused += (unused->empty() ? "-" : " -") + std::string(names[i]);
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  PetscFunctionReturn(0);
 }
 
 // The file's root attributes: the scenario, the probe's integrator and the plan.
@@ -289,27 +346,47 @@ PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, con
   }
   rec->add("sweep_columns", columns);
   rec->add("sweep_checked_options", SweepCheckedOptions(options));
+  std::string unused; // what the probe's impact did not read: a resume may add or drop them (sweep_store.hpp)
+  PetscCall(SweepUnusedOptions(plan, &unused));
+  if (!unused.empty()) rec->add("sweep_unused_options", unused);
   PetscFunctionReturn(0);
 }
 
-// Rank 0 opens the store (resuming what is done) and follows this run's journals; every
-// rank learns the cases still to compute and this run's number.
+// Rank 0's part of SweepStart: the store opened (resuming what is done), this run's journals
+// followed, the cases still to compute.
+static PetscErrorCode SweepStartStore(const TaskFarm &farm, const std::string &output, const Scenario &base, const SweepPlan &plan, const ImpactResult &probe, SweepStore *S, std::vector<PetscInt> *todo,
+                                      int *run)
+{
+  RunRecord                record;
+  std::vector<PetscMPIInt> leaders;
+
+  PetscFunctionBeginUser;
+  PetscCall(SweepRecordBuild(base, plan, probe, &record));
+  SweepStoreInit(output, plan, SweepColumns(plan), record, S);
+  PetscCall(SweepStoreOpen(*S, run));
+  for (PetscInt i = 0; i < S->ncases; ++i)
+    if (!S->rows.count(i)) todo->push_back(i);
+  for (PetscMPIInt r = 0; r < farm.groups * plan.ranks_per_case; r += (PetscMPIInt)plan.ranks_per_case) leaders.push_back(r);
+  SweepStoreFollow(*S, *run, leaders);
+  PetscFunctionReturn(0);
+}
+
+// Rank 0 opens the store and every rank learns the cases still to compute and this run's
+// number. A store refused or failed on rank 0 (other parameters, a full disk at the first
+// write) fails every rank here, together: rank 0's message is the run's (app/main.cpp), no
+// rank is left waiting for the others (which would end in MPI_Abort and the launcher's noise).
 PetscErrorCode SweepStart(const TaskFarm &farm, const std::string &output, const Scenario &base, const SweepPlan &plan, const ImpactResult &probe, SweepStore *S, std::vector<PetscInt> *todo, int *run)
 {
+  PetscErrorCode ierr = 0;
+
   PetscFunctionBeginUser;
   *run = 0;
   todo->clear();
-  if (farm.world_rank == 0) {
-    RunRecord                record;
-    std::vector<PetscMPIInt> leaders;
-    PetscCall(SweepRecordBuild(base, plan, probe, &record));
-    SweepStoreInit(output, plan, SweepColumns(plan), record, S);
-    PetscCall(SweepStoreOpen(*S, run));
-    for (PetscInt i = 0; i < S->ncases; ++i)
-      if (!S->rows.count(i)) todo->push_back(i);
-    for (PetscMPIInt r = 0; r < farm.groups * plan.ranks_per_case; r += (PetscMPIInt)plan.ranks_per_case) leaders.push_back(r);
-    SweepStoreFollow(*S, *run, leaders);
-  }
+  if (farm.world_rank == 0) ierr = SweepStartStore(farm, output, base, plan, probe, S, todo, run);
+  PetscInt failed = ierr ? 1 : 0;
+  PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, farm.world));
+  PetscCall(ierr);
+  PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: rank 0 could not open the sweep's file (its message is the run's)", output.c_str());
   PetscInt ntodo = (PetscInt)todo->size();
   PetscCallMPI(MPI_Bcast(&ntodo, 1, MPIU_INT, 0, farm.world));
   PetscCallMPI(MPI_Bcast(run, 1, MPI_INT, 0, farm.world));
@@ -426,7 +503,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
 }
 
 // Rank 0 gathers this run's rows and reasons over MPI (the journals need not be visible
-// there) and writes the complete file.
+// there) and writes the complete file; its failure is every rank's.
 PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
 {
   PetscMPIInt              rank, size;
@@ -474,8 +551,13 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
       p = end + 1;
     }
     if ((PetscInt)S.rows.size() == S.ncases) PetscCall(SweepUqCompute(S, &S.uq)); // a sampled sweep's statistics, written with the file
-    PetscCall(SweepStoreClose(S));
   }
+  // The complete file: a failed write (a full disk) fails every rank together (rank 0's message)
+  PetscErrorCode ierr   = rank == 0 ? SweepStoreClose(S) : 0;
+  PetscInt       failed = ierr ? 1 : 0;
+  PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
+  PetscCall(ierr);
+  PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "rank 0 could not write the sweep's file (its message is the run's)");
   PetscFunctionReturn(0);
 }
 

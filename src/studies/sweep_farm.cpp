@@ -9,7 +9,7 @@
 
 namespace beamimpact {
 
-enum FarmCounter { FarmNext = 0, FarmDone = 1 };
+enum FarmCounter { FarmNext = 0, FarmDone = 1, FarmStop = 2, FarmCounters = 3 };
 
 static PetscErrorCode FarmFetchAdd(TaskFarm &f, FarmCounter which, int64_t add, int64_t *old)
 {
@@ -42,7 +42,7 @@ PetscErrorCode TaskFarmCreate(MPI_Comm world, PetscInt ranks_per_case, TaskFarm 
   MPI_Info info;
   PetscCallMPI(MPI_Info_create(&info));
   PetscCallMPI(MPI_Info_set(info, "accumulate_ops", "same_op_no_op"));
-  const MPI_Aint bytes = farm->world_rank == 0 ? (MPI_Aint)(2 * sizeof(int64_t)) : 0;
+  const MPI_Aint bytes = farm->world_rank == 0 ? (MPI_Aint)(FarmCounters * sizeof(int64_t)) : 0;
   PetscCallMPI(MPI_Win_allocate(bytes, sizeof(int64_t), info, world, &farm->base, &farm->win));
   PetscCallMPI(MPI_Info_free(&info));
   PetscFunctionReturn(0);
@@ -56,15 +56,25 @@ PetscErrorCode TaskFarmDestroy(TaskFarm *farm)
   PetscFunctionReturn(0);
 }
 
+// Rank 0 after between failed: no task is handed out any more (next pushed past the end) and
+// the others see the stop flag.
+static PetscErrorCode FarmStopAll(TaskFarm &f, PetscInt ntasks)
+{
+  PetscFunctionBeginUser;
+  PetscCall(FarmFetchAdd(f, FarmNext, (int64_t)ntasks + 1, nullptr));
+  PetscCall(FarmFetchAdd(f, FarmStop, 1, nullptr));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<PetscErrorCode(MPI_Comm, PetscInt)> &run, const std::function<PetscErrorCode(PetscInt)> &between)
 {
-  int64_t done = 0;
+  int64_t        done = 0, stop = 0;
+  PetscErrorCode failed = 0; // rank 0: between's error, returned once its group has stopped too
 
   PetscFunctionBeginUser;
   if (farm.world_rank == 0) {
     PetscCallMPI(MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, farm.win));
-    static_cast<int64_t *>(farm.base)[FarmNext] = 0;
-    static_cast<int64_t *>(farm.base)[FarmDone] = 0;
+    for (int c = 0; c < FarmCounters; ++c) static_cast<int64_t *>(farm.base)[c] = 0;
     PetscCallMPI(MPI_Win_unlock(0, farm.win));
   }
   PetscCallMPI(MPI_Barrier(farm.world));
@@ -72,7 +82,7 @@ PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<
     for (;;) {
       int64_t      t  = -1;
       const double h0 = MPI_Wtime();
-      if (farm.group_rank == 0) {
+      if (farm.group_rank == 0 && !failed) {
         PetscCall(FarmFetchAdd(farm, FarmNext, 1, &t));
         if (t >= ntasks) t = -1;
       }
@@ -83,9 +93,10 @@ PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<
       const double h1 = MPI_Wtime();
       if (farm.group_rank == 0) PetscCall(FarmFetchAdd(farm, FarmDone, 1, &done));
       farm.handout += MPI_Wtime() - h1;
-      if (farm.world_rank == 0) PetscCall(between((PetscInt)done + 1));
+      if (farm.world_rank == 0 && (failed = between((PetscInt)done + 1))) PetscCall(FarmStopAll(farm, ntasks));
     }
   }
+  PetscCall(failed);
   // Out of tasks: wait for the others with growing sleeps (an idle rank must
   // not spin in MPI and take a core from a working one).
   // The longest nap grows with the number of ranks so that rank 0 answers at
@@ -94,7 +105,12 @@ PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<
   double       nap     = 2e-4;
   for (;;) {
     PetscCall(FarmFetchAdd(farm, FarmDone, 0, &done));
-    if (farm.world_rank == 0) PetscCall(between((PetscInt)done));
+    if (farm.world_rank == 0 && (failed = between((PetscInt)done))) {
+      PetscCall(FarmStopAll(farm, ntasks));
+      PetscCall(failed);
+    }
+    PetscCall(FarmFetchAdd(farm, FarmStop, 0, &stop));
+    PetscCheck(!stop, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "the sweep was stopped by rank 0's error (its message is the run's)");
     if (done >= ntasks) break;
     std::this_thread::sleep_for(std::chrono::duration<double>(farm.world_rank == 0 ? std::min(nap, 2e-2) : nap));
     nap = std::min(nap_max, nap * 1.5);

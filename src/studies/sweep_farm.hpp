@@ -8,7 +8,7 @@
 
 namespace beamimpact {
 
-// World rank 0 exposes two counters (next task, tasks done) in an MPI window; the
+// World rank 0 exposes three counters (next task, tasks done, stop) in an MPI window; the
 // leader of each group of ranks_per_case ranks takes the next task with
 // MPI_Fetch_and_op and broadcasts it in its group. Ranks left over when the world
 // size is not a multiple of ranks_per_case stay idle.
@@ -26,7 +26,10 @@ PetscErrorCode TaskFarmCreate(MPI_Comm world, PetscInt ranks_per_case, TaskFarm 
 // takes it (the task counts as done when run returns on the group leader);
 // between(done) on world rank 0 between its tasks and while it waits for the
 // others. Returns on every rank once all tasks are done; idle ranks wait with
-// short sleeps, not in a spinning MPI call.
+// short sleeps, not in a spinning MPI call. When between fails on rank 0 (its rewrite of the
+// file on a full disk), no further task is handed out and every rank returns an error once its
+// current task is done: rank 0 with between's, the others saying rank 0 stopped the farm (so
+// that they all end together, app/main.cpp, not in MPI_Abort waiting for rank 0).
 PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<PetscErrorCode(MPI_Comm, PetscInt)> &run, const std::function<PetscErrorCode(PetscInt)> &between);
 PetscErrorCode TaskFarmDestroy(TaskFarm *farm);
 

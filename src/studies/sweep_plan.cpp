@@ -346,9 +346,7 @@ bool SweepParseAxes(const std::string &text, std::vector<SweepAxis> *axes, std::
 std::string SweepAxis::OptionValue(PetscReal v) const
 {
   if (Text()) return labels[(size_t)v];
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.17g", (double)v); // exact; 21 for a whole number
-  return text;
+  return ShortestText((double)v); // exact, as a user writes it (-0.06, not -0.059999999999999998)
 }
 
 std::string SweepAxis::Display(PetscReal v) const

@@ -31,7 +31,7 @@ struct SweepAxis {
 
   bool Text() const { return !labels.empty(); }
   // Value v of this axis (an entry of values) as the options database gets it: the label, or
-  // the number exactly (%.17g).
+  // the number exactly, in its shortest text (ShortestText: -0.06, not -0.059999999999999998).
   std::string OptionValue(PetscReal v) const;
   // As a person reads it: the label, or %g with the unit ("0.3 m").
   std::string Display(PetscReal v) const;

@@ -1,6 +1,7 @@
 // The store of a sweep's rows: journals, atomic rewrites, signature and resume. See sweep_store.hpp.
 #include "studies/sweep_store.hpp"
 
+#include "base/option_table.hpp"
 #include "io/h5_dims.hpp"
 #include "io/options_files.hpp"
 #include "io/results_h5.hpp"
@@ -145,6 +146,79 @@ std::string InputFileOfAttribute(const std::string &key, const std::string &inpu
   return "-" + key.substr(std::strlen("input_sha256_"));
 }
 
+// An option's value by its numbers ("1.0,3" -> "1,3", ShortestText) when every comma-separated
+// part is one; else as written.
+std::string CanonicalValue(const std::string &value)
+{
+  std::string       out, part;
+  std::stringstream parts(value);
+  while (std::getline(parts, part, ',')) {
+    const std::string t   = Trim(part);
+    char             *end = nullptr;
+    const double      v   = std::strtod(t.c_str(), &end);
+    if (t.empty() || *end != '\0') return value;
+    out += (out.empty() ? "" : ",") + ShortestText(v);
+  }
+  return out.empty() ? value : out;
+}
+
+// Whether a program option given at `value` (canonical) is at its row's default: the same run as
+// without it. PETSc's rows and flags are not: a flag given is not its absence, and PETSc's
+// defaults are PETSc's (the rows' defaults are the program's, checked against the code by
+// tests/test_options.cpp).
+bool AtDefault(const std::string &name, const std::string &value)
+{
+  const OptionModule *m = OptionModuleOf(name);
+  const OptionSpec   *s = m ? m->Find("-" + name) : nullptr;
+  return s && !m->petsc && s->kind != OptionKind::Bool && !s->def.empty() && CanonicalValue(s->def) == value;
+}
+
+// The plan by its values, however written: "ball_speed=1;3" for -sweep "ball_speed=1.0;3.0" or
+// "ball_speed=1:3:2", -sweep_x first as impact_x; "" and the text as written when it does not parse.
+std::string CanonicalPlan(const std::string &sweep_x, const std::string &sweep)
+{
+  std::vector<SweepAxis> axes;
+  std::string            why, out;
+  if (!sweep_x.empty()) {
+    SweepAxis a;
+    a.name = "impact_x";
+    if (!SweepParsePoints(sweep_x, &a.values, &why, "m")) return "-sweep_x " + sweep_x + " -sweep " + sweep;
+    axes.push_back(a);
+  }
+  if (!sweep.empty() && !SweepParseAxes(sweep, &axes, &why)) return "-sweep_x " + sweep_x + " -sweep " + sweep;
+  for (const SweepAxis &a : axes) {
+    out += (out.empty() ? "" : ",") + a.name + "=";
+    for (size_t k = 0; k < (a.Text() ? a.labels.size() : a.values.size()); ++k) out += (k ? ";" : "") + (a.Text() ? a.labels[k] : ShortestText(a.values[k]));
+  }
+  return out;
+}
+
+// The signature as what decides the numbers, not how the options were written (both the file's
+// and this run's, before hashing: equal for runs that compute the same): the plan by its values
+// (sweep: the axes and their values, -sweep_x's first, in place of -sweep and -sweep_x as written); in sweep_checked_options numbers by their values, an
+// option at its default left out (as not given), and the options the run did not read left out
+// (sweep_unused_options: -ts_theta_theta under -ts_type rk, an option of another task).
+void SignatureCanonical(SweepAttributes *m)
+{
+  if (m->str.count("sweep") || m->str.count("sweep_x")) {
+    const std::string plan = CanonicalPlan(m->str["sweep_x"], m->str["sweep"]);
+    m->str.erase("sweep_x");
+    m->str["sweep"] = plan;
+  }
+  std::set<std::string> unused;
+  for (auto &kv : ParseOptions(m->str["sweep_unused_options"])) unused.insert(kv.first);
+  m->str.erase("sweep_unused_options");
+  const auto it = m->str.find("sweep_checked_options");
+  if (it == m->str.end()) return;
+  std::string out;
+  for (auto &kv : ParseOptions(it->second)) {
+    const std::string value = CanonicalValue(kv.second);
+    if (kv.first == "sweep" || kv.first == "sweep_x" || unused.count(kv.first) || AtDefault(kv.first, value)) continue;
+    out += "-" + kv.first + (value.empty() ? "" : " " + value) + " ";
+  }
+  it->second = out;
+}
+
 SweepAttributes SignatureMaps(const RunRecord &rec)
 {
   SweepAttributes m;
@@ -154,6 +228,7 @@ SweepAttributes SignatureMaps(const RunRecord &rec)
     if (!AttributeIsVolatile(kv.first)) m.num[kv.first] = (double)kv.second;
   for (auto &kv : rec.strings)
     if (!AttributeIsVolatile(kv.first)) m.str[kv.first] = kv.second;
+  SignatureCanonical(&m);
   return m;
 }
 
@@ -179,6 +254,43 @@ std::string RecordString(const RunRecord &rec, const char *key)
 }
 
 std::string ShortValue(const std::string &s) { return s.size() > 60 ? s.substr(0, 57) + "..." : s; }
+
+// Two canonical plans (CanonicalPlan: "name=v1;v2,name2=...") compared axis by axis: "sweep
+// axis ball_speed: '1;2' in the file, '1;2.5' now", a long list of values cut after the first
+// that differs ("... (value 7: 0.6 in the file, 0.61 now)").
+std::vector<std::string> PlanDiff(const std::string &file, const std::string &now)
+{
+  auto axes = [](const std::string &plan) {
+    std::vector<std::pair<std::string, std::string>> out;
+    std::stringstream                                ss(plan);
+    for (std::string item; std::getline(ss, item, ',');) {
+      const size_t eq = item.find('=');
+      out.emplace_back(item.substr(0, eq), eq == std::string::npos ? "" : item.substr(eq + 1));
+    }
+    return out;
+  };
+  const auto               fa = axes(file), na = axes(now);
+  std::vector<std::string> d;
+  if (fa.size() != na.size()) d.push_back("sweep: " + std::to_string(fa.size()) + " axes in the file ('" + ShortValue(file) + "'), " + std::to_string(na.size()) + " now ('" + ShortValue(now) + "')");
+  for (size_t k = 0; k < std::min(fa.size(), na.size()); ++k) {
+    if (fa[k] == na[k]) continue;
+    if (fa[k].first != na[k].first) {
+      d.push_back("sweep axis " + std::to_string(k + 1) + ": " + fa[k].first + " in the file, " + na[k].first + " now");
+      continue;
+    }
+    std::vector<std::string> fv, nv;
+    std::stringstream        fs(fa[k].second), ns(na[k].second);
+    for (std::string v; std::getline(fs, v, ';');) fv.push_back(v);
+    for (std::string v; std::getline(ns, v, ';');) nv.push_back(v);
+    size_t i = 0;
+    while (i < fv.size() && i < nv.size() && fv[i] == nv[i]) ++i;
+    std::string line = "sweep axis " + fa[k].first + ": '" + ShortValue(fa[k].second) + "' in the file, '" + ShortValue(na[k].second) + "' now";
+    if (fv.size() != nv.size()) line += " (" + std::to_string(fv.size()) + " values in the file, " + std::to_string(nv.size()) + " now)";
+    else if (ShortValue(fa[k].second) == ShortValue(na[k].second)) line += " (value " + std::to_string(i + 1) + ": " + fv[i] + " in the file, " + nv[i] + " now)";
+    d.push_back(line);
+  }
+  return d;
+}
 
 // Human-readable differences between the stored and the current signature.
 std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &now, const std::string &input_files)
@@ -210,6 +322,10 @@ std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &no
       else
         std::snprintf(buf, sizeof(buf), "input file %s: its contents changed since the file was written (SHA-256 %.12s... in the file, %.12s... now)", which.c_str(), a->second.c_str(), b->second.c_str());
       d.push_back(buf);
+      continue;
+    }
+    if (k == "sweep" && a != file.str.end() && b != now.str.end()) { // the plans (SignatureCanonical), axis by axis
+      for (const std::string &line : PlanDiff(a->second, b->second)) d.push_back(line);
       continue;
     }
     if (k == "sweep_checked_options" && a != file.str.end() && b != now.str.end()) {
@@ -611,6 +727,64 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
   PetscFunctionReturn(0);
 }
 
+// The cases whose rows F holds as it is on disk (/results/case_index; none when F is absent,
+// unreadable or no regular file: a FIFO put there would block the open), and those the journals
+// in F.parts hold (every complete record of this signature).
+static void StoreCasesOnDisk(const SweepStore &S, std::set<PetscInt> *in_file, std::set<PetscInt> *in_journals)
+{
+  struct stat st;
+  if (::lstat(S.output.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+    H5ErrorsQuiet       quiet;
+    std::vector<double> index;
+    const hid_t         file = H5Fopen(S.output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file >= 0) {
+      const hid_t g = H5Gopen2(file, "results", H5P_DEFAULT);
+      if (g >= 0 && H5ReadDoubleColumn(g, "case_index", &index))
+        for (double v : index) in_file->insert((PetscInt)v);
+      if (g >= 0) H5Gclose(g);
+      H5Fclose(file);
+    }
+  }
+  for (const std::string &path : SweepJournalFiles(S.parts, nullptr)) {
+    SweepJournalReader                      j;
+    std::map<PetscInt, std::vector<double>> rows;
+    std::map<PetscInt, std::string>         reasons;
+    PetscInt                                added = 0;
+    j.path                                        = path;
+    j.ReadNew(S.signature_hash, S.ncols, S.ncases, &rows, &reasons, &added);
+    for (auto &kv : rows) in_journals->insert(kv.first);
+  }
+}
+
+// What a failed rewrite left, for its message: F as it was (or still nothing there, or what was
+// put there meanwhile), and where the rows computed that F does not hold are: in the journals in
+// F.parts (a resume reads them), in none (the journals could not be written either: those rows
+// are computed again), or that there are none (every row is in F, or no point had been computed).
+// full: the cause was a full disk (the same command resumes once there is room).
+static std::string StoreWriteLeft(const SweepStore &S, bool full)
+{
+  struct stat        st;
+  std::set<PetscInt> in_file, in_journals;
+  size_t             kept = 0, lost = 0; // rows not in F: in a journal, in none
+  StoreCasesOnDisk(S, &in_file, &in_journals);
+  for (auto &kv : S.rows) {
+    if (in_file.count(kv.first)) continue;
+    if (in_journals.count(kv.first)) ++kept;
+    else ++lost;
+  }
+  const bool        there    = ::lstat(S.output.c_str(), &st) == 0;
+  const std::string left     = !there ? "nothing was written at " + S.output
+                               : S_ISREG(st.st_mode) ? S.output + " is as it was"
+                                                      : S.output + " is left as it is (" + FileKind(st.st_mode) + ")";
+  const std::string again    = full ? "run the same command again once there is room" : "run the same command again once the cause is removed";
+  const std::string journals = std::to_string(kept) + " row(s) not in it are kept by the journal(s) in " + S.parts + " for a resume";
+  if (lost > 0)
+    return left + "; " + std::to_string(lost) + " row(s) computed are neither in it nor in a journal (the journals could not be written either) and will be computed again" +
+           (kept > 0 ? "; " + journals : "") + ": " + again;
+  if (kept > 0) return left + ", and the " + journals + ": " + again;
+  return left + (S.rows.empty() ? "; no point had been computed" : "; it holds every row computed so far") + ": " + again;
+}
+
 // F rewritten whole: built in memory, written to F.tmp (every write checked: a full disk shows
 // there), fsync'ed and renamed onto F. On a failure F.tmp is removed and F stays as it was.
 static PetscErrorCode StoreWrite(SweepStore &S)
@@ -629,8 +803,8 @@ static PetscErrorCode StoreWrite(SweepStore &S)
     if (ierr) error = LastErrorMessage(ierr);
     error = H5MemoryFileInstall(file, S.output, tmp, error); // F.tmp, fsync'ed, renamed onto F
   }
-  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing %s failed (disk full? %s); %s is as it was, and the journals in %s keep the rows for a resume", S.output.c_str(), tmp.c_str(),
-             error.c_str(), S.output.c_str(), S.parts.c_str());
+  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing it failed (%s); %s", S.output.c_str(), WriteFailureCause(error).c_str(),
+             StoreWriteLeft(S, WriteFailureCause(error) != error).c_str());
   S.rows_written = (PetscInt)S.rows.size();
   S.last_write   = MPI_Wtime();
   S.write_cost   = S.last_write - t0;
@@ -711,6 +885,7 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
     if (!AttributeIsVolatile(kv.first)) stored.num[kv.first] = kv.second;
   for (auto &kv : a.str)
     if (!AttributeIsVolatile(kv.first)) stored.str[kv.first] = kv.second;
+  SignatureCanonical(&stored); // as this run's (SignatureMaps)
   S.retry_changed = a.str["sweep_retry_changed"]; // earlier retries, kept
   const bool differs = SignatureHash(stored) != S.signature_hash;
   if (differs && !S.plan.retry_failed) {
