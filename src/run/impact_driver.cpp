@@ -27,11 +27,12 @@ namespace {
 
 PetscLogStage ImpactStageId(ImpactStage s)
 {
-  static PetscLogStage ids[5];
+  constexpr int        kStages = 7;
+  static PetscLogStage ids[kStages];
   static bool          registered = false;
   if (!registered) {
-    const char *names[5] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output", "beamimpact: modal reference"};
-    for (int k = 0; k < 5; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
+    const char *names[kStages] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output", "beamimpact: modal reference", "beamimpact: tangential", "beamimpact: flight"};
+    for (int k = 0; k < kStages; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
     registered = true;
   }
   return ids[static_cast<int>(s)];
