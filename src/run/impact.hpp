@@ -304,6 +304,10 @@ private:
 
 struct Scenario;
 
+// The states the free flights after separations rebuilt from the modes for the series and the
+// snapshots since the process started (for tests: an oblique impact's F_n alone needs none).
+PetscInt ImpactFreeFlightSamples();
+
 // The ball's and the bat's approach speed at the impact point (m/s): -ball_speed plus a
 // swinging bat's speed there toward the ball.
 PetscReal ImpactApproachSpeed(const Scenario &sc);

@@ -38,7 +38,11 @@ PetscLogStage ImpactStageId(ImpactStage s)
   return ids[static_cast<int>(s)];
 }
 
+PetscInt free_flight_samples = 0; // ImpactFreeFlightSamples
+
 } // namespace
+
+PetscInt ImpactFreeFlightSamples() { return free_flight_samples; }
 
 ImpactStageScope::~ImpactStageScope()
 {
@@ -203,6 +207,7 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
       if (!(tn < t_end * (1 - 1e-14))) break;
       FreeFlightState(ff, tn - t0, &s);
       PetscCall(st.SetState(tn, s));
+      free_flight_samples++;
       if (series) PetscCall(rec.Record(tn));
       PetscCall(rec.Snapshots(tn));
       if (tn < ts) --k; // a snapshot first: the sample is still due
