@@ -9,6 +9,7 @@
 // Runs at np1, and a few at np2 (MUMPS, a distributed layout).
 #include "run/results_table.hpp"
 #include "model/contact.hpp"
+#include "solvers/beam_modes.hpp"
 #include "solvers/ts_modal.hpp"
 #include "solvers/ts_problem.hpp"
 #include "solvers/ts_stepper.hpp"
@@ -328,4 +329,57 @@ TEST(RankOneSolve, BreakdownFallsBackToTheAssembledLU)
   TSDestroy(&ts);
   TSJacobianDestroy(P);
   TSLayoutDestroy(&P.L);
+}
+
+namespace {
+
+// The cache of the beam's modes on this rank emptied of the bases of sys (four others pushed in).
+void EvictModes(const BeamSystem &sys)
+{
+  for (PetscInt count : {5, 6, 7, 8}) {
+    ModalTruncation                  t;
+    std::shared_ptr<const BeamModes> m;
+    t.modes = ModalModes::Count;
+    t.count = count;
+    ASSERT_EQ(BeamModesShared(PETSC_COMM_SELF, sys, t, &m), 0);
+  }
+}
+
+} // namespace
+
+// -modal_modes auto whose cut-off pi / (T sqrt(tol)) lies above the highest mode's bound is the
+// dense decomposition of every mode whatever the contact time T: a sweep's points, whose
+// approach speeds and so contact times differ, share one basis (before: the cut-offs compared
+// exactly, a decomposition at every point, the sweet zone's dominant cost after the free flight,
+// issue 38), the basis a fresh decomposition gives bit for bit; a cut-off below the bound still
+// truncates, in a basis of its own.
+TEST(ContextReuse, ModesSharedAcrossContactTimesAboveEveryMode)
+{
+  const BeamSystem sys = SystemOf(AluminiumBeam(1.1, 41));
+  ModalTruncation  a, b, low; // -modal_modes auto, -modal_tolerance 1e-9: cut-offs of 1e9 rad/s and more
+  a.contact_time   = 1e-4;
+  b.contact_time   = 1.3e-4;
+  low.contact_time = 1e-3;
+  low.tolerance    = 1e-2; // 3e4 rad/s: below the beam's highest modes
+  std::shared_ptr<const BeamModes> ma, mb, ml, fresh;
+  PetscInt                         c0, r0, c1, r1;
+  EvictModes(sys);
+  BeamModesCacheCounts(&c0, &r0);
+  ASSERT_EQ(BeamModesShared(PETSC_COMM_SELF, sys, a, &ma), 0);
+  ASSERT_EQ(BeamModesShared(PETSC_COMM_SELF, sys, b, &mb), 0);
+  BeamModesCacheCounts(&c1, &r1);
+  EXPECT_EQ(mb.get(), ma.get()) << "another contact time decomposed the beam again";
+  EXPECT_EQ(c1 - c0, 1);
+  EXPECT_EQ(r1 - r0, 1);
+  EXPECT_FALSE(ma->truncated);
+  ASSERT_EQ(BeamModesShared(PETSC_COMM_SELF, sys, low, &ml), 0);
+  EXPECT_NE(ml.get(), ma.get());
+  EXPECT_LT(ml->Count(), ma->Count()) << "a cut-off below the highest modes keeps fewer";
+  EvictModes(sys);
+  ASSERT_EQ(BeamModesShared(PETSC_COMM_SELF, sys, b, &fresh), 0);
+  ASSERT_NE(fresh.get(), ma.get());
+  ASSERT_EQ(fresh->B.omega.size(), ma->B.omega.size());
+  ASSERT_EQ(fresh->B.Phi.size(), ma->B.Phi.size());
+  EXPECT_EQ(std::memcmp(fresh->B.omega.data(), ma->B.omega.data(), sizeof(PetscReal) * ma->B.omega.size()), 0);
+  EXPECT_EQ(std::memcmp(fresh->B.Phi.data(), ma->B.Phi.data(), sizeof(PetscReal) * ma->B.Phi.size()), 0);
 }

@@ -152,6 +152,30 @@ TEST(ObliqueLimits, ComplianceGivesItsTangentialRestitution)
   }
 }
 
+// The length is the root on the first branch (the tangential oscillation's phase below pi): every
+// branch's root reverses u by e_T, the next one at a phase 2 pi - arccos(-e_T), a length over 5
+// times shorter. Its phase integral sqrt(F / (l m_e)) dt is within 25 % of arccos(-e_T) (the
+// slowly varying limit). Guards the root finder (bisection to 25 %, then Illinois: issue 38; a
+// regula falsi over the whole bracket found a root of another branch on the R161's contact).
+TEST(ObliqueLimits, ComplianceOnTheFirstBranch)
+{
+  for (PetscReal e_T : {0.0, 0.3, 0.6, 0.9}) {
+    const PetscReal        T = 0.8e-3, P = 2 * 0.145 * 30;
+    const TangentialModel  m = Baseball(1e4, 0);
+    const int              n = 400;
+    std::vector<PetscReal> t(n + 1), F(n + 1), dF(n + 1);
+    for (int k = 0; k <= n; ++k) {
+      t[k]  = T * k / n;
+      F[k]  = P * M_PI / (2 * T) * std::sin(M_PI * k / n);
+      dF[k] = P * M_PI / (2 * T) * M_PI / T * std::cos(M_PI * k / n);
+    }
+    const PetscReal l = TangentialComplianceLength(m.EffectiveMass(), e_T, t, F, dF);
+    PetscReal       phase = 0; // integral sqrt(F / (l m_e)) dt, trapezoidal
+    for (int k = 0; k < n; ++k) phase += 0.5 * (t[k + 1] - t[k]) * (std::sqrt(std::max<PetscReal>(F[k], 0)) + std::sqrt(std::max<PetscReal>(F[k + 1], 0))) / std::sqrt(l * m.EffectiveMass());
+    EXPECT_NEAR(phase / std::acos(-e_T), 1, 0.25) << "e_T " << e_T << ": l " << l;
+  }
+}
+
 TEST(ObliqueBalance, EnergyWithFriction)
 {
   // A free bat (effective mass, roll) and a compliant contact that grips and slips.

@@ -211,6 +211,42 @@ ForceCubic ForceCubic::Hermite(PetscReal h, PetscReal F0, PetscReal F1, PetscRea
   return r;
 }
 
+namespace {
+
+// The root of g (decreasing through it) in [lo, hi] to 1e-13 relative, on log l: bisection
+// until the bracket is within 25 % (g oscillates with the phase of the tangential oscillation,
+// ~ l^-1/2, so a wide bracket holds other branches' roots; within 25 % the phase varies by 12 %,
+// one root: the one the bisection converges to), then Illinois' regula falsi (the end kept twice
+// has its value halved), a bisection wherever two steps did not halve the bracket: ~13
+// evaluations of g (each a grip over the whole contact) where the bisection took 47, a sixth of
+// a sweep point's time (issue 38). g_lo > 0 > g_hi, else the bisection throughout.
+template <class G>
+PetscReal ComplianceRoot(PetscReal lo, PetscReal hi, PetscReal g_lo, PetscReal g_hi, const G &g)
+{
+  PetscReal       a = std::log(lo), b = std::log(hi), w1 = b - a, w2 = 2 * (b - a); // widths one and two steps ago
+  const bool      bracketed = g_lo > 0 && g_hi < 0;
+  int             kept      = 0; // the end kept by the last step: -1 a, +1 b
+  for (int it = 0; it < 200 && b - a > 1e-13; ++it) {
+    const bool      bisect = !bracketed || b - a > 0.25 || b - a > 0.5 * w2;
+    const PetscReal x      = bisect ? 0.5 * (a + b) : std::min(std::max((a * g_hi - b * g_lo) / (g_hi - g_lo), a + 0.01 * (b - a)), b - 0.01 * (b - a));
+    const PetscReal gx     = g(std::exp(x));
+    w2 = w1, w1 = b - a;
+    if (gx == 0) return std::exp(x);
+    if (gx > 0) {
+      a = x, g_lo = gx;
+      if (kept == 1 && !bisect) g_hi *= 0.5;
+      kept = 1;
+    } else {
+      b = x, g_hi = gx;
+      if (kept == -1 && !bisect) g_lo *= 0.5;
+      kept = -1;
+    }
+  }
+  return std::exp(0.5 * (a + b));
+}
+
+} // namespace
+
 PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F, const std::vector<PetscReal> &dF)
 {
   const size_t n = std::min(t.size(), F.size());
@@ -229,19 +265,14 @@ PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::ve
     return -y.u;
   };
   // The phase of the tangential oscillation, integral sqrt(F / (l m_e)) dt = arccos(-e_T) in the
-  // slowly varying limit, gives the first guess; then bisection on log l.
+  // slowly varying limit, gives the first guess; then the root on log l in its bracket.
   PetscReal root = 0;
   for (size_t k = 0; k + 1 < n; ++k) root += 0.5 * (t[k + 1] - t[k]) * (std::sqrt(std::max<PetscReal>(F[k], 0) / m_e) + std::sqrt(std::max<PetscReal>(F[k + 1], 0) / m_e));
   if (!(root > 0)) return 0;
   const PetscReal l0 = std::pow(root / std::acos(-e_T), 2);
-  PetscReal       lo = l0 / 64, hi = l0 * 64; // reversal(lo) > e_T > reversal(hi) on the first branch
-  for (int it = 0; it < 40 && reversal(lo) <= e_T; ++it) lo *= 1.5;
-  for (int it = 0; it < 200 && hi / lo > 1 + 1e-13; ++it) {
-    const PetscReal mid = std::sqrt(lo * hi);
-    if (reversal(mid) > e_T) lo = mid;
-    else hi = mid;
-  }
-  return std::sqrt(lo * hi);
+  PetscReal       lo = l0 / 64, hi = l0 * 64, g_lo = 0; // reversal(lo) > e_T > reversal(hi) on the first branch
+  for (int it = 0; it < 40 && (g_lo = reversal(lo) - e_T) <= 0; ++it) lo *= 1.5;
+  return ComplianceRoot(lo, hi, g_lo, reversal(hi) - e_T, [&](PetscReal l) { return reversal(l) - e_T; });
 }
 
 void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialState *s)
@@ -525,18 +556,20 @@ TangentialState TangentialFlexibleStart(const TangentialModel &m, const Tangenti
 
 namespace {
 
-// The plane's modes over one length tau.
+// The plane's modes over one length tau, and the point's response to the force s^j from rest
+// summed over them (the plane's gamma: a trial is the state's drift plus these, PlaneTry).
 struct PlaneKernels {
   PetscReal               tau = 0;
   std::vector<ModeKernel> mode;
+  PetscReal               fz[4] = {0, 0, 0, 0}, fv[4] = {0, 0, 0, 0}; // sum_k gamma_k^2 gz[j], gamma_k^2 gv[j]
 };
 
 } // namespace
 
 // The kernels of the last sub-step lengths (a fixed-step run's steps repeat the rest length and
-// its Gauss points), for the omega and sigma they were made for.
+// its Gauss points), for the omega, sigma and gamma they were made for.
 struct TangentialKernelCache {
-  std::vector<PetscReal>                            omega, sigma;
+  std::vector<PetscReal>                            omega, sigma, gamma;
   std::vector<std::shared_ptr<const PlaneKernels>> entry; // at most kSize, replaced in turn
   size_t                                            next = 0;
   static constexpr size_t                           kSize = 8;
@@ -551,19 +584,31 @@ std::shared_ptr<const PlaneKernels> PlaneKernelsExact(const TangentialPlane &p, 
   auto K = std::make_shared<PlaneKernels>();
   K->tau = tau;
   K->mode.resize(p.omega.size());
-  for (size_t k = 0; k < p.omega.size(); ++k) K->mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
+  for (size_t k = 0; k < p.omega.size(); ++k) {
+    const ModeKernel &Kk = K->mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
+    const PetscReal   g2 = p.gamma[k] * p.gamma[k];
+    for (int j = 0; j < 4; ++j) K->fz[j] += g2 * Kk.gz[j], K->fv[j] += g2 * Kk.gv[j];
+  }
   return K;
+}
+
+// The plane's kernel cache emptied unless it was made for its omega, sigma and gamma (checked
+// once per piece of F_n: PlaneKernelsOf, four times a sub-step, trusts it).
+void PlaneKernelCacheCheck(const TangentialPlane &p)
+{
+  if (!p.cache || p.cache->omega != p.omega || p.cache->sigma != p.sigma || p.cache->gamma != p.gamma) {
+    p.cache        = std::make_shared<TangentialKernelCache>();
+    p.cache->omega = p.omega;
+    p.cache->sigma = p.sigma;
+    p.cache->gamma = p.gamma;
+  }
 }
 
 // The kernels over tau: from the cache where a length equal to tau to 1e-12 (the steps' lengths
 // are differences of times that carry that round-off) is kept, else computed and kept.
 std::shared_ptr<const PlaneKernels> PlaneKernelsOf(const TangentialPlane &p, PetscReal tau)
 {
-  if (!p.cache || p.cache->omega != p.omega || p.cache->sigma != p.sigma) {
-    p.cache        = std::make_shared<TangentialKernelCache>();
-    p.cache->omega = p.omega;
-    p.cache->sigma = p.sigma;
-  }
+  if (!p.cache) PlaneKernelCacheCheck(p);
   TangentialKernelCache &C = *p.cache;
   for (const auto &e : C.entry)
     if (std::abs(e->tau - tau) <= 1e-12 * tau) return e;
@@ -580,37 +625,56 @@ struct PlaneTrial {
   PetscReal U() const { return ws - vel; }
 };
 
-// rest: from rest (the state left out), for the responses to a unit force.
-PlaneTrial PlaneTry(const TangentialPlane &p, const PlaneKernels &K, PetscReal inv_me, const ForceCubic &f, bool rest = false)
+// The point's motion over K.tau that the plane's state gives with no force: its displacement
+// change and end velocity (the one pass over the modes of a trial; PlaneTry adds the force's part).
+struct PlaneDrift {
+  PetscReal disp = 0, vel = 0;
+};
+PlaneDrift PlaneDriftOf(const TangentialPlane &p, const PlaneKernels &K)
+{
+  PlaneDrift d;
+  for (size_t k = 0; k < p.omega.size(); ++k) {
+    const ModeKernel &Kk = K.mode[k];
+    d.disp += p.gamma[k] * ((Kk.zz - 1) * p.z[k] + Kk.zv * p.zd[k]);
+    d.vel += p.gamma[k] * (Kk.vz * p.z[k] + Kk.vv * p.zd[k]);
+  }
+  return d;
+}
+// Its velocity alone (disp 0: for a trial's U() only).
+PlaneDrift PlaneDriftVelocityOf(const TangentialPlane &p, const PlaneKernels &K)
+{
+  PlaneDrift d;
+  for (size_t k = 0; k < p.omega.size(); ++k) d.vel += p.gamma[k] * (K.mode[k].vz * p.z[k] + K.mode[k].vv * p.zd[k]);
+  return d;
+}
+
+// drift: the state's (PlaneDriftOf over the same K), or null: from rest (the state left out), for
+// the responses to a unit force. Linear in f: the force's part from K's sums over the modes.
+PlaneTrial PlaneTry(const TangentialPlane &p, const PlaneKernels &K, PetscReal inv_me, const ForceCubic &f, const PlaneDrift *drift)
 {
   const PetscReal tau = K.tau;
   PlaneTrial      t;
-  for (size_t k = 0; k < p.omega.size(); ++k) {
-    const PetscReal z = rest ? 0 : p.z[k], zd = rest ? 0 : p.zd[k];
-    PetscReal       q, qd;
-    K.mode[k].Apply(z, zd, f.Scaled(-p.gamma[k]), &q, &qd);
-    t.disp += p.gamma[k] * (q - z);
-    t.vel += p.gamma[k] * qd;
-  }
+  if (drift) t.disp = drift->disp, t.vel = drift->vel;
+  for (int j = 0; j < 4; ++j) t.disp -= f.c[j] * K.fz[j], t.vel -= f.c[j] * K.fv[j];
   t.disp -= p.flexibility * (f(tau) - f(0)); // the modes left out: the point at -G_r F_t
   t.vel -= p.flexibility * f.Rate(tau);
-  const PetscReal w0  = rest ? 0 : p.ball_side;
+  const PetscReal w0  = drift ? p.ball_side : 0;
   const PetscReal ff  = tau * tau * (f.c[0] / 2 + tau * (f.c[1] / 6 + tau * (f.c[2] / 12 + tau * f.c[3] / 20))); // the double integral
   t.ws                = w0 + f.Integral(tau) * inv_me;
   t.ws_int            = w0 * tau + ff * inv_me;
   return t;
 }
 
-// The force over a sub-step of length K.tau the current phase gives (F_n = Fn(s)).
-ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const PlaneKernels &K, const TangentialState &s, const ForceCubic &Fn)
+// The force over a sub-step of length K.tau the current phase gives (F_n = Fn(s); d: the state's drift over K).
+ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const PlaneKernels &K, const PlaneDrift &d, const TangentialState &s, const ForceCubic &Fn)
 {
   const PetscReal mu = m.friction, l = m.compliance_length, tau = K.tau;
   if (s.phase == TangentialPhase::Slip) return Fn.Scaled(-s.slip_sign * mu);
   if (l > 0) { // Hermite: F_t and dF_t/dt at the start and (unknown: Fe, De) at the end, the law's
     const PetscReal  D0 = -(Fn.Rate(0) * s.xi + Fn(0) * s.u) / l;
-    const PlaneTrial a  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, p.force, 0, D0, 0));
-    const PlaneTrial b  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 1, 0, 0), true);
-    const PlaneTrial c  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 0, 0, 1), true);
+    const PlaneTrial a  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, p.force, 0, D0, 0), &d);
+    const PlaneTrial b  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 1, 0, 0), nullptr);
+    const PlaneTrial c  = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 0, 0, 1), nullptr);
     // xi(tau) = X0 + Fe Xb + De Xc, u(tau) = U0 + Fe Ub + De Uc; Fe = -P xi, De = -(Q xi + P u)
     const PetscReal X0 = s.xi + a.ws_int - a.disp, Xb = b.ws_int - b.disp, Xc = c.ws_int - c.disp;
     const PetscReal P = Fn(tau) / l, Q = Fn.Rate(tau) / l;
@@ -622,7 +686,7 @@ ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const Tangenti
   // rigid grip: a constant force over the sub-step that ends it at u = 0
   ForceCubic      unit, f;
   unit.c[0]      = 1;
-  f.c[0]         = -PlaneTry(p, K, inv_me, ForceCubic()).U() / PlaneTry(p, K, inv_me, unit, true).U();
+  f.c[0]         = -PlaneTry(p, K, inv_me, ForceCubic(), &d).U() / PlaneTry(p, K, inv_me, unit, nullptr).U();
   return f;
 }
 
@@ -636,9 +700,10 @@ bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTr
   return std::abs(f(0)) > (1 + 1e-12) * mu * std::min(Fn(0), Fn(tau));
 }
 
-// Moves the plane and the contact's state over K.tau with F_t = f(s); the energy taken,
-// integral -F_t u, and the modes' damping loss by 3-point Gauss from the exact u and z'.
-void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels &K, const ForceCubic &f, TangentialPlane *p, TangentialState *s)
+// Moves the plane and the contact's state over K.tau with F_t = f(s) (t: its trial from the
+// state); the energy taken, integral -F_t u, and the modes' damping loss by 3-point Gauss from
+// the exact u and z'.
+void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels &K, const ForceCubic &f, const PlaneTrial &t, TangentialPlane *p, TangentialState *s)
 {
   static const PetscReal gx[3] = {-std::sqrt(0.6), 0, std::sqrt(0.6)}, gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
   const PetscReal        tau   = K.tau;
@@ -646,7 +711,8 @@ void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels 
     const PetscReal    si = 0.5 * tau * (1 + gx[i]);
     const auto         Kp = PlaneKernelsOf(*p, si); // held: a later insertion may replace it in the cache
     const PlaneKernels &Ki = *Kp;
-    s->dissipated += 0.5 * tau * gw[i] * (-f(si) * PlaneTry(*p, Ki, inv_me, f).U());
+    const PlaneDrift    di = PlaneDriftVelocityOf(*p, Ki); // u = w - V_c: the trial's velocity alone
+    s->dissipated += 0.5 * tau * gw[i] * (-f(si) * PlaneTry(*p, Ki, inv_me, f, &di).U());
     for (size_t k = 0; k < p->sigma.size(); ++k) { // the modes' damping: integral 2 sigma z'^2
       if (!(p->sigma[k] > 0)) continue;
       PetscReal q, qd;
@@ -654,7 +720,6 @@ void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels 
       p->damped += 0.5 * tau * gw[i] * 2 * p->sigma[k] * qd * qd;
     }
   }
-  const PlaneTrial t = PlaneTry(*p, K, inv_me, f);
   for (size_t k = 0; k < p->omega.size(); ++k) K.mode[k].Apply(p->z[k], p->zd[k], f.Scaled(-p->gamma[k]), &p->z[k], &p->zd[k]);
   if (s->phase == TangentialPhase::Grip && m.compliance_length > 0) s->xi += t.ws_int - t.disp;
   p->ball_side = t.ws;
@@ -693,22 +758,27 @@ void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const
     const ForceCubic   Fb   = Fn.Shift(tau);
     const auto         Kp   = PlaneKernelsOf(*p, rest);
     const PlaneKernels &K    = *Kp;
-    ForceCubic         f    = PhaseForce(m, inv_me, *p, K, *s, Fb);
+    const PlaneDrift   d    = PlaneDriftOf(*p, K);
+    ForceCubic         f    = PhaseForce(m, inv_me, *p, K, d, *s, Fb);
     if (s->phase == TangentialPhase::Slip) p->force = f(0); // continuous into a slip: -s mu F_n
-    if (!PhaseEnds(m, *s, PlaneTry(*p, K, inv_me, f), f, rest, Fb) || it == 15) {
-      PlaneCommit(m, inv_me, K, f, p, s);
+    const PlaneTrial   t    = PlaneTry(*p, K, inv_me, f, &d);
+    if (!PhaseEnds(m, *s, t, f, rest, Fb) || it == 15) {
+      PlaneCommit(m, inv_me, K, f, t, p, s);
       return;
     }
     PetscReal lo = 0, hi = rest;
     for (int b = 0; b < 200 && hi - lo > 1e-15 * rest; ++b) {
       const PetscReal    mid = 0.5 * (lo + hi);
       const auto         Km  = PlaneKernelsExact(*p, mid);
-      f                      = PhaseForce(m, inv_me, *p, *Km, *s, Fb);
-      if (PhaseEnds(m, *s, PlaneTry(*p, *Km, inv_me, f), f, mid, Fb)) hi = mid;
+      const PlaneDrift   dm  = PlaneDriftOf(*p, *Km);
+      f                      = PhaseForce(m, inv_me, *p, *Km, dm, *s, Fb);
+      if (PhaseEnds(m, *s, PlaneTry(*p, *Km, inv_me, f, &dm), f, mid, Fb)) hi = mid;
       else lo = mid;
     }
-    const auto Kh = PlaneKernelsExact(*p, hi); // the switch at exactly hi (tau += hi below)
-    PlaneCommit(m, inv_me, *Kh, PhaseForce(m, inv_me, *p, *Kh, *s, Fb), p, s);
+    const auto       Kh = PlaneKernelsExact(*p, hi); // the switch at exactly hi (tau += hi below)
+    const PlaneDrift dh = PlaneDriftOf(*p, *Kh);
+    const ForceCubic fh = PhaseForce(m, inv_me, *p, *Kh, dh, *s, Fb);
+    PlaneCommit(m, inv_me, *Kh, fh, PlaneTry(*p, *Kh, inv_me, fh, &dh), p, s);
     PhaseSwitch(m, p, s);
     tau += hi;
   }
@@ -739,6 +809,7 @@ void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal
   TangentialModel ball = m;
   ball.bat_mass        = PETSC_INFINITY; // the plane is the bat's translation
   const PetscReal inv_me = 1 / ball.EffectiveMass();
+  PlaneKernelCacheCheck(*p);
   if (t0 > p->time) { // free since the plane's time: F_t = 0
     PlaneFree(t0 - p->time, p);
     p->force = 0;

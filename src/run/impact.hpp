@@ -283,11 +283,13 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
 // stepper), "beamimpact: contact" (steps while the ball touches), "beamimpact: free flight"
 // (after a separation: the modal free flight, or the steps of -impact_after time),
 // "beamimpact: output" (the results file; a sweep's rewrites of its file too), "beamimpact:
-// modal reference" (-reference modal, the exact modal solution: its modes and phases).
-// Registered on first use. A scope pushes a stage and
+// modal reference" (-reference modal, the exact modal solution: its modes and phases),
+// "beamimpact: tangential" (an oblique impact's friction on the ball and the bat's second
+// plane, from the normal run's force, and its compliance length from e_T), "beamimpact:
+// flight" (-flight: the batted ball's flight). Registered on first use. A scope pushes a stage and
 // pops it when it ends (also on an error return, so a sweep's failed points keep the stack
 // balanced); Switch changes the stage it holds, End pops it early.
-enum class ImpactStage { Setup, Contact, FreeFlight, Output, ModalReference };
+enum class ImpactStage { Setup, Contact, FreeFlight, Output, ModalReference, Tangential, Flight };
 class ImpactStageScope {
 public:
   explicit ImpactStageScope(ImpactStage s) { Switch(s); }
@@ -303,6 +305,10 @@ private:
 };
 
 struct Scenario;
+
+// The states the free flights after separations rebuilt from the modes for the series and the
+// snapshots since the process started (for tests: an oblique impact's F_n alone needs none).
+PetscInt ImpactFreeFlightSamples();
 
 // The ball's and the bat's approach speed at the impact point (m/s): -ball_speed plus a
 // swinging bat's speed there toward the ball.

@@ -3,6 +3,7 @@
 
 #include "base/option_table.hpp"
 #include "model/rigid.hpp"
+#include "run/impact.hpp"
 #include "run/results_table.hpp"
 #include "run/scenario.hpp"
 
@@ -182,6 +183,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   TangentialModel        m;
 
   PetscFunctionBeginUser;
+  ImpactStageScope stage(ImpactStage::Tangential); // -log_view
   rec->on       = true;
   rec->geometry = in.geometry;
   m.ball_mass   = ball.mass;
@@ -231,6 +233,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   if (flexible) rec->after.v_bat = rec->plane.PointVelocity();
   rec->exit  = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
   if (sc.flight.on) {
+    stage.Switch(ImpactStage::Flight);
     FlightParams p    = sc.flight.params;
     p.ball.mass       = sc.ball.mass; // the impact's own ball (its radius is required with -flight: FlightBallResolve)
     p.ball.radius     = sc.ball.radius > 0 ? sc.ball.radius : p.ball.radius;

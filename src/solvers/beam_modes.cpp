@@ -81,6 +81,18 @@ bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
   return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) && (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff()) && a.refine_all == b.refine_all;
 }
 
+// Whether the cached basis m is the one t asks for on the same beam: the same truncation, or
+// two cut-offs of -modal_modes auto both above the highest mode's bound (each the dense
+// decomposition of every mode: the same computation, bit for bit, whatever the contact time
+// that set the cut-off; a sweep's points, whose approach speeds and so contact times differ,
+// share it instead of decomposing again at every point: issue 38's cost).
+bool BasisFits(const BeamModes &m, const ModalTruncation &t)
+{
+  if (SameTruncation(m.request, t)) return true;
+  const bool every_mode = m.request.modes == ModalModes::Auto && !(m.cutoff < PETSC_INFINITY) && m.omega_bound > 0; // built dense, every mode below its cut-off
+  return every_mode && t.modes == ModalModes::Auto && t.refine_all == m.request.refine_all && !(t.Cutoff() < m.omega_bound);
+}
+
 // One cache per group of processes (the ranks of MPI_COMM_WORLD a communicator holds, in its
 // order): a basis is computed collectively on its communicator and kept whole on each of its
 // ranks, and only calls collective on the same group may find or evict it, so the caches of
@@ -541,7 +553,8 @@ PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
     PetscCall(ShareModes(comm, m));
     PetscFunctionReturn(0);
   }
-  m->cutoff = t.modes == ModalModes::Auto && !dense ? wc : PETSC_INFINITY;
+  m->cutoff      = t.modes == ModalModes::Auto && !dense ? wc : PETSC_INFINITY;
+  m->omega_bound = wmax;
   m->factor = dense ? nullptr : FactoredFormFor(m->sys);
   if (!m->factor) PetscCall(PrimalCheck(comm, m));
   if (dense && t.modes == ModalModes::Auto && std::isfinite(wc) && wmax > 0) { // every mode below the cut-off: the tolerance from which fewer are kept (the cut-off below the bound)
@@ -595,7 +608,7 @@ PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const Modal
   PetscCall(CacheOf(comm, &pcache));
   ModesCache &cache = *pcache;
   for (auto it = cache.begin(); it != cache.end(); ++it)
-    if (SameTruncation((*it)->request, t) && SameBeam((*it)->sys, sys)) {
+    if (BasisFits(**it, t) && SameBeam((*it)->sys, sys)) {
       *modes = *it;
       if (it != cache.begin()) {
         cache.erase(it);

@@ -102,6 +102,7 @@ struct BeamModes {
   ModalTruncation request; // as asked
   PetscInt        rigid     = 0;              // rigid modes among the kept
   PetscReal       cutoff    = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
+  PetscReal       omega_bound = 0;              // rad/s: Auto, the bound on the highest mode the cut-off was compared with (0: not Auto)
   bool            truncated = false;          // fewer modes than free dofs
   std::string     method;                     // "dense", "slepc" or "slepc, factored form"
   PetscReal       share_error = -1;           // Share: the share-weighted error of the modes left out under the load (ShareTrim); < 0: not weighed
@@ -144,7 +145,8 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why);
 bool BeamModesFactoredForm(const BeamSystem &sys, BeamFactor *F);
 
 // The beam's modes, from the cache when the same system was decomposed before with the same
-// truncation on the same group of ranks, else computed and cached (the last BeamModesCacheSize
+// truncation on the same group of ranks (or with any cut-off of -modal_modes auto above every
+// mode, as the cached basis was: the same dense decomposition), else computed and cached (the last BeamModesCacheSize
 // per group are kept). Collective on comm: every rank of comm calls it, with the same system and
 // truncation, in the same order as its other calls on comm. The comm is the structure's own, the
 // communicator of the run that owns the beam (its DMDA's, the TS's, the modal reference's when it
