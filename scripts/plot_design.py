@@ -168,6 +168,7 @@ def optimum_figure(a, d, names, objective, out):
         opt = d["optimum"][()]
         axg.plot(opt[names.index(pair[0])], opt[names.index(pair[1])], "*", ms=15, color="C3", label="optimum")
         axg.set_xlabel(pair[0])
+        axg.tick_params(axis="x", labelrotation=25)
         axg.set_ylabel(pair[1])
         axg.legend(fontsize=8)
         axg.set_title("%s around the optimum (%d x %d designs)" % (objective, a.grid_points, a.grid_points))
