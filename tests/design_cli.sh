@@ -4,7 +4,9 @@
 #              modal integrator) over impact_x, from 0.6 m: the fine sweep's best point (1 mm apart)
 #              to its resolution, and its ACOR to 1e-6; the options file holds /design/optimum; with a
 #              constraint acor@hit <= 0.597 (almm): the largest ACOR allowed, feasible, the constraint
-#              named active; a rerun computes no run;
+#              named active; a rerun computes no run; /design/role: the rows TAO's monitor saw (0) are
+#              exactly those with a KKT residual, one per iteration, the line search's trials (2) and the
+#              differences' points (1) without;
 #   gradient   the forward-difference gradient of the ACOR over the scaled Young's modulus at the start
 #              (TAO's, from the two designs /design holds) at steps 1e-4 and 1e-3 against central differences
 #              of a separate sweep at two relative steps (1e-4, 1e-3): within 2e-3 relative (the
@@ -45,6 +47,17 @@ known)
   grep -q "^-impact_x $x\$" d.opts && head -1 d.opts | grep -q "^# beamimpact -task design: the optimum" && pass "d.opts holds /design/optimum exactly" || { fail "d.opts"; cat d.opts; }
   [[ ! -e d.h5.parts ]] && pass "a finished design leaves no journals" || fail "d.h5.parts left"
   "$exe" "${scene[@]}" "${design[@]}" -output d.h5 >again.log 2>&1 && [[ $(computed again.log) == 0 ]] && pass "a rerun computes no run" || fail "the rerun computed $(computed again.log) runs"
+  # the roles: an iterate (0) is a row the monitor marked (a finite KKT residual), one per iteration (0..N), a
+  # line search's trial (2) is a point TAO asked for that no iteration took; the constrained run has both
+  "$python" - d.h5 <<'PY' && pass "/design/role: the iterates exactly the monitor's rows (one per iteration), trials (2) and differences (1) apart" || fail "/design/role"
+import h5py, numpy as np, sys
+d = h5py.File(sys.argv[1], "r")["design"]
+role, kkt, it = d["role"][()], d["kkt_residual"][()], d["iteration"][()]
+print("   roles:", {int(r): int((role == r).sum()) for r in np.unique(role)})
+ok = set(np.unique(role)) <= {0, 1, 2} and np.array_equal(role == 0, np.isfinite(kkt))
+ok = ok and (role == 2).sum() > 0 and sorted(it[role == 0]) == list(range((role == 0).sum()))
+sys.exit(0 if ok else 1)
+PY
   # constrained: the largest ACOR below 0.597 (on the rising side from 0.6 m: the sweep's crossing)
   "$exe" "${scene[@]}" "${design[@]}" -design_constraints "acor@hit<=0.597" -output c.h5 >c.log 2>&1 || { fail "the constrained design failed"; cat c.log; }
   xc=$("$python" -c "

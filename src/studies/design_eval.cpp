@@ -116,6 +116,12 @@ std::vector<double> DesignTaoConstraints(const DesignProblem &d, const DesignVal
   return c;
 }
 
+static void PromoteRole(DesignRecord &r, int role)
+{
+  auto rank = [](int x) { return x == 0 ? 2 : x == 2 ? 1 : 0; }; // iterate > a point TAO asked for > a difference's
+  if (rank(role) > rank(r.role)) r.role = role;
+}
+
 PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<double>> &us, std::vector<DesignValues> *vals, int role)
 {
   std::vector<CaseOptions> cases;
@@ -150,7 +156,7 @@ PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<do
       r.v = v, r.iteration = d.iteration, r.role = role;
       d.known[us[e]] = d.history.size();
       d.history.push_back(r);
-    } else if (role == 0) d.history[it->second].role = 0;
+    } else PromoteRole(d.history[it->second], role);
   }
   PetscFunctionReturn(0);
 }
@@ -176,8 +182,8 @@ PetscErrorCode DesignGradient(DesignProblem &d, const std::vector<double> &u, bo
       us.push_back(x);
     }
   }
-  PetscCall(DesignEvaluate(d, us, &v, 1)); // one batch: the iterate and its neighbours
-  d.history[d.known.at(u)].role = 0;
+  PetscCall(DesignEvaluate(d, us, &v, 1)); // one batch: the point TAO asked for and its neighbours
+  PromoteRole(d.history[d.known.at(u)], 2);  // an iterate once TAO's monitor says so
   const double sign = d.settings.maximize ? -1 : 1;
   *f                = sign * v[0].objective;
   *c                = DesignTaoConstraints(d, v[0]);

@@ -100,7 +100,7 @@ PetscErrorCode WriteDesignGroup(const DesignProblem &d, const DesignResult &res,
   PetscCall(H5WriteDataset1D(g, "kkt_residual", kkt, "1 (TAO's gradient norm of the (Lagrangian of the) scaled problem at its iterates; NaN at a difference's point)"));
   PetscCall(H5WriteDataset1D(g, "constraint_norm", cn, "1 (TAO's norm of the scaled constraints' violation at its iterates)"));
   PetscCall(H5WriteCounts1D(g, "iteration", it, "1 (TAO's iteration that asked for the design)"));
-  PetscCall(H5WriteCounts1D(g, "role", role, "1 (0: an iterate TAO asked for, 1: a point of a difference)"));
+  PetscCall(H5WriteCounts1D(g, "role", role, "1 (0: an iterate of TAO, 2: a point TAO asked for that no iteration took (a line search's trial), 1: only a point of a difference)"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }

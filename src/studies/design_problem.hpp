@@ -67,7 +67,8 @@ struct DesignValues {
 struct DesignRecord {
   DesignValues v;
   PetscInt     iteration = -1; // TAO's iteration when it was asked for
-  int          role = 1;       // 0 an iterate TAO asked for, 1 a difference's point
+  int          role = 1;       // 0 an iterate (TAO's monitor saw it), 2 a point TAO asked for that no iteration
+                               // took (a line search's trial), 1 only a difference's point
   double       kkt = NAN, cnorm = NAN; // at TAO's iterates: the gradient (of the Lagrangian) and constraint norms
 };
 

@@ -77,7 +77,7 @@ PetscErrorCode TaoObjective(Tao, Vec X, PetscReal *f, void *ctx)
   const std::vector<double> u = FromVec(X);
   if (s.cache.valid && s.cache.u == u) *f = s.cache.f;
   else {
-    PetscCall(DesignEvaluate(*s.d, {u}, &v, 0));
+    PetscCall(DesignEvaluate(*s.d, {u}, &v, 2)); // a trial point (an iterate once the monitor sees it)
     *f = (s.d->settings.maximize ? -1 : 1) * v[0].objective;
   }
   PetscFunctionReturn(0);
