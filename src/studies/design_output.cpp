@@ -21,19 +21,6 @@ namespace {
 
 const char *const kOptionsMarker = "# beamimpact -task design: the optimum";
 
-std::string Fmt(const char *format, ...) __attribute__((format(printf, 1, 2)));
-std::string Fmt(const char *format, ...)
-{
-  char    buf[1024];
-  va_list ap;
-  va_start(ap, format);
-  std::vsnprintf(buf, sizeof buf, format, ap);
-  va_end(ap);
-  return buf;
-}
-
-std::string UnitText(const std::string &unit) { return unit.empty() || unit == "1" ? "" : " " + unit; }
-
 // The optimum's lines, shared by the summary and the options file's header.
 std::vector<std::string> ResultLines(const DesignProblem &d, const DesignResult &res)
 {

@@ -26,19 +26,6 @@ namespace {
 
 const char *const kOptionsMarker = "# beamimpact -task fit: fitted values";
 
-std::string Fmt(const char *format, ...) __attribute__((format(printf, 1, 2)));
-std::string Fmt(const char *format, ...)
-{
-  char    buf[1024];
-  va_list ap;
-  va_start(ap, format);
-  std::vsnprintf(buf, sizeof buf, format, ap);
-  va_end(ap);
-  return buf;
-}
-
-std::string UnitText(const std::string &unit) { return unit.empty() || unit == "1" ? "" : " " + unit; }
-
 // The undetermined combinations, one line each.
 std::vector<std::string> Warnings(const FitProblem &f, const FitResult &res)
 {

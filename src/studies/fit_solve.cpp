@@ -28,27 +28,6 @@ namespace beamimpact {
 
 namespace {
 
-std::vector<double> FromVec(Vec x)
-{
-  const PetscScalar *a;
-  PetscInt           n;
-  VecGetLocalSize(x, &n);
-  VecGetArrayRead(x, &a);
-  std::vector<double> v(a, a + n);
-  VecRestoreArrayRead(x, &a);
-  return v;
-}
-
-PetscErrorCode ToVec(const std::vector<double> &v, Vec x)
-{
-  PetscScalar *a;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetArray(x, &a));
-  std::copy(v.begin(), v.end(), a);
-  PetscCall(VecRestoreArray(x, &a));
-  PetscFunctionReturn(0);
-}
-
 // ---------------------------------------------------------------------------
 // TAO's callbacks
 // ---------------------------------------------------------------------------

@@ -7,7 +7,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdarg>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -106,5 +109,38 @@ PetscErrorCode StudyCheckOptionsOutput(MPI_Comm comm, const std::string &path, c
              option, path.c_str(), who, marker);
   PetscFunctionReturn(0);
 }
+
+std::vector<double> FromVec(Vec x)
+{
+  const PetscScalar *a;
+  PetscInt           n;
+  VecGetLocalSize(x, &n);
+  VecGetArrayRead(x, &a);
+  std::vector<double> v(a, a + n);
+  VecRestoreArrayRead(x, &a);
+  return v;
+}
+
+PetscErrorCode ToVec(const std::vector<double> &v, Vec x)
+{
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(x, &a));
+  std::copy(v.begin(), v.end(), a);
+  PetscCall(VecRestoreArray(x, &a));
+  PetscFunctionReturn(0);
+}
+
+std::string Fmt(const char *format, ...)
+{
+  char    buf[1024];
+  va_list ap;
+  va_start(ap, format);
+  std::vsnprintf(buf, sizeof buf, format, ap);
+  va_end(ap);
+  return buf;
+}
+
+std::string UnitText(const std::string &unit) { return unit.empty() || unit == "1" ? "" : " " + unit; }
 
 } // namespace beamimpact

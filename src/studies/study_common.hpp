@@ -3,11 +3,12 @@
 // of the optimum, written whole or not at all and never over a file it did not write.
 #pragma once
 
-#include <petscsys.h>
+#include <petscvec.h>
 
 #include <cstdarg>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace beamimpact {
 
@@ -38,5 +39,15 @@ PetscErrorCode StudyWriteAtomically(const std::string &path, const std::string &
 // writable, not an input of the run, and an existing file there one the study wrote (its first
 // line starts with `marker`). Errors name `option`; `who` ("a fit") says whose file it would be.
 PetscErrorCode StudyCheckOptionsOutput(MPI_Comm comm, const std::string &path, const std::string &output, const char *option, const char *marker, const char *who);
+
+// A TAO vector's local entries as a std::vector, and back (the studies run TAO on one rank's data).
+std::vector<double> FromVec(Vec x);
+PetscErrorCode      ToVec(const std::vector<double> &v, Vec x);
+
+// printf into a std::string (a summary line, an options file's header; at most 1023 characters).
+std::string Fmt(const char *format, ...) __attribute__((format(printf, 1, 2)));
+
+// A unit as it follows a number in a line: " m/s", nothing for "" or "1".
+std::string UnitText(const std::string &unit);
 
 } // namespace beamimpact
