@@ -1,6 +1,9 @@
 // Small text helpers. See text.hpp.
 #include "io/text.hpp"
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <iterator>
 #include <regex>
 #include <set>
@@ -14,6 +17,18 @@ static std::string TrimSet(const std::string &s, const char *leading, const char
 }
 
 std::string Trim(const std::string &s) { return TrimSet(s, " \t\r\n", " \t\r\n"); }
+
+bool TextFiniteNumber(const std::string &text, double *v)
+{
+  const std::string t = Trim(text);
+  if (t.empty()) return false;
+  char *end;
+  errno          = 0;
+  const double d = std::strtod(t.c_str(), &end);
+  if (*end != '\0' || errno == ERANGE || !std::isfinite(d)) return false;
+  *v = d;
+  return true;
+}
 
 std::string CommentText(const std::string &line) { return TrimSet(line, " \t\r\n#", " \t\r\n"); }
 

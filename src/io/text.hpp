@@ -12,6 +12,9 @@ namespace beamimpact {
 
 // s without leading and trailing blanks (space, tab, CR, LF).
 std::string Trim(const std::string &s);
+// The whole of text (blanks around it apart) as a finite number; false for anything else (empty,
+// trailing characters, out of range, inf, nan).
+bool TextFiniteNumber(const std::string &text, double *v);
 
 // The text of a comment line: without its leading '#' marks and blanks, nor trailing blanks.
 std::string CommentText(const std::string &line);

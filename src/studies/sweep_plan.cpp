@@ -76,17 +76,7 @@ bool SweepPlanSample(SweepPlan *plan, std::string *why)
   return true;
 }
 
-static bool ParseReal(const std::string &text, PetscReal *v)
-{
-  const std::string t = Trim(text);
-  if (t.empty()) return false;
-  char *end;
-  errno          = 0;
-  const double d = std::strtod(t.c_str(), &end);
-  if (*end != '\0' || errno == ERANGE || !std::isfinite(d)) return false;
-  *v = d;
-  return true;
-}
+static bool ParseReal(const std::string &text, PetscReal *v) { return TextFiniteNumber(text, v); }
 
 
 static std::string Round15(double raw)

@@ -31,17 +31,7 @@ uint64_t Mix(uint64_t z) // SplitMix64's finaliser (Steele, Lea & Flood 2014)
 // Streams of the counter: one per use, so that no two uses share a number.
 const uint64_t kStreamLhsPermutation = 1ULL << 32, kStreamShift = 2ULL << 32;
 
-bool Number(const std::string &text, double *v)
-{
-  const std::string t = Trim(text);
-  if (t.empty()) return false;
-  char *end;
-  errno          = 0;
-  const double d = std::strtod(t.c_str(), &end);
-  if (*end != '\0' || errno == ERANGE || !std::isfinite(d)) return false;
-  *v = d;
-  return true;
-}
+bool Number(const std::string &text, double *v) { return TextFiniteNumber(text, v); }
 
 std::vector<std::string> Split(const std::string &text, char sep)
 {
