@@ -92,19 +92,24 @@ std::string AllowedText(const OptionSpec &s)
 {
   const std::string range = s.range_text.empty() ? s.range.Text() : s.range_text;
   switch (s.kind) {
-  case OptionKind::Real: return range;
+  case OptionKind::Real:
+    return range;
   case OptionKind::Int:
     if (!s.range_text.empty()) return s.range_text;
     return std::isfinite(s.range.lo) || std::isfinite(s.range.hi) ? "a whole number " + range : "a whole number";
-  case OptionKind::Bool: return "a flag (alone, or true/false)";
-  case OptionKind::RealList: return s.CountText() + " separated by commas, each " + range;
+  case OptionKind::Bool:
+    return "a flag (alone, or true/false)";
+  case OptionKind::RealList:
+    return s.CountText() + " separated by commas, each " + range;
   case OptionKind::Choice: {
     std::string t;
     for (const std::string &c : s.choices) t += (t.empty() ? "one of " : ", ") + Code(c);
     return t;
   }
-  case OptionKind::File: return s.range_text.empty() ? "a file name" : s.range_text;
-  default: return s.range_text.empty() ? "text" : s.range_text;
+  case OptionKind::File:
+    return s.range_text.empty() ? "a file name" : s.range_text;
+  default:
+    return s.range_text.empty() ? "text" : s.range_text;
   }
 }
 
@@ -133,8 +138,7 @@ std::string OptionRow(const OptionSpec &s)
   std::string       help = s.help;
   if (!help.empty() && help.back() != '.' && !acts.empty()) help += ".";
   return Row({Code(s.name), s.unit.empty() ? "" : Cell(s.unit), s.def.empty() ? "none" : Code(s.def),
-              Cell(AllowedText(s)),
-              Cell(acts.empty() ? help : help + " " + acts)});
+              Cell(AllowedText(s)), Cell(acts.empty() ? help : help + " " + acts)});
 }
 
 std::string ModuleHeading(const OptionModule &m) { return "`" + m.name + "`: " + m.title; }
@@ -146,7 +150,9 @@ std::string ModuleSection(const OptionModule &m)
     std::string prefixes;
     for (const std::string &p : m.prefixes) prefixes += (prefixes.empty() ? "" : ", ") + Code(p);
     md += "PETSc's own objects read these options; the program lists them so that `-help`, the unknown-option "
-          "check and a sweep know them. An option under " + prefixes + " that is not a row is PETSc's too: a note "
+          "check and a sweep know them. An option under " +
+          prefixes +
+          " that is not a row is PETSc's too: a note "
           "when nothing read it, an error when it is close to a row (a typo).\n\n";
   }
   md += Header({"option", "unit", "default", "allowed", "description"});
@@ -163,7 +169,8 @@ std::string DocsOptionsMarkdown()
   std::string md = "# Options reference\n\n";
   md += "Generated from the option tables by `beamimpact -help_markdown options`; " + std::string(kRewrite) + ".\n\n";
   md += "Every option the program reads is one row of its module's table (`src/base/option_table.hpp`), and `-help` "
-        "prints the same rows: " + std::to_string(count) + " options in " + std::to_string(OptionModules().size()) +
+        "prints the same rows: " +
+        std::to_string(count) + " options in " + std::to_string(OptionModules().size()) +
         " modules. A value is checked against its row before any work (a number finite and in its range, a whole "
         "number, a known choice, a list of the right length without empty items); an error names the option, the value "
         "as written and what is allowed. *unit* `1` is dimensionless; *default* `none` means not given: the feature is "
@@ -190,7 +197,8 @@ std::string ImpactSection()
   std::string shares; // the shares of E_in (ResultColumn::share), which close to 1
   for (const ResultColumn &c : ImpactResultColumns())
     if (c.share) shares += (shares.empty() ? "" : ", ") + Code(c.name);
-  md += " Where the energy went: " + shares + ", each where its energy exists, are shares of the energy brought in, `energy_in`; "
+  md += " Where the energy went: " + shares +
+        ", each where its energy exists, are shares of the energy brought in, `energy_in`; "
         "for every structure they add up to 1 + `energy_error`, so to 1 within the integrator's error "
         "([model.md, section 4](model.md#4-energies-and-invariants)).\n\n";
   md += Header({"column", "unit", "integer", "applies", "description"});

@@ -29,9 +29,12 @@
 #include <vector>
 
 static const char help[] = "beamimpact: a ball striking a flexible beam (R. Cross, Am. J. Phys. 67, 692 (1999)).\n"
-                           "  -task impact|modes|sweep|convergence|flight, -output FILE.h5, and the -beam_, -ball_, -bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
-                           "  -convergence_, -leapfrog_, -ts_, -flight_ and -air_ options below (-help lists them all and runs nothing).\n"
-                           "  Example: mpirun -n 2 build/release/beamimpact -options_file options/default.opts (paths inside an options file are relative to that file)\n\n";
+                           "  -task impact|modes|sweep|convergence|flight, -output FILE.h5, and the -beam_, -ball_, "
+                           "-bat_, -impact_, -monitor_, -modes_, -sweep_,\n"
+                           "  -convergence_, -leapfrog_, -ts_, -flight_ and -air_ options below (-help lists them all "
+                           "and runs nothing).\n"
+                           "  Example: mpirun -n 2 build/release/beamimpact -options_file options/default.opts (paths "
+                           "inside an options file are relative to that file)\n\n";
 
 // The command line with every -options_file expanded into the options it holds, relative
 // paths inside a file resolved against the file's directory (io/options_files.hpp): a scene
@@ -64,7 +67,8 @@ static bool ExpandEnvironmentOptions(std::string *error)
     return false;
   }
   std::string text;
-  for (const std::string &w : out) text += (text.empty() ? "" : " ") + (w.find_first_of(" \t") == std::string::npos ? w : "\"" + w + "\"");
+  for (const std::string &w : out)
+    text += (text.empty() ? "" : " ") + (w.find_first_of(" \t") == std::string::npos ? w : "\"" + w + "\"");
   return setenv("PETSC_OPTIONS", text.c_str(), 1) == 0;
 }
 
@@ -99,7 +103,8 @@ static std::string OptionOfParseError(const std::string &msg)
   PetscFree(all);
   if (found.empty()) return msg;
   const bool integer = msg.find("integer") != std::string::npos;
-  return found + " " + value + " is not allowed: it must be " + (integer ? "a whole number" : "a number") + " (" + msg + ")";
+  return found + " " + value + " is not allowed: it must be " + (integer ? "a whole number" : "a number") + " (" + msg +
+         ")";
 }
 
 // Under mpirun (Open MPI sets OMPI_COMM_WORLD_SIZE, MPICH's hydra PMI_SIZE): a rank dies with
@@ -143,7 +148,8 @@ static int AgreeOnFailure(MPI_Comm agree, PetscErrorCode ierr)
     MPI_Test(&req, &done, MPI_STATUS_IGNORE);
     if (done) break;
     if (ierr && MPI_Wtime() - t0 > 5.0) { // the others are stuck waiting for this rank
-      fprintf(stderr, "beamimpact: error%s: %s\n", rank ? (" (rank " + std::to_string(rank) + ")").c_str() : "", msg.c_str());
+      fprintf(stderr, "beamimpact: error%s: %s\n", rank ? (" (rank " + std::to_string(rank) + ")").c_str() : "",
+              msg.c_str());
       fflush(stderr);
       MPI_Abort(MPI_COMM_WORLD, 1);
     }

@@ -17,18 +17,26 @@ PetscErrorCode FlightPrintSummary(MPI_Comm comm, const FlightParams &p, const Fl
 {
   const FlightLanding &l = r.landing;
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "flight: distance %.4f m  apex %.4f m at %.4f s  hang_time %.4f s  landing_speed %.4f m/s  landing_angle %.3f deg  bearing %.3f deg\n", (double)l.distance,
-                        (double)r.apex, (double)r.apex_time, (double)l.hang_time, (double)l.landing_speed, (double)l.landing_angle, (double)l.bearing));
+  PetscCall(PetscPrintf(comm,
+                        "flight: distance %.4f m  apex %.4f m at %.4f s  hang_time %.4f s  landing_speed %.4f m/s  "
+                        "landing_angle %.3f deg  bearing %.3f deg\n",
+                        (double)l.distance, (double)r.apex, (double)r.apex_time, (double)l.hang_time,
+                        (double)l.landing_speed, (double)l.landing_angle, (double)l.bearing));
   char line[512]; // std::snprintf: PETSc's %g would write 45 as "45."
-  std::snprintf(line, sizeof line, "launch %g m/s at %g deg from %g m, spin %g rad/s (%.0f rpm); air %.5f kg/m^3, K %.6e 1/m (%s constants)", (double)p.launch.speed,
-                (double)p.launch.angle, (double)p.launch.height, (double)m.spin, (double)(m.spin * 30 / M_PI), (double)m.rho, (double)m.K,
+  std::snprintf(line, sizeof line,
+                "launch %g m/s at %g deg from %g m, spin %g rad/s (%.0f rpm); air %.5f kg/m^3, K %.6e 1/m (%s "
+                "constants)",
+                (double)p.launch.speed, (double)p.launch.angle, (double)p.launch.height, (double)m.spin,
+                (double)(m.spin * 30 / M_PI), (double)m.rho, (double)m.K,
                 p.aero.constants == FlightConstants::Calculator ? "calculator" : "exact");
   PetscCall(PetscPrintf(comm, "%s\n", line));
   char control[96]; // the error control, or the truth: a fixed step without one
   if (r.fixed_step) std::snprintf(control, sizeof control, "fixed step %g s (no error control)", (double)r.dt);
   else std::snprintf(control, sizeof control, "rtol %g  atol %g", (double)r.rtol, (double)r.atol);
-  std::snprintf(line, sizeof line, "ts %s  %s  steps %lld  rejected %lld  landing re-steps %lld  fevals %lld  wall %.3e s", r.ts_type.c_str(), control, (long long)r.steps, (long long)r.rejected_steps,
-                (long long)r.locate_steps, (long long)r.function_evals, (double)r.wall_time);
+  std::snprintf(line, sizeof line,
+                "ts %s  %s  steps %lld  rejected %lld  landing re-steps %lld  fevals %lld  wall %.3e s",
+                r.ts_type.c_str(), control, (long long)r.steps, (long long)r.rejected_steps, (long long)r.locate_steps,
+                (long long)r.function_evals, (double)r.wall_time);
   PetscCall(PetscPrintf(comm, "%s\n", line));
   PetscFunctionReturn(0);
 }

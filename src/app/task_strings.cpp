@@ -21,7 +21,8 @@ PetscErrorCode TaskModesIsStringBed(MPI_Comm comm, PetscBool *bed)
   PetscFunctionBeginUser;
   *bed = PETSC_FALSE;
   PetscCall(PetscOptionsHasName(NULL, NULL, "-strings_frame", &given));
-  if (given) PetscCall(StringBedRequested(comm, bed)); // read through its row only when given: a beam's file records no bed
+  if (given)
+    PetscCall(StringBedRequested(comm, bed)); // read through its row only when given: a beam's file records no bed
   PetscFunctionReturn(0);
 }
 
@@ -60,16 +61,27 @@ PetscErrorCode PrintStringBedModes(MPI_Comm comm, const StringBedParams &p, cons
   PetscMPIInt    size;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCall(PetscPrintf(comm, "string bed: %s %g x %g m, mains %.1f N at %.2f mm, crosses %.1f N at %.2f mm, %.3f g/m a string: N_x %.1f N/m, N_z %.1f N/m, sigma %.5f kg/m^2\n", HeadShapeName(p.shape),
-                        (double)p.head_length, (double)p.head_width, (double)p.tension, (double)(p.spacing * 1e3), (double)p.tension_crosses, (double)(p.spacing_crosses * 1e3),
+  PetscCall(PetscPrintf(comm,
+                        "string bed: %s %g x %g m, mains %.1f N at %.2f mm, crosses %.1f N at %.2f mm, %.3f g/m a "
+                        "string: N_x %.1f N/m, N_z %.1f N/m, sigma %.5f kg/m^2\n",
+                        HeadShapeName(p.shape), (double)p.head_length, (double)p.head_width, (double)p.tension,
+                        (double)(p.spacing * 1e3), (double)p.tension_crosses, (double)(p.spacing_crosses * 1e3),
                         (double)(p.linear_density * 1e3), (double)m.N_x, (double)m.N_z, (double)m.sigma));
-  PetscCall(PetscPrintf(comm, "grid %" PetscInt_FMT " x %" PetscInt_FMT " (h_x %.3f mm, h_z %.3f mm), %" PetscInt_FMT " free nodes, on %d rank%s\n", g.nx, g.nz, (double)(g.hx * 1e3),
-                        (double)(g.hz * 1e3), modes.free_nodes, (int)size, size > 1 ? "s" : ""));
-  const bool             rect  = p.shape == HeadShape::Rectangle;
-  const std::vector<PetscReal> exact = rect ? RectangleFrequencies(m, p, modes.frequency.size()) : std::vector<PetscReal>();
-  PetscCall(PetscPrintf(comm, "modes of the string bed in a held frame (SLEPc, shift-and-invert):\n  mode  frequency (Hz)  period (ms)%s\n", rect ? "  membrane f_mn (Hz)" : ""));
+  PetscCall(PetscPrintf(comm,
+                        "grid %" PetscInt_FMT " x %" PetscInt_FMT " (h_x %.3f mm, h_z %.3f mm), %" PetscInt_FMT
+                        " free nodes, on %d rank%s\n",
+                        g.nx, g.nz, (double)(g.hx * 1e3), (double)(g.hz * 1e3), modes.free_nodes, (int)size,
+                        size > 1 ? "s" : ""));
+  const bool                   rect  = p.shape == HeadShape::Rectangle;
+  const std::vector<PetscReal> exact = rect ? RectangleFrequencies(m, p, modes.frequency.size())
+                                            : std::vector<PetscReal>();
+  PetscCall(PetscPrintf(comm,
+                        "modes of the string bed in a held frame (SLEPc, shift-and-invert):\n  mode  frequency (Hz)  "
+                        "period (ms)%s\n",
+                        rect ? "  membrane f_mn (Hz)" : ""));
   for (size_t q = 0; q < modes.frequency.size(); ++q) {
-    PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.5f", (int)q + 1, (double)modes.frequency[q], (double)(1e3 / modes.frequency[q])));
+    PetscCall(PetscPrintf(comm, "  %4d  %14.4f  %11.5f", (int)q + 1, (double)modes.frequency[q],
+                          (double)(1e3 / modes.frequency[q])));
     PetscCall(rect ? PetscPrintf(comm, "  %18.4f\n", (double)exact[q]) : PetscPrintf(comm, "\n"));
   }
   PetscFunctionReturn(0);

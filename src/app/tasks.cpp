@@ -51,13 +51,8 @@ struct TaskEntry {
   PetscErrorCode (*run)(MPI_Comm comm, const std::string &output);
 };
 const TaskEntry Tasks[] = {
-  {"impact", TaskImpact},
-  {"modes", TaskModes},
-  {"sweep", TaskSweep},
-  {"convergence", TaskConvergence},
-  {"flight", TaskFlight},
-  {"fit", TaskFit},
-  {"design", TaskDesign},
+  {"impact", TaskImpact}, {"modes", TaskModes}, {"sweep", TaskSweep},   {"convergence", TaskConvergence},
+  {"flight", TaskFlight}, {"fit", TaskFit},     {"design", TaskDesign},
 };
 
 // The task's file, when -output names one (not 'none'): its run record, the file, and a line
@@ -97,12 +92,14 @@ static std::string ImpactSummaryLine(const ImpactResult &r)
                                {"failed", "failed_solves", "%.0f"},
                                {"fevals", "function_evals", "%.0f"},
                                {"wall", "wall_time", "%.3e"}};
-  std::string line;
+  std::string       line;
   for (const Item &it : items) {
     const ResultColumn *c = ImpactResultColumn(it.column);
     char                value[64];
-    std::snprintf(value, sizeof value, it.format, c->Get(r) + (std::strcmp(it.column, "steps") == 0 ? (double)r.event_steps : 0.0));
-    line += (line.empty() ? "" : "  ") + std::string(it.label) + " " + value + (std::strcmp(c->unit, "1") ? " " + std::string(c->unit) : "");
+    std::snprintf(value, sizeof value, it.format,
+                  c->Get(r) + (std::strcmp(it.column, "steps") == 0 ? (double)r.event_steps : 0.0));
+    line += (line.empty() ? "" : "  ") + std::string(it.label) + " " + value +
+            (std::strcmp(c->unit, "1") ? " " + std::string(c->unit) : "");
   }
   return line;
 }
@@ -112,15 +109,22 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   PetscFunctionBeginUser;
   char modal[96] = ""; // the modal engine's modes kept and cut-off (docs/model.md §12)
   if (r.modal.kept > 0 && std::isfinite(r.modal.cutoff))
-    std::snprintf(modal, sizeof modal, "  modes %d/%d cut-off %.4g Hz", (int)r.modal.kept, (int)r.modal.free_dofs, (double)r.modal.cutoff);
-  else if (r.modal.kept > 0) std::snprintf(modal, sizeof modal, "  modes %d/%d", (int)r.modal.kept, (int)r.modal.free_dofs); // no cut-off chose them
-  PetscCall(PetscPrintf(comm, "%s%s%s\n", ImpactSummaryLine(r).c_str(), modal, r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
+    std::snprintf(modal, sizeof modal, "  modes %d/%d cut-off %.4g Hz", (int)r.modal.kept, (int)r.modal.free_dofs,
+                  (double)r.modal.cutoff);
+  else if (r.modal.kept > 0)
+    std::snprintf(modal, sizeof modal, "  modes %d/%d", (int)r.modal.kept,
+                  (int)r.modal.free_dofs); // no cut-off chose them
+  PetscCall(PetscPrintf(comm, "%s%s%s\n", ImpactSummaryLine(r).c_str(), modal,
+                        r.ended_in_contact ? "  (ended in contact: raise -impact_max_time)" : ""));
   const size_t asked = sc.monitor.snapshot_times.size(), taken = r.series.snapshot_time.size();
   if (taken < asked) {
     std::string late;
-    for (size_t q = taken; q < asked && q < taken + 8; ++q) late += (late.empty() ? "" : ", ") + std::to_string(sc.monitor.snapshot_times[q]).substr(0, 10);
-    PetscCall(PetscPrintf(comm, "note: %zu of the -snapshot_times (%s%s) are after the run's end at t = %.6g s and were not recorded; a longer -impact_window or -impact_max_time reaches them\n", asked - taken,
-                          late.c_str(), asked - taken > 8 ? ", ..." : "", (double)r.final_time));
+    for (size_t q = taken; q < asked && q < taken + 8; ++q)
+      late += (late.empty() ? "" : ", ") + std::to_string(sc.monitor.snapshot_times[q]).substr(0, 10);
+    PetscCall(PetscPrintf(comm,
+                          "note: %zu of the -snapshot_times (%s%s) are after the run's end at t = %.6g s and were not "
+                          "recorded; a longer -impact_window or -impact_max_time reaches them\n",
+                          asked - taken, late.c_str(), asked - taken > 8 ? ", ..." : "", (double)r.final_time));
   }
   const std::string absurd = CompressionBeyondRadiusText(sc, r);
   if (!absurd.empty()) PetscCall(PetscPrintf(comm, "%s\n", absurd.c_str()));
@@ -129,34 +133,57 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   const std::string energy = ImpactEnergyShareText(sc, r); // where it went (docs/model.md section 4)
   if (!energy.empty()) PetscCall(PetscPrintf(comm, "%s\n", energy.c_str()));
   if (r.beam_dissipated_end > 0) // a damped beam
-    PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of E_in); energy balance error %.1e\n", (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
+    PetscCall(PetscPrintf(comm, "beam damping dissipated %.4e J (%.4f of E_in); energy balance error %.1e\n",
+                          (double)r.beam_dissipated_end, (double)r.damping_fraction, (double)r.energy_error));
   if (sc.swing.Swings())
-    PetscCall(PetscPrintf(comm, "swinging bat (V_cm %g m/s, Omega %g rad/s): batted-ball speed %.4f m/s, collision efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
-                          (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs, (double)r.collision_efficiency, (double)r.bat_speed_end,
-                          (double)r.bat_angular_velocity_end));
+    PetscCall(PetscPrintf(comm,
+                          "swinging bat (V_cm %g m/s, Omega %g rad/s): batted-ball speed %.4f m/s, collision "
+                          "efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
+                          (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs,
+                          (double)r.collision_efficiency, (double)r.bat_speed_end, (double)r.bat_angular_velocity_end));
   if (ObliqueImpact(sc)) {
-    PetscCall(PetscPrintf(comm, "oblique: offset %g m, batted ball %.4f m/s at %.3f deg, spin %.2f rad/s (%.0f rpm, > 0 backspin); friction dissipated %.4e J (along the line of centres: acor and bbs above)\n",
-                          (double)sc.impact.offset, (double)r.exit_speed, (double)r.launch_angle, (double)r.spin, (double)r.spin_rpm, (double)r.friction_dissipated));
-    if (r.bat_vibration_tangential > 0) PetscCall(PetscPrintf(comm, "oblique: the bat's vibration in its second plane took %.4e J (-impact_tangential_plane flexible)\n", (double)r.bat_vibration_tangential));
+    PetscCall(PetscPrintf(comm,
+                          "oblique: offset %g m, batted ball %.4f m/s at %.3f deg, spin %.2f rad/s (%.0f rpm, > 0 "
+                          "backspin); friction dissipated %.4e J (along the line of centres: acor and bbs above)\n",
+                          (double)sc.impact.offset, (double)r.exit_speed, (double)r.launch_angle, (double)r.spin,
+                          (double)r.spin_rpm, (double)r.friction_dissipated));
+    if (r.bat_vibration_tangential > 0)
+      PetscCall(PetscPrintf(comm,
+                            "oblique: the bat's vibration in its second plane took %.4e J (-impact_tangential_plane "
+                            "flexible)\n",
+                            (double)r.bat_vibration_tangential));
     if (sc.flight.on)
-      PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n", (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
+      PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n",
+                            (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
   }
   if (sc.beam.strings.On())
-    PetscCall(PetscPrintf(comm, "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
-                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak, (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
+    PetscCall(PetscPrintf(comm,
+                          "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its "
+                          "energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
+                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak,
+                          (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
   if (sc.beam.torsion.on && ResultNoHeldDof(sc) && sc.ball.speed > 0)
-    PetscCall(PetscPrintf(comm, "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of E_in; its twist and spin hold %.4e J at the end\n", (double)r.roll_rate_end,
-                          (double)r.roll_fraction, (double)r.twist_energy_end));
+    PetscCall(PetscPrintf(comm,
+                          "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of E_in; its twist "
+                          "and spin hold %.4e J at the end\n",
+                          (double)r.roll_rate_end, (double)r.roll_fraction, (double)r.twist_energy_end));
   if (sc.beam.grip.on)
-    PetscCall(PetscPrintf(comm, "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end %.4e J; work done by the hands %.4e J\n", (double)sc.beam.grip.x_a,
-                          (double)sc.beam.grip.x_b, (double)r.grip_force_peak, (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
+    PetscCall(PetscPrintf(comm,
+                          "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end "
+                          "%.4e J; work done by the hands %.4e J\n",
+                          (double)sc.beam.grip.x_a, (double)sc.beam.grip.x_b, (double)r.grip_force_peak,
+                          (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
   if (ResultFreePivot(sc)) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
-    PetscCall(PetscPrintf(comm, "pivot at %.4f m: I_p %.5f kg m^2, recoil factor r %.6f, e_A %.6f, BBCOR = e_A (1 + r) + r = %.6f\n", (double)sc.beam.pivot_x, (double)rig.inertia_pivot,
-                          (double)r.recoil_factor, (double)r.collision_efficiency, (double)r.bbcor));
+    PetscCall(
+      PetscPrintf(comm,
+                  "pivot at %.4f m: I_p %.5f kg m^2, recoil factor r %.6f, e_A %.6f, BBCOR = e_A (1 + r) + r = %.6f\n",
+                  (double)sc.beam.pivot_x, (double)rig.inertia_pivot, (double)r.recoil_factor,
+                  (double)r.collision_efficiency, (double)r.bbcor));
   } else if (sc.beam.has_pivot)
     PetscCall(PetscPrintf(comm,
-                          "pivot at %.4f m, but the beam is also held (%s): it cannot turn freely about the pivot, so no recoil factor or BBCOR is reported (NaN in /results: they describe a "
+                          "pivot at %.4f m, but the beam is also held (%s): it cannot turn freely about the pivot, so "
+                          "no recoil factor or BBCOR is reported (NaN in /results: they describe a "
                           "rig free to turn about its pivot); e_A %.6f\n",
                           (double)sc.beam.pivot_x, PivotHeldText(sc).c_str(), (double)r.collision_efficiency));
   PetscFunctionReturn(0);
@@ -170,13 +197,18 @@ PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
   if (beam.strings.On()) {
     const StringBedParams &s = beam.strings;
     const Membrane         m = StringBedMembrane(s);
-    PetscCall(PetscPrintf(comm, "strings: %s %g x %g m, N_x %.6g N/m, N_z %.6g N/m, sigma %.4g kg/m^2, the ball's disc %.4g m, %s\n", HeadShapeName(s.shape), (double)s.head_length,
-                          (double)s.head_width, (double)m.N_x, (double)m.N_z, (double)m.sigma, (double)s.patch_radius,
-                          s.Held() ? "in a held frame" : "on the beam's frame"));
+    PetscCall(
+      PetscPrintf(comm,
+                  "strings: %s %g x %g m, N_x %.6g N/m, N_z %.6g N/m, sigma %.4g kg/m^2, the ball's disc %.4g m, %s\n",
+                  HeadShapeName(s.shape), (double)s.head_length, (double)s.head_width, (double)m.N_x, (double)m.N_z,
+                  (double)m.sigma, (double)s.patch_radius, s.Held() ? "in a held frame" : "on the beam's frame"));
     if (s.Held()) PetscFunctionReturn(0); // the frame is not a body
   }
-  PetscCall(PetscPrintf(comm, "beam: %s section%s%s, mass %.4f kg, centre of mass %.4f m from x = 0, moment of inertia %.5f kg m^2 about it, %.5f kg m^2 about x = 0",
-                        SectionSourceName(beam.section.source), beam.section.file.empty() ? "" : " ", beam.section.file.c_str(), (double)b.mass, (double)b.x_cm, (double)b.inertia_cm,
+  PetscCall(PetscPrintf(comm,
+                        "beam: %s section%s%s, mass %.4f kg, centre of mass %.4f m from x = 0, moment of inertia %.5f "
+                        "kg m^2 about it, %.5f kg m^2 about x = 0",
+                        SectionSourceName(beam.section.source), beam.section.file.empty() ? "" : " ",
+                        beam.section.file.c_str(), (double)b.mass, (double)b.x_cm, (double)b.inertia_cm,
                         (double)b.inertia_end));
   if (beam.torsion.on) PetscCall(PetscPrintf(comm, ", %.6f kg m^2 about its axis", (double)b.inertia_roll));
   PetscCall(PetscPrintf(comm, "\n"));
@@ -199,22 +231,23 @@ PetscErrorCode TaskImpact(MPI_Comm comm, const std::string &output)
   sc.impact.report_setup         = PETSC_TRUE; // integrator, step and stability limit before the run
   PetscCall(method->run(comm, sc, ReferenceSettings(), &sol));
   const ImpactResult &res = sol.result;
-  const std::string cut = ImpactCutOffReason(sc, res); // no number from a contact cut short
+  const std::string   cut = ImpactCutOffReason(sc, res); // no number from a contact cut short
   PetscCheck(cut.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", cut.c_str());
   PetscCall(ImpactPrintSummary(comm, sc, res));
-  PetscCall(TaskWriteOutput(comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
-                            [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc); }));
+  PetscCall(TaskWriteOutput(
+    comm, output, [&](RunRecord *rec) { return RunRecordBuild(sc, &res, rec); },
+    [&](const RunRecord &rec) { return ResultsWriteImpactFile(comm, output, rec, {res}, sc); }));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
 {
-  BeamParams  beam;
-  ModesParams mp;
-  ModesResult modes;
-  BeamSystem  op;
+  BeamParams                          beam;
+  ModesParams                         mp;
+  ModesResult                         modes;
+  BeamSystem                          op;
   std::vector<std::vector<PetscReal>> shapes;
-  std::string why;
+  std::string                         why;
 
   PetscFunctionBeginUser;
   PetscBool bed; // -strings_frame held: the string bed's modes (app/task_strings.hpp)
@@ -229,22 +262,36 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
   PetscCall(BeamModesCompute(comm, op, mp.count, &modes, &shapes));
   PetscCall(OptionsCheckUnused(comm)); // after the solve: the eigensolver reads its -modes_eps_*, -modes_st_* options
   PetscCall(PrintBeamBody(comm, beam));
-  const bool wall = !modes.shell_n.empty() || !modes.part.empty(); // a barrel wall, a roll or a string bed: each mode's family
-  PetscCall(PetscPrintf(comm, "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT ", %s):\n  mode  frequency (Hz)  period (ms)  %snodes (m)\n", (double)beam.length, beam.theory.c_str(),
-                        SupportName(beam.left), SupportName(beam.right), beam.nodes, modes.method.c_str(), wall ? "family   " : ""));
+  const bool wall = !modes.shell_n.empty() ||
+                    !modes.part.empty(); // a barrel wall, a roll or a string bed: each mode's family
+  PetscCall(PetscPrintf(comm,
+                        "modes of the %g m beam (%s, %s-%s, N = %" PetscInt_FMT
+                        ", %s):\n  mode  frequency (Hz)  period (ms)  %snodes (m)\n",
+                        (double)beam.length, beam.theory.c_str(), SupportName(beam.left), SupportName(beam.right),
+                        beam.nodes, modes.method.c_str(), wall ? "family   " : ""));
   int rigid = 0, flexible = 0; // numbered apart: mode 1 is the fundamental, the rigid ones r1, r2
   for (size_t q = 0; q < modes.frequency.size(); ++q) {
     std::string nodes;
-    if (modes.omega[q] != 0 && !(!modes.shell_n.empty() && modes.shell_n[q] != 0) && !(!modes.part.empty() && modes.part[q] != (PetscInt)Part::Beam)) // a wall's, roll's or bed's mode: no bending nodes
-      for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1))) nodes += " " + std::to_string(x).substr(0, 6);
+    if (modes.omega[q] != 0 && !(!modes.shell_n.empty() && modes.shell_n[q] != 0) &&
+        !(!modes.part.empty() &&
+          modes.part[q] != (PetscInt)Part::Beam)) // a wall's, roll's or bed's mode: no bending nodes
+      for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1)))
+        nodes += " " + std::to_string(x).substr(0, 6);
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
-    std::string family = modes.shell_n.empty() ? "" : (modes.shell_n[q] == 0 ? " bending " : " shell n=" + std::to_string((long long)modes.shell_n[q]));
-    if (!modes.part.empty()) { // a roll field or a string bed: the part with most of the mode's kinetic energy, and its share
+    std::string       family = modes.shell_n.empty()
+                               ? ""
+                               : (modes.shell_n[q] == 0 ? " bending "
+                                                        : " shell n=" + std::to_string((long long)modes.shell_n[q]));
+    if (!modes.part
+           .empty()) { // a roll field or a string bed: the part with most of the mode's kinetic energy, and its share
       char text[64];
-      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", BeamSystemPartName((Part)modes.part[q]), (double)(100 * modes.part_share[q]));
+      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", BeamSystemPartName((Part)modes.part[q]),
+                    (double)(100 * modes.part_share[q]));
       family = text;
     }
-    PetscCall(PetscPrintf(comm, "  %4s  %14.4f  %11.4f %s%s\n", number.c_str(), (double)modes.frequency[q], (double)modes.period[q] * 1e3, family.c_str(), modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
+    PetscCall(PetscPrintf(comm, "  %4s  %14.4f  %11.4f %s%s\n", number.c_str(), (double)modes.frequency[q],
+                          (double)modes.period[q] * 1e3, family.c_str(),
+                          modes.omega[q] == 0 ? " (rigid)" : nodes.c_str()));
   }
   auto record = [&](RunRecord *rec) -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -253,7 +300,9 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
     rec->add("modes_rigid_count", (PetscInt)modes.rigid_count);
     PetscFunctionReturn(0);
   };
-  PetscCall(TaskWriteOutput(comm, output, record, [&](const RunRecord &rec) { return ResultsWriteModesFile(comm, output, rec, modes, shapes, beam); }));
+  PetscCall(TaskWriteOutput(comm, output, record, [&](const RunRecord &rec) {
+    return ResultsWriteModesFile(comm, output, rec, modes, shapes, beam);
+  }));
   PetscFunctionReturn(0);
 }
 
@@ -265,14 +314,14 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, s
 // -help is asked.
 PetscErrorCode ReadEveryOption(MPI_Comm comm)
 {
-  Scenario        sc;
+  Scenario               sc;
   const ReferenceMethod *method;
-  ModesParams     mp;
-  SweepPlan       plan;
-  ConvergencePlan cp;
-  LeapfrogParams  lp;
-  ModalTruncation modal_modes;
-  TS              ts;
+  ModesParams            mp;
+  SweepPlan              plan;
+  ConvergencePlan        cp;
+  LeapfrogParams         lp;
+  ModalTruncation        modal_modes;
+  TS                     ts;
 
   PetscFunctionBeginUser;
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
@@ -283,13 +332,14 @@ PetscErrorCode ReadEveryOption(MPI_Comm comm)
   (void)ConvergencePlanFromOptions(comm, sc, &cp);
   (void)LeapfrogParamsFromOptions(comm, &lp);
   (void)ModalTruncationFromOptions(comm, &modal_modes);
-  (void)FlightHelpOptions(comm); // -flight_*, -air_*, the flight TS's -flight_ts_*
-  (void)StringBedHelpOptions(comm); // -strings_*, -head_*
-  (void)BatMakerHelpOptions(comm);  // -bat_* of a bat by its maker's numbers
+  (void)FlightHelpOptions(comm);      // -flight_*, -air_*, the flight TS's -flight_ts_*
+  (void)StringBedHelpOptions(comm);   // -strings_*, -head_*
+  (void)BatMakerHelpOptions(comm);    // -bat_* of a bat by its maker's numbers
   (void)RacketMakerHelpOptions(comm); // -racket_* of a racket by its maker's numbers
-  (void)FitHelpOptions(comm);       // -fit_*, TAO's -tao_*
-  (void)DesignHelpOptions(comm);    // -design_*
-  if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default -ts_type rk
+  (void)FitHelpOptions(comm);         // -fit_*, TAO's -tao_*
+  (void)DesignHelpOptions(comm);      // -design_*
+  if (!TSCreate(comm, &ts)) { // PETSc's own integrator options (-ts_type, -ts_dt, ...), as for the program's default
+                              // -ts_type rk
     (void)TSSetType(ts, TSRK);
     (void)TSSetFromOptions(ts);
     (void)TSDestroy(&ts);
@@ -312,9 +362,11 @@ PetscErrorCode PrintAllOptions(MPI_Comm comm)
   PetscCall(RunTaskOptions(comm, nullptr, nullptr));
   PetscCall(ReadEveryOption(comm));
   PetscCall(OptionModulePrintHelp(comm, PetscSolverOptionTable()));
-  PetscCall(PetscPrintf(comm, "\n-help lists every option of every task above, with its default; nothing was run or written.\n"
-                              "Not in the blocks above: -log_view (PETSc's profile, by the stages beamimpact: set-up, contact, free flight, output (also a sweep's rewrites of its file)\n"
-                              "and modal reference (-reference modal)).\n"));
+  PetscCall(
+    PetscPrintf(comm, "\n-help lists every option of every task above, with its default; nothing was run or written.\n"
+                      "Not in the blocks above: -log_view (PETSc's profile, by the stages beamimpact: set-up, contact, "
+                      "free flight, output (also a sweep's rewrites of its file)\n"
+                      "and modal reference (-reference modal)).\n"));
   PetscFunctionReturn(0);
 }
 
@@ -332,7 +384,9 @@ PetscErrorCode OutputCheckNotAnInput(MPI_Comm comm, const std::string &out)
   PetscCall(RunInputFiles(&inputs));
   for (const InputFile &f : inputs)
     PetscCheck(stat(f.path.c_str(), &i) != 0 || i.st_dev != o.st_dev || i.st_ino != o.st_ino, comm, PETSC_ERR_FILE_OPEN,
-               "-output %s is not allowed: it is an input of this run (%s %s); it would be replaced by the results. Give another -output", out.c_str(), f.option.c_str(), f.path.c_str());
+               "-output %s is not allowed: it is an input of this run (%s %s); it would be replaced by the results. "
+               "Give another -output",
+               out.c_str(), f.option.c_str(), f.path.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -354,7 +408,10 @@ PetscErrorCode OutputCheckNotLocked(MPI_Comm comm, const std::string &out)
     }
   }
   PetscCallMPI(MPI_Bcast(&held, 1, MPI_INT, 0, comm)); // rank 0's try done before the sweep's own lock
-  PetscCheck(!held, comm, PETSC_ERR_FILE_OPEN, "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose another -output", out.c_str(), lock.c_str());
+  PetscCheck(!held, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is being written by another sweep that is still running (%s is held); wait for it or choose "
+             "another -output",
+             out.c_str(), lock.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -371,21 +428,33 @@ PetscErrorCode OutputCheckKind(MPI_Comm comm, std::string *out, const char *task
   PetscFunctionBeginUser;
   if (lstat(out->c_str(), &st) != 0) PetscFunctionReturn(0); // a new name
   if (S_ISLNK(st.st_mode)) {
-    PetscCheck(stat(out->c_str(), &target) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to nothing (a name that does not exist); give the file's own name",
+    PetscCheck(stat(out->c_str(), &target) == 0, comm, PETSC_ERR_FILE_OPEN,
+               "-output %s is not allowed: it is a symbolic link to nothing (a name that does not exist); give the "
+               "file's own name",
                out->c_str());
-    char             *real = realpath(out->c_str(), NULL); // NULL for a link into /proc (/dev/stdout: a pipe)
+    char             *real     = realpath(out->c_str(), NULL); // NULL for a link into /proc (/dev/stdout: a pipe)
     const std::string resolved = real ? real : "";
     free(real);
-    PetscCheck(S_ISREG(target.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a symbolic link to %s%s, not a file; beamimpact writes only to a regular file or a new name%s",
-               out->c_str(), resolved.empty() ? "" : (resolved + ", ").c_str(), FileKind(target.st_mode), S_ISDIR(target.st_mode) ? "" : " (-output none writes nothing)");
-    PetscCheck(!resolved.empty(), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the file its symbolic link names cannot be resolved; give the file's own name", out->c_str());
+    PetscCheck(S_ISREG(target.st_mode), comm, PETSC_ERR_FILE_OPEN,
+               "-output %s is not allowed: it is a symbolic link to %s%s, not a file; beamimpact writes only to a "
+               "regular file or a new name%s",
+               out->c_str(), resolved.empty() ? "" : (resolved + ", ").c_str(), FileKind(target.st_mode),
+               S_ISDIR(target.st_mode) ? "" : " (-output none writes nothing)");
+    PetscCheck(!resolved.empty(), comm, PETSC_ERR_FILE_OPEN,
+               "-output %s is not allowed: the file its symbolic link names cannot be resolved; give the file's own "
+               "name",
+               out->c_str());
     *out = resolved;
     PetscFunctionReturn(0);
   }
-  PetscCheck(!S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: it is a directory; give a file name (e.g. %s%s%s.h5)", out->c_str(), out->c_str(), out->back() == '/' ? "" : "/", task);
+  PetscCheck(!S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: it is a directory; give a file name (e.g. %s%s%s.h5)", out->c_str(),
+             out->c_str(), out->back() == '/' ? "" : "/", task);
   PetscCheck(S_ISREG(st.st_mode), comm, PETSC_ERR_FILE_OPEN,
-             "-output %s is not allowed: it is %s, not a file; beamimpact writes its results whole beside it and renames them into place, which would replace %s itself. Use -output none to write nothing",
-             out->c_str(), FileKind(st.st_mode), S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) ? "the FIFO or socket" : "the device");
+             "-output %s is not allowed: it is %s, not a file; beamimpact writes its results whole beside it and "
+             "renames them into place, which would replace %s itself. Use -output none to write nothing",
+             out->c_str(), FileKind(st.st_mode),
+             S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) ? "the FIFO or socket" : "the device");
   PetscFunctionReturn(0);
 }
 
@@ -407,7 +476,8 @@ PetscErrorCode OutputCheckNotInParts(MPI_Comm comm, const std::string &out, cons
   const std::string file  = canonical.substr(0, canonical.size() - ext.size());
   const bool        sweep = lstat((canonical + "/lock").c_str(), &st) == 0 || lstat(file.c_str(), &st) == 0;
   PetscCheck(!sweep, comm, PETSC_ERR_FILE_OPEN,
-             "-output %s is not allowed: it is inside %s, the journal directory of a sweep writing %s (its lock and its journals live there); give a name outside it",
+             "-output %s is not allowed: it is inside %s, the journal directory of a sweep writing %s (its lock and "
+             "its journals live there); give a name outside it",
              out.c_str(), canonical.c_str(), file.c_str());
   PetscFunctionReturn(0);
 }
@@ -455,22 +525,33 @@ PetscErrorCode OutputCheck(MPI_Comm comm, std::string *out, const char *task)
   PetscCall(OutputCheckKind(comm, out, task));
   const size_t      slash = out->find_last_of('/');
   const std::string dir   = slash == std::string::npos ? "." : (slash == 0 ? "/" : out->substr(0, slash));
-  PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "-output %s is not allowed: the directory %s does not exist or is not writable", given.c_str(), dir.c_str());
+  PetscCheck(access(dir.c_str(), W_OK) == 0, comm, PETSC_ERR_FILE_OPEN,
+             "-output %s is not allowed: the directory %s does not exist or is not writable", given.c_str(),
+             dir.c_str());
   PetscCall(OutputCheckNotInParts(comm, given, dir));
   PetscCall(OutputCheckNotAnInput(comm, *out));
   PetscCall(OutputCheckNotLocked(comm, *out));
   PetscCall(ResultsFileInspect(*out, &info));
   PetscCheck(!info.exists || info.size != 0, comm, PETSC_ERR_FILE_OPEN,
-             "-output %s is not allowed: it exists and is empty, not a results file of beamimpact (an empty file may be another program's lock or marker); -task %s will not replace it "
-             "(-output_overwrite neither): give another -output, remove the file first, or -output none to write nothing",
+             "-output %s is not allowed: it exists and is empty, not a results file of beamimpact (an empty file may "
+             "be another program's lock or marker); -task %s will not replace it "
+             "(-output_overwrite neither): give another -output, remove the file first, or -output none to write "
+             "nothing",
              given.c_str(), task);
   PetscCheck(!info.exists || info.Ours(), comm, PETSC_ERR_FILE_OPEN,
-             "-output %s is not allowed: it exists and is %s, not a results file of beamimpact; -task %s will not replace it (-output_overwrite neither): give another -output, or remove the file first",
+             "-output %s is not allowed: it exists and is %s, not a results file of beamimpact; -task %s will not "
+             "replace it (-output_overwrite neither): give another -output, or remove the file first",
              given.c_str(), info.hdf5 ? "an HDF5 file of another program" : "not an HDF5 file", task);
   PetscCheck(info.task.empty() || info.task == task || overwrite, comm, PETSC_ERR_FILE_OPEN,
-             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or -output_overwrite)", given.c_str(), info.task.c_str(), task);
+             "-output %s holds the results of -task %s: -task %s will not replace them (give another -output, or "
+             "-output_overwrite)",
+             given.c_str(), info.task.c_str(), task);
   PetscCall(OutputCheckDescription(comm, *out, task));
-  if (given != *out) PetscCall(PetscPrintf(comm, "note: -output %s is a symbolic link: the results go to the file it names, %s (the link stays)\n", given.c_str(), out->c_str()));
+  if (given != *out)
+    PetscCall(
+      PetscPrintf(comm,
+                  "note: -output %s is a symbolic link: the results go to the file it names, %s (the link stays)\n",
+                  given.c_str(), out->c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -486,17 +567,23 @@ const OptionModule &TaskOptionTable()
       "beamimpact: task and output",
       {
         OptionChoice("-task", "What to compute", names, Tasks[0].name),
-        OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing): a regular file or a new name, never a device, FIFO, socket, "
-                              "directory, empty file or a file inside a sweep's FILE.h5.parts; a link to a results file is followed"),
+        OptionText("-output", "HDF5 file to write (default: <task>.h5; 'none' writes nothing): a regular file or a new "
+                              "name, never a device, FIFO, socket, "
+                              "directory, empty file or a file inside a sweep's FILE.h5.parts; a link to a results "
+                              "file is followed"),
         OptionFlag("-output_overwrite", "Let -output replace a file another task wrote"),
-        OptionFlag("-allow_unused_options", "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
+        OptionFlag("-allow_unused_options",
+                   "An unknown option (read by no task: a typo) becomes a warning instead of an error"),
         OptionFlag("-error_traceback", "PETSc's full traceback on errors instead of the one-line message"),
         OptionChoice("-help_markdown",
                      "Print a reference generated from the program's tables, as Markdown, and run nothing: "
                      "options (every option's row, docs/options.md) or results (every task's columns, "
                      "docs/results.md)",
                      {"options", "results"}, "options"),
-        OptionReal("-max_memory", "GB", "Refuse a run whose largest allocations (a grid's state and modes, the flight's series) are estimated beyond this (default half of the physical memory)", "",
+        OptionReal("-max_memory", "GB",
+                   "Refuse a run whose largest allocations (a grid's state and modes, the flight's series) are "
+                   "estimated beyond this (default half of the physical memory)",
+                   "",
                    Positive()), // no fixed default: the machine's
       },
     };
@@ -534,7 +621,8 @@ PetscErrorCode RunTaskOptions(MPI_Comm comm, PetscInt *task, std::string *out, s
   if (markdown) *markdown = set_reference ? reference : std::string();
   if (task) *task = t;
   if (out) {
-    PetscCheck(!set_output || !output.empty(), comm, PETSC_ERR_ARG_WRONG, "-output needs a file name (or 'none' to write nothing); it was given empty");
+    PetscCheck(!set_output || !output.empty(), comm, PETSC_ERR_ARG_WRONG,
+               "-output needs a file name (or 'none' to write nothing); it was given empty");
     *out = set_output ? output : std::string(Tasks[t].name) + ".h5";
     if (*out == "none") out->clear();
   }

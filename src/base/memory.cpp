@@ -24,8 +24,10 @@ PetscErrorCode MemoryCheck(MPI_Comm comm, double need, const std::string &what, 
 {
   const double limit = MemoryLimit();
   PetscFunctionBeginUser;
-  PetscCheck(need <= limit, comm, PETSC_ERR_MEM, "%s would need about %.3g GB, above the limit of %.3g GB (-max_memory, default half of the physical memory): %s, or raise -max_memory", what.c_str(),
-             need / 1e9, limit / 1e9, remedy.c_str());
+  PetscCheck(need <= limit, comm, PETSC_ERR_MEM,
+             "%s would need about %.3g GB, above the limit of %.3g GB (-max_memory, default half of the physical "
+             "memory): %s, or raise -max_memory",
+             what.c_str(), need / 1e9, limit / 1e9, remedy.c_str());
   PetscFunctionReturn(0);
 }
 

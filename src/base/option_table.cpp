@@ -66,17 +66,20 @@ std::string OptionSpec::Allowed() const
 {
   const std::string u = unit.empty() || unit == "1" ? "" : " (" + unit + ")";
   switch (kind) {
-  case OptionKind::Real: return "it must be " + (range_text.empty() ? range.Text() : range_text) + u;
-  case OptionKind::Int: return "it must be a whole number " + (range_text.empty() ? range.Text() : range_text);
+  case OptionKind::Real:
+    return "it must be " + (range_text.empty() ? range.Text() : range_text) + u;
+  case OptionKind::Int:
+    return "it must be a whole number " + (range_text.empty() ? range.Text() : range_text);
   case OptionKind::RealList:
-    return "it takes " + CountText() + " separated by commas, each " + (range_text.empty() ? range.Text() : range_text) +
-           u;
+    return "it takes " + CountText() + " separated by commas, each " +
+           (range_text.empty() ? range.Text() : range_text) + u;
   case OptionKind::Choice: {
     std::string s;
     for (const std::string &c : choices) s += (s.empty() ? "" : ", ") + c;
     return "use one of " + s + (range_text.empty() ? "" : " (" + range_text + ")");
   }
-  default: return range_text.empty() ? "see -help" : range_text;
+  default:
+    return range_text.empty() ? "see -help" : range_text;
   }
 }
 
@@ -128,10 +131,12 @@ OptionSpec OptionNeeds(OptionSpec s, std::vector<std::string> needs)
   return s;
 }
 
-OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max, OptionRange range)
+OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max,
+                      OptionRange range)
 {
   OptionSpec s;
-  s.name = name, s.kind = OptionKind::RealList, s.unit = unit, s.help = help, s.count_min = count_min, s.count_max = count_max, s.range = range;
+  s.name = name, s.kind = OptionKind::RealList, s.unit = unit, s.help = help, s.count_min = count_min,
+  s.count_max = count_max, s.range = range;
   return s;
 }
 
@@ -192,7 +197,8 @@ std::string ShortestText(double v)
     if (std::strtod(buf, nullptr) == v || std::isnan(v)) break;
   }
   // a whole number %g puts in exponent form (1.17640458049676e+16): its digits when shorter
-  if (std::isfinite(v) && v == std::floor(v) && std::snprintf(whole, sizeof whole, "%.0f", v) < (int)std::strlen(buf)) return whole;
+  if (std::isfinite(v) && v == std::floor(v) && std::snprintf(whole, sizeof whole, "%.0f", v) < (int)std::strlen(buf))
+    return whole;
   return buf;
 }
 
@@ -257,7 +263,10 @@ bool NeedMet(const NeedCondition &n, const OptionUsed &o)
 }
 
 // "-beam_theory timoshenko", "-impact_offset not 0", "-grip"
-std::string NeedText(const NeedCondition &n) { return n.other + (n.has_value ? (n.negated ? " not " : " ") + n.value : ""); }
+std::string NeedText(const NeedCondition &n)
+{
+  return n.other + (n.has_value ? (n.negated ? " not " : " ") + n.value : "");
+}
 
 // The options given that a run found without effect for reasons no row states (OptionWithoutEffectSet).
 std::map<std::string, OptionWithoutEffect> &NotedLog()
@@ -286,8 +295,8 @@ std::vector<OptionWithoutEffect> OptionsWithoutEffect()
       std::vector<std::string> others;
       bool                     met = false, known = false;
       for (size_t a = 0, b; a <= need.size(); a = b + 1) {
-        b                     = std::min(need.find('|', a), need.size());
-        const NeedCondition n = NeedParse(need.substr(a, b - a));
+        b                      = std::min(need.find('|', a), need.size());
+        const NeedCondition n  = NeedParse(need.substr(a, b - a));
         const auto          it = used.find(n.other);
         why += (a ? " or " : "") + NeedText(n);
         others.push_back(n.other);
@@ -304,7 +313,8 @@ std::vector<OptionWithoutEffect> OptionsWithoutEffect()
   for (const auto &[name, o] : NotedLog()) { // given now, and not said above
     PetscBool given = PETSC_FALSE;
     if (PetscOptionsHasName(NULL, NULL, name.c_str(), &given) || !given) continue;
-    if (std::none_of(out.begin(), out.end(), [&](const OptionWithoutEffect &e) { return e.name == name; })) out.push_back({name, OptionWritten(name.c_str()), o.why, o.needs});
+    if (std::none_of(out.begin(), out.end(), [&](const OptionWithoutEffect &e) { return e.name == name; }))
+      out.push_back({name, OptionWritten(name.c_str()), o.why, o.needs});
   }
   return out;
 }
@@ -316,10 +326,13 @@ PetscErrorCode Row(const OptionModule &m, const char *name, OptionKind kind, con
 {
   PetscFunctionBeginUser;
   *s = m.Find(name);
-  PetscCheck(*s, PETSC_COMM_SELF, PETSC_ERR_PLIB, "option %s is not in the option table of module '%s'", name, m.name.c_str());
-  const bool text_like = kind == OptionKind::Text && ((*s)->kind == OptionKind::File || (*s)->kind == OptionKind::Choice);
-  PetscCheck((*s)->kind == kind || text_like, PETSC_COMM_SELF, PETSC_ERR_PLIB, "option %s is a %s in the table of module '%s', read as a %s", name, OptionKindName((*s)->kind), m.name.c_str(),
-             OptionKindName(kind));
+  PetscCheck(*s, PETSC_COMM_SELF, PETSC_ERR_PLIB, "option %s is not in the option table of module '%s'", name,
+             m.name.c_str());
+  const bool text_like = kind == OptionKind::Text &&
+                         ((*s)->kind == OptionKind::File || (*s)->kind == OptionKind::Choice);
+  PetscCheck((*s)->kind == kind || text_like, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "option %s is a %s in the table of module '%s', read as a %s", name, OptionKindName((*s)->kind),
+             m.name.c_str(), OptionKindName(kind));
   PetscFunctionReturn(0);
 }
 
@@ -339,14 +352,15 @@ void Log(const OptionSpec &s, const std::string &text, double number, const std:
   u.given       = given ? true : false;
 }
 
-
 // A number logged with its text, unless its entry already holds this value, given or not (a
 // sweep's point reading its module again): the text would be the same.
 void LogNumber(const OptionSpec &s, double v, PetscBool given)
 {
   const auto &log = UsedLog();
   const auto  it  = log.find(s.name);
-  if (it != log.end() && it->second.kind == s.kind && it->second.list.empty() && !std::memcmp(&it->second.number, &v, sizeof v) && it->second.given == (given ? true : false)) return;
+  if (it != log.end() && it->second.kind == s.kind && it->second.list.empty() &&
+      !std::memcmp(&it->second.number, &v, sizeof v) && it->second.given == (given ? true : false))
+    return;
   Log(s, ShortestText(v), v, {}, given);
 }
 
@@ -373,8 +387,10 @@ PetscErrorCode CheckReal(const OptionSpec &s, const std::string &written, double
 {
   PetscFunctionBeginUser;
   // nan and inf parse as numbers but are none here: said so, before the range
-  PetscCheck(std::isfinite(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(), FiniteAllowed(s).c_str());
-  PetscCheck(s.range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(), s.Allowed().c_str());
+  PetscCheck(std::isfinite(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s", s.name.c_str(),
+             written.c_str(), FiniteAllowed(s).c_str());
+  PetscCheck(s.range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s", s.name.c_str(),
+             written.c_str(), s.Allowed().c_str());
   PetscFunctionReturn(0);
 }
 
@@ -385,7 +401,8 @@ PetscErrorCode CheckHasValue(PetscOptionItems *PetscOptionsObject, const OptionS
   PetscFunctionBeginUser;
   if (!written.empty()) PetscFunctionReturn(0);
   PetscCall(PetscOptionsHasName(PetscOptionsObject->options, PetscOptionsObject->prefix, s.name.c_str(), &present));
-  PetscCheck(!present, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s is given without a value: %s", s.name.c_str(), s.Allowed().c_str());
+  PetscCheck(!present, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s is given without a value: %s", s.name.c_str(),
+             s.Allowed().c_str());
   PetscFunctionReturn(0);
 }
 
@@ -405,7 +422,8 @@ std::string HelpForPetsc(PetscOptionItems *PetscOptionsObject, const OptionSpec 
 
 } // namespace
 
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscReal *value, PetscBool *set)
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           PetscReal *value, PetscBool *set)
 {
   const OptionSpec *s;
   PetscBool         given = PETSC_FALSE;
@@ -416,7 +434,8 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   double            v       = 0;
   PetscCall(CheckHasValue(PetscOptionsObject, *s, written));
   if (!written.empty()) {
-    PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: it must be a number; %s", name, written.c_str(), s->Allowed().c_str());
+    PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "%s %s is not allowed: it must be a number; %s", name, written.c_str(), s->Allowed().c_str());
     PetscCall(CheckReal(*s, written, v));
   }
   PetscCall(PetscOptionsReal(name, HelpForPetsc(PetscOptionsObject, *s).c_str(), "", *value, value, &given));
@@ -426,7 +445,8 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscInt *value, PetscBool *set)
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           PetscInt *value, PetscBool *set)
 {
   const OptionSpec *s;
   PetscBool         given = PETSC_FALSE;
@@ -437,8 +457,11 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   PetscCall(CheckHasValue(PetscOptionsObject, *s, written));
   if (!written.empty()) {
     double v = 0;
-    PetscCheck(ParseReal(written, &v) && std::isfinite(v) && v == std::floor(v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: %s", name, written.c_str(), s->Allowed().c_str());
-    PetscCheck(std::abs(v) <= (double)PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: it is beyond the largest whole number this build of PETSc holds (%" PetscInt_FMT "); %s",
+    PetscCheck(ParseReal(written, &v) && std::isfinite(v) && v == std::floor(v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "%s %s is not allowed: %s", name, written.c_str(), s->Allowed().c_str());
+    PetscCheck(std::abs(v) <= (double)PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "%s %s is not allowed: it is beyond the largest whole number this build of PETSc holds (%" PetscInt_FMT
+               "); %s",
                name, written.c_str(), (PetscInt)PETSC_MAX_INT, s->Allowed().c_str());
     PetscCall(CheckReal(*s, written, v));
     // PETSc parses "1e3" as an integer only in some versions: set the plain digits it reads.
@@ -452,7 +475,8 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscBool *value, PetscBool *set)
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           PetscBool *value, PetscBool *set)
 {
   const OptionSpec *s;
   PetscBool         given = PETSC_FALSE;
@@ -465,7 +489,8 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscInt *index, PetscBool *set)
+PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                                 PetscInt *index, PetscBool *set)
 {
   const OptionSpec *s;
   PetscBool         given = PETSC_FALSE;
@@ -476,17 +501,20 @@ PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const Opt
   if (!written.empty()) {
     bool known = false;
     for (const std::string &c : s->choices) known = known || strcasecmp(c.c_str(), written.c_str()) == 0;
-    PetscCheck(known, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "%s %s is not known: %s", name, written.c_str(), s->Allowed().c_str());
+    PetscCheck(known, PETSC_COMM_SELF, PETSC_ERR_ARG_UNKNOWN_TYPE, "%s %s is not known: %s", name, written.c_str(),
+               s->Allowed().c_str());
   }
   std::vector<const char *> list;
   for (const std::string &c : s->choices) list.push_back(c.c_str());
-  PetscCall(PetscOptionsEList(name, s->help.c_str(), "", list.data(), (PetscInt)list.size(), list[*index], index, &given));
+  PetscCall(
+    PetscOptionsEList(name, s->help.c_str(), "", list.data(), (PetscInt)list.size(), list[*index], index, &given));
   Log(*s, s->choices[*index], (double)*index, {}, given);
   if (set) *set = given;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::string *value, PetscBool *set)
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           std::string *value, PetscBool *set)
 {
   const OptionSpec *s;
 
@@ -501,13 +529,16 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
     PetscFunctionReturn(0);
   }
   PetscBool         given = PETSC_FALSE;
-  std::vector<char> buf(std::max<size_t>(PETSC_MAX_PATH_LEN, OptionWritten(name).size() + 1) + 1, 0); // a long text (a sweep's axes) is read whole
+  std::vector<char> buf(std::max<size_t>(PETSC_MAX_PATH_LEN, OptionWritten(name).size() + 1) + 1,
+                        0); // a long text (a sweep's axes) is read whole
   std::snprintf(buf.data(), buf.size(), "%s", value->c_str());
   PetscCall(PetscOptionsString(name, s->help.c_str(), "", buf.data(), buf.data(), buf.size(), &given));
   if (given) {
     const std::string written = OptionWritten(name);
-    PetscCheck(written.size() < buf.size() - 1, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: the value is longer than %d characters", name, (int)buf.size() - 2);
-    PetscCheck(!(s->kind == OptionKind::File && buf[0] == '\0'), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s needs a file name", name);
+    PetscCheck(written.size() < buf.size() - 1, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "%s: the value is longer than %d characters", name, (int)buf.size() - 2);
+    PetscCheck(!(s->kind == OptionKind::File && buf[0] == '\0'), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "%s needs a file name", name);
   }
   *value = buf.data();
   Log(*s, *value, 0, {}, given);
@@ -515,7 +546,8 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::vector<PetscReal> *value, PetscBool *set)
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           std::vector<PetscReal> *value, PetscBool *set)
 {
   const OptionSpec *s;
   PetscBool         present = PETSC_FALSE;
@@ -529,27 +561,37 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   if (PrintsHelp(PetscOptionsObject)) {
     std::string def;
     for (PetscReal v : *value) def += (def.empty() ? "" : ",") + Number(v);
-    PetscCall((*PetscHelpPrintf)(PetscOptionsObject->comm, "  %s <%s>: %s ()\n", name, def.empty() ? "none" : def.c_str(), HelpWithUnit(*s).c_str()));
+    PetscCall((*PetscHelpPrintf)(PetscOptionsObject->comm, "  %s <%s>: %s ()\n", name,
+                                 def.empty() ? "none" : def.c_str(), HelpWithUnit(*s).c_str()));
   }
   if (present) {
     std::vector<double> parsed;
-    PetscCheck(!written.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s is given without values: %s", name, s->Allowed().c_str());
+    PetscCheck(!written.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s is given without values: %s", name,
+               s->Allowed().c_str());
     size_t a = 0;
     for (;;) {
       const size_t      b    = written.find(',', a);
       const std::string item = written.substr(a, b == std::string::npos ? std::string::npos : b - a);
       double            v    = 0;
-      PetscCheck(!item.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: an empty value between commas; %s", name, written.c_str(), s->Allowed().c_str());
-      PetscCheck(ParseReal(item, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: '%s' is not a number; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
-      PetscCheck(std::isfinite(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s is not a finite number; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
-      PetscCheck(s->range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s; %s", name, written.c_str(), item.c_str(), s->Allowed().c_str());
+      PetscCheck(!item.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+                 "%s %s is not allowed: an empty value between commas; %s", name, written.c_str(),
+                 s->Allowed().c_str());
+      PetscCheck(ParseReal(item, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+                 "%s %s is not allowed: '%s' is not a number; %s", name, written.c_str(), item.c_str(),
+                 s->Allowed().c_str());
+      PetscCheck(std::isfinite(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+                 "%s %s is not allowed: %s is not a finite number; %s", name, written.c_str(), item.c_str(),
+                 s->Allowed().c_str());
+      PetscCheck(s->range.Contains(v), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: %s; %s", name,
+                 written.c_str(), item.c_str(), s->Allowed().c_str());
       parsed.push_back(v);
       if (b == std::string::npos) break;
       a = b + 1;
     }
     const PetscInt n = (PetscInt)parsed.size();
-    PetscCheck(!(s->count_min > 0 && n < s->count_min) && !(s->count_max > 0 && n > s->count_max), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed (%" PetscInt_FMT " value%s): %s", name,
-               written.c_str(), n, n == 1 ? "" : "s", s->Allowed().c_str());
+    PetscCheck(!(s->count_min > 0 && n < s->count_min) && !(s->count_max > 0 && n > s->count_max), PETSC_COMM_SELF,
+               PETSC_ERR_ARG_WRONG, "%s %s is not allowed (%" PetscInt_FMT " value%s): %s", name, written.c_str(), n,
+               n == 1 ? "" : "s", s->Allowed().c_str());
     *value = std::vector<PetscReal>(parsed.begin(), parsed.end());
   }
   std::string text;
@@ -576,11 +618,12 @@ PetscErrorCode OptionsCheckGiven(const OptionModule &m)
     if (written.empty()) continue; // not given, or a flag
     if (s.kind == OptionKind::Real) {
       double v;
-      PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: it must be a number; %s", s.name.c_str(), written.c_str(), s.Allowed().c_str());
+      PetscCheck(ParseReal(written, &v), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+                 "%s %s is not allowed: it must be a number; %s", s.name.c_str(), written.c_str(), s.Allowed().c_str());
       PetscCall(CheckReal(s, written, v));
     } else if (s.kind == OptionKind::Choice)
-      PetscCheck(std::find(s.choices.begin(), s.choices.end(), written) != s.choices.end(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(),
-                 s.Allowed().c_str());
+      PetscCheck(std::find(s.choices.begin(), s.choices.end(), written) != s.choices.end(), PETSC_COMM_SELF,
+                 PETSC_ERR_ARG_WRONG, "%s %s is not allowed: %s", s.name.c_str(), written.c_str(), s.Allowed().c_str());
   }
   PetscFunctionReturn(0);
 }

@@ -25,7 +25,15 @@
 
 namespace beamimpact {
 
-enum class OptionKind { Real, Int, Bool, Text, Choice, RealList, File };
+enum class OptionKind {
+  Real,
+  Int,
+  Bool,
+  Text,
+  Choice,
+  RealList,
+  File
+};
 const char *OptionKindName(OptionKind k);
 
 // The values a number may take: [lo, hi], each end open or closed (NaN is never allowed; an
@@ -38,46 +46,53 @@ struct OptionRange {
   std::string Text() const;
 };
 OptionRange AnyNumber();
-OptionRange Positive();                                // > 0
-OptionRange NonNegative();                             // >= 0
-OptionRange AtLeast(double lo);                        // >= lo
+OptionRange Positive();         // > 0
+OptionRange NonNegative();      // >= 0
+OptionRange AtLeast(double lo); // >= lo
 OptionRange Between(double lo, double hi, bool lo_open = false, bool hi_open = false);
 
 struct OptionSpec {
-  std::string              name;  // with the dash: "-ball_k"
-  OptionKind               kind = OptionKind::Real;
-  std::string              unit;  // of a number ("N/m"; "1": dimensionless); "" for text, files, flags
-  std::string              help;  // one sentence; -help prints it with the unit
-  std::string              def;   // the default as -help prints it ("2e4", "linear"); "" when none (not given: the feature is off)
-  OptionRange              range;             // Real, Int, RealList values
-  std::vector<std::string> choices;           // Choice: the allowed names (index 0 first)
+  std::string name; // with the dash: "-ball_k"
+  OptionKind  kind = OptionKind::Real;
+  std::string unit;  // of a number ("N/m"; "1": dimensionless); "" for text, files, flags
+  std::string help;  // one sentence; -help prints it with the unit
+  std::string def;   // the default as -help prints it ("2e4", "linear"); "" when none (not given: the feature is off)
+  OptionRange range; // Real, Int, RealList values
+  std::vector<std::string> choices;                      // Choice: the allowed names (index 0 first)
   PetscInt                 count_min = 0, count_max = 0; // RealList: the number of values allowed (0: any)
-  std::string              range_text;        // what is allowed, in words, when range.Text() is not enough (a Choice: why these)
+  std::string range_text; // what is allowed, in words, when range.Text() is not enough (a Choice: why these)
   // When the option acts at all: every condition must hold, each "-other" (that option given),
   // "-other=value" or "-other!=value" (that option's value as used, e.g.
   // "-beam_theory=timoshenko", "-ball_friction!=0": a number compared as a number), or
   // alternatives "A|B" (one of them holds). Empty: always. An option given where a condition
   // fails has no effect: a note (OptionsWithoutEffect).
   std::vector<std::string> needs;
-  std::string Allowed() const;   // the words of an error message: "it must be > 0 (N/m)"
-  std::string CountText() const; // a RealList's number of values: "2 values", "one or more values"
+  std::string              Allowed() const;   // the words of an error message: "it must be > 0 (N/m)"
+  std::string              CountText() const; // a RealList's number of values: "2 values", "one or more values"
 };
 
 // Rows, built readably (the row's fields in order: name, unit, help, default, range).
-OptionSpec OptionReal(const char *name, const char *unit, const char *help, const char *def, OptionRange range = AnyNumber());
+OptionSpec OptionReal(const char *name, const char *unit, const char *help, const char *def,
+                      OptionRange range = AnyNumber());
 OptionSpec OptionInt(const char *name, const char *help, const char *def, OptionRange range = AnyNumber());
 OptionSpec OptionFlag(const char *name, const char *help);
 OptionSpec OptionText(const char *name, const char *help, const char *def = "");
 OptionSpec OptionFile(const char *name, const char *help);
 OptionSpec OptionChoice(const char *name, const char *help, std::vector<std::string> choices, const char *def);
-OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max, OptionRange range = AnyNumber());
+OptionSpec OptionList(const char *name, const char *unit, const char *help, PetscInt count_min, PetscInt count_max,
+                      OptionRange range = AnyNumber());
 // The row with its conditions (OptionSpec::needs): OptionNeeds(OptionReal(...), {"-grip"}).
 OptionSpec OptionNeeds(OptionSpec s, std::vector<std::string> needs);
 
 struct OptionModule {
   OptionModule() = default;
-  OptionModule(std::string name_, std::string title_, std::vector<OptionSpec> options_, bool petsc_ = false, std::vector<std::string> prefixes_ = {})
-    : name(std::move(name_)), title(std::move(title_)), options(std::move(options_)), petsc(petsc_), prefixes(std::move(prefixes_))
+  OptionModule(std::string name_, std::string title_, std::vector<OptionSpec> options_, bool petsc_ = false,
+               std::vector<std::string> prefixes_ = {}) :
+    name(std::move(name_)),
+    title(std::move(title_)),
+    options(std::move(options_)),
+    petsc(petsc_),
+    prefixes(std::move(prefixes_))
   {
   }
   std::string             name;  // "ball"
@@ -90,22 +105,22 @@ struct OptionModule {
   // close to a known name: a typo).
   bool                     petsc = false;
   std::vector<std::string> prefixes;
-  const OptionSpec *Find(const std::string &option) const; // nullptr if not a row
+  const OptionSpec        *Find(const std::string &option) const; // nullptr if not a row
 };
 
 // The registry of every module's table (app/registry.cpp registers them, once per process; a
 // second registration of the same module is ignored).
-void                                      OptionModuleRegister(const OptionModule *m);
-const std::vector<const OptionModule *>  &OptionModules();
-const OptionSpec                         *OptionSpecFind(const std::string &name); // any module; nullptr if none
-const OptionModule                       *OptionModuleOf(const std::string &name); // the module whose table has it; nullptr if none
+void                                     OptionModuleRegister(const OptionModule *m);
+const std::vector<const OptionModule *> &OptionModules();
+const OptionSpec                        *OptionSpecFind(const std::string &name); // any module; nullptr if none
+const OptionModule *OptionModuleOf(const std::string &name); // the module whose table has it; nullptr if none
 // v as the shortest text that reads back (strtod) as exactly v: "0.06", not %.17g's
 // "0.059999999999999998"; what a user would write, and the same double.
-std::string ShortestText(double v);
-std::vector<std::string>                  OptionNames();                           // every registered name (with the dash), sorted
-std::string                               OptionUnit(const std::string &name);     // "" when unknown or not a number; name with or without dash
+std::string              ShortestText(double v);
+std::vector<std::string> OptionNames();          // every registered name (with the dash), sorted
+std::string OptionUnit(const std::string &name); // "" when unknown or not a number; name with or without dash
 // Whether `name` (with the dash) falls under a prefix of a registered PETSc table (-ts_, -snes_, ...).
-bool                                      OptionIsPetsc(const std::string &name);
+bool OptionIsPetsc(const std::string &name);
 
 // A table no reader reads (PETSc's: `petsc`): each of its number and choice rows given in the
 // options database is checked as a reader checks it (a number, finite, in the row's range; one
@@ -121,9 +136,9 @@ PetscErrorCode OptionModulePrintHelp(MPI_Comm comm, const OptionModule &m);
 // the run record writes them. A later read of the same option replaces its entry.
 struct OptionUsed {
   OptionKind          kind = OptionKind::Real;
-  std::string         unit, text;   // text: the value as a string (numbers %.17g; lists comma-separated)
-  double              number = 0;   // Real, Int, Bool (0/1), Choice (the index)
-  std::vector<double> list;         // RealList
+  std::string         unit, text;    // text: the value as a string (numbers %.17g; lists comma-separated)
+  double              number = 0;    // Real, Int, Bool (0/1), Choice (the index)
+  std::vector<double> list;          // RealList
   bool                given = false; // set in the options database (not the default)
 };
 const std::map<std::string, OptionUsed> &OptionsUsed();
@@ -143,23 +158,30 @@ std::vector<OptionWithoutEffect> OptionsWithoutEffect();
 // no row's `needs` can state (the impact's -ts_rtol under a fixed step: why "the step is fixed:
 // -ts_type modal", needs {"-ts_type", "-ts_adapt_type"}, the options that would give it one). It
 // stays until the run says otherwise: an empty why withdraws it.
-void OptionWithoutEffectSet(const std::string &name, const std::string &why, const std::vector<std::string> &needs = {});
+void OptionWithoutEffectSet(const std::string &name, const std::string &why,
+                            const std::vector<std::string> &needs = {});
 
 // Readers, inside a module's PetscOptionsBegin/End block (PetscOptionsObject is the block's).
 // Each finds `name` in the module's table (an internal error if it is not a row), hands PETSc
 // the help with the unit and *value as the default shown, checks a given value against the row,
 // and logs the value used. *set (may be NULL) says whether the option was given.
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscReal *value, PetscBool *set);
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscInt *value, PetscBool *set);
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscBool *value, PetscBool *set);
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           PetscReal *value, PetscBool *set);
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           PetscInt *value, PetscBool *set);
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           PetscBool *value, PetscBool *set);
 // Text, File and Choice rows: a Choice is checked against the row's choices (the error lists them).
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::string *value, PetscBool *set);
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           std::string *value, PetscBool *set);
 // A Choice row as the index of the choice.
-PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, PetscInt *index, PetscBool *set);
+PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                                 PetscInt *index, PetscBool *set);
 // A RealList row: any length (no fixed limit), each value checked, the count checked against
 // the row, an empty item ("0.5,,0.6") refused. Under -help its line shows *value ("<none>" when
 // empty) as the default.
-PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name, std::vector<PetscReal> *value, PetscBool *set);
+PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &m, const char *name,
+                           std::vector<PetscReal> *value, PetscBool *set);
 
 // The value of option `name` as written in the options database ("" when not set), for messages.
 std::string OptionWritten(const char *name);

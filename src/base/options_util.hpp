@@ -28,7 +28,8 @@ PetscErrorCode OptionsAsString(std::string *all);
 // reported: a task that legitimately does not use them says so itself. An option without effect
 // whose condition names one of `varied` (with the dash: a sweep's axes) is not reported either:
 // it acts at other points.
-PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes = {}, bool strict_solver_options = false, const std::vector<std::string> &varied = {});
+PetscErrorCode OptionsCheckUnused(MPI_Comm comm, const std::vector<std::string> &ignore_prefixes = {},
+                                  bool strict_solver_options = false, const std::vector<std::string> &varied = {});
 
 // The known name closest to `name` (optimal string alignment distance: insertions, deletions,
 // substitutions, swaps of neighbours), "" when none is within max(2, length/5) edits.

@@ -13,7 +13,8 @@ namespace {
 std::string LawHelp()
 {
   std::string s = "Contact law:";
-  for (const ContactLaw *law : ContactLaws()) s += std::string(s.back() == ':' ? " " : "; ") + law->Name() + " (" + law->Summary() + ")";
+  for (const ContactLaw *law : ContactLaws())
+    s += std::string(s.back() == ':' ? " " : "; ") + law->Name() + " (" + law->Summary() + ")";
   return s;
 }
 
@@ -23,7 +24,8 @@ std::string LossFactorHelp()
   std::string elastic;
   for (const ContactLaw *law : ContactLaws())
     if (law->Elastic()) elastic += (elastic.empty() ? "" : ", ") + std::string(law->Name());
-  return "Factor applied to the ACOR of an elastic law (" + elastic + ") for the ball's losses (reported as acor_corrected; a lossy law's acor_corrected is its acor)";
+  return "Factor applied to the ACOR of an elastic law (" + elastic +
+         ") for the ball's losses (reported as acor_corrected; a lossy law's acor_corrected is its acor)";
 }
 
 // The condition of an oblique impact's tangential options (OptionSpec::needs).
@@ -36,26 +38,47 @@ OptionModule BuildBallOptions()
   m.title   = "Ball: mass, speed and contact law (SI units)";
   m.options = {
     OptionReal("-ball_mass", "kg", "Ball mass m_b", "0.042", Positive()),
-    OptionReal("-ball_speed", "m/s", "Incident speed v_i (0: a ball at rest, struck by a swinging bat: -bat_speed)", "1", NonNegative()),
+    OptionReal("-ball_speed", "m/s", "Incident speed v_i (0: a ball at rest, struck by a swinging bat: -bat_speed)",
+               "1", NonNegative()),
     OptionChoice("-ball_law", LawHelp().c_str(), ContactLawNames(), ContactLaws().front()->Name()),
-    OptionReal("-ball_radius", "m", "Ball radius: a compression beyond it is flagged as physically absurd (a sweep's summary counts such points; default: none, no check)", "", Positive()),
+    OptionReal("-ball_radius", "m",
+               "Ball radius: a compression beyond it is flagged as physically absurd (a sweep's summary counts such "
+               "points; default: none, no check)",
+               "", Positive()),
     OptionReal("-ball_loss_factor", "1", LossFactorHelp().c_str(), "0.85", Between(0, 1, true, false)),
     // The oblique impact (docs/model.md "Oblique impacts"): the friction and the ball's inertia
     // act only where the surfaces slide across each other, -impact_offset or -ball_spin not 0
     // (head-on, even with -flight, nothing moves along the tangent), and the tangential
     // compliance only where there is friction.
-    OptionReal("-ball_spin", "rad/s", "Incoming spin about the bat's axis direction (> 0: backspin of the incoming ball, as a fastball; < 0: topspin, as a curveball); needs -ball_radius and a round bat (-beam_profile)", "0"),
-    OptionNeeds(OptionReal("-ball_inertia_factor", "1", "Moment of inertia of the ball I/(m R^2) (0.4: a solid sphere; a baseball about 0.4, a tennis ball about 0.55), for an oblique impact", "0.4", Between(0, 2.0 / 3.0, true, false)), {"-ball_radius", kOblique, "-ball_friction!=0"}),
-    OptionNeeds(OptionReal("-ball_friction", "1", "Coulomb friction coefficient mu of ball on bat, for an oblique impact (0: frictionless)", "0.5", NonNegative()), {"-ball_radius", kOblique}),
-    OptionNeeds(OptionReal("-ball_tangential_cor", "1", "Tangential restitution e_T of the contact's tangential compliance (0: the surfaces leave rolling; baseball on wood about 0.3, Cross & Nathan 2006); not given: no compliance, a rigid grip", "", Between(0, 1, false, true)), {"-ball_radius", kOblique, "-ball_friction!=0"}),
+    OptionReal("-ball_spin", "rad/s",
+               "Incoming spin about the bat's axis direction (> 0: backspin of the incoming ball, as a fastball; < 0: "
+               "topspin, as a curveball); needs -ball_radius and a round bat (-beam_profile)",
+               "0"),
+    OptionNeeds(OptionReal("-ball_inertia_factor", "1",
+                           "Moment of inertia of the ball I/(m R^2) (0.4: a solid sphere; a baseball about 0.4, a "
+                           "tennis ball about 0.55), for an oblique impact",
+                           "0.4", Between(0, 2.0 / 3.0, true, false)),
+                {"-ball_radius", kOblique, "-ball_friction!=0"}),
+    OptionNeeds(OptionReal("-ball_friction", "1",
+                           "Coulomb friction coefficient mu of ball on bat, for an oblique impact (0: frictionless)",
+                           "0.5", NonNegative()),
+                {"-ball_radius", kOblique}),
+    OptionNeeds(OptionReal("-ball_tangential_cor", "1",
+                           "Tangential restitution e_T of the contact's tangential compliance (0: the surfaces leave "
+                           "rolling; baseball on wood about 0.3, Cross & Nathan 2006); not given: no compliance, a "
+                           "rigid grip",
+                           "", Between(0, 1, false, true)),
+                {"-ball_radius", kOblique, "-ball_friction!=0"}),
   };
-  for (const ContactLaw *law : ContactLaws()) m.options.insert(m.options.end(), law->Options().begin(), law->Options().end());
+  for (const ContactLaw *law : ContactLaws())
+    m.options.insert(m.options.end(), law->Options().begin(), law->Options().end());
   return m;
 }
 
 // The rows of one law, read into b's values (numbers, in order) and *in (what was given; the
 // text of file and text rows). in may be null (-help of a law not chosen).
-PetscErrorCode BallLawOptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &M, const ContactLaw &law, BallParams *b, ContactLawInput *in)
+PetscErrorCode BallLawOptionsRead(PetscOptionItems *PetscOptionsObject, const OptionModule &M, const ContactLaw &law,
+                                  BallParams *b, ContactLawInput *in)
 {
   PetscInt i = 0;
 
@@ -63,13 +86,16 @@ PetscErrorCode BallLawOptionsRead(PetscOptionItems *PetscOptionsObject, const Op
   for (const OptionSpec &row : law.Options()) {
     PetscBool set = PETSC_FALSE;
     if (row.kind == OptionKind::Real) {
-      PetscCheck(i < kContactLawMaxValues, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the %s law has more than %d numeric options", law.Name(), kContactLawMaxValues);
+      PetscCheck(i < kContactLawMaxValues, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "the %s law has more than %d numeric options", law.Name(), kContactLawMaxValues);
       PetscCall(OptionsRead(PetscOptionsObject, M, row.name.c_str(), &b->value[i++], &set));
     } else if (row.kind == OptionKind::File || row.kind == OptionKind::Text) {
       std::string text;
       PetscCall(OptionsRead(PetscOptionsObject, M, row.name.c_str(), &text, &set));
       if (set && in) in->text[row.name] = text;
-    } else SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "option %s of the %s law: a law's options are numbers, texts or files", row.name.c_str(), law.Name());
+    } else
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "option %s of the %s law: a law's options are numbers, texts or files",
+              row.name.c_str(), law.Name());
     if (set && in) in->given.push_back(row.name);
   }
   PetscFunctionReturn(0);
@@ -87,8 +113,9 @@ PetscErrorCode BallOtherLawOptions(MPI_Comm comm, const ContactLaw &chosen)
       if (!set) continue;
       std::string own;
       for (const OptionSpec &r : chosen.Options()) own += (own.empty() ? "" : ", ") + r.name;
-      SETERRQ(comm, PETSC_ERR_ARG_INCOMP, "%s is a %s parameter but -ball_law is %s: give -ball_law %s, or the %s law's options (%s)", row.name.c_str(), law->Name(), chosen.Name(), law->Name(),
-              chosen.Name(), own.c_str());
+      SETERRQ(comm, PETSC_ERR_ARG_INCOMP,
+              "%s is a %s parameter but -ball_law is %s: give -ball_law %s, or the %s law's options (%s)",
+              row.name.c_str(), law->Name(), chosen.Name(), law->Name(), chosen.Name(), own.c_str());
     }
   }
   PetscFunctionReturn(0);
@@ -104,9 +131,9 @@ const OptionModule &BallOptionModule()
 
 PetscErrorCode BallParamsFromOptions(MPI_Comm comm, BallParams *b)
 {
-  const OptionModule &M    = BallOptionModule();
-  std::string         name = b->law->Name();
-  PetscBool           help = PETSC_FALSE;
+  const OptionModule &M      = BallOptionModule();
+  std::string         name   = b->law->Name();
+  PetscBool           help   = PETSC_FALSE;
   const ContactLaw   *chosen = nullptr;
   ContactLawInput     in;
   std::string         why;

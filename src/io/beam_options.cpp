@@ -29,10 +29,15 @@ const OptionModule &BeamOptionTable()
     "beam",
     "Beam: geometry, material, section, theory and supports (SI units)",
     {
-      OptionNeeds(OptionReal("-beam_length", "m", "Beam length L; not with a profile or table (they span their rows); not with -strings_frame held (the frame is the head's length)", "1.1", Positive()), {"-strings_frame=none|-strings_frame=beam"}),
+      OptionNeeds(OptionReal("-beam_length", "m",
+                             "Beam length L; not with a profile or table (they span their rows); not with "
+                             "-strings_frame held (the frame is the head's length)",
+                             "1.1", Positive()),
+                  {"-strings_frame=none|-strings_frame=beam"}),
       OptionReal("-beam_thickness", "m", "Thickness a in the direction of motion", "0.006", Positive()),
       OptionReal("-beam_width", "m", "Width b; with E and rho", "0.032", Positive()),
-      OptionReal("-beam_youngs_modulus", "Pa", "Young's modulus E; with rho, a, b, or with -beam_profile", "7e10", Positive()),
+      OptionReal("-beam_youngs_modulus", "Pa", "Young's modulus E; with rho, a, b, or with -beam_profile", "7e10",
+                 Positive()),
       OptionReal("-beam_density", "kg/m^3", "Density rho; with E, a, b, or with -beam_profile", "2700", Positive()),
       OptionReal("-beam_mass", "kg", "Total mass M; with -beam_youngs_over_density and a", "", Positive()),
       OptionReal("-beam_youngs_over_density", "N m/kg", "E/rho; with -beam_mass and a", "", Positive()),
@@ -42,38 +47,115 @@ const OptionModule &BeamOptionTable()
                                   "optional inner diameter, linear between rows), with E and rho"),
       OptionFile("-beam_properties", "Section properties along the beam: file of rows 'x EI mu [kappaGA rhoI [GJ "
                                      "rhoJ]]' (SI; linear between rows; GJ, rhoJ for -beam_torsion)"),
-      OptionChoice("-beam_theory", "Beam theory (model/beam_theory.hpp): euler (Euler-Bernoulli), timoshenko (shear and rotary inertia)", TheoryChoices(), "euler"),
-      OptionNeeds(OptionReal("-beam_shear_modulus", "Pa", "Shear modulus G: Timoshenko with E, rho (uniform or profile)", "", Positive()), {"-beam_theory=timoshenko"}),
+      OptionChoice("-beam_theory",
+                   "Beam theory (model/beam_theory.hpp): euler (Euler-Bernoulli), timoshenko (shear and rotary "
+                   "inertia)",
+                   TheoryChoices(), "euler"),
+      OptionNeeds(OptionReal("-beam_shear_modulus", "Pa",
+                             "Shear modulus G: Timoshenko with E, rho (uniform or profile)", "", Positive()),
+                  {"-beam_theory=timoshenko"}),
       [] {
-        OptionSpec s = OptionReal("-beam_shear_coefficient", "1", "Shear coefficient kappa; 0: Cowper's by section (round tube, rectangle)", "0", Between(0, 1));
+        OptionSpec s = OptionReal("-beam_shear_coefficient", "1",
+                                  "Shear coefficient kappa; 0: Cowper's by section (round tube, rectangle)", "0",
+                                  Between(0, 1));
         s.range_text = "in (0, 1], or 0: Cowper's by section";
         s.needs      = {"-beam_theory=timoshenko"};
         return s;
       }(),
-      OptionNeeds(OptionReal("-beam_poisson", "1", "Poisson's ratio nu (Cowper's shear coefficient; the barrel's shell)", "0.3", Between(-1, 0.5, true, true)), {"-beam_theory=timoshenko|-beam_shell"}),
-      OptionNeeds(OptionInt("-beam_nodes", "Number of grid nodes N (not with -strings_frame held: the bed's -strings_nodes)", "41", AtLeast(5)), {"-strings_frame=none|-strings_frame=beam"}),
+      OptionNeeds(OptionReal("-beam_poisson", "1",
+                             "Poisson's ratio nu (Cowper's shear coefficient; the barrel's shell)", "0.3",
+                             Between(-1, 0.5, true, true)),
+                  {"-beam_theory=timoshenko|-beam_shell"}),
+      OptionNeeds(OptionInt("-beam_nodes",
+                            "Number of grid nodes N (not with -strings_frame held: the bed's -strings_nodes)", "41",
+                            AtLeast(5)),
+                  {"-strings_frame=none|-strings_frame=beam"}),
       OptionChoice("-beam_left", SupportHelp("x = 0").c_str(), SupportNames(), "free"),
       OptionChoice("-beam_right", SupportHelp("x = L").c_str(), SupportNames(), "free"),
       OptionList("-beam_clamp", "m", "Clamped region x0,x1 held fixed (a handle in a vice)", 2, 2, NonNegative()),
-      OptionReal("-beam_pivot", "m", "Pivot x_p: an interior point held at y = 0, free to rotate (a test rig; on the nearest node)", ""),
-      OptionReal("-beam_damping_mass", "1/s", "Rayleigh damping alpha: C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "0", NonNegative()),
+      OptionReal("-beam_pivot", "m",
+                 "Pivot x_p: an interior point held at y = 0, free to rotate (a test rig; on the nearest node)", ""),
+      OptionReal("-beam_damping_mass", "1/s",
+                 "Rayleigh damping alpha: C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "0",
+                 NonNegative()),
       OptionReal("-beam_damping_stiffness", "s", "Rayleigh damping beta", "0", NonNegative()),
-      OptionList("-grip", "m", "The hands: grip x_a,x_b, a spring-damper per metre of handle tying it to the swing's rigid frame (a free beam)", 2, 2, NonNegative()),
-      OptionNeeds(OptionReal("-grip_stiffness", "N/m^2", "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0", NonNegative()), {"-grip"}),
-      OptionNeeds(OptionReal("-grip_damping", "N s/m^2", "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()), {"-grip"}),
-      OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0", NonNegative()), {"-grip"}),
-      OptionNeeds(OptionReal("-grip_torsion_stiffness", "N m/rad/m", "The hands' hold on the frame's roll (-beam_torsion): torque -k'_phi phi per metre of handle", "0", NonNegative()), {"-grip"}),
-      OptionNeeds(OptionReal("-grip_torsion_damping", "N m s/rad/m", "The hands' damping of the frame's roll: torque -c'_phi phi_t per metre of handle", "0", NonNegative()), {"-grip"}),
-      OptionFlag("-beam_shell", "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, in series with the ball (-beam_profile with inner diameters); a barrel wall thicker than 0.1 of its radius is noted (the thin-shell model drops terms of order t/R)"),
-      OptionNeeds(OptionList("-shell_harmonics", "1", "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1, 3, AtLeast(2)), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-shell_contact_radius", "m", "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the approach speed, with -ball_radius); at most the ball's radius and the wall's midsurface radius at the impact point", "", NonNegative()), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa", "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps -beam_youngs_modulus (default: that); 1e8 (a soft polymer) to 1e12 (stiffer than any bat's wall)", "", Between(1e8, 1e12)), {"-beam_shell"}),
-      OptionNeeds(OptionReal("-barrel_wall_thickness", "m", "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the barrel) get the inner diameter D - 2 t instead of the file's (the taper follows linearly); 1e-4 (0.1 mm, a drink can's wall) <= t < D/2; with -bat_length, the maker's barrel wall (a hollow bat)", "", AtLeast(1e-4)), {"-beam_profile|-bat_length"}),
-      OptionNeeds(OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll phi (G J phi'^2/2 per length, rho J per length), so that a hit off the axis (-impact_z) rolls it (a racket's head; docs/model.md section 16; not with -strings_frame held: the frame is held)"), {"-strings_frame=none|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2", "Torsional stiffness G J of a uniform section (default: the section's: a round profile's G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)", "", Positive()), {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m", "Polar mass moment per length rho J of a uniform section about its axis (default: the section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' rhoJ)", "", Positive()), {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
-      OptionReal("-barrel_hoop_frequency", "Hz", "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the ball at the impact point (with -barrel_hoop_mass); a hollow barrel's: needs -beam_profile with inner diameters or a hollow -bat_length bat", "", Positive()),
-      OptionNeeds(OptionReal("-barrel_hoop_mass", "kg", "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "", Positive()), {"-barrel_hoop_frequency"}),
+      OptionList("-grip", "m",
+                 "The hands: grip x_a,x_b, a spring-damper per metre of handle tying it to the swing's rigid frame (a "
+                 "free beam)",
+                 2, 2, NonNegative()),
+      OptionNeeds(OptionReal("-grip_stiffness", "N/m^2",
+                             "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0",
+                             NonNegative()),
+                  {"-grip"}),
+      OptionNeeds(OptionReal("-grip_damping", "N s/m^2",
+                             "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()),
+                  {"-grip"}),
+      OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0",
+                             NonNegative()),
+                  {"-grip"}),
+      OptionNeeds(OptionReal("-grip_torsion_stiffness", "N m/rad/m",
+                             "The hands' hold on the frame's roll (-beam_torsion): torque -k'_phi phi per metre of "
+                             "handle",
+                             "0", NonNegative()),
+                  {"-grip"}),
+      OptionNeeds(OptionReal("-grip_torsion_damping", "N m s/rad/m",
+                             "The hands' damping of the frame's roll: torque -c'_phi phi_t per metre of handle", "0",
+                             NonNegative()),
+                  {"-grip"}),
+      OptionFlag("-beam_shell",
+                 "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, "
+                 "in series with the ball (-beam_profile with inner diameters); a barrel wall thicker than 0.1 of its "
+                 "radius is noted (the thin-shell model drops terms of order t/R)"),
+      OptionNeeds(OptionList("-shell_harmonics", "1",
+                             "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1,
+                             3, AtLeast(2)),
+                  {"-beam_shell"}),
+      OptionNeeds(OptionReal("-shell_contact_radius", "m",
+                             "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a "
+                             "hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's "
+                             "peak compression on a rigid wall at the approach speed, with -ball_radius); at most the "
+                             "ball's radius and the wall's midsurface radius at the impact point",
+                             "", NonNegative()),
+                  {"-beam_shell"}),
+      OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa",
+                             "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or "
+                             "another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps "
+                             "-beam_youngs_modulus (default: that); 1e8 (a soft polymer) to 1e12 (stiffer than any "
+                             "bat's wall)",
+                             "", Between(1e8, 1e12)),
+                  {"-beam_shell"}),
+      OptionNeeds(OptionReal("-barrel_wall_thickness", "m",
+                             "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the "
+                             "barrel) get the inner diameter D - 2 t instead of the file's (the taper follows "
+                             "linearly); 1e-4 (0.1 mm, a drink can's wall) <= t < D/2; with -bat_length, the maker's "
+                             "barrel wall (a hollow bat)",
+                             "", AtLeast(1e-4)),
+                  {"-beam_profile|-bat_length"}),
+      OptionNeeds(OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll "
+                                              "phi (G J phi'^2/2 per length, rho J per length), so that a hit off the "
+                                              "axis (-impact_z) rolls it (a racket's head; docs/model.md section 16; "
+                                              "not with -strings_frame held: the frame is held)"),
+                  {"-strings_frame=none|-strings_frame=beam"}),
+      OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2",
+                             "Torsional stiffness G J of a uniform section (default: the section's: a round profile's "
+                             "G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)",
+                             "", Positive()),
+                  {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
+      OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m",
+                             "Polar mass moment per length rho J of a uniform section about its axis (default: the "
+                             "section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' "
+                             "rhoJ)",
+                             "", Positive()),
+                  {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
+      OptionReal("-barrel_hoop_frequency", "Hz",
+                 "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the "
+                 "ball at the impact point (with -barrel_hoop_mass); a hollow barrel's: needs -beam_profile with inner "
+                 "diameters or a hollow -bat_length bat",
+                 "", Positive()),
+      OptionNeeds(OptionReal("-barrel_hoop_mass", "kg",
+                             "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "",
+                             Positive()),
+                  {"-barrel_hoop_frequency"}),
     },
   };
   return m;
@@ -85,11 +167,12 @@ namespace {
 struct BeamOptionValues {
   PetscReal E = 7e10, rho = 2700, a = 0.006, b = 0.032, M = 0, Erho = 0, EI = 0, mu = 0; // the paper's aluminium beam
   PetscReal G = 0, kappa = 0, nu = 0.3;
-  PetscReal wall = 0; // m, -barrel_wall_thickness
+  PetscReal wall    = 0; // m, -barrel_wall_thickness
   PetscBool setwall = PETSC_FALSE;
-  PetscBool setE = PETSC_FALSE, setrho = PETSC_FALSE, seta = PETSC_FALSE, setb = PETSC_FALSE, setM = PETSC_FALSE, setErho = PETSC_FALSE, setEI = PETSC_FALSE, setmu = PETSC_FALSE;
-  PetscBool setlength = PETSC_FALSE, setprofile = PETSC_FALSE, setproperties = PETSC_FALSE;
-  std::string profile, properties, theory = "euler";
+  PetscBool setE = PETSC_FALSE, setrho = PETSC_FALSE, seta = PETSC_FALSE, setb = PETSC_FALSE, setM = PETSC_FALSE,
+            setErho = PETSC_FALSE, setEI = PETSC_FALSE, setmu = PETSC_FALSE;
+  PetscBool   setlength = PETSC_FALSE, setprofile = PETSC_FALSE, setproperties = PETSC_FALSE;
+  std::string profile, properties, theory                                      = "euler";
 };
 
 std::vector<std::string> TheoryChoices()
@@ -109,10 +192,11 @@ std::string SupportHelp(const char *end)
 
 PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o)
 {
-  const OptionModule &T = BeamOptionTable();
-  std::string         left = p->left.Name(), right = p->right.Name();
+  const OptionModule    &T    = BeamOptionTable();
+  std::string            left = p->left.Name(), right = p->right.Name();
   std::vector<PetscReal> clamp, grip;
-  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE, sethoop = PETSC_FALSE, sethoopmass = PETSC_FALSE;
+  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE, sethoop = PETSC_FALSE,
+            sethoopmass        = PETSC_FALSE;
   PetscBool              shell = PETSC_FALSE, setharmonics = PETSC_FALSE;
   std::vector<PetscReal> harmonics;
 
@@ -161,20 +245,26 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();
-  PetscCheck(sethoop == sethoopmass, comm, PETSC_ERR_ARG_WRONGSTATE, "%s %g without %s is not allowed: the hoop oscillator needs its frequency (Hz) and its mass (kg)", sethoop ? "-barrel_hoop_frequency" : "-barrel_hoop_mass",
-             (double)(sethoop ? p->hoop.frequency : p->hoop.mass), sethoop ? "-barrel_hoop_mass" : "-barrel_hoop_frequency");
-  p->hoop.on = sethoop;
+  PetscCheck(sethoop == sethoopmass, comm, PETSC_ERR_ARG_WRONGSTATE,
+             "%s %g without %s is not allowed: the hoop oscillator needs its frequency (Hz) and its mass (kg)",
+             sethoop ? "-barrel_hoop_frequency" : "-barrel_hoop_mass",
+             (double)(sethoop ? p->hoop.frequency : p->hoop.mass),
+             sethoop ? "-barrel_hoop_mass" : "-barrel_hoop_frequency");
+  p->hoop.on  = sethoop;
   p->shell.on = shell;
   if (setharmonics) {
     p->shell.harmonics.clear();
     for (PetscReal n : harmonics) {
-      PetscCheck(n == std::floor(n), comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics %g is not allowed: the circumferential orders are whole numbers n >= 2", (double)n);
-      for (PetscInt q : p->shell.harmonics) PetscCheck(q != (PetscInt)n, comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics: %g is given twice", (double)n);
+      PetscCheck(n == std::floor(n), comm, PETSC_ERR_ARG_OUTOFRANGE,
+                 "-shell_harmonics %g is not allowed: the circumferential orders are whole numbers n >= 2", (double)n);
+      for (PetscInt q : p->shell.harmonics)
+        PetscCheck(q != (PetscInt)n, comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics: %g is given twice", (double)n);
       p->shell.harmonics.push_back((PetscInt)n);
     }
   }
 
-  PetscCheck(SupportFind(left, &p->left) && SupportFind(right, &p->right), comm, PETSC_ERR_PLIB, "a support the table allows is not registered");
+  PetscCheck(SupportFind(left, &p->left) && SupportFind(right, &p->right), comm, PETSC_ERR_PLIB,
+             "a support the table allows is not registered");
   p->theory    = o->theory;
   p->has_pivot = setpivot;
   if (setgrip) { // two values: the row's count
@@ -193,7 +283,14 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
 // The first option of a uniform parameter set that was given, or nullptr.
 const char *UniformOptionGiven(const BeamOptionValues &o)
 {
-  return o.setlength ? "-beam_length" : o.seta ? "-beam_thickness" : o.setb ? "-beam_width" : o.setM ? "-beam_mass" : o.setErho ? "-beam_youngs_over_density" : o.setEI ? "-beam_EI" : o.setmu ? "-beam_mu" : nullptr;
+  return o.setlength ? "-beam_length"
+       : o.seta      ? "-beam_thickness"
+       : o.setb      ? "-beam_width"
+       : o.setM      ? "-beam_mass"
+       : o.setErho   ? "-beam_youngs_over_density"
+       : o.setEI     ? "-beam_EI"
+       : o.setmu     ? "-beam_mu"
+                     : nullptr;
 }
 
 // Each profile row's derived properties finite and > 0 (a diameter of 1e300 m gives EI = inf),
@@ -203,7 +300,8 @@ PetscErrorCode SectionRowsCheck(MPI_Comm comm, const char *option, const BeamSec
   PetscFunctionBeginUser;
   const SectionMaterial &m = s.material;
   for (const ProfileRow &r : s.profile) {
-    const PetscReal A = RoundArea(r.D, r.d), I = RoundSecondMoment(r.D, r.d), kappa = m.kappa > 0 ? m.kappa : CowperRound(m.nu, r.d / r.D);
+    const PetscReal A = RoundArea(r.D, r.d), I = RoundSecondMoment(r.D, r.d),
+                    kappa = m.kappa > 0 ? m.kappa : CowperRound(m.nu, r.d / r.D);
     const struct {
       const char *name, *unit;
       PetscReal   value;
@@ -218,8 +316,9 @@ PetscErrorCode SectionRowsCheck(MPI_Comm comm, const char *option, const BeamSec
     std::snprintf(row, sizeof row, "x %g D %g d %g", (double)r.x, (double)r.D, (double)r.d);
     for (const auto &q : derived)
       PetscCheck(!q.used || (std::isfinite(q.value) && q.value > 0), comm, PETSC_ERR_ARG_OUTOFRANGE,
-                 "%s %s:%d: the row '%s' gives %s = %g %s, not a finite number > 0: the diameters are out of range (m, with E = %g Pa, rho = %g kg/m^3)", option, s.file.c_str(), r.line, row, q.name,
-                 (double)q.value, q.unit, (double)m.E, (double)m.rho);
+                 "%s %s:%d: the row '%s' gives %s = %g %s, not a finite number > 0: the diameters are out of range (m, "
+                 "with E = %g Pa, rho = %g kg/m^3)",
+                 option, s.file.c_str(), r.line, row, q.name, (double)q.value, q.unit, (double)m.E, (double)m.rho);
   }
   PetscFunctionReturn(0);
 }
@@ -233,9 +332,10 @@ PetscErrorCode SectionShiftNote(MPI_Comm comm, const char *option, const std::st
   PetscFunctionBeginUser;
   if (x0 == 0) PetscFunctionReturn(0);
   std::snprintf(text, sizeof text,
-                          "note: %s %s: its rows start at x = %g m, not 0: the beam's x is measured from its first row (x = 0 there), so -impact_x, -beam_pivot, -beam_clamp, -grip and the "
-                          "monitors' points are %g m less than the file's x (-impact_x 0.5 strikes the file's x = %g)\n",
-                          option, file.c_str(), (double)x0, (double)x0, (double)(0.5 + x0));
+                "note: %s %s: its rows start at x = %g m, not 0: the beam's x is measured from its first row (x = 0 "
+                "there), so -impact_x, -beam_pivot, -beam_clamp, -grip and the "
+                "monitors' points are %g m less than the file's x (-impact_x 0.5 strikes the file's x = %g)\n",
+                option, file.c_str(), (double)x0, (double)x0, (double)(0.5 + x0));
   PetscCall(PrintOnce(comm, text));
   PetscFunctionReturn(0);
 }
@@ -263,8 +363,10 @@ PetscErrorCode SectionPlausibility(MPI_Comm comm, const char *option, const Beam
     odd += item;
   }
   if (!odd.empty())
-    PetscCall(PrintOnce(comm, "WARNING: " + std::string(option) + " " + s.file + " gives a beam far outside any bat, racket or test beam:" + odd +
-                                   " is the file in centimetres or millimetres, or the material in other units? Section files are in SI units (m, kg, N m^2)\n"));
+    PetscCall(PrintOnce(comm, "WARNING: " + std::string(option) + " " + s.file +
+                                " gives a beam far outside any bat, racket or test beam:" + odd +
+                                " is the file in centimetres or millimetres, or the material in other units? Section "
+                                "files are in SI units (m, kg, N m^2)\n"));
   PetscFunctionReturn(0);
 }
 
@@ -288,27 +390,38 @@ PetscErrorCode BeamSectionFromFile(MPI_Comm comm, const BeamOptionValues &o, Bea
   BeamSection &s = p->section;
   std::string  why;
   PetscFunctionBeginUser;
-  PetscCheck(!(o.setprofile && o.setproperties), comm, PETSC_ERR_ARG_INCOMP, "-beam_profile and -beam_properties both describe the section: give one");
+  PetscCheck(!(o.setprofile && o.setproperties), comm, PETSC_ERR_ARG_INCOMP,
+             "-beam_profile and -beam_properties both describe the section: give one");
   const char *option = o.setprofile ? "-beam_profile" : "-beam_properties";
   const char *other  = UniformOptionGiven(o);
-  PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "%s fixes the beam's length and sections: do not also give %s", option, other);
+  PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "%s fixes the beam's length and sections: do not also give %s", option,
+             other);
   if (o.setprofile) {
-    PetscCheck(o.setE && o.setrho, comm, PETSC_ERR_ARG_WRONG, "-beam_profile %s needs the material: give -beam_youngs_modulus (Pa) and -beam_density (kg/m^3)", o.profile.c_str());
-    PetscCheck(ProfileFileRead(o.profile.c_str(), &s.profile, &why), comm, PETSC_ERR_FILE_READ, "-beam_profile: %s", why.c_str());
+    PetscCheck(o.setE && o.setrho, comm, PETSC_ERR_ARG_WRONG,
+               "-beam_profile %s needs the material: give -beam_youngs_modulus (Pa) and -beam_density (kg/m^3)",
+               o.profile.c_str());
+    PetscCheck(ProfileFileRead(o.profile.c_str(), &s.profile, &why), comm, PETSC_ERR_FILE_READ, "-beam_profile: %s",
+               why.c_str());
     s.source     = SectionSource::Profile;
     s.file       = o.profile;
     s.material.E = o.E, s.material.rho = o.rho, s.material.G = o.G, s.material.nu = o.nu, s.material.kappa = o.kappa;
     const PetscReal x0 = s.profile.front().x;
     for (ProfileRow &r : s.profile) r.x -= x0;
     PetscCall(SectionShiftNote(comm, option, s.file, x0));
-    if (o.setwall) PetscCheck(BarrelWallThicknessApply(o.wall, &s.profile, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "-barrel_wall_thickness %g is not allowed with -beam_profile %s: %s", (double)o.wall, s.file.c_str(), why.c_str());
+    if (o.setwall)
+      PetscCheck(BarrelWallThicknessApply(o.wall, &s.profile, &why), comm, PETSC_ERR_ARG_OUTOFRANGE,
+                 "-barrel_wall_thickness %g is not allowed with -beam_profile %s: %s", (double)o.wall, s.file.c_str(),
+                 why.c_str());
     PetscCall(SectionRowsCheck(comm, option, s));
     p->input.youngs_modulus = o.E;
     p->input.density        = o.rho;
     p->input.parameter_set  = "profile";
   } else {
-    PetscCheck(!(o.setE || o.setrho), comm, PETSC_ERR_ARG_INCOMP, "-beam_properties gives EI and mu directly: do not also give %s", o.setE ? "-beam_youngs_modulus" : "-beam_density");
-    PetscCheck(PropertiesFileRead(o.properties.c_str(), &s.table, &s.table_has_shear, &s.table_has_torsion, &why), comm, PETSC_ERR_FILE_READ, "-beam_properties: %s", why.c_str());
+    PetscCheck(!(o.setE || o.setrho), comm, PETSC_ERR_ARG_INCOMP,
+               "-beam_properties gives EI and mu directly: do not also give %s",
+               o.setE ? "-beam_youngs_modulus" : "-beam_density");
+    PetscCheck(PropertiesFileRead(o.properties.c_str(), &s.table, &s.table_has_shear, &s.table_has_torsion, &why), comm,
+               PETSC_ERR_FILE_READ, "-beam_properties: %s", why.c_str());
     s.source           = SectionSource::Table;
     s.file             = o.properties;
     const PetscReal x0 = s.table.front().x;
@@ -331,10 +444,15 @@ PetscErrorCode BeamSectionFromMaker(MPI_Comm comm, const BeamOptionValues &o, Be
   std::string    why;
   PetscFunctionBeginUser;
   const char *other = o.setprofile ? "-beam_profile" : o.setproperties ? "-beam_properties" : UniformOptionGiven(o);
-  PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "-bat_length (a bat by its maker's numbers) fixes the beam's length and sections: do not also give %s", other);
-  PetscCheck(o.setE && o.setrho, comm, PETSC_ERR_ARG_WRONG, "-bat_length (a bat by its maker's numbers) needs the material: give -beam_youngs_modulus (Pa) and -beam_density (kg/m^3)");
+  PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP,
+             "-bat_length (a bat by its maker's numbers) fixes the beam's length and sections: do not also give %s",
+             other);
+  PetscCheck(o.setE && o.setrho, comm, PETSC_ERR_ARG_WRONG,
+             "-bat_length (a bat by its maker's numbers) needs the material: give -beam_youngs_modulus (Pa) and "
+             "-beam_density (kg/m^3)");
   PetscCall(BatMakerParamsFromOptions(comm, o.setwall ? o.wall : 0, &b));
-  PetscCheck(BatMakerProfile(b, o.rho, &s.profile, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "the bat's maker's numbers describe no bat: %s", why.c_str());
+  PetscCheck(BatMakerProfile(b, o.rho, &s.profile, &why), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "the bat's maker's numbers describe no bat: %s", why.c_str());
   s.source     = SectionSource::Profile;
   s.file       = "(the bat maker's numbers: -bat_*)";
   s.material.E = o.E, s.material.rho = o.rho, s.material.G = o.G, s.material.nu = o.nu, s.material.kappa = o.kappa;
@@ -350,12 +468,14 @@ PetscErrorCode BeamSectionFromMaker(MPI_Comm comm, const BeamOptionValues &o, Be
 
 // -racket_length: the frame's table of a racket by its maker's numbers (model/racket_maker.hpp),
 // strung with the bed the options give (the head's outline the maker's). Called after the bed is read.
-PetscErrorCode BeamSectionFromRacket(MPI_Comm comm, const BeamOptionValues &o, const RacketMakerParams &r, BeamParams *p)
+PetscErrorCode BeamSectionFromRacket(MPI_Comm comm, const BeamOptionValues &o, const RacketMakerParams &r,
+                                     BeamParams *p)
 {
   BeamSection &s = p->section;
   std::string  why;
   PetscFunctionBeginUser;
-  PetscCheck(RacketMakerTable(r, p->strings.On() ? &p->strings : nullptr, &s.table, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "the racket's maker's numbers describe no racket: %s", why.c_str());
+  PetscCheck(RacketMakerTable(r, p->strings.On() ? &p->strings : nullptr, &s.table, &why), comm,
+             PETSC_ERR_ARG_OUTOFRANGE, "the racket's maker's numbers describe no racket: %s", why.c_str());
   s.source            = SectionSource::Table;
   s.file              = "(the racket maker's numbers: -racket_*)";
   s.table_has_shear   = true;
@@ -374,15 +494,27 @@ PetscErrorCode BeamUniformSection(MPI_Comm comm, const BeamOptionValues &o, Beam
   BeamMaterialInput &in = p->input;
   PetscFunctionBeginUser;
   if (o.setEI || o.setmu) {
-    PetscCheck(o.setEI && o.setmu, comm, PETSC_ERR_ARG_WRONG, "-beam_EI and -beam_mu go together: give both (got only %s)", o.setEI ? "-beam_EI" : "-beam_mu");
-    PetscCheck(!(o.setE || o.setrho || o.seta || o.setb || o.setM || o.setErho), comm, PETSC_ERR_ARG_INCOMP, "contradicting beam parameter sets: -beam_EI/-beam_mu fix the beam; do not also give %s",
-               o.setE ? "-beam_youngs_modulus" : o.setrho ? "-beam_density" : o.seta ? "-beam_thickness" : o.setb ? "-beam_width" : o.setM ? "-beam_mass" : "-beam_youngs_over_density");
+    PetscCheck(o.setEI && o.setmu, comm, PETSC_ERR_ARG_WRONG,
+               "-beam_EI and -beam_mu go together: give both (got only %s)", o.setEI ? "-beam_EI" : "-beam_mu");
+    PetscCheck(!(o.setE || o.setrho || o.seta || o.setb || o.setM || o.setErho), comm, PETSC_ERR_ARG_INCOMP,
+               "contradicting beam parameter sets: -beam_EI/-beam_mu fix the beam; do not also give %s",
+               o.setE     ? "-beam_youngs_modulus"
+               : o.setrho ? "-beam_density"
+               : o.seta   ? "-beam_thickness"
+               : o.setb   ? "-beam_width"
+               : o.setM   ? "-beam_mass"
+                          : "-beam_youngs_over_density");
     p->EI = o.EI, p->mu = o.mu;
     in.parameter_set = "EI,mu";
   } else if (o.setM || o.setErho) {
-    PetscCheck(o.setM && o.setErho, comm, PETSC_ERR_ARG_WRONG, "-beam_mass and -beam_youngs_over_density go together (with -beam_thickness): give both (got only %s)", o.setM ? "-beam_mass" : "-beam_youngs_over_density");
-    PetscCheck(!(o.setE || o.setrho || o.setb), comm, PETSC_ERR_ARG_INCOMP, "contradicting beam parameter sets: -beam_mass with E/rho fixes the beam; do not also give %s",
-               o.setE ? "-beam_youngs_modulus" : o.setrho ? "-beam_density" : "-beam_width");
+    PetscCheck(o.setM && o.setErho, comm, PETSC_ERR_ARG_WRONG,
+               "-beam_mass and -beam_youngs_over_density go together (with -beam_thickness): give both (got only %s)",
+               o.setM ? "-beam_mass" : "-beam_youngs_over_density");
+    PetscCheck(!(o.setE || o.setrho || o.setb), comm, PETSC_ERR_ARG_INCOMP,
+               "contradicting beam parameter sets: -beam_mass with E/rho fixes the beam; do not also give %s",
+               o.setE     ? "-beam_youngs_modulus"
+               : o.setrho ? "-beam_density"
+                          : "-beam_width");
     p->mu                  = o.M / p->length;
     p->EI                  = o.Erho * p->mu * o.a * o.a / 12.0; // E b a^3/12 = (E/rho) (rho a b) a^2/12
     in.mass                = o.M;
@@ -410,11 +542,15 @@ PetscErrorCode TimoshenkoCheck(MPI_Comm comm, const BeamOptionValues &o, const B
   PetscFunctionBeginUser;
   if (p.theory != "timoshenko") PetscFunctionReturn(0);
   if (s.source == SectionSource::Table) {
-    PetscCheck(s.table_has_shear, comm, PETSC_ERR_ARG_WRONG, "-beam_theory timoshenko with -beam_properties %s needs five columns 'x EI mu kappaGA rhoI'; the file has three", s.file.c_str());
+    PetscCheck(s.table_has_shear, comm, PETSC_ERR_ARG_WRONG,
+               "-beam_theory timoshenko with -beam_properties %s needs five columns 'x EI mu kappaGA rhoI'; the file "
+               "has three",
+               s.file.c_str());
     PetscFunctionReturn(0);
   }
   PetscCheck(s.source == SectionSource::Profile || p.input.parameter_set == "E,rho,a,b", comm, PETSC_ERR_ARG_WRONG,
-             "-beam_theory timoshenko needs the section's area and material: give -beam_youngs_modulus, -beam_density, -beam_thickness, -beam_width (or -beam_profile, or a five-column -beam_properties), not the %s set",
+             "-beam_theory timoshenko needs the section's area and material: give -beam_youngs_modulus, -beam_density, "
+             "-beam_thickness, -beam_width (or -beam_profile, or a five-column -beam_properties), not the %s set",
              p.input.parameter_set.c_str());
   PetscCheck(o.G > 0, comm, PETSC_ERR_ARG_WRONG, "-beam_theory timoshenko needs -beam_shear_modulus G > 0 (Pa)");
   PetscFunctionReturn(0);
@@ -438,64 +574,103 @@ std::string HeldEnd(const BeamParams &p, bool (*holds)(NodeHold))
 PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
 {
   PetscFunctionBeginUser;
-  PetscCheck(p.length > 0 && std::isfinite(p.length), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_length %g is not allowed: the length must be finite and > 0 (m)", (double)p.length);
-  PetscCheck(p.EI > 0 && std::isfinite(p.EI), comm, PETSC_ERR_ARG_OUTOFRANGE, "bending stiffness EI = %g is not allowed: it must be > 0 (N m^2)", (double)p.EI);
-  PetscCheck(p.mu > 0 && std::isfinite(p.mu), comm, PETSC_ERR_ARG_OUTOFRANGE, "mass per length mu = %g is not allowed: it must be > 0 (kg/m)", (double)p.mu);
-  PetscCheck(p.damping_mass >= 0 && std::isfinite(p.damping_mass), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_damping_mass %g is not allowed: alpha must be >= 0 (1/s)", (double)p.damping_mass);
-  PetscCheck(p.damping_stiffness >= 0 && std::isfinite(p.damping_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_damping_stiffness %g is not allowed: beta must be >= 0 (s)", (double)p.damping_stiffness);
-  PetscCheck(p.nodes >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_nodes %" PetscInt_FMT " is not allowed: at least 5 nodes are needed", p.nodes);
-  PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: %s", p.theory.c_str(), BeamOptionTable().Find("-beam_theory")->Allowed().c_str());
+  PetscCheck(p.length > 0 && std::isfinite(p.length), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_length %g is not allowed: the length must be finite and > 0 (m)", (double)p.length);
+  PetscCheck(p.EI > 0 && std::isfinite(p.EI), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "bending stiffness EI = %g is not allowed: it must be > 0 (N m^2)", (double)p.EI);
+  PetscCheck(p.mu > 0 && std::isfinite(p.mu), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "mass per length mu = %g is not allowed: it must be > 0 (kg/m)", (double)p.mu);
+  PetscCheck(p.damping_mass >= 0 && std::isfinite(p.damping_mass), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_damping_mass %g is not allowed: alpha must be >= 0 (1/s)", (double)p.damping_mass);
+  PetscCheck(p.damping_stiffness >= 0 && std::isfinite(p.damping_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_damping_stiffness %g is not allowed: beta must be >= 0 (s)", (double)p.damping_stiffness);
+  PetscCheck(p.nodes >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_nodes %" PetscInt_FMT " is not allowed: at least 5 nodes are needed", p.nodes);
+  PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: %s",
+             p.theory.c_str(), BeamOptionTable().Find("-beam_theory")->Allowed().c_str());
   if (p.has_pivot) {
-    PetscCheck(p.pivot_x > 0 && p.pivot_x < p.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_pivot %g is not allowed: the pivot must be inside the beam, 0 < x_p < L = %g (m)", (double)p.pivot_x,
-               (double)p.length);
+    PetscCheck(p.pivot_x > 0 && p.pivot_x < p.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-beam_pivot %g is not allowed: the pivot must be inside the beam, 0 < x_p < L = %g (m)",
+               (double)p.pivot_x, (double)p.length);
     const std::string end = HeldEnd(p, HoldsRotation);
-    PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-beam_pivot %g with %s is not allowed: a pivoted bat is free at both ends (or pinned)", (double)p.pivot_x, end.c_str());
-    PetscCheck(!(p.has_clamp && p.pivot_x >= p.clamp_x0 && p.pivot_x <= p.clamp_x1), comm, PETSC_ERR_ARG_INCOMP, "-beam_pivot %g is not allowed: it lies inside the clamped region -beam_clamp %g,%g",
-               (double)p.pivot_x, (double)p.clamp_x0, (double)p.clamp_x1);
+    PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP,
+               "-beam_pivot %g with %s is not allowed: a pivoted bat is free at both ends (or pinned)",
+               (double)p.pivot_x, end.c_str());
+    PetscCheck(!(p.has_clamp && p.pivot_x >= p.clamp_x0 && p.pivot_x <= p.clamp_x1), comm, PETSC_ERR_ARG_INCOMP,
+               "-beam_pivot %g is not allowed: it lies inside the clamped region -beam_clamp %g,%g", (double)p.pivot_x,
+               (double)p.clamp_x0, (double)p.clamp_x1);
     const PetscInt k = BeamPivotNode(p);
-    PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes", (double)p.pivot_x,
-               (double)(p.length / (p.nodes - 1)));
+    PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes",
+               (double)p.pivot_x, (double)(p.length / (p.nodes - 1)));
   }
   if (p.shell.on) {
-    PetscCheck(p.section.source == SectionSource::Profile, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell needs a round hollow section: -beam_profile with rows 'x D d' (a uniform beam or -beam_properties has no wall)");
+    PetscCheck(p.section.source == SectionSource::Profile, comm, PETSC_ERR_ARG_INCOMP,
+               "-beam_shell needs a round hollow section: -beam_profile with rows 'x D d' (a uniform beam or "
+               "-beam_properties has no wall)");
     bool hollow = false;
     for (const ProfileRow &r : p.section.profile) hollow = hollow || r.d > 0;
-    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell with a solid profile is not allowed: no row of -beam_profile has an inner diameter d > 0");
-    PetscCheck(!p.hoop.on, comm, PETSC_ERR_ARG_INCOMP, "-beam_shell with -barrel_hoop_frequency is not allowed: the wall is either the shell or the lumped hoop oscillator");
+    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP,
+               "-beam_shell with a solid profile is not allowed: no row of -beam_profile has an inner diameter d > 0");
+    PetscCheck(!p.hoop.on, comm, PETSC_ERR_ARG_INCOMP,
+               "-beam_shell with -barrel_hoop_frequency is not allowed: the wall is either the shell or the lumped "
+               "hoop oscillator");
   }
   if (p.hoop.on) { // the hoop is a hollow barrel's wall, as the shell is
     bool hollow = false;
-    for (const ProfileRow &r : p.section.profile) hollow = hollow || (p.section.source == SectionSource::Profile && r.d > 0);
-    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP, "-barrel_hoop_frequency %g is not allowed on %s: the hoop oscillator is a hollow barrel's wall; give -beam_profile with rows 'x D d', d > 0",
-               (double)p.hoop.frequency, p.section.source == SectionSource::Profile ? "a solid profile (no row of -beam_profile has an inner diameter d > 0)" : "a beam with no round hollow section (a uniform beam or -beam_properties has no wall)");
+    for (const ProfileRow &r : p.section.profile)
+      hollow = hollow || (p.section.source == SectionSource::Profile && r.d > 0);
+    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP,
+               "-barrel_hoop_frequency %g is not allowed on %s: the hoop oscillator is a hollow barrel's wall; give "
+               "-beam_profile with rows 'x D d', d > 0",
+               (double)p.hoop.frequency,
+               p.section.source == SectionSource::Profile
+                 ? "a solid profile (no row of -beam_profile has an inner diameter d > 0)"
+                 : "a beam with no round hollow section (a uniform beam or -beam_properties has no wall)");
   }
   if (p.grip.on) {
     const BeamGrip &g = p.grip;
-    PetscCheck(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b, comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = %g (m)",
+    PetscCheck(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = "
+               "%g (m)",
                (double)g.x_a, (double)g.x_b, (double)p.length);
-    PetscCheck(g.stiffness >= 0 && std::isfinite(g.stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_stiffness %g is not allowed: it must be >= 0 (N/m^2)", (double)g.stiffness);
-    PetscCheck(g.damping >= 0 && std::isfinite(g.damping), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_damping %g is not allowed: it must be >= 0 (N s/m^2)", (double)g.damping);
-    PetscCheck(g.mass >= 0 && std::isfinite(g.mass), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_mass %g is not allowed: it must be >= 0 (kg)", (double)g.mass);
-    PetscCheck(g.torsion_stiffness >= 0 && std::isfinite(g.torsion_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_torsion_stiffness %g is not allowed: it must be >= 0 (N m/rad per m)",
+    PetscCheck(g.stiffness >= 0 && std::isfinite(g.stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-grip_stiffness %g is not allowed: it must be >= 0 (N/m^2)", (double)g.stiffness);
+    PetscCheck(g.damping >= 0 && std::isfinite(g.damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-grip_damping %g is not allowed: it must be >= 0 (N s/m^2)", (double)g.damping);
+    PetscCheck(g.mass >= 0 && std::isfinite(g.mass), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-grip_mass %g is not allowed: it must be >= 0 (kg)", (double)g.mass);
+    PetscCheck(g.torsion_stiffness >= 0 && std::isfinite(g.torsion_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-grip_torsion_stiffness %g is not allowed: it must be >= 0 (N m/rad per m)",
                (double)g.torsion_stiffness);
-    PetscCheck(g.torsion_damping >= 0 && std::isfinite(g.torsion_damping), comm, PETSC_ERR_ARG_OUTOFRANGE, "-grip_torsion_damping %g is not allowed: it must be >= 0 (N m s/rad per m)",
-               (double)g.torsion_damping);
-    PetscCheck(p.torsion.on || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm, PETSC_ERR_ARG_INCOMP, "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion gives it",
-               g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping", (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
+    PetscCheck(g.torsion_damping >= 0 && std::isfinite(g.torsion_damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-grip_torsion_damping %g is not allowed: it must be >= 0 (N m s/rad per m)", (double)g.torsion_damping);
+    PetscCheck(p.torsion.on || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm, PETSC_ERR_ARG_INCOMP,
+               "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion "
+               "gives it",
+               g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping",
+               (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
     const std::string end = HeldEnd(p, HoldsAnything);
-    PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with %s is not allowed: the hands hold a free bat", (double)g.x_a, (double)g.x_b, end.c_str());
-    PetscCheck(!p.has_clamp, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a clamped region (-beam_clamp %g,%g) is not allowed: the hands hold a free bat", (double)g.x_a, (double)g.x_b, (double)p.clamp_x0,
-               (double)p.clamp_x1);
-    PetscCheck(!p.has_pivot, comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with a pivot (-beam_pivot %g) is not allowed: the hands hold a free bat (the pivot is the certification rig's)", (double)g.x_a,
-               (double)g.x_b, (double)p.pivot_x);
+    PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with %s is not allowed: the hands hold a free bat",
+               (double)g.x_a, (double)g.x_b, end.c_str());
+    PetscCheck(!p.has_clamp, comm, PETSC_ERR_ARG_INCOMP,
+               "-grip %g,%g with a clamped region (-beam_clamp %g,%g) is not allowed: the hands hold a free bat",
+               (double)g.x_a, (double)g.x_b, (double)p.clamp_x0, (double)p.clamp_x1);
+    PetscCheck(!p.has_pivot, comm, PETSC_ERR_ARG_INCOMP,
+               "-grip %g,%g with a pivot (-beam_pivot %g) is not allowed: the hands hold a free bat (the pivot is the "
+               "certification rig's)",
+               (double)g.x_a, (double)g.x_b, (double)p.pivot_x);
   }
   if (p.has_clamp && !p.strings.Held()) { // a held string bed's frame is clamped everywhere
     PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-beam_clamp %g,%g is not allowed: need 0 <= x0 < x1 <= L = %g (m)", (double)p.clamp_x0, (double)p.clamp_x1, (double)p.length);
+               "-beam_clamp %g,%g is not allowed: need 0 <= x0 < x1 <= L = %g (m)", (double)p.clamp_x0,
+               (double)p.clamp_x1, (double)p.length);
     PetscInt nfree = 0;
     for (NodeHold h : BeamNodeHolds(p)) nfree += !HoldsDeflection(h);
-    PetscCheck(nfree >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE, "-beam_clamp %g,%g holds all but %" PetscInt_FMT " of the %" PetscInt_FMT " nodes: at least 3 must stay free", (double)p.clamp_x0,
-               (double)p.clamp_x1, nfree, p.nodes);
+    PetscCheck(nfree >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-beam_clamp %g,%g holds all but %" PetscInt_FMT " of the %" PetscInt_FMT
+               " nodes: at least 3 must stay free",
+               (double)p.clamp_x0, (double)p.clamp_x1, nfree, p.nodes);
   }
   PetscFunctionReturn(0);
 }
@@ -510,8 +685,11 @@ PetscErrorCode TorsionCheck(MPI_Comm comm, const BeamParams &p)
     PetscReal GJ, rhoJ;
     TorsionSectionMean(p, k * p.length / n, (k + 1) * p.length / n, &GJ, &rhoJ);
     PetscCheck(GJ > 0 && std::isfinite(GJ) && rhoJ > 0 && std::isfinite(rhoJ), comm, PETSC_ERR_ARG_WRONG,
-               "-beam_torsion needs the section's G J and rho J: give -beam_torsion_stiffness (N m^2) and -beam_torsion_inertia (kg m), or a round -beam_profile, or a seven-column -beam_properties 'x EI mu kappaGA rhoI GJ rhoJ' (%s gives G J = %g, rho J = %g near x = %g m)",
-               p.section.source == SectionSource::Uniform ? "the uniform section" : p.section.file.c_str(), (double)GJ, (double)rhoJ, (double)((k + 0.5) * p.length / n));
+               "-beam_torsion needs the section's G J and rho J: give -beam_torsion_stiffness (N m^2) and "
+               "-beam_torsion_inertia (kg m), or a round -beam_profile, or a seven-column -beam_properties 'x EI mu "
+               "kappaGA rhoI GJ rhoJ' (%s gives G J = %g, rho J = %g near x = %g m)",
+               p.section.source == SectionSource::Uniform ? "the uniform section" : p.section.file.c_str(), (double)GJ,
+               (double)rhoJ, (double)((k + 0.5) * p.length / n));
   }
   PetscFunctionReturn(0);
 }
@@ -532,30 +710,47 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, 
     for (const char *o : {"-head_length", "-head_width", "-head_center"}) {
       PetscBool set;
       PetscCall(PetscOptionsHasName(NULL, NULL, o, &set));
-      PetscCheck(!set, comm, PETSC_ERR_ARG_INCOMP, "%s with -racket_length is not allowed: the racket's maker's numbers place the head (-racket_head_size, -racket_head_aspect, -racket_head_margin)", o);
+      PetscCheck(!set, comm, PETSC_ERR_ARG_INCOMP,
+                 "%s with -racket_length is not allowed: the racket's maker's numbers place the head "
+                 "(-racket_head_size, -racket_head_aspect, -racket_head_margin)",
+                 o);
     }
     RacketMakerHead(*racket, &s);
   }
-  PetscCheck(!p->shell.on && !p->hoop.on, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame %s with a barrel wall (%s) is not allowed: a racket has no barrel", s.frame.c_str(), p->shell.on ? "-beam_shell" : "-barrel_hoop_frequency");
+  PetscCheck(!p->shell.on && !p->hoop.on, comm, PETSC_ERR_ARG_INCOMP,
+             "-strings_frame %s with a barrel wall (%s) is not allowed: a racket has no barrel", s.frame.c_str(),
+             p->shell.on ? "-beam_shell" : "-barrel_hoop_frequency");
   if (s.Held()) {
-    PetscCheck(!p->grip.on && !p->has_pivot, comm, PETSC_ERR_ARG_INCOMP, "-strings_frame held holds the whole frame: %s has nothing to hold", p->grip.on ? "-grip" : "-beam_pivot");
-    p->length      = s.head_length; // the frame: the head's length on the bed's columns, held everywhere
-    p->nodes       = s.nodes;
-    p->has_clamp   = true;
-    p->clamp_x0    = 0, p->clamp_x1 = p->length;
-    s.head_center  = 0.5 * s.head_length;
-    p->section     = BeamSection(); // a held frame's section and roll are never used
-    p->torsion     = BeamTorsion();
+    PetscCheck(!p->grip.on && !p->has_pivot, comm, PETSC_ERR_ARG_INCOMP,
+               "-strings_frame held holds the whole frame: %s has nothing to hold",
+               p->grip.on ? "-grip" : "-beam_pivot");
+    p->length    = s.head_length; // the frame: the head's length on the bed's columns, held everywhere
+    p->nodes     = s.nodes;
+    p->has_clamp = true;
+    p->clamp_x0 = 0, p->clamp_x1 = p->length;
+    s.head_center = 0.5 * s.head_length;
+    p->section    = BeamSection(); // a held frame's section and roll are never used
+    p->torsion    = BeamTorsion();
     PetscFunctionReturn(0);
   }
   const PetscReal a = 0.5 * s.head_length, h = p->length / (p->nodes - 1);
   PetscCheck(s.head_center - a > 0 && s.head_center + a < p->length, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-head_center %g with -head_length %g is not allowed on this %g m frame: the head (%g to %g m) must lie inside the beam, 0 < x < L", (double)s.head_center, (double)s.head_length,
-             (double)p->length, (double)(s.head_center - a), (double)(s.head_center + a));
-  PetscCheck(p->torsion.on, comm, PETSC_ERR_ARG_WRONG, "-strings_frame beam needs the frame's roll: give -beam_torsion (with its G J and rho J) so that the head can roll under an off-centre hit");
-  PetscCheck(s.head_length >= 4 * h, comm, PETSC_ERR_ARG_OUTOFRANGE, "-strings_frame beam: the head (-head_length %g m) spans fewer than 4 of the frame's cells (h = %g m): give more -beam_nodes", (double)s.head_length, (double)h);
+             "-head_center %g with -head_length %g is not allowed on this %g m frame: the head (%g to %g m) must lie "
+             "inside the beam, 0 < x < L",
+             (double)s.head_center, (double)s.head_length, (double)p->length, (double)(s.head_center - a),
+             (double)(s.head_center + a));
+  PetscCheck(p->torsion.on, comm, PETSC_ERR_ARG_WRONG,
+             "-strings_frame beam needs the frame's roll: give -beam_torsion (with its G J and rho J) so that the head "
+             "can roll under an off-centre hit");
+  PetscCheck(s.head_length >= 4 * h, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-strings_frame beam: the head (-head_length %g m) spans fewer than 4 of the frame's cells (h = %g m): "
+             "give more -beam_nodes",
+             (double)s.head_length, (double)h);
   const BedGrid g = StringBedFrameGrid(s, p->nodes, p->length);
-  PetscCheck(g.nz >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-strings_frame beam: %" PetscInt_FMT " nodes across the head's width (h_x %g m from -beam_nodes): at least 5 are needed (more -beam_nodes, or -strings_nodes_width)", g.nz, (double)h);
+  PetscCheck(g.nz >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-strings_frame beam: %" PetscInt_FMT " nodes across the head's width (h_x %g m from -beam_nodes): at "
+             "least 5 are needed (more -beam_nodes, or -strings_nodes_width)",
+             g.nz, (double)h);
   PetscFunctionReturn(0);
 }
 
@@ -568,10 +763,14 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
   PetscCall(BeamOptionsRead(comm, p, &o));
   PetscCall(BatMakerRequested(comm, &maker));
   PetscCall(RacketMakerRequested(comm, &racket_on));
-  PetscCheck(!(maker && racket_on), comm, PETSC_ERR_ARG_INCOMP, "-bat_length and -racket_length both describe the beam: give one");
+  PetscCheck(!(maker && racket_on), comm, PETSC_ERR_ARG_INCOMP,
+             "-bat_length and -racket_length both describe the beam: give one");
   if (racket_on) {
     const char *other = o.setprofile ? "-beam_profile" : o.setproperties ? "-beam_properties" : UniformOptionGiven(o);
-    PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP, "-racket_length (a racket by its maker's numbers) fixes the frame's length and sections: do not also give %s", other);
+    PetscCheck(!other, comm, PETSC_ERR_ARG_INCOMP,
+               "-racket_length (a racket by its maker's numbers) fixes the frame's length and sections: do not also "
+               "give %s",
+               other);
     PetscCall(RacketMakerParamsFromOptions(comm, &racket));
     p->length = racket.length;
     p->EI = racket.frame_stiffness, p->mu = racket.mass / racket.length; // until the table is made
@@ -590,26 +789,36 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
     const PetscReal h = p->length / (p->nodes - 1), xk = BeamPivotNode(*p) * h;
     char            text[256];
     if (std::abs(xk - p->pivot_x) > 1e-9 * h) {
-      std::snprintf(text, sizeof text, "note: -beam_pivot %g is placed on the nearest node, x_p = %.6g m (h = %.3g m); choose -beam_nodes to put it exactly\n", (double)p->pivot_x, (double)xk, (double)h);
+      std::snprintf(text, sizeof text,
+                    "note: -beam_pivot %g is placed on the nearest node, x_p = %.6g m (h = %.3g m); choose -beam_nodes "
+                    "to put it exactly\n",
+                    (double)p->pivot_x, (double)xk, (double)h);
       PetscCall(PrintOnce(comm, text)); // once, also in a sweep
     }
     p->pivot_x = xk;
   }
   PetscReal R, t;
-  if (p->shell.on && ShellBarrelWall(*p, &R, &t) && t > kShellThinLimit * R) { // beyond the thin-shell model's range: say so, once
+  if (p->shell.on && ShellBarrelWall(*p, &R, &t) &&
+      t > kShellThinLimit * R) { // beyond the thin-shell model's range: say so, once
     char text[512];
     std::snprintf(text, sizeof text,
-                  "note: -beam_shell on a thick wall: the barrel's wall is t = %.4g m on a midsurface radius R = %.4g m (t/R = %.2f, above %g): the thin-shell model (Sanders-Koiter) drops terms "
-                  "of order t/R against 1, so the wall's frequencies and compliance are rough here (docs/model.md section 14)\n",
+                  "note: -beam_shell on a thick wall: the barrel's wall is t = %.4g m on a midsurface radius R = %.4g "
+                  "m (t/R = %.2f, above %g): the thin-shell model (Sanders-Koiter) drops terms "
+                  "of order t/R against 1, so the wall's frequencies and compliance are rough here (docs/model.md "
+                  "section 14)\n",
                   (double)t, (double)R, (double)(t / R), (double)kShellThinLimit);
     PetscCall(PrintOnce(comm, text));
   }
-  if (p->has_clamp) { // the nodes inside [x0, x1] are held: say where the held region ends when an edge falls between nodes
+  if (p->has_clamp) { // the nodes inside [x0, x1] are held: say where the held region ends when an edge falls between
+                      // nodes
     const PetscReal h = p->length / (p->nodes - 1), tol = 1e-9 * h;
-    const PetscReal a = std::ceil((p->clamp_x0 - tol) / h) * h + 0.0, b = std::floor((p->clamp_x1 + tol) / h) * h; // + 0.0: not -0
-    char            text[512];
+    const PetscReal a = std::ceil((p->clamp_x0 - tol) / h) * h + 0.0,
+                    b = std::floor((p->clamp_x1 + tol) / h) * h; // + 0.0: not -0
+    char text[512];
     if (std::abs(a - p->clamp_x0) > tol || std::abs(b - p->clamp_x1) > tol) {
-      std::snprintf(text, sizeof text, "note: -beam_clamp %g,%g holds the nodes from x = %.6g to x = %.6g m (h = %.3g m): an edge between nodes moves to the node inside the clamp; choose -beam_nodes to put it exactly\n",
+      std::snprintf(text, sizeof text,
+                    "note: -beam_clamp %g,%g holds the nodes from x = %.6g to x = %.6g m (h = %.3g m): an edge between "
+                    "nodes moves to the node inside the clamp; choose -beam_nodes to put it exactly\n",
                     (double)p->clamp_x0, (double)p->clamp_x1, (double)a, (double)b, (double)h);
       PetscCall(PrintOnce(comm, text));
     }

@@ -8,7 +8,8 @@
 
 namespace beamimpact {
 
-PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m, const FlightSolveParams &s, const FlightResult &r, RunRecord *rec)
+PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m, const FlightSolveParams &s,
+                                    const FlightResult &r, RunRecord *rec)
 {
   PetscFunctionBeginUser;
   PetscCall(RunRecordProgram(rec));
@@ -49,7 +50,7 @@ PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m,
 
 const std::vector<FlightResultColumn> &FlightResultColumns()
 {
-  using R = const FlightResult &;
+  using R                                            = const FlightResult &;
   static const std::vector<FlightResultColumn> table = {
     {"distance", "m", "the carry: launch point to landing, horizontal", false,
      [](R r) -> double { return r.landing.distance; }},
@@ -109,7 +110,8 @@ static PetscErrorCode FlightWriteGroups(hid_t file, const std::string &path, con
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const FlightResult &r)
+PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                      const FlightResult &r)
 {
   PetscFunctionBeginUser;
   PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode { // whole or not at all

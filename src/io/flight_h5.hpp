@@ -28,9 +28,11 @@ struct FlightResultColumn {
 const std::vector<FlightResultColumn> &FlightResultColumns();
 
 // Program and provenance, the parameters of the flight as used and what the run derived.
-PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m, const FlightSolveParams &s, const FlightResult &r, RunRecord *rec);
+PetscErrorCode FlightRunRecordBuild(const FlightParams &p, const FlightModel &m, const FlightSolveParams &s,
+                                    const FlightResult &r, RunRecord *rec);
 
 // Writes a new file (replacing any) on rank 0 of comm.
-PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const FlightResult &r);
+PetscErrorCode ResultsWriteFlightFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                      const FlightResult &r);
 
 } // namespace beamimpact

@@ -27,6 +27,7 @@ PetscErrorCode FlightParamsFromOptions(MPI_Comm comm, FlightParams *p, FlightSol
 // -flight (-task impact): whether to fly the batted ball after the impact, and then the flight's
 // ball, air and aerodynamics (the launch options are refused: the impact gives the launch), and
 // the flight's integrator options checked (FlightTSCheckOptions) before the impact runs.
-PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, FlightParams *p, FlightSolveParams *s, bool series = true);
+PetscErrorCode FlightAfterImpactFromOptions(MPI_Comm comm, PetscBool *on, FlightParams *p, FlightSolveParams *s,
+                                            bool series = true);
 
 } // namespace beamimpact

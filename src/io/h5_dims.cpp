@@ -17,7 +17,7 @@ namespace {
 struct H5Id {
   hid_t id;
   herr_t (*close)(hid_t);
-  H5Id(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
+  H5Id(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) { }
   ~H5Id()
   {
     if (id >= 0) close(id);
@@ -58,8 +58,8 @@ PetscErrorCode RootDimension(hid_t loc, const char *of, const std::string &dim, 
   }
   H5Id space(H5Screate_simple(1, &n, NULL), H5Sclose);
   *scale = space.id >= 0
-               ? H5Dcreate2(file.id, dim.c_str(), H5T_IEEE_F32LE, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)
-               : -1; // no data written: none stored
+           ? H5Dcreate2(file.id, dim.c_str(), H5T_IEEE_F32LE, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)
+           : -1; // no data written: none stored
   char name[96];
   std::snprintf(name, sizeof name, "%s%10llu", kNotAVariable, (unsigned long long)n); // as netCDF-4 writes it
   PetscCheck(*scale >= 0 && H5DSset_scale(*scale, name) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,

@@ -75,7 +75,7 @@ std::string ResolveSweepFiles(const std::string &dir, const std::string &sweep)
 {
   std::string out = sweep;
   for (size_t at = out.find("=csv:"); at != std::string::npos; at = out.find("=csv:", at + 5)) {
-    const size_t a = at + 5, b = std::min(out.find_first_of(":,", a), out.size());
+    const size_t      a = at + 5, b = std::min(out.find_first_of(":,", a), out.size());
     const std::string path = Resolve(dir, out.substr(a, b - a));
     out.replace(a, b - a, path);
     at = a + path.size() - 5;
@@ -83,21 +83,24 @@ std::string ResolveSweepFiles(const std::string &dir, const std::string &sweep)
   return out;
 }
 
-bool Expand(const std::string &file, const std::string &includer, int depth, std::vector<std::string> *tokens, std::string *error)
+bool Expand(const std::string &file, const std::string &includer, int depth, std::vector<std::string> *tokens,
+            std::string *error)
 {
   const std::string by = includer.empty() ? "" : " (included by " + includer + ")";
   if (depth > kMaxIncludeDepth) {
-    *error = "-options_file " + file + by + ": includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " files (a file that includes itself?)";
+    *error = "-options_file " + file + by + ": includes nested deeper than " + std::to_string(kMaxIncludeDepth) +
+             " files (a file that includes itself?)";
     return false;
   }
   std::ifstream in(file);
   if (!in) {
     *error = "-options_file " + file + by + ": cannot open the file (" + std::strerror(errno) + ")" +
-             (includer.empty() ? "; a path on the command line is relative to the working directory" : "; a path inside an options file is relative to that file's directory");
+             (includer.empty() ? "; a path on the command line is relative to the working directory"
+                               : "; a path inside an options file is relative to that file's directory");
     return false;
   }
   if (std::find(FilesRead().begin(), FilesRead().end(), file) == FilesRead().end()) FilesRead().push_back(file);
-  const std::string        dir = std::filesystem::path(file).parent_path().string();
+  const std::string               dir   = std::filesystem::path(file).parent_path().string();
   const std::vector<std::string> &paths = OptionsFilePathOptions();
   std::vector<std::string>        lines;
   std::string                     why;
@@ -117,8 +120,11 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
     // One option per line, as PETSc reads an options file: a stray word would otherwise be
     // dropped without a word by the command-line parser.
     if (t[0] == "alias") *error = where + ": 'alias' lines are not supported; write the option's own name";
-    else if (!IsKey(t[0])) *error = where + ": '" + t[0] + "' is not an option (an option starts with '-': -" + t[0] + "?)";
-    else if (t.size() > 2) *error = where + ": " + t[0] + " has more than one value ('" + t[1] + "', '" + t[2] + "'): one option and its value per line";
+    else if (!IsKey(t[0]))
+      *error = where + ": '" + t[0] + "' is not an option (an option starts with '-': -" + t[0] + "?)";
+    else if (t.size() > 2)
+      *error = where + ": " + t[0] + " has more than one value ('" + t[1] + "', '" + t[2] +
+               "'): one option and its value per line";
     else if (t[0] == "-options_file" && t.size() < 2) *error = where + ": -options_file needs a file name";
     if (!error->empty()) return false;
     if (t[0] == "-options_file") {
@@ -126,7 +132,10 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
       continue;
     }
     tokens->push_back(t[0]);
-    if (t.size() == 2) tokens->push_back(std::find(paths.begin(), paths.end(), t[0]) != paths.end() ? ResolveList(dir, t[1]) : t[0] == "-sweep" ? ResolveSweepFiles(dir, t[1]) : t[1]);
+    if (t.size() == 2)
+      tokens->push_back(std::find(paths.begin(), paths.end(), t[0]) != paths.end() ? ResolveList(dir, t[1])
+                        : t[0] == "-sweep"                                         ? ResolveSweepFiles(dir, t[1])
+                                                                                   : t[1]);
   }
   return true;
 }
@@ -135,7 +144,13 @@ bool Expand(const std::string &file, const std::string &includer, int depth, std
 
 const std::vector<std::string> &OptionsFilePathOptions()
 {
-  static const std::vector<std::string> names = {"-beam_profile", "-beam_properties", "-ball_cor_table", "-convergence_configs", "-convergence_reference_config", "-convergence_common_options", "-fit_data"};
+  static const std::vector<std::string> names = {"-beam_profile",
+                                                 "-beam_properties",
+                                                 "-ball_cor_table",
+                                                 "-convergence_configs",
+                                                 "-convergence_reference_config",
+                                                 "-convergence_common_options",
+                                                 "-fit_data"};
   return names;
 }
 

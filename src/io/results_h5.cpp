@@ -38,7 +38,9 @@ static PetscErrorCode WriteStringAttr(hid_t loc, const char *name, const std::st
 {
   PetscFunctionBeginUser;
   const hid_t type = H5Tcopy(H5T_C_S1);
-  PetscCheck(type >= 0 && H5Tset_size(type, value.size() > 0 ? value.size() : 1) >= 0 && H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot make the string type of attribute %s", name);
+  PetscCheck(type >= 0 && H5Tset_size(type, value.size() > 0 ? value.size() : 1) >= 0 &&
+               H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0,
+             PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot make the string type of attribute %s", name);
   const PetscErrorCode ierr = WriteScalarAttr(loc, name, type, type, value.size() > 0 ? value.c_str() : "");
   H5Tclose(type);
   PetscCall(ierr);
@@ -127,7 +129,8 @@ PetscErrorCode H5WriteAttributes(long long loc, const RunRecord &record)
 
 // A dataset of `dims` (rank 1 to 3) in memory type `mem`, stored as `file_type`, with its unit (the
 // text, attribute unit) and its CF units (attribute units: H5UnitsOf the text).
-static PetscErrorCode WriteDataset(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data, int rank, const hsize_t *dims, const char *unit)
+static PetscErrorCode WriteDataset(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data, int rank,
+                                   const hsize_t *dims, const char *unit)
 {
   PetscFunctionBeginUser;
   const hid_t space = H5Screate_simple(rank, dims, NULL);
@@ -146,7 +149,8 @@ static PetscErrorCode WriteDataset(hid_t loc, const char *name, hid_t file_type,
 }
 
 // A 1-D dataset of n values in memory type `mem`, stored as `file_type`, with its unit.
-static PetscErrorCode WriteDataset1D(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data, size_t n, const char *unit)
+static PetscErrorCode WriteDataset1D(hid_t loc, const char *name, hid_t file_type, hid_t mem, const void *data,
+                                     size_t n, const char *unit)
 {
   const hsize_t dims[1] = {n};
   return WriteDataset(loc, name, file_type, mem, data, 1, dims, unit);
@@ -180,7 +184,8 @@ PetscErrorCode H5WriteText1D(long long loc, const char *name, const std::vector<
   for (const std::string &s : v) p.push_back(s.c_str());
   PetscFunctionBeginUser;
   const hid_t t = H5Tcopy(H5T_C_S1);
-  PetscCheck(t >= 0 && H5Tset_size(t, H5T_VARIABLE) >= 0 && H5Tset_cset(t, H5T_CSET_UTF8) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5: cannot make the string type of dataset %s", name);
+  PetscCheck(t >= 0 && H5Tset_size(t, H5T_VARIABLE) >= 0 && H5Tset_cset(t, H5T_CSET_UTF8) >= 0, PETSC_COMM_SELF,
+             PETSC_ERR_LIB, "HDF5: cannot make the string type of dataset %s", name);
   const PetscErrorCode ierr = WriteDataset1D((hid_t)loc, name, t, t, p.data(), p.size(), unit);
   H5Tclose(t);
   PetscCall(ierr);
@@ -211,8 +216,8 @@ PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vect
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode H5WriteDataset3D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, size_t n1,
-                                size_t n2, const char *unit)
+PetscErrorCode H5WriteDataset3D(long long loc, const char *name, const std::vector<std::vector<double>> &rows,
+                                size_t n1, size_t n2, const char *unit)
 {
   std::vector<double> flat;
   PetscFunctionBeginUser;
@@ -290,8 +295,12 @@ static PetscErrorCode H5WriteEvents(hid_t file, const ImpactResult &r)
   PetscCall(H5WriteDataset1D(ge, "compression", c, "m"));
   PetscCall(H5WriteDataset1D(ge, "force", f, "N"));
   PetscCall(H5WriteDataset1D(ge, "approach_speed", va, "m/s (contact starts; NaN on other events)"));
-  PetscCall(H5WriteDataset1D(ge, "cor", cor, "1, wall COR used for this contact (contact starts of the hysteretic law; NaN otherwise)"));
-  PetscCall(H5WriteDataset1D(ge, "n", n, "1, unloading exponent used for this contact (contact starts of the hysteretic law; NaN otherwise)"));
+  PetscCall(
+    H5WriteDataset1D(ge, "cor", cor,
+                     "1, wall COR used for this contact (contact starts of the hysteretic law; NaN otherwise)"));
+  PetscCall(H5WriteDataset1D(ge, "n", n,
+                             "1, unloading exponent used for this contact (contact starts of the hysteretic law; NaN "
+                             "otherwise)"));
   PetscCall(H5DimsTable(ge, "event"));
   H5Gclose(ge);
   PetscFunctionReturn(0);
@@ -304,8 +313,8 @@ static PetscErrorCode H5WriteModeEnergies(hid_t file, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
   if (r.mode_energies.empty()) PetscFunctionReturn(0);
-  hid_t                  g = H5Gcreate2(file, "modes_energy", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  std::vector<double>    f, e, x;
+  hid_t                    g = H5Gcreate2(file, "modes_energy", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<double>      f, e, x;
   std::vector<long long>   rigid;
   std::vector<std::string> part;
   for (const ModeEnergy &m : r.mode_energies) {
@@ -317,14 +326,19 @@ static PetscErrorCode H5WriteModeEnergies(hid_t file, const ImpactResult &r)
   }
   PetscCall(H5WriteDataset1D(g, "frequency", f, "Hz (0 for a rigid mode)"));
   PetscCall(H5WriteDataset1D(g, "energy", e, "J, 1/2 (zd^2 + w^2 z^2) in mass-normalised coordinates at the end"));
-  PetscCall(H5WriteDataset1D(g, "fraction", x, "1 (of the energy brought in, E_in: the ball's and a swinging bat's kinetic energy)"));
-  PetscCall(H5WriteDatasetInt1D(g, "rigid", rigid, "1 for a rigid mode (a free beam: translation, then rotation about the centre of mass, then the roll), else 0"));
+  PetscCall(H5WriteDataset1D(g, "fraction", x,
+                             "1 (of the energy brought in, E_in: the ball's and a swinging bat's kinetic energy)"));
+  PetscCall(H5WriteDatasetInt1D(g, "rigid", rigid,
+                                "1 for a rigid mode (a free beam: translation, then rotation about the centre of mass, "
+                                "then the roll), else 0"));
   PetscCall(H5WriteText1D(g, "part", part,
-                          "text: a rigid mode's motion (translation, rotation, roll), a flexible one's part (bending, roll, wall, strings); each label's modes add up to "
+                          "text: a rigid mode's motion (translation, rotation, roll), a flexible one's part (bending, "
+                          "roll, wall, strings); each label's modes add up to "
                           "translation_, rotation_, roll_, vibration_, twist_, wall_ and bed_fraction"));
   RunRecord a;
   a.add("time", (double)r.final_time);
-  a.add("description", "the energy each kept mode carries at the end of the run (time, s), after the ball has left (docs/model.md section 12)");
+  a.add("description", "the energy each kept mode carries at the end of the run (time, s), after the ball has left "
+                       "(docs/model.md section 12)");
   PetscCall(H5WriteAttributes(g, a));
   PetscCall(H5DimsTable(g, "mode"));
   H5Gclose(g);
@@ -405,9 +419,10 @@ static PetscErrorCode H5WriteSnapshots(hid_t file, const ImpactSeries &S, const 
   PetscCall(H5DimsAttach(gn, "y", {"time", "x"}));
   if (SnapshotsHaveBed(S, beam)) { // the string bed's deflection on its grid: [time][z * nodes + x]
     PetscCall(H5WriteBedGrid(gn, StringBedFrameGrid(beam.strings, beam.nodes, beam.length), "bed_x", "bed_z"));
-    PetscCall(H5WriteDataset2D(gn, "bed", S.snapshot_bed,
-                               "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] "
-                               "(NaN off the bed)"));
+    PetscCall(
+      H5WriteDataset2D(gn, "bed", S.snapshot_bed,
+                       "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] "
+                       "(NaN off the bed)"));
     PetscCall(H5DimsAttach(gn, "bed", {"time", "bed_point"}));
     for (const char *axis : {"bed_x", "bed_z"}) PetscCall(H5DimsAttach(gn, axis, {axis})); // the grid's coordinates
   }
@@ -440,7 +455,7 @@ static std::string SnapshotsXdmf(const std::string &path, const ImpactSeries &S,
   }
   if (SnapshotsHaveWall(S)) {
     f.name = "wall", f.attribute = "W", f.x = "/snapshots/x", f.y = "/snapshots/wall_n", f.nx = beam.nodes;
-    f.ny = (PetscInt)S.snapshot_wall_n.size();
+    f.ny     = (PetscInt)S.snapshot_wall_n.size();
     f.values = "/snapshots/wall", f.flat = false;
     fields.push_back(f);
   }
@@ -527,8 +542,8 @@ long long H5MemoryFileCreate()
   // The close degree strong: closing the file also closes what an error path left open.
   static int        count = 0;
   const std::string name  = "beamimpact-memory-" + std::to_string(++count) + ".h5"; // a name, never a path on disk
-  const bool        ok    = H5Pset_fapl_core(fapl, 1 << 16, 0) >= 0 && H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) >= 0;
-  const hid_t       file  = ok ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : -1;
+  const bool        ok   = H5Pset_fapl_core(fapl, 1 << 16, 0) >= 0 && H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) >= 0;
+  const hid_t       file = ok ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : -1;
   H5Pclose(fapl);
   return file;
 }
@@ -561,12 +576,14 @@ std::string H5MemoryFileInstall(long long file, const std::string &path, const s
   const std::string saved = H5MemoryFileSave(file, error.empty() ? tmp : std::string()); // closes the file in any case
   const bool        made  = error.empty();
   if (error.empty()) error = saved;
-  struct stat st; // what path (and its description) names now (-output was checked at the start: a sweep may have run for hours since)
+  struct stat st; // what path (and its description) names now (-output was checked at the start: a sweep may have run
+                  // for hours since)
   if (error.empty() && ::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
     error = std::string("it is now ") + FileKind(st.st_mode) + ", not a regular file, and is not replaced";
   if (error.empty() && !xtmp.empty() && ::lstat(xpath.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
     error = xpath + " is now " + FileKind(st.st_mode) + ", not a regular file, and is not replaced";
-  if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
+  if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0)
+    error = "cannot rename " + tmp + " onto it (" + std::strerror(errno) + ")";
   if (made && !error.empty()) ::unlink(tmp.c_str());
   if (!xtmp.empty()) { // the file's description onto its place after the file
     if (error.empty() && std::rename(xtmp.c_str(), xpath.c_str()) != 0)
@@ -579,7 +596,8 @@ std::string H5MemoryFileInstall(long long file, const std::string &path, const s
 
 std::string WriteFailureCause(const std::string &error)
 {
-  const bool full = error.find(std::strerror(ENOSPC)) != std::string::npos || error.find(std::strerror(EDQUOT)) != std::string::npos;
+  const bool full = error.find(std::strerror(ENOSPC)) != std::string::npos ||
+                    error.find(std::strerror(EDQUOT)) != std::string::npos;
   return (full ? "disk full: " : "") + error;
 }
 
@@ -602,26 +620,31 @@ PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const 
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank != 0) PetscFunctionReturn(0);
   const std::string error = WriteWholeFile(path, record, write, xdmf);
-  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s could not be written (%s); nothing was written there, a file it held before is unchanged", path.c_str(),
-             WriteFailureCause(error).c_str());
+  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+             "-output %s could not be written (%s); nothing was written there, a file it held before is unchanged",
+             path.c_str(), WriteFailureCause(error).c_str());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc)
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                      const std::vector<ImpactResult> &results, const Scenario &sc)
 {
   PetscFunctionBeginUser;
-  PetscCall(H5ResultsFileWrite(comm, path, record, [&](long long file) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    PetscCall(H5WriteResults(file, results, sc));
-    if (!results.empty()) {
-      PetscCall(H5WriteImpactAttributes(file));
-      PetscCall(H5WriteEvents(file, results[0]));
-      PetscCall(H5WriteSeries(file, results[0].series));
-      PetscCall(H5WriteSnapshots(file, results[0].series, sc.beam));
-      PetscCall(H5WriteModeEnergies(file, results[0]));
-    }
-    PetscFunctionReturn(0);
-  }, results.empty() ? std::string() : SnapshotsXdmf(path, results[0].series, sc.beam)));
+  PetscCall(H5ResultsFileWrite(
+    comm, path, record,
+    [&](long long file) -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      PetscCall(H5WriteResults(file, results, sc));
+      if (!results.empty()) {
+        PetscCall(H5WriteImpactAttributes(file));
+        PetscCall(H5WriteEvents(file, results[0]));
+        PetscCall(H5WriteSeries(file, results[0].series));
+        PetscCall(H5WriteSnapshots(file, results[0].series, sc.beam));
+        PetscCall(H5WriteModeEnergies(file, results[0]));
+      }
+      PetscFunctionReturn(0);
+    },
+    results.empty() ? std::string() : SnapshotsXdmf(path, results[0].series, sc.beam)));
   PetscFunctionReturn(0);
 }
 
@@ -664,7 +687,8 @@ PetscErrorCode H5WriteBedGrid(long long loc, const BedGrid &g, const char *x_nam
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
+PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                     const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
                                      const BeamParams &beam)
 {
   PetscFunctionBeginUser;
@@ -677,14 +701,20 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
     PetscCall(H5WriteDataset2D(g, "shapes", shapes, "1 (deflection, normalised over all dofs)"));
     if (!modes.shell_n.empty()) { // a barrel wall: each mode's family (0 bending, n a shell harmonic)
       std::vector<PetscReal> fam(modes.shell_n.begin(), modes.shell_n.end());
-      PetscCall(H5WriteDataset1D(g, "shell_n", fam, "1 (0: the beam's bending; n: the wall's harmonic cos n theta; 2: the hoop oscillator)"));
+      PetscCall(
+        H5WriteDataset1D(g, "shell_n", fam,
+                         "1 (0: the beam's bending; n: the wall's harmonic cos n theta; 2: the hoop oscillator)"));
     }
     if (!modes.part.empty()) { // a roll field or a string bed: each mode's part and its share of the kinetic energy
       std::vector<PetscReal> part(modes.part.begin(), modes.part.end());
-      PetscCall(H5WriteDataset1D(g, "part", part, "1 (the part with most of the mode's kinetic energy: 0 the frame's bending, 1 its roll, 3 the string bed)"));
-      PetscCall(H5WriteDataset1D(g, "part_share", modes.part_share, "1 (that part's share of the mode's kinetic energy)"));
+      PetscCall(H5WriteDataset1D(g, "part", part,
+                                 "1 (the part with most of the mode's kinetic energy: 0 the frame's bending, 1 its "
+                                 "roll, 3 the string bed)"));
+      PetscCall(
+        H5WriteDataset1D(g, "part_share", modes.part_share, "1 (that part's share of the mode's kinetic energy)"));
     }
-    if (!modes.bed_shape.empty()) { // the string bed's deflection of each mode on its grid, [z][x], as the held bed's /modes/shape_k
+    if (!modes.bed_shape
+           .empty()) { // the string bed's deflection of each mode on its grid, [z][x], as the held bed's /modes/shape_k
       const BedGrid g2 = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
       PetscCall(H5WriteBedGrid(g, g2, "bed_x", "bed_z"));
       for (size_t m = 0; m < modes.bed_shape.size(); ++m) {
@@ -698,7 +728,8 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
     }
     const PetscReal h = beam.length / (beam.nodes - 1);
     for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m) // the first two bending modes
-      if ((modes.shell_n.empty() || modes.shell_n[m] == 0) && (modes.part.empty() || modes.part[m] == (PetscInt)Part::Beam))
+      if ((modes.shell_n.empty() || modes.shell_n[m] == 0) &&
+          (modes.part.empty() || modes.part[m] == (PetscInt)Part::Beam))
         PetscCall(H5WriteDataset1D(g, k++ == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
     for (const char *name : {"nodes_1", "nodes_2"}) // positions of a mode's nodes: each its own coordinate
       if (H5Lexists(g, name, H5P_DEFAULT) > 0) PetscCall(H5DimsAttach(g, name, {name}));

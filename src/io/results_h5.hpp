@@ -26,21 +26,23 @@ namespace beamimpact {
 // /snapshots and /modes_energy (a modal free flight's energy per mode at the end) when they hold
 // data. Every dataset carries its CF units and netCDF dimensions (io/h5_dims.hpp); with snapshots,
 // their XDMF description beside the file (io/xdmf.hpp: path.xmf for path.h5).
-PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const std::vector<ImpactResult> &results, const Scenario &sc);
+PetscErrorCode ResultsWriteImpactFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                      const std::vector<ImpactResult> &results, const Scenario &sc);
 
 // Writes a new file (replacing any, H5ResultsFileWrite) on rank 0 of comm: root attributes; /modes with the
 // frequency (Hz), period (s) and omega (rad/s) of each mode, the deflection shapes (one row per
 // mode over the nodes /beam/x) and the nodes of the first two flexible modes (nodes_1, nodes_2,
 // m); /beam with the node positions and the section there (EI, mu; the profile's D and d when
 // the beam has one), for plots of the bat with its modes (scripts/plot_bat.py).
-PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
+PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                     const ModesResult &modes, const std::vector<std::vector<PetscReal>> &shapes,
                                      const BeamParams &beam);
 
 // What a file that -output names holds: whether it exists (and its size), is HDF5, and the
 // root attributes program ("beamimpact ...") and task of a results file of this program.
 struct ResultsFileInfo {
   bool        exists = false, hdf5 = false;
-  long long   size   = 0; // bytes
+  long long   size = 0; // bytes
   std::string program, task;
   bool        Ours() const { return hdf5 && program.compare(0, 10, "beamimpact") == 0 && !task.empty(); }
 };
@@ -58,7 +60,8 @@ const char *FileKind(unsigned mode);
 // closed with the file). The other ranks write nothing. xdmf: the XDMF description of the
 // file's snapshots (io/xdmf.hpp), installed with it at XdmfPathFor(path) (H5MemoryFileInstall).
 PetscErrorCode H5ResultsFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record,
-                                  const std::function<PetscErrorCode(long long file)> &write, const std::string &xdmf = "");
+                                  const std::function<PetscErrorCode(long long file)> &write,
+                                  const std::string                                   &xdmf = "");
 
 // An HDF5 file built in memory (the core driver, no backing store), -1 on failure; written out
 // by H5MemoryFileSave, which closes it in any case (path empty: only closes) and writes its
@@ -78,8 +81,8 @@ std::string H5MemoryFileSave(long long file, const std::string &path);
 // file's XDMF description xdmf (not empty: the file has snapshots) goes to XdmfPathFor(path) the
 // same way, saved before the file and renamed onto its place after it; xdmf empty: a description
 // this program wrote there is removed with the file it described (XdmfFileOurs).
-std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp, const std::string &error,
-                                const std::string &xdmf = "");
+std::string H5MemoryFileInstall(long long file, const std::string &path, const std::string &tmp,
+                                const std::string &error, const std::string &xdmf = "");
 
 // A write failure's cause for a message: error itself, after "disk full: " when it is one
 // (ENOSPC or EDQUOT's text in it).
@@ -104,14 +107,16 @@ PetscErrorCode H5WriteDataset1D(long long loc, const char *name, const std::vect
 // A string bed's grid as two datasets x_name, z_name (m, from the head's centre: along the
 // frame's axis and across the face) in loc.
 PetscErrorCode H5WriteBedGrid(long long loc, const BedGrid &g, const char *x_name, const char *z_name);
-PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v, const char *unit); // 64-bit integers
+PetscErrorCode H5WriteDatasetInt1D(long long loc, const char *name, const std::vector<long long> &v,
+                                   const char *unit); // 64-bit integers
 // Counts that must stay double (NaN in a failed sweep row): the dataset carries the integer
 // attribute integer = 1, so that readers write its finite values as whole numbers.
 PetscErrorCode H5WriteCounts1D(long long loc, const char *name, const std::vector<double> &v, const char *unit);
-PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, const char *unit);
+PetscErrorCode H5WriteDataset2D(long long loc, const char *name, const std::vector<std::vector<double>> &rows,
+                                const char *unit);
 // A dataset [row][n1][n2] of rows of n1 * n2 values each.
-PetscErrorCode H5WriteDataset3D(long long loc, const char *name, const std::vector<std::vector<double>> &rows, size_t n1,
-                                size_t n2, const char *unit);
+PetscErrorCode H5WriteDataset3D(long long loc, const char *name, const std::vector<std::vector<double>> &rows,
+                                size_t n1, size_t n2, const char *unit);
 // A 1-D dataset of variable-length UTF-8 strings, with its unit.
 PetscErrorCode H5WriteText1D(long long loc, const char *name, const std::vector<std::string> &v, const char *unit);
 

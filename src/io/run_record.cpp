@@ -72,7 +72,7 @@ PetscErrorCode RunInputFiles(std::vector<InputFile> *files)
 
 std::vector<std::string> RunInputAttributeNames(const std::vector<InputFile> &files)
 {
-  std::vector<std::string> out;
+  std::vector<std::string>   out;
   std::map<std::string, int> seen;
   for (const InputFile &f : files) {
     const int k = ++seen[f.option];
@@ -142,7 +142,7 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_thickness", beam.input.thickness);
   rec->add("beam_width", beam.input.width);
   rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
-  if (beam.torsion.on) { // the frame's roll
+  if (beam.torsion.on) {                                        // the frame's roll
     rec->add("beam_torsion_stiffness", beam.torsion.stiffness); // 0: the section's
     rec->add("beam_torsion_inertia", beam.torsion.inertia);
     rec->add("beam_inertia_roll", body.inertia_roll);
@@ -163,7 +163,8 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
     rec->add("membrane_N_x", m.N_x);
     rec->add("membrane_N_z", m.N_z);
     rec->add("membrane_sigma", m.sigma);
-    rec->add("strings_patch_radius", b.patch_radius); // m, as used (< 0 in a sweep's structure record: each point's from its ball)
+    rec->add("strings_patch_radius",
+             b.patch_radius); // m, as used (< 0 in a sweep's structure record: each point's from its ball)
     const BedGrid g = StringBedFrameGrid(b, beam.nodes, beam.length);
     rec->add("strings_h_x", g.hx);
     rec->add("strings_h_z", g.hz);
@@ -182,7 +183,8 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   rec->add("ball_speed", ball.speed);
   rec->add("ball_law", ContactLawName(ball.law));
   if (ball.radius > 0) rec->add("ball_radius", ball.radius);
-  for (const ContactLawRecord &r : ContactLawRecordOf(ball)) r.is_text ? rec->add(r.name, r.text) : rec->add(r.name, (double)r.value); // its parameters and wall values
+  for (const ContactLawRecord &r : ContactLawRecordOf(ball))
+    r.is_text ? rec->add(r.name, r.text) : rec->add(r.name, (double)r.value); // its parameters and wall values
   rec->add("ball_loss_factor", ball.loss_factor);
   // The values used: a derived default (-impact_window, -impact_max_time < 0) as computed.
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
@@ -195,8 +197,10 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   rec->add("impact_event_tol", sc.impact.event_tol);
   rec->add("impact_max_contacts", sc.impact.max_contacts);
   // As resolved by the run: the default modal falls back to time for a beam beyond the modes' limit.
-  rec->add("impact_after", first && !first->after_used.empty() ? first->after_used : std::string(ImpactAfterName(sc.impact.after)));
-  if (first && first->modal.kept > 0) { // the modal engine the run used (docs/model.md §12): the modes kept, the cut-off (Hz; NaN: none chose them)
+  rec->add("impact_after",
+           first && !first->after_used.empty() ? first->after_used : std::string(ImpactAfterName(sc.impact.after)));
+  if (first && first->modal.kept > 0) { // the modal engine the run used (docs/model.md §12): the modes kept, the
+                                        // cut-off (Hz; NaN: none chose them)
     rec->add("modal_modes_kept", first->modal.kept);
     rec->add("modal_cutoff", (double)first->modal.cutoff);
   }
@@ -252,19 +256,26 @@ PetscErrorCode RunRecordWriteOptionsUsed(long long loc, const RunRecord &rec)
   if (rec.options_used.empty()) PetscFunctionReturn(0);
   hid_t g = H5Gcreate2((hid_t)loc, "options_used", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create the group options_used");
-  hid_t gu = H5Gcreate2(g, "unit", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), gg = H5Gcreate2(g, "given", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t gu = H5Gcreate2(g, "unit", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+        gg = H5Gcreate2(g, "given", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   for (const auto &kv : rec.options_used) {
     const std::string name = kv.first.substr(1); // without the dash
     const OptionUsed &u    = kv.second;
     switch (u.kind) {
-    case OptionKind::Real: PetscCall(WriteAttr(g, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, &u.number)); break;
+    case OptionKind::Real:
+      PetscCall(WriteAttr(g, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, &u.number));
+      break;
     case OptionKind::Int:
     case OptionKind::Bool: {
       const long long v = (long long)u.number;
       PetscCall(WriteAttr(g, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, &v));
     } break;
-    case OptionKind::RealList: PetscCall(WriteAttr(g, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, u.list.data(), (hssize_t)u.list.size())); break;
-    default: PetscCall(WriteText(g, name, u.text)); break; // Text, Choice, File
+    case OptionKind::RealList:
+      PetscCall(WriteAttr(g, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, u.list.data(), (hssize_t)u.list.size()));
+      break;
+    default:
+      PetscCall(WriteText(g, name, u.text));
+      break; // Text, Choice, File
     }
     if (!u.unit.empty()) PetscCall(WriteText(gu, name, u.unit));
     const long long given = u.given ? 1 : 0;

@@ -41,14 +41,14 @@ struct RunRecord {
   std::vector<std::pair<std::string, double>>      numbers;
   std::vector<std::pair<std::string, long long>>   integers;
   std::vector<std::pair<std::string, std::string>> strings;
-  void add(const std::string &k, double v) { numbers.emplace_back(k, v); }
+  void                                             add(const std::string &k, double v) { numbers.emplace_back(k, v); }
   template <class T, std::enable_if_t<std::is_integral<T>::value, int> = 0>
   void add(const std::string &k, T v)
   {
     integers.emplace_back(k, (long long)v);
   }
-  void add(const std::string &k, const std::string &v) { strings.emplace_back(k, v); }
-  void add(const std::string &k, const char *v) { strings.emplace_back(k, v); }
+  void                              add(const std::string &k, const std::string &v) { strings.emplace_back(k, v); }
+  void                              add(const std::string &k, const char *v) { strings.emplace_back(k, v); }
   std::map<std::string, OptionUsed> options_used; // by option name with its dash; written to /options_used
 };
 

@@ -16,15 +16,35 @@ const OptionModule &SwingOptionTable()
 {
   static const OptionModule m = {
     "bat",
-    "Swinging bat: its rigid motion toward the ball before the impact (given, or the batter's swing law of the bat's moment of inertia)",
+    "Swinging bat: its rigid motion toward the ball before the impact (given, or the batter's swing law of the bat's "
+    "moment of inertia)",
     {
       OptionReal("-bat_speed", "m/s", "Centre-of-mass speed V_cm of the bat toward the ball", "0"),
-      OptionReal("-bat_angular_velocity", "rad/s", "Angular velocity Omega about the centre of mass (> 0: the x = L end moves faster toward the ball)", "0"),
-      OptionReal("-bat_swing_angular_velocity", "rad/s", "The batter's swing as a law instead of -bat_speed/-bat_angular_velocity: the bat turns at omega_0 about -bat_swing_pivot, both scaled by (I_s/I_0)^(-n) (Cross & Bower 2006)", ""),
-      OptionNeeds(OptionReal("-bat_swing_pivot", "m", "The point x_s the swing turns about (the hands), from x = 0; I_s is the bat's moment of inertia about it", "0", NonNegative()), {"-bat_swing_angular_velocity"}),
-      OptionNeeds(OptionReal("-bat_swing_pivot_speed", "m/s", "The speed v_s of the point x_s toward the ball (at I_0)", "0"), {"-bat_swing_angular_velocity"}),
-      OptionNeeds(OptionReal("-bat_swing_exponent", "1", "n of the swing speed's law V = V_0 (I_s/I_0)^(-n) (Cross & Bower 2006: 0.25 softball bats, 0.26 golf clubs, 0.27 rods and rackets)", "0.26", Between(0, 2)), {"-bat_swing_reference_inertia"}),
-      OptionNeeds(OptionReal("-bat_swing_reference_inertia", "kg m^2", "I_0: the moment of inertia about x_s at which the batter swings at omega_0 (default: none, the swing does not depend on the bat)", "", Positive()), {"-bat_swing_angular_velocity"}),
+      OptionReal("-bat_angular_velocity", "rad/s",
+                 "Angular velocity Omega about the centre of mass (> 0: the x = L end moves faster toward the ball)",
+                 "0"),
+      OptionReal("-bat_swing_angular_velocity", "rad/s",
+                 "The batter's swing as a law instead of -bat_speed/-bat_angular_velocity: the bat turns at omega_0 "
+                 "about -bat_swing_pivot, both scaled by (I_s/I_0)^(-n) (Cross & Bower 2006)",
+                 ""),
+      OptionNeeds(OptionReal("-bat_swing_pivot", "m",
+                             "The point x_s the swing turns about (the hands), from x = 0; I_s is the bat's moment of "
+                             "inertia about it",
+                             "0", NonNegative()),
+                  {"-bat_swing_angular_velocity"}),
+      OptionNeeds(OptionReal("-bat_swing_pivot_speed", "m/s", "The speed v_s of the point x_s toward the ball (at I_0)",
+                             "0"),
+                  {"-bat_swing_angular_velocity"}),
+      OptionNeeds(OptionReal("-bat_swing_exponent", "1",
+                             "n of the swing speed's law V = V_0 (I_s/I_0)^(-n) (Cross & Bower 2006: 0.25 softball "
+                             "bats, 0.26 golf clubs, 0.27 rods and rackets)",
+                             "0.26", Between(0, 2)),
+                  {"-bat_swing_reference_inertia"}),
+      OptionNeeds(OptionReal("-bat_swing_reference_inertia", "kg m^2",
+                             "I_0: the moment of inertia about x_s at which the batter swings at omega_0 (default: "
+                             "none, the swing does not depend on the bat)",
+                             "", Positive()),
+                  {"-bat_swing_angular_velocity"}),
     },
   };
   return m;
@@ -50,14 +70,24 @@ PetscErrorCode SwingFromOptions(MPI_Comm comm, const BeamParams &beam, SwingPara
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_reference_inertia", &law.reference_inertia, NULL));
   PetscOptionsEnd();
   if (setlaw) {
-    PetscCheck(!s->Swings(), comm, PETSC_ERR_ARG_INCOMP, "-bat_swing_angular_velocity with %s is not allowed: the swing is either the law's or the bat's own rigid motion", s->bat_speed != 0 ? "-bat_speed" : "-bat_angular_velocity");
-    PetscCheck(law.pivot < beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_swing_pivot %g is not allowed: the swing turns about a point of the bat, 0 <= x_s < L = %g (m)", (double)law.pivot, (double)beam.length);
+    PetscCheck(!s->Swings(), comm, PETSC_ERR_ARG_INCOMP,
+               "-bat_swing_angular_velocity with %s is not allowed: the swing is either the law's or the bat's own "
+               "rigid motion",
+               s->bat_speed != 0 ? "-bat_speed" : "-bat_angular_velocity");
+    PetscCheck(law.pivot < beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-bat_swing_pivot %g is not allowed: the swing turns about a point of the bat, 0 <= x_s < L = %g (m)",
+               (double)law.pivot, (double)beam.length);
     law.on = true;
     *s     = SwingFromLaw(law, BeamRigidBodyOf(beam));
   }
   if (s->Swings()) {
-    const char *held = beam.left.Holds() != NodeHold::None ? "-beam_left" : beam.right.Holds() != NodeHold::None ? "-beam_right" : beam.has_clamp ? "-beam_clamp" : beam.has_pivot ? "-beam_pivot" : nullptr;
-    PetscCheck(!held, comm, PETSC_ERR_ARG_INCOMP, "-bat_speed/-bat_angular_velocity swing a free bat: %s holds it (remove it, or do not swing)", held);
+    const char *held = beam.left.Holds() != NodeHold::None  ? "-beam_left"
+                     : beam.right.Holds() != NodeHold::None ? "-beam_right"
+                     : beam.has_clamp                       ? "-beam_clamp"
+                     : beam.has_pivot                       ? "-beam_pivot"
+                                                            : nullptr;
+    PetscCheck(!held, comm, PETSC_ERR_ARG_INCOMP,
+               "-bat_speed/-bat_angular_velocity swing a free bat: %s holds it (remove it, or do not swing)", held);
   }
   PetscFunctionReturn(0);
 }
@@ -68,24 +98,29 @@ PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
 {
   BarrelShell &shell = sc->beam.shell;
   PetscFunctionBeginUser;
-  if (shell.contact_radius >= 0) { // given: a patch wider than the ball or the wall spreads the load off the wall (sin(n a/R)/(n a/R) -> 0)
+  if (shell.contact_radius >=
+      0) { // given: a patch wider than the ball or the wall spreads the load off the wall (sin(n a/R)/(n a/R) -> 0)
     const PetscReal R = ShellRadiusAt(sc->beam, sc->impact.x), Rb = sc->ball.radius;
     PetscReal       limit = PETSC_INFINITY;
     const char     *what  = "";
     if (Rb > 0) limit = Rb, what = "the ball's radius (-ball_radius)";
     if (R > 0 && R < limit) limit = R, what = "the barrel wall's midsurface radius at the impact point";
     PetscCheck(!(shell.contact_radius > limit), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-shell_contact_radius %g m is not allowed: the ball's patch on the wall can be no wider than %s, %g m; allowed 0 <= a <= %g m (a wider patch spreads the load off the wall)",
+               "-shell_contact_radius %g m is not allowed: the ball's patch on the wall can be no wider than %s, %g m; "
+               "allowed 0 <= a <= %g m (a wider patch spreads the load off the wall)",
                (double)shell.contact_radius, what, (double)limit, (double)limit);
   }
   if (shell.contact_radius < 0) {
-    const PetscReal v    = sc->ball.speed + (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
+    const PetscReal v = sc->ball.speed +
+                        (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
     shell.contact_radius = ShellContactRadiusDefault(sc->ball, v);
   }
-  const size_t   per   = ShellPatchNodeWeights(sc->beam.nodes, sc->beam.length, sc->impact.x, shell.contact_radius).size();
+  const size_t per = ShellPatchNodeWeights(sc->beam.nodes, sc->beam.length, sc->impact.x, shell.contact_radius).size();
   const PetscInt total = 2 + (sc->beam.hoop.on ? 1 : 0) + (PetscInt)(per * shell.harmonics.size());
   PetscCheck(total <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-shell_contact_radius %g m is not allowed with -beam_nodes %" PetscInt_FMT ": the patch covers %zu nodes per harmonic, %" PetscInt_FMT " coupled dofs in all (at most %" PetscInt_FMT "); give a smaller radius or fewer -shell_harmonics",
+             "-shell_contact_radius %g m is not allowed with -beam_nodes %" PetscInt_FMT
+             ": the patch covers %zu nodes per harmonic, %" PetscInt_FMT " coupled dofs in all (at most %" PetscInt_FMT
+             "); give a smaller radius or fewer -shell_harmonics",
              (double)shell.contact_radius, sc->beam.nodes, per, total, ContactCoupling::kMaxEntries);
   PetscFunctionReturn(0);
 }
@@ -108,10 +143,13 @@ PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
     else if (!bed.Held()) dofs.insert(e.i * (g.nz + 2)), dofs.insert(e.i * (g.nz + 2) + 1); // a held frame's dofs: none
   }
   PetscCheck(!beyond || bed.Held(), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-impact_x %g with -strings_patch_radius %g m is not allowed: the ball's load on the bed (its disc, spread over the nodes around the point, h_x %g m) reaches past the frame's end (0 <= x <= L = %g m); strike further from the end or give a smaller -strings_patch_radius",
+             "-impact_x %g with -strings_patch_radius %g m is not allowed: the ball's load on the bed (its disc, "
+             "spread over the nodes around the point, h_x %g m) reaches past the frame's end (0 <= x <= L = %g m); "
+             "strike further from the end or give a smaller -strings_patch_radius",
              (double)sc->impact.x, (double)a, (double)g.hx, (double)sc->beam.length);
   PetscCheck((PetscInt)dofs.size() <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %zu coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
+             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %zu "
+             "coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
              (double)a, (double)g.hx, (double)g.hz, dofs.size(), ContactCoupling::kMaxEntries);
   PetscFunctionReturn(0);
 }
@@ -122,10 +160,12 @@ PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
 PetscErrorCode FlightBallResolve(MPI_Comm comm, const Scenario &sc)
 {
   PetscFunctionBeginUser;
-  PetscCheck(sc.ball.radius > 0, comm, PETSC_ERR_ARG_WRONG, "-flight needs the ball's size for its drag and lift in the air: give -ball_radius (m)");
+  PetscCheck(sc.ball.radius > 0, comm, PETSC_ERR_ARG_WRONG,
+             "-flight needs the ball's size for its drag and lift in the air: give -ball_radius (m)");
   const FlightBall baseball;
-  const bool       other = std::abs(sc.ball.mass / baseball.mass - 1) >= 0.1 || std::abs(sc.ball.radius / baseball.radius - 1) >= 0.1;
-  bool             aero  = false;
+  const bool       other = std::abs(sc.ball.mass / baseball.mass - 1) >= 0.1 ||
+                     std::abs(sc.ball.radius / baseball.radius - 1) >= 0.1;
+  bool aero = false;
   for (const char *c : {"-flight_cd0", "-flight_cd_spin", "-flight_cl0", "-flight_cl1", "-flight_cl2"}) {
     PetscBool given;
     PetscCall(PetscOptionsHasName(NULL, NULL, c, &given));
@@ -135,9 +175,12 @@ PetscErrorCode FlightBallResolve(MPI_Comm comm, const Scenario &sc)
   const FlightAero &a = sc.flight.params.aero;
   char              text[600];
   std::snprintf(text, sizeof text,
-                "note: -flight flies the impact's ball (%g kg, radius %g m) with Nathan's baseball aerodynamics (C_D = %g + %g per 1000 rpm, C_L = %g S/(%g + %g S)): another ball has its own (a tennis ball's C_D is "
-                "about 0.55); give -flight_cd0, -flight_cd_spin, -flight_cl0, -flight_cl1, -flight_cl2 (docs/flight.md)\n",
-                (double)sc.ball.mass, (double)sc.ball.radius, (double)a.cd0, (double)a.cd_spin, (double)a.cl2, (double)a.cl0, (double)a.cl1);
+                "note: -flight flies the impact's ball (%g kg, radius %g m) with Nathan's baseball aerodynamics (C_D = "
+                "%g + %g per 1000 rpm, C_L = %g S/(%g + %g S)): another ball has its own (a tennis ball's C_D is "
+                "about 0.55); give -flight_cd0, -flight_cd_spin, -flight_cl0, -flight_cl1, -flight_cl2 "
+                "(docs/flight.md)\n",
+                (double)sc.ball.mass, (double)sc.ball.radius, (double)a.cd0, (double)a.cd_spin, (double)a.cl2,
+                (double)a.cl0, (double)a.cl1);
   PetscCall(PrintOnce(comm, text));
   PetscFunctionReturn(0);
 }
@@ -161,7 +204,8 @@ unsigned ScenarioPartOf(const std::string &name)
 
 PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Scenario *sc)
 {
-  const unsigned read = how.reuse && !(how.read & ScenarioBeam) ? how.read : ScenarioAll; // a beam read again: everything
+  const unsigned read = how.reuse && !(how.read & ScenarioBeam) ? how.read
+                                                                : ScenarioAll; // a beam read again: everything
   auto           part = [&](ScenarioPart p) { return (read & p) != 0; };
 
   PetscFunctionBeginUser;
@@ -180,14 +224,17 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   // A ball at rest is struck only by a swinging bat (the approach speed v_i + V(x) > 0 is then
   // checked at the impact point, naming both options).
   PetscCheck(sc->ball.speed > 0 || sc->swing.Swings(), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-ball_speed 0 is not allowed for a bat at rest: ball and beam would never meet; give -ball_speed > 0 (m/s), or swing the bat (-bat_speed, -bat_angular_velocity)");
+             "-ball_speed 0 is not allowed for a bat at rest: ball and beam would never meet; give -ball_speed > 0 "
+             "(m/s), or swing the bat (-bat_speed, -bat_angular_velocity)");
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
   if (part(ScenarioImpact)) PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
   const PetscReal radius_as_read = sc->beam.shell.contact_radius, patch_as_read = sc->beam.strings.patch_radius;
   if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
   if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
-  if (part(ScenarioFlight)) PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve, how.monitors && how.flight_series));
+  if (part(ScenarioFlight))
+    PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve,
+                                           how.monitors && how.flight_series));
   if (sc->flight.on && (part(ScenarioFlight) || part(ScenarioBall))) PetscCall(FlightBallResolve(comm, *sc));
   if (how.read_as) {
     *how.read_as                           = *sc;

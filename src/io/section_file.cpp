@@ -17,7 +17,8 @@ namespace {
 
 // The numeric rows of a file: each row's numbers and its line number. Returns false with
 // *why on a missing file, a word that is not a number, or no rows at all.
-bool NumberRows(const std::string &path, std::vector<std::vector<double>> *rows, std::vector<int> *lines, std::string *why)
+bool NumberRows(const std::string &path, std::vector<std::vector<double>> *rows, std::vector<int> *lines,
+                std::string *why)
 {
   std::ifstream in(path);
   if (!in) {
@@ -32,7 +33,8 @@ bool NumberRows(const std::string &path, std::vector<std::vector<double>> *rows,
   for (int no = 1; no <= (int)text.size(); ++no) {
     std::string line = text[no - 1];
     if (line.find('\0') != std::string::npos) { // binary data: the text would stop at the NUL
-      *why = path + ":" + std::to_string(no) + ": the line holds a NUL byte (binary data?): a section file is plain text";
+      *why = path + ":" + std::to_string(no) +
+             ": the line holds a NUL byte (binary data?): a section file is plain text";
       return false;
     }
     const size_t hash = line.find('#');
@@ -58,7 +60,8 @@ bool NumberRows(const std::string &path, std::vector<std::vector<double>> *rows,
     lines->push_back(no);
   }
   if (rows->size() < 2) {
-    *why = path + (rows->empty() ? ": the file has no rows" : ": the file has one row; a beam needs at least two (its two ends)");
+    *why = path + (rows->empty() ? ": the file has no rows"
+                                 : ": the file has one row; a beam needs at least two (its two ends)");
     return false;
   }
   return true;
@@ -84,7 +87,8 @@ bool ProfileFileRead(const std::string &path, std::vector<ProfileRow> *out, std:
   for (size_t r = 0; r < rows.size(); ++r) {
     const std::vector<double> &v = rows[r];
     if (v.size() < 2 || v.size() > 3) {
-      *why = At(path, lines[r]) + "a profile row is 'x D' or 'x D d' (m); this row has " + std::to_string(v.size()) + " numbers";
+      *why = At(path, lines[r]) + "a profile row is 'x D' or 'x D d' (m); this row has " + std::to_string(v.size()) +
+             " numbers";
       return false;
     }
     ProfileRow p;
@@ -95,11 +99,14 @@ bool ProfileFileRead(const std::string &path, std::vector<ProfileRow> *out, std:
       return false;
     }
     if (!(p.d >= 0 && p.d < p.D)) {
-      *why = At(path, lines[r]) + "inner diameter d = " + Num(p.d) + " is not allowed: need 0 <= d < D = " + Num(p.D) + " (m)";
+      *why = At(path, lines[r]) + "inner diameter d = " + Num(p.d) + " is not allowed: need 0 <= d < D = " + Num(p.D) +
+             " (m)";
       return false;
     }
     if (!out->empty() && !(p.x > out->back().x)) {
-      *why = At(path, lines[r]) + "x = " + Num(p.x) + " does not increase (the row before has x = " + Num(out->back().x) + "): rows go from one end to the other";
+      *why = At(path, lines[r]) + "x = " + Num(p.x) +
+             " does not increase (the row before has x = " + Num(out->back().x) +
+             "): rows go from one end to the other";
       return false;
     }
     out->push_back(p);
@@ -107,21 +114,24 @@ bool ProfileFileRead(const std::string &path, std::vector<ProfileRow> *out, std:
   return true;
 }
 
-bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *out, bool *has_shear, bool *has_torsion, std::string *why)
+bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *out, bool *has_shear, bool *has_torsion,
+                        std::string *why)
 {
   std::vector<std::vector<double>> rows;
   std::vector<int>                 lines;
   if (!NumberRows(path, &rows, &lines, why)) return false;
   out->clear();
-  const size_t cols = rows[0].size();
-  *has_shear        = cols >= 5;
-  *has_torsion      = cols == 7;
+  const size_t cols                = rows[0].size();
+  *has_shear                       = cols >= 5;
+  *has_torsion                     = cols == 7;
   static const char *const names[] = {"x", "EI", "mu", "kappaGA", "rhoI", "GJ", "rhoJ"};
   for (size_t r = 0; r < rows.size(); ++r) {
     const std::vector<double> &v = rows[r];
     if ((v.size() != 3 && v.size() != 5 && v.size() != 7) || v.size() != cols) {
-      *why = At(path, lines[r]) + "a properties row is 'x EI mu', 'x EI mu kappaGA rhoI' or 'x EI mu kappaGA rhoI GJ rhoJ' (the same on every row; SI units); this row has " + std::to_string(v.size()) +
-             " numbers and the first has " + std::to_string(cols);
+      *why = At(path, lines[r]) +
+             "a properties row is 'x EI mu', 'x EI mu kappaGA rhoI' or 'x EI mu kappaGA rhoI GJ rhoJ' (the same on "
+             "every row; SI units); this row has " +
+             std::to_string(v.size()) + " numbers and the first has " + std::to_string(cols);
       return false;
     }
     for (size_t c = 1; c < v.size(); ++c)
@@ -136,7 +146,9 @@ bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *out
     if (cols >= 5) p.s.kGA = v[3], p.s.rhoI = v[4];
     if (cols == 7) p.s.GJ = v[5], p.s.rhoJ = v[6];
     if (!out->empty() && !(p.x > out->back().x)) {
-      *why = At(path, lines[r]) + "x = " + Num(p.x) + " does not increase (the row before has x = " + Num(out->back().x) + "): rows go from one end to the other";
+      *why = At(path, lines[r]) + "x = " + Num(p.x) +
+             " does not increase (the row before has x = " + Num(out->back().x) +
+             "): rows go from one end to the other";
       return false;
     }
     out->push_back(p);

@@ -17,6 +17,7 @@ bool ProfileFileRead(const std::string &path, std::vector<ProfileRow> *rows, std
 // Rows of a properties file: at least two, 3, 5 or 7 numbers per row (the same on every row),
 // x strictly increasing, every property > 0 and finite. *has_shear: rows carry kappaGA, rhoI;
 // *has_torsion: and GJ, rhoJ (the twist, model/torsion.hpp).
-bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *rows, bool *has_shear, bool *has_torsion, std::string *why);
+bool PropertiesFileRead(const std::string &path, std::vector<PropertiesRow> *rows, bool *has_shear, bool *has_torsion,
+                        std::string *why);
 
 } // namespace beamimpact

@@ -16,11 +16,11 @@ public:
   void        Update(const void *data, size_t n);
   std::string HexDigest(); // ends the computation
 private:
-  void     Block(const unsigned char *p);
-  uint32_t h_[8];
-  uint64_t bytes_ = 0;
+  void          Block(const unsigned char *p);
+  uint32_t      h_[8];
+  uint64_t      bytes_ = 0;
   unsigned char buf_[64];
-  size_t   fill_ = 0;
+  size_t        fill_ = 0;
 };
 
 std::string Sha256Hex(const std::string &bytes);

@@ -37,7 +37,8 @@ PetscErrorCode StringBedRunRecordBuild(const StringBedParams &p, const StringBed
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ResultsWriteStringBedModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const StringBedParams &p, const StringBedModes &modes)
+PetscErrorCode ResultsWriteStringBedModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                              const StringBedParams &p, const StringBedModes &modes)
 {
   const BedGrid g = StringBedGrid(p);
   PetscFunctionBeginUser;
@@ -50,7 +51,8 @@ PetscErrorCode ResultsWriteStringBedModesFile(MPI_Comm comm, const std::string &
     PetscCall(H5WriteBedGrid(gm, g, "x", "z"));
     for (size_t q = 0; q < modes.shape.size(); ++q) {
       std::vector<std::vector<double>> rows(g.nz);
-      for (PetscInt j = 0; j < g.nz; ++j) rows[j].assign(modes.shape[q].begin() + j * g.nx, modes.shape[q].begin() + (j + 1) * g.nx);
+      for (PetscInt j = 0; j < g.nz; ++j)
+        rows[j].assign(modes.shape[q].begin() + j * g.nx, modes.shape[q].begin() + (j + 1) * g.nx);
       const std::string name = "shape_" + std::to_string(q + 1);
       PetscCall(H5WriteDataset2D(gm, name.c_str(), rows, "kg^-1/2 (deflection, mass-normalised), [z][x]"));
       PetscCall(H5DimsAttach(gm, name.c_str(), {"z", "x"}));

@@ -15,6 +15,7 @@
 namespace beamimpact {
 
 PetscErrorCode StringBedRunRecordBuild(const StringBedParams &p, const StringBedModes &modes, RunRecord *rec);
-PetscErrorCode ResultsWriteStringBedModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record, const StringBedParams &p, const StringBedModes &modes);
+PetscErrorCode ResultsWriteStringBedModesFile(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                              const StringBedParams &p, const StringBedModes &modes);
 
 } // namespace beamimpact

@@ -37,14 +37,17 @@ bool TextLines(std::istream &in, std::vector<std::string> *lines, std::string *w
   struct Mark {
     const char *bytes, *hex, *encoding;
   };
-  static const Mark wide[] = {{"\xFF\xFE\x00\x00", "FF FE 00 00", "UTF-32"}, {"\x00\x00\xFE\xFF", "00 00 FE FF", "UTF-32"},
-                              {"\xFF\xFE", "FF FE", "UTF-16"}, {"\xFE\xFF", "FE FF", "UTF-16"}};
+  static const Mark wide[] = {{"\xFF\xFE\x00\x00", "FF FE 00 00", "UTF-32"},
+                              {"\x00\x00\xFE\xFF", "00 00 FE FF", "UTF-32"},
+                              {"\xFF\xFE", "FF FE", "UTF-16"},
+                              {"\xFE\xFF", "FE FF", "UTF-16"}};
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   lines->clear();
   for (const Mark &m : wide) {
     const std::string mark(m.bytes, m.encoding[4] == '3' ? 4 : 2);
     if (text.compare(0, mark.size(), mark) == 0) {
-      *why = std::string("the file is ") + m.encoding + " text (it starts with the bytes " + m.hex + "): save it as UTF-8 or plain ASCII";
+      *why = std::string("the file is ") + m.encoding + " text (it starts with the bytes " + m.hex +
+             "): save it as UTF-8 or plain ASCII";
       return false;
     }
   }

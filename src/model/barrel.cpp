@@ -37,12 +37,18 @@ bool BarrelWallThicknessApply(PetscReal t, std::vector<ProfileRow> *rows, std::s
   for (const ProfileRow &r : *rows) {
     if (r.D < D * (1 - 1e-9)) continue;
     if (!(r.d > 0)) {
-      std::snprintf(text, sizeof text, "the barrel (the rows at the largest outer diameter, D = %g m) is solid at x = %g m: there is no wall to change", (double)D, (double)r.x);
+      std::snprintf(text, sizeof text,
+                    "the barrel (the rows at the largest outer diameter, D = %g m) is solid at x = %g m: there is no "
+                    "wall to change",
+                    (double)D, (double)r.x);
       *why = text;
       return false;
     }
     if (!(t > 0 && t < r.D / 2)) {
-      std::snprintf(text, sizeof text, "the wall must be thinner than the barrel's outer radius D/2 = %g m (t >= D/2 is a solid section), and > 0", (double)(r.D / 2));
+      std::snprintf(text, sizeof text,
+                    "the wall must be thinner than the barrel's outer radius D/2 = %g m (t >= D/2 is a solid section), "
+                    "and > 0",
+                    (double)(r.D / 2));
       *why = text;
       return false;
     }

@@ -61,8 +61,8 @@ bool BatMakerProfile(const BatMakerParams &b, PetscReal rho, std::vector<Profile
 
 // A bat's rule numbers: the length in inches minus the weight in ounces (the "drop"; the NCAA and
 // NFHS allow at most 3), from the length (m) and the mass (kg).
-PetscReal BatDrop(PetscReal length, PetscReal mass);
-constexpr PetscReal kMetresPerInch = 0.0254;
+PetscReal           BatDrop(PetscReal length, PetscReal mass);
+constexpr PetscReal kMetresPerInch     = 0.0254;
 constexpr PetscReal kKilogramsPerOunce = 0.028349523125;
 
 } // namespace beamimpact

@@ -35,13 +35,13 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
     m.m0 = p.mu * L, m.m1 = p.mu * L * L / 2, m.m2 = p.mu * L * L * L / 3, m.j = p.rhoI * L;
   } else m = SectionMomentsOf(p.section, 0, p.length);
   if (p.theory != "timoshenko") m.j = 0; // an Euler-Bernoulli beam's sections do not spin
-  if (p.torsion.on) { // the sections' roll inertia: the uniform options where given
+  if (p.torsion.on) {                    // the sections' roll inertia: the uniform options where given
     if (p.torsion.inertia > 0) m.roll = p.torsion.inertia * p.length;
     else if (p.section.source == SectionSource::Uniform) m.roll = 0;
   } else m.roll = 0;
   if (p.strings.On() && !p.strings.Held()) { // a string bed on the frame: sigma over the head's outline
     const PetscReal   sigma = StringBedMembrane(p.strings).sigma, c = p.strings.head_center;
-    const HeadMoments h     = HeadMomentsOf(p.strings);
+    const HeadMoments h = HeadMomentsOf(p.strings);
     m.m0 += sigma * h.area, m.m1 += sigma * h.area * c, m.m2 += sigma * (h.xx + h.area * c * c);
     if (p.torsion.on) m.roll += sigma * h.zz;
   }
@@ -78,14 +78,13 @@ std::vector<NodeHold> BeamNodeHolds(const BeamParams &p)
   return hold;
 }
 
-
 ImpactStencil GridImpactStencil(PetscInt N, PetscReal L, PetscReal x_imp)
 {
   ImpactStencil   st;
-  const PetscReal h  = L / (N - 1);
-  const PetscReal s  = std::min(std::max(x_imp, (PetscReal)0), L) / h;
-  const PetscReal sr = std::round(s);
-  PetscInt        j  = std::abs(s - sr) < 1e-9 ? static_cast<PetscInt>(sr) : static_cast<PetscInt>(std::floor(s));
+  const PetscReal h    = L / (N - 1);
+  const PetscReal s    = std::min(std::max(x_imp, (PetscReal)0), L) / h;
+  const PetscReal sr   = std::round(s);
+  PetscInt        j    = std::abs(s - sr) < 1e-9 ? static_cast<PetscInt>(sr) : static_cast<PetscInt>(std::floor(s));
   PetscReal       frac = std::abs(s - sr) < 1e-9 ? 0.0 : s - j;
   j                    = std::max<PetscInt>(0, j);
   if (j >= N - 1) { // at (or past) the x = L end: all weight on the last node
@@ -109,7 +108,7 @@ PetscReal BeamFundamentalFrequencyEstimate(const BeamParams &p)
     {2.36502, M_PI / 2, M_PI, 2.36502},
     {1.87510, 3.92660, 2.36502, 4.73004},
   };
-  auto betaL = [](NodeHold a, NodeHold b) { return table[static_cast<int>(a)][static_cast<int>(b)]; };
+  auto      betaL = [](NodeHold a, NodeHold b) { return table[static_cast<int>(a)][static_cast<int>(b)]; };
   PetscReal span = p.length, bl = betaL(p.left.Holds(), p.right.Holds());
   if (p.has_clamp) {
     const PetscReal left_span = p.clamp_x0, right_span = p.length - p.clamp_x1;

@@ -23,24 +23,24 @@ namespace beamimpact {
 
 // What the user gave, kept for the record (HDF5 attributes); 0 when not given.
 struct BeamMaterialInput {
-  PetscReal youngs_modulus     = 0; // Pa
-  PetscReal density            = 0; // kg/m^3
-  PetscReal width              = 0; // m (b)
-  PetscReal thickness          = 0; // m (a, in the direction of motion)
-  PetscReal mass               = 0; // kg (M)
-  PetscReal youngs_over_density = 0; // N m / kg (E / rho)
-  std::string parameter_set;        // "E,rho,a,b" | "M,L,a,E/rho" | "EI,mu" | "profile" | "table"
+  PetscReal   youngs_modulus      = 0; // Pa
+  PetscReal   density             = 0; // kg/m^3
+  PetscReal   width               = 0; // m (b)
+  PetscReal   thickness           = 0; // m (a, in the direction of motion)
+  PetscReal   mass                = 0; // kg (M)
+  PetscReal   youngs_over_density = 0; // N m / kg (E / rho)
+  std::string parameter_set;           // "E,rho,a,b" | "M,L,a,E/rho" | "EI,mu" | "profile" | "table"
 };
 
 // The hands (-grip x_a,x_b): a spring-damper per unit length over [x_a, x_b] tying the handle's
 // deflection to the swing's rigid frame, and an optional hand mass spread over the same span
 // (model/grip.hpp: the per-dof weights; system/beam_system.hpp: where it enters).
 struct BeamGrip {
-  bool      on = false;
-  PetscReal x_a = 0, x_b = 0;  // m
-  PetscReal stiffness = 0;     // N/m per m of handle
-  PetscReal damping   = 0;     // N s/m per m
-  PetscReal mass      = 0;     // kg, the hands (added to the translational dofs of the grip)
+  bool      on  = false;
+  PetscReal x_a = 0, x_b = 0;      // m
+  PetscReal stiffness         = 0; // N/m per m of handle
+  PetscReal damping           = 0; // N s/m per m
+  PetscReal mass              = 0; // kg, the hands (added to the translational dofs of the grip)
   PetscReal torsion_stiffness = 0; // N m/rad per m of handle: the hands' hold on the frame's roll (-beam_torsion)
   PetscReal torsion_damping   = 0; // N m s/rad per m
 };
@@ -59,8 +59,10 @@ struct BarrelHoop {
 struct BarrelShell {
   bool                  on        = false;
   std::vector<PetscInt> harmonics = {2, 3, 4}; // circumferential orders n >= 2
-  PetscReal contact_radius = -1;               // m, the ball's load patch a (-shell_contact_radius; 0: a point load; < 0: not yet derived from the ball)
-  PetscReal youngs_modulus = 0;                // Pa, the wall's E in the shell (-shell_youngs_modulus; 0: the profile's, -beam_youngs_modulus)
+  PetscReal contact_radius = -1; // m, the ball's load patch a (-shell_contact_radius; 0: a point load; < 0: not yet
+                                 // derived from the ball)
+  PetscReal
+    youngs_modulus = 0; // Pa, the wall's E in the shell (-shell_youngs_modulus; 0: the profile's, -beam_youngs_modulus)
 };
 
 // The frame's twist about its own axis (-beam_torsion; model/torsion.hpp): one more field per
@@ -73,27 +75,27 @@ struct BeamTorsion {
 };
 
 struct BeamParams {
-  PetscReal length = 1.1;  // m
-  PetscReal EI     = 0;    // N m^2, bending stiffness (uniform; with a profile or table, its mean)
-  PetscReal mu     = 0;    // kg/m, mass per length (uniform; with a profile or table, mass / L)
-  PetscReal kGA    = 0;    // N, shear stiffness kappa G A of a uniform section (0: unknown)
-  PetscReal rhoI   = 0;    // kg m, rotary inertia per length rho I of a uniform section (0: unknown)
-  BeamSection section;     // where the section varies (profile or table); source Uniform: the scalars above
-  PetscInt  nodes  = 41;   // number of grid nodes N (>= 5)
-  Support   left   = Support::Free; // support at x = 0 (model/support.hpp registry)
-  Support   right  = Support::Free; // support at x = L
-  bool      has_clamp = false;      // a clamped region [clamp_x0, clamp_x1] is held fixed
-  PetscReal clamp_x0 = 0, clamp_x1 = 0; // m
-  bool      has_pivot = false;      // an interior point pinned (y = 0, free rotation): a test rig's pivot
-  PetscReal pivot_x   = 0;          // m, on a node (BeamPivotNode)
-  std::string theory = "euler";     // beam theory (model/beam_theory.hpp registry)
-  PetscReal damping_mass      = 0;  // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
-  PetscReal damping_stiffness = 0;  // s,   beta
-  BeamGrip  grip;                   // the hands on the handle (none by default)
-  BarrelHoop hoop;                  // the barrel wall's hoop oscillator (none by default)
-  BarrelShell shell;                // the barrel wall as a shell (none by default)
-  BeamTorsion torsion;              // the frame's twist (none by default)
-  StringBedParams strings;          // a racket's string bed on the frame (-strings_frame; none by default)
+  PetscReal         length = 1.1;   // m
+  PetscReal         EI     = 0;     // N m^2, bending stiffness (uniform; with a profile or table, its mean)
+  PetscReal         mu     = 0;     // kg/m, mass per length (uniform; with a profile or table, mass / L)
+  PetscReal         kGA    = 0;     // N, shear stiffness kappa G A of a uniform section (0: unknown)
+  PetscReal         rhoI   = 0;     // kg m, rotary inertia per length rho I of a uniform section (0: unknown)
+  BeamSection       section;        // where the section varies (profile or table); source Uniform: the scalars above
+  PetscInt          nodes     = 41; // number of grid nodes N (>= 5)
+  Support           left      = Support::Free;   // support at x = 0 (model/support.hpp registry)
+  Support           right     = Support::Free;   // support at x = L
+  bool              has_clamp = false;           // a clamped region [clamp_x0, clamp_x1] is held fixed
+  PetscReal         clamp_x0 = 0, clamp_x1 = 0;  // m
+  bool              has_pivot         = false;   // an interior point pinned (y = 0, free rotation): a test rig's pivot
+  PetscReal         pivot_x           = 0;       // m, on a node (BeamPivotNode)
+  std::string       theory            = "euler"; // beam theory (model/beam_theory.hpp registry)
+  PetscReal         damping_mass      = 0;       // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
+  PetscReal         damping_stiffness = 0;       // s,   beta
+  BeamGrip          grip;                        // the hands on the handle (none by default)
+  BarrelHoop        hoop;                        // the barrel wall's hoop oscillator (none by default)
+  BarrelShell       shell;                       // the barrel wall as a shell (none by default)
+  BeamTorsion       torsion;                     // the frame's twist (none by default)
+  StringBedParams   strings;                     // a racket's string bed on the frame (-strings_frame; none by default)
   BeamMaterialInput input;
 };
 
@@ -107,11 +109,12 @@ SectionProperties BeamSectionMean(const BeamParams &p, PetscReal a, PetscReal b)
 // beam's include the sections' own rotary inertia (int rho I), as its dynamics do (for a bat
 // about 0.1% of the total).
 struct BeamRigidBody {
-  PetscReal mass        = 0; // kg
-  PetscReal x_cm        = 0; // m, centre of mass from x = 0
-  PetscReal inertia_cm  = 0; // kg m^2, about the centre of mass
-  PetscReal inertia_end = 0; // kg m^2, about the x = 0 end (the knob of a bat)
-  PetscReal inertia_roll = 0; // kg m^2, about the frame's own axis (int rho J and a string bed's sigma z^2; 0 without -beam_torsion)
+  PetscReal mass         = 0; // kg
+  PetscReal x_cm         = 0; // m, centre of mass from x = 0
+  PetscReal inertia_cm   = 0; // kg m^2, about the centre of mass
+  PetscReal inertia_end  = 0; // kg m^2, about the x = 0 end (the knob of a bat)
+  PetscReal inertia_roll = 0; // kg m^2, about the frame's own axis (int rho J and a string bed's sigma z^2; 0 without
+                              // -beam_torsion)
 };
 BeamRigidBody BeamRigidBodyOf(const BeamParams &p);
 
@@ -122,7 +125,6 @@ PetscInt BeamPivotNode(const BeamParams &p);
 // the end nodes as their supports hold them, the pivot's node pinned (deflection), every node
 // of a clamped region clamped (both).
 std::vector<NodeHold> BeamNodeHolds(const BeamParams &p);
-
 
 // Hat-function share of an impact point between its two neighbouring nodes of a grid of N
 // nodes over [0, L] (m): the compression uses w*y_j + (1-w)*y_{j+1}.

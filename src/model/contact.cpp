@@ -5,10 +5,22 @@
 
 namespace beamimpact {
 
-PetscReal ContactForce(const BallParams &b, const ContactState &s, PetscReal c) { return s.phase == ContactPhase::Separated ? 0.0 : b.law->Force(b, s, c); }
-PetscReal ContactStiffness(const BallParams &b, const ContactState &s, PetscReal c) { return s.phase == ContactPhase::Separated ? 0.0 : b.law->Stiffness(b, s, c); }
-PetscReal ContactStoredEnergy(const BallParams &b, const ContactState &s, PetscReal c) { return s.phase == ContactPhase::Separated ? 0.0 : b.law->Stored(b, s, c); }
-PetscReal ContactWork(const BallParams &b, const ContactState &s, PetscReal c) { return s.work_offset + ContactStoredEnergy(b, s, c); }
+PetscReal ContactForce(const BallParams &b, const ContactState &s, PetscReal c)
+{
+  return s.phase == ContactPhase::Separated ? 0.0 : b.law->Force(b, s, c);
+}
+PetscReal ContactStiffness(const BallParams &b, const ContactState &s, PetscReal c)
+{
+  return s.phase == ContactPhase::Separated ? 0.0 : b.law->Stiffness(b, s, c);
+}
+PetscReal ContactStoredEnergy(const BallParams &b, const ContactState &s, PetscReal c)
+{
+  return s.phase == ContactPhase::Separated ? 0.0 : b.law->Stored(b, s, c);
+}
+PetscReal ContactWork(const BallParams &b, const ContactState &s, PetscReal c)
+{
+  return s.work_offset + ContactStoredEnergy(b, s, c);
+}
 
 void ContactSwitch(const BallParams &b, ContactState *s, ContactPhase to, PetscReal c)
 {
@@ -27,7 +39,10 @@ bool      ContactHasHysteresis(const BallParams &b) { return b.law->Hysteretic(b
 bool      ContactElastic(const BallParams &b) { return b.law->Elastic(); }
 bool      ContactLinear(const BallParams &b) { return b.law->Linear(); }
 PetscReal ContactLinearStiffness(const BallParams &b) { return b.law->LinearStiffness(b); }
-PetscReal ContactUnloadingExponent(const BallParams &b, const ContactState &s) { return b.law->UnloadingExponent(b, s); }
+PetscReal ContactUnloadingExponent(const BallParams &b, const ContactState &s)
+{
+  return b.law->UnloadingExponent(b, s);
+}
 
 PetscReal ContactTimeScale(const BallParams &b) { return b.law->TimeScale(b); }
 PetscReal ContactTimeScale(const BallParams &b, PetscReal approach)
@@ -53,6 +68,9 @@ PetscReal BallCorAt(const BallParams &b, PetscReal v) { return b.law->WallCor(b,
 PetscReal ContactWallMaxCompression(const BallParams &b, PetscReal v) { return b.law->WallMaxCompression(b, v); }
 PetscReal ContactWallLoadingTime(const BallParams &b, PetscReal v) { return b.law->WallLoadingTime(b, v); }
 PetscReal ContactWallUnloadingTime(const BallParams &b, PetscReal v) { return b.law->WallUnloadingTime(b, v); }
-PetscReal ContactWallTime(const BallParams &b, PetscReal v) { return ContactWallLoadingTime(b, v) + ContactWallUnloadingTime(b, v); }
+PetscReal ContactWallTime(const BallParams &b, PetscReal v)
+{
+  return ContactWallLoadingTime(b, v) + ContactWallUnloadingTime(b, v);
+}
 
 } // namespace beamimpact

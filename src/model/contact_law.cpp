@@ -51,7 +51,8 @@ void BallParamsUseLaw(BallParams *b, const ContactLaw *law)
   b->cor_table = CorTable();
   int i        = 0;
   for (const OptionSpec &row : law->Options())
-    if (row.kind == OptionKind::Real && i < kContactLawMaxValues) b->value[i++] = row.def.empty() ? 0.0 : std::strtod(row.def.c_str(), nullptr);
+    if (row.kind == OptionKind::Real && i < kContactLawMaxValues)
+      b->value[i++] = row.def.empty() ? 0.0 : std::strtod(row.def.c_str(), nullptr);
 }
 
 int ContactLawValueIndex(const ContactLaw &law, const char *name)
@@ -114,7 +115,7 @@ std::vector<ContactLawRecord> ContactLawRecordOf(const BallParams &b)
 {
   std::vector<ContactLawRecord> out = b.law->Record(b);
   const PetscReal               v   = b.speed;
-  auto add = [&](const char *name, const char *unit, PetscReal value) {
+  auto                          add = [&](const char *name, const char *unit, PetscReal value) {
     ContactLawRecord r;
     r.name = name, r.unit = unit, r.value = value;
     out.push_back(r);

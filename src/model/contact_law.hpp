@@ -27,13 +27,17 @@ namespace beamimpact {
 class ContactLaw;
 
 // Which branch of the law is active: the phase of the event-driven model.
-enum class ContactPhase { Separated = 0, Loading = 1, Unloading = 2 };
+enum class ContactPhase {
+  Separated = 0,
+  Loading   = 1,
+  Unloading = 2
+};
 
 // The state of the contact in progress (owned by the run driver; the steppers read it).
 struct ContactState {
   ContactPhase phase       = ContactPhase::Loading; // the ball starts touching, moving in
-  PetscReal    c_max       = 0; // m, compression at the last loading->unloading switch
-  PetscReal    work_offset = 0; // J, W minus the active branch's antiderivative
+  PetscReal    c_max       = 0;                     // m, compression at the last loading->unloading switch
+  PetscReal    work_offset = 0;                     // J, W minus the active branch's antiderivative
   // What the law keeps for this contact, set at its start (ContactLaw::Begin) and at the switch
   // (ContactLaw::Unload); 0: not set. The hysteretic law: the unloading coefficient k2 (N/m^n)
   // and exponent n.
@@ -47,16 +51,17 @@ constexpr int kContactLawMaxValues = 7;
 
 // The ball: mass, speed and its contact law with the law's parameters.
 struct BallParams {
-  PetscReal         mass        = 0.042; // kg
-  PetscReal         speed       = 1.0;   // m/s, incident speed v_i (moving in +y)
-  PetscReal         radius      = 0;     // m, -ball_radius: a compression beyond it is flagged (0: not given, no check)
-  PetscReal         loss_factor = 0.85;  // 1, ACOR correction for the ball's losses, applied to an elastic law's ACOR
+  PetscReal mass        = 0.042; // kg
+  PetscReal speed       = 1.0;   // m/s, incident speed v_i (moving in +y)
+  PetscReal radius      = 0;     // m, -ball_radius: a compression beyond it is flagged (0: not given, no check)
+  PetscReal loss_factor = 0.85;  // 1, ACOR correction for the ball's losses, applied to an elastic law's ACOR
   // The oblique impact (model/oblique.hpp): I_b = inertia_factor m R^2; the incoming spin
   // (rad/s, > 0: backspin of the incoming ball); Coulomb friction mu at the contact; the
   // tangential restitution e_T of the contact's compliance (< 0: none, a rigid grip).
   PetscReal         inertia_factor = 0.4, spin = 0, friction = 0.5, tangential_cor = -1;
-  const ContactLaw *law         = nullptr; // the registered law (-ball_law); never null after construction
-  std::array<PetscReal, kContactLawMaxValues> value{}; // the law's parameters (units: its rows'), in the order of its numeric rows
+  const ContactLaw *law = nullptr; // the registered law (-ball_law); never null after construction
+  std::array<PetscReal, kContactLawMaxValues>
+    value{}; // the law's parameters (units: its rows'), in the order of its numeric rows
   // -ball_cor_table: e(v) of the approach speed, for a law that follows one (hysteresis); empty: none.
   CorTable cor_table;
   BallParams(); // the first registered law (linear), with its defaults
@@ -65,10 +70,10 @@ struct BallParams {
 // One entry of what a law records with the results (run record): a number with its unit, or a
 // text (a file name).
 struct ContactLawRecord {
-  std::string name;        // "ball_k1"
-  std::string unit;        // "N/m^m", "1", "" for a text
+  std::string name; // "ball_k1"
+  std::string unit; // "N/m^m", "1", "" for a text
   PetscReal   value = 0;
-  std::string text;        // when is_text
+  std::string text; // when is_text
   bool        is_text = false;
 };
 
@@ -161,7 +166,7 @@ std::vector<ContactLawRecord> ContactLawRecordOf(const BallParams &b);
 // (a power-law ball's wall times: t_load = (c_max/v) I(p+1)).
 inline PetscReal ContactOddPow(PetscReal c, PetscReal p) { return std::copysign(std::pow(std::abs(c), p), c); }
 inline PetscReal ContactPowAntiderivative(PetscReal c, PetscReal p) { return std::pow(std::abs(c), p + 1) / (p + 1); }
-std::string ContactLawMessage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-PetscReal   PowerLawWallIntegral(PetscReal p);
+std::string      ContactLawMessage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+PetscReal        PowerLawWallIntegral(PetscReal p);
 
 } // namespace beamimpact

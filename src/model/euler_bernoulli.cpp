@@ -35,8 +35,8 @@ StrainTerm MirrorTerm(PetscInt k, PetscInt j, bool k_held, PetscReal ih2, PetscR
 
 void EulerBernoulliBuild(const BeamParams &p, BeamDiscretization *d)
 {
-  const PetscInt              N    = p.nodes;
-  const PetscReal             L    = p.length, h = L / (N - 1), ih2 = 1.0 / (h * h);
+  const PetscInt              N = p.nodes;
+  const PetscReal             L = p.length, h = L / (N - 1), ih2 = 1.0 / (h * h);
   const std::vector<NodeHold> hold = BeamNodeHolds(p);
   std::vector<PetscReal>      EI_node(N);
   d->fields = 1;
@@ -62,7 +62,7 @@ void EulerBernoulliBuild(const BeamParams &p, BeamDiscretization *d)
       continue; // inside a clamped region: no term
     }
     if (!interior) continue; // a free or pinned end: y'' = 0
-    StrainTerm t;             // interior (also next to or on a pinned node; a one-node clamped "region" acts as a pin)
+    StrainTerm t;            // interior (also next to or on a pinned node; a one-node clamped "region" acts as a pin)
     t.owner  = k;
     t.n      = 3;
     t.dof[0] = k - 1, t.dof[1] = k, t.dof[2] = k + 1;

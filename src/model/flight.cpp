@@ -11,18 +11,18 @@ namespace beamimpact {
 namespace {
 
 // Exact unit conversions.
-constexpr PetscReal kFoot        = 0.3048;          // m
-constexpr PetscReal kPound       = 0.45359237;      // kg
-constexpr PetscReal kMillimetreHg = 133.322387415;  // Pa
+constexpr PetscReal kFoot         = 0.3048;        // m
+constexpr PetscReal kPound        = 0.45359237;    // kg
+constexpr PetscReal kMillimetreHg = 133.322387415; // Pa
 
 // The calculator's constants (cells D1, D2, D4, D5, D20 of its sheets).
-constexpr PetscReal kRho0          = 1.2929;    // kg/m^3, dry air at 273 K and 760 mmHg
-constexpr PetscReal kT0            = 273;       // K, as the sheet writes it
-constexpr PetscReal kP0            = 760;       // mmHg
-constexpr PetscReal kBeta          = 1.217e-4;  // 1/m, pressure falls as exp(-beta h)
-constexpr PetscReal kVapour        = 0.3783;    // 1 - M_water/M_air: humid air is lighter
-constexpr PetscReal kHalfAOverM    = 0.07182;   // ft^2/lb, 1/2 A/m of the 5.125 oz, 9.125 in ball (rounded)
-constexpr PetscReal kLbFt3PerKgM3  = 0.06261;   // the sheet's conversion of rho to lb/ft^3
+constexpr PetscReal kRho0         = 1.2929;   // kg/m^3, dry air at 273 K and 760 mmHg
+constexpr PetscReal kT0           = 273;      // K, as the sheet writes it
+constexpr PetscReal kP0           = 760;      // mmHg
+constexpr PetscReal kBeta         = 1.217e-4; // 1/m, pressure falls as exp(-beta h)
+constexpr PetscReal kVapour       = 0.3783;   // 1 - M_water/M_air: humid air is lighter
+constexpr PetscReal kHalfAOverM   = 0.07182;  // ft^2/lb, 1/2 A/m of the 5.125 oz, 9.125 in ball (rounded)
+constexpr PetscReal kLbFt3PerKgM3 = 0.06261;  // the sheet's conversion of rho to lb/ft^3
 
 } // namespace
 
@@ -32,9 +32,9 @@ PetscReal FlightSpinMax(PetscReal radius) { return kSpeedOfSound / radius; }
 
 PetscReal FlightCalculatorFactor()
 {
-  const PetscReal circ = 9.125 / 12, mass = 5.125 / 16;            // ft, lb: the reference ball
-  const PetscReal half = 0.5 * circ * circ / (4 * M_PI) / mass;    // ft^2/lb, exact 1/2 A/m
-  const PetscReal lbft3 = kFoot * kFoot * kFoot / kPound;          // lb/ft^3 per kg/m^3, exact
+  const PetscReal circ = 9.125 / 12, mass = 5.125 / 16;          // ft, lb: the reference ball
+  const PetscReal half  = 0.5 * circ * circ / (4 * M_PI) / mass; // ft^2/lb, exact 1/2 A/m
+  const PetscReal lbft3 = kFoot * kFoot * kFoot / kPound;        // lb/ft^3 per kg/m^3, exact
   return (kHalfAOverM / half) * (kLbFt3PerKgM3 / lbft3);
 }
 
@@ -46,8 +46,8 @@ PetscReal AirSaturationVaporPressure(PetscReal T)
 PetscReal AirDensity(const AirParams &air)
 {
   if (air.density >= 0) return air.density;
-  const PetscReal p   = air.pressure / kMillimetreHg * std::exp(-kBeta * air.elevation); // mmHg at the field
-  const PetscReal e   = kVapour * (air.humidity / 100) * AirSaturationVaporPressure(air.temperature) / kMillimetreHg;
+  const PetscReal p = air.pressure / kMillimetreHg * std::exp(-kBeta * air.elevation); // mmHg at the field
+  const PetscReal e = kVapour * (air.humidity / 100) * AirSaturationVaporPressure(air.temperature) / kMillimetreHg;
   return kRho0 * (kT0 / (air.temperature + kT0)) * (p - e) / kP0;
 }
 
@@ -56,8 +56,8 @@ FlightModel FlightModelOf(const FlightParams &p)
   FlightModel     m;
   const PetscReal d2r = M_PI / 180, th = p.launch.angle * d2r, ph = p.launch.direction * d2r;
   const PetscReal wb = p.launch.backspin, ws = p.launch.sidespin;
-  m.rho             = AirDensity(p.air);
-  m.K               = 0.5 * m.rho * M_PI * p.ball.radius * p.ball.radius / p.ball.mass;
+  m.rho = AirDensity(p.air);
+  m.K   = 0.5 * m.rho * M_PI * p.ball.radius * p.ball.radius / p.ball.mass;
   if (p.aero.constants == FlightConstants::Calculator) m.K *= FlightCalculatorFactor();
   // Backspin about (cos phi, -sin phi, 0); sidespin about (-sin th sin phi, -sin th cos phi, cos th).
   m.w[0]    = wb * std::cos(ph) - ws * std::sin(th) * std::sin(ph);
@@ -89,11 +89,20 @@ PetscReal FlightSpinDecay(const FlightModel &m, PetscReal t, PetscReal speed)
   return m.tau > 0 ? std::exp(-t * speed / (m.tau * kFlightDecaySpeed)) : 1.0;
 }
 
-PetscReal FlightSpinAt(const FlightModel &m, PetscReal t, PetscReal speed) { return m.spin * FlightSpinDecay(m, t, speed); }
+PetscReal FlightSpinAt(const FlightModel &m, PetscReal t, PetscReal speed)
+{
+  return m.spin * FlightSpinDecay(m, t, speed);
+}
 
-PetscReal FlightSpinFactor(const FlightModel &m, PetscReal t, PetscReal speed) { return m.radius * FlightSpinAt(m, t, speed) / speed; }
+PetscReal FlightSpinFactor(const FlightModel &m, PetscReal t, PetscReal speed)
+{
+  return m.radius * FlightSpinAt(m, t, speed) / speed;
+}
 
-PetscReal FlightDragCoefficient(const FlightModel &m, PetscReal t, PetscReal speed) { return m.cd0 + m.cd_spin * FlightSpinAt(m, t, speed); }
+PetscReal FlightDragCoefficient(const FlightModel &m, PetscReal t, PetscReal speed)
+{
+  return m.cd0 + m.cd_spin * FlightSpinAt(m, t, speed);
+}
 
 PetscReal FlightLiftCoefficient(const FlightModel &m, PetscReal S) { return m.cl2 * S / (m.cl0 + m.cl1 * S); }
 
@@ -122,10 +131,15 @@ void FlightStepInterpolate(const FlightStep &s, PetscReal t, PetscReal u[6])
 {
   const PetscReal h = s.t1 - s.t0, x = h > 0 ? (t - s.t0) / h : 1, x2 = x * x, x3 = x2 * x, x4 = x3 * x, x5 = x4 * x;
   // Quintic Hermite basis on [0, 1] (value, h * slope, h^2 * curvature at each end) and its derivative.
-  const PetscReal H[6]  = {1 - 10 * x3 + 15 * x4 - 6 * x5, x - 6 * x3 + 8 * x4 - 3 * x5, 0.5 * (x2 - 3 * x3 + 3 * x4 - x5),
-                           10 * x3 - 15 * x4 + 6 * x5,     -4 * x3 + 7 * x4 - 3 * x5,    0.5 * (x3 - 2 * x4 + x5)};
-  const PetscReal dH[6] = {-30 * x2 + 60 * x3 - 30 * x4, 1 - 18 * x2 + 32 * x3 - 15 * x4, 0.5 * (2 * x - 9 * x2 + 12 * x3 - 5 * x4),
-                           30 * x2 - 60 * x3 + 30 * x4,  -12 * x2 + 28 * x3 - 15 * x4,    0.5 * (3 * x2 - 8 * x3 + 5 * x4)};
+  const PetscReal H[6]  = {1 - 10 * x3 + 15 * x4 - 6 * x5,    x - 6 * x3 + 8 * x4 - 3 * x5,
+                           0.5 * (x2 - 3 * x3 + 3 * x4 - x5), 10 * x3 - 15 * x4 + 6 * x5,
+                           -4 * x3 + 7 * x4 - 3 * x5,         0.5 * (x3 - 2 * x4 + x5)};
+  const PetscReal dH[6] = {-30 * x2 + 60 * x3 - 30 * x4,
+                           1 - 18 * x2 + 32 * x3 - 15 * x4,
+                           0.5 * (2 * x - 9 * x2 + 12 * x3 - 5 * x4),
+                           30 * x2 - 60 * x3 + 30 * x4,
+                           -12 * x2 + 28 * x3 - 15 * x4,
+                           0.5 * (3 * x2 - 8 * x3 + 5 * x4)};
   for (int i = 0; i < 3; ++i) {
     const PetscReal c[6] = {s.u0[i], h * s.u0[3 + i], h * h * s.a0[i], s.u1[i], h * s.u1[3 + i], h * h * s.a1[i]};
     PetscReal       p = 0, dp = 0;
@@ -169,7 +183,8 @@ PetscReal BracketedRoot(F f, PetscReal a, PetscReal b)
 PetscReal FlightStepGroundTime(const FlightStep &s)
 {
   PetscReal a = s.t0, z_top;
-  if (s.u0[2] <= 0 && s.u0[5] > 0) FlightStepApex(s, &a, &z_top); // a step from the ground over the whole flight: the root after the top
+  if (s.u0[2] <= 0 && s.u0[5] > 0)
+    FlightStepApex(s, &a, &z_top); // a step from the ground over the whole flight: the root after the top
   return BracketedRoot(
     [&](PetscReal t) {
       PetscReal u[6];

@@ -51,16 +51,19 @@ struct FlightBall {
 // 0.07182 ft^2/lb (1/2 A/m of the 5.125 oz, 9.125 in ball, rounded) and 0.06261 (lb/ft^3 per
 // kg/m^3; exactly 0.0624280), which make K FlightCalculatorFactor() = 1.00281 times the exact
 // value; exact: 1/2 rho pi R^2 / m.
-enum class FlightConstants { Calculator, Exact };
+enum class FlightConstants {
+  Calculator,
+  Exact
+};
 
 struct FlightAero {
-  PetscReal cd0             = 0.3008; // 1, drag without spin
-  PetscReal cd_spin         = 0.0292; // 1 per 1000 rpm of spin (the calculator's unit)
-  PetscReal cl0             = 0.583;  // 1, lift C_L = cl2 S / (cl0 + cl1 S)
-  PetscReal cl1             = 2.333;  // 1
-  PetscReal cl2             = 1.120;  // 1
-  PetscReal spin_decay_time = 30;     // s, tau at v_ref = 100 mph (0: no decay)
-  FlightConstants constants = FlightConstants::Calculator;
+  PetscReal       cd0             = 0.3008; // 1, drag without spin
+  PetscReal       cd_spin         = 0.0292; // 1 per 1000 rpm of spin (the calculator's unit)
+  PetscReal       cl0             = 0.583;  // 1, lift C_L = cl2 S / (cl0 + cl1 S)
+  PetscReal       cl1             = 2.333;  // 1
+  PetscReal       cl2             = 1.120;  // 1
+  PetscReal       spin_decay_time = 30;     // s, tau at v_ref = 100 mph (0: no decay)
+  FlightConstants constants       = FlightConstants::Calculator;
 };
 
 // The launch: speed, direction and spin of the ball as it leaves the bat, and where.
@@ -100,15 +103,15 @@ PetscReal FlightCalculatorFactor();
 
 // What one flight needs, derived once from FlightParams.
 struct FlightModel {
-  PetscReal K       = 0;       // 1/m, 1/2 rho A / m (times FlightCalculatorFactor() for the calculator)
-  PetscReal rho     = 0;       // kg/m^3, the air density used
-  PetscReal w[3]    = {0, 0, 0}; // rad/s, the spin vector (fixed in direction)
-  PetscReal spin    = 0;       // rad/s, |w|
-  PetscReal radius  = 0;       // m
+  PetscReal K      = 0;           // 1/m, 1/2 rho A / m (times FlightCalculatorFactor() for the calculator)
+  PetscReal rho    = 0;           // kg/m^3, the air density used
+  PetscReal w[3]   = {0, 0, 0};   // rad/s, the spin vector (fixed in direction)
+  PetscReal spin   = 0;           // rad/s, |w|
+  PetscReal radius = 0;           // m
   PetscReal cd0 = 0, cd_spin = 0; // 1; 1 per rad/s
   PetscReal cl0 = 0, cl1 = 0, cl2 = 0;
-  PetscReal tau     = 0;       // s (0: no decay)
-  PetscReal gravity = 0;       // m/s^2
+  PetscReal tau     = 0; // s (0: no decay)
+  PetscReal gravity = 0; // m/s^2
 };
 FlightModel FlightModelOf(const FlightParams &p);
 

@@ -12,7 +12,7 @@ std::vector<PetscReal> GripNodeWeights(const BeamGrip &grip, PetscInt nodes, Pet
   const PetscReal h = L / (nodes - 1);
   for (PetscInt i = 0; i < nodes; ++i) {
     const PetscReal a = std::max({0.0, i * h - 0.5 * h, grip.x_a}), b = std::min({L, i * h + 0.5 * h, grip.x_b});
-    w[i]              = b > a ? b - a : 0.0;
+    w[i] = b > a ? b - a : 0.0;
   }
   return w;
 }

@@ -71,7 +71,8 @@ PetscReal FirstPositive(F f, PetscReal b, PetscInt n)
 // One stretch of slip from sigma = 0 (F_n the cubic F from there) for at most sigma_max: how long
 // it lasts (sigma_max if it does not end), and the state moved to its end. The spring, if any,
 // is held at its limit, xi = s mu l (k_t |xi| = mu F_n), so the sliding rate is u itself.
-PetscReal SlipStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic &F, PetscReal sigma_max, TangentialState *s)
+PetscReal SlipStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic &F, PetscReal sigma_max,
+                      TangentialState *s)
 {
   const PetscReal mu = m.friction, l = m.compliance_length, sg = (PetscReal)s->slip_sign, ua = s->u;
   auto            u     = [&](PetscReal x) { return ua - sg * mu / m_e * F.Integral(x); };
@@ -88,7 +89,8 @@ PetscReal SlipStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic 
   s->u = u(end);
   if (l > 0) {
     s->xi = sg * mu * l;
-    s->stiffness_work += 0.5 * (F(end) - F(0)) / l * s->xi * s->xi; // the spring's stiffness F_n/l changes under a fixed stretch
+    s->stiffness_work += 0.5 * (F(end) - F(0)) / l * s->xi *
+                         s->xi; // the spring's stiffness F_n/l changes under a fixed stretch
   }
   if (grips) {
     s->phase = TangentialPhase::Grip;
@@ -119,8 +121,9 @@ GripState GripIntegrate(PetscReal l_me, const ForceCubic &F, GripState y, PetscR
     return r;
   };
   for (PetscInt k = 0; k < n; ++k) {
-    const PetscReal x = k * h;
-    const GripState k1 = f(x, y), k2 = f(x + h / 2, axpy(y, h / 2, k1)), k3 = f(x + h / 2, axpy(y, h / 2, k2)), k4 = f(x + h, axpy(y, h, k3));
+    const PetscReal x  = k * h;
+    const GripState k1 = f(x, y), k2 = f(x + h / 2, axpy(y, h / 2, k1)), k3 = f(x + h / 2, axpy(y, h / 2, k2)),
+                    k4 = f(x + h, axpy(y, h, k3));
     y.xi += h / 6 * (k1.xi + 2 * k2.xi + 2 * k3.xi + k4.xi);
     y.u += h / 6 * (k1.u + 2 * k2.u + 2 * k3.u + k4.u);
     y.fxi2 += h / 6 * (k1.fxi2 + 2 * k2.fxi2 + 2 * k3.fxi2 + k4.fxi2);
@@ -138,7 +141,8 @@ PetscInt GripSteps(PetscReal l_me, const ForceCubic &F, PetscReal sigma)
 // One stretch of grip from sigma = 0. A compliant contact (l > 0): the spring k_t = F_n / l takes
 // the surfaces' relative motion until its stretch reaches the Coulomb limit |xi| = mu l; a rigid
 // grip (l = 0) keeps u = 0 and F_t = 0 to the end.
-PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic &F, PetscReal sigma_max, TangentialState *s)
+PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic &F, PetscReal sigma_max,
+                      TangentialState *s)
 {
   const PetscReal mu = m.friction, l = m.compliance_length, l_me = l * m_e;
   if (l == 0) {
@@ -150,7 +154,7 @@ PetscReal GripStretch(const TangentialModel &m, PetscReal m_e, const ForceCubic 
   const PetscReal h     = sigma_max / n;
   GripState       y;
   y.xi = s->xi, y.u = s->u;
-  PetscReal end = sigma_max;
+  PetscReal end   = sigma_max;
   bool      slips = false;
   for (PetscInt k = 0; k < n; ++k) { // step by step, so that the first crossing of the limit is found
     const ForceCubic Fk = F.Shift(k * h);
@@ -223,12 +227,14 @@ namespace {
 template <class G>
 PetscReal ComplianceRoot(PetscReal lo, PetscReal hi, PetscReal g_lo, PetscReal g_hi, const G &g)
 {
-  PetscReal       a = std::log(lo), b = std::log(hi), w1 = b - a, w2 = 2 * (b - a); // widths one and two steps ago
-  const bool      bracketed = g_lo > 0 && g_hi < 0;
-  int             kept      = 0; // the end kept by the last step: -1 a, +1 b
+  PetscReal  a = std::log(lo), b = std::log(hi), w1 = b - a, w2 = 2 * (b - a); // widths one and two steps ago
+  const bool bracketed = g_lo > 0 && g_hi < 0;
+  int        kept      = 0; // the end kept by the last step: -1 a, +1 b
   for (int it = 0; it < 200 && b - a > 1e-13; ++it) {
     const bool      bisect = !bracketed || b - a > 0.25 || b - a > 0.5 * w2;
-    const PetscReal x      = bisect ? 0.5 * (a + b) : std::min(std::max((a * g_hi - b * g_lo) / (g_hi - g_lo), a + 0.01 * (b - a)), b - 0.01 * (b - a));
+    const PetscReal x      = bisect ? 0.5 * (a + b)
+                                    : std::min(std::max((a * g_hi - b * g_lo) / (g_hi - g_lo), a + 0.01 * (b - a)),
+                                               b - 0.01 * (b - a));
     const PetscReal gx     = g(std::exp(x));
     w2 = w1, w1 = b - a;
     if (gx == 0) return std::exp(x);
@@ -247,9 +253,10 @@ PetscReal ComplianceRoot(PetscReal lo, PetscReal hi, PetscReal g_lo, PetscReal g
 
 } // namespace
 
-PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F, const std::vector<PetscReal> &dF)
+PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t,
+                                     const std::vector<PetscReal> &F, const std::vector<PetscReal> &dF)
 {
-  const size_t n = std::min(t.size(), F.size());
+  const size_t n     = std::min(t.size(), F.size());
   const bool   rates = dF.size() >= n;
   // The grip throughout from xi = 0, u = 1: -u at the end.
   auto reversal = [&](PetscReal l) {
@@ -259,15 +266,19 @@ PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::ve
       const PetscReal h = t[k + 1] - t[k];
       if (!(h > 0)) continue;
       const PetscReal  F0 = std::max<PetscReal>(F[k], 0), F1 = std::max<PetscReal>(F[k + 1], 0), d = (F1 - F0) / h;
-      const ForceCubic Fk = F0 == 0 && F1 == 0 ? ForceCubic() : ForceCubic::Hermite(h, F0, F1, rates ? dF[k] : d, rates ? dF[k + 1] : d);
-      y = GripIntegrate(l * m_e, Fk, y, h, GripSteps(l * m_e, Fk, h));
+      const ForceCubic Fk = F0 == 0 && F1 == 0
+                            ? ForceCubic()
+                            : ForceCubic::Hermite(h, F0, F1, rates ? dF[k] : d, rates ? dF[k + 1] : d);
+      y                   = GripIntegrate(l * m_e, Fk, y, h, GripSteps(l * m_e, Fk, h));
     }
     return -y.u;
   };
   // The phase of the tangential oscillation, integral sqrt(F / (l m_e)) dt = arccos(-e_T) in the
   // slowly varying limit, gives the first guess; then the root on log l in its bracket.
   PetscReal root = 0;
-  for (size_t k = 0; k + 1 < n; ++k) root += 0.5 * (t[k + 1] - t[k]) * (std::sqrt(std::max<PetscReal>(F[k], 0) / m_e) + std::sqrt(std::max<PetscReal>(F[k + 1], 0) / m_e));
+  for (size_t k = 0; k + 1 < n; ++k)
+    root += 0.5 * (t[k + 1] - t[k]) *
+            (std::sqrt(std::max<PetscReal>(F[k], 0) / m_e) + std::sqrt(std::max<PetscReal>(F[k + 1], 0) / m_e));
   if (!(root > 0)) return 0;
   const PetscReal l0 = std::pow(root / std::acos(-e_T), 2);
   PetscReal       lo = l0 / 64, hi = l0 * 64, g_lo = 0; // reversal(lo) > e_T > reversal(hi) on the first branch
@@ -275,13 +286,15 @@ PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::ve
   return ComplianceRoot(lo, hi, g_lo, reversal(hi) - e_T, [&](PetscReal l) { return reversal(l) - e_T; });
 }
 
-void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialState *s)
+void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1,
+                       TangentialState *s)
 {
   const PetscReal d = t1 > t0 ? (F1 - F0) / (t1 - t0) : 0;
   TangentialAdvance(m, t0, t1, F0, F1, d, d, s);
 }
 
-void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialState *s)
+void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0,
+                       PetscReal dF1, TangentialState *s)
 {
   const PetscReal h = t1 - t0;
   if (!(h > 0)) return;
@@ -300,7 +313,8 @@ void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, Pet
       continue;
     }
     const ForceCubic Fa = Fn.Shift(tau);
-    const PetscReal  d  = s->phase == TangentialPhase::Slip ? SlipStretch(m, m_e, Fa, h - tau, s) : GripStretch(m, m_e, Fa, h - tau, s);
+    const PetscReal  d  = s->phase == TangentialPhase::Slip ? SlipStretch(m, m_e, Fa, h - tau, s)
+                                                            : GripStretch(m, m_e, Fa, h - tau, s);
     tau += d;
     if (s->phase != before) {
       TangentialSwitch sw;
@@ -364,7 +378,8 @@ PetscReal TangentialPlane::ModeEnergy() const
   return E;
 }
 
-void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd)
+void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau,
+                          PetscReal *q, PetscReal *qd)
 {
   // z(tau) = z cos + zd S1 + f0 C1 + f1 D1,  S1 = sin(w tau)/w, C1 = (1 - cos(w tau))/w^2,
   // D1 = (w tau - sin(w tau))/w^3 (its series below w tau = 0.2, where the difference cancels).
@@ -376,7 +391,7 @@ void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, 
     C1 = 2 * sh * sh / (w * w);
     if (x < 0.2) {
       const PetscReal x2 = x * x;
-      D1 = tau * tau * tau * (1.0 / 6 - x2 / 120 * (1 - x2 / 42 * (1 - x2 / 72 * (1 - x2 / 110))));
+      D1                 = tau * tau * tau * (1.0 / 6 - x2 / 120 * (1 - x2 / 42 * (1 - x2 / 72 * (1 - x2 / 110))));
     } else D1 = (x - std::sin(x)) / (w * w * w);
   }
   *q  = z * c + zd * S1 + f0 * C1 + f1 * D1;
@@ -410,7 +425,10 @@ PetscReal PhiScalar(int k, PetscReal x)
 struct Mat2 {
   PetscReal a = 0, b = 0, c = 0, d = 0;
 };
-Mat2 operator*(const Mat2 &x, const Mat2 &y) { return {x.a * y.a + x.b * y.c, x.a * y.b + x.b * y.d, x.c * y.a + x.d * y.c, x.c * y.b + x.d * y.d}; }
+Mat2 operator*(const Mat2 &x, const Mat2 &y)
+{
+  return {x.a * y.a + x.b * y.c, x.a * y.b + x.b * y.d, x.c * y.a + x.d * y.c, x.c * y.b + x.d * y.d};
+}
 
 // E = e^X, P1 = phi_1(X), P2 = phi_2(X) of X = tau [[0, w], [-w, -2 sigma]] (the mode in the
 // scaled state (w z, z')): the series where |X| < 0.5; else E in closed form,
@@ -420,7 +438,7 @@ void ModeExponential(PetscReal w, PetscReal sigma, PetscReal tau, Mat2 *E, Mat2 
 {
   const Mat2 X{0, w * tau, -w * tau, -2 * sigma * tau};
   if (tau * (w + 2 * sigma) < 0.5) {
-    Mat2      pw{1, 0, 0, 1}; // X^j
+    Mat2      pw{1, 0, 0, 1};           // X^j
     PetscReal f0 = 1, f1 = 1, f2 = 0.5; // 1/j!, 1/(j+1)!, 1/(j+2)!
     *E = *P1 = *P2 = Mat2();
     for (int j = 0; j < 30; ++j) {
@@ -446,15 +464,19 @@ void ModeExponential(PetscReal w, PetscReal sigma, PetscReal tau, Mat2 *E, Mat2 
   }
   *E = {ec + es * sigma, es * w, -es * w, ec - es * sigma};
   // X^-1 = [[-2 sigma, -w], [w, 0]] / (w^2 tau)
-  const PetscReal inv = 1 / (w * w * tau);
-  const auto      solve = [&](const Mat2 &r) { return Mat2{inv * (-2 * sigma * r.a - w * r.c), inv * ((-2 * sigma) * r.b - w * r.d), inv * (w * r.a), inv * (w * r.b)}; };
+  const PetscReal inv   = 1 / (w * w * tau);
+  const auto      solve = [&](const Mat2 &r) {
+    return Mat2{inv * (-2 * sigma * r.a - w * r.c), inv * ((-2 * sigma) * r.b - w * r.d), inv * (w * r.a),
+                inv * (w * r.b)};
+  };
   *P1 = solve({E->a - 1, E->b, E->c, E->d - 1});
   *P2 = solve({P1->a - 1, P1->b, P1->c, P1->d - 1});
 }
 
 } // namespace
 
-void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd)
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1,
+                          PetscReal tau, PetscReal *q, PetscReal *qd)
 {
   if (!(sigma > 0)) {
     TangentialModeForced(w, z, zd, f0, f1, tau, q, qd);
@@ -462,8 +484,8 @@ void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal z
   }
   if (w == 0) { // z'' + 2 sigma z' = f0 + f1 s
     const PetscReal x = -2 * sigma * tau;
-    *qd = PhiScalar(0, x) * zd + tau * PhiScalar(1, x) * f0 + tau * tau * PhiScalar(2, x) * f1;
-    *q  = z + tau * PhiScalar(1, x) * zd + tau * tau * PhiScalar(2, x) * f0 + tau * tau * tau * PhiScalar(3, x) * f1;
+    *qd               = PhiScalar(0, x) * zd + tau * PhiScalar(1, x) * f0 + tau * tau * PhiScalar(2, x) * f1;
+    *q = z + tau * PhiScalar(1, x) * zd + tau * tau * PhiScalar(2, x) * f0 + tau * tau * tau * PhiScalar(3, x) * f1;
     return;
   }
   Mat2 E, P1, P2;
@@ -481,7 +503,7 @@ namespace {
 struct ModeKernel {
   PetscReal zz = 1, zv = 0, vz = 0, vv = 1;
   PetscReal gz[4] = {0, 0, 0, 0}, gv[4] = {0, 0, 0, 0};
-  void Apply(PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal *q, PetscReal *qd) const
+  void      Apply(PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal *q, PetscReal *qd) const
   {
     PetscReal fz = 0, fv = 0;
     for (int k = 0; k < 4; ++k) fz += f.c[k] * gz[k], fv += f.c[k] * gv[k];
@@ -494,7 +516,7 @@ struct ModeKernel {
 // |X| < 1; else e^X in closed form (ModeExponential) and phi_j = X^-1 (phi_(j-1) - I/(j-1)!).
 void ModePhi4(PetscReal w, PetscReal sigma, PetscReal tau, Mat2 P[5])
 {
-  const Mat2 X{0, w * tau, -w * tau, -2 * sigma * tau};
+  const Mat2      X{0, w * tau, -w * tau, -2 * sigma * tau};
   const PetscReal norm = tau * (w + 2 * sigma);
   if (norm < 1) { // phi_4 by its series (to a term below 1e-18 of it), then phi_(j-1) = I/(j-1)! + X phi_j
     Mat2      pw{1, 0, 0, 1};
@@ -514,8 +536,11 @@ void ModePhi4(PetscReal w, PetscReal sigma, PetscReal tau, Mat2 P[5])
     return;
   }
   ModeExponential(w, sigma, tau, &P[0], &P[1], &P[2]);
-  const PetscReal inv = 1 / (w * w * tau);
-  const auto      solve = [&](const Mat2 &r) { return Mat2{inv * (-2 * sigma * r.a - w * r.c), inv * (-2 * sigma * r.b - w * r.d), inv * (w * r.a), inv * (w * r.b)}; };
+  const PetscReal inv   = 1 / (w * w * tau);
+  const auto      solve = [&](const Mat2 &r) {
+    return Mat2{inv * (-2 * sigma * r.a - w * r.c), inv * (-2 * sigma * r.b - w * r.d), inv * (w * r.a),
+                inv * (w * r.b)};
+  };
   P[3] = solve({P[2].a - 0.5, P[2].b, P[2].c, P[2].d - 0.5});
   P[4] = solve({P[3].a - 1.0 / 6, P[3].b, P[3].c, P[3].d - 1.0 / 6});
 }
@@ -526,16 +551,17 @@ ModeKernel ModeKernelOf(PetscReal w, PetscReal sigma, PetscReal tau)
 {
   ModeKernel K;
   PetscReal  fact[4] = {1, 1, 2, 6}, tk = tau; // k!, tau^(k+1)
-  if (w == 0 && !(sigma > 0)) { // z'' = f
+  if (w == 0 && !(sigma > 0)) {                // z'' = f
     K.zv = tau;
     for (int k = 0; k < 4; ++k, tk *= tau) K.gv[k] = tk / (k + 1), K.gz[k] = tk * tau / ((k + 1) * (k + 2));
     return K;
   }
   if (w == 0) { // z'' + 2 sigma z' = f: z' through phi_j(-2 sigma tau)
     const PetscReal x = -2 * sigma * tau;
-    K.vv = PhiScalar(0, x);
-    K.zv = tau * PhiScalar(1, x);
-    for (int k = 0; k < 4; ++k, tk *= tau) K.gv[k] = fact[k] * tk * PhiScalar(k + 1, x), K.gz[k] = fact[k] * tk * tau * PhiScalar(k + 2, x);
+    K.vv              = PhiScalar(0, x);
+    K.zv              = tau * PhiScalar(1, x);
+    for (int k = 0; k < 4; ++k, tk *= tau)
+      K.gv[k] = fact[k] * tk * PhiScalar(k + 1, x), K.gz[k] = fact[k] * tk * tau * PhiScalar(k + 2, x);
     return K;
   }
   Mat2 P[5];
@@ -547,12 +573,16 @@ ModeKernel ModeKernelOf(PetscReal w, PetscReal sigma, PetscReal tau)
 
 } // namespace
 
-void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal tau, PetscReal *q, PetscReal *qd)
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal tau,
+                          PetscReal *q, PetscReal *qd)
 {
   ModeKernelOf(w, std::max<PetscReal>(sigma, 0), tau).Apply(z, zd, f, q, qd);
 }
 
-TangentialState TangentialFlexibleStart(const TangentialModel &m, const TangentialPlane &p) { return TangentialStart(m, p.ball_side - p.PointVelocity()); }
+TangentialState TangentialFlexibleStart(const TangentialModel &m, const TangentialPlane &p)
+{
+  return TangentialStart(m, p.ball_side - p.PointVelocity());
+}
 
 namespace {
 
@@ -569,10 +599,10 @@ struct PlaneKernels {
 // The kernels of the last sub-step lengths (a fixed-step run's steps repeat the rest length and
 // its Gauss points), for the omega, sigma and gamma they were made for.
 struct TangentialKernelCache {
-  std::vector<PetscReal>                            omega, sigma, gamma;
+  std::vector<PetscReal>                           omega, sigma, gamma;
   std::vector<std::shared_ptr<const PlaneKernels>> entry; // at most kSize, replaced in turn
-  size_t                                            next = 0;
-  static constexpr size_t                           kSize = 8;
+  size_t                                           next  = 0;
+  static constexpr size_t                          kSize = 8;
 };
 
 namespace {
@@ -586,7 +616,7 @@ std::shared_ptr<const PlaneKernels> PlaneKernelsExact(const TangentialPlane &p, 
   K->mode.resize(p.omega.size());
   for (size_t k = 0; k < p.omega.size(); ++k) {
     const ModeKernel &Kk = K->mode[k] = ModeKernelOf(p.omega[k], p.Sigma(k), tau);
-    const PetscReal   g2 = p.gamma[k] * p.gamma[k];
+    const PetscReal   g2              = p.gamma[k] * p.gamma[k];
     for (int j = 0; j < 4; ++j) K->fz[j] += g2 * Kk.gz[j], K->fv[j] += g2 * Kk.gv[j];
   }
   return K;
@@ -650,7 +680,8 @@ PlaneDrift PlaneDriftVelocityOf(const TangentialPlane &p, const PlaneKernels &K)
 
 // drift: the state's (PlaneDriftOf over the same K), or null: from rest (the state left out), for
 // the responses to a unit force. Linear in f: the force's part from K's sums over the modes.
-PlaneTrial PlaneTry(const TangentialPlane &p, const PlaneKernels &K, PetscReal inv_me, const ForceCubic &f, const PlaneDrift *drift)
+PlaneTrial PlaneTry(const TangentialPlane &p, const PlaneKernels &K, PetscReal inv_me, const ForceCubic &f,
+                    const PlaneDrift *drift)
 {
   const PetscReal tau = K.tau;
   PlaneTrial      t;
@@ -658,15 +689,18 @@ PlaneTrial PlaneTry(const TangentialPlane &p, const PlaneKernels &K, PetscReal i
   for (int j = 0; j < 4; ++j) t.disp -= f.c[j] * K.fz[j], t.vel -= f.c[j] * K.fv[j];
   t.disp -= p.flexibility * (f(tau) - f(0)); // the modes left out: the point at -G_r F_t
   t.vel -= p.flexibility * f.Rate(tau);
-  const PetscReal w0  = drift ? p.ball_side : 0;
-  const PetscReal ff  = tau * tau * (f.c[0] / 2 + tau * (f.c[1] / 6 + tau * (f.c[2] / 12 + tau * f.c[3] / 20))); // the double integral
-  t.ws                = w0 + f.Integral(tau) * inv_me;
-  t.ws_int            = w0 * tau + ff * inv_me;
+  const PetscReal w0 = drift ? p.ball_side : 0;
+  const PetscReal ff = tau * tau *
+                       (f.c[0] / 2 +
+                        tau * (f.c[1] / 6 + tau * (f.c[2] / 12 + tau * f.c[3] / 20))); // the double integral
+  t.ws     = w0 + f.Integral(tau) * inv_me;
+  t.ws_int = w0 * tau + ff * inv_me;
   return t;
 }
 
 // The force over a sub-step of length K.tau the current phase gives (F_n = Fn(s); d: the state's drift over K).
-ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const PlaneKernels &K, const PlaneDrift &d, const TangentialState &s, const ForceCubic &Fn)
+ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const PlaneKernels &K,
+                      const PlaneDrift &d, const TangentialState &s, const ForceCubic &Fn)
 {
   const PetscReal mu = m.friction, l = m.compliance_length, tau = K.tau;
   if (s.phase == TangentialPhase::Slip) return Fn.Scaled(-s.slip_sign * mu);
@@ -684,14 +718,15 @@ ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const Tangenti
     return ForceCubic::Hermite(tau, p.force, (r1 * a22 - a12 * r2) / det, D0, (a11 * r2 - a21 * r1) / det);
   }
   // rigid grip: a constant force over the sub-step that ends it at u = 0
-  ForceCubic      unit, f;
-  unit.c[0]      = 1;
-  f.c[0]         = -PlaneTry(p, K, inv_me, ForceCubic(), &d).U() / PlaneTry(p, K, inv_me, unit, nullptr).U();
+  ForceCubic unit, f;
+  unit.c[0] = 1;
+  f.c[0]    = -PlaneTry(p, K, inv_me, ForceCubic(), &d).U() / PlaneTry(p, K, inv_me, unit, nullptr).U();
   return f;
 }
 
 // Whether the current phase ends within the sub-step tried.
-bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTrial &t, const ForceCubic &f, PetscReal tau, const ForceCubic &Fn)
+bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTrial &t, const ForceCubic &f,
+               PetscReal tau, const ForceCubic &Fn)
 {
   const PetscReal mu = m.friction, l = m.compliance_length;
   // (margins of round-off: a slip that starts from a rigid grip starts at u = 0)
@@ -703,13 +738,14 @@ bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTr
 // Moves the plane and the contact's state over K.tau with F_t = f(s) (t: its trial from the
 // state); the energy taken, integral -F_t u, and the modes' damping loss by 3-point Gauss from
 // the exact u and z'.
-void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels &K, const ForceCubic &f, const PlaneTrial &t, TangentialPlane *p, TangentialState *s)
+void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels &K, const ForceCubic &f,
+                 const PlaneTrial &t, TangentialPlane *p, TangentialState *s)
 {
   static const PetscReal gx[3] = {-std::sqrt(0.6), 0, std::sqrt(0.6)}, gw[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
-  const PetscReal        tau   = K.tau;
+  const PetscReal        tau = K.tau;
   for (int i = 0; i < 3; ++i) {
-    const PetscReal    si = 0.5 * tau * (1 + gx[i]);
-    const auto         Kp = PlaneKernelsOf(*p, si); // held: a later insertion may replace it in the cache
+    const PetscReal     si = 0.5 * tau * (1 + gx[i]);
+    const auto          Kp = PlaneKernelsOf(*p, si); // held: a later insertion may replace it in the cache
     const PlaneKernels &Ki = *Kp;
     const PlaneDrift    di = PlaneDriftVelocityOf(*p, Ki); // u = w - V_c: the trial's velocity alone
     s->dissipated += 0.5 * tau * gw[i] * (-f(si) * PlaneTry(*p, Ki, inv_me, f, &di).U());
@@ -720,7 +756,8 @@ void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels 
       p->damped += 0.5 * tau * gw[i] * 2 * p->sigma[k] * qd * qd;
     }
   }
-  for (size_t k = 0; k < p->omega.size(); ++k) K.mode[k].Apply(p->z[k], p->zd[k], f.Scaled(-p->gamma[k]), &p->z[k], &p->zd[k]);
+  for (size_t k = 0; k < p->omega.size(); ++k)
+    K.mode[k].Apply(p->z[k], p->zd[k], f.Scaled(-p->gamma[k]), &p->z[k], &p->zd[k]);
   if (s->phase == TangentialPhase::Grip && m.compliance_length > 0) s->xi += t.ws_int - t.disp;
   p->ball_side = t.ws;
   p->force     = f(tau);
@@ -733,7 +770,7 @@ void PlaneCommit(const TangentialModel &m, PetscReal inv_me, const PlaneKernels 
 // The phase switch at the end of a committed sub-step whose phase ended.
 void PhaseSwitch(const TangentialModel &m, TangentialPlane *p, TangentialState *s)
 {
-  const PetscReal mu = m.friction, l = m.compliance_length;
+  const PetscReal  mu = m.friction, l = m.compliance_length;
   TangentialSwitch sw;
   sw.time = p->time;
   if (s->phase == TangentialPhase::Slip) {
@@ -749,29 +786,30 @@ void PhaseSwitch(const TangentialModel &m, TangentialPlane *p, TangentialState *
 
 // One sub-step of length h with F_n = Fn(s): the phase's force, its end located by bisection of
 // the length where it ends, the switch, and the rest in the new phase.
-void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const ForceCubic &Fn, TangentialPlane *p, TangentialState *s)
+void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const ForceCubic &Fn, TangentialPlane *p,
+                  TangentialState *s)
 {
   PetscReal tau = 0;
   for (int it = 0; it < 16 && tau < (1 - 1e-12) * h; ++it) {
     if (s->phase == TangentialPhase::Slip && s->slip_sign == 0) s->phase = TangentialPhase::Grip;
-    const PetscReal    rest = h - tau;
-    const ForceCubic   Fb   = Fn.Shift(tau);
-    const auto         Kp   = PlaneKernelsOf(*p, rest);
+    const PetscReal     rest = h - tau;
+    const ForceCubic    Fb   = Fn.Shift(tau);
+    const auto          Kp   = PlaneKernelsOf(*p, rest);
     const PlaneKernels &K    = *Kp;
-    const PlaneDrift   d    = PlaneDriftOf(*p, K);
-    ForceCubic         f    = PhaseForce(m, inv_me, *p, K, d, *s, Fb);
+    const PlaneDrift    d    = PlaneDriftOf(*p, K);
+    ForceCubic          f    = PhaseForce(m, inv_me, *p, K, d, *s, Fb);
     if (s->phase == TangentialPhase::Slip) p->force = f(0); // continuous into a slip: -s mu F_n
-    const PlaneTrial   t    = PlaneTry(*p, K, inv_me, f, &d);
+    const PlaneTrial t = PlaneTry(*p, K, inv_me, f, &d);
     if (!PhaseEnds(m, *s, t, f, rest, Fb) || it == 15) {
       PlaneCommit(m, inv_me, K, f, t, p, s);
       return;
     }
     PetscReal lo = 0, hi = rest;
     for (int b = 0; b < 200 && hi - lo > 1e-15 * rest; ++b) {
-      const PetscReal    mid = 0.5 * (lo + hi);
-      const auto         Km  = PlaneKernelsExact(*p, mid);
-      const PlaneDrift   dm  = PlaneDriftOf(*p, *Km);
-      f                      = PhaseForce(m, inv_me, *p, *Km, dm, *s, Fb);
+      const PetscReal  mid = 0.5 * (lo + hi);
+      const auto       Km  = PlaneKernelsExact(*p, mid);
+      const PlaneDrift dm  = PlaneDriftOf(*p, *Km);
+      f                    = PhaseForce(m, inv_me, *p, *Km, dm, *s, Fb);
       if (PhaseEnds(m, *s, PlaneTry(*p, *Km, inv_me, f, &dm), f, mid, Fb)) hi = mid;
       else lo = mid;
     }
@@ -796,18 +834,20 @@ void PlaneFree(PetscReal h, TangentialPlane *p)
 
 } // namespace
 
-void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialPlane *p, TangentialState *s)
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1,
+                               TangentialPlane *p, TangentialState *s)
 {
   const PetscReal d = t1 > t0 ? (F1 - F0) / (t1 - t0) : 0;
   TangentialAdvanceFlexible(m, t0, t1, F0, F1, d, d, p, s);
 }
 
-void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialPlane *p, TangentialState *s)
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1,
+                               PetscReal dF0, PetscReal dF1, TangentialPlane *p, TangentialState *s)
 {
   const PetscReal h = t1 - t0;
   if (!(h > 0)) return;
-  TangentialModel ball = m;
-  ball.bat_mass        = PETSC_INFINITY; // the plane is the bat's translation
+  TangentialModel ball   = m;
+  ball.bat_mass          = PETSC_INFINITY; // the plane is the bat's translation
   const PetscReal inv_me = 1 / ball.EffectiveMass();
   PlaneKernelCacheCheck(*p);
   if (t0 > p->time) { // free since the plane's time: F_t = 0

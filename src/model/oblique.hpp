@@ -74,12 +74,12 @@ PetscReal RoundSectionRadiusAt(const BeamSection &s, PetscReal x);
 // The four tangential motions and the contact's parameters.
 struct TangentialModel {
   PetscReal ball_mass = 0, ball_radius = 0, ball_inertia = 0; // kg, m, kg m^2 (alpha m R_b^2)
-  PetscReal bat_mass = PETSC_INFINITY;                       // kg, M_t: the bat's effective mass at the impact point (inf: fixed)
-  PetscReal bat_roll_inertia = PETSC_INFINITY;               // kg m^2, I_a about the bat's axis (inf: held)
-  PetscReal bat_radius = 0;                                  // m, R_bat at the impact point
-  PetscReal friction   = 0;                                  // mu
-  PetscReal compliance_length = 0;                           // m, l of k_t = F_n / l (0: no tangential compliance, a rigid grip)
-  PetscReal EffectiveMass() const;                           // m_e (kg)
+  PetscReal bat_mass          = PETSC_INFINITY; // kg, M_t: the bat's effective mass at the impact point (inf: fixed)
+  PetscReal bat_roll_inertia  = PETSC_INFINITY; // kg m^2, I_a about the bat's axis (inf: held)
+  PetscReal bat_radius        = 0;              // m, R_bat at the impact point
+  PetscReal friction          = 0;              // mu
+  PetscReal compliance_length = 0;              // m, l of k_t = F_n / l (0: no tangential compliance, a rigid grip)
+  PetscReal EffectiveMass() const;              // m_e (kg)
 };
 
 // A cubic in the time s (s) from the start of a piece: c[0] + c[1] s + c[2] s^2 + c[3] s^3 (N).
@@ -87,9 +87,12 @@ struct ForceCubic {
   PetscReal c[4] = {0, 0, 0, 0};
   PetscReal operator()(PetscReal s) const { return c[0] + s * (c[1] + s * (c[2] + s * c[3])); }
   PetscReal Rate(PetscReal s) const { return c[1] + s * (2 * c[2] + s * 3 * c[3]); }
-  PetscReal Integral(PetscReal s) const { return s * (c[0] + s * (c[1] / 2 + s * (c[2] / 3 + s * c[3] / 4))); } // from 0 to s
-  ForceCubic Shift(PetscReal a) const;         // the same cubic in s - a (from s = a)
-  ForceCubic Scaled(PetscReal k) const;        // k times it
+  PetscReal Integral(PetscReal s) const
+  {
+    return s * (c[0] + s * (c[1] / 2 + s * (c[2] / 3 + s * c[3] / 4)));
+  }                                     // from 0 to s
+  ForceCubic Shift(PetscReal a) const;  // the same cubic in s - a (from s = a)
+  ForceCubic Scaled(PetscReal k) const; // k times it
   // The cubic Hermite on [0, h] of the values F0, F1 and rates dF0, dF1 at its ends.
   static ForceCubic Hermite(PetscReal h, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1);
 };
@@ -99,9 +102,13 @@ struct ForceCubic {
 // dF empty: linear between them) reverses the surfaces' tangential speed by e_T in [0, 1):
 // bisection on the first branch (the tangential oscillation's phase below pi); 0 when F is 0
 // throughout.
-PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t, const std::vector<PetscReal> &F, const std::vector<PetscReal> &dF = {});
+PetscReal TangentialComplianceLength(PetscReal m_e, PetscReal e_T, const std::vector<PetscReal> &t,
+                                     const std::vector<PetscReal> &F, const std::vector<PetscReal> &dF = {});
 
-enum class TangentialPhase { Slip = 0, Grip = 1 };
+enum class TangentialPhase {
+  Slip = 0,
+  Grip = 1
+};
 
 struct TangentialSwitch {
   PetscReal       time = 0; // s
@@ -110,15 +117,15 @@ struct TangentialSwitch {
 
 // The state of the tangential contact.
 struct TangentialState {
-  PetscReal       u           = 0; // m/s, slip speed of the surfaces (ball minus bat, along t)
-  PetscReal       xi          = 0; // m, stretch of the tangential spring
-  PetscReal       impulse     = 0; // N s, J = integral F_t dt (on the ball, along t)
-  PetscReal       dissipated  = 0; // J, by friction (integral mu F_n |u| dt over the slips)
-  PetscReal       stiffness_work = 0; // J, done on the spring by its changing stiffness (integral 1/2 (dF_n/dt / l) xi^2 dt)
-  PetscReal       normal_impulse = 0; // N s, integral F_n dt
-  TangentialPhase phase       = TangentialPhase::Slip;
-  PetscInt        slip_sign   = 0; // s: +1, -1 (0: not yet known)
-  std::vector<TangentialSwitch> switches; // located grip/slip changes, in time order
+  PetscReal u              = 0; // m/s, slip speed of the surfaces (ball minus bat, along t)
+  PetscReal xi             = 0; // m, stretch of the tangential spring
+  PetscReal impulse        = 0; // N s, J = integral F_t dt (on the ball, along t)
+  PetscReal dissipated     = 0; // J, by friction (integral mu F_n |u| dt over the slips)
+  PetscReal stiffness_work = 0; // J, done on the spring by its changing stiffness (integral 1/2 (dF_n/dt / l) xi^2 dt)
+  PetscReal normal_impulse = 0; // N s, integral F_n dt
+  TangentialPhase               phase     = TangentialPhase::Slip;
+  PetscInt                      slip_sign = 0; // s: +1, -1 (0: not yet known)
+  std::vector<TangentialSwitch> switches;      // located grip/slip changes, in time order
 };
 
 // The state at the first touch with slip speed u0 (m/s): a compliant contact grips (its spring
@@ -127,8 +134,10 @@ TangentialState TangentialStart(const TangentialModel &m, PetscReal u0);
 
 // Advances the tangential contact over [t0, t1] with F_n the cubic Hermite of F0, F1 (N, >= 0) and
 // the rates dF0, dF1 (N/s) at the ends; without rates, linear from F0 to F1.
-void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialState *s);
-void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialState *s);
+void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0,
+                       PetscReal dF1, TangentialState *s);
+void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1,
+                       TangentialState *s);
 
 // The bat flexible in its second plane (docs/model.md "Oblique impacts"): a round, straight bat
 // bends alike and independently in both planes, so along t it is the same beam, in the same
@@ -159,21 +168,22 @@ void TangentialAdvance(const TangentialModel &m, PetscReal t0, PetscReal t1, Pet
 // TangentialPlane::damped (Gauss on each sub-step, the energy drop in free vibration).
 struct TangentialKernelCache; // the modes' responses over the sub-step lengths last used (model/oblique.cpp)
 struct TangentialPlane {
-  std::vector<PetscReal> omega, gamma;    // rad/s, m/(N s^2)^(1/2): per mode
-  std::vector<PetscReal> sigma;           // 1/s, each mode's decay rate (z'' + 2 sigma z' + w^2 z = f; Rayleigh damping); empty: undamped
-  PetscReal              damped    = 0;   // J, the energy the modes' damping took up to the plane's time
-  PetscReal              flexibility = 0; // m/N, G_r: the point's static flexibility in the modes left out
-  std::vector<PetscReal> z, zd;           // the modes' coordinates and velocities now
-  PetscReal              ball_side = 0;   // m/s, w now
-  PetscReal              force     = 0;   // N, F_t now (on the ball, along t)
-  PetscReal              time      = 0;   // s, the time the state is at
-  PetscInt               substeps  = 0;   // sub-steps taken
-  PetscReal Sigma(size_t k) const { return sigma.empty() ? 0 : sigma[k]; }
+  std::vector<PetscReal> omega, gamma; // rad/s, m/(N s^2)^(1/2): per mode
+  std::vector<PetscReal>
+            sigma; // 1/s, each mode's decay rate (z'' + 2 sigma z' + w^2 z = f; Rayleigh damping); empty: undamped
+  PetscReal damped      = 0;            // J, the energy the modes' damping took up to the plane's time
+  PetscReal flexibility = 0;            // m/N, G_r: the point's static flexibility in the modes left out
+  std::vector<PetscReal> z, zd;         // the modes' coordinates and velocities now
+  PetscReal              ball_side = 0; // m/s, w now
+  PetscReal              force     = 0; // N, F_t now (on the ball, along t)
+  PetscReal              time      = 0; // s, the time the state is at
+  PetscInt               substeps  = 0; // sub-steps taken
+  PetscReal              Sigma(size_t k) const { return sigma.empty() ? 0 : sigma[k]; }
   // The modes' responses over the last sub-step lengths (a fixed-step run repeats them), kept with
   // the omega and sigma they were made for; made on first use.
   mutable std::shared_ptr<TangentialKernelCache> cache;
-  PetscReal PointVelocity() const;        // m/s, sum gamma_k z_k' (the static correction's rate left out)
-  PetscReal ModeEnergy() const;           // J, 1/2 sum (z_k'^2 + w_k^2 z_k^2) + 1/2 G_r F_t^2
+  PetscReal PointVelocity() const; // m/s, sum gamma_k z_k' (the static correction's rate left out)
+  PetscReal ModeEnergy() const;    // J, 1/2 sum (z_k'^2 + w_k^2 z_k^2) + 1/2 G_r F_t^2
 };
 
 // The slip speed u0 of the first touch from the plane's state and the ball side: the state of the
@@ -184,20 +194,25 @@ TangentialState TangentialFlexibleStart(const TangentialModel &m, const Tangenti
 // F1 (N, >= 0) and the rates dF0, dF1 (N/s) at the ends (without rates: linear); a piece with
 // F_n = 0 at both ends is free, and a gap since the plane's time is free vibration (F_t = 0).
 // m: the ball, the roll and the contact (bat_mass is ignored: the plane is the bat's translation).
-void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, PetscReal dF0, PetscReal dF1, TangentialPlane *p, TangentialState *s);
-void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1, TangentialPlane *p, TangentialState *s);
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1,
+                               PetscReal dF0, PetscReal dF1, TangentialPlane *p, TangentialState *s);
+void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal t1, PetscReal F0, PetscReal F1,
+                               TangentialPlane *p, TangentialState *s);
 
 // Mode w from z, zd under the force f0 + f1 s over [0, tau]: z and z' at tau, exact (w = 0: a
 // rigid mode).
-void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd);
+void TangentialModeForced(PetscReal w, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau,
+                          PetscReal *q, PetscReal *qd);
 // The same with damping, z'' + 2 sigma z' + w^2 z = f0 + f1 s (sigma >= 0): exact for every
 // damping (under-, critically and over-damped, a damped rigid mode), through the exponential of
 // the mode's 2 x 2 matrix and its phi-functions (a series where their argument is small).
-void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1, PetscReal tau, PetscReal *q, PetscReal *qd);
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal f0, PetscReal f1,
+                          PetscReal tau, PetscReal *q, PetscReal *qd);
 // The same under a cubic force f(s), z'' + 2 sigma z' + w^2 z = f(s): the response to s^k is
 // k! tau^(k+1) phi_(k+1)(tau A) of the mode's 2 x 2 matrix A (a series where |tau A| < 1, else
 // from e^(tau A) by phi_k = (phi_(k-1) - I/(k-1)!) (tau A)^-1); a rigid mode in closed form.
-void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal tau, PetscReal *q, PetscReal *qd);
+void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal tau,
+                          PetscReal *q, PetscReal *qd);
 
 // The four motions after an impulse J, from their values at the first touch.
 struct TangentialBodies {

@@ -24,7 +24,8 @@ void ShapeIntegrals(PetscReal xh, PetscReal L, PetscReal *i0, PetscReal *i1, Pet
 PropertiesRow Row(PetscReal x, PetscReal EI, PetscReal mu, PetscReal GJ, PetscReal rhoJ)
 {
   PropertiesRow q;
-  q.x = x, q.s.EI = EI, q.s.mu = mu, q.s.kGA = 0.5 * kShearSpeed2 * mu, q.s.rhoI = mu * kDepth * kDepth / 12, q.s.GJ = GJ, q.s.rhoJ = rhoJ;
+  q.x = x, q.s.EI = EI, q.s.mu = mu, q.s.kGA = 0.5 * kShearSpeed2 * mu, q.s.rhoI = mu * kDepth * kDepth / 12,
+  q.s.GJ = GJ, q.s.rhoJ = rhoJ;
   return q;
 }
 
@@ -32,13 +33,15 @@ PropertiesRow Row(PetscReal x, PetscReal EI, PetscReal mu, PetscReal GJ, PetscRe
 
 void RacketMakerHead(const RacketMakerParams &r, StringBedParams *bed)
 {
-  const PetscReal w = bed->shape == HeadShape::Ellipse ? std::sqrt(4 * r.head_size / (PETSC_PI * r.head_aspect)) : std::sqrt(r.head_size / r.head_aspect);
+  const PetscReal w = bed->shape == HeadShape::Ellipse ? std::sqrt(4 * r.head_size / (PETSC_PI * r.head_aspect))
+                                                       : std::sqrt(r.head_size / r.head_aspect);
   bed->head_width   = w;
   bed->head_length  = r.head_aspect * w;
   bed->head_center  = r.length - r.head_margin - bed->head_length / 2;
 }
 
-bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, std::vector<PropertiesRow> *rows, std::string *why)
+bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, std::vector<PropertiesRow> *rows,
+                      std::string *why)
 {
   char            text[512];
   const PetscReal L = r.length, xh = r.handle_length;
@@ -48,14 +51,19 @@ bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, st
     const PetscReal   s = StringBedMembrane(*bed).sigma;
     ms = s * h.area, mx = ms * bed->head_center, mzz = s * h.zz;
     if (!(bed->head_center - bed->head_length / 2 > xh + kRacketRamp)) {
-      std::snprintf(text, sizeof text, "the head (%g m long, -racket_head_size %g m^2) reaches into the handle (-racket_handle_length %g m): a longer -racket_length or a smaller head", (double)bed->head_length,
-                    (double)r.head_size, (double)xh);
+      std::snprintf(text, sizeof text,
+                    "the head (%g m long, -racket_head_size %g m^2) reaches into the handle (-racket_handle_length %g "
+                    "m): a longer -racket_length or a smaller head",
+                    (double)bed->head_length, (double)r.head_size, (double)xh);
       *why = text;
       return false;
     }
   }
   if (!(xh > 0 && xh + kRacketRamp < L)) {
-    std::snprintf(text, sizeof text, "-racket_handle_length %g m must lie within the racket (-racket_length %g m) with the %g m ramp to the head", (double)xh, (double)L, (double)kRacketRamp);
+    std::snprintf(text, sizeof text,
+                  "-racket_handle_length %g m must lie within the racket (-racket_length %g m) with the %g m ramp to "
+                  "the head",
+                  (double)xh, (double)L, (double)kRacketRamp);
     *why = text;
     return false;
   }
@@ -65,14 +73,19 @@ bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, st
   const PetscReal mu1 = (M * j1 - F * j0) / det, mu2 = (i0 * F - i1 * M) / det;
   if (!(mu1 > 0 && mu2 > 0)) {
     std::snprintf(text, sizeof text,
-                  "-racket_mass %g kg with -racket_balance %g m makes no racket: the handle's and the head's mass per length would be %g and %g kg/m (both must be > 0: at this mass the balance lies between %g and %g m)",
-                  (double)r.mass, (double)r.balance, (double)mu1, (double)mu2, (double)((mx + M * i1 / i0) / r.mass), (double)((mx + M * j1 / j0) / r.mass));
+                  "-racket_mass %g kg with -racket_balance %g m makes no racket: the handle's and the head's mass per "
+                  "length would be %g and %g kg/m (both must be > 0: at this mass the balance lies between %g and %g "
+                  "m)",
+                  (double)r.mass, (double)r.balance, (double)mu1, (double)mu2, (double)((mx + M * i1 / i0) / r.mass),
+                  (double)((mx + M * j1 / j0) / r.mass));
     *why = text;
     return false;
   }
   const PetscReal j_handle = mu1 * kHandleGyr * kHandleGyr, rhoJ2 = (r.twistweight - mzz - j_handle * i0) / j0;
   if (!(rhoJ2 > 0)) {
-    std::snprintf(text, sizeof text, "-racket_twistweight %g kg m^2 is less than the strings' and the handle's own (%g kg m^2)", (double)r.twistweight, (double)(mzz + j_handle * i0));
+    std::snprintf(text, sizeof text,
+                  "-racket_twistweight %g kg m^2 is less than the strings' and the handle's own (%g kg m^2)",
+                  (double)r.twistweight, (double)(mzz + j_handle * i0));
     *why = text;
     return false;
   }

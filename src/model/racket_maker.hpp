@@ -46,7 +46,8 @@ void RacketMakerHead(const RacketMakerParams &r, StringBedParams *bed);
 // The frame's table for a racket strung with `bed` (nullptr: no strings). False, with the reason
 // naming the option and the value, when the numbers make no racket (a level of mass or of rho J
 // not > 0, a head longer than the racket).
-bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, std::vector<PropertiesRow> *rows, std::string *why);
+bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, std::vector<PropertiesRow> *rows,
+                      std::string *why);
 
 // The ramp (m) between the handle's and the head's levels.
 constexpr PetscReal kRacketRamp = 0.02;

@@ -9,9 +9,12 @@ namespace beamimpact {
 const char *SectionSourceName(SectionSource s)
 {
   switch (s) {
-  case SectionSource::Profile: return "profile";
-  case SectionSource::Table: return "table";
-  default: return "uniform";
+  case SectionSource::Profile:
+    return "profile";
+  case SectionSource::Table:
+    return "table";
+  default:
+    return "uniform";
   }
 }
 
@@ -48,14 +51,14 @@ static SectionProperties RoundProperties(const SectionMaterial &m, PetscReal D, 
 {
   SectionProperties p;
   const PetscReal   A = RoundArea(D, d), I = RoundSecondMoment(D, d);
-  p.EI                = m.E * I;
-  p.mu                = m.rho * A;
-  p.rhoI              = m.rho * I;
-  const PetscReal k   = m.kappa > 0 ? m.kappa : CowperRound(m.nu, d / D);
-  p.kGA               = k * m.G * A;
-  const PetscReal G   = m.G > 0 ? m.G : m.E / (2 * (1 + m.nu)); // the twist's: an isotropic wall's G when none is given
-  p.GJ                = G * 2 * I;
-  p.rhoJ              = m.rho * 2 * I;
+  p.EI              = m.E * I;
+  p.mu              = m.rho * A;
+  p.rhoI            = m.rho * I;
+  const PetscReal k = m.kappa > 0 ? m.kappa : CowperRound(m.nu, d / D);
+  p.kGA             = k * m.G * A;
+  const PetscReal G = m.G > 0 ? m.G : m.E / (2 * (1 + m.nu)); // the twist's: an isotropic wall's G when none is given
+  p.GJ              = G * 2 * I;
+  p.rhoJ            = m.rho * 2 * I;
   return p;
 }
 
@@ -93,7 +96,8 @@ static void SectionQuadrature(const BeamSection &s, PetscReal a, PetscReal b, F 
   else
     for (const PropertiesRow &r : s.table) add_knot(r.x);
   cuts.push_back(b);
-  static const PetscReal gx[3] = {-0.7745966692414834, 0.0, 0.7745966692414834}, gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  static const PetscReal gx[3] = {-0.7745966692414834, 0.0, 0.7745966692414834},
+                         gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
   for (size_t j = 0; j + 1 < cuts.size(); ++j) {
     const PetscReal c = 0.5 * (cuts[j] + cuts[j + 1]), r = 0.5 * (cuts[j + 1] - cuts[j]);
     for (int g = 0; g < 3; ++g) f(c + r * gx[g], SectionAt(s, c + r * gx[g]), r * gw[g]);
@@ -104,7 +108,8 @@ SectionProperties SectionIntegral(const BeamSection &s, PetscReal a, PetscReal b
 {
   SectionProperties sum;
   SectionQuadrature(s, a, b, [&](PetscReal, const SectionProperties &q, PetscReal w) {
-    sum.EI += w * q.EI, sum.mu += w * q.mu, sum.kGA += w * q.kGA, sum.rhoI += w * q.rhoI, sum.GJ += w * q.GJ, sum.rhoJ += w * q.rhoJ;
+    sum.EI += w * q.EI, sum.mu += w * q.mu, sum.kGA += w * q.kGA, sum.rhoI += w * q.rhoI, sum.GJ += w * q.GJ,
+      sum.rhoJ += w * q.rhoJ;
   });
   return sum;
 }

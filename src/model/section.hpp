@@ -21,7 +21,11 @@
 
 namespace beamimpact {
 
-enum class SectionSource { Uniform = 0, Profile = 1, Table = 2 };
+enum class SectionSource {
+  Uniform = 0,
+  Profile = 1,
+  Table   = 2
+};
 const char *SectionSourceName(SectionSource s);
 
 // Properties of the section at one point.
@@ -39,9 +43,9 @@ struct ProfileRow {
   int       line = 0;            // the row's line in its file (for messages; 0: not from a file)
 };
 struct PropertiesRow {
-  PetscReal        x = 0;
+  PetscReal         x = 0;
   SectionProperties s;
-  int              line = 0; // the row's line in its file (for messages; 0: not from a file)
+  int               line = 0; // the row's line in its file (for messages; 0: not from a file)
 };
 
 // Material of a round profile. kappa = 0 picks Cowper's coefficient for each section.
@@ -55,12 +59,12 @@ struct SectionMaterial {
 // A section varying along the beam: rows sorted by strictly increasing x, the first at x = 0.
 struct BeamSection {
   SectionSource              source = SectionSource::Uniform;
-  std::string                file;              // where the rows came from (for the record)
-  std::vector<ProfileRow>    profile;           // source Profile
-  std::vector<PropertiesRow> table;             // source Table
-  bool                       table_has_shear = false; // the table gives kappaGA and rhoI
+  std::string                file;                      // where the rows came from (for the record)
+  std::vector<ProfileRow>    profile;                   // source Profile
+  std::vector<PropertiesRow> table;                     // source Table
+  bool                       table_has_shear   = false; // the table gives kappaGA and rhoI
   bool                       table_has_torsion = false; // the table gives GJ and rhoJ too (seven columns)
-  SectionMaterial            material;          // source Profile
+  SectionMaterial            material;                  // source Profile
 };
 
 // Round sections (m^2, m^4).

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <limits>
 
-extern "C" void dsbevx_(const char *jobz, const char *range, const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, double *q, const int *ldq, const double *vl, const double *vu,
-                        const int *il, const int *iu, const double *abstol, int *m, double *w, double *z, const int *ldz, double *work, int *iwork, int *ifail, int *info);
+extern "C" void dsbevx_(const char *jobz, const char *range, const char *uplo, const int *n, const int *kd, double *ab,
+                        const int *ldab, double *q, const int *ldq, const double *vl, const double *vu, const int *il,
+                        const int *iu, const double *abstol, int *m, double *w, double *z, const int *ldz, double *work,
+                        int *iwork, int *ifail, int *info);
 
 namespace beamimpact {
 
@@ -17,7 +19,8 @@ bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t)
   const std::vector<ProfileRow> &rows = p.section.profile;
   *R = *t = 0;
   if (p.section.source != SectionSource::Profile || rows.empty()) return false;
-  const PetscReal xs = std::min(std::max(x + rows.front().x, rows.front().x), rows.back().x); // the beam's x = 0 is the first row
+  const PetscReal xs = std::min(std::max(x + rows.front().x, rows.front().x),
+                                rows.back().x); // the beam's x = 0 is the first row
   size_t          k  = 0;
   while (k + 2 < rows.size() && rows[k + 1].x < xs) ++k;
   const ProfileRow &a = rows[k], &b = rows[std::min(k + 1, rows.size() - 1)];
@@ -53,12 +56,16 @@ PetscReal ShellRadiusAt(const BeamParams &p, PetscReal x)
   return 0;
 }
 
-PetscReal ShellYoungsModulus(const BeamParams &p) { return p.shell.youngs_modulus > 0 ? p.shell.youngs_modulus : p.section.material.E; }
+PetscReal ShellYoungsModulus(const BeamParams &p)
+{
+  return p.shell.youngs_modulus > 0 ? p.shell.youngs_modulus : p.section.material.E;
+}
 
 PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n)
 {
   const PetscReal n2 = (PetscReal)(n * n);
-  return std::sqrt(E * t * t * n2 * (n2 - 1) * (n2 - 1) / (12 * rho * (1 - nu * nu) * std::pow(R, 4) * (n2 + 1))) / (2 * PETSC_PI);
+  return std::sqrt(E * t * t * n2 * (n2 - 1) * (n2 - 1) / (12 * rho * (1 - nu * nu) * std::pow(R, 4) * (n2 + 1))) /
+         (2 * PETSC_PI);
 }
 
 namespace {
@@ -94,28 +101,32 @@ ShellCells CellsOf(const BeamParams &p)
 
 ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
 {
-  const PetscInt               F = d->fields, N = p.nodes, nh = (PetscInt)p.shell.harmonics.size(), G = F + 3 * nh;
-  const PetscReal              h = p.length / (N - 1), E = ShellYoungsModulus(p), rho = p.section.material.rho, nu = p.section.material.nu;
-  const auto                   renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
-  const std::vector<NodeHold>  hold     = BeamNodeHolds(p);
-  const ShellCells             c        = CellsOf(p);
-  ShellLayout                  out;
+  const PetscInt  F = d->fields, N = p.nodes, nh = (PetscInt)p.shell.harmonics.size(), G = F + 3 * nh;
+  const PetscReal h = p.length / (N - 1), E = ShellYoungsModulus(p), rho = p.section.material.rho,
+                  nu                   = p.section.material.nu;
+  const auto                  renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
+  const std::vector<NodeHold> hold     = BeamNodeHolds(p);
+  const ShellCells            c        = CellsOf(p);
+  ShellLayout                 out;
   out.first     = F;
   out.harmonics = p.shell.harmonics;
   BeamDiscretizationWiden(d, G, 0.0); // every new dof's mass is set below
   std::vector<PetscReal> &mass = d->mass;
   std::vector<char>      &held = d->held;
-  const auto dof = [&](PetscInt node, size_t k, PetscInt comp) { return node * G + out.first + 3 * (PetscInt)k + comp; }; // comp 0 U, 1 V, 2 W
-  const auto Cm  = [&](PetscInt k) { return E * c.t[k] / (1 - nu * nu); };
-  const auto Bb  = [&](PetscInt k) { return E * std::pow(c.t[k], 3) / (12 * (1 - nu * nu)); };
+  const auto              dof  = [&](PetscInt node, size_t k, PetscInt comp) {
+    return node * G + out.first + 3 * (PetscInt)k + comp;
+  }; // comp 0 U, 1 V, 2 W
+  const auto        Cm = [&](PetscInt k) { return E * c.t[k] / (1 - nu * nu); };
+  const auto        Bb = [&](PetscInt k) { return E * std::pow(c.t[k], 3) / (12 * (1 - nu * nu)); };
   std::vector<char> wall_held(N);
   for (PetscInt i = 0; i < N; ++i) {
     const bool left = i > 0 && c.hollow[i - 1], right = i < N - 1 && c.hollow[i];
-    wall_held[i]    = !(left || right) || ((left != right) && i > 0 && i < N - 1) || HoldsDeflection(hold[i]);
+    wall_held[i] = !(left || right) || ((left != right) && i > 0 && i < N - 1) || HoldsDeflection(hold[i]);
   }
   for (PetscInt i = 0; i < N; ++i) {
     const bool left = i > 0 && c.hollow[i - 1], right = i < N - 1 && c.hollow[i], wall = left || right;
-    const bool junction = wall && !(left && right) && i > 0 && i < N - 1; // a hollow part meets a solid one: clamped-like
+    const bool junction = wall && !(left && right) && i > 0 &&
+                          i < N - 1; // a hollow part meets a solid one: clamped-like
     const bool wheld = wall_held[i], mirror = wall && (junction || HoldsRotation(hold[i]));
     PetscReal  m = 0, PB = 0, Rn = 0, len = 0; // the node's half cells: mass, pi R B h, mean R
     for (PetscInt k : {i - 1, i}) {
@@ -131,19 +142,27 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
         held[dof(i, k, comp)] = wheld;
       }
       if (!wall) continue;
-      if (wheld) { // W' = 0 across a held rotation or a junction: the mirror kx = -2 (W_j - W_i)/h^2 toward each hollow side
+      if (wheld) { // W' = 0 across a held rotation or a junction: the mirror kx = -2 (W_j - W_i)/h^2 toward each hollow
+                   // side
         if (!mirror) continue;
         for (PetscInt j : {i - 1, i + 1}) {
           const PetscInt cell = std::min(i, j);
           if (j < 0 || j >= N || !c.hollow[cell] || wall_held[j]) continue;
-          d->strain.push_back(Term(dof(i, k, 2), PETSC_PI * c.R[cell] * Bb(cell) * h / 2, {{dof(j, k, 2), -2 / (h * h)}}));
+          d->strain.push_back(
+            Term(dof(i, k, 2), PETSC_PI * c.R[cell] * Bb(cell) * h / 2, {{dof(j, k, 2), -2 / (h * h)}}));
         }
         continue;
       }
       const PetscReal R = Rn / len, kv = n / (R * R), kw = n * n / (R * R); // kt = kv V + kw W
-      if (left && right)                                                    // kx = -W'': the moment (kx + nu kt) and (1 - nu^2) kt^2
-        d->strain.push_back(Term(dof(i, k, 2), PB, {{dof(i - 1, k, 2), -1 / (h * h)}, {dof(i, k, 2), 2 / (h * h) + nu * kw}, {dof(i + 1, k, 2), -1 / (h * h)}, {dof(i, k, 1), nu * kv}}));
-      d->strain.push_back(Term(dof(i, k, 2), PB * (1 - nu * nu), {{dof(i, k, 1), kv}, {dof(i, k, 2), kw}})); // alone at a free end: M_x = 0, kx + nu kt = 0
+      if (left && right) // kx = -W'': the moment (kx + nu kt) and (1 - nu^2) kt^2
+        d->strain.push_back(Term(dof(i, k, 2), PB,
+                                 {{dof(i - 1, k, 2), -1 / (h * h)},
+                                  {dof(i, k, 2), 2 / (h * h) + nu * kw},
+                                  {dof(i + 1, k, 2), -1 / (h * h)},
+                                  {dof(i, k, 1), nu * kv}}));
+      d->strain.push_back(
+        Term(dof(i, k, 2), PB * (1 - nu * nu),
+             {{dof(i, k, 1), kv}, {dof(i, k, 2), kw}})); // alone at a free end: M_x = 0, kx + nu kt = 0
     }
   }
   for (PetscInt cell = 0; cell < N - 1; ++cell) { // membrane and twist at the midpoint
@@ -152,12 +171,22 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
     const PetscReal R = c.R[cell], w = PETSC_PI * R * h, ih = 1 / h;
     for (size_t k = 0; k < (size_t)nh; ++k) {
       const PetscReal n = (PetscReal)out.harmonics[k], C = Cm(cell), B = Bb(cell);
-      const PetscInt  Ua = dof(a, k, 0), Ub = dof(b, k, 0), Va = dof(a, k, 1), Vb = dof(b, k, 1), Wa = dof(a, k, 2), Wb = dof(b, k, 2);
+      const PetscInt  Ua = dof(a, k, 0), Ub = dof(b, k, 0), Va = dof(a, k, 1), Vb = dof(b, k, 1), Wa = dof(a, k, 2),
+                     Wb    = dof(b, k, 2);
       const PetscReal et_v = n / (2 * R), et_w = 1 / (2 * R); // et = (n V + W)/R at the midpoint
-      d->strain.push_back(Term(Wa, w * C, {{Ua, -ih}, {Ub, ih}, {Va, nu * et_v}, {Vb, nu * et_v}, {Wa, nu * et_w}, {Wb, nu * et_w}})); // ex + nu et
-      d->strain.push_back(Term(Wa, w * C * (1 - nu * nu), {{Va, et_v}, {Vb, et_v}, {Wa, et_w}, {Wb, et_w}}));                          // et
-      d->strain.push_back(Term(Wa, w * C * (1 - nu) / 2, {{Va, -ih}, {Vb, ih}, {Ua, -n / (2 * R)}, {Ub, -n / (2 * R)}}));                 // g = V' - n U/R
-      d->strain.push_back(Term(Wa, w * 2 * (1 - nu) * B, {{Wa, -n * ih / R}, {Wb, n * ih / R}, {Va, -0.75 * ih / R}, {Vb, 0.75 * ih / R}, {Ua, n / (8 * R * R)}, {Ub, n / (8 * R * R)}})); // tw
+      d->strain.push_back(
+        Term(Wa, w * C,
+             {{Ua, -ih}, {Ub, ih}, {Va, nu * et_v}, {Vb, nu * et_v}, {Wa, nu * et_w}, {Wb, nu * et_w}})); // ex + nu et
+      d->strain.push_back(Term(Wa, w * C * (1 - nu * nu), {{Va, et_v}, {Vb, et_v}, {Wa, et_w}, {Wb, et_w}})); // et
+      d->strain.push_back(Term(Wa, w * C * (1 - nu) / 2,
+                               {{Va, -ih}, {Vb, ih}, {Ua, -n / (2 * R)}, {Ub, -n / (2 * R)}})); // g = V' - n U/R
+      d->strain.push_back(Term(Wa, w * 2 * (1 - nu) * B,
+                               {{Wa, -n * ih / R},
+                                {Wb, n * ih / R},
+                                {Va, -0.75 * ih / R},
+                                {Vb, 0.75 * ih / R},
+                                {Ua, n / (8 * R * R)},
+                                {Ub, n / (8 * R * R)}})); // tw
     }
   }
   return out;
@@ -174,21 +203,23 @@ PetscReal ShellPatchHarmonicWeight(PetscInt n, PetscReal a, PetscReal R)
   return z > 0 ? std::sin(z) / z : 1.0;
 }
 
-std::vector<std::pair<PetscInt, PetscReal>> ShellPatchNodeWeights(PetscInt nodes, PetscReal L, PetscReal x_c, PetscReal a)
+std::vector<std::pair<PetscInt, PetscReal>> ShellPatchNodeWeights(PetscInt nodes, PetscReal L, PetscReal x_c,
+                                                                  PetscReal a)
 {
   std::vector<std::pair<PetscInt, PetscReal>> w;
   const ImpactStencil                         st = GridImpactStencil(nodes, L, x_c);
   if (!(a > 0)) return {{st.j, st.w}, {st.j + 1, 1.0 - st.w}}; // the point load
   const PetscReal h  = L / (nodes - 1);
   const PetscReal x0 = std::max<PetscReal>(0, x_c - a), x1 = std::min(L, x_c + a);
-  const PetscInt  i0 = std::max<PetscInt>(0, (PetscInt)std::floor(x0 / h)), i1 = std::min<PetscInt>(nodes - 1, (PetscInt)std::ceil(x1 / h));
+  const PetscInt  i0         = std::max<PetscInt>(0, (PetscInt)std::floor(x0 / h)),
+                 i1          = std::min<PetscInt>(nodes - 1, (PetscInt)std::ceil(x1 / h));
   std::vector<PetscReal> cut = {x0, x1}; // the pieces where N_i p is one quadratic
   if (x_c > x0 && x_c < x1) cut.push_back(x_c);
   for (PetscInt i = i0; i <= i1; ++i)
     if (i * h > x0 && i * h < x1) cut.push_back(i * h);
   std::sort(cut.begin(), cut.end());
-  auto p   = [&](PetscReal x) { return std::max<PetscReal>(0, a - std::abs(x - x_c)) / (a * a); };
-  auto hat = [&](PetscInt i, PetscReal x) { return std::max<PetscReal>(0, 1 - std::abs(x - i * h) / h); };
+  auto      p   = [&](PetscReal x) { return std::max<PetscReal>(0, a - std::abs(x - x_c)) / (a * a); };
+  auto      hat = [&](PetscInt i, PetscReal x) { return std::max<PetscReal>(0, 1 - std::abs(x - i * h) / h); };
   PetscReal sum = 0;
   for (PetscInt i = i0; i <= i1; ++i) {
     PetscReal wi = 0;
@@ -231,7 +262,8 @@ PetscReal ShellLowestFrequency(const BeamParams &p, PetscInt n)
   for (const StrainTerm &t : d.strain)
     for (PetscInt a = 0; a < t.n; ++a)
       for (PetscInt b = 0; b < t.n; ++b)
-        if (index[t.dof[a]] >= 0 && index[t.dof[b]] >= 0) kd = std::max(kd, (int)std::abs(index[t.dof[a]] - index[t.dof[b]]));
+        if (index[t.dof[a]] >= 0 && index[t.dof[b]] >= 0)
+          kd = std::max(kd, (int)std::abs(index[t.dof[a]] - index[t.dof[b]]));
   const int           ldab = kd + 1, nn = (int)size;
   std::vector<double> ab((size_t)ldab * nn, 0.0), scale(nn); // lower band: ab[(i - j) + j ldab] = A(i, j), i >= j
   for (size_t i = 0; i < d.mass.size(); ++i)
@@ -240,13 +272,15 @@ PetscReal ShellLowestFrequency(const BeamParams &p, PetscInt n)
     for (PetscInt a = 0; a < t.n; ++a)
       for (PetscInt b = 0; b < t.n; ++b) {
         const PetscInt i = index[t.dof[a]], j = index[t.dof[b]];
-        if (i >= 0 && j >= i) ab[(size_t)(j - i) + (size_t)i * ldab] += t.weight * t.b[a] * t.b[b] * scale[i] * scale[j];
+        if (i >= 0 && j >= i)
+          ab[(size_t)(j - i) + (size_t)i * ldab] += t.weight * t.b[a] * t.b[b] * scale[i] * scale[j];
       }
   int                 il = 1, iu = 1, found = 0, info = 0, ldq = 1, ldz = 1;
   double              vl = 0, vu = 0, abstol = 0, qd = 0, z = 0;
   std::vector<double> work(7 * (size_t)nn), lam(nn);
   std::vector<int>    iwork(5 * (size_t)nn), ifail(nn);
-  dsbevx_("N", "I", "L", &nn, &kd, ab.data(), &ldab, &qd, &ldq, &vl, &vu, &il, &iu, &abstol, &found, lam.data(), &z, &ldz, work.data(), iwork.data(), ifail.data(), &info);
+  dsbevx_("N", "I", "L", &nn, &kd, ab.data(), &ldab, &qd, &ldq, &vl, &vu, &il, &iu, &abstol, &found, lam.data(), &z,
+          &ldz, work.data(), iwork.data(), ifail.data(), &info);
   if (info != 0 || found < 1 || !(lam[0] >= 0)) return nan;
   return std::sqrt(lam[0]) / (2 * PETSC_PI);
 }

@@ -39,7 +39,7 @@ namespace beamimpact {
 struct ShellLayout {
   PetscInt              first = -1; // first shell field (the theory's fields come before)
   std::vector<PetscInt> harmonics;  // n of each harmonic
-  PetscInt WField(size_t k) const { return first + 3 * (PetscInt)k + 2; }
+  PetscInt              WField(size_t k) const { return first + 3 * (PetscInt)k + 2; }
 };
 
 // Appends the shell's fields to a theory's discretization (its dofs renumbered node-major; the
@@ -73,8 +73,9 @@ constexpr PetscReal kWallDeflectionLimit = 0.25;
 // hat function: w_i = int N_i(x) p(x) dx (exact: Simpson on the pieces between the nodes and
 // x_c, x_c +- a), renormalized to sum 1 where the patch passes an end; a = 0 (or a patch within
 // one cell, by symmetry) gives the point load's hat weights N_i(x_c) exactly.
-PetscReal ShellPatchHarmonicWeight(PetscInt n, PetscReal a, PetscReal R);
-std::vector<std::pair<PetscInt, PetscReal>> ShellPatchNodeWeights(PetscInt nodes, PetscReal L, PetscReal x_c, PetscReal a);
+PetscReal                                   ShellPatchHarmonicWeight(PetscInt n, PetscReal a, PetscReal R);
+std::vector<std::pair<PetscInt, PetscReal>> ShellPatchNodeWeights(PetscInt nodes, PetscReal L, PetscReal x_c,
+                                                                  PetscReal a);
 // The default a (m): sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the
 // approach speed v (its own law, ContactWallMaxCompression): the Hertz contact radius of a
 // sphere pressed delta into a flat (a^2 = R_b delta); 0 (the point load) without -ball_radius.

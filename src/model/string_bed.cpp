@@ -48,11 +48,14 @@ BedGrid StringBedFrameGrid(const StringBedParams &p, PetscInt nodes, PetscReal l
 
 PetscReal BedCellArea(const BedGrid &g, PetscInt i, PetscInt j)
 {
-  const PetscReal x0 = g.X(i) - 0.5 * g.hx, x1 = g.X(i) + 0.5 * g.hx, z0 = g.Z(j) - 0.5 * g.hz, z1 = g.Z(j) + 0.5 * g.hz;
-  const auto      overlap = [](PetscReal a0, PetscReal a1, PetscReal b0, PetscReal b1) { return std::max<PetscReal>(0, std::min(a1, b1) - std::max(a0, b0)); };
+  const PetscReal x0 = g.X(i) - 0.5 * g.hx, x1 = g.X(i) + 0.5 * g.hx, z0 = g.Z(j) - 0.5 * g.hz,
+                  z1 = g.Z(j) + 0.5 * g.hz;
+  const auto overlap = [](PetscReal a0, PetscReal a1, PetscReal b0, PetscReal b1) {
+    return std::max<PetscReal>(0, std::min(a1, b1) - std::max(a0, b0));
+  };
   if (g.shape == HeadShape::Rectangle) return overlap(x0, x1, -g.a, g.a) * overlap(z0, z1, -g.b, g.b);
   const auto inside = [&](PetscReal x, PetscReal z) { return (x / g.a) * (x / g.a) + (z / g.b) * (z / g.b) <= 1; };
-  bool all = true;
+  bool       all    = true;
   for (PetscReal x : {x0, x1})
     for (PetscReal z : {z0, z1}) all = all && inside(x, z);
   if (all) return g.hx * g.hz;
@@ -66,8 +69,8 @@ PetscReal BedCellArea(const BedGrid &g, PetscInt i, PetscInt j)
   const PetscReal xa = std::max(x0, -g.a), xb = std::min(x1, g.a);
   if (!(xb > xa)) return 0;
   bool           none = true;
-  const PetscInt n = 4096; // midpoints: the chord has a kink where it meets z0 or z1 and a square root at x = +-a
-  PetscReal      s = 0;
+  const PetscInt n    = 4096; // midpoints: the chord has a kink where it meets z0 or z1 and a square root at x = +-a
+  PetscReal      s    = 0;
   for (PetscInt k = 0; k < n; ++k) {
     const PetscReal c = chord(xa + (k + 0.5) * (xb - xa) / n);
     s += c, none = none && c == 0;
@@ -110,8 +113,14 @@ PetscReal MembraneRectangleFrequency(const Membrane &m, PetscReal length, PetscR
   return 0.5 * std::sqrt((m.N_x * km * km + m.N_z * kn * kn) / m.sigma);
 }
 
-PetscReal MembraneCircleFrequency(const Membrane &m, PetscReal R, PetscReal bessel_zero) { return bessel_zero / (2 * M_PI * R) * std::sqrt(m.N_x / m.sigma); }
+PetscReal MembraneCircleFrequency(const Membrane &m, PetscReal R, PetscReal bessel_zero)
+{
+  return bessel_zero / (2 * M_PI * R) * std::sqrt(m.N_x / m.sigma);
+}
 
-PetscReal MembranePatchCentreDeflection(PetscReal N, PetscReal R, PetscReal c, PetscReal F) { return F / (2 * M_PI * N) * (std::log(R / c) + 0.5); }
+PetscReal MembranePatchCentreDeflection(PetscReal N, PetscReal R, PetscReal c, PetscReal F)
+{
+  return F / (2 * M_PI * N) * (std::log(R / c) + 0.5);
+}
 
 } // namespace beamimpact

@@ -18,7 +18,10 @@
 
 namespace beamimpact {
 
-enum class HeadShape { Ellipse, Rectangle };
+enum class HeadShape {
+  Ellipse,
+  Rectangle
+};
 const char *HeadShapeName(HeadShape s);
 
 struct StringBedParams {
@@ -28,13 +31,15 @@ struct StringBedParams {
   PetscReal spacing_crosses = 0.0151;  // m, between neighbouring crosses (-strings_spacing_crosses; default the mains')
   PetscReal linear_density  = 1.51e-3; // kg/m, mass per length of a string (-strings_linear_density)
   HeadShape shape           = HeadShape::Ellipse; // -head_shape
-  PetscReal head_length     = 0.34;    // m, the outline's extent along the frame's axis (-head_length)
-  PetscReal head_width      = 0.24;    // m, across the face (-head_width)
-  PetscReal head_center     = 0.175;   // m, the head's centre along the frame's axis from x = 0 (-head_center)
-  PetscInt  nodes           = 61;      // grid nodes across the head's length, edges included (-strings_nodes)
-  PetscInt  nodes_width     = 0;       // across its width (-strings_nodes_width); 0: from the aspect, h_z ~ h_x
-  std::string frame         = "none";  // -strings_frame: none (no bed), held (a rigid frame) or beam (the beam is the frame: it bends and rolls)
-  PetscReal patch_radius    = -1;      // m, the ball's load on the bed spread over a disc of this radius (-strings_patch_radius; < 0: not yet derived from the ball)
+  PetscReal head_length     = 0.34;               // m, the outline's extent along the frame's axis (-head_length)
+  PetscReal head_width      = 0.24;               // m, across the face (-head_width)
+  PetscReal head_center     = 0.175; // m, the head's centre along the frame's axis from x = 0 (-head_center)
+  PetscInt  nodes           = 61;    // grid nodes across the head's length, edges included (-strings_nodes)
+  PetscInt  nodes_width     = 0;     // across its width (-strings_nodes_width); 0: from the aspect, h_z ~ h_x
+  std::string frame = "none";  // -strings_frame: none (no bed), held (a rigid frame) or beam (the beam is the frame: it
+                               // bends and rolls)
+  PetscReal patch_radius = -1; // m, the ball's load on the bed spread over a disc of this radius
+                               // (-strings_patch_radius; < 0: not yet derived from the ball)
   bool On() const { return frame != "none"; }
   bool Held() const { return frame == "held"; }
 };
@@ -56,7 +61,7 @@ struct BedGrid {
   PetscInt  nx = 0, nz = 0;
   PetscReal a = 0, b = 0;   // m, half-length and half-width
   PetscReal hx = 0, hz = 0; // m
-  PetscReal x0 = 0;         // m, x of column 0 from the head's centre
+  PetscReal x0    = 0;      // m, x of column 0 from the head's centre
   HeadShape shape = HeadShape::Ellipse;
   PetscReal X(PetscInt i) const { return x0 + i * hx; }
   PetscReal Z(PetscInt j) const { return -b + j * hz; }

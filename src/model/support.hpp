@@ -21,10 +21,18 @@
 namespace beamimpact {
 
 // What a node is held at, as bits: the deflection (1), the rotation (2).
-enum class NodeHold : signed char { None = 0, Pin = 1, Guide = 2, Clamp = 3 };
+enum class NodeHold : signed char {
+  None  = 0,
+  Pin   = 1,
+  Guide = 2,
+  Clamp = 3
+};
 inline bool     HoldsDeflection(NodeHold h) { return (static_cast<int>(h) & 1) != 0; }
 inline bool     HoldsRotation(NodeHold h) { return (static_cast<int>(h) & 2) != 0; }
-inline NodeHold operator|(NodeHold a, NodeHold b) { return static_cast<NodeHold>(static_cast<int>(a) | static_cast<int>(b)); }
+inline NodeHold operator|(NodeHold a, NodeHold b)
+{
+  return static_cast<NodeHold>(static_cast<int>(a) | static_cast<int>(b));
+}
 
 // One support: a registered entry (static storage; model/support.cpp).
 struct SupportSpec {
@@ -36,12 +44,12 @@ struct SupportSpec {
 // A beam end's support: a handle on a registered entry (compared by entry).
 class Support {
 public:
-  constexpr explicit Support(const SupportSpec *s) : spec_(s) {}
-  const SupportSpec &Spec() const { return *spec_; }
-  const char        *Name() const { return spec_->name; }
-  NodeHold           Holds() const { return spec_->holds; }
-  bool               operator==(const Support &o) const { return spec_ == o.spec_; }
-  bool               operator!=(const Support &o) const { return spec_ != o.spec_; }
+  constexpr explicit Support(const SupportSpec *s) : spec_(s) { }
+  const SupportSpec   &Spec() const { return *spec_; }
+  const char          *Name() const { return spec_->name; }
+  NodeHold             Holds() const { return spec_->holds; }
+  bool                 operator==(const Support &o) const { return spec_ == o.spec_; }
+  bool                 operator!=(const Support &o) const { return spec_ != o.spec_; }
   static const Support Free, Clamped, Pinned; // the built-in entries
 
 private:
@@ -57,7 +65,7 @@ std::vector<std::string> SupportNames();
 bool                     SupportFind(const std::string &name, Support *s);
 // Adds an entry (static storage; a second entry of the same name is ignored). The program's
 // supports are the table kSupports; this is for a module or a test that brings its own.
-void                     SupportRegister(const SupportSpec *spec);
+void SupportRegister(const SupportSpec *spec);
 
 // Rigid modes (rad/s = 0) of a uniform beam with these end supports and nothing else held: 2
 // minus the rank of the holds on the rigid motions a + b x (free-free 2: translation and

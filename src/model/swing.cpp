@@ -5,7 +5,10 @@
 
 namespace beamimpact {
 
-PetscReal SwingSpeedAt(const SwingParams &s, const BeamRigidBody &body, PetscReal x) { return s.bat_speed + s.bat_angular_velocity * (x - body.x_cm); }
+PetscReal SwingSpeedAt(const SwingParams &s, const BeamRigidBody &body, PetscReal x)
+{
+  return s.bat_speed + s.bat_angular_velocity * (x - body.x_cm);
+}
 
 PetscReal SwingLawInertia(const SwingLaw &law, const BeamRigidBody &body)
 {
@@ -28,14 +31,17 @@ SwingParams SwingFromLaw(const SwingLaw &law, const BeamRigidBody &body)
   return p;
 }
 
-PetscReal SwingCollisionEfficiency(PetscReal bbs, PetscReal v_ball, PetscReal V_x) { return (bbs - V_x) / (v_ball + V_x); }
+PetscReal SwingCollisionEfficiency(PetscReal bbs, PetscReal v_ball, PetscReal V_x)
+{
+  return (bbs - V_x) / (v_ball + V_x);
+}
 
 PivotRig PivotRigOf(const BeamRigidBody &body, PetscReal x_pivot, PetscReal ball_mass, PetscReal x_imp)
 {
   PivotRig        r;
   const PetscReal d = body.x_cm - x_pivot, b = x_imp - x_pivot;
-  r.inertia_pivot   = body.inertia_cm + body.mass * d * d;
-  r.recoil_factor   = ball_mass * b * b / r.inertia_pivot;
+  r.inertia_pivot = body.inertia_cm + body.mass * d * d;
+  r.recoil_factor = ball_mass * b * b / r.inertia_pivot;
   return r;
 }
 

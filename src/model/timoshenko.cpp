@@ -23,8 +23,8 @@ namespace beamimpact {
 
 void TimoshenkoBuild(const BeamParams &p, BeamDiscretization *d)
 {
-  const PetscInt              N = p.nodes;
-  const PetscReal             h = p.length / (N - 1);
+  const PetscInt              N    = p.nodes;
+  const PetscReal             h    = p.length / (N - 1);
   const std::vector<NodeHold> hold = BeamNodeHolds(p);
   d->fields                        = 2;
   d->mass.assign(2 * N, 0.0);
@@ -36,7 +36,7 @@ void TimoshenkoBuild(const BeamParams &p, BeamDiscretization *d)
     d->held[2 * i + 1] = HoldsRotation(hold[i]);
   }
   for (PetscInt e = 0; e < N - 1; ++e) {
-    const SectionProperties s = BeamSectionMean(p, e * h, (e + 1) * h);
+    const SectionProperties s  = BeamSectionMean(p, e * h, (e + 1) * h);
     const PetscInt          w0 = 2 * e, p0 = 2 * e + 1, w1 = 2 * e + 2, p1 = 2 * e + 3;
     d->mass[w0] += 0.5 * s.mu * h;
     d->mass[w1] += 0.5 * s.mu * h;
@@ -52,8 +52,8 @@ void TimoshenkoBuild(const BeamParams &p, BeamDiscretization *d)
     if (!(d->held[p0] && d->held[p1])) d->strain.push_back(bend);
 
     StrainTerm shear;
-    shear.n     = 4;
-    shear.owner = w0;
+    shear.n      = 4;
+    shear.owner  = w0;
     shear.dof[0] = w0, shear.dof[1] = p0, shear.dof[2] = w1, shear.dof[3] = p1;
     shear.b[0] = -1.0 / h, shear.b[1] = -0.5, shear.b[2] = 1.0 / h, shear.b[3] = -0.5;
     shear.weight = s.kGA * h;

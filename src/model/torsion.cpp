@@ -46,6 +46,9 @@ PetscInt TorsionAppend(const BeamParams &p, BeamDiscretization *d)
   return F;
 }
 
-PetscReal TorsionFreeFrequency(PetscReal GJ, PetscReal rhoJ, PetscReal L, PetscInt n) { return n / (2 * L) * std::sqrt(GJ / rhoJ); }
+PetscReal TorsionFreeFrequency(PetscReal GJ, PetscReal rhoJ, PetscReal L, PetscInt n)
+{
+  return n / (2 * L) * std::sqrt(GJ / rhoJ);
+}
 
 } // namespace beamimpact

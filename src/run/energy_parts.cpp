@@ -71,7 +71,8 @@ const char *RigidKindName(RigidKind k)
 std::vector<RigidMotion> ReportedRigidMotions(const BeamParams &beam)
 {
   std::vector<RigidMotion> out;
-  if (beam.has_clamp || beam.left == Support::Clamped || beam.right == Support::Clamped) return out; // a clamp holds the roll too
+  if (beam.has_clamp || beam.left == Support::Clamped || beam.right == Support::Clamped)
+    return out;            // a clamp holds the roll too
   std::set<PetscInt> pins; // the nodes held by a pin
   if (beam.left == Support::Pinned) pins.insert(0);
   if (beam.right == Support::Pinned) pins.insert(beam.nodes - 1);
@@ -96,7 +97,7 @@ EnergySplit EnergySplitOf(const BeamParams &beam, const BeamSystem &sys, const S
   EnergySplit                    out;
   for (PetscReal &e : out.rigid) e = std::numeric_limits<PetscReal>::quiet_NaN();
   // The Gram matrices <c_a, c_b> of the fields per part, and the momenta <c_a, v> per part.
-  PetscReal Gp[kParts][3][3] = {}, G[3][3] = {}, mup[kParts][3] = {}, mu[3] = {};
+  PetscReal                           Gp[kParts][3][3] = {}, G[3][3] = {}, mup[kParts][3] = {}, mu[3] = {};
   std::vector<std::vector<PetscReal>> c;
   for (const RigidMotion &r : motions) c.push_back(RigidField(sys, r));
   for (PetscInt d = 0; d < sys.ndof; ++d) {
@@ -152,9 +153,9 @@ EnergySplit EnergySplitOf(const BeamParams &beam, const BeamSystem &sys, const S
 
 void ModeEnergiesLabel(const BeamParams &beam, const BeamModes &modes, std::vector<ModeEnergy> *energies)
 {
-  const BeamSystem              &sys = modes.sys;
-  const ModalSystem             &S   = modes.S;
-  const PetscInt                 n   = S.n;
+  const BeamSystem              &sys     = modes.sys;
+  const ModalSystem             &S       = modes.S;
+  const PetscInt                 n       = S.n;
   const std::vector<RigidMotion> motions = ReportedRigidMotions(beam);
   // The reported motions over the free dofs in mass-normalised coordinates (sqrt(m) c),
   // orthonormalised in their order: a rigid mode is the one it overlaps most.

@@ -23,7 +23,11 @@ namespace beamimpact {
 // Translation 1 on every deflection (the beam's and a string bed's); Rotation x - x_axis on the
 // deflections and 1 on a Timoshenko section's rotation; Roll z on a string bed's deflections and 1
 // on the frame's roll.
-enum class RigidKind : int { Translation = 0, Rotation = 1, Roll = 2 };
+enum class RigidKind : int {
+  Translation = 0,
+  Rotation    = 1,
+  Roll        = 2
+};
 constexpr int kRigidKinds = 3;
 const char   *RigidKindName(RigidKind k); // "translation", "rotation", "roll"
 

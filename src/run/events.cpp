@@ -9,14 +9,16 @@
 namespace beamimpact {
 
 static const char *const EventNames[] = {"contact", "max_compression", "reload", "separation"};
-const char *ContactEventName(ContactEventKind k) { return EventNames[static_cast<int>(k)]; }
+const char              *ContactEventName(ContactEventKind k) { return EventNames[static_cast<int>(k)]; }
 
 int ContactCrossedEvent(ContactPhase phase, const EventIndicators &a, const EventIndicators &b, PetscReal tol)
 {
   switch (phase) {
   case ContactPhase::Loading:
-    if (a.cdot > -tol && b.cdot <= 0 && !(a.cdot <= 0 && b.cdot >= a.cdot)) return static_cast<int>(ContactEventKind::MaxCompression);
-    if (a.c > -tol && b.c <= 0 && !(a.c <= 0 && b.c >= a.c)) return static_cast<int>(ContactEventKind::Separation); // only if dc/dt was missed
+    if (a.cdot > -tol && b.cdot <= 0 && !(a.cdot <= 0 && b.cdot >= a.cdot))
+      return static_cast<int>(ContactEventKind::MaxCompression);
+    if (a.c > -tol && b.c <= 0 && !(a.c <= 0 && b.c >= a.c))
+      return static_cast<int>(ContactEventKind::Separation); // only if dc/dt was missed
     return -1;
   case ContactPhase::Unloading: {
     const bool sep = a.c > 0 && b.c <= 0, rel = a.cdot < tol && b.cdot >= 0 && !(a.cdot >= 0 && b.cdot <= a.cdot);
@@ -28,7 +30,8 @@ int ContactCrossedEvent(ContactPhase phase, const EventIndicators &a, const Even
     if (rel) return static_cast<int>(ContactEventKind::Reload);
     return -1;
   }
-  case ContactPhase::Separated: return a.c < 0 && b.c >= 0 ? static_cast<int>(ContactEventKind::ContactStart) : -1;
+  case ContactPhase::Separated:
+    return a.c < 0 && b.c >= 0 ? static_cast<int>(ContactEventKind::ContactStart) : -1;
   }
   return -1;
 }
@@ -38,7 +41,10 @@ PetscReal ContactEventIndicator(ContactEventKind k, const EventIndicators &g)
   return (k == ContactEventKind::MaxCompression || k == ContactEventKind::Reload) ? g.cdot : g.c;
 }
 
-bool ContactEventFalling(ContactEventKind k) { return k == ContactEventKind::MaxCompression || k == ContactEventKind::Separation; }
+bool ContactEventFalling(ContactEventKind k)
+{
+  return k == ContactEventKind::MaxCompression || k == ContactEventKind::Separation;
+}
 
 ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, PetscReal te, PetscReal c, PetscReal v)
 {
@@ -49,8 +55,9 @@ ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, Pe
   return e;
 }
 
-PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
-                                 ContactTimeline *tl, ContactTally *tally, bool *force_changed)
+PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot,
+                                 const BallParams &ball, const ImpactTimes &times, const char *method,
+                                 ContactState *state, ContactTimeline *tl, ContactTally *tally, bool *force_changed)
 {
   PetscFunctionBeginUser;
   *force_changed = true;
@@ -68,10 +75,13 @@ PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal
       // The unloading branch was never applied: the ball would leave without its hysteresis loss.
       char after[96] = "";
       for (const ContactEvent &e : tally->events)
-        if (e.kind == ContactEventKind::Reload) PetscCall(PetscSNPrintf(after, sizeof(after), " after the reload located at t = %g s", (double)e.time));
+        if (e.kind == ContactEventKind::Reload)
+          PetscCall(PetscSNPrintf(after, sizeof(after), " after the reload located at t = %g s", (double)e.time));
       SETERRQ(comm, PETSC_ERR_PLIB,
-              "the ball separated at t = %g s while the hysteretic law was still in its loading branch: the maximum-compression event was missed%s, so the unloading (lossy) branch was skipped and "
-              "the result would be wrong; none is reported (%s; a defect of the event location: a different step changes whether it is hit)",
+              "the ball separated at t = %g s while the hysteretic law was still in its loading branch: the "
+              "maximum-compression event was missed%s, so the unloading (lossy) branch was skipped and "
+              "the result would be wrong; none is reported (%s; a defect of the event location: a different step "
+              "changes whether it is hit)",
               (double)te, after, method);
     }
     ContactSwitch(ball, state, ContactPhase::Separated, c);
@@ -111,27 +121,30 @@ void ContactTallyClose(ContactPhase phase, const ContactTimeline &tl, PetscReal 
   if (tally->contacts == 1) tally->contact_time = t - tl.contact_start;
 }
 
-PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta, PetscReal ga, PetscReal gb, PetscReal tol, const std::function<PetscErrorCode(EventIndicators *)> &indicators,
+PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta, PetscReal ga, PetscReal gb,
+                           PetscReal tol, const std::function<PetscErrorCode(EventIndicators *)> &indicators,
                            PetscInt *event_steps)
 {
-  const bool      falling  = ContactEventFalling(kind);
-  PetscReal       tb       = stepper.Time();
-  const PetscReal step_len = tb - ta; // a located event is within 1e-4 of this: an O(1e-8 dt^2) local error at a C^0 force switch
-  bool            at_post  = true;
-  int             side     = 0;
+  const bool falling = ContactEventFalling(kind);
+  PetscReal  tb      = stepper.Time();
+  const PetscReal
+       step_len = tb - ta; // a located event is within 1e-4 of this: an O(1e-8 dt^2) local error at a C^0 force switch
+  bool at_post  = true;
+  int  side     = 0;
   // The bracket is lost when a re-step to its post end lands on the pre side (another path to
   // the same time: the event's time moves with the path, by up to the local error): the post
   // end is then unknown, and steps of doubling length from the least one walk on until the
   // indicator is past the event, which closes a new bracket.
-  bool            lost     = false;
-  PetscReal       walk     = 0;
+  bool      lost = false;
+  PetscReal walk = 0;
 
   PetscFunctionBeginUser;
   for (int it = 0;; ++it) {
     if (at_post && std::abs(gb) <= tol) break;
     if (!at_post && std::abs(ga) <= tol) break; // on the root from the pre-event side: as good
-    PetscCheck(it < 100, stepper.Comm(), PETSC_ERR_NOT_CONVERGED, "event %s could not be located in [%g, %g] s with %s (indicator %g -> %g)", ContactEventName(kind), (double)ta, (double)tb,
-               stepper.Method().c_str(), (double)ga, (double)gb);
+    PetscCheck(it < 100, stepper.Comm(), PETSC_ERR_NOT_CONVERGED,
+               "event %s could not be located in [%g, %g] s with %s (indicator %g -> %g)", ContactEventName(kind),
+               (double)ta, (double)tb, stepper.Method().c_str(), (double)ga, (double)gb);
     const PetscReal min_step = 1e-4 * step_len;
     PetscReal       tn;
     if (lost) tn = ta + (walk = std::min(2 * walk, step_len));
@@ -171,7 +184,8 @@ PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta
       if (side == -1) gb *= 0.5;
       side    = -1;
       at_post = false;
-      if (!lost && ta >= tb * (1 - 8 * PETSC_MACHINE_EPSILON)) lost = true, walk = min_step; // at or past the old post end, still before the event
+      if (!lost && ta >= tb * (1 - 8 * PETSC_MACHINE_EPSILON))
+        lost = true, walk = min_step; // at or past the old post end, still before the event
     }
   }
   PetscFunctionReturn(0);

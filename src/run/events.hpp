@@ -43,21 +43,22 @@ struct ContactTimeline {
 // maximum compression) is an error: the result would lack the ball's loss. The caller checks
 // -impact_max_contacts.
 // ContactStartEvent: the record of a contact that starts with approach speed v (m/s) in state s.
-ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, PetscReal te, PetscReal c, PetscReal v);
-PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot, const BallParams &ball, const ImpactTimes &times, const char *method, ContactState *state,
-                                 ContactTimeline *tl, ContactTally *tally, bool *force_changed);
+ContactEvent   ContactStartEvent(const BallParams &ball, const ContactState &s, PetscReal te, PetscReal c, PetscReal v);
+PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot,
+                                 const BallParams &ball, const ImpactTimes &times, const char *method,
+                                 ContactState *state, ContactTimeline *tl, ContactTally *tally, bool *force_changed);
 // The first contact, at t = 0 with approach speed v (m/s), in the tally.
 void ContactTallyStart(const BallParams &ball, const ContactState &s, PetscReal v, ContactTally *tally);
 // The end of the run at time t (s) in `phase`: a contact still open is closed there (touching).
 void ContactTallyClose(ContactPhase phase, const ContactTimeline &tl, PetscReal t, ContactTally *tally);
-
 
 // Locates event `kind` crossed by the stepper's last step, from the step's start ta with
 // indicator ga to its end with gb (the stepper is at tb): Illinois (regula falsi)
 // re-steps from the bracket's pre-event end, until the indicator is within tol. Leaves the
 // stepper on the located state; counts the re-steps in *event_steps. indicators(g) reads
 // the current state's scaled indicators.
-PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta, PetscReal ga, PetscReal gb, PetscReal tol, const std::function<PetscErrorCode(EventIndicators *)> &indicators,
+PetscErrorCode EventLocate(Stepper &stepper, ContactEventKind kind, PetscReal ta, PetscReal ga, PetscReal gb,
+                           PetscReal tol, const std::function<PetscErrorCode(EventIndicators *)> &indicators,
                            PetscInt *event_steps);
 
 } // namespace beamimpact

@@ -33,7 +33,8 @@ PetscErrorCode StepperGatherState(Stepper &st, const BeamSystem &sys, FullState 
     const PetscMPIInt        mine = (PetscMPIInt)own.size();
     PetscCallMPI(MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
     for (PetscMPIInt r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-    PetscCallMPI(MPI_Allgatherv(own.data(), mine, MPIU_REAL, all.data(), counts.data(), displs.data(), MPIU_REAL, comm));
+    PetscCallMPI(
+      MPI_Allgatherv(own.data(), mine, MPIU_REAL, all.data(), counts.data(), displs.data(), MPIU_REAL, comm));
   }
   s->y.resize(sys.ndof);
   s->v.resize(sys.ndof);
@@ -120,16 +121,17 @@ void FreeFlightCouple(const ContactCoupling &g, FreeFlight *ff)
 
 } // namespace
 
-void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const FullState &s, FreeFlight *ff)
+void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const FullState &s,
+                     FreeFlight *ff)
 {
   const BeamModes &m = *modes;
   const PetscInt   n = m.S.n, nm = m.Count(); // free dofs, modes kept
-  *ff                = FreeFlight();
-  ff->modes          = modes;
-  ff->t0             = t0;
-  ff->yb0            = s.ball_y;
-  ff->vb0            = s.ball_v;
-  ff->dissipated0    = s.dissipated;
+  *ff             = FreeFlight();
+  ff->modes       = modes;
+  ff->t0          = t0;
+  ff->yb0         = s.ball_y;
+  ff->vb0         = s.ball_v;
+  ff->dissipated0 = s.dissipated;
   ff->z.assign(nm, 0.0);
   ff->zd.assign(nm, 0.0);
   // z = Phi^T M^{1/2} q over the free dofs.
@@ -152,7 +154,8 @@ void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupli
   FreeFlightCouple(g, ff);
 }
 
-void FreeFlightStartModal(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const ModalState &s, FreeFlight *ff)
+void FreeFlightStartModal(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0,
+                          const ModalState &s, FreeFlight *ff)
 {
   *ff             = FreeFlight();
   ff->modes       = modes;
@@ -252,7 +255,7 @@ void FreeFlightState(const FreeFlight &ff, PetscReal s, FullState *out)
   out->y.assign(m.sys.ndof, 0.0);
   out->v.assign(m.sys.ndof, 0.0);
   for (PetscInt r = 0; r < n; ++r) {
-    const PetscReal im  = 1 / std::sqrt(m.S.mass[r]);
+    const PetscReal im = 1 / std::sqrt(m.S.mass[r]);
     out->y[m.S.dof[r]] = im * yy[r];
     out->v[m.S.dof[r]] = im * vv[r];
   }

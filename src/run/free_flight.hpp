@@ -28,22 +28,24 @@ namespace beamimpact {
 
 struct FreeFlight {
   std::shared_ptr<const BeamModes> modes;
-  std::vector<PetscReal>           gamma;  // per mode: its share of the deflection at the impact point
-  std::vector<PetscReal>           z, zd;  // modal coordinates and velocities at s = 0
-  PetscReal t0 = 0, yb0 = 0, vb0 = 0;      // s, m, m/s at s = 0
-  PetscReal dissipated0 = 0, energy0 = 0;  // J: dissipated by the beam's damping by t0, the beam's energy at t0
-  PetscReal L1 = 0, L2 = 0;                // bounds on |c'|, |c''| over s >= 0
-  PetscInt  evals = 0;                     // evaluations of c by the search
+  std::vector<PetscReal>           gamma; // per mode: its share of the deflection at the impact point
+  std::vector<PetscReal>           z, zd; // modal coordinates and velocities at s = 0
+  PetscReal                        t0 = 0, yb0 = 0, vb0 = 0; // s, m, m/s at s = 0
+  PetscReal dissipated0 = 0, energy0 = 0; // J: dissipated by the beam's damping by t0, the beam's energy at t0
+  PetscReal L1 = 0, L2 = 0;               // bounds on |c'|, |c''| over s >= 0
+  PetscInt  evals = 0;                    // evaluations of c by the search
 };
 
 // The whole state of the stepper on every rank (beam dofs in dof order, held dofs 0).
 PetscErrorCode StepperGatherState(Stepper &st, const BeamSystem &sys, FullState *s);
 
 // Projects the state s at time t0 on the modes; g: the ball's coupling.
-void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const FullState &s, FreeFlight *ff);
+void FreeFlightStart(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const FullState &s,
+                     FreeFlight *ff);
 
 // The same from a state already in those modes (the stepper's own, Stepper::GetModalState): O(modes).
-void FreeFlightStartModal(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0, const ModalState &s, FreeFlight *ff);
+void FreeFlightStartModal(std::shared_ptr<const BeamModes> modes, const ContactCoupling &g, PetscReal t0,
+                          const ModalState &s, FreeFlight *ff);
 
 // d^p c / ds^p at s (p = 0, 1, 2); *mag (if given): the sum of the magnitudes of its terms.
 PetscReal FreeFlightCompression(const FreeFlight &ff, PetscReal s, int p, PetscReal *mag = nullptr);

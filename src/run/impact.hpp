@@ -28,76 +28,92 @@ namespace beamimpact {
 
 // How the run follows the beam and the ball after a separation (-impact_after): integrated in
 // time by the stepper, or the exact free vibration in the beam's modes (run/free_flight.hpp).
-enum class ImpactAfter { Time = 0, Modal = 1 };
+enum class ImpactAfter {
+  Time  = 0,
+  Modal = 1
+};
 const char *ImpactAfterName(ImpactAfter a);
 
 // -impact_* options.
 struct ImpactParams {
   ImpactAfter after     = ImpactAfter::Modal; // modal wherever the beam allows it (else time, saying why)
-  PetscBool after_set   = PETSC_FALSE;        // -impact_after was given: modal where it cannot be is an error
-  PetscReal x            = 0.55;  // m, impact point measured from the x = 0 end
-  PetscReal z            = 0;     // m, -impact_z: across the face from the frame's axis (a racket's off-centre hit; 0: on the axis)
-  PetscReal offset       = 0;     // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
-  PetscBool tangential_rigid = PETSC_FALSE; // -impact_tangential_plane rigid: the bat rigid in its second plane (default flexible, run/oblique.hpp)
-  PetscReal window       = -1;    // s, time simulated after each separation (-1: not given, 2 fundamental periods; a given one is >= 0)
-  PetscReal max_time     = -1;    // s, cap on the simulated time (< 0: window + 100 contact times)
-  PetscReal full_max_time = 0;    // s, not an option: 0, or this run is a probe capped by max_time (a sweep's 1 ns) and the cost
-                                  // estimates are a full point's, capped by full_max_time (< 0: the default cap)
-  PetscReal event_tol    = 1e-10; // event indicators (c / c_scale, dc/dt / v_i) are located to this
-  PetscInt  max_contacts = 50;    // a run with more separate contacts stops with an error
-  PetscBool energy_check = PETSC_FALSE; // stop when the total energy grows beyond -impact_energy_growth_tol
-  PetscReal energy_growth_tol = 1e-3;   // relative to the incident kinetic energy
+  PetscBool   after_set = PETSC_FALSE;        // -impact_after was given: modal where it cannot be is an error
+  PetscReal   x         = 0.55;               // m, impact point measured from the x = 0 end
+  PetscReal   z = 0; // m, -impact_z: across the face from the frame's axis (a racket's off-centre hit; 0: on the axis)
+  PetscReal   offset           = 0; // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
+  PetscBool   tangential_rigid = PETSC_FALSE; // -impact_tangential_plane rigid: the bat rigid in its second plane
+                                              // (default flexible, run/oblique.hpp)
+  PetscReal
+    window = -1; // s, time simulated after each separation (-1: not given, 2 fundamental periods; a given one is >= 0)
+  PetscReal max_time      = -1; // s, cap on the simulated time (< 0: window + 100 contact times)
+  PetscReal full_max_time = 0;  // s, not an option: 0, or this run is a probe capped by max_time (a sweep's 1 ns) and
+                                // the cost estimates are a full point's, capped by full_max_time (< 0: the default cap)
+  PetscReal event_tol            = 1e-10;       // event indicators (c / c_scale, dc/dt / v_i) are located to this
+  PetscInt  max_contacts         = 50;          // a run with more separate contacts stops with an error
+  PetscBool energy_check         = PETSC_FALSE; // stop when the total energy grows beyond -impact_energy_growth_tol
+  PetscReal energy_growth_tol    = 1e-3;        // relative to the incident kinetic energy
   PetscBool check_unused_options = PETSC_FALSE; // not an option: the task asks for the check once the TS is set up
-  PetscBool report_setup = PETSC_FALSE; // not an option: print the integrator, its step and stability limit before the run
+  PetscBool
+    report_setup = PETSC_FALSE; // not an option: print the integrator, its step and stability limit before the run
   // With report_setup: a cost estimate before a run expected to take more than cost_warn s of
   // wall time, and a progress line every `progress` s of wall time (0: none).
-  PetscReal cost_warn = 30, progress = 10; // s, -impact_cost_warn, -impact_progress
-  PetscBool strict_solver_options = PETSC_FALSE; // not an option: left-over PETSc solver options are errors (a study's configuration)
-  PetscReal rigid_loss_fraction = 0; // not an option here: f of Eq. (11) for the rigid_acor column (a sweep's -rigid_loss_fraction; 0 for -task impact)
+  PetscReal cost_warn = 30, progress = 10;       // s, -impact_cost_warn, -impact_progress
+  PetscBool strict_solver_options = PETSC_FALSE; // not an option: left-over PETSc solver options are errors (a study's
+                                                 // configuration)
+  PetscReal rigid_loss_fraction = 0; // not an option here: f of Eq. (11) for the rigid_acor column (a sweep's
+                                     // -rigid_loss_fraction; 0 for -task impact)
 };
 
 // What to record during the run (nothing by default): -monitor_* and -snapshot_times.
 struct MonitorRequest {
-  PetscBool              ball   = PETSC_FALSE; // ball position, velocity, compression, force per step
-  PetscBool              energy = PETSC_FALSE; // energy terms per step
-  std::vector<PetscReal> velocity_at;          // m, beam velocity at these points per step
-  std::vector<PetscReal> snapshot_times;       // s, beam displacement y(x) at these times (stepped onto exactly)
-  PetscBool              segment = PETSC_FALSE; // kinetic energy of the beam segment [segment_x0, segment_x1]
+  PetscBool              ball   = PETSC_FALSE;     // ball position, velocity, compression, force per step
+  PetscBool              energy = PETSC_FALSE;     // energy terms per step
+  std::vector<PetscReal> velocity_at;              // m, beam velocity at these points per step
+  std::vector<PetscReal> snapshot_times;           // s, beam displacement y(x) at these times (stepped onto exactly)
+  PetscBool              segment    = PETSC_FALSE; // kinetic energy of the beam segment [segment_x0, segment_x1]
   PetscReal              segment_x0 = 0, segment_x1 = 0; // m
-  PetscReal              segment_until = -1;    // s, the segment's peak is taken over t <= this (< 0: whole run)
-  PetscBool              grip = PETSC_FALSE;   // the force of the bat on the hands and its moment, the grip's energies per step (-grip)
+  PetscReal              segment_until = -1; // s, the segment's peak is taken over t <= this (< 0: whole run)
+  PetscBool
+       grip = PETSC_FALSE; // the force of the bat on the hands and its moment, the grip's energies per step (-grip)
   bool any() const { return ball || energy || !velocity_at.empty() || segment || grip; }
 };
 
 // Per-step time series (rank 0 holds them; only the requested ones are filled).
 struct ImpactSeries {
-  std::vector<PetscReal> time;                                           // s
-  std::vector<PetscReal> ball_y, ball_v, compression, force;             // m, m/s, m, N
+  std::vector<PetscReal> time;                               // s
+  std::vector<PetscReal> ball_y, ball_v, compression, force; // m, m/s, m, N
   // N/s, dF/dt at each step (the law's dF/dc times dc/dt; at a separation, on the branch the ball
   // left by): with force, the cubic Hermite F_n(t) an oblique impact's tangential contact takes.
   // Recorded with force, not written to the output.
   std::vector<PetscReal> force_rate;
-  std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated;     // J
-  std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;        // J
-  std::vector<PetscReal> beam_dissipated;                                // J, by the beam's damping (damped beams only)
-  std::vector<PetscReal> shell_energy;                                   // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
-  std::vector<PetscReal> bed_energy, twist_energy;                       // J, the string bed's (-strings_frame) and the frame's roll (-beam_torsion), in beam_*
-  std::vector<PetscReal> velocity_at_x;                                  // m, the points of velocity_at
-  std::vector<std::vector<PetscReal>> velocity_at;                       // m/s, [point][step]
-  std::vector<PetscReal> segment_kinetic;                                // J, kinetic energy of the monitored segment
+  std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated; // J
+  std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;    // J
+  std::vector<PetscReal> beam_dissipated;                            // J, by the beam's damping (damped beams only)
+  std::vector<PetscReal> shell_energy; // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
+  std::vector<PetscReal> bed_energy,
+    twist_energy; // J, the string bed's (-strings_frame) and the frame's roll (-beam_torsion), in beam_*
+  std::vector<PetscReal>              velocity_at_x;                      // m, the points of velocity_at
+  std::vector<std::vector<PetscReal>> velocity_at;                        // m/s, [point][step]
+  std::vector<PetscReal>              segment_kinetic;                    // J, kinetic energy of the monitored segment
   std::vector<PetscReal> grip_force, grip_moment, grip_stored, hand_work; // N, N m about x = 0, J, J (-monitor_grip)
   // -flight: the batted ball's trajectory (s; m, the flight's frame: y down the field, z up; rad/s)
-  std::vector<PetscReal> flight_time, flight_x, flight_y, flight_z, flight_spin;
-  std::vector<PetscReal> snapshot_time;                                  // s
-  std::vector<std::vector<PetscReal>> snapshot_y;                        // m, [snapshot][node]
-  std::vector<std::vector<PetscReal>> snapshot_bed;                      // m, a string bed's deflection from its frame, w - y - z phi, [snapshot][z * nodes + x] (NaN off the bed; rank 0)
+  std::vector<PetscReal>              flight_time, flight_x, flight_y, flight_z, flight_spin;
+  std::vector<PetscReal>              snapshot_time; // s
+  std::vector<std::vector<PetscReal>> snapshot_y;    // m, [snapshot][node]
+  std::vector<std::vector<PetscReal>> snapshot_bed;  // m, a string bed's deflection from its frame, w - y - z phi,
+                                                     // [snapshot][z * nodes + x] (NaN off the bed; rank 0)
   // m, the barrel wall's radial displacement W_n(x) of each harmonic (-beam_shell; model/shell.hpp),
   // [snapshot][k * nodes + node] for the harmonic n = snapshot_wall_n[k] (NaN where the section is solid; rank 0)
   std::vector<std::vector<PetscReal>> snapshot_wall;
   std::vector<PetscInt>               snapshot_wall_n; // 1, the harmonics of snapshot_wall
 };
 
-enum class ContactEventKind { ContactStart = 0, MaxCompression = 1, Reload = 2, Separation = 3 };
+enum class ContactEventKind {
+  ContactStart   = 0,
+  MaxCompression = 1,
+  Reload         = 2,
+  Separation     = 3
+};
 const char *ContactEventName(ContactEventKind k);
 
 struct ContactEvent {
@@ -109,7 +125,7 @@ struct ContactEvent {
   // (m/s), and the wall coefficient of restitution e and unloading exponent n the hysteretic
   // law uses for this contact (from -ball_cor_table at that speed, else the ball's fixed
   // ones; the linear law: e = 1, n = 0).
-  PetscReal        approach_speed = 0, cor = 0, n = 0;
+  PetscReal approach_speed = 0, cor = 0, n = 0;
 };
 
 // What the contact events record for the outcome (run/events.cpp writes it, run/outcome.cpp
@@ -117,12 +133,12 @@ struct ContactEvent {
 // compression at a maximum-compression event.
 struct ContactTally {
   std::vector<ContactEvent> events;
-  PetscInt  contacts           = 0; // separate contacts
-  PetscReal contact_time       = 0; // s, duration of the first contact
-  PetscReal contact_time_total = 0; // s, summed over all contacts
-  PetscReal peak_force         = 0; // N
-  PetscReal max_compression    = 0; // m
-  bool      touching           = false; // the run ended with the ball still in contact (its contact closed at the end)
+  PetscInt                  contacts           = 0; // separate contacts
+  PetscReal                 contact_time       = 0; // s, duration of the first contact
+  PetscReal                 contact_time_total = 0; // s, summed over all contacts
+  PetscReal                 peak_force         = 0; // N
+  PetscReal                 max_compression    = 0; // m
+  bool touching = false; // the run ended with the ball still in contact (its contact closed at the end)
 };
 
 // What the monitors record for the outcome (run/monitors.cpp): the peaks over the steps.
@@ -155,22 +171,23 @@ struct ImpactScales {
 // by run/outcome.cpp. A quantity that does not apply to the scenario is NaN, never a number a
 // reader could take for a value (the table says where). The units below are the table's.
 struct ImpactOutcome {
-  PetscReal x               = 0; // m
-  PetscReal acor            = 0; // -v_b,final / v_i
-  PetscReal acor_corrected  = 0; // acor * loss factor (linear spring); = acor for hysteresis
-  PetscReal contact_time    = 0; // s, duration of the first contact
-  PetscReal contact_time_total = 0; // s, summed over all contacts
-  PetscReal peak_force      = 0; // N
-  PetscReal max_compression = 0; // m
-  PetscInt  contacts        = 0; // separate contacts
-  PetscReal ball_final_velocity = 0; // m/s
-  PetscReal final_time      = 0; // s, simulated
-  PetscBool ended_in_contact = PETSC_FALSE; // the run hit -impact_max_time while touching
+  PetscReal x                         = 0;           // m
+  PetscReal acor                      = 0;           // -v_b,final / v_i
+  PetscReal acor_corrected            = 0;           // acor * loss factor (linear spring); = acor for hysteresis
+  PetscReal contact_time              = 0;           // s, duration of the first contact
+  PetscReal contact_time_total        = 0;           // s, summed over all contacts
+  PetscReal peak_force                = 0;           // N
+  PetscReal max_compression           = 0;           // m
+  PetscInt  contacts                  = 0;           // separate contacts
+  PetscReal ball_final_velocity       = 0;           // m/s
+  PetscReal final_time                = 0;           // s, simulated
+  PetscBool ended_in_contact          = PETSC_FALSE; // the run hit -impact_max_time while touching
   PetscBool compression_beyond_radius = PETSC_FALSE; // max_compression > -ball_radius (given): physically absurd
   // Invariants at the end (relative to the incident kinetic energy / momentum). The momenta
   // only where they are invariants (no held dof, no grip, no mass-proportional damping).
-  PetscReal energy_in       = 0; // J, E_in: the ball's 1/2 m_b v_i^2 and a swinging bat's kinetic energy, the fractions' denominator
-  PetscReal energy_error    = 0; // (E_end - E_0) / E_0, E including the ball's work W
+  PetscReal
+    energy_in = 0; // J, E_in: the ball's 1/2 m_b v_i^2 and a swinging bat's kinetic energy, the fractions' denominator
+  PetscReal energy_error           = 0; // (E_end - E_0) / E_0, E including the ball's work W
   PetscReal linear_momentum_error  = 0; // (p_end - p_0) / (m_b v_i)
   PetscReal angular_momentum_error = 0; // about x = 0, / (m_b v_i L)
   PetscReal beam_kinetic_end = 0, beam_strain_end = 0, ball_dissipated_end = 0; // J
@@ -185,7 +202,8 @@ struct ImpactOutcome {
   // ball's rebound (an elastic law: loss_factor^2 of it), the structure's rigid translation P^2/2M
   // and rotation (about its centre of mass, or its pin), and its bending vibration (the beam's
   // energy less its share of the rigid motions).
-  PetscReal ball_loss_fraction = 0, rebound_fraction = 0, translation_fraction = 0, rotation_fraction = 0, vibration_fraction = 0;
+  PetscReal ball_loss_fraction = 0, rebound_fraction = 0, translation_fraction = 0, rotation_fraction = 0,
+            vibration_fraction = 0;
   // The bat in play: the batted-ball speed (m/s, away from the bat, lab frame), the collision
   // efficiency q = (bbs - V(x)) / (v_ball + V(x)) (= acor for a bat at rest); a beam with no held
   // dof: its recoil, the centre-of-mass speed (m/s, toward the ball) and angular velocity
@@ -203,9 +221,11 @@ struct ImpactOutcome {
   // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
-  PetscReal wall_fraction = 0; // shell_energy_end / E_in
-  PetscBool wall_deflection_large = PETSC_FALSE; // wall_deflection_peak > kWallDeflectionLimit R (model/shell.hpp): physically absurd
-  PetscReal hoop_frequency = 0; // Hz, the wall's lowest n = 2 frequency (the shell's, model/shell.hpp) or -barrel_hoop_frequency
+  PetscReal wall_fraction         = 0;           // shell_energy_end / E_in
+  PetscBool wall_deflection_large = PETSC_FALSE; // wall_deflection_peak > kWallDeflectionLimit R (model/shell.hpp):
+                                                 // physically absurd
+  PetscReal hoop_frequency = 0; // Hz, the wall's lowest n = 2 frequency (the shell's, model/shell.hpp) or
+                                // -barrel_hoop_frequency
   // A racket (-strings_frame, -beam_torsion): the string bed's energy at the end and its largest
   // over the steps (J), its largest deflection from the frame (m); the roll's energy at the end
   // (J: the twist's strain and the sections' spin); a free frame's roll rate at the end (rad/s)
@@ -225,7 +245,7 @@ struct ImpactOutcome {
   // (m above the ground) and hang time (s). Along the normal, acor, bbs and the rest are the run's.
   PetscReal exit_speed = 0, launch_angle = 0, spin = 0, spin_rpm = 0, friction_dissipated = 0;
   PetscReal bat_vibration_tangential = 0; // J, the bat's vibration in its second plane after the hit (flexible plane)
-  PetscReal bat_damping_tangential   = 0; // J, what the bat's damping took in that plane during the hit (flexible plane)
+  PetscReal bat_damping_tangential = 0; // J, what the bat's damping took in that plane during the hit (flexible plane)
   PetscReal distance = 0, apex = 0, hang_time = 0;
 };
 
@@ -260,9 +280,10 @@ struct ModalEngineUse {
 };
 
 struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
-  ModalEngineUse            modal;      // the modes kept and the cut-off (the run record's modal_modes_kept, modal_cutoff)
-  std::string               after_used; // how the run followed a separation: "modal" or "time" (-impact_after as resolved)
-  std::vector<ModeEnergy>   mode_energies; // at the end, one per kept mode: only when the run ended in a modal free flight
+  ModalEngineUse modal;      // the modes kept and the cut-off (the run record's modal_modes_kept, modal_cutoff)
+  std::string    after_used; // how the run followed a separation: "modal" or "time" (-impact_after as resolved)
+  std::vector<ModeEnergy>
+    mode_energies; // at the end, one per kept mode: only when the run ended in a modal free flight
   std::vector<ContactEvent> events;
   ImpactSeries              series;
   ImpactScales              scales;
@@ -289,7 +310,15 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
 // flight" (-flight: the batted ball's flight). Registered on first use. A scope pushes a stage and
 // pops it when it ends (also on an error return, so a sweep's failed points keep the stack
 // balanced); Switch changes the stage it holds, End pops it early.
-enum class ImpactStage { Setup, Contact, FreeFlight, Output, ModalReference, Tangential, Flight };
+enum class ImpactStage {
+  Setup,
+  Contact,
+  FreeFlight,
+  Output,
+  ModalReference,
+  Tangential,
+  Flight
+};
 class ImpactStageScope {
 public:
   explicit ImpactStageScope(ImpactStage s) { Switch(s); }

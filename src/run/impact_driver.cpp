@@ -31,7 +31,9 @@ PetscLogStage ImpactStageId(ImpactStage s)
   static PetscLogStage ids[kStages];
   static bool          registered = false;
   if (!registered) {
-    const char *names[kStages] = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight", "beamimpact: output", "beamimpact: modal reference", "beamimpact: tangential", "beamimpact: flight"};
+    const char *names[kStages] = {"beamimpact: set-up", "beamimpact: contact",         "beamimpact: free flight",
+                                  "beamimpact: output", "beamimpact: modal reference", "beamimpact: tangential",
+                                  "beamimpact: flight"};
     for (int k = 0; k < kStages; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
     registered = true;
   }
@@ -68,14 +70,14 @@ namespace {
 // Everything one run holds apart from its stepper: built once per scenario.
 struct ImpactSetup {
   std::shared_ptr<const BeamSystem> system; // built for this run, or the structure's (ImpactStructure)
-  const BeamSystem &sys() const { return *system; }
-  ContactCoupling g;
-  ContactScales   scales;
-  ContactState    contact;  // touching, loading: the phase the stepper's force law reads
-  PetscReal       V_x = 0;  // m/s, the swinging bat's speed toward the ball at the impact point
-  PetscReal       approach = 0;            // m/s, v_ball + V_x: the first contact's approach speed
-  std::vector<PetscReal> beam_velocity;    // per dof at t = 0 (empty: at rest)
-  FrameMotion     frame;    // the swing's rigid frame, which a grip ties the handle to (at rest for a bat at rest)
+  const BeamSystem                 &sys() const { return *system; }
+  ContactCoupling                   g;
+  ContactScales                     scales;
+  ContactState                      contact;       // touching, loading: the phase the stepper's force law reads
+  PetscReal                         V_x      = 0;  // m/s, the swinging bat's speed toward the ball at the impact point
+  PetscReal                         approach = 0;  // m/s, v_ball + V_x: the first contact's approach speed
+  std::vector<PetscReal>            beam_velocity; // per dof at t = 0 (empty: at rest)
+  FrameMotion frame; // the swing's rigid frame, which a grip ties the handle to (at rest for a bat at rest)
 };
 
 PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *s, ImpactStructure *structure)
@@ -96,32 +98,38 @@ PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *
     const BeamRigidBody body = BeamRigidBodyOf(sc.beam);
     s->V_x                   = SwingSpeedAt(sc.swing, body, sc.impact.x);
     s->approach              = sc.ball.speed + s->V_x;
-    PetscCheck(s->approach > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-bat_speed %g, -bat_angular_velocity %g: the bat moves at %g m/s at x = %g m, so ball (-ball_speed %g) and bat do not approach",
-               (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x, (double)sc.ball.speed);
+    PetscCheck(s->approach > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-bat_speed %g, -bat_angular_velocity %g: the bat moves at %g m/s at x = %g m, so ball (-ball_speed %g) "
+               "and bat do not approach",
+               (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x,
+               (double)sc.ball.speed);
     s->beam_velocity = BeamSystemSwingVelocity(s->sys(), sc.swing, body);
     s->frame.v       = s->beam_velocity; // the frame moves with the bat's rigid swing
   }
   if (ForceOperatorDriven(s->sys(), &s->frame)) { // the hands' work is counted from Q(0)
     const std::vector<PetscReal> zero(s->sys().ndof, 0.0);
     ForceState                   at0; // t = 0: undeformed, moving with the frame
-    at0.y        = zero.data();
-    at0.ys       = s->sys().fields;
-    at0.v        = s->frame.v.data();
-    at0.vs       = s->sys().fields;
-    at0.frame    = &s->frame;
-    s->frame.q0  = ForceOperatorFrameMomentum(s->sys(), at0, 0, s->sys().ndof) + sc.ball.mass * FrameMotionAt(s->frame, s->g) * sc.ball.speed;
+    at0.y       = zero.data();
+    at0.ys      = s->sys().fields;
+    at0.v       = s->frame.v.data();
+    at0.vs      = s->sys().fields;
+    at0.frame   = &s->frame;
+    s->frame.q0 = ForceOperatorFrameMomentum(s->sys(), at0, 0, s->sys().ndof) +
+                  sc.ball.mass * FrameMotionAt(s->frame, s->g) * sc.ball.speed;
   }
   BallParams approaching = sc.ball; // the contact's scales are those of the approach speed
   approaching.speed      = s->approach;
   s->scales              = ContactScalesOf(s->sys(), approaching);
   s->contact             = ContactState();
-  ContactBegin(sc.ball, &s->contact, s->approach); // the first contact's law state (its exponent), from its approach speed
+  ContactBegin(sc.ball, &s->contact,
+               s->approach); // the first contact's law state (its exponent), from its approach speed
   PetscFunctionReturn(0);
 }
 
 // A located event applied; an error when contacts exceed -impact_max_contacts (chatter, or
 // an integration gone wrong: the energy tells).
-PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ImpactTimes &times, ContactEventKind kind, PetscReal E0, ContactState *contact, ContactTimeline *tl,
+PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ImpactTimes &times,
+                          ContactEventKind kind, PetscReal E0, ContactState *contact, ContactTimeline *tl,
                           ContactTally *tally)
 {
   PetscReal c, cd;
@@ -130,15 +138,21 @@ PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario
   PetscFunctionBeginUser;
   PetscCall(st.Compression(&c, &cd));
   const PetscReal te = st.Time();
-  PetscCall(ContactEventApply(st.Comm(), kind, te, c, cd, sc.ball, times, st.Method().c_str(), contact, tl, tally, &changed));
+  PetscCall(
+    ContactEventApply(st.Comm(), kind, te, c, cd, sc.ball, times, st.Method().c_str(), contact, tl, tally, &changed));
   if (kind == ContactEventKind::ContactStart && tally->contacts > sc.impact.max_contacts) {
     StateMeasures m;
     PetscCall(MeasureState(st, ctx, nullptr, &m, nullptr));
     const PetscReal growth = (m.total() - E0) / E0;
     PetscCheck(growth <= sc.impact.energy_growth_tol, st.Comm(), PETSC_ERR_NOT_CONVERGED,
-               "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s, and the energy has grown by %.3g of the incident kinetic energy: the integration is unstable or inaccurate (not a physical chatter); reduce %s",
+               "more than -impact_max_contacts %" PetscInt_FMT
+               " separate contacts by t = %g s, and the energy has grown by %.3g of the incident kinetic energy: the "
+               "integration is unstable or inaccurate (not a physical chatter); reduce %s",
                sc.impact.max_contacts, (double)te, (double)growth, st.StepOption().c_str());
-    SETERRQ(st.Comm(), PETSC_ERR_NOT_CONVERGED, "more than -impact_max_contacts %" PetscInt_FMT " separate contacts by t = %g s: the ball is chattering on the beam", sc.impact.max_contacts, (double)te);
+    SETERRQ(st.Comm(), PETSC_ERR_NOT_CONVERGED,
+            "more than -impact_max_contacts %" PetscInt_FMT
+            " separate contacts by t = %g s: the ball is chattering on the beam",
+            sc.impact.max_contacts, (double)te);
   }
   if (changed) PetscCall(st.Restart());
   PetscFunctionReturn(0);
@@ -155,8 +169,12 @@ PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const B
   PetscFunctionBeginUser;
   *modal = ip.after == ImpactAfter::Modal;
   if (!*modal || BeamModesAvailable(sys, &why)) PetscFunctionReturn(0);
-  PetscCheck(!ip.after_set, comm, PETSC_ERR_SUP, "-impact_after modal is not possible: %s; use -impact_after time", why.c_str());
-  if (!said) PetscCall(PetscPrintf(comm, "note: the free vibration after separation is integrated in time (-impact_after time): %s\n", why.c_str()));
+  PetscCheck(!ip.after_set, comm, PETSC_ERR_SUP, "-impact_after modal is not possible: %s; use -impact_after time",
+             why.c_str());
+  if (!said)
+    PetscCall(PetscPrintf(comm,
+                          "note: the free vibration after separation is integrated in time (-impact_after time): %s\n",
+                          why.c_str()));
   said   = true;
   *modal = false;
   PetscFunctionReturn(0);
@@ -172,8 +190,10 @@ PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const B
 // not every dt_sample (4000 states rebuilt from the modes, which nobody keeps: issue 38's cost).
 // *energies: the energy of each kept mode at t_stop when no contact comes back (else cleared: a
 // later flight's count).
-PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const ContactCoupling &g, ImpactRecorder &rec, bool series, bool sparse, PetscReal dt_sample, PetscReal t_stop,
-                                 PetscReal s_min, const ModalTruncation &truncation, std::shared_ptr<const BeamModes> &modes, bool *again, std::vector<ModeEnergy> *energies)
+PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const ContactCoupling &g, ImpactRecorder &rec,
+                                 bool series, bool sparse, PetscReal dt_sample, PetscReal t_stop, PetscReal s_min,
+                                 const ModalTruncation &truncation, std::shared_ptr<const BeamModes> &modes,
+                                 bool *again, std::vector<ModeEnergy> *energies)
 {
   FullState  s0, s;
   FreeFlight ff;
@@ -234,10 +254,10 @@ PetscErrorCode FreeFlightTruncation(MPI_Comm comm, const Scenario &sc, ModalTrun
 {
   PetscFunctionBeginUser;
   PetscCall(ModalTruncationFromOptions(comm, t));
-  t->contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // a ball at rest: the bat's approach
+  t->contact_time   = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // a ball at rest: the bat's approach
   t->force_exponent = ContactStartExponent(sc.ball, ImpactApproachSpeed(sc));
-  t->cost_warn    = sc.impact.report_setup ? sc.impact.cost_warn : 0;
-  t->progress     = sc.impact.report_setup ? sc.impact.progress : 0;
+  t->cost_warn      = sc.impact.report_setup ? sc.impact.cost_warn : 0;
+  t->progress       = sc.impact.report_setup ? sc.impact.progress : 0;
   PetscFunctionReturn(0);
 }
 
@@ -279,10 +299,12 @@ constexpr double kCostModalDofStep  = 1.6e-8; // s
 // T_r/200 is said at set-up, with what -ts_type modal would take when it applies (a linear
 // beam with proportional damping and no grip, within the dense decomposition's size) and is at
 // least twice as fast: "rk's step is bound by h^2 ...".
-PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info, PetscReal T, double seconds)
+PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys,
+                                   const ContactScales &scales, const IntegratorInfo &info, PetscReal T, double seconds)
 {
   PetscFunctionBeginUser;
-  if (!(info.dt_stable > 0) || !(0.9 * info.dt_stable < scales.time / 200) || !BeamModesAvailable(sys, nullptr)) PetscFunctionReturn(0);
+  if (!(info.dt_stable > 0) || !(0.9 * info.dt_stable < scales.time / 200) || !BeamModesAvailable(sys, nullptr))
+    PetscFunctionReturn(0);
   ModalTruncation t;
   PetscCall(FreeFlightTruncation(comm, sc, &t));
   const double dofs   = (double)sys.ndof;
@@ -291,12 +313,16 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
   const double steps  = kModalStepsPerTime * (T / scales.time) * kCostModalDofStep * dofs;
   const double modal  = steps + (anyway ? 0 : modes);
   if (!(modal < 0.5 * seconds)) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(comm,
-                        "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT " (the contact itself needs only T_r/200 = %.3g s): at least %.3g s of stepping%s; "
-                        "-ts_type modal takes %s in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g s, once per beam%s)\n",
-                        info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds, sc.impact.full_max_time != 0 ? " a point" : "",
-                        sc.impact.full_max_time != 0 ? "each point" : "this run", modal, seconds / modal, modes,
-                        anyway ? ": the free flight after the separation computes them too" : ", shared by a sweep's points"));
+  PetscCall(
+    PetscPrintf(comm,
+                "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT
+                " (the contact itself needs only T_r/200 = %.3g s): at least %.3g s of stepping%s; "
+                "-ts_type modal takes %s in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g "
+                "s, once per beam%s)\n",
+                info.ts_type.c_str(), (double)info.dt_stable, sys.nodes, (double)(scales.time / 200), seconds,
+                sc.impact.full_max_time != 0 ? " a point" : "",
+                sc.impact.full_max_time != 0 ? "each point" : "this run", modal, seconds / modal, modes,
+                anyway ? ": the free flight after the separation computes them too" : ", shared by a sweep's points"));
   PetscFunctionReturn(0);
 }
 
@@ -306,46 +332,59 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
 // stepped time is the contact (T_r), and the window after it when the free flight is stepped
 // too; the step is the fixed step, or an explicit adaptive type's stability limit (a bound:
 // accuracy may ask for smaller steps); an implicit adaptive run has no estimate.
-PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales, const IntegratorInfo &info)
+PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales,
+                                  const IntegratorInfo &info)
 {
   PetscFunctionBeginUser;
   ImpactParams ip = sc.impact; // a probe (a sweep's 1 ns): the estimate is a whole point's
   if (ip.full_max_time != 0) ip.max_time = ip.full_max_time;
-  const ImpactTimes times  = ImpactTimesOf(sc.beam, sc.ball, ip);
-  const bool        modal  = sc.impact.after == ImpactAfter::Modal && BeamModesAvailable(sys, nullptr);
-  const PetscReal   T      = std::min<PetscReal>(times.max_time, modal ? scales.time : scales.time + times.window);
-  const PetscReal   dt     = info.fixed_step ? info.dt_nominal : info.dt_stable;
+  const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, ip);
+  const bool        modal = sc.impact.after == ImpactAfter::Modal && BeamModesAvailable(sys, nullptr);
+  const PetscReal   T     = std::min<PetscReal>(times.max_time, modal ? scales.time : scales.time + times.window);
+  const PetscReal   dt    = info.fixed_step ? info.dt_nominal : info.dt_stable;
   if (!(dt > 0) || sc.impact.cost_warn <= 0) PetscFunctionReturn(0);
-  const bool      explicit_type = info.dt_stable > 0;
-  const double    steps         = T / dt;
-  const double    per_step      = (explicit_type ? kCostNodeStepExplicit : kCostNodeStepImplicit) * sys.nodes * sys.fields;
-  const double    seconds       = steps * per_step;
+  const bool   explicit_type = info.dt_stable > 0;
+  const double steps         = T / dt;
+  const double per_step      = (explicit_type ? kCostNodeStepExplicit : kCostNodeStepImplicit) * sys.nodes * sys.fields;
+  const double seconds       = steps * per_step;
   if (explicit_type) PetscCall(ImpactStepBoundNote(comm, sc, sys, scales, info, T, seconds));
   if (seconds <= sc.impact.cost_warn) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(comm,
-                        "cost: at least %.3g steps%s (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
-                        steps, ip.full_max_time != 0 ? " a point" : "", (double)T, (double)dt, info.fixed_step ? "-ts_dt" : "the explicit stability limit", sys.nodes, seconds, per_step,
-                        info.fixed_step ? "a larger -ts_dt" : "looser -ts_rtol/-ts_atol",
-                        explicit_type ? " (the explicit limit grows as h^2)" : "", explicit_type ? ", or an implicit -ts_type (cn, alpha2, bdf) or -ts_type modal, whose step is not bound by the stability limit" : ""));
+  PetscCall(
+    PetscPrintf(comm,
+                "cost: at least %.3g steps%s (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT
+                " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
+                steps, ip.full_max_time != 0 ? " a point" : "", (double)T, (double)dt,
+                info.fixed_step ? "-ts_dt" : "the explicit stability limit", sys.nodes, seconds, per_step,
+                info.fixed_step ? "a larger -ts_dt" : "looser -ts_rtol/-ts_atol",
+                explicit_type ? " (the explicit limit grows as h^2)" : "",
+                explicit_type ? ", or an implicit -ts_type (cn, alpha2, bdf) or -ts_type modal, whose step is not "
+                                "bound by the stability limit"
+                              : ""));
   PetscFunctionReturn(0);
 }
 
 // The end of a run at time t: the contact still open (if any) closed, the final measures
 // (refused when not finite), and the stepper's counts.
-PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ContactState &contact, const ContactTimeline &timeline, PetscReal t, const IntegratorInfo &info,
-                            ImpactRecord *rec, ImpactCost *cost)
+PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ContactState &contact,
+                            const ContactTimeline &timeline, PetscReal t, const IntegratorInfo &info, ImpactRecord *rec,
+                            ImpactCost *cost)
 {
   StateMeasures &m1 = rec->end;
   PetscFunctionBeginUser;
   ContactTallyClose(contact.phase, timeline, t, &rec->contact);
   PetscCall(MeasureState(st, ctx, nullptr, &m1, nullptr));
-  PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) && std::isfinite(m1.angular_momentum), st.Comm(), PETSC_ERR_FP,
-             "the solution is not finite (NaN/Inf) at the end of the run, t = %g s, with %s: no result is reported; the step is unstable%s", (double)t, st.Method().c_str(),
-             info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+  PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) &&
+               std::isfinite(m1.angular_momentum),
+             st.Comm(), PETSC_ERR_FP,
+             "the solution is not finite (NaN/Inf) at the end of the run, t = %g s, with %s: no result is reported; "
+             "the step is unstable%s",
+             (double)t, st.Method().c_str(), info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
   rec->final_time = t;
   rec->energy_end = m1.total();
   if (sc.monitor.segment && sc.monitor.segment_until > 0)
-    PetscCheck(t >= sc.monitor.segment_until * (1 - 1e-12), st.Comm(), PETSC_ERR_ARG_INCOMP, "-monitor_segment_until %g s is beyond the end of the run (%g s): raise -impact_window so the run lasts that long",
+    PetscCheck(t >= sc.monitor.segment_until * (1 - 1e-12), st.Comm(), PETSC_ERR_ARG_INCOMP,
+               "-monitor_segment_until %g s is beyond the end of the run (%g s): raise -impact_window so the run lasts "
+               "that long",
                (double)sc.monitor.segment_until, (double)t);
   PetscCall(st.Counts(cost));
   PetscFunctionReturn(0);
@@ -354,7 +393,8 @@ PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenar
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
 // stepper reads. The events and monitors write their records in *rec, the driver its steps and
 // time in *cost; info: the stepper's settings (for messages).
-PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc, const ContactScales &scales, PetscReal approach, const IntegratorInfo &info,
+PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc,
+                           const ContactScales &scales, PetscReal approach, const IntegratorInfo &info,
                            ImpactRecord *rec, ImpactCost *cost)
 {
   const ImpactParams &ip    = sc.impact;
@@ -371,8 +411,9 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     PetscReal c, cd;
     PetscFunctionBeginUser;
     PetscCall(st.Compression(&c, &cd));
-    PetscCheck(std::isfinite(c) && std::isfinite(cd), st.Comm(), PETSC_ERR_FP, "the solution is not finite (NaN/Inf) at t = %g s with %s: the step is unstable%s", (double)st.Time(), st.Method().c_str(),
-               info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+    PetscCheck(std::isfinite(c) && std::isfinite(cd), st.Comm(), PETSC_ERR_FP,
+               "the solution is not finite (NaN/Inf) at t = %g s with %s: the step is unstable%s", (double)st.Time(),
+               st.Method().c_str(), info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
     g->c    = c / scales.compression;
     g->cdot = cd / scales.speed;
     PetscFunctionReturn(0);
@@ -389,20 +430,23 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
   PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
   if (after_modal) PetscCall(FreeFlightTruncation(st.Comm(), sc, &truncation));
-  truncation.at = *ctx.g; // -modal_weight share: weighed under this load, as -ts_type modal's (one basis for both)
+  truncation.at   = *ctx.g; // -modal_weight share: weighed under this load, as -ts_type modal's (one basis for both)
   rec->after_used = after_modal ? "modal" : "time";
   // The series only an oblique impact's F_n (no monitor asked, no peaks of a wall, a string bed
   // or the hands to follow): not sampled through a free flight (FreeFlightAdvance).
   const BeamSystem &sys    = *ctx.sys;
   const bool        peaks  = sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped();
   const bool        sparse = sc.oblique.on && !sc.oblique.series_asked && !peaks;
-  ImpactStageScope stage(ImpactStage::Contact);
-  double           last_progress = wall0;
+  ImpactStageScope  stage(ImpactStage::Contact);
+  double            last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {
     if (ip.report_setup && ip.progress > 0 && MPI_Wtime() - last_progress >= ip.progress) { // a long single impact
       last_progress = MPI_Wtime();
-      PetscCall(PetscPrintf(st.Comm(), "progress: t = %.4g s simulated (the run stops by %.4g s), %" PetscInt_FMT " steps, %" PetscInt_FMT " contact(s), %.0f s of wall time\n", (double)t,
-                            (double)timeline.t_stop, cost->steps + cost->event_steps, tally.contacts, last_progress - wall0));
+      PetscCall(PetscPrintf(st.Comm(),
+                            "progress: t = %.4g s simulated (the run stops by %.4g s), %" PetscInt_FMT
+                            " steps, %" PetscInt_FMT " contact(s), %.0f s of wall time\n",
+                            (double)t, (double)timeline.t_stop, cost->steps + cost->event_steps, tally.contacts,
+                            last_progress - wall0));
     }
     const PetscReal target = std::min(timeline.t_stop, recorder.NextSnapshot()); // land exactly on both
     PetscReal       dt;
@@ -415,7 +459,8 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     const int ev = ContactCrossedEvent(contact->phase, g0, g1, ip.event_tol);
     if (ev >= 0) {
       const auto kind = static_cast<ContactEventKind>(ev);
-      PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol, indicators, &cost->event_steps));
+      PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol,
+                            indicators, &cost->event_steps));
       PetscCall(ApplyEvent(st, ctx, sc, times, kind, rec->energy_in, contact, &timeline, &tally));
       // The free flight, unless the window is already over (-impact_window 0: nothing to follow).
       if (kind == ContactEventKind::Separation && after_modal && timeline.t_stop > st.Time() * (1 + 1e-14)) {
@@ -423,8 +468,12 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
         bool      again = false;
         PetscCall(st.NextStep(&dt_sample));
         stage.Switch(ImpactStage::FreeFlight);
-        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), sparse, dt_sample, timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again, &rec->mode_energies));
-        if (again) PetscCall(ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, rec->energy_in, contact, &timeline, &tally));
+        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), sparse, dt_sample,
+                                    timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again,
+                                    &rec->mode_energies));
+        if (again)
+          PetscCall(
+            ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, rec->energy_in, contact, &timeline, &tally));
       }
       PetscCall(indicators(&g1));
     }
@@ -434,8 +483,9 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     PetscCall(recorder.Snapshots(t));
   }
   cost->wall_time = MPI_Wtime() - wall0;
-  if (modes && !rec->mode_energies.empty()) ModeEnergiesLabel(sc.beam, *modes, &rec->mode_energies); // the free flight's
-  if (!modes) modes = st.Modes(); // no free flight: -ts_type modal's basis, if it is
+  if (modes && !rec->mode_energies.empty())
+    ModeEnergiesLabel(sc.beam, *modes, &rec->mode_energies); // the free flight's
+  if (!modes) modes = st.Modes();                            // no free flight: -ts_type modal's basis, if it is
   if (modes) rec->modal = {modes->Count(), modes->S.n, BeamModesCutoffHz(*modes)};
   PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, t, info, rec, cost));
   PetscFunctionReturn(0);
@@ -453,7 +503,8 @@ PetscErrorCode ObliqueRunFinish(MPI_Comm comm, const ImpactSetup &s, const Scena
   beam.g    = &s.g;
   PetscCall(FreeFlightTruncation(comm, sc, &beam.truncation));
   PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, beam, &rec->oblique));
-  if (!sc.oblique.ball_series_asked) S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear(), S.force_rate.clear();
+  if (!sc.oblique.ball_series_asked)
+    S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear(), S.force_rate.clear();
   if (!sc.oblique.series_asked) S.time.clear();
   PetscFunctionReturn(0);
 }
@@ -467,8 +518,8 @@ PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario 
   const MeasureContext ctx{&s.sys(), &s.g, &sc.ball, &s.contact, &s.frame};
   PetscCall(ImpactDrive(st, ctx, &s.contact, sc, s.scales, s.approach, *res, &rec, res));
   if (sc.oblique.on) PetscCall(ObliqueRunFinish(st.Comm(), s, sc, &rec));
-  rec.V_x      = s.V_x;
-  rec.scales   = s.scales;
+  rec.V_x    = s.V_x;
+  rec.scales = s.scales;
   ImpactOutcomeFinish(sc, s.sys(), std::move(rec), res);
   PetscFunctionReturn(0);
 }
@@ -492,17 +543,18 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res
   PetscFunctionBeginUser;
   if (ObliqueImpact(given)) PetscCall(ObliqueNormalScenario(comm, given, &normal));
   const Scenario &sc = ObliqueImpact(given) ? normal : given;
-  *res = ImpactResult();
+  *res               = ImpactResult();
   ImpactStageScope stage(ImpactStage::Setup);
   PetscCall(ImpactSetupBuild(comm, sc, &s, structure));
   set.check_unused_options = sc.impact.check_unused_options;
   if (set.check_unused_options) PetscCall(FreeFlightOptionsRead(comm, sc, s.sys()));
-  set.report_setup         = sc.impact.report_setup;
+  set.report_setup          = sc.impact.report_setup;
   set.strict_solver_options = sc.impact.strict_solver_options;
   set.modes_cost_warn       = sc.impact.report_setup ? sc.impact.cost_warn : 0; // as FreeFlightTruncation
   set.modes_progress        = sc.impact.report_setup ? sc.impact.progress : 0;
   set.context_key           = structure ? &structure->stepper_key : nullptr;
-  PetscCall(TSStepperCreate(comm, s.sys(), s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
+  PetscCall(
+    TSStepperCreate(comm, s.sys(), s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
   stage.End(); // ImpactDrive holds the contact and free-flight stages
   if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys(), s.scales, *res));
   PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
@@ -518,9 +570,10 @@ PetscErrorCode LeapfrogRun(const Scenario &given, const LeapfrogParams &lp, Impa
   PetscFunctionBeginUser;
   if (ObliqueImpact(given)) PetscCall(ObliqueNormalScenario(PETSC_COMM_SELF, given, &normal));
   const Scenario &sc = ObliqueImpact(given) ? normal : given;
-  *res = ImpactResult();
+  *res               = ImpactResult();
   PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s, nullptr));
-  PetscCall(LeapfrogStepperCreate(s.sys(), s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));
+  PetscCall(
+    LeapfrogStepperCreate(s.sys(), s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));
   PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
   PetscFunctionReturn(0);
 }

@@ -40,21 +40,50 @@ const OptionModule &ImpactOptionTable()
     "Impact: where the ball strikes and how long to follow it",
     {
       OptionReal("-impact_x", "m", "Impact point, metres from the x = 0 end", "0.55"),
-      OptionNeeds(OptionReal("-impact_z", "m", "Impact point across the face, metres from the frame's axis (a racket's off-centre hit: it rolls the head; > 0 toward +z of the string bed's grid); needs -beam_torsion or a string bed; inside the head's outline, or without a bed within the section's half-width (half -beam_width, a profile's radius; else half the frame's length)", "0"),
+      OptionNeeds(OptionReal("-impact_z", "m",
+                             "Impact point across the face, metres from the frame's axis (a racket's off-centre hit: "
+                             "it rolls the head; > 0 toward +z of the string bed's grid); needs -beam_torsion or a "
+                             "string bed; inside the head's outline, or without a bed within the section's half-width "
+                             "(half -beam_width, a profile's radius; else half the frame's length)",
+                             "0"),
                   {"-beam_torsion|-strings_frame"}),
-      OptionNeeds(OptionReal("-impact_offset", "m", "Offset D of the ball's line of flight from the bat's axis (> 0: the ball's centre passes above it, the bat strikes below its centre: launched up with backspin); needs a round bat (-beam_profile) and -ball_radius; 0: head-on", "0"), {"-ball_radius"}),
-      OptionNeeds(OptionChoice("-impact_tangential_plane", "An oblique impact: the bat in its second bending plane (across the line of centres), flexible (the same beam in its modes, driven by the friction force) or rigid (its effective mass at the impact point)", {"flexible", "rigid"}, "flexible"),
+      OptionNeeds(OptionReal("-impact_offset", "m",
+                             "Offset D of the ball's line of flight from the bat's axis (> 0: the ball's centre passes "
+                             "above it, the bat strikes below its centre: launched up with backspin); needs a round "
+                             "bat (-beam_profile) and -ball_radius; 0: head-on",
+                             "0"),
+                  {"-ball_radius"}),
+      OptionNeeds(OptionChoice("-impact_tangential_plane",
+                               "An oblique impact: the bat in its second bending plane (across the line of centres), "
+                               "flexible (the same beam in its modes, driven by the friction force) or rigid (its "
+                               "effective mass at the impact point)",
+                               {"flexible", "rigid"}, "flexible"),
                   {"-impact_offset!=0|-ball_spin!=0", "-ball_friction!=0"}),
-      OptionReal("-impact_window", "s", "Time followed after each separation, >= 0 (0: nothing followed); default two fundamental periods of the beam (the file records the value used)", "",
-                 NonNegative()),
-      OptionChoice("-impact_after", "After a separation: integrate in time, or the exact free vibration in the beam's modes (modal: the default wherever the beam allows it)", {"time", "modal"}, "modal"),
-      OptionReal("-impact_max_time", "s", "Cap on the simulated time; <= 0: 4 windows + 100 contact times (the file records the value used); a run it cuts off in contact is an error, a failed point", "-1"),
-      OptionReal("-impact_event_tol", "1", "Events are located until |indicator| (c/c_scale or dc/dt/v_i) is below this", "1e-10", Between(0, 1e-2, true, true)),
+      OptionReal("-impact_window", "s",
+                 "Time followed after each separation, >= 0 (0: nothing followed); default two fundamental periods of "
+                 "the beam (the file records the value used)",
+                 "", NonNegative()),
+      OptionChoice("-impact_after",
+                   "After a separation: integrate in time, or the exact free vibration in the beam's modes (modal: the "
+                   "default wherever the beam allows it)",
+                   {"time", "modal"}, "modal"),
+      OptionReal("-impact_max_time", "s",
+                 "Cap on the simulated time; <= 0: 4 windows + 100 contact times (the file records the value used); a "
+                 "run it cuts off in contact is an error, a failed point",
+                 "-1"),
+      OptionReal("-impact_event_tol", "1",
+                 "Events are located until |indicator| (c/c_scale or dc/dt/v_i) is below this", "1e-10",
+                 Between(0, 1e-2, true, true)),
       OptionInt("-impact_max_contacts", "Stop with an error after this many separate contacts", "50", AtLeast(1)),
       OptionFlag("-impact_energy_check", "Stop when the total energy grows beyond -impact_energy_growth_tol"),
-      OptionReal("-impact_cost_warn", "s", "-task impact: print the expected cost before a run expected to take more than this (wall time)", "30", NonNegative()),
-      OptionReal("-impact_progress", "s", "-task impact: a progress line every this many seconds of wall time (0: none)", "10", NonNegative()),
-      OptionNeeds(OptionReal("-impact_energy_growth_tol", "1", "Allowed energy growth, relative to the incident kinetic energy", "1e-3", Positive()), {"-impact_energy_check=true"}),
+      OptionReal("-impact_cost_warn", "s",
+                 "-task impact: print the expected cost before a run expected to take more than this (wall time)", "30",
+                 NonNegative()),
+      OptionReal("-impact_progress", "s",
+                 "-task impact: a progress line every this many seconds of wall time (0: none)", "10", NonNegative()),
+      OptionNeeds(OptionReal("-impact_energy_growth_tol", "1",
+                             "Allowed energy growth, relative to the incident kinetic energy", "1e-3", Positive()),
+                  {"-impact_energy_check=true"}),
     },
   };
   return m;
@@ -67,13 +96,25 @@ const OptionModule &MonitorOptionTable()
     "Monitors: time series and snapshots, written only when asked",
     {
       OptionFlag("-monitor_ball", "Record ball position, velocity, compression and force at every step"),
-      OptionFlag("-monitor_energy", "Record ball kinetic, stored and dissipated energy and beam kinetic and strain energy at every step"),
-      OptionList("-monitor_velocity_at", "m", "Record the beam velocity at these points x1,x2,... at every step (any number; none by default)", 1, 0, NonNegative()),
-      OptionList("-snapshot_times", "s", "Record the beam displacement y(x) at these times t1,t2,... (any number, in any order; none by default; times after the run's end are named in a note)", 1, 0,
+      OptionFlag("-monitor_energy",
+                 "Record ball kinetic, stored and dissipated energy and beam kinetic and strain energy at every step"),
+      OptionList("-monitor_velocity_at", "m",
+                 "Record the beam velocity at these points x1,x2,... at every step (any number; none by default)", 1, 0,
                  NonNegative()),
-      OptionList("-monitor_segment", "m", "Record the kinetic energy of the beam segment x0,x1 at every step, and its peak", 2, 2, NonNegative()),
-      OptionNeeds(OptionFlag("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its moment about x = 0), the grip's stored energy and the hands' work at every step"), {"-grip"}),
-      OptionNeeds(OptionReal("-monitor_segment_until", "s", "Take the segment's peak over t <= this; < 0: the whole run", "-1"), {"-monitor_segment"}),
+      OptionList("-snapshot_times", "s",
+                 "Record the beam displacement y(x) at these times t1,t2,... (any number, in any order; none by "
+                 "default; times after the run's end are named in a note)",
+                 1, 0, NonNegative()),
+      OptionList("-monitor_segment", "m",
+                 "Record the kinetic energy of the beam segment x0,x1 at every step, and its peak", 2, 2,
+                 NonNegative()),
+      OptionNeeds(OptionFlag("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its "
+                                              "moment about x = 0), the grip's stored energy and the hands' work at "
+                                              "every step"),
+                  {"-grip"}),
+      OptionNeeds(OptionReal("-monitor_segment_until", "s",
+                             "Take the segment's peak over t <= this; < 0: the whole run", "-1"),
+                  {"-monitor_segment"}),
     },
   };
   return m;
@@ -109,7 +150,9 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   // The default point is in metres, not relative: on a beam shorter than 0.55 m it is off the
   // beam, and the message says so instead of naming an option the user never gave.
   PetscCheck(x_set || ImpactPointLocate(beam, p->x) != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "the default impact point -impact_x %g m is beyond the end of this %.12g m beam: give -impact_x, 0 <= x <= %.12g (m)", (double)p->x, (double)beam.length, (double)beam.length);
+             "the default impact point -impact_x %g m is beyond the end of this %.12g m beam: give -impact_x, 0 <= x "
+             "<= %.12g (m)",
+             (double)p->x, (double)beam.length, (double)beam.length);
   {
     char what[64];
     PetscCall(PetscSNPrintf(what, sizeof(what), "-impact_x %.12g", (double)p->x));
@@ -135,13 +178,16 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
   PetscCall(OptionsRead(PetscOptionsObject, T, "-monitor_segment_until", &m->segment_until, NULL));
   PetscOptionsEnd();
   if (m->segment) { // two values >= 0: the row's; on the beam and in order: here
-    PetscCheck(seg[0] < seg[1] && seg[1] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-monitor_segment %g,%g is not allowed: it needs two points 0 <= x0 < x1 <= L = %g (m)", (double)seg[0], (double)seg[1],
-               (double)beam.length);
+    PetscCheck(seg[0] < seg[1] && seg[1] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-monitor_segment %g,%g is not allowed: it needs two points 0 <= x0 < x1 <= L = %g (m)", (double)seg[0],
+               (double)seg[1], (double)beam.length);
     m->segment_x0 = seg[0];
     m->segment_x1 = seg[1];
   }
   for (PetscReal x : m->velocity_at)
-    PetscCheck(x <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE, "-monitor_velocity_at %g is not allowed: points must lie on the beam, 0 <= x <= %g (m)", (double)x, (double)beam.length);
+    PetscCheck(x <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-monitor_velocity_at %g is not allowed: points must lie on the beam, 0 <= x <= %g (m)", (double)x,
+               (double)beam.length);
   std::sort(m->snapshot_times.begin(), m->snapshot_times.end());
   PetscFunctionReturn(0);
 }

@@ -19,7 +19,12 @@ PetscReal FrameHalfWidth(const BeamParams &beam, PetscReal x, const char **sourc
 
 // Where (x, z) (m) lies: on the beam (or the bed) and free to move, off the beam (or off a
 // racket's face), or on a held point.
-enum class ImpactPointWhere { Movable, OffBeam, Held, OffFace };
+enum class ImpactPointWhere {
+  Movable,
+  OffBeam,
+  Held,
+  OffFace
+};
 ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x, PetscReal z = 0);
 
 // Errors out on comm when x (m) is off the beam or held fixed. `what` names the value in

@@ -25,20 +25,21 @@ const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes
 {
   static ModalMomenta last; // the last basis measured: a sweep's points share it
   if (last.basis.lock() == modes) return last;
-  const BeamSystem  &sys = modes->sys;
-  const ModalSystem &S   = modes->S;
-  const PetscInt     n = S.n, F = sys.fields, nm = modes->Count();
+  const BeamSystem      &sys = modes->sys;
+  const ModalSystem     &S   = modes->S;
+  const PetscInt         n = S.n, F = sys.fields, nm = modes->Count();
   std::vector<PetscReal> sm(n), x(n);
   std::vector<int>       kind(n); // 0: the deflection (field 0), 1: a section's rotation, 2: neither
   for (PetscInt r = 0; r < n; ++r) {
     const PetscInt d = S.dof[r], f = d % F;
-    sm[r]            = std::sqrt(S.mass[r]);
-    x[r]             = sys.NodeX(d / F);
-    kind[r]          = f == 0 ? 0 : f == 1 && sys.Rotation(1) ? 1 : 2;
+    sm[r]   = std::sqrt(S.mass[r]);
+    x[r]    = sys.NodeX(d / F);
+    kind[r] = f == 0 ? 0 : f == 1 && sys.Rotation(1) ? 1 : 2;
   }
   last.momentum.assign(nm, 0.0);
   last.moment.assign(nm, 0.0);
-  for (PetscInt k = 0; k < nm; ++k) { // compensated sums (Neumaier): a rigid mode's n terms of one sign, its weight to round-off
+  for (PetscInt k = 0; k < nm;
+       ++k) { // compensated sums (Neumaier): a rigid mode's n terms of one sign, its weight to round-off
     const PetscReal *phi = &modes->B.Phi[(size_t)k * n];
     PetscReal        p = 0, q = 0, cp = 0, cq = 0;
     auto             add = [](PetscReal &sum, PetscReal &c, PetscReal a) {
@@ -82,7 +83,9 @@ bool MeasuresInModes(const BeamSystem &S, const MeasureContext &ctx, const Monit
 // The measures from the sums over the state (MeasureState's layout of `sums`, G the end of its
 // point velocities) and the bed's largest deflection, with the contact, the ball (m->ball_y and
 // m->ball_v set) and the stepper's dissipation.
-PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, PetscInt G, const std::vector<PetscReal> &sums, PetscReal bed_max, StateMeasures *m, std::vector<PetscReal> *point_v)
+PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, PetscInt G,
+                              const std::vector<PetscReal> &sums, PetscReal bed_max, StateMeasures *m,
+                              std::vector<PetscReal> *point_v)
 {
   const BeamSystem &S = *ctx.sys;
   PetscReal         cdot;
@@ -114,17 +117,20 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
   m->beam_moment         = sums[3];
   m->segment_kinetic     = sums[4];
   m->beam_dissipated     = stepper.Dissipated();
-  m->grip_stored = sums[G];
-  m->grip_force  = sums[G + 2];
-  m->grip_moment = sums[G + 3];
-  if (ForceOperatorDriven(S, ctx.frame)) m->hand_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v - ctx.frame->q0; // 0 for a frame at rest
+  m->grip_stored         = sums[G];
+  m->grip_force          = sums[G + 2];
+  m->grip_moment         = sums[G + 3];
+  if (ForceOperatorDriven(S, ctx.frame))
+    m->hand_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v -
+                   ctx.frame->q0; // 0 for a frame at rest
   if (point_v) point_v->assign(sums.begin() + 5, sums.begin() + G);
   PetscFunctionReturn(0);
 }
 
 } // namespace
 
-PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m, std::vector<PetscReal> *point_v)
+PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m,
+                            std::vector<PetscReal> *point_v)
 {
   static const std::vector<PetscReal> none;
   const std::vector<PetscReal>       &points = mon ? mon->velocity_at : none;
@@ -133,16 +139,20 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   StateView                           sv;
 
   PetscFunctionBeginUser;
-  const PetscInt         np = (PetscInt)points.size();
-  const PetscInt         G  = 5 + np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
-  std::vector<PetscReal> sums(G + 13, 0.0); // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the roll's momentum, the bed's three momenta
-  if (MeasuresInModes(S, ctx, mon)) { // -ts_type modal after a step: O(modes), without writing the physical state (O(n modes))
+  const PetscInt np = (PetscInt)points.size();
+  const PetscInt
+    G = 5 +
+        np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
+  std::vector<PetscReal> sums(G + 13, 0.0); // + the wall's stored and kinetic energy and displacement, the twist's and
+                                            // bed's energies, the roll's momentum, the bed's three momenta
+  if (MeasuresInModes(S, ctx,
+                      mon)) { // -ts_type modal after a step: O(modes), without writing the physical state (O(n modes))
     std::shared_ptr<const BeamModes> modes;
     ModalState                       ms;
     bool                             in_modes;
     PetscCall(stepper.ModalStateUnwritten(&modes, &ms, &in_modes));
     if (in_modes) {
-      const ModalMomenta &w = ModalMomentaOf(modes);
+      const ModalMomenta &w     = ModalMomentaOf(modes);
       const PetscReal    *omega = modes->B.omega.data();
       PetscReal           T = 0, U = 0, P = 0, L = 0;
       for (PetscInt k = 0; k < (PetscInt)ms.z.size(); ++k) {
@@ -151,7 +161,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
         P += w.momentum[k] * ms.zd[k];
         L += w.moment[k] * ms.zd[k];
       }
-      sums[0]   = 0.5 * T, sums[1] = 0.5 * U, sums[2] = P, sums[3] = L;
+      sums[0] = 0.5 * T, sums[1] = 0.5 * U, sums[2] = P, sums[3] = L;
       m->ball_y = ms.ball_y;
       m->ball_v = ms.ball_v;
       PetscCall(MeasuresFinish(stepper, ctx, G, sums, 0.0, m, point_v)); // the same on every rank: no reduction
@@ -159,7 +169,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     }
   }
   PetscCall(stepper.ViewBegin(&sv));
-  ForceState             fs;
+  ForceState fs;
   fs.y     = sv.y;
   fs.ys    = sv.y_stride;
   fs.v     = sv.v;
@@ -177,7 +187,8 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     sums[G + 7] = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
     sums[G + 8] = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
   }
-  for (PetscInt q = 0; q < ctx.g->n; ++q) { // the wall's share of the compression: its displacement under the ball, into the bat
+  for (PetscInt q = 0; q < ctx.g->n;
+       ++q) { // the wall's share of the compression: its displacement under the ball, into the bat
     const PetscInt d = ctx.g->dof[q];
     if (S.Wall(d % F) && d >= sv.d0 && d < sv.d1) sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
   }
@@ -189,7 +200,9 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     const PetscReal mi = S.mass[S.Dof(i)], x = S.NodeX(i);
     sums[2] += mi * vel(i);
     sums[3] += mi * x * vel(i);
-    if (S.Rotation(1)) sums[3] += S.mass[S.Dof(i, 1)] * sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
+    if (S.Rotation(1))
+      sums[3] += S.mass[S.Dof(i, 1)] *
+                 sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
     if (S.roll_field >= 0) sums[G + 9] += S.mass[S.Dof(i, S.roll_field)] * sv.v[i * sv.v_stride + S.roll_field];
     if (S.bed_first < 0) continue;
     const PetscReal y = sv.y[i * sv.y_stride], phi = S.roll_field >= 0 ? sv.y[i * sv.y_stride + S.roll_field] : 0.0;
@@ -202,7 +215,8 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
       bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + S.bed_first + j] - y - z * phi));
     }
   }
-  if (mon && mon->segment) { // the frame's sections in [x0, x1]: every field of theirs (the deflections, a Timoshenko section's spin, the roll, a shell's wall) but a string bed's
+  if (mon && mon->segment) { // the frame's sections in [x0, x1]: every field of theirs (the deflections, a Timoshenko
+                             // section's spin, the roll, a shell's wall) but a string bed's
     const PetscReal tol = 1e-9 * S.h;
     for (PetscInt i = n0; i < n1; ++i) {
       const PetscReal x = S.NodeX(i);
@@ -224,8 +238,11 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   PetscCall(stepper.ViewEnd(&sv));
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(stepper.Comm(), &size));
-  if (size > 1) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, stepper.Comm()));
-  if (size > 1 && S.bed_first >= 0) PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bed_max, 1, MPIU_REAL, MPIU_MAX, stepper.Comm()));
+  if (size > 1)
+    PetscCallMPI(
+      MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, stepper.Comm()));
+  if (size > 1 && S.bed_first >= 0)
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bed_max, 1, MPIU_REAL, MPIU_MAX, stepper.Comm()));
   PetscCall(MeasuresFinish(stepper, ctx, G, sums, bed_max, m, point_v));
   PetscFunctionReturn(0);
 }

@@ -13,8 +13,9 @@
 namespace beamimpact {
 
 struct StateMeasures {
-  PetscReal ball_y = 0, ball_v = 0, c = 0, force = 0;                                      // m, m/s, m, N
-  PetscReal c_rate = 0, force_rate = 0; // m/s, N/s: dc/dt and dF/dt = dF/dc dc/dt on the active branch (0 when separated)
+  PetscReal ball_y = 0, ball_v = 0, c = 0, force = 0; // m, m/s, m, N
+  PetscReal c_rate       = 0,
+            force_rate   = 0; // m/s, N/s: dc/dt and dF/dt = dF/dc dc/dt on the active branch (0 when separated)
   PetscReal ball_kinetic = 0, ball_stored = 0, ball_work = 0, beam_kinetic = 0, beam_strain = 0; // J
   PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
@@ -32,15 +33,20 @@ struct StateMeasures {
   // sum m v, sum m x v, sum m z v over its deflections; 0 without a bed), for the split of the
   // energy into rigid motions and parts (run/energy_parts.hpp).
   PetscReal bed_momentum = 0, bed_moment = 0, bed_roll = 0;
-  PetscReal beam_dissipated = 0;                // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its damper's share too)
+  PetscReal beam_dissipated = 0; // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its
+                                 // damper's share too)
   // The hands (-grip), from the force operator (system/force_operator.hpp): the energy stored in
   // the force terms other than the elastic one (the grip's 1/2 sum k_i (y_i - v_f,i t)^2), the
   // work the hands (the swing's frame) have done on the bat since t = 0, the force of the bat on
   // the hands and its moment about x = 0 (0 without a grip).
-  PetscReal grip_stored = 0, hand_work = 0;     // J
-  PetscReal grip_force = 0, grip_moment = 0;    // N, N m
+  PetscReal grip_stored = 0, hand_work = 0;  // J
+  PetscReal grip_force = 0, grip_moment = 0; // N, N m
   // The conserved total: with the linear spring and an undamped beam, a constant.
-  PetscReal total() const { return ball_kinetic + ball_work + beam_kinetic + beam_strain + shell_energy + beam_dissipated + grip_stored - hand_work; }
+  PetscReal total() const
+  {
+    return ball_kinetic + ball_work + beam_kinetic + beam_strain + shell_energy + beam_dissipated + grip_stored -
+           hand_work;
+  }
 };
 
 // What a measurement needs besides the state.
@@ -54,6 +60,7 @@ struct MeasureContext {
 
 // Measures the current state; with a monitor request also the point velocities (m/s, at
 // mon->velocity_at) and the segment's kinetic energy.
-PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m, std::vector<PetscReal> *point_v);
+PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m,
+                            std::vector<PetscReal> *point_v);
 
 } // namespace beamimpact

@@ -27,13 +27,13 @@ namespace {
 // The exact solution as it advances: time, free-dof displacements and velocities (the ball
 // last), and the fixed data of the run.
 struct ModalRun {
-  const ModalSystem *S = nullptr;
-  const BallParams  *ball = nullptr;
+  const ModalSystem *S     = nullptr;
+  const BallParams  *ball  = nullptr;
   PetscReal          t_cap = 0, s_min = 0; // s: -impact_max_time; the smallest search step
-  PetscReal          c_scale = 1;          // the compression per unit of g^T q: k'/k for a truncated system (the series spring), else 1
-  PetscReal          t = 0;
+  PetscReal c_scale = 1; // the compression per unit of g^T q: k'/k for a truncated system (the series spring), else 1
+  PetscReal t       = 0;
   std::vector<PetscReal> q, qd;
-  ImpactSeries      *forces = nullptr; // an oblique impact's run along the normal: F_n(t) sampled in each contact phase
+  ImpactSeries *forces = nullptr; // an oblique impact's run along the normal: F_n(t) sampled in each contact phase
 };
 
 // The samples of F_n(t) and dF_n/dt a contact phase gives an oblique impact's tangential contact
@@ -60,7 +60,8 @@ void ModalSampleForce(const ModalRun &run, const Phase &ph, PetscReal s_sep)
 }
 
 // Energy (J) of the state: kinetic (beam and ball), strain, and the spring's in contact.
-PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, const std::vector<PetscReal> &qd, bool in_contact)
+PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, const std::vector<PetscReal> &qd,
+                      bool in_contact)
 {
   const BeamSystem      &sys = *S.sys;
   std::vector<PetscReal> shape(sys.ndof, 0.0);
@@ -70,7 +71,8 @@ PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, con
     c += S.g[d] * q[d];
     if (S.dof[d] >= 0) shape[S.dof[d]] = q[d];
   }
-  return T + BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof) + (in_contact ? 0.5 * S.k * c * c : 0.0);
+  return T + BeamSystemStrainEnergy(sys, shape.data(), sys.fields, 0, sys.ndof) +
+         (in_contact ? 0.5 * S.k * c * c : 0.0);
 }
 
 // The maximum compressions of a contact phase: dc/dt falling through 0 before the separation
@@ -78,7 +80,7 @@ PetscReal ModalEnergy(const ModalSystem &S, const std::vector<PetscReal> &q, con
 template <class Phase>
 void ModalMaxCompressions(const ModalRun &run, const Phase &ph, PetscReal s_sep, ContactTally *tally)
 {
-  PetscReal s = 0, s_max;
+  PetscReal s    = 0, s_max;
   Phase     rate = ph;
   while (ModalFirstCrossing(rate, 1, +1.0, s_sep - s, run.s_min, &s_max)) {
     s += s_max;
@@ -104,8 +106,9 @@ PetscErrorCode ModalContactPhase(ModalRun &run, const Phase &ph, ContactTally *t
   PetscReal s_sep;
 
   PetscFunctionBeginUser;
-  PetscCheck(ModalFirstCrossing(ph, 0, +1.0, run.t_cap - run.t, run.s_min, &s_sep), PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
-             "modal reference: the ball is still in contact at -impact_max_time %g s", (double)run.t_cap);
+  PetscCheck(ModalFirstCrossing(ph, 0, +1.0, run.t_cap - run.t, run.s_min, &s_sep), PETSC_COMM_SELF,
+             PETSC_ERR_NOT_CONVERGED, "modal reference: the ball is still in contact at -impact_max_time %g s",
+             (double)run.t_cap);
   ModalMaxCompressions(run, ph, s_sep, tally);
   ModalSampleForce(run, ph, s_sep);
   ph.State(s_sep, run.q, run.qd);
@@ -116,7 +119,8 @@ PetscErrorCode ModalContactPhase(ModalRun &run, const Phase &ph, ContactTally *t
 
 // A separated phase from run.t to the next contact (c rising through 0) or to t_stop, the end
 // of the window after the separation; *contact tells which.
-PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_stop, PetscInt max_contacts, ContactTally *tally, bool *contact)
+PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_stop, PetscInt max_contacts,
+                              ContactTally *tally, bool *contact)
 {
   PetscReal s_con;
 
@@ -130,7 +134,8 @@ PetscErrorCode ModalFreePhase(ModalRun &run, const ModalPhase &ph, PetscReal t_s
   ph.State(s_con, run.q, run.qd);
   run.t += s_con;
   tally->contacts++;
-  PetscCheck(tally->contacts <= max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "modal reference: more than -impact_max_contacts %" PetscInt_FMT " contacts", max_contacts);
+  PetscCheck(tally->contacts <= max_contacts, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
+             "modal reference: more than -impact_max_contacts %" PetscInt_FMT " contacts", max_contacts);
   tally->events.push_back({ContactEventKind::ContactStart, run.t, 0.0, 0.0});
   PetscFunctionReturn(0);
 }
@@ -156,36 +161,38 @@ void ModalTallyClose(const BallParams &ball, ContactTally *tally)
 // included), and D, the energy the beam's damping dissipated.
 StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_imp, PetscReal D)
 {
-  const ModalSystem     &S   = *run.S;
-  const BeamSystem      &sys = *S.sys;
+  const ModalSystem     &S    = *run.S;
+  const BeamSystem      &sys  = *S.sys;
   const BallParams      &ball = *run.ball;
   std::vector<PetscReal> shape(sys.ndof, 0.0), rate(sys.ndof, 0.0);
   StateMeasures          m;
   PetscReal              p = 0, l = 0, r = 0;
   for (PetscInt d = 0; d + 1 < S.n; ++d) {
-    shape[S.dof[d]] = run.q[d];
-    rate[S.dof[d]]  = run.qd[d];
+    shape[S.dof[d]]    = run.q[d];
+    rate[S.dof[d]]     = run.qd[d];
     const PetscInt dof = S.dof[d], f = dof % sys.fields, node = dof / sys.fields;
     if (sys.Deflection(f)) {
       p += S.mass[d] * run.qd[d];
       l += S.mass[d] * sys.NodeX(node) * run.qd[d];
       r += S.mass[d] * sys.DofZ(dof) * run.qd[d];
-      if (sys.Bed(f)) m.bed_momentum += S.mass[d] * run.qd[d], m.bed_moment += S.mass[d] * sys.NodeX(node) * run.qd[d], m.bed_roll += S.mass[d] * sys.DofZ(dof) * run.qd[d];
+      if (sys.Bed(f))
+        m.bed_momentum += S.mass[d] * run.qd[d], m.bed_moment += S.mass[d] * sys.NodeX(node) * run.qd[d],
+          m.bed_roll += S.mass[d] * sys.DofZ(dof) * run.qd[d];
     } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
     else if (f == sys.roll_field) r += S.mass[d] * run.qd[d];
   }
-  m.ball_y           = run.q[S.n - 1];
-  m.ball_v           = run.qd[S.n - 1];
-  m.ball_kinetic     = 0.5 * ball.mass * m.ball_v * m.ball_v;
+  m.ball_y       = run.q[S.n - 1];
+  m.ball_v       = run.qd[S.n - 1];
+  m.ball_kinetic = 0.5 * ball.mass * m.ball_v * m.ball_v;
   PetscReal stored[kParts], kinetic[kParts]; // each part's, as run/measures.cpp keeps them
   BeamSystemPartEnergies(sys, shape.data(), sys.fields, rate.data(), sys.fields, 0, sys.ndof, stored, kinetic);
-  const int W = (int)Part::Wall;
+  const int W    = (int)Part::Wall;
   m.beam_kinetic = m.beam_strain = 0;
   for (int q = 0; q < kParts; ++q)
     if (q != W) m.beam_kinetic += kinetic[q], m.beam_strain += stored[q];
-  m.shell_energy     = stored[W] + kinetic[W];
-  m.twist_energy     = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
-  m.bed_energy       = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
+  m.shell_energy = stored[W] + kinetic[W];
+  m.twist_energy = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
+  m.bed_energy   = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
   for (PetscInt d = 0; d < S.BeamDofs(); ++d) // the wall's share of the compression (S.g = dc/dq = -w)
     if (sys.Wall(S.dof[d] % sys.fields)) m.wall_deflection -= S.g[d] * run.q[d];
   if (sys.bed_first >= 0)
@@ -217,9 +224,12 @@ static PetscInt ModalReferenceFreeDofs(const BeamSystem &sys)
 bool ModalReferenceApplies(const Scenario &sc, std::string *why)
 {
   std::string w;
-  if (sc.beam.grip.on) w = "with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal reference; use a tight TS run as the reference";
+  if (sc.beam.grip.on)
+    w = "with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal "
+        "reference; use a tight TS run as the reference";
   else if (!ContactLinear(sc.ball))
-    w = std::string("needs -ball_law linear (the ") + ContactLawName(sc.ball.law) + " law is nonlinear: use a tight run of a high-order integrator as the reference)";
+    w = std::string("needs -ball_law linear (the ") + ContactLawName(sc.ball.law) +
+        " law is nonlinear: use a tight run of a high-order integrator as the reference)";
   if (why) *why = w;
   return w.empty();
 }
@@ -246,14 +256,15 @@ void ModalStart(const Scenario &sc, const BeamSystem &sys, ModalRun *run, PetscR
 }
 
 // What the run hands the outcome at its end (D: dissipated by the beam's damping, J).
-void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run, PetscReal E0, PetscReal D, PetscReal V_x, ImpactRecord *rec)
+void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run, PetscReal E0, PetscReal D,
+                 PetscReal V_x, ImpactRecord *rec)
 {
   ModalTallyClose(sc.ball, &rec->contact);
-  rec->end        = ModalMeasures(run, sc.impact.x, sc.impact.z, D);
-  rec->energy_in  = E0;
-  rec->energy_end = ModalEnergy(*run.S, run.q, run.qd, false) + D;
-  rec->final_time = run.t;
-  rec->V_x        = V_x;
+  rec->end               = ModalMeasures(run, sc.impact.x, sc.impact.z, D);
+  rec->energy_in         = E0;
+  rec->energy_end        = ModalEnergy(*run.S, run.q, run.qd, false) + D;
+  rec->final_time        = run.t;
+  rec->V_x               = V_x;
   BallParams approaching = sc.ball; // the contact's scales are those of the approach speed, as for a stepped run
   approaching.speed      = sc.ball.speed + V_x;
   rec->scales            = ContactScalesOf(sys, approaching);
@@ -262,7 +273,8 @@ void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run,
 // An oblique impact (sc: its run along the normal, sc.oblique.on): the tangential contact driven
 // by the sampled F_n(t), the bat's second plane in the modes of `truncation`, the exit and the
 // flight, as a stepped run finishes it (run/impact_driver.cpp); the samples are then dropped.
-PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactRecord *rec)
+PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys,
+                                  const ModalTruncation &truncation, ImpactRecord *rec)
 {
   ObliqueBeam beam;
 
@@ -273,7 +285,8 @@ PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamS
   beam.sys                = &sys;
   beam.g                  = &g;
   beam.truncation         = truncation;
-  if (!(beam.truncation.contact_time > 0)) beam.truncation.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
+  if (!(beam.truncation.contact_time > 0))
+    beam.truncation.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
   PetscCall(ObliqueFinish(sc, rec->series, -rec->end.ball_v, beam, &rec->oblique));
   rec->series = ImpactSeries();
   PetscFunctionReturn(0);
@@ -283,7 +296,8 @@ PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamS
 
 namespace {
 
-PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
+PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys,
+                                   const ModalTruncation &truncation, ImpactResult *res);
 
 // The truncated system (docs/model.md §12): the kept beam modes z_j (mass-normalised: mass 1,
 // stiffness w_j^2) and the ball, with c = y_b - sum_j gamma_j z_j, in contact through the series
@@ -291,9 +305,9 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
 // flexibility G_r at the point); the compression itself is c k'/k. Its phases' bases: separated,
 // diagonal; in contact, the dense eigen-decomposition (LAPACK syev) of the (kept + 1) system.
 struct TruncatedSystem {
-  ModalSystem R;                // over (z_1 .. z_k, y_b): mass 1 .. 1, m_b; g = (-gamma, 1); k'
+  ModalSystem R; // over (z_1 .. z_k, y_b): mass 1 .. 1, m_b; g = (-gamma, 1); k'
   ModalBasis  contact, free;
-  PetscReal   c_scale = 1;      // k'/k
+  PetscReal   c_scale = 1; // k'/k
 };
 
 // gamma_j = sum_q w_q phi_j(d_q) / sqrt(m_{d_q}): mode j's deflection at the point of coupling g.
@@ -309,7 +323,8 @@ std::vector<PetscReal> ModeGammas(const BeamModes &m, const ContactCoupling &g)
   return gamma;
 }
 
-PetscErrorCode TruncatedSystemBuild(const BeamModes &m, const ModalCorrection &corr, const BallParams &ball, TruncatedSystem *T)
+PetscErrorCode TruncatedSystemBuild(const BeamModes &m, const ModalCorrection &corr, const BallParams &ball,
+                                    TruncatedSystem *T)
 {
   const PetscInt               nm = m.Count(), n = nm + 1;
   const std::vector<PetscReal> gamma = ModeGammas(m, corr.g);
@@ -336,7 +351,8 @@ PetscErrorCode TruncatedSystemBuild(const BeamModes &m, const ModalCorrection &c
   std::vector<PetscReal> A((size_t)n * n), w(n), gs(n);
   for (PetscInt r = 0; r < n; ++r) gs[r] = R.g[r] / std::sqrt(R.mass[r]);
   for (PetscInt c = 0; c < n; ++c)
-    for (PetscInt r = 0; r < n; ++r) A[r + (size_t)c * n] = kp * gs[r] * gs[c] + (r == c && r < nm ? m.B.omega[r] * m.B.omega[r] : 0.0);
+    for (PetscInt r = 0; r < n; ++r)
+      A[r + (size_t)c * n] = kp * gs[r] * gs[c] + (r == c && r < nm ? m.B.omega[r] * m.B.omega[r] : 0.0);
   PetscBLASInt bn, lwork = -1, info;
   PetscReal    wq;
   PetscCall(PetscBLASIntCast(n, &bn));
@@ -378,7 +394,8 @@ void FullToTruncated(const BeamModes &m, const std::vector<PetscReal> &q, std::v
 
 // The undamped phases of a truncated run, contact first, to the end of the window after the
 // last separation.
-PetscErrorCode TruncatedPhases(ModalRun &run, const TruncatedSystem &T, const ImpactTimes &times, PetscInt max_contacts, ContactTally *tally)
+PetscErrorCode TruncatedPhases(ModalRun &run, const TruncatedSystem &T, const ImpactTimes &times, PetscInt max_contacts,
+                               ContactTally *tally)
 {
   ModalPhase ph;
   bool       touching = true;
@@ -401,7 +418,8 @@ PetscErrorCode TruncatedPhases(ModalRun &run, const TruncatedSystem &T, const Im
 
 // The reference on the modes kept (m truncated, the beam undamped): the same events and
 // outcome as the dense one, the state carried in the kept modes and the ball.
-PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const BeamModes &m, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const BeamModes &m,
+                                       const ModalTruncation &truncation, ImpactResult *res)
 {
   const ImpactParams    &ip = sc.impact;
   const ModalCorrection *corr;
@@ -414,10 +432,11 @@ PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const 
   const double wall0 = MPI_Wtime();
   PetscCall(m.StaticCorrection(BeamSystemCoupling(sys, ip.x, ip.z), &corr));
   PetscCall(TruncatedSystemBuild(m, *corr, sc.ball, &T));
-  const ModalSystem S = ModalSystemBuild(sys, corr->g, sc.ball.mass, ContactLinearStiffness(sc.ball)); // the full state's layout
+  const ModalSystem S = ModalSystemBuild(sys, corr->g, sc.ball.mass,
+                                         ContactLinearStiffness(sc.ball)); // the full state's layout
   full.S = &S, full.ball = &sc.ball;
   ModalStart(sc, sys, &full, &V_x, &E0);
-  rec.start = ModalMeasures(full, ip.x, ip.z, 0);
+  rec.start               = ModalMeasures(full, ip.x, ip.z, 0);
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, ip);
   run.S = &T.R, run.ball = &sc.ball, run.c_scale = T.c_scale;
   run.t_cap = times.max_time;
@@ -433,10 +452,10 @@ PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const 
   full.t = run.t;
   ModalFinish(sc, sys, full, E0, 0, V_x, &rec);
   PetscCall(ModalObliqueFinish(comm, sc, sys, truncation, &rec));
-  rec.after_used = "modal";
-  rec.modal      = {m.Count(), m.S.n, BeamModesCutoffHz(m)};
-  *res           = ImpactResult();
-  res->ts_type   = "modal";
+  rec.after_used   = "modal";
+  rec.modal        = {m.Count(), m.S.n, BeamModesCutoffHz(m)};
+  *res             = ImpactResult();
+  res->ts_type     = "modal";
   res->formulation = "exact, truncated";
   ImpactOutcomeFinish(sc, sys, std::move(rec), res);
   res->wall_time = MPI_Wtime() - wall0;
@@ -445,7 +464,8 @@ PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const 
 
 } // namespace
 
-PetscErrorCode ModalReferenceRunSystem(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceRunSystem(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys,
+                                       const ModalTruncation &truncation, ImpactResult *res)
 {
   std::shared_ptr<const BeamModes> modes;
   ModalTruncation                  t = truncation;
@@ -453,8 +473,11 @@ PetscErrorCode ModalReferenceRunSystem(MPI_Comm comm, const Scenario &sc, const 
 
   PetscFunctionBeginUser;
   PetscCheck(ModalReferenceApplies(sc, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "-reference modal %s", why.c_str());
-  if (t.modes != ModalModes::All && !sys.Damped()) { // a damped beam: every mode (its contact phases are the first-order modes')
-    if (!(t.contact_time > 0)) t.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // as -ts_type modal and the free flight take it
+  if (t.modes != ModalModes::All &&
+      !sys.Damped()) { // a damped beam: every mode (its contact phases are the first-order modes')
+    if (!(t.contact_time > 0))
+      t.contact_time = ContactTimeScale(sc.ball,
+                                        ImpactApproachSpeed(sc)); // as -ts_type modal and the free flight take it
     PetscCall(BeamModesShared(comm, sys, t, &modes));
   }
   if (modes && modes->truncated) PetscCall(ModalReferenceTruncated(comm, sc, sys, *modes, t, res));
@@ -476,7 +499,8 @@ namespace {
 
 // The dense reference (every mode; a damped beam's first-order modes in contact); an oblique
 // impact's second plane in the modes of `truncation`.
-PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys,
+                                   const ModalTruncation &truncation, ImpactResult *res)
 {
   const BallParams   &ball = sc.ball;
   const ImpactParams &ip   = sc.impact;
@@ -491,15 +515,19 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
   PetscCheck(ModalReferenceApplies(sc, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "-reference modal %s", why.c_str());
   const double need = ModalReferenceMemory(sys), limit = ModalReferenceMemoryLimit();
   PetscCheck(need <= limit, PETSC_COMM_SELF, PETSC_ERR_MEM,
-             "-reference modal with N = %" PetscInt_FMT " nodes (%" PetscInt_FMT " free dofs) would need about %.3g GB for its dense %s matrices, above the limit of %.3g GB "
-             "(-reference_max_memory, default half of the physical memory); reduce -beam_nodes, or use a tight TS run as the reference",
-             sys.nodes, ModalReferenceFreeDofs(sys), need / 1e9, sys.Damped() ? "damped first-order" : "modal", limit / 1e9);
-  const double wall0 = MPI_Wtime();
-  *res               = ImpactResult();
-  res->ts_type       = "modal";
-  res->formulation   = "exact";
-  rec.after_used     = "modal"; // exact throughout
-  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x, ip.z), ball.mass, ContactLinearStiffness(ball));
+             "-reference modal with N = %" PetscInt_FMT " nodes (%" PetscInt_FMT
+             " free dofs) would need about %.3g GB for its dense %s matrices, above the limit of %.3g GB "
+             "(-reference_max_memory, default half of the physical memory); reduce -beam_nodes, or use a tight TS run "
+             "as the reference",
+             sys.nodes, ModalReferenceFreeDofs(sys), need / 1e9, sys.Damped() ? "damped first-order" : "modal",
+             limit / 1e9);
+  const double wall0  = MPI_Wtime();
+  *res                = ImpactResult();
+  res->ts_type        = "modal";
+  res->formulation    = "exact";
+  rec.after_used      = "modal"; // exact throughout
+  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x, ip.z), ball.mass,
+                                         ContactLinearStiffness(ball));
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
   // which also give the dissipated energy of every phase exactly.
   const bool       damped = sys.Damped();
@@ -537,7 +565,8 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
       else PetscCall(ModalContactPhase(run, ph, &rec.contact));
       touching = false;
     } else {
-      PetscCall(ModalFreePhase(run, ph, std::min(run.t_cap, run.t + times.window), ip.max_contacts, &rec.contact, &touching));
+      PetscCall(
+        ModalFreePhase(run, ph, std::min(run.t_cap, run.t + times.window), ip.max_contacts, &rec.contact, &touching));
       more = touching;
     }
     if (damped) D += dph.Dissipated(run.t - t0);
@@ -568,7 +597,8 @@ PetscErrorCode ModalReferenceRun(const Scenario &sc, const ModalTruncation &trun
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalReferenceRun(MPI_Comm comm, const Scenario &sc, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceRun(MPI_Comm comm, const Scenario &sc, const ModalTruncation &truncation,
+                                 ImpactResult *res)
 {
   BeamSystem  sys;
   std::string why;
@@ -580,7 +610,8 @@ PetscErrorCode ModalReferenceRun(MPI_Comm comm, const Scenario &sc, const ModalT
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res)
+PetscErrorCode ModalReferenceRunSystem(const Scenario &sc, const BeamSystem &sys, const ModalTruncation &truncation,
+                                       ImpactResult *res)
 {
   PetscFunctionBeginUser;
   PetscCall(ModalReferenceRunSystem(PETSC_COMM_SELF, sc, sys, truncation, res));

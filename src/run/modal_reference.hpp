@@ -43,9 +43,12 @@ PetscErrorCode ModalReferenceRun(const Scenario &scenario, ImpactResult *res);
 // same exact reference redundantly. The forms without comm run on PETSC_COMM_SELF: for a caller
 // on one rank alone (a test, a rank-local study).
 PetscErrorCode ModalReferenceRun(const Scenario &scenario, const ModalTruncation &truncation, ImpactResult *res);
-PetscErrorCode ModalReferenceRun(MPI_Comm comm, const Scenario &scenario, const ModalTruncation &truncation, ImpactResult *res);
-PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
-PetscErrorCode ModalReferenceRunSystem(MPI_Comm comm, const Scenario &scenario, const BeamSystem &sys, const ModalTruncation &truncation, ImpactResult *res);
+PetscErrorCode ModalReferenceRun(MPI_Comm comm, const Scenario &scenario, const ModalTruncation &truncation,
+                                 ImpactResult *res);
+PetscErrorCode ModalReferenceRunSystem(const Scenario &scenario, const BeamSystem &sys,
+                                       const ModalTruncation &truncation, ImpactResult *res);
+PetscErrorCode ModalReferenceRunSystem(MPI_Comm comm, const Scenario &scenario, const BeamSystem &sys,
+                                       const ModalTruncation &truncation, ImpactResult *res);
 
 // Whether it can solve the scenario: the linear law, no grip; *why (may be null) says why not,
 // naming the options, as "-reference modal <why>" reads. (The memory limit is checked when it

@@ -7,8 +7,16 @@
 
 namespace beamimpact {
 
-ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks)
-  : stepper_(stepper), ctx_(ctx), mon_(mon), ip_(ip), E0_(E0), series_(series), peaks_(peaks), last_phase_(ctx.contact ? ctx.contact->phase : ContactPhase::Loading)
+ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon,
+                               const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks) :
+  stepper_(stepper),
+  ctx_(ctx),
+  mon_(mon),
+  ip_(ip),
+  E0_(E0),
+  series_(series),
+  peaks_(peaks),
+  last_phase_(ctx.contact ? ctx.contact->phase : ContactPhase::Loading)
 {
   series->velocity_at.assign(mon.velocity_at.size(), {});
   series->velocity_at_x = mon.velocity_at;
@@ -22,11 +30,12 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
 
   PetscFunctionBeginUser;
   const bool wall = ctx_.sys->wall_dof >= 0 || ctx_.sys->shell.first >= 0; // a barrel wall (hoop oscillator or shell)
-  const bool bed  = ctx_.sys->bed_first >= 0;                             // a racket's string bed
+  const bool bed  = ctx_.sys->bed_first >= 0;                              // a racket's string bed
   if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall && !bed) PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
   if (wall) { // the barrel wall's peaks, always (NaN until the first step)
-    if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection)) peaks_->wall_deflection = std::abs(m.wall_deflection);
+    if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
+      peaks_->wall_deflection = std::abs(m.wall_deflection);
     if (!(m.shell_energy <= peaks_->shell_energy)) peaks_->shell_energy = m.shell_energy;
   }
   if (bed) { // the string bed's peaks, always (NaN until the first step)
@@ -39,7 +48,8 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   }
   if (ip_.energy_check) {
     const PetscReal growth = (m.total() - E0_) / E0_;
-    PetscCheck(growth <= ip_.energy_growth_tol, stepper_.Comm(), PETSC_ERR_NOT_CONVERGED, "energy grew by %.3g of the incident kinetic energy at t = %g s %s", (double)growth, (double)t,
+    PetscCheck(growth <= ip_.energy_growth_tol, stepper_.Comm(), PETSC_ERR_NOT_CONVERGED,
+               "energy grew by %.3g of the incident kinetic energy at t = %g s %s", (double)growth, (double)t,
                stepper_.EnergyGrowthCause().c_str());
   }
   if (!mon_.any()) PetscFunctionReturn(0);
@@ -81,7 +91,8 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   }
   if (mon_.segment) {
     S.segment_kinetic.push_back(m.segment_kinetic);
-    if ((mon_.segment_until < 0 || t <= mon_.segment_until * (1 + 1e-12)) && m.segment_kinetic > peaks_->segment_kinetic) {
+    if ((mon_.segment_until < 0 || t <= mon_.segment_until * (1 + 1e-12)) &&
+        m.segment_kinetic > peaks_->segment_kinetic) {
       peaks_->segment_kinetic      = m.segment_kinetic;
       peaks_->segment_kinetic_time = t;
     }
@@ -100,11 +111,14 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
     const BeamSystem &S = *ctx_.sys;
     if (S.bed_first >= 0 || S.shell.first >= 0) // rank 0: every field of every node
       PetscCall(stepper_.GatherFields(0, S.fields, &u));
-    if (S.bed_first >= 0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
+    if (S.bed_first >=
+        0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
       std::vector<PetscReal> bed((size_t)S.bed.nz * S.nodes);
       for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i) {
         const PetscReal *node = &u[(size_t)i * S.fields], phi = S.roll_field >= 0 ? node[S.roll_field] : 0.0;
-        for (PetscInt j = 0; j < S.bed.nz; ++j) bed[j * S.nodes + i] = S.held[S.Dof(i, S.bed_first + j)] ? NAN : node[S.bed_first + j] - node[0] - S.bed.Z(j) * phi;
+        for (PetscInt j = 0; j < S.bed.nz; ++j)
+          bed[j * S.nodes + i] = S.held[S.Dof(i, S.bed_first + j)] ? NAN
+                                                                   : node[S.bed_first + j] - node[0] - S.bed.Z(j) * phi;
       }
       series_->snapshot_bed.push_back(std::move(bed));
     }

@@ -12,7 +12,8 @@ namespace beamimpact {
 
 class ImpactRecorder {
 public:
-  ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks);
+  ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip,
+                 PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks);
   // The series at time t (s), and the energy check.
   PetscErrorCode Record(PetscReal t);
   // Every snapshot due by time t.

@@ -25,32 +25,38 @@ PetscErrorCode ObliqueNormalScenario(MPI_Comm comm, const Scenario &sc, Scenario
   if (D != 0 || sc.ball.spin != 0) {
     const char *what = D != 0 ? "-impact_offset" : "-ball_spin";
     PetscCheck(R > 0, comm, PETSC_ERR_ARG_INCOMP,
-               "%s %s: an oblique impact needs the bat's radius at the impact point, which only a round profile gives (-beam_profile); this beam's section is %s, which has no radius (a strip or a "
+               "%s %s: an oblique impact needs the bat's radius at the impact point, which only a round profile gives "
+               "(-beam_profile); this beam's section is %s, which has no radius (a strip or a "
                "table of properties is not round)",
                what, OptionWritten(what).c_str(), SectionSourceName(sc.beam.section.source));
-    PetscCheck(R_b > 0, comm, PETSC_ERR_ARG_INCOMP, "%s %s: an oblique impact needs the ball's radius: give -ball_radius (m)", what, OptionWritten(what).c_str());
+    PetscCheck(R_b > 0, comm, PETSC_ERR_ARG_INCOMP,
+               "%s %s: an oblique impact needs the ball's radius: give -ball_radius (m)", what,
+               OptionWritten(what).c_str());
     PetscCheck(std::abs(sc.ball.spin) < FlightSpinMax(R_b), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-ball_spin %s is not allowed: it moves the ball's surface at %g m/s (-ball_radius %g m), beyond the speed of sound in air (%g m/s), where neither the contact nor the flight "
+               "-ball_spin %s is not allowed: it moves the ball's surface at %g m/s (-ball_radius %g m), beyond the "
+               "speed of sound in air (%g m/s), where neither the contact nor the flight "
                "models hold; |spin| must be below %g rad/s",
-               OptionWritten("-ball_spin").c_str(), (double)(std::abs(sc.ball.spin) * R_b), (double)R_b, (double)kSpeedOfSound, (double)FlightSpinMax(R_b));
+               OptionWritten("-ball_spin").c_str(), (double)(std::abs(sc.ball.spin) * R_b), (double)R_b,
+               (double)kSpeedOfSound, (double)FlightSpinMax(R_b));
     PetscCheck(std::abs(D) < R_b + R, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-impact_offset %s misses the bat: |D| must be < R_b + R_bat = %g m (-ball_radius %g m plus the bat's radius %g m at -impact_x %g m)", OptionWritten("-impact_offset").c_str(),
-               (double)(R_b + R), (double)R_b, (double)R, (double)sc.impact.x);
+               "-impact_offset %s misses the bat: |D| must be < R_b + R_bat = %g m (-ball_radius %g m plus the bat's "
+               "radius %g m at -impact_x %g m)",
+               OptionWritten("-impact_offset").c_str(), (double)(R_b + R), (double)R_b, (double)R, (double)sc.impact.x);
   }
-  *normal                     = sc;
-  ObliqueIncoming &in         = normal->oblique;
-  in.on                       = true;
-  in.ball_speed               = sc.ball.speed;
-  in.swing                    = sc.swing;
-  in.bat_radius               = R;
-  in.ball_series_asked        = sc.monitor.ball;
-  in.series_asked             = sc.monitor.any();
+  *normal              = sc;
+  ObliqueIncoming &in  = normal->oblique;
+  in.on                = true;
+  in.ball_speed        = sc.ball.speed;
+  in.swing             = sc.swing;
+  in.bat_radius        = R;
+  in.ball_series_asked = sc.monitor.ball;
+  in.series_asked      = sc.monitor.any();
   if (D != 0) in.geometry = ObliqueGeometryOf(D, R_b, R); // head-on: theta = 0, cos theta = 1 exactly
-  const PetscReal c           = in.geometry.cos_theta;
-  normal->ball.speed          = c * sc.ball.speed;
-  normal->swing.bat_speed     = c * sc.swing.bat_speed;
+  const PetscReal c                  = in.geometry.cos_theta;
+  normal->ball.speed                 = c * sc.ball.speed;
+  normal->swing.bat_speed            = c * sc.swing.bat_speed;
   normal->swing.bat_angular_velocity = c * sc.swing.bat_angular_velocity;
-  normal->monitor.ball        = PETSC_TRUE; // F_n(t) for the tangential contact
+  normal->monitor.ball               = PETSC_TRUE; // F_n(t) for the tangential contact
   PetscFunctionReturn(0);
 }
 
@@ -59,32 +65,37 @@ namespace {
 // The bat's rigid second plane at the impact point: its effective mass and roll inertia.
 void TangentialBat(const Scenario &sc, TangentialModel *m)
 {
-  const BeamParams   &b    = sc.beam;
-  const BeamRigidBody body = BeamRigidBodyOf(b);
+  const BeamParams   &b         = sc.beam;
+  const BeamRigidBody body      = BeamRigidBodyOf(b);
   const bool          ends_free = b.left == Support::Free && b.right == Support::Free && !b.has_clamp;
   if (ends_free && !b.has_pivot) {
     m->bat_mass         = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(sc.impact.x - body.x_cm));
-    m->bat_roll_inertia = b.section.source == SectionSource::Profile ? 2 * SectionMomentsOf(b.section, 0, SectionLength(b.section)).j : PETSC_INFINITY;
+    m->bat_roll_inertia = b.section.source == SectionSource::Profile
+                          ? 2 * SectionMomentsOf(b.section, 0, SectionLength(b.section)).j
+                          : PETSC_INFINITY;
   } else if (ends_free && sc.impact.x != b.pivot_x) {
-    m->bat_mass = PivotRigOf(body, b.pivot_x, sc.ball.mass, sc.impact.x).inertia_pivot / ((sc.impact.x - b.pivot_x) * (sc.impact.x - b.pivot_x));
+    m->bat_mass = PivotRigOf(body, b.pivot_x, sc.ball.mass, sc.impact.x).inertia_pivot /
+                  ((sc.impact.x - b.pivot_x) * (sc.impact.x - b.pivot_x));
   }
 }
 
 } // namespace
 
-PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p, PetscInt *rigid)
+PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p,
+                                 PetscInt *rigid)
 {
   std::shared_ptr<const BeamModes> modes;
   std::string                      why;
 
   PetscFunctionBeginUser;
   PetscCheck(BeamModesAvailable(*beam.sys, &why), beam.comm, PETSC_ERR_SUP,
-             "-impact_tangential_plane flexible: the bat's second plane is solved in the beam's modes, which cannot carry this beam (%s); give -impact_tangential_plane rigid (the bat rigid in "
+             "-impact_tangential_plane flexible: the bat's second plane is solved in the beam's modes, which cannot "
+             "carry this beam (%s); give -impact_tangential_plane rigid (the bat rigid in "
              "that plane, its effective mass at the impact point), or no friction (-ball_friction 0)",
              why.c_str());
   PetscCall(BeamModesShared(beam.comm, *beam.sys, beam.truncation, &modes));
-  const BeamModes &M = *modes;
-  const PetscInt   n = M.S.n, nm = M.Count();
+  const BeamModes       &M = *modes;
+  const PetscInt         n = M.S.n, nm = M.Count();
   std::vector<PetscReal> sv(n), gw(n, 0.0);
   for (PetscInt d = 0; d < n; ++d) {
     const PetscReal sm = std::sqrt(M.S.mass[d]);
@@ -125,7 +136,8 @@ PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlan
   *P = 0, *L = 0;
   for (size_t k = 0; k < p.zd.size(); ++k) {
     const PetscReal *phi = &modes->B.Phi[k * n];
-    PetscReal        r = 0, x = 0; // sum m_d v_d and m_d x_d v_d per unit zd_k, over the translational dofs: v = M^{-1/2} phi zd
+    PetscReal        r   = 0,
+              x = 0; // sum m_d v_d and m_d x_d v_d per unit zd_k, over the translational dofs: v = M^{-1/2} phi zd
     for (PetscInt d = 0; d < n; ++d) {
       const PetscInt dof = modes->S.dof[d];
       if (dof % f) continue;
@@ -149,7 +161,8 @@ PetscErrorCode TangentialPlaneFinish(const ObliqueBeam &beam, ObliqueRecord *rec
   PetscFunctionBeginUser;
   rec->plane_damped    = p.damped;
   rec->plane_vibration = 0.5 * p.flexibility * p.force * p.force;
-  for (size_t k = (size_t)rec->plane_rigid_modes; k < p.omega.size(); ++k) rec->plane_vibration += 0.5 * (p.zd[k] * p.zd[k] + p.omega[k] * p.omega[k] * p.z[k] * p.z[k]);
+  for (size_t k = (size_t)rec->plane_rigid_modes; k < p.omega.size(); ++k)
+    rec->plane_vibration += 0.5 * (p.zd[k] * p.zd[k] + p.omega[k] * p.omega[k] * p.z[k] * p.z[k]);
   PetscCall(ObliquePlaneMomenta(beam, p, &rec->plane_momentum, &L));
   PetscFunctionReturn(0);
 }
@@ -176,38 +189,41 @@ NormalPiece NormalPieceOf(const ImpactSeries &S, size_t k)
 
 } // namespace
 
-PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, const ObliqueBeam &beam, ObliqueRecord *rec)
+PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, const ObliqueBeam &beam,
+                             ObliqueRecord *rec)
 {
-  const ObliqueIncoming &in = sc.oblique;
+  const ObliqueIncoming &in   = sc.oblique;
   const BallParams      &ball = sc.ball;
   TangentialModel        m;
 
   PetscFunctionBeginUser;
   ImpactStageScope stage(ImpactStage::Tangential); // -log_view
-  rec->on       = true;
-  rec->geometry = in.geometry;
-  m.ball_mass   = ball.mass;
-  m.ball_radius = ball.radius;
+  rec->on        = true;
+  rec->geometry  = in.geometry;
+  m.ball_mass    = ball.mass;
+  m.ball_radius  = ball.radius;
   m.ball_inertia = ball.inertia_factor * ball.mass * ball.radius * ball.radius;
-  m.bat_radius  = in.bat_radius;
-  m.friction    = ball.friction;
+  m.bat_radius   = in.bat_radius;
+  m.friction     = ball.friction;
   TangentialBat(sc, &m);
-  const BeamRigidBody body    = BeamRigidBodyOf(sc.beam);
-  const PetscReal     V_in    = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
-  const PetscReal     s       = in.geometry.sin_theta;
+  const BeamRigidBody body = BeamRigidBodyOf(sc.beam);
+  const PetscReal     V_in = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
+  const PetscReal     s    = in.geometry.sin_theta;
   // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models);
   // without friction the spring carries no force: none (its zero-force steps left -6e-71 J of round-off)
-  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0 && ball.friction > 0) m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force, series.force_rate);
-  rec->model          = m;
-  rec->before.v_ball  = in.ball_speed * s;
-  rec->before.spin    = -ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise
-  rec->before.v_bat   = -V_in * s;
-  rec->before.roll    = 0;
-  const PetscReal u0  = (rec->before.v_ball - m.ball_radius * rec->before.spin) - rec->before.v_bat;
-  rec->contact        = TangentialStart(m, u0);
-  const bool touches  = m.ball_radius > 0 && m.ball_inertia > 0;
-  const bool flexible = touches && u0 != 0 && m.friction > 0 && !sc.impact.tangential_rigid;
-  const size_t n      = std::min(series.time.size(), series.force.size());
+  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0 && ball.friction > 0)
+    m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force,
+                                                     series.force_rate);
+  rec->model            = m;
+  rec->before.v_ball    = in.ball_speed * s;
+  rec->before.spin      = -ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise
+  rec->before.v_bat     = -V_in * s;
+  rec->before.roll      = 0;
+  const PetscReal u0    = (rec->before.v_ball - m.ball_radius * rec->before.spin) - rec->before.v_bat;
+  rec->contact          = TangentialStart(m, u0);
+  const bool   touches  = m.ball_radius > 0 && m.ball_inertia > 0;
+  const bool   flexible = touches && u0 != 0 && m.friction > 0 && !sc.impact.tangential_rigid;
+  const size_t n        = std::min(series.time.size(), series.force.size());
   if (flexible) { // the swing's -V(x) per dof times sin theta: its component along t
     std::vector<PetscReal> v;
     PetscReal              L;
@@ -220,7 +236,8 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     rec->contact         = TangentialFlexibleStart(m, rec->plane);
     for (size_t k = 0; k + 1 < n; ++k) {
       const NormalPiece f = NormalPieceOf(series, k);
-      TangentialAdvanceFlexible(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, &rec->plane, &rec->contact);
+      TangentialAdvanceFlexible(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, &rec->plane,
+                                &rec->contact);
     }
     PetscCall(TangentialPlaneFinish(beam, rec));
     rec->model.bat_mass = PETSC_INFINITY; // the bat's translation is the plane's: the ball and the roll from J
@@ -231,7 +248,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     }
   rec->after = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
   if (flexible) rec->after.v_bat = rec->plane.PointVelocity();
-  rec->exit  = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
+  rec->exit = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
   if (sc.flight.on) {
     stage.Switch(ImpactStage::Flight);
     FlightParams p    = sc.flight.params;
@@ -243,11 +260,15 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     PetscReal u[6];
     FlightInitialState(p.launch, u);
     PetscCheck(p.launch.height > 0 || p.launch.angle > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-               "-flight with -flight_height 0: the batted ball leaves at %g deg, downward, from the ground; give -flight_height > 0", (double)p.launch.angle);
+               "-flight with -flight_height 0: the batted ball leaves at %g deg, downward, from the ground; give "
+               "-flight_height > 0",
+               (double)p.launch.angle);
     PetscCheck(std::abs(p.launch.backspin) < FlightSpinMax(p.ball.radius), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-               "-flight: the batted ball leaves spinning at %g rad/s, its surface at %g m/s (-flight_ball_radius %g m), beyond the speed of sound in air (%g m/s), where the flight's drag and "
+               "-flight: the batted ball leaves spinning at %g rad/s, its surface at %g m/s (-flight_ball_radius %g "
+               "m), beyond the speed of sound in air (%g m/s), where the flight's drag and "
                "lift do not hold (check -ball_speed, -ball_spin and the swing)",
-               (double)p.launch.backspin, (double)(std::abs(p.launch.backspin) * p.ball.radius), (double)p.ball.radius, (double)kSpeedOfSound);
+               (double)p.launch.backspin, (double)(std::abs(p.launch.backspin) * p.ball.radius), (double)p.ball.radius,
+               (double)kSpeedOfSound);
     PetscCall(FlightSolve(FlightModelOf(p), u, sc.flight.solve, &rec->flight));
     rec->flew = true;
   }

@@ -48,12 +48,13 @@ struct FlightAfterImpact {
 
 // The incoming impact of a run whose scenario was projected on the normal (on: projected).
 struct ObliqueIncoming {
-  bool            on = false;
+  bool            on         = false;
   PetscReal       ball_speed = 0; // m/s, as given
   SwingParams     swing;          // as given
   ObliqueGeometry geometry;
-  PetscReal       bat_radius = 0; // m, at the impact point
-  bool            ball_series_asked = false, series_asked = false; // -monitor_ball; any monitor (the run records the ball's series for F_n)
+  PetscReal       bat_radius        = 0; // m, at the impact point
+  bool            ball_series_asked = false,
+       series_asked                 = false; // -monitor_ball; any monitor (the run records the ball's series for F_n)
 };
 
 // What the tangential contact and the flight hand the outcome.
@@ -67,11 +68,12 @@ struct ObliqueRecord {
   bool             flexible = false;      // the bat's second plane in its modes (else rigid, or no tangential force)
   TangentialPlane  plane;                 // flexible: its state after the contact
   PetscInt         plane_rigid_modes = 0; // flexible: the rigid modes among plane.omega (the first)
-  PetscReal        plane_vibration = 0;   // J, flexible: the energy of its flexible modes after the contact
-  PetscReal        plane_damped    = 0;   // J, flexible: the energy the beam's damping took in that plane up to the end of the contact
-  PetscReal        plane_momentum0 = 0, plane_momentum = 0; // N s, flexible: the bat's momentum along t before and after
-  bool             flew = false;
-  FlightResult     flight;
+  PetscReal        plane_vibration   = 0; // J, flexible: the energy of its flexible modes after the contact
+  PetscReal
+    plane_damped = 0; // J, flexible: the energy the beam's damping took in that plane up to the end of the contact
+  PetscReal    plane_momentum0 = 0, plane_momentum = 0; // N s, flexible: the bat's momentum along t before and after
+  bool         flew = false;
+  FlightResult flight;
 };
 
 // Whether the impact is oblique: -impact_offset or -ball_spin not 0, or -flight.
@@ -93,13 +95,15 @@ struct ObliqueBeam {
 // share of each, the static correction of a truncated basis), moving with velocity (m/s per dof
 // along t; empty: at rest); rigid: the rigid modes among them (the first). Refuses a beam the
 // modes cannot carry (a grip), naming -impact_tangential_plane rigid; a damped beam decays in its modes.
-PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p, PetscInt *rigid);
+PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p,
+                                 PetscInt *rigid);
 // The plane's momentum along t (N s) and its angular momentum about x = 0 in that plane (N m s,
 // sum m_d x_d v_d over the translational dofs: a Timoshenko section's spin is left out).
 PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlane &p, PetscReal *P, PetscReal *L);
 
 // After the run along the normal (sc: its projected scenario; series: its ball series, F_n at
 // every step): the tangential contact, the exit, and with -flight the flight.
-PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal ball_normal_speed_end, const ObliqueBeam &beam, ObliqueRecord *rec);
+PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal ball_normal_speed_end,
+                             const ObliqueBeam &beam, ObliqueRecord *rec);
 
 } // namespace beamimpact

@@ -23,13 +23,13 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
     if (S.Deflection(fld)) { // the beam's and a string bed's deflections
       const PetscReal z = S.DofZ(d);
       M += m, Mx += m * x, Mxx += m * x * x, Izz += m * z * z;
-    } else if (S.Rotation(fld)) Mxx += m; // rotary inertia of a Timoshenko section
+    } else if (S.Rotation(fld)) Mxx += m;   // rotary inertia of a Timoshenko section
     else if (fld == S.roll_field) Izz += m; // the sections' rho J
   }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
-  f->beam_mass         = M;
-  f->inertia_cm        = I_cm;
-  f->moment_cm         = f->end.beam_moment - x_cm * f->end.beam_momentum;
+  f->beam_mass  = M;
+  f->inertia_cm = I_cm;
+  f->moment_cm  = f->end.beam_moment - x_cm * f->end.beam_momentum;
   if (S.roll_field < 0) return;
   f->inertia_roll = Izz; // about the axis z = 0: the bed is symmetric across it, its centre of mass on the axis
   f->moment_roll  = f->end.beam_roll;
@@ -65,18 +65,18 @@ void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord
   f.split = EnergySplitOf(sc.beam, sys, f.end);
   for (const ResultColumn &c : ImpactResultColumns())
     if (c.compute) c.Set(res, c.applies(sc) ? c.compute(f) : nan);
-  res->events     = std::move(rec.contact.events);
-  res->series     = std::move(rec.series);
+  res->events = std::move(rec.contact.events);
+  res->series = std::move(rec.series);
   if (rec.oblique.flew) {
-    const FlightSeries &F = rec.oblique.flight.series;
+    const FlightSeries &F   = rec.oblique.flight.series;
     res->series.flight_time = F.t, res->series.flight_x = F.x, res->series.flight_y = F.y, res->series.flight_z = F.z;
     res->series.flight_spin = F.spin;
   }
-  res->after_used = rec.after_used;
+  res->after_used    = rec.after_used;
   res->mode_energies = std::move(rec.mode_energies);
   res->modal         = rec.modal;
   for (ModeEnergy &e : res->mode_energies) e.fraction = f.E_in > 0 ? e.energy / f.E_in : nan;
-  res->scales     = ImpactScalesOf(rec.scales);
+  res->scales = ImpactScalesOf(rec.scales);
 }
 
 std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r)
@@ -84,9 +84,11 @@ std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &
   if (!r.compression_beyond_radius) return "";
   char msg[400];
   std::snprintf(msg, sizeof msg,
-                "warning: the maximum compression %.4g m is beyond the ball's radius (-ball_radius %g m, %.3g times it): physically absurd, the contact law is used far outside its range "
+                "warning: the maximum compression %.4g m is beyond the ball's radius (-ball_radius %g m, %.3g times "
+                "it): physically absurd, the contact law is used far outside its range "
                 "(check -ball_speed %g m/s and the stiffness)",
-                (double)r.max_compression, (double)sc.ball.radius, (double)(r.max_compression / sc.ball.radius), (double)sc.ball.speed);
+                (double)r.max_compression, (double)sc.ball.radius, (double)(r.max_compression / sc.ball.radius),
+                (double)sc.ball.speed);
   return msg;
 }
 
@@ -96,10 +98,15 @@ std::string WallDeflectionLargeText(const Scenario &sc, const ImpactResult &r)
   const PetscReal R = ShellRadiusAt(sc.beam, sc.impact.x);
   char            msg[640];
   std::snprintf(msg, sizeof msg,
-                "warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the "
-                "wall's model is linear (its displacements small against its thickness and radius); check %s and -ball_speed %g m/s",
-                (double)r.wall_deflection_peak, (double)(r.wall_deflection_peak / R), (double)R, (double)sc.impact.x, (double)kWallDeflectionLimit,
-                sc.beam.hoop.on ? "-barrel_hoop_frequency and -barrel_hoop_mass" : "-shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius", (double)sc.ball.speed);
+                "warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface "
+                "radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the "
+                "wall's model is linear (its displacements small against its thickness and radius); check %s and "
+                "-ball_speed %g m/s",
+                (double)r.wall_deflection_peak, (double)(r.wall_deflection_peak / R), (double)R, (double)sc.impact.x,
+                (double)kWallDeflectionLimit,
+                sc.beam.hoop.on ? "-barrel_hoop_frequency and -barrel_hoop_mass"
+                                : "-shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius",
+                (double)sc.ball.speed);
   return msg;
 }
 
@@ -112,11 +119,16 @@ std::string ImpactCutOffReason(const Scenario &sc, const ImpactResult &r)
     if (e.kind == ContactEventKind::ContactStart) start = e.time;
   char cap[160], msg[640];
   if (sc.impact.max_time > 0) std::snprintf(cap, sizeof cap, "-impact_max_time %g s", (double)sc.impact.max_time);
-  else std::snprintf(cap, sizeof cap, "the default cap on the simulated time (%g s: 4 windows + 100 contact times)", (double)times.max_time);
+  else
+    std::snprintf(cap, sizeof cap, "the default cap on the simulated time (%g s: 4 windows + 100 contact times)",
+                  (double)times.max_time);
   std::snprintf(msg, sizeof msg,
-                "the run was cut off in contact: %s ended it at t = %g s while the ball was still touching the beam (contact %d began at t = %g s), so it has no ACOR, "
-                "peak force or compression; raise -impact_max_time (the run needs the contact's end plus -impact_window %g s: more than %g s), or leave it unset",
-                cap, (double)r.final_time, (int)r.contacts, (double)start, (double)times.window, (double)(r.final_time + times.window));
+                "the run was cut off in contact: %s ended it at t = %g s while the ball was still touching the beam "
+                "(contact %d began at t = %g s), so it has no ACOR, "
+                "peak force or compression; raise -impact_max_time (the run needs the contact's end plus "
+                "-impact_window %g s: more than %g s), or leave it unset",
+                cap, (double)r.final_time, (int)r.contacts, (double)start, (double)times.window,
+                (double)(r.final_time + times.window));
   return msg;
 }
 

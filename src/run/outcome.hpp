@@ -18,17 +18,17 @@ namespace beamimpact {
 
 // What a run hands its outcome.
 struct ImpactRecord {
-  ContactTally  contact;          // run/events.cpp
-  MonitorPeaks  peaks;            // run/monitors.cpp
-  ImpactSeries  series;           // run/monitors.cpp (only what was asked)
-  StateMeasures start, end;       // the measures at t = 0 and at the end
-  PetscReal     energy_in  = 0;   // J, the conserved total at t = 0 (start.total() for a stepper)
-  PetscReal     energy_end = 0;   // J, the same at the end
-  PetscReal     final_time = 0;   // s
-  PetscReal     V_x        = 0;   // m/s, the swinging bat's speed toward the ball at the impact point
-  ContactScales scales;           // of the contact, at the first contact's approach speed (v_ball + V_x)
-  std::string   after_used;       // -impact_after as the run resolved it
-  ObliqueRecord oblique;          // run/oblique.cpp: an oblique impact's tangential contact, exit and flight (on: oblique)
+  ContactTally  contact;        // run/events.cpp
+  MonitorPeaks  peaks;          // run/monitors.cpp
+  ImpactSeries  series;         // run/monitors.cpp (only what was asked)
+  StateMeasures start, end;     // the measures at t = 0 and at the end
+  PetscReal     energy_in  = 0; // J, the conserved total at t = 0 (start.total() for a stepper)
+  PetscReal     energy_end = 0; // J, the same at the end
+  PetscReal     final_time = 0; // s
+  PetscReal     V_x        = 0; // m/s, the swinging bat's speed toward the ball at the impact point
+  ContactScales scales;         // of the contact, at the first contact's approach speed (v_ball + V_x)
+  std::string   after_used;     // -impact_after as the run resolved it
+  ObliqueRecord oblique; // run/oblique.cpp: an oblique impact's tangential contact, exit and flight (on: oblique)
   std::vector<ModeEnergy> mode_energies; // J per kept mode at the end (a modal free flight's last; fraction unset)
   ModalEngineUse          modal;         // the modal engine the run used (none: kept = 0)
 };

@@ -39,10 +39,13 @@ PetscErrorCode TimeSteppingRun(MPI_Comm comm, const Scenario &sc, const Referenc
 PetscErrorCode ModalRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettings &, ReferenceSolution *sol)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP, "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
-  if (sc.impact.check_unused_options) PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-  ModalTruncation truncation; // -modal_modes, -modal_tolerance: the truncated model's exact solution (all: the dense one)
-  PetscBool       asked = PETSC_FALSE; // the dense exact reference unless -modal_modes is given
+  PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP,
+             "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
+  if (sc.impact.check_unused_options)
+    PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
+  ModalTruncation
+            truncation; // -modal_modes, -modal_tolerance: the truncated model's exact solution (all: the dense one)
+  PetscBool asked = PETSC_FALSE; // the dense exact reference unless -modal_modes is given
   PetscCall(ModalTruncationFromOptions(comm, &truncation));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-modal_modes", &asked));
   if (!asked) truncation.modes = ModalModes::All;
@@ -50,8 +53,11 @@ PetscErrorCode ModalRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettin
   // tangential contact and the bat's second plane, as for a stepped run.
   Scenario normal;
   if (ObliqueImpact(sc)) PetscCall(ObliqueNormalScenario(comm, sc, &normal));
-  PetscCall(ModalReferenceRun(comm, ObliqueImpact(sc) ? normal : sc, truncation, &sol->result)); // collective on the run's comm (its modes)
-  if (sc.impact.report_setup) PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", sol->result.ts_type.c_str(), sol->result.formulation.c_str(), (double)sol->result.dt_nominal));
+  PetscCall(ModalReferenceRun(comm, ObliqueImpact(sc) ? normal : sc, truncation,
+                              &sol->result)); // collective on the run's comm (its modes)
+  if (sc.impact.report_setup)
+    PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", sol->result.ts_type.c_str(), sol->result.formulation.c_str(),
+                          (double)sol->result.dt_nominal));
   sol->method = "modal";
   PetscFunctionReturn(0);
 }
@@ -59,13 +65,20 @@ PetscErrorCode ModalRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettin
 } // namespace
 
 const ReferenceMethod kReferenceTimeStepping = {
-  "ts", "integrate with the PETSc TS (-ts_type and its options)", true, false, false, Always, TimeSteppingRun,
+  "ts",
+  "integrate with the PETSc TS (-ts_type and its options)",
+  true,
+  false,
+  false,
+  Always,
+  TimeSteppingRun,
   [](const ReferenceSettings &) { return NameOnly("ts"); },
 };
 
 const ReferenceMethod kReferenceModal = {
   "modal",
-  "the exact modal solution (linear spring, no grip; Rayleigh damping allowed; no time step, only round-off; an oblique impact's tangential contact from F_n at 20000 samples per contact)",
+  "the exact modal solution (linear spring, no grip; Rayleigh damping allowed; no time step, only round-off; an "
+  "oblique impact's tangential contact from F_n at 20000 samples per contact)",
   true,
   true,
   true,
@@ -116,10 +129,13 @@ const ReferenceMethod *ReferenceMethodDefault(const Scenario &sc)
 const OptionModule &ReferenceOptionModule()
 {
   static const OptionModule m = [] {
-    OptionModule r{"reference", "Impact task: the method that solves it (-task impact)", {}};
+    OptionModule                   r{"reference", "Impact task: the method that solves it (-task impact)", {}};
     const std::vector<std::string> names = ReferenceMethodNames(false);
-    r.options.push_back(OptionChoice("-reference", ("How the impact is solved: " + ReferenceMethodHelp(false)).c_str(), names, names.empty() ? "" : names[0].c_str()));
-    r.options.push_back(OptionReal("-reference_max_memory", "GB", "-reference modal: refuse a beam whose dense modal matrices need more than this (default -max_memory's limit: half of the physical memory)",
+    r.options.push_back(OptionChoice("-reference", ("How the impact is solved: " + ReferenceMethodHelp(false)).c_str(),
+                                     names, names.empty() ? "" : names[0].c_str()));
+    r.options.push_back(OptionReal("-reference_max_memory", "GB",
+                                   "-reference modal: refuse a beam whose dense modal matrices need more than this "
+                                   "(default -max_memory's limit: half of the physical memory)",
                                    "", Positive())); // no fixed default: the machine's
     return r;
   }();
@@ -128,8 +144,8 @@ const OptionModule &ReferenceOptionModule()
 
 PetscErrorCode ReferenceMethodFromOptions(MPI_Comm comm, const ReferenceMethod **method)
 {
-  const OptionModule &m     = ReferenceOptionModule();
-  PetscInt            index = 0;
+  const OptionModule &m      = ReferenceOptionModule();
+  PetscInt            index  = 0;
   PetscReal           max_gb = ModalReferenceMemoryLimit() / 1e9;
 
   PetscFunctionBeginUser;

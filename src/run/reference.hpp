@@ -26,12 +26,12 @@ namespace beamimpact {
 // estimated (a study reports it beside the errors it measures).
 struct ReferenceSolution {
   ImpactResult result;
-  std::string  method;                  // what solved it, for the record: "ts", "modal", a configuration's name
-  PetscReal    acor_error         = 0;  // its own estimated error: absolute
-  PetscReal    contact_time_error = 0;  // relative
-  PetscReal    peak_force_error   = 0;  // relative
-  PetscReal    observed_order     = 0;  // of the configuration's last levels (ACOR); 0 for an exact method
-  PetscReal    wall_time          = 0;  // s, to compute it (set by the caller)
+  std::string  method;                 // what solved it, for the record: "ts", "modal", a configuration's name
+  PetscReal    acor_error         = 0; // its own estimated error: absolute
+  PetscReal    contact_time_error = 0; // relative
+  PetscReal    peak_force_error   = 0; // relative
+  PetscReal    observed_order     = 0; // of the configuration's last levels (ACOR); 0 for an exact method
+  PetscReal    wall_time          = 0; // s, to compute it (set by the caller)
 };
 
 // What a method may need besides the scenario (a study's settings).
@@ -41,8 +41,8 @@ struct ReferenceSettings {
 };
 
 struct ReferenceMethod {
-  const char *name; // as -reference / -convergence_reference take it
-  const char *help; // one line for -help
+  const char *name;           // as -reference / -convergence_reference take it
+  const char *help;           // one line for -help
   bool        impact = false; // offered by -reference (-task impact)
   bool        study  = false; // offered by -convergence_reference (a reference for a study)
   bool        exact  = false; // no step, no tolerance: only round-off (else its own error is estimated)
@@ -51,7 +51,8 @@ struct ReferenceMethod {
   bool (*applies)(const Scenario &sc, std::string *why) = nullptr;
   // Solves sc on comm. With sc.impact.check_unused_options and report_setup (-task impact)
   // it checks the options it leaves unused and prints its set-up, as ImpactRun does.
-  PetscErrorCode (*run)(MPI_Comm comm, const Scenario &sc, const ReferenceSettings &settings, ReferenceSolution *sol) = nullptr;
+  PetscErrorCode (*run)(MPI_Comm comm, const Scenario &sc, const ReferenceSettings &settings,
+                        ReferenceSolution *sol) = nullptr;
   // What a study's file calls it: its name, or what it depends on (the configuration file).
   std::string (*label)(const ReferenceSettings &settings) = nullptr;
 };
@@ -59,9 +60,9 @@ struct ReferenceMethod {
 // The registry (app/registry.cpp registers the methods once per process, in the order -help
 // lists them: the first impact method is -reference's default; a second registration of the
 // same name is ignored).
-void                                       ReferenceMethodRegister(const ReferenceMethod *m);
+void                                        ReferenceMethodRegister(const ReferenceMethod *m);
 const std::vector<const ReferenceMethod *> &ReferenceMethods();
-const ReferenceMethod                     *ReferenceMethodFind(const std::string &name); // nullptr if none
+const ReferenceMethod                      *ReferenceMethodFind(const std::string &name); // nullptr if none
 // The names offered by -reference (impact) or -convergence_reference (study), in order.
 std::vector<std::string> ReferenceMethodNames(bool study);
 // "name: help; name: help" of those methods, for -help.

@@ -20,7 +20,10 @@ bool ResultNoHeldDof(const Scenario &sc)
   return b.left == Support::Free && b.right == Support::Free && !b.has_clamp && !b.has_pivot;
 }
 
-bool ResultMomentumInvariant(const Scenario &sc) { return ResultNoHeldDof(sc) && !sc.beam.grip.on && sc.beam.damping_mass == 0; }
+bool ResultMomentumInvariant(const Scenario &sc)
+{
+  return ResultNoHeldDof(sc) && !sc.beam.grip.on && sc.beam.damping_mass == 0;
+}
 
 bool ResultFreeBeamAtRest(const Scenario &sc) { return ResultNoHeldDof(sc) && !sc.beam.grip.on && !sc.swing.Swings(); }
 
@@ -46,7 +49,7 @@ std::string PivotHeldText(const Scenario &sc)
 {
   const BeamParams &b = sc.beam;
   std::string       held;
-  auto add = [&](const std::string &what) { held += (held.empty() ? "" : ", ") + what; };
+  auto              add = [&](const std::string &what) { held += (held.empty() ? "" : ", ") + what; };
   if (!b.has_pivot) return "";
   if (b.left != Support::Free) add(std::string("-beam_left ") + SupportName(b.left));
   if (b.right != Support::Free) add(std::string("-beam_right ") + SupportName(b.right));
@@ -73,7 +76,8 @@ namespace {
 
 using Compute = double (*)(const OutcomeFacts &);
 
-ResultColumn Real(const char *name, const char *unit, PetscReal ImpactResult::*field, ResultApplies applies, const char *applies_text, Compute compute, const char *description)
+ResultColumn Real(const char *name, const char *unit, PetscReal ImpactResult::*field, ResultApplies applies,
+                  const char *applies_text, Compute compute, const char *description)
 {
   ResultColumn c{name, unit, description, applies, applies_text};
   c.compute = compute;
@@ -106,39 +110,51 @@ ResultColumn Flag(const char *name, PetscBool ImpactResult::*field, Compute comp
   return c;
 }
 
-const char *const kAlways = "always";
+const char *const kAlways  = "always";
 const char *const kStrings = "with a string bed (-strings_frame held or beam)";
-const char *const kNoHeld = "a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
+const char *const kNoHeld  = "a beam with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
 // A ball at rest (-ball_speed 0, struck by a swinging bat) has no ACOR.
 bool              BallMoves(const Scenario &sc) { return sc.ball.speed > 0; }
-const char *const kBallMoves       = "a moving ball (-ball_speed > 0; a ball at rest has no ACOR)";
+const char *const kBallMoves = "a moving ball (-ball_speed > 0; a ball at rest has no ACOR)";
 // The fractions of the energy brought in, E_in (the ball's and a swinging bat's kinetic energy):
 // always (a ball at rest is refused without a swing), each where its energy is tracked. Together
 // they close to 1 (run/energy_parts.hpp, docs/model.md section 4).
-bool              EnergyIn(const Scenario &sc) { return sc.ball.speed > 0 || sc.swing.Swings(); }
-bool              EnergyInTranslation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Translation); }
-bool              EnergyInRotation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Rotation); }
-bool              EnergyInRoll(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Roll); }
-bool              EnergyInTwist(const Scenario &sc) { return EnergyIn(sc) && ResultTwist(sc); }
-bool              EnergyInBed(const Scenario &sc) { return EnergyIn(sc) && ResultStringBed(sc); }
-bool              EnergyInWall(const Scenario &sc) { return EnergyIn(sc) && ResultBarrelWall(sc); }
-bool              EnergyInGrip(const Scenario &sc) { return EnergyIn(sc) && ResultGripped(sc); }
-const char *const kEnergyIn = "always (E_in > 0: a moving ball or a swinging bat)";
+bool EnergyIn(const Scenario &sc) { return sc.ball.speed > 0 || sc.swing.Swings(); }
+bool EnergyInTranslation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Translation); }
+bool EnergyInRotation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Rotation); }
+bool EnergyInRoll(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Roll); }
+bool EnergyInTwist(const Scenario &sc) { return EnergyIn(sc) && ResultTwist(sc); }
+bool EnergyInBed(const Scenario &sc) { return EnergyIn(sc) && ResultStringBed(sc); }
+bool EnergyInWall(const Scenario &sc) { return EnergyIn(sc) && ResultBarrelWall(sc); }
+bool EnergyInGrip(const Scenario &sc) { return EnergyIn(sc) && ResultGripped(sc); }
+const char *const kEnergyIn    = "always (E_in > 0: a moving ball or a swinging bat)";
 const char *const kTranslation = "a structure with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
-const char *const kRotation =
-  "a structure with no held dof, or held at one pin only (-beam_pivot or one pinned end, no clamp): its rigid rotation about the centre of mass, or about the pin";
-const char *const kRoll = "with -beam_torsion and no clamp (a clamped end or -beam_clamp holds the roll)";
+const char *const kRotation = "a structure with no held dof, or held at one pin only (-beam_pivot or one pinned end, "
+                              "no clamp): its rigid rotation about the centre of mass, or about the pin";
+const char *const kRoll     = "with -beam_torsion and no clamp (a clamped end or -beam_clamp holds the roll)";
 // The momenta's reference: the ball's, or a ball at rest's swinging bat's.
-PetscReal MomentumScale(const OutcomeFacts &f) { return f.sc->ball.speed > 0 ? f.sc->ball.mass * f.sc->ball.speed : std::abs(f.start.momentum); }
+PetscReal MomentumScale(const OutcomeFacts &f)
+{
+  return f.sc->ball.speed > 0 ? f.sc->ball.mass * f.sc->ball.speed : std::abs(f.start.momentum);
+}
 
 // The ball's quantities that depend on its law: an elastic law keeps all the work done on it,
 // so the paper corrects its ACOR (and the ball's loss) by -ball_loss_factor.
 
 PetscReal Acor(const OutcomeFacts &f) { return -f.end.ball_v / f.sc->ball.speed; }
-PetscReal AcorCorrected(const OutcomeFacts &f) { return ContactElastic(f.sc->ball) ? Acor(f) * f.sc->ball.loss_factor : Acor(f); }
+PetscReal AcorCorrected(const OutcomeFacts &f)
+{
+  return ContactElastic(f.sc->ball) ? Acor(f) * f.sc->ball.loss_factor : Acor(f);
+}
 PetscReal BallDissipated(const OutcomeFacts &f) { return f.end.ball_work - f.end.ball_stored; }
-PetscReal CollisionEfficiency(const OutcomeFacts &f) { return SwingCollisionEfficiency(-f.end.ball_v, f.sc->ball.speed, f.V_x); }
-PivotRig  RigOf(const OutcomeFacts &f) { return PivotRigOf(BeamRigidBodyOf(f.sc->beam), f.sc->beam.pivot_x, f.sc->ball.mass, f.sc->impact.x); }
+PetscReal CollisionEfficiency(const OutcomeFacts &f)
+{
+  return SwingCollisionEfficiency(-f.end.ball_v, f.sc->ball.speed, f.V_x);
+}
+PivotRig RigOf(const OutcomeFacts &f)
+{
+  return PivotRigOf(BeamRigidBodyOf(f.sc->beam), f.sc->beam.pivot_x, f.sc->ball.mass, f.sc->impact.x);
+}
 // Eq. (11) with the beam's own mass, centre of mass and inertia (for the paper's uniform beam
 // M = mu L, I_cm = M L^2/12 about its centre), struck at x.
 PetscReal RigidMassAt(const OutcomeFacts &f)
@@ -156,139 +172,292 @@ using F = const OutcomeFacts &;
 std::vector<ResultColumn> OutcomeColumns()
 {
   return {
-    Real("x", "m", &R::x, ResultAlways, kAlways, [](F f) -> double { return f.sc->impact.x; }, "impact point x_imp"),
-    Real("acor", "1", &R::acor, BallMoves, kBallMoves, [](F f) -> double { return Acor(f); }, "apparent coefficient of restitution -v_b,final / v_i"),
-    Real("acor_corrected", "1", &R::acor_corrected, BallMoves, kBallMoves, [](F f) -> double { return AcorCorrected(f); },
-         "an elastic law (linear, hertz): acor x -ball_loss_factor; otherwise acor"),
-    Real("contact_time", "s", &R::contact_time, ResultAlways, kAlways,
-         [](F f) -> double { return f.contact->contact_time; },
-         "duration of the first contact (its start to the first separation)"),
-    Real("contact_time_total", "s", &R::contact_time_total, ResultAlways, kAlways, [](F f) -> double { return f.contact->contact_time_total; }, "contact time summed over all contacts"),
-    Real("peak_force", "N", &R::peak_force, ResultAlways, kAlways, [](F f) -> double { return f.contact->peak_force; }, "largest force at a maximum-compression event"),
-    Real("max_compression", "m", &R::max_compression, ResultAlways, kAlways, [](F f) -> double { return f.contact->max_compression; },
-         "largest compression at a maximum-compression event"),
-    Count("contacts", &R::contacts, [](F f) -> double { return (double)f.contact->contacts; }, "separate contacts (1: a single impact)"),
-    Flag("ended_in_contact", &R::ended_in_contact, [](F f) -> double { return f.contact->touching ? 1 : 0; }, "1 if the run reached -impact_max_time while touching"),
-    Flag("compression_beyond_radius", &R::compression_beyond_radius,
-         [](F f) -> double { return f.sc->ball.radius > 0 && f.contact->max_compression > f.sc->ball.radius ? 1 : 0; },
-         "1 if max_compression exceeds -ball_radius (given): physically absurd (a sweep's summary counts such rows)"),
-    Real("ball_final_velocity", "m/s", &R::ball_final_velocity, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_v; }, "the ball's velocity at the end (negative: rebound)"),
-    Real("final_time", "s", &R::final_time, ResultAlways, kAlways, [](F f) -> double { return f.final_time; }, "simulated time at the end"),
-    Real("energy_in", "J", &R::energy_in, ResultAlways, kAlways, [](F f) -> double { return f.E_in; },
-         "E_in, the energy brought in: the ball's 1/2 m_b v_i^2 and a swinging bat's kinetic energy (lab frame); the *_fraction columns' denominator"),
-    Real("energy_error", "1", &R::energy_error, ResultAlways, kAlways, [](F f) -> double { return (f.energy_end - f.energy_in) / f.energy_in; },
-         "(E_end - E_0) / E_0 of the conserved total (ball work and dissipated energy included)"),
-    Real("linear_momentum_error", "1", &R::linear_momentum_error, ResultMomentumInvariant, "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
-         [](F f) -> double { return (f.end.momentum - f.start.momentum) / MomentumScale(f); }, "change of the total linear momentum / (m_b v_i) (a ball at rest: / the bat's)"),
-    Real("angular_momentum_error", "1", &R::angular_momentum_error, ResultMomentumInvariant, "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
-         [](F f) -> double { return (f.end.angular_momentum - f.start.angular_momentum) / (MomentumScale(f) * f.sc->beam.length); },
-         "change of the angular momentum about x = 0 / (m_b v_i L) (a ball at rest: the bat's momentum for m_b v_i)"),
-    Real("beam_kinetic_end", "J", &R::beam_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_kinetic; }, "the beam's kinetic energy at the end"),
-    Real("beam_strain_end", "J", &R::beam_strain_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_strain; }, "the beam's strain energy at the end"),
-    Real("ball_kinetic_end", "J", &R::ball_kinetic_end, ResultAlways, kAlways, [](F f) -> double { return f.end.ball_kinetic; }, "the ball's kinetic energy at the end (its rebound)"),
-    Real("ball_dissipated_end", "J", &R::ball_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return BallDissipated(f); },
-         "energy dissipated in the ball (0 for an elastic law)"),
-    Share(Real("ball_loss_fraction", "1", &R::ball_loss_fraction, EnergyIn, kEnergyIn,
-         [](F f) -> double {
-           const BallParams &b = f.sc->ball;
-           return (ContactElastic(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic : BallDissipated(f)) / f.E_in;
-         },
-         "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (elastic)"), "ball loss"),
-    Share(Real("rebound_fraction", "1", &R::rebound_fraction, EnergyIn, kEnergyIn,
-         [](F f) -> double { return (ContactElastic(f.sc->ball) ? f.sc->ball.loss_factor * f.sc->ball.loss_factor : 1) * f.end.ball_kinetic / f.E_in; },
-         "the ball's rebound energy 1/2 m_b v_b,final^2 / E_in (lab frame; elastic laws: times loss_factor^2); a bat at rest: acor_corrected^2"), "ball rebound"),
-    Share(Real("translation_fraction", "1", &R::translation_fraction, EnergyInTranslation, kTranslation,
-         [](F f) -> double { return f.split.rigid[(int)RigidKind::Translation] / f.E_in; }, "the structure's rigid translation P^2/2M at the end / E_in"), "translation"),
-    Share(Real("rotation_fraction", "1", &R::rotation_fraction, EnergyInRotation, kRotation, [](F f) -> double { return f.split.rigid[(int)RigidKind::Rotation] / f.E_in; },
-         "the structure's rigid rotation at the end / E_in: L_cm^2/2I_cm about its centre of mass (no held dof), L_p^2/2I_p about its pin"), "rotation"),
-    Share(Real("vibration_fraction", "1", &R::vibration_fraction, EnergyIn, kEnergyIn, [](F f) -> double { return f.split.flexible[(int)Part::Beam] / f.E_in; },
-         "the beam's bending (and shear) at the end / E_in: its kinetic and strain energy less its share of the rigid motions"), "bending"),
-    Real("bbs", "m/s", &R::bbs, ResultAlways, kAlways, [](F f) -> double { return -f.end.ball_v; }, "batted-ball speed, away from the bat (lab frame; a bat at rest: acor v_i)"),
-    Real("collision_efficiency", "1", &R::collision_efficiency, ResultAlways, kAlways, [](F f) -> double { return CollisionEfficiency(f); },
-         "q = (bbs - V(x)) / (v_ball + V(x)), the ACOR in the bat's frame (a bat at rest: acor)"),
-    Real("bat_speed_end", "m/s", &R::bat_speed_end, ResultNoHeldDof, kNoHeld, [](F f) -> double { return -f.end.beam_momentum / f.beam_mass; },
-         "the bat's centre-of-mass speed toward the ball at the end"),
-    Real("bat_angular_velocity_end", "rad/s", &R::bat_angular_velocity_end, ResultNoHeldDof, kNoHeld,
-         [](F f) -> double { return f.inertia_cm > 0 ? -f.moment_cm / f.inertia_cm : 0; }, "the bat's angular velocity about its centre of mass at the end"),
-    Real("recoil_factor", "1", &R::recoil_factor, ResultFreePivot, "with -beam_pivot and no other support or grip (a rig free to turn about its pivot)",
-         [](F f) -> double { return RigOf(f).recoil_factor; }, "r = m_b (x - x_p)^2 / I_p of the rigid pivoted rig"),
-    Real("bbcor", "1", &R::bbcor, ResultFreePivot, "with -beam_pivot and no other support or grip (a rig free to turn about its pivot)",
-         [](F f) -> double { return PivotBBCOR(RigOf(f), CollisionEfficiency(f)); }, "bat-ball COR e_A (1 + r) + r of the pivoted rig"),
-    Real("grip_force_peak", "N", &R::grip_force_peak, ResultGripped, "with -grip", [](F f) -> double { return f.peaks->grip_force; },
-         "largest |force of the bat on the hands| over the steps"),
-    Real("grip_force_peak_time", "s", &R::grip_force_peak_time, ResultGripped, "with -grip", [](F f) -> double { return f.peaks->grip_force_time; }, "when"),
-    Real("grip_stored_end", "J", &R::grip_stored_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.grip_stored; }, "the grip's stored energy at the end"),
-    Real("hand_work_end", "J", &R::hand_work_end, ResultGripped, "with -grip", [](F f) -> double { return f.end.hand_work; }, "work the hands did on the bat by the end"),
-    Share(Real("grip_fraction", "1", &R::grip_fraction, EnergyInGrip, "with -grip", [](F f) -> double { return f.end.grip_stored / f.E_in; }, "grip_stored_end / E_in"), "grip"),
-    Share(Real("hands_fraction", "1", &R::hands_fraction, EnergyInGrip, "with -grip", [](F f) -> double { return -f.end.hand_work / f.E_in; },
-         "the energy the bat gave the hands, -hand_work_end / E_in (< 0: the hands gave energy)"), "to the hands"),
-    Real("shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.end.shell_energy; },
-         "the barrel wall's energy at the end (stored and kinetic): what it did not give back"),
-    Share(Real("wall_fraction", "1", &R::wall_fraction, EnergyInWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.split.flexible[(int)Part::Wall] / f.E_in; },
-         "shell_energy_end / E_in"), "wall"),
-    Real("shell_energy_peak", "J", &R::shell_energy_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->shell_energy; },
-         "the barrel wall's largest energy over the steps (NaN from the modal reference)"),
-    Real("wall_deflection_peak", "m", &R::wall_deflection_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->wall_deflection; },
-         "the barrel wall's largest displacement under the ball over the steps (NaN from the modal reference)"),
-    Flag("wall_deflection_large", &R::wall_deflection_large,
-         [](F f) -> double {
-           const BeamParams &b = f.sc->beam;
-           const PetscReal   R = b.hoop.on || b.shell.on ? ShellRadiusAt(b, f.sc->impact.x) : 0;
-           return R > 0 && f.peaks->wall_deflection > kWallDeflectionLimit * R ? 1 : 0;
-         },
-         "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear wall far outside its range, physically absurd"),
-    Real("hoop_frequency", "Hz", &R::hoop_frequency, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
-         [](F f) -> double { return f.sc->beam.hoop.on ? f.sc->beam.hoop.frequency : ShellLowestFrequency(f.sc->beam, 2); },
-         "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h"),
-    Real("bed_energy_end", "J", &R::bed_energy_end, ResultStringBed, kStrings, [](F f) -> double { return f.end.bed_energy; },
-         "the string bed's energy at the end (its strain relative to the frame and its strings' kinetic energy)"),
-    Share(Real("bed_fraction", "1", &R::bed_fraction, EnergyInBed, kStrings, [](F f) -> double { return f.split.flexible[(int)Part::Bed] / f.E_in; },
-         "the string bed's vibration at the end / E_in: bed_energy_end less its share of the rigid motions"), "strings"),
-    Real("bed_energy_peak", "J", &R::bed_energy_peak, ResultStringBed, kStrings, [](F f) -> double { return f.peaks->bed_energy; },
-         "the string bed's largest energy over the steps (NaN from the modal reference)"),
-    Real("bed_deflection_peak", "m", &R::bed_deflection_peak, ResultStringBed, kStrings, [](F f) -> double { return f.peaks->bed_deflection; },
-         "the string bed's largest deflection from its frame, max |w - y - z phi| over its nodes and the steps (NaN from the modal reference)"),
-    Real("twist_energy_end", "J", &R::twist_energy_end, ResultTwist, "with -beam_torsion", [](F f) -> double { return f.end.twist_energy; },
-         "the frame's roll energy at the end: the twist's strain and the sections' spin rho J phi_t^2/2 (a string bed's roll is in bed_energy_end)"),
-    Share(Real("twist_fraction", "1", &R::twist_fraction, EnergyInTwist, "with -beam_torsion", [](F f) -> double { return f.split.flexible[(int)Part::Twist] / f.E_in; },
-         "the frame's twisting at the end / E_in: twist_energy_end less its share of the rigid roll"), "twist"),
-    Real("roll_rate_end", "rad/s", &R::roll_rate_end, ResultTwistNoHeld, "with -beam_torsion, a moving ball and no held dof",
-         [](F f) -> double { return f.inertia_roll > 0 ? f.moment_roll / f.inertia_roll : 0; }, "the frame's rigid roll rate about its axis at the end (> 0: the +z side moves toward +y, away from the ball's approach)"),
-    Share(Real("roll_fraction", "1", &R::roll_fraction, EnergyInRoll, kRoll, [](F f) -> double { return f.split.rigid[(int)RigidKind::Roll] / f.E_in; },
-         "the structure's rigid roll L_x^2/2I_x about the frame's axis at the end / E_in (not in twist_fraction or bed_fraction)"), "roll"),
-    Real("roll_momentum_error", "1", &R::roll_momentum_error, ResultTwistInvariant, "with -beam_torsion where momentum is an invariant",
-         [](F f) -> double { return (f.end.roll_momentum - f.start.roll_momentum) / (MomentumScale(f) * f.sc->beam.length); },
-         "change of the angular momentum about the frame's axis / (m_b v_i L)"),
-    Real("segment_kinetic_peak", "J", &R::segment_kinetic_peak, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic; },
-         "peak kinetic energy of the monitored segment"),
-    Real("segment_kinetic_peak_time", "s", &R::segment_kinetic_peak_time, ResultSegment, "with -monitor_segment", [](F f) -> double { return f.peaks->segment_kinetic_time; }, "when"),
+    Real(
+      "x", "m", &R::x, ResultAlways, kAlways, [](F f) -> double { return f.sc->impact.x; }, "impact point x_imp"),
+    Real(
+      "acor", "1", &R::acor, BallMoves, kBallMoves, [](F f) -> double { return Acor(f); },
+      "apparent coefficient of restitution -v_b,final / v_i"),
+    Real(
+      "acor_corrected", "1", &R::acor_corrected, BallMoves, kBallMoves, [](F f) -> double { return AcorCorrected(f); },
+      "an elastic law (linear, hertz): acor x -ball_loss_factor; otherwise acor"),
+    Real(
+      "contact_time", "s", &R::contact_time, ResultAlways, kAlways,
+      [](F f) -> double { return f.contact->contact_time; },
+      "duration of the first contact (its start to the first separation)"),
+    Real(
+      "contact_time_total", "s", &R::contact_time_total, ResultAlways, kAlways,
+      [](F f) -> double { return f.contact->contact_time_total; }, "contact time summed over all contacts"),
+    Real(
+      "peak_force", "N", &R::peak_force, ResultAlways, kAlways, [](F f) -> double { return f.contact->peak_force; },
+      "largest force at a maximum-compression event"),
+    Real(
+      "max_compression", "m", &R::max_compression, ResultAlways, kAlways,
+      [](F f) -> double { return f.contact->max_compression; }, "largest compression at a maximum-compression event"),
+    Count(
+      "contacts", &R::contacts, [](F f) -> double { return (double)f.contact->contacts; },
+      "separate contacts (1: a single impact)"),
+    Flag(
+      "ended_in_contact", &R::ended_in_contact, [](F f) -> double { return f.contact->touching ? 1 : 0; },
+      "1 if the run reached -impact_max_time while touching"),
+    Flag(
+      "compression_beyond_radius", &R::compression_beyond_radius,
+      [](F f) -> double { return f.sc->ball.radius > 0 && f.contact->max_compression > f.sc->ball.radius ? 1 : 0; },
+      "1 if max_compression exceeds -ball_radius (given): physically absurd (a sweep's summary counts such rows)"),
+    Real(
+      "ball_final_velocity", "m/s", &R::ball_final_velocity, ResultAlways, kAlways,
+      [](F f) -> double { return f.end.ball_v; }, "the ball's velocity at the end (negative: rebound)"),
+    Real(
+      "final_time", "s", &R::final_time, ResultAlways, kAlways, [](F f) -> double { return f.final_time; },
+      "simulated time at the end"),
+    Real(
+      "energy_in", "J", &R::energy_in, ResultAlways, kAlways, [](F f) -> double { return f.E_in; },
+      "E_in, the energy brought in: the ball's 1/2 m_b v_i^2 and a swinging bat's kinetic energy (lab frame); the "
+      "*_fraction columns' denominator"),
+    Real(
+      "energy_error", "1", &R::energy_error, ResultAlways, kAlways,
+      [](F f) -> double { return (f.energy_end - f.energy_in) / f.energy_in; },
+      "(E_end - E_0) / E_0 of the conserved total (ball work and dissipated energy included)"),
+    Real(
+      "linear_momentum_error", "1", &R::linear_momentum_error, ResultMomentumInvariant,
+      "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
+      [](F f) -> double { return (f.end.momentum - f.start.momentum) / MomentumScale(f); },
+      "change of the total linear momentum / (m_b v_i) (a ball at rest: / the bat's)"),
+    Real(
+      "angular_momentum_error", "1", &R::angular_momentum_error, ResultMomentumInvariant,
+      "where momentum is an invariant: no held dof, no -grip, -beam_damping_mass 0",
+      [](F f) -> double {
+        return (f.end.angular_momentum - f.start.angular_momentum) / (MomentumScale(f) * f.sc->beam.length);
+      },
+      "change of the angular momentum about x = 0 / (m_b v_i L) (a ball at rest: the bat's momentum for m_b v_i)"),
+    Real(
+      "beam_kinetic_end", "J", &R::beam_kinetic_end, ResultAlways, kAlways,
+      [](F f) -> double { return f.end.beam_kinetic; }, "the beam's kinetic energy at the end"),
+    Real(
+      "beam_strain_end", "J", &R::beam_strain_end, ResultAlways, kAlways,
+      [](F f) -> double { return f.end.beam_strain; }, "the beam's strain energy at the end"),
+    Real(
+      "ball_kinetic_end", "J", &R::ball_kinetic_end, ResultAlways, kAlways,
+      [](F f) -> double { return f.end.ball_kinetic; }, "the ball's kinetic energy at the end (its rebound)"),
+    Real(
+      "ball_dissipated_end", "J", &R::ball_dissipated_end, ResultAlways, kAlways,
+      [](F f) -> double { return BallDissipated(f); }, "energy dissipated in the ball (0 for an elastic law)"),
+    Share(Real(
+            "ball_loss_fraction", "1", &R::ball_loss_fraction, EnergyIn, kEnergyIn,
+            [](F f) -> double {
+              const BallParams &b = f.sc->ball;
+              return (ContactElastic(b) ? (1 - b.loss_factor * b.loss_factor) * f.end.ball_kinetic
+                                        : BallDissipated(f)) /
+                     f.E_in;
+            },
+            "the ball's loss / E_in: dissipated (hysteresis); (1 - loss_factor^2) of its rebound energy (elastic)"),
+          "ball loss"),
+    Share(Real(
+            "rebound_fraction", "1", &R::rebound_fraction, EnergyIn, kEnergyIn,
+            [](F f) -> double {
+              return (ContactElastic(f.sc->ball) ? f.sc->ball.loss_factor * f.sc->ball.loss_factor : 1) *
+                     f.end.ball_kinetic / f.E_in;
+            },
+            "the ball's rebound energy 1/2 m_b v_b,final^2 / E_in (lab frame; elastic laws: times loss_factor^2); a "
+            "bat at rest: acor_corrected^2"),
+          "ball rebound"),
+    Share(Real(
+            "translation_fraction", "1", &R::translation_fraction, EnergyInTranslation, kTranslation,
+            [](F f) -> double { return f.split.rigid[(int)RigidKind::Translation] / f.E_in; },
+            "the structure's rigid translation P^2/2M at the end / E_in"),
+          "translation"),
+    Share(Real(
+            "rotation_fraction", "1", &R::rotation_fraction, EnergyInRotation, kRotation,
+            [](F f) -> double { return f.split.rigid[(int)RigidKind::Rotation] / f.E_in; },
+            "the structure's rigid rotation at the end / E_in: L_cm^2/2I_cm about its centre of mass (no held dof), "
+            "L_p^2/2I_p about its pin"),
+          "rotation"),
+    Share(Real(
+            "vibration_fraction", "1", &R::vibration_fraction, EnergyIn, kEnergyIn,
+            [](F f) -> double { return f.split.flexible[(int)Part::Beam] / f.E_in; },
+            "the beam's bending (and shear) at the end / E_in: its kinetic and strain energy less its share of the "
+            "rigid motions"),
+          "bending"),
+    Real(
+      "bbs", "m/s", &R::bbs, ResultAlways, kAlways, [](F f) -> double { return -f.end.ball_v; },
+      "batted-ball speed, away from the bat (lab frame; a bat at rest: acor v_i)"),
+    Real(
+      "collision_efficiency", "1", &R::collision_efficiency, ResultAlways, kAlways,
+      [](F f) -> double { return CollisionEfficiency(f); },
+      "q = (bbs - V(x)) / (v_ball + V(x)), the ACOR in the bat's frame (a bat at rest: acor)"),
+    Real(
+      "bat_speed_end", "m/s", &R::bat_speed_end, ResultNoHeldDof, kNoHeld,
+      [](F f) -> double { return -f.end.beam_momentum / f.beam_mass; },
+      "the bat's centre-of-mass speed toward the ball at the end"),
+    Real(
+      "bat_angular_velocity_end", "rad/s", &R::bat_angular_velocity_end, ResultNoHeldDof, kNoHeld,
+      [](F f) -> double { return f.inertia_cm > 0 ? -f.moment_cm / f.inertia_cm : 0; },
+      "the bat's angular velocity about its centre of mass at the end"),
+    Real(
+      "recoil_factor", "1", &R::recoil_factor, ResultFreePivot,
+      "with -beam_pivot and no other support or grip (a rig free to turn about its pivot)",
+      [](F f) -> double { return RigOf(f).recoil_factor; }, "r = m_b (x - x_p)^2 / I_p of the rigid pivoted rig"),
+    Real(
+      "bbcor", "1", &R::bbcor, ResultFreePivot,
+      "with -beam_pivot and no other support or grip (a rig free to turn about its pivot)",
+      [](F f) -> double { return PivotBBCOR(RigOf(f), CollisionEfficiency(f)); },
+      "bat-ball COR e_A (1 + r) + r of the pivoted rig"),
+    Real(
+      "grip_force_peak", "N", &R::grip_force_peak, ResultGripped, "with -grip",
+      [](F f) -> double { return f.peaks->grip_force; }, "largest |force of the bat on the hands| over the steps"),
+    Real(
+      "grip_force_peak_time", "s", &R::grip_force_peak_time, ResultGripped, "with -grip",
+      [](F f) -> double { return f.peaks->grip_force_time; }, "when"),
+    Real(
+      "grip_stored_end", "J", &R::grip_stored_end, ResultGripped, "with -grip",
+      [](F f) -> double { return f.end.grip_stored; }, "the grip's stored energy at the end"),
+    Real(
+      "hand_work_end", "J", &R::hand_work_end, ResultGripped, "with -grip",
+      [](F f) -> double { return f.end.hand_work; }, "work the hands did on the bat by the end"),
+    Share(Real(
+            "grip_fraction", "1", &R::grip_fraction, EnergyInGrip, "with -grip",
+            [](F f) -> double { return f.end.grip_stored / f.E_in; }, "grip_stored_end / E_in"),
+          "grip"),
+    Share(Real(
+            "hands_fraction", "1", &R::hands_fraction, EnergyInGrip, "with -grip",
+            [](F f) -> double { return -f.end.hand_work / f.E_in; },
+            "the energy the bat gave the hands, -hand_work_end / E_in (< 0: the hands gave energy)"),
+          "to the hands"),
+    Real(
+      "shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
+      [](F f) -> double { return f.end.shell_energy; },
+      "the barrel wall's energy at the end (stored and kinetic): what it did not give back"),
+    Share(Real(
+            "wall_fraction", "1", &R::wall_fraction, EnergyInWall, "with -barrel_hoop_frequency or -beam_shell",
+            [](F f) -> double { return f.split.flexible[(int)Part::Wall] / f.E_in; }, "shell_energy_end / E_in"),
+          "wall"),
+    Real(
+      "shell_energy_peak", "J", &R::shell_energy_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
+      [](F f) -> double { return f.peaks->shell_energy; },
+      "the barrel wall's largest energy over the steps (NaN from the modal reference)"),
+    Real(
+      "wall_deflection_peak", "m", &R::wall_deflection_peak, ResultBarrelWall,
+      "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->wall_deflection; },
+      "the barrel wall's largest displacement under the ball over the steps (NaN from the modal reference)"),
+    Flag(
+      "wall_deflection_large", &R::wall_deflection_large,
+      [](F f) -> double {
+        const BeamParams &b = f.sc->beam;
+        const PetscReal   R = b.hoop.on || b.shell.on ? ShellRadiusAt(b, f.sc->impact.x) : 0;
+        return R > 0 && f.peaks->wall_deflection > kWallDeflectionLimit * R ? 1 : 0;
+      },
+      "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear "
+      "wall far outside its range, physically absurd"),
+    Real(
+      "hoop_frequency", "Hz", &R::hoop_frequency, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
+      [](F f) -> double {
+        return f.sc->beam.hoop.on ? f.sc->beam.hoop.frequency : ShellLowestFrequency(f.sc->beam, 2);
+      },
+      "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h"),
+    Real(
+      "bed_energy_end", "J", &R::bed_energy_end, ResultStringBed, kStrings,
+      [](F f) -> double { return f.end.bed_energy; },
+      "the string bed's energy at the end (its strain relative to the frame and its strings' kinetic energy)"),
+    Share(Real(
+            "bed_fraction", "1", &R::bed_fraction, EnergyInBed, kStrings,
+            [](F f) -> double { return f.split.flexible[(int)Part::Bed] / f.E_in; },
+            "the string bed's vibration at the end / E_in: bed_energy_end less its share of the rigid motions"),
+          "strings"),
+    Real(
+      "bed_energy_peak", "J", &R::bed_energy_peak, ResultStringBed, kStrings,
+      [](F f) -> double { return f.peaks->bed_energy; },
+      "the string bed's largest energy over the steps (NaN from the modal reference)"),
+    Real(
+      "bed_deflection_peak", "m", &R::bed_deflection_peak, ResultStringBed, kStrings,
+      [](F f) -> double { return f.peaks->bed_deflection; },
+      "the string bed's largest deflection from its frame, max |w - y - z phi| over its nodes and the steps (NaN from "
+      "the modal reference)"),
+    Real(
+      "twist_energy_end", "J", &R::twist_energy_end, ResultTwist, "with -beam_torsion",
+      [](F f) -> double { return f.end.twist_energy; },
+      "the frame's roll energy at the end: the twist's strain and the sections' spin rho J phi_t^2/2 (a string bed's "
+      "roll is in bed_energy_end)"),
+    Share(Real(
+            "twist_fraction", "1", &R::twist_fraction, EnergyInTwist, "with -beam_torsion",
+            [](F f) -> double { return f.split.flexible[(int)Part::Twist] / f.E_in; },
+            "the frame's twisting at the end / E_in: twist_energy_end less its share of the rigid roll"),
+          "twist"),
+    Real(
+      "roll_rate_end", "rad/s", &R::roll_rate_end, ResultTwistNoHeld,
+      "with -beam_torsion, a moving ball and no held dof",
+      [](F f) -> double { return f.inertia_roll > 0 ? f.moment_roll / f.inertia_roll : 0; },
+      "the frame's rigid roll rate about its axis at the end (> 0: the +z side moves toward +y, away from the ball's "
+      "approach)"),
+    Share(Real(
+            "roll_fraction", "1", &R::roll_fraction, EnergyInRoll, kRoll,
+            [](F f) -> double { return f.split.rigid[(int)RigidKind::Roll] / f.E_in; },
+            "the structure's rigid roll L_x^2/2I_x about the frame's axis at the end / E_in (not in twist_fraction or "
+            "bed_fraction)"),
+          "roll"),
+    Real(
+      "roll_momentum_error", "1", &R::roll_momentum_error, ResultTwistInvariant,
+      "with -beam_torsion where momentum is an invariant",
+      [](F f) -> double {
+        return (f.end.roll_momentum - f.start.roll_momentum) / (MomentumScale(f) * f.sc->beam.length);
+      },
+      "change of the angular momentum about the frame's axis / (m_b v_i L)"),
+    Real(
+      "segment_kinetic_peak", "J", &R::segment_kinetic_peak, ResultSegment, "with -monitor_segment",
+      [](F f) -> double { return f.peaks->segment_kinetic; }, "peak kinetic energy of the monitored segment"),
+    Real(
+      "segment_kinetic_peak_time", "s", &R::segment_kinetic_peak_time, ResultSegment, "with -monitor_segment",
+      [](F f) -> double { return f.peaks->segment_kinetic_time; }, "when"),
   };
 }
 
 // The oblique impact (run/oblique.hpp) and the batted ball's flight. Along the line of centres
 // the columns above are the run's (acor, bbs: the normal components); these are the ball's
 // whole exit.
-const char *const kOblique = "an oblique impact: -impact_offset or -ball_spin not 0, or -flight (a head-on hit: exit_speed = bbs, launch_angle 0, no spin)";
+const char *const kOblique = "an oblique impact: -impact_offset or -ball_spin not 0, or -flight (a head-on hit: "
+                             "exit_speed = bbs, launch_angle 0, no spin)";
 const char *const kFlight  = "with -flight";
-const char *const kObliqueFlexible = "an oblique impact with -impact_tangential_plane flexible (the default; 0 where no friction force acts)";
+const char *const kObliqueFlexible = "an oblique impact with -impact_tangential_plane flexible (the default; 0 where "
+                                     "no friction force acts)";
 std::vector<ResultColumn> ObliqueColumns()
 {
   return {
-    Real("exit_speed", "m/s", &R::exit_speed, ResultOblique, kOblique, [](F f) -> double { return f.oblique->exit.speed; }, "the batted ball's speed, normal and tangential parts together (lab frame)"),
-    Real("launch_angle", "deg", &R::launch_angle, ResultOblique, kOblique, [](F f) -> double { return f.oblique->exit.launch_angle; },
-         "the batted ball's direction from the reversed incoming direction, > 0 upward"),
-    Real("spin", "rad/s", &R::spin, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin; }, "the batted ball's spin, > 0 backspin"),
-    Real("spin_rpm", "rpm", &R::spin_rpm, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin * 30 / M_PI; }, "the same in revolutions per minute"),
-    Real("friction_dissipated", "J", &R::friction_dissipated, ResultOblique, kOblique,
-         [](F f) -> double { return f.oblique->contact.dissipated - f.oblique->contact.stiffness_work; },
-         "energy the tangential contact took from the motions: friction's sliding, and the tangential spring's (its stiffness follows F_n); its own term, not in energy_error's E (the normal run's)"),
-    Real("bat_vibration_tangential", "J", &R::bat_vibration_tangential, ResultObliqueFlexible, kObliqueFlexible, [](F f) -> double { return f.oblique->plane_vibration; },
-         "energy left in the bat's vibration in its second plane (across the line of centres) by the friction force; its own term, beside friction_dissipated"),
-    Real("bat_damping_tangential", "J", &R::bat_damping_tangential, ResultObliqueFlexible, kObliqueFlexible, [](F f) -> double { return f.oblique->plane_damped; },
-         "energy the bat's damping (-beam_damping_*) took in its second plane up to the end of the contact; 0 for an undamped bat; its own term, beside bat_vibration_tangential"),
-    Real("distance", "m", &R::distance, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.distance; }, "the batted ball's carry: launch point to landing, horizontal"),
-    Real("apex", "m", &R::apex, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.apex; }, "the flight's highest point above the ground"),
-    Real("hang_time", "s", &R::hang_time, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.landing.hang_time; }, "the flight's time from launch to landing"),
+    Real(
+      "exit_speed", "m/s", &R::exit_speed, ResultOblique, kOblique, [](F f) -> double { return f.oblique->exit.speed; },
+      "the batted ball's speed, normal and tangential parts together (lab frame)"),
+    Real(
+      "launch_angle", "deg", &R::launch_angle, ResultOblique, kOblique,
+      [](F f) -> double { return f.oblique->exit.launch_angle; },
+      "the batted ball's direction from the reversed incoming direction, > 0 upward"),
+    Real(
+      "spin", "rad/s", &R::spin, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin; },
+      "the batted ball's spin, > 0 backspin"),
+    Real(
+      "spin_rpm", "rpm", &R::spin_rpm, ResultOblique, kOblique,
+      [](F f) -> double { return f.oblique->after.spin * 30 / M_PI; }, "the same in revolutions per minute"),
+    Real(
+      "friction_dissipated", "J", &R::friction_dissipated, ResultOblique, kOblique,
+      [](F f) -> double { return f.oblique->contact.dissipated - f.oblique->contact.stiffness_work; },
+      "energy the tangential contact took from the motions: friction's sliding, and the tangential spring's (its "
+      "stiffness follows F_n); its own term, not in energy_error's E (the normal run's)"),
+    Real(
+      "bat_vibration_tangential", "J", &R::bat_vibration_tangential, ResultObliqueFlexible, kObliqueFlexible,
+      [](F f) -> double { return f.oblique->plane_vibration; },
+      "energy left in the bat's vibration in its second plane (across the line of centres) by the friction force; its "
+      "own term, beside friction_dissipated"),
+    Real(
+      "bat_damping_tangential", "J", &R::bat_damping_tangential, ResultObliqueFlexible, kObliqueFlexible,
+      [](F f) -> double { return f.oblique->plane_damped; },
+      "energy the bat's damping (-beam_damping_*) took in its second plane up to the end of the contact; 0 for an "
+      "undamped bat; its own term, beside bat_vibration_tangential"),
+    Real(
+      "distance", "m", &R::distance, ResultFlight, kFlight,
+      [](F f) -> double { return f.oblique->flight.landing.distance; },
+      "the batted ball's carry: launch point to landing, horizontal"),
+    Real(
+      "apex", "m", &R::apex, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.apex; },
+      "the flight's highest point above the ground"),
+    Real(
+      "hang_time", "s", &R::hang_time, ResultFlight, kFlight,
+      [](F f) -> double { return f.oblique->flight.landing.hang_time; }, "the flight's time from launch to landing"),
   };
 }
 
@@ -306,16 +475,27 @@ std::vector<ResultColumn> CostAndLaterColumns()
     Count("nonlinear_its", &R::nonlinear_its, nullptr, "Newton iterations"),
     Count("linear_its", &R::linear_its, nullptr, "Krylov iterations (preonly LU: one per solve)"),
     Real("wall_time", "s", &R::wall_time, ResultAlways, kAlways, nullptr, "wall-clock time of the time stepping"),
-    Real("dt_nominal", "s", &R::dt_nominal, ResultAlways, kAlways, nullptr, "the fixed step, or the first step of an adaptive run (0 for modal)"),
-    Real("dt_stable", "s", &R::dt_stable, ResultAlways, kAlways, nullptr, "explicit stability limit y*/omega_max (0: not explicit)"),
-    Real("beam_dissipated_end", "J", &R::beam_dissipated_end, ResultAlways, kAlways, [](F f) -> double { return f.end.beam_dissipated; },
-         "energy the beam's damping (and a grip's damper) dissipated by the end (0 undamped)"),
-    Share(Real("damping_fraction", "1", &R::damping_fraction, EnergyIn, kEnergyIn, [](F f) -> double { return f.end.beam_dissipated / f.E_in; }, "beam_dissipated_end / E_in"), "damping"),
-    Real("rigid_acor", "1", &R::rigid_acor, ResultFreeBeamAtRest, "a free beam at rest: no held dof, no -grip, no swing",
-         [](F f) -> double { return RigidACOR(f.sc->ball.mass, RigidMassAt(f), f.sc->impact.rigid_loss_fraction); },
-         "Eq. (11) with the loss fraction f (a sweep's -rigid_loss_fraction; 0 for -task impact)"),
-    Real("rigid_forced_loss_fraction", "1", &R::rigid_forced_loss_fraction, ResultFreeBeamAtRest, "a free beam at rest: no held dof, no -grip, no swing",
-         [](F f) -> double { return RigidForcedLossFraction(f.sc->ball.mass, RigidMassAt(f), AcorCorrected(f)); }, "the f for which Eq. (11) gives acor_corrected"),
+    Real("dt_nominal", "s", &R::dt_nominal, ResultAlways, kAlways, nullptr,
+         "the fixed step, or the first step of an adaptive run (0 for modal)"),
+    Real("dt_stable", "s", &R::dt_stable, ResultAlways, kAlways, nullptr,
+         "explicit stability limit y*/omega_max (0: not explicit)"),
+    Real(
+      "beam_dissipated_end", "J", &R::beam_dissipated_end, ResultAlways, kAlways,
+      [](F f) -> double { return f.end.beam_dissipated; },
+      "energy the beam's damping (and a grip's damper) dissipated by the end (0 undamped)"),
+    Share(Real(
+            "damping_fraction", "1", &R::damping_fraction, EnergyIn, kEnergyIn,
+            [](F f) -> double { return f.end.beam_dissipated / f.E_in; }, "beam_dissipated_end / E_in"),
+          "damping"),
+    Real(
+      "rigid_acor", "1", &R::rigid_acor, ResultFreeBeamAtRest, "a free beam at rest: no held dof, no -grip, no swing",
+      [](F f) -> double { return RigidACOR(f.sc->ball.mass, RigidMassAt(f), f.sc->impact.rigid_loss_fraction); },
+      "Eq. (11) with the loss fraction f (a sweep's -rigid_loss_fraction; 0 for -task impact)"),
+    Real(
+      "rigid_forced_loss_fraction", "1", &R::rigid_forced_loss_fraction, ResultFreeBeamAtRest,
+      "a free beam at rest: no held dof, no -grip, no swing",
+      [](F f) -> double { return RigidForcedLossFraction(f.sc->ball.mass, RigidMassAt(f), AcorCorrected(f)); },
+      "the f for which Eq. (11) gives acor_corrected"),
   };
 }
 
@@ -343,7 +523,8 @@ std::string ImpactEnergyShareText(const Scenario &sc, const ImpactResult &r)
   if (text.empty()) return "";
   char head[96], tail[96];
   std::snprintf(head, sizeof head, "energy: fractions of E_in = %.5g J: ", (double)r.energy_in);
-  std::snprintf(tail, sizeof tail, "; their sum 1 %c %.2g (the energy error)", sum - 1 < 0 ? '-' : '+', (double)std::abs(sum - 1));
+  std::snprintf(tail, sizeof tail, "; their sum 1 %c %.2g (the energy error)", sum - 1 < 0 ? '-' : '+',
+                (double)std::abs(sum - 1));
   return head + text + tail;
 }
 

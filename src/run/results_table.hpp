@@ -30,15 +30,15 @@ struct OutcomeFacts {
   const Scenario     *sc      = nullptr;
   const ContactTally *contact = nullptr;
   const MonitorPeaks *peaks   = nullptr;
-  StateMeasures       start, end;          // at t = 0 and at the end of the run
-  PetscReal           energy_in  = 0;      // J, the conserved total at t = 0 (StateMeasures::total)
-  PetscReal           energy_end = 0;      // J, the same at the end
-  PetscReal           final_time = 0;      // s
-  PetscReal           V_x        = 0;      // m/s, the swinging bat's speed toward the ball at the impact point (0 at rest)
+  StateMeasures       start, end;     // at t = 0 and at the end of the run
+  PetscReal           energy_in  = 0; // J, the conserved total at t = 0 (StateMeasures::total)
+  PetscReal           energy_end = 0; // J, the same at the end
+  PetscReal           final_time = 0; // s
+  PetscReal           V_x        = 0; // m/s, the swinging bat's speed toward the ball at the impact point (0 at rest)
   // J, the energy brought into the impact: the ball's incident kinetic energy 1/2 m_b v_i^2 and a
   // swinging bat's kinetic energy at t = 0 (lab frame; 0 for a bat at rest). The fractions'
   // denominator (0: a ball at rest and a bat at rest, which -ball_speed refuses).
-  PetscReal           E_in       = 0;
+  PetscReal E_in = 0;
   // The beam's rigid-body part at the end, over the dofs that can move: mass (kg), moment of
   // inertia about its centre of mass (kg m^2, with a Timoshenko section's rotary inertia),
   // angular momentum about the centre of mass (kg m^2/s).
@@ -49,7 +49,7 @@ struct OutcomeFacts {
   PetscReal inertia_roll = 0, moment_roll = 0;
   // The structure's energy at the end in its rigid motions and, part by part, the rest (J;
   // run/energy_parts.hpp): the fraction columns' numerators.
-  EnergySplit split;
+  EnergySplit          split;
   const ObliqueRecord *oblique = nullptr; // an oblique impact's tangential contact, exit and flight
 };
 
@@ -59,17 +59,18 @@ using ResultApplies = bool (*)(const Scenario &sc);
 // The predicates of the table (also for messages and tests).
 bool ResultAlways(const Scenario &sc);
 bool ResultNoHeldDof(const Scenario &sc);
-bool ResultOblique(const Scenario &sc);            // -impact_offset or -ball_spin not 0, or -flight (run/oblique.hpp)
-bool ResultObliqueFlexible(const Scenario &sc);    // the same with the bat flexible in its second plane (-impact_tangential_plane flexible)
-bool ResultFlight(const Scenario &sc);             // -flight          // no end clamped or pinned, no clamped region, no pivot
-bool ResultMomentumInvariant(const Scenario &sc);  // no held dof, no grip, no mass-proportional damping
-bool ResultFreeBeamAtRest(const Scenario &sc);     // no held dof, no grip, no swing (Eq. 11)
-bool ResultFreePivot(const Scenario &sc);          // -beam_pivot and no other support or grip: the rig turns freely
-bool ResultGripped(const Scenario &sc);            // -grip
-bool ResultStringBed(const Scenario &sc);          // -strings_frame held or beam
-bool ResultTwist(const Scenario &sc);              // -beam_torsion
-bool ResultBarrelWall(const Scenario &sc);         // -barrel_hoop_frequency or -beam_shell
-bool ResultSegment(const Scenario &sc);            // -monitor_segment
+bool ResultOblique(const Scenario &sc); // -impact_offset or -ball_spin not 0, or -flight (run/oblique.hpp)
+bool ResultObliqueFlexible(
+  const Scenario &sc); // the same with the bat flexible in its second plane (-impact_tangential_plane flexible)
+bool ResultFlight(const Scenario &sc); // -flight          // no end clamped or pinned, no clamped region, no pivot
+bool ResultMomentumInvariant(const Scenario &sc); // no held dof, no grip, no mass-proportional damping
+bool ResultFreeBeamAtRest(const Scenario &sc);    // no held dof, no grip, no swing (Eq. 11)
+bool ResultFreePivot(const Scenario &sc);         // -beam_pivot and no other support or grip: the rig turns freely
+bool ResultGripped(const Scenario &sc);           // -grip
+bool ResultStringBed(const Scenario &sc);         // -strings_frame held or beam
+bool ResultTwist(const Scenario &sc);             // -beam_torsion
+bool ResultBarrelWall(const Scenario &sc);        // -barrel_hoop_frequency or -beam_shell
+bool ResultSegment(const Scenario &sc);           // -monitor_segment
 
 // Why a pivoted rig does not turn freely about its pivot (the supports and grip that also hold
 // it, as options), or "" when it does or has no pivot.
@@ -77,24 +78,24 @@ std::string PivotHeldText(const Scenario &sc);
 
 struct ResultColumn {
   const char   *name;
-  const char   *unit;        // never empty ("1": dimensionless)
-  const char   *description; // one line: what it is
-  ResultApplies applies;     // false: NaN in this row
-  const char   *applies_text; // the same in words ("always", "with -grip")
+  const char   *unit;            // never empty ("1": dimensionless)
+  const char   *description;     // one line: what it is
+  ResultApplies applies;         // false: NaN in this row
+  const char   *applies_text;    // the same in words ("always", "with -grip")
   bool          integer = false; // a count: an integer dataset in an impact file (a count always applies)
   // A share of the energy brought in (the fractions that close to 1: docs/model.md section 4): its
   // short name in the summary's energy line ("ball rebound", "wall", ...); nullptr for the rest.
-  const char   *share = nullptr;
+  const char *share = nullptr;
   // How the outcome computes it (nullptr: the stepper's own counts and settings, written by the
   // driver and the stepper: the cost and integrator columns).
   double (*compute)(const OutcomeFacts &f) = nullptr;
   // Where ImpactResult holds it: exactly one of the three.
-  PetscReal ImpactResult::*real  = nullptr;
-  PetscInt ImpactResult::*count  = nullptr;
-  PetscBool ImpactResult::*flag  = nullptr;
+  PetscReal ImpactResult::*real = nullptr;
+  PetscInt ImpactResult::*count = nullptr;
+  PetscBool ImpactResult::*flag = nullptr;
 
-  double Get(const ImpactResult &r) const;      // the value as a double
-  void   Set(ImpactResult *r, double v) const;  // (the outcome's writes)
+  double Get(const ImpactResult &r) const;     // the value as a double
+  void   Set(ImpactResult *r, double v) const; // (the outcome's writes)
 };
 
 // The energy line of the summary: every share of E_in that applies, "energy: E_in 116 J: ball

@@ -14,15 +14,19 @@ namespace beamimpact {
 
 struct Scenario {
   Scenario() = default;
-  Scenario(BeamParams b, BallParams l, ImpactParams i, MonitorRequest m = MonitorRequest(), SwingParams s = SwingParams()) : beam(b), ball(l), impact(i), monitor(m), swing(s) { }
+  Scenario(BeamParams b, BallParams l, ImpactParams i, MonitorRequest m = MonitorRequest(),
+           SwingParams s = SwingParams()) :
+    beam(b), ball(l), impact(i), monitor(m), swing(s)
+  {
+  }
 
-  BeamParams     beam;    // -beam_*
-  BallParams     ball;    // -ball_*
-  ImpactParams   impact;  // -impact_*
-  MonitorRequest monitor; // -monitor_*, -snapshot_times (nothing by default)
-  SwingParams    swing;   // -bat_speed, -bat_angular_velocity (a bat at rest by default)
-  FlightAfterImpact flight; // -flight: the batted ball's flight after the impact (-flight_*, -air_*)
-  ObliqueIncoming oblique;  // set by run/oblique.cpp on the run along the normal of an oblique impact
+  BeamParams        beam;    // -beam_*
+  BallParams        ball;    // -ball_*
+  ImpactParams      impact;  // -impact_*
+  MonitorRequest    monitor; // -monitor_*, -snapshot_times (nothing by default)
+  SwingParams       swing;   // -bat_speed, -bat_angular_velocity (a bat at rest by default)
+  FlightAfterImpact flight;  // -flight: the batted ball's flight after the impact (-flight_*, -air_*)
+  ObliqueIncoming   oblique; // set by run/oblique.cpp on the run along the normal of an oblique impact
 };
 
 } // namespace beamimpact

@@ -7,12 +7,15 @@
 #include <cstdio>
 #include <limits>
 
-extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab, const int *ldab, int *ipiv, int *info);
-extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const int *ku, const int *nrhs, const double *ab, const int *ldab, const int *ipiv, double *b, const int *ldb, int *info);
+extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab, const int *ldab,
+                        int *ipiv, int *info);
+extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const int *ku, const int *nrhs,
+                        const double *ab, const int *ldab, const int *ipiv, double *b, const int *ldb, int *info);
 
 namespace beamimpact {
 
-std::vector<PetscInt> BeamTemporarySupports(const BeamSystem &sys, const std::vector<PetscInt> &dof, const std::vector<std::vector<PetscReal>> &R)
+std::vector<PetscInt> BeamTemporarySupports(const BeamSystem &sys, const std::vector<PetscInt> &dof,
+                                            const std::vector<std::vector<PetscReal>> &R)
 {
   const PetscInt                      n = (PetscInt)dof.size();
   std::vector<PetscInt>               sup;
@@ -99,7 +102,8 @@ bool BeamFactorCreate(const BeamSystem &sys, BeamFactor *F, std::string *why)
   if (F->n - F->m != (PetscInt)F->rigid.size()) {
     if (why) {
       char text[200];
-      std::snprintf(text, sizeof text, "not statically determinate: %d free dofs, %d strains, %d rigid motions", (int)F->n, F->m, (int)F->rigid.size());
+      std::snprintf(text, sizeof text, "not statically determinate: %d free dofs, %d strains, %d rigid motions",
+                    (int)F->n, F->m, (int)F->rigid.size());
       *why = text;
     }
     return false;
@@ -132,7 +136,8 @@ bool BeamFactorCreate(const BeamSystem &sys, BeamFactor *F, std::string *why)
     umin = std::min(umin, u), umax = std::max(umax, u);
   }
   F->rcond = umax > 0 ? umin / umax : 0.0;
-  if (!(F->rcond > 100 * std::numeric_limits<double>::epsilon())) return Refuse(why, "the equilibrium is conditioned beyond double precision");
+  if (!(F->rcond > 100 * std::numeric_limits<double>::epsilon()))
+    return Refuse(why, "the equilibrium is conditioned beyond double precision");
   return true;
 }
 
@@ -148,14 +153,18 @@ void BeamFactorFlexibility(const BeamFactor &F, const PetscReal *f, PetscReal *u
   }
   for (PetscInt d = 0; d < F.n; ++d)
     if (F.row[d] >= 0) x[F.row[d]] = load[d];
-  if (m > 0) dgbtrs_("N", &m, &F.kl, &F.ku, &one, F.lu.data(), &ldab, F.ipiv.data(), x.data(), &m, &info); // equilibrium: S m' = f
+  if (m > 0)
+    dgbtrs_("N", &m, &F.kl, &F.ku, &one, F.lu.data(), &ldab, F.ipiv.data(), x.data(), &m,
+            &info); // equilibrium: S m' = f
   if (G) {
     PetscReal g = 0;
     for (PetscReal v : x) g += v * v;
     *G = g;
   }
   if (!u) return;
-  if (m > 0) dgbtrs_("T", &m, &F.kl, &F.ku, &one, F.lu.data(), &ldab, F.ipiv.data(), x.data(), &m, &info); // compatibility: S^T u = m'
+  if (m > 0)
+    dgbtrs_("T", &m, &F.kl, &F.ku, &one, F.lu.data(), &ldab, F.ipiv.data(), x.data(), &m,
+            &info); // compatibility: S^T u = m'
   for (PetscInt d = 0; d < F.n; ++d) u[d] = F.row[d] >= 0 ? x[F.row[d]] : 0.0;
   for (const auto &r : F.rigid) { // M-orthogonal to the rigid modes
     PetscReal a = 0;

@@ -34,7 +34,8 @@ namespace beamimpact {
 // modes' values there are independent (each the largest after the earlier ones are eliminated):
 // statically determinate, so a self-equilibrated load has no reactions. A deflection dof where
 // one moves the mode (translation, pitch), else any (a roll: the roll field).
-std::vector<PetscInt> BeamTemporarySupports(const BeamSystem &sys, const std::vector<PetscInt> &dof, const std::vector<std::vector<PetscReal>> &R);
+std::vector<PetscInt> BeamTemporarySupports(const BeamSystem &sys, const std::vector<PetscInt> &dof,
+                                            const std::vector<std::vector<PetscReal>> &R);
 
 // The factored form of a statically determinate beam (BeamFactorCreate).
 struct BeamFactor {
@@ -45,9 +46,9 @@ struct BeamFactor {
   std::vector<PetscInt>               support; // free indices of the temporary supports, one per rigid mode
   std::vector<PetscInt>               row;     // free index -> row of S (-1 at a support)
   int                                 m = 0, kl = 0, ku = 0; // S: m x m, its sub- and super-diagonals
-  std::vector<double>                 lu;      // S's banded LU (LAPACK dgbtrf, leading dimension 2 kl + ku + 1)
+  std::vector<double>                 lu; // S's banded LU (LAPACK dgbtrf, leading dimension 2 kl + ku + 1)
   std::vector<int>                    ipiv;
-  PetscReal                           rcond = 0; // the ratio of S's smallest pivot to its largest (1: a proxy of its reciprocal condition)
+  PetscReal rcond = 0; // the ratio of S's smallest pivot to its largest (1: a proxy of its reciprocal condition)
 };
 
 // Builds the factored form of sys. Returns false with *why (if given) where the structure is not

@@ -15,7 +15,8 @@
 #include <map>
 
 extern "C" void dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, int *info);
-extern "C" void dpbtrs_(const char *uplo, const int *n, const int *kd, const int *nrhs, const double *ab, const int *ldab, double *b, const int *ldb, int *info);
+extern "C" void dpbtrs_(const char *uplo, const int *n, const int *kd, const int *nrhs, const double *ab,
+                        const int *ldab, double *b, const int *ldb, int *info);
 
 namespace beamimpact {
 
@@ -25,8 +26,9 @@ namespace {
 // K and C of the force operator (the same M, K and C have the same modes and decay rates).
 bool SameBeam(const BeamSystem &a, const BeamSystem &b)
 {
-  return a.nodes == b.nodes && a.fields == b.fields && a.ndof == b.ndof && a.bw == b.bw && a.mass == b.mass && a.held == b.held && a.band == b.band &&
-         a.forces.damping_band == b.forces.damping_band && a.forces.damping_diag == b.forces.damping_diag;
+  return a.nodes == b.nodes && a.fields == b.fields && a.ndof == b.ndof && a.bw == b.bw && a.mass == b.mass &&
+         a.held == b.held && a.band == b.band && a.forces.damping_band == b.forces.damping_band &&
+         a.forces.damping_diag == b.forces.damping_diag;
 }
 
 // The zero cluster of the computed basis (omega below 1e-3 frequency units; every flexural
@@ -45,7 +47,7 @@ void ExactRigidModes(BeamModes *m)
 {
   const ModalSystem &S = m->S;
   const PetscInt     n = S.n, count = m->Count();
-  ModalBasis        &B = m->B;
+  ModalBasis        &B  = m->B;
   PetscInt           nz = 0;
   while (nz < count && B.omega[nz] < 1e-3 * m->sys.frequency_unit) nz++;
   const auto     rigid = BeamSystemRigidMotions(m->sys);
@@ -73,12 +75,15 @@ bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
 {
   if (ModalWeighsShare(a) != ModalWeighsShare(b)) return false;
   if (ModalWeighsShare(a)) { // the same load, tolerance and time scale
-    if (a.at.n != b.at.n || a.tolerance != b.tolerance || a.contact_time != b.contact_time || a.force_exponent != b.force_exponent || a.refine_all != b.refine_all) return false;
+    if (a.at.n != b.at.n || a.tolerance != b.tolerance || a.contact_time != b.contact_time ||
+        a.force_exponent != b.force_exponent || a.refine_all != b.refine_all)
+      return false;
     for (PetscInt q = 0; q < a.at.n; ++q)
       if (a.at.dof[q] != b.at.dof[q] || a.at.w[q] != b.at.w[q]) return false;
     return true;
   }
-  return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) && (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff()) && a.refine_all == b.refine_all;
+  return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) &&
+         (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff()) && a.refine_all == b.refine_all;
 }
 
 // Whether the cached basis m is the one t asks for on the same beam: the same truncation, or
@@ -89,8 +94,10 @@ bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
 bool BasisFits(const BeamModes &m, const ModalTruncation &t)
 {
   if (SameTruncation(m.request, t)) return true;
-  const bool every_mode = m.request.modes == ModalModes::Auto && !(m.cutoff < PETSC_INFINITY) && m.omega_bound > 0; // built dense, every mode below its cut-off
-  return every_mode && t.modes == ModalModes::Auto && t.refine_all == m.request.refine_all && !(t.Cutoff() < m.omega_bound);
+  const bool every_mode = m.request.modes == ModalModes::Auto && !(m.cutoff < PETSC_INFINITY) &&
+                          m.omega_bound > 0; // built dense, every mode below its cut-off
+  return every_mode && t.modes == ModalModes::Auto && t.refine_all == m.request.refine_all &&
+         !(t.Cutoff() < m.omega_bound);
 }
 
 // One cache per group of processes (the ranks of MPI_COMM_WORLD a communicator holds, in its
@@ -164,12 +171,19 @@ static std::string SpreadRemedy(const BeamSystem &sys, PetscInt dof, double fact
   const PetscInt  f = dof % sys.fields;
   const PetscReal h = sys.L / (sys.nodes - 1);
   if (f == sys.roll_field)
-    std::snprintf(text, sizeof text, "set by the frame's roll at x = %.3g m (rho J = %.3g kg m there against its G J): raise -beam_torsion_inertia at least %.2g times (or lower -beam_torsion_stiffness)",
+    std::snprintf(text, sizeof text,
+                  "set by the frame's roll at x = %.3g m (rho J = %.3g kg m there against its G J): raise "
+                  "-beam_torsion_inertia at least %.2g times (or lower -beam_torsion_stiffness)",
                   (double)sys.NodeX(dof / sys.fields), (double)(sys.mass[dof] / h), factor);
   else if (sys.Bed(f))
-    std::snprintf(text, sizeof text, "set by the strings at x = %.3g m (their mass against their tension): raise -strings_linear_density at least %.2g times (or lower -strings_tension)",
+    std::snprintf(text, sizeof text,
+                  "set by the strings at x = %.3g m (their mass against their tension): raise -strings_linear_density "
+                  "at least %.2g times (or lower -strings_tension)",
                   (double)sys.NodeX(dof / sys.fields), factor);
-  else std::snprintf(text, sizeof text, "fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer grid N = 10241)");
+  else
+    std::snprintf(text, sizeof text,
+                  "fewer -beam_nodes (the largest grid checked against the dense modes is N = 2561, against a finer "
+                  "grid N = 10241)");
   return text;
 }
 
@@ -185,7 +199,10 @@ static double FactoredPrecisionIndex(const BeamSystem &sys)
   return std::numeric_limits<double>::epsilon() * std::sqrt(StiffnessSpread(sys)) / sys.frequency_unit;
 }
 
-bool BeamModesFactoredForm(const BeamSystem &sys, BeamFactor *F) { return ModesPrecisionIndex(sys) > kFactoredSwitch && BeamFactorCreate(sys, F); }
+bool BeamModesFactoredForm(const BeamSystem &sys, BeamFactor *F)
+{
+  return ModesPrecisionIndex(sys) > kFactoredSwitch && BeamFactorCreate(sys, F);
+}
 
 // The factored form the modes of sys come from (see above), or null (the primal path: K).
 static std::shared_ptr<const BeamFactor> FactoredFormFor(const BeamSystem &sys)
@@ -197,8 +214,10 @@ static std::shared_ptr<const BeamFactor> FactoredFormFor(const BeamSystem &sys)
 
 bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
 {
-  if (!ForceOperatorModal(sys, nullptr, nullptr, why)) return false; // a force term the modes cannot carry (the grip: a drive in time, a damper not proportional)
-  for (const auto &c : caches) // modes built for the same beam (a sweep's next point): available, without building its factor again (O(N), 15 ms at N = 40961)
+  if (!ForceOperatorModal(sys, nullptr, nullptr, why))
+    return false; // a force term the modes cannot carry (the grip: a drive in time, a damper not proportional)
+  for (const auto &c : caches) // modes built for the same beam (a sweep's next point): available, without building its
+                               // factor again (O(N), 15 ms at N = 40961)
     for (const auto &m : c.second)
       if (SameBeam(m->sys, sys)) return true;
   const double index = ModesPrecisionIndex(sys);
@@ -211,9 +230,13 @@ bool BeamModesAvailable(const BeamSystem &sys, std::string *why)
       char     text[1000];
       PetscInt where = 0;
       StiffnessSpread(sys, &where);
-      std::snprintf(text, sizeof text, "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double precision resolves in the modes (at most %.1e), and the factored form %s: %s",
-                    (int)sys.nodes, index / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon(),
-                    factored ? "is beyond it too" : ("does not apply (" + whynot + ")").c_str(), SpreadRemedy(sys, where, index / kModesPrecisionLimit).c_str());
+      std::snprintf(text, sizeof text,
+                    "on %d nodes the stiffness spreads over %.1e times its lowest mode's scale, beyond what double "
+                    "precision resolves in the modes (at most %.1e), and the factored form %s: %s",
+                    (int)sys.nodes, index / std::numeric_limits<double>::epsilon(),
+                    kModesPrecisionLimit / std::numeric_limits<double>::epsilon(),
+                    factored ? "is beyond it too" : ("does not apply (" + whynot + ")").c_str(),
+                    SpreadRemedy(sys, where, index / kModesPrecisionLimit).c_str());
       *why = text;
     }
     return false;
@@ -258,11 +281,15 @@ double RefineSeconds(const ModalSystem &S, PetscInt count, bool refine_all)
 double DenseSeconds(const ModalSystem &S, bool refine_all)
 {
   const double n = (double)S.n;
-  return (ModalRefinesEveryMode(S.n, ModalRefineHalfWidth(S), S.n) ? kDenseModesCost : kDenseDecompositionCost) * n * n * n + RefineSeconds(S, S.n, refine_all);
+  return (ModalRefinesEveryMode(S.n, ModalRefineHalfWidth(S), S.n) ? kDenseModesCost : kDenseDecompositionCost) * n *
+           n * n +
+         RefineSeconds(S, S.n, refine_all);
 }
 double PartialSeconds(const ModalSystem &S, PetscInt nev, bool refine_all)
 {
-  return (ModalRefinesEveryMode(S.n, ModalRefineHalfWidth(S), nev) ? kPartialSolveCost : kPartialDecompositionCost) * (double)S.n * (double)nev * (double)nev + RefineSeconds(S, nev, refine_all);
+  return (ModalRefinesEveryMode(S.n, ModalRefineHalfWidth(S), nev) ? kPartialSolveCost : kPartialDecompositionCost) *
+           (double)S.n * (double)nev * (double)nev +
+         RefineSeconds(S, nev, refine_all);
 }
 
 // The modes with omega^2 below sigma (rigid ones included), counted exactly by Sylvester's law
@@ -300,7 +327,10 @@ PetscInt ModesBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal sigma
 
 // The modes a partial solve asks for to reach the cut-off wc: those below it (ModesBelow) and
 // a few above, so that its last is past the cut-off.
-PetscInt ModesAskedBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal wc) { return std::min<PetscInt>(S.n, ModesBelow(sys, S, wc * wc) + 8); }
+PetscInt ModesAskedBelow(const BeamSystem &sys, const ModalSystem &S, PetscReal wc)
+{
+  return std::min<PetscInt>(S.n, ModesBelow(sys, S, wc * wc) + 8);
+}
 
 // The memory of a partial eigen-solve of nev modes of n free dofs (bytes): SLEPc's Krylov-Schur
 // basis of ncv = max(2 nev, nev + 15) vectors (its default) and the nev eigenvectors returned,
@@ -317,27 +347,40 @@ double PartialModesBytes(PetscInt n, PetscInt nev)
 PetscErrorCode PartialModesMemoryCheck(MPI_Comm comm, PetscInt n, PetscInt nev)
 {
   PetscFunctionBeginUser;
-  PetscCall(MemoryCheck(comm, PartialModesBytes(n, nev), "the beam's modes: a partial eigen-solve of " + std::to_string(nev) + " modes of " + std::to_string(n) + " free dofs",
-                        "use fewer -beam_nodes, a larger -modal_tolerance (fewer modes) or a -ts_type other than modal"));
+  PetscCall(
+    MemoryCheck(comm, PartialModesBytes(n, nev),
+                "the beam's modes: a partial eigen-solve of " + std::to_string(nev) + " modes of " + std::to_string(n) +
+                  " free dofs",
+                "use fewer -beam_nodes, a larger -modal_tolerance (fewer modes) or a -ts_type other than modal"));
   PetscFunctionReturn(0);
 }
 
 // Whether the dense decomposition of the n free dofs is expected to be quicker than a partial
 // solve of nev modes (the time models above; below 65 dofs always).
-bool DenseIsQuicker(const ModalSystem &S, PetscInt nev, bool refine_all) { return S.n <= 64 || DenseSeconds(S, refine_all) <= PartialSeconds(S, nev, refine_all); }
+bool DenseIsQuicker(const ModalSystem &S, PetscInt nev, bool refine_all)
+{
+  return S.n <= 64 || DenseSeconds(S, refine_all) <= PartialSeconds(S, nev, refine_all);
+}
 
 // The dense decomposition of every mode, with its memory check (3 n^2 doubles: the matrix,
 // which becomes the basis, and dsyevd's workspace of 2 n^2) against the run's limit.
-PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m, const char *why = "-modal_modes auto keeps only the modes the contact moves")
+PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m,
+                          const char *why = "-modal_modes auto keeps only the modes the contact moves")
 {
   const double n = (double)m->S.n, need = 3 * n * n * sizeof(PetscReal);
 
   PetscFunctionBeginUser;
-  PetscCall(MemoryCheck(comm, need, "-modal_modes " + ModalModesText(m->request) + ": the dense decomposition of every mode of " + std::to_string(m->S.n) + " free dofs",
-                        "use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes"));
+  PetscCall(
+    MemoryCheck(comm, need,
+                "-modal_modes " + ModalModesText(m->request) + ": the dense decomposition of every mode of " +
+                  std::to_string(m->S.n) + " free dofs",
+                "use -modal_modes auto (the modes up to the cut-off of -modal_tolerance) or a number of modes"));
   const double expected = DenseSeconds(m->S, m->request.refine_all); // s
   if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-    PetscCall(PetscPrintf(comm, "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT " free dofs, expected to take about %.0f s (%s)\n", m->S.n, expected, why));
+    PetscCall(PetscPrintf(comm,
+                          "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT
+                          " free dofs, expected to take about %.0f s (%s)\n",
+                          m->S.n, expected, why));
   m->method = "dense";
   PetscCall(ModalBasisBuild(m->S, false, &m->B, m->request.refine_all));
   PetscFunctionReturn(0);
@@ -360,7 +403,7 @@ void KeepModes(BeamModes *m, PetscInt keep)
 // before each solve. Then keeps what was asked.
 PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscReal wc)
 {
-  const PetscInt                      n = m->S.n;
+  const PetscInt                      n   = m->S.n;
   const BeamSystem                   &sys = m->sys;
   std::vector<PetscReal>              lambda;
   std::vector<std::vector<PetscReal>> phis;
@@ -375,7 +418,11 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
     }
     const double expected = PartialSeconds(m->S, nev, m->request.refine_all); // s
     if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc), expected to take about %.0f s and %.2g GB; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected, PartialModesBytes(n, nev) / 1e9));
+      PetscCall(PetscPrintf(comm,
+                            "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT
+                            " free dofs (SLEPc), expected to take about %.0f s and %.2g GB; a larger -modal_tolerance "
+                            "keeps fewer modes\n",
+                            nev, n, expected, PartialModesBytes(n, nev) / 1e9));
     PetscCall(PartialModesMemoryCheck(comm, n, nev));
     PetscCall(BeamModesLowest(comm, sys, nev, m->request.progress, &lambda, &phis));
     if (want >= 0 || lambda.back() > wc * wc) {
@@ -388,7 +435,10 @@ PetscErrorCode TruncatedModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscR
     }
     const PetscReal grow = std::sqrt(wc / std::sqrt(std::max(lambda.back(), (PetscReal)1e-300)));
     nev                  = std::min<PetscInt>(n, std::max<PetscInt>(2 * nev, (PetscInt)(1.2 * grow * nev) + 8));
-    PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " found below the cut-off %g rad/s; asking for %" PetscInt_FMT "\n", (PetscInt)lambda.size(), (double)wc, nev));
+    PetscCall(PetscInfo(NULL,
+                        "the beam's modes: %" PetscInt_FMT
+                        " found below the cut-off %g rad/s; asking for %" PetscInt_FMT "\n",
+                        (PetscInt)lambda.size(), (double)wc, nev));
   }
   PetscInt keep = m->Count();
   if (want >= 0) keep = std::min(keep, want);
@@ -415,13 +465,20 @@ PetscErrorCode FactoredModes(MPI_Comm comm, BeamModes *m, PetscInt want, PetscRe
   for (;;) {
     const double expected = kPartialSolveCost * (double)n * (double)nev * (double)nev; // s
     if (m->request.cost_warn > 0 && expected > m->request.cost_warn)
-      PetscCall(PetscPrintf(comm, "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT " free dofs (SLEPc, the factored form), expected to take about %.0f s and %.2g GB; a larger -modal_tolerance keeps fewer modes\n", nev, n, expected, PartialModesBytes(n, nev) / 1e9));
+      PetscCall(PetscPrintf(comm,
+                            "cost: the beam's modes: a partial eigen-solve of %" PetscInt_FMT " modes of %" PetscInt_FMT
+                            " free dofs (SLEPc, the factored form), expected to take about %.0f s and %.2g GB; a "
+                            "larger -modal_tolerance keeps fewer modes\n",
+                            nev, n, expected, PartialModesBytes(n, nev) / 1e9));
     PetscCall(PartialModesMemoryCheck(comm, n, nev));
     PetscCall(BeamModesLowestFactored(comm, m->sys, *m->factor, nev, m->request.progress, &lambda, &phis));
     if (want >= 0 || nev >= n || lambda.back() > wc * wc) break;
     const PetscReal grow = std::sqrt(wc / std::sqrt(std::max(lambda.back(), (PetscReal)1e-300)));
     nev                  = std::min<PetscInt>(n, std::max<PetscInt>(2 * nev, (PetscInt)(1.2 * grow * nev) + 8));
-    PetscCall(PetscInfo(NULL, "the beam's modes (factored form): %" PetscInt_FMT " found below the cut-off %g rad/s; asking for %" PetscInt_FMT "\n", (PetscInt)lambda.size(), (double)wc, nev));
+    PetscCall(PetscInfo(NULL,
+                        "the beam's modes (factored form): %" PetscInt_FMT
+                        " found below the cut-off %g rad/s; asking for %" PetscInt_FMT "\n",
+                        (PetscInt)lambda.size(), (double)wc, nev));
   }
   const PetscInt         found = (PetscInt)lambda.size();
   std::vector<PetscReal> Phi((size_t)n * found);
@@ -442,8 +499,12 @@ PetscErrorCode PrimalCheck(MPI_Comm comm, const BeamModes *m)
 {
   PetscFunctionBeginUser;
   PetscCheck(ModesPrecisionIndex(m->sys) <= kModesPrecisionLimit, comm, PETSC_ERR_SUP,
-             "-modal_modes %s: the dense decomposition works with the stiffness K, which on %d nodes spreads over %.1e times its lowest mode's scale, beyond double precision (at most %.1e); use -modal_modes auto or a number of modes (the factored form) or fewer -beam_nodes",
-             ModalModesText(m->request).c_str(), (int)m->sys.nodes, ModesPrecisionIndex(m->sys) / std::numeric_limits<double>::epsilon(), kModesPrecisionLimit / std::numeric_limits<double>::epsilon());
+             "-modal_modes %s: the dense decomposition works with the stiffness K, which on %d nodes spreads over %.1e "
+             "times its lowest mode's scale, beyond double precision (at most %.1e); use -modal_modes auto or a number "
+             "of modes (the factored form) or fewer -beam_nodes",
+             ModalModesText(m->request).c_str(), (int)m->sys.nodes,
+             ModesPrecisionIndex(m->sys) / std::numeric_limits<double>::epsilon(),
+             kModesPrecisionLimit / std::numeric_limits<double>::epsilon());
   PetscFunctionReturn(0);
 }
 
@@ -489,7 +550,8 @@ void ShareTrim(BeamModes *m, const ModalCorrection &c)
   PetscReal error = ShareRest(*m, c, G);
   PetscInt  keep  = count;
   while (keep > m->rigid + 1 && G > 0) {
-    const PetscReal w = m->B.omega[keep - 1], more = gamma[keep - 1] * gamma[keep - 1] / (w * w * G) * std::pow(M_PI / (w * T), q);
+    const PetscReal w    = m->B.omega[keep - 1],
+                    more = gamma[keep - 1] * gamma[keep - 1] / (w * w * G) * std::pow(M_PI / (w * T), q);
     if (error + more > t.tolerance) break;
     error += more;
     keep--;
@@ -515,7 +577,10 @@ PetscErrorCode ShareModes(MPI_Comm comm, BeamModes *m)
   m->factor = FactoredFormFor(m->sys);
   if (!m->factor) PetscCall(PrimalCheck(comm, m));
   for (;;) {
-    if (!m->factor && DenseIsQuicker(m->S, nev, t.refine_all)) PetscCall(DenseModes(comm, m, "-modal_weight share: the modes the load needs are more than the partial solve's time model allows"));
+    if (!m->factor && DenseIsQuicker(m->S, nev, t.refine_all))
+      PetscCall(DenseModes(comm, m,
+                           "-modal_weight share: the modes the load needs are more than the partial solve's time model "
+                           "allows"));
     else if (m->factor) PetscCall(FactoredModes(comm, m, nev, PETSC_INFINITY));
     else PetscCall(TruncatedModes(comm, m, nev, PETSC_INFINITY));
     m->truncated = m->Count() < n;
@@ -526,12 +591,15 @@ PetscErrorCode ShareModes(MPI_Comm comm, BeamModes *m)
     ShareGammas(*m, *c, &gamma, &G);
     const PetscReal rest = ShareRest(*m, *c, G);
     if (!m->truncated || rest <= t.tolerance) break;
-    PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " leave a share-weighted error %g above %g\n", m->Count(), (double)rest, (double)t.tolerance));
-    m->ForgetCorrections(); // the error falls about as 1/nev^q (the shell, the string bed): that, with a margin, at most 4 times,
+    PetscCall(PetscInfo(NULL, "the beam's modes: %" PetscInt_FMT " leave a share-weighted error %g above %g\n",
+                        m->Count(), (double)rest, (double)t.tolerance));
+    m->ForgetCorrections(); // the error falls about as 1/nev^q (the shell, the string bed): that, with a margin, at
+                            // most 4 times,
     const PetscReal grow = 1.2 * std::pow(rest / t.tolerance, 1 / std::min<PetscReal>(2, t.force_exponent));
     const PetscInt  need = (PetscInt)std::min<PetscReal>((PetscReal)n, nev * std::max<PetscReal>(1.5, grow));
-    nev                  = std::min<PetscInt>(n, (PetscInt)(nev * std::min<PetscReal>(4, std::max<PetscReal>(1.5, grow))));
-    if (!m->factor && DenseIsQuicker(m->S, need, t.refine_all)) nev = need; // or at once the dense decomposition where that many would be slower than it
+    nev = std::min<PetscInt>(n, (PetscInt)(nev * std::min<PetscReal>(4, std::max<PetscReal>(1.5, grow))));
+    if (!m->factor && DenseIsQuicker(m->S, need, t.refine_all))
+      nev = need; // or at once the dense decomposition where that many would be slower than it
   }
   ShareTrim(m, *c);
   m->method += ", share-weighted";
@@ -545,8 +613,11 @@ PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
   const ModalTruncation &t = m->request;
   const PetscInt         n = m->S.n;
   ContactCoupling        none;
-  const PetscReal        wc = t.Cutoff(), wmax = t.modes == ModalModes::Auto ? BeamSystemMaxFrequencyBound(m->sys, none, 0.0, 0.0) : 0.0;
-  const bool             dense = t.modes == ModalModes::All || (t.modes == ModalModes::Count && t.count >= n) || (t.modes == ModalModes::Auto && !(wc < wmax)); // every mode is below the cut-off: all of them, exactly
+  const PetscReal        wc = t.Cutoff(),
+                  wmax      = t.modes == ModalModes::Auto ? BeamSystemMaxFrequencyBound(m->sys, none, 0.0, 0.0) : 0.0;
+  const bool dense          = t.modes == ModalModes::All || (t.modes == ModalModes::Count && t.count >= n) ||
+                     (t.modes == ModalModes::Auto &&
+                      !(wc < wmax)); // every mode is below the cut-off: all of them, exactly
 
   PetscFunctionBeginUser;
   if (ModalWeighsShare(t)) {
@@ -555,16 +626,22 @@ PetscErrorCode BeamModesBuild(MPI_Comm comm, BeamModes *m)
   }
   m->cutoff      = t.modes == ModalModes::Auto && !dense ? wc : PETSC_INFINITY;
   m->omega_bound = wmax;
-  m->factor = dense ? nullptr : FactoredFormFor(m->sys);
+  m->factor      = dense ? nullptr : FactoredFormFor(m->sys);
   if (!m->factor) PetscCall(PrimalCheck(comm, m));
-  if (dense && t.modes == ModalModes::Auto && std::isfinite(wc) && wmax > 0) { // every mode below the cut-off: the tolerance from which fewer are kept (the cut-off below the bound)
+  if (dense && t.modes == ModalModes::Auto && std::isfinite(wc) &&
+      wmax > 0) { // every mode below the cut-off: the tolerance from which fewer are kept (the cut-off below the bound)
     char why[256];
-    std::snprintf(why, sizeof why, "every mode lies below the cut-off of -modal_tolerance %g, %.3g kHz, above the highest mode's bound %.3g kHz; a -modal_tolerance above %.2g keeps fewer", (double)t.tolerance,
-                  (double)(wc / (2e3 * M_PI)), (double)(wmax / (2e3 * M_PI)), (double)(t.tolerance * (wc / wmax) * (wc / wmax)));
+    std::snprintf(why, sizeof why,
+                  "every mode lies below the cut-off of -modal_tolerance %g, %.3g kHz, above the highest mode's bound "
+                  "%.3g kHz; a -modal_tolerance above %.2g keeps fewer",
+                  (double)t.tolerance, (double)(wc / (2e3 * M_PI)), (double)(wmax / (2e3 * M_PI)),
+                  (double)(t.tolerance * (wc / wmax) * (wc / wmax)));
     PetscCall(DenseModes(comm, m, why));
   } else if (dense) PetscCall(DenseModes(comm, m));
   else if (m->factor) PetscCall(FactoredModes(comm, m, t.modes == ModalModes::Count ? t.count : -1, wc));
-  else PetscCall(TruncatedModes(comm, m, t.modes == ModalModes::Count ? t.count : -1, t.modes == ModalModes::Count ? PETSC_INFINITY : wc));
+  else
+    PetscCall(TruncatedModes(comm, m, t.modes == ModalModes::Count ? t.count : -1,
+                             t.modes == ModalModes::Count ? PETSC_INFINITY : wc));
   m->truncated = m->Count() < n;
   PetscFunctionReturn(0);
 }
@@ -586,7 +663,10 @@ double BeamModesExpectedSeconds(const BeamSystem &sys, const ModalTruncation &t)
   return PartialSeconds(S, nev, t.refine_all);
 }
 
-PetscInt BeamModesCountBelow(const BeamSystem &sys, PetscReal omega) { return ModesBelow(sys, ModalSystemBeamOnly(sys), omega * omega); }
+PetscInt BeamModesCountBelow(const BeamSystem &sys, PetscReal omega)
+{
+  return ModesBelow(sys, ModalSystemBeamOnly(sys), omega * omega);
+}
 
 PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const BeamModes> *modes)
 {
@@ -599,7 +679,8 @@ PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const Beam
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t, std::shared_ptr<const BeamModes> *modes)
+PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t,
+                               std::shared_ptr<const BeamModes> *modes)
 {
   std::string why;
   ModesCache *pcache;
@@ -618,11 +699,11 @@ PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const Modal
       PetscFunctionReturn(0);
     }
   PetscCheck(BeamModesAvailable(sys, &why), comm, PETSC_ERR_SUP, "the beam's modes: %s", why.c_str());
-  auto          m  = std::make_shared<BeamModes>();
-  const double  w0 = MPI_Wtime();
-  m->sys           = sys;
-  m->S             = ModalSystemBeamOnly(m->sys);
-  m->request       = t;
+  auto         m  = std::make_shared<BeamModes>();
+  const double w0 = MPI_Wtime();
+  m->sys          = sys;
+  m->S            = ModalSystemBeamOnly(m->sys);
+  m->request      = t;
   PetscCall(BeamModesBuild(comm, m.get()));
   ExactRigidModes(m.get());
   m->build_seconds = MPI_Wtime() - w0;
@@ -656,11 +737,11 @@ struct SupportedStiffness {
 
 PetscErrorCode SupportedStiffnessFactor(const BeamModes &m, const std::vector<PetscInt> &sup, SupportedStiffness *F)
 {
-  const BeamSystem     &sys = m.sys;
-  const int             n = (int)m.S.n, kd = (int)sys.bw, ldab = kd + 1;
-  std::vector<PetscInt> free_of(sys.ndof, -1), cols(2 * sys.bw + 1);
+  const BeamSystem      &sys = m.sys;
+  const int              n = (int)m.S.n, kd = (int)sys.bw, ldab = kd + 1;
+  std::vector<PetscInt>  free_of(sys.ndof, -1), cols(2 * sys.bw + 1);
   std::vector<PetscReal> vals(2 * sys.bw + 1);
-  int                   info;
+  int                    info;
 
   PetscFunctionBeginUser;
   F->n = n, F->kd = kd, F->ldab = ldab;
@@ -680,7 +761,8 @@ PetscErrorCode SupportedStiffnessFactor(const BeamModes &m, const std::vector<Pe
     }
   }
   dpbtrf_("L", &n, &kd, F->ab.data(), &ldab, &info);
-  PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "the static correction: the supported stiffness is not positive definite (LAPACK dpbtrf, info %d)", info);
+  PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB,
+             "the static correction: the supported stiffness is not positive definite (LAPACK dpbtrf, info %d)", info);
   PetscFunctionReturn(0);
 }
 
@@ -688,13 +770,14 @@ PetscErrorCode SupportedStiffnessFactor(const BeamModes &m, const std::vector<Pe
 // by the residual in the factored form of K (BeamSystemStiffnessApply), whose round-off is
 // relative to K u, not to |K| |u| as the band's (the flexibility of a low mode is ~1/w_1^2, the
 // band's round-off ~eps w_max^2).
-void SupportedStiffnessSolve(const BeamModes &m, const SupportedStiffness &F, const std::vector<PetscReal> &f, std::vector<PetscReal> *pu)
+void SupportedStiffnessSolve(const BeamModes &m, const SupportedStiffness &F, const std::vector<PetscReal> &f,
+                             std::vector<PetscReal> *pu)
 {
-  const BeamSystem      &sys = m.sys;
-  const int              n = F.n, one = 1;
-  std::vector<PetscReal> y(sys.ndof), Ky(sys.ndof), r(n);
+  const BeamSystem       &sys = m.sys;
+  const int               n = F.n, one = 1;
+  std::vector<PetscReal>  y(sys.ndof), Ky(sys.ndof), r(n);
   std::vector<PetscReal> &u = *pu;
-  int                    info;
+  int                     info;
   u.assign(n, 0.0);
   for (int pass = 0; pass < 3; ++pass) { // u = 0, then two corrections: r = f - K u
     std::fill(y.begin(), y.end(), 0.0);
@@ -708,7 +791,9 @@ void SupportedStiffnessSolve(const BeamModes &m, const SupportedStiffness &F, co
 
 // u = K^+ f on the free dofs for each load f of fs (self-equilibrated; sup the temporary
 // supports), one factor for all the loads.
-PetscErrorCode FlexibilitySolve(const BeamModes &m, const std::vector<PetscInt> &sup, const std::vector<const std::vector<PetscReal> *> &fs, std::vector<std::vector<PetscReal>> *us)
+PetscErrorCode FlexibilitySolve(const BeamModes &m, const std::vector<PetscInt> &sup,
+                                const std::vector<const std::vector<PetscReal> *> &fs,
+                                std::vector<std::vector<PetscReal>>               *us)
 {
   SupportedStiffness F;
 
@@ -774,14 +859,16 @@ PetscErrorCode BeamModes::StaticCorrection(const ContactCoupling &g, const Modal
       std::vector<std::vector<PetscReal>> R(rigid, std::vector<PetscReal>(n)); // M-orthonormal rigid modes
       for (PetscInt i = 0; i < rigid; ++i)
         for (PetscInt d = 0; d < n; ++d) R[i][d] = B.Phi[d + (size_t)i * n] / sm[d];
-      std::vector<PetscReal> load = f, load_r = fr; // less their rigid-body inertia: f - M R R^T f (f_r has none but round-off)
+      std::vector<PetscReal> load   = f,
+                             load_r = fr; // less their rigid-body inertia: f - M R R^T f (f_r has none but round-off)
       for (auto *l : {&load, &load_r})
         for (const auto &r : R) {
           PetscReal a = 0;
           for (PetscInt d = 0; d < n; ++d) a += r[d] * (*l)[d];
           for (PetscInt d = 0; d < n; ++d) (*l)[d] -= S.mass[d] * r[d] * a;
         }
-      std::vector<std::vector<PetscReal>> u, motions; // the supports from the exact motions (R's entries are over sqrt(m): a light dof's round-off is large)
+      std::vector<std::vector<PetscReal>> u,
+        motions; // the supports from the exact motions (R's entries are over sqrt(m): a light dof's round-off is large)
       for (const auto &v : BeamSystemRigidMotions(sys)) {
         motions.emplace_back(n);
         for (PetscInt d = 0; d < n; ++d) motions.back()[d] = v[S.dof[d]];
@@ -812,15 +899,27 @@ const OptionModule &ModalOptionTable()
     "Modal engine: which of the beam's modes the free flight, -ts_type modal and -reference modal keep",
     {
       OptionText("-modal_modes",
-                 "all (every mode: the dense decomposition, the exact check), auto (the modes up to the cut-off pi/(T sqrt(-modal_tolerance)), T the contact time scale; the rest through the static correction at the contact point) or a number K (the K lowest)",
+                 "all (every mode: the dense decomposition, the exact check), auto (the modes up to the cut-off pi/(T "
+                 "sqrt(-modal_tolerance)), T the contact time scale; the rest through the static correction at the "
+                 "contact point) or a number K (the K lowest)",
                  "auto"),
-      OptionReal("-modal_tolerance", "1", "-modal_modes auto: the quasi-static error (pi/(omega T))^2 allowed for a mode left out; sets the cut-off", "1e-9", Between(0, 1e-2, true, false)),
+      OptionReal("-modal_tolerance", "1",
+                 "-modal_modes auto: the quasi-static error (pi/(omega T))^2 allowed for a mode left out; sets the "
+                 "cut-off",
+                 "1e-9", Between(0, 1e-2, true, false)),
       OptionNeeds(OptionChoice("-modal_weight",
-                               "-modal_modes auto in an impact: mode (every mode below the cut-off of -modal_tolerance) or share (the fewest lowest modes, from a partial eigen-solve, whose left-out rest, each mode weighed by its share gamma^2/(omega^2 G) of the flexibility under the ball's load times (pi/(omega T))^q, q the force's exponent at the first touch capped at 2, has an error at most -modal_tolerance; the rest by the static correction; docs/model.md section 12)",
+                               "-modal_modes auto in an impact: mode (every mode below the cut-off of "
+                               "-modal_tolerance) or share (the fewest lowest modes, from a partial eigen-solve, whose "
+                               "left-out rest, each mode weighed by its share gamma^2/(omega^2 G) of the flexibility "
+                               "under the ball's load times (pi/(omega T))^q, q the force's exponent at the first "
+                               "touch capped at 2, has an error at most -modal_tolerance; the rest by the static "
+                               "correction; docs/model.md section 12)",
                                {"mode", "share"}, "mode"),
                   {"-modal_modes=auto"}),
       OptionChoice("-modal_refine",
-                   "auto (every mode refined by inverse iteration where the stiffness' band is narrow, as a beam's; where it is wide, as a string bed's, the modes whose residual is above 1e-12 of their eigenvalue) or all (every mode: the check)",
+                   "auto (every mode refined by inverse iteration where the stiffness' band is narrow, as a beam's; "
+                   "where it is wide, as a string bed's, the modes whose residual is above 1e-12 of their eigenvalue) "
+                   "or all (every mode: the check)",
                    {"auto", "all"}, "auto"),
     },
   };
@@ -832,27 +931,38 @@ std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
   char buf[512];
   char cut[64] = "none";
   if (m.cutoff < PETSC_INFINITY) std::snprintf(cut, sizeof cut, "%.4g Hz", (double)(m.cutoff / (2 * M_PI)));
-  std::snprintf(buf, sizeof buf, "modal engine: %d of %d modes (cut-off %s, -modal_modes %s, -modal_tolerance %g; %s, %.3g s)", (int)m.Count(), (int)m.S.n, cut, ModalModesText(m.request).c_str(),
-                (double)m.request.tolerance, m.method.c_str(), m.build_seconds);
+  std::snprintf(buf, sizeof buf,
+                "modal engine: %d of %d modes (cut-off %s, -modal_modes %s, -modal_tolerance %g; %s, %.3g s)",
+                (int)m.Count(), (int)m.S.n, cut, ModalModesText(m.request).c_str(), (double)m.request.tolerance,
+                m.method.c_str(), m.build_seconds);
   std::string s = buf;
   if (m.share_error >= 0) {
-    std::snprintf(buf, sizeof buf, ", share-weighted error %.3g (force exponent %.3g)", (double)m.share_error, (double)m.request.force_exponent);
+    std::snprintf(buf, sizeof buf, ", share-weighted error %.3g (force exponent %.3g)", (double)m.share_error,
+                  (double)m.request.force_exponent);
     s += buf;
   }
   if (m.B.by_need) { // refined by need (a wide band: ModalRefinesEveryMode)
-    std::snprintf(buf, sizeof buf, ", %d modes refined (residual above %g)", (int)m.B.refined, (double)ModalRefineResidual());
+    std::snprintf(buf, sizeof buf, ", %d modes refined (residual above %g)", (int)m.B.refined,
+                  (double)ModalRefineResidual());
     s += buf;
   }
   if (c && m.truncated) {
-    std::snprintf(buf, sizeof buf, ", static correction G_r = %.4g m/N (G_r/G = %.3g)", (double)c->Gr, (double)(c->G > 0 ? c->Gr / c->G : 0.0));
+    std::snprintf(buf, sizeof buf, ", static correction G_r = %.4g m/N (G_r/G = %.3g)", (double)c->Gr,
+                  (double)(c->G > 0 ? c->Gr / c->G : 0.0));
     s += buf;
   }
   return s;
 }
 
-PetscReal BeamModesCutoffHz(const BeamModes &m) { return m.cutoff < PETSC_INFINITY ? m.cutoff / (2 * M_PI) : std::numeric_limits<PetscReal>::quiet_NaN(); }
+PetscReal BeamModesCutoffHz(const BeamModes &m)
+{
+  return m.cutoff < PETSC_INFINITY ? m.cutoff / (2 * M_PI) : std::numeric_limits<PetscReal>::quiet_NaN();
+}
 
-std::string ModalModesText(const ModalTruncation &t) { return t.modes == ModalModes::All ? "all" : t.modes == ModalModes::Auto ? "auto" : std::to_string(t.count); }
+std::string ModalModesText(const ModalTruncation &t)
+{
+  return t.modes == ModalModes::All ? "all" : t.modes == ModalModes::Auto ? "auto" : std::to_string(t.count);
+}
 
 PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t)
 {
@@ -865,7 +975,7 @@ PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t)
   PetscCall(OptionsRead(PetscOptionsObject, T, "-modal_tolerance", &t->tolerance, NULL));
   PetscInt refine = t->refine_all ? 1 : 0;
   PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-modal_refine", &refine, NULL));
-  t->refine_all = refine == 1;
+  t->refine_all   = refine == 1;
   PetscInt weight = t->weight == ModalWeight::Share ? 1 : 0;
   PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-modal_weight", &weight, NULL));
   t->weight = weight == 1 ? ModalWeight::Share : ModalWeight::Mode;
@@ -875,7 +985,8 @@ PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t)
   else {
     char *end   = nullptr;
     long  count = std::strtol(text.c_str(), &end, 10);
-    PetscCheck(end && *end == '\0' && !text.empty() && count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modal_modes %s is not allowed: use all, auto or a whole number of modes >= 1", text.c_str());
+    PetscCheck(end && *end == '\0' && !text.empty() && count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-modal_modes %s is not allowed: use all, auto or a whole number of modes >= 1", text.c_str());
     t->modes = ModalModes::Count;
     t->count = (PetscInt)count;
   }

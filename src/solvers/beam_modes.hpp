@@ -22,12 +22,11 @@
 // carries the paper's beam to N = 40961.
 //
 // Computed once per beam and shared: BeamModesShared keeps the last few bases in a small
-// cache of this process per group of ranks (the communicator's), keyed by the system's content (nodes, fields, masses, held dofs, the
-// bands of K and C of the force operator, compared exactly) and the truncation (modes kept,
-// cut-off), so every point of a sweep, every run of a study and every repetition of a scene
-// that builds the same BeamSystem reuses one decomposition. The ball and the impact point are
-// not in the key: the ball is free after separation and the impact point enters only through
-// the coupling (gamma_k = g^T phi_k, O(n) per run) and the static correction at the point
+// cache of this process per group of ranks (the communicator's), keyed by the system's content (nodes, fields, masses,
+// held dofs, the bands of K and C of the force operator, compared exactly) and the truncation (modes kept, cut-off), so
+// every point of a sweep, every run of a study and every repetition of a scene that builds the same BeamSystem reuses
+// one decomposition. The ball and the impact point are not in the key: the ball is free after separation and the impact
+// point enters only through the coupling (gamma_k = g^T phi_k, O(n) per run) and the static correction at the point
 // (one banded solve, cached per point in the basis).
 #pragma once
 
@@ -46,7 +45,11 @@ namespace beamimpact {
 struct BeamFactor;
 
 // Which modes the engine keeps (-modal_modes, -modal_tolerance, -modal_weight) and the scales that choose them.
-enum class ModalModes { All, Auto, Count };
+enum class ModalModes {
+  All,
+  Auto,
+  Count
+};
 // How Auto chooses the modes (-modal_weight): by each mode's quasi-static error alone (Mode:
 // every mode below the cut-off kept), or by that error weighed with the mode's share of the
 // flexibility under the ball's load (Share: the fewest lowest modes whose left-out rest has a
@@ -54,24 +57,37 @@ enum class ModalModes { All, Auto, Count };
 // force's start F ~ c^p, at most the tolerance; under the coupling `at`, which the impact's
 // callers set; without it, Mode). The modes not computed enter e by their exact moment H_r
 // (q = 2: (pi/T)^2 H_r / G) or bounded by G_r/G (pi / (w_last T))^q (q < 2).
-enum class ModalWeight { Mode, Share };
+enum class ModalWeight {
+  Mode,
+  Share
+};
 struct ModalTruncation {
-  ModalModes modes        = ModalModes::Auto;
-  PetscInt   count        = 0;    // Count: modes kept (rigid ones included)
-  PetscReal  tolerance    = 1e-9; // 1: Auto, the quasi-static error allowed (per mode left out, or in all: Share)
-  ModalWeight     weight  = ModalWeight::Mode; // -modal_weight
-  ContactCoupling at;             // Share: the load the modes are weighed under (at.n == 0: none, Mode)
-  PetscReal  force_exponent = 2;  // 1: Share, the force's exponent at the first touch, F ~ c^p (ContactStartExponent; capped at 2)
-  PetscReal  contact_time = 0;    // s: Auto, the contact's time scale T (ContactTimeScale)
-  PetscReal  cost_warn    = 30;   // s: a cost line before a decomposition expected to take longer
-  PetscReal  progress     = 10;   // s: a progress line this often during a partial solve (0: none)
-  bool       refine_all   = false; // -modal_refine all: every mode refined by inverse iteration (the check); false: by need where the band is wide (ModalRefinesEveryMode)
+  ModalModes      modes     = ModalModes::Auto;
+  PetscInt        count     = 0;    // Count: modes kept (rigid ones included)
+  PetscReal       tolerance = 1e-9; // 1: Auto, the quasi-static error allowed (per mode left out, or in all: Share)
+  ModalWeight     weight    = ModalWeight::Mode; // -modal_weight
+  ContactCoupling at;                            // Share: the load the modes are weighed under (at.n == 0: none, Mode)
+  PetscReal force_exponent = 2; // 1: Share, the force's exponent at the first touch, F ~ c^p (ContactStartExponent;
+                                // capped at 2)
+  PetscReal contact_time = 0;   // s: Auto, the contact's time scale T (ContactTimeScale)
+  PetscReal cost_warn    = 30;  // s: a cost line before a decomposition expected to take longer
+  PetscReal progress     = 10;  // s: a progress line this often during a partial solve (0: none)
+  bool refine_all = false; // -modal_refine all: every mode refined by inverse iteration (the check); false: by need
+                           // where the band is wide (ModalRefinesEveryMode)
   // rad/s: the cut-off of Auto, pi / (T sqrt(tol)); infinite for All and Count
-  PetscReal Cutoff() const { return modes == ModalModes::Auto && contact_time > 0 ? M_PI / (contact_time * std::sqrt(tolerance)) : PETSC_INFINITY; }
+  PetscReal Cutoff() const
+  {
+    return modes == ModalModes::Auto && contact_time > 0 ? M_PI / (contact_time * std::sqrt(tolerance))
+                                                         : PETSC_INFINITY;
+  }
 };
 // Whether t weighs the modes by their share under a load (Auto, Share and a coupling given).
-inline bool ModalWeighsShare(const ModalTruncation &t) { return t.modes == ModalModes::Auto && t.weight == ModalWeight::Share && t.at.n > 0; }
-// -modal_modes, -modal_tolerance, -modal_refine and -modal_weight: the modal engine's table (registered by app/registry.cpp).
+inline bool ModalWeighsShare(const ModalTruncation &t)
+{
+  return t.modes == ModalModes::Auto && t.weight == ModalWeight::Share && t.at.n > 0;
+}
+// -modal_modes, -modal_tolerance, -modal_refine and -modal_weight: the modal engine's table (registered by
+// app/registry.cpp).
 const OptionModule &ModalOptionTable();
 // Reads them (T, cost_warn and progress are the caller's).
 PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t);
@@ -96,19 +112,21 @@ struct ModalCorrection {
 };
 
 struct BeamModes {
-  BeamSystem      sys;     // the copy the basis was built from (S.sys points here)
-  ModalSystem     S;       // the beam's free dofs (no ball)
-  ModalBasis      B;       // omega, Phi (S.n x Count(), of M^{-1/2} K M^{-1/2}), rate; gamma unused (0)
-  ModalTruncation request; // as asked
-  PetscInt        rigid     = 0;              // rigid modes among the kept
-  PetscReal       cutoff    = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
-  PetscReal       omega_bound = 0;              // rad/s: Auto, the bound on the highest mode the cut-off was compared with (0: not Auto)
-  bool            truncated = false;          // fewer modes than free dofs
-  std::string     method;                     // "dense", "slepc" or "slepc, factored form"
-  PetscReal       share_error = -1;           // Share: the share-weighted error of the modes left out under the load (ShareTrim); < 0: not weighed
-  std::shared_ptr<const BeamFactor> factor;   // the factored form the modes and the static correction came from (solvers/beam_flexibility.hpp), or null
-  double          build_seconds = 0;
-  PetscInt        Count() const { return (PetscInt)B.omega.size(); }
+  BeamSystem      sys;         // the copy the basis was built from (S.sys points here)
+  ModalSystem     S;           // the beam's free dofs (no ball)
+  ModalBasis      B;           // omega, Phi (S.n x Count(), of M^{-1/2} K M^{-1/2}), rate; gamma unused (0)
+  ModalTruncation request;     // as asked
+  PetscInt        rigid   = 0; // rigid modes among the kept
+  PetscReal       cutoff  = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
+  PetscReal   omega_bound = 0; // rad/s: Auto, the bound on the highest mode the cut-off was compared with (0: not Auto)
+  bool        truncated   = false; // fewer modes than free dofs
+  std::string method;              // "dense", "slepc" or "slepc, factored form"
+  PetscReal share_error = -1; // Share: the share-weighted error of the modes left out under the load (ShareTrim); < 0:
+                              // not weighed
+  std::shared_ptr<const BeamFactor>
+    factor; // the factored form the modes and the static correction came from (solvers/beam_flexibility.hpp), or null
+  double   build_seconds = 0;
+  PetscInt Count() const { return (PetscInt)B.omega.size(); }
   // The static correction at the point of coupling g (computed on first use, then cached).
   PetscErrorCode StaticCorrection(const ContactCoupling &g, const ModalCorrection **c) const;
   void           ForgetCorrections() const { corrections_.clear(); } // the basis changed (BeamModesBuild)
@@ -160,7 +178,8 @@ bool BeamModesFactoredForm(const BeamSystem &sys, BeamFactor *F);
 // (ModalModes::All, the dense decomposition, no communication), on PETSC_COMM_SELF.
 constexpr int  BeamModesCacheSize = 4;
 PetscErrorCode BeamModesShared(const BeamSystem &sys, std::shared_ptr<const BeamModes> *modes);
-PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t, std::shared_ptr<const BeamModes> *modes);
+PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const ModalTruncation &t,
+                               std::shared_ptr<const BeamModes> *modes);
 // Cache statistics (for tests): decompositions computed and reused since the process started.
 void BeamModesCacheCounts(PetscInt *computed, PetscInt *reused);
 

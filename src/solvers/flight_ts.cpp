@@ -96,7 +96,8 @@ PetscErrorCode FlightTSTypeDefaults(MPI_Comm comm, TS ts, FlightContext *ctx)
       PetscCall(TSAdaptSetType(adapt, TSADAPTBASIC));
     }
   const bool irk = !std::strcmp(type, TSIRK);
-  if (irk) PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, 6, 6, 6, NULL, 6, NULL, &J)); // -help's on the task's comm
+  if (irk)
+    PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, 6, 6, 6, NULL, 6, NULL, &J)); // -help's on the task's comm
   else PetscCall(MatCreateDense(comm, PETSC_DECIDE, PETSC_DECIDE, 6, 6, NULL, &J));
   PetscCall(TSSetRHSJacobian(ts, J, J, FlightRHSJacobian, ctx));
   PetscCall(MatDestroy(&J));
@@ -181,8 +182,10 @@ PetscErrorCode FlightTSStepControl(TS ts, FlightResult *r)
   PetscCall(PetscOptionsHasName(NULL, "flight_", "-ts_adapt_type", &given));
   if (!estimates) {
     PetscCheck(none || !given, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-               "-flight_ts_adapt_type %s is not allowed with -flight_ts_type %s: that method has no embedded error estimate to adapt the step by; use -flight_ts_adapt_type none (the fixed step "
-               "-flight_ts_dt), or a method with one (rk with -flight_ts_rk_type 5dp, 3bs, 5bs, 8vr, 2a, ...; cn, theta, beuler, bdf, arkimex, rosw, alpha)",
+               "-flight_ts_adapt_type %s is not allowed with -flight_ts_type %s: that method has no embedded error "
+               "estimate to adapt the step by; use -flight_ts_adapt_type none (the fixed step "
+               "-flight_ts_dt), or a method with one (rk with -flight_ts_rk_type 5dp, 3bs, 5bs, 8vr, 2a, ...; cn, "
+               "theta, beuler, bdf, arkimex, rosw, alpha)",
                OptionWritten("-flight_ts_adapt_type").c_str(), r->ts_type.c_str());
     PetscCall(TSAdaptSetType(adapt, TSADAPTNONE));
     why = "-flight_ts_type " + r->ts_type + " has no error estimate";
@@ -192,8 +195,11 @@ PetscErrorCode FlightTSStepControl(TS ts, FlightResult *r)
   PetscCall(TSGetTolerances(ts, &r->atol, NULL, &r->rtol, NULL));
   char step[64];
   std::snprintf(step, sizeof step, "%g", (double)r->dt);
-  const std::string fixed = r->fixed_step ? "the flight's step is fixed, -flight_ts_dt " + std::string(step) + " s: " + why : "";
-  for (const char *tol : {"-flight_ts_rtol", "-flight_ts_atol"}) OptionWithoutEffectSet(tol, fixed, {"-flight_ts_type", "-flight_ts_rk_type", "-flight_ts_adapt_type"});
+  const std::string fixed = r->fixed_step
+                            ? "the flight's step is fixed, -flight_ts_dt " + std::string(step) + " s: " + why
+                            : "";
+  for (const char *tol : {"-flight_ts_rtol", "-flight_ts_atol"})
+    OptionWithoutEffectSet(tol, fixed, {"-flight_ts_type", "-flight_ts_rk_type", "-flight_ts_adapt_type"});
   PetscFunctionReturn(0);
 }
 
@@ -219,8 +225,12 @@ PetscErrorCode FlightStepCheck(const FlightStep &s, const FlightResult &r)
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < 6; ++i)
-    PetscCheck(std::isfinite(s.u1[i]), PETSC_COMM_SELF, PETSC_ERR_FP, "the flight's integration failed: the ball's state is not finite at t = %g s after a step of %g s%s", (double)s.t1,
-               (double)(s.t1 - s.t0), r.fixed_step ? " (the fixed -flight_ts_dt is far too long for the drag: give a shorter one, or adaptive steps: -flight_ts_adapt_type basic)" : "");
+    PetscCheck(std::isfinite(s.u1[i]), PETSC_COMM_SELF, PETSC_ERR_FP,
+               "the flight's integration failed: the ball's state is not finite at t = %g s after a step of %g s%s",
+               (double)s.t1, (double)(s.t1 - s.t0),
+               r.fixed_step ? " (the fixed -flight_ts_dt is far too long for the drag: give a shorter one, or adaptive "
+                              "steps: -flight_ts_adapt_type basic)"
+                            : "");
   PetscFunctionReturn(0);
 }
 
@@ -254,14 +264,19 @@ PetscErrorCode LocateLanding(TS ts, const FlightModel &m, FlightStep *s, FlightR
       target = FlightStepGroundTime(*s);
       continue;
     }
-    PetscCheck(vz < 0, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "the flight's landing could not be located: the ball is not descending at t = %g s (height %g m)", (double)s->t1, (double)z);
+    PetscCheck(vz < 0, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED,
+               "the flight's landing could not be located: the ball is not descending at t = %g s (height %g m)",
+               (double)s->t1, (double)z);
     const PetscReal next = s->t1 - z / vz;
     if (std::abs(next - s->t1) <= 4 * PETSC_MACHINE_EPSILON * s->t1) break; // at the resolution of t
     target = next > s->t0 ? next : 0.5 * (s->t0 + s->t1);
   }
   r->landing_residual = std::abs(s->u1[2]);
-  PetscCheck(r->landing_residual <= 1e-6, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "the flight's landing could not be located: the height is still %g m after %" PetscInt_FMT " re-steps at t = %g s%s",
-             (double)s->u1[2], it, (double)s->t1, r->ts_type.rfind("rk", 0) == 0 ? "" : " (a tighter -flight_snes_rtol for the implicit -flight_ts_type?)");
+  PetscCheck(r->landing_residual <= 1e-6, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED,
+             "the flight's landing could not be located: the height is still %g m after %" PetscInt_FMT
+             " re-steps at t = %g s%s",
+             (double)s->u1[2], it, (double)s->t1,
+             r->ts_type.rfind("rk", 0) == 0 ? "" : " (a tighter -flight_snes_rtol for the implicit -flight_ts_type?)");
   PetscFunctionReturn(0);
 }
 
@@ -297,7 +312,8 @@ double FlightSeriesBytes(const FlightSolveParams &p, PetscReal max_time)
 }
 
 // Steps ts (at u0 at t = 0) until the ball lands: samples, apex, the located landing.
-PetscErrorCode FlightIntegrate(TS ts, const FlightModel &m, const PetscReal u0[6], const FlightSolveParams &p, FlightResult *r)
+PetscErrorCode FlightIntegrate(TS ts, const FlightModel &m, const PetscReal u0[6], const FlightSolveParams &p,
+                               FlightResult *r)
 {
   PetscReal  max_time;
   FlightStep s;
@@ -319,14 +335,17 @@ PetscErrorCode FlightIntegrate(TS ts, const FlightModel &m, const PetscReal u0[6
     if (s.u0[5] > 0 && s.u1[5] <= 0) FlightStepApex(s, &r->apex_time, &r->apex); // on the step as taken
     if (p.series) SeriesSample(&r->series, m, s, p.series_dt, landed);
     if (landed) break;
-    PetscCheck(s.t1 < max_time, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "the ball has not landed after -flight_ts_max_time %g s (height %g m): raise it", (double)max_time, (double)s.u1[2]);
+    PetscCheck(s.t1 < max_time, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "the ball has not landed after -flight_ts_max_time %g s (height %g m): raise it", (double)max_time,
+               (double)s.u1[2]);
     s.t0 = s.t1;
     std::copy(s.u1, s.u1 + 6, s.u0);
     std::copy(s.a1, s.a1 + 3, s.a0);
   }
   if (p.series) SeriesAdd(&r->series, m, s.t1, s.u1);
   r->landing = FlightLandingOf(u0, s.t1, s.u1);
-  PetscCheck(r->apex_time <= r->landing.hang_time && r->landing.hang_time > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the flight's apex at %g s is not within its flight of %g s", (double)r->apex_time,
+  PetscCheck(r->apex_time <= r->landing.hang_time && r->landing.hang_time > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "the flight's apex at %g s is not within its flight of %g s", (double)r->apex_time,
              (double)r->landing.hang_time);
   PetscCall(TSGetStepNumber(ts, &r->steps));
   PetscCall(TSGetStepRejections(ts, &r->rejected_steps));
@@ -343,8 +362,11 @@ PetscErrorCode FlightTSCheck(TS ts, const FlightSolveParams &p, FlightResult *r)
   PetscCall(FlightTSStepControl(ts, r));
   PetscCall(TSGetMaxTime(ts, &max_time));
   char what[200];
-  std::snprintf(what, sizeof what, "-flight_series_dt %g s (a sample every %g s for up to -flight_ts_max_time %g s)", (double)p.series_dt, (double)p.series_dt, (double)max_time);
-  PetscCall(MemoryCheck(PETSC_COMM_SELF, FlightSeriesBytes(p, max_time), what, "give a larger -flight_series_dt (0: only the launch and the landing) or a shorter -flight_ts_max_time"));
+  std::snprintf(what, sizeof what, "-flight_series_dt %g s (a sample every %g s for up to -flight_ts_max_time %g s)",
+                (double)p.series_dt, (double)p.series_dt, (double)max_time);
+  PetscCall(MemoryCheck(PETSC_COMM_SELF, FlightSeriesBytes(p, max_time), what,
+                        "give a larger -flight_series_dt (0: only the launch and the landing) or a shorter "
+                        "-flight_ts_max_time"));
   PetscFunctionReturn(0);
 }
 
@@ -360,11 +382,13 @@ PetscErrorCode FlightSolve(const FlightModel &m, const PetscReal u0[6], const Fl
 
   PetscFunctionBeginUser;
   PetscCheck(u0[2] > 0 || (u0[2] == 0 && u0[5] > 0), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "the ball starts %s (height %g m, vertical speed %g m/s): it cannot fly", u0[2] < 0 ? "below the ground" : "on the ground without going up",
-             (double)u0[2], (double)u0[5]);
+             "the ball starts %s (height %g m, vertical speed %g m/s): it cannot fly",
+             u0[2] < 0 ? "below the ground" : "on the ground without going up", (double)u0[2], (double)u0[5]);
   PetscCheck(m.spin < FlightSpinMax(m.radius), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "the ball's spin of %g rad/s moves its surface at %g m/s, beyond the speed of sound in air (%g m/s), where no drag or lift model holds: it must be below %g rad/s for a radius of %g m",
-             (double)m.spin, (double)(m.spin * m.radius), (double)kSpeedOfSound, (double)FlightSpinMax(m.radius), (double)m.radius);
+             "the ball's spin of %g rad/s moves its surface at %g m/s, beyond the speed of sound in air (%g m/s), "
+             "where no drag or lift model holds: it must be below %g rad/s for a radius of %g m",
+             (double)m.spin, (double)(m.spin * m.radius), (double)kSpeedOfSound, (double)FlightSpinMax(m.radius),
+             (double)m.radius);
   PetscCall(PetscTime(&t_start));
   *r    = FlightResult();
   ctx.m = &m;
@@ -390,20 +414,34 @@ const OptionModule &FlightTSOptionTable()
 {
   static const OptionModule m = {
     "flight_ts",
-    "PETSc options of the flight's integrator, -task flight (PETSc's TS options with the prefix -flight_; the landing is located by the program)",
+    "PETSc options of the flight's integrator, -task flight (PETSc's TS options with the prefix -flight_; the landing "
+    "is located by the program)",
     {
       [] {
-        OptionSpec s = OptionChoice("-flight_ts_type", "Integrator of the flight: any type that can roll back a step (the landing is located by re-stepping)",
+        OptionSpec s = OptionChoice("-flight_ts_type",
+                                    "Integrator of the flight: any type that can roll back a step (the landing is "
+                                    "located by re-stepping)",
                                     {"rk", "cn", "theta", "beuler", "bdf", "arkimex", "rosw", "irk", "alpha"}, "rk");
         s.range_text = "the types that can roll back a step: the landing is located by re-stepping";
         return s;
       }(),
-      OptionText("-flight_ts_rk_type", "Runge-Kutta tableau of -flight_ts_type rk: 5dp (Dormand-Prince 5(4)), 3bs, 4, 5bs, 8vr, ...", "5dp"),
-      OptionReal("-flight_ts_rtol", "1", "Relative tolerance of the local error (adaptive steps: every type but an rk tableau without an embedded pair, 1fe, 3, 4)", "1e-10", NonNegative()),
-      OptionReal("-flight_ts_atol", "m, m/s", "Absolute tolerance of the local error, on the positions (m) and velocities (m/s)", "1e-10", NonNegative()),
-      OptionReal("-flight_ts_dt", "s", "First step of an adaptive run; the fixed step with -flight_ts_adapt_type none or an rk tableau without error estimate (1fe, 3, 4)", "0.001", Positive()),
+      OptionText("-flight_ts_rk_type",
+                 "Runge-Kutta tableau of -flight_ts_type rk: 5dp (Dormand-Prince 5(4)), 3bs, 4, 5bs, 8vr, ...", "5dp"),
+      OptionReal("-flight_ts_rtol", "1",
+                 "Relative tolerance of the local error (adaptive steps: every type but an rk tableau without an "
+                 "embedded pair, 1fe, 3, 4)",
+                 "1e-10", NonNegative()),
+      OptionReal("-flight_ts_atol", "m, m/s",
+                 "Absolute tolerance of the local error, on the positions (m) and velocities (m/s)", "1e-10",
+                 NonNegative()),
+      OptionReal("-flight_ts_dt", "s",
+                 "First step of an adaptive run; the fixed step with -flight_ts_adapt_type none or an rk tableau "
+                 "without error estimate (1fe, 3, 4)",
+                 "0.001", Positive()),
       OptionReal("-flight_ts_max_time", "s", "Longest flight: a ball not landed by then is an error", "60", Positive()),
-      OptionChoice("-flight_ts_adapt_type", "Step size controller of the flight: basic for every type that estimates its error (theta, beuler, cn and alpha too); none: the fixed step -flight_ts_dt",
+      OptionChoice("-flight_ts_adapt_type",
+                   "Step size controller of the flight: basic for every type that estimates its error (theta, beuler, "
+                   "cn and alpha too); none: the fixed step -flight_ts_dt",
                    {"none", "basic", "dsp"}, "basic"),
       OptionFlag("-flight_ts_monitor", "Print each step of the flight (time, step size)"),
     },

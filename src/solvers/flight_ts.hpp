@@ -37,8 +37,8 @@ struct FlightResult {
   PetscReal     apex = 0, apex_time = 0; // m, s: the highest point (the launch height when launched downward)
   PetscReal     landing_residual = 0;    // m, |z| of the located landing state
   PetscInt      steps = 0, rejected_steps = 0, locate_steps = 0, function_evals = 0;
-  PetscReal     wall_time = 0; // s
-  std::string   ts_type;       // "rk 5dp", "cn", ...
+  PetscReal     wall_time = 0;      // s
+  std::string   ts_type;            // "rk 5dp", "cn", ...
   PetscReal     rtol = 0, atol = 0; // 1; m, m/s: the tolerances of an adaptive step
   bool          fixed_step = false; // the step is fixed at dt (no error control: rtol, atol unused)
   PetscReal     dt         = 0;     // s, the fixed step (the first step when adaptive)

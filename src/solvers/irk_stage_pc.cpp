@@ -18,15 +18,15 @@ PetscInt n_factorizations = 0;
 // state; its values are J0 + shift I + the contact's kc block, so the values of (shift, shiftV,
 // kc) it was assembled at, ts_jacobian.cpp) and S and T as the KAIJ held them.
 struct IrkStagePC {
-  TSProblem               *P   = nullptr;
-  Mat                      A   = nullptr; // (s n) x (s n), AIJ
-  KSP                      ksp = nullptr; // preonly + LU of A
-  PetscObjectId            jid      = 0;  // the J A was built from (P.jac.J)
+  TSProblem               *P        = nullptr;
+  Mat                      A        = nullptr; // (s n) x (s n), AIJ
+  KSP                      ksp      = nullptr; // preonly + LU of A
+  PetscObjectId            jid      = 0;       // the J A was built from (P.jac.J)
   PetscObjectState         jnonzero = -1;
   PetscReal                shift = -1, shiftV = -1, kc = -1; // what J held
-  PetscInt                 s = 0;
-  bool                     tI = true;   // T is the identity
-  std::vector<PetscScalar> S, T;        // s x s, column-major
+  PetscInt                 s  = 0;
+  bool                     tI = true; // T is the identity
+  std::vector<PetscScalar> S, T;      // s x s, column-major
 };
 
 // The KAIJ's S and T (T empty: the identity), and whether they differ from what A holds;
@@ -38,7 +38,10 @@ PetscErrorCode ReadShifts(IrkStagePC &c, Mat K, bool *changed)
 
   PetscFunctionBeginUser;
   PetscCall(MatKAIJGetSRead(K, &p, &q, &S));
-  PetscCheck(p == q && p > 0 && S, PetscObjectComm((PetscObject)K), PETSC_ERR_SUP, "-ts_type irk: the stage matrix's shift block is %" PetscInt_FMT " x %" PetscInt_FMT ", expected s x s with s = -ts_irk_nstages", p, q);
+  PetscCheck(p == q && p > 0 && S, PetscObjectComm((PetscObject)K), PETSC_ERR_SUP,
+             "-ts_type irk: the stage matrix's shift block is %" PetscInt_FMT " x %" PetscInt_FMT
+             ", expected s x s with s = -ts_irk_nstages",
+             p, q);
   const size_t n      = (size_t)(p * q);
   const bool   s_same = p == c.s && c.S.size() == n && std::equal(S, S + n, c.S.begin());
   if (!s_same) c.S.assign(S, S + n);
@@ -64,7 +67,7 @@ PetscErrorCode ReadShifts(IrkStagePC &c, Mat K, bool *changed)
 // coupling r s + j) and the LU's solver.
 PetscErrorCode CreateStageMatrix(IrkStagePC &c, Mat J)
 {
-  PetscInt rs, re, N, nc;
+  PetscInt        rs, re, N, nc;
   const PetscInt *cols;
   const PetscInt  s = c.s, width = c.tI ? 1 : s; // stage columns per column of J
 
@@ -83,9 +86,10 @@ PetscErrorCode CreateStageMatrix(IrkStagePC &c, Mat J)
     }
     PetscCall(MatRestoreRow(J, r, &nc, &cols, NULL));
   }
-  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)J), (re - rs) * s, (re - rs) * s, N * s, N * s, 0, d.data(), 0, o.data(), &c.A));
+  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)J), (re - rs) * s, (re - rs) * s, N * s, N * s, 0, d.data(), 0,
+                         o.data(), &c.A));
   if (!c.ksp) {
-    PC pc;
+    PC          pc;
     PetscMPIInt size;
     PetscCall(KSPCreate(PetscObjectComm((PetscObject)J), &c.ksp));
     PetscCall(KSPSetType(c.ksp, KSPPREONLY));
@@ -101,11 +105,11 @@ PetscErrorCode CreateStageMatrix(IrkStagePC &c, Mat J)
 // failed (a zero pivot, MUMPS' INFOG(1) < 0: PETSc records it on the PC, it does not raise).
 PetscErrorCode FillAndFactor(IrkStagePC &c, Mat J, bool *ok)
 {
-  PetscInt           rs, re, nc;
-  const PetscInt    *cols;
-  const PetscScalar *vals;
-  const PetscInt     s = c.s;
-  const PetscScalar *T = c.tI ? nullptr : c.T.data();
+  PetscInt                 rs, re, nc;
+  const PetscInt          *cols;
+  const PetscScalar       *vals;
+  const PetscInt           s = c.s;
+  const PetscScalar       *T = c.tI ? nullptr : c.T.data();
   std::vector<PetscInt>    ac;
   std::vector<PetscScalar> av;
 
@@ -159,7 +163,8 @@ PetscErrorCode StageUpdate(PC pc, IrkStagePC &c)
   PetscFunctionBeginUser;
   PetscCall(PCGetOperators(pc, NULL, &K));
   PetscCall(PetscObjectTypeCompareAny((PetscObject)K, &kaij, MATSEQKAIJ, MATMPIKAIJ, ""));
-  PetscCheck(kaij && J && !jac.rank_one, PetscObjectComm((PetscObject)pc), PETSC_ERR_SUP, "the irk stage preconditioner needs TSIRK's KAIJ stage matrix and the assembled Jacobian (-ts_type irk)");
+  PetscCheck(kaij && J && !jac.rank_one, PetscObjectComm((PetscObject)pc), PETSC_ERR_SUP,
+             "the irk stage preconditioner needs TSIRK's KAIJ stage matrix and the assembled Jacobian (-ts_type irk)");
   const PetscInt s0  = c.s;
   const bool     tI0 = c.tI;
   PetscCall(ReadShifts(c, K, &shifts));
@@ -190,7 +195,8 @@ PetscErrorCode StageApply(PC pc, Vec x, Vec y)
   PetscCall(PCShellGetContext(pc, &c));
   PetscCall(StageUpdate(pc, *c));
   PetscCall(KSPSolve(c->ksp, x, y));
-  PetscCall(KSPCheckSolve(c->ksp, pc, y)); // a failed LU: the PC marked failed and y Inf, so the outer KSP and SNES stop on it
+  PetscCall(
+    KSPCheckSolve(c->ksp, pc, y)); // a failed LU: the PC marked failed and y Inf, so the outer KSP and SNES stop on it
   PetscFunctionReturn(0);
 }
 
@@ -208,7 +214,8 @@ PetscErrorCode StageDestroy(PC pc)
 
 } // namespace
 
-PetscScalar IrkStageEntry(PetscInt s, const PetscScalar *S, const PetscScalar *T, PetscInt i, PetscInt j, PetscScalar Jrc, bool diagonal)
+PetscScalar IrkStageEntry(PetscInt s, const PetscScalar *S, const PetscScalar *T, PetscInt i, PetscInt j,
+                          PetscScalar Jrc, bool diagonal)
 {
   const PetscScalar t = T ? T[i + s * j] : (i == j ? 1.0 : 0.0);
   return Jrc * t + (diagonal ? S[i + s * j] : 0.0);
@@ -223,7 +230,8 @@ PetscErrorCode IrkStagePCSet(TSProblem &P, PC pc)
   PetscCall(PCShellSetContext(pc, c));
   PetscCall(PCShellSetApply(pc, StageApply));
   PetscCall(PCShellSetDestroy(pc, StageDestroy));
-  PetscCall(PCShellSetName(pc, "irk stages: the (s n) x (s n) stage matrix assembled from J and factored (LU; MUMPS on more than one rank)"));
+  PetscCall(PCShellSetName(pc, "irk stages: the (s n) x (s n) stage matrix assembled from J and factored (LU; MUMPS on "
+                               "more than one rank)"));
   PetscFunctionReturn(0);
 }
 
@@ -263,7 +271,8 @@ PetscErrorCode IrkStageAfterSetUp(TS ts)
   PetscCall(TSGetSNES(ts, &snes));
   PetscCall(SNESGetJacobian(snes, &K, NULL, NULL, NULL));
   PetscCall(PetscObjectTypeCompareAny((PetscObject)K, &kaij, MATSEQKAIJ, MATMPIKAIJ, ""));
-  PetscCheck(kaij, PetscObjectComm((PetscObject)ts), PETSC_ERR_PLIB, "-ts_type irk: after its set-up the Newton solver's matrix is not TSIRK's KAIJ stage matrix");
+  PetscCheck(kaij, PetscObjectComm((PetscObject)ts), PETSC_ERR_PLIB,
+             "-ts_type irk: after its set-up the Newton solver's matrix is not TSIRK's KAIJ stage matrix");
   PetscCall(SNESSetJacobian(snes, K, K, IrkFormJacobian, ts));
   PetscFunctionReturn(0);
 }
@@ -283,8 +292,9 @@ PetscErrorCode IrkStageNewJacobian(TS ts, Mat J)
   for (PetscInt i = 0; i < s; ++i) T[i + s * i] = 1.0;
   PetscCall(TSGetSNES(ts, &snes));
   PetscCall(MatCreateKAIJ(J, s, s, S.data(), T.data(), &K));
-  PetscCall(SNESSetJacobian(snes, K, K, IrkFormJacobian, ts)); // as TSSetUp_IRK and IrkStageAfterSetUp (TSSetIJacobian just set J itself there)
-  PetscCall(MatDestroy(&K)); // the SNES holds it
+  PetscCall(SNESSetJacobian(snes, K, K, IrkFormJacobian,
+                            ts)); // as TSSetUp_IRK and IrkStageAfterSetUp (TSSetIJacobian just set J itself there)
+  PetscCall(MatDestroy(&K));      // the SNES holds it
   PetscFunctionReturn(0);
 }
 
@@ -315,8 +325,11 @@ PetscErrorCode IrkStageLayout(TS ts, DM dm)
   PetscCall(TSIRKGetNumStages(ts, &s));
   PetscCall(TSIRKGetType(ts, &type));
   TSIRKLeading *data = static_cast<TSIRKLeading *>(ts->data);
-  PetscCheck(data && data->nstages == s && data->method_name && type && !std::strcmp(data->method_name, type), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP,
-             "-ts_type irk on %d ranks: this PETSc's TSIRK is not laid out as 3.18's, so its stage vector cannot be split as the state is; run irk on one rank", (int)size);
+  PetscCheck(data && data->nstages == s && data->method_name && type && !std::strcmp(data->method_name, type),
+             PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP,
+             "-ts_type irk on %d ranks: this PETSc's TSIRK is not laid out as 3.18's, so its stage vector cannot be "
+             "split as the state is; run irk on one rank",
+             (int)size);
   if (data->Z) PetscFunctionReturn(0); // set up already
   PetscCall(DMCreateGlobalVector(dm, &U));
   PetscCall(VecGetLocalSize(U, &n));

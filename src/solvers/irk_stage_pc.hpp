@@ -54,6 +54,7 @@ PetscInt IrkStagePCFactorizations();
 // The stage matrix's entries in one row block: for the KAIJ I_n x S + J x T (S, T s x s,
 // column-major as MatKAIJGetS gives them; T null: the identity), the values of stage row
 // r s + i at columns c s + j are J_rc T[i + s j] + (r == c) S[i + s j]. Plain, for the test.
-PetscScalar IrkStageEntry(PetscInt s, const PetscScalar *S, const PetscScalar *T, PetscInt i, PetscInt j, PetscScalar Jrc, bool diagonal);
+PetscScalar IrkStageEntry(PetscInt s, const PetscScalar *S, const PetscScalar *T, PetscInt i, PetscInt j,
+                          PetscScalar Jrc, bool diagonal);
 
 } // namespace beamimpact

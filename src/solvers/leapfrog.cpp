@@ -14,21 +14,21 @@ namespace {
 // One state of the beam and ball: y is padded with bw zeros on each side so the band rows
 // need no branches (dof d is y[d + bw]).
 struct LeapfrogState {
-  std::vector<PetscReal> y, v, a;           // m, m/s, m/s^2 (per dof)
-  std::vector<PetscReal> vh;                // m/s, damped beam: the half-step velocity that led to this state (padded like y)
+  std::vector<PetscReal> y, v, a; // m, m/s, m/s^2 (per dof)
+  std::vector<PetscReal> vh;      // m/s, damped beam: the half-step velocity that led to this state (padded like y)
   PetscReal              yb = 0, vb = 0, ab = 0; // ball: m, m/s, m/s^2
-  PetscReal              c = 0, F = 0;      // compression (m) and force (N) at this state
+  PetscReal              c = 0, F = 0;           // compression (m) and force (N) at this state
 };
 
 class LeapfrogStepper : public Stepper {
 public:
-  const BeamSystem      *sys = nullptr;
+  const BeamSystem      *sys   = nullptr;
   const FrameMotion     *frame = nullptr; // the swing's frame (owned by the run driver)
   ContactCoupling        g;
   BallParams             ball;
   ContactState          *contact = nullptr;
   PetscInt               n = 0, bw = 0;
-  std::vector<PetscReal> band;  // M^{-1} K: band[(2 bw + 1) i + o] (1/s^2); zero rows for held dofs
+  std::vector<PetscReal> band; // M^{-1} K: band[(2 bw + 1) i + o] (1/s^2); zero rows for held dofs
   PetscReal              gm[ContactCoupling::kMaxEntries] = {}; // coupling weight over the dof's mass (1/kg); 0 if held
   PetscReal              dt = 0, dt_stable = 0, t = 0, t_prev = 0; // s
   LeapfrogState          A, B;
@@ -37,11 +37,12 @@ public:
   // The force operator's other parts (see leapfrog.hpp): the drive f(0, 0, t) of a moving frame,
   // and with damping M^{-1} C split into its band (lagged: the half-step velocity) and its
   // diagonal (trapezoidal), with the dissipation rule on P = v^T C v.
-  bool                   drives = false;  // the frame moves and a term is tied to it: f(0, 0, t) is evaluated
+  bool                   drives = false; // the frame moves and a term is tied to it: f(0, 0, t) is evaluated
   bool                   damped = false;
-  PetscReal              tf = 0;          // s, the time of the state Force()/ForceDamped() evaluate
-  std::vector<PetscReal> drive;           // N, f(0, 0, tf)
-  std::vector<PetscReal> cband, crate;    // M^{-1} C less its diagonal part (1/s; empty: none), the diagonal part over the mass (1/s)
+  PetscReal              tf     = 0; // s, the time of the state Force()/ForceDamped() evaluate
+  std::vector<PetscReal> drive;      // N, f(0, 0, tf)
+  std::vector<PetscReal> cband,
+    crate; // M^{-1} C less its diagonal part (1/s; empty: none), the diagonal part over the mass (1/s)
   std::vector<PetscReal> cv;
   DissipationIntegral    D;
 
@@ -128,10 +129,10 @@ public:
     for (PetscInt i = 0; i < n; ++i) *Pdot += 2 * cur->a[i] * cv[i];
   }
 
-  MPI_Comm    Comm() const override { return PETSC_COMM_SELF; }
-  std::string Method() const override { return "leapfrog"; }
-  std::string StepOption() const override { return "-leapfrog_dt"; }
-  PetscReal   Time() const override { return t; }
+  MPI_Comm       Comm() const override { return PETSC_COMM_SELF; }
+  std::string    Method() const override { return "leapfrog"; }
+  std::string    StepOption() const override { return "-leapfrog_dt"; }
+  PetscReal      Time() const override { return t; }
   PetscErrorCode Step(PetscReal tau) override
   {
     const PetscReal  h2 = 0.5 * tau;
@@ -144,7 +145,7 @@ public:
     }
     other->vb = cur->vb + h2 * cur->ab;
     other->yb = cur->yb + tau * other->vb;
-    tf = t + tau;
+    tf        = t + tau;
     if (damped) {
       std::copy(other->v.begin(), other->v.end(), other->vh.begin() + bw);
       ForceDamped(*other, h2);
@@ -177,14 +178,15 @@ public:
     } else Force(*cur, 0.0);
     return 0;
   }
-  PetscReal Dissipated() const override { return D.dissipated; }
+  PetscReal      Dissipated() const override { return D.dissipated; }
   PetscErrorCode SetState(PetscReal t_new, const FullState &s) override
   {
     for (PetscInt i = 0; i < n; ++i) {
       cur->y[i + bw] = s.y[i];
       cur->v[i]      = s.v[i];
     }
-    if (damped) std::copy(cur->v.begin(), cur->v.end(), cur->vh.begin() + bw); // the exact velocity stands for the half-step one
+    if (damped)
+      std::copy(cur->v.begin(), cur->v.end(), cur->vh.begin() + bw); // the exact velocity stands for the half-step one
     cur->yb = s.ball_y;
     cur->vb = s.ball_v;
     cur->c  = CompressionOf(*cur);
@@ -199,7 +201,7 @@ public:
   }
   PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) override
   {
-    *c    = CompressionOf(*cur);
+    *c          = CompressionOf(*cur);
     PetscReal u = 0; // g^T v
     for (PetscInt q = 0; q < g.n; ++q) u = q == 0 ? g.w[q] * cur->v[g.dof[q]] : u + g.w[q] * cur->v[g.dof[q]];
     *cdot = cur->vb - u;
@@ -236,8 +238,9 @@ public:
   std::string EnergyGrowthCause() const override
   {
     char text[256];
-    PetscSNPrintf(text, sizeof(text), "(leapfrog, fixed step %g s, dt_max = %g s): with the %s law energy can only be %s", (double)dt, (double)dt_stable, ContactLawName(ball.law),
-                  ContactElastic(ball) ? "conserved" : "lost");
+    PetscSNPrintf(text, sizeof(text),
+                  "(leapfrog, fixed step %g s, dt_max = %g s): with the %s law energy can only be %s", (double)dt,
+                  (double)dt_stable, ContactLawName(ball.law), ContactElastic(ball) ? "conserved" : "lost");
     return text;
   }
 };
@@ -250,8 +253,11 @@ const OptionModule &LeapfrogOptionTable()
     "leapfrog",
     "Leapfrog (Stormer-Verlet) baseline",
     {
-      OptionReal("-leapfrog_dt", "s", "Fixed step; <= 0: -leapfrog_dt_fraction x the stability limit 2/omega_max", "-1"),
-      OptionReal("-leapfrog_dt_fraction", "1", "Step as a fraction of the stability limit, when -leapfrog_dt is not given", "0.9", Between(0, 1, true, false)),
+      OptionReal("-leapfrog_dt", "s", "Fixed step; <= 0: -leapfrog_dt_fraction x the stability limit 2/omega_max",
+                 "-1"),
+      OptionReal("-leapfrog_dt_fraction", "1",
+                 "Step as a fraction of the stability limit, when -leapfrog_dt is not given", "0.9",
+                 Between(0, 1, true, false)),
     },
   };
   return m;
@@ -278,19 +284,21 @@ PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, co
   return 2.0 / (w * (std::sqrt(1 + zeta * zeta) + zeta));
 }
 
-PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
+                                     const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
+                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
+                                     std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
   auto S = std::make_unique<LeapfrogStepper>();
 
   PetscFunctionBeginUser;
-  S->sys     = &sys;
-  S->frame   = frame;
-  S->g       = g;
-  S->ball    = ball;
-  S->contact = contact;
-  S->n       = sys.ndof;
-  S->bw      = sys.bw;
+  S->sys           = &sys;
+  S->frame         = frame;
+  S->g             = g;
+  S->ball          = ball;
+  S->contact       = contact;
+  S->n             = sys.ndof;
+  S->bw            = sys.bw;
   const PetscInt W = 2 * sys.bw + 1;
   S->band.assign((size_t)W * sys.ndof, 0.0);
   for (PetscInt i = 0; i < sys.ndof; ++i)
@@ -313,14 +321,22 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
   info->ts_type         = "leapfrog";
   info->formulation     = "explicit";
   info->dt_stable       = S->dt_stable;
-  info->omega_max_bound = sys.Damped() ? BeamSystemMaxFrequencyBound(sys, g, ContactScalesOf(sys, ball).stiffness, ball.mass) : 2.0 / S->dt_stable;
+  info->omega_max_bound = sys.Damped()
+                          ? BeamSystemMaxFrequencyBound(sys, g, ContactScalesOf(sys, ball).stiffness, ball.mass)
+                          : 2.0 / S->dt_stable;
   S->dt                 = lp.dt > 0 ? lp.dt : lp.dt_fraction * S->dt_stable;
-  PetscCheck(std::isfinite(S->dt) && S->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-leapfrog_dt %g is not allowed: the step must be > 0 (s)", (double)S->dt);
+  PetscCheck(std::isfinite(S->dt) && S->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "-leapfrog_dt %g is not allowed: the step must be > 0 (s)", (double)S->dt);
   PetscCheck(S->dt <= S->dt_stable, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "-leapfrog_dt %g is above the Stormer-Verlet stability limit dt_max = %s = %g s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s); use -leapfrog_dt <= %g or fewer nodes",
-             (double)S->dt, sys.Damped() ? "(2/omega_max)(sqrt(1 + zeta^2) - zeta), zeta = beta omega_max/2" : "2/omega_max", (double)S->dt_stable, sys.nodes, (double)info->omega_max_bound, (double)S->dt_stable);
-  PetscCheck(S->dt <= scales.time / 8, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-leapfrog_dt %g is more than 1/8 of the contact time scale %g s: events could be missed; use a smaller step", (double)S->dt,
-             (double)scales.time);
+             "-leapfrog_dt %g is above the Stormer-Verlet stability limit dt_max = %s = %g s on this grid (N = "
+             "%" PetscInt_FMT ", omega_max <= %g rad/s); use -leapfrog_dt <= %g or fewer nodes",
+             (double)S->dt,
+             sys.Damped() ? "(2/omega_max)(sqrt(1 + zeta^2) - zeta), zeta = beta omega_max/2" : "2/omega_max",
+             (double)S->dt_stable, sys.nodes, (double)info->omega_max_bound, (double)S->dt_stable);
+  PetscCheck(S->dt <= scales.time / 8, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "-leapfrog_dt %g is more than 1/8 of the contact time scale %g s: events could be missed; use a smaller "
+             "step",
+             (double)S->dt, (double)scales.time);
   info->dt_nominal = S->dt;
   // Initial state: beam at rest, ball touching, moving in +y.
   for (LeapfrogState *s : {&S->A, &S->B}) {
@@ -328,10 +344,10 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
     s->v.assign(sys.ndof, 0.0);
     s->a.assign(sys.ndof, 0.0);
   }
-  S->A.vb     = ball.speed;
+  S->A.vb = ball.speed;
   if (!beam_velocity.empty()) S->A.v = beam_velocity; // a swinging bat: a rigid motion (no force)
-  S->damped   = sys.Damped();
-  S->drives   = ForceOperatorDriven(sys, frame);
+  S->damped = sys.Damped();
+  S->drives = ForceOperatorDriven(sys, frame);
   if (S->drives) S->drive.assign(sys.ndof, 0.0);
   if (S->damped) {
     PetscReal P, Pdot;

@@ -60,7 +60,9 @@ PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, co
 // ball touching, moving at its speed; frame: the swing's, owned by the caller); fills
 // *info (ts_type "leapfrog", formulation "explicit", dt_stable, dt_nominal). A step above the
 // stability limit or above 1/8 of the contact time is refused.
-PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
+PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
+                                     const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
+                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
+                                     std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 } // namespace beamimpact

@@ -10,9 +10,13 @@
 
 namespace beamimpact {
 
-extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab, const int *ldab, int *ipiv, int *info);
-extern "C" void dsyevd_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work, const int *lwork, int *iwork, const int *liwork, int *info); // not in PETSc 3.18's petscblaslapack.h
-extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const int *ku, const int *nrhs, const double *ab, const int *ldab, const int *ipiv, double *b, const int *ldb, int *info);
+extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab, const int *ldab,
+                        int *ipiv, int *info);
+extern "C" void dsyevd_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w,
+                        double *work, const int *lwork, int *iwork, const int *liwork,
+                        int *info); // not in PETSc 3.18's petscblaslapack.h
+extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const int *ku, const int *nrhs,
+                        const double *ab, const int *ldab, const int *ipiv, double *b, const int *ldb, int *info);
 
 ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, PetscReal ball_mass, PetscReal k)
 {
@@ -55,7 +59,6 @@ ModalSystem ModalSystemBeamOnly(const BeamSystem &sys)
   return S;
 }
 
-
 void ModalOrthonormalize(const std::vector<PetscReal> &Phi, PetscInt n, PetscInt count, int passes, PetscReal *phi)
 {
   for (int pass = 0; pass < passes; ++pass)
@@ -83,7 +86,7 @@ struct BandEntry {
 // the dofs it touches (its two nodes' deflections, fields apart).
 std::vector<int> BandOrder(const ModalSystem &S)
 {
-  const PetscInt n     = S.n, nb = S.BeamDofs();
+  const PetscInt n = S.n, nb = S.BeamDofs();
   PetscInt       after = -1;
   for (PetscInt d = 0; d < nb; ++d)
     if (S.g[d] != 0.0) after = d;
@@ -116,13 +119,15 @@ std::vector<BandEntry> BandEntries(const ModalSystem &S, bool contact)
   if (contact)
     for (PetscInt r = 0; r < n; ++r)
       for (PetscInt c = 0; c < n; ++c)
-        if (S.g[r] != 0.0 && S.g[c] != 0.0) entries.push_back({r, c, S.k * S.g[r] * S.g[c] / std::sqrt(S.mass[r] * S.mass[c])});
+        if (S.g[r] != 0.0 && S.g[c] != 0.0)
+          entries.push_back({r, c, S.k * S.g[r] * S.g[c] / std::sqrt(S.mass[r] * S.mass[c])});
   return entries;
 }
 
 // y = A x with A = M^{-1/2} K_p M^{-1/2} in the factored form of K (the strains first,
 // BeamSystemStiffnessApply): its round-off is relative to A x, not to |A| |x| as the band's is.
-void ModalApply(const ModalSystem &S, bool contact, const PetscReal *x, std::vector<PetscReal> &q, std::vector<PetscReal> &f, PetscReal *y)
+void ModalApply(const ModalSystem &S, bool contact, const PetscReal *x, std::vector<PetscReal> &q,
+                std::vector<PetscReal> &f, PetscReal *y)
 {
   const BeamSystem &sys = *S.sys;
   PetscReal         c   = 0;
@@ -133,7 +138,8 @@ void ModalApply(const ModalSystem &S, bool contact, const PetscReal *x, std::vec
     c += S.g[d] * qd;
   }
   BeamSystemStiffnessApply(sys, q.data(), sys.fields, 0, sys.ndof, f.data(), sys.fields);
-  for (PetscInt d = 0; d < S.n; ++d) y[d] = ((d < S.BeamDofs() ? f[S.dof[d]] : 0.0) + (contact ? S.k * S.g[d] * c : 0.0)) / std::sqrt(S.mass[d]);
+  for (PetscInt d = 0; d < S.n; ++d)
+    y[d] = ((d < S.BeamDofs() ? f[S.dof[d]] : 0.0) + (contact ? S.k * S.g[d] * c : 0.0)) / std::sqrt(S.mass[d]);
 }
 
 // Two steps of inverse iteration on phi (unit length, orientation kept), solve(b) overwriting b
@@ -164,7 +170,8 @@ void InverseSteps(const ModalSystem &S, bool contact, PetscReal sigma, Solve &&s
 
 // InverseSteps with the banded LU of A - sigma I (LAPACK dgbtrf; ab of leading dimension
 // 2 kl + ku + 1): 4 n kl^2 flops to factor.
-PetscErrorCode InverseIterate(const ModalSystem &S, bool contact, const std::vector<BandEntry> &entries, const std::vector<int> &pos, int kl, PetscReal sigma, PetscReal *phi)
+PetscErrorCode InverseIterate(const ModalSystem &S, bool contact, const std::vector<BandEntry> &entries,
+                              const std::vector<int> &pos, int kl, PetscReal sigma, PetscReal *phi)
 {
   const int           n = (int)pos.size(), ku = kl, ldab = 2 * kl + ku + 1, one = 1;
   std::vector<double> ab((size_t)ldab * n, 0.0), r(n);
@@ -180,11 +187,14 @@ PetscErrorCode InverseIterate(const ModalSystem &S, bool contact, const std::vec
   dgbtrf_(&n, &n, &kl, &ku, ab.data(), &ldab, ipiv.data(), &info);
   PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgbtrf failed (info %d)", info);
   if (info > 0) PetscFunctionReturn(0); // exactly singular: the vector is already exact
-  InverseSteps(S, contact, sigma, [&](std::vector<double> &b) { // b in free-dof order, overwritten by (LU)^{-1} b
-    for (int d = 0; d < n; ++d) r[pos[d]] = b[d];
-    dgbtrs_("N", &n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), r.data(), &n, &info);
-    for (int d = 0; d < n; ++d) b[d] = r[pos[d]];
-  }, phi);
+  InverseSteps(
+    S, contact, sigma,
+    [&](std::vector<double> &b) { // b in free-dof order, overwritten by (LU)^{-1} b
+      for (int d = 0; d < n; ++d) r[pos[d]] = b[d];
+      dgbtrs_("N", &n, &kl, &ku, &one, ab.data(), &ldab, ipiv.data(), r.data(), &n, &info);
+      for (int d = 0; d < n; ++d) b[d] = r[pos[d]];
+    },
+    phi);
   PetscFunctionReturn(0);
 }
 
@@ -255,7 +265,8 @@ static PetscErrorCode SparseShiftFactor(SparseShift *sp)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode InverseIterateSparse(const ModalSystem &S, bool contact, SparseShift *sp, PetscReal sigma, PetscReal *phi, bool *solved)
+PetscErrorCode InverseIterateSparse(const ModalSystem &S, bool contact, SparseShift *sp, PetscReal sigma,
+                                    PetscReal *phi, bool *solved)
 {
   const PetscInt n = S.n;
   MatFactorInfo  info;
@@ -281,8 +292,9 @@ PetscErrorCode InverseIterateSparse(const ModalSystem &S, bool contact, SparseSh
     PetscCall(MatLUFactorNumeric(sp->F, sp->A, &info));
     PetscCall(MatFactorGetError(sp->F, &err));
   }
-  if (err == MAT_FACTOR_NUMERIC_ZEROPIVOT) PetscFunctionReturn(0); // (numerically) singular: the vector is already exact
-  if (err != MAT_FACTOR_NOERROR) {                                  // the factor is spoilt for the next modes too
+  if (err == MAT_FACTOR_NUMERIC_ZEROPIVOT)
+    PetscFunctionReturn(0);        // (numerically) singular: the vector is already exact
+  if (err != MAT_FACTOR_NOERROR) { // the factor is spoilt for the next modes too
     PetscCall(SparseShiftFactor(sp));
     *solved = false;
     PetscFunctionReturn(0);
@@ -352,7 +364,10 @@ void GramSchmidt(PetscInt n, std::vector<PetscReal> &Phi)
 constexpr PetscReal kRefineResidual   = 1e-12;
 constexpr double    kRefineEveryFlops = 2e9;
 
-double ModalRefineModeFlops(PetscInt n, PetscInt kl) { return 4.0 * (double)n * (double)kl * (double)kl + 24.0 * (double)n * (double)kl; }
+double ModalRefineModeFlops(PetscInt n, PetscInt kl)
+{
+  return 4.0 * (double)n * (double)kl * (double)kl + 24.0 * (double)n * (double)kl;
+}
 
 PetscInt ModalRefineHalfWidth(const ModalSystem &S) { return BandHalfWidth(S); }
 
@@ -366,7 +381,8 @@ PetscReal ModalRefineResidual() { return kRefineResidual; }
 
 // |A phi - rho phi| / |rho| of each column of Phi (n x count), rho = phi^T A phi, A in the
 // factored form (ModalApply): O(n) per mode.
-std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi, PetscInt count)
+std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi,
+                                      PetscInt count)
 {
   const PetscInt         n = S.n;
   std::vector<PetscReal> q(S.sys->ndof), f(S.sys->ndof), ax(n), rel(count);
@@ -391,7 +407,8 @@ std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const 
 // modes whose residual asks for it, Gram-Schmidt among them in order, and every other mode
 // then made orthogonal to them (it was orthogonal to the old vectors to round-off; what the
 // refinement moved is ~|r| / gap) and normalised.
-static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda, ModalBasis *B, bool refine_all)
+static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda,
+                                  ModalBasis *B, bool refine_all)
 {
   const PetscInt               n       = S.n;
   const int                    kl      = BandHalfWidth(S);
@@ -402,7 +419,9 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
 
   PetscFunctionBeginUser;
   if (refine_all || ModalRefinesEveryMode(n, kl, count)) {
-    for (PetscInt k = 0; k < count; ++k) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n])); // just below: never exactly singular
+    for (PetscInt k = 0; k < count; ++k)
+      PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale,
+                               &B->Phi[k * n])); // just below: never exactly singular
     GramSchmidt(n, B->Phi);
     B->refined = count;
     PetscFunctionReturn(0);
@@ -421,7 +440,8 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
     }
     PetscCall(SparseShiftDestroy(&sp));
   }
-  std::vector<PetscReal> R((size_t)n * need.size()); // the refined columns, orthonormal (modified Gram-Schmidt in order)
+  std::vector<PetscReal> R((size_t)n *
+                           need.size()); // the refined columns, orthonormal (modified Gram-Schmidt in order)
   for (size_t i = 0; i < need.size(); ++i) {
     std::copy_n(&B->Phi[(size_t)need[i] * n], n, &R[i * n]);
     ModalOrthonormalize(R, n, (PetscInt)i, 1, &R[i * n]);
@@ -433,9 +453,11 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
     PetscCall(PetscBLASIntCast(n, &bn));
     PetscCall(PetscBLASIntCast((PetscInt)need.size(), &bk));
     PetscCall(PetscBLASIntCast(count, &bc));
-    PetscCallBLAS("BLASgemm", BLASgemm_("T", "N", &bk, &bc, &bn, &one, R.data(), &bn, B->Phi.data(), &bn, &zero, C.data(), &bk));
+    PetscCallBLAS("BLASgemm",
+                  BLASgemm_("T", "N", &bk, &bc, &bn, &one, R.data(), &bn, B->Phi.data(), &bn, &zero, C.data(), &bk));
     for (PetscInt k : need) std::fill_n(&C[(size_t)k * need.size()], need.size(), 0.0); // the refined columns are R's
-    PetscCallBLAS("BLASgemm", BLASgemm_("N", "N", &bn, &bc, &bk, &minus, R.data(), &bn, C.data(), &bk, &one, B->Phi.data(), &bn));
+    PetscCallBLAS("BLASgemm",
+                  BLASgemm_("N", "N", &bn, &bc, &bk, &minus, R.data(), &bn, C.data(), &bk, &one, B->Phi.data(), &bn));
     std::vector<char> refined(count, 0);
     for (size_t i = 0; i < need.size(); ++i) {
       refined[need[i]] = 1;
@@ -451,7 +473,10 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   }
   B->refined = (PetscInt)need.size();
   B->by_need = true;
-  PetscCall(PetscInfo(NULL, "modal basis: %" PetscInt_FMT " of %" PetscInt_FMT " modes refined (relative residual above %g in the factored form; half-bandwidth %d)\n", (PetscInt)need.size(), count, (double)kRefineResidual, kl));
+  PetscCall(PetscInfo(NULL,
+                      "modal basis: %" PetscInt_FMT " of %" PetscInt_FMT
+                      " modes refined (relative residual above %g in the factored form; half-bandwidth %d)\n",
+                      (PetscInt)need.size(), count, (double)kRefineResidual, kl));
   PetscFunctionReturn(0);
 }
 
@@ -491,7 +516,7 @@ static void IsolateBall(const ModalSystem &S, const std::vector<PetscReal> &lamb
   for (PetscInt k = 0; k < n; ++k) {
     if (k == kb || lambda[k] > zero) continue;
     PetscReal *phi = &B->Phi[k * n], nrm = 0;
-    phi[ball]      = 0.0;
+    phi[ball] = 0.0;
     for (PetscInt l = 0; l < k; ++l) { // against the cluster's earlier members (Gram-Schmidt)
       if (l == kb || lambda[l] > zero) continue;
       PetscReal dot = 0;
@@ -510,7 +535,7 @@ static void IsolateBall(const ModalSystem &S, const std::vector<PetscReal> &lamb
 // alpha/2 + beta omega^2/2 for a beam mode, alpha/2 for its rigid modes, 0 for the ball).
 static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
 {
-  const PetscInt         n = S.n;
+  const PetscInt         n   = S.n;
   const BeamSystem      &sys = *S.sys;
   std::vector<PetscReal> shape(sys.ndof);
   PetscReal              alpha, beta;
@@ -588,10 +613,11 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   PetscCheck(S.Rayleigh(&alpha, &beta, &why), PETSC_COMM_SELF, PETSC_ERR_SUP, "the modes of the beam: %s", why.c_str());
   const bool damped = alpha != 0 || beta != 0;
   PetscCheck(!(contact && damped), PETSC_COMM_SELF, PETSC_ERR_SUP,
-             "-beam_damping_mass %g and -beam_damping_stiffness %g: in contact the damping is not proportional (the ball and the contact spring carry none), so the coupled "
+             "-beam_damping_mass %g and -beam_damping_stiffness %g: in contact the damping is not proportional (the "
+             "ball and the contact spring carry none), so the coupled "
              "modes have no closed form; the exact modal solution needs both 0 (use a tight TS run as the reference)",
              (double)alpha, (double)beta);
-  A = ModalMatrix(S, contact);
+  A       = ModalMatrix(S, contact);
   bool dc = false;
   PetscCall(SymmetricEigenDC(n, A, &w, &dc));
   if (!dc) { // divide and conquer did not converge (rare): QR iteration on a fresh copy
@@ -608,12 +634,14 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine, bool refine_all)
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda,
+                                   std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine, bool refine_all)
 {
   const PetscInt count = (PetscInt)lambda.size();
 
   PetscFunctionBeginUser;
-  PetscCheck(!S.ball && (PetscInt)Phi.size() == S.n * count, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "ModalBasisFromModes: the beam's free dofs (%" PetscInt_FMT ") times %" PetscInt_FMT " modes", S.n, count);
+  PetscCheck(!S.ball && (PetscInt)Phi.size() == S.n * count, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ,
+             "ModalBasisFromModes: the beam's free dofs (%" PetscInt_FMT ") times %" PetscInt_FMT " modes", S.n, count);
   B->Phi = std::move(Phi);
   B->omega.assign(count, 0.0);
   B->gamma.assign(count, 0.0);
@@ -634,15 +662,16 @@ void ModalModeAt(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscR
   PetscReal Ec, ES; // E c and E S
   if (w > sigma) {
     const PetscReal wd = std::sqrt((w - sigma) * (w + sigma)), E = std::exp(-sigma * s);
-    Ec                 = E * std::cos(wd * s);
-    ES                 = E * std::sin(wd * s) / wd;
+    Ec = E * std::cos(wd * s);
+    ES = E * std::sin(wd * s) / wd;
   } else if (w == sigma) {
     Ec = std::exp(-sigma * s);
     ES = s * Ec;
   } else {
-    const PetscReal mu = std::sqrt((sigma - w) * (sigma + w)), slow = std::exp(-w * w / (sigma + mu) * s); // exp((mu - sigma) s)
-    Ec                 = 0.5 * (slow + std::exp(-(sigma + mu) * s));
-    ES                 = -slow * std::expm1(-2 * mu * s) / (2 * mu);
+    const PetscReal mu   = std::sqrt((sigma - w) * (sigma + w)),
+                    slow = std::exp(-w * w / (sigma + mu) * s); // exp((mu - sigma) s)
+    Ec                   = 0.5 * (slow + std::exp(-(sigma + mu) * s));
+    ES                   = -slow * std::expm1(-2 * mu * s) / (2 * mu);
   }
   *q  = z * (Ec + sigma * ES) + zd * ES;
   *qd = zd * (Ec - sigma * ES) - w * w * z * ES;
@@ -654,7 +683,9 @@ void ModalModeAt(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscR
 // mode (w = 0) has q' = zd exp(-2 sigma s): |q^(p)| <= |zd| (2 sigma)^(p-1), p >= 1.
 PetscReal ModalModeBound(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, int p)
 {
-  if (w == 0.0) return p == 0 ? std::abs(z) + (sigma > 0 ? std::abs(zd) / (2 * sigma) : PETSC_INFINITY) : std::abs(zd) * std::pow(2 * sigma, p - 1);
+  if (w == 0.0)
+    return p == 0 ? std::abs(z) + (sigma > 0 ? std::abs(zd) / (2 * sigma) : PETSC_INFINITY)
+                  : std::abs(zd) * std::pow(2 * sigma, p - 1);
   PetscReal l[2] = {1 / w, 0}, m[2] = {0, 1};
   for (int i = 0; i < p; ++i) {
     const PetscReal n0 = -2 * sigma * m[0] - w * w * l[0], n1 = -2 * sigma * m[1] - w * w * l[1];

@@ -32,10 +32,10 @@ struct ModalSystem {
   std::vector<PetscInt>  dof;  // free dof -> beam dof (the last is the ball: -1)
   std::vector<PetscReal> mass; // kg, per free dof
   std::vector<PetscReal> g;    // dc/dq per free dof
-  PetscInt               n = 0;
-  PetscReal              k = 0; // N/m, the contact spring
+  PetscInt               n    = 0;
+  PetscReal              k    = 0;    // N/m, the contact spring
   bool                   ball = true; // false: the beam alone (ModalSystemBeamOnly), no ball dof
-  bool                   damping = true; // false: the system's damping left out (the undamped modes of the same M and K)
+  bool     damping            = true; // false: the system's damping left out (the undamped modes of the same M and K)
   PetscInt BeamDofs() const { return ball ? n - 1 : n; }
   // The beam's damping C = alpha M + beta K (the force operator's, ForceOperatorModal; 0, 0
   // without damping or with `damping` false). False when the system's forces are not modal.
@@ -56,8 +56,9 @@ struct ModalBasis {
   std::vector<PetscReal> Phi;   // n x modes, column-major: Phi[r + k n] (orthonormal eigenvectors)
   std::vector<PetscReal> gamma; // g^T M^{-1/2} Phi_k: contribution of mode k to c
   std::vector<PetscReal> rate;  // 1/s, sigma_k = zeta_k omega_k: z_k'' + 2 sigma_k z_k' + omega_k^2 z_k = 0
-  PetscInt               refined = 0;     // modes refined by inverse iteration (all of them where the band is narrow: ModalRefinesEveryMode)
-  bool                   by_need = false; // refined where the residual asked for it (a wide band), not every mode
+  PetscInt
+       refined = 0; // modes refined by inverse iteration (all of them where the band is narrow: ModalRefinesEveryMode)
+  bool by_need = false; // refined where the residual asked for it (a wide band), not every mode
 };
 // The basis in contact (K + k g g^T) or separated (K). With Rayleigh damping C = alpha M +
 // beta K on the beam dofs (ModalSystem::Rayleigh, from the force operator) the separated basis
@@ -73,7 +74,9 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
 // decay rates): omega, Phi, rate of count modes. refine false: Phi is kept as given (modes
 // already exact and orthonormal, from the factored form: inverse iteration with K's band would
 // spoil them where eps cond(K) > 1), only the quotients and rates are computed.
-PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda, std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine = true, bool refine_all = false);
+PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<PetscReal> &lambda,
+                                   std::vector<PetscReal> &&Phi, ModalBasis *B, bool refine = true,
+                                   bool refine_all = false);
 
 // The refinement of a basis (ModalBasisBuild, ModalBasisFromModes): two steps of inverse
 // iteration per mode with a banded LU of A - sigma I (half-bandwidth kl, ModalRefineHalfWidth),
@@ -86,17 +89,18 @@ PetscInt               ModalRefineHalfWidth(const ModalSystem &S);
 double                 ModalRefineModeFlops(PetscInt n, PetscInt kl);
 bool                   ModalRefinesEveryMode(PetscInt n, PetscInt kl, PetscInt count);
 PetscReal              ModalRefineResidual();
-std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi, PetscInt count);
+std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi,
+                                      PetscInt count);
 
 // Mode (omega w, rate sigma) from z, zd at s = 0: z and z' at s, exact for every damping
 // (under-, critically and overdamped, rigid). Bound: sup over s >= 0 of |d^p z / ds^p|.
-void      ModalModeAt(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal s, PetscReal *q, PetscReal *qd);
+void ModalModeAt(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, PetscReal s, PetscReal *q, PetscReal *qd);
 PetscReal ModalModeBound(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, int p);
 
 // A phase's solution from its start: modal coordinates and velocities.
 struct ModalPhase {
-  const ModalSystem *S = nullptr;
-  const ModalBasis  *B = nullptr;
+  const ModalSystem     *S = nullptr;
+  const ModalBasis      *B = nullptr;
   std::vector<PetscReal> z, zd; // modal displacement and velocity at s = 0
 
   bool Damped(PetscInt k) const { return !B->rate.empty() && B->rate[k] > 0; }
@@ -153,10 +157,18 @@ struct ModalPhase {
       const PetscReal cs = std::cos(w * s), sn = std::sin(w * s), a = z[k], b = zd[k] / w;
       // f = a cos + b sin; derivatives rotate by 90 degrees and scale by w.
       switch (p) {
-      case 0: v += gk * (a * cs + b * sn); break;
-      case 1: v += gk * w * (-a * sn + b * cs); break;
-      case 2: v += gk * w * w * (-a * cs - b * sn); break;
-      default: v += gk * w * w * w * (a * sn - b * cs); break;
+      case 0:
+        v += gk * (a * cs + b * sn);
+        break;
+      case 1:
+        v += gk * w * (-a * sn + b * cs);
+        break;
+      case 2:
+        v += gk * w * w * (-a * cs - b * sn);
+        break;
+      default:
+        v += gk * w * w * w * (a * sn - b * cs);
+        break;
       }
     }
     return v;
@@ -220,7 +232,7 @@ bool ModalFirstCrossingOf(const Phase &ph, int p, PetscReal sign, PetscReal s_en
     if (fn <= 0) {
       PetscReal a = s, b = sn;
       for (int it = 0; it < 200 && b - a > 4 * std::numeric_limits<PetscReal>::epsilon() * b; ++it) {
-        const PetscReal mid = 0.5 * (a + b);
+        const PetscReal mid                        = 0.5 * (a + b);
         (sign * ph.Derivative(mid, p) > 0 ? a : b) = mid;
       }
       *root = b;
@@ -232,7 +244,8 @@ bool ModalFirstCrossingOf(const Phase &ph, int p, PetscReal sign, PetscReal s_en
   return false;
 }
 
-inline bool ModalFirstCrossing(const ModalPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)
+inline bool ModalFirstCrossing(const ModalPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min,
+                               PetscReal *root)
 {
   return ModalFirstCrossingOf(ph, p, sign, s_end, s_min, root);
 }

@@ -33,8 +33,8 @@ PetscErrorCode UndampedModes(const ModalSystem &S, bool contact, ModalDampedBasi
   PetscFunctionBeginUser;
   S0.damping = false; // the same M and K, without the damping
   PetscCall(ModalBasisBuild(S0, contact, &MB));
-  *B       = ModalDampedBasis();
-  B->n     = n;
+  *B   = ModalDampedBasis();
+  B->n = n;
   B->U.assign(n * n, 0.0);
   B->Ut.assign(n * n, 0.0);
   B->omega.assign(n, 0.0);
@@ -76,7 +76,8 @@ void ModalDampingMatrix(const ModalSystem &S, ModalDampedBasis *B)
     }
   }
   for (PetscInt k = 0; k < n; ++k)
-    for (PetscInt j = 0; j < k; ++j) B->Chat[j + k * n] = B->Chat[k + j * n] = 0.5 * (B->Chat[j + k * n] + B->Chat[k + j * n]);
+    for (PetscInt j = 0; j < k; ++j)
+      B->Chat[j + k * n] = B->Chat[k + j * n] = 0.5 * (B->Chat[j + k * n] + B->Chat[k + j * n]);
 }
 
 // The state matrix on y = [Omega_f z_f ; z'] and its eigen-decomposition (LAPACK geev): one
@@ -99,7 +100,8 @@ PetscErrorCode StateEigen(ModalDampedBasis *B, std::vector<PetscReal> *VR)
     PetscCall(PetscBLASIntCast(m, &bm));
     PetscCall(PetscBLASIntCast(std::max<PetscInt>(1, 8 * m), &lwork));
     std::vector<PetscReal> work(lwork), vl(1);
-    PetscCallBLAS("LAPACKgeev", LAPACKgeev_("N", "V", &bm, A.data(), &bm, wr.data(), wi.data(), vl.data(), &one, VR->data(), &bm, work.data(), &lwork, &info));
+    PetscCallBLAS("LAPACKgeev", LAPACKgeev_("N", "V", &bm, A.data(), &bm, wr.data(), wi.data(), vl.data(), &one,
+                                            VR->data(), &bm, work.data(), &lwork, &info));
     PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK geev failed (info %d)", (int)info);
   }
   PetscReal lmax = 0;
@@ -107,13 +109,16 @@ PetscErrorCode StateEigen(ModalDampedBasis *B, std::vector<PetscReal> *VR)
   for (PetscInt j = 0; j < m; ++j) {
     // Re lambda <= 0 for a damped system: a positive real part is round-off (the rigid
     // velocities without alpha, undamped modes); set to 0 so that the bounds hold.
-    PetscCheck(wr[j] <= 1e-9 * lmax, PETSC_COMM_SELF, PETSC_ERR_PLIB, "damped modal basis: eigenvalue %g%+gi with a positive real part", (double)wr[j], (double)wi[j]);
+    PetscCheck(wr[j] <= 1e-9 * lmax, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "damped modal basis: eigenvalue %g%+gi with a positive real part", (double)wr[j], (double)wi[j]);
     wr[j] = std::min<PetscReal>(wr[j], 0.0);
   }
   for (PetscInt j = 0; j < m; ++j) {
     B->lambda.push_back(ModalComplex(wr[j], wi[j]));
     B->col.push_back(j);
-    for (PetscInt i = 0; i < m; ++i) B->V.push_back(wi[j] != 0 ? ModalComplex((*VR)[i + j * m], (*VR)[i + (j + 1) * m]) : ModalComplex((*VR)[i + j * m], 0));
+    for (PetscInt i = 0; i < m; ++i)
+      B->V.push_back(wi[j] != 0 ? ModalComplex((*VR)[i + j * m], (*VR)[i + (j + 1) * m])
+                                : ModalComplex((*VR)[i + j * m], 0));
     if (wi[j] != 0) ++j;
   }
   PetscFunctionReturn(0);
@@ -134,7 +139,8 @@ PetscErrorCode StateInverse(const BeamSystem &sys, bool contact, const std::vect
     std::vector<PetscReal> work(lwork);
     PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&bm, &bm, B->Vinv.data(), &bm, piv.data(), &info));
     PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
-               "-beam_damping_mass %g, -beam_damping_stiffness %g: the eigenvectors of the damped %s system are linearly dependent (a defective, critically damped mode); the exact "
+               "-beam_damping_mass %g, -beam_damping_stiffness %g: the eigenvectors of the damped %s system are "
+               "linearly dependent (a defective, critically damped mode); the exact "
                "modal reference cannot represent it (use a tight TS run as the reference)",
                (double)ds.mass_rate, (double)ds.stiffness, contact ? "in-contact" : "separated");
     PetscCallBLAS("LAPACKgetri", LAPACKgetri_(&bm, B->Vinv.data(), &bm, piv.data(), work.data(), &lwork, &info));
@@ -148,9 +154,11 @@ PetscErrorCode StateInverse(const BeamSystem &sys, bool contact, const std::vect
   }
   B->cond = n1 * n1i;
   PetscCheck(B->cond <= kModalDampedMaxCondition, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
-             "-beam_damping_mass %g, -beam_damping_stiffness %g: the eigenvector matrix of the damped %s system has condition number %.3g (> %.0e; a mode close to critical "
+             "-beam_damping_mass %g, -beam_damping_stiffness %g: the eigenvector matrix of the damped %s system has "
+             "condition number %.3g (> %.0e; a mode close to critical "
              "damping): the exact modal reference would not be trustworthy (use a tight TS run as the reference)",
-             (double)ds.mass_rate, (double)ds.stiffness, contact ? "in-contact" : "separated", (double)B->cond, (double)kModalDampedMaxCondition);
+             (double)ds.mass_rate, (double)ds.stiffness, contact ? "in-contact" : "separated", (double)B->cond,
+             (double)kModalDampedMaxCondition);
   PetscFunctionReturn(0);
 }
 
@@ -196,7 +204,7 @@ PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDa
 
 void ModalDampedPhase::From(const std::vector<PetscReal> &q, const std::vector<PetscReal> &qd)
 {
-  const PetscInt n = B->n, m = B->m, nf = (PetscInt)B->flex.size(), r = (PetscInt)B->lambda.size();
+  const PetscInt         n = B->n, m = B->m, nf = (PetscInt)B->flex.size(), r = (PetscInt)B->lambda.size();
   std::vector<PetscReal> zd(n, 0.0), y(m, 0.0), b(m, 0.0);
   z0.assign(n, 0.0);
   for (PetscInt d = 0; d < n; ++d)
@@ -209,7 +217,8 @@ void ModalDampedPhase::From(const std::vector<PetscReal> &q, const std::vector<P
   for (PetscInt j = 0; j < m; ++j)
     for (PetscInt i = 0; i < m; ++i) b[i] += B->Vinv[i + j * m] * y[j];
   a.resize(r);
-  for (PetscInt j = 0; j < r; ++j) a[j] = B->lambda[j].imag() != 0 ? ModalComplex(b[B->col[j]], -b[B->col[j] + 1]) : ModalComplex(b[B->col[j]], 0);
+  for (PetscInt j = 0; j < r; ++j)
+    a[j] = B->lambda[j].imag() != 0 ? ModalComplex(b[B->col[j]], -b[B->col[j] + 1]) : ModalComplex(b[B->col[j]], 0);
 }
 
 void ModalDampedPhase::At(PetscReal s, std::vector<PetscReal> &z, std::vector<PetscReal> &zd) const
@@ -275,7 +284,9 @@ PetscReal ModalDampedPhase::Dissipated(PetscReal s) const
   for (size_t k = 0; k < r; ++k)
     for (size_t j = 0; j < r; ++j) {
       const ModalComplex lj = B->lambda[j], lk = B->lambda[k];
-      D += (a[j] * a[k] * B->G1[j + k * r] * Phi1(lj + lk, s) + a[j] * std::conj(a[k]) * B->G2[j + k * r] * Phi1(lj + std::conj(lk), s)).real();
+      D += (a[j] * a[k] * B->G1[j + k * r] * Phi1(lj + lk, s) +
+            a[j] * std::conj(a[k]) * B->G2[j + k * r] * Phi1(lj + std::conj(lk), s))
+             .real();
     }
   return 0.5 * D;
 }

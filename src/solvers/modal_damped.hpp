@@ -30,21 +30,21 @@ namespace beamimpact {
 using ModalComplex = std::complex<PetscReal>;
 
 struct ModalDampedBasis {
-  PetscInt               n = 0, m = 0;  // free dofs (ball last); states nf + n
-  std::vector<PetscInt>  flex;          // state i < nf -> its mode (Omega > 0)
-  std::vector<PetscInt>  state_of;      // mode -> its displacement state (-1: rigid)
-  std::vector<PetscReal> omega;         // rad/s per mode (exactly 0 for a rigid mode)
-  std::vector<PetscReal> U;             // n x n column-major: shape of mode k, M^{-1/2} Phi_k
-  std::vector<PetscReal> Ut;            // n x n: z = Ut q (Phi^T M^{1/2})
-  std::vector<PetscReal> gamma;         // g^T U_k
-  std::vector<PetscReal> Chat;          // n x n: U^T C U
-  std::vector<ModalComplex> lambda;     // one per real eigenvalue or conjugate pair (Im > 0)
-  std::vector<PetscInt>     col;        // its first column of the real eigenvector matrix
-  std::vector<ModalComplex> V;          // m x r: complex eigenvector of each term
-  std::vector<PetscReal>    Vinv;       // m x m: inverse of the real eigenvector matrix
-  std::vector<ModalComplex> Gamma;      // contribution of each term's eigenvector to c
-  std::vector<ModalComplex> G1, G2;     // r x r: w_j^T Chat w_k and w_j^T Chat conj(w_k) (w: velocity part)
-  PetscReal                 cond = 0;   // 1-norm condition number of the real eigenvector matrix
+  PetscInt                  n = 0, m = 0;    // free dofs (ball last); states nf + n
+  std::vector<PetscInt>     flex;            // state i < nf -> its mode (Omega > 0)
+  std::vector<PetscInt>     state_of;        // mode -> its displacement state (-1: rigid)
+  std::vector<PetscReal>    omega;           // rad/s per mode (exactly 0 for a rigid mode)
+  std::vector<PetscReal>    U;               // n x n column-major: shape of mode k, M^{-1/2} Phi_k
+  std::vector<PetscReal>    Ut;              // n x n: z = Ut q (Phi^T M^{1/2})
+  std::vector<PetscReal>    gamma;           // g^T U_k
+  std::vector<PetscReal>    Chat;            // n x n: U^T C U
+  std::vector<ModalComplex> lambda;          // one per real eigenvalue or conjugate pair (Im > 0)
+  std::vector<PetscInt>     col;             // its first column of the real eigenvector matrix
+  std::vector<ModalComplex> V;               // m x r: complex eigenvector of each term
+  std::vector<PetscReal>    Vinv;            // m x m: inverse of the real eigenvector matrix
+  std::vector<ModalComplex> Gamma;           // contribution of each term's eigenvector to c
+  std::vector<ModalComplex> G1, G2;          // r x r: w_j^T Chat w_k and w_j^T Chat conj(w_k) (w: velocity part)
+  PetscReal                 cond        = 0; // 1-norm condition number of the real eigenvector matrix
   PetscReal                 rigid_gamma = 0; // max |g^T U_r| / max |gamma| over rigid modes (0 in exact arithmetic)
 };
 
@@ -59,8 +59,8 @@ PetscErrorCode ModalDampedBasisBuild(const ModalSystem &S, bool contact, ModalDa
 
 // A phase from its start: the coefficients a_j and the rigid modes' displacements at s = 0.
 struct ModalDampedPhase {
-  const ModalSystem      *S = nullptr;
-  const ModalDampedBasis *B = nullptr;
+  const ModalSystem        *S = nullptr;
+  const ModalDampedBasis   *B = nullptr;
   std::vector<ModalComplex> a;
   std::vector<PetscReal>    z0; // modal displacements at s = 0 (the rigid ones are used)
 
@@ -75,7 +75,8 @@ struct ModalDampedPhase {
   PetscReal Dissipated(PetscReal s) const;
 };
 
-inline bool ModalFirstCrossing(const ModalDampedPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min, PetscReal *root)
+inline bool ModalFirstCrossing(const ModalDampedPhase &ph, int p, PetscReal sign, PetscReal s_end, PetscReal s_min,
+                               PetscReal *root)
 {
   return ModalFirstCrossingOf(ph, p, sign, s_end, s_min, root);
 }

@@ -24,10 +24,12 @@ PetscInt BeamFreeDofCount(const BeamSystem &op)
 static PetscErrorCode ModesCountCheck(MPI_Comm comm, PetscInt count, PetscInt nfree)
 {
   PetscFunctionBeginUser;
-  PetscCheck(count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", count);
+  PetscCheck(count >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-modes_count %" PetscInt_FMT " is not allowed: at least 1 mode must be requested", count);
   PetscCheck(count <= nfree, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-modes_count %" PetscInt_FMT " is not allowed: the beam has %" PetscInt_FMT " free dofs, so at most %" PetscInt_FMT " modes exist (use 1..%" PetscInt_FMT " or more -beam_nodes)", count,
-             nfree, nfree, nfree);
+             "-modes_count %" PetscInt_FMT " is not allowed: the beam has %" PetscInt_FMT
+             " free dofs, so at most %" PetscInt_FMT " modes exist (use 1..%" PetscInt_FMT " or more -beam_nodes)",
+             count, nfree, nfree, nfree);
   PetscFunctionReturn(0);
 }
 
@@ -36,7 +38,9 @@ const OptionModule &ModesOptionTable()
   static const OptionModule m = {
     "modes",
     "Beam modes: eigen-solve of K phi = omega^2 M phi",
-    {OptionInt("-modes_count", "Number of modes to report, counted from omega = 0 (rigid modes included, reported as 0)", "4", AtLeast(1))},
+    {OptionInt("-modes_count",
+               "Number of modes to report, counted from omega = 0 (rigid modes included, reported as 0)", "4",
+               AtLeast(1))},
   };
   return m;
 }
@@ -152,9 +156,9 @@ static PetscErrorCode ModesProblemAssemble(MPI_Comm comm, const BeamSystem &op, 
 // vector is a hash of the free row, the same whatever the number of ranks.
 static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, PetscInt count, PetscReal unit, EPS *eps)
 {
-  ST          st;
-  KSP         ksp;
-  Vec         x0;
+  ST           st;
+  KSP          ksp;
+  Vec          x0;
   PetscScalar *a;
 
   PetscFunctionBeginUser;
@@ -209,13 +213,13 @@ static PetscReal ModeNormalise(const BeamSystem &op, std::vector<PetscReal> &phi
 // (1e-4 (EI/mu)/L^4 at N = 641), which would blur the rigid modes and the fundamental on fine
 // grids; the quotient's error is quadratic in the eigenvector error, so it is accurate to
 // round-off in both. Every rank evaluates it on the same gathered vector.
-static PetscErrorCode ModesExtract(MPI_Comm comm, EPS eps, const BeamSystem &op, const ModesProblem &pb, PetscInt count, std::vector<PetscReal> *lambda,
-                                   std::vector<std::vector<PetscReal>> *phis)
+static PetscErrorCode ModesExtract(MPI_Comm comm, EPS eps, const BeamSystem &op, const ModesProblem &pb, PetscInt count,
+                                   std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
 {
-  const PetscInt nfree = (PetscInt)pb.free_dofs.size();
-  const PetscReal unit = op.frequency_unit;
-  Vec            x, xall;
-  VecScatter     toall;
+  const PetscInt  nfree = (PetscInt)pb.free_dofs.size();
+  const PetscReal unit  = op.frequency_unit;
+  Vec             x, xall;
+  VecScatter      toall;
 
   PetscFunctionBeginUser;
   lambda->assign(count, 0.0);
@@ -223,8 +227,8 @@ static PetscErrorCode ModesExtract(MPI_Comm comm, EPS eps, const BeamSystem &op,
   PetscCall(MatCreateVecs(pb.K, &x, NULL));
   PetscCall(VecScatterCreateToAll(x, &toall, &xall));
   for (PetscInt m = 0; m < count; ++m) {
-    PetscScalar        kr;
-    const PetscScalar *a;
+    PetscScalar             kr;
+    const PetscScalar      *a;
     std::vector<PetscReal> &phi = (*phis)[m];
     PetscCall(EPSGetEigenpair(eps, m, &kr, NULL, x, NULL));
     PetscCall(VecScatterBegin(toall, x, xall, INSERT_VALUES, SCATTER_FORWARD));
@@ -232,10 +236,13 @@ static PetscErrorCode ModesExtract(MPI_Comm comm, EPS eps, const BeamSystem &op,
     PetscCall(VecGetArrayRead(xall, &a));
     for (PetscInt r = 0; r < nfree; ++r) phi[pb.free_dofs[r]] = PetscRealPart(a[r]);
     PetscCall(VecRestoreArrayRead(xall, &a));
-    PetscCheck(ModeNormalise(op, phi) > 0, comm, PETSC_ERR_PLIB, "BeamModesCompute: eigenvector %" PetscInt_FMT " is zero", m);
+    PetscCheck(ModeNormalise(op, phi) > 0, comm, PETSC_ERR_PLIB,
+               "BeamModesCompute: eigenvector %" PetscInt_FMT " is zero", m);
     (*lambda)[m] = 2.0 * BeamSystemStrainEnergy(op, phi.data(), op.fields, 0, op.ndof); // phi^T M phi = 1
-    PetscCall(PetscInfo(eps, "mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2 = %.6e (EI/mu)/L^4\n", m, (double)PetscRealPart(kr), (double)(*lambda)[m],
-                        (double)((*lambda)[m] / (unit * unit))));
+    PetscCall(PetscInfo(eps,
+                        "mode %" PetscInt_FMT
+                        ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2 = %.6e (EI/mu)/L^4\n",
+                        m, (double)PetscRealPart(kr), (double)(*lambda)[m], (double)((*lambda)[m] / (unit * unit))));
   }
   PetscCall(VecScatterDestroy(&toall));
   PetscCall(VecDestroy(&xall));
@@ -270,7 +277,9 @@ static PetscInt ModeFamily(const BeamSystem &op, const std::vector<PetscReal> &p
 
 // The result in ascending order (the solver's, up to round-off among nearly equal modes);
 // modes below kModesRigidThreshold of the frequency unit are rigid: omega, period 0.
-static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lambda, std::vector<std::vector<PetscReal>> &phis, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
+static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lambda,
+                        std::vector<std::vector<PetscReal>> &phis, ModesResult *out,
+                        std::vector<std::vector<PetscReal>> *shapes)
 {
   const PetscInt        count = (PetscInt)lambda.size();
   std::vector<PetscInt> order(count);
@@ -312,7 +321,8 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   }
 }
 
-PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out, std::vector<std::vector<PetscReal>> *shapes)
+PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt count, ModesResult *out,
+                                std::vector<std::vector<PetscReal>> *shapes)
 {
   ModesProblem                        pb;
   EPS                                 eps;
@@ -322,12 +332,17 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
 
   PetscFunctionBeginUser;
   // The rigid-mode test and the frequencies from the strain energy leave a grip's springs out.
-  PetscCheck(!op.Gripped(), comm, PETSC_ERR_SUP, "the modes of a beam held by the hands (-grip) are not computed yet: drop -grip for -task modes");
+  PetscCheck(!op.Gripped(), comm, PETSC_ERR_SUP,
+             "the modes of a beam held by the hands (-grip) are not computed yet: drop -grip for -task modes");
   PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "BeamModesCompute: out must not be NULL");
-  PetscCheck(op.ndof >= 3 && op.frequency_unit > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.ndof && (PetscInt)op.held.size() == op.ndof, comm, PETSC_ERR_ARG_WRONG,
-             "BeamModesCompute: the beam system is not built (%" PetscInt_FMT " dofs, frequency unit %g rad/s, L = %g)", op.ndof, (double)op.frequency_unit, (double)op.L);
+  PetscCheck(op.ndof >= 3 && op.frequency_unit > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.ndof &&
+               (PetscInt)op.held.size() == op.ndof,
+             comm, PETSC_ERR_ARG_WRONG,
+             "BeamModesCompute: the beam system is not built (%" PetscInt_FMT " dofs, frequency unit %g rad/s, L = %g)",
+             op.ndof, (double)op.frequency_unit, (double)op.L);
   {
-    BeamFactor F; // a fine grid of a statically determinate beam: the factored form, as the modal engine takes it (beam_modes.hpp)
+    BeamFactor F; // a fine grid of a statically determinate beam: the factored form, as the modal engine takes it
+                  // (beam_modes.hpp)
     if (BeamModesFactoredForm(op, &F)) {
       PetscCall(BeamModesLowestFactored(comm, op, F, count, 0, &lambda, &phis));
       for (std::vector<PetscReal> &phi : phis) ModeNormalise(op, phi); // the sign convention (already mass-normalised)
@@ -341,7 +356,10 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
   PetscCall(ModesSolverCreate(comm, pb, count, op.frequency_unit, &eps));
   PetscCall(EPSSolve(eps));
   PetscCall(EPSGetConverged(eps, &nconv));
-  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "BeamModesCompute: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " modes requested by -modes_count", nconv, count);
+  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED,
+             "BeamModesCompute: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT
+             " modes requested by -modes_count",
+             nconv, count);
   PetscCall(ModesExtract(comm, eps, op, pb, count, &lambda, &phis));
   ModesReport(op, lambda, phis, out, shapes);
   out->method = "shift-and-invert on K";
@@ -351,8 +369,11 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
       std::string found;
       for (PetscInt m = 0; m < want; ++m) found += (m ? ", " : "") + std::to_string(out->frequency[m]);
       SETERRQ(comm, PETSC_ERR_NOT_CONVERGED,
-              "the modes at N = %" PetscInt_FMT " are not resolved: the held dofs allow %" PetscInt_FMT " rigid mode(s) at 0 Hz, but the lowest %" PetscInt_FMT
-              " found are at %s Hz (the stiffness's round-off, its largest eigenvalue ~N^4 times the fundamental's, blurs the rigid motions, rounded up to flexural modes); reduce -beam_nodes (the paper's beam is resolved up to about N = 15000)",
+              "the modes at N = %" PetscInt_FMT " are not resolved: the held dofs allow %" PetscInt_FMT
+              " rigid mode(s) at 0 Hz, but the lowest %" PetscInt_FMT
+              " found are at %s Hz (the stiffness's round-off, its largest eigenvalue ~N^4 times the fundamental's, "
+              "blurs the rigid motions, rounded up to flexural modes); reduce -beam_nodes (the paper's beam is "
+              "resolved up to about N = 15000)",
               op.nodes, want, want, found.c_str());
     }
   }
@@ -371,7 +392,7 @@ struct ModesProgress {
   PetscReal every = 0, start = 0, last = 0;
   PetscInt  want  = 0;
   PetscInt  nconv = 0, restarts = 0, applications = 0; // as of the last restart; operator applications so far
-  MPI_Comm  comm  = MPI_COMM_NULL; // where to print
+  MPI_Comm  comm = MPI_COMM_NULL;                      // where to print
 };
 
 static PetscErrorCode ModesProgressTick(ModesProgress *p)
@@ -381,13 +402,18 @@ static PetscErrorCode ModesProgressTick(ModesProgress *p)
   PetscFunctionBeginUser;
   if (p->every > 0 && now - p->last >= p->every) {
     p->last = now;
-    PetscCall(PetscPrintf(p->comm, "beamimpact: the beam's modes: %" PetscInt_FMT " of %" PetscInt_FMT " converged after %" PetscInt_FMT " restart%s (%" PetscInt_FMT " operator application%s), %.1f s\n", p->nconv, p->want, p->restarts,
-                          p->restarts == 1 ? "" : "s", p->applications, p->applications == 1 ? "" : "s", (double)(now - p->start)));
+    PetscCall(PetscPrintf(p->comm,
+                          "beamimpact: the beam's modes: %" PetscInt_FMT " of %" PetscInt_FMT
+                          " converged after %" PetscInt_FMT " restart%s (%" PetscInt_FMT
+                          " operator application%s), %.1f s\n",
+                          p->nconv, p->want, p->restarts, p->restarts == 1 ? "" : "s", p->applications,
+                          p->applications == 1 ? "" : "s", (double)(now - p->start)));
   }
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ModesProgressMonitor(EPS, PetscInt its, PetscInt nconv, PetscScalar *, PetscScalar *, PetscReal *, PetscInt, void *ctx)
+static PetscErrorCode ModesProgressMonitor(EPS, PetscInt its, PetscInt nconv, PetscScalar *, PetscScalar *, PetscReal *,
+                                           PetscInt, void *ctx)
 {
   ModesProgress *p = static_cast<ModesProgress *>(ctx);
 
@@ -408,7 +434,8 @@ static PetscErrorCode ModesProgressApplied(KSP, Vec, Vec, void *ctx)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
+PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress,
+                               std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
 {
   ModesProblem  pb;
   EPS           eps;
@@ -433,7 +460,10 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
   }
   PetscCall(EPSSolve(eps));
   PetscCall(EPSGetConverged(eps, &nconv));
-  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED, "the beam's modes: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest modes (-modal_modes, -modal_tolerance)", nconv, count);
+  PetscCheck(nconv >= count, comm, PETSC_ERR_CONV_FAILED,
+             "the beam's modes: the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT
+             " lowest modes (-modal_modes, -modal_tolerance)",
+             nconv, count);
   PetscCall(ModesExtract(comm, eps, op, pb, count, lambda, phis));
   PetscCall(EPSDestroy(&eps));
   PetscCall(ModesProblemDestroy(&pb));
@@ -455,9 +485,9 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
 // orthogonalisation (O(n k^2), the cost at N = 40961) split over the ranks. On one rank, no
 // gather: the arithmetic of the serial operator.
 struct FactoredShell {
-  const BeamFactor      *F = nullptr;
+  const BeamFactor      *F        = nullptr;
   ModesProgress         *progress = nullptr; // a line now and then during a long solve (null: none)
-  PetscMPIInt            size = 1;
+  PetscMPIInt            size     = 1;
   PetscInt               rstart = 0, rend = 0; // rows owned by this rank
   VecScatter             toall = nullptr;      // z to every rank (size > 1)
   Vec                    zall  = nullptr;
@@ -515,7 +545,8 @@ static PetscErrorCode FactoredMult(Mat A, Vec z, Vec y)
 // The flexible modes' vectors z_k (orthonormal, ascending in omega) of the solved EPS as modes
 // over all dofs (phi = M^{-1/2} z: mass-normalised), gathered whole on every rank, each lambda
 // the Rayleigh quotient of the strain energy.
-static PetscErrorCode FactoredExtract(EPS eps, Mat A, const BeamSystem &op, PetscInt nflex, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
+static PetscErrorCode FactoredExtract(EPS eps, Mat A, const BeamSystem &op, PetscInt nflex,
+                                      std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
 {
   FactoredShell *sh;
   Vec            x;
@@ -533,7 +564,9 @@ static PetscErrorCode FactoredExtract(EPS eps, Mat A, const BeamSystem &op, Pets
     for (PetscInt d = 0; d < F.n; ++d) phi[F.dof[d]] = PetscRealPart(a[d]) / std::sqrt(F.mass[d]);
     PetscCall(FactoredGatherEnd(sh, x, &a));
     const PetscReal l = 2.0 * BeamSystemStrainEnergy(op, phi.data(), op.fields, 0, op.ndof); // phi^T M phi = 1
-    PetscCall(PetscInfo(eps, "factored mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2\n", k, 1.0 / (double)PetscRealPart(kr), (double)l));
+    PetscCall(PetscInfo(eps,
+                        "factored mode %" PetscInt_FMT ": solver omega^2 = %.16e, Rayleigh quotient %.16e (rad/s)^2\n",
+                        k, 1.0 / (double)PetscRealPart(kr), (double)l));
     lambda->push_back(l);
     phis->push_back(std::move(phi));
   }
@@ -563,7 +596,8 @@ static PetscErrorCode FactoredShellCreate(MPI_Comm comm, FactoredShell *sh, Mat 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda,
+PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count,
+                                       PetscReal progress, std::vector<PetscReal> *lambda,
                                        std::vector<std::vector<PetscReal>> *phis)
 {
   const PetscInt nrigid = (PetscInt)F.rigid.size(), nflex = std::min(count, F.n) - nrigid;
@@ -597,7 +631,8 @@ PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, cons
   PetscCall(EPSSetTolerances(eps, 1e-12, 1000));
   PetscCall(MatCreateVecs(A, &x0, NULL));
   PetscCall(VecGetArray(x0, &a));
-  for (PetscInt d = sh.rstart; d < sh.rend; ++d) a[d - sh.rstart] = 1.0 + 0.5 * HashUniform(d); // the same whatever the number of ranks
+  for (PetscInt d = sh.rstart; d < sh.rend; ++d)
+    a[d - sh.rstart] = 1.0 + 0.5 * HashUniform(d); // the same whatever the number of ranks
   PetscCall(VecRestoreArray(x0, &a));
   PetscCall(EPSSetInitialSpace(eps, 1, &x0));
   PetscCall(VecDestroy(&x0));
@@ -615,13 +650,17 @@ PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, cons
     PetscCall(EPSDestroy(&eps));
     PetscCall(MatDestroy(&A));
     PetscCall(FactoredShellDestroy(&sh));
-    SETERRQ(comm, PETSC_ERR_CONV_FAILED, "the beam's modes (factored form): the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT " lowest flexible modes (-modal_modes, -modal_tolerance)", nconv, nflex);
+    SETERRQ(comm, PETSC_ERR_CONV_FAILED,
+            "the beam's modes (factored form): the eigen-solver converged %" PetscInt_FMT " of the %" PetscInt_FMT
+            " lowest flexible modes (-modal_modes, -modal_tolerance)",
+            nconv, nflex);
   }
   PetscCall(FactoredExtract(eps, A, op, nflex, lambda, phis));
   PetscCall(EPSDestroy(&eps));
   PetscCall(MatDestroy(&A));
   PetscCall(FactoredShellDestroy(&sh));
-  std::vector<PetscInt> order(nflex); // ascending in the Rayleigh quotient, as the solver's (descending 1/omega^2) up to round-off
+  std::vector<PetscInt> order(
+    nflex); // ascending in the Rayleigh quotient, as the solver's (descending 1/omega^2) up to round-off
   for (PetscInt k = 0; k < nflex; ++k) order[k] = nrigid + k;
   std::stable_sort(order.begin(), order.end(), [&](PetscInt p, PetscInt q) { return (*lambda)[p] < (*lambda)[q]; });
   std::vector<PetscReal>              l(lambda->begin(), lambda->begin() + nrigid);
@@ -649,7 +688,12 @@ PetscInt BeamModesRigidCount(Support left, Support right) { return SupportRigidM
 namespace {
 
 // The characteristic equations of a uniform beam, in a form bounded for large x.
-enum class BetaEquation { CosCoshPlusOne, CosCoshMinusOne, TanTanh, Sin };
+enum class BetaEquation {
+  CosCoshPlusOne,
+  CosCoshMinusOne,
+  TanTanh,
+  Sin
+};
 
 // f(x) and f'(x) for the equation (divided by cosh x where cosh appears).
 void BetaEquationEval(BetaEquation e, PetscReal x, PetscReal *f, PetscReal *df)
@@ -677,21 +721,26 @@ void BetaEquationEval(BetaEquation e, PetscReal x, PetscReal *f, PetscReal *df)
 
 } // namespace
 
-PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, PetscReal EI, PetscReal mu, PetscInt n_flexural, std::vector<PetscReal> *omega)
+PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, PetscReal EI, PetscReal mu,
+                                 PetscInt n_flexural, std::vector<PetscReal> *omega)
 {
   // the beta_n L tables of docs/model.md, n = 1, 2, ...
-  static const PetscReal free_free[]   = {4.73004, 7.85320, 10.99561, 14.13717};
+  static const PetscReal free_free[]    = {4.73004, 7.85320, 10.99561, 14.13717};
   static const PetscReal clamped_free[] = {1.87510, 4.69409, 7.85476, 10.99554};
-  static const PetscReal pinned_free[] = {3.92660, 7.06858, 10.21018};
+  static const PetscReal pinned_free[]  = {3.92660, 7.06858, 10.21018};
 
   PetscFunctionBeginUser;
   PetscCheck(omega, PETSC_COMM_SELF, PETSC_ERR_ARG_NULL, "BeamModesAnalytic: omega must not be NULL");
-  PetscCheck(L > 0 && EI > 0 && mu > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "BeamModesAnalytic: need L > 0 (m), EI > 0 (N m^2), mu > 0 (kg/m); got L = %g, EI = %g, mu = %g", (double)L,
-             (double)EI, (double)mu);
-  PetscCheck(n_flexural >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "BeamModesAnalytic: n_flexural = %" PetscInt_FMT " is not allowed: it must be >= 0", n_flexural);
+  PetscCheck(L > 0 && EI > 0 && mu > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "BeamModesAnalytic: need L > 0 (m), EI > 0 (N m^2), mu > 0 (kg/m); got L = %g, EI = %g, mu = %g",
+             (double)L, (double)EI, (double)mu);
+  PetscCheck(n_flexural >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "BeamModesAnalytic: n_flexural = %" PetscInt_FMT " is not allowed: it must be >= 0", n_flexural);
 
-  const auto is = [&](Support a, Support b) { return (left == a && right == b) || (left == b && right == a); }; // either order
-  const PetscReal *table = nullptr;
+  const auto is = [&](Support a, Support b) {
+    return (left == a && right == b) || (left == b && right == a);
+  }; // either order
+  const PetscReal *table  = nullptr;
   PetscInt         ntable = 0;
   BetaEquation     eq     = BetaEquation::Sin;
   PetscReal        asym_a = 1.0, asym_b = 0.0; // asymptote beta_n L = (asym_a n + asym_b) pi
@@ -714,7 +763,8 @@ PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, Petsc
     eq     = BetaEquation::Sin;
     asym_a = 1.0, asym_b = 0.0; // n pi, exact
   } else {
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "BeamModesAnalytic: no beta-L reference for supports %s-%s", SupportName(left), SupportName(right));
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "BeamModesAnalytic: no beta-L reference for supports %s-%s",
+            SupportName(left), SupportName(right));
   }
 
   const PetscReal unit = std::sqrt(EI / mu) / (L * L);
@@ -729,7 +779,8 @@ PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, Petsc
       x -= dx;
       if (std::abs(dx) <= 4 * PETSC_MACHINE_EPSILON * x) break;
     }
-    PetscCheck(std::abs(x - guess) < 1e-3 * guess, PETSC_COMM_SELF, PETSC_ERR_PLIB, "BeamModesAnalytic: Newton left the root near beta L = %g (mode %" PetscInt_FMT ")", (double)guess, n);
+    PetscCheck(std::abs(x - guess) < 1e-3 * guess, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "BeamModesAnalytic: Newton left the root near beta L = %g (mode %" PetscInt_FMT ")", (double)guess, n);
     (*omega)[n - 1] = x * x * unit;
   }
   PetscFunctionReturn(0);

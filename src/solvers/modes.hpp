@@ -51,25 +51,25 @@ PetscErrorCode ModesParamsFromOptions(MPI_Comm comm, ModesParams *p, const BeamS
 std::vector<PetscReal> ModeNodes(const std::vector<PetscReal> &shape, PetscReal h);
 
 struct ModesResult {
-  std::vector<PetscReal> omega;     // rad/s, angular frequencies, ascending; rigid modes exactly 0
-  std::vector<PetscReal> frequency; // Hz, omega / (2 pi)
-  std::vector<PetscReal> period;    // s, 2 pi / omega (0 for rigid modes)
+  std::vector<PetscReal> omega;           // rad/s, angular frequencies, ascending; rigid modes exactly 0
+  std::vector<PetscReal> frequency;       // Hz, omega / (2 pi)
+  std::vector<PetscReal> period;          // s, 2 pi / omega (0 for rigid modes)
   PetscInt               rigid_count = 0; // number of rigid modes among the reported ones
   // With a barrel wall (-beam_shell, -barrel_hoop_frequency): each mode's family, the group of
   // fields holding most of its kinetic energy: 0 the beam's bending, n a shell harmonic's, 2 the
   // hoop oscillator; empty without a wall.
-  std::vector<PetscInt>  shell_n;
+  std::vector<PetscInt> shell_n;
   // With a roll field or a string bed (-beam_torsion, -strings_frame): each mode's part
   // (model/beam_theory.hpp's Part: the beam's bending, the twist, the bed) holding most of its
   // kinetic energy, and that part's share of it (a coupled mode has none near 1); the bed's
   // deflection of each mode on its grid, [z][x] (mass-normalised, 0 where not an unknown; with
   // the shapes only). Empty without them.
-  std::vector<PetscInt>  part;
-  std::vector<PetscReal> part_share;
+  std::vector<PetscInt>               part;
+  std::vector<PetscReal>              part_share;
   std::vector<std::vector<PetscReal>> bed_shape;
   // How they were found: "shift-and-invert on K" (SLEPc on the stiffness), or "factored form"
   // (a fine grid of a statically determinate beam: BeamModesFactoredForm, beam_modes.hpp).
-  std::string            method;
+  std::string method;
 };
 
 // Relative threshold for rigid modes: a computed mode is rigid (reported as
@@ -107,7 +107,8 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
 // energy, each vector over all dofs, mass-normalised (0 at held dofs; signs as the solver's).
 // progress > 0: a line every `progress` seconds while the solver runs (checked at each restart and each
 // application of its operator; the converged count capped at `count`).
-PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis);
+PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress,
+                               std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis);
 
 // The same from the factored form F of a statically determinate beam (BeamFactorCreate,
 // solvers/beam_flexibility.hpp), for grids where shift-and-invert on K loses the low modes to
@@ -121,7 +122,8 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
 // On P ranks the result agrees with one rank's to round-off (the reductions' order); on one
 // rank it is the serial solve's, bit for bit. Ascending, as BeamModesLowest.
 struct BeamFactor;
-PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count, PetscReal progress, std::vector<PetscReal> *lambda,
+PetscErrorCode BeamModesLowestFactored(MPI_Comm comm, const BeamSystem &op, const BeamFactor &F, PetscInt count,
+                                       PetscReal progress, std::vector<PetscReal> *lambda,
                                        std::vector<std::vector<PetscReal>> *phis);
 
 // Rigid modes the held dofs allow, for any supports, clamped region or pivot: the number of
@@ -131,10 +133,10 @@ PetscInt BeamSystemRigidCount(const BeamSystem &op);
 
 // BeamModesCompute checks that its lowest min(count, BeamSystemRigidCount(op)) modes are rigid
 // (below kModesRigidThreshold): on very fine grids (measured for the paper's free-free and
-// pinned-free beams: resolved at N = 15001, not at N >= 17001; docs/model.md) the round-off of the stiffness, whose largest
-// eigenvalue is ~N^4 times the fundamental's, turns them into modes at a fraction of a hertz
-// or loses them; the run is then refused (PETSC_ERR_NOT_CONVERGED) naming N, the expected
-// count and the frequencies found, instead of reporting them as flexural modes.
+// pinned-free beams: resolved at N = 15001, not at N >= 17001; docs/model.md) the round-off of the stiffness, whose
+// largest eigenvalue is ~N^4 times the fundamental's, turns them into modes at a fraction of a hertz or loses them; the
+// run is then refused (PETSC_ERR_NOT_CONVERGED) naming N, the expected count and the frequencies found, instead of
+// reporting them as flexural modes.
 
 // Rigid modes of a uniform beam with these end supports and no clamped region, from what the
 // supports hold (SupportRigidModes, model/support.hpp): 2 for free-free (translation, rotation),
@@ -155,7 +157,7 @@ PetscInt BeamModesRigidCount(Support left, Support right);
 //   cos(bL) cosh(bL) = 1, cos(bL) cosh(bL) = -1, tan(bL) = tanh(bL)
 // respectively, to full double precision. Returns PETSC_ERR_SUP for supports
 // outside these combinations and PETSC_ERR_ARG_OUTOFRANGE for bad arguments.
-PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, PetscReal EI, PetscReal mu, PetscInt n_flexural,
-                                 std::vector<PetscReal> *omega);
+PetscErrorCode BeamModesAnalytic(Support left, Support right, PetscReal L, PetscReal EI, PetscReal mu,
+                                 PetscInt n_flexural, std::vector<PetscReal> *omega);
 
 } // namespace beamimpact

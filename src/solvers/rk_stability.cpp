@@ -33,18 +33,19 @@ PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscR
   // Growth per step allowed: 1e-12 (1e-4 over 1e8 steps). RK2's |R(iy)| = 1 + y^4/8 + ...
   // exceeds it from y = 1.7e-3: such a method is reported unstable at any practical step.
   const double tol = 1e-12, dy = 1e-3;
-  double       y   = 0.0;
+  double       y = 0.0;
   while (y < 20.0 && amp(y + dy) <= 1.0 + tol) y += dy;
   if (y < 0.05) return 0.0;
   double lo = y, hi = y + dy; // refine the edge
   for (int it = 0; it < 60; ++it) {
-    const double mid = 0.5 * (lo + hi);
+    const double mid                  = 0.5 * (lo + hi);
     (amp(mid) <= 1.0 + tol ? lo : hi) = mid;
   }
   return lo;
 }
 
-PetscReal RKDampedStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b, PetscReal omega_max, PetscReal alpha, PetscReal beta)
+PetscReal RKDampedStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b, PetscReal omega_max,
+                                 PetscReal alpha, PetscReal beta)
 {
   using cplx = std::complex<double>;
   // The modes sampled at K frequencies up to omega_max (the growth of a mode varies smoothly
@@ -76,7 +77,7 @@ PetscReal RKDampedStabilityBound(PetscInt s, const PetscReal *A, const PetscReal
   if (dt < 0.05 / rate) return 0.0;
   double lo = dt, hi = dt + dd;
   for (int it = 0; it < 50; ++it) {
-    const double mid = 0.5 * (lo + hi);
+    const double mid        = 0.5 * (lo + hi);
     (stable(mid) ? lo : hi) = mid;
   }
   return lo;

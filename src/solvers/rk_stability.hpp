@@ -17,6 +17,7 @@ PetscReal RKImaginaryStabilityBound(PetscInt s, const PetscReal *A, const PetscR
 // have real eigenvalues up to ~beta omega_max^2: the step is then limited by the method's reach along
 // the negative real axis (2.785/|lambda| for RK4), far below 1/omega_max. 0 when unstable at any
 // practical step (below 0.05/max|lambda|).
-PetscReal RKDampedStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b, PetscReal omega_max, PetscReal alpha, PetscReal beta);
+PetscReal RKDampedStabilityBound(PetscInt s, const PetscReal *A, const PetscReal *b, PetscReal omega_max,
+                                 PetscReal alpha, PetscReal beta);
 
 } // namespace beamimpact

@@ -26,7 +26,7 @@ struct StateView {
 // The whole state, the same on every rank: beam dof d (node-major, held dofs 0) at y[d], v[d];
 // the ball; and the energy dissipated by the beam's damping since t = 0 (J).
 struct FullState {
-  std::vector<PetscReal> y, v;          // m (or rad), m/s (or rad/s)
+  std::vector<PetscReal> y, v; // m (or rad), m/s (or rad/s)
   PetscReal              ball_y = 0, ball_v = 0, dissipated = 0;
 };
 
@@ -34,7 +34,7 @@ struct FullState {
 // dofs are M^{-1/2} Phi z): the amplitudes and their rates per kept mode, the ball, and the
 // energy dissipated by the beam's damping since t = 0 (J). The same on every rank.
 struct ModalState {
-  std::vector<PetscReal> z, zd;          // m kg^{1/2}, m kg^{1/2}/s per mode
+  std::vector<PetscReal> z, zd; // m kg^{1/2}, m kg^{1/2}/s per mode
   PetscReal              ball_y = 0, ball_v = 0, dissipated = 0;
 };
 
@@ -47,13 +47,13 @@ struct StepperCounts {
 
 // How the run is integrated (set when the stepper is created).
 struct IntegratorInfo {
-  std::string ts_type;             // -ts_type, or "leapfrog" / "modal"
-  std::string formulation;         // explicit | imex | implicit | second-order | exact
-  PetscReal   dt_stable = 0;       // s, explicit stability limit (0: not explicit)
-  PetscReal   dt_nominal = 0;      // s, the fixed step, or the initial step of an adaptive run
-  PetscReal   omega_max_bound = 0; // rad/s, Gershgorin bound used for dt_stable
-  PetscInt    omega_max_dof   = -1; // the dof whose row sets it (-1: the ball's contact spring)
-  bool        fixed_step = false;  // the step is fixed (-ts_adapt_type none): dt_nominal throughout
+  std::string ts_type;                 // -ts_type, or "leapfrog" / "modal"
+  std::string formulation;             // explicit | imex | implicit | second-order | exact
+  PetscReal   dt_stable       = 0;     // s, explicit stability limit (0: not explicit)
+  PetscReal   dt_nominal      = 0;     // s, the fixed step, or the initial step of an adaptive run
+  PetscReal   omega_max_bound = 0;     // rad/s, Gershgorin bound used for dt_stable
+  PetscInt    omega_max_dof   = -1;    // the dof whose row sets it (-1: the ball's contact spring)
+  bool        fixed_step      = false; // the step is fixed (-ts_adapt_type none): dt_nominal throughout
 };
 
 struct BeamModes;
@@ -62,22 +62,27 @@ class Stepper {
 public:
   // The modal engine's basis when the stepper is one (-ts_type modal), else null.
   virtual std::shared_ptr<const BeamModes> Modes() const { return nullptr; }
-  virtual ~Stepper() = default;
-  virtual MPI_Comm       Comm() const   = 0;
-  virtual std::string    Method() const = 0; // for messages: "-ts_type cn", "leapfrog"
+  virtual ~Stepper()                        = default;
+  virtual MPI_Comm       Comm() const       = 0;
+  virtual std::string    Method() const     = 0; // for messages: "-ts_type cn", "leapfrog"
   virtual std::string    StepOption() const = 0; // what sets its step: "-ts_dt", "-ts_rtol/-ts_atol", "-leapfrog_dt"
-  virtual PetscReal      Time() const   = 0; // s
-  virtual PetscErrorCode Step(PetscReal dt) = 0;   // one step from the current state; a failed step is an error that says why
-  virtual PetscErrorCode RollBack() = 0;           // back to the start of the last step
-  virtual PetscErrorCode Restart() = 0;            // the force law changed at the current state
-  virtual PetscErrorCode NextStep(PetscReal *dt) = 0; // the step it takes next (fixed, or the adaptive suggestion within its cap)
+  virtual PetscReal      Time() const       = 0; // s
+  virtual PetscErrorCode Step(
+    PetscReal dt)                   = 0; // one step from the current state; a failed step is an error that says why
+  virtual PetscErrorCode RollBack() = 0; // back to the start of the last step
+  virtual PetscErrorCode Restart()  = 0; // the force law changed at the current state
+  virtual PetscErrorCode NextStep(
+    PetscReal *dt) = 0; // the step it takes next (fixed, or the adaptive suggestion within its cap)
   virtual PetscErrorCode Compression(PetscReal *c, PetscReal *cdot) = 0; // m, m/s at the current state (every rank)
-  virtual PetscErrorCode ViewBegin(StateView *v) = 0;
-  virtual PetscErrorCode ViewEnd(StateView *v)   = 0;
+  virtual PetscErrorCode ViewBegin(StateView *v)                    = 0;
+  virtual PetscErrorCode ViewEnd(StateView *v)                      = 0;
   // Rank 0: fields [f0, f0 + nf) of every node's displacement, node-major (y[i nf + f - f0]; m or
   // rad): field 0 alone is the deflection per node, a string bed's fields its columns.
   virtual PetscErrorCode GatherFields(PetscInt f0, PetscInt nf, std::vector<PetscReal> *y) = 0;
-  PetscErrorCode         GatherDisplacement(std::vector<PetscReal> *y) { return GatherFields(0, 1, y); } // rank 0: deflection per node (m)
+  PetscErrorCode         GatherDisplacement(std::vector<PetscReal> *y)
+  {
+    return GatherFields(0, 1, y);
+  } // rank 0: deflection per node (m)
   virtual PetscErrorCode Counts(StepperCounts *n) = 0;
   // Why the energy may have grown at the current step (the likely cause, for the error message).
   virtual std::string EnergyGrowthCause() const = 0;

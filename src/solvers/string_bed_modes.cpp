@@ -36,7 +36,8 @@ PetscReal HashUniform(PetscInt i)
 }
 
 // The largest diagonal of K over the free nodes of every rank (the held rows' scale).
-PetscErrorCode LargestFreeDiagonal(MPI_Comm comm, const BedGrid &g, const Membrane &m, const DMDALocalInfo &info, PetscReal *dmax)
+PetscErrorCode LargestFreeDiagonal(MPI_Comm comm, const BedGrid &g, const Membrane &m, const DMDALocalInfo &info,
+                                   PetscReal *dmax)
 {
   PetscReal local = 0;
   PetscFunctionBeginUser;
@@ -78,7 +79,8 @@ PetscErrorCode StringBedOperatorCreate(MPI_Comm comm, const BedGrid &g, const Me
   PetscReal     dmax;
   PetscFunctionBeginUser;
   // No DMSetFromOptions: the grid is -strings_nodes's, not -da_grid_x's.
-  PetscCall(DMDACreate2d(comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, g.nx, g.nz, PETSC_DECIDE, PETSC_DECIDE, 1, 1, NULL, NULL, da));
+  PetscCall(DMDACreate2d(comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, g.nx, g.nz, PETSC_DECIDE,
+                         PETSC_DECIDE, 1, 1, NULL, NULL, da));
   PetscCall(DMSetUp(*da));
   PetscCall(DMCreateMatrix(*da, K));
   PetscCall(DMCreateMatrix(*da, M));
@@ -87,7 +89,7 @@ PetscErrorCode StringBedOperatorCreate(MPI_Comm comm, const BedGrid &g, const Me
   const PetscInt di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
   for (PetscInt j = info.ys; j < info.ys + info.ym; ++j)
     for (PetscInt i = info.xs; i < info.xs + info.xm; ++i) {
-      const BedRow r = BedStiffnessRow(g, m, i, j);
+      const BedRow r   = BedStiffnessRow(g, m, i, j);
       MatStencil   row = {0, 0, 0, 0}, cols[5];
       PetscScalar  vals[5];
       PetscInt     n = 1;
@@ -99,7 +101,8 @@ PetscErrorCode StringBedOperatorCreate(MPI_Comm comm, const BedGrid &g, const Me
           cols[n].i = i + di[d], cols[n].j = j + dj[d];
           vals[n++] = r.off[d];
         }
-      const PetscScalar mass = r.held ? m.sigma * g.hx * g.hz : r.mass; // a held node's: its eigenvalue kHeldScale dmax / (sigma h_x h_z)
+      const PetscScalar mass = r.held ? m.sigma * g.hx * g.hz
+                                      : r.mass; // a held node's: its eigenvalue kHeldScale dmax / (sigma h_x h_z)
       PetscCall(MatSetValuesStencil(*K, 1, &row, n, cols, vals, INSERT_VALUES));
       PetscCall(MatSetValuesStencil(*M, 1, &row, 1, &row, &mass, INSERT_VALUES));
     }
@@ -142,7 +145,8 @@ PetscErrorCode BedSolverCreate(MPI_Comm comm, const BedGrid &g, DM da, Mat K, Ma
   PetscCall(DMDAGetLocalInfo(da, &info));
   PetscCall(DMDAVecGetArray(da, x0, &a));
   for (PetscInt j = info.ys; j < info.ys + info.ym; ++j)
-    for (PetscInt i = info.xs; i < info.xs + info.xm; ++i) a[j][i] = BedNodeFree(g, i, j) ? 1.0 + 0.5 * HashUniform(j * g.nx + i) : 0.0;
+    for (PetscInt i = info.xs; i < info.xs + info.xm; ++i)
+      a[j][i] = BedNodeFree(g, i, j) ? 1.0 + 0.5 * HashUniform(j * g.nx + i) : 0.0;
   PetscCall(DMDAVecRestoreArray(da, x0, &a));
   PetscCall(EPSSetInitialSpace(*eps, 1, &x0));
   PetscCall(VecDestroy(&x0));
@@ -152,7 +156,8 @@ PetscErrorCode BedSolverCreate(MPI_Comm comm, const BedGrid &g, DM da, Mat K, Ma
 
 // Mode q of the solved EPS: omega^2 as the Rayleigh quotient (x, K x) / (x, M x), the shape in
 // natural order, mass-normalised, 0 at held nodes, its sign fixed.
-PetscErrorCode BedModeExtract(EPS eps, DM da, Mat K, Mat M, const BedGrid &g, const Membrane &m, PetscInt q, PetscReal *omega2, std::vector<PetscReal> *shape)
+PetscErrorCode BedModeExtract(EPS eps, DM da, Mat K, Mat M, const BedGrid &g, const Membrane &m, PetscInt q,
+                              PetscReal *omega2, std::vector<PetscReal> *shape)
 {
   Vec         x, y;
   PetscScalar xKx, xMx;
@@ -175,7 +180,7 @@ PetscErrorCode BedModeExtract(EPS eps, DM da, Mat K, Mat M, const BedGrid &g, co
       else norm += BedStiffnessRow(g, m, i, j).mass * v * v;
       amax = std::max(amax, std::abs(v));
     }
-  norm = std::sqrt(norm);
+  norm         = std::sqrt(norm);
   size_t first = 0;
   while (first < shape->size() && std::abs((*shape)[first]) <= 1e-3 * amax) ++first;
   const PetscReal s = (first < shape->size() && (*shape)[first] < 0 ? -1 : 1) / norm;
@@ -185,7 +190,8 @@ PetscErrorCode BedModeExtract(EPS eps, DM da, Mat K, Mat M, const BedGrid &g, co
 
 } // namespace
 
-PetscErrorCode StringBedModesCompute(MPI_Comm comm, const BedGrid &g, const Membrane &m, PetscInt count, StringBedModes *out)
+PetscErrorCode StringBedModesCompute(MPI_Comm comm, const BedGrid &g, const Membrane &m, PetscInt count,
+                                     StringBedModes *out)
 {
   DM       da;
   Mat      K, M;
@@ -195,14 +201,17 @@ PetscErrorCode StringBedModesCompute(MPI_Comm comm, const BedGrid &g, const Memb
   PetscCall(ModesEnsureSlepc());
   out->free_nodes = StringBedFreeCount(g);
   PetscCheck(count >= 1 && count <= out->free_nodes, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-modes_count %" PetscInt_FMT " is not allowed: the string bed has %" PetscInt_FMT " free nodes, so 1..%" PetscInt_FMT " modes exist (more -strings_nodes for more)", count,
-             out->free_nodes, out->free_nodes);
+             "-modes_count %" PetscInt_FMT " is not allowed: the string bed has %" PetscInt_FMT
+             " free nodes, so 1..%" PetscInt_FMT " modes exist (more -strings_nodes for more)",
+             count, out->free_nodes, out->free_nodes);
   PetscCall(StringBedOperatorCreate(comm, g, m, &da, &K, &M));
   PetscCall(BedSolverCreate(comm, g, da, K, M, count, &eps));
   PetscCall(EPSSolve(eps));
   PetscCall(EPSGetConverged(eps, &nconv));
   PetscCall(EPSGetIterationNumber(eps, &out->iterations));
-  PetscCheck(nconv >= count, comm, PETSC_ERR_NOT_CONVERGED, "the string bed's eigensolver found %" PetscInt_FMT " of the %" PetscInt_FMT " modes asked (-modes_count); raise -strings_modes_eps_max_it or -strings_modes_eps_ncv",
+  PetscCheck(nconv >= count, comm, PETSC_ERR_NOT_CONVERGED,
+             "the string bed's eigensolver found %" PetscInt_FMT " of the %" PetscInt_FMT
+             " modes asked (-modes_count); raise -strings_modes_eps_max_it or -strings_modes_eps_ncv",
              nconv, count);
   out->omega.assign(count, 0);
   out->frequency.assign(count, 0);
@@ -220,7 +229,8 @@ PetscErrorCode StringBedModesCompute(MPI_Comm comm, const BedGrid &g, const Memb
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode StringBedStaticSolve(MPI_Comm comm, const BedGrid &g, const Membrane &m, const std::vector<PetscReal> &f, std::vector<PetscReal> *w)
+PetscErrorCode StringBedStaticSolve(MPI_Comm comm, const BedGrid &g, const Membrane &m, const std::vector<PetscReal> &f,
+                                    std::vector<PetscReal> *w)
 {
   DM            da;
   Mat           K, M;
@@ -229,7 +239,8 @@ PetscErrorCode StringBedStaticSolve(MPI_Comm comm, const BedGrid &g, const Membr
   PetscScalar **a;
   DMDALocalInfo info;
   PetscFunctionBeginUser;
-  PetscCheck((PetscInt)f.size() == g.nx * g.nz, comm, PETSC_ERR_ARG_SIZ, "StringBedStaticSolve: %zu forces for %" PetscInt_FMT " nodes", f.size(), g.nx * g.nz);
+  PetscCheck((PetscInt)f.size() == g.nx * g.nz, comm, PETSC_ERR_ARG_SIZ,
+             "StringBedStaticSolve: %zu forces for %" PetscInt_FMT " nodes", f.size(), g.nx * g.nz);
   PetscCall(StringBedOperatorCreate(comm, g, m, &da, &K, &M));
   PetscCall(DMCreateGlobalVector(da, &b));
   PetscCall(VecDuplicate(b, &x));

@@ -33,8 +33,8 @@ PetscErrorCode StringBedOperatorCreate(MPI_Comm comm, const BedGrid &g, const Me
 PetscInt StringBedFreeCount(const BedGrid &g);
 
 struct StringBedModes {
-  std::vector<PetscReal>              omega;     // rad/s, ascending
-  std::vector<PetscReal>              frequency; // Hz
+  std::vector<PetscReal> omega;     // rad/s, ascending
+  std::vector<PetscReal> frequency; // Hz
   // shape[q][j * nx + i]: the deflection of mode q at node (i, j) (natural order: x fastest),
   // mass-normalised (sum sigma h_x h_z phi^2 = 1, kg^-1/2), 0 at held nodes; sign: the first
   // node above 1e-3 of the largest |phi| positive. On every rank.
@@ -44,10 +44,12 @@ struct StringBedModes {
 };
 
 // The `count` lowest modes (1 <= count <= StringBedFreeCount(g)).
-PetscErrorCode StringBedModesCompute(MPI_Comm comm, const BedGrid &g, const Membrane &m, PetscInt count, StringBedModes *out);
+PetscErrorCode StringBedModesCompute(MPI_Comm comm, const BedGrid &g, const Membrane &m, PetscInt count,
+                                     StringBedModes *out);
 
 // The static deflection K w = f (m) under nodal forces f (N, natural order, the same on every
 // rank; forces on held nodes are ignored), by the same LU; w in natural order on every rank.
-PetscErrorCode StringBedStaticSolve(MPI_Comm comm, const BedGrid &g, const Membrane &m, const std::vector<PetscReal> &f, std::vector<PetscReal> *w);
+PetscErrorCode StringBedStaticSolve(MPI_Comm comm, const BedGrid &g, const Membrane &m, const std::vector<PetscReal> &f,
+                                    std::vector<PetscReal> *w);
 
 } // namespace beamimpact

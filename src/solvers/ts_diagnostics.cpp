@@ -24,7 +24,8 @@ static PetscErrorCode TSCurrentSolution(const TSProblem &P, TS ts, Vec *X)
 // ~ eps * omega_max^2 * max|y| (the stencil cancels terms of size omega_max^2 y), which on
 // fine grids, stiff beams or after long flights exceeds rtol * |F_0|. Accept a residual
 // within 100x that floor (after at least one iteration) instead of stalling.
-PetscErrorCode TSConvergedWithRoundoffFloor(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+PetscErrorCode TSConvergedWithRoundoffFloor(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
+                                            SNESConvergedReason *reason, void *ctx)
 {
   NewtonFloor &nf = *static_cast<NewtonFloor *>(ctx);
 
@@ -53,7 +54,8 @@ PetscErrorCode TSConvergedWithRoundoffFloor(SNES snes, PetscInt it, PetscReal xn
 // first Newton step removed almost all of the residual (the problem is linear within a
 // contact phase) and what is left is round-off when the next steps made no progress, or it
 // is within 10x the round-off estimate eps omega_max^2 |u| of the stiffness term.
-static PetscErrorCode ExplainFailedSolve(const TSProblem &P, TS ts, const char *ts_type, PetscReal omega_max, TSConvergedReason reason)
+static PetscErrorCode ExplainFailedSolve(const TSProblem &P, TS ts, const char *ts_type, PetscReal omega_max,
+                                         TSConvergedReason reason)
 {
   SNES                snes;
   PetscReal          *hist = nullptr, rtol, t;
@@ -76,15 +78,21 @@ static PetscErrorCode ExplainFailedSolve(const TSProblem &P, TS ts, const char *
   PetscCall(TSCurrentSolution(P, ts, &X));
   PetscCall(VecNorm(X, NORM_2, &unorm));
   const PetscReal floor_est = PETSC_MACHINE_EPSILON * omega_max * omega_max * unorm;
-  const bool      stalled   = nh >= 2 && f0 > 0 && hist[1] <= 1e-2 * f0 && ((nh >= 3 && fmin_later >= 0.1 * hist[1]) || flast <= 10 * floor_est);
+  const bool      stalled   = nh >= 2 && f0 > 0 && hist[1] <= 1e-2 * f0 &&
+                       ((nh >= 3 && fmin_later >= 0.1 * hist[1]) || flast <= 10 * floor_est);
   if (stalled)
     SETERRQ(P.L.comm, PETSC_ERR_NOT_CONVERGED,
-            "time stepping stopped at t = %g s with -ts_type %s: the Newton iteration stalled at a residual norm of %.2e after its first step reduced it from %.2e (SNES %s after %" PetscInt_FMT
-            " iterations): that is the round-off level of this grid (eps omega_max^2 |u| = %.1e with omega_max <= %.3g rad/s), above -snes_rtol %g x the initial norm, so the solve cannot converge; "
+            "time stepping stopped at t = %g s with -ts_type %s: the Newton iteration stalled at a residual norm of "
+            "%.2e after its first step reduced it from %.2e (SNES %s after %" PetscInt_FMT
+            " iterations): that is the round-off level of this grid (eps omega_max^2 |u| = %.1e with omega_max <= %.3g "
+            "rad/s), above -snes_rtol %g x the initial norm, so the solve cannot converge; "
             "set -snes_atol %.0e (ten times the stalled residual)",
-            (double)t, ts_type, (double)flast, (double)f0, SNESConvergedReasons[sr], its, (double)floor_est, (double)omega_max, (double)rtol, (double)(10 * fmax_after));
+            (double)t, ts_type, (double)flast, (double)f0, SNESConvergedReasons[sr], its, (double)floor_est,
+            (double)omega_max, (double)rtol, (double)(10 * fmax_after));
   SETERRQ(P.L.comm, PETSC_ERR_NOT_CONVERGED,
-          "time stepping stopped at t = %g s with -ts_type %s: the nonlinear (Newton) solve failed (SNES %s after %" PetscInt_FMT " iterations, residual norm %.2e from %.2e); reduce -ts_dt or check -snes_* and -ksp_* options (%s)",
+          "time stepping stopped at t = %g s with -ts_type %s: the nonlinear (Newton) solve failed (SNES %s after "
+          "%" PetscInt_FMT
+          " iterations, residual norm %.2e from %.2e); reduce -ts_dt or check -snes_* and -ksp_* options (%s)",
           (double)t, ts_type, SNESConvergedReasons[sr], its, (double)flast, (double)f0, TSConvergedReasons[reason]);
 }
 
@@ -97,9 +105,12 @@ PetscErrorCode TSCheckStep(const TSProblem &P, TS ts, const char *ts_type, Petsc
   PetscCall(TSGetConvergedReason(ts, &reason));
   if (reason == TS_DIVERGED_NONLINEAR_SOLVE) PetscCall(ExplainFailedSolve(P, ts, ts_type, omega_max, reason));
   if (reason < 0) {
-    const char *why = reason == TS_DIVERGED_STEP_REJECTED ? "too many steps were rejected by the error controller; loosen -ts_rtol/-ts_atol or raise -ts_max_reject" : "the integrator diverged";
+    const char *why = reason == TS_DIVERGED_STEP_REJECTED ? "too many steps were rejected by the error controller; "
+                                                            "loosen -ts_rtol/-ts_atol or raise -ts_max_reject"
+                                                          : "the integrator diverged";
     PetscCall(TSGetTime(ts, &t));
-    SETERRQ(P.L.comm, PETSC_ERR_NOT_CONVERGED, "time stepping stopped at t = %g s with -ts_type %s: %s (%s)", (double)t, ts_type, why, TSConvergedReasons[reason]);
+    SETERRQ(P.L.comm, PETSC_ERR_NOT_CONVERGED, "time stepping stopped at t = %g s with -ts_type %s: %s (%s)", (double)t,
+            ts_type, why, TSConvergedReasons[reason]);
   }
   PetscFunctionReturn(0);
 }

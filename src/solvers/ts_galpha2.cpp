@@ -49,12 +49,12 @@ struct GAlpha2 {
   PetscBool unit_mass_checked;
 
   // Nonlinear solve: the residual is F(stage_time, Xp + D, Vp + shift_V D, Ap + shift_A D).
-  PetscReal stage_time;        // s
-  PetscReal shift_V, shift_A;  // 1/s, 1/s^2
-  Vec       D;                 // SNES unknown
-  Vec       Xp, Vp, Ap;        // evaluation state at D = 0
-  Vec       Xs, Vs, As;        // evaluation state at the current D
-  Vec       W1, W2;            // scratch
+  PetscReal stage_time;       // s
+  PetscReal shift_V, shift_A; // 1/s, 1/s^2
+  Vec       D;                // SNES unknown
+  Vec       Xp, Vp, Ap;       // evaluation state at D = 0
+  Vec       Xs, Vs, As;       // evaluation state at the current D
+  Vec       W1, W2;           // scratch
 };
 
 GAlpha2 *Data(TS ts) { return static_cast<GAlpha2 *>(ts->data); }
@@ -66,23 +66,28 @@ PetscErrorCode SetParams_GAlpha2(TS ts, PetscReal alpha_m, PetscReal alpha_f, Pe
   GAlpha2 *ga = Data(ts);
 
   PetscFunctionBeginUser;
-  PetscCheck(alpha_m > 0 && alpha_f > 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: alpha_m = %g and alpha_f = %g must be positive", (double)alpha_m, (double)alpha_f);
-  PetscCheck(gamma > 0 && beta > 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: gamma = %g and beta = %g must be positive", (double)gamma, (double)beta);
+  PetscCheck(alpha_m > 0 && alpha_f > 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE,
+             "TS alpha2: alpha_m = %g and alpha_f = %g must be positive", (double)alpha_m, (double)alpha_f);
+  PetscCheck(gamma > 0 && beta > 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE,
+             "TS alpha2: gamma = %g and beta = %g must be positive", (double)gamma, (double)beta);
   // The carried A depends on the parameters (it approximates a(t + (alpha_f - alpha_m) h)): rebuild it.
-  if (alpha_m != ga->alpha_m || alpha_f != ga->alpha_f || gamma != ga->gamma || beta != ga->beta) ga->have_A = PETSC_FALSE;
+  if (alpha_m != ga->alpha_m || alpha_f != ga->alpha_f || gamma != ga->gamma || beta != ga->beta)
+    ga->have_A = PETSC_FALSE;
   ga->alpha_m = alpha_m;
   ga->alpha_f = alpha_f;
   ga->gamma   = gamma;
   ga->beta    = beta;
   ga->radius  = -1;
-  if (PetscAbsReal(gamma - (0.5 + alpha_m - alpha_f)) > 1e-12) PetscCall(PetscInfo(ts, "alpha2: gamma != 1/2 + alpha_m - alpha_f, the method is first order\n"));
+  if (PetscAbsReal(gamma - (0.5 + alpha_m - alpha_f)) > 1e-12)
+    PetscCall(PetscInfo(ts, "alpha2: gamma != 1/2 + alpha_m - alpha_f, the method is first order\n"));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode SetRadius_GAlpha2(TS ts, PetscReal radius)
 {
   PetscFunctionBeginUser;
-  PetscCheck(radius >= 0 && radius <= 1, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: -ts_alpha_radius %g is outside [0, 1]", (double)radius);
+  PetscCheck(radius >= 0 && radius <= 1, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE,
+             "TS alpha2: -ts_alpha_radius %g is outside [0, 1]", (double)radius);
   const PetscReal am = (2 - radius) / (1 + radius), af = 1 / (1 + radius);
   PetscCall(SetParams_GAlpha2(ts, am, af, 0.5 + am - af, 0.25 * (1 + am - af) * (1 + am - af)));
   Data(ts)->radius = radius;
@@ -104,7 +109,8 @@ PetscErrorCode GetParams_GAlpha2(TS ts, PetscReal *alpha_m, PetscReal *alpha_f, 
 PetscErrorCode SetRestart_GAlpha2(TS ts, GAlpha2Restart kind)
 {
   PetscFunctionBeginUser;
-  PetscCheck(kind == GAlpha2Restart::Shifted || kind == GAlpha2Restart::Exact, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: unknown restart kind %d (valid: shifted, exact)", (int)kind);
+  PetscCheck(kind == GAlpha2Restart::Shifted || kind == GAlpha2Restart::Exact, PetscObjectComm((PetscObject)ts),
+             PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: unknown restart kind %d (valid: shifted, exact)", (int)kind);
   Data(ts)->restart           = kind;
   Data(ts)->unit_mass_checked = PETSC_FALSE; // the exact restart checks dF/dA = I again, as on a new TS
   PetscFunctionReturn(0);
@@ -183,9 +189,9 @@ PetscErrorCode SolveForD(TS ts, PetscBool *converged)
 // dF/dA == I at (t, X0, V0), tested with a random A; W1 = F(t, X0, V0, 0) on return.
 PetscErrorCode CheckUnitMass(TS ts, PetscReal t)
 {
-  GAlpha2     *ga = Data(ts);
-  PetscRandom  rnd;
-  PetscReal    f0, scale, err, atest;
+  GAlpha2    *ga = Data(ts);
+  PetscRandom rnd;
+  PetscReal   f0, scale, err, atest;
 
   PetscFunctionBeginUser;
   PetscCall(VecSet(ga->Ap, 0.0));
@@ -201,9 +207,12 @@ PetscErrorCode CheckUnitMass(TS ts, PetscReal t)
   PetscCall(VecNorm(ga->W2, NORM_INFINITY, &err));
   PetscCall(VecNorm(ga->As, NORM_INFINITY, &atest));
   PetscCheck(err <= kUnitMassTol * (atest + f0), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP,
-             "TS alpha2 (beamimpact generalized-alpha): the exact restart A = -F(t, X, V, 0) needs a residual with unit mass, dF/dA = I "
-             "(write F = A + M^{-1}(...)); at t = %g, |F(A) - F(0) - A|_inf = %g for a random |A|_inf = %g. Scale the residual by M^{-1}, "
-             "or use -ts_alpha_restart shifted with alpha_m != alpha_f (-ts_alpha_radius < 1), which takes any nonsingular mass",
+             "TS alpha2 (beamimpact generalized-alpha): the exact restart A = -F(t, X, V, 0) needs a residual with "
+             "unit mass, dF/dA = I "
+             "(write F = A + M^{-1}(...)); at t = %g, |F(A) - F(0) - A|_inf = %g for a random |A|_inf = %g. Scale the "
+             "residual by M^{-1}, "
+             "or use -ts_alpha_restart shifted with alpha_m != alpha_f (-ts_alpha_radius < 1), which takes any "
+             "nonsingular mass",
              (double)t, (double)err, (double)atest);
   ga->unit_mass_checked = PETSC_TRUE;
   PetscCall(TSComputeI2Function(ts, t, ga->X0, ga->V0, ga->Ap, ga->W1)); // Ap is still 0
@@ -289,18 +298,21 @@ static PetscErrorCode NewmarkUpdate(TS ts, PetscReal h)
 
 PetscErrorCode TSStep_GAlpha2(TS ts)
 {
-  GAlpha2      *ga = Data(ts);
-  Vec           X = ts->vec_sol, V = ts->vec_dot;
+  GAlpha2        *ga = Data(ts);
+  Vec             X = ts->vec_sol, V = ts->vec_dot;
   const PetscReal t0 = ts->ptime;
-  PetscObjectId xid, vid;
-  PetscInt      rejections = 0;
+  PetscObjectId   xid, vid;
+  PetscInt        rejections = 0;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectGetId((PetscObject)X, &xid));
   PetscCall(PetscObjectGetId((PetscObject)V, &vid));
-  const PetscBool restart = (ts->steprestart || !ga->have_A || ga->restart_pending || xid != ga->x_id || vid != ga->v_id) ? PETSC_TRUE : PETSC_FALSE;
-  ga->restart_pending = PETSC_FALSE;
-  ga->have_step       = PETSC_FALSE;
+  const PetscBool restart = (ts->steprestart || !ga->have_A || ga->restart_pending || xid != ga->x_id ||
+                             vid != ga->v_id)
+                            ? PETSC_TRUE
+                            : PETSC_FALSE;
+  ga->restart_pending     = PETSC_FALSE;
+  ga->have_step           = PETSC_FALSE;
   PetscCall(VecCopy(X, ga->X0));
   PetscCall(VecCopy(V, ga->V0));
   if (!restart) PetscCall(VecCopy(ga->A, ga->A0));
@@ -310,13 +322,14 @@ PetscErrorCode TSStep_GAlpha2(TS ts)
     PetscBool       ok = PETSC_TRUE, accept = PETSC_TRUE;
     PetscReal       next_h = h;
 
-    PetscCheck(h > 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "TS alpha2: time step %g must be positive", (double)h);
+    PetscCheck(h > 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE,
+               "TS alpha2: time step %g must be positive", (double)h);
     if (restart) PetscCall(RebuildAcceleration(ts, t0, h, &ok));
     if (ok) PetscCall(StageSolve(ts, t0, h, &ok));
     if (ok) {
       PetscCall(NewmarkUpdate(ts, h));
-      ga->t0 = t0;
-      ga->h  = h;
+      ga->t0        = t0;
+      ga->h         = h;
       ga->have_step = PETSC_TRUE; // for the error estimate inside TSAdaptChoose
       PetscCall(TSAdaptChoose(ts->adapt, ts, h, nullptr, &next_h, &accept));
       if (accept) {
@@ -337,7 +350,8 @@ PetscErrorCode TSStep_GAlpha2(TS ts)
     ts->reject++;
     if (ts->max_reject >= 0 && ++rejections > ts->max_reject) {
       ts->reason = TS_DIVERGED_STEP_REJECTED;
-      PetscCall(PetscInfo(ts, "alpha2: step %" PetscInt_FMT " at t = %g rejected %" PetscInt_FMT " times\n", ts->steps, (double)t0, rejections));
+      PetscCall(PetscInfo(ts, "alpha2: step %" PetscInt_FMT " at t = %g rejected %" PetscInt_FMT " times\n", ts->steps,
+                          (double)t0, rejections));
     }
   }
   // Failed: leave the TS at the start of the step.
@@ -353,7 +367,8 @@ PetscErrorCode TSRollBack_GAlpha2(TS ts)
   GAlpha2 *ga = Data(ts);
 
   PetscFunctionBeginUser;
-  PetscCheck(ga->have_step, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER, "TS alpha2: no completed step to roll back");
+  PetscCheck(ga->have_step, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER,
+             "TS alpha2: no completed step to roll back");
   PetscCall(VecCopy(ga->X0, ts->vec_sol));
   PetscCall(VecCopy(ga->V0, ts->vec_dot));
   PetscCall(VecCopy(ga->A0, ga->A));
@@ -369,9 +384,11 @@ PetscErrorCode TSInterpolate_GAlpha2(TS ts, PetscReal t, Vec U)
   GAlpha2 *ga = Data(ts);
 
   PetscFunctionBeginUser;
-  PetscCheck(ga->have_step, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER, "TS alpha2: no completed step to interpolate in");
+  PetscCheck(ga->have_step, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER,
+             "TS alpha2: no completed step to interpolate in");
   const PetscReal s = (t - ga->t0) / ga->h, h = ga->h;
-  PetscScalar     c[4] = {2 * s * s * s - 3 * s * s + 1, h * (s * s * s - 2 * s * s + s), -2 * s * s * s + 3 * s * s, h * (s * s * s - s * s)};
+  PetscScalar     c[4] = {2 * s * s * s - 3 * s * s + 1, h * (s * s * s - 2 * s * s + s), -2 * s * s * s + 3 * s * s,
+                          h * (s * s * s - s * s)};
   Vec             v[4] = {ga->X0, ga->V0, ts->vec_sol, ts->vec_dot};
   Vec             out  = (U == ts->vec_sol || U == ts->vec_dot) ? ga->W1 : U;
   PetscCall(VecSet(out, 0.0));
@@ -403,7 +420,8 @@ PetscErrorCode TSReset_GAlpha2(TS ts)
   GAlpha2 *ga = Data(ts);
 
   PetscFunctionBeginUser;
-  Vec *vecs[] = {&ga->A, &ga->X0, &ga->V0, &ga->A0, &ga->D, &ga->Xp, &ga->Vp, &ga->Ap, &ga->Xs, &ga->Vs, &ga->As, &ga->W1, &ga->W2};
+  Vec *vecs[] = {&ga->A,  &ga->X0, &ga->V0, &ga->A0, &ga->D,  &ga->Xp, &ga->Vp,
+                 &ga->Ap, &ga->Xs, &ga->Vs, &ga->As, &ga->W1, &ga->W2};
   for (Vec *v : vecs) PetscCall(VecDestroy(v));
   ga->have_A = ga->have_step = ga->restart_pending = ga->step_restarted = ga->unit_mass_checked = PETSC_FALSE;
   ga->x_id = ga->v_id = 0;
@@ -433,13 +451,16 @@ PetscErrorCode TSSetUp_GAlpha2(TS ts)
   PetscFunctionBeginUser;
   PetscCall(TSGetDM(ts, &dm));
   PetscCall(DMTSGetI2Function(dm, &f2, nullptr));
-  PetscCheck(f2, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONGSTATE, "TS alpha2 integrates F(t, X, V, A) = 0: set it with TSSetI2Function (and TSSetI2Jacobian, TS2SetSolution)");
+  PetscCheck(f2, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONGSTATE,
+             "TS alpha2 integrates F(t, X, V, A) = 0: set it with TSSetI2Function (and TSSetI2Jacobian, "
+             "TS2SetSolution)");
   if (!ts->vec_dot) {
     PetscCall(PetscInfo(ts, "alpha2: no velocity given with TS2SetSolution, starting from V = 0\n"));
     PetscCall(VecDuplicate(ts->vec_sol, &ts->vec_dot));
     PetscCall(VecSet(ts->vec_dot, 0.0));
   }
-  Vec *vecs[] = {&ga->A, &ga->X0, &ga->V0, &ga->A0, &ga->D, &ga->Xp, &ga->Vp, &ga->Ap, &ga->Xs, &ga->Vs, &ga->As, &ga->W1, &ga->W2};
+  Vec *vecs[] = {&ga->A,  &ga->X0, &ga->V0, &ga->A0, &ga->D,  &ga->Xp, &ga->Vp,
+                 &ga->Ap, &ga->Xs, &ga->Vs, &ga->As, &ga->W1, &ga->W2};
   for (Vec *v : vecs) {
     PetscCall(VecDestroy(v));
     PetscCall(VecDuplicate(ts->vec_sol, v));
@@ -453,24 +474,33 @@ PetscErrorCode TSSetUp_GAlpha2(TS ts)
 
 PetscErrorCode TSSetFromOptions_GAlpha2(TS ts, PetscOptionItems *PetscOptionsObject)
 {
-  GAlpha2  *ga = Data(ts);
+  GAlpha2  *ga     = Data(ts);
   PetscReal radius = ga->radius >= 0 ? ga->radius : 1, am = ga->alpha_m, af = ga->alpha_f, g = ga->gamma, b = ga->beta;
   PetscBool flg, fm, ff, fg, fb;
   PetscEnum kind = static_cast<PetscEnum>(static_cast<int>(ga->restart));
 
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "Generalized-alpha for second-order systems (beamimpact alpha2)");
-  PetscCall(PetscOptionsReal("-ts_alpha_radius", "Spectral radius at infinite frequency, in [0, 1] (1: no high-frequency damping)", "TSAlpha2SetRadius", radius, &radius, &flg));
+  PetscCall(PetscOptionsReal("-ts_alpha_radius",
+                             "Spectral radius at infinite frequency, in [0, 1] (1: no high-frequency damping)",
+                             "TSAlpha2SetRadius", radius, &radius, &flg));
   if (flg) {
     PetscCall(SetRadius_GAlpha2(ts, radius));
     am = ga->alpha_m, af = ga->alpha_f, g = ga->gamma, b = ga->beta;
   }
-  PetscCall(PetscOptionsReal("-ts_alpha_alpha_m", "Weight of A_{n+1} in the acceleration of the residual", "TSAlpha2SetParams", am, &am, &fm));
-  PetscCall(PetscOptionsReal("-ts_alpha_alpha_f", "Weight of X_{n+1}, V_{n+1} (and time) in the residual", "TSAlpha2SetParams", af, &af, &ff));
-  PetscCall(PetscOptionsReal("-ts_alpha_gamma", "Newmark gamma (second order: 1/2 + alpha_m - alpha_f)", "TSAlpha2SetParams", g, &g, &fg));
-  PetscCall(PetscOptionsReal("-ts_alpha_beta", "Newmark beta (second order: (1 + alpha_m - alpha_f)^2/4)", "TSAlpha2SetParams", b, &b, &fb));
+  PetscCall(PetscOptionsReal("-ts_alpha_alpha_m", "Weight of A_{n+1} in the acceleration of the residual",
+                             "TSAlpha2SetParams", am, &am, &fm));
+  PetscCall(PetscOptionsReal("-ts_alpha_alpha_f", "Weight of X_{n+1}, V_{n+1} (and time) in the residual",
+                             "TSAlpha2SetParams", af, &af, &ff));
+  PetscCall(PetscOptionsReal("-ts_alpha_gamma", "Newmark gamma (second order: 1/2 + alpha_m - alpha_f)",
+                             "TSAlpha2SetParams", g, &g, &fg));
+  PetscCall(PetscOptionsReal("-ts_alpha_beta", "Newmark beta (second order: (1 + alpha_m - alpha_f)^2/4)",
+                             "TSAlpha2SetParams", b, &b, &fb));
   if (fm || ff || fg || fb) PetscCall(SetParams_GAlpha2(ts, am, af, g, b));
-  PetscCall(PetscOptionsEnum("-ts_alpha_restart", "Acceleration at the first step and after TSRestartStep: shifted (order 2 under any restarts) or exact (a(t), unit mass)", "TSGAlpha2SetRestart", kRestartNames, kind, &kind, &flg));
+  PetscCall(PetscOptionsEnum("-ts_alpha_restart",
+                             "Acceleration at the first step and after TSRestartStep: shifted (order 2 under any "
+                             "restarts) or exact (a(t), unit mass)",
+                             "TSGAlpha2SetRestart", kRestartNames, kind, &kind, &flg));
   if (flg) PetscCall(SetRestart_GAlpha2(ts, static_cast<GAlpha2Restart>(static_cast<int>(kind))));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(0);
@@ -484,9 +514,16 @@ PetscErrorCode TSView_GAlpha2(TS ts, PetscViewer viewer)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (ascii) {
-    if (ga->radius >= 0) PetscCall(PetscViewerASCIIPrintf(viewer, "  Generalized-alpha (beamimpact, Chung & Hulbert 1993), spectral radius %g\n", (double)ga->radius));
-    else PetscCall(PetscViewerASCIIPrintf(viewer, "  Generalized-alpha (beamimpact, Chung & Hulbert 1993), parameters set directly\n"));
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  alpha_m %g, alpha_f %g, gamma %g, beta %g; restart acceleration: %s\n", (double)ga->alpha_m, (double)ga->alpha_f, (double)ga->gamma, (double)ga->beta, kRestartNames[static_cast<int>(ga->restart)]));
+    if (ga->radius >= 0)
+      PetscCall(PetscViewerASCIIPrintf(viewer,
+                                       "  Generalized-alpha (beamimpact, Chung & Hulbert 1993), spectral radius %g\n",
+                                       (double)ga->radius));
+    else
+      PetscCall(PetscViewerASCIIPrintf(viewer, "  Generalized-alpha (beamimpact, Chung & Hulbert 1993), parameters set "
+                                               "directly\n"));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  alpha_m %g, alpha_f %g, gamma %g, beta %g; restart acceleration: %s\n",
+                                     (double)ga->alpha_m, (double)ga->alpha_f, (double)ga->gamma, (double)ga->beta,
+                                     kRestartNames[static_cast<int>(ga->restart)]));
   }
   PetscFunctionReturn(0);
 }

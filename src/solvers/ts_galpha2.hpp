@@ -70,7 +70,10 @@
 namespace beamimpact {
 
 // How A is rebuilt at the first step and after a restart (see above).
-enum class GAlpha2Restart { Shifted = 0, Exact = 1 };
+enum class GAlpha2Restart {
+  Shifted = 0,
+  Exact   = 1
+};
 
 // Registers this integrator as TS type "alpha2" (TSALPHA2), replacing PETSc's
 // for the whole program (PetscFunctionListAdd overwrites the entry; verified in

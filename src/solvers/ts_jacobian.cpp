@@ -67,11 +67,11 @@ PetscErrorCode SetRow(Mat J, PetscInt r, const std::map<PetscInt, PetscScalar> &
 // path, whose pattern does not depend on the contact point).
 PetscErrorCode AssembleConstantPart(TSProblem &P, Mat J, bool damping_only = false, bool coupling = true)
 {
-  const BeamSystem   &S     = *P.sys;
-  const TSLayout     &L     = P.L;
-  const bool          first = L.dof == 2 * L.fields;
-  const CouplingBlock cb    = CouplingBlockOf(P);
-  const PetscInt      width = 2 * S.bw + 1;
+  const BeamSystem      &S     = *P.sys;
+  const TSLayout        &L     = P.L;
+  const bool             first = L.dof == 2 * L.fields;
+  const CouplingBlock    cb    = CouplingBlockOf(P);
+  const PetscInt         width = 2 * S.bw + 1;
   std::vector<PetscInt>  cols(width);
   std::vector<PetscReal> vals(width);
 
@@ -168,7 +168,8 @@ PetscErrorCode CreateAssembled(TSProblem &P, Mat *J, Mat *J0, Mat *Jd)
   PetscCall(DMCreateGlobalVector(P.L.pack, &U));
   PetscCall(VecGetLocalSize(U, &n));
   PetscCall(VecDestroy(&U));
-  const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields; // first order, damped: K/m also in the velocity columns
+  const bool vcols = P.sys->Damped() &&
+                     P.L.dof == 2 * P.L.fields; // first order, damped: K/m also in the velocity columns
   const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
   PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 7, NULL, width + 3, NULL, J));
   PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
@@ -184,7 +185,7 @@ PetscErrorCode CreateAssembled(TSProblem &P, Mat *J, Mat *J0, Mat *Jd)
 
 // --- The rank-one path -------------------------------------------------------------------
 
-constexpr size_t kBeamFactors = 4; // shifts kept: the nominal step's and the event location's
+constexpr size_t kBeamFactors     = 4; // shifts kept: the nominal step's and the event location's
 PetscInt         n_factorizations = 0;
 
 // v^T x over v's few entries (the coupled dofs and the ball), summed over ranks.
@@ -272,8 +273,8 @@ PetscErrorCode SetCouplingVectors(TSProblem &P)
   }
   P.jac.point++;
   for (BeamFactor &f : P.jac.factors) f.used /= 2; // uses by recent points count most
-  P.jac.shift = P.jac.kc = P.jac.shiftV = -1; // the first Jacobian of the run is counted, as on a fresh TS
-  P.jac.current = nullptr;
+  P.jac.shift = P.jac.kc = P.jac.shiftV = -1;      // the first Jacobian of the run is counted, as on a fresh TS
+  P.jac.current                         = nullptr;
   PetscFunctionReturn(0);
 }
 
@@ -380,8 +381,13 @@ PetscErrorCode AssembledFallbackSolve(TSProblem &P, Vec b, Vec z, const char *wh
   }
   PetscCall(KSPSolve(F.ksp, b, z));
   if (P.jac.fallbacks++ == 0)
-    PetscCall(PetscPrintf(P.L.comm, "note: the rank-one solve of the Jacobian (the beam's LU kept, the contact by Sherman-Morrison) broke down: %s; that solve, and any other where it breaks down, used the assembled LU (-pc_type lu does every solve so)\n", why));
-  PetscCall(PetscInfo(NULL, "rank-one solve broke down (%s): the assembled LU at shift %g, kc %g N/m\n", why, (double)P.jac.shift, (double)P.jac.kc));
+    PetscCall(PetscPrintf(P.L.comm,
+                          "note: the rank-one solve of the Jacobian (the beam's LU kept, the contact by "
+                          "Sherman-Morrison) broke down: %s; that solve, and any other where it breaks down, used the "
+                          "assembled LU (-pc_type lu does every solve so)\n",
+                          why));
+  PetscCall(PetscInfo(NULL, "rank-one solve broke down (%s): the assembled LU at shift %g, kc %g N/m\n", why,
+                      (double)P.jac.shift, (double)P.jac.kc));
   PetscFunctionReturn(0);
 }
 
@@ -405,8 +411,12 @@ PetscErrorCode RankOneApply(PC pc, Vec b, Vec z)
     PetscFunctionReturn(0);
   }
   char why[160]; // (std::snprintf: PETSc's %g would write 0 as "0.")
-  if (!f.finite || !finite) std::snprintf(why, sizeof why, "B^-1 %s is not finite (the beam's factor at shift %g)", f.finite ? "b" : "u", (double)P->jac.shift);
-  else std::snprintf(why, sizeof why, "1 + kc v^T B^-1 u = %g with kc = %g N/m, v^T B^-1 u = %g", (double)(1 + P->jac.kc * f.vw), (double)P->jac.kc, (double)f.vw);
+  if (!f.finite || !finite)
+    std::snprintf(why, sizeof why, "B^-1 %s is not finite (the beam's factor at shift %g)", f.finite ? "b" : "u",
+                  (double)P->jac.shift);
+  else
+    std::snprintf(why, sizeof why, "1 + kc v^T B^-1 u = %g with kc = %g N/m, v^T B^-1 u = %g",
+                  (double)(1 + P->jac.kc * f.vw), (double)P->jac.kc, (double)f.vw);
   PetscCall(AssembledFallbackSolve(*P, b, z, why));
   PetscFunctionReturn(0);
 }
@@ -430,7 +440,8 @@ PetscErrorCode UpdateJacobian(TSProblem &P, Vec X, PetscReal shift, PetscReal sh
   if (shift == P.jac.shift && kc == P.jac.kc && shiftV == P.jac.shiftV) PetscFunctionReturn(0);
   if (!P.jac.rank_one) PetscFunctionReturn(AssembleJacobian(P, shift, shiftV, kc));
   P.count.assembled++;
-  if (shift != P.jac.shift || shiftV != P.jac.shiftV || !P.jac.current) PetscCall(BeamFactorAt(P, shift, shiftV, &P.jac.current));
+  if (shift != P.jac.shift || shiftV != P.jac.shiftV || !P.jac.current)
+    PetscCall(BeamFactorAt(P, shift, shiftV, &P.jac.current));
   P.jac.shift  = shift;
   P.jac.shiftV = shiftV;
   P.jac.kc     = kc;
@@ -454,12 +465,14 @@ PetscErrorCode TSIJacobianBeam(TS ts, PetscReal t, Vec U, Vec Udot, PetscReal sh
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J, Mat B, void *ctx)
+PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J,
+                                Mat B, void *ctx)
 {
   TSProblem &P = *static_cast<TSProblem *>(ctx);
 
   PetscFunctionBeginUser;
-  PetscCall(UpdateJacobian(P, X, shiftA, P.jac.Jd || P.jac.Bd ? shiftV : 0.0)); // Jd: the assembled path, Bd: the rank-one path
+  PetscCall(
+    UpdateJacobian(P, X, shiftA, P.jac.Jd || P.jac.Bd ? shiftV : 0.0)); // Jd: the assembled path, Bd: the rank-one path
   PetscFunctionReturn(0);
 }
 
@@ -507,8 +520,8 @@ namespace {
 // sweep may change the beam's values on it (its thickness, material, supports).
 std::uint64_t StructureFingerprint(const TSProblem &P)
 {
-  const BeamSystem &S = *P.sys;
-  std::uint64_t     h = 1469598103934665603ull;
+  const BeamSystem &S   = *P.sys;
+  std::uint64_t     h   = 1469598103934665603ull;
   auto              add = [&h](const void *p, size_t n) {
     const unsigned char *b = static_cast<const unsigned char *>(p);
     for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
@@ -550,7 +563,8 @@ PetscErrorCode BuildBeamPart(TSProblem &P)
   PetscCall(VecDestroy(&U));
   const bool     vcols = P.sys->Damped() && P.L.dof == 2 * P.L.fields;
   const PetscInt width = (vcols ? 2 : 1) * (2 * P.sys->bw + 1);
-  PetscCall(MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 3, NULL, width + 3, NULL, &P.jac.B0));
+  PetscCall(
+    MatCreateAIJ(P.L.comm, n, n, PETSC_DETERMINE, PETSC_DETERMINE, width + 3, NULL, width + 3, NULL, &P.jac.B0));
   PetscCall(MatSetOption(P.jac.B0, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(MatSetOption(P.jac.B0, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
   PetscCall(AssembleConstantPart(P, P.jac.B0, false, false));
@@ -615,7 +629,8 @@ PetscErrorCode TSJacobianNewPoint(TSProblem &P, TS ts)
 {
   PetscFunctionBeginUser;
   if (P.jac.rank_one) {
-    if (StructureFingerprint(P) != P.jac.structure) PetscCall(BuildBeamPart(P)); // another beam on the same grid: its own factors
+    if (StructureFingerprint(P) != P.jac.structure)
+      PetscCall(BuildBeamPart(P));              // another beam on the same grid: its own factors
     PetscCall(FallbackDestroy(P.jac.fallback)); // its pattern holds the last point
     PetscCall(SetCouplingVectors(P));
     PetscFunctionReturn(0);

@@ -33,14 +33,17 @@ static PetscErrorCode TSLayoutVerify(const TSLayout &L)
   if (L.rank == 0) {
     const PetscInt *idx;
     PetscCall(ISGetIndices(is[1], &idx));
-    PetscCheck(idx[0] == L.BallIndex(0), L.comm, PETSC_ERR_PLIB, "composite numbering of the ball (%" PetscInt_FMT ") differs from the assumed %" PetscInt_FMT, idx[0], L.BallIndex(0));
+    PetscCheck(idx[0] == L.BallIndex(0), L.comm, PETSC_ERR_PLIB,
+               "composite numbering of the ball (%" PetscInt_FMT ") differs from the assumed %" PetscInt_FMT, idx[0],
+               L.BallIndex(0));
     PetscCall(ISRestoreIndices(is[1], &idx));
   }
   const PetscInt *idx;
   PetscInt        n;
   PetscCall(ISGetLocalSize(is[0], &n));
   PetscCall(ISGetIndices(is[0], &idx));
-  PetscCheck(n == 0 || idx[0] == L.NodeIndex(L.xs, 0), L.comm, PETSC_ERR_PLIB, "composite numbering of the beam differs from the assumed one");
+  PetscCheck(n == 0 || idx[0] == L.NodeIndex(L.xs, 0), L.comm, PETSC_ERR_PLIB,
+             "composite numbering of the beam differs from the assumed one");
   PetscCall(ISRestoreIndices(is[0], &idx));
   PetscCall(ISDestroy(&is[0]));
   PetscCall(ISDestroy(&is[1]));
@@ -48,7 +51,8 @@ static PetscErrorCode TSLayoutVerify(const TSLayout &L)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSLayoutCreate(MPI_Comm comm, PetscInt nodes, PetscInt fields, PetscInt ghost_nodes, bool first_order, TSLayout *L)
+PetscErrorCode TSLayoutCreate(MPI_Comm comm, PetscInt nodes, PetscInt fields, PetscInt ghost_nodes, bool first_order,
+                              TSLayout *L)
 {
   PetscFunctionBeginUser;
   L->comm = comm;
@@ -149,7 +153,8 @@ PetscErrorCode TSStateWriteEnd(const TSLayout &L, Vec F, TSStateWrite *o)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSCompression(const TSProblem &P, const PetscScalar *beam, PetscInt stride, PetscScalar ball_value, PetscReal *c)
+PetscErrorCode TSCompression(const TSProblem &P, const PetscScalar *beam, PetscInt stride, PetscScalar ball_value,
+                             PetscReal *c)
 {
   const TSLayout &L = P.L;
   PetscReal       v = L.rank == 0 ? ball_value : 0.0;
@@ -167,10 +172,14 @@ PetscErrorCode TSCompression(const TSProblem &P, const PetscScalar *beam, PetscI
 const char *FormulationName(Formulation f)
 {
   switch (f) {
-  case Formulation::Explicit: return "explicit";
-  case Formulation::IMEX: return "imex";
-  case Formulation::Implicit: return "implicit";
-  default: return "second-order";
+  case Formulation::Explicit:
+    return "explicit";
+  case Formulation::IMEX:
+    return "imex";
+  case Formulation::Implicit:
+    return "implicit";
+  default:
+    return "second-order";
   }
 }
 
@@ -178,7 +187,8 @@ Formulation FormulationOfType(const char *type)
 {
   auto is = [&](const char *t) { return std::string(type) == t; };
   if (is(TSALPHA2)) return Formulation::SecondOrder;
-  if (is(TSRK) || is(TSEULER) || is(TSSSP) || is(TSGLEE) || is(TSMPRK) || is(TSBASICSYMPLECTIC) || is("modal")) return Formulation::Explicit;
+  if (is(TSRK) || is(TSEULER) || is(TSSSP) || is(TSGLEE) || is(TSMPRK) || is(TSBASICSYMPLECTIC) || is("modal"))
+    return Formulation::Explicit;
   if (is(TSARKIMEX) || is(TSEIMEX) || is(TSMIMEX)) return Formulation::IMEX;
   return Formulation::Implicit;
 }

@@ -26,12 +26,12 @@ namespace {
 void ModeForced(PetscReal w, PetscReal sg, int m, PetscReal t, PetscReal *rz, PetscReal *rv)
 {
   if (w == 0.0 || (w * t < 0.5 && sg * t < 0.5)) {
-    PetscReal d[3] = {0, 0, 0}; // z^(i), z^(i+1), z^(i+2) at 0, rolling
+    PetscReal d[3]   = {0, 0, 0}; // z^(i), z^(i+1), z^(i+2) at 0, rolling
     PetscReal fact_m = 1;
     for (int i = 2; i <= m; ++i) fact_m *= i;
     PetscReal z = 0, v = 0, ti = 1; // ti = t^i / i!
     for (int i = 0; i < 400; ++i) {
-      d[2]                = -2 * sg * d[1] - w * w * d[0] + (i == m ? fact_m : 0.0);
+      d[2]               = -2 * sg * d[1] - w * w * d[0] + (i == m ? fact_m : 0.0);
       const PetscReal tz = d[0] * ti, tv = d[1] * ti;
       z += tz;
       v += tv;
@@ -44,8 +44,10 @@ void ModeForced(PetscReal w, PetscReal sg, int m, PetscReal t, PetscReal *rz, Pe
     *rv = v;
     return;
   }
-  PetscReal p[5] = {0, 0, 0, 0, 0}; // P(s) = sum p_i s^i: w^2 p_i + 2 sigma (i+1) p_{i+1} + (i+2)(i+1) p_{i+2} = [i == m]
-  for (int i = m; i >= 0; --i) p[i] = ((i == m ? 1.0 : 0.0) - 2 * sg * (i + 1) * p[i + 1] - (i + 2) * (i + 1) * p[i + 2]) / (w * w);
+  PetscReal p[5] = {0, 0, 0, 0,
+                    0}; // P(s) = sum p_i s^i: w^2 p_i + 2 sigma (i+1) p_{i+1} + (i+2)(i+1) p_{i+2} = [i == m]
+  for (int i = m; i >= 0; --i)
+    p[i] = ((i == m ? 1.0 : 0.0) - 2 * sg * (i + 1) * p[i + 1] - (i + 2) * (i + 1) * p[i + 2]) / (w * w);
   PetscReal P = 0, Pd = 0, tp = 1;
   for (int i = 0; i <= m; ++i, tp *= t) {
     P += p[i] * tp;
@@ -111,13 +113,13 @@ inline PetscReal OneMinusCos(PetscReal cy, PetscReal sy) { return cy > 0 ? sy * 
 // 1; order 4: 0, 1/2, 1), F(s) = sum_j F_j l_j(s/h). The coupling gamma_k is folded in where
 // the step uses it with a weight.
 struct StepWeights {
-  PetscReal              h = 0;
-  unsigned long          used = 0;            // last use (least recently used slot is refilled)
-  std::vector<PetscReal> a0, a1, a2, a3;      // the exact free propagator over h: [z, zd] -> [a0 z + a1 zd, a2 z + a3 zd]
-  std::vector<PetscReal> gm0, gm1;            // gamma times its first row over h/2 (order 4)
-  std::vector<PetscReal> g0, g1;              // gamma times its first row over h
-  std::vector<PetscReal> R[3], V[3];          // gamma times mode k's displacement and velocity at h forced by l_j
-  PetscReal              W[3][3] = {{0}};     // dc(tau_i h) / dF_j (beam and ball), i >= 1
+  PetscReal              h    = 0;
+  unsigned long          used = 0;        // last use (least recently used slot is refilled)
+  std::vector<PetscReal> a0, a1, a2, a3;  // the exact free propagator over h: [z, zd] -> [a0 z + a1 zd, a2 z + a3 zd]
+  std::vector<PetscReal> gm0, gm1;        // gamma times its first row over h/2 (order 4)
+  std::vector<PetscReal> g0, g1;          // gamma times its first row over h
+  std::vector<PetscReal> R[3], V[3];      // gamma times mode k's displacement and velocity at h forced by l_j
+  PetscReal              W[3][3] = {{0}}; // dc(tau_i h) / dF_j (beam and ball), i >= 1
   PetscReal              by[3] = {0}, bv[3] = {0}; // ball's displacement and velocity at h per unit F_j (times m_b)
 };
 constexpr size_t kWeightsCache = 8; // the nominal step and a few event steps
@@ -140,39 +142,40 @@ struct ModalTS {
   // Set up once (TSSetUp_Modal).
   TSProblem                       *P = nullptr;
   std::shared_ptr<const BeamModes> modes;
-  PetscInt                         n = 0;                      // modes kept (all: the free beam dofs)
-  PetscInt                         nd = 0;                     // free beam dofs (the rows of Phi)
-  const ModalCorrection           *corr = nullptr;             // the static correction at the point (Gr = 0: every mode kept)
-  PetscReal                        Gr = 0;                     // m/N: its residual flexibility
-  std::vector<PetscReal>           gamma, omega, sigma;        // per mode
-  std::vector<PetscReal>           isqm;                       // 1/sqrt(m) per free dof
-  std::vector<PetscInt>            free_of;                    // beam dof -> free dof (-1: held)
-  std::vector<StepWeights>         weights;                    // at most kWeightsCache slots
+  PetscInt                         n    = 0;            // modes kept (all: the free beam dofs)
+  PetscInt                         nd   = 0;            // free beam dofs (the rows of Phi)
+  const ModalCorrection           *corr = nullptr;      // the static correction at the point (Gr = 0: every mode kept)
+  PetscReal                        Gr   = 0;            // m/N: its residual flexibility
+  std::vector<PetscReal>           gamma, omega, sigma; // per mode
+  std::vector<PetscReal>           isqm;                // 1/sqrt(m) per free dof
+  std::vector<PetscInt>            free_of;             // beam dof -> free dof (-1: held)
+  std::vector<StepWeights>         weights;             // at most kWeightsCache slots
   unsigned long                    uses = 0;
-  StepShapes                       shapes;                     // the nominal step's, across points
-  bool                             keep_shapes = false;        // the point's first weights computed: keep their shapes
+  StepShapes                       shapes;              // the nominal step's, across points
+  bool                             keep_shapes = false; // the point's first weights computed: keep their shapes
   // The modal state and the start of the last step (rollback); the compression c = y_b -
   // gamma . z and its rate at the current state (c_valid) and at the start of the last step.
   std::vector<PetscReal> z, zd, z0, zd0;
   PetscReal              yb = 0, vb = 0, yb0 = 0, vb0 = 0;
-  PetscReal              c = 0, cd = 0, c0 = 0, cd0 = 0; // the kept modes' part y_b - gamma . z (CompressionNow adds the static correction)
-  bool                   c_valid = false;
-  bool                   have_modal = false, have_step = false;
+  PetscReal              c = 0, cd = 0, c0 = 0,
+            cd0   = 0; // the kept modes' part y_b - gamma . z (CompressionNow adds the static correction)
+  bool c_valid    = false;
+  bool have_modal = false, have_step = false;
   // The physical vector ts->vec_sol: whether it holds the modal state (phys_valid), the
   // object and state it had when last written or projected, and a copy of that content.
-  bool             phys_valid = false;
-  PetscObjectId    vec_id     = 0;
-  PetscObjectState vec_state  = 0;
-  Vec              Xc = nullptr, all = nullptr;
-  VecScatter       gather = nullptr;
-  std::vector<PetscReal> sy, sv;                                // Project's scaled state
-  PetscInt         projections = 0, syncs = 0, kept = 0, newton_fail = 0, weight_sets = 0;
+  bool                   phys_valid = false;
+  PetscObjectId          vec_id     = 0;
+  PetscObjectState       vec_state  = 0;
+  Vec                    Xc = nullptr, all = nullptr;
+  VecScatter             gather = nullptr;
+  std::vector<PetscReal> sy, sv; // Project's scaled state
+  PetscInt               projections = 0, syncs = 0, kept = 0, newton_fail = 0, weight_sets = 0;
 };
 
 ModalTS *Data(TS ts) { return static_cast<ModalTS *>(ts->data); }
 
 // Nodes tau_j and the Lagrange basis l_j(x) = sum_m L[j][m] x^m of the force polynomial.
-PetscInt StageCount(PetscInt order) { return order == 2 ? 2 : 3; }
+PetscInt        StageCount(PetscInt order) { return order == 2 ? 2 : 3; }
 const PetscReal kTau2[2] = {0, 1}, kTau4[3] = {0, 0.5, 1};
 const PetscReal kL2[2][3] = {{1, -1, 0}, {0, 1, 0}};
 const PetscReal kL4[3][3] = {{1, -3, 2}, {0, 4, -4}, {0, -1, 2}};
@@ -190,7 +193,8 @@ void WeightsBall(const ModalTS &m, PetscReal h, const PetscReal hq[3], PetscReal
     for (PetscInt j = 0; j < s; ++j) {
       W.by[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q];
       W.bv[j] += Lc(j, q) * std::pow(h, (PetscReal)q + 1) / (q + 1) / hq[q];
-      for (PetscInt i = 1; i < s; ++i) Wacc[i][j] += Lc(j, q) * std::pow(tau[i] * h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q] / mb;
+      for (PetscInt i = 1; i < s; ++i)
+        Wacc[i][j] += Lc(j, q) * std::pow(tau[i] * h, (PetscReal)q + 2) / ((q + 1) * (q + 2)) / hq[q] / mb;
     }
   }
   for (PetscInt i = 0; i < 3; ++i)
@@ -205,13 +209,13 @@ PetscInt folds = 0; // steps whose weights were folded from an earlier point's s
 template <PetscInt s>
 void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W, StepShapes *Sh)
 {
-  const PetscInt   n    = m.n;
-  const PetscReal *tau  = s == 2 ? kTau2 : kTau4;
-  auto             Lc   = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
+  const PetscInt   n          = m.n;
+  const PetscReal *tau        = s == 2 ? kTau2 : kTau4;
+  auto             Lc         = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
   PetscReal        coef[3][3] = {{0}}; // l_j(s/h) = sum_q coef[j][q] s^q
-  PetscReal        hq[3] = {1, h, h * h};
+  PetscReal        hq[3]      = {1, h, h * h};
   PetscReal        Wacc[3][3] = {{0}}; // W.W, accumulated here (not through memory the stores below may alias)
-  W.h = h;
+  W.h                         = h;
   for (PetscInt j = 0; j < s; ++j)
     for (PetscInt q = 0; q < s; ++q) coef[j][q] = Lc(j, q) / hq[q];
   for (PetscInt k = 0; k < n; ++k) {
@@ -230,7 +234,8 @@ void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W, StepShapes *S
       for (PetscInt i = 1; i < s; ++i) {
         const PetscReal t = tau[i] * h;
         UndampedForced  u(w * t, cx[i], sx[i], omc[i]);
-        const PetscReal rz[3] = {t * t * u.f2, t * t * t * u.f3, t * t * t * t * u.g4}, rv[3] = {t * u.sinc, t * t * u.f2, 2 * t * t * t * u.f3};
+        const PetscReal rz[3] = {t * t * u.f2, t * t * t * u.f3, t * t * t * t * u.g4},
+                        rv[3] = {t * u.sinc, t * t * u.f2, 2 * t * t * t * u.f3};
         if (i == s - 1) {
           W.a0[k] = u.c, W.a1[k] = t * u.sinc, W.a2[k] = -w * u.sn, W.a3[k] = u.c;
           W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
@@ -295,12 +300,12 @@ void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W, StepShapes *S
 template <PetscInt s>
 void WeightsFold(const ModalTS &m, const StepShapes &Sh, StepWeights &W)
 {
-  const PetscInt  n  = m.n;
-  const PetscReal h  = Sh.h;
-  auto            Lc = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
-  PetscReal       hq[3] = {1, h, h * h};
+  const PetscInt  n          = m.n;
+  const PetscReal h          = Sh.h;
+  auto            Lc         = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
+  PetscReal       hq[3]      = {1, h, h * h};
   PetscReal       Wacc[3][3] = {{0}};
-  W.h = h;
+  W.h                        = h;
   for (PetscInt k = 0; k < n; ++k) {
     const PetscReal gk = m.gamma[k], g2 = gk * gk;
     W.a0[k] = Sh.a0[k], W.a1[k] = Sh.a1[k], W.a2[k] = Sh.a2[k], W.a3[k] = Sh.a3[k];
@@ -333,11 +338,14 @@ const StepWeights &WeightsOf(ModalTS &m, PetscReal h)
   if (m.weights.size() < kWeightsCache) {
     m.weights.reserve(kWeightsCache); // no reallocation: references handed out stay valid until refilled
     m.weights.emplace_back();
-    W                 = &m.weights.back();
-    const size_t n    = (size_t)m.n;
-    for (std::vector<PetscReal> *v : {&W->a0, &W->a1, &W->a2, &W->a3, &W->gm0, &W->gm1, &W->g0, &W->g1}) v->assign(n, 0.0);
+    W              = &m.weights.back();
+    const size_t n = (size_t)m.n;
+    for (std::vector<PetscReal> *v : {&W->a0, &W->a1, &W->a2, &W->a3, &W->gm0, &W->gm1, &W->g0, &W->g1})
+      v->assign(n, 0.0);
     for (int j = 0; j < 3; ++j) W->R[j].assign(n, 0.0), W->V[j].assign(n, 0.0);
-  } else W = &*std::min_element(m.weights.begin(), m.weights.end(), [](const StepWeights &a, const StepWeights &b) { return a.used < b.used; });
+  } else
+    W = &*std::min_element(m.weights.begin(), m.weights.end(),
+                           [](const StepWeights &a, const StepWeights &b) { return a.used < b.used; });
   // The point's first step (the nominal one): folded from the shapes kept by an earlier point on
   // this basis, else computed and its shapes kept for the next point. Other lengths: computed.
   if (m.shapes.h == h && m.shapes.order == m.order) {
@@ -349,7 +357,8 @@ const StepWeights &WeightsOf(ModalTS &m, PetscReal h)
     if (keep) {
       keep->h     = h;
       keep->order = m.order;
-      for (std::vector<PetscReal> *v : {&keep->a0, &keep->a1, &keep->a2, &keep->a3, &keep->m0, &keep->m1}) v->assign((size_t)m.n, 0.0);
+      for (std::vector<PetscReal> *v : {&keep->a0, &keep->a1, &keep->a2, &keep->a3, &keep->m0, &keep->m1})
+        v->assign((size_t)m.n, 0.0);
       for (int j = 0; j < 3; ++j) keep->R[j].assign((size_t)m.n, 0.0), keep->V[j].assign((size_t)m.n, 0.0);
       for (int j = 0; j < 6; ++j) keep->X[j].assign((size_t)m.n, 0.0);
     }
@@ -357,7 +366,7 @@ const StepWeights &WeightsOf(ModalTS &m, PetscReal h)
     else WeightsCompute<3>(m, h, *W, keep);
   }
   m.keep_shapes = false;
-  W->used = m.uses;
+  W->used       = m.uses;
   m.weight_sets++;
   return *W;
 }
@@ -381,7 +390,8 @@ PetscReal StaticallyCorrected(const ModalTS &m, PetscReal cm, PetscReal cmd, Pet
   const TSProblem &P = *m.P;
   PetscReal        c = cm;
   for (int it = 0; it < 50; ++it) {
-    const PetscReal r = c - cm + m.Gr * ContactForce(P.ball, *P.contact, c), dc = r / (1 + m.Gr * ContactStiffness(P.ball, *P.contact, c));
+    const PetscReal r  = c - cm + m.Gr * ContactForce(P.ball, *P.contact, c),
+                    dc = r / (1 + m.Gr * ContactStiffness(P.ball, *P.contact, c));
     c -= dc;
     if (!(std::abs(dc) > 1e-15 * std::abs(c))) break;
   }
@@ -405,7 +415,8 @@ PetscReal CompressionNow(ModalTS &m, PetscReal *cdot)
 // one pass over the modes for the free compression at the nodes and one for the update (which
 // also gives the compression at the step's end).
 // The stage compressions the modes would give without the step's force (c_i at tau_i h).
-static void FreeStageCompressions(const ModalTS &m, const StepWeights &W, PetscInt s, PetscReal h, const PetscReal *tau, PetscReal cfree[3])
+static void FreeStageCompressions(const ModalTS &m, const StepWeights &W, PetscInt s, PetscReal h, const PetscReal *tau,
+                                  PetscReal cfree[3])
 {
   const PetscReal *z = m.z.data(), *zd = m.zd.data();
   const PetscInt   n = m.n;
@@ -433,8 +444,8 @@ static void StageForces(ModalTS &m, const StepWeights &W, PetscInt s, const Pets
   P.count.func++;
   F[0] = ContactForce(P.ball, *P.contact, CompressionNow(m, nullptr));
   for (PetscInt i = 1; i < s; ++i) F[i] = F[0];
-  const PetscInt nu = s - 1; // unknowns F_1 .. F_{s-1}
-  PetscReal dprev = PETSC_MAX_REAL;
+  const PetscInt nu    = s - 1; // unknowns F_1 .. F_{s-1}
+  PetscReal      dprev = PETSC_MAX_REAL;
   for (int it = 0; it < 50; ++it) {
     PetscReal r[2], J[2][2], c[3];
     for (PetscInt i = 1; i < s; ++i) {
@@ -470,7 +481,7 @@ static void StageForces(ModalTS &m, const StepWeights &W, PetscInt s, const Pets
 static void AdvanceModes(ModalTS &m, const StepWeights &W, PetscInt s, bool in, const PetscReal F[3])
 {
   PetscReal       *z = m.z.data(), *zd = m.zd.data();
-  const PetscInt   n = m.n;
+  const PetscInt   n  = m.n;
   const PetscReal *a0 = W.a0.data(), *a1 = W.a1.data(), *a2 = W.a2.data(), *a3 = W.a3.data(), *gamma = m.gamma.data();
   PetscReal        c = m.yb, cd = m.vb;
   if (!in) // free flight of the ball: the beam's modes free
@@ -482,13 +493,15 @@ static void AdvanceModes(ModalTS &m, const StepWeights &W, PetscInt s, bool in, 
       cd -= gamma[k] * zdn;
     }
   else if (s == 3) {
-    const PetscReal *R0 = W.R[0].data(), *R1 = W.R[1].data(), *R2 = W.R[2].data(), *V0 = W.V[0].data(), *V1 = W.V[1].data(), *V2 = W.V[2].data();
-    const PetscReal  F0 = F[0], F1 = F[1], F2 = F[2];
+    const PetscReal *R0 = W.R[0].data(), *R1 = W.R[1].data(), *R2 = W.R[2].data(), *V0 = W.V[0].data(),
+                    *V1 = W.V[1].data(), *V2 = W.V[2].data();
+    const PetscReal F0 = F[0], F1 = F[1], F2 = F[2];
     for (PetscInt k = 0; k < n; ++k) {
       const PetscReal zk = z[k], zdk = zd[k];
-      const PetscReal zn = a0[k] * zk + a1[k] * zdk + F0 * R0[k] + F1 * R1[k] + F2 * R2[k], zdn = a2[k] * zk + a3[k] * zdk + F0 * V0[k] + F1 * V1[k] + F2 * V2[k];
-      z[k]  = zn;
-      zd[k] = zdn;
+      const PetscReal zn  = a0[k] * zk + a1[k] * zdk + F0 * R0[k] + F1 * R1[k] + F2 * R2[k],
+                      zdn = a2[k] * zk + a3[k] * zdk + F0 * V0[k] + F1 * V1[k] + F2 * V2[k];
+      z[k]                = zn;
+      zd[k]               = zdn;
       c -= gamma[k] * zn;
       cd -= gamma[k] * zdn;
     }
@@ -497,9 +510,10 @@ static void AdvanceModes(ModalTS &m, const StepWeights &W, PetscInt s, bool in, 
     const PetscReal  F0 = F[0], F1 = F[1];
     for (PetscInt k = 0; k < n; ++k) {
       const PetscReal zk = z[k], zdk = zd[k];
-      const PetscReal zn = a0[k] * zk + a1[k] * zdk + F0 * R0[k] + F1 * R1[k], zdn = a2[k] * zk + a3[k] * zdk + F0 * V0[k] + F1 * V1[k];
-      z[k]  = zn;
-      zd[k] = zdn;
+      const PetscReal zn  = a0[k] * zk + a1[k] * zdk + F0 * R0[k] + F1 * R1[k],
+                      zdn = a2[k] * zk + a3[k] * zdk + F0 * V0[k] + F1 * V1[k];
+      z[k]                = zn;
+      zd[k]               = zdn;
       c -= gamma[k] * zn;
       cd -= gamma[k] * zdn;
     }
@@ -511,11 +525,11 @@ static void AdvanceModes(ModalTS &m, const StepWeights &W, PetscInt s, bool in, 
 
 void StepBy(ModalTS &m, PetscReal h)
 {
-  TSProblem         &P  = *m.P;
-  const bool         in = P.contact->phase != ContactPhase::Separated;
-  const StepWeights &W  = WeightsOf(m, h);
-  const PetscInt     s  = StageCount(m.order);
-  const PetscReal   *tau = m.order == 2 ? kTau2 : kTau4;
+  TSProblem         &P    = *m.P;
+  const bool         in   = P.contact->phase != ContactPhase::Separated;
+  const StepWeights &W    = WeightsOf(m, h);
+  const PetscInt     s    = StageCount(m.order);
+  const PetscReal   *tau  = m.order == 2 ? kTau2 : kTau4;
   PetscReal          F[3] = {0, 0, 0};
   if (in) {
     PetscReal cfree[3] = {0, 0, 0};
@@ -546,10 +560,10 @@ PetscErrorCode AnyRank(MPI_Comm comm, bool local, bool *any)
 // The modal state from the physical vector (every rank gathers it): z = Phi^T M^{1/2} y.
 PetscErrorCode Project(TS ts)
 {
-  ModalTS        &m = *Data(ts);
-  const TSLayout &L = m.P->L;
+  ModalTS        &m  = *Data(ts);
+  const TSLayout &L  = m.P->L;
   const PetscInt  nf = L.fields, n = m.nd, nm = m.n; // free dofs, modes
-  Vec             X  = ts->vec_sol;
+  Vec             X = ts->vec_sol;
 
   PetscFunctionBeginUser;
   if (!m.gather) PetscCall(VecScatterCreateToAll(X, &m.gather, &m.all));
@@ -621,7 +635,7 @@ PetscErrorCode Project(TS ts)
 // propagates it by 0 and writes it back) changes the entries by ~ n eps of their kind's
 // magnitude; a real change of state is many orders above. Collective, O(N / ranks).
 constexpr PetscReal kRoundOff = 1e-11;
-PetscErrorCode SameToRoundOff(const ModalTS &m, Vec X, Vec Xc, bool *same)
+PetscErrorCode      SameToRoundOff(const ModalTS &m, Vec X, Vec Xc, bool *same)
 {
   const TSLayout    &L = m.P->L;
   const PetscScalar *x, *xc;
@@ -688,7 +702,7 @@ PetscErrorCode Sync(TS ts)
 
   PetscFunctionBeginUser;
   if (!m.P || !X) PetscFunctionReturn(0); // not set up yet: nothing to write
-  const TSLayout &L = m.P->L;
+  const TSLayout &L  = m.P->L;
   const PetscInt  nf = L.fields, n = m.nd, nm = m.n; // free dofs, modes
   PetscCall(Reconcile(ts));
   if (m.phys_valid) PetscFunctionReturn(0);
@@ -731,8 +745,8 @@ PetscErrorCode Sync(TS ts)
   PetscCall(TSStateWriteBegin(L, X, &o));
   for (PetscInt d = L.D0(); d < L.D1(); ++d) {
     const PetscInt i = m.free_of[d], kk = (d / nf) * L.dof + d % nf;
-    o.beam[kk]       = i < 0 ? 0.0 : m.isqm[i] * y[i - i0];
-    o.beam[kk + nf]  = i < 0 ? 0.0 : m.isqm[i] * v[i - i0];
+    o.beam[kk]      = i < 0 ? 0.0 : m.isqm[i] * y[i - i0];
+    o.beam[kk + nf] = i < 0 ? 0.0 : m.isqm[i] * v[i - i0];
   }
   if (o.ball) {
     o.ball[0] = m.yb;
@@ -759,8 +773,8 @@ PetscErrorCode TSStep_Modal(TS ts)
   PetscCall(Reconcile(ts));
   m.z0.assign(m.z.begin(), m.z.end()); // no allocation after the first step
   m.zd0.assign(m.zd.begin(), m.zd.end());
-  m.yb0       = m.yb;
-  m.vb0       = m.vb;
+  m.yb0 = m.yb;
+  m.vb0 = m.vb;
   CompressionNow(m, nullptr); // m.c, m.cd valid: the kept modes' part (rolled back as it is)
   m.c0        = m.c;
   m.cd0       = m.cd;
@@ -776,7 +790,8 @@ PetscErrorCode TSRollBack_Modal(TS ts)
   ModalTS &m = *Data(ts);
 
   PetscFunctionBeginUser;
-  PetscCheck(m.have_step, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER, "TS modal: no completed step to roll back");
+  PetscCheck(m.have_step, PetscObjectComm((PetscObject)ts), PETSC_ERR_ORDER,
+             "TS modal: no completed step to roll back");
   m.z.swap(m.z0); // the step's end is not needed again
   m.zd.swap(m.zd0);
   m.yb         = m.yb0;
@@ -818,7 +833,8 @@ PetscErrorCode Compression_Modal(TS ts, PetscReal *c, PetscReal *cdot)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode GetState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb)
+PetscErrorCode GetState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb,
+                              PetscReal *vb)
 {
   ModalTS &m = *Data(ts);
 
@@ -834,7 +850,8 @@ PetscErrorCode GetState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<Pets
 // The modal state when the physical vector does not hold it and would be its expansion alone:
 // not written since the last step or modal state set (writing it is O(n k)), and no static shape
 // of the modes left out in it (every mode kept, or no contact force). *done false otherwise.
-PetscErrorCode UnwrittenState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done)
+PetscErrorCode UnwrittenState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb,
+                                    PetscReal *vb, PetscBool *done)
 {
   ModalTS &m = *Data(ts);
 
@@ -855,14 +872,17 @@ PetscErrorCode UnwrittenState_Modal(TS ts, std::vector<PetscReal> *z, std::vecto
 // The modal state replaced; the physical vector left as it is, marked stale (written from the
 // modes at its next read) and its object state recorded, so that Reconcile does not take it
 // for an outside write and project it back.
-PetscErrorCode SetState_Modal(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb, PetscReal vb)
+PetscErrorCode SetState_Modal(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb,
+                              PetscReal vb)
 {
   ModalTS &m = *Data(ts);
   Vec      X = ts->vec_sol;
 
   PetscFunctionBeginUser;
-  PetscCheck(m.P && X && (PetscInt)z.size() == m.n && (PetscInt)zd.size() == m.n, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_SIZ,
-             "TS modal: a modal state of %zu modes set on a TS with %" PetscInt_FMT " (not set up, or another basis)", z.size(), m.n);
+  PetscCheck(m.P && X && (PetscInt)z.size() == m.n && (PetscInt)zd.size() == m.n, PetscObjectComm((PetscObject)ts),
+             PETSC_ERR_ARG_SIZ,
+             "TS modal: a modal state of %zu modes set on a TS with %" PetscInt_FMT " (not set up, or another basis)",
+             z.size(), m.n);
   m.z.assign(z.begin(), z.end());
   m.zd.assign(zd.begin(), zd.end());
   m.yb         = yb;
@@ -924,24 +944,26 @@ PetscErrorCode PointSetUp(TS ts)
   std::string       why;
 
   PetscFunctionBeginUser;
-  PetscCheck(BeamModesAvailable(sys, &why), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP, "-ts_type modal needs the beam's modes: %s; use another -ts_type", why.c_str());
+  PetscCheck(BeamModesAvailable(sys, &why), PetscObjectComm((PetscObject)ts), PETSC_ERR_SUP,
+             "-ts_type modal needs the beam's modes: %s; use another -ts_type", why.c_str());
   const BeamModes *before = m.modes.get(); // alive until replaced: another basis has another address
   {
     ModalTruncation tr;
     PetscCall(ModalTruncationFromOptions(PetscObjectComm((PetscObject)ts), &tr));
     tr.contact_time = ContactTimeScale(m.P->ball, m.P->approach);
-    tr.cost_warn    = m.P->modes_cost_warn; // the run's -impact_cost_warn and -impact_progress (0 in a sweep: its own lines)
-    tr.progress     = m.P->modes_progress;
+    tr.cost_warn    = m.P->modes_cost_warn; // the run's -impact_cost_warn and -impact_progress (0 in a sweep: its own
+                                            // lines)
+    tr.progress       = m.P->modes_progress;
     tr.at             = m.P->g; // -modal_weight share: the modes weighed under this load and the force's start
     tr.force_exponent = ContactStartExponent(m.P->ball, m.P->approach);
     PetscCall(BeamModesShared(PetscObjectComm((PetscObject)ts), sys, tr, &m.modes));
   }
-  const ModalSystem &S = m.modes->S;
-  const ModalBasis  &B = m.modes->B;
-  const PetscInt     n = S.n;
+  const ModalSystem &S          = m.modes->S;
+  const ModalBasis  &B          = m.modes->B;
+  const PetscInt     n          = S.n;
   const bool         same_count = m.n == m.modes->Count();
-  m.n                  = m.modes->Count();
-  m.nd                 = n;
+  m.n                           = m.modes->Count();
+  m.nd                          = n;
   m.omega.assign(B.omega.begin(), B.omega.end());
   if (B.rate.empty()) m.sigma.assign(m.n, 0.0);
   else m.sigma.assign(B.rate.begin(), B.rate.end());
@@ -951,12 +973,13 @@ PetscErrorCode PointSetUp(TS ts)
   std::vector<PetscReal> gw(n, 0.0);
   const ContactCoupling &g = m.P->g;
   for (PetscInt i = 0; i < n; ++i) {
-    m.isqm[i]          = 1.0 / std::sqrt(S.mass[i]);
+    m.isqm[i]           = 1.0 / std::sqrt(S.mass[i]);
     m.free_of[S.dof[i]] = i;
     for (PetscInt q = 0; q < g.n; ++q)
       if (S.dof[i] == g.dof[q]) gw[i] += g.w[q] * m.isqm[i];
   }
-  // O(n): only the coupled dofs (the coupling's few entries) have gw != 0 (the other terms of the dot product are zeros).
+  // O(n): only the coupled dofs (the coupling's few entries) have gw != 0 (the other terms of the dot product are
+  // zeros).
   std::vector<PetscInt> coupled;
   for (PetscInt i = 0; i < n; ++i)
     if (gw[i] != 0.0) coupled.push_back(i);
@@ -983,14 +1006,15 @@ PetscErrorCode PointSetUp(TS ts)
 
 PetscErrorCode TSSetUp_Modal(TS ts)
 {
-  ModalTS      &m = *Data(ts);
-  TSRHSFunction f = nullptr;
+  ModalTS      &m   = *Data(ts);
+  TSRHSFunction f   = nullptr;
   void         *ctx = nullptr;
 
   PetscFunctionBeginUser;
   PetscCall(TSGetRHSFunction(ts, nullptr, &f, &ctx));
   PetscCheck(f == TSRHSExplicit && ctx, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONGSTATE,
-             "TS modal integrates the beam-and-ball problem of beamimpact only (its explicit right-hand side, solvers/ts_problem.hpp)");
+             "TS modal integrates the beam-and-ball problem of beamimpact only (its explicit right-hand side, "
+             "solvers/ts_problem.hpp)");
   m.P = static_cast<TSProblem *>(ctx);
   PetscCall(PointSetUp(ts));
   PetscFunctionReturn(0);
@@ -1010,10 +1034,15 @@ PetscErrorCode TSSetFromOptions_Modal(TS ts, PetscOptionItems *PetscOptionsObjec
   PetscBool flg;
 
   PetscFunctionBeginUser;
-  PetscOptionsHeadBegin(PetscOptionsObject, "Modal integrator (beamimpact): exact beam flow in its modes, contact force by splitting");
-  PetscCall(PetscOptionsInt("-ts_modal_order", "Order: 2 (force linear over the step, trapezoidal collocation) or 4 (force quadratic, Lobatto collocation at 0, h/2, h); the beam's modes are exact for the force", "TSModal", order, &order, &flg));
+  PetscOptionsHeadBegin(PetscOptionsObject,
+                        "Modal integrator (beamimpact): exact beam flow in its modes, contact force by splitting");
+  PetscCall(PetscOptionsInt("-ts_modal_order",
+                            "Order: 2 (force linear over the step, trapezoidal collocation) or 4 (force quadratic, "
+                            "Lobatto collocation at 0, h/2, h); the beam's modes are exact for the force",
+                            "TSModal", order, &order, &flg));
   PetscOptionsHeadEnd();
-  PetscCheck(order == 2 || order == 4, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE, "-ts_modal_order %" PetscInt_FMT " is not allowed: use 2 or 4", order);
+  PetscCheck(order == 2 || order == 4, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_OUTOFRANGE,
+             "-ts_modal_order %" PetscInt_FMT " is not allowed: use 2 or 4", order);
   if (order != m.order) m.weights.clear(), m.shapes.h = -1;
   m.order = order;
   PetscFunctionReturn(0);
@@ -1027,10 +1056,17 @@ PetscErrorCode TSView_Modal(TS ts, PetscViewer viewer)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (ascii)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  %s\n", m.modes ? BeamModesSummary(*m.modes, m.corr).c_str() : "modes not built yet"));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  %s\n",
+                                     m.modes ? BeamModesSummary(*m.modes, m.corr).c_str() : "modes not built yet"));
   if (ascii)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  Modal (beamimpact): exact beam flow in %" PetscInt_FMT " modes, contact force by %s collocation (order %" PetscInt_FMT "); %" PetscInt_FMT " step lengths weighted, %" PetscInt_FMT " projections, %" PetscInt_FMT " syncs of the physical state, %" PetscInt_FMT " writes kept (round-off), %" PetscInt_FMT " unconverged force solves\n",
-                                     m.n, m.order == 2 ? "trapezoidal" : "3-point Lobatto", m.order, m.weight_sets, m.projections, m.syncs, m.kept, m.newton_fail));
+    PetscCall(PetscViewerASCIIPrintf(viewer,
+                                     "  Modal (beamimpact): exact beam flow in %" PetscInt_FMT
+                                     " modes, contact force by %s collocation (order %" PetscInt_FMT "); %" PetscInt_FMT
+                                     " step lengths weighted, %" PetscInt_FMT " projections, %" PetscInt_FMT
+                                     " syncs of the physical state, %" PetscInt_FMT
+                                     " writes kept (round-off), %" PetscInt_FMT " unconverged force solves\n",
+                                     m.n, m.order == 2 ? "trapezoidal" : "3-point Lobatto", m.order, m.weight_sets,
+                                     m.projections, m.syncs, m.kept, m.newton_fail));
   PetscFunctionReturn(0);
 }
 
@@ -1119,7 +1155,8 @@ std::shared_ptr<const BeamModes> TSModalModes(TS ts)
   return Data(ts)->modes;
 }
 
-PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done)
+PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb,
+                               PetscReal *vb, PetscBool *done)
 {
   PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *, PetscReal *) = nullptr;
 
@@ -1130,9 +1167,11 @@ PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<Pet
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb, PetscReal vb, PetscBool *done)
+PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb,
+                               PetscReal vb, PetscBool *done)
 {
-  PetscErrorCode (*f)(TS, const std::vector<PetscReal> &, const std::vector<PetscReal> &, PetscReal, PetscReal) = nullptr;
+  PetscErrorCode (*f)(TS, const std::vector<PetscReal> &, const std::vector<PetscReal> &, PetscReal,
+                      PetscReal) = nullptr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalSetState_C", &f));
@@ -1141,9 +1180,11 @@ PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done)
+PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb,
+                                        PetscReal *vb, PetscBool *done)
 {
-  PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *, PetscReal *, PetscBool *) = nullptr;
+  PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *, PetscReal *,
+                      PetscBool *) = nullptr;
 
   PetscFunctionBeginUser;
   *done = PETSC_FALSE;

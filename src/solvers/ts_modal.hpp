@@ -70,16 +70,19 @@ PetscErrorCode TSModalNewPoint(TS ts);
 std::shared_ptr<const BeamModes> TSModalModes(TS ts);
 // The modal state in those modes (z, zd per kept mode; the ball), an outside write of the
 // physical vector projected first. O(modes). Collective; *done false for any other type.
-PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done);
+PetscErrorCode TSModalGetState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb,
+                               PetscReal *vb, PetscBool *done);
 // Replaces the modal state by (z, zd, yb, vb) in those modes (the exact free flight's end,
 // run/free_flight.hpp): O(modes); the physical vector is written from it when next read (no
 // projection). The caller sets the time and restarts. Collective; *done false for any other type.
-PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb, PetscReal vb, PetscBool *done);
+PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std::vector<PetscReal> &zd, PetscReal yb,
+                               PetscReal vb, PetscBool *done);
 // The modal state as TSModalGetState gives it, but only where reading the physical vector would
 // first write it from the modes (O(n k): after a step or TSModalSetState, before any read) and it
 // would be their expansion alone (every mode kept, or no contact force on the static shape of the
 // modes left out): the measures then take it in modes (run/measures.cpp). *done false otherwise
 // (the vector holds the state: read it), and for any other type. Collective.
-PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb, PetscBool *done);
+PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb,
+                                        PetscReal *vb, PetscBool *done);
 
 } // namespace beamimpact

@@ -18,29 +18,38 @@
 
 namespace beamimpact {
 
-enum class Formulation { Explicit, IMEX, Implicit, SecondOrder };
+enum class Formulation {
+  Explicit,
+  IMEX,
+  Implicit,
+  SecondOrder
+};
 const char *FormulationName(Formulation f);
 Formulation FormulationOfType(const char *ts_type);
 
 // Where every unknown lives.
 struct TSLayout {
-  MPI_Comm    comm = MPI_COMM_NULL;
-  PetscMPIInt size = 1, rank = 0;
-  PetscInt    nodes  = 0;
-  PetscInt    fields = 1;  // beam dofs per node
-  PetscInt    dof    = 2;  // DMDA components per node: fields (second-order form) or 2 fields
-  DM          pack = nullptr, da = nullptr, red = nullptr;
-  PetscInt    xs = 0, xe = 0;              // owned nodes
-  std::vector<PetscInt> node_owner_start;  // first node of each rank
-  std::vector<PetscInt> rstart;            // first composite global index of each rank
+  MPI_Comm              comm = MPI_COMM_NULL;
+  PetscMPIInt           size = 1, rank = 0;
+  PetscInt              nodes  = 0;
+  PetscInt              fields = 1; // beam dofs per node
+  PetscInt              dof    = 2; // DMDA components per node: fields (second-order form) or 2 fields
+  DM                    pack = nullptr, da = nullptr, red = nullptr;
+  PetscInt              xs = 0, xe = 0;   // owned nodes
+  std::vector<PetscInt> node_owner_start; // first node of each rank
+  std::vector<PetscInt> rstart;           // first composite global index of each rank
 
   PetscInt NodeIndex(PetscInt node, PetscInt comp) const; // composite global index
   PetscInt BallIndex(PetscInt comp) const;
-  PetscInt DofIndex(PetscInt d, bool velocity) const { return NodeIndex(d / fields, (velocity ? fields : 0) + d % fields); }
+  PetscInt DofIndex(PetscInt d, bool velocity) const
+  {
+    return NodeIndex(d / fields, (velocity ? fields : 0) + d % fields);
+  }
   PetscInt D0() const { return xs * fields; } // owned beam dofs [D0, D1)
   PetscInt D1() const { return xe * fields; }
 };
-PetscErrorCode TSLayoutCreate(MPI_Comm comm, PetscInt nodes, PetscInt fields, PetscInt ghost_nodes, bool first_order, TSLayout *L);
+PetscErrorCode TSLayoutCreate(MPI_Comm comm, PetscInt nodes, PetscInt fields, PetscInt ghost_nodes, bool first_order,
+                              TSLayout *L);
 PetscErrorCode TSLayoutDestroy(TSLayout *L);
 
 // The Jacobian J = shift I + d(rhs)/du, reassembled only when the shift or the contact
@@ -59,20 +68,20 @@ PetscErrorCode TSLayoutDestroy(TSLayout *L);
 // solve per point and shift). -pc_type lu (or any other) assembles and factors J as before.
 struct BeamFactor {
   PetscReal shift = -1, shiftV = -1; // the shift it holds
-  Mat       B = nullptr;             // B0 + shift I (+ shift_V Jd)
-  KSP       ksp = nullptr;           // preonly + LU of B (MUMPS on more than one rank)
-  Vec       w = nullptr;             // B^-1 u for the point of generation `point`
-  PetscReal vw = 0;                  // v^T w
-  bool      finite = true;             // every entry of w is finite
-  PetscInt  point = -1;
-  PetscInt  used = 0;                // uses, halved at each new point (the least used is replaced)
+  Mat       B      = nullptr;        // B0 + shift I (+ shift_V Jd)
+  KSP       ksp    = nullptr;        // preonly + LU of B (MUMPS on more than one rank)
+  Vec       w      = nullptr;        // B^-1 u for the point of generation `point`
+  PetscReal vw     = 0;              // v^T w
+  bool      finite = true;           // every entry of w is finite
+  PetscInt  point  = -1;
+  PetscInt  used   = 0; // uses, halved at each new point (the least used is replaced)
 };
 // The assembled J of the rank-one path's fallback (RankOneApply): created at the first solve
 // whose Sherman-Morrison step is not finite or cancels, refactored when (shift, kc) changed,
 // dropped at a new point (its pattern holds the contact point).
 struct AssembledFallback {
   Mat       J = nullptr, J0 = nullptr, Jd = nullptr;
-  KSP       ksp = nullptr;                 // preonly + LU (MUMPS on more than one rank), as -pc_type lu
+  KSP       ksp   = nullptr;                  // preonly + LU (MUMPS on more than one rank), as -pc_type lu
   PetscReal shift = -1, shiftV = -1, kc = -1; // what J holds
 };
 struct JacobianCache {
@@ -86,7 +95,7 @@ struct JacobianCache {
   std::vector<BeamFactor> factors;
   BeamFactor             *current = nullptr; // the factor of the current shift
   Vec                     u = nullptr, v = nullptr;
-  std::vector<PetscInt>   v_idx;  // v's owned nonzeros: local offsets in a global vector's array
+  std::vector<PetscInt>   v_idx; // v's owned nonzeros: local offsets in a global vector's array
   std::vector<PetscReal>  v_val;
   PetscInt                point = 0, factored = 0; // the point's generation; factorizations done (all runs)
   AssembledFallback       fallback;                // the solves the rank-one formula could not do
@@ -99,27 +108,30 @@ struct TSCounters {
 
 // Everything the TS callbacks need.
 struct TSProblem {
-  const BeamSystem  *sys = nullptr;
+  const BeamSystem  *sys   = nullptr;
   const FrameMotion *frame = nullptr; // the swing's frame (owned by the run driver)
   ContactCoupling    g;
-  BallParams        ball;
-  PetscReal         approach = 0; // m/s, the ball's and the beam's approach speed (the contact's scales; a ball at rest: the bat's)
-  PetscReal         modes_cost_warn = 0, modes_progress = 0; // s: -ts_type modal's modes: cost line and progress (TSStepperSettings)
-  ContactState     *contact = nullptr; // owned by the run driver
-  Formulation       form    = Formulation::Explicit;
-  TSLayout          L;
-  JacobianCache     jac;
-  TSCounters        count;
-  std::vector<PetscReal>   rate_acc, rate_cv; // TSDissipationRate: -a and C v of the owned dofs (kept: it runs every step)
+  BallParams         ball;
+  PetscReal
+    approach = 0; // m/s, the ball's and the beam's approach speed (the contact's scales; a ball at rest: the bat's)
+  PetscReal modes_cost_warn      = 0,
+            modes_progress       = 0;       // s: -ts_type modal's modes: cost line and progress (TSStepperSettings)
+  ContactState          *contact = nullptr; // owned by the run driver
+  Formulation            form    = Formulation::Explicit;
+  TSLayout               L;
+  JacobianCache          jac;
+  TSCounters             count;
+  std::vector<PetscReal> rate_acc,
+    rate_cv; // TSDissipationRate: -a and C v of the owned dofs (kept: it runs every step)
 };
 
 // Read access to a composite vector: beam values by global node (ghosted by the system's
 // width), the ball's values on every rank.
 struct TSStateRead {
-  const PetscScalar *beam = nullptr; // beam[node * dof + comp]
+  const PetscScalar *beam    = nullptr; // beam[node * dof + comp]
   PetscScalar        ball[2] = {0, 0};
   Vec                Ub = nullptr, Ur = nullptr;
-  const PetscScalar *arr = nullptr;
+  const PetscScalar *arr   = nullptr;
   bool               local = false;
 };
 PetscErrorCode TSStateReadBegin(const TSLayout &L, Vec U, TSStateRead *s);
@@ -137,7 +149,8 @@ PetscErrorCode TSStateWriteEnd(const TSLayout &L, Vec F, TSStateWrite *o);
 
 // c = y_b - g^T y (comp 0 of each field block: the deflection) or its rate (the velocity
 // block), from a beam array with node stride `stride` starting at the block; summed over ranks.
-PetscErrorCode TSCompression(const TSProblem &P, const PetscScalar *beam, PetscInt stride, PetscScalar ball_value, PetscReal *c);
+PetscErrorCode TSCompression(const TSProblem &P, const PetscScalar *beam, PetscInt stride, PetscScalar ball_value,
+                             PetscReal *c);
 
 // The residuals (ts_residuals.cpp) and Jacobians (ts_jacobian.cpp) for each formulation.
 PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx);
@@ -145,7 +158,8 @@ PetscErrorCode TSRHSContact(TS ts, PetscReal t, Vec U, Vec G, void *ctx);
 PetscErrorCode TSIFunctionBeam(TS ts, PetscReal t, Vec U, Vec Udot, Vec G, void *ctx);
 PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, void *ctx);
 PetscErrorCode TSIJacobianBeam(TS ts, PetscReal t, Vec U, Vec Udot, PetscReal shift, Mat A, Mat B, void *ctx);
-PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J, Mat B, void *ctx);
+PetscErrorCode TSI2JacobianBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J,
+                                Mat B, void *ctx);
 // Damped beam: the dissipation rate P = v^T C v (W) and its time derivative dP/dt = 2 a^T C v
 // (W/s) at the state (X, and V for the second-order form, else nullptr), a the acceleration of
 // the residual (contact force of the current phase); summed over ranks. For the dissipation
@@ -169,7 +183,7 @@ PetscInt       TSJacobianFactorizations(); // all contexts, since the start
 // RankOneApply solves with the assembled J instead (its LU, PETSc's own path, as -pc_type lu),
 // as it does when B^-1 b or w is not finite.
 constexpr PetscReal kRankOneCancellation = 1.5e-8; // sqrt(eps)
-bool RankOneDenominator(PetscReal kc, PetscReal vw, PetscReal *den);
+bool                RankOneDenominator(PetscReal kc, PetscReal vw, PetscReal *den);
 
 // Diagnostics (ts_diagnostics.cpp): a Newton convergence test that accepts the residual's
 // round-off floor, and the explanation of a failed step.
@@ -178,7 +192,8 @@ struct NewtonFloor {
   TS         ts     = nullptr;
   PetscReal  omega2 = 0; // (rad/s)^2, bound on omega_max^2
 };
-PetscErrorCode TSConvergedWithRoundoffFloor(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx);
+PetscErrorCode TSConvergedWithRoundoffFloor(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
+                                            SNESConvergedReason *reason, void *ctx);
 PetscErrorCode TSCheckStep(const TSProblem &P, TS ts, const char *ts_type, PetscReal omega_max);
 
 } // namespace beamimpact

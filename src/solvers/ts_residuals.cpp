@@ -18,7 +18,8 @@ namespace beamimpact {
 // global node with node strides ys, vs and os (pointing at the field block to read or write).
 // v (ghosted like y) is given for a damped beam only: without it the velocity parts are left
 // out at no cost.
-static void BeamAcceleration(TSProblem &P, PetscReal t, const PetscScalar *y, PetscInt ys, const PetscScalar *v, PetscInt vs, PetscReal F, PetscScalar *out, PetscInt os)
+static void BeamAcceleration(TSProblem &P, PetscReal t, const PetscScalar *y, PetscInt ys, const PetscScalar *v,
+                             PetscInt vs, PetscReal F, PetscScalar *out, PetscInt os)
 {
   const BeamSystem &S  = *P.sys;
   const TSLayout   &L  = P.L;
@@ -44,8 +45,8 @@ static void BeamAcceleration(TSProblem &P, PetscReal t, const PetscScalar *y, Pe
 
 PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
 {
-  TSProblem      &P = *static_cast<TSProblem *>(ctx);
-  const TSLayout &L = P.L;
+  TSProblem      &P  = *static_cast<TSProblem *>(ctx);
+  const TSLayout &L  = P.L;
   const PetscInt  nf = L.fields, dof = L.dof;
   TSStateRead     s;
   TSStateWrite    o;
@@ -74,8 +75,8 @@ PetscErrorCode TSRHSExplicit(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
 
 PetscErrorCode TSRHSContact(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
 {
-  TSProblem         &P = *static_cast<TSProblem *>(ctx);
-  const TSLayout    &L = P.L;
+  TSProblem         &P  = *static_cast<TSProblem *>(ctx);
+  const TSLayout    &L  = P.L;
   const PetscInt     nf = L.fields, dof = L.dof;
   PetscReal          c;
   Vec                Ub, Ur;
@@ -98,7 +99,8 @@ PetscErrorCode TSRHSContact(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
   PetscCall(TSStateWriteBegin(L, G, &o));
   for (PetscInt q = 0; q < P.g.n; ++q) {
     const PetscInt d = P.g.dof[q], node = d / nf;
-    if (node >= L.xs && node < L.xe && P.g.w[q] != 0.0) o.beam[node * dof + nf + d % nf] += P.g.w[q] * F / P.sys->mass[d];
+    if (node >= L.xs && node < L.xe && P.g.w[q] != 0.0)
+      o.beam[node * dof + nf + d % nf] += P.g.w[q] * F / P.sys->mass[d];
   }
   if (o.ball) o.ball[1] = -F / P.ball.mass;
   PetscCall(TSStateWriteEnd(L, G, &o));
@@ -107,8 +109,8 @@ PetscErrorCode TSRHSContact(TS ts, PetscReal t, Vec U, Vec G, void *ctx)
 
 PetscErrorCode TSIFunctionBeam(TS ts, PetscReal t, Vec U, Vec Udot, Vec G, void *ctx)
 {
-  TSProblem         &P = *static_cast<TSProblem *>(ctx);
-  const TSLayout    &L = P.L;
+  TSProblem         &P  = *static_cast<TSProblem *>(ctx);
+  const TSLayout    &L  = P.L;
   const PetscInt     nf = L.fields, dof = L.dof;
   TSStateRead        s;
   TSStateWrite       o;
@@ -149,9 +151,9 @@ PetscErrorCode TSIFunctionBeam(TS ts, PetscReal t, Vec U, Vec Udot, Vec G, void 
 
 PetscErrorCode TSI2FunctionBeam(TS ts, PetscReal t, Vec X, Vec V, Vec A, Vec G, void *ctx)
 {
-  TSProblem         &P = *static_cast<TSProblem *>(ctx);
-  const TSLayout    &L = P.L;
-  const PetscInt     nf = L.fields;
+  TSProblem         &P      = *static_cast<TSProblem *>(ctx);
+  const TSLayout    &L      = P.L;
+  const PetscInt     nf     = L.fields;
   const bool         damped = P.sys->Damped();
   TSStateRead        s, sv;
   TSStateWrite       o;
@@ -196,7 +198,7 @@ PetscErrorCode TSDissipationRate(TSProblem &P, PetscReal t, Vec X, Vec V, PetscR
   const PetscScalar *v  = V ? sv.beam : s.beam + nf;
   const PetscInt     vs = V ? nf : dof;
   PetscCall(TSCompression(P, s.beam, dof, s.ball[0], &c));
-  const PetscReal        F = ContactForce(P.ball, *P.contact, c);
+  const PetscReal         F   = ContactForce(P.ball, *P.contact, c);
   std::vector<PetscReal> &acc = P.rate_acc, &cv = P.rate_cv; // -a and C v of the owned dofs
   acc.resize(nown);
   cv.resize(nown);

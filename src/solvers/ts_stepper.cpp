@@ -47,10 +47,18 @@ PetscErrorCode TSCheckTypeKnown(const char *type, MPI_Comm comm)
   if (create || TSModalIsType(type) || !std::strcmp(type, TSALPHA2)) PetscFunctionReturn(0);
   char hint[200] = "";
   if (std::strlen(type) == 3 && !std::strncmp(type, "rk", 2) && type[2] >= '3' && type[2] <= '5')
-    std::snprintf(hint, sizeof hint, "; for the Runge-Kutta method of order %c use -ts_type rk -ts_rk_type %s", type[2], type[2] == '3' ? "3 (or 3bs)" : type[2] == '4' ? "4" : "5dp (or 5bs)");
+    std::snprintf(hint, sizeof hint, "; for the Runge-Kutta method of order %c use -ts_type rk -ts_rk_type %s", type[2],
+                  type[2] == '3'   ? "3 (or 3bs)"
+                  : type[2] == '4' ? "4"
+                                   : "5dp (or 5bs)");
   else if (!std::strcmp(type, "rk2"))
-    std::snprintf(hint, sizeof hint, "; for a Runge-Kutta method use -ts_type rk -ts_rk_type 3bs, 4 or 5dp (the order-2 tableaus 2a, 2b are refused: unstable for an undamped oscillation)");
-  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-ts_type %s is not an integrator: use one of rk (with -ts_rk_type 3bs, 4, 5dp, ...), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, irk, modal%s", type, hint);
+    std::snprintf(hint, sizeof hint,
+                  "; for a Runge-Kutta method use -ts_type rk -ts_rk_type 3bs, 4 or 5dp (the order-2 tableaus 2a, 2b "
+                  "are refused: unstable for an undamped oscillation)");
+  SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE,
+          "-ts_type %s is not an integrator: use one of rk (with -ts_rk_type 3bs, 4, 5dp, ...), cn, theta, beuler, "
+          "bdf, arkimex, rosw, alpha, alpha2, irk, modal%s",
+          type, hint);
 }
 
 // The per-structure context: the layout, the TS configured from the options (type, its
@@ -60,17 +68,17 @@ PetscErrorCode TSCheckTypeKnown(const char *type, MPI_Comm comm)
 // the initial state and the contact state (TSStepperCreate). What the options set at the
 // build is kept here and replayed on reuse, so that a reused run is the fresh one bit for bit.
 struct TSContext {
-  std::string key;                 // TSContextKey: comm, grid, formulation, type, solver options
-  TSProblem   P;                   // the callbacks' context (its address is the TS's)
+  std::string key; // TSContextKey: comm, grid, formulation, type, solver options
+  TSProblem   P;   // the callbacks' context (its address is the TS's)
   TS          ts = nullptr;
   Vec         U = nullptr, V = nullptr; // V: velocities of the second-order form
-  NewtonFloor newton_floor;        // the SNES convergence test's context
-  bool        finished = false;    // the last run on it ended normally (else it is dropped)
-  bool        monitored = false;   // -ts_monitor (or any TS monitor) given
+  NewtonFloor newton_floor;             // the SNES convergence test's context
+  bool        finished        = false;  // the last run on it ended normally (else it is dropped)
+  bool        monitored       = false;  // -ts_monitor (or any TS monitor) given
   bool        dt_from_options = false, dt_max_from_options = false; // -ts_dt, -ts_adapt_dt_max given
-  PetscReal   dt_option = 0;       // s, -ts_dt as TSSetFromOptions read it
+  PetscReal   dt_option = 0;                                        // s, -ts_dt as TSSetFromOptions read it
   PetscReal   dt_min = 0, dt_max = 0; // s, the adaptor's step limits after TSSetFromOptions
-  PetscReal   ystar = -1;          // the rk tableau's imaginary-axis stability bound (-1: not computed)
+  PetscReal   ystar = -1;             // the rk tableau's imaginary-axis stability bound (-1: not computed)
   ~TSContext()
   {
     TSDestroy(&ts);
@@ -141,7 +149,8 @@ PetscErrorCode TSContextKey(MPI_Comm comm, const BeamSystem &sys, const char *ty
 
   PetscFunctionBeginUser;
   key->assign(reinterpret_cast<const char *>(&comm), sizeof comm);
-  *key += " " + std::to_string((long long)sys.nodes) + " " + std::to_string((long long)sys.fields) + " " + std::to_string((long long)sys.GhostNodes()) + " " + type + " |";
+  *key += " " + std::to_string((long long)sys.nodes) + " " + std::to_string((long long)sys.fields) + " " +
+          std::to_string((long long)sys.GhostNodes()) + " " + type + " |";
   PetscCall(PetscOptionsGetAll(NULL, &all));
   bool keep = false;
   for (const char *p = all ? all : "";;) { // the words of the database, split at white space (once a point: no stream)
@@ -152,7 +161,8 @@ PetscErrorCode TSContextKey(MPI_Comm comm, const BeamSystem &sys, const char *ty
     if (!n) break;
     if (n > 1 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]))) {
       keep = false;
-      for (const char *prefix : {"-ts_", "-snes_", "-ksp_", "-pc_", "-mat_"}) keep = keep || (n >= std::strlen(prefix) && !std::strncmp(word, prefix, std::strlen(prefix)));
+      for (const char *prefix : {"-ts_", "-snes_", "-ksp_", "-pc_", "-mat_"})
+        keep = keep || (n >= std::strlen(prefix) && !std::strncmp(word, prefix, std::strlen(prefix)));
     }
     if (keep) key->append(" ").append(word, n);
   }
@@ -162,20 +172,23 @@ PetscErrorCode TSContextKey(MPI_Comm comm, const BeamSystem &sys, const char *ty
 
 class TSStepper : public Stepper {
 public:
-  explicit TSStepper(std::shared_ptr<TSContext> c) : C(std::move(c)), P(C->P), ts(C->ts), U(C->U), V(C->V), newton_floor(C->newton_floor) {}
+  explicit TSStepper(std::shared_ptr<TSContext> c) :
+    C(std::move(c)), P(C->P), ts(C->ts), U(C->U), V(C->V), newton_floor(C->newton_floor)
+  {
+  }
   std::shared_ptr<TSContext> C;
-  TSProblem     &P;
-  TS            &ts;
-  Vec           &U, &V; // V: velocities of the second-order form
-  NewtonFloor   &newton_floor;
-  StepperCounts  counts0; // the TS's cumulative counts when this run started on it
-  bool           fixed_step = true;
-  PetscReal      dt_nominal = 0, dt_cap = 0; // s
-  ContactScales  scales;
-  IntegratorInfo info;
-  std::string    rk_type; // -ts_rk_type, for messages
+  TSProblem                 &P;
+  TS                        &ts;
+  Vec                       &U, &V; // V: velocities of the second-order form
+  NewtonFloor               &newton_floor;
+  StepperCounts              counts0; // the TS's cumulative counts when this run started on it
+  bool                       fixed_step = true;
+  PetscReal                  dt_nominal = 0, dt_cap = 0; // s
+  ContactScales              scales;
+  IntegratorInfo             info;
+  std::string                rk_type; // -ts_rk_type, for messages
   // Damped beam: the dissipated energy D by the dissipation rule (system/dissipation.hpp).
-  bool                damped = false;
+  bool                damped    = false;
   bool                monitored = false; // -ts_monitor (or any TS monitor) given: called after each step
   DissipationIntegral D;
   // The open view (ViewBegin/ViewEnd).
@@ -188,11 +201,11 @@ public:
     if (ts) TSViewFromOptions(ts, NULL, "-ts_view"); // at the end, as TSSolve would
     if (!C->finished) TSContextDrop(C);              // a run that stopped on an error: its context is not reused
   }
-  MPI_Comm    Comm() const override { return P.L.comm; }
-  std::string Method() const override { return "-ts_type " + info.ts_type; }
+  MPI_Comm                         Comm() const override { return P.L.comm; }
+  std::string                      Method() const override { return "-ts_type " + info.ts_type; }
   std::shared_ptr<const BeamModes> Modes() const override { return TSModalModes(ts); }
-  std::string StepOption() const override { return fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol"; }
-  PetscReal   Time() const override
+  std::string                      StepOption() const override { return fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol"; }
+  PetscReal                        Time() const override
   {
     PetscReal t = 0;
     TSGetTime(ts, &t);
@@ -536,18 +549,34 @@ std::string TSStepper::EnergyGrowthCause() const
   char            cause[512];
   const char     *reduce = fixed_step ? "-ts_dt" : "-ts_rtol/-ts_atol";
   if (TSModalIsType(info.ts_type.c_str()))
-    PetscSNPrintf(cause, sizeof(cause), "the modal splitting step does not resolve the contact (contact time scale %g s; the beam itself has no step limit); reduce -ts_dt or use -ts_modal_order 4", (double)scales.time);
+    PetscSNPrintf(cause, sizeof(cause),
+                  "the modal splitting step does not resolve the contact (contact time scale %g s; the beam itself has "
+                  "no step limit); reduce -ts_dt or use -ts_modal_order 4",
+                  (double)scales.time);
   else if (P.form == Formulation::Explicit && fixed_step)
-    PetscSNPrintf(cause, sizeof(cause), "the fixed step is %.3g x the stability limit dt_max = %g s computed for this grid and contact; use a smaller -ts_dt", (double)(dt_last / info.dt_stable), (double)info.dt_stable);
+    PetscSNPrintf(cause, sizeof(cause),
+                  "the fixed step is %.3g x the stability limit dt_max = %g s computed for this grid and contact; use "
+                  "a smaller -ts_dt",
+                  (double)(dt_last / info.dt_stable), (double)info.dt_stable);
   else if (P.form == Formulation::Explicit)
-    PetscSNPrintf(cause, sizeof(cause), "the error controller let the step reach the explicit stability limit dt_max = %g s; tighten -ts_rtol/-ts_atol or use a fixed -ts_dt below dt_max", (double)info.dt_stable);
+    PetscSNPrintf(cause, sizeof(cause),
+                  "the error controller let the step reach the explicit stability limit dt_max = %g s; tighten "
+                  "-ts_rtol/-ts_atol or use a fixed -ts_dt below dt_max",
+                  (double)info.dt_stable);
   else if (P.form == Formulation::IMEX)
-    PetscSNPrintf(cause, sizeof(cause), "-ts_type %s treats the contact force explicitly, and the step is too large for the contact stiffness (contact time scale %g s); reduce %s or use a fully implicit type (cn, bdf, alpha2)",
+    PetscSNPrintf(cause, sizeof(cause),
+                  "-ts_type %s treats the contact force explicitly, and the step is too large for the contact "
+                  "stiffness (contact time scale %g s); reduce %s or use a fully implicit type (cn, bdf, alpha2)",
                   info.ts_type.c_str(), (double)scales.time, reduce);
-  else PetscSNPrintf(cause, sizeof(cause), "the %s does not resolve the contact (contact time scale %g s); reduce %s", fixed_step ? "step" : "tolerance", (double)scales.time, reduce);
+  else
+    PetscSNPrintf(cause, sizeof(cause), "the %s does not resolve the contact (contact time scale %g s); reduce %s",
+                  fixed_step ? "step" : "tolerance", (double)scales.time, reduce);
   char text[700];
-  PetscSNPrintf(text, sizeof(text), "(-ts_type %s%s%s, %s step %g s): with the %s law energy can only be %s; likely cause: %s", info.ts_type.c_str(), rk_type.empty() ? "" : " -ts_rk_type ", rk_type.c_str(),
-                fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(P.ball.law), ContactElastic(P.ball) ? "conserved" : "lost", cause);
+  PetscSNPrintf(text, sizeof(text),
+                "(-ts_type %s%s%s, %s step %g s): with the %s law energy can only be %s; likely cause: %s",
+                info.ts_type.c_str(), rk_type.empty() ? "" : " -ts_rk_type ", rk_type.c_str(),
+                fixed_step ? "fixed" : "adaptive, last", (double)dt_last, ContactLawName(P.ball.law),
+                ContactElastic(P.ball) ? "conserved" : "lost", cause);
   return text;
 }
 
@@ -565,13 +594,20 @@ PetscErrorCode CreateTS(TSStepper &S, const char *type)
   PetscCall(TSSetProblemType(S.ts, TS_NONLINEAR));
   PetscCall(DMCreateGlobalVector(P.L.pack, &S.U));
   switch (P.form) {
-  case Formulation::Explicit: PetscCall(TSSetRHSFunction(S.ts, NULL, TSRHSExplicit, &P)); break;
-  case Formulation::IMEX: // the Jacobian is set after the options (TSJacobianInstall): which one depends on the preconditioner
+  case Formulation::Explicit:
+    PetscCall(TSSetRHSFunction(S.ts, NULL, TSRHSExplicit, &P));
+    break;
+  case Formulation::IMEX: // the Jacobian is set after the options (TSJacobianInstall): which one depends on the
+                          // preconditioner
     PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P));
     PetscCall(TSSetRHSFunction(S.ts, NULL, TSRHSContact, &P));
     break;
-  case Formulation::Implicit: PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P)); break;
-  case Formulation::SecondOrder: PetscCall(TSSetI2Function(S.ts, NULL, TSI2FunctionBeam, &P)); break;
+  case Formulation::Implicit:
+    PetscCall(TSSetIFunction(S.ts, NULL, TSIFunctionBeam, &P));
+    break;
+  case Formulation::SecondOrder:
+    PetscCall(TSSetI2Function(S.ts, NULL, TSI2FunctionBeam, &P));
+    break;
   }
   if (P.form != Formulation::Explicit) {
     SNES snes;
@@ -607,21 +643,25 @@ PetscErrorCode TSCheckTypeSettings(TS ts, const char *type, MPI_Comm comm)
 
   PetscFunctionBeginUser;
   PetscCheck(TypeCanRollBack(type), comm, PETSC_ERR_SUP,
-             "-ts_type %s cannot roll back a step, so contact start, maximum compression and separation cannot be located as events; "
-             "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, modal",
+             "-ts_type %s cannot roll back a step, so contact start, maximum compression and separation cannot be "
+             "located as events; "
+             "use one that can: rk (e.g. -ts_rk_type 4 or 5dp), cn, theta, beuler, bdf, arkimex, rosw, alpha, alpha2, "
+             "modal",
              type);
   PetscCall(TSGetTimeStep(ts, &dt));
   char value[64]; // PETSc's %g would write 0 as "0." and nan as "nan."
   std::snprintf(value, sizeof value, "%g", (double)dt);
-  PetscCheck(std::isfinite(dt) && dt > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %s is not allowed: the time step must be a finite number > 0 (s)", value);
+  PetscCheck(std::isfinite(dt) && dt > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-ts_dt %s is not allowed: the time step must be a finite number > 0 (s)", value);
   PetscCall(PetscStrcmp(type, TSTHETA, &theta));
   if (theta) {
     PetscReal th;
     PetscCall(TSThetaGetTheta(ts, &th));
     std::snprintf(value, sizeof value, "%g", (double)th);
     PetscCheck(th >= 0.5 && th <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-ts_theta_theta %s is not allowed: use 0.5 <= theta <= 1 (0.5: Crank-Nicolson, 1: backward Euler); theta < 0.5 amplifies an undamped oscillation at every step%s", value,
-               th == 0 ? ", and theta = 0 is the explicit Euler method (use -ts_type rk)" : "");
+               "-ts_theta_theta %s is not allowed: use 0.5 <= theta <= 1 (0.5: Crank-Nicolson, 1: backward Euler); "
+               "theta < 0.5 amplifies an undamped oscillation at every step%s",
+               value, th == 0 ? ", and theta = 0 is the explicit Euler method (use -ts_type rk)" : "");
   }
   PetscFunctionReturn(0);
 }
@@ -633,12 +673,25 @@ PetscErrorCode TSCheckTypeSettings(TS ts, const char *type, MPI_Comm comm)
 // so they are marked read here (PetscOptionsHasName) instead of being reported unused.
 PetscErrorCode MarkSolveTimeViewers(TS ts)
 {
-  static const char *ksp_names[]  = {"-ksp_converged_reason", "-ksp_converged_rate", "-ksp_view", "-ksp_view_pre", "-ksp_view_mat", "-ksp_view_pmat", "-ksp_view_rhs", "-ksp_view_solution", "-ksp_view_mat_explicit", "-ksp_view_preconditioned_operator_explicit", "-ksp_view_final_residual", "-ksp_view_eigenvalues", "-ksp_view_eigenvalues_explicit", "-ksp_view_singularvalues"};
+  static const char *ksp_names[]  = {"-ksp_converged_reason",
+                                     "-ksp_converged_rate",
+                                     "-ksp_view",
+                                     "-ksp_view_pre",
+                                     "-ksp_view_mat",
+                                     "-ksp_view_pmat",
+                                     "-ksp_view_rhs",
+                                     "-ksp_view_solution",
+                                     "-ksp_view_mat_explicit",
+                                     "-ksp_view_preconditioned_operator_explicit",
+                                     "-ksp_view_final_residual",
+                                     "-ksp_view_eigenvalues",
+                                     "-ksp_view_eigenvalues_explicit",
+                                     "-ksp_view_singularvalues"};
   static const char *snes_names[] = {"-snes_converged_reason", "-snes_view", "-snes_view_pre", "-snes_view_solution"};
-  SNES        snes;
-  KSP         ksp;
-  const char *prefix;
-  PetscBool   set;
+  SNES               snes;
+  KSP                ksp;
+  const char        *prefix;
+  PetscBool          set;
 
   PetscFunctionBeginUser;
   PetscCall(TSGetSNES(ts, &snes));
@@ -664,7 +717,8 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   PetscCall(TSGetAdapt(S.ts, &adapt));
   PetscCall(TSAdaptSetStepLimits(adapt, PETSC_DEFAULT, S.dt_cap));
   PetscCall(TSSetFromOptions(S.ts));
-  if (S.P.form != Formulation::Explicit) PetscCall(TSJacobianInstall(S.P, S.ts)); // the shell J, or the assembled one for -pc_type lu etc.
+  if (S.P.form != Formulation::Explicit)
+    PetscCall(TSJacobianInstall(S.P, S.ts)); // the shell J, or the assembled one for -pc_type lu etc.
   { // what the options set, replayed when the context is reused (TSContextReuse)
     TSContext &C = *S.C;
     PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_dt", &flag));
@@ -678,15 +732,21 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
   PetscBool same, fixed;
   PetscCall(TSGetType(S.ts, &now));
   PetscCall(PetscStrcmp(now, type, &same));
-  PetscCheck(same, S.P.L.comm, PETSC_ERR_ARG_WRONG, "TS type changed from %s to %s after setup: set -ts_type on the command line or in an options file", type, now);
+  PetscCheck(same, S.P.L.comm, PETSC_ERR_ARG_WRONG,
+             "TS type changed from %s to %s after setup: set -ts_type on the command line or in an options file", type,
+             now);
   S.info.ts_type = now;
   PetscCall(PetscObjectTypeCompare((PetscObject)adapt, TSADAPTNONE, &fixed));
-  S.fixed_step = fixed;
+  S.fixed_step      = fixed;
   S.info.fixed_step = fixed;
   // The error tolerances control an adaptive step only; a fixed one (-ts_adapt_type none, the
   // default of modal, cn, theta, beuler, alpha, alpha2) they leave as it is: a note when given.
   for (const char *tol : {"-ts_rtol", "-ts_atol"})
-    OptionWithoutEffectSet(tol, fixed ? std::string("the step is fixed, -ts_type ") + now + " with -ts_adapt_type none: -ts_dt sets it" : "", {"-ts_type", "-ts_adapt_type"});
+    OptionWithoutEffectSet(tol,
+                           fixed ? std::string("the step is fixed, -ts_type ") + now +
+                                     " with -ts_adapt_type none: -ts_dt sets it"
+                                 : "",
+                           {"-ts_type", "-ts_adapt_type"});
   if (S.P.form != Formulation::Explicit) {
     PetscBool user_test;
     SNES      snes;
@@ -695,9 +755,10 @@ PetscErrorCode ConfigureTS(TSStepper &S, const char *type, const TSStepperSettin
     S.newton_floor = {&S.P, S.ts, S.info.omega_max_bound * S.info.omega_max_bound};
     if (!user_test) PetscCall(SNESSetConvergenceTest(snes, TSConvergedWithRoundoffFloor, &S.newton_floor, NULL));
   }
-  PetscCall(TSSetErrorIfStepFails(S.ts, PETSC_FALSE)); // failures are explained by TSCheckStep
+  PetscCall(TSSetErrorIfStepFails(S.ts, PETSC_FALSE));   // failures are explained by TSCheckStep
   PetscCall(TSCheckTypeSettings(S.ts, now, S.P.L.comm)); // before TSSetUp, whose errors would not say why
-  PetscCall(IrkStageLayout(S.ts, S.P.L.pack));            // -ts_type irk on more than one rank: its stage vector split as the state
+  PetscCall(
+    IrkStageLayout(S.ts, S.P.L.pack)); // -ts_type irk on more than one rank: its stage vector split as the state
   PetscCall(TSSetUp(S.ts));
   PetscCall(IrkStageAfterSetUp(S.ts)); // -ts_type irk: a new step size reaches its stage matrix on every rank
   if (S.P.form != Formulation::Explicit) PetscCall(MarkSolveTimeViewers(S.ts));
@@ -716,24 +777,31 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   const MPI_Comm comm = S.P.L.comm;
 
   PetscFunctionBeginUser;
-  if (S.P.form != Formulation::Explicit || TSModalIsType(S.info.ts_type.c_str())) PetscFunctionReturn(0); // modal: no limit from the beam
-  PetscCheck(S.info.ts_type == TSRK, comm, PETSC_ERR_SUP, "-ts_type %s is explicit but not rk: only rk tableaus have a computed stability limit here; use -ts_type rk", S.info.ts_type.c_str());
+  if (S.P.form != Formulation::Explicit || TSModalIsType(S.info.ts_type.c_str()))
+    PetscFunctionReturn(0); // modal: no limit from the beam
+  PetscCheck(S.info.ts_type == TSRK, comm, PETSC_ERR_SUP,
+             "-ts_type %s is explicit but not rk: only rk tableaus have a computed stability limit here; use -ts_type "
+             "rk",
+             S.info.ts_type.c_str());
   PetscInt         s;
   const PetscReal *A, *b;
   TSRKType         rktype;
   PetscCall(TSRKGetTableau(S.ts, &s, &A, &b, NULL, NULL, NULL, NULL, NULL));
   PetscCall(TSRKGetType(S.ts, &rktype));
-  S.rk_type             = rktype;
+  S.rk_type = rktype;
   if (S.C->ystar < 0) S.C->ystar = RKImaginaryStabilityBound(s, A, b); // a constant of the tableau: once per context
   const PetscReal ystar = S.C->ystar;
   PetscCheck(ystar > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-ts_rk_type %s is unstable for an undamped oscillation at any step (its stability region does not contain the imaginary axis); use -ts_rk_type 3bs, 4 or 5dp, or an implicit type (cn, bdf, alpha2)", rktype);
+             "-ts_rk_type %s is unstable for an undamped oscillation at any step (its stability region does not "
+             "contain the imaginary axis); use -ts_rk_type 3bs, 4 or 5dp, or an implicit type (cn, bdf, alpha2)",
+             rktype);
   const BeamSystem &sys = *S.P.sys;
   // Damped: the largest step with every mode's eigenvalues -zeta w +- w sqrt(zeta^2 - 1),
   // zeta = alpha/(2w) + beta w/2, w <= omega_max, in the stability region (rk_stability.hpp);
   // alpha and beta the force operator's damping scales (a grip's c_i/m_i counts as alpha).
   const DampingScales ds = ForceOperatorDampingScales(sys);
-  S.info.dt_stable       = sys.Damped() ? RKDampedStabilityBound(s, A, b, S.info.omega_max_bound, ds.mass_rate, ds.stiffness) : ystar / S.info.omega_max_bound;
+  S.info.dt_stable = sys.Damped() ? RKDampedStabilityBound(s, A, b, S.info.omega_max_bound, ds.mass_rate, ds.stiffness)
+                                  : ystar / S.info.omega_max_bound;
   PetscReal dt;
   PetscBool dt_set;
   PetscCall(TSGetTimeStep(S.ts, &dt));
@@ -741,10 +809,14 @@ PetscErrorCode ExplicitStability(TSStepper &S)
   if (!dt_set) PetscCall(TSSetTimeStep(S.ts, std::min(dt, 0.9 * S.info.dt_stable)));
   else if (S.fixed_step)
     PetscCheck(dt <= S.info.dt_stable, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = %" PetscInt_FMT ", omega_max <= %g rad/s, set by %s%s); use -ts_dt <= %g, fewer nodes, or an implicit type",
-               (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound, BeamSystemPartWords(sys, S.info.omega_max_dof), sys.Damped() ? ", with the beam's Rayleigh damping" : "",
+               "-ts_dt %g is above the stability limit dt_max = %g s of -ts_type rk -ts_rk_type %s on this grid (N = "
+               "%" PetscInt_FMT
+               ", omega_max <= %g rad/s, set by %s%s); use -ts_dt <= %g, fewer nodes, or an implicit type",
+               (double)dt, (double)S.info.dt_stable, rktype, S.P.sys->nodes, (double)S.info.omega_max_bound,
+               BeamSystemPartWords(sys, S.info.omega_max_dof), sys.Damped() ? ", with the beam's Rayleigh damping" : "",
                (double)S.info.dt_stable);
-  if (S.info.dt_stable < 0.05 / S.info.omega_max_bound) { // strong damping: overdamped grid modes, dt_max far below 1/omega_max
+  if (S.info.dt_stable <
+      0.05 / S.info.omega_max_bound) { // strong damping: overdamped grid modes, dt_max far below 1/omega_max
     // An adaptive step let past dt_max there leaves those modes ringing from step to step (the
     // contact's rate of compression with them), which no event can be located on: cap it.
     TSAdapt adapt;
@@ -760,18 +832,26 @@ PetscErrorCode ExplicitStability(TSStepper &S)
 // by the run that reports its set-up (not by every case of a sweep or study).
 PetscErrorCode ReportSetup(TSStepper &S)
 {
-  const MPI_Comm   comm = S.P.L.comm;
-  const PetscReal  T = S.scales.time, dt = S.dt_nominal;
+  const MPI_Comm  comm = S.P.L.comm;
+  const PetscReal T = S.scales.time, dt = S.dt_nominal;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", S.info.ts_type.c_str(), S.info.formulation.c_str(), (double)dt, S.fixed_step ? "" : " (initial; adaptive)"));
+  PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s%s\n", S.info.ts_type.c_str(), S.info.formulation.c_str(),
+                        (double)dt, S.fixed_step ? "" : " (initial; adaptive)"));
   if (S.info.dt_stable > 0)
-    PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s, set by %s)\n", (double)S.info.dt_stable, (double)S.info.omega_max_bound, BeamSystemPartWords(*S.P.sys, S.info.omega_max_dof)));
+    PetscCall(PetscPrintf(comm, "explicit stability limit dt_max %.4e s (omega_max <= %.4e rad/s, set by %s)\n",
+                          (double)S.info.dt_stable, (double)S.info.omega_max_bound,
+                          BeamSystemPartWords(*S.P.sys, S.info.omega_max_dof)));
   if (S.fixed_step && dt > T / 8)
-    PetscCall(PetscPrintf(comm, "WARNING: fixed step -ts_dt %g s is more than 1/8 of the contact time scale %g s: the contact is poorly resolved and events may be missed\n", (double)dt, (double)T));
+    PetscCall(PetscPrintf(comm,
+                          "WARNING: fixed step -ts_dt %g s is more than 1/8 of the contact time scale %g s: the "
+                          "contact is poorly resolved and events may be missed\n",
+                          (double)dt, (double)T));
   else if (S.fixed_step && dt > T / 100)
-    PetscCall(PetscPrintf(comm, "WARNING: fixed step -ts_dt %g s resolves the contact time scale %g s with only %.0f steps: errors of 1e-3 or more in the ACOR are possible; use -ts_dt <= %.2e (T_r/400)\n", (double)dt, (double)T,
-                          (double)(T / dt), (double)(T / 400)));
+    PetscCall(PetscPrintf(comm,
+                          "WARNING: fixed step -ts_dt %g s resolves the contact time scale %g s with only %.0f steps: "
+                          "errors of 1e-3 or more in the ACOR are possible; use -ts_dt <= %.2e (T_r/400)\n",
+                          (double)dt, (double)T, (double)(T / dt), (double)(T / 400)));
   // Adaptive explicit steps cannot stay above the stability limit (the error controller rejects
   // the growth): when dt_max is below T_r/100, the rule of the fixed-step warning, every step
   // resolves the contact whatever the tolerances (the bare default run, RK at dt_max = T_r/118,
@@ -781,10 +861,14 @@ PetscErrorCode ReportSetup(TSStepper &S)
     PetscReal atol, rtol;
     PetscCall(TSGetTolerances(S.ts, &atol, NULL, &rtol, NULL));
     if (rtol > 1e-4 || atol > 1e-3 * S.scales.compression)
-      PetscCall(PetscPrintf(comm,
-                            "WARNING: adaptive step with -ts_rtol %g -ts_atol %g cannot resolve the contact (compression scale %.3g m, contact time %.3g s): errors of 1e-3 or more in the ACOR are possible; "
-                            "use -ts_atol <= %.1e (1e-5 of the compression scale) and -ts_rtol <= 1e-6, or a fixed -ts_dt <= %.2e (T_r/400)\n",
-                            (double)rtol, (double)atol, (double)S.scales.compression, (double)T, (double)(1e-5 * S.scales.compression), (double)(T / 400)));
+      PetscCall(
+        PetscPrintf(comm,
+                    "WARNING: adaptive step with -ts_rtol %g -ts_atol %g cannot resolve the contact (compression scale "
+                    "%.3g m, contact time %.3g s): errors of 1e-3 or more in the ACOR are possible; "
+                    "use -ts_atol <= %.1e (1e-5 of the compression scale) and -ts_rtol <= 1e-6, or a fixed -ts_dt <= "
+                    "%.2e (T_r/400)\n",
+                    (double)rtol, (double)atol, (double)S.scales.compression, (double)T,
+                    (double)(1e-5 * S.scales.compression), (double)(T / 400)));
   }
   PetscFunctionReturn(0);
 }
@@ -827,14 +911,16 @@ PetscErrorCode TSContextBuild(MPI_Comm comm, TSStepper &S, const char *type, con
   TSProblem &P = S.P;
 
   PetscFunctionBeginUser;
-  PetscCall(TSLayoutCreate(comm, P.sys->nodes, P.sys->fields, P.sys->GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
+  PetscCall(
+    TSLayoutCreate(comm, P.sys->nodes, P.sys->fields, P.sys->GhostNodes(), P.form != Formulation::SecondOrder, &P.L));
   PetscCall(CreateTS(S, type));
   PetscCall(ConfigureTS(S, type, set));
   PetscBool max_steps = PETSC_FALSE, max_time = PETSC_FALSE;
   PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_steps", &max_steps));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_time", &max_time));
   PetscCheck(!max_steps && !max_time, comm, PETSC_ERR_ARG_INCOMP,
-             "%s is not used here: the run's end is set by its events (the window after the last separation); use -impact_max_time (s) to cap the simulated time or -impact_window to shorten it",
+             "%s is not used here: the run's end is set by its events (the window after the last separation); use "
+             "-impact_max_time (s) to cap the simulated time or -impact_window to shorten it",
              max_steps ? "-ts_max_steps" : "-ts_max_time");
   char *all = nullptr; // any -ts_monitor* option: TSSetFromOptions installed a monitor
   PetscCall(PetscOptionsGetAll(NULL, &all));
@@ -845,7 +931,8 @@ PetscErrorCode TSContextBuild(MPI_Comm comm, TSStepper &S, const char *type, con
   for (auto tol : {std::make_pair("-ts_atol", atol), std::make_pair("-ts_rtol", rtol)}) {
     char value[64]; // PETSc's %g would write -1 as "-1."
     std::snprintf(value, sizeof value, "%g", (double)tol.second);
-    PetscCheck(tol.second >= 0 && std::isfinite(tol.second), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s is not allowed: an error tolerance must be finite and >= 0", tol.first, value);
+    PetscCheck(tol.second >= 0 && std::isfinite(tol.second), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "%s %s is not allowed: an error tolerance must be finite and >= 0", tol.first, value);
   }
   PetscFunctionReturn(0);
 }
@@ -864,9 +951,12 @@ PetscErrorCode TSContextReuse(TSStepper &S, const char *type)
   PetscBool        fixed;
 
   PetscFunctionBeginUser;
-  if (TSModalIsType(type)) PetscCall(TSModalNewPoint(S.ts)); // -ts_type modal: the modes (shared), gamma and the static correction at this point
+  if (TSModalIsType(type))
+    PetscCall(
+      TSModalNewPoint(S.ts)); // -ts_type modal: the modes (shared), gamma and the static correction at this point
   if (P.form != Formulation::Explicit) {
-    PetscCall(TSJacobianNewPoint(P, S.ts)); // the beam's factors kept; the contact point's vectors (or the assembled J's pattern) anew
+    PetscCall(TSJacobianNewPoint(P, S.ts)); // the beam's factors kept; the contact point's vectors (or the assembled
+                                            // J's pattern) anew
     S.newton_floor.omega2 = S.info.omega_max_bound * S.info.omega_max_bound;
   }
   if (P.form == Formulation::SecondOrder) { // alpha2: its restart's one-off check, as on a new TS
@@ -899,7 +989,7 @@ PetscErrorCode TSContextReuse(TSStepper &S, const char *type)
 double TSStepperMemory(const BeamSystem &sys, Formulation form, const char *type)
 {
   const double dofs = (double)sys.nodes * sys.fields, band = 2.0 * sys.bw + 1, s = 2;
-  double       per  = 40; // doubles a dof
+  double       per = 40; // doubles a dof
   if (form == Formulation::SecondOrder) per = 0;
   for (const char *t : {TSARKIMEX, TSROSW})
     if (!std::strcmp(type, t)) per = 72;
@@ -911,8 +1001,10 @@ double TSStepperMemory(const BeamSystem &sys, Formulation form, const char *type
 
 } // namespace
 
-PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
-                               const TSStepperSettings &set, const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
+                               const ContactScales &scales, ContactState *contact, const TSStepperSettings &set,
+                               const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
+                               std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
   char        type[256] = TSRK;
   PetscBool   flg;
@@ -932,34 +1024,40 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   std::shared_ptr<TSContext> C     = cacheable ? TSContextFind(key) : nullptr;
   const bool                 reuse = C != nullptr;
   if (!reuse) C = std::make_shared<TSContext>();
-  C->finished = false; // until this run's Counts
-  auto       S          = std::make_unique<TSStepper>(C);
-  TSProblem &P          = S->P;
-  P.sys                 = &sys;
-  P.frame               = frame;
-  P.g                   = g;
-  P.ball                = ball;
-  P.approach            = scales.speed;
-  P.modes_cost_warn     = set.modes_cost_warn;
-  P.modes_progress      = set.modes_progress;
-  P.contact             = contact;
-  P.form                = FormulationOfType(type);
-  P.jac.contact         = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
-  P.count               = TSCounters();
-  S->scales             = scales;
-  S->info.formulation   = FormulationName(P.form);
-  if (TSModalIsType(type)) S->info.formulation = "modal (exact beam flow, polynomial contact force)"; // explicit right-hand side, exact beam flow
+  C->finished         = false; // until this run's Counts
+  auto       S        = std::make_unique<TSStepper>(C);
+  TSProblem &P        = S->P;
+  P.sys               = &sys;
+  P.frame             = frame;
+  P.g                 = g;
+  P.ball              = ball;
+  P.approach          = scales.speed;
+  P.modes_cost_warn   = set.modes_cost_warn;
+  P.modes_progress    = set.modes_progress;
+  P.contact           = contact;
+  P.form              = FormulationOfType(type);
+  P.jac.contact       = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
+  P.count             = TSCounters();
+  S->scales           = scales;
+  S->info.formulation = FormulationName(P.form);
+  if (TSModalIsType(type))
+    S->info
+      .formulation = "modal (exact beam flow, polynomial contact force)"; // explicit right-hand side, exact beam flow
   S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass, &S->info.omega_max_dof);
   if (reuse) PetscCall(TSContextReuse(*S, type));
   else {
     char what[160];
-    std::snprintf(what, sizeof what, "-ts_type %s on %" PetscInt_FMT " nodes (%" PetscInt_FMT " dofs: its state, and an implicit type's Jacobian and factor)", type, sys.nodes, sys.nodes * sys.fields);
+    std::snprintf(what, sizeof what,
+                  "-ts_type %s on %" PetscInt_FMT " nodes (%" PetscInt_FMT
+                  " dofs: its state, and an implicit type's Jacobian and factor)",
+                  type, sys.nodes, sys.nodes * sys.fields);
     PetscCall(MemoryCheck(comm, TSStepperMemory(sys, P.form, type), what, "use fewer -beam_nodes"));
     PetscCall(TSContextBuild(comm, *S, type, set));
   }
   PetscCall(ExplicitStability(*S));
   PetscCall(TSGetTimeStep(S->ts, &S->dt_nominal));
-  PetscCheck(S->dt_nominal > 0 && std::isfinite(S->dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);
+  PetscCheck(S->dt_nominal > 0 && std::isfinite(S->dt_nominal), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);
   S->info.dt_nominal = S->dt_nominal;
   if (set.report_setup) PetscCall(ReportSetup(*S));
   PetscCall(SetInitialState(*S, ball.speed, beam_velocity));
@@ -972,7 +1070,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
     PetscCall(TSContextKeep(C));
   }
   (reuse ? n_reused : n_built)++;
-  *info = S->info;
+  *info    = S->info;
   *stepper = std::move(S);
   PetscFunctionReturn(0);
 }

@@ -15,9 +15,10 @@
 namespace beamimpact {
 
 struct TSStepperSettings {
-  bool check_unused_options = false; // an option set but not used by the TS set-up is an error
-  bool report_setup         = false; // print the integrator, its step and stability limit, and resolution warnings
-  bool strict_solver_options = false; // with check_unused_options: left-over PETSc solver options are errors too, not notes
+  bool check_unused_options  = false; // an option set but not used by the TS set-up is an error
+  bool report_setup          = false; // print the integrator, its step and stability limit, and resolution warnings
+  bool strict_solver_options = false; // with check_unused_options: left-over PETSc solver options are errors too, not
+                                      // notes
   // -ts_type modal: its modes' cost line before a decomposition expected to take longer than
   // modes_cost_warn, and a progress line every modes_progress during a partial solve (s of wall
   // time; 0: none), as the free flight's (-impact_cost_warn, -impact_progress with report_setup)
@@ -33,8 +34,10 @@ struct TSStepperSettings {
 // empty: at rest), and the ball touching it at the impact point, moving at the ball's speed;
 // fills *info. contact and frame (the swing's frame the force operator ties a grip to), owned
 // by the caller, are the contact law's state and the frame the residuals use.
-PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball, const ContactScales &scales, ContactState *contact,
-                               const TSStepperSettings &settings, const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame, std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
+PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
+                               const ContactScales &scales, ContactState *contact, const TSStepperSettings &settings,
+                               const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
+                               std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 // The per-structure contexts (the layout, the configured TS, its vectors and the Jacobian's
 // storage): TSStepperCreate reuses one built for the same communicator, grid, type and solver
@@ -43,7 +46,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
 // TSModalNewPoint). A run that checks its options (-task impact) or a
 // TS monitor builds its own. built / reused: the contexts made and the runs that reused one,
 // since the start; the cache is emptied at PetscFinalize, or by TSStepperContextCacheClear.
-void           TSStepperContextCounts(PetscInt *built, PetscInt *reused);
+void TSStepperContextCounts(PetscInt *built, PetscInt *reused);
 // The LU factorizations of the beam's part of the implicit types' Jacobian (one per structure
 // and step size, kept with the context: ts_problem.hpp, JacobianCache) since the start.
 PetscInt       TSStepperBeamFactorizations();

@@ -61,7 +61,8 @@ std::string Join(const std::vector<std::string> &v, const char *sep)
 // The journal's signature: the layout of its records (task and columns), not the options (the key holds those).
 uint64_t LayoutSignature(const CaseBatchSettings &s)
 {
-  const std::string h = Sha256Hex("beamimpact case batch 1\n" + std::string(s.task->name) + "\n" + Join(s.columns, ","));
+  const std::string h = Sha256Hex("beamimpact case batch 1\n" + std::string(s.task->name) + "\n" +
+                                  Join(s.columns, ","));
   return std::strtoull(h.substr(0, 16).c_str(), nullptr, 16);
 }
 
@@ -79,7 +80,8 @@ PetscErrorCode FixedOptions(const CaseBatchSettings &s, std::map<std::string, st
     if (!HasPrefix(kv.first, s.own_prefixes)) (*fixed)[kv.first] = kv.second;
   PetscCall(RunInputFiles(&files));
   for (const InputFile &f : files)
-    if (f.option != "-options_file" && !HasPrefix(f.option.substr(1), s.own_prefixes)) (*fixed)["file " + f.option] = f.sha256.empty() ? "unreadable " + f.path : f.sha256;
+    if (f.option != "-options_file" && !HasPrefix(f.option.substr(1), s.own_prefixes))
+      (*fixed)["file " + f.option] = f.sha256.empty() ? "unreadable " + f.path : f.sha256;
   PetscFunctionReturn(0);
 }
 
@@ -102,7 +104,8 @@ std::string CaseBatchKey(const CaseBatch &b, const CaseOptions &c, std::string *
 {
   std::map<std::string, std::string> options = b.fixed;
   for (const CaseSetting &s : c) options[s.name] = s.Value();
-  std::string t = "beamimpact case batch 1\ntask " + std::string(b.settings.task->name) + "\ncolumns " + Join(b.settings.columns, ",") + "\n";
+  std::string t = "beamimpact case batch 1\ntask " + std::string(b.settings.task->name) + "\ncolumns " +
+                  Join(b.settings.columns, ",") + "\n";
   for (auto &kv : options) t += (kv.first.compare(0, 5, "file ") == 0 ? "" : "-") + kv.first + " " + kv.second + "\n";
   if (text) *text = t;
   return Sha256Hex(t);
@@ -126,12 +129,15 @@ void LoadStoreFile(CaseBatch &b)
   if (file < 0) return;
   const hid_t g = H5Lexists(file, "case_batch", H5P_DEFAULT) > 0 ? H5Gopen2(file, "case_batch", H5P_DEFAULT) : -1;
   if (g >= 0) {
-    std::vector<std::string> layout, keys, cases, reasons;
-    std::vector<double>      status;
+    std::vector<std::string>         layout, keys, cases, reasons;
+    std::vector<double>              status;
     std::vector<std::vector<double>> cols(b.settings.columns.size());
-    bool ok = H5ReadStringColumn(g, "layout", &layout) && layout.size() == 1 && layout[0] == std::string(b.settings.task->name) + ":" + Join(b.settings.columns, ",") &&
-              H5ReadStringColumn(g, "key", &keys) && H5ReadStringColumn(g, "case", &cases) && H5ReadStringColumn(g, "reason", &reasons) && H5ReadDoubleColumn(g, "status", &status);
-    for (size_t k = 0; ok && k < cols.size(); ++k) ok = H5ReadDoubleColumn(g, b.settings.columns[k].c_str(), &cols[k]) && cols[k].size() == keys.size();
+    bool                             ok = H5ReadStringColumn(g, "layout", &layout) && layout.size() == 1 &&
+              layout[0] == std::string(b.settings.task->name) + ":" + Join(b.settings.columns, ",") &&
+              H5ReadStringColumn(g, "key", &keys) && H5ReadStringColumn(g, "case", &cases) &&
+              H5ReadStringColumn(g, "reason", &reasons) && H5ReadDoubleColumn(g, "status", &status);
+    for (size_t k = 0; ok && k < cols.size(); ++k)
+      ok = H5ReadDoubleColumn(g, b.settings.columns[k].c_str(), &cols[k]) && cols[k].size() == keys.size();
     ok = ok && cases.size() == keys.size() && reasons.size() == keys.size() && status.size() == keys.size();
     for (size_t r = 0; ok && r < keys.size(); ++r) {
       CaseRow row;
@@ -155,7 +161,8 @@ void LoadJournals(CaseBatch &b, std::vector<std::string> *foreign)
     std::map<PetscInt, std::vector<double>> records;
     std::map<PetscInt, std::string>         texts;
     j.path = path;
-    if (j.ReadNew(b.signature, ncols, kJournalOrdinals, &records, &texts, nullptr) == SweepJournalReader::WrongParameters) {
+    if (j.ReadNew(b.signature, ncols, kJournalOrdinals, &records, &texts, nullptr) ==
+        SweepJournalReader::WrongParameters) {
       foreign->push_back(path);
       continue;
     }
@@ -181,7 +188,9 @@ PetscErrorCode OpenStore(CaseBatch &b)
 
   PetscFunctionBeginUser;
   const bool made = ::mkdir(b.parts.c_str(), 0755) == 0;
-  PetscCheck(made || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the journal directory %s (%s)", b.settings.store.c_str(), b.parts.c_str(), std::strerror(errno));
+  PetscCheck(made || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+             "-output %s: cannot create the journal directory %s (%s)", b.settings.store.c_str(), b.parts.c_str(),
+             std::strerror(errno));
   PetscCall(SweepPartsLock(b.settings.store, b.parts, b.settings.who.c_str(), &b.lock_fd));
   if (b.settings.restart) {
     for (const std::string &path : SweepJournalFiles(b.parts, &b.run)) ::unlink(path.c_str());
@@ -191,7 +200,10 @@ PetscErrorCode OpenStore(CaseBatch &b)
   }
   b.run += 1;
   if (!foreign.empty())
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "note: %zu journal(s) in %s were written for other columns or another task (%s, ...): their runs are not reused\n", foreign.size(), b.parts.c_str(), foreign[0].c_str()));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "note: %zu journal(s) in %s were written for other columns or another task (%s, ...): their "
+                          "runs are not reused\n",
+                          foreign.size(), b.parts.c_str(), foreign[0].c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -251,8 +263,8 @@ PetscErrorCode CaseBatchCreate(MPI_Comm world, const CaseBatchSettings &s, CaseB
   PetscCallMPI(MPI_Comm_rank(world, &b->rank));
   PetscCallMPI(MPI_Comm_size(world, &b->size));
   PetscCall(FixedOptions(s, &b->fixed));
-  b->signature = LayoutSignature(s);
-  b->parts     = s.store.empty() ? "" : s.store + ".parts";
+  b->signature        = LayoutSignature(s);
+  b->parts            = s.store.empty() ? "" : s.store + ".parts";
   PetscErrorCode ierr = 0;
   if (b->rank == 0 && !s.store.empty()) ierr = OpenStore(*b);
   PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, world));
@@ -286,8 +298,8 @@ PetscErrorCode CasePlan(CaseBatch &b, const CaseOptions &c, SweepPlan *plan)
       SweepAxis         a;
       std::vector<char> given(1 << 16, 0);
       PetscBool         has = PETSC_FALSE;
-      a.name = s.name;
-      a.unit = SweepOptionUnit(s.name);
+      a.name                = s.name;
+      a.unit                = SweepOptionUnit(s.name);
       PetscCall(PetscOptionsGetString(NULL, NULL, ("-" + s.name).c_str(), given.data(), given.size(), &has));
       a.overrides = has == PETSC_TRUE;
       a.given     = has ? given.data() : "";
@@ -311,11 +323,13 @@ PetscErrorCode RunOne(CaseBatch &b, const CaseOptions &c, const std::string &key
 
   PetscFunctionBeginUser;
   for (const CaseSetting &s : c) names.push_back(s.name);
-  if (names != b.state.names) b.state = CaseRunState(), b.state.names = names; // other options: the kept structure may not be theirs
+  if (names != b.state.names)
+    b.state = CaseRunState(), b.state.names = names; // other options: the kept structure may not be theirs
   PetscCall(CasePlan(b, c, &plan));
   *row = CaseRow();
   PetscCall(b.settings.task->run(PETSC_COMM_SELF, plan, b.settings.columns, &b.state, row));
-  for (const SweepAxis &a : plan.axes) { // a value the options gave, put back after the case: used (the case read its own)
+  for (const SweepAxis &a :
+       plan.axes) { // a value the options gave, put back after the case: used (the case read its own)
     PetscBool has;
     if (a.overrides) PetscCall(PetscOptionsHasName(NULL, NULL, ("-" + a.name).c_str(), &has));
   }
@@ -327,13 +341,16 @@ PetscErrorCode RunOne(CaseBatch &b, const CaseOptions &c, const std::string &key
   }
   ++b.computed_here;
   PetscCheck(b.settings.stop_after <= 0 || b.computed_here < b.settings.stop_after, PETSC_COMM_SELF, PETSC_ERR_USER,
-             "-%s_stop_after %" PetscInt_FMT ": stopped after %" PetscInt_FMT " runs on rank %d, as asked (a test of the resume: the journals in %s keep them)", b.settings.who.c_str(), b.settings.stop_after,
-             b.computed_here, (int)b.rank, b.parts.empty() ? "(none: no -output)" : b.parts.c_str());
+             "-%s_stop_after %" PetscInt_FMT ": stopped after %" PetscInt_FMT
+             " runs on rank %d, as asked (a test of the resume: the journals in %s keep them)",
+             b.settings.who.c_str(), b.settings.stop_after, b.computed_here, (int)b.rank,
+             b.parts.empty() ? "(none: no -output)" : b.parts.c_str());
   PetscFunctionReturn(0);
 }
 
 // Every rank's new rows to every rank: numbers [todo index, status, values...] and the reasons.
-PetscErrorCode GatherRows(CaseBatch &b, const std::vector<double> &mine, const std::string &mine_text, std::vector<double> *all, std::string *all_text)
+PetscErrorCode GatherRows(CaseBatch &b, const std::vector<double> &mine, const std::string &mine_text,
+                          std::vector<double> *all, std::string *all_text)
 {
   std::vector<int> counts(b.size), displs(b.size), tcounts(b.size), tdispls(b.size);
   int              n = (int)mine.size(), nt = (int)mine_text.size();
@@ -345,8 +362,10 @@ PetscErrorCode GatherRows(CaseBatch &b, const std::vector<double> &mine, const s
   for (int r = 0; r < b.size; ++r) displs[r] = total, total += counts[r], tdispls[r] = ttotal, ttotal += tcounts[r];
   all->resize((size_t)total);
   all_text->assign((size_t)ttotal, '\0');
-  PetscCallMPI(MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all->data(), counts.data(), displs.data(), MPI_DOUBLE, b.world));
-  PetscCallMPI(MPI_Allgatherv(mine_text.data(), nt, MPI_CHAR, ttotal ? &(*all_text)[0] : nullptr, tcounts.data(), tdispls.data(), MPI_CHAR, b.world));
+  PetscCallMPI(
+    MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all->data(), counts.data(), displs.data(), MPI_DOUBLE, b.world));
+  PetscCallMPI(MPI_Allgatherv(mine_text.data(), nt, MPI_CHAR, ttotal ? &(*all_text)[0] : nullptr, tcounts.data(),
+                              tdispls.data(), MPI_CHAR, b.world));
   PetscFunctionReturn(0);
 }
 
@@ -360,7 +379,9 @@ PetscErrorCode CheckSameCases(CaseBatch &b, const std::vector<std::string> &keys
   unsigned long long h = std::strtoull(Sha256Hex(all).substr(0, 15).c_str(), nullptr, 16), lo = h, hi = h;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, b.world));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, b.world));
-  PetscCheck(lo == hi, b.world, PETSC_ERR_PLIB, "case batch: the ranks asked for different cases (their %ss diverged); please report this", b.settings.who.c_str());
+  PetscCheck(lo == hi, b.world, PETSC_ERR_PLIB,
+             "case batch: the ranks asked for different cases (their %ss diverged); please report this",
+             b.settings.who.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -382,8 +403,8 @@ PetscErrorCode CaseBatchRun(CaseBatch &b, const std::vector<CaseOptions> &cases,
   }
   PetscCall(CheckSameCases(b, keys));
   b.counts.reused += (PetscInt)(cases.size() - todo.size());
-  const size_t nv   = b.settings.columns.size();
-  auto         run  = [&](MPI_Comm, PetscInt t) -> PetscErrorCode {
+  const size_t nv  = b.settings.columns.size();
+  auto         run = [&](MPI_Comm, PetscInt t) -> PetscErrorCode {
     CaseRow      row;
     const double tr = MPI_Wtime();
     PetscFunctionBeginUser;
@@ -412,8 +433,8 @@ PetscErrorCode CaseBatchRun(CaseBatch &b, const std::vector<CaseOptions> &cases,
     CaseRow      row;
     row.status = (int)all[p + 1];
     row.values.assign(all.begin() + p + 2, all.begin() + p + 2 + nv);
-    row.reason            = reasons[t];
-    b.rows[keys[todo[t]]] = row;
+    row.reason             = reasons[t];
+    b.rows[keys[todo[t]]]  = row;
     b.cases[keys[todo[t]]] = CaseOptionsText(cases[todo[t]]);
   }
   b.next_ordinal += (double)todo.size();
@@ -442,8 +463,11 @@ PetscErrorCode CaseBatchWrite(const CaseBatch &b, long long file)
   const hid_t g = H5Gcreate2((hid_t)file, "case_batch", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /case_batch");
   const std::vector<std::string> layout = {std::string(b.settings.task->name) + ":" + Join(b.settings.columns, ",")};
-  bool ok = H5WriteStringColumn(g, "layout", layout, "text (the task and the columns of the rows: task:column,column,...)") &&
-            H5WriteStringColumn(g, "key", keys, "text (SHA-256 of the run's complete options: studies/case_batch.hpp)") && H5WriteStringColumn(g, "case", cases, "text (the options the case set)") &&
+  const char *const              layout_unit = "text (the task and the columns of the rows: task:column,column,...)";
+  bool                           ok          = H5WriteStringColumn(g, "layout", layout, layout_unit) &&
+            H5WriteStringColumn(g, "key", keys,
+                                "text (SHA-256 of the run's complete options: studies/case_batch.hpp)") &&
+            H5WriteStringColumn(g, "case", cases, "text (the options the case set)") &&
             H5WriteStringColumn(g, "reason", reasons, "text (the error of a failed run; empty where status = 0)");
   PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /case_batch");
   PetscCall(H5WriteCounts1D(g, "status", status, "1"));

@@ -49,9 +49,9 @@ namespace beamimpact {
 // One option a case sets: its name without the dash and its value, a number (set exactly, as
 // %.17g) or a text ("modal").
 struct CaseSetting {
-  std::string name;      // "ball_speed"
-  double      value = 0; // the number (when text is empty)
-  std::string text = {}; // a text value; empty: the number
+  std::string name;          // "ball_speed"
+  double      value = 0;     // the number (when text is empty)
+  std::string text  = {};    // a text value; empty: the number
   std::string Value() const; // as the options database gets it
 };
 using CaseOptions = std::vector<CaseSetting>;
@@ -72,8 +72,8 @@ struct CaseRow {
 // dropped when a case sets other options than the one before.
 struct CaseRunState {
   SweepReuse               impact;
-  std::vector<std::string> names;            // the option names of the last case
-  bool                     checked = false;  // a case's options were checked against what the task read
+  std::vector<std::string> names;           // the option names of the last case
+  bool                     checked = false; // a case's options were checked against what the task read
 };
 
 // A task kind of a case (a registry: impact, modes, flight; a new kind is one entry).
@@ -86,20 +86,21 @@ struct CaseTask {
   // Runs the case whose settings `plan` holds (one point: an axis per setting) on comm, its
   // options set while it runs and cleared after: row->values[k] for columns[k], or a failed row
   // (status, reason). Returns an error only for what no case's values can cause.
-  PetscErrorCode (*run)(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns, CaseRunState *state, CaseRow *row);
+  PetscErrorCode (*run)(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns,
+                        CaseRunState *state, CaseRow *row);
 };
 const std::vector<const CaseTask *> &CaseTasks();
-const CaseTask *CaseTaskFind(const std::string &name); // nullptr when none
-std::string     CaseTaskNames();                       // "impact, modes, flight"
+const CaseTask                      *CaseTaskFind(const std::string &name); // nullptr when none
+std::string                          CaseTaskNames();                       // "impact, modes, flight"
 
 struct CaseBatchSettings {
   const CaseTask          *task = nullptr;
-  std::vector<std::string> columns;            // the task's columns a row holds, in order
-  std::string              store;              // the study's results file ("": no journal, nothing kept after the batch)
-  std::vector<std::string> own_prefixes;       // options (no dash) that decide no run, left out of the key: "fit_", "tao_"
-  bool                     restart = false;    // forget the store's rows and its journals
-  PetscInt                 stop_after = 0;     // > 0: stop with an error after this many runs on a rank (tests of the resume)
-  std::string              who = "fit";        // the study, in messages ("another fit that is still running")
+  std::vector<std::string> columns;         // the task's columns a row holds, in order
+  std::string              store;           // the study's results file ("": no journal, nothing kept after the batch)
+  std::vector<std::string> own_prefixes;    // options (no dash) that decide no run, left out of the key: "fit_", "tao_"
+  bool                     restart = false; // forget the store's rows and its journals
+  PetscInt    stop_after           = 0; // > 0: stop with an error after this many runs on a rank (tests of the resume)
+  std::string who                  = "fit"; // the study, in messages ("another fit that is still running")
 };
 
 // What the batch has done: runs computed by this process's world (all ranks), cases answered from
@@ -111,22 +112,23 @@ struct CaseBatchCounts {
 };
 
 struct CaseBatch {
-  MPI_Comm                           world = MPI_COMM_NULL;
-  PetscMPIInt                        rank = 0, size = 1;
-  CaseBatchSettings                  settings;
-  std::map<std::string, std::string> fixed;  // the options that decide a number, by name (no dash) -> value, and file contents
-  std::map<std::string, CaseRow>     rows;   // by key: every row known
-  std::map<std::string, std::string> cases;  // by key: the case's text (CaseOptionsText)
-  std::map<std::string, SweepAxis>   given;  // an option a case sets that the options also give: put back after each case
-  TaskFarm                           farm;
-  CaseRunState                       state;
-  std::string                        parts;     // store.parts ("" without a store)
-  int                                lock_fd = -1, run = 0;
-  uint64_t                           signature = 0;
-  double                             next_ordinal = 0; // of this run's journal records
-  SweepJournalWriter                 journal;
-  PetscInt                           computed_here = 0; // runs on this rank (stop_after)
-  CaseBatchCounts                    counts;
+  MPI_Comm          world = MPI_COMM_NULL;
+  PetscMPIInt       rank = 0, size = 1;
+  CaseBatchSettings settings;
+  std::map<std::string, std::string>
+    fixed; // the options that decide a number, by name (no dash) -> value, and file contents
+  std::map<std::string, CaseRow>     rows;  // by key: every row known
+  std::map<std::string, std::string> cases; // by key: the case's text (CaseOptionsText)
+  std::map<std::string, SweepAxis> given; // an option a case sets that the options also give: put back after each case
+  TaskFarm                         farm;
+  CaseRunState                     state;
+  std::string                      parts; // store.parts ("" without a store)
+  int                              lock_fd = -1, run = 0;
+  uint64_t                         signature    = 0;
+  double                           next_ordinal = 0; // of this run's journal records
+  SweepJournalWriter               journal;
+  PetscInt                         computed_here = 0; // runs on this rank (stop_after)
+  CaseBatchCounts                  counts;
 };
 
 // Collective on world: the fixed options and the key's prefix; on rank 0 the store's lock, its

@@ -57,7 +57,8 @@ bool ImpactColumn(const std::string &name, std::string *unit, std::string *why)
   return false;
 }
 
-PetscErrorCode ImpactCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns, CaseRunState *state, CaseRow *row)
+PetscErrorCode ImpactCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns,
+                             CaseRunState *state, CaseRow *row)
 {
   std::vector<double> sweep_row;
   ImpactResult        result;
@@ -105,7 +106,8 @@ const BodyColumn kBodyColumns[] = {
   {"moment_of_inertia", "kg m^2", [](const BeamRigidBody &b) { return (double)b.inertia_cm; }},
   {"inertia_end", "kg m^2", [](const BeamRigidBody &b) { return (double)b.inertia_end; }},
   {"inertia_roll", "kg m^2", [](const BeamRigidBody &b) { return (double)b.inertia_roll; }},
-  {"swingweight", "kg m^2", [](const BeamRigidBody &b) { return (double)(b.inertia_cm + b.mass * (b.x_cm - 0.1) * (b.x_cm - 0.1)); }},
+  {"swingweight", "kg m^2",
+   [](const BeamRigidBody &b) { return (double)(b.inertia_cm + b.mass * (b.x_cm - 0.1) * (b.x_cm - 0.1)); }},
 };
 
 bool ModesColumn(const std::string &name, std::string *unit, std::string *why)
@@ -121,8 +123,10 @@ bool ModesColumn(const std::string &name, std::string *unit, std::string *why)
       *unit = c.unit;
       return true;
     }
-  *why = "the columns of -task modes are frequency_K (the K-th flexible mode), bending_frequency_K, roll_frequency_K, wall_frequency_K, strings_frequency_K (the K-th of the modes whose kinetic energy is "
-         "mostly in that part), mass, centre_of_mass (from x = 0), moment_of_inertia (about the centre of mass), inertia_end (about x = 0), inertia_roll (about the axis), swingweight (about x = 0.1 m: a "
+  *why = "the columns of -task modes are frequency_K (the K-th flexible mode), bending_frequency_K, roll_frequency_K, "
+         "wall_frequency_K, strings_frequency_K (the K-th of the modes whose kinetic energy is "
+         "mostly in that part), mass, centre_of_mass (from x = 0), moment_of_inertia (about the centre of mass), "
+         "inertia_end (about x = 0), inertia_roll (about the axis), swingweight (about x = 0.1 m: a "
          "racket's with its butt at x = 0)";
   return false;
 }
@@ -154,7 +158,8 @@ PetscInt ModesCount(const BeamSystem &op, const std::vector<std::string> &column
 }
 
 // The columns of one modes run; a frequency beyond the modes computed fails the row.
-void ModesValues(const ModesResult &modes, const BeamRigidBody &body, PetscInt count, const std::vector<std::string> &columns, CaseRow *row)
+void ModesValues(const ModesResult &modes, const BeamRigidBody &body, PetscInt count,
+                 const std::vector<std::string> &columns, CaseRow *row)
 {
   row->values.assign(columns.size(), kNaN);
   for (size_t k = 0; k < columns.size(); ++k) {
@@ -163,9 +168,11 @@ void ModesValues(const ModesResult &modes, const BeamRigidBody &body, PetscInt c
     if (ParseFrequency(columns[k], &family, &want)) {
       int seen = 0;
       for (size_t q = 0; q < modes.frequency.size() && std::isnan(row->values[k]); ++q)
-        if (modes.omega[q] != 0 && (family.empty() || ModeFamily(modes, q) == family) && ++seen == want) row->values[k] = modes.frequency[q];
+        if (modes.omega[q] != 0 && (family.empty() || ModeFamily(modes, q) == family) && ++seen == want)
+          row->values[k] = modes.frequency[q];
       if (std::isnan(row->values[k])) // not a failure: the row may not measure it (the reason says why it is NaN)
-        row->reason += (row->reason.empty() ? "" : "; ") + columns[k] + " is not among the " + std::to_string((long long)count) + " modes computed (a larger -modes_count?)";
+        row->reason += (row->reason.empty() ? "" : "; ") + columns[k] + " is not among the " +
+                       std::to_string((long long)count) + " modes computed (a larger -modes_count?)";
       continue;
     }
     for (const BodyColumn &c : kBodyColumns)
@@ -230,7 +237,8 @@ PetscErrorCode ModesCompute(MPI_Comm comm, const std::vector<std::string> &colum
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModesCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns, CaseRunState *state, CaseRow *row)
+PetscErrorCode ModesCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns,
+                            CaseRunState *state, CaseRow *row)
 {
   PetscFunctionBeginUser;
   bool held = false; // a held string bed reads none of the frame's options: not a whole reading
@@ -296,7 +304,8 @@ PetscErrorCode FlightCompute(MPI_Comm comm, const std::vector<std::string> &colu
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FlightCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns, CaseRunState *state, CaseRow *row)
+PetscErrorCode FlightCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::vector<std::string> &columns,
+                             CaseRunState *state, CaseRow *row)
 {
   PetscFunctionBeginUser;
   PetscCall(SweepCaseOptionsSet(plan, 0));
@@ -310,8 +319,12 @@ PetscErrorCode FlightCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::ve
   PetscFunctionReturn(0);
 }
 
-const CaseTask kImpactTask = {"impact", "one impact (-task impact): the columns of its results table", ImpactColumn, ImpactCaseRun};
-const CaseTask kModesTask  = {"modes", "the structure's modes and rigid-body numbers (-task modes): a tap test, a scale, a balance", ModesColumn, ModesCaseRun};
+const CaseTask kImpactTask = {"impact", "one impact (-task impact): the columns of its results table", ImpactColumn,
+                              ImpactCaseRun};
+const CaseTask kModesTask  = {"modes",
+                              "the structure's modes and rigid-body numbers (-task modes): a tap test, a scale, a "
+                               "balance",
+                              ModesColumn, ModesCaseRun};
 const CaseTask kFlightTask = {"flight", "the batted ball's flight alone (-task flight)", FlightColumnOf, FlightCaseRun};
 
 } // namespace

@@ -21,20 +21,26 @@ PetscErrorCode ConvergenceReadOptions(MPI_Comm comm, Scenario *sc, ConvergencePl
   PetscCall(ConvergencePlanFromOptions(comm, *sc, plan));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_type", &has));
   PetscCheck(!has, comm, PETSC_ERR_ARG_WRONG,
-             "-ts_type is not used by -task convergence: the integrators come from the -convergence_configs files; options common to every run go in a file given with -convergence_common_options FILE "
+             "-ts_type is not used by -task convergence: the integrators come from the -convergence_configs files; "
+             "options common to every run go in a file given with -convergence_common_options FILE "
              "(a scene file that sets an integrator, such as options/base/default-scene.opts, cannot be used here)");
   PetscCall(OptionsCheckUnused(comm));
   PetscFunctionReturn(0);
 }
 
 // The temporal study: reference, every configuration's runs, orders, cost at the target.
-PetscErrorCode TemporalStudy(MPI_Comm comm, const Scenario &sc, const ConvergencePlan &plan, ConvergenceReference *ref, std::vector<std::vector<ConvergenceRun>> *all, RunRecord *summary)
+PetscErrorCode TemporalStudy(MPI_Comm comm, const Scenario &sc, const ConvergencePlan &plan, ConvergenceReference *ref,
+                             std::vector<std::vector<ConvergenceRun>> *all, RunRecord *summary)
 {
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
 
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "convergence study: N = %" PetscInt_FMT ", x = %g m, %s law, window %g s after separation, %" PetscInt_FMT " repeat(s) per level (fewer once a level took -convergence_repeat_budget)\n", sc.beam.nodes,
-                        (double)sc.impact.x, ContactLawName(sc.ball.law), (double)times.window, plan.repeats));
+  PetscCall(PetscPrintf(comm,
+                        "convergence study: N = %" PetscInt_FMT
+                        ", x = %g m, %s law, window %g s after separation, %" PetscInt_FMT
+                        " repeat(s) per level (fewer once a level took -convergence_repeat_budget)\n",
+                        sc.beam.nodes, (double)sc.impact.x, ContactLawName(sc.ball.law), (double)times.window,
+                        plan.repeats));
   PetscCall(ConvergenceReferenceCompute(comm, plan, sc, ref));
   PetscCall(ConvergencePrintReference(comm, plan, *ref));
   PetscCall(ConvergenceRunConfigs(comm, plan, plan.configs, sc, *ref, all));
@@ -51,11 +57,12 @@ PetscErrorCode SpatialStudy(MPI_Comm comm, const Scenario &sc, const Convergence
 {
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(comm, "\nspatial study (reference %s at each N):\n", ConvergenceReferenceLabel(plan).c_str()));
-  PetscCall(ConvergenceSpatialRuns(comm, plan, sc, sp, [&](PetscInt N, const ConvergenceReference &ref) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    if (!plan.quiet) PetscCall(ConvergencePrintSpatialLevel(comm, N, sc.beam.length / (N - 1), ref));
-    PetscFunctionReturn(0);
-  }));
+  PetscCall(
+    ConvergenceSpatialRuns(comm, plan, sc, sp, [&](PetscInt N, const ConvergenceReference &ref) -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      if (!plan.quiet) PetscCall(ConvergencePrintSpatialLevel(comm, N, sc.beam.length / (N - 1), ref));
+      PetscFunctionReturn(0);
+    }));
   ConvergenceSpatialAnalyse(sp);
   PetscCall(ConvergencePrintSpatial(comm, *sp));
   PetscFunctionReturn(0);
@@ -78,7 +85,8 @@ PetscErrorCode TaskConvergence(MPI_Comm comm, const std::string &output)
   if (!plan.configs.empty()) PetscCall(TemporalStudy(comm, sc, plan, &ref, &all, &summary));
   if (!plan.spatial_nodes.empty()) PetscCall(SpatialStudy(comm, sc, plan, &sp));
   if (!output.empty()) {
-    PetscCall(ConvergenceFileWrite(comm, output, record, plan, plan.configs.empty() ? nullptr : &ref, all, summary, &sp));
+    PetscCall(
+      ConvergenceFileWrite(comm, output, record, plan, plan.configs.empty() ? nullptr : &ref, all, summary, &sp));
     PetscCall(PetscPrintf(comm, "wrote %s\n", output.c_str()));
   }
   PetscFunctionReturn(0);

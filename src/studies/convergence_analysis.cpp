@@ -13,7 +13,8 @@ const PetscReal NaN = std::numeric_limits<PetscReal>::quiet_NaN();
 
 } // namespace
 
-ConvergenceOrder ConvergenceOrderOf(const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs, PetscReal floor, PetscReal ConvergenceRun::*err)
+ConvergenceOrder ConvergenceOrderOf(const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs,
+                                    PetscReal floor, PetscReal ConvergenceRun::*err)
 {
   std::vector<PetscReal> h, e;
   for (auto &r : runs) {
@@ -28,16 +29,17 @@ PetscReal ConvergenceStepOf(const ConvergenceConfig &cfg, const ConvergenceRun &
   return cfg.seq.kind == ConvergenceSequenceKind::Tolerance ? run.mean_step : run.dt;
 }
 
-ConvergenceOrder ConvergenceObservedOrder(const std::vector<PetscReal> &h, const std::vector<PetscReal> &e, PetscReal floor)
+ConvergenceOrder ConvergenceObservedOrder(const std::vector<PetscReal> &h, const std::vector<PetscReal> &e,
+                                          PetscReal floor)
 {
   ConvergenceOrder o;
-  const size_t     n  = std::min(h.size(), e.size());
-  auto             ok = [&](size_t k) { return std::isfinite(h[k]) && h[k] > 0 && std::isfinite(e[k]) && e[k] > floor; };
+  const size_t     n = std::min(h.size(), e.size());
+  auto ok            = [&](size_t k) { return std::isfinite(h[k]) && h[k] > 0 && std::isfinite(e[k]) && e[k] > floor; };
   o.pairwise.assign(n, NaN);
   for (size_t k = 1; k < n; ++k)
     if (ok(k) && ok(k - 1) && h[k] != h[k - 1]) o.pairwise[k] = std::log(e[k - 1] / e[k]) / std::log(h[k - 1] / h[k]);
   PetscReal sx = 0, sy = 0, sxx = 0, sxy = 0;
-  PetscInt  m  = 0;
+  PetscInt  m = 0;
   for (size_t k = 0; k < n; ++k) {
     if (!ok(k)) continue;
     const PetscReal x = std::log(h[k]), y = std::log(e[k]);
@@ -47,7 +49,7 @@ ConvergenceOrder ConvergenceObservedOrder(const std::vector<PetscReal> &h, const
     sxy += x * y;
     m++;
   }
-  o.used = m;
+  o.used              = m;
   const PetscReal den = m * sxx - sx * sx;
   o.lsq               = m >= 2 && den > 0 ? (m * sxy - sx * sy) / den : NaN;
   return o;
@@ -58,7 +60,8 @@ bool ConvergenceRichardson(PetscReal A1, PetscReal A2, PetscReal A3, PetscReal r
   const PetscReal d12 = A1 - A2, d23 = A2 - A3;
   *p  = NaN;
   *A0 = A3;
-  if (!(r > 1) || d23 == 0 || d12 == 0 || !std::isfinite(d12) || !std::isfinite(d23)) return d23 == 0 && std::isfinite(A3);
+  if (!(r > 1) || d23 == 0 || d12 == 0 || !std::isfinite(d12) || !std::isfinite(d23))
+    return d23 == 0 && std::isfinite(A3);
   const PetscReal q = d12 / d23;
   if (!(q > 1)) return false; // differences must shrink, with one sign
   *p  = std::log(q) / std::log(r);
@@ -82,13 +85,18 @@ void ConvergenceMeasureAgainst(const ConvergenceReference &ref, ConvergenceRun *
 {
   const ImpactResult &r = run->result, &R = ref.result;
   if (run->failed) {
-    run->acor_error = run->contact_time_error = run->peak_force_error = run->max_compression_error = run->energy_error = NaN;
+    run
+      ->acor_error                                                                                                = run
+                       ->contact_time_error                                                                       = run
+                                                ->peak_force_error                                                = run
+                                                                       ->max_compression_error                    = run
+                                                                                                   ->energy_error = NaN;
     run->exit_speed_error = run->launch_angle_error = run->spin_error = NaN;
     return;
   }
-  run->exit_speed_error   = std::abs(r.exit_speed - R.exit_speed) / std::abs(R.exit_speed); // NaN unless oblique
-  run->launch_angle_error = std::abs(r.launch_angle - R.launch_angle);
-  run->spin_error         = std::abs(r.spin - R.spin) / std::abs(R.spin);
+  run->exit_speed_error      = std::abs(r.exit_speed - R.exit_speed) / std::abs(R.exit_speed); // NaN unless oblique
+  run->launch_angle_error    = std::abs(r.launch_angle - R.launch_angle);
+  run->spin_error            = std::abs(r.spin - R.spin) / std::abs(R.spin);
   run->acor_error            = std::abs(r.acor - R.acor);
   run->contact_time_error    = std::abs(r.contact_time - R.contact_time) / R.contact_time;
   run->peak_force_error      = std::abs(r.peak_force - R.peak_force) / R.peak_force;
@@ -99,7 +107,7 @@ void ConvergenceMeasureAgainst(const ConvergenceReference &ref, ConvergenceRun *
 void ConvergenceSpatialAnalyse(ConvergenceSpatial *sp)
 {
   const size_t n = sp->nodes.size();
-  auto         triples = [&](const std::vector<PetscReal> &A, std::vector<PetscReal> *order, PetscReal *limit, PetscReal *lsq) {
+  auto triples = [&](const std::vector<PetscReal> &A, std::vector<PetscReal> *order, PetscReal *limit, PetscReal *lsq) {
     order->assign(n, NaN);
     *limit = n ? A[n - 1] : NaN;
     for (size_t k = 2; k < n; ++k) {

@@ -15,10 +15,11 @@ namespace beamimpact {
 // fit is NaN with fewer than two usable levels.
 struct ConvergenceOrder {
   std::vector<PetscReal> pairwise; // pairwise[k]: between levels k-1 and k (pairwise[0] = NaN)
-  PetscReal              lsq = 0;
+  PetscReal              lsq  = 0;
   PetscInt               used = 0; // levels in the fit
 };
-ConvergenceOrder ConvergenceObservedOrder(const std::vector<PetscReal> &h, const std::vector<PetscReal> &e, PetscReal floor);
+ConvergenceOrder ConvergenceObservedOrder(const std::vector<PetscReal> &h, const std::vector<PetscReal> &e,
+                                          PetscReal floor);
 
 // Richardson extrapolation of A(h) = A0 + C h^p from three levels with a common
 // ratio r = h1/h2 = h2/h3: p = log(|A1-A2| / |A2-A3|) / log r and A0 = A3 + (A3-A2)/(r^p - 1).
@@ -37,7 +38,8 @@ void ConvergenceMeasureAgainst(const ConvergenceReference &ref, ConvergenceRun *
 
 // Observed order of one configuration's runs for one error (e.g. &ConvergenceRun::acor_error)
 // against ConvergenceStepOf; failed runs are left out.
-ConvergenceOrder ConvergenceOrderOf(const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs, PetscReal floor, PetscReal ConvergenceRun::*err);
+ConvergenceOrder ConvergenceOrderOf(const ConvergenceConfig &cfg, const std::vector<ConvergenceRun> &runs,
+                                    PetscReal floor, PetscReal ConvergenceRun::*err);
 
 // The step measure of a run for order fits: the fixed step, or the mean step of an adaptive run.
 PetscReal ConvergenceStepOf(const ConvergenceConfig &cfg, const ConvergenceRun &run);

@@ -27,16 +27,20 @@ PetscErrorCode ConvergenceRecordBuild(const Scenario &sc, const ConvergencePlan 
 
 // Writes the file on rank 0 of comm: the record, the reference (when the temporal study ran),
 // every configuration's runs and orders, the summary, the spatial study (when it ran).
-PetscErrorCode ConvergenceFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record, const ConvergencePlan &plan, const ConvergenceReference *ref,
-                                    const std::vector<std::vector<ConvergenceRun>> &all, const RunRecord &summary, const ConvergenceSpatial *sp);
+PetscErrorCode ConvergenceFileWrite(MPI_Comm comm, const std::string &path, const RunRecord &record,
+                                    const ConvergencePlan &plan, const ConvergenceReference *ref,
+                                    const std::vector<std::vector<ConvergenceRun>> &all, const RunRecord &summary,
+                                    const ConvergenceSpatial *sp);
 
 // The printed tables.
 PetscErrorCode ConvergencePrintRun(MPI_Comm comm, const ConvergenceConfig &cfg, const ConvergenceRun &run);
 PetscErrorCode ConvergencePrintReference(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceReference &ref);
-PetscErrorCode ConvergencePrintOrders(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<std::vector<ConvergenceRun>> &all);
+PetscErrorCode ConvergencePrintOrders(MPI_Comm comm, const ConvergencePlan &plan,
+                                      const std::vector<std::vector<ConvergenceRun>> &all);
 // The cost of each configuration at -convergence_target, the best PETSc configuration against
 // the leapfrog baseline; the same numbers go to *summary for the file.
-PetscErrorCode ConvergencePrintCostAtTarget(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<std::vector<ConvergenceRun>> &all, RunRecord *summary);
+PetscErrorCode ConvergencePrintCostAtTarget(MPI_Comm comm, const ConvergencePlan &plan,
+                                            const std::vector<std::vector<ConvergenceRun>> &all, RunRecord *summary);
 // One N of the spatial study, and its continuum limit and observed orders.
 PetscErrorCode ConvergencePrintSpatialLevel(MPI_Comm comm, PetscInt N, PetscReal h, const ConvergenceReference &ref);
 PetscErrorCode ConvergencePrintSpatial(MPI_Comm comm, const ConvergenceSpatial &sp);

@@ -29,23 +29,27 @@
 namespace beamimpact {
 
 // How a configuration's runs are refined.
-enum class ConvergenceSequenceKind { Step = 0, StableFraction = 1, Tolerance = 2 };
+enum class ConvergenceSequenceKind {
+  Step           = 0,
+  StableFraction = 1,
+  Tolerance      = 2
+};
 const char *ConvergenceSequenceName(ConvergenceSequenceKind k); // "dt", "dt_stable", "tol"
 
 struct ConvergenceSequence {
   ConvergenceSequenceKind kind    = ConvergenceSequenceKind::Step;
-  PetscReal               first   = 0; // s (dt), fraction of dt_max (dt_stable), or rtol (tol)
-  PetscReal               divisor = 2; // > 1
-  PetscInt                count   = 0; // levels
-  PetscReal value(PetscInt level) const; // first / divisor^level
+  PetscReal               first   = 0;                 // s (dt), fraction of dt_max (dt_stable), or rtol (tol)
+  PetscReal               divisor = 2;                 // > 1
+  PetscInt                count   = 0;                 // levels
+  PetscReal               value(PetscInt level) const; // first / divisor^level
 };
 
 // One integrator configuration (an options file, or options text in tests).
 struct ConvergenceConfig {
-  std::string         name;        // label (file name without .opts, or -convergence_name)
-  std::string         file;        // options file ("" when given as text)
-  std::string         text;        // options text, inserted after the file
-  std::string         description; // the file's first comment line
+  std::string         name;          // label (file name without .opts, or -convergence_name)
+  std::string         file;          // options file ("" when given as text)
+  std::string         text;          // options text, inserted after the file
+  std::string         description;   // the file's first comment line
   std::string         method = "ts"; // "ts" (ImpactRun) or "leapfrog" (LeapfrogRun)
   ConvergenceSequence seq;
   PetscReal           expected_order = 0;    // theoretical order (0: not given)
@@ -56,14 +60,15 @@ struct ConvergenceConfig {
 // -convergence_* options of the study.
 struct ConvergencePlan {
   std::vector<ConvergenceConfig> configs;
-  PetscInt              repeats = 3;       // runs per level (interleaved); the wall time is the minimum
-  PetscReal             repeat_budget = 2; // s: no further repeat of a level once its runs took this long
-  std::string           reference = "modal"; // a study method of the reference registry (run/reference.hpp); read: the first that applies
+  PetscInt                       repeats       = 3; // runs per level (interleaved); the wall time is the minimum
+  PetscReal                      repeat_budget = 2; // s: no further repeat of a level once its runs took this long
+  std::string
+    reference = "modal"; // a study method of the reference registry (run/reference.hpp); read: the first that applies
   std::string           reference_file = "options/convergence/reference.opts"; // the run reference's configuration
-  std::vector<PetscInt> spatial_nodes;     // N of the spatial study (empty: none)
-  PetscReal             target = 1e-6;     // ACOR error of the cost summary (and the targets)
+  std::vector<PetscInt> spatial_nodes;                                         // N of the spatial study (empty: none)
+  PetscReal             target      = 1e-6;  // ACOR error of the cost summary (and the targets)
   PetscReal             error_floor = 1e-12; // errors below this are round-off: left out of order fits
-  std::string           common_file;       // options file inserted into every run (-convergence_common_options)
+  std::string           common_file;         // options file inserted into every run (-convergence_common_options)
   PetscBool             quiet = PETSC_FALSE;
 };
 
@@ -79,13 +84,15 @@ ReferenceSettings ConvergenceReferenceSettings(const ConvergencePlan &plan);
 std::string       ConvergenceReferenceLabel(const ConvergencePlan &plan);
 
 // Loads a configuration from a file and/or options text (its -convergence_* keys).
-PetscErrorCode ConvergenceConfigLoad(MPI_Comm comm, const std::string &file, const std::string &text, ConvergenceConfig *cfg);
+PetscErrorCode ConvergenceConfigLoad(MPI_Comm comm, const std::string &file, const std::string &text,
+                                     ConvergenceConfig *cfg);
 
 // A fresh options database holding a configuration: the common options file (if any) first,
 // then the configuration's file and text, which win over it. The common options are marked
 // used: they apply to the runs where they mean something (a factorization ordering means
 // nothing to an explicit method).
-PetscErrorCode ConvergenceConfigOptionsCreate(MPI_Comm comm, const ConvergenceConfig &cfg, const std::string &common_file, PetscOptions *o);
+PetscErrorCode ConvergenceConfigOptionsCreate(MPI_Comm comm, const ConvergenceConfig &cfg,
+                                              const std::string &common_file, PetscOptions *o);
 
 // The -convergence_* keys a configuration file may hold (removed from a run's database).
 const std::vector<const char *> &ConvergenceConfigKeys();

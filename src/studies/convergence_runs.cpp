@@ -30,7 +30,8 @@ PetscErrorCode StableStep(const ConvergenceConfig &cfg, const Scenario &sc, Pets
   BeamSystem  sys;
   std::string why;
   PetscCheck(BeamSystemBuild(sc.beam, &sys, &why), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-  const PetscReal lf = LeapfrogStableStep(sys, BeamSystemCoupling(sys, sc.impact.x, sc.impact.z), sc.ball); // 2 / omega_max
+  const PetscReal lf = LeapfrogStableStep(sys, BeamSystemCoupling(sys, sc.impact.x, sc.impact.z),
+                                          sc.ball); // 2 / omega_max
   if (cfg.method == "leapfrog") {
     *dt = lf;
     PetscFunctionReturn(0);
@@ -38,8 +39,10 @@ PetscErrorCode StableStep(const ConvergenceConfig &cfg, const Scenario &sc, Pets
   char      type[64] = "", rktype[64] = "";
   PetscBool set_type, set_rk;
   PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_type", type, sizeof(type), &set_type));
-  PetscCheck(set_type && std::string(type) == TSRK, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "configuration %s: -convergence_dt_stable needs -ts_type rk (or -convergence_method leapfrog); it has -ts_type %s", cfg.name.c_str(),
-             set_type ? type : "(none)");
+  PetscCheck(set_type && std::string(type) == TSRK, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "configuration %s: -convergence_dt_stable needs -ts_type rk (or -convergence_method leapfrog); it has "
+             "-ts_type %s",
+             cfg.name.c_str(), set_type ? type : "(none)");
   PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_rk_type", rktype, sizeof(rktype), &set_rk));
   TS               ts;
   PetscInt         s;
@@ -50,7 +53,9 @@ PetscErrorCode StableStep(const ConvergenceConfig &cfg, const Scenario &sc, Pets
   PetscCall(TSRKGetTableau(ts, &s, &A, &b, NULL, NULL, NULL, NULL, NULL));
   const PetscReal ystar = RKImaginaryStabilityBound(s, A, b);
   PetscCall(TSDestroy(&ts));
-  PetscCheck(ystar > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "configuration %s: -ts_rk_type %s is unstable for undamped oscillation at any step", cfg.name.c_str(), set_rk ? rktype : "(default)");
+  PetscCheck(ystar > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "configuration %s: -ts_rk_type %s is unstable for undamped oscillation at any step", cfg.name.c_str(),
+             set_rk ? rktype : "(default)");
   *dt = ystar * lf / 2 * (1 - 1e-12);
   PetscFunctionReturn(0);
 }
@@ -61,8 +66,9 @@ PetscErrorCode RunInPushedOptions(MPI_Comm comm, const ConvergenceConfig &cfg, c
   PetscFunctionBeginUser;
   Scenario sc                    = sc_in;
   sc.impact.check_unused_options = PETSC_TRUE;
-  sc.impact.strict_solver_options = PETSC_TRUE; // a configuration runs as written: a misspelt -ts_ option fails its runs
-  sc.monitor                     = MonitorRequest(); // no time series
+  sc.impact
+    .strict_solver_options = PETSC_TRUE;       // a configuration runs as written: a misspelt -ts_ option fails its runs
+  sc.monitor               = MonitorRequest(); // no time series
   if (cfg.method == "leapfrog") {
     LeapfrogParams lp;
     PetscCall(LeapfrogParamsFromOptions(comm, &lp));
@@ -78,7 +84,8 @@ PetscErrorCode RunInPushedOptions(MPI_Comm comm, const ConvergenceConfig &cfg, c
 // step or tolerance, pushed for the run, popped and destroyed after it (even on
 // failure). Sets run->level, dt, rtol, atol; the outcome goes to *res and the run's
 // error code (0 on success) to *run_err, with run->failed and run->message on failure.
-PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, PetscInt level, const Scenario &sc, ConvergenceRun *run, ImpactResult *res, PetscErrorCode *run_err)
+PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, PetscInt level,
+                            const Scenario &sc, ConvergenceRun *run, ImpactResult *res, PetscErrorCode *run_err)
 {
   PetscOptions o;
 
@@ -91,7 +98,9 @@ PetscErrorCode RunLevelOnce(MPI_Comm comm, const ConvergencePlan &plan, const Co
   PetscCall(PetscOptionsPush(o));
   PetscErrorCode ierr = 0;
   switch (cfg.seq.kind) {
-  case ConvergenceSequenceKind::Step: run->dt = v; break;
+  case ConvergenceSequenceKind::Step:
+    run->dt = v;
+    break;
   case ConvergenceSequenceKind::StableFraction: {
     PetscReal dts = 0;
     ierr          = StableStep(cfg, sc, &dts);
@@ -134,7 +143,8 @@ void FinishRun(const ConvergenceConfig &cfg, ConvergenceRun *run)
 // The reference method "run": the reference configuration over its sequence, one run per level
 // (the common options of the study inserted into each); the finest level is the reference and
 // its own error the Richardson estimate from the last three levels (ratio: the divisor).
-PetscErrorCode RunReferenceRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettings &settings, ReferenceSolution *ref)
+PetscErrorCode RunReferenceRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettings &settings,
+                               ReferenceSolution *ref)
 {
   ConvergenceConfig cfg;
   ConvergencePlan   p;
@@ -148,7 +158,9 @@ PetscErrorCode RunReferenceRun(MPI_Comm comm, const Scenario &sc, const Referenc
     ConvergenceRun run;
     PetscErrorCode err;
     PetscCall(RunLevelOnce(comm, p, cfg, k, sc, &run, &run.result, &err));
-    PetscCheck(!err, comm, PETSC_ERR_NOT_CONVERGED, "the reference configuration %s failed at level %" PetscInt_FMT ": %s", settings.config_file.c_str(), k, run.message.c_str());
+    PetscCheck(!err, comm, PETSC_ERR_NOT_CONVERGED,
+               "the reference configuration %s failed at level %" PetscInt_FMT ": %s", settings.config_file.c_str(), k,
+               run.message.c_str());
     acor.push_back(run.result.acor);
     tc.push_back(run.result.contact_time);
     pf.push_back(run.result.peak_force);
@@ -174,7 +186,8 @@ std::string RunReferenceLabel(const ReferenceSettings &settings) { return settin
 
 const ReferenceMethod kReferenceRun = {
   "run",
-  "a tight run of the configuration -convergence_reference_config at its own sequence: the finest level, its error estimated by Richardson extrapolation from the last three",
+  "a tight run of the configuration -convergence_reference_config at its own sequence: the finest level, its error "
+  "estimated by Richardson extrapolation from the last three",
   false,
   true,
   false,
@@ -183,20 +196,24 @@ const ReferenceMethod kReferenceRun = {
   RunReferenceLabel,
 };
 
-PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &sc, ConvergenceReference *ref)
+PetscErrorCode ConvergenceReferenceCompute(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &sc,
+                                           ConvergenceReference *ref)
 {
   PetscFunctionBeginUser;
   *ref                          = ConvergenceReference();
   const ReferenceMethod *method = ReferenceMethodFind(plan.reference);
-  PetscCheck(method && method->study, comm, PETSC_ERR_ARG_WRONG, "-convergence_reference %s is not allowed: it takes %s", plan.reference.c_str(), ReferenceMethodHelp(true).c_str());
+  PetscCheck(method && method->study, comm, PETSC_ERR_ARG_WRONG,
+             "-convergence_reference %s is not allowed: it takes %s", plan.reference.c_str(),
+             ReferenceMethodHelp(true).c_str());
   const double wall = MPI_Wtime();
   PetscCall(method->run(comm, sc, ConvergenceReferenceSettings(plan), ref));
   ref->wall_time = MPI_Wtime() - wall;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan, const std::vector<ConvergenceConfig> &cfgs, const Scenario &sc, const ConvergenceReference &ref,
-                                     std::vector<std::vector<ConvergenceRun>> *all)
+PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan,
+                                     const std::vector<ConvergenceConfig> &cfgs, const Scenario &sc,
+                                     const ConvergenceReference &ref, std::vector<std::vector<ConvergenceRun>> *all)
 {
   std::vector<std::vector<PetscReal>> spent(cfgs.size());
 
@@ -237,7 +254,9 @@ PetscErrorCode ConvergenceRunConfigs(MPI_Comm comm, const ConvergencePlan &plan,
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ConvergenceRunConfig(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg, const Scenario &sc, const ConvergenceReference &ref, std::vector<ConvergenceRun> *runs)
+PetscErrorCode ConvergenceRunConfig(MPI_Comm comm, const ConvergencePlan &plan, const ConvergenceConfig &cfg,
+                                    const Scenario &sc, const ConvergenceReference &ref,
+                                    std::vector<ConvergenceRun> *runs)
 {
   std::vector<std::vector<ConvergenceRun>> all;
 
@@ -247,7 +266,8 @@ PetscErrorCode ConvergenceRunConfig(MPI_Comm comm, const ConvergencePlan &plan, 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ConvergenceSpatialRuns(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &base, ConvergenceSpatial *sp,
+PetscErrorCode ConvergenceSpatialRuns(MPI_Comm comm, const ConvergencePlan &plan, const Scenario &base,
+                                      ConvergenceSpatial                                                          *sp,
                                       const std::function<PetscErrorCode(PetscInt, const ConvergenceReference &)> &done)
 {
   PetscFunctionBeginUser;

@@ -59,9 +59,12 @@ PetscErrorCode BatNumbers(const DesignProblem &d, const std::vector<double> &p, 
   const PetscErrorCode ierr = BeamParamsFromOptions(PETSC_COMM_SELF, &bp);
   for (const auto &g : given) {
     PetscCall(PetscOptionsClearValue(NULL, g.first.c_str()));
-    if (g.second != "\1") PetscCall(PetscOptionsSetValue(NULL, g.first.c_str(), g.second.empty() ? NULL : g.second.c_str()));
+    if (g.second != "\1")
+      PetscCall(PetscOptionsSetValue(NULL, g.first.c_str(), g.second.empty() ? NULL : g.second.c_str()));
   }
-  PetscCheck(!ierr, PETSC_COMM_SELF, PETSC_ERR_USER, "-task design: the design %s describes no beam (its numbers: mass, drop, ...): see the error above", VariablesText(d, p).c_str());
+  PetscCheck(!ierr, PETSC_COMM_SELF, PETSC_ERR_USER,
+             "-task design: the design %s describes no beam (its numbers: mass, drop, ...): see the error above",
+             VariablesText(d, p).c_str());
   const BeamRigidBody b  = BeamRigidBodyOf(bp);
   const double        xp = d.settings.pivot - b.x_cm;
   double              D  = NAN;
@@ -78,8 +81,9 @@ PetscErrorCode BatNumbers(const DesignProblem &d, const std::vector<double> &p, 
 }
 
 // The quantity q of design e from its rows (rows[first[s] + k]: study s's point k) or its bat numbers.
-PetscErrorCode Quantity(const DesignProblem &d, const DesignQuantity &q, const std::vector<CaseRow> &rows, size_t first_row, const std::map<std::string, double> &bat,
-                        const std::vector<double> &p, double *value)
+PetscErrorCode Quantity(const DesignProblem &d, const DesignQuantity &q, const std::vector<CaseRow> &rows,
+                        size_t first_row, const std::map<std::string, double> &bat, const std::vector<double> &p,
+                        double *value)
 {
   PetscFunctionBeginUser;
   if (q.study < 0) {
@@ -88,19 +92,27 @@ PetscErrorCode Quantity(const DesignProblem &d, const DesignQuantity &q, const s
   }
   size_t at = first_row;
   for (int s = 0; s < q.study; ++s) at += d.studies[s].cases.size();
-  const DesignStudy &st = d.studies[q.study];
+  const DesignStudy &st  = d.studies[q.study];
   double             sum = 0, best = q.reduce == DesignReduce::Min ? INFINITY : -INFINITY;
   for (size_t k = 0; k < st.cases.size(); ++k) {
     const CaseRow &r = rows[at + k];
-    PetscCheck(r.status == SweepOk, d.world, PETSC_ERR_USER, "-task design: %s at the design %s: the study %s's point %s failed (status %d, %s): %s", q.text.c_str(), VariablesText(d, p).c_str(),
-               st.name.c_str(), CaseOptionsText(st.cases[k], false).c_str(), r.status, SweepStatusName(r.status), r.reason.c_str());
+    PetscCheck(r.status == SweepOk, d.world, PETSC_ERR_USER,
+               "-task design: %s at the design %s: the study %s's point %s failed (status %d, %s): %s", q.text.c_str(),
+               VariablesText(d, p).c_str(), st.name.c_str(), CaseOptionsText(st.cases[k], false).c_str(), r.status,
+               SweepStatusName(r.status), r.reason.c_str());
     const double x = r.values[q.column];
-    PetscCheck(std::isfinite(x), d.world, PETSC_ERR_USER, "-task design: %s at the design %s: the study %s's point %s gives no value (%g): %s", q.text.c_str(), VariablesText(d, p).c_str(), st.name.c_str(),
-               CaseOptionsText(st.cases[k], false).c_str(), x, r.reason.empty() ? "the column does not apply to this run (a rig's bbcor needs -beam_pivot; a bbs a swing)" : r.reason.c_str());
+    PetscCheck(std::isfinite(x), d.world, PETSC_ERR_USER,
+               "-task design: %s at the design %s: the study %s's point %s gives no value (%g): %s", q.text.c_str(),
+               VariablesText(d, p).c_str(), st.name.c_str(), CaseOptionsText(st.cases[k], false).c_str(), x,
+               r.reason.empty()
+                 ? "the column does not apply to this run (a rig's bbcor needs -beam_pivot; a bbs a swing)"
+                 : r.reason.c_str());
     sum += x;
     best = q.reduce == DesignReduce::Min ? std::min(best, x) : std::max(best, x);
   }
-  *value = q.reduce == DesignReduce::Mean ? sum / (double)st.cases.size() : q.reduce == DesignReduce::Value ? rows[at].values[q.column] : best;
+  *value = q.reduce == DesignReduce::Mean  ? sum / (double)st.cases.size()
+         : q.reduce == DesignReduce::Value ? rows[at].values[q.column]
+                                           : best;
   PetscFunctionReturn(0);
 }
 
@@ -122,7 +134,8 @@ static void PromoteRole(DesignRecord &r, int role)
   if (rank(role) > rank(r.role)) r.role = role;
 }
 
-PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<double>> &us, std::vector<DesignValues> *vals, int role)
+PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<double>> &us,
+                              std::vector<DesignValues> *vals, int role)
 {
   std::vector<CaseOptions> cases;
   std::vector<CaseRow>     rows;
@@ -147,7 +160,8 @@ PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<do
     if (d.bat_numbers) PetscCall(BatNumbers(d, v.p, &bat));
     PetscCall(Quantity(d, d.objective, rows, e * per, bat, v.p, &v.objective));
     v.constraint.resize(d.m());
-    for (size_t i = 0; i < d.m(); ++i) PetscCall(Quantity(d, d.constraints[i].q, rows, e * per, bat, v.p, &v.constraint[i]));
+    for (size_t i = 0; i < d.m(); ++i)
+      PetscCall(Quantity(d, d.constraints[i].q, rows, e * per, bat, v.p, &v.constraint[i]));
     v.feasible = true;
     for (double c : DesignTaoConstraints(d, v)) v.feasible = v.feasible && c >= 0;
     auto it = d.known.find(us[e]);
@@ -161,7 +175,8 @@ PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<do
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DesignGradient(DesignProblem &d, const std::vector<double> &u, bool central, double step, double *f, std::vector<double> *g, std::vector<double> *c, std::vector<double> *J)
+PetscErrorCode DesignGradient(DesignProblem &d, const std::vector<double> &u, bool central, double step, double *f,
+                              std::vector<double> *g, std::vector<double> *c, std::vector<double> *J)
 {
   const size_t                     n = d.n(), m = d.m();
   std::vector<std::vector<double>> us = {u};
@@ -172,7 +187,8 @@ PetscErrorCode DesignGradient(DesignProblem &d, const std::vector<double> &u, bo
   for (size_t j = 0; j < n; ++j) {
     const FitParameter &q  = d.vars[j];
     const double        p  = q.FromInternal(u[j]);
-    const double        du = q.log ? std::log1p(step) / std::log(q.hi / q.lo) : step * std::max(std::fabs(p), 1e-3 * (q.hi - q.lo)) / (q.hi - q.lo);
+    const double        du = q.log ? std::log1p(step) / std::log(q.hi / q.lo)
+                                   : step * std::max(std::fabs(p), 1e-3 * (q.hi - q.lo)) / (q.hi - q.lo);
     up[j] = u[j] + du, um[j] = central ? u[j] - du : u[j];
     if (up[j] > 1) up[j] = u[j], um[j] = u[j] - du; // at the upper bound: one-sided, downward
     if (um[j] < 0) um[j] = u[j], up[j] = u[j] + du;
@@ -182,16 +198,16 @@ PetscErrorCode DesignGradient(DesignProblem &d, const std::vector<double> &u, bo
       us.push_back(x);
     }
   }
-  PetscCall(DesignEvaluate(d, us, &v, 1)); // one batch: the point TAO asked for and its neighbours
-  PromoteRole(d.history[d.known.at(u)], 2);  // an iterate once TAO's monitor says so
+  PetscCall(DesignEvaluate(d, us, &v, 1));  // one batch: the point TAO asked for and its neighbours
+  PromoteRole(d.history[d.known.at(u)], 2); // an iterate once TAO's monitor says so
   const double sign = d.settings.maximize ? -1 : 1;
   *f                = sign * v[0].objective;
   *c                = DesignTaoConstraints(d, v[0]);
   g->assign(n, 0.0), J->assign(m * n, 0.0);
   for (size_t j = 0; j < n; ++j) {
     const DesignValues &a = v[1 + 2 * j], &b = v[2 + 2 * j];
-    const double        h = up[j] - um[j];
-    (*g)[j]               = sign * (a.objective - b.objective) / h;
+    const double        h        = up[j] - um[j];
+    (*g)[j]                      = sign * (a.objective - b.objective) / h;
     const std::vector<double> ca = DesignTaoConstraints(d, a), cb = DesignTaoConstraints(d, b);
     for (size_t i = 0; i < m; ++i) (*J)[i * n + j] = (ca[i] - cb[i]) / h;
   }

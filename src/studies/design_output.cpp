@@ -25,18 +25,23 @@ const char *const kOptionsMarker = "# beamimpact -task design: the optimum";
 std::vector<std::string> ResultLines(const DesignProblem &d, const DesignResult &res)
 {
   std::vector<std::string> l;
-  l.push_back(Fmt("TAO %s: %s after %d iterations; KKT residual %.3g, constraint norm %.3g", res.tao_type.c_str(), res.reason.c_str(), (int)res.iterations, res.kkt, res.cnorm));
-  l.push_back(Fmt("%s %s = %.10g%s (the start's %.10g)", d.settings.maximize ? "maximised" : "minimised", d.objective.text.c_str(), res.v.objective, UnitText(d.objective.unit).c_str(),
+  l.push_back(Fmt("TAO %s: %s after %d iterations; KKT residual %.3g, constraint norm %.3g", res.tao_type.c_str(),
+                  res.reason.c_str(), (int)res.iterations, res.kkt, res.cnorm));
+  l.push_back(Fmt("%s %s = %.10g%s (the start's %.10g)", d.settings.maximize ? "maximised" : "minimised",
+                  d.objective.text.c_str(), res.v.objective, UnitText(d.objective.unit).c_str(),
                   d.history.empty() ? NAN : d.history.front().v.objective));
   for (size_t j = 0; j < d.n(); ++j)
-    l.push_back(Fmt("  %-28s %.10g%s (start %.6g, bounds %g:%g)", d.vars[j].name.c_str(), res.p[j], UnitText(d.vars[j].unit).c_str(), d.vars[j].start, d.vars[j].lo, d.vars[j].hi));
+    l.push_back(Fmt("  %-28s %.10g%s (start %.6g, bounds %g:%g)", d.vars[j].name.c_str(), res.p[j],
+                    UnitText(d.vars[j].unit).c_str(), d.vars[j].start, d.vars[j].lo, d.vars[j].hi));
   for (size_t i = 0; i < d.m(); ++i) {
-    const DesignConstraint &c = d.constraints[i];
+    const DesignConstraint &c      = d.constraints[i];
     bool                    active = false;
     for (const std::string &a : res.active) active = active || a == c.q.text;
-    l.push_back(Fmt("  %-28s %.8g%s %s %g%s", c.q.text.c_str(), res.v.constraint[i], UnitText(c.q.unit).c_str(), c.upper ? "<=" : ">=", c.bound, active ? "  (active)" : ""));
+    l.push_back(Fmt("  %-28s %.8g%s %s %g%s", c.q.text.c_str(), res.v.constraint[i], UnitText(c.q.unit).c_str(),
+                    c.upper ? "<=" : ">=", c.bound, active ? "  (active)" : ""));
   }
-  l.push_back(res.v.feasible ? "feasible: every constraint holds" : "INFEASIBLE: a constraint does not hold at the optimum TAO returned");
+  l.push_back(res.v.feasible ? "feasible: every constraint holds"
+                             : "INFEASIBLE: a constraint does not hold at the optimum TAO returned");
   for (const std::string &b : res.at_bound) l.push_back("note: " + b + " is at a bound of -design_variables");
   return l;
 }
@@ -45,9 +50,11 @@ std::string OptionsText(const DesignProblem &d, const DesignResult &res, const s
 {
   std::ostringstream o;
   o << kOptionsMarker << ", ready to include: -options_file THIS_FILE\n";
-  o << "# objective: " << (d.settings.maximize ? "maximise " : "minimise ") << d.objective.text << "; constraints: " << (d.settings.constraints.empty() ? "none" : d.settings.constraints) << "\n";
+  o << "# objective: " << (d.settings.maximize ? "maximise " : "minimise ") << d.objective.text
+    << "; constraints: " << (d.settings.constraints.empty() ? "none" : d.settings.constraints) << "\n";
   o << "# studies: " << (d.settings.studies.empty() ? "none" : d.settings.studies) << "\n";
-  o << "# " << d.history.size() << " designs evaluated; results in " << (output.empty() ? "(no -output)" : output) << "\n";
+  o << "# " << d.history.size() << " designs evaluated; results in " << (output.empty() ? "(no -output)" : output)
+    << "\n";
   for (const std::string &l : ResultLines(d, res)) o << "# " << l << "\n";
   for (size_t j = 0; j < d.n(); ++j) o << Fmt("-%s %.17g\n", d.vars[j].name.c_str(), res.p[j]);
   return o.str();
@@ -60,18 +67,25 @@ PetscErrorCode WriteDesignGroup(const DesignProblem &d, const DesignResult &res,
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /design");
   std::vector<std::string> names, cnames, units;
   std::vector<double>      start, lo, hi;
-  for (const FitParameter &q : d.vars) names.push_back(q.name), units.push_back(q.unit.empty() ? "1" : q.unit), start.push_back(q.start), lo.push_back(q.lo), hi.push_back(q.hi);
+  for (const FitParameter &q : d.vars)
+    names.push_back(q.name), units.push_back(q.unit.empty() ? "1" : q.unit), start.push_back(q.start),
+      lo.push_back(q.lo), hi.push_back(q.hi);
   for (const DesignConstraint &c : d.constraints) cnames.push_back(c.Name());
-  PetscCheck(H5WriteStringColumn(g, "variables", names, "text (the design variables: options without their dash)") && H5WriteStringColumn(g, "variable_units", units, "text") &&
-               H5WriteStringColumn(g, "objective_text", {d.objective.text}, d.settings.maximize ? "text (maximised)" : "text (minimised)") &&
-               (cnames.empty() || H5WriteStringColumn(g, "constraints", cnames, "text (the datasets of the constraints' quantities)")),
+  PetscCheck(H5WriteStringColumn(g, "variables", names, "text (the design variables: options without their dash)") &&
+               H5WriteStringColumn(g, "variable_units", units, "text") &&
+               H5WriteStringColumn(g, "objective_text", {d.objective.text},
+                                   d.settings.maximize ? "text (maximised)" : "text (minimised)") &&
+               (cnames.empty() ||
+                H5WriteStringColumn(g, "constraints", cnames, "text (the datasets of the constraints' quantities)")),
              PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /design's names");
   PetscCall(H5WriteDataset1D(g, "optimum", res.p, "each variable's (/design/variable_units)"));
   PetscCall(H5WriteDataset1D(g, "start", start, "each variable's"));
   PetscCall(H5WriteDataset1D(g, "lower", lo, "each variable's"));
   PetscCall(H5WriteDataset1D(g, "upper", hi, "each variable's"));
   std::vector<double> obj, feas, kkt, cn, it, role;
-  for (const DesignRecord &r : d.history) obj.push_back(r.v.objective), feas.push_back(r.v.feasible), kkt.push_back(r.kkt), cn.push_back(r.cnorm), it.push_back(r.iteration), role.push_back(r.role);
+  for (const DesignRecord &r : d.history)
+    obj.push_back(r.v.objective), feas.push_back(r.v.feasible), kkt.push_back(r.kkt), cn.push_back(r.cnorm),
+      it.push_back(r.iteration), role.push_back(r.role);
   for (size_t j = 0; j < d.n(); ++j) {
     std::vector<double> x;
     for (const DesignRecord &r : d.history) x.push_back(r.v.p[j]);
@@ -84,10 +98,15 @@ PetscErrorCode WriteDesignGroup(const DesignProblem &d, const DesignResult &res,
   }
   PetscCall(H5WriteDataset1D(g, "objective", obj, d.objective.unit.c_str()));
   PetscCall(H5WriteCounts1D(g, "feasible", feas, "1 (every constraint holds)"));
-  PetscCall(H5WriteDataset1D(g, "kkt_residual", kkt, "1 (TAO's gradient norm of the (Lagrangian of the) scaled problem at its iterates; NaN at a difference's point)"));
-  PetscCall(H5WriteDataset1D(g, "constraint_norm", cn, "1 (TAO's norm of the scaled constraints' violation at its iterates)"));
+  PetscCall(H5WriteDataset1D(g, "kkt_residual", kkt,
+                             "1 (TAO's gradient norm of the (Lagrangian of the) scaled problem at its iterates; NaN at "
+                             "a difference's point)"));
+  PetscCall(
+    H5WriteDataset1D(g, "constraint_norm", cn, "1 (TAO's norm of the scaled constraints' violation at its iterates)"));
   PetscCall(H5WriteCounts1D(g, "iteration", it, "1 (TAO's iteration that asked for the design)"));
-  PetscCall(H5WriteCounts1D(g, "role", role, "1 (0: an iterate of TAO, 2: a point TAO asked for that no iteration took (a line search's trial), 1: only a point of a difference)"));
+  PetscCall(H5WriteCounts1D(g, "role", role,
+                            "1 (0: an iterate of TAO, 2: a point TAO asked for that no iteration took (a line search's "
+                            "trial), 1: only a point of a difference)"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
@@ -121,7 +140,8 @@ PetscErrorCode DesignRecordOf(const DesignProblem &d, const DesignResult &res, R
 PetscErrorCode DesignCheckOutputs(MPI_Comm comm, const std::string &output, const DesignSettings &s)
 {
   PetscFunctionBeginUser;
-  PetscCall(StudyCheckOptionsOutput(comm, s.options_output, output, "-design_options_output", kOptionsMarker, "a design"));
+  PetscCall(
+    StudyCheckOptionsOutput(comm, s.options_output, output, "-design_options_output", kOptionsMarker, "a design"));
   PetscFunctionReturn(0);
 }
 
@@ -151,12 +171,15 @@ PetscErrorCode DesignWriteOutputs(DesignProblem &d, const DesignResult &res, con
   }
   const std::string &opts = d.settings.options_output;
   PetscErrorCode     ierr = 0;
-  if (!opts.empty() && d.rank == 0) ierr = StudyWriteAtomically(opts, OptionsText(d, res, output), "-design_options_output");
+  if (!opts.empty() && d.rank == 0)
+    ierr = StudyWriteAtomically(opts, OptionsText(d, res, output), "-design_options_output");
   PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, d.world));
   PetscCheck(!ierr || d.rank == 0, d.world, ierr, "-design_options_output %s could not be written", opts.c_str());
   PetscCall(ierr);
-  if (!output.empty() && !opts.empty()) PetscCall(PetscPrintf(d.world, "wrote %s and %s\n", output.c_str(), opts.c_str()));
-  else if (!output.empty() || !opts.empty()) PetscCall(PetscPrintf(d.world, "wrote %s\n", output.empty() ? opts.c_str() : output.c_str()));
+  if (!output.empty() && !opts.empty())
+    PetscCall(PetscPrintf(d.world, "wrote %s and %s\n", output.c_str(), opts.c_str()));
+  else if (!output.empty() || !opts.empty())
+    PetscCall(PetscPrintf(d.world, "wrote %s\n", output.empty() ? opts.c_str() : output.c_str()));
   PetscFunctionReturn(0);
 }
 

@@ -25,7 +25,7 @@ namespace {
 // their Jacobian at the same point in turn).
 struct GradientCache {
   std::vector<double> u, g, c, J;
-  double              f = 0;
+  double              f     = 0;
   bool                valid = false;
 };
 
@@ -38,7 +38,8 @@ PetscErrorCode AtPoint(SolveContext &s, const std::vector<double> &u)
 {
   PetscFunctionBeginUser;
   if (s.cache.valid && s.cache.u == u) PetscFunctionReturn(0);
-  PetscCall(DesignGradient(*s.d, u, s.d->settings.central, s.d->settings.step, &s.cache.f, &s.cache.g, &s.cache.c, &s.cache.J));
+  PetscCall(
+    DesignGradient(*s.d, u, s.d->settings.central, s.d->settings.step, &s.cache.f, &s.cache.g, &s.cache.c, &s.cache.J));
   s.cache.u = u, s.cache.valid = true;
   if (!s.d->options_checked) { // after TAO and the first runs read theirs: a typo stops the design now
     PetscCall(OptionsCheckUnused(s.d->world));
@@ -91,7 +92,8 @@ PetscErrorCode TaoConstraintsJacobian(Tao, Vec X, Mat J, Mat, void *ctx)
   PetscCall(AtPoint(s, FromVec(X)));
   const size_t m = s.d->m(), n = s.d->n();
   for (size_t i = 0; i < m; ++i)
-    for (size_t j = 0; j < n; ++j) PetscCall(MatSetValue(J, (PetscInt)i, (PetscInt)j, s.cache.J[i * n + j], INSERT_VALUES));
+    for (size_t j = 0; j < n; ++j)
+      PetscCall(MatSetValue(J, (PetscInt)i, (PetscInt)j, s.cache.J[i * n + j], INSERT_VALUES));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
@@ -120,10 +122,13 @@ PetscErrorCode TaoMonitorDesign(Tao tao, void *ctx)
   if (!d.settings.quiet) {
     std::string line;
     char        buf[200];
-    std::snprintf(buf, sizeof buf, "design: iteration %2d  objective %.8g  KKT %.3g%s", (int)it, v[0].objective, (double)gnorm, v[0].feasible ? "" : "  (infeasible)");
+    std::snprintf(buf, sizeof buf, "design: iteration %2d  objective %.8g  KKT %.3g%s", (int)it, v[0].objective,
+                  (double)gnorm, v[0].feasible ? "" : "  (infeasible)");
     line = buf;
-    for (size_t j = 0; j < d.n(); ++j) std::snprintf(buf, sizeof buf, "  %s %.8g", d.vars[j].name.c_str(), v[0].p[j]), line += buf;
-    for (size_t i = 0; i < d.m(); ++i) std::snprintf(buf, sizeof buf, "  %s %.6g", d.constraints[i].q.text.c_str(), v[0].constraint[i]), line += buf;
+    for (size_t j = 0; j < d.n(); ++j)
+      std::snprintf(buf, sizeof buf, "  %s %.8g", d.vars[j].name.c_str(), v[0].p[j]), line += buf;
+    for (size_t i = 0; i < d.m(); ++i)
+      std::snprintf(buf, sizeof buf, "  %s %.6g", d.constraints[i].q.text.c_str(), v[0].constraint[i]), line += buf;
     PetscCall(PetscPrintf(d.world, "%s  (%d runs)\n", line.c_str(), (int)d.batch.counts.computed));
   }
   PetscFunctionReturn(0);
@@ -144,14 +149,15 @@ PetscErrorCode TaoConvergedDesign(Tao tao, void *ctx)
   PetscCall(TaoGetSolutionStatus(tao, &it, &fc, &gnorm, &cnorm, &xdiff, &reason));
   PetscCall(TaoGetSolution(tao, &X));
   const std::vector<double> u = FromVec(X);
-  PetscReal catol, crtol;
+  PetscReal                 catol, crtol;
   PetscCall(TaoGetConstraintTolerances(tao, &catol, &crtol));
   if (reason == TAO_CONTINUE_ITERATING && it > 0 && s.d->u_prev.size() == u.size() && cnorm <= catol) {
     double moved = 0;
     for (size_t j = 0; j < u.size(); ++j) moved = std::max(moved, std::fabs(u[j] - s.d->u_prev[j]));
     if (moved <= s.d->settings.xtol) {
       char text[160];
-      std::snprintf(text, sizeof text, "no scaled variable moved by more than -design_xtol %g", (double)s.d->settings.xtol);
+      std::snprintf(text, sizeof text, "no scaled variable moved by more than -design_xtol %g",
+                    (double)s.d->settings.xtol);
       s.d->stop = text;
       PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_STEPTOL));
     }
@@ -176,7 +182,9 @@ PetscErrorCode SetUp(SolveContext &s, Tao tao, Vec x, Vec xl, Vec xu, Vec c, Mat
   PetscCall(TaoSetMonitor(tao, TaoMonitorDesign, &s, NULL));
   PetscCall(TaoSetFromOptions(tao));
   PetscCall(PetscObjectTypeCompare((PetscObject)tao, TAOALMM, &almm));
-  PetscCheck(c || !almm, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP, "-tao_type almm needs constraints: give -design_constraints, or a bound-constrained solver (bqnls, blmvm)");
+  PetscCheck(c || !almm, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+             "-tao_type almm needs constraints: give -design_constraints, or a bound-constrained solver (bqnls, "
+             "blmvm)");
   PetscCall(PetscObjectTypeCompareAny((PetscObject)tao, &own_test, TAOBQNLS, TAOBLMVM, TAOALMM, ""));
   if (own_test) PetscCall(TaoSetConvergenceTest(tao, TaoConvergedDesign, &s));
   PetscFunctionReturn(0);
@@ -228,7 +236,7 @@ PetscErrorCode DesignSolve(DesignProblem &d, DesignResult *res)
   const std::vector<double> u = FromVec(X);
   PetscCall(DesignEvaluate(d, {u}, &v, 0));
   res->p = v[0].p, res->v = v[0], res->tao_type = type;
-  res->reason = std::string(TaoConvergedReasons[reason]) + (d.stop.empty() ? "" : " (" + d.stop + ")");
+  res->reason                  = std::string(TaoConvergedReasons[reason]) + (d.stop.empty() ? "" : " (" + d.stop + ")");
   const std::vector<double> cs = DesignTaoConstraints(d, v[0]);
   for (size_t i = 0; i < d.m(); ++i)
     if (std::fabs(cs[i]) <= 1e-3) res->active.push_back(d.constraints[i].q.text);

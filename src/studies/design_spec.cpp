@@ -23,21 +23,43 @@ const OptionModule &DesignOptionTable()
 {
   static const OptionModule m = {
     "design",
-    "beamimpact: -task design (the best design under constraints: TAO over options of the program; docs/design-studies.md)",
+    "beamimpact: -task design (the best design under constraints: TAO over options of the program; "
+    "docs/design-studies.md)",
     {
-      OptionText("-design_variables", "The design variables: options of the program, NAME=LO:HI[:START][,...] (start: the option's given value, or the middle; log-scaled where HI/LO >= 10)"),
-      OptionText("-design_studies", "The studies of each design: NAME{SETTING,...} ..., a setting OPTION=VALUE or an axis OPTION=START:STOP:COUNT or a list A;B (the study's points: their product), each point an impact"),
-      OptionText("-design_objective", "What the design optimises: REDUCTION(COLUMN@STUDY) (max, min or mean of an impact's results column over the study's points; COLUMN@STUDY for a study of one point) or a number of the bat: mass, drop, balance, inertia_knob, inertia_pivot, inertia_cm, length, diameter"),
+      OptionText("-design_variables", "The design variables: options of the program, NAME=LO:HI[:START][,...] (start: "
+                                      "the option's given value, or the middle; log-scaled where HI/LO >= 10)"),
+      OptionText("-design_studies",
+                 "The studies of each design: NAME{SETTING,...} ..., a setting OPTION=VALUE or an axis "
+                 "OPTION=START:STOP:COUNT or a list A;B (the study's points: their product), each point an impact"),
+      OptionText("-design_objective",
+                 "What the design optimises: REDUCTION(COLUMN@STUDY) (max, min or mean of an impact's results column "
+                 "over the study's points; COLUMN@STUDY for a study of one point) or a number of the bat: mass, drop, "
+                 "balance, inertia_knob, inertia_pivot, inertia_cm, length, diameter"),
       OptionChoice("-design_goal", "Maximise or minimise -design_objective", {"maximize", "minimize"}, "maximize"),
-      OptionText("-design_constraints", "Inequalities the design must satisfy: QUANTITY<=BOUND or QUANTITY>=BOUND, separated by ',' (a quantity as in -design_objective; the bound in its unit)"),
-      OptionChoice("-design_differences", "The differences of the gradients: forward (n + 1 designs) or central (2n + 1)", {"forward", "central"}, "forward"),
-      OptionReal("-design_difference_step", "1", "Relative step of a variable for the differences (of its bounds' range at least 1e-3; a log-scaled one: a factor 1 + step)", "1e-4", Between(0, 0.1, true, false)),
-      OptionReal("-design_pivot", "m", "The rig's pivot from x = 0 for the bat's inertia_pivot (NCAA/NFHS BBCOR: 6 in = 0.1524 m from the knob)", "0.1524", NonNegative()),
-      OptionReal("-design_xtol", "1", "bqnls or blmvm stop when no variable moves by more than this in its scaled range [0, 1] from one iteration to the next", "1e-4", Positive()),
-      OptionText("-design_options_output", "The optimum as an options file to include (default: -output with .opts; none with -output none)"),
+      OptionText("-design_constraints", "Inequalities the design must satisfy: QUANTITY<=BOUND or QUANTITY>=BOUND, "
+                                        "separated by ',' (a quantity as in -design_objective; the bound in its unit)"),
+      OptionChoice("-design_differences",
+                   "The differences of the gradients: forward (n + 1 designs) or central (2n + 1)",
+                   {"forward", "central"}, "forward"),
+      OptionReal("-design_difference_step", "1",
+                 "Relative step of a variable for the differences (of its bounds' range at least 1e-3; a log-scaled "
+                 "one: a factor 1 + step)",
+                 "1e-4", Between(0, 0.1, true, false)),
+      OptionReal("-design_pivot", "m",
+                 "The rig's pivot from x = 0 for the bat's inertia_pivot (NCAA/NFHS BBCOR: 6 in = 0.1524 m from the "
+                 "knob)",
+                 "0.1524", NonNegative()),
+      OptionReal("-design_xtol", "1",
+                 "bqnls or blmvm stop when no variable moves by more than this in its scaled range [0, 1] from one "
+                 "iteration to the next",
+                 "1e-4", Positive()),
+      OptionText("-design_options_output",
+                 "The optimum as an options file to include (default: -output with .opts; none with -output none)"),
       OptionFlag("-design_quiet", "No line per iteration"),
-      OptionFlag("-design_restart", "Compute every run again: forget the runs an earlier design into the same -output kept"),
-      OptionInt("-design_stop_after", "Stop with an error after this many runs (a test of the resume; 0: never)", "0", NonNegative()),
+      OptionFlag("-design_restart",
+                 "Compute every run again: forget the runs an earlier design into the same -output kept"),
+      OptionInt("-design_stop_after", "Stop with an error after this many runs (a test of the resume; 0: never)", "0",
+                NonNegative()),
     },
   };
   return m;
@@ -67,21 +89,36 @@ PetscErrorCode DesignSettingsFromOptions(MPI_Comm comm, const std::string &outpu
   PetscOptionsEnd();
   s->maximize = goal == 0;
   s->central  = diff == 1;
-  PetscCheck(set_v && !Trim(s->variables).empty(), comm, PETSC_ERR_ARG_WRONG, "-task design needs its variables: -design_variables NAME=LO:HI[:START][,...], e.g. -design_variables \"barrel_wall_thickness=1.5e-3:4e-3\"");
-  PetscCheck(set_o && !Trim(s->objective).empty(), comm, PETSC_ERR_ARG_WRONG, "-task design needs its objective: -design_objective, e.g. \"max(bbs@game)\" with -design_studies \"game{impact_x=0.6:0.75:4}\", or a number of the bat (mass)");
+  PetscCheck(set_v && !Trim(s->variables).empty(), comm, PETSC_ERR_ARG_WRONG,
+             "-task design needs its variables: -design_variables NAME=LO:HI[:START][,...], e.g. -design_variables "
+             "\"barrel_wall_thickness=1.5e-3:4e-3\"");
+  PetscCheck(set_o && !Trim(s->objective).empty(), comm, PETSC_ERR_ARG_WRONG,
+             "-task design needs its objective: -design_objective, e.g. \"max(bbs@game)\" with -design_studies "
+             "\"game{impact_x=0.6:0.75:4}\", or a number of the bat (mass)");
   (void)set_s;
-  PetscCheck(!set_opts || !Trim(s->options_output).empty(), comm, PETSC_ERR_ARG_WRONG, "-design_options_output needs a file name");
+  PetscCheck(!set_opts || !Trim(s->options_output).empty(), comm, PETSC_ERR_ARG_WRONG,
+             "-design_options_output needs a file name");
   if (!set_opts) {
     const size_t dot = output.rfind('.'), slash = output.rfind('/');
-    s->options_output = output.empty() ? "" : (dot != std::string::npos && (slash == std::string::npos || dot > slash) ? output.substr(0, dot) : output) + ".opts";
+    s->options_output = output.empty() ? ""
+                                       : (dot != std::string::npos && (slash == std::string::npos || dot > slash)
+                                            ? output.substr(0, dot)
+                                            : output) +
+                                           ".opts";
   }
   PetscFunctionReturn(0);
 }
 
 const std::vector<std::pair<std::string, std::string>> &DesignBatNumbers()
 {
-  static const std::vector<std::pair<std::string, std::string>> v = {{"mass", "kg"},         {"drop", "1"},          {"balance", "m"},  {"inertia_knob", "kg m^2"},
-                                                                     {"inertia_pivot", "kg m^2"}, {"inertia_cm", "kg m^2"}, {"length", "m"}, {"diameter", "m"}};
+  static const std::vector<std::pair<std::string, std::string>> v = {{"mass", "kg"},
+                                                                     {"drop", "1"},
+                                                                     {"balance", "m"},
+                                                                     {"inertia_knob", "kg m^2"},
+                                                                     {"inertia_pivot", "kg m^2"},
+                                                                     {"inertia_cm", "kg m^2"},
+                                                                     {"length", "m"},
+                                                                     {"diameter", "m"}};
   return v;
 }
 
@@ -112,36 +149,48 @@ bool DesignParseStudies(const std::string &text, std::vector<DesignStudy> *studi
   while (true) {
     const size_t open = text.find('{', at);
     if (open == std::string::npos) {
-      if (!Trim(text.substr(at)).empty()) return *why = "-design_studies: '" + Trim(text.substr(at)) + "' is not NAME{SETTING,...}", false;
+      if (!Trim(text.substr(at)).empty())
+        return *why = "-design_studies: '" + Trim(text.substr(at)) + "' is not NAME{SETTING,...}", false;
       return true;
     }
     const size_t close = text.find('}', open);
     DesignStudy  s;
     s.name = Trim(text.substr(at, open - at));
-    if (close == std::string::npos || s.name.empty() || s.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
-      return *why = "-design_studies: '" + Trim(text.substr(at, close == std::string::npos ? std::string::npos : close + 1 - at)) + "' is not NAME{SETTING,...} (a name of letters, digits and _)", false;
+    if (close == std::string::npos || s.name.empty() ||
+        s.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
+          std::string::npos)
+      return *why = "-design_studies: '" +
+                    Trim(text.substr(at, close == std::string::npos ? std::string::npos : close + 1 - at)) +
+                    "' is not NAME{SETTING,...} (a name of letters, digits and _)",
+             false;
     for (const DesignStudy &o : *studies)
       if (o.name == s.name) return *why = "-design_studies: the study " + s.name + " is given twice", false;
     s.spec = Trim(text.substr(open + 1, close - open - 1));
     std::vector<SweepAxis> axes;
     std::string            w;
-    if (!s.spec.empty() && !SweepParseAxes(s.spec, &axes, &w)) return *why = "-design_studies: the study " + s.name + "{" + s.spec + "}: " + w, false;
+    if (!s.spec.empty() && !SweepParseAxes(s.spec, &axes, &w))
+      return *why = "-design_studies: the study " + s.name + "{" + s.spec + "}: " + w, false;
     StudyCases(axes, &s.cases);
     studies->push_back(s);
     at = close + 1;
   }
 }
 
-bool DesignParseQuantity(const std::string &text, const std::vector<DesignStudy> &studies, std::vector<std::string> *columns, DesignQuantity *q, std::string *why)
+bool DesignParseQuantity(const std::string &text, const std::vector<DesignStudy> &studies,
+                         std::vector<std::string> *columns, DesignQuantity *q, std::string *why)
 {
-  q->text        = Trim(text);
-  std::string in = q->text;
+  q->text            = Trim(text);
+  std::string  in    = q->text;
   const size_t paren = in.find('(');
   if (paren != std::string::npos) {
     const std::string r = Trim(in.substr(0, paren));
     if (in.back() != ')') return *why = "'" + q->text + "' is not REDUCTION(COLUMN@STUDY)", false;
-    q->reduce = r == "max" ? DesignReduce::Max : r == "min" ? DesignReduce::Min : r == "mean" ? DesignReduce::Mean : DesignReduce::Value;
-    if (q->reduce == DesignReduce::Value) return *why = "'" + q->text + "': the reduction '" + r + "' is not max, min or mean", false;
+    q->reduce = r == "max"  ? DesignReduce::Max
+              : r == "min"  ? DesignReduce::Min
+              : r == "mean" ? DesignReduce::Mean
+                            : DesignReduce::Value;
+    if (q->reduce == DesignReduce::Value)
+      return *why = "'" + q->text + "': the reduction '" + r + "' is not max, min or mean", false;
     in = Trim(in.substr(paren + 1, in.size() - paren - 2));
   }
   const size_t at = in.find('@');
@@ -153,7 +202,9 @@ bool DesignParseQuantity(const std::string &text, const std::vector<DesignStudy>
       }
     std::string names;
     for (const auto &b : DesignBatNumbers()) names += (names.empty() ? "" : ", ") + b.first;
-    return *why = "'" + q->text + "' is neither REDUCTION(COLUMN@STUDY) nor COLUMN@STUDY nor a number of the bat (" + names + ")", false;
+    return *why = "'" + q->text + "' is neither REDUCTION(COLUMN@STUDY) nor COLUMN@STUDY nor a number of the bat (" +
+                  names + ")",
+           false;
   }
   const std::string col = Trim(in.substr(0, at)), study = Trim(in.substr(at + 1));
   q->study = -1;
@@ -161,35 +212,43 @@ bool DesignParseQuantity(const std::string &text, const std::vector<DesignStudy>
     if (studies[k].name == study) q->study = (int)k;
   if (q->study < 0) return *why = "'" + q->text + "': no study " + study + " in -design_studies", false;
   if (q->reduce == DesignReduce::Value && studies[q->study].cases.size() != 1)
-    return *why = "'" + q->text + "': the study " + study + " has " + std::to_string(studies[q->study].cases.size()) + " points: say max(...), min(...) or mean(...)", false;
+    return *why = "'" + q->text + "': the study " + study + " has " + std::to_string(studies[q->study].cases.size()) +
+                  " points: say max(...), min(...) or mean(...)",
+           false;
   const ResultColumn *c = ImpactResultColumn(col);
-  if (!c) return *why = "'" + q->text + "': " + col + " is not a column of an impact's results: " + ImpactResultColumnNames(), false;
-  q->unit = c->unit;
-  auto it = std::find(columns->begin(), columns->end(), col);
+  if (!c)
+    return *why = "'" + q->text + "': " + col + " is not a column of an impact's results: " + ImpactResultColumnNames(),
+           false;
+  q->unit   = c->unit;
+  auto it   = std::find(columns->begin(), columns->end(), col);
   q->column = (size_t)(it - columns->begin());
   if (it == columns->end()) columns->push_back(col);
   return true;
 }
 
-bool DesignParseConstraints(const std::string &text, const std::vector<DesignStudy> &studies, std::vector<std::string> *columns, std::vector<DesignConstraint> *cs, std::string *why)
+bool DesignParseConstraints(const std::string &text, const std::vector<DesignStudy> &studies,
+                            std::vector<std::string> *columns, std::vector<DesignConstraint> *cs, std::string *why)
 {
   cs->clear();
   if (Trim(text).empty()) return true;
   size_t at = 0;
   while (at <= text.size()) {
     size_t comma = at, depth = 0; // the next ',' outside parentheses
-    while (comma < text.size() && !(text[comma] == ',' && depth == 0)) depth += text[comma] == '(' ? 1 : text[comma] == ')' ? -1 : 0, ++comma;
+    while (comma < text.size() && !(text[comma] == ',' && depth == 0))
+      depth += text[comma] == '(' ? 1 : text[comma] == ')' ? -1 : 0, ++comma;
     const std::string item = Trim(text.substr(at, comma - at));
     DesignConstraint  c;
     size_t            op = item.find("<=");
-    c.upper = op != std::string::npos;
+    c.upper              = op != std::string::npos;
     if (!c.upper) op = item.find(">=");
     char *end = nullptr;
     errno     = 0;
     if (op != std::string::npos) c.bound = std::strtod(item.c_str() + op + 2, &end);
-    if (op == std::string::npos || !end || end == item.c_str() + op + 2 || !Trim(end).empty() || errno || !std::isfinite(c.bound))
+    if (op == std::string::npos || !end || end == item.c_str() + op + 2 || !Trim(end).empty() || errno ||
+        !std::isfinite(c.bound))
       return *why = "-design_constraints: '" + item + "' is not QUANTITY<=BOUND or QUANTITY>=BOUND", false;
-    if (!DesignParseQuantity(item.substr(0, op), studies, columns, &c.q, why)) return *why = "-design_constraints: " + *why, false;
+    if (!DesignParseQuantity(item.substr(0, op), studies, columns, &c.q, why))
+      return *why = "-design_constraints: " + *why, false;
     c.scale = c.bound != 0 ? std::fabs(c.bound) : 1.0;
     cs->push_back(c);
     at = comma + 1;

@@ -30,7 +30,8 @@ PetscErrorCode ReadDataText(MPI_Comm comm, const std::string &file, std::string 
     }
   }
   PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, comm));
-  PetscCheck(size >= 0, comm, PETSC_ERR_FILE_OPEN, "-fit_data %s cannot be read (no such file, or not readable)", file.c_str());
+  PetscCheck(size >= 0, comm, PETSC_ERR_FILE_OPEN, "-fit_data %s cannot be read (no such file, or not readable)",
+             file.c_str());
   text->resize((size_t)size);
   if (size > 0) PetscCallMPI(MPI_Bcast(&(*text)[0], (int)size, MPI_CHAR, 0, comm));
   PetscFunctionReturn(0);
@@ -45,9 +46,11 @@ PetscErrorCode FitSetUp(MPI_Comm comm, const std::string &output, FitProblem *f)
   f->world = comm;
   PetscCallMPI(MPI_Comm_rank(comm, &f->rank));
   PetscCall(FitSettingsFromOptions(comm, output, &f->settings));
-  PetscCheck(FitParseParameters(f->settings.parameters, &f->params, &why), comm, PETSC_ERR_ARG_WRONG, "-fit_parameters \"%s\" is not allowed: %s", f->settings.parameters.c_str(), why.c_str());
+  PetscCheck(FitParseParameters(f->settings.parameters, &f->params, &why), comm, PETSC_ERR_ARG_WRONG,
+             "-fit_parameters \"%s\" is not allowed: %s", f->settings.parameters.c_str(), why.c_str());
   PetscCall(ReadDataText(comm, f->settings.data, &text));
-  PetscCheck(FitParseData(f->settings.data, text, *f->settings.task, f->settings.sigma, f->params, &f->data, &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
+  PetscCheck(FitParseData(f->settings.data, text, *f->settings.task, f->settings.sigma, f->params, &f->data, &why),
+             comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
   PetscCall(FitCheckOutputs(comm, output, f->settings));
   CaseBatchSettings s;
   s.task         = f->settings.task;
@@ -70,17 +73,22 @@ PetscErrorCode FitAnnounce(const FitProblem &f, const std::string &output)
   std::string params;
   for (const FitParameter &q : f.params) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "\n  %s in [%g, %g]%s%s, %s, from %.10g (%s)", q.name.c_str(), q.lo, q.hi, q.unit.empty() || q.unit == "1" ? "" : " ", q.unit == "1" ? "" : q.unit.c_str(),
+    std::snprintf(buf, sizeof buf, "\n  %s in [%g, %g]%s%s, %s, from %.10g (%s)", q.name.c_str(), q.lo, q.hi,
+                  q.unit.empty() || q.unit == "1" ? "" : " ", q.unit == "1" ? "" : q.unit.c_str(),
                   q.log ? "log-scaled" : "linear", q.start, q.start_from.c_str());
     params += buf;
   }
-  PetscCall(PetscPrintf(f.world, "fit: %zu measured values (%zu rows of %s, -fit_task %s) on %d rank(s); %zu parameters:%s\n", f.m(), f.data.rows.size(), f.data.file.c_str(), f.settings.task->name,
-                        (int)size, f.n(), params.c_str()));
+  PetscCall(PetscPrintf(f.world,
+                        "fit: %zu measured values (%zu rows of %s, -fit_task %s) on %d rank(s); %zu parameters:%s\n",
+                        f.m(), f.data.rows.size(), f.data.file.c_str(), f.settings.task->name, (int)size, f.n(),
+                        params.c_str()));
   PetscCall(PetscPrintf(f.world, "fit: weights: %s\n", f.data.sigma_text.c_str()));
   const CaseBatchCounts &c = f.batch.counts;
   if (c.loaded + c.loaded_journal > 0)
-    PetscCall(PetscPrintf(f.world, "fit: %d runs known from an earlier fit into %s (%d from its file, %d from the journals of a run that stopped)\n", (int)(c.loaded + c.loaded_journal), output.c_str(),
-                          (int)c.loaded, (int)c.loaded_journal));
+    PetscCall(PetscPrintf(f.world,
+                          "fit: %d runs known from an earlier fit into %s (%d from its file, %d from the journals of a "
+                          "run that stopped)\n",
+                          (int)(c.loaded + c.loaded_journal), output.c_str(), (int)c.loaded, (int)c.loaded_journal));
   PetscFunctionReturn(0);
 }
 
@@ -90,8 +98,10 @@ PetscErrorCode FitReportRuns(const FitProblem &f)
 
   PetscFunctionBeginUser;
   PetscCall(CaseBatchGetCounts(f.batch, &c));
-  PetscCall(PetscPrintf(f.world, "fit: runs: %d computed (%.3g s of the ranks' time, %.3g s a run), %d answered from runs known (this fit's or an earlier one's)\n", (int)c.computed, c.run_time,
-                        c.computed ? c.run_time / c.computed : 0.0, (int)c.reused));
+  PetscCall(PetscPrintf(f.world,
+                        "fit: runs: %d computed (%.3g s of the ranks' time, %.3g s a run), %d answered from runs known "
+                        "(this fit's or an earlier one's)\n",
+                        (int)c.computed, c.run_time, c.computed ? c.run_time / c.computed : 0.0, (int)c.reused));
   PetscFunctionReturn(0);
 }
 

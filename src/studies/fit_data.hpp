@@ -25,20 +25,21 @@ const OptionModule &FitOptionTable();
 const OptionModule &TaoOptionTable();
 
 struct FitSettings {
-  std::string     data;                  // -fit_data: the CSV file
-  std::string     parameters;            // -fit_parameters as given
-  std::string     sigma;                 // -fit_sigma as given ("" none)
-  const CaseTask *task = nullptr;        // -fit_task
-  bool            central = false;       // -fit_differences central (else forward) for TAO's Jacobian
-  PetscReal       step = 1e-6;           // -fit_difference_step: relative step of TAO's Jacobian (1)
-  PetscReal       covariance_step = 1e-4; // -fit_covariance_step: relative step of the central differences at the optimum (1)
-  PetscReal       xtol = 1e-8;           // -fit_xtol: brgn stops when no scaled parameter moves more than this (1)
-  PetscReal       ftol = 1e-10;          // -fit_ftol: brgn stops when chi^2 changes by less than this, relative (1)
-  PetscReal       identifiability = 1e-8; // -fit_identifiability_tol: a singular value below this times the largest is not determined (1)
-  std::string     options_output;        // -fit_options_output ("" with -output none and not given)
-  PetscBool       quiet = PETSC_FALSE;   // -fit_quiet: no iteration lines
-  PetscBool       restart = PETSC_FALSE; // -fit_restart: forget the runs of an earlier fit into -output
-  PetscInt        stop_after = 0;        // -fit_stop_after: stop after this many runs (tests of the resume)
+  std::string     data;                // -fit_data: the CSV file
+  std::string     parameters;          // -fit_parameters as given
+  std::string     sigma;               // -fit_sigma as given ("" none)
+  const CaseTask *task      = nullptr; // -fit_task
+  bool            central   = false;   // -fit_differences central (else forward) for TAO's Jacobian
+  PetscReal       step      = 1e-6;    // -fit_difference_step: relative step of TAO's Jacobian (1)
+  PetscReal covariance_step = 1e-4; // -fit_covariance_step: relative step of the central differences at the optimum (1)
+  PetscReal xtol            = 1e-8; // -fit_xtol: brgn stops when no scaled parameter moves more than this (1)
+  PetscReal ftol            = 1e-10; // -fit_ftol: brgn stops when chi^2 changes by less than this, relative (1)
+  PetscReal identifiability = 1e-8;  // -fit_identifiability_tol: a singular value below this times the largest is not
+                                     // determined (1)
+  std::string options_output;        // -fit_options_output ("" with -output none and not given)
+  PetscBool   quiet      = PETSC_FALSE; // -fit_quiet: no iteration lines
+  PetscBool   restart    = PETSC_FALSE; // -fit_restart: forget the runs of an earlier fit into -output
+  PetscInt    stop_after = 0;           // -fit_stop_after: stop after this many runs (tests of the resume)
 };
 
 // Reads the -fit_* options (one PetscOptionsBegin block); output is -output ("" for none): the
@@ -49,14 +50,14 @@ PetscErrorCode FitSettingsFromOptions(MPI_Comm comm, const std::string &output, 
 // u in [0, 1], p = lo + u (hi - lo), or p = lo (hi/lo)^u when the bounds are both positive and
 // span a decade or more (hi/lo >= 10: log-scaled).
 struct FitParameter {
-  std::string name;         // the option without its dash
-  std::string unit;         // of its values ("" when not known)
+  std::string name;           // the option without its dash
+  std::string unit;           // of its values ("" when not known)
   PetscReal   lo = 0, hi = 0; // the bounds (the option's unit)
-  PetscReal   start = 0;    // the start: NAME=LO:HI:START, else the option's given value, else the middle
-  std::string start_from;   // "given as NAME=LO:HI:START", "the option's value", "the middle of the bounds"
-  bool        log = false;  // log-scaled
+  PetscReal   start = 0;      // the start: NAME=LO:HI:START, else the option's given value, else the middle
+  std::string start_from;     // "given as NAME=LO:HI:START", "the option's value", "the middle of the bounds"
+  bool        log = false;    // log-scaled
 
-  PetscReal ToInternal(PetscReal p) const; // u of p
+  PetscReal ToInternal(PetscReal p) const;   // u of p
   PetscReal FromInternal(PetscReal u) const; // p of u
 };
 
@@ -66,20 +67,20 @@ bool FitParseParameters(const std::string &text, std::vector<FitParameter> *p, s
 
 // One measured value: its row, column, value and standard deviation.
 struct FitMeasurement {
-  size_t    row = 0;    // index of the data row (0-based)
+  size_t    row    = 0; // index of the data row (0-based)
   size_t    column = 0; // index into FitData::measured
-  PetscReal y = 0;      // the measured value (the column's unit)
-  PetscReal sigma = 1;  // its standard deviation (absolute) or relative weight (the column's unit)
+  PetscReal y      = 0; // the measured value (the column's unit)
+  PetscReal sigma  = 1; // its standard deviation (absolute) or relative weight (the column's unit)
 };
 
 struct FitData {
-  std::string                 file, sha256;   // -fit_data and the SHA-256 of its contents
-  std::vector<std::string>    option_columns; // the columns that set options
-  std::vector<std::string>    measured;       // the measured columns (the task's), in the file's order
-  std::vector<std::string>    units;          // of each measured column
-  std::vector<CaseOptions>    rows;           // each row's settings (an empty cell: not set)
-  std::vector<int>            line;           // each row's line in the file (1-based)
-  std::vector<FitMeasurement> values;         // every measured value, row by row
+  std::string                 file, sha256;     // -fit_data and the SHA-256 of its contents
+  std::vector<std::string>    option_columns;   // the columns that set options
+  std::vector<std::string>    measured;         // the measured columns (the task's), in the file's order
+  std::vector<std::string>    units;            // of each measured column
+  std::vector<CaseOptions>    rows;             // each row's settings (an empty cell: not set)
+  std::vector<int>            line;             // each row's line in the file (1-based)
+  std::vector<FitMeasurement> values;           // every measured value, row by row
   bool                        absolute = false; // every value has a standard deviation (a _sigma column or -fit_sigma)
   std::string                 sigma_text;       // how the weights were chosen, in words
 };
@@ -87,8 +88,8 @@ struct FitData {
 // Parses the CSV `text` of file `file` for the task's columns, with -fit_sigma's per-column
 // standard deviations, against the parameters (none of them may be a column). *why: the error,
 // naming the file, the line and the column.
-bool FitParseData(const std::string &file, const std::string &text, const CaseTask &task, const std::string &sigma, const std::vector<FitParameter> &params, FitData *d,
-                  std::string *why);
+bool FitParseData(const std::string &file, const std::string &text, const CaseTask &task, const std::string &sigma,
+                  const std::vector<FitParameter> &params, FitData *d, std::string *why);
 
 // A row as people read it: "row 3 (line 7: impact_x=0.3, ball_speed=20)".
 std::string FitRowText(const FitData &d, size_t row);

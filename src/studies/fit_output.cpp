@@ -30,23 +30,31 @@ const char *const kOptionsMarker = "# beamimpact -task fit: fitted values";
 std::vector<std::string> Warnings(const FitProblem &f, const FitResult &res)
 {
   std::vector<std::string> w;
-  std::string determined; // the combinations the data do fix (when few)
-  const size_t nfixed = f.n() - res.u.undetermined.size();
-  for (size_t k = 0; k < nfixed && nfixed <= 3; ++k) determined += (k ? "; " : "") + FitCombinationText(res.u, k, f.Names(), res.p);
+  std::string              determined; // the combinations the data do fix (when few)
+  const size_t             nfixed = f.n() - res.u.undetermined.size();
+  for (size_t k = 0; k < nfixed && nfixed <= 3; ++k)
+    determined += (k ? "; " : "") + FitCombinationText(res.u, k, f.Names(), res.p);
   for (size_t k : res.u.undetermined)
-    w.push_back(Fmt("warning: the parameters are not identifiable from these data: moving along %s changes no fitted value (singular value %.2e of the largest, below "
-                    "-fit_identifiability_tol %g), so that combination is not determined%s%s; the standard errors of the parameters in it are infinite: fix one of them or add data that "
+    w.push_back(Fmt("warning: the parameters are not identifiable from these data: moving along %s changes no fitted "
+                    "value (singular value %.2e of the largest, below "
+                    "-fit_identifiability_tol %g), so that combination is not determined%s%s; the standard errors of "
+                    "the parameters in it are infinite: fix one of them or add data that "
                     "separate them",
-                    FitCombinationText(res.u, k, f.Names(), res.p).c_str(), res.u.singular[0] > 0 ? res.u.singular[k] / res.u.singular[0] : 0.0, f.settings.identifiability,
+                    FitCombinationText(res.u, k, f.Names(), res.p).c_str(),
+                    res.u.singular[0] > 0 ? res.u.singular[k] / res.u.singular[0] : 0.0, f.settings.identifiability,
                     determined.empty() ? "" : "; the data determine only ", determined.c_str()));
-  for (const std::string &b : res.at_bound) w.push_back("note: " + b + " is at a bound of -fit_parameters: its standard error assumes it could move past it (widen the bounds?)");
+  for (const std::string &b : res.at_bound)
+    w.push_back(
+      "note: " + b +
+      " is at a bound of -fit_parameters: its standard error assumes it could move past it (widen the bounds?)");
   return w;
 }
 
 std::string SigmaKind(const FitProblem &f, const FitResult &res)
 {
   if (f.data.absolute) return "the sigma are standard deviations: the covariance is (J^T J)^-1";
-  return Fmt("the sigma are relative weights: the covariance is s^2 (J^T J)^-1 with s^2 = chi^2/(m - n) = %.6g", res.s2);
+  return Fmt("the sigma are relative weights: the covariance is s^2 (J^T J)^-1 with s^2 = chi^2/(m - n) = %.6g",
+             res.s2);
 }
 
 // The options file's text: the header (data file and its SHA-256, chi^2, standard errors, warnings)
@@ -56,15 +64,20 @@ std::string OptionsText(const FitProblem &f, const FitResult &res, const std::st
   std::ostringstream o;
   o << kOptionsMarker << ", ready to include: -options_file THIS_FILE\n";
   o << "# data: " << f.data.file << "  SHA-256 " << f.data.sha256 << "\n";
-  o << "# each row runs -task " << f.settings.task->name << "; " << f.data.rows.size() << " rows, " << f.m() << " measured values, " << f.n() << " parameters; results in "
-    << (output.empty() ? "(no -output)" : output) << "\n";
+  o << "# each row runs -task " << f.settings.task->name << "; " << f.data.rows.size() << " rows, " << f.m()
+    << " measured values, " << f.n() << " parameters; results in " << (output.empty() ? "(no -output)" : output)
+    << "\n";
   o << Fmt("# TAO %s: %s after %d iterations\n", res.tao_type.c_str(), res.reason.c_str(), (int)res.iterations);
-  o << Fmt("# chi^2 = %.6g for m - n = %d degrees of freedom (chi^2/(m - n) = %.6g); %s\n", res.chi2, (int)res.dof, res.dof > 0 ? res.chi2 / res.dof : NAN, SigmaKind(f, res).c_str());
+  o << Fmt("# chi^2 = %.6g for m - n = %d degrees of freedom (chi^2/(m - n) = %.6g); %s\n", res.chi2, (int)res.dof,
+           res.dof > 0 ? res.chi2 / res.dof : NAN, SigmaKind(f, res).c_str());
   o << "# weights: " << f.data.sigma_text << "\n";
   for (size_t j = 0; j < f.n(); ++j)
-    o << Fmt("#   %-28s %.10g +- %.3g%s (%.3g%%)\n", f.params[j].name.c_str(), res.p[j], res.u.standard_error[j], UnitText(f.params[j].unit).c_str(), 100 * res.u.standard_error[j] / std::fabs(res.p[j]));
+    o << Fmt("#   %-28s %.10g +- %.3g%s (%.3g%%)\n", f.params[j].name.c_str(), res.p[j], res.u.standard_error[j],
+             UnitText(f.params[j].unit).c_str(), 100 * res.u.standard_error[j] / std::fabs(res.p[j]));
   for (size_t a = 0; a < f.n(); ++a)
-    for (size_t b = a + 1; b < f.n(); ++b) o << Fmt("#   correlation(%s, %s) = %.4f\n", f.params[a].name.c_str(), f.params[b].name.c_str(), res.u.correlation[a * f.n() + b]);
+    for (size_t b = a + 1; b < f.n(); ++b)
+      o << Fmt("#   correlation(%s, %s) = %.4f\n", f.params[a].name.c_str(), f.params[b].name.c_str(),
+               res.u.correlation[a * f.n() + b]);
   for (const std::string &w : Warnings(f, res)) o << "# " << w << "\n";
   for (size_t j = 0; j < f.n(); ++j) o << Fmt("-%s %.17g\n", f.params[j].name.c_str(), res.p[j]);
   return o.str();
@@ -84,7 +97,8 @@ PetscErrorCode WriteFitGroup(const FitProblem &f, const FitResult &res, hid_t fi
     units.push_back(q.unit.empty() ? "1" : q.unit), scales.push_back(q.log ? "log" : "linear");
     start.push_back(q.start), lower.push_back(q.lo), upper.push_back(q.hi);
   }
-  PetscCheck(H5WriteStringColumn(g, "names", f.Names(), "text (the options fitted, without their dash)") && H5WriteStringColumn(g, "unit", units, "text (each parameter's unit)") &&
+  PetscCheck(H5WriteStringColumn(g, "names", f.Names(), "text (the options fitted, without their dash)") &&
+               H5WriteStringColumn(g, "unit", units, "text (each parameter's unit)") &&
                H5WriteStringColumn(g, "scale", scales, "text (how TAO saw it: linear or log over its bounds)"),
              PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /fit's names");
   const char *each = "each parameter's (/fit/unit)";
@@ -101,8 +115,10 @@ PetscErrorCode WriteFitGroup(const FitProblem &f, const FitResult &res, hid_t fi
   }
   PetscCall(H5WriteDataset2D(g, "correlation", corr, "1"));
   PetscCall(H5WriteDataset2D(g, "covariance", cov, "the product of the two parameters' units"));
-  PetscCall(H5WriteDataset1D(g, "singular_values", res.u.singular, "1 (of J diag(|p|): the weighted residuals per unit of log p)"));
-  PetscCall(H5WriteDataset2D(g, "singular_vectors", vec, "1 (row k: the right singular vector of singular_values[k], over log p)"));
+  PetscCall(H5WriteDataset1D(g, "singular_values", res.u.singular,
+                             "1 (of J diag(|p|): the weighted residuals per unit of log p)"));
+  PetscCall(H5WriteDataset2D(g, "singular_vectors", vec,
+                             "1 (row k: the right singular vector of singular_values[k], over log p)"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
@@ -119,8 +135,9 @@ PetscErrorCode WriteTables(const FitProblem &f, const FitResult &res, hid_t file
     row.push_back((double)v.row + 1), line.push_back(f.data.line[v.row]), y.push_back(v.y), sigma.push_back(v.sigma);
     column.push_back(f.data.measured[v.column]), unit.push_back(f.data.units[v.column]);
   }
-  PetscCheck(H5WriteStringColumn(g, "column", column, "text (the measured column)") && H5WriteStringColumn(g, "unit", unit, "text (the column's unit)"), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
-             "HDF5: cannot write /fit/residuals");
+  PetscCheck(H5WriteStringColumn(g, "column", column, "text (the measured column)") &&
+               H5WriteStringColumn(g, "unit", unit, "text (the column's unit)"),
+             PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot write /fit/residuals");
   PetscCall(H5WriteCounts1D(g, "row", row, "1 (the data's row, from 1)"));
   PetscCall(H5WriteCounts1D(g, "line", line, "1 (the row's line in -fit_data)"));
   PetscCall(H5WriteDataset1D(g, "measured", y, "the column's (/fit/residuals/unit)"));
@@ -139,19 +156,23 @@ PetscErrorCode WriteTables(const FitProblem &f, const FitResult &res, hid_t file
         if (s.name == name && s.text.empty()) x = s.value;
       v.push_back(x);
     }
-    PetscCall(H5WriteDataset1D(g, name.c_str(), v, OptionUnit("-" + name).empty() ? "1" : OptionUnit("-" + name).c_str()));
+    PetscCall(
+      H5WriteDataset1D(g, name.c_str(), v, OptionUnit("-" + name).empty() ? "1" : OptionUnit("-" + name).c_str()));
   }
   H5Gclose(g);
   g = H5Gcreate2(file, "fit/history", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot create /fit/history");
   std::vector<double>              it, chi2, step, runs;
   std::vector<std::vector<double>> params;
-  for (const FitIteration &h : f.history) it.push_back(h.iteration), chi2.push_back(h.chi2), step.push_back(h.step), runs.push_back(h.runs), params.push_back(h.p);
+  for (const FitIteration &h : f.history)
+    it.push_back(h.iteration), chi2.push_back(h.chi2), step.push_back(h.step), runs.push_back(h.runs),
+      params.push_back(h.p);
   PetscCall(H5WriteCounts1D(g, "iteration", it, "1"));
   PetscCall(H5WriteDataset1D(g, "chi2", chi2, "1"));
   PetscCall(H5WriteDataset1D(g, "step", step, "1 (largest relative change of a parameter since the last iteration)"));
   PetscCall(H5WriteCounts1D(g, "runs", runs, "1 (runs computed so far)"));
-  PetscCall(H5WriteDataset2D(g, "parameters", params, "each parameter's (/fit/unit; columns in the order of /fit/names)"));
+  PetscCall(
+    H5WriteDataset2D(g, "parameters", params, "each parameter's (/fit/unit; columns in the order of /fit/names)"));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
@@ -197,15 +218,21 @@ PetscErrorCode FitPrintSummary(const FitProblem &f, const FitResult &res)
 {
   PetscFunctionBeginUser;
   if (f.rank != 0) PetscFunctionReturn(0);
-  std::string out = Fmt("fit: TAO %s: %s after %d iterations\n", res.tao_type.c_str(), res.reason.c_str(), (int)res.iterations);
+  std::string out = Fmt("fit: TAO %s: %s after %d iterations\n", res.tao_type.c_str(), res.reason.c_str(),
+                        (int)res.iterations);
   out += Fmt("  %-28s %-22s %-14s %s\n", "parameter", "value", "standard error", "(relative)");
   for (size_t j = 0; j < f.n(); ++j)
-    out += Fmt("  %-28s %-22s %-14.4g (%.3g%%)\n", f.params[j].name.c_str(), Fmt("%.10g%s", res.p[j], UnitText(f.params[j].unit).c_str()).c_str(), res.u.standard_error[j],
+    out += Fmt("  %-28s %-22s %-14.4g (%.3g%%)\n", f.params[j].name.c_str(),
+               Fmt("%.10g%s", res.p[j], UnitText(f.params[j].unit).c_str()).c_str(), res.u.standard_error[j],
                100 * res.u.standard_error[j] / std::fabs(res.p[j]));
   for (size_t a = 0; a < f.n(); ++a)
-    for (size_t b = a + 1; b < f.n(); ++b) out += Fmt("  correlation(%s, %s) = %.4f\n", f.params[a].name.c_str(), f.params[b].name.c_str(), res.u.correlation[a * f.n() + b]);
-  out += Fmt("chi^2 = %.6g for %zu values and %zu parameters: chi^2/(m - n) = %.6g; %s\n", res.chi2, f.m(), f.n(), res.dof > 0 ? res.chi2 / res.dof : NAN, SigmaKind(f, res).c_str());
-  out += Fmt("identifiability: singular values of J diag(|p|) from %.4g to %.4g (condition %.3g)\n", res.u.singular.front(), res.u.singular.back(), res.u.condition);
+    for (size_t b = a + 1; b < f.n(); ++b)
+      out += Fmt("  correlation(%s, %s) = %.4f\n", f.params[a].name.c_str(), f.params[b].name.c_str(),
+                 res.u.correlation[a * f.n() + b]);
+  out += Fmt("chi^2 = %.6g for %zu values and %zu parameters: chi^2/(m - n) = %.6g; %s\n", res.chi2, f.m(), f.n(),
+             res.dof > 0 ? res.chi2 / res.dof : NAN, SigmaKind(f, res).c_str());
+  out += Fmt("identifiability: singular values of J diag(|p|) from %.4g to %.4g (condition %.3g)\n",
+             res.u.singular.front(), res.u.singular.back(), res.u.condition);
   for (const std::string &w : Warnings(f, res)) out += w + "\n";
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s", out.c_str()));
   PetscFunctionReturn(0);
@@ -229,12 +256,15 @@ PetscErrorCode FitWriteOutputs(FitProblem &f, const FitResult &res, const std::s
   }
   const std::string &opts = f.settings.options_output;
   PetscErrorCode     ierr = 0;
-  if (!opts.empty() && f.rank == 0) ierr = StudyWriteAtomically(opts, OptionsText(f, res, output), "-fit_options_output");
+  if (!opts.empty() && f.rank == 0)
+    ierr = StudyWriteAtomically(opts, OptionsText(f, res, output), "-fit_options_output");
   PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, f.world));
   PetscCheck(!ierr || f.rank == 0, f.world, ierr, "-fit_options_output %s could not be written", opts.c_str());
   PetscCall(ierr);
-  if (!output.empty() && !opts.empty()) PetscCall(PetscPrintf(f.world, "wrote %s and %s\n", output.c_str(), opts.c_str()));
-  else if (!output.empty() || !opts.empty()) PetscCall(PetscPrintf(f.world, "wrote %s\n", output.empty() ? opts.c_str() : output.c_str()));
+  if (!output.empty() && !opts.empty())
+    PetscCall(PetscPrintf(f.world, "wrote %s and %s\n", output.c_str(), opts.c_str()));
+  else if (!output.empty() || !opts.empty())
+    PetscCall(PetscPrintf(f.world, "wrote %s\n", output.empty() ? opts.c_str() : output.c_str()));
   PetscFunctionReturn(0);
 }
 

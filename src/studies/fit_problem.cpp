@@ -63,7 +63,8 @@ std::string ParametersText(const FitProblem &f, const std::vector<double> &p)
 
 // The measured values of evaluation e (rows[e * nrows + row]) as the program gives them; a failed
 // run or a NaN value is an error naming the row and column.
-PetscErrorCode Fitted(const FitProblem &f, const std::vector<CaseRow> &rows, size_t e, const std::vector<double> &p, std::vector<double> *fitted)
+PetscErrorCode Fitted(const FitProblem &f, const std::vector<CaseRow> &rows, size_t e, const std::vector<double> &p,
+                      std::vector<double> *fitted)
 {
   const size_t nrows = f.data.rows.size();
 
@@ -72,18 +73,23 @@ PetscErrorCode Fitted(const FitProblem &f, const std::vector<CaseRow> &rows, siz
   for (size_t i = 0; i < f.m(); ++i) {
     const FitMeasurement &v   = f.data.values[i];
     const CaseRow        &row = rows[e * nrows + v.row];
-    PetscCheck(row.status == SweepOk, f.world, PETSC_ERR_USER, "-fit_data %s %s: the run at %s failed (status %d, %s): %s", f.data.file.c_str(), FitRowText(f.data, v.row).c_str(),
-               ParametersText(f, p).c_str(), row.status, SweepStatusName(row.status), row.reason.c_str());
+    PetscCheck(row.status == SweepOk, f.world, PETSC_ERR_USER,
+               "-fit_data %s %s: the run at %s failed (status %d, %s): %s", f.data.file.c_str(),
+               FitRowText(f.data, v.row).c_str(), ParametersText(f, p).c_str(), row.status, SweepStatusName(row.status),
+               row.reason.c_str());
     (*fitted)[i] = row.values[v.column];
-    PetscCheck(std::isfinite((*fitted)[i]), f.world, PETSC_ERR_USER, "-fit_data %s %s, column '%s': the run at %s gives no value (%g): %s", f.data.file.c_str(), FitRowText(f.data, v.row).c_str(),
-               f.data.measured[v.column].c_str(), ParametersText(f, p).c_str(), (*fitted)[i], row.reason.empty() ? "the column does not apply to this run" : row.reason.c_str());
+    PetscCheck(std::isfinite((*fitted)[i]), f.world, PETSC_ERR_USER,
+               "-fit_data %s %s, column '%s': the run at %s gives no value (%g): %s", f.data.file.c_str(),
+               FitRowText(f.data, v.row).c_str(), f.data.measured[v.column].c_str(), ParametersText(f, p).c_str(),
+               (*fitted)[i], row.reason.empty() ? "the column does not apply to this run" : row.reason.c_str());
   }
   PetscFunctionReturn(0);
 }
 
 } // namespace
 
-PetscErrorCode FitResidual(FitProblem &f, const std::vector<double> &p, std::vector<double> *fitted, std::vector<double> *r)
+PetscErrorCode FitResidual(FitProblem &f, const std::vector<double> &p, std::vector<double> *fitted,
+                           std::vector<double> *r)
 {
   std::vector<CaseOptions> cases;
   std::vector<CaseRow>     rows;
@@ -97,7 +103,8 @@ PetscErrorCode FitResidual(FitProblem &f, const std::vector<double> &p, std::vec
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FitJacobian(FitProblem &f, const std::vector<double> &u, bool central, double step, std::vector<double> *J, std::vector<std::string> *at_bound)
+PetscErrorCode FitJacobian(FitProblem &f, const std::vector<double> &u, bool central, double step,
+                           std::vector<double> *J, std::vector<std::string> *at_bound)
 {
   const size_t             n = f.n(), m = f.m();
   std::vector<CaseOptions> cases;
@@ -110,7 +117,8 @@ PetscErrorCode FitJacobian(FitProblem &f, const std::vector<double> &u, bool cen
   for (size_t j = 0; j < n; ++j) {
     const FitParameter &q  = f.params[j];
     const double        p  = q.FromInternal(u[j]);
-    const double        du = q.log ? std::log1p(step) / std::log(q.hi / q.lo) : step * std::max(std::fabs(p), 1e-3 * (q.hi - q.lo)) / (q.hi - q.lo);
+    const double        du = q.log ? std::log1p(step) / std::log(q.hi / q.lo)
+                                   : step * std::max(std::fabs(p), 1e-3 * (q.hi - q.lo)) / (q.hi - q.lo);
     up[j] = u[j] + du, um[j] = central ? u[j] - du : u[j];
     if (up[j] > 1) up[j] = u[j], um[j] = u[j] - du; // at the upper bound: one-sided, downward
     if (um[j] < 0) um[j] = u[j], up[j] = u[j] + du;
@@ -143,8 +151,8 @@ PetscErrorCode FitUncertaintyAtOptimum(FitProblem &f, FitResult *res)
   PetscCall(FitResidual(f, res->p, &res->fitted, &res->r));
   res->chi2 = 0;
   for (double x : res->r) res->chi2 += x * x;
-  res->dof = (PetscInt)f.m() - (PetscInt)f.n();
-  res->s2  = f.data.absolute ? 1.0 : (res->dof > 0 ? res->chi2 / (double)res->dof : std::nan(""));
+  res->dof                    = (PetscInt)f.m() - (PetscInt)f.n();
+  res->s2                     = f.data.absolute ? 1.0 : (res->dof > 0 ? res->chi2 / (double)res->dof : std::nan(""));
   const std::vector<double> u = f.ToU(res->p);
   PetscCall(FitJacobian(f, u, true, f.settings.covariance_step, &Ju, &res->at_bound));
   const std::vector<double> d = FitScaleDerivative(f, u);

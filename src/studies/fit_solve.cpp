@@ -57,7 +57,8 @@ PetscErrorCode FitTaoJacobian(Tao, Vec X, Mat J, Mat, void *ctx)
   PetscFunctionBeginUser;
   PetscCall(FitJacobian(f, FromVec(X), f.settings.central, f.settings.step, &Ju));
   for (size_t i = 0; i < f.m(); ++i)
-    for (size_t j = 0; j < f.n(); ++j) PetscCall(MatSetValue(J, (PetscInt)i, (PetscInt)j, Ju[i * f.n() + j], INSERT_VALUES));
+    for (size_t j = 0; j < f.n(); ++j)
+      PetscCall(MatSetValue(J, (PetscInt)i, (PetscInt)j, Ju[i * f.n() + j], INSERT_VALUES));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
@@ -127,8 +128,10 @@ PetscErrorCode FitTaoConverged(Tao tao, void *ctx)
     double moved = 0;
     for (size_t j = 0; j < u.size(); ++j) moved = std::max(moved, std::fabs(u[j] - f.u_prev[j]));
     char text[160] = "";
-    if (moved <= f.settings.xtol) std::snprintf(text, sizeof text, "no scaled parameter moved by more than -fit_xtol %g", f.settings.xtol);
-    else if (std::fabs(f.f_prev - fc) <= f.settings.ftol * fc) std::snprintf(text, sizeof text, "chi^2 changed by less than -fit_ftol %g of itself", f.settings.ftol);
+    if (moved <= f.settings.xtol)
+      std::snprintf(text, sizeof text, "no scaled parameter moved by more than -fit_xtol %g", f.settings.xtol);
+    else if (std::fabs(f.f_prev - fc) <= f.settings.ftol * fc)
+      std::snprintf(text, sizeof text, "chi^2 changed by less than -fit_ftol %g of itself", f.settings.ftol);
     if (text[0]) {
       f.stop = text;
       PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_STEPTOL));

@@ -15,7 +15,8 @@
 namespace beamimpact {
 
 struct FitUncertainty {
-  std::vector<double> covariance;     // n x n, row-major (the parameters' units: unit_j unit_k); +-inf where an undetermined direction enters
+  std::vector<double>
+    covariance; // n x n, row-major (the parameters' units: unit_j unit_k); +-inf where an undetermined direction enters
   std::vector<double> standard_error; // n (the parameters' units)
   std::vector<double> correlation;    // n x n, row-major (1)
   std::vector<double> singular;       // n singular values of J diag(|p|), descending (1: r per unit of log p)
@@ -28,10 +29,12 @@ struct FitUncertainty {
 // dr/dp_j), s2 the variance scale (1 when the sigma are standard deviations; chi^2/(m - n) when they
 // are relative weights), tol the relative singular value below which a direction is undetermined.
 // LAPACK's dgesvd (as PETSc links it).
-PetscErrorCode FitUncertaintyOf(const std::vector<double> &J, size_t m, size_t n, const std::vector<double> &p, double s2, double tol, FitUncertainty *u);
+PetscErrorCode FitUncertaintyOf(const std::vector<double> &J, size_t m, size_t n, const std::vector<double> &p,
+                                double s2, double tol, FitUncertainty *u);
 
 // The combination of singular vector k, "+0.71 log beam_youngs_modulus - 0.71 log beam_density"
 // (components of magnitude >= 0.01, the first positive; "d name" for a parameter at 0).
-std::string FitCombinationText(const FitUncertainty &u, size_t k, const std::vector<std::string> &names, const std::vector<double> &p);
+std::string FitCombinationText(const FitUncertainty &u, size_t k, const std::vector<std::string> &names,
+                               const std::vector<double> &p);
 
 } // namespace beamimpact

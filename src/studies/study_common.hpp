@@ -38,7 +38,8 @@ PetscErrorCode StudyWriteAtomically(const std::string &path, const std::string &
 // Collective: path (the study's options file, "" none) may be written: not -output, its directory
 // writable, not an input of the run, and an existing file there one the study wrote (its first
 // line starts with `marker`). Errors name `option`; `who` ("a fit") says whose file it would be.
-PetscErrorCode StudyCheckOptionsOutput(MPI_Comm comm, const std::string &path, const std::string &output, const char *option, const char *marker, const char *who);
+PetscErrorCode StudyCheckOptionsOutput(MPI_Comm comm, const std::string &path, const std::string &output,
+                                       const char *option, const char *marker, const char *who);
 
 // A TAO vector's local entries as a std::vector, and back (the studies run TAO on one rank's data).
 std::vector<double> FromVec(Vec x);

@@ -33,8 +33,10 @@ std::vector<SweepColumn> SweepColumns(const SweepPlan &plan)
   std::vector<SweepColumn> c;
   c.push_back({"case_index", "1", false, true, {}, "the point's index in the plan (the first axis slowest)"});
   for (const SweepAxis &a : plan.axes)
-    c.push_back({a.name, a.unit, false, false, a.labels, "the point's value of -" + a.name + " (a text axis: its label)"});
-  c.push_back({"status", "1", false, true, {}, "0: ok; else a code (below), its numbers NaN: a failed run or no impact"});
+    c.push_back(
+      {a.name, a.unit, false, false, a.labels, "the point's value of -" + a.name + " (a text axis: its label)"});
+  c.push_back(
+    {"status", "1", false, true, {}, "0: ok; else a code (below), its numbers NaN: a failed run or no impact"});
   for (auto &rc : ImpactResultColumns())
     c.push_back({rc.name, rc.unit, std::string(rc.name) == "wall_time", rc.integer, {}, rc.description});
   return c;
@@ -51,7 +53,7 @@ int SweepStatusOfError(PetscErrorCode ierr)
   case PETSC_ERR_ARG_WRONG:
   case PETSC_ERR_ARG_INCOMP:
   case PETSC_ERR_ARG_UNKNOWN_TYPE: // a text value the set-up does not know:
-  case PETSC_ERR_USER:             // -ts_rk_type 9x, PETSc's "Unknown option 9x for -ts_rk_type. Available options: ..."
+  case PETSC_ERR_USER: // -ts_rk_type 9x, PETSc's "Unknown option 9x for -ts_rk_type. Available options: ..."
   case PETSC_ERR_USER_INPUT:
   case PETSC_ERR_SUP:
     return SweepRefused;
@@ -60,7 +62,8 @@ int SweepStatusOfError(PetscErrorCode ierr)
   }
 }
 
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result, SweepReuse *reuse)
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row,
+                            std::string *reason, ImpactResult *result, SweepReuse *reuse)
 {
   Scenario       c;
   int            status = SweepOk;
@@ -73,8 +76,11 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
     c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
     ImpactStructure *structure   = nullptr;
     if (reuse) { // the structure's system, unless this point is on another beam
-      const PetscReal radius = c.beam.shell.contact_radius, patch = c.beam.strings.patch_radius; // follow the ball: a new one is a new system
-      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0 || std::memcmp(&patch, &reuse->patch_radius, sizeof patch) != 0) reuse->structure = ImpactStructure();
+      const PetscReal radius = c.beam.shell.contact_radius,
+                      patch  = c.beam.strings.patch_radius; // follow the ball: a new one is a new system
+      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0 ||
+          std::memcmp(&patch, &reuse->patch_radius, sizeof patch) != 0)
+        reuse->structure = ImpactStructure();
       reuse->shell_radius = radius;
       reuse->patch_radius = patch;
       structure           = &reuse->structure;
@@ -83,7 +89,7 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
     ierr                   = ImpactRun(comm, c, result, structure);
     if (structure && structure->sys && structure->sys.get() != kept) ++reuse->systems;
     if (ierr) {
-      status = SweepStatusOfError(ierr);
+      status  = SweepStatusOfError(ierr);
       *reason = SweepErrorReason(ierr);
       ierr    = 0;
     } else if (result->ended_in_contact) { // a contact cut short by -impact_max_time: no number
@@ -100,7 +106,8 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
   row->insert(row->end(), v.begin(), v.end());
   row->push_back((double)status);
   if (status == SweepOk) {
-    for (auto &rc : ImpactResultColumns()) row->push_back(rc.Get(*result)); // the results table, NaN where a column does not apply
+    for (auto &rc : ImpactResultColumns())
+      row->push_back(rc.Get(*result)); // the results table, NaN where a column does not apply
     reason->clear();
   } else row->resize(row->size() + ImpactResultColumns().size(), nan);
   PetscFunctionReturn(0);
@@ -118,7 +125,7 @@ int g_exit_status = 0; // SweepExitStatus()
 struct SweepProgress {
   PetscInt ncases = 0, already = 0, todo = 0; // cases: all, done before this run, to compute
   double   t_start = 0, last = 0;             // s (MPI_Wtime)
-  bool     cost_said = false;                   // the expected time was judged (first progress line)
+  bool     cost_said = false;                 // the expected time was judged (first progress line)
 };
 
 // What this rank did: the rows it computed as a group leader (gathered on rank 0 at
@@ -129,7 +136,7 @@ struct SweepShare {
   std::map<PetscInt, std::string> reasons;
   PetscInt                        computed = 0, failed = 0, shown = 0;
   double                          busy = 0, journal = 0, handout = 0; // s
-  PetscInt                        reuse[3] = {0, 0, 0}; // scenarios read whole, point's parts only; systems built (SweepReuse)
+  PetscInt reuse[3] = {0, 0, 0}; // scenarios read whole, point's parts only; systems built (SweepReuse)
 };
 
 std::string Points(PetscInt n) { return std::to_string((long long)n) + (n == 1 ? " point" : " points"); }
@@ -150,11 +157,13 @@ static std::string SkippedText(const std::map<int, PetscInt> &skipped)
 {
   std::string text;
   for (const auto &kv : skipped) {
-    const char *where = kv.first == SweepOffFace ? "off the racket's face (outside the head's outline, where there are no strings)"
-                        : kv.first == SweepOffBeam ? "off the beam"
-                        : kv.first == SweepHeldPoint ? "held fixed (a clamped or pinned end, -beam_clamp)"
-                                                     : SweepStatusName(kv.first);
-    text += (text.empty() ? "" : " or ") + std::string(where) + (skipped.size() > 1 ? " (" + Points(kv.second) + ")" : "");
+    const char *where = kv.first == SweepOffFace
+                        ? "off the racket's face (outside the head's outline, where there are no strings)"
+                      : kv.first == SweepOffBeam   ? "off the beam"
+                      : kv.first == SweepHeldPoint ? "held fixed (a clamped or pinned end, -beam_clamp)"
+                                                   : SweepStatusName(kv.first);
+    text += (text.empty() ? "" : " or ") + std::string(where) +
+            (skipped.size() > 1 ? " (" + Points(kv.second) + ")" : "");
   }
   return text;
 }
@@ -176,21 +185,26 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
     std::string              why;
     for (const SweepColumn &c : SweepColumns(*plan))
       if (c.labels.empty() && !c.timing && c.name != "case_index" && c.name != "status" &&
-          std::none_of(plan->axes.begin(), plan->axes.end(), [&](const SweepAxis &a) { return a.name == c.name && !a.sampled; }))
+          std::none_of(plan->axes.begin(), plan->axes.end(),
+                       [&](const SweepAxis &a) { return a.name == c.name && !a.sampled; }))
         numeric.push_back(c.name);
-    PetscCheck(UqConditionsParse(plan->exceedance, numeric, &conds, &why), comm, PETSC_ERR_ARG_WRONG, "-sweep_exceedance \"%s\" is not allowed: %s", plan->exceedance.c_str(), why.c_str());
+    PetscCheck(UqConditionsParse(plan->exceedance, numeric, &conds, &why), comm, PETSC_ERR_ARG_WRONG,
+               "-sweep_exceedance \"%s\" is not allowed: %s", plan->exceedance.c_str(), why.c_str());
   }
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   const PetscInt n = help ? 1 : plan->cases(); // -help: print the options once
   candidates->clear();
-  SweepScenarioCache cache; // the structure's scenario: a point reads only its own parts again
-  const double       t0 = MPI_Wtime();
-  std::map<int, PetscInt> skipped;     // the points that cannot run, by status (off the beam, held, off the face)
-  std::string             first_why;  // the first one's reason
+  SweepScenarioCache      cache; // the structure's scenario: a point reads only its own parts again
+  const double            t0 = MPI_Wtime();
+  std::map<int, PetscInt> skipped;   // the points that cannot run, by status (off the beam, held, off the face)
+  std::string             first_why; // the first one's reason
   for (PetscInt i = 0; i < n; ++i) {
     if (i == 1000 && n > 1000000) { // a huge plan: its set-up (every point's options read and checked) is announced
       const double per = (MPI_Wtime() - t0) / i;
-      PetscCall(PetscPrintf(comm, "sweep: %" PetscInt_FMT " points planned: checking every point's options takes about %.3g s (%.2g ms a point) before the first run; fewer points (a coarser -sweep_x or -sweep) shorten it\n",
+      PetscCall(PetscPrintf(comm,
+                            "sweep: %" PetscInt_FMT
+                            " points planned: checking every point's options takes about %.3g s (%.2g ms a point) "
+                            "before the first run; fewer points (a coarser -sweep_x or -sweep) shorten it\n",
                             n, per * (double)n, per * 1e3));
     }
     Scenario       c;
@@ -200,7 +214,8 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
     PetscCall(SweepCaseOptionsClear(*plan));
     if (ierr) {
       const std::string msg = LastErrorMessage(ierr);
-      SETERRQ(comm, ierr, "-task sweep point %" PetscInt_FMT " (%s): %s", i, SweepCaseText(*plan, i, false).c_str(), msg.c_str());
+      SETERRQ(comm, ierr, "-task sweep point %" PetscInt_FMT " (%s): %s", i, SweepCaseText(*plan, i, false).c_str(),
+              msg.c_str());
     }
     if (status != SweepOk) {
       if (skipped.empty()) first_why = reason;
@@ -210,11 +225,14 @@ PetscErrorCode SweepReadOptions(MPI_Comm comm, Scenario *base, SweepPlan *plan, 
     if (candidates->empty()) *base = c;
     if (candidates->size() < 8) candidates->push_back(i);
   }
-  PetscCheck(!candidates->empty() || help, comm, PETSC_ERR_ARG_OUTOFRANGE, "-task sweep: no point of the sweep can run: every impact point is %s (point 0: %s: %s)", SkippedText(skipped).c_str(),
-             SweepCaseText(*plan, 0, true).c_str(), first_why.c_str());
+  PetscCheck(!candidates->empty() || help, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-task sweep: no point of the sweep can run: every impact point is %s (point 0: %s: %s)",
+             SkippedText(skipped).c_str(), SweepCaseText(*plan, 0, true).c_str(), first_why.c_str());
   const MonitorRequest &m = base->monitor;
   PetscCheck(!(m.ball || m.energy || !m.velocity_at.empty() || !m.snapshot_times.empty()), comm, PETSC_ERR_ARG_INCOMP,
-             "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, -snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a column) works in a sweep");
+             "-task sweep records no time series or snapshots (-monitor_ball, -monitor_energy, -monitor_velocity_at, "
+             "-snapshot_times): run -task impact at the points of interest; only -monitor_segment (its peak is a "
+             "column) works in a sweep");
   PetscFunctionReturn(0);
 }
 
@@ -232,11 +250,14 @@ static PetscErrorCode SweepAxisReadCheck(MPI_Comm comm, const SweepPlan &plan, c
   const char         *which  = a.name == "impact_x" && !plan.sweep_x.empty() ? "-sweep_x:" : "-sweep";
   const OptionModule *module = OptionModuleOf(a.name);
   PetscCheck(!module, comm, PETSC_ERR_ARG_WRONG,
-             "%s %s=%s is not allowed: -%s is an option of this program, but the impact a sweep runs at each point (-task sweep farms -task impact) does not read it with these "
+             "%s %s=%s is not allowed: -%s is an option of this program, but the impact a sweep runs at each point "
+             "(-task sweep farms -task impact) does not read it with these "
              "options; it belongs to: %s",
              which, a.name.c_str(), a.spec.c_str(), a.name.c_str(), module->title.c_str());
   SETERRQ(comm, PETSC_ERR_ARG_WRONG,
-          "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis is an option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ts_type, beam_theory",
+          "%s %s=%s is not allowed: -%s is not an option of this program (nothing read it with these options); an axis "
+          "is an option without its dash, e.g. impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ts_type, "
+          "beam_theory",
           which, a.name.c_str(), a.spec.c_str(), a.name.c_str());
 }
 
@@ -245,7 +266,8 @@ static PetscErrorCode SweepAxisReadCheck(MPI_Comm comm, const SweepPlan &plan, c
 // message, an axis that no part of the program reads is refused, and the file can record
 // the integrator. A case whose set-up fails (e.g. an explicit step above its stability
 // limit at that point) hands the probe to the next of the candidates.
-PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std::vector<PetscInt> &candidates, ImpactResult *probe)
+PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std::vector<PetscInt> &candidates,
+                          ImpactResult *probe)
 {
   PetscErrorCode first_ierr = 0;
   std::string    first_msg;
@@ -258,9 +280,9 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
     int         status;
     std::string reason;
     PetscCall(SweepCaseScenario(farm.group, plan, candidates[k], true, &c, &status, &reason));
-    c.impact.full_max_time        = c.impact.max_time > 0 ? c.impact.max_time : -1; // the cost estimates: a whole point's
-    c.impact.max_time             = 1e-9;
-    c.impact.check_unused_options = PETSC_FALSE; // below, once the axes are checked
+    c.impact.full_max_time = c.impact.max_time > 0 ? c.impact.max_time : -1; // the cost estimates: a whole point's
+    c.impact.max_time      = 1e-9;
+    c.impact.check_unused_options = PETSC_FALSE;                                    // below, once the axes are checked
     c.impact.report_setup         = plan.quiet || k > 0 ? PETSC_FALSE : PETSC_TRUE; // integrator, step, warnings: once
     c.monitor                     = MonitorRequest();
     PetscErrorCode ierr           = ImpactRun(farm.group, c, probe);
@@ -277,10 +299,12 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
     // An axis that changes nothing: every point the same (unless another axis varies what it needs).
     for (const OptionWithoutEffect &o : OptionsWithoutEffect()) {
       bool varied = false;
-      for (const SweepAxis &a : plan.axes) varied = varied || std::find(o.needs.begin(), o.needs.end(), "-" + a.name) != o.needs.end();
       for (const SweepAxis &a : plan.axes)
-        PetscCheck(varied || o.name != "-" + a.name, farm.group, PETSC_ERR_ARG_WRONG, "-sweep %s=%s is not allowed: %s has no effect in this sweep (%s), so every point would be the same", a.name.c_str(), a.spec.c_str(), o.name.c_str(),
-                   o.why.c_str());
+        varied = varied || std::find(o.needs.begin(), o.needs.end(), "-" + a.name) != o.needs.end();
+      for (const SweepAxis &a : plan.axes)
+        PetscCheck(varied || o.name != "-" + a.name, farm.group, PETSC_ERR_ARG_WRONG,
+                   "-sweep %s=%s is not allowed: %s has no effect in this sweep (%s), so every point would be the same",
+                   a.name.c_str(), a.spec.c_str(), o.name.c_str(), o.why.c_str());
     }
     std::vector<std::string> axes; // an option that acts at other points is no note
     for (const SweepAxis &a : plan.axes) axes.push_back("-" + a.name);
@@ -288,8 +312,9 @@ PetscErrorCode SweepProbe(const TaskFarm &farm, const SweepPlan &plan, const std
     PetscCall(SweepCaseOptionsClear(plan));
     PetscFunctionReturn(0);
   }
-  SETERRQ(farm.group, first_ierr, "-task sweep: the first %zu points that can run all failed to start; point %" PetscInt_FMT " (%s): %s", candidates.size(), first_case, SweepCaseText(plan, first_case, true).c_str(),
-          first_msg.c_str());
+  SETERRQ(farm.group, first_ierr,
+          "-task sweep: the first %zu points that can run all failed to start; point %" PetscInt_FMT " (%s): %s",
+          candidates.size(), first_case, SweepCaseText(plan, first_case, true).c_str(), first_msg.c_str());
 }
 
 // The options set that the probe's impact did not read ("-ts_theta_theta -modes_count"): the
@@ -335,7 +360,8 @@ PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, con
   rec->add("sweep_ranks_per_case", plan.ranks_per_case);
   rec->add("rigid_loss_fraction", plan.rigid_loss_fraction);
   rec->add("sweep_cases_total", plan.cases());
-  if (!plan.sampled.empty()) { // the sample: its options, and a digest of its values (a CSV's contents, the generator's)
+  if (!plan.sampled
+         .empty()) { // the sample: its options, and a digest of its values (a CSV's contents, the generator's)
     rec->add("sweep_samples", plan.samples);
     rec->add("sweep_sampling", SampleDesignName(plan.design));
     rec->add("sweep_seed", plan.seed);
@@ -354,8 +380,9 @@ PetscErrorCode SweepRecordBuild(const Scenario &base, const SweepPlan &plan, con
 
 // Rank 0's part of SweepStart: the store opened (resuming what is done), this run's journals
 // followed, the cases still to compute.
-static PetscErrorCode SweepStartStore(const TaskFarm &farm, const std::string &output, const Scenario &base, const SweepPlan &plan, const ImpactResult &probe, SweepStore *S, std::vector<PetscInt> *todo,
-                                      int *run)
+static PetscErrorCode SweepStartStore(const TaskFarm &farm, const std::string &output, const Scenario &base,
+                                      const SweepPlan &plan, const ImpactResult &probe, SweepStore *S,
+                                      std::vector<PetscInt> *todo, int *run)
 {
   RunRecord                record;
   std::vector<PetscMPIInt> leaders;
@@ -366,7 +393,8 @@ static PetscErrorCode SweepStartStore(const TaskFarm &farm, const std::string &o
   PetscCall(SweepStoreOpen(*S, run));
   for (PetscInt i = 0; i < S->ncases; ++i)
     if (!S->rows.count(i)) todo->push_back(i);
-  for (PetscMPIInt r = 0; r < farm.groups * plan.ranks_per_case; r += (PetscMPIInt)plan.ranks_per_case) leaders.push_back(r);
+  for (PetscMPIInt r = 0; r < farm.groups * plan.ranks_per_case; r += (PetscMPIInt)plan.ranks_per_case)
+    leaders.push_back(r);
   SweepStoreFollow(*S, *run, leaders);
   PetscFunctionReturn(0);
 }
@@ -375,7 +403,8 @@ static PetscErrorCode SweepStartStore(const TaskFarm &farm, const std::string &o
 // number. A store refused or failed on rank 0 (other parameters, a full disk at the first
 // write) fails every rank here, together: rank 0's message is the run's (app/main.cpp), no
 // rank is left waiting for the others (which would end in MPI_Abort and the launcher's noise).
-PetscErrorCode SweepStart(const TaskFarm &farm, const std::string &output, const Scenario &base, const SweepPlan &plan, const ImpactResult &probe, SweepStore *S, std::vector<PetscInt> *todo, int *run)
+PetscErrorCode SweepStart(const TaskFarm &farm, const std::string &output, const Scenario &base, const SweepPlan &plan,
+                          const ImpactResult &probe, SweepStore *S, std::vector<PetscInt> *todo, int *run)
 {
   PetscErrorCode ierr = 0;
 
@@ -386,7 +415,8 @@ PetscErrorCode SweepStart(const TaskFarm &farm, const std::string &output, const
   PetscInt failed = ierr ? 1 : 0;
   PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, farm.world));
   PetscCall(ierr);
-  PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: rank 0 could not open the sweep's file (its message is the run's)", output.c_str());
+  PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+             "-output %s: rank 0 could not open the sweep's file (its message is the run's)", output.c_str());
   PetscInt ntodo = (PetscInt)todo->size();
   PetscCallMPI(MPI_Bcast(&ntodo, 1, MPIU_INT, 0, farm.world));
   PetscCallMPI(MPI_Bcast(run, 1, MPI_INT, 0, farm.world));
@@ -396,7 +426,8 @@ PetscErrorCode SweepStart(const TaskFarm &farm, const std::string &output, const
 }
 
 // Rank 0: what is about to run.
-PetscErrorCode SweepAnnounce(const TaskFarm &farm, const SweepPlan &plan, const ImpactResult &probe, const SweepProgress &P, const std::string &output)
+PetscErrorCode SweepAnnounce(const TaskFarm &farm, const SweepPlan &plan, const ImpactResult &probe,
+                             const SweepProgress &P, const std::string &output)
 {
   std::string range;
   bool        ts_axis = false; // an axis changes the integrator: the one named is the first point's
@@ -406,20 +437,30 @@ PetscErrorCode SweepAnnounce(const TaskFarm &farm, const SweepPlan &plan, const 
   for (auto &a : plan.axes) {
     char              text[256]; // PetscPrintf would write 0 as "0."
     const std::string unit = a.unit.empty() || a.unit == "1" ? "" : " " + a.unit;
-    std::snprintf(text, sizeof(text), "%s from %g to %g%s (%zu)", a.name.c_str(), (double)*std::min_element(a.values.begin(), a.values.end()), (double)*std::max_element(a.values.begin(), a.values.end()),
-                  unit.c_str(), a.values.size());
+    std::snprintf(text, sizeof(text), "%s from %g to %g%s (%zu)", a.name.c_str(),
+                  (double)*std::min_element(a.values.begin(), a.values.end()),
+                  (double)*std::max_element(a.values.begin(), a.values.end()), unit.c_str(), a.values.size());
     std::string labels;
     for (const std::string &l : a.labels) labels += (labels.empty() ? "" : ", ") + l;
-    range += (range.empty() ? "" : " x ") + (a.Text() ? a.name + " " + labels + " (" + std::to_string(a.labels.size()) + ")" : std::string(text));
+    range += (range.empty() ? "" : " x ") +
+             (a.Text() ? a.name + " " + labels + " (" + std::to_string(a.labels.size()) + ")" : std::string(text));
     if (a.name.compare(0, 3, "ts_") == 0) ts_axis = true;
   }
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: %s, %s, on %d rank(s): %" PetscInt_FMT " group(s) of %" PetscInt_FMT "%s; ts %s (%s)%s\n", Points(P.ncases).c_str(), range.c_str(), farm.world_size, farm.groups,
-                        plan.ranks_per_case, farm.world_size % plan.ranks_per_case ? " (the ranks left over stay idle)" : "", probe.ts_type.c_str(), probe.formulation.c_str(),
-                        ts_axis ? " at the first point" : ""));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                        "sweep: %s, %s, on %d rank(s): %" PetscInt_FMT " group(s) of %" PetscInt_FMT
+                        "%s; ts %s (%s)%s\n",
+                        Points(P.ncases).c_str(), range.c_str(), farm.world_size, farm.groups, plan.ranks_per_case,
+                        farm.world_size % plan.ranks_per_case ? " (the ranks left over stay idle)" : "",
+                        probe.ts_type.c_str(), probe.formulation.c_str(), ts_axis ? " at the first point" : ""));
   for (auto &a : plan.axes)
-    if (a.overrides) PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: the axis %s overrides -%s %s given in the options\n", a.name.c_str(), a.name.c_str(), a.given.c_str()));
+    if (a.overrides)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: the axis %s overrides -%s %s given in the options\n",
+                            a.name.c_str(), a.name.c_str(), a.given.c_str()));
   if (P.already && P.todo)
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: resuming %s: %" PetscInt_FMT " of %" PetscInt_FMT " points already done, %" PetscInt_FMT " to compute\n", output.c_str(), P.already, P.ncases, P.todo));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "sweep: resuming %s: %" PetscInt_FMT " of %" PetscInt_FMT
+                          " points already done, %" PetscInt_FMT " to compute\n",
+                          output.c_str(), P.already, P.ncases, P.todo));
   std::fflush(PETSC_STDOUT);
   PetscFunctionReturn(0);
 }
@@ -434,13 +475,18 @@ PetscErrorCode SweepPoll(SweepStore &S, SweepProgress &P, const SweepPlan &plan,
   if (done >= P.todo) PetscFunctionReturn(0);
   if (!plan.quiet && now - P.last >= plan.progress_interval) {
     const double rate = done / (now - P.t_start);
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT "/%" PetscInt_FMT " points (%.0f%%)  %.3g points/s  ETA %s\n", P.already + done, P.ncases, 100.0 * (P.already + done) / P.ncases,
-                           rate, rate > 0 ? FormatDuration((P.todo - done) / rate).c_str() : "?"));
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
+                           "sweep: %" PetscInt_FMT "/%" PetscInt_FMT " points (%.0f%%)  %.3g points/s  ETA %s\n",
+                           P.already + done, P.ncases, 100.0 * (P.already + done) / P.ncases, rate,
+                           rate > 0 ? FormatDuration((P.todo - done) / rate).c_str() : "?"));
     if (!P.cost_said && rate > 0 && (P.todo - done) / rate > plan.cost_warn)
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
-                             "cost: %" PetscInt_FMT " points to compute at %.3g s a point (measured over the first %" PetscInt_FMT "): expected %s more; to shorten it: fewer points (a coarser -sweep_x or -sweep), more "
-                             "MPI ranks, or a cheaper -ts_type/-ts_dt/-beam_nodes; a killed sweep resumes where it stopped\n",
-                             P.todo, 1 / rate, done, FormatDuration((P.todo - done) / rate).c_str()));
+      PetscCall(
+        PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
+                     "cost: %" PetscInt_FMT
+                     " points to compute at %.3g s a point (measured over the first %" PetscInt_FMT
+                     "): expected %s more; to shorten it: fewer points (a coarser -sweep_x or -sweep), more "
+                     "MPI ranks, or a cheaper -ts_type/-ts_dt/-beam_nodes; a killed sweep resumes where it stopped\n",
+                     P.todo, 1 / rate, done, FormatDuration((P.todo - done) / rate).c_str()));
     P.cost_said = true;
     std::fflush(PETSC_STDOUT);
     P.last = now;
@@ -451,7 +497,8 @@ PetscErrorCode SweepPoll(SweepStore &S, SweepProgress &P, const SweepPlan &plan,
 
 // The farm: each group takes the next pending case; its leader journals the row (a failed
 // case too) and keeps it for the gather at the end.
-PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::vector<PetscInt> &todo, int run, const std::string &output, SweepStore &S, SweepProgress &P, SweepShare *mine)
+PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::vector<PetscInt> &todo, int run,
+                             const std::string &output, SweepStore &S, SweepProgress &P, SweepShare *mine)
 {
   SweepJournalWriter journal;
   const PetscMPIInt  rank = farm.world_rank;
@@ -463,7 +510,7 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
   PetscCallMPI(MPI_Bcast(&journal.signature, 1, MPI_UINT64_T, 0, farm.world));
   journal.ncols = (uint32_t)SweepColumns(plan).size();
   SweepReuse reuse; // the structure's scenario and system, kept across this rank's points
-  auto run_case = [&](MPI_Comm group, PetscInt t) -> PetscErrorCode {
+  auto       run_case = [&](MPI_Comm group, PetscInt t) -> PetscErrorCode {
     const PetscInt      index = todo[t];
     std::vector<double> row;
     std::string         reason;
@@ -480,8 +527,14 @@ PetscErrorCode SweepRunCases(TaskFarm &farm, const SweepPlan &plan, const std::v
         ++mine->failed;
         mine->reasons[index] = reason;
         if (mine->shown < show) {
-          std::fprintf(stderr, "sweep: point %" PetscInt_FMT " (%s) failed, status %d (%s): %s\n", index, SweepCaseText(plan, index, false).c_str(), status, SweepStatusName(status), reason.c_str());
-          if (++mine->shown == show) std::fprintf(stderr, "sweep: further failed points of rank %d are not shown (see /results/status and /results/reason)\n", rank);
+          const std::string point = SweepCaseText(plan, index, false);
+          std::fprintf(stderr, "sweep: point %" PetscInt_FMT " (%s) failed, status %d (%s): %s\n", index, point.c_str(),
+                             status, SweepStatusName(status), reason.c_str());
+          if (++mine->shown == show)
+            std::fprintf(stderr,
+                               "sweep: further failed points of rank %d are not shown (see /results/status and "
+                                     "/results/reason)\n",
+                               rank);
           std::fflush(stderr);
         }
       }
@@ -537,27 +590,34 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
     all.resize(total);
     all_text.resize(ttotal);
   }
-  PetscCallMPI(MPI_Gatherv(mine.rows.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm));
-  PetscCallMPI(MPI_Gatherv(text.data(), nt, MPI_CHAR, all_text.data(), tcounts.data(), tdispls.data(), MPI_CHAR, 0, comm));
+  PetscCallMPI(
+    MPI_Gatherv(mine.rows.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm));
+  PetscCallMPI(
+    MPI_Gatherv(text.data(), nt, MPI_CHAR, all_text.data(), tcounts.data(), tdispls.data(), MPI_CHAR, 0, comm));
   if (rank == 0) {
-    for (size_t p = 0; p + S.ncols <= all.size(); p += S.ncols) S.rows[(PetscInt)all[p]] = std::vector<double>(all.begin() + p, all.begin() + p + S.ncols);
+    for (size_t p = 0; p + S.ncols <= all.size(); p += S.ncols)
+      S.rows[(PetscInt)all[p]] = std::vector<double>(all.begin() + p, all.begin() + p + S.ncols);
     size_t p = 0;
     while (p < all_text.size()) {
       size_t tab = p, end = p;
       while (tab < all_text.size() && all_text[tab] != '\t') ++tab;
       end = tab;
       while (end < all_text.size() && all_text[end] != '\n') ++end;
-      if (tab < end) S.reasons[(PetscInt)std::strtoll(std::string(all_text.begin() + p, all_text.begin() + tab).c_str(), nullptr, 10)] = std::string(all_text.begin() + tab + 1, all_text.begin() + end);
+      if (tab < end)
+        S.reasons[(PetscInt)std::strtoll(std::string(all_text.begin() + p, all_text.begin() + tab).c_str(), nullptr,
+                                         10)] = std::string(all_text.begin() + tab + 1, all_text.begin() + end);
       p = end + 1;
     }
-    if ((PetscInt)S.rows.size() == S.ncases) PetscCall(SweepUqCompute(S, &S.uq)); // a sampled sweep's statistics, written with the file
+    if ((PetscInt)S.rows.size() == S.ncases)
+      PetscCall(SweepUqCompute(S, &S.uq)); // a sampled sweep's statistics, written with the file
   }
   // The complete file: a failed write (a full disk) fails every rank together (rank 0's message)
   PetscErrorCode ierr   = rank == 0 ? SweepStoreClose(S) : 0;
   PetscInt       failed = ierr ? 1 : 0;
   PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
   PetscCall(ierr);
-  PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "rank 0 could not write the sweep's file (its message is the run's)");
+  PetscCheck(!failed, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+             "rank 0 could not write the sweep's file (its message is the run's)");
   PetscFunctionReturn(0);
 }
 
@@ -565,7 +625,9 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
 // cost (journal appends on the leaders; rank 0's hand-outs, progress and rewrites), and
 // how many points of the file failed (printed also with -sweep_quiet). Every rank learns
 // the number of failed points (the exit status).
-PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P, double setup, double t0, double farm_time, const std::string &output, const SweepStore &S, PetscInt *failed_total)
+PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P,
+                           double setup, double t0, double farm_time, const std::string &output, const SweepStore &S,
+                           PetscInt *failed_total)
 {
   PetscMPIInt rank, size;
   PetscInt    computed = mine.computed, failed = 0, absurd = 0, absurd_wall = 0, off_face = 0;
@@ -603,52 +665,84 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
         if (wall >= 0 && kv.second[wall] == 1) ++absurd_wall;
       }
     }
-    for (auto &kv : count) by_status += (by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " + std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
+    for (auto &kv : count)
+      by_status += (by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " +
+                   std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
   }
   PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
   *failed_total        = failed;
   const double elapsed = MPI_Wtime() - t0;
   if (rank != 0) PetscFunctionReturn(0);
   if (!plan.quiet) {
-    if (P.todo == 0) PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: all %" PetscInt_FMT " points were already done; nothing to compute\n", P.ncases));
+    if (P.todo == 0)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "sweep: all %" PetscInt_FMT " points were already done; nothing to compute\n", P.ncases));
     else {
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: computed %s in %.3f s (%.4g points/s) on %d rank(s), %" PetscInt_FMT " already done\n", Points(computed).c_str(), elapsed, computed / elapsed, size, P.already));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "sweep: computed %s in %.3f s (%.4g points/s) on %d rank(s), %" PetscInt_FMT
+                            " already done\n",
+                            Points(computed).c_str(), elapsed, computed / elapsed, size, P.already));
       // Load balance: the share of the farm's time the ranks spent in cases
       // (below 100%: waiting for the last cases, journaling, live rewrites).
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: ranks busy %.1f%% of the time on average, %.1f%% the least busy\n", 100 * busy_sum / (size * farm_time), 100 * busy_min / farm_time));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: ranks busy %.1f%% of the time on average, %.1f%% the least busy\n",
+                            100 * busy_sum / (size * farm_time), 100 * busy_min / farm_time));
       // The farm's own cost per point: the rest of the ranks' time (hand-out, waiting for
       // the counter, journal, rank 0's progress lines and rewrites, the last cases' tail).
       // (hand-out: the counter and the broadcast in a group; journal: the leaders' appends;
       // rewrites: rank 0's live rewrites of the file; the rest: waiting for the last cases).
       if (computed > 0)
-        PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                              "sweep: per point: compute %.4g ms; farm overhead %.4g ms (%.2f%% of the ranks' time): hand-out %.4g ms, journal %.4g ms, rewrites %.4g ms (%d), idle at the end %.4g ms; set-up %.3f s\n",
-                              1e3 * busy_sum / computed, 1e3 * (size * farm_time - busy_sum) / computed, 100 * (size * farm_time - busy_sum) / (size * farm_time), 1e3 * handout_sum / computed,
-                              1e3 * journal_sum / computed, 1e3 * S.write_total / computed, S.writes, 1e3 * (size * farm_time - busy_sum - handout_sum - journal_sum - S.write_total) / computed, setup));
+        PetscCall(
+          PetscPrintf(PETSC_COMM_SELF,
+                      "sweep: per point: compute %.4g ms; farm overhead %.4g ms (%.2f%% of the ranks' time): hand-out "
+                      "%.4g ms, journal %.4g ms, rewrites %.4g ms (%d), idle at the end %.4g ms; set-up %.3f s\n",
+                      1e3 * busy_sum / computed, 1e3 * (size * farm_time - busy_sum) / computed,
+                      100 * (size * farm_time - busy_sum) / (size * farm_time), 1e3 * handout_sum / computed,
+                      1e3 * journal_sum / computed, 1e3 * S.write_total / computed, S.writes,
+                      1e3 * (size * farm_time - busy_sum - handout_sum - journal_sum - S.write_total) / computed,
+                      setup));
       if (computed > 0) // solvers/ts_stepper.hpp: a point on a structure already run reuses its TS, layout and vectors
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: integrator contexts: %" PetscInt_FMT " built, %" PetscInt_FMT " runs reused one (all ranks, the probe included)\n", contexts[0], contexts[1]));
-      if (computed > 0) // studies/sweep.hpp, SweepReuse: a point on the structure of the one before reads only its own options and reuses the system
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: per structure: %" PetscInt_FMT " points read every option, %" PetscInt_FMT " only their own axes' (ball, bat, impact, ...); %" PetscInt_FMT " beam system(s) built (all ranks)\n", reuse[0],
-                              reuse[1], reuse[2]));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                              "sweep: integrator contexts: %" PetscInt_FMT " built, %" PetscInt_FMT
+                              " runs reused one (all ranks, the probe included)\n",
+                              contexts[0], contexts[1]));
+      if (computed > 0) // studies/sweep.hpp, SweepReuse: a point on the structure of the one before reads only its own
+                        // options and reuses the system
+        PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                              "sweep: per structure: %" PetscInt_FMT " points read every option, %" PetscInt_FMT
+                              " only their own axes' (ball, bat, impact, ...); %" PetscInt_FMT
+                              " beam system(s) built (all ranks)\n",
+                              reuse[0], reuse[1], reuse[2]));
     }
   }
   if (failed)
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points failed: %s; their rows have status != 0, the reason in /results/reason and NaN numbers\n", failed, P.ncases,
-                           by_status.c_str()));
+    PetscCall(
+      PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
+                   "sweep: %" PetscInt_FMT " of %" PetscInt_FMT
+                   " points failed: %s; their rows have status != 0, the reason in /results/reason and NaN numbers\n",
+                   failed, P.ncases, by_status.c_str()));
   if (off_face) // a map over a racket's face: the product of its axes reaches beyond the head's outline
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points are off the racket's face (outside the head's outline): no impact there, status %d and NaN numbers; not failed\n", off_face,
-                           P.ncases, (int)SweepOffFace));
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
+                           "sweep: %" PetscInt_FMT " of %" PetscInt_FMT
+                           " points are off the racket's face (outside the head's outline): no impact there, status %d "
+                           "and NaN numbers; not failed\n",
+                           off_face, P.ncases, (int)SweepOffFace));
   // Points whose numbers exist but mean nothing physically (-ball_radius given): counted like
   // the failed ones, also with -sweep_quiet.
   if (absurd)
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
-                           "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points compressed the ball beyond its radius (-ball_radius): physically absurd, the contact law far outside its range; "
-                           "their rows have status 0 but compression_beyond_radius = 1 in /results: leave them out of plots and fits\n",
+                           "sweep: %" PetscInt_FMT " of %" PetscInt_FMT
+                           " points compressed the ball beyond its radius (-ball_radius): physically absurd, the "
+                           "contact law far outside its range; "
+                           "their rows have status 0 but compression_beyond_radius = 1 in /results: leave them out of "
+                           "plots and fits\n",
                            absurd, P.ncases));
   if (absurd_wall)
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
-                           "sweep: %" PetscInt_FMT " of %" PetscInt_FMT " points pushed the barrel wall in by more than %g of its radius: physically absurd, the wall's linear model far outside its range; "
-                           "their rows have status 0 but wall_deflection_large = 1 in /results: leave them out of plots and fits\n",
+                           "sweep: %" PetscInt_FMT " of %" PetscInt_FMT
+                           " points pushed the barrel wall in by more than %g of its radius: physically absurd, the "
+                           "wall's linear model far outside its range; "
+                           "their rows have status 0 but wall_deflection_large = 1 in /results: leave them out of "
+                           "plots and fits\n",
                            absurd_wall, P.ncases, (double)kWallDeflectionLimit));
   if (!plan.quiet) PetscCall(SweepUqPrint(S, S.uq));
   if (!plan.quiet) PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s (%s)\n", output.c_str(), Points(P.ncases).c_str()));
@@ -661,7 +755,7 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
 // was opened); after SweepStoreClose there is nothing left to release.
 struct SweepStoreGuard {
   SweepStore &store;
-  explicit SweepStoreGuard(SweepStore &s) : store(s) {}
+  explicit SweepStoreGuard(SweepStore &s) : store(s) { }
   ~SweepStoreGuard() { SweepStoreRelease(store); }
   SweepStoreGuard(const SweepStoreGuard &)            = delete;
   SweepStoreGuard &operator=(const SweepStoreGuard &) = delete;
@@ -690,7 +784,8 @@ PetscErrorCode TaskSweep(MPI_Comm comm, const std::string &output)
     ~NotesGuard() { SweepNotesAbandon(); } // an error return: PETSc's printer back
   } notes_guard;
   PetscCall(SweepNotesBegin()); // each point's notes said once for the sweep (studies/sweep_notes.hpp)
-  PetscCheck(!output.empty(), comm, PETSC_ERR_ARG_WRONG, "-task sweep writes its results to a file: give -output FILE.h5 (not 'none')");
+  PetscCheck(!output.empty(), comm, PETSC_ERR_ARG_WRONG,
+             "-task sweep writes its results to a file: give -output FILE.h5 (not 'none')");
   PetscCall(SweepReadOptions(comm, &base, &plan, &candidates));
   PetscCall(TaskFarmCreate(comm, plan.ranks_per_case, &farm));
   PetscCall(SweepProbe(farm, plan, candidates, &probe));

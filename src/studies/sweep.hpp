@@ -42,7 +42,8 @@ std::vector<SweepColumn> SweepColumns(const SweepPlan &plan);
 // (may be NULL): what the rank keeps across its cases; the row is the same with or without it,
 // bit for bit.
 struct SweepReuse;
-PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row, std::string *reason, ImpactResult *result, SweepReuse *reuse = nullptr);
+PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index, std::vector<double> *row,
+                            std::string *reason, ImpactResult *result, SweepReuse *reuse = nullptr);
 
 // What a rank keeps across the points it runs, so that a point redoes only what changes with
 // it: the structure's scenario (only the point's parts read again: SweepCaseScenario) and the
@@ -54,7 +55,7 @@ struct SweepReuse {
   ImpactStructure    structure;
   PetscReal          shell_radius = 0; // m, the contact radius the structure's system has
   PetscReal          patch_radius = 0; // m, the string bed's load disc the structure's system has
-  PetscInt           systems = 0;      // systems built (structure.sys set by a run)
+  PetscInt           systems      = 0; // systems built (structure.sys set by a run)
 };
 
 // The status of a failed run from its PETSc error code (SweepStatus).

@@ -9,7 +9,12 @@
 
 namespace beamimpact {
 
-enum FarmCounter { FarmNext = 0, FarmDone = 1, FarmStop = 2, FarmCounters = 3 };
+enum FarmCounter {
+  FarmNext     = 0,
+  FarmDone     = 1,
+  FarmStop     = 2,
+  FarmCounters = 3
+};
 
 static PetscErrorCode FarmFetchAdd(TaskFarm &f, FarmCounter which, int64_t add, int64_t *old)
 {
@@ -30,10 +35,12 @@ PetscErrorCode TaskFarmCreate(MPI_Comm world, PetscInt ranks_per_case, TaskFarm 
   PetscCallMPI(MPI_Comm_rank(world, &farm->world_rank));
   PetscCallMPI(MPI_Comm_size(world, &farm->world_size));
   PetscCheck(ranks_per_case >= 1 && ranks_per_case <= farm->world_size, world, PETSC_ERR_ARG_OUTOFRANGE,
-             "-sweep_ranks_per_case %" PetscInt_FMT " is not allowed with %d MPI ranks: use 1 <= ranks_per_case <= %d", ranks_per_case, farm->world_size, farm->world_size);
+             "-sweep_ranks_per_case %" PetscInt_FMT " is not allowed with %d MPI ranks: use 1 <= ranks_per_case <= %d",
+             ranks_per_case, farm->world_size, farm->world_size);
   farm->ranks_per_case = ranks_per_case;
   farm->groups         = farm->world_size / ranks_per_case;
-  const int color      = farm->world_rank < farm->groups * ranks_per_case ? (int)(farm->world_rank / ranks_per_case) : MPI_UNDEFINED;
+  const int color      = farm->world_rank < farm->groups * ranks_per_case ? (int)(farm->world_rank / ranks_per_case)
+                                                                          : MPI_UNDEFINED;
   PetscCallMPI(MPI_Comm_split(world, color, farm->world_rank, &farm->group));
   if (farm->group != MPI_COMM_NULL) {
     PetscCallMPI(MPI_Comm_rank(farm->group, &farm->group_rank));
@@ -66,7 +73,9 @@ static PetscErrorCode FarmStopAll(TaskFarm &f, PetscInt ntasks)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<PetscErrorCode(MPI_Comm, PetscInt)> &run, const std::function<PetscErrorCode(PetscInt)> &between)
+PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks,
+                           const std::function<PetscErrorCode(MPI_Comm, PetscInt)> &run,
+                           const std::function<PetscErrorCode(PetscInt)>           &between)
 {
   int64_t        done = 0, stop = 0;
   PetscErrorCode failed = 0; // rank 0: between's error, returned once its group has stopped too
@@ -110,7 +119,8 @@ PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<
       PetscCall(failed);
     }
     PetscCall(FarmFetchAdd(farm, FarmStop, 0, &stop));
-    PetscCheck(!stop, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "the sweep was stopped by rank 0's error (its message is the run's)");
+    PetscCheck(!stop, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+               "the sweep was stopped by rank 0's error (its message is the run's)");
     if (done >= ntasks) break;
     std::this_thread::sleep_for(std::chrono::duration<double>(farm.world_rank == 0 ? std::min(nap, 2e-2) : nap));
     nap = std::min(nap_max, nap * 1.5);

@@ -13,13 +13,13 @@ namespace beamimpact {
 // MPI_Fetch_and_op and broadcasts it in its group. Ranks left over when the world
 // size is not a multiple of ranks_per_case stay idle.
 struct TaskFarm {
-  MPI_Comm    world = MPI_COMM_NULL;
-  MPI_Comm    group = MPI_COMM_NULL; // this rank's group; MPI_COMM_NULL on an idle rank
+  MPI_Comm    world      = MPI_COMM_NULL;
+  MPI_Comm    group      = MPI_COMM_NULL; // this rank's group; MPI_COMM_NULL on an idle rank
   PetscMPIInt world_rank = 0, world_size = 1, group_rank = 0, group_size = 1;
   PetscInt    ranks_per_case = 1, groups = 1;
-  MPI_Win     win = MPI_WIN_NULL;
-  void       *base = nullptr; // the counters (world rank 0 only)
-  double      handout = 0;     // s this rank spent taking tasks from the counter and passing them on
+  MPI_Win     win     = MPI_WIN_NULL;
+  void       *base    = nullptr; // the counters (world rank 0 only)
+  double      handout = 0;       // s this rank spent taking tasks from the counter and passing them on
 };
 PetscErrorCode TaskFarmCreate(MPI_Comm world, PetscInt ranks_per_case, TaskFarm *farm);
 // Runs tasks 0..ntasks-1: run(group, task) on every rank of the group that
@@ -30,7 +30,9 @@ PetscErrorCode TaskFarmCreate(MPI_Comm world, PetscInt ranks_per_case, TaskFarm 
 // file on a full disk), no further task is handed out and every rank returns an error once its
 // current task is done: rank 0 with between's, the others saying rank 0 stopped the farm (so
 // that they all end together, app/main.cpp, not in MPI_Abort waiting for rank 0).
-PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks, const std::function<PetscErrorCode(MPI_Comm, PetscInt)> &run, const std::function<PetscErrorCode(PetscInt)> &between);
+PetscErrorCode TaskFarmRun(TaskFarm &farm, PetscInt ntasks,
+                           const std::function<PetscErrorCode(MPI_Comm, PetscInt)> &run,
+                           const std::function<PetscErrorCode(PetscInt)>           &between);
 PetscErrorCode TaskFarmDestroy(TaskFarm *farm);
 
 } // namespace beamimpact

@@ -14,13 +14,17 @@ namespace beamimpact {
 
 namespace {
 
-enum class NotesMode { Off, Remember, Collect };
+enum class NotesMode {
+  Off,
+  Remember,
+  Collect
+};
 
 struct NotesState {
-  NotesMode                      mode = NotesMode::Off;
-  PetscErrorCode                 (*print)(FILE *, const char[], va_list) = nullptr; // PETSc's printer
-  std::set<std::string>          said;  // printed during the set-up
-  std::set<std::string>          point; // the current point's
+  NotesMode mode                                         = NotesMode::Off;
+  PetscErrorCode (*print)(FILE *, const char[], va_list) = nullptr; // PETSc's printer
+  std::set<std::string>           said;                             // printed during the set-up
+  std::set<std::string>           point;                            // the current point's
   std::map<std::string, PetscInt> counts;
 };
 
@@ -120,7 +124,8 @@ PetscErrorCode SweepNotesEnd(MPI_Comm world, PetscInt npoints)
     }
     for (auto &kv : sum)
       if (!s.said.count(kv.first))
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "note (on %" PetscInt_FMT " of %" PetscInt_FMT " points): %s\n", std::min(kv.second, npoints), npoints, kv.first.c_str()));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "note (on %" PetscInt_FMT " of %" PetscInt_FMT " points): %s\n",
+                              std::min(kv.second, npoints), npoints, kv.first.c_str()));
   }
   s.said.clear(), s.counts.clear();
   PetscFunctionReturn(0);

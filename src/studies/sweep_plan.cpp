@@ -61,13 +61,14 @@ bool SweepPlanSample(SweepPlan *plan, std::string *why)
   for (size_t k = 0; k < plan->axes.size(); ++k)
     if (plan->axes[k].sampled) plan->sampled.push_back(k);
   if (plan->sampled.empty()) return true;
-  const int           d   = (int)plan->sampled.size();
-  const PetscInt      n   = plan->samples;
+  const int           d = (int)plan->sampled.size();
+  const PetscInt      n = plan->samples;
   std::vector<double> u, rows;
   if (!SampleUnitDesign(plan->design, (uint64_t)plan->seed, n, plan->sobol ? 2 * d : d, &u, why)) return false;
   rows = plan->sobol ? SampleSaltelliRows(u, n, d) : u;
   plan->sample_rows.resize(rows.size());
-  for (size_t r = 0; r < rows.size(); ++r) plan->sample_rows[r] = plan->axes[plan->sampled[r % d]].dist.Quantile(rows[r]);
+  for (size_t r = 0; r < rows.size(); ++r)
+    plan->sample_rows[r] = plan->axes[plan->sampled[r % d]].dist.Quantile(rows[r]);
   for (int k = 0; k < d; ++k) {
     SweepAxis &a = plan->axes[plan->sampled[k]];
     a.values.clear();
@@ -77,7 +78,6 @@ bool SweepPlanSample(SweepPlan *plan, std::string *why)
 }
 
 static bool ParseReal(const std::string &text, PetscReal *v) { return TextFiniteNumber(text, v); }
-
 
 static std::string Round15(double raw)
 {
@@ -89,7 +89,8 @@ static std::string Round15(double raw)
 static const double kMaxAxisPoints = 1e8; // points of one axis
 
 // "start:stop:count[:log]", both ends included.
-static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, std::string *why, const std::string &unit)
+static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, std::string *why,
+                       const std::string &unit)
 {
   std::vector<std::string> parts;
   std::stringstream        ss(spec);
@@ -99,7 +100,8 @@ static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, 
   if (!spec.empty() && spec.back() == ':') parts.push_back("");
   const bool log = parts.size() == 4 && parts[3] == "log";
   if (parts.size() != 3 && !log) {
-    *why = parts.size() == 4 ? "the fourth field of start:stop:count:log must be 'log', not '" + parts[3] + "'" : "a range is start:stop:count or start:stop:count:log (numbers separated by ':')";
+    *why = parts.size() == 4 ? "the fourth field of start:stop:count:log must be 'log', not '" + parts[3] + "'"
+                             : "a range is start:stop:count or start:stop:count:log (numbers separated by ':')";
     return false;
   }
   PetscReal a, b;
@@ -115,7 +117,10 @@ static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, 
   }
   if (count > kMaxAxisPoints) {
     char text[160];
-    std::snprintf(text, sizeof text, "count %s of start:stop:count is too large: an axis has at most %.0e points (each point is an impact of milliseconds to seconds)", c.c_str(), kMaxAxisPoints);
+    std::snprintf(text, sizeof text,
+                  "count %s of start:stop:count is too large: an axis has at most %.0e points (each point is an impact "
+                  "of milliseconds to seconds)",
+                  c.c_str(), kMaxAxisPoints);
     *why = text;
     return false;
   }
@@ -128,13 +133,16 @@ static bool ParseRange(const std::string &spec, std::vector<PetscReal> *values, 
   // doubles of 0, 0.01, ..., 1.1 (what -impact_x 0.55 gives), not 1 ulp off.
   for (long k = 0; k < n; ++k) {
     const double s   = (double)k / (double)std::max(1L, n - 1);
-    const double raw = k == n - 1 && n > 1 ? b : log ? a * std::pow(b / a, s) : a + (double)k * ((b - a) / (double)std::max(1L, n - 1));
+    const double raw = k == n - 1 && n > 1 ? b
+                     : log                 ? a * std::pow(b / a, s)
+                                           : a + (double)k * ((b - a) / (double)std::max(1L, n - 1));
     values->push_back(std::strtod(Round15(raw).c_str(), nullptr));
   }
   return true;
 }
 
-bool SweepParsePoints(const std::string &spec_in, std::vector<PetscReal> *values, std::string *why, const std::string &unit, const std::string &separators)
+bool SweepParsePoints(const std::string &spec_in, std::vector<PetscReal> *values, std::string *why,
+                      const std::string &unit, const std::string &separators)
 {
   const std::string spec = Trim(spec_in);
   const std::string u    = unit.empty() ? "" : " (" + unit + ")";
@@ -170,7 +178,11 @@ std::string SweepOptionUnit(const std::string &name)
 // Options that belong to the task or the sweep itself, not to an impact.
 static bool ReservedAxis(const std::string &name)
 {
-  static const std::set<std::string> exact = {"task", "output", "options_file", "help", "version", "rigid_loss_fraction", "reference", "allow_unused_options", "error_traceback"};
+  static const std::set<std::string> exact = {"task",           "output",
+                                              "options_file",   "help",
+                                              "version",        "rigid_loss_fraction",
+                                              "reference",      "allow_unused_options",
+                                              "error_traceback"};
   return exact.count(name) || name.compare(0, 5, "sweep") == 0;
 }
 
@@ -209,11 +221,18 @@ static std::vector<std::string> SplitOutsideQuotes(const std::string &text, char
 }
 
 // The kinds of value an option takes, from its row in its module's table (none: not known).
-enum class AxisKind { Unknown, Number, Text };
+enum class AxisKind {
+  Unknown,
+  Number,
+  Text
+};
 static AxisKind KindOfOption(const std::string &name)
 {
   const OptionSpec *s = OptionSpecFind(name);
-  if (s) return s->kind == OptionKind::Choice || s->kind == OptionKind::Text || s->kind == OptionKind::File ? AxisKind::Text : AxisKind::Number;
+  if (s)
+    return s->kind == OptionKind::Choice || s->kind == OptionKind::Text || s->kind == OptionKind::File
+           ? AxisKind::Text
+           : AxisKind::Number;
   return SweepOptionUnit(name).empty() ? AxisKind::Unknown : AxisKind::Number;
 }
 
@@ -227,7 +246,8 @@ static bool ParseLabels(const std::string &spec, std::vector<std::string> *label
     std::string v = item;
     if (v.size() >= 2 && IsQuote(v.front()) && v.back() == v.front()) v = v.substr(1, v.size() - 2);
     else if (v.find('\'') != std::string::npos || v.find('"') != std::string::npos) {
-      *why = open ? "a quote is not closed (a text value is 'v' or \"v\")" : "'" + item + "' has a quote inside: a quoted value is the whole entry, 'v' or \"v\"";
+      *why = open ? "a quote is not closed (a text value is 'v' or \"v\")"
+                  : "'" + item + "' has a quote inside: a quoted value is the whole entry, 'v' or \"v\"";
       return false;
     }
     if (Trim(v).empty()) {
@@ -259,7 +279,9 @@ static bool ParseAxis(const std::string &item, SweepAxis *a, std::string *why)
 {
   const size_t eq = item.find('=');
   if (item.empty() || eq == std::string::npos) {
-    *why = item.empty() ? "an empty axis (axes are NAME=SPEC separated by ',')" : "'" + item + "' is not NAME=SPEC (e.g. impact_x=0:1.1:111, ball_speed=10;20;30 or ts_type=rk;cn)";
+    *why = item.empty()
+           ? "an empty axis (axes are NAME=SPEC separated by ',')"
+           : "'" + item + "' is not NAME=SPEC (e.g. impact_x=0:1.1:111, ball_speed=10;20;30 or ts_type=rk;cn)";
     return false;
   }
   a->name = Trim(item.substr(0, eq));
@@ -275,10 +297,11 @@ static bool ParseAxis(const std::string &item, SweepAxis *a, std::string *why)
     return false;
   }
   if (a->spec.empty()) {
-    *why = a->name + " has no values: " + a->name + "=start:stop:count, start:stop:count:log, v1;v2;... or a distribution (normal:MEAN:STD, uniform:LO:HI, ...)";
+    *why = a->name + " has no values: " + a->name +
+           "=start:stop:count, start:stop:count:log, v1;v2;... or a distribution (normal:MEAN:STD, uniform:LO:HI, ...)";
     return false;
   }
-  const AxisKind kind   = KindOfOption(a->name);
+  const AxisKind kind = KindOfOption(a->name);
   std::string    w;
   if (SampleSpecIsDistribution(a->spec)) { // a sampled axis: its values are drawn later (SweepPlanSample)
     const OptionSpec *s = OptionSpecFind(a->name);
@@ -290,8 +313,9 @@ static bool ParseAxis(const std::string &item, SweepAxis *a, std::string *why)
     if (!a->sampled) *why = a->name + "=" + a->spec + ": " + w;
     return a->sampled;
   }
-  const bool     quoted = a->spec.find('\'') != std::string::npos || a->spec.find('"') != std::string::npos;
-  const bool     text   = kind == AxisKind::Text || quoted || (kind == AxisKind::Unknown && a->spec.find(':') == std::string::npos && !AllNumbers(a->spec));
+  const bool quoted = a->spec.find('\'') != std::string::npos || a->spec.find('"') != std::string::npos;
+  const bool text   = kind == AxisKind::Text || quoted ||
+                    (kind == AxisKind::Unknown && a->spec.find(':') == std::string::npos && !AllNumbers(a->spec));
   if (text) {
     a->unit.clear();
     if (!ParseLabels(a->spec, &a->labels, &w)) {
@@ -384,7 +408,8 @@ PetscErrorCode SweepCheckTextAxis(const SweepAxis &a, std::string *why)
     if (known) continue;
     std::string list;
     for (const std::string &c : allowed) list += (list.empty() ? "" : ", ") + c;
-    *why = a.name + "=" + a.spec + ": '" + v + "' is not " + (a.name == "ts_type" ? "a TS type of this program" : "a choice of -" + a.name) + ": use one of " + list;
+    *why = a.name + "=" + a.spec + ": '" + v + "' is not " +
+           (a.name == "ts_type" ? "a TS type of this program" : "a choice of -" + a.name) + ": use one of " + list;
     break;
   }
   PetscFunctionReturn(0);
@@ -404,29 +429,54 @@ const OptionModule kSweepOptions = {
   "sweep",
   "Sweep: many impacts farmed out over MPI ranks (-task sweep)",
   {
-    OptionText("-sweep", "Axes NAME=SPEC[,NAME=SPEC...]: NAME any option without its dash, numeric (impact_x, ball_speed, beam_thickness, beam_nodes, ts_dt, ...) or text (ts_type, beam_theory, "
-                         "beam_left, ball_law, ts_rk_type, ...), SPEC start:stop:count, start:stop:count:log or v1;v2;... (a text value quoted, 'v', stays text: ts_rk_type='4';'3'); the cases are "
-                         "their product, the last axis varying fastest. A numeric axis may be sampled from a distribution instead (with -sweep_samples): normal:MEAN:STD, "
-                         "truncnormal:MEAN:STD:LO:HI, uniform:LO:HI, lognormal:MEAN:STD, triangular:LO:MODE:HI, a table V1@W1;V2@W2;... (relative weights) or csv:FILE[:COLUMN] "
-                         "(measured values, drawn with equal probability); the grid axes' points times the sample's rows (docs/uncertainty.md)"),
-    OptionText("-sweep_x", "Impact points (m), shorthand for -sweep impact_x=SPEC: start:stop:count (both ends included) or x1,x2,..."),
-    OptionInt("-sweep_ranks_per_case", "Ranks that solve one impact together (the beam's DMDA is distributed over them)", "1", AtLeast(1)),
-    WithRangeText(OptionReal("-rigid_loss_fraction", "1", "Loss fraction f of the rigid-body model, Eq. (11), for the rigid_acor column", "0", Between(0, 1, false, true)),
+    OptionText("-sweep", "Axes NAME=SPEC[,NAME=SPEC...]: NAME any option without its dash, numeric (impact_x, "
+                         "ball_speed, beam_thickness, beam_nodes, ts_dt, ...) or text (ts_type, beam_theory, "
+                         "beam_left, ball_law, ts_rk_type, ...), SPEC start:stop:count, start:stop:count:log or "
+                         "v1;v2;... (a text value quoted, 'v', stays text: ts_rk_type='4';'3'); the cases are "
+                         "their product, the last axis varying fastest. A numeric axis may be sampled from a "
+                         "distribution instead (with -sweep_samples): normal:MEAN:STD, "
+                         "truncnormal:MEAN:STD:LO:HI, uniform:LO:HI, lognormal:MEAN:STD, triangular:LO:MODE:HI, a "
+                         "table V1@W1;V2@W2;... (relative weights) or csv:FILE[:COLUMN] "
+                         "(measured values, drawn with equal probability); the grid axes' points times the sample's "
+                         "rows (docs/uncertainty.md)"),
+    OptionText("-sweep_x", "Impact points (m), shorthand for -sweep impact_x=SPEC: start:stop:count (both ends "
+                           "included) or x1,x2,..."),
+    OptionInt("-sweep_ranks_per_case",
+              "Ranks that solve one impact together (the beam's DMDA is distributed over them)", "1", AtLeast(1)),
+    WithRangeText(OptionReal("-rigid_loss_fraction", "1",
+                             "Loss fraction f of the rigid-body model, Eq. (11), for the rigid_acor column", "0",
+                             Between(0, 1, false, true)),
                   "a fraction of the incident energy, 0 <= f < 1"),
-    OptionFlag("-sweep_quiet", "No progress or summary lines (errors, the count of failed points and of points compressed beyond -ball_radius are still reported)"),
+    OptionFlag("-sweep_quiet", "No progress or summary lines (errors, the count of failed points and of points "
+                               "compressed beyond -ball_radius are still reported)"),
     OptionFlag("-sweep_restart", "Discard an existing -output file and its journal and start the sweep over"),
-    OptionFlag("-sweep_retry_failed", "On resuming, compute again the points that failed (status != 0) instead of keeping their rows"),
+    OptionFlag("-sweep_retry_failed",
+               "On resuming, compute again the points that failed (status != 0) instead of keeping their rows"),
     OptionReal("-sweep_progress_interval", "s", "Seconds between progress lines on rank 0", "2", Positive()),
-    OptionReal("-sweep_write_interval", "s", "Minimum seconds between rewrites of -output while the sweep runs (0: as often as a 5% cost cap on rank 0 allows)", "5", NonNegative()),
-    OptionInt("-sweep_samples", "Points N of the sample of the sampled axes (-sweep NAME=normal:..., uniform:..., ...); with -sweep_sobol N (d + 2) runs for d sampled axes", "", Between(1, 1e8)),
-    OptionChoice("-sweep_sampling", "How the sample covers the unit cube before the inverse CDFs: random (independent draws), lhs (Latin hypercube), sobol (GSL's Sobol' sequence, "
-                                     "at most 40 dimensions, digitally shifted from -sweep_seed) or halton (GSL's, shifted modulo 1)",
+    OptionReal("-sweep_write_interval", "s",
+               "Minimum seconds between rewrites of -output while the sweep runs (0: as often as a 5% cost cap on rank "
+               "0 allows)",
+               "5", NonNegative()),
+    OptionInt("-sweep_samples",
+              "Points N of the sample of the sampled axes (-sweep NAME=normal:..., uniform:..., ...); with "
+              "-sweep_sobol N (d + 2) runs for d sampled axes",
+              "", Between(1, 1e8)),
+    OptionChoice("-sweep_sampling",
+                 "How the sample covers the unit cube before the inverse CDFs: random (independent draws), lhs (Latin "
+                 "hypercube), sobol (GSL's Sobol' sequence, "
+                 "at most 40 dimensions, digitally shifted from -sweep_seed) or halton (GSL's, shifted modulo 1)",
                  {"random", "lhs", "sobol", "halton"}, "random"),
-    OptionInt("-sweep_seed", "Seed of the sample (and of the bootstrap): every point is a pure function of the seed and its index", "0", Between(0, 2147483647)),
-    OptionFlag("-sweep_sobol", "First and total Sobol' indices of every results column for each sampled axis: Saltelli's design (A, B and A_B^(i): N (d + 2) runs), Saltelli 2010 and Jansen "
+    OptionInt("-sweep_seed",
+              "Seed of the sample (and of the bootstrap): every point is a pure function of the seed and its index",
+              "0", Between(0, 2147483647)),
+    OptionFlag("-sweep_sobol", "First and total Sobol' indices of every results column for each sampled axis: "
+                               "Saltelli's design (A, B and A_B^(i): N (d + 2) runs), Saltelli 2010 and Jansen "
                                "estimators with bootstrap intervals, in /sobol"),
-    OptionText("-sweep_exceedance", "Probabilities of exceedance of a sampled sweep, COLUMN>VALUE[,COLUMN<=VALUE,...] (>, >=, <, <=; a /results column), with Wilson's 95% interval, in /exceedance"),
-    OptionInt("-sweep_bootstrap", "Bootstrap resamples of the quantiles' standard errors and the Sobol' indices' intervals", "200", Between(10, 1e5)),
+    OptionText("-sweep_exceedance", "Probabilities of exceedance of a sampled sweep, COLUMN>VALUE[,COLUMN<=VALUE,...] "
+                                    "(>, >=, <, <=; a /results column), with Wilson's 95% interval, in /exceedance"),
+    OptionInt("-sweep_bootstrap",
+              "Bootstrap resamples of the quantiles' standard errors and the Sobol' indices' intervals", "200",
+              Between(10, 1e5)),
   },
 };
 
@@ -468,15 +518,23 @@ static PetscErrorCode SweepPlanSampleFromOptions(MPI_Comm comm, SweepPlan *plan)
   PetscFunctionBeginUser;
   for (const SweepAxis &a : plan->axes) any = any || a.sampled;
   if (!any) {
-    for (const char *o : {"-sweep_samples", "-sweep_sampling", "-sweep_seed", "-sweep_sobol", "-sweep_exceedance", "-sweep_bootstrap"}) {
+    for (const char *o : {"-sweep_samples", "-sweep_sampling", "-sweep_seed", "-sweep_sobol", "-sweep_exceedance",
+                          "-sweep_bootstrap"}) {
       PetscBool given = PETSC_FALSE;
       PetscCall(PetscOptionsHasName(NULL, NULL, o, &given));
-      if (given) PetscCall(PetscPrintf(comm, "note: %s has no effect: no axis of the sweep is sampled (a distribution: -sweep \"impact_x=normal:0.7:0.02\", ...)\n", o));
+      if (given)
+        PetscCall(PetscPrintf(comm,
+                              "note: %s has no effect: no axis of the sweep is sampled (a distribution: -sweep "
+                              "\"impact_x=normal:0.7:0.02\", ...)\n",
+                              o));
     }
     PetscFunctionReturn(0);
   }
-  PetscCheck(plan->samples > 0, comm, PETSC_ERR_ARG_WRONG, "-sweep \"%s\" samples its axes from distributions: give the sample's size, -sweep_samples N (e.g. 1000)", plan->sweep.c_str());
-  PetscCheck(SweepPlanSample(plan, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_sampling %s is not allowed here: %s", SampleDesignName(plan->design), why.c_str());
+  PetscCheck(plan->samples > 0, comm, PETSC_ERR_ARG_WRONG,
+             "-sweep \"%s\" samples its axes from distributions: give the sample's size, -sweep_samples N (e.g. 1000)",
+             plan->sweep.c_str());
+  PetscCheck(SweepPlanSample(plan, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_sampling %s is not allowed here: %s",
+             SampleDesignName(plan->design), why.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -491,32 +549,46 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
   plan->sweep   = set_sweep ? Trim(plan->sweep) : "";
   plan->sweep_x = set_x ? Trim(plan->sweep_x) : "";
   PetscCheck(set_sweep || set_x, comm, PETSC_ERR_ARG_WRONG,
-             "-task sweep needs its axes: -sweep \"NAME=SPEC[,NAME=SPEC...]\" (e.g. -sweep \"impact_x=0:1.1:23,ball_speed=10;20;30\"), or the impact points alone: -sweep_x start:stop:count or -sweep_x x1,x2,... (m)");
+             "-task sweep needs its axes: -sweep \"NAME=SPEC[,NAME=SPEC...]\" (e.g. -sweep "
+             "\"impact_x=0:1.1:23,ball_speed=10;20;30\"), or the impact points alone: -sweep_x start:stop:count or "
+             "-sweep_x x1,x2,... (m)");
   if (set_x) {
     SweepAxis a;
     a.name = "impact_x";
     a.unit = "m";
     a.spec = plan->sweep_x;
-    PetscCheck(!a.spec.empty(), comm, PETSC_ERR_ARG_WRONG, "-sweep_x needs a value: start:stop:count (both ends included) or x1,x2,... (m), e.g. -sweep_x 0:1.1:111");
-    PetscCheck(SweepParsePoints(a.spec, &a.values, &why, "m"), comm, PETSC_ERR_ARG_WRONG, "-sweep_x %s is not allowed: %s", a.spec.c_str(), why.c_str());
-    PetscCheck(!a.values.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_x %s gives no impact points: a sweep needs at least one (count >= 1 in start:stop:count)", a.spec.c_str());
+    PetscCheck(!a.spec.empty(), comm, PETSC_ERR_ARG_WRONG,
+               "-sweep_x needs a value: start:stop:count (both ends included) or x1,x2,... (m), e.g. -sweep_x "
+               "0:1.1:111");
+    PetscCheck(SweepParsePoints(a.spec, &a.values, &why, "m"), comm, PETSC_ERR_ARG_WRONG,
+               "-sweep_x %s is not allowed: %s", a.spec.c_str(), why.c_str());
+    PetscCheck(!a.values.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-sweep_x %s gives no impact points: a sweep needs at least one (count >= 1 in start:stop:count)",
+               a.spec.c_str());
     plan->axes.push_back(a);
   }
   if (set_sweep) {
     std::vector<SweepAxis> more;
-    PetscCheck(!plan->sweep.empty(), comm, PETSC_ERR_ARG_WRONG, "-sweep needs a value: \"NAME=SPEC[,NAME=SPEC...]\", e.g. -sweep \"impact_x=0:1.1:23,ball_speed=10;20;30\"");
-    PetscCheck(SweepParseAxes(plan->sweep, &more, &why), comm, PETSC_ERR_ARG_WRONG, "-sweep \"%s\" is not allowed: %s", plan->sweep.c_str(), why.c_str());
+    PetscCheck(!plan->sweep.empty(), comm, PETSC_ERR_ARG_WRONG,
+               "-sweep needs a value: \"NAME=SPEC[,NAME=SPEC...]\", e.g. -sweep "
+               "\"impact_x=0:1.1:23,ball_speed=10;20;30\"");
+    PetscCheck(SweepParseAxes(plan->sweep, &more, &why), comm, PETSC_ERR_ARG_WRONG, "-sweep \"%s\" is not allowed: %s",
+               plan->sweep.c_str(), why.c_str());
     for (const SweepAxis &a : more) {
-      PetscCheck(!(set_x && a.name == "impact_x"), comm, PETSC_ERR_ARG_INCOMP, "-sweep \"%s\" and -sweep_x %s both vary impact_x: give the impact points once", plan->sweep.c_str(), plan->sweep_x.c_str());
+      PetscCheck(!(set_x && a.name == "impact_x"), comm, PETSC_ERR_ARG_INCOMP,
+                 "-sweep \"%s\" and -sweep_x %s both vary impact_x: give the impact points once", plan->sweep.c_str(),
+                 plan->sweep_x.c_str());
       PetscCall(SweepCheckTextAxis(a, &why)); // the values the program knows are checked here, before any work
-      PetscCheck(why.empty(), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-sweep \"%s\" is not allowed: %s", plan->sweep.c_str(), why.c_str());
+      PetscCheck(why.empty(), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-sweep \"%s\" is not allowed: %s", plan->sweep.c_str(),
+                 why.c_str());
     }
     plan->axes.insert(plan->axes.end(), more.begin(), more.end());
   }
   PetscCall(SweepPlanSampleFromOptions(comm, plan));
   double n = plan->sampled.empty() ? 1 : (double)plan->SampleRows();
   for (const SweepAxis &a : plan->axes) n *= a.sampled ? 1.0 : (double)a.values.size();
-  PetscCheck(n <= 1e9, comm, PETSC_ERR_ARG_OUTOFRANGE, "the sweep has %.3g points (the product of its axes): at most 1e9 are allowed", n);
+  PetscCheck(n <= 1e9, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "the sweep has %.3g points (the product of its axes): at most 1e9 are allowed", n);
   // An axis's own option given too (a scene's options file sets -beam_thickness, say): the
   // axis overrides it at every case (the announcement says so), and it is put back after.
   for (SweepAxis &a : plan->axes) {
@@ -526,7 +598,8 @@ PetscErrorCode SweepPlanFromOptions(MPI_Comm comm, SweepPlan *plan)
     a.overrides = has == PETSC_TRUE;
     a.given     = has ? given.data() : "";
   }
-  PetscCall(PetscOptionsGetReal(NULL, NULL, "-impact_cost_warn", &plan->cost_warn, NULL)); // its help and check: the impact's options
+  PetscCall(PetscOptionsGetReal(NULL, NULL, "-impact_cost_warn", &plan->cost_warn,
+                                NULL)); // its help and check: the impact's options
   PetscFunctionReturn(0);
 }
 
@@ -553,15 +626,16 @@ PetscErrorCode SweepCaseOptionsClear(const SweepPlan &plan)
   PetscFunctionBeginUser;
   for (const SweepAxis &a : plan.axes) {
     PetscCall(PetscOptionsClearValue(NULL, ("-" + a.name).c_str()));
-    if (a.overrides) PetscCall(PetscOptionsSetValue(NULL, ("-" + a.name).c_str(), a.given.empty() ? NULL : a.given.c_str()));
+    if (a.overrides)
+      PetscCall(PetscOptionsSetValue(NULL, ("-" + a.name).c_str(), a.given.empty() ? NULL : a.given.c_str()));
   }
   PetscFunctionReturn(0);
 }
 
 std::string SweepErrorReason(PetscErrorCode ierr)
 {
-  std::string msg = LastErrorMessage(ierr);
-  const size_t nl = msg.find('\n');
+  std::string  msg = LastErrorMessage(ierr);
+  const size_t nl  = msg.find('\n');
   if (nl != std::string::npos) msg = msg.substr(0, nl);
   msg = Trim(msg);
   if (msg.size() > 400) msg = msg.substr(0, 397) + "...";
@@ -572,7 +646,8 @@ namespace {
 
 // The reading of case `index` with the cache: the structure's scenario reused when the case is
 // on it (how->reuse, how->read: the point's parts), else a whole reading that replaces it.
-void SweepCacheReading(const SweepPlan &plan, PetscInt index, bool monitors, SweepScenarioCache *cache, std::vector<PetscReal> *key, ScenarioReading *how)
+void SweepCacheReading(const SweepPlan &plan, PetscInt index, bool monitors, SweepScenarioCache *cache,
+                       std::vector<PetscReal> *key, ScenarioReading *how)
 {
   if (cache->axis_part.size() != plan.axes.size()) {
     cache->axis_part.clear();
@@ -592,7 +667,8 @@ void SweepCacheReading(const SweepPlan &plan, PetscInt index, bool monitors, Swe
 
 } // namespace
 
-PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason, SweepScenarioCache *cache)
+PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc,
+                                 int *status, std::string *reason, SweepScenarioCache *cache)
 {
   ScenarioReading        how;
   bool                   bodies_read = false;
@@ -607,7 +683,7 @@ PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt 
   PetscCall(SweepCaseOptionsSet(plan, index));
   how.monitors      = monitors;
   how.flight_series = false; // a sweep writes no trajectory
-  how.after_bodies = [&](const Scenario &bodies) -> PetscErrorCode {
+  how.after_bodies  = [&](const Scenario &bodies) -> PetscErrorCode {
     bodies_read = true;
     beam        = bodies.beam;
     return 0;
@@ -623,10 +699,13 @@ PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt 
     // clamped region): a failed case, not a bad option.
     PetscReal x = ImpactParams().x, z = 0;
     PetscBool set;
-    if (bodies_read && !PetscOptionsGetReal(NULL, NULL, "-impact_x", &x, &set) && !PetscOptionsGetReal(NULL, NULL, "-impact_z", &z, &set)) {
+    if (bodies_read && !PetscOptionsGetReal(NULL, NULL, "-impact_x", &x, &set) &&
+        !PetscOptionsGetReal(NULL, NULL, "-impact_z", &z, &set)) {
       const ImpactPointWhere where = ImpactPointLocate(beam, x, z);
       if (where != ImpactPointWhere::Movable) {
-        *status = where == ImpactPointWhere::OffBeam ? SweepOffBeam : where == ImpactPointWhere::OffFace ? SweepOffFace : SweepHeldPoint;
+        *status = where == ImpactPointWhere::OffBeam ? SweepOffBeam
+                : where == ImpactPointWhere::OffFace ? SweepOffFace
+                                                     : SweepHeldPoint;
         *reason = SweepErrorReason(ierr);
         PetscFunctionReturn(0);
       }

@@ -19,15 +19,15 @@ namespace beamimpact {
 // axis is numeric (values are numbers) or text, categorical (labels are the values as written:
 // "rk", "cn"; values then number them 0, 1, ... so that a case's row stays numbers).
 struct SweepAxis {
-  std::string              name;   // the option without its dash ("impact_x"); also its column
-  std::string              unit;   // of its values ("m"; "" when not known or text)
-  std::string              spec;   // the SPEC as given (start:stop:count[:log] or a list)
-  std::vector<PetscReal>   values; // in the given order; a text axis: the index of each label
-  std::vector<std::string> labels; // a text axis: its values as written, in order (empty: numeric)
+  std::string              name;              // the option without its dash ("impact_x"); also its column
+  std::string              unit;              // of its values ("m"; "" when not known or text)
+  std::string              spec;              // the SPEC as given (start:stop:count[:log] or a list)
+  std::vector<PetscReal>   values;            // in the given order; a text axis: the index of each label
+  std::vector<std::string> labels;            // a text axis: its values as written, in order (empty: numeric)
   bool                     overrides = false; // -NAME was also given (options file or command line): the axis wins
   std::string              given;             // its value there, restored after each case
-  bool                     sampled = false;   // a distribution (SPEC normal:..., uniform:..., V@W;..., csv:...): values are its samples
-  SampleDistribution       dist;              // a sampled axis's distribution (studies/sweep_sampling.hpp)
+  bool sampled = false;    // a distribution (SPEC normal:..., uniform:..., V@W;..., csv:...): values are its samples
+  SampleDistribution dist; // a sampled axis's distribution (studies/sweep_sampling.hpp)
 
   bool Text() const { return !labels.empty(); }
   // Value v of this axis (an entry of values) as the options database gets it: the label, or
@@ -47,7 +47,8 @@ enum SweepStatus {
   SweepNotConverged = 5, // the run stopped: a solve or event location failed, energy grew, the ball chattered
   SweepNotFinite    = 6, // the solution became NaN/Inf (an unstable step)
   SweepCutInContact = 7, // the run reached -impact_max_time with the ball still in contact
-  SweepOffFace      = 8, // not failed: the point is off a racket's face (outside the head's outline, off the frame's axis; without a bed, beyond the section's half-width): no impact there
+  SweepOffFace = 8, // not failed: the point is off a racket's face (outside the head's outline, off the frame's axis;
+                    // without a bed, beyond the section's half-width): no impact there
 };
 const char *SweepStatusName(int status);
 // Whether a row's status is a failure (not ok, and not a point that has no impact by design: off a racket's face).
@@ -62,26 +63,26 @@ extern const OptionModule kSweepOptions;
 // varying slowest and the last fastest; case indices number them from 0.
 struct SweepPlan {
   std::vector<SweepAxis> axes;
-  std::string            sweep;                    // -sweep as given ("" if not)
-  std::string            sweep_x;                  // -sweep_x as given ("" if not)
-  PetscInt               ranks_per_case = 1;       // ranks solving one impact together (DMDA distributed over them)
-  PetscReal              rigid_loss_fraction = 0;  // f of Eq. (11) for the rigid_acor column (dimensionless)
-  PetscBool              quiet = PETSC_FALSE;      // no progress or summary lines
-  PetscBool              restart = PETSC_FALSE;    // discard an existing -output file and its journal
-  PetscBool              retry_failed = PETSC_FALSE; // a resume computes failed cases again
-  PetscReal              progress_interval = 2;    // s, at most one progress line per interval
-  PetscReal              write_interval = 5;       // s, minimum time between live rewrites of the file
-  PetscReal              cost_warn = 30;           // s, -impact_cost_warn: the expected time of the remaining points is said above this
+  std::string            sweep;                   // -sweep as given ("" if not)
+  std::string            sweep_x;                 // -sweep_x as given ("" if not)
+  PetscInt               ranks_per_case      = 1; // ranks solving one impact together (DMDA distributed over them)
+  PetscReal              rigid_loss_fraction = 0; // f of Eq. (11) for the rigid_acor column (dimensionless)
+  PetscBool              quiet               = PETSC_FALSE; // no progress or summary lines
+  PetscBool              restart             = PETSC_FALSE; // discard an existing -output file and its journal
+  PetscBool              retry_failed        = PETSC_FALSE; // a resume computes failed cases again
+  PetscReal              progress_interval   = 2;           // s, at most one progress line per interval
+  PetscReal              write_interval      = 5;           // s, minimum time between live rewrites of the file
+  PetscReal cost_warn = 30; // s, -impact_cost_warn: the expected time of the remaining points is said above this
   // Sampled axes (docs/uncertainty.md): the cases are every point of the grid axes (the others)
   // times the sample's rows, the rows varying fastest (the same rows at every grid point).
-  PetscInt               samples = 0;              // -sweep_samples N: points of the design (0: not given)
-  SampleDesign           design  = SampleDesign::Random; // -sweep_sampling
-  PetscInt               seed    = 0;              // -sweep_seed
-  PetscBool              sobol   = PETSC_FALSE;    // -sweep_sobol: Saltelli's design, N (d + 2) rows
-  PetscInt               bootstrap = 200;          // -sweep_bootstrap: resamples of the intervals
-  std::string            exceedance;               // -sweep_exceedance as given
-  std::vector<size_t>    sampled;                  // the sampled axes (indices into axes), in order
-  std::vector<double>    sample_rows;              // the sample: rows of one value per sampled axis (option units)
+  PetscInt            samples   = 0;                    // -sweep_samples N: points of the design (0: not given)
+  SampleDesign        design    = SampleDesign::Random; // -sweep_sampling
+  PetscInt            seed      = 0;                    // -sweep_seed
+  PetscBool           sobol     = PETSC_FALSE;          // -sweep_sobol: Saltelli's design, N (d + 2) rows
+  PetscInt            bootstrap = 200;                  // -sweep_bootstrap: resamples of the intervals
+  std::string         exceedance;                       // -sweep_exceedance as given
+  std::vector<size_t> sampled;                          // the sampled axes (indices into axes), in order
+  std::vector<double> sample_rows;                      // the sample: rows of one value per sampled axis (option units)
 
   PetscInt SampleRows() const { return sampled.empty() ? 0 : (PetscInt)(sample_rows.size() / sampled.size()); }
   PetscInt cases() const;
@@ -96,7 +97,8 @@ std::string SweepOptionUnit(const std::string &name);
 // included, like numpy.linspace), "start:stop:count:log" (geometric: equal ratios, start and
 // stop of one sign, not 0) or a list separated by any of `separators`. Values are rounded to
 // 15 significant digits. Returns false with a reason in *why (which names the unit).
-bool SweepParsePoints(const std::string &spec, std::vector<PetscReal> *values, std::string *why, const std::string &unit = "m", const std::string &separators = ",;");
+bool SweepParsePoints(const std::string &spec, std::vector<PetscReal> *values, std::string *why,
+                      const std::string &unit = "m", const std::string &separators = ",;");
 
 // Parses -sweep "NAME=SPEC[,NAME=SPEC...]" into axes (lists in SPEC separated by ';'). An axis
 // is text (categorical) when its option is text in its module's table (a Choice, Text or File
@@ -130,11 +132,11 @@ PetscErrorCode SweepCaseOptionsClear(const SweepPlan &plan);
 // ball_speed, ball_mass, bat_speed, impact_offset, ...) are the point's, and a point on the
 // structure of the one before reads only their parts again (io/scenario_options.hpp).
 struct SweepScenarioCache {
-  bool                   valid = false;
-  bool                   monitors = true;  // the reading's (a key too)
-  std::vector<PetscReal> key;              // the structure axes' values
-  Scenario               base;             // as read (ScenarioReading::read_as)
-  std::vector<unsigned>  axis_part;        // ScenarioPartOf of each axis (ScenarioAll: a structure axis)
+  bool                   valid    = false;
+  bool                   monitors = true;       // the reading's (a key too)
+  std::vector<PetscReal> key;                   // the structure axes' values
+  Scenario               base;                  // as read (ScenarioReading::read_as)
+  std::vector<unsigned>  axis_part;             // ScenarioPartOf of each axis (ScenarioAll: a structure axis)
   PetscInt               full = 0, partial = 0; // readings of the whole scenario, of the point's parts only
   bool                   last_partial = false;  // the last reading was on the cached structure
 };
@@ -146,7 +148,8 @@ struct SweepScenarioCache {
 // any other error is returned. monitors: read the -monitor_* options too. cache (may be NULL):
 // the structure's scenario, reused when this case is on it (only the point's parts are read),
 // else replaced by this case's.
-PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc, int *status, std::string *reason, SweepScenarioCache *cache = nullptr);
+PetscErrorCode SweepCaseScenario(MPI_Comm comm, const SweepPlan &plan, PetscInt index, bool monitors, Scenario *sc,
+                                 int *status, std::string *reason, SweepScenarioCache *cache = nullptr);
 
 // The values of case `index`, "impact_x = 0.3 m, ts_type = cn", formatted as C's printf
 // does (petsc_format false) or as PETSc's messages do (true: 1 reads "1.").

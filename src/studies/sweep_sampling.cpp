@@ -56,7 +56,8 @@ const LawForm kLaws[] = {
   {"lognormal", SampleLaw::LogNormal, 2, "lognormal:MEAN:STD"},
   {"triangular", SampleLaw::Triangular, 3, "triangular:LO:MODE:HI"},
 };
-const char *kAllowed = "normal:MEAN:STD, truncnormal:MEAN:STD:LO:HI, uniform:LO:HI, lognormal:MEAN:STD, triangular:LO:MODE:HI, a table V1@W1;V2@W2;... or csv:FILE[:COLUMN]";
+const char *kAllowed = "normal:MEAN:STD, truncnormal:MEAN:STD:LO:HI, uniform:LO:HI, lognormal:MEAN:STD, "
+                       "triangular:LO:MODE:HI, a table V1@W1;V2@W2;... or csv:FILE[:COLUMN]";
 
 // The parameters' own conditions.
 bool CheckParameters(const LawForm &f, const std::vector<double> &p, std::string *why)
@@ -115,12 +116,14 @@ bool ParseTable(const std::string &spec, bool whole, SampleDistribution *d, std:
 // csv:FILE[:COLUMN]: the numbers of one column ('#' lines skipped, a first line of names allowed).
 bool ParseCsv(const std::string &rest, bool whole, SampleDistribution *d, std::string *why)
 {
-  const size_t      colon  = rest.rfind(':');
-  const bool        picked = colon != std::string::npos && rest.find('.', colon) == std::string::npos && rest.find('/', colon) == std::string::npos;
+  const size_t colon  = rest.rfind(':');
+  const bool   picked = colon != std::string::npos && rest.find('.', colon) == std::string::npos &&
+                      rest.find('/', colon) == std::string::npos;
   const std::string file = picked ? rest.substr(0, colon) : rest, column = picked ? Trim(rest.substr(colon + 1)) : "";
   std::ifstream     in(file);
   if (!in) {
-    *why = "csv:" + rest + ": cannot open " + file + " (" + std::strerror(errno) + "; a path in an options file is relative to that file's directory)";
+    *why = "csv:" + rest + ": cannot open " + file + " (" + std::strerror(errno) +
+           "; a path in an options file is relative to that file's directory)";
     return false;
   }
   std::string line;
@@ -130,23 +133,26 @@ bool ParseCsv(const std::string &rest, bool whole, SampleDistribution *d, std::s
     const std::vector<std::string> cells = Split(line, ',');
     double                         v;
     if (col < 0) { // the column: by name on a first line of names, by number, or the first
-      col = 0;
+      col              = 0;
       const auto named = std::find(cells.begin(), cells.end(), column);
       if (!column.empty() && named != cells.end()) col = named - cells.begin();
       else if (!column.empty() && (!Number(column, &v) || v < 1 || v != std::floor(v) || v > (double)cells.size())) {
-        *why = "csv:" + rest + ": column '" + column + "' is neither a name on the first line of " + file + " nor a number from 1 to " + std::to_string(cells.size());
+        *why = "csv:" + rest + ": column '" + column + "' is neither a name on the first line of " + file +
+               " nor a number from 1 to " + std::to_string(cells.size());
         return false;
       } else if (!column.empty() && named == cells.end()) col = (long)v - 1;
       if (!Number(cells[col], &v)) continue; // the line of names
     }
     if ((size_t)col >= cells.size() || !Number(cells[col], &v) || (whole && v != std::floor(v))) {
-      *why = file + ":" + std::to_string(lineno) + ": '" + ((size_t)col < cells.size() ? cells[col] : "") + "' is not " + (whole ? "a whole number" : "a number") + " (column " + std::to_string(col + 1) + ")";
+      *why = file + ":" + std::to_string(lineno) + ": '" + ((size_t)col < cells.size() ? cells[col] : "") +
+             "' is not " + (whole ? "a whole number" : "a number") + " (column " + std::to_string(col + 1) + ")";
       return false;
     }
     d->values.push_back(v);
   }
   if (d->values.size() < 2) {
-    *why = "csv:" + rest + ": " + file + " holds " + std::to_string(d->values.size()) + " value(s): an empirical distribution needs at least 2";
+    *why = "csv:" + rest + ": " + file + " holds " + std::to_string(d->values.size()) +
+           " value(s): an empirical distribution needs at least 2";
     return false;
   }
   std::sort(d->values.begin(), d->values.end());
@@ -164,13 +170,16 @@ bool SampleSpecIsDistribution(const std::string &spec_in)
   // NAME:...: a law's name (a known one, or a word that is none: refused naming the laws); a
   // range start:stop:count starts with a number, a text list has no ':' outside quotes.
   const size_t colon = spec.find(':');
-  if (colon == std::string::npos || colon == 0 || !std::isalpha((unsigned char)spec[0]) || spec.find_first_of("'\";") != std::string::npos) return false;
+  if (colon == std::string::npos || colon == 0 || !std::isalpha((unsigned char)spec[0]) ||
+      spec.find_first_of("'\";") != std::string::npos)
+    return false;
   for (size_t k = 0; k < colon; ++k)
     if (!(std::isalnum((unsigned char)spec[k]) || spec[k] == '_')) return false;
   return true;
 }
 
-bool SampleDistributionParse(const std::string &spec_in, const std::string &unit, bool whole, SampleDistribution *d, std::string *why)
+bool SampleDistributionParse(const std::string &spec_in, const std::string &unit, bool whole, SampleDistribution *d,
+                             std::string *why)
 {
   const std::string spec = Trim(spec_in);
   *d                     = SampleDistribution();
@@ -180,11 +189,13 @@ bool SampleDistributionParse(const std::string &spec_in, const std::string &unit
   for (const LawForm &f : kLaws) {
     if (parts[0] != f.name) continue;
     if (whole) {
-      *why = std::string(f.name) + " is a continuous law and the option takes whole numbers: use a table V1@W1;V2@W2;... or csv:FILE";
+      *why = std::string(f.name) +
+             " is a continuous law and the option takes whole numbers: use a table V1@W1;V2@W2;... or csv:FILE";
       return false;
     }
     if (parts.size() != f.count + 1) {
-      *why = std::string(f.name) + " takes " + std::to_string(f.count) + " numbers: " + f.form + (unit.empty() ? "" : " (" + unit + ")");
+      *why = std::string(f.name) + " takes " + std::to_string(f.count) + " numbers: " + f.form +
+             (unit.empty() ? "" : " (" + unit + ")");
       return false;
     }
     d->law = f.law;
@@ -210,7 +221,10 @@ double SampleDistribution::Quantile(double u) const
   case SampleLaw::TruncNormal: {
     const double a = (p[2] - p[0]) / p[1], b = (p[3] - p[0]) / p[1];
     double       z;
-    if (a > 0) z = gsl_cdf_ugaussian_Qinv(gsl_cdf_ugaussian_Q(a) - u * (gsl_cdf_ugaussian_Q(a) - gsl_cdf_ugaussian_Q(b))); // the upper tail: Q keeps its digits
+    if (a > 0)
+      z = gsl_cdf_ugaussian_Qinv(
+        gsl_cdf_ugaussian_Q(a) -
+        u * (gsl_cdf_ugaussian_Q(a) - gsl_cdf_ugaussian_Q(b))); // the upper tail: Q keeps its digits
     else z = gsl_cdf_ugaussian_Pinv(gsl_cdf_ugaussian_P(a) + u * (gsl_cdf_ugaussian_P(b) - gsl_cdf_ugaussian_P(a)));
     return std::min(p[3], std::max(p[2], p[0] + p[1] * z));
   }
@@ -240,7 +254,8 @@ double SampleDistribution::Mean() const
     return p[0];
   case SampleLaw::TruncNormal: {
     const double a = (p[2] - p[0]) / p[1], b = (p[3] - p[0]) / p[1];
-    return p[0] + p[1] * (gsl_ran_ugaussian_pdf(a) - gsl_ran_ugaussian_pdf(b)) / (gsl_cdf_ugaussian_P(b) - gsl_cdf_ugaussian_P(a));
+    return p[0] + p[1] * (gsl_ran_ugaussian_pdf(a) - gsl_ran_ugaussian_pdf(b)) /
+                    (gsl_cdf_ugaussian_P(b) - gsl_cdf_ugaussian_P(a));
   }
   case SampleLaw::Uniform:
     return 0.5 * (p[0] + p[1]);
@@ -248,7 +263,9 @@ double SampleDistribution::Mean() const
     return (p[0] + p[1] + p[2]) / 3;
   default: {
     double m = 0;
-    for (size_t k = 0; k < values.size(); ++k) m += values[k] * (law == SampleLaw::Discrete ? cumulative[k] - (k ? cumulative[k - 1] : 0) : 1.0 / (double)values.size());
+    for (size_t k = 0; k < values.size(); ++k)
+      m += values[k] *
+           (law == SampleLaw::Discrete ? cumulative[k] - (k ? cumulative[k - 1] : 0) : 1.0 / (double)values.size());
     return m;
   }
   }
@@ -261,7 +278,8 @@ double SampleDistribution::Std() const
   case SampleLaw::LogNormal:
     return p[1];
   case SampleLaw::TruncNormal: {
-    const double a = (p[2] - p[0]) / p[1], b = (p[3] - p[0]) / p[1], Z = gsl_cdf_ugaussian_P(b) - gsl_cdf_ugaussian_P(a);
+    const double a = (p[2] - p[0]) / p[1], b = (p[3] - p[0]) / p[1],
+                 Z  = gsl_cdf_ugaussian_P(b) - gsl_cdf_ugaussian_P(a);
     const double pa = gsl_ran_ugaussian_pdf(a), pb = gsl_ran_ugaussian_pdf(b);
     const double r = (pa - pb) / Z;
     return p[1] * std::sqrt(1 + (a * pa - b * pb) / Z - r * r);
@@ -273,7 +291,9 @@ double SampleDistribution::Std() const
   default: {
     const double m = Mean();
     double       v = 0;
-    for (size_t k = 0; k < values.size(); ++k) v += (values[k] - m) * (values[k] - m) * (law == SampleLaw::Discrete ? cumulative[k] - (k ? cumulative[k - 1] : 0) : 1.0 / (double)values.size());
+    for (size_t k = 0; k < values.size(); ++k)
+      v += (values[k] - m) * (values[k] - m) *
+           (law == SampleLaw::Discrete ? cumulative[k] - (k ? cumulative[k - 1] : 0) : 1.0 / (double)values.size());
     return std::sqrt(v);
   }
   }
@@ -322,8 +342,11 @@ void DesignLhs(uint64_t seed, PetscInt n, int dim, std::vector<double> *u)
   std::vector<PetscInt> perm((size_t)n);
   for (int j = 0; j < dim; ++j) {
     for (PetscInt i = 0; i < n; ++i) perm[i] = i;
-    for (PetscInt k = n - 1; k > 0; --k) std::swap(perm[k], perm[SampleIndex(seed, kStreamLhsPermutation + (uint64_t)j, (uint64_t)k, (uint64_t)k + 1)]); // Fisher-Yates
-    for (PetscInt i = 0; i < n; ++i) (*u)[(size_t)i * dim + j] = ((double)perm[i] + SampleUniform(seed, (uint64_t)j, (uint64_t)i)) / (double)n;
+    for (PetscInt k = n - 1; k > 0; --k)
+      std::swap(perm[k], perm[SampleIndex(seed, kStreamLhsPermutation + (uint64_t)j, (uint64_t)k,
+                                          (uint64_t)k + 1)]); // Fisher-Yates
+    for (PetscInt i = 0; i < n; ++i)
+      (*u)[(size_t)i * dim + j] = ((double)perm[i] + SampleUniform(seed, (uint64_t)j, (uint64_t)i)) / (double)n;
   }
 }
 
@@ -331,8 +354,8 @@ void DesignLhs(uint64_t seed, PetscInt n, int dim, std::vector<double> *u)
 // points are a (t, m, s)-net), each dimension scrambled from the seed.
 void DesignSequence(bool sobol, uint64_t seed, PetscInt n, int dim, std::vector<double> *u)
 {
-  gsl_qrng           *q = gsl_qrng_alloc(sobol ? gsl_qrng_sobol : gsl_qrng_halton, (unsigned)dim);
-  std::vector<double> x((size_t)dim, 0.0);
+  gsl_qrng             *q = gsl_qrng_alloc(sobol ? gsl_qrng_sobol : gsl_qrng_halton, (unsigned)dim);
+  std::vector<double>   x((size_t)dim, 0.0);
   std::vector<uint32_t> shift((size_t)dim);
   std::vector<double>   offset((size_t)dim);
   for (int j = 0; j < dim; ++j) {
@@ -363,7 +386,8 @@ bool SampleUnitDesign(SampleDesign design, uint64_t seed, PetscInt n, int dim, s
 {
   const int max = design == SampleDesign::Sobol ? 40 : design == SampleDesign::Halton ? 1229 : 1 << 20;
   if (dim > max) {
-    *why = std::string(SampleDesignName(design)) + " points have at most " + std::to_string(max) + " dimensions (GSL's), " + std::to_string(dim) + " asked" +
+    *why = std::string(SampleDesignName(design)) + " points have at most " + std::to_string(max) +
+           " dimensions (GSL's), " + std::to_string(dim) + " asked" +
            " (Saltelli's design for -sweep_sobol takes two per sampled axis): use -sweep_sampling random or lhs";
     return false;
   }

@@ -16,7 +16,15 @@
 namespace beamimpact {
 
 // The laws a sampled axis may follow.
-enum class SampleLaw { Normal, TruncNormal, Uniform, LogNormal, Triangular, Discrete, Empirical };
+enum class SampleLaw {
+  Normal,
+  TruncNormal,
+  Uniform,
+  LogNormal,
+  Triangular,
+  Discrete,
+  Empirical
+};
 
 // One sampled axis's distribution; parameters in the unit of the axis's option.
 struct SampleDistribution {
@@ -42,10 +50,16 @@ bool SampleSpecIsDistribution(const std::string &spec);
 // csv:FILE[:COLUMN] (the measured values of a CSV file's column, by name or number from 1, else the
 // first; '#' comments; drawn with equal probability). whole: the option takes whole numbers (only a
 // table or a CSV of whole numbers then). False with a reason in *why naming what is allowed.
-bool SampleDistributionParse(const std::string &spec, const std::string &unit, bool whole, SampleDistribution *d, std::string *why);
+bool SampleDistributionParse(const std::string &spec, const std::string &unit, bool whole, SampleDistribution *d,
+                             std::string *why);
 
 // How the unit-cube points are placed (-sweep_sampling).
-enum class SampleDesign { Random, LHS, Sobol, Halton };
+enum class SampleDesign {
+  Random,
+  LHS,
+  Sobol,
+  Halton
+};
 const char *SampleDesignName(SampleDesign d);
 bool        SampleDesignParse(const std::string &name, SampleDesign *d);
 
@@ -61,7 +75,8 @@ uint64_t SampleIndex(uint64_t seed, uint64_t stream, uint64_t index, uint64_t n)
 // dimensions, each digitally shifted by a random 30-bit XOR from the seed, centred in its cell) or
 // Halton (GSL's gsl_qrng_halton, at most 1229 dimensions, each shifted by a random amount modulo 1).
 // False with a reason in *why.
-bool SampleUnitDesign(SampleDesign design, uint64_t seed, PetscInt n, int dim, std::vector<double> *u, std::string *why);
+bool SampleUnitDesign(SampleDesign design, uint64_t seed, PetscInt n, int dim, std::vector<double> *u,
+                      std::string *why);
 
 // Saltelli's design from a design u of n points of dimension 2d: point j gives the block of d + 2
 // rows A_j (u's first d coordinates), B_j (its last d), then A_B^(i)_j for i = 0..d-1 (A_j with

@@ -59,7 +59,10 @@ struct JournalHeader {
 };
 
 // A record: magic, reason length, the row's numbers, the reason's bytes, the checksum.
-size_t RecordBytes(uint32_t ncols, uint32_t reason) { return 2 * sizeof(uint32_t) + ncols * sizeof(double) + reason + sizeof(uint64_t); }
+size_t RecordBytes(uint32_t ncols, uint32_t reason)
+{
+  return 2 * sizeof(uint32_t) + ncols * sizeof(double) + reason + sizeof(uint64_t);
+}
 
 bool WriteAll(int fd, const void *data, size_t n)
 {
@@ -89,10 +92,26 @@ bool ParseJournalName(const char *name, int *run, int *rank)
 // Options that do not change any number in the file.
 bool OptionIsVolatile(const std::string &name)
 {
-  static const std::set<std::string> exact    = {"output", "sweep_quiet", "sweep_restart", "sweep_retry_failed", "sweep_progress_interval", "sweep_write_interval", "sweep_exceedance", "sweep_bootstrap", "error_traceback", "allow_unused_options", "help", "version"};
-  static const char *const           prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_", "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view", "snes_view", "ksp_view"};
+  // clang-format off
+  static const std::set<std::string> exact = {"output",
+                                                 "sweep_quiet",
+                                                 "sweep_restart",
+                                                 "sweep_retry_failed",
+                                                 "sweep_progress_interval",
+                                                 "sweep_write_interval",
+                                                 "sweep_exceedance",
+                                                 "sweep_bootstrap",
+                                                 "error_traceback",
+                                                 "allow_unused_options",
+                                                 "help",
+                                                 "version"};
+  static const char *const prefix[] = {"log_", "malloc", "info", "options_", "on_error", "mpi_", "viewer_",
+                                       "ts_monitor", "ts_adapt_monitor", "snes_monitor", "ksp_monitor", "ts_view",
+                                       "snes_view", "ksp_view"};
+  // clang-format on
   if (exact.count(name)) return true;
-  if (name == "max_memory" || name == "flight_series_dt") return true; // a limit on what may be allocated; a series a sweep does not keep
+  if (name == "max_memory" || name == "flight_series_dt")
+    return true; // a limit on what may be allocated; a series a sweep does not keep
   for (const char *p : prefix)
     if (name.compare(0, std::strlen(p), p) == 0) return true;
   return false;
@@ -104,7 +123,9 @@ std::map<std::string, std::string> ParseOptions(const std::string &all)
   std::map<std::string, std::string> m;
   std::stringstream                  ss(all);
   std::string                        tok, name;
-  auto is_name = [](const std::string &t) { return t.size() > 1 && t[0] == '-' && (std::isalpha((unsigned char)t[1]) || t[1] == '_'); };
+  auto                               is_name = [](const std::string &t) {
+    return t.size() > 1 && t[0] == '-' && (std::isalpha((unsigned char)t[1]) || t[1] == '_');
+  };
   while (ss >> tok) {
     if (is_name(tok)) {
       name    = tok.substr(1);
@@ -125,8 +146,9 @@ bool IsFileOption(const std::string &key)
 bool AttributeIsVolatile(const std::string &key)
 {
   // The paths of the input files are not the signature, their contents are (input_sha256_*).
-  return key == "options" || key == "sweep_cases_done" || key == "sweep_complete" || key == "date" || key == "host" || key == "ranks" || key == "git" || key == "input_files" ||
-         key == "beam_section_file" || key == "sweep_retry_changed" || IsFileOption(key);
+  return key == "options" || key == "sweep_cases_done" || key == "sweep_complete" || key == "date" || key == "host" ||
+         key == "ranks" || key == "git" || key == "input_files" || key == "beam_section_file" ||
+         key == "sweep_retry_changed" || IsFileOption(key);
 }
 
 // The input file an attribute input_sha256_<...> stands for, from the record's input_files
@@ -188,16 +210,17 @@ std::string CanonicalPlan(const std::string &sweep_x, const std::string &sweep)
   if (!sweep.empty() && !SweepParseAxes(sweep, &axes, &why)) return "-sweep_x " + sweep_x + " -sweep " + sweep;
   for (const SweepAxis &a : axes) {
     out += (out.empty() ? "" : ",") + a.name + "=";
-    for (size_t k = 0; k < (a.Text() ? a.labels.size() : a.values.size()); ++k) out += (k ? ";" : "") + (a.Text() ? a.labels[k] : ShortestText(a.values[k]));
+    for (size_t k = 0; k < (a.Text() ? a.labels.size() : a.values.size()); ++k)
+      out += (k ? ";" : "") + (a.Text() ? a.labels[k] : ShortestText(a.values[k]));
   }
   return out;
 }
 
 // The signature as what decides the numbers, not how the options were written (both the file's
 // and this run's, before hashing: equal for runs that compute the same): the plan by its values
-// (sweep: the axes and their values, -sweep_x's first, in place of -sweep and -sweep_x as written); in sweep_checked_options numbers by their values, an
-// option at its default left out (as not given), and the options the run did not read left out
-// (sweep_unused_options: -ts_theta_theta under -ts_type rk, an option of another task).
+// (sweep: the axes and their values, -sweep_x's first, in place of -sweep and -sweep_x as written); in
+// sweep_checked_options numbers by their values, an option at its default left out (as not given), and the options the
+// run did not read left out (sweep_unused_options: -ts_theta_theta under -ts_type rk, an option of another task).
 void SignatureCanonical(SweepAttributes *m)
 {
   if (m->str.count("sweep") || m->str.count("sweep_x")) {
@@ -271,7 +294,9 @@ std::vector<std::string> PlanDiff(const std::string &file, const std::string &no
   };
   const auto               fa = axes(file), na = axes(now);
   std::vector<std::string> d;
-  if (fa.size() != na.size()) d.push_back("sweep: " + std::to_string(fa.size()) + " axes in the file ('" + ShortValue(file) + "'), " + std::to_string(na.size()) + " now ('" + ShortValue(now) + "')");
+  if (fa.size() != na.size())
+    d.push_back("sweep: " + std::to_string(fa.size()) + " axes in the file ('" + ShortValue(file) + "'), " +
+                std::to_string(na.size()) + " now ('" + ShortValue(now) + "')");
   for (size_t k = 0; k < std::min(fa.size(), na.size()); ++k) {
     if (fa[k] == na[k]) continue;
     if (fa[k].first != na[k].first) {
@@ -284,9 +309,12 @@ std::vector<std::string> PlanDiff(const std::string &file, const std::string &no
     for (std::string v; std::getline(ns, v, ';');) nv.push_back(v);
     size_t i = 0;
     while (i < fv.size() && i < nv.size() && fv[i] == nv[i]) ++i;
-    std::string line = "sweep axis " + fa[k].first + ": '" + ShortValue(fa[k].second) + "' in the file, '" + ShortValue(na[k].second) + "' now";
-    if (fv.size() != nv.size()) line += " (" + std::to_string(fv.size()) + " values in the file, " + std::to_string(nv.size()) + " now)";
-    else if (ShortValue(fa[k].second) == ShortValue(na[k].second)) line += " (value " + std::to_string(i + 1) + ": " + fv[i] + " in the file, " + nv[i] + " now)";
+    std::string line = "sweep axis " + fa[k].first + ": '" + ShortValue(fa[k].second) + "' in the file, '" +
+                       ShortValue(na[k].second) + "' now";
+    if (fv.size() != nv.size())
+      line += " (" + std::to_string(fv.size()) + " values in the file, " + std::to_string(nv.size()) + " now)";
+    else if (ShortValue(fa[k].second) == ShortValue(na[k].second))
+      line += " (value " + std::to_string(i + 1) + ": " + fv[i] + " in the file, " + nv[i] + " now)";
     d.push_back(line);
   }
   return d;
@@ -303,9 +331,14 @@ std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &no
   for (auto &k : keys) {
     if (AttributeIsVolatile(k)) continue;
     const auto a = file.num.find(k), b = now.num.find(k);
-    if (a != file.num.end() && b != now.num.end() && (a->second == b->second || (std::isnan(a->second) && std::isnan(b->second)))) continue;
-    std::snprintf(buf, sizeof(buf), "%s: %s in the file, %s now", k.c_str(), a == file.num.end() ? "absent" : std::to_string(a->second).c_str(), b == now.num.end() ? "absent" : std::to_string(b->second).c_str());
-    if (a != file.num.end() && b != now.num.end()) std::snprintf(buf, sizeof(buf), "%s: %.10g in the file, %.10g now", k.c_str(), a->second, b->second);
+    if (a != file.num.end() && b != now.num.end() &&
+        (a->second == b->second || (std::isnan(a->second) && std::isnan(b->second))))
+      continue;
+    std::snprintf(buf, sizeof(buf), "%s: %s in the file, %s now", k.c_str(),
+                  a == file.num.end() ? "absent" : std::to_string(a->second).c_str(),
+                  b == now.num.end() ? "absent" : std::to_string(b->second).c_str());
+    if (a != file.num.end() && b != now.num.end())
+      std::snprintf(buf, sizeof(buf), "%s: %.10g in the file, %.10g now", k.c_str(), a->second, b->second);
     d.push_back(buf);
   }
   keys.clear();
@@ -318,9 +351,14 @@ std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &no
     if (k.compare(0, std::strlen("input_sha256_"), "input_sha256_") == 0) { // an input file's contents
       const std::string which = InputFileOfAttribute(k, input_files);
       if (a == file.str.end() || b == now.str.end())
-        std::snprintf(buf, sizeof(buf), "input file %s: %s", which.c_str(), a == file.str.end() ? "read now, not by the sweep that wrote the file" : "read by the sweep that wrote the file, not now");
+        std::snprintf(buf, sizeof(buf), "input file %s: %s", which.c_str(),
+                      a == file.str.end() ? "read now, not by the sweep that wrote the file"
+                                          : "read by the sweep that wrote the file, not now");
       else
-        std::snprintf(buf, sizeof(buf), "input file %s: its contents changed since the file was written (SHA-256 %.12s... in the file, %.12s... now)", which.c_str(), a->second.c_str(), b->second.c_str());
+        std::snprintf(buf, sizeof(buf),
+                      "input file %s: its contents changed since the file was written (SHA-256 %.12s... in the file, "
+                      "%.12s... now)",
+                      which.c_str(), a->second.c_str(), b->second.c_str());
       d.push_back(buf);
       continue;
     }
@@ -336,12 +374,16 @@ std::string SignatureDiff(const SweepAttributes &file, const SweepAttributes &no
       for (auto &n : names) {
         const auto x = fo.find(n), y = no.find(n);
         if (x != fo.end() && y != no.end() && x->second == y->second) continue;
-        std::snprintf(buf, sizeof(buf), "option -%s: %s in the file, %s now", n.c_str(), x == fo.end() ? "not set" : ("'" + x->second + "'").c_str(), y == no.end() ? "not set" : ("'" + y->second + "'").c_str());
+        std::snprintf(buf, sizeof(buf), "option -%s: %s in the file, %s now", n.c_str(),
+                      x == fo.end() ? "not set" : ("'" + x->second + "'").c_str(),
+                      y == no.end() ? "not set" : ("'" + y->second + "'").c_str());
         d.push_back(buf);
       }
       continue;
     }
-    std::snprintf(buf, sizeof(buf), "%s: %s in the file, %s now", k.c_str(), a == file.str.end() ? "absent" : ("'" + ShortValue(a->second) + "'").c_str(), b == now.str.end() ? "absent" : ("'" + ShortValue(b->second) + "'").c_str());
+    std::snprintf(buf, sizeof(buf), "%s: %s in the file, %s now", k.c_str(),
+                  a == file.str.end() ? "absent" : ("'" + ShortValue(a->second) + "'").c_str(),
+                  b == now.str.end() ? "absent" : ("'" + ShortValue(b->second) + "'").c_str());
     d.push_back(buf);
   }
   std::string out;
@@ -378,16 +420,21 @@ bool AttributeOfOptions(const std::string &key, const std::set<std::string> &opt
 
 // The signatures differ only in the options named (and their attributes): "" when so, else
 // what else differs (SignatureDiff's lines).
-std::string DiffBeyond(const SweepAttributes &file, const SweepAttributes &now, const std::set<std::string> &options, std::string *changed)
+std::string DiffBeyond(const SweepAttributes &file, const SweepAttributes &now, const std::set<std::string> &options,
+                       std::string *changed)
 {
   SweepAttributes a = file, b = now;
   for (auto *m : {&a, &b}) {
-    for (auto it = m->num.begin(); it != m->num.end();) it = AttributeOfOptions(it->first, options) ? m->num.erase(it) : std::next(it);
-    for (auto it = m->str.begin(); it != m->str.end();) it = AttributeOfOptions(it->first, options) ? m->str.erase(it) : std::next(it);
+    for (auto it = m->num.begin(); it != m->num.end();)
+      it = AttributeOfOptions(it->first, options) ? m->num.erase(it) : std::next(it);
+    for (auto it = m->str.begin(); it != m->str.end();)
+      it = AttributeOfOptions(it->first, options) ? m->str.erase(it) : std::next(it);
   }
   auto fo = ParseOptions(a.str["sweep_checked_options"]), no = ParseOptions(b.str["sweep_checked_options"]);
   for (const std::string &o : options) {
-    if (fo[o] != no[o]) *changed += (changed->empty() ? "" : "; ") + ("-" + o + " " + (fo[o].empty() ? "(default)" : fo[o]) + " -> " + (no[o].empty() ? "(default)" : no[o]));
+    if (fo[o] != no[o])
+      *changed += (changed->empty() ? "" : "; ") + ("-" + o + " " + (fo[o].empty() ? "(default)" : fo[o]) + " -> " +
+                                                    (no[o].empty() ? "(default)" : no[o]));
     fo.erase(o), no.erase(o);
   }
   auto join = [](const std::map<std::string, std::string> &m) {
@@ -405,12 +452,12 @@ std::string DiffBeyond(const SweepAttributes &file, const SweepAttributes &now, 
 
 herr_t CollectAttribute(hid_t loc, const char *name, const H5A_info_t *, void *op)
 {
-  SweepAttributes   *m     = static_cast<SweepAttributes *>(op);
-  hid_t       a     = H5Aopen(loc, name, H5P_DEFAULT);
-  hid_t       t     = H5Aget_type(a);
-  hid_t       s     = H5Aget_space(a);
-  H5T_class_t cls   = H5Tget_class(t);
-  hssize_t    count = H5Sget_simple_extent_npoints(s);
+  SweepAttributes *m     = static_cast<SweepAttributes *>(op);
+  hid_t            a     = H5Aopen(loc, name, H5P_DEFAULT);
+  hid_t            t     = H5Aget_type(a);
+  hid_t            s     = H5Aget_space(a);
+  H5T_class_t      cls   = H5Tget_class(t);
+  hssize_t         count = H5Sget_simple_extent_npoints(s);
   if ((cls == H5T_FLOAT || cls == H5T_INTEGER) && count == 1) {
     double v = 0;
     if (H5Aread(a, H5T_NATIVE_DOUBLE, &v) >= 0) m->num[name] = v;
@@ -454,7 +501,6 @@ bool H5ReadDoubleColumn(long long loc, const char *name, std::vector<double> *v)
   return ok;
 }
 
-
 // ---------------------------------------------------------------------------
 // Journal files and checked options
 // ---------------------------------------------------------------------------
@@ -471,7 +517,11 @@ void SweepJournalWriter::Warn(const char *what)
   if (!failed) {
     int rank;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    std::fprintf(stderr, "beamimpact: warning: rank %d cannot %s the sweep journal %s (%s): its points are kept in memory and written at the end, but would be computed again after a crash (is -output on a filesystem every rank sees?)\n", rank, what, path.c_str(), std::strerror(errno));
+    std::fprintf(stderr,
+                 "beamimpact: warning: rank %d cannot %s the sweep journal %s (%s): its points are kept in memory and "
+                 "written at the end, but would be computed again after a crash (is -output on a filesystem every rank "
+                 "sees?)\n",
+                 rank, what, path.c_str(), std::strerror(errno));
   }
   failed = true;
   if (fd >= 0) ::close(fd);
@@ -481,7 +531,8 @@ void SweepJournalWriter::Warn(const char *what)
 PetscErrorCode SweepJournalWriter::Append(const std::vector<double> &row, const std::string &reason_in)
 {
   PetscFunctionBeginUser;
-  PetscCheck(row.size() == ncols, PETSC_COMM_SELF, PETSC_ERR_PLIB, "sweep row has %zu columns, the journal %u", row.size(), ncols);
+  PetscCheck(row.size() == ncols, PETSC_COMM_SELF, PETSC_ERR_PLIB, "sweep row has %zu columns, the journal %u",
+             row.size(), ncols);
   if (failed) PetscFunctionReturn(0);
   if (fd < 0) {
     fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
@@ -519,8 +570,9 @@ void SweepJournalWriter::Close()
   fd = -1;
 }
 
-SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, std::map<PetscInt, std::string> *reasons,
-                                                      PetscInt *added)
+SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases,
+                                                       std::map<PetscInt, std::vector<double>> *rows,
+                                                       std::map<PetscInt, std::string> *reasons, PetscInt *added)
 {
   if (stopped) return Ok;
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
@@ -544,7 +596,8 @@ SweepJournalReader::Status SweepJournalReader::ReadNew(uint64_t expected_signatu
     if (data.size() < sizeof(JournalHeader)) return Ok; // not yet written
     JournalHeader h;
     std::memcpy(&h, data.data(), sizeof(h));
-    if (std::memcmp(h.magic, JournalMagic, sizeof(h.magic)) != 0 || h.check != Fnv1a(&h, offsetof(JournalHeader, check))) {
+    if (std::memcmp(h.magic, JournalMagic, sizeof(h.magic)) != 0 ||
+        h.check != Fnv1a(&h, offsetof(JournalHeader, check))) {
       stopped = true;
       return Ok;
     }
@@ -593,7 +646,8 @@ std::string SweepCheckedOptions(const std::string &all)
   std::string out;
   for (auto &kv : ParseOptions(all)) {
     if (OptionIsVolatile(kv.first)) continue;
-    const std::vector<std::string> &files = OptionsFilePathOptions(); // their contents are checked (input_sha256_*), not their paths
+    const std::vector<std::string>
+      &files = OptionsFilePathOptions(); // their contents are checked (input_sha256_*), not their paths
     if (std::find(files.begin(), files.end(), "-" + kv.first) != files.end()) continue;
     out += "-" + kv.first + (kv.second.empty() ? "" : " " + kv.second) + " ";
   }
@@ -604,7 +658,8 @@ std::string SweepCheckedOptions(const std::string &all)
 // The store
 // ---------------------------------------------------------------------------
 
-void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std::vector<SweepColumn> &columns, const RunRecord &record, SweepStore *S)
+void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std::vector<SweepColumn> &columns,
+                    const RunRecord &record, SweepStore *S)
 {
   S->output         = output;
   S->parts          = output + ".parts";
@@ -675,13 +730,15 @@ static bool WriteValuesAttribute(hid_t g, const char *name, const std::vector<st
 }
 
 // A text axis's column: the label of each index in v, as strings, with the attribute `values`.
-static PetscErrorCode WriteTextColumn(hid_t g, const std::string &output, const char *name, const std::vector<double> &v, const std::vector<std::string> &labels)
+static PetscErrorCode WriteTextColumn(hid_t g, const std::string &output, const char *name,
+                                      const std::vector<double> &v, const std::vector<std::string> &labels)
 {
   std::vector<std::string> text;
 
   PetscFunctionBeginUser;
   for (double i : v) text.push_back(i >= 0 && i < (double)labels.size() ? labels[(size_t)i] : std::string());
-  PetscCheck(H5WriteStringColumn(g, name, text, kReasonUnit) && WriteValuesAttribute(g, name, labels), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: cannot write the text column %s", output.c_str(), name);
+  PetscCheck(H5WriteStringColumn(g, name, text, kReasonUnit) && WriteValuesAttribute(g, name, labels), PETSC_COMM_SELF,
+             PETSC_ERR_FILE_WRITE, "-output %s: cannot write the text column %s", output.c_str(), name);
   PetscFunctionReturn(0);
 }
 
@@ -692,7 +749,8 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
   RunRecord rec = S.record;
   rec.add("sweep_cases_done", S.rows.size());
   rec.add("sweep_complete", (PetscInt)S.rows.size() == S.ncases ? 1 : 0);
-  if (!S.retry_changed.empty()) rec.add("sweep_retry_changed", S.retry_changed); // -sweep_retry_failed's changes, one line per retry
+  if (!S.retry_changed.empty())
+    rec.add("sweep_retry_changed", S.retry_changed); // -sweep_retry_failed's changes, one line per retry
   PetscCall(H5WriteAttributes(file, rec));
   hid_t       g    = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   const auto &cols = S.columns;
@@ -701,7 +759,9 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
     v.reserve(S.rows.size());
     for (auto &kv : S.rows) v.push_back(kv.second[c]);
     if (!cols[c].labels.empty()) PetscCall(WriteTextColumn(g, S.output, cols[c].name.c_str(), v, cols[c].labels));
-    else PetscCall((cols[c].integer ? H5WriteCounts1D : H5WriteDataset1D)(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
+    else
+      PetscCall(
+        (cols[c].integer ? H5WriteCounts1D : H5WriteDataset1D)(g, cols[c].name.c_str(), v, cols[c].unit.c_str()));
   }
   std::vector<std::string> reasons;
   reasons.reserve(S.rows.size());
@@ -709,7 +769,8 @@ static PetscErrorCode StoreWriteContents(SweepStore &S, hid_t file)
     const auto it = S.reasons.find(kv.first);
     reasons.push_back(it == S.reasons.end() ? std::string() : it->second);
   }
-  PetscCheck(H5WriteStringColumn(g, "reason", reasons, kReasonUnit), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write /results/reason");
+  PetscCheck(H5WriteStringColumn(g, "reason", reasons, kReasonUnit), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE,
+             "cannot write /results/reason");
   PetscCall(H5DimsTable(g, "case_index")); // the rows done, by their case
   H5Gclose(g);
   // The plan: every axis's value for every case (also those not yet done).
@@ -773,16 +834,21 @@ static std::string StoreWriteLeft(const SweepStore &S, bool full)
     else ++lost;
   }
   const bool        there    = ::lstat(S.output.c_str(), &st) == 0;
-  const std::string left     = !there ? "nothing was written at " + S.output
-                               : S_ISREG(st.st_mode) ? S.output + " is as it was"
-                                                      : S.output + " is left as it is (" + FileKind(st.st_mode) + ")";
-  const std::string again    = full ? "run the same command again once there is room" : "run the same command again once the cause is removed";
-  const std::string journals = std::to_string(kept) + " row(s) not in it are kept by the journal(s) in " + S.parts + " for a resume";
+  const std::string left     = !there              ? "nothing was written at " + S.output
+                             : S_ISREG(st.st_mode) ? S.output + " is as it was"
+                                                   : S.output + " is left as it is (" + FileKind(st.st_mode) + ")";
+  const std::string again    = full ? "run the same command again once there is room"
+                                    : "run the same command again once the cause is removed";
+  const std::string journals = std::to_string(kept) + " row(s) not in it are kept by the journal(s) in " + S.parts +
+                               " for a resume";
   if (lost > 0)
-    return left + "; " + std::to_string(lost) + " row(s) computed are neither in it nor in a journal (the journals could not be written either) and will be computed again" +
+    return left + "; " + std::to_string(lost) +
+           " row(s) computed are neither in it nor in a journal (the journals could not be written either) and will be "
+           "computed again" +
            (kept > 0 ? "; " + journals : "") + ": " + again;
   if (kept > 0) return left + ", and the " + journals + ": " + again;
-  return left + (S.rows.empty() ? "; no point had been computed" : "; it holds every row computed so far") + ": " + again;
+  return left + (S.rows.empty() ? "; no point had been computed" : "; it holds every row computed so far") + ": " +
+         again;
 }
 
 // F rewritten whole: built in memory, written to F.tmp (every write checked: a full disk shows
@@ -798,12 +864,14 @@ static PetscErrorCode StoreWrite(SweepStore &S)
   {
     H5ErrorsQuiet quiet;
     const hid_t   file = (hid_t)H5MemoryFileCreate(); // written to disk by us: every write checked
-    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "-output %s: HDF5 cannot create a file in memory", S.output.c_str());
+    PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "-output %s: HDF5 cannot create a file in memory",
+               S.output.c_str());
     const PetscErrorCode ierr = StoreWriteContents(S, file);
     if (ierr) error = LastErrorMessage(ierr);
     error = H5MemoryFileInstall(file, S.output, tmp, error); // F.tmp, fsync'ed, renamed onto F
   }
-  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing it failed (%s); %s", S.output.c_str(), WriteFailureCause(error).c_str(),
+  PetscCheck(error.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-output %s: writing it failed (%s); %s",
+             S.output.c_str(), WriteFailureCause(error).c_str(),
              StoreWriteLeft(S, WriteFailureCause(error) != error).c_str());
   S.rows_written = (PetscInt)S.rows.size();
   S.last_write   = MPI_Wtime();
@@ -816,7 +884,8 @@ static PetscErrorCode WrongParameters(const SweepStore &S, const std::string &wh
   PetscFunctionBeginUser;
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
           "-output %s: %s was written by a sweep with different parameters, so it cannot be resumed:%s\n"
-          "Rerun with the same options to resume it, add -sweep_restart to discard it and start over, or choose another -output.",
+          "Rerun with the same options to resume it, add -sweep_restart to discard it and start over, or choose "
+          "another -output.",
           S.output.c_str(), what.c_str(), diff.c_str());
   PetscFunctionReturn(0);
 }
@@ -846,15 +915,18 @@ static PetscErrorCode StoreRetryCheck(SweepStore &S, const SweepAttributes &stor
 
   PetscFunctionBeginUser;
   for (auto &kv : S.rows)
-    if (S.status_column >= 0 && SweepFailed(kv.second[S.status_column]) && S.reasons.count(kv.first)) failed[kv.first] = S.reasons[kv.first];
+    if (S.status_column >= 0 && SweepFailed(kv.second[S.status_column]) && S.reasons.count(kv.first))
+      failed[kv.first] = S.reasons[kv.first];
   const std::set<std::string> named = OptionsNamed(failed);
   const std::string           rest  = DiffBeyond(stored, S.signature, named, &changed);
   if (!rest.empty() || changed.empty()) {
     std::string allowed;
     for (const std::string &o : named) allowed += (allowed.empty() ? "-" : ", -") + o;
-    PetscCall(WrongParameters(S, "the file",
-                              SignatureDiff(stored, S.signature, RecordString(S.record, "input_files")) + "\n  (-sweep_retry_failed may change only the options its failed rows name as their cause" +
-                                (allowed.empty() ? std::string(": they name none)") : ": " + allowed + ")")));
+    PetscCall(
+      WrongParameters(S, "the file",
+                      SignatureDiff(stored, S.signature, RecordString(S.record, "input_files")) +
+                        "\n  (-sweep_retry_failed may change only the options its failed rows name as their cause" +
+                        (allowed.empty() ? std::string(": they name none)") : ": " + allowed + ")")));
   }
   S.retry_signature_hash = SignatureHash(stored);
   S.retry_changed += (S.retry_changed.empty() ? "" : "\n") + changed;
@@ -870,42 +942,54 @@ static PetscErrorCode StoreLoadFile(SweepStore &S)
   if (::stat(S.output.c_str(), &st) != 0) PetscFunctionReturn(0);
   H5ErrorsQuiet quiet;
   PetscCheck(H5Fis_hdf5(S.output.c_str()) > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-             "-output %s exists and is not an HDF5 file; add -sweep_restart to overwrite it or choose another -output", S.output.c_str());
+             "-output %s exists and is not an HDF5 file; add -sweep_restart to overwrite it or choose another -output",
+             S.output.c_str());
   hid_t file = H5Fopen(S.output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s exists but cannot be opened as HDF5; add -sweep_restart to overwrite it or choose another -output", S.output.c_str());
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+             "-output %s exists but cannot be opened as HDF5; add -sweep_restart to overwrite it or choose another "
+             "-output",
+             S.output.c_str());
   SweepAttributes a;
   H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, NULL, CollectAttribute, &a);
   if (a.str["task"] != "sweep") {
     H5Fclose(file);
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s holds no sweep (it was written by -task %s); add -sweep_restart to overwrite it or choose another -output", S.output.c_str(),
-            a.str["task"].empty() ? "impact or modes" : a.str["task"].c_str());
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+            "-output %s holds no sweep (it was written by -task %s); add -sweep_restart to overwrite it or choose "
+            "another -output",
+            S.output.c_str(), a.str["task"].empty() ? "impact or modes" : a.str["task"].c_str());
   }
   SweepAttributes stored;
   for (auto &kv : a.num)
     if (!AttributeIsVolatile(kv.first)) stored.num[kv.first] = kv.second;
   for (auto &kv : a.str)
     if (!AttributeIsVolatile(kv.first)) stored.str[kv.first] = kv.second;
-  SignatureCanonical(&stored); // as this run's (SignatureMaps)
-  S.retry_changed = a.str["sweep_retry_changed"]; // earlier retries, kept
+  SignatureCanonical(&stored);                       // as this run's (SignatureMaps)
+  S.retry_changed    = a.str["sweep_retry_changed"]; // earlier retries, kept
   const bool differs = SignatureHash(stored) != S.signature_hash;
   if (differs && !S.plan.retry_failed) {
     H5Fclose(file);
-    PetscCall(WrongParameters(S, "the file", SignatureDiff(stored, S.signature, RecordString(S.record, "input_files"))));
+    PetscCall(
+      WrongParameters(S, "the file", SignatureDiff(stored, S.signature, RecordString(S.record, "input_files"))));
   }
   hid_t g = H5Gopen2(file, "results", H5P_DEFAULT);
-  PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s has no /results group; add -sweep_restart to overwrite it", S.output.c_str());
+  PetscCheck(g >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "-output %s has no /results group; add -sweep_restart to overwrite it", S.output.c_str());
   const auto                      &cols = S.columns;
   std::vector<std::vector<double>> data(cols.size());
   for (size_t c = 0; c < cols.size(); ++c) {
-    const bool ok = cols[c].labels.empty() ? ReadDataset(g, cols[c].name.c_str(), &data[c]) : ReadTextColumn(g, cols[c].name.c_str(), cols[c].labels, &data[c]);
-    PetscCheck(ok && data[c].size() == data[0].size(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/%s is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str(),
-               cols[c].name.c_str());
+    const bool ok = cols[c].labels.empty() ? ReadDataset(g, cols[c].name.c_str(), &data[c])
+                                           : ReadTextColumn(g, cols[c].name.c_str(), cols[c].labels, &data[c]);
+    PetscCheck(ok && data[c].size() == data[0].size(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+               "-output %s: /results/%s is missing or has the wrong length; add -sweep_restart to overwrite it",
+               S.output.c_str(), cols[c].name.c_str());
   }
   std::vector<std::string> reasons;
   const bool               reasons_ok = H5ReadStringColumn(g, "reason", &reasons) && reasons.size() == data[0].size();
   H5Gclose(g);
   H5Fclose(file);
-  PetscCheck(reasons_ok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-output %s: /results/reason is missing or has the wrong length; add -sweep_restart to overwrite it", S.output.c_str());
+  PetscCheck(reasons_ok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+             "-output %s: /results/reason is missing or has the wrong length; add -sweep_restart to overwrite it",
+             S.output.c_str());
   for (size_t r = 0; r < data[0].size(); ++r) {
     const double idx = data[0][r];
     if (!(idx >= 0 && idx < S.ncases && idx == std::floor(idx))) continue;
@@ -960,19 +1044,25 @@ PetscErrorCode SweepPartsLock(const std::string &output, const std::string &part
       ::mkdir(parts.c_str(), 0755);
       continue;
     }
-    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (%s)", output.c_str(), path.c_str(), std::strerror(errno));
+    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create %s (%s)", output.c_str(),
+               path.c_str(), std::strerror(errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       ::close(fd);
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s is being written by another %s that is still running (%s is held); wait for it or choose another -output", output.c_str(), who,
-              path.c_str());
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+              "-output %s is being written by another %s that is still running (%s is held); wait for it or choose "
+              "another -output",
+              output.c_str(), who, path.c_str());
     }
     struct stat held, named;
-    if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &named) == 0 && held.st_dev == named.st_dev && held.st_ino == named.st_ino) {
+    if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
+        held.st_ino == named.st_ino) {
       *lock_fd = fd;
       PetscFunctionReturn(0);
     }
     ::close(fd);
-    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: %s keeps being replaced by another %s; wait for it or choose another -output", output.c_str(), path.c_str(), who);
+    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+               "-output %s: %s keeps being replaced by another %s; wait for it or choose another -output",
+               output.c_str(), path.c_str(), who);
   }
 }
 
@@ -1002,7 +1092,7 @@ static PetscErrorCode StoreOpenLocked(SweepStore &S, int *run)
   ::closedir(d);
   for (const std::string &path : SweepJournalFiles(S.parts, run)) {
     SweepJournalReader j;
-    j.path = path;
+    j.path                        = path;
     SweepJournalReader::Status st = j.ReadNew(S.signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr);
     if (st == SweepJournalReader::WrongParameters && S.retry_signature_hash) { // written before this retry's change
       SweepJournalReader former;
@@ -1010,7 +1100,8 @@ static PetscErrorCode StoreOpenLocked(SweepStore &S, int *run)
       st          = former.ReadNew(S.retry_signature_hash, S.ncols, S.ncases, &S.rows, &S.reasons, nullptr);
     }
     if (st == SweepJournalReader::WrongParameters)
-      PetscCall(WrongParameters(S, "the journal " + j.path, "\n  (its parameter signature differs from the current one)"));
+      PetscCall(
+        WrongParameters(S, "the journal " + j.path, "\n  (its parameter signature differs from the current one)"));
   }
   // -sweep_retry_failed: the failed cases are computed again (their rows are dropped).
   if (S.plan.retry_failed && S.status_column >= 0)
@@ -1031,7 +1122,9 @@ PetscErrorCode SweepStoreOpen(SweepStore &S, int *run)
 {
   PetscFunctionBeginUser;
   const bool made = ::mkdir(S.parts.c_str(), 0755) == 0;
-  PetscCheck(made || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-output %s: cannot create the journal directory %s (%s)", S.output.c_str(), S.parts.c_str(), std::strerror(errno));
+  PetscCheck(made || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN,
+             "-output %s: cannot create the journal directory %s (%s)", S.output.c_str(), S.parts.c_str(),
+             std::strerror(errno));
   PetscErrorCode ierr = StoreLock(S);
   if (ierr && made) ::rmdir(S.parts.c_str());
   PetscCall(ierr);
@@ -1073,12 +1166,12 @@ PetscErrorCode SweepStoreRefresh(SweepStore &S)
 PetscErrorCode SweepStoreClose(SweepStore &S)
 {
   PetscFunctionBeginUser;
-  PetscCheck((PetscInt)S.rows.size() == S.ncases, PETSC_COMM_SELF, PETSC_ERR_PLIB, "sweep ended with %zu of %" PetscInt_FMT " rows", S.rows.size(), S.ncases);
+  PetscCheck((PetscInt)S.rows.size() == S.ncases, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "sweep ended with %zu of %" PetscInt_FMT " rows", S.rows.size(), S.ncases);
   PetscCall(StoreWrite(S));
   RemoveJournals(S);
   SweepStoreRelease(S);
   PetscFunctionReturn(0);
 }
-
 
 } // namespace beamimpact

@@ -45,8 +45,9 @@ struct SweepColumn {
   std::string              unit;
   bool                     timing;          // differs from run to run (wall_time): excluded from identity checks
   bool                     integer = false; // a count (double on disk for NaN rows, with the attribute integer = 1)
-  std::vector<std::string> labels = {};     // a text axis (categorical): the row holds the index of its label; on disk the labels, as strings
-  std::string              description = {}; // one line, for the results reference (docs/results.md)
+  std::vector<std::string> labels =
+    {}; // a text axis (categorical): the row holds the index of its label; on disk the labels, as strings
+  std::string description = {}; // one line, for the results reference (docs/results.md)
 };
 
 // The journal of the group leader on world rank `rank` in run (attempt) `run` of -output.
@@ -88,8 +89,14 @@ struct SweepJournalReader {
   bool        stopped   = false; // a bad record: ignore the rest of the file
   uint64_t    signature = 0;
 
-  enum Status { Ok, Missing, WrongParameters };
-  Status ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases, std::map<PetscInt, std::vector<double>> *rows, std::map<PetscInt, std::string> *reasons, PetscInt *added);
+  enum Status {
+    Ok,
+    Missing,
+    WrongParameters
+  };
+  Status ReadNew(uint64_t expected_signature, uint32_t ncols, PetscInt ncases,
+                 std::map<PetscInt, std::vector<double>> *rows, std::map<PetscInt, std::string> *reasons,
+                 PetscInt *added);
 };
 
 // Root attributes by name (what the parameter signature is made of).
@@ -110,20 +117,20 @@ struct SweepStore {
   uint32_t                                ncols          = 0;
   PetscInt                                ncases         = 0;
   std::map<PetscInt, std::vector<double>> rows;
-  std::map<PetscInt, std::string>         reasons; // of the failed rows (status != 0)
+  std::map<PetscInt, std::string>         reasons;            // of the failed rows (status != 0)
   int                                     status_column = -1; // index of "status" in columns
-  std::vector<SweepJournalReader>         live; // this run's journals
+  std::vector<SweepJournalReader>         live;               // this run's journals
   int                                     lock_fd = -1;
   // -sweep_retry_failed with options changed that the failed rows name as their cause
   // (-impact_max_contacts, -impact_max_time, ...): the file's former signature (its journals
   // still load) and what changed, kept in the file as the attribute sweep_retry_changed.
-  uint64_t                                retry_signature_hash = 0;
-  std::string                             retry_changed;
-  PetscInt                                rows_written = -1;
-  double                                  last_write = 0, write_cost = 0; // s (MPI_Wtime), s
-  int                                     writes      = 0;                // live rewrites (SweepStoreRefresh) so far
-  SweepUq                                 uq;                             // a sampled sweep's statistics, once complete (written with the file)
-  double                                  write_total = 0;                // s, their time, reading the journals included
+  uint64_t    retry_signature_hash = 0;
+  std::string retry_changed;
+  PetscInt    rows_written = -1;
+  double      last_write = 0, write_cost = 0; // s (MPI_Wtime), s
+  int         writes = 0;                     // live rewrites (SweepStoreRefresh) so far
+  SweepUq     uq;                             // a sampled sweep's statistics, once complete (written with the file)
+  double      write_total = 0;                // s, their time, reading the journals included
 };
 
 // The options that decide a sweep's numbers, "-name value ..." (recorded as
@@ -135,7 +142,8 @@ std::map<std::string, std::string> SweepOptionsParse(const std::string &all);
 
 // Rank 0: the store of `output` for the plan, its row columns and its record (whose
 // attributes, all but the volatile ones, make the parameter signature).
-void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std::vector<SweepColumn> &columns, const RunRecord &record, SweepStore *S);
+void SweepStoreInit(const std::string &output, const SweepPlan &plan, const std::vector<SweepColumn> &columns,
+                    const RunRecord &record, SweepStore *S);
 // Rank 0: locks the output, loads what is done (file and journals; an error when they
 // were written with other parameters), with -sweep_retry_failed forgets the failed rows,
 // rewrites the file with all of it, drops the old journals. Returns this run's number

@@ -31,7 +31,8 @@ double UqQuantileSorted(const std::vector<double> &v, double q)
 
 // The quantiles of a bootstrap resample of sorted values, from the counts of each value drawn
 // (no sort: the resample's order statistics are read off the cumulative counts).
-static void ResampleQuantiles(const std::vector<double> &sorted, uint64_t seed, uint64_t b, std::vector<PetscInt> &counts, double q[3])
+static void ResampleQuantiles(const std::vector<double> &sorted, uint64_t seed, uint64_t b,
+                              std::vector<PetscInt> &counts, double q[3])
 {
   const size_t n = sorted.size();
   std::fill(counts.begin(), counts.end(), 0);
@@ -47,8 +48,8 @@ static void ResampleQuantiles(const std::vector<double> &sorted, uint64_t seed, 
     const size_t lo = (size_t)std::floor(h);
     const double a  = order(lo, &k, &cum);
     size_t       k2 = k, cum2 = cum;
-    const double c  = order(std::min(n - 1, lo + 1), &k2, &cum2);
-    q[m]            = a + (h - (double)lo) * (c - a);
+    const double c = order(std::min(n - 1, lo + 1), &k2, &cum2);
+    q[m]           = a + (h - (double)lo) * (c - a);
   }
 }
 
@@ -99,10 +100,11 @@ void UqWilson(double k, double n, double z, double *lo, double *hi)
 }
 
 // The indices from the groups `use` (indices j, repeats allowed).
-static void SobolOf(const std::vector<double> &fA, const std::vector<double> &fB, const std::vector<std::vector<double>> &fAB, const std::vector<size_t> &use, double *V,
+static void SobolOf(const std::vector<double> &fA, const std::vector<double> &fB,
+                    const std::vector<std::vector<double>> &fAB, const std::vector<size_t> &use, double *V,
                     std::vector<double> *S, std::vector<double> *ST)
 {
-  const size_t d = fAB.size();
+  const size_t d    = fAB.size();
   double       mean = 0, var = 0;
   for (size_t j : use) mean += fA[j] + fB[j];
   mean /= 2.0 * (double)use.size();
@@ -113,7 +115,8 @@ static void SobolOf(const std::vector<double> &fA, const std::vector<double> &fB
   for (size_t i = 0; i < d; ++i) {
     double s = 0, t = 0;
     for (size_t j : use) {
-      s += (fB[j] - mean) * (fAB[i][j] - fA[j]); // centred (as SALib does): the estimator's variance does not grow with the mean
+      s += (fB[j] - mean) *
+           (fAB[i][j] - fA[j]); // centred (as SALib does): the estimator's variance does not grow with the mean
       t += (fA[j] - fAB[i][j]) * (fA[j] - fAB[i][j]);
     }
     (*S)[i]  = *V > 0 ? s / (double)use.size() / *V : NAN;
@@ -121,7 +124,8 @@ static void SobolOf(const std::vector<double> &fA, const std::vector<double> &fB
   }
 }
 
-UqSobol UqSobolIndices(const std::vector<double> &fA, const std::vector<double> &fB, const std::vector<std::vector<double>> &fAB, uint64_t seed, int bootstrap)
+UqSobol UqSobolIndices(const std::vector<double> &fA, const std::vector<double> &fB,
+                       const std::vector<std::vector<double>> &fAB, uint64_t seed, int bootstrap)
 {
   UqSobol             r;
   const size_t        d = fAB.size();
@@ -141,7 +145,8 @@ UqSobol UqSobolIndices(const std::vector<double> &fA, const std::vector<double> 
   std::vector<std::vector<double>> bs(d), bt(d);
   std::vector<size_t>              use(ok.size());
   for (int b = 0; b < bootstrap; ++b) {
-    for (size_t k = 0; k < ok.size(); ++k) use[k] = ok[SampleIndex(seed, kStreamSobolBootstrap + (uint64_t)b, k, ok.size())];
+    for (size_t k = 0; k < ok.size(); ++k)
+      use[k] = ok[SampleIndex(seed, kStreamSobolBootstrap + (uint64_t)b, k, ok.size())];
     double              V;
     std::vector<double> S, ST;
     SobolOf(fA, fB, fAB, use, &V, &S, &ST);
@@ -159,7 +164,8 @@ UqSobol UqSobolIndices(const std::vector<double> &fA, const std::vector<double> 
   return r;
 }
 
-bool UqConditionsParse(const std::string &text, const std::vector<std::string> &columns, std::vector<UqCondition> *conds, std::string *why)
+bool UqConditionsParse(const std::string &text, const std::vector<std::string> &columns,
+                       std::vector<UqCondition> *conds, std::string *why)
 {
   std::string all;
   for (char c : text)
@@ -214,7 +220,7 @@ bool Described(const SweepStore &S, size_t c)
 // The rows of grid point g: per row of the sample (s < rows), its row in the store (null if absent).
 std::vector<const std::vector<double> *> GridRows(const SweepStore &S, PetscInt g)
 {
-  const PetscInt                          rows = S.plan.SampleRows();
+  const PetscInt                           rows = S.plan.SampleRows();
   std::vector<const std::vector<double> *> out((size_t)rows, nullptr);
   for (PetscInt s = 0; s < rows; ++s) {
     const auto it = S.rows.find(g * rows + s);
@@ -242,7 +248,8 @@ PetscErrorCode SweepUqCompute(const SweepStore &S, SweepUq *uq)
     if (Described(S, c)) numeric.push_back(S.columns[c].name);
   std::vector<UqCondition> conds;
   std::string              why;
-  PetscCheck(UqConditionsParse(P.exceedance, numeric, &conds, &why) || P.exceedance.empty(), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-sweep_exceedance \"%s\" is not allowed: %s", P.exceedance.c_str(), why.c_str());
+  PetscCheck(UqConditionsParse(P.exceedance, numeric, &conds, &why) || P.exceedance.empty(), PETSC_COMM_SELF,
+             PETSC_ERR_ARG_WRONG, "-sweep_exceedance \"%s\" is not allowed: %s", P.exceedance.c_str(), why.c_str());
   for (const UqCondition &c : conds) uq->exceedance.push_back({c, {}, {}, {}, {}, {}});
   for (size_t c = 0; c < S.columns.size(); ++c)
     if (Described(S, c)) uq->columns.push_back({S.columns[c].name, S.columns[c].unit, {}, {}});
@@ -258,9 +265,11 @@ PetscErrorCode SweepUqCompute(const SweepStore &S, SweepUq *uq)
     uq->points.push_back(used);
     uq->failed.push_back(failed);
     for (SweepUqColumn &col : uq->columns) {
-      const size_t c = (size_t)(std::find_if(S.columns.begin(), S.columns.end(), [&](const SweepColumn &x) { return x.name == col.name; }) - S.columns.begin());
+      const size_t c = (size_t)(std::find_if(S.columns.begin(), S.columns.end(),
+                                             [&](const SweepColumn &x) { return x.name == col.name; }) -
+                                S.columns.begin());
       // The design's independent points: every row, or A and B of Saltelli's blocks.
-      std::vector<double> y, fA, fB;
+      std::vector<double>              y, fA, fB;
       std::vector<std::vector<double>> fAB(d);
       for (PetscInt s = 0; s < rows; ++s) {
         const double v = R[(size_t)s] ? (*R[(size_t)s])[c] : NAN;
@@ -276,13 +285,17 @@ PetscErrorCode SweepUqCompute(const SweepStore &S, SweepUq *uq)
         for (double v : y)
           if (std::isfinite(v)) n += 1, k += e.c.Holds(v) ? 1 : 0;
         UqWilson(k, n, 1.959963984540054, &lo, &hi);
-        e.count.push_back(k), e.n.push_back(n), e.p.push_back(n > 0 ? k / n : NAN), e.lo.push_back(lo), e.hi.push_back(hi);
+        e.count.push_back(k), e.n.push_back(n), e.p.push_back(n > 0 ? k / n : NAN), e.lo.push_back(lo),
+          e.hi.push_back(hi);
       }
     }
   }
   // Columns without a finite value anywhere (those that do not apply to this scene) are left out.
   uq->columns.erase(std::remove_if(uq->columns.begin(), uq->columns.end(),
-                                   [](const SweepUqColumn &c) { return std::all_of(c.d.begin(), c.d.end(), [](const UqDescription &x) { return x.count == 0; }); }),
+                                   [](const SweepUqColumn &c) {
+                                     return std::all_of(c.d.begin(), c.d.end(),
+                                                        [](const UqDescription &x) { return x.count == 0; });
+                                   }),
                     uq->columns.end());
   uq->done = true;
   PetscFunctionReturn(0);
@@ -408,7 +421,8 @@ PetscErrorCode WriteSobol(const SweepUq &uq, hid_t file)
     const std::string vu = c.unit.empty() || c.unit == "1" ? "1" : "(" + c.unit + ")^2";
     PetscCall(H5WriteDataset1D(cg, "variance", variance, vu.c_str()));
     for (const char *n : {"first", "total"}) PetscCall(H5DimsAttach(cg, n, {"grid_point", "sobol_input"}));
-    for (const char *n : {"first_ci", "total_ci"}) PetscCall(H5DimsAttach(cg, n, {"grid_point", "sobol_input", "interval_end"}));
+    for (const char *n : {"first_ci", "total_ci"})
+      PetscCall(H5DimsAttach(cg, n, {"grid_point", "sobol_input", "interval_end"}));
     PetscCall(H5DimsTable(cg, "grid_point"));
     H5Gclose(cg);
   }
@@ -438,25 +452,34 @@ PetscErrorCode SweepUqPrint(const SweepStore &S, const SweepUq &uq)
       const SweepAxis &a = S.plan.axes[k];
       at += (at.empty() ? " at " : ", ") + a.name + " = " + a.Display(S.plan.CaseValues(uq.grid_first[g])[k]);
     }
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "statistics%s: %.0f points%s, %.0f failed (left out); mean +- its standard error, std, 5/50/95%% quantiles:\n", at.c_str(), uq.points[g], S.plan.sobol ? " (A and B of Saltelli's design)" : "",
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "statistics%s: %.0f points%s, %.0f failed (left out); mean +- its standard error, std, "
+                          "5/50/95%% quantiles:\n",
+                          at.c_str(), uq.points[g], S.plan.sobol ? " (A and B of Saltelli's design)" : "",
                           uq.failed[g]));
     for (const SweepUqColumn &c : uq.columns) {
       const UqDescription &x = c.d[g];
       if (!(x.std > 1e-12 * std::fabs(x.mean))) continue; // the columns that vary (beyond rounding)
       const std::string u = c.unit.empty() || c.unit == "1" ? "" : " " + c.unit;
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-28s %.6g +- %.2g, std %.4g, %.5g / %.5g / %.5g%s\n", c.name.c_str(), x.mean, x.sem, x.std, x.q[0], x.q[1], x.q[2], u.c_str()));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-28s %.6g +- %.2g, std %.4g, %.5g / %.5g / %.5g%s\n", c.name.c_str(),
+                            x.mean, x.sem, x.std, x.q[0], x.q[1], x.q[2], u.c_str()));
     }
     for (const SweepUqExceedance &e : uq.exceedance)
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "  P(%s) = %.4g (%.0f of %.0f), 95%% interval [%.4g, %.4g] (Wilson)\n", e.c.text.c_str(), e.p[g], e.count[g], e.n[g], e.lo[g], e.hi[g]));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "  P(%s) = %.4g (%.0f of %.0f), 95%% interval [%.4g, %.4g] (Wilson)\n",
+                            e.c.text.c_str(), e.p[g], e.count[g], e.n[g], e.lo[g], e.hi[g]));
     if (!S.plan.sobol) continue;
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "sobol indices%s, first [95%% interval] / total [95%% interval], per input:\n", at.c_str()));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "sobol indices%s, first [95%% interval] / total [95%% interval], per input:\n", at.c_str()));
     for (const SweepUqColumn &c : uq.columns) {
       const UqSobol &s = c.sobol[g];
-      if (c.d[g].std > 1e-12 * std::fabs(c.d[g].mean) && std::find(uq.inputs.begin(), uq.inputs.end(), c.name) == uq.inputs.end()) {
+      if (c.d[g].std > 1e-12 * std::fabs(c.d[g].mean) &&
+          std::find(uq.inputs.begin(), uq.inputs.end(), c.name) == uq.inputs.end()) {
         std::string line;
         for (size_t i = 0; i < uq.inputs.size(); ++i) {
           char buf[256];
-          std::snprintf(buf, sizeof buf, "%s%s %.3f [%.3f, %.3f] / %.3f [%.3f, %.3f]", i ? "; " : "", uq.inputs[i].c_str(), s.first[i], s.first_lo[i], s.first_hi[i], s.total[i], s.total_lo[i], s.total_hi[i]);
+          std::snprintf(buf, sizeof buf, "%s%s %.3f [%.3f, %.3f] / %.3f [%.3f, %.3f]", i ? "; " : "",
+                        uq.inputs[i].c_str(), s.first[i], s.first_lo[i], s.first_hi[i], s.total[i], s.total_lo[i],
+                        s.total_hi[i]);
           line += buf;
         }
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-28s %s\n", c.name.c_str(), line.c_str()));

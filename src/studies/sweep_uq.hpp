@@ -21,10 +21,10 @@ struct SweepStore;
 // standard error s / sqrt(n), the 5, 50 and 95 % quantiles (linear between order statistics, as
 // numpy's default) and their bootstrap standard errors.
 struct UqDescription {
-  double count = 0;                      // values used (finite)
+  double count = 0;                        // values used (finite)
   double mean = NAN, std = NAN, sem = NAN; // in the values' unit
-  double q[3]    = {NAN, NAN, NAN};      // q05, q50, q95
-  double q_se[3] = {NAN, NAN, NAN};      // their standard errors (bootstrap)
+  double q[3]    = {NAN, NAN, NAN};        // q05, q50, q95
+  double q_se[3] = {NAN, NAN, NAN};        // their standard errors (bootstrap)
 };
 extern const double kUqQuantiles[3]; // 0.05, 0.5, 0.95
 // y's description; the NaN values left out. bootstrap: resamples (with the counter of the seed).
@@ -41,21 +41,26 @@ void UqWilson(double k, double n, double z, double *lo, double *hi);
 // - fAB_i)^2) / (2 V) (Jansen), V the variance of fA and fB together. Groups j with a NaN are left
 // out. Intervals: the 2.5 and 97.5 % percentiles of `bootstrap` resamples of the groups.
 struct UqSobol {
-  std::vector<double> first, total;           // one per input (1)
+  std::vector<double> first, total; // one per input (1)
   std::vector<double> first_lo, first_hi, total_lo, total_hi;
-  double              groups   = 0;           // N used
-  double              variance = NAN;         // V (the unit squared)
+  double              groups   = 0;   // N used
+  double              variance = NAN; // V (the unit squared)
 };
-UqSobol UqSobolIndices(const std::vector<double> &fA, const std::vector<double> &fB, const std::vector<std::vector<double>> &fAB, uint64_t seed, int bootstrap);
+UqSobol UqSobolIndices(const std::vector<double> &fA, const std::vector<double> &fB,
+                       const std::vector<std::vector<double>> &fAB, uint64_t seed, int bootstrap);
 
 // One condition of -sweep_exceedance: "COLUMN>VALUE" (or >=, <, <=).
 struct UqCondition {
   std::string text, column, op; // as written, without spaces
   double      threshold = 0;    // in the column's unit
-  bool        Holds(double y) const { return op == ">" ? y > threshold : op == ">=" ? y >= threshold : op == "<" ? y < threshold : y <= threshold; }
+  bool        Holds(double y) const
+  {
+    return op == ">" ? y > threshold : op == ">=" ? y >= threshold : op == "<" ? y < threshold : y <= threshold;
+  }
 };
 // Parses "COL>V[,COL<=V...]": each column must be one of `columns`. False with a reason.
-bool UqConditionsParse(const std::string &text, const std::vector<std::string> &columns, std::vector<UqCondition> *conds, std::string *why);
+bool UqConditionsParse(const std::string &text, const std::vector<std::string> &columns,
+                       std::vector<UqCondition> *conds, std::string *why);
 
 // The sweep's statistics, per point of the grid axes (g < G; G = 1 without grid axes).
 struct SweepUqColumn {
@@ -65,16 +70,17 @@ struct SweepUqColumn {
 };
 struct SweepUqExceedance {
   UqCondition         c;
-  std::vector<double> count, n, p, lo, hi; // per grid point: values beyond, values (finite, of points that ran), k/n, Wilson 95 %
+  std::vector<double> count, n, p, lo,
+    hi; // per grid point: values beyond, values (finite, of points that ran), k/n, Wilson 95 %
 };
 struct SweepUq {
-  bool                             done = false;
-  std::vector<std::string>         inputs;      // the sampled axes, in order
-  std::vector<size_t>              grid_axes;   // the plan's grid axes (indices)
-  std::vector<PetscInt>            grid_first;  // per grid point: its first case (its grid axes' values)
-  std::vector<double>              points, failed; // per grid point: rows used (A and B with -sweep_sobol), failed among them
-  std::vector<SweepUqColumn>       columns;
-  std::vector<SweepUqExceedance>   exceedance;
+  bool                       done = false;
+  std::vector<std::string>   inputs;         // the sampled axes, in order
+  std::vector<size_t>        grid_axes;      // the plan's grid axes (indices)
+  std::vector<PetscInt>      grid_first;     // per grid point: its first case (its grid axes' values)
+  std::vector<double>        points, failed; // per grid point: rows used (A and B with -sweep_sobol), failed among them
+  std::vector<SweepUqColumn> columns;
+  std::vector<SweepUqExceedance> exceedance;
 };
 
 // Rank 0, the sweep complete: the statistics of S's rows (nothing for a sweep without sampled axes).

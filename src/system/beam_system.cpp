@@ -23,9 +23,9 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   }
   BeamDiscretization d;
   build(p, &d);
-  BeamSystem &S    = *sys;
-  S                = BeamSystem();
-  S.beam_fields    = d.fields;
+  BeamSystem &S = *sys;
+  S             = BeamSystem();
+  S.beam_fields = d.fields;
   S.field_part.assign(d.fields, Part::Beam);
   if (p.torsion.on) S.roll_field = TorsionAppend(p, &d), S.field_part.push_back(Part::Twist);
   if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d);
@@ -40,7 +40,8 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   }
   S.field_part.resize(d.fields, Part::Wall); // the hoop's or the shell's
   if (p.strings.On()) {
-    const BedLayout bed = StringBedAppend(p.strings, StringBedFrameGrid(p.strings, p.nodes, p.length), S.roll_field, &d);
+    const BedLayout bed = StringBedAppend(p.strings, StringBedFrameGrid(p.strings, p.nodes, p.length), S.roll_field,
+                                          &d);
     S.bed_first         = bed.first;
     S.bed               = bed.grid;
     S.bed_head_center   = p.strings.head_center;
@@ -64,7 +65,8 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
 void BeamSystemAssemble(BeamSystem *sys)
 {
   BeamSystem &S = *sys;
-  std::stable_sort(S.strain.begin(), S.strain.end(), [](const StrainTerm &a, const StrainTerm &b) { return a.owner < b.owner; });
+  std::stable_sort(S.strain.begin(), S.strain.end(),
+                   [](const StrainTerm &a, const StrainTerm &b) { return a.owner < b.owner; });
   S.strain_begin.assign(S.ndof + 1, 0);
   for (const StrainTerm &t : S.strain) S.strain_begin[t.owner + 1]++;
   for (PetscInt q = 0; q < S.ndof; ++q) S.strain_begin[q + 1] += S.strain_begin[q];
@@ -94,18 +96,23 @@ bool CouplingAdd(const BeamSystem &sys, PetscInt d, PetscReal w, ContactCoupling
 
 } // namespace
 
-bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp) { return sys.bed_first >= 0 && BedInside(sys.bed, x_imp - sys.bed_head_center, z_imp); }
+bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
+{
+  return sys.bed_first >= 0 && BedInside(sys.bed, x_imp - sys.bed_head_center, z_imp);
+}
 
 ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
 {
   ContactCoupling g;
   g.x = x_imp;
   g.z = z_imp;
-  if (BeamSystemOnBed(sys, x_imp, z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
+  if (BeamSystemOnBed(sys, x_imp,
+                      z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
     for (const BedPatchNode &e : BedPatch(sys.bed, x_imp - sys.bed_head_center, z_imp, sys.bed_patch_radius)) {
       if (e.beyond) continue; // past a held frame's end (refused on a beam frame: StringBedPatchResolve)
       if (e.free) {
-        if (!CouplingAdd(sys, sys.Dof(e.i, sys.bed_first + e.j), e.w, &g)) return g; // refused before: the scenario's check
+        if (!CouplingAdd(sys, sys.Dof(e.i, sys.bed_first + e.j), e.w, &g))
+          return g; // refused before: the scenario's check
         continue;
       }
       if (!CouplingAdd(sys, sys.Dof(e.i), e.w, &g)) return g;
@@ -114,11 +121,11 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
     return g;
   }
   const ImpactStencil st = GridImpactStencil(sys.nodes, sys.L, x_imp);
-  g.n      = 2; // the hat entries of the two nodes around the point
-  g.dof[0] = sys.Dof(st.j);
-  g.dof[1] = sys.Dof(st.j + 1);
-  g.w[0]   = sys.held[g.dof[0]] ? 0.0 : st.w;
-  g.w[1]   = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
+  g.n                    = 2; // the hat entries of the two nodes around the point
+  g.dof[0]               = sys.Dof(st.j);
+  g.dof[1]               = sys.Dof(st.j + 1);
+  g.w[0]                 = sys.held[g.dof[0]] ? 0.0 : st.w;
+  g.w[1]                 = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
   if (sys.roll_field >= 0 && z_imp != 0.0) { // off the axis: the sections' roll times z
     g.dof[g.n] = sys.Dof(st.j, sys.roll_field), g.w[g.n] = sys.held[g.dof[g.n]] ? 0.0 : st.w * z_imp, g.n++;
     g.dof[g.n] = sys.Dof(st.j + 1, sys.roll_field), g.w[g.n] = sys.held[g.dof[g.n]] ? 0.0 : (1.0 - st.w) * z_imp, g.n++;
@@ -126,7 +133,8 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
   if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0; // the wall under the ball, in series
   if (sys.shell.harmonics.empty()) return g;
   // each harmonic's W_n under the ball's patch (outward: the inward displacement is -W_n)
-  const PetscReal a = sys.shell_contact_radius, R = st.w * sys.shell_radius[st.j] + (1 - st.w) * sys.shell_radius[st.j + 1];
+  const PetscReal a = sys.shell_contact_radius,
+                  R = st.w * sys.shell_radius[st.j] + (1 - st.w) * sys.shell_radius[st.j + 1];
   const std::vector<std::pair<PetscInt, PetscReal>> nodes = ShellPatchNodeWeights(sys.nodes, sys.L, x_imp, a);
   for (size_t k = 0; k < sys.shell.harmonics.size(); ++k) {
     const PetscReal wn = ShellPatchHarmonicWeight(sys.shell.harmonics[k], a, R);
@@ -140,7 +148,8 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
   return g;
 }
 
-void BeamSystemStiffnessApply(const BeamSystem &sys, const PetscReal *y, PetscInt ns, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt os)
+void BeamSystemStiffnessApply(const BeamSystem &sys, const PetscReal *y, PetscInt ns, PetscInt d0, PetscInt d1,
+                              PetscReal *f, PetscInt os)
 {
   ForceState s; // the deflection alone, at rest: f = K y
   s.y  = y;
@@ -191,7 +200,8 @@ PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, Pets
   return 0.5 * U;
 }
 
-void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal stored[kParts], PetscReal kinetic[kParts])
+void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs,
+                            PetscInt d0, PetscInt d1, PetscReal stored[kParts], PetscReal kinetic[kParts])
 {
   const PetscInt F = sys.fields;
   for (int p = 0; p < kParts; ++p) stored[p] = kinetic[p] = 0.0;
@@ -238,7 +248,10 @@ std::vector<PetscReal> RigidField(const BeamSystem &sys, PetscReal v0, PetscReal
 
 } // namespace
 
-std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll) { return RigidField(sys, v0, slope, roll, true); }
+std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll)
+{
+  return RigidField(sys, v0, slope, roll, true);
+}
 
 std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &sys)
 {
@@ -257,7 +270,8 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys
   // eigenvalues below 1e-12 of its trace (LAPACK's syev on the k x k matrix, k <= 3).
   PetscReal A[9] = {0}, lambda[3] = {0}, work[32];
   for (PetscInt d = 0; d < sys.ndof; ++d)
-    if (sys.held[d] && !sys.Bed(d % sys.fields)) // a string bed's held dofs are not unknowns (their strings' mass moves with the frame): they hold nothing
+    if (sys.held[d] && !sys.Bed(d % sys.fields)) // a string bed's held dofs are not unknowns (their strings' mass moves
+                                                 // with the frame): they hold nothing
       for (int a = 0; a < k; ++a)
         for (int b = 0; b < k; ++b) A[a * k + b] += c[a][d] * c[b][d];
   PetscReal trace = 0;
@@ -285,10 +299,12 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys
   return out;
 }
 
-std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body)
+std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing,
+                                               const BeamRigidBody &body)
 {
   // -(V_cm + Omega (x - x_cm)) = -(V_cm - Omega x_cm) - Omega x
-  return BeamSystemRigidVelocity(sys, -(swing.bat_speed - swing.bat_angular_velocity * body.x_cm), -swing.bat_angular_velocity);
+  return BeamSystemRigidVelocity(sys, -(swing.bat_speed - swing.bat_angular_velocity * body.x_cm),
+                                 -swing.bat_angular_velocity);
 }
 
 PetscReal BeamSystemFreeMass(const BeamSystem &sys)
@@ -298,7 +314,8 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys)
   return M;
 }
 
-PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra, PetscInt *where)
+PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra,
+                                      PetscReal m_extra, PetscInt *where)
 {
   if (where) *where = -1;
   const PetscInt width = 2 * sys.bw + 1;
@@ -312,7 +329,8 @@ PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupli
       if (j >= 0 && j < sys.ndof && !sys.held[j]) sum += std::abs(sys.band[(size_t)width * i + o]);
     }
     for (PetscInt q = 0; q < g.n; ++q)
-      if (g.dof[q] == i && g.w[q] != 0.0) sum += k_extra * std::abs(g.w[q]) * (gsum + 1.0); // Gershgorin: |entries| (a shell's weights are negative)
+      if (g.dof[q] == i && g.w[q] != 0.0)
+        sum += k_extra * std::abs(g.w[q]) * (gsum + 1.0); // Gershgorin: |entries| (a shell's weights are negative)
     if (sum / sys.mass[i] > lam) {
       lam = sum / sys.mass[i];
       if (where) *where = i;
@@ -331,7 +349,8 @@ const char *BeamSystemPartName(Part p)
   return names[(int)p];
 }
 
-Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n, PetscReal *share)
+Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n,
+                            PetscReal *share)
 {
   PetscReal sum = 0, by[kParts] = {0};
   for (PetscInt r = 0; r < n; ++r) by[(int)sys.PartOf((dof ? dof[r] : r) % sys.fields)] += e[r], sum += e[r];
@@ -355,7 +374,8 @@ const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)
   }
 }
 
-void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt os)
+void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1,
+                            PetscReal *f, PetscInt os)
 {
   ForceState s; // the frame at rest
   s.v  = v;

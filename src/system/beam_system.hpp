@@ -34,45 +34,50 @@
 namespace beamimpact {
 
 struct BeamSystem {
-  PetscInt  nodes = 0, fields = 1, ndof = 0;
-  PetscInt  beam_fields = 1;               // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
-  PetscInt  wall_dof    = -1;              // the hoop oscillator's dof (model/barrel.hpp), -1 without
-  ShellLayout shell;                       // the shell's fields (-beam_shell, model/shell.hpp; first -1 without): harmonic k's W_n is field shell.WField(k)
-  PetscReal shell_contact_radius = 0;      // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
-  std::vector<PetscReal> shell_radius;     // m, the wall's midsurface radius R per node (0 where solid)
-  PetscInt  roll_field = -1;               // the frame's roll phi (rad; -beam_torsion), -1 without
-  PetscInt  bed_first  = -1;               // the string bed's first field (-strings_frame): field bed_first + j is w at (x_i, z_j)
-  BedGrid   bed;                           // the bed's grid (its columns: the nodes), with bed_first
-  PetscReal bed_head_center = 0;           // m, the head's centre along the frame
-  PetscReal bed_patch_radius = 0;          // m, the ball's load disc on the bed (-strings_patch_radius)
-  std::vector<Part> field_part;            // the part each field belongs to (model/beam_theory.hpp)
-  PetscReal L = 0, h = 0;                  // m, length and node spacing
-  std::vector<PetscReal>  mass;            // kg (or kg m^2), per dof (with a grip's hands)
-  std::vector<char>       held;            // 1 where the dof is held at 0
-  std::vector<StrainTerm> strain;          // U = 1/2 sum weight (b . y)^2, sorted by owner dof
-  std::vector<PetscInt>   strain_begin;    // terms owned by dof d: [strain_begin[d], strain_begin[d+1])
-  PetscInt                bw = 0;          // half-bandwidth of K and C (dofs)
-  PetscInt                reach = 0;       // max |dof - owner| over the strain terms
-  std::vector<PetscReal>  band;            // N/m: K = df/dy of every force term, K(i, i+o-bw) = band[(2 bw + 1) i + o]
+  PetscInt nodes = 0, fields = 1, ndof = 0;
+  PetscInt
+    beam_fields = 1; // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
+  PetscInt    wall_dof = -1; // the hoop oscillator's dof (model/barrel.hpp), -1 without
+  ShellLayout shell; // the shell's fields (-beam_shell, model/shell.hpp; first -1 without): harmonic k's W_n is field
+                     // shell.WField(k)
+  PetscReal shell_contact_radius = 0;     // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
+  std::vector<PetscReal> shell_radius;    // m, the wall's midsurface radius R per node (0 where solid)
+  PetscInt               roll_field = -1; // the frame's roll phi (rad; -beam_torsion), -1 without
+  PetscInt  bed_first = -1; // the string bed's first field (-strings_frame): field bed_first + j is w at (x_i, z_j)
+  BedGrid   bed;            // the bed's grid (its columns: the nodes), with bed_first
+  PetscReal bed_head_center  = 0;       // m, the head's centre along the frame
+  PetscReal bed_patch_radius = 0;       // m, the ball's load disc on the bed (-strings_patch_radius)
+  std::vector<Part>       field_part;   // the part each field belongs to (model/beam_theory.hpp)
+  PetscReal               L = 0, h = 0; // m, length and node spacing
+  std::vector<PetscReal>  mass;         // kg (or kg m^2), per dof (with a grip's hands)
+  std::vector<char>       held;         // 1 where the dof is held at 0
+  std::vector<StrainTerm> strain;       // U = 1/2 sum weight (b . y)^2, sorted by owner dof
+  std::vector<PetscInt>   strain_begin; // terms owned by dof d: [strain_begin[d], strain_begin[d+1])
+  PetscInt                bw    = 0;    // half-bandwidth of K and C (dofs)
+  PetscInt                reach = 0;    // max |dof - owner| over the strain terms
+  std::vector<PetscReal>  band;         // N/m: K = df/dy of every force term, K(i, i+o-bw) = band[(2 bw + 1) i + o]
   PetscReal               frequency_unit = 0; // rad/s, sqrt(EI/mu)/L^2
-  ForceOperator           forces;          // the force terms, and C = df/dv
+  ForceOperator           forces;             // the force terms, and C = df/dv
 
   PetscInt  Dof(PetscInt node, PetscInt field = 0) const { return node * fields + field; }
   PetscReal NodeX(PetscInt node) const { return node * h; }
   bool      Damped() const { return forces.damped; }
   bool      Gripped() const { return forces.Find("grip") != nullptr; }
   // Whether field f is a section rotation (Timoshenko's field 1), which a rigid rotation turns.
-  bool      Rotation(PetscInt f) const { return f == 1 && beam_fields > 1; }
-  Part      PartOf(PetscInt f) const { return f < (PetscInt)field_part.size() ? field_part[f] : Part::Beam; } // a system laid out by hand: the beam's
-  bool      Wall(PetscInt f) const { return PartOf(f) == Part::Wall; }
-  bool      Bed(PetscInt f) const { return PartOf(f) == Part::Bed; }
+  bool Rotation(PetscInt f) const { return f == 1 && beam_fields > 1; }
+  Part PartOf(PetscInt f) const
+  {
+    return f < (PetscInt)field_part.size() ? field_part[f] : Part::Beam;
+  } // a system laid out by hand: the beam's
+  bool Wall(PetscInt f) const { return PartOf(f) == Part::Wall; }
+  bool Bed(PetscInt f) const { return PartOf(f) == Part::Bed; }
   // Whether field f is a deflection (m) toward the ball: the beam's (field 0) or the bed's. Their
   // masses carry the momentum; a rigid motion y = a + b x + c z moves them all.
-  bool      Deflection(PetscInt f) const { return f == 0 || Bed(f); }
+  bool Deflection(PetscInt f) const { return f == 0 || Bed(f); }
   // The point (x along the beam, z across from its axis; m) of dof d's deflection.
   PetscReal DofZ(PetscInt d) const { return Bed(d % fields) ? bed.Z(d % fields - bed_first) : 0.0; }
   // Ghost width (nodes) a distributed state needs for the forces and the strain energy.
-  PetscInt  GhostNodes() const { return (std::max({bw, 2 * reach, forces.reach}) + fields - 1) / fields; }
+  PetscInt GhostNodes() const { return (std::max({bw, 2 * reach, forces.reach}) + fields - 1) / fields; }
 };
 
 // Builds the system of the beam with its theory (BeamParams::theory). Returns false with
@@ -88,12 +93,12 @@ void BeamSystemAssemble(BeamSystem *sys);
 // impact point's nodes (weights of held dofs 0); a shell's radial dofs under the ball or a
 // second bending plane would be more entries. Every consumer loops over the n entries.
 struct ContactCoupling {
-  static constexpr PetscInt kMaxEntries = 256; // a shell's patch: up to 20 nodes per harmonic; a string bed's patch
-  PetscInt  n = 0;                  // entries used
-  PetscInt  dof[kMaxEntries] = {};  // coupled dofs
-  PetscReal w[kMaxEntries]   = {};  // their weights (1)
-  PetscReal x                = 0;   // m, the impact point
-  PetscReal z                = 0;   // m, across the face from the frame's axis (-impact_z; 0: on it)
+  static constexpr PetscInt kMaxEntries = 256;     // a shell's patch: up to 20 nodes per harmonic; a string bed's patch
+  PetscInt                  n           = 0;       // entries used
+  PetscInt                  dof[kMaxEntries] = {}; // coupled dofs
+  PetscReal                 w[kMaxEntries]   = {}; // their weights (1)
+  PetscReal                 x                = 0;  // m, the impact point
+  PetscReal                 z                = 0;  // m, across the face from the frame's axis (-impact_z; 0: on it)
   // Whether dof d is coupled, and its weight (the sum over its entries; 0 if not coupled).
   bool Couples(PetscInt d) const
   {
@@ -122,7 +127,8 @@ bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp);
 // at rest. y holds dof d at y[(d / fields) * node_stride + d % fields], valid for d within the
 // ghost width of [d0, d1) (a ghosted array indexed by global node); f likewise with
 // out_stride. Rows of held dofs are 0.
-void BeamSystemStiffnessApply(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt out_stride);
+void BeamSystemStiffnessApply(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1,
+                              PetscReal *f, PetscInt out_stride);
 
 // The nonzeros of row i of K (at most 2 bw + 1; columns of held dofs left out); returns the count.
 PetscInt BeamSystemStiffnessRow(const BeamSystem &sys, PetscInt i, PetscInt *cols, PetscReal *vals);
@@ -130,22 +136,27 @@ PetscInt BeamSystemStiffnessRow(const BeamSystem &sys, PetscInt i, PetscInt *col
 PetscInt BeamSystemDampingRow(const BeamSystem &sys, PetscInt i, PetscInt *cols, PetscReal *vals);
 
 // Strain energy (J) of the terms owned by dofs [d0, d1) (a sum of squares); y as above.
-PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0, PetscInt d1);
+PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0,
+                                 PetscInt d1);
 
 // The energies (J) of each part (model/beam_theory.hpp: the beam, the twist, the barrel's wall,
 // the string bed) over the dofs [d0, d1): stored[p] the strain terms of part p owned there,
 // kinetic[p] its dofs'; they sum to BeamSystemStrainEnergy and BeamSystemKineticEnergy. y, v as
 // y above.
-void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v, PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal stored[kParts], PetscReal kinetic[kParts]);
+void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v,
+                            PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal stored[kParts],
+                            PetscReal kinetic[kParts]);
 
 // Kinetic energy (J) of dofs [d0, d1); v as y above.
-PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
+PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0,
+                                  PetscInt d1);
 
 // Velocities (per dof) of the rigid motion with deflection velocity v0 + slope x + roll z (m/s)
 // at every deflection (the beam's and a string bed's), section spin `slope` (rad/s) for a beam
 // with rotation dofs and `roll` (rad/s) for its roll field: a free motion (K annihilates it).
 // Held dofs get 0.
-std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll = 0);
+std::vector<PetscReal> BeamSystemRigidVelocity(const BeamSystem &sys, PetscReal v0, PetscReal slope,
+                                               PetscReal roll = 0);
 // The structure's rigid motions before its holds (translation, pitch about x = 0, and with a roll
 // field the roll about the axis), as displacements per dof (held dofs included): v0 = 1, slope =
 // 1 (rad), roll = 1 (rad) of BeamSystemRigidVelocity without the holds.
@@ -157,7 +168,8 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &
 // structure is there (the bed's edge moves with its frame section), so they do not count.
 std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys);
 // The swinging bat's velocities at contact (model/swing.hpp): V(x) toward the ball, i.e. -y.
-std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing, const BeamRigidBody &body);
+std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing,
+                                               const BeamRigidBody &body);
 
 // Mass (kg) of the deflection dofs (the beam's and a string bed's) that are not held.
 PetscReal BeamSystemFreeMass(const BeamSystem &sys);
@@ -165,14 +177,16 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 // Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K plus a
 // contact stiffness k_extra (N/m) through the coupling to a ball of mass m_extra (kg).
 // With `where`, the dof whose row sets the bound (-1: the ball's own 2 k_extra / m_extra).
-PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra, PetscReal m_extra, PetscInt *where = nullptr);
+PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra,
+                                      PetscReal m_extra, PetscInt *where = nullptr);
 
 // The short name of a part, as -task modes and /modes_energy label a mode by it: "bending", "roll"
 // (the frame's twisting), "wall", "strings".
 const char *BeamSystemPartName(Part p);
 // The part holding most of a motion's kinetic energy: e[r] the kinetic energy (any unit) of dof
 // dof[r] (dof == nullptr: of dof r), r < n; *share (if given) its fraction of the sum (0 if the sum is 0).
-Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n, PetscReal *share);
+Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n,
+                            PetscReal *share);
 
 // Words for the part of the structure a dof belongs to ("the beam's bending", "the frame's roll",
 // "the barrel wall", "the string bed"), for messages.
@@ -182,13 +196,15 @@ const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof);
 // + beta (K v)_i, K v of the strain terms in the factored form, so C annihilates rigid motion
 // when alpha = 0; a grip's dampers), the frame at rest; v and f as y and f of
 // BeamSystemStiffnessApply. Rows of held dofs are 0. (ForceOperatorDampingApply with a frame.)
-void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt out_stride);
+void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1,
+                            PetscReal *f, PetscInt out_stride);
 
 // Dissipation rate v^T C v (W) of the dofs [d0, d1) and the strain terms they own, the frame at
 // rest: alpha sum m v^2 + beta sum_k weight_k (b_k . v)^2 (+ a grip's sum c v^2), a sum of squares
 // (>= 0 by construction, no cancellation); sums over a partition of the dofs add up to the
 // whole. v as y of BeamSystemStrainEnergy. (ForceOperatorDissipationRate with a frame.)
-PetscReal BeamSystemDissipationRate(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0, PetscInt d1);
+PetscReal BeamSystemDissipationRate(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0,
+                                    PetscInt d1);
 
 } // namespace beamimpact
 
@@ -196,7 +212,7 @@ namespace beamimpact {
 
 // Scales of the contact against this beam, shared by every solver's defaults and checks.
 struct ContactScales {
-  PetscReal time        = 0; // s, contact time T_r against the beam's free mass (the ball's mass reduced with the beam's)
+  PetscReal time = 0; // s, contact time T_r against the beam's free mass (the ball's mass reduced with the beam's)
   PetscReal compression = 0; // m, v_i sqrt(m_b / k_eff)
   PetscReal speed       = 0; // m/s, the incident speed
   PetscReal stiffness   = 0; // N/m, bound on dF/dc over the contact (stability bounds)

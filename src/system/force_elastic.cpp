@@ -19,16 +19,18 @@ namespace {
 
 class ElasticTerm : public ForceTerm {
 public:
-  explicit ElasticTerm(PetscReal beta) : beta_(beta) {}
+  explicit ElasticTerm(PetscReal beta) : beta_(beta) { }
   const char *Name() const override { return "elastic"; }
   bool        Damps() const override { return beta_ > 0; }
 
-  void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const override
+  void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                PetscInt fs) const override
   {
     if (beta_ != 0.0 && s.v) Spread<true, false>(sys, s.y, s.ys, s.v, s.vs, d0, d1, f, fs);
     else Spread<false, false>(sys, s.y, s.ys, nullptr, 0, d0, d1, f, fs);
   }
-  void AddDampingForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const override
+  void AddDampingForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                       PetscInt fs) const override
   {
     if (beta_ != 0.0 && s.v) Spread<false, true>(sys, s.v, s.vs, nullptr, 0, d0, d1, f, fs); // beta K v
   }
@@ -50,7 +52,10 @@ public:
   }
   PetscInt  HalfWidth(const BeamSystem &sys) const override { return sys.bw; }
   PetscInt  Reach(const BeamSystem &sys) const override { return 2 * sys.reach; }
-  PetscReal Energy(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1) const override { return BeamSystemStrainEnergy(sys, s.y, s.ys, d0, d1); }
+  PetscReal Energy(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1) const override
+  {
+    return BeamSystemStrainEnergy(sys, s.y, s.ys, d0, d1);
+  }
   PetscReal DissipationRate(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1) const override
   {
     return beta_ != 0.0 && s.v ? 2 * beta_ * BeamSystemStrainEnergy(sys, s.v, s.vs, d0, d1) : 0.0;
@@ -73,22 +78,24 @@ private:
   // f_d += B^T W B (y + beta v) for d in [d0, d1) (viscous: with the v part; scaled: beta B^T W B y),
   // reading the strain terms owned within the strain reach of the range.
   template <bool viscous, bool scaled>
-  void Spread(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const
+  void Spread(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs, PetscInt d0,
+              PetscInt d1, PetscReal *f, PetscInt fs) const
   {
     const PetscInt F  = sys.fields;
     auto           yi = [&](PetscInt d) {
       if (F == 1) return viscous ? y[d * ys] + beta_ * v[d * vs] : y[d * ys];
       return viscous ? y[(d / F) * ys + d % F] + beta_ * v[(d / F) * vs + d % F] : y[(d / F) * ys + d % F];
     };
-    auto fi = [&](PetscInt d) -> PetscReal & { return F == 1 ? f[d * fs] : f[(d / F) * fs + d % F]; };
-    const PetscInt k0 = sys.strain_begin[std::max<PetscInt>(0, d0 - sys.reach)], k1 = sys.strain_begin[std::min<PetscInt>(sys.ndof, d1 + sys.reach)];
+    auto           fi = [&](PetscInt d) { return F == 1 ? f + d * fs : f + (d / F) * fs + d % F; };
+    const PetscInt k0 = sys.strain_begin[std::max<PetscInt>(0, d0 - sys.reach)],
+                   k1 = sys.strain_begin[std::min<PetscInt>(sys.ndof, d1 + sys.reach)];
     for (PetscInt k = k0; k < k1; ++k) {
       const StrainTerm &t = sys.strain[k];
       PetscReal         e = 0.0;
       for (PetscInt q = 0; q < t.n; ++q) e += t.b[q] * yi(t.dof[q]);
       e *= scaled ? beta_ * t.weight : t.weight;
       for (PetscInt q = 0; q < t.n; ++q)
-        if (t.dof[q] >= d0 && t.dof[q] < d1) fi(t.dof[q]) += t.b[q] * e;
+        if (t.dof[q] >= d0 && t.dof[q] < d1) *fi(t.dof[q]) += t.b[q] * e;
     }
   }
 };

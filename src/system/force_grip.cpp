@@ -36,17 +36,25 @@ public:
   bool        Damps() const override { return damping_ > 0; }
   bool        TiesToFrame() const override { return true; }
 
-  void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const override
+  void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                PetscInt fs) const override
   {
     ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) { f[h.node * fs + h.field] += Force(s, h, d); });
   }
-  void AddDampingForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const override
+  void AddDampingForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                       PetscInt fs) const override
   {
-    if (s.v) ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) { f[h.node * fs + h.field] += h.c * (s.v[h.node * s.vs + h.field] - Frame(s.frame, d)); });
+    if (s.v)
+      ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) {
+        f[h.node * fs + h.field] += h.c * (s.v[h.node * s.vs + h.field] - Frame(s.frame, d));
+      });
   }
-  void AddDrive(const BeamSystem &sys, PetscReal t, const FrameMotion *frame, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const override
+  void AddDrive(const BeamSystem &sys, PetscReal t, const FrameMotion *frame, PetscInt d0, PetscInt d1, PetscReal *f,
+                PetscInt fs) const override
   {
-    ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) { f[h.node * fs + h.field] -= h.k * Frame(frame, d) * t + h.c * Frame(frame, d); });
+    ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) {
+      f[h.node * fs + h.field] -= h.k * Frame(frame, d) * t + h.c * Frame(frame, d);
+    });
   }
   void AddJacobian(const BeamSystem &sys, PetscReal *K, PetscReal *, PetscReal *Cdiag) const override
   {
@@ -68,13 +76,15 @@ public:
   PetscReal DissipationRate(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1) const override
   {
     PetscReal r = 0.0;
-    if (s.v) ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) {
+    if (s.v)
+      ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) {
         const PetscReal u = s.v[h.node * s.vs + h.field] - Frame(s.frame, d);
         r += h.c * u * u;
       });
     return r;
   }
-  void AddFrameReaction(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *force, PetscReal *moment) const override
+  void AddFrameReaction(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *force,
+                        PetscReal *moment) const override
   {
     ForEach(sys, d0, d1, [&](const Hold &h, PetscInt d) {
       if (h.field != 0) return; // a torque about the frame's axis: no force, no moment about x = 0
@@ -92,12 +102,15 @@ public:
   DampingScales Scales(const BeamSystem &sys) const override
   {
     DampingScales s;
-    ForEach(sys, 0, sys.ndof, [&](const Hold &h, PetscInt d) { s.mass_rate = std::max(s.mass_rate, h.c / sys.mass[d]); });
+    ForEach(sys, 0, sys.ndof,
+            [&](const Hold &h, PetscInt d) { s.mass_rate = std::max(s.mass_rate, h.c / sys.mass[d]); });
     return s;
   }
   bool Modal(PetscReal *, PetscReal *, std::string *why) const override
   {
-    if (why) *why = "the beam is held by the hands (-grip: a time-dependent drive of the swing's frame and a non-proportional damper), which the free-vibration modes do not include";
+    if (why)
+      *why = "the beam is held by the hands (-grip: a time-dependent drive of the swing's frame and a non-proportional "
+             "damper), which the free-vibration modes do not include";
     return false;
   }
 
@@ -106,7 +119,8 @@ private:
   PetscReal         damping_ = 0; // sum of the dampers' c
 
   static PetscReal Frame(const FrameMotion *frame, PetscInt d) { return frame ? frame->At(d) : 0.0; }
-  // The generalized force (N, or N m on the roll) of hold h on its dof d (arrays by node: node * stride is its field 0).
+  // The generalized force (N, or N m on the roll) of hold h on its dof d (arrays by node: node * stride is its field
+  // 0).
   PetscReal Force(const ForceState &s, const Hold &h, PetscInt d) const
   {
     const PetscReal vf = Frame(s.frame, d);
@@ -142,7 +156,8 @@ std::shared_ptr<const ForceTerm> GripTermCreate(const BeamParams &p, BeamSystem 
   }
   const bool roll = S.roll_field >= 0 && (p.grip.torsion_stiffness > 0 || p.grip.torsion_damping > 0);
   for (PetscInt i = 0; roll && i < S.nodes; ++i)
-    if (w[i] != 0.0 && !S.held[S.Dof(i, S.roll_field)]) holds.push_back({i, S.roll_field, p.grip.torsion_stiffness * w[i], p.grip.torsion_damping * w[i]});
+    if (w[i] != 0.0 && !S.held[S.Dof(i, S.roll_field)])
+      holds.push_back({i, S.roll_field, p.grip.torsion_stiffness * w[i], p.grip.torsion_damping * w[i]});
   return std::make_shared<GripTerm>(std::move(holds));
 }
 

@@ -14,12 +14,17 @@ namespace {
 
 class MassDampingTerm : public ForceTerm {
 public:
-  explicit MassDampingTerm(PetscReal alpha) : alpha_(alpha) {}
+  explicit MassDampingTerm(PetscReal alpha) : alpha_(alpha) { }
   const char *Name() const override { return "mass-damping"; }
   bool        Damps() const override { return true; }
 
-  void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const override { AddDampingForce(sys, s, d0, d1, f, fs); }
-  void AddDampingForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const override
+  void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                PetscInt fs) const override
+  {
+    AddDampingForce(sys, s, d0, d1, f, fs);
+  }
+  void AddDampingForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                       PetscInt fs) const override
   {
     const PetscInt F = sys.fields;
     if (!s.v) return;

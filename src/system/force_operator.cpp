@@ -28,7 +28,10 @@ const ForceTermEntry kForceTerms[] = {
   {"grip", GripTermCreate},
 };
 
-inline PetscReal &At(PetscReal *a, PetscInt d, PetscInt F, PetscInt stride) { return F == 1 ? a[d * stride] : a[(d / F) * stride + d % F]; }
+inline PetscReal &At(PetscReal *a, PetscInt d, PetscInt F, PetscInt stride)
+{
+  return F == 1 ? a[d * stride] : a[(d / F) * stride + d % F];
+}
 
 // f = 0 on [d0, d1), then add(term) adds each term's share, then the rows of held dofs are 0.
 template <class Add>
@@ -89,11 +92,14 @@ void ForceOperatorAssemble(BeamSystem *sys)
   for (PetscInt i = 0; i < S.ndof; ++i)
     for (PetscInt o = 0; o < width; ++o) {
       const PetscInt j = i + o - S.bw;
-      if (S.held[i] || (j >= 0 && j < S.ndof && S.held[j])) S.band[(size_t)width * i + o] = op.damping_band[(size_t)width * i + o] = 0.0;
+      if (S.held[i] || (j >= 0 && j < S.ndof && S.held[j]))
+        S.band[(size_t)width * i + o] = op.damping_band[(size_t)width * i + o] = 0.0;
     }
   for (PetscInt i = 0; i < S.ndof; ++i)
     if (S.held[i]) op.damping_diag[i] = 0.0;
-  auto nonzero = [](const std::vector<PetscReal> &a) { return std::any_of(a.begin(), a.end(), [](PetscReal x) { return x != 0.0; }); };
+  auto nonzero = [](const std::vector<PetscReal> &a) {
+    return std::any_of(a.begin(), a.end(), [](PetscReal x) { return x != 0.0; });
+  };
   if (!nonzero(op.damping_band)) op.damping_band.clear();
   if (!nonzero(op.damping_diag)) op.damping_diag.clear();
 }
@@ -103,17 +109,20 @@ void ForceOperatorApply(const BeamSystem &sys, const ForceState &s, PetscInt d0,
   SumOverTerms(sys, d0, d1, f, fs, [&](const ForceTerm &t) { t.AddForce(sys, s, d0, d1, f, fs); });
 }
 
-void ForceOperatorDampingApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs)
+void ForceOperatorDampingApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                               PetscInt fs)
 {
   SumOverTerms(sys, d0, d1, f, fs, [&](const ForceTerm &t) { t.AddDampingForce(sys, s, d0, d1, f, fs); });
 }
 
-void ForceOperatorDrive(const BeamSystem &sys, PetscReal t, const FrameMotion *frame, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs)
+void ForceOperatorDrive(const BeamSystem &sys, PetscReal t, const FrameMotion *frame, PetscInt d0, PetscInt d1,
+                        PetscReal *f, PetscInt fs)
 {
   SumOverTerms(sys, d0, d1, f, fs, [&](const ForceTerm &term) { term.AddDrive(sys, t, frame, d0, d1, f, fs); });
 }
 
-void ForceOperatorEnergy(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *elastic, PetscReal *others)
+void ForceOperatorEnergy(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *elastic,
+                         PetscReal *others)
 {
   *elastic = *others = 0.0;
   for (const auto &t : sys.forces.terms) {
@@ -130,7 +139,8 @@ PetscReal ForceOperatorDissipationRate(const BeamSystem &sys, const ForceState &
   return r;
 }
 
-void ForceOperatorFrameReaction(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *force, PetscReal *moment)
+void ForceOperatorFrameReaction(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *force,
+                                PetscReal *moment)
 {
   for (const auto &t : sys.forces.terms) t->AddFrameReaction(sys, s, d0, d1, force, moment);
 }
@@ -142,7 +152,10 @@ PetscReal ForceOperatorDrivePower(const BeamSystem &sys, const ForceState &s, Pe
   return P;
 }
 
-bool ForceOperatorDriven(const BeamSystem &sys, const FrameMotion *frame) { return sys.forces.framed && frame && frame->Moves(); }
+bool ForceOperatorDriven(const BeamSystem &sys, const FrameMotion *frame)
+{
+  return sys.forces.framed && frame && frame->Moves();
+}
 
 PetscReal ForceOperatorFrameMomentum(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1)
 {

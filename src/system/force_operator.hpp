@@ -40,8 +40,10 @@ struct ContactCoupling;
 // The swing's rigid frame (model/swing.hpp): the hands hold the handle to it. Built by the run's
 // set-up from the swing and the body (run/impact_driver.cpp); a bat at rest has a frame at rest.
 struct FrameMotion {
-  std::vector<PetscReal> v;      // m/s (rad/s for rotation dofs), the frame's velocity per dof, a rigid motion of the free beam; empty: at rest
-  PetscReal              q0 = 0; // J, the frame's momentum term Q (ForceOperatorFrameMomentum plus the ball's) at t = 0: the hands' work is Q(t) - q0
+  std::vector<PetscReal>
+    v; // m/s (rad/s for rotation dofs), the frame's velocity per dof, a rigid motion of the free beam; empty: at rest
+  PetscReal q0 = 0; // J, the frame's momentum term Q (ForceOperatorFrameMomentum plus the ball's) at t = 0: the hands'
+                    // work is Q(t) - q0
   bool      Moves() const { return !v.empty(); }
   PetscReal At(PetscInt d) const { return v.empty() ? 0.0 : v[d]; }
 };
@@ -52,11 +54,12 @@ PetscReal FrameMotionAt(const FrameMotion &frame, const ContactCoupling &g);
 // global node, valid within the system's ghost width of the range asked for:
 // BeamSystem::GhostNodes), v likewise.
 struct ForceState {
-  const PetscReal   *y = nullptr;     // m (rad)
-  PetscInt           ys = 1;          // node stride of y
-  const PetscReal   *v = nullptr;     // m/s (rad/s); nullptr: the velocity-dependent parts left out (callers pass none only when no term damps)
-  PetscInt           vs = 1;          // node stride of v
-  PetscReal          t = 0;           // s
+  const PetscReal *y  = nullptr; // m (rad)
+  PetscInt         ys = 1;       // node stride of y
+  const PetscReal *v  = nullptr; // m/s (rad/s); nullptr: the velocity-dependent parts left out (callers pass none only
+                                 // when no term damps)
+  PetscInt           vs    = 1;  // node stride of v
+  PetscReal          t     = 0;  // s
   const FrameMotion *frame = nullptr; // nullptr: the frame at rest
 };
 
@@ -71,15 +74,21 @@ struct DampingScales {
 // to the whole, as over the ranks. Arrays f are indexed like y with node stride fs.
 class ForceTerm {
 public:
-  virtual ~ForceTerm() = default;
+  virtual ~ForceTerm()             = default;
   virtual const char *Name() const = 0;
   // f += the term's force (N).
-  virtual void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs) const = 0;
+  virtual void AddForce(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                        PetscInt fs) const = 0;
   // f += its damping force C_term (v - v_ref) (N), v_ref the velocity the damper resists
   // relative to (the frame's for the grip, 0 otherwise): P' = 2 a^T (C v) of the dissipation rule.
-  virtual void AddDampingForce(const BeamSystem &, const ForceState &, PetscInt, PetscInt, PetscReal *, PetscInt) const {}
+  virtual void AddDampingForce(const BeamSystem &, const ForceState &, PetscInt, PetscInt, PetscReal *, PetscInt) const
+  {
+  }
   // f += its drive f(0, 0, t) (N): the force at zero deflection and velocity (a forcing in time).
-  virtual void AddDrive(const BeamSystem &, PetscReal, const FrameMotion *, PetscInt, PetscInt, PetscReal *, PetscInt) const {}
+  virtual void AddDrive(const BeamSystem &, PetscReal, const FrameMotion *, PetscInt, PetscInt, PetscReal *,
+                        PetscInt) const
+  {
+  }
   // The constant Jacobians: K += df/dy and C += df/dv (N/m, N s/m; bands of half-width sys.bw:
   // entry (i, i + o - bw) at [(2 bw + 1) i + o]), or C's diagonal Cdiag += (N s/m per dof).
   // Rows and columns of held dofs are left out by the caller.
@@ -94,12 +103,15 @@ public:
   virtual PetscReal DissipationRate(const BeamSystem &, const ForceState &, PetscInt, PetscInt) const { return 0; }
   // A term tying the beam to the frame (TiesToFrame): the force of the beam on the frame (N) and
   // its moment about x = 0 (N m), added; and the power the frame puts in, sum v_f . (-f) (W).
-  virtual bool      TiesToFrame() const { return false; }
-  virtual void      AddFrameReaction(const BeamSystem &, const ForceState &, PetscInt, PetscInt, PetscReal *, PetscReal *) const {}
+  virtual bool TiesToFrame() const { return false; }
+  virtual void AddFrameReaction(const BeamSystem &, const ForceState &, PetscInt, PetscInt, PetscReal *,
+                                PetscReal *) const
+  {
+  }
   virtual PetscReal DrivePower(const BeamSystem &, const ForceState &, PetscInt, PetscInt) const { return 0; }
   // A term not tied to the frame: G(y, v) with dG/dt = v_f^T f along any motion (N m/s x s: J),
   // in closed form (0 when v_f^T f = 0, as for forces without resultant and moment).
-  virtual PetscReal FrameImpulse(const BeamSystem &, const ForceState &, PetscInt, PetscInt) const { return 0; }
+  virtual PetscReal     FrameImpulse(const BeamSystem &, const ForceState &, PetscInt, PetscInt) const { return 0; }
   virtual bool          Damps() const { return false; }
   virtual DampingScales Scales(const BeamSystem &) const { return DampingScales(); }
   // Whether the beam's free-vibration modes (solvers/beam_modes.hpp) can carry the term: it
@@ -111,12 +123,13 @@ public:
 // The force terms of a system and their assembled damping (the stiffness band K is the
 // system's: BeamSystem::band).
 struct ForceOperator {
-  std::vector<std::shared_ptr<const ForceTerm>> terms;        // in the registration order
-  std::vector<PetscReal>                        damping_band; // N s/m: C less its diagonal part, in the layout of BeamSystem::band (empty: none)
-  std::vector<PetscReal>                        damping_diag; // N s/m: the diagonal part of C per dof (empty: none)
-  bool                                          damped = false; // a term damps
-  bool                                          framed = false; // a term ties the beam to the swing's frame (the frame's motion matters)
-  PetscInt                                      reach  = 0;     // dofs: how far beyond a range the terms read (ForceTerm::Reach)
+  std::vector<std::shared_ptr<const ForceTerm>> terms; // in the registration order
+  std::vector<PetscReal>
+    damping_band; // N s/m: C less its diagonal part, in the layout of BeamSystem::band (empty: none)
+  std::vector<PetscReal> damping_diag;   // N s/m: the diagonal part of C per dof (empty: none)
+  bool                   damped = false; // a term damps
+  bool                   framed = false; // a term ties the beam to the swing's frame (the frame's motion matters)
+  PetscInt               reach  = 0;     // dofs: how far beyond a range the terms read (ForceTerm::Reach)
 
   const ForceTerm *Find(const char *name) const;
 };
@@ -130,18 +143,23 @@ void ForceOperatorCreate(const BeamParams &p, BeamSystem *sys);
 void ForceOperatorAssemble(BeamSystem *sys);
 
 // f = the internal force of s (N) on the dofs [d0, d1): every term; rows of held dofs 0.
-void ForceOperatorApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs);
+void ForceOperatorApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                        PetscInt fs);
 // f = C (v - v_ref) (N): the damping forces of every term (0 rows for held dofs).
-void ForceOperatorDampingApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs);
+void ForceOperatorDampingApply(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *f,
+                               PetscInt fs);
 // f = f(0, 0, t) (N): the drives of every term (0 without one).
-void ForceOperatorDrive(const BeamSystem &sys, PetscReal t, const FrameMotion *frame, PetscInt d0, PetscInt d1, PetscReal *f, PetscInt fs);
+void ForceOperatorDrive(const BeamSystem &sys, PetscReal t, const FrameMotion *frame, PetscInt d0, PetscInt d1,
+                        PetscReal *f, PetscInt fs);
 // Energy stored in the terms (J): the elastic one (the strain energy) and the others (a grip's
 // springs, ...).
-void ForceOperatorEnergy(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *elastic, PetscReal *others);
+void ForceOperatorEnergy(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *elastic,
+                         PetscReal *others);
 // Dissipation rate sum of the terms' (v - v_ref)^T C (v - v_ref) (W), >= 0 by construction.
 PetscReal ForceOperatorDissipationRate(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1);
 // The force of the beam on the frame (N) and its moment about x = 0 (N m), added to *force, *moment.
-void ForceOperatorFrameReaction(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *force, PetscReal *moment);
+void ForceOperatorFrameReaction(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1, PetscReal *force,
+                                PetscReal *moment);
 // The power the frame puts into the beam (W).
 PetscReal ForceOperatorDrivePower(const BeamSystem &sys, const ForceState &s, PetscInt d0, PetscInt d1);
 // Whether the frame's motion enters the forces (a term ties the beam to it) and it moves.

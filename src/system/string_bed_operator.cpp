@@ -19,8 +19,8 @@ const Arm kArms[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 PetscReal ArmLength(const BedGrid &g, PetscInt i, PetscInt j, int dir, bool *cut)
 {
   const PetscInt  in = i + kArms[dir].di, jn = j + kArms[dir].dj;
-  const PetscReal h  = dir < 2 ? g.hx : g.hz;
-  *cut               = !(in > 0 && in < g.nx - 1 && jn > 0 && jn < g.nz - 1 && BedInside(g, g.X(in), g.Z(jn)));
+  const PetscReal h = dir < 2 ? g.hx : g.hz;
+  *cut              = !(in > 0 && in < g.nx - 1 && jn > 0 && jn < g.nz - 1 && BedInside(g, g.X(in), g.Z(jn)));
   if (!*cut) return h;
   return std::min(h, BedEdgeDistance(g, g.X(i), g.Z(j), dir));
 }
@@ -68,7 +68,8 @@ namespace {
 // scaled by share, to *w (keyed by node). The node alone when the disc covers no other (a < h).
 // The offsets are taken from the centre node ((i - ic) h_x, (j - jc) h_z), so the disc is
 // symmetric about it to the last bit and its first moments are those of the node.
-void BedDiscAdd(const BedGrid &g, PetscInt ic, PetscInt jc, PetscReal a, PetscReal share, std::map<std::pair<PetscInt, PetscInt>, PetscReal> *w)
+void BedDiscAdd(const BedGrid &g, PetscInt ic, PetscInt jc, PetscReal a, PetscReal share,
+                std::map<std::pair<PetscInt, PetscInt>, PetscReal> *w)
 {
   const PetscInt ri = a > 0 ? (PetscInt)std::ceil(a / g.hx) : 0, rj = a > 0 ? (PetscInt)std::ceil(a / g.hz) : 0;
   std::vector<std::pair<std::pair<PetscInt, PetscInt>, PetscReal>> disc;
@@ -132,7 +133,8 @@ BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt r
   const auto y   = [&](PetscInt i) { return i * G; };
   const auto phi = [&](PetscInt i) { return i * G + roll_field; };
   // a term over (dof, b) entries, the roll's entries left out without a roll field or when 0
-  const auto term = [&](PetscInt owner, PetscReal weight, std::initializer_list<std::pair<PetscInt, PetscReal>> e, std::initializer_list<std::pair<PetscInt, PetscReal>> roll) {
+  const auto term = [&](PetscInt owner, PetscReal weight, std::initializer_list<std::pair<PetscInt, PetscReal>> e,
+                        std::initializer_list<std::pair<PetscInt, PetscReal>> roll) {
     StrainTerm t;
     t.owner = owner, t.weight = weight, t.part = Part::Bed;
     for (const auto &q : e) t.dof[t.n] = q.first, t.b[t.n++] = q.second;
@@ -156,8 +158,10 @@ BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt r
       const BedRow r   = BedStiffnessRow(g, m, i, j);
       for (int dir = 0; dir < 4; ++dir) {
         const PetscReal c = dir < 2 ? m.N_x * g.hz : m.N_z * g.hx; // times 1/l
-        if (r.off[dir] != 0.0) {                                   // a link to a free neighbour: once, from its lower end
-          if (dir == 0) term(w(i, j), -r.off[dir], {{w(i + 1, j), 1}, {w(i, j), -1}, {y(i + 1), -1}, {y(i), 1}}, {{phi(i + 1), -z}, {phi(i), z}});
+        if (r.off[dir] != 0.0) { // a link to a free neighbour: once, from its lower end
+          if (dir == 0)
+            term(w(i, j), -r.off[dir], {{w(i + 1, j), 1}, {w(i, j), -1}, {y(i + 1), -1}, {y(i), 1}},
+                 {{phi(i + 1), -z}, {phi(i), z}});
           if (dir == 2) term(w(i, j), -r.off[dir], {{w(i, j + 1), 1}, {w(i, j), -1}}, {{phi(i), -g.hz}});
           continue;
         }

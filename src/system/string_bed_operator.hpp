@@ -24,14 +24,14 @@ namespace beamimpact {
 // closer than d_min = h^2 / (2 a) (Gibou et al.'s rule: moving the edge by less than h^2 keeps
 // the order; it avoids conductances ~ 1/d without bound).
 struct BedRow {
-  bool      held = true;
-  PetscReal diag = 0;        // N/m
-  PetscReal off[4] = {0};    // N/m, the coefficient of the neighbour in direction 0..3 (+x, -x, +z, -z); 0 when cut
-  PetscReal mass = 0;        // kg, sigma |cell ∩ head| for a free node (sigma h_x h_z inside)
+  bool      held   = true;
+  PetscReal diag   = 0;   // N/m
+  PetscReal off[4] = {0}; // N/m, the coefficient of the neighbour in direction 0..3 (+x, -x, +z, -z); 0 when cut
+  PetscReal mass   = 0;   // kg, sigma |cell ∩ head| for a free node (sigma h_x h_z inside)
 };
 BedRow BedStiffnessRow(const BedGrid &g, const Membrane &m, PetscInt i, PetscInt j);
 // Whether node (i, j) is an unknown (the first condition of BedStiffnessRow).
-bool   BedNodeFree(const BedGrid &g, PetscInt i, PetscInt j);
+bool BedNodeFree(const BedGrid &g, PetscInt i, PetscInt j);
 // The length (m) of arm dir (0: +x, 1: -x, 2: +z, 3: -z) of the free node (i, j): h when its
 // neighbour is inside, else the distance to the outline along it (<= h).
 PetscReal BedArmLength(const BedGrid &g, PetscInt i, PetscInt j, int dir);
@@ -66,16 +66,16 @@ PetscReal BedArmLength(const BedGrid &g, PetscInt i, PetscInt j, int dir);
 // Entries in (i, j) order, each node once.
 struct BedPatchNode {
   PetscInt  i = 0, j = 0;   // the node (j may lie outside [0, nz): a frame section's point)
-  PetscReal w = 0;          // 1, its share of the load
+  PetscReal w      = 0;     // 1, its share of the load
   bool      free   = false; // an unknown of the bed (else it moves with its frame section)
   bool      beyond = false; // its column lies past the grid's ends: no frame section there
 };
 std::vector<BedPatchNode> BedPatch(const BedGrid &g, PetscReal x, PetscReal z, PetscReal a);
 
 struct BedLayout {
-  PetscInt first = -1;   // the bed's first field
-  BedGrid  grid;         // its grid (columns: the beam's nodes)
-  PetscInt roll  = -1;   // the frame's roll field (-1: none)
+  PetscInt first = -1; // the bed's first field
+  BedGrid  grid;       // its grid (columns: the beam's nodes)
+  PetscInt roll = -1;  // the frame's roll field (-1: none)
 };
 BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt roll_field, BeamDiscretization *d);
 

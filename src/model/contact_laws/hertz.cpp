@@ -15,33 +15,56 @@ namespace beamimpact {
 
 namespace {
 
-enum { kK };             // BallParams::value: the rows' order
+enum {
+  kK
+};                            // BallParams::value: the rows' order
 constexpr PetscReal kP = 1.5; // the exponent
 
 class HertzLaw final : public ContactLaw {
 public:
-  const char *Name() const override { return "hertz"; }
-  const char *Summary() const override { return "F = k c^(3/2), elastic: a sphere on a flat"; }
+  const char                    *Name() const override { return "hertz"; }
+  const char                    *Summary() const override { return "F = k c^(3/2), elastic: a sphere on a flat"; }
   const std::vector<OptionSpec> &Options() const override
   {
     static const std::vector<OptionSpec> rows = {
-      OptionReal("-ball_hertz_k", "N/m^(3/2)", "Hertz stiffness k of F = k c^(3/2) (a ball of radius R on a rigid flat: (4/3) E/(1 - nu^2) sqrt(R)); -ball_law hertz", "5e5", Positive()),
+      OptionReal("-ball_hertz_k", "N/m^(3/2)",
+                 "Hertz stiffness k of F = k c^(3/2) (a ball of radius R on a rigid flat: (4/3) E/(1 - nu^2) sqrt(R)); "
+                 "-ball_law hertz",
+                 "5e5", Positive()),
     };
     return rows;
   }
 
-  PetscReal Force(const BallParams &b, const ContactState &, PetscReal c) const override { return b.value[kK] * ContactOddPow(c, kP); }
-  PetscReal Stiffness(const BallParams &b, const ContactState &, PetscReal c) const override { return kP * b.value[kK] * std::sqrt(std::abs(c)); }
-  PetscReal Stored(const BallParams &b, const ContactState &, PetscReal c) const override { return b.value[kK] * ContactPowAntiderivative(c, kP); }
-  bool      Elastic() const override { return true; }
+  PetscReal Force(const BallParams &b, const ContactState &, PetscReal c) const override
+  {
+    return b.value[kK] * ContactOddPow(c, kP);
+  }
+  PetscReal Stiffness(const BallParams &b, const ContactState &, PetscReal c) const override
+  {
+    return kP * b.value[kK] * std::sqrt(std::abs(c));
+  }
+  PetscReal Stored(const BallParams &b, const ContactState &, PetscReal c) const override
+  {
+    return b.value[kK] * ContactPowAntiderivative(c, kP);
+  }
+  bool Elastic() const override { return true; }
 
-  PetscReal WallMaxCompression(const BallParams &b, PetscReal v) const override { return std::pow(0.5 * (kP + 1) * b.mass * v * v / b.value[kK], 1 / (kP + 1)); }
-  PetscReal WallLoadingTime(const BallParams &b, PetscReal v) const override { return WallMaxCompression(b, v) / v * PowerLawWallIntegral(kP + 1); }
+  PetscReal WallMaxCompression(const BallParams &b, PetscReal v) const override
+  {
+    return std::pow(0.5 * (kP + 1) * b.mass * v * v / b.value[kK], 1 / (kP + 1));
+  }
+  PetscReal WallLoadingTime(const BallParams &b, PetscReal v) const override
+  {
+    return WallMaxCompression(b, v) / v * PowerLawWallIntegral(kP + 1);
+  }
 
   // The wall's contact time and compression at the incident speed; dF/dc up to twice that compression.
   PetscReal TimeScale(const BallParams &b) const override { return 2 * WallLoadingTime(b, b.speed); }
   PetscReal CompressionScale(const BallParams &b) const override { return WallMaxCompression(b, b.speed); }
-  PetscReal StiffnessBound(const BallParams &b) const override { return kP * b.value[kK] * std::sqrt(2 * CompressionScale(b)); }
+  PetscReal StiffnessBound(const BallParams &b) const override
+  {
+    return kP * b.value[kK] * std::sqrt(2 * CompressionScale(b));
+  }
 };
 
 } // namespace

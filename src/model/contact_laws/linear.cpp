@@ -10,12 +10,14 @@ namespace beamimpact {
 
 namespace {
 
-enum { kK }; // BallParams::value: the rows' order
+enum {
+  kK
+}; // BallParams::value: the rows' order
 
 class LinearLaw final : public ContactLaw {
 public:
-  const char *Name() const override { return "linear"; }
-  const char *Summary() const override { return "F = k c, elastic"; }
+  const char                    *Name() const override { return "linear"; }
+  const char                    *Summary() const override { return "F = k c, elastic"; }
   const std::vector<OptionSpec> &Options() const override
   {
     static const std::vector<OptionSpec> rows = {
@@ -26,13 +28,19 @@ public:
 
   PetscReal Force(const BallParams &b, const ContactState &, PetscReal c) const override { return b.value[kK] * c; }
   PetscReal Stiffness(const BallParams &b, const ContactState &, PetscReal) const override { return b.value[kK]; }
-  PetscReal Stored(const BallParams &b, const ContactState &, PetscReal c) const override { return 0.5 * b.value[kK] * c * c; }
+  PetscReal Stored(const BallParams &b, const ContactState &, PetscReal c) const override
+  {
+    return 0.5 * b.value[kK] * c * c;
+  }
   bool      Elastic() const override { return true; }
   bool      Linear() const override { return true; }
   PetscReal LinearStiffness(const BallParams &b) const override { return b.value[kK]; }
 
   // A half period of the ball on the spring, whatever the speed: pi sqrt(m_b/k) in all.
-  PetscReal WallMaxCompression(const BallParams &b, PetscReal v) const override { return v * std::sqrt(b.mass / b.value[kK]); }
+  PetscReal WallMaxCompression(const BallParams &b, PetscReal v) const override
+  {
+    return v * std::sqrt(b.mass / b.value[kK]);
+  }
   PetscReal WallLoadingTime(const BallParams &b, PetscReal) const override { return 0.5 * TimeScale(b); }
 
   PetscReal TimeScale(const BallParams &b) const override { return M_PI * std::sqrt(b.mass / b.value[kK]); }
