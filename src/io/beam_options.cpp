@@ -190,6 +190,21 @@ std::string SupportHelp(const char *end)
   return s;
 }
 
+// -shell_harmonics: whole, distinct circumferential orders (the table's row checks n >= 2).
+PetscErrorCode ShellHarmonicsSet(MPI_Comm comm, const std::vector<PetscReal> &harmonics, BarrelShell *shell)
+{
+  PetscFunctionBeginUser;
+  shell->harmonics.clear();
+  for (PetscReal n : harmonics) {
+    PetscCheck(n == std::floor(n), comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "-shell_harmonics %g is not allowed: the circumferential orders are whole numbers n >= 2", (double)n);
+    for (PetscInt q : shell->harmonics)
+      PetscCheck(q != (PetscInt)n, comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics: %g is given twice", (double)n);
+    shell->harmonics.push_back((PetscInt)n);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o)
 {
   const OptionModule    &T    = BeamOptionTable();
@@ -252,16 +267,7 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
              sethoop ? "-barrel_hoop_mass" : "-barrel_hoop_frequency");
   p->hoop.on  = sethoop;
   p->shell.on = shell;
-  if (setharmonics) {
-    p->shell.harmonics.clear();
-    for (PetscReal n : harmonics) {
-      PetscCheck(n == std::floor(n), comm, PETSC_ERR_ARG_OUTOFRANGE,
-                 "-shell_harmonics %g is not allowed: the circumferential orders are whole numbers n >= 2", (double)n);
-      for (PetscInt q : p->shell.harmonics)
-        PetscCheck(q != (PetscInt)n, comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics: %g is given twice", (double)n);
-      p->shell.harmonics.push_back((PetscInt)n);
-    }
-  }
+  if (setharmonics) PetscCall(ShellHarmonicsSet(comm, harmonics, &p->shell));
 
   PetscCheck(SupportFind(left, &p->left) && SupportFind(right, &p->right), comm, PETSC_ERR_PLIB,
              "a support the table allows is not registered");
@@ -571,39 +577,33 @@ std::string HeldEnd(const BeamParams &p, bool (*holds)(NodeHold))
 
 } // namespace
 
-PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
+namespace {
+
+// -beam_pivot: inside the beam, off the grid's end nodes, free ends, not inside a clamp.
+PetscErrorCode PivotCheck(MPI_Comm comm, const BeamParams &p)
 {
   PetscFunctionBeginUser;
-  PetscCheck(p.length > 0 && std::isfinite(p.length), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-beam_length %g is not allowed: the length must be finite and > 0 (m)", (double)p.length);
-  PetscCheck(p.EI > 0 && std::isfinite(p.EI), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "bending stiffness EI = %g is not allowed: it must be > 0 (N m^2)", (double)p.EI);
-  PetscCheck(p.mu > 0 && std::isfinite(p.mu), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "mass per length mu = %g is not allowed: it must be > 0 (kg/m)", (double)p.mu);
-  PetscCheck(p.damping_mass >= 0 && std::isfinite(p.damping_mass), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-beam_damping_mass %g is not allowed: alpha must be >= 0 (1/s)", (double)p.damping_mass);
-  PetscCheck(p.damping_stiffness >= 0 && std::isfinite(p.damping_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-beam_damping_stiffness %g is not allowed: beta must be >= 0 (s)", (double)p.damping_stiffness);
-  PetscCheck(p.nodes >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-beam_nodes %" PetscInt_FMT " is not allowed: at least 5 nodes are needed", p.nodes);
-  PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: %s",
-             p.theory.c_str(), BeamOptionTable().Find("-beam_theory")->Allowed().c_str());
-  if (p.has_pivot) {
-    PetscCheck(p.pivot_x > 0 && p.pivot_x < p.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-beam_pivot %g is not allowed: the pivot must be inside the beam, 0 < x_p < L = %g (m)",
-               (double)p.pivot_x, (double)p.length);
-    const std::string end = HeldEnd(p, HoldsRotation);
-    PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP,
-               "-beam_pivot %g with %s is not allowed: a pivoted bat is free at both ends (or pinned)",
-               (double)p.pivot_x, end.c_str());
-    PetscCheck(!(p.has_clamp && p.pivot_x >= p.clamp_x0 && p.pivot_x <= p.clamp_x1), comm, PETSC_ERR_ARG_INCOMP,
-               "-beam_pivot %g is not allowed: it lies inside the clamped region -beam_clamp %g,%g", (double)p.pivot_x,
-               (double)p.clamp_x0, (double)p.clamp_x1);
-    const PetscInt k = BeamPivotNode(p);
-    PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes",
-               (double)p.pivot_x, (double)(p.length / (p.nodes - 1)));
-  }
+  PetscCheck(p.pivot_x > 0 && p.pivot_x < p.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_pivot %g is not allowed: the pivot must be inside the beam, 0 < x_p < L = %g (m)",
+             (double)p.pivot_x, (double)p.length);
+  const std::string end = HeldEnd(p, HoldsRotation);
+  PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP,
+             "-beam_pivot %g with %s is not allowed: a pivoted bat is free at both ends (or pinned)", (double)p.pivot_x,
+             end.c_str());
+  PetscCheck(!(p.has_clamp && p.pivot_x >= p.clamp_x0 && p.pivot_x <= p.clamp_x1), comm, PETSC_ERR_ARG_INCOMP,
+             "-beam_pivot %g is not allowed: it lies inside the clamped region -beam_clamp %g,%g", (double)p.pivot_x,
+             (double)p.clamp_x0, (double)p.clamp_x1);
+  const PetscInt k = BeamPivotNode(p);
+  PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes",
+             (double)p.pivot_x, (double)(p.length / (p.nodes - 1)));
+  PetscFunctionReturn(0);
+}
+
+// The barrel's wall: the shell on a round hollow profile, the hoop on a hollow one, not both.
+PetscErrorCode BarrelWallCheck(MPI_Comm comm, const BeamParams &p)
+{
+  PetscFunctionBeginUser;
   if (p.shell.on) {
     PetscCheck(p.section.source == SectionSource::Profile, comm, PETSC_ERR_ARG_INCOMP,
                "-beam_shell needs a round hollow section: -beam_profile with rows 'x D d' (a uniform beam or "
@@ -628,50 +628,86 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
                  ? "a solid profile (no row of -beam_profile has an inner diameter d > 0)"
                  : "a beam with no round hollow section (a uniform beam or -beam_properties has no wall)");
   }
-  if (p.grip.on) {
-    const BeamGrip &g = p.grip;
-    PetscCheck(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = "
-               "%g (m)",
-               (double)g.x_a, (double)g.x_b, (double)p.length);
-    PetscCheck(g.stiffness >= 0 && std::isfinite(g.stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-grip_stiffness %g is not allowed: it must be >= 0 (N/m^2)", (double)g.stiffness);
-    PetscCheck(g.damping >= 0 && std::isfinite(g.damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-grip_damping %g is not allowed: it must be >= 0 (N s/m^2)", (double)g.damping);
-    PetscCheck(g.mass >= 0 && std::isfinite(g.mass), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-grip_mass %g is not allowed: it must be >= 0 (kg)", (double)g.mass);
-    PetscCheck(g.torsion_stiffness >= 0 && std::isfinite(g.torsion_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-grip_torsion_stiffness %g is not allowed: it must be >= 0 (N m/rad per m)",
-               (double)g.torsion_stiffness);
-    PetscCheck(g.torsion_damping >= 0 && std::isfinite(g.torsion_damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-grip_torsion_damping %g is not allowed: it must be >= 0 (N m s/rad per m)", (double)g.torsion_damping);
-    PetscCheck(p.torsion.on || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm, PETSC_ERR_ARG_INCOMP,
-               "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion "
-               "gives it",
-               g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping",
-               (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
-    const std::string end = HeldEnd(p, HoldsAnything);
-    PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with %s is not allowed: the hands hold a free bat",
-               (double)g.x_a, (double)g.x_b, end.c_str());
-    PetscCheck(!p.has_clamp, comm, PETSC_ERR_ARG_INCOMP,
-               "-grip %g,%g with a clamped region (-beam_clamp %g,%g) is not allowed: the hands hold a free bat",
-               (double)g.x_a, (double)g.x_b, (double)p.clamp_x0, (double)p.clamp_x1);
-    PetscCheck(!p.has_pivot, comm, PETSC_ERR_ARG_INCOMP,
-               "-grip %g,%g with a pivot (-beam_pivot %g) is not allowed: the hands hold a free bat (the pivot is the "
-               "certification rig's)",
-               (double)g.x_a, (double)g.x_b, (double)p.pivot_x);
-  }
-  if (p.has_clamp && !p.strings.Held()) { // a held string bed's frame is clamped everywhere
-    PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-beam_clamp %g,%g is not allowed: need 0 <= x0 < x1 <= L = %g (m)", (double)p.clamp_x0,
-               (double)p.clamp_x1, (double)p.length);
-    PetscInt nfree = 0;
-    for (NodeHold h : BeamNodeHolds(p)) nfree += !HoldsDeflection(h);
-    PetscCheck(nfree >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-beam_clamp %g,%g holds all but %" PetscInt_FMT " of the %" PetscInt_FMT
-               " nodes: at least 3 must stay free",
-               (double)p.clamp_x0, (double)p.clamp_x1, nfree, p.nodes);
-  }
+  PetscFunctionReturn(0);
+}
+
+// -grip and its stiffnesses: an interval of a free bat, non-negative numbers.
+PetscErrorCode GripCheck(MPI_Comm comm, const BeamParams &p)
+{
+  PetscFunctionBeginUser;
+  const BeamGrip &g = p.grip;
+  PetscCheck(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = "
+             "%g (m)",
+             (double)g.x_a, (double)g.x_b, (double)p.length);
+  PetscCheck(g.stiffness >= 0 && std::isfinite(g.stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-grip_stiffness %g is not allowed: it must be >= 0 (N/m^2)", (double)g.stiffness);
+  PetscCheck(g.damping >= 0 && std::isfinite(g.damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-grip_damping %g is not allowed: it must be >= 0 (N s/m^2)", (double)g.damping);
+  PetscCheck(g.mass >= 0 && std::isfinite(g.mass), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-grip_mass %g is not allowed: it must be >= 0 (kg)", (double)g.mass);
+  PetscCheck(g.torsion_stiffness >= 0 && std::isfinite(g.torsion_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-grip_torsion_stiffness %g is not allowed: it must be >= 0 (N m/rad per m)", (double)g.torsion_stiffness);
+  PetscCheck(g.torsion_damping >= 0 && std::isfinite(g.torsion_damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-grip_torsion_damping %g is not allowed: it must be >= 0 (N m s/rad per m)", (double)g.torsion_damping);
+  PetscCheck(p.torsion.on || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm, PETSC_ERR_ARG_INCOMP,
+             "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion "
+             "gives it",
+             g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping",
+             (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
+  const std::string end = HeldEnd(p, HoldsAnything);
+  PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with %s is not allowed: the hands hold a free bat",
+             (double)g.x_a, (double)g.x_b, end.c_str());
+  PetscCheck(!p.has_clamp, comm, PETSC_ERR_ARG_INCOMP,
+             "-grip %g,%g with a clamped region (-beam_clamp %g,%g) is not allowed: the hands hold a free bat",
+             (double)g.x_a, (double)g.x_b, (double)p.clamp_x0, (double)p.clamp_x1);
+  PetscCheck(!p.has_pivot, comm, PETSC_ERR_ARG_INCOMP,
+             "-grip %g,%g with a pivot (-beam_pivot %g) is not allowed: the hands hold a free bat (the pivot is the "
+             "certification rig's)",
+             (double)g.x_a, (double)g.x_b, (double)p.pivot_x);
+  PetscFunctionReturn(0);
+}
+
+// -beam_clamp: an interval of the beam that leaves at least 3 nodes free.
+PetscErrorCode ClampCheck(MPI_Comm comm, const BeamParams &p)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(p.clamp_x0 >= 0 && p.clamp_x1 <= p.length && p.clamp_x0 < p.clamp_x1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_clamp %g,%g is not allowed: need 0 <= x0 < x1 <= L = %g (m)", (double)p.clamp_x0,
+             (double)p.clamp_x1, (double)p.length);
+  PetscInt nfree = 0;
+  for (NodeHold h : BeamNodeHolds(p)) nfree += !HoldsDeflection(h);
+  PetscCheck(nfree >= 3, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_clamp %g,%g holds all but %" PetscInt_FMT " of the %" PetscInt_FMT
+             " nodes: at least 3 must stay free",
+             (double)p.clamp_x0, (double)p.clamp_x1, nfree, p.nodes);
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(p.length > 0 && std::isfinite(p.length), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_length %g is not allowed: the length must be finite and > 0 (m)", (double)p.length);
+  PetscCheck(p.EI > 0 && std::isfinite(p.EI), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "bending stiffness EI = %g is not allowed: it must be > 0 (N m^2)", (double)p.EI);
+  PetscCheck(p.mu > 0 && std::isfinite(p.mu), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "mass per length mu = %g is not allowed: it must be > 0 (kg/m)", (double)p.mu);
+  PetscCheck(p.damping_mass >= 0 && std::isfinite(p.damping_mass), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_damping_mass %g is not allowed: alpha must be >= 0 (1/s)", (double)p.damping_mass);
+  PetscCheck(p.damping_stiffness >= 0 && std::isfinite(p.damping_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_damping_stiffness %g is not allowed: beta must be >= 0 (s)", (double)p.damping_stiffness);
+  PetscCheck(p.nodes >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-beam_nodes %" PetscInt_FMT " is not allowed: at least 5 nodes are needed", p.nodes);
+  PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: %s",
+             p.theory.c_str(), BeamOptionTable().Find("-beam_theory")->Allowed().c_str());
+  if (p.has_pivot) PetscCall(PivotCheck(comm, p));
+  PetscCall(BarrelWallCheck(comm, p));
+  if (p.grip.on) PetscCall(GripCheck(comm, p));
+  if (p.has_clamp && !p.strings.Held())
+    PetscCall(ClampCheck(comm, p)); // a held string bed's frame is clamped everywhere
   PetscFunctionReturn(0);
 }
 

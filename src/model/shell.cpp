@@ -99,26 +99,32 @@ ShellCells CellsOf(const BeamParams &p)
 
 } // namespace
 
-ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
+namespace {
+
+// What the shell's two loops read: the grid, the wall's material and cells, the dof numbering.
+struct ShellGrid {
+  PetscInt              F = 0, N = 0, G = 0, nh = 0;   // the fields before, nodes, fields after, harmonics
+  PetscInt              first = 0;                     // the shell's first field
+  PetscReal             h = 0, E = 0, rho = 0, nu = 0; // m, Pa, kg/m^3, 1
+  ShellCells            c;
+  std::vector<PetscInt> harmonics;
+  PetscInt  Dof(PetscInt node, size_t k, PetscInt comp) const { return node * G + first + 3 * (PetscInt)k + comp; }
+  PetscReal Cm(PetscInt k) const { return E * c.t[k] / (1 - nu * nu); }                     // N/m
+  PetscReal Bb(PetscInt k) const { return E * std::pow(c.t[k], 3) / (12 * (1 - nu * nu)); } // N m
+};
+
+// Each node's wall dofs: mass, held, and the bending terms (kx, and the mirror at held ends).
+void ShellAppendNodes(const ShellGrid &s, const std::vector<NodeHold> &hold, BeamDiscretization *d)
 {
-  const PetscInt  F = d->fields, N = p.nodes, nh = (PetscInt)p.shell.harmonics.size(), G = F + 3 * nh;
-  const PetscReal h = p.length / (N - 1), E = ShellYoungsModulus(p), rho = p.section.material.rho,
-                  nu                   = p.section.material.nu;
-  const auto                  renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
-  const std::vector<NodeHold> hold     = BeamNodeHolds(p);
-  const ShellCells            c        = CellsOf(p);
-  ShellLayout                 out;
-  out.first     = F;
-  out.harmonics = p.shell.harmonics;
-  BeamDiscretizationWiden(d, G, 0.0); // every new dof's mass is set below
-  std::vector<PetscReal> &mass = d->mass;
-  std::vector<char>      &held = d->held;
-  const auto              dof  = [&](PetscInt node, size_t k, PetscInt comp) {
-    return node * G + out.first + 3 * (PetscInt)k + comp;
-  }; // comp 0 U, 1 V, 2 W
-  const auto        Cm = [&](PetscInt k) { return E * c.t[k] / (1 - nu * nu); };
-  const auto        Bb = [&](PetscInt k) { return E * std::pow(c.t[k], 3) / (12 * (1 - nu * nu)); };
-  std::vector<char> wall_held(N);
+  const PetscInt          F = s.F, N = s.N, G = s.G, nh = s.nh;
+  const PetscReal         h = s.h, rho = s.rho, nu = s.nu;
+  const ShellCells       &c        = s.c;
+  const auto              renumber = [&](PetscInt dof) { return (dof / F) * G + dof % F; };
+  const auto              dof      = [&](PetscInt node, size_t k, PetscInt comp) { return s.Dof(node, k, comp); };
+  const auto              Bb       = [&](PetscInt k) { return s.Bb(k); };
+  std::vector<PetscReal> &mass     = d->mass;
+  std::vector<char>      &held     = d->held;
+  std::vector<char>       wall_held(N);
   for (PetscInt i = 0; i < N; ++i) {
     const bool left = i > 0 && c.hollow[i - 1], right = i < N - 1 && c.hollow[i];
     wall_held[i] = !(left || right) || ((left != right) && i > 0 && i < N - 1) || HoldsDeflection(hold[i]);
@@ -136,7 +142,7 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
       Rn += c.R[k] * h / 2, len += h / 2;
     }
     for (size_t k = 0; k < (size_t)nh; ++k) {
-      const PetscReal n = (PetscReal)out.harmonics[k];
+      const PetscReal n = (PetscReal)s.harmonics[k];
       for (PetscInt comp = 0; comp < 3; ++comp) {
         mass[dof(i, k, comp)] = wall ? m : mass[renumber(i * F)]; // a held dof's mass is never used
         held[dof(i, k, comp)] = wheld;
@@ -165,12 +171,23 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
              {{dof(i, k, 1), kv}, {dof(i, k, 2), kw}})); // alone at a free end: M_x = 0, kx + nu kt = 0
     }
   }
+}
+
+// Each hollow cell's membrane and twist terms, at its midpoint.
+void ShellAppendCells(const ShellGrid &s, BeamDiscretization *d)
+{
+  const PetscInt    N = s.N, nh = s.nh;
+  const PetscReal   h = s.h, nu = s.nu;
+  const ShellCells &c   = s.c;
+  const auto        dof = [&](PetscInt node, size_t k, PetscInt comp) { return s.Dof(node, k, comp); };
+  const auto        Cm  = [&](PetscInt k) { return s.Cm(k); };
+  const auto        Bb  = [&](PetscInt k) { return s.Bb(k); };
   for (PetscInt cell = 0; cell < N - 1; ++cell) { // membrane and twist at the midpoint
     if (!c.hollow[cell]) continue;
     const PetscInt  a = cell, b = cell + 1;
     const PetscReal R = c.R[cell], w = PETSC_PI * R * h, ih = 1 / h;
     for (size_t k = 0; k < (size_t)nh; ++k) {
-      const PetscReal n = (PetscReal)out.harmonics[k], C = Cm(cell), B = Bb(cell);
+      const PetscReal n = (PetscReal)s.harmonics[k], C = Cm(cell), B = Bb(cell);
       const PetscInt  Ua = dof(a, k, 0), Ub = dof(b, k, 0), Va = dof(a, k, 1), Vb = dof(b, k, 1), Wa = dof(a, k, 2),
                      Wb    = dof(b, k, 2);
       const PetscReal et_v = n / (2 * R), et_w = 1 / (2 * R); // et = (n V + W)/R at the midpoint
@@ -189,6 +206,23 @@ ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
                                 {Ub, n / (8 * R * R)}})); // tw
     }
   }
+}
+
+} // namespace
+
+ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
+{
+  ShellGrid s;
+  s.F = d->fields, s.N = p.nodes, s.nh = (PetscInt)p.shell.harmonics.size(), s.G = s.F + 3 * s.nh;
+  s.h = p.length / (s.N - 1), s.E = ShellYoungsModulus(p), s.rho = p.section.material.rho;
+  s.nu = p.section.material.nu, s.c = CellsOf(p), s.first = s.F, s.harmonics = p.shell.harmonics;
+  const std::vector<NodeHold> hold = BeamNodeHolds(p);
+  ShellLayout                 out;
+  out.first     = s.first;
+  out.harmonics = p.shell.harmonics;
+  BeamDiscretizationWiden(d, s.G, 0.0); // every new dof's mass is set below
+  ShellAppendNodes(s, hold, d);
+  ShellAppendCells(s, d);
   return out;
 }
 

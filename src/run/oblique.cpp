@@ -187,6 +187,33 @@ NormalPiece NormalPieceOf(const ImpactSeries &S, size_t k)
   return f;
 }
 
+// The batted ball's flight from the exit velocity and spin (-flight): rec->flight.
+PetscErrorCode ObliqueFlight(const Scenario &sc, ObliqueRecord *rec)
+{
+  PetscFunctionBeginUser;
+  FlightParams p    = sc.flight.params;
+  p.ball.mass       = sc.ball.mass; // the impact's own ball (its radius is required with -flight: FlightBallResolve)
+  p.ball.radius     = sc.ball.radius > 0 ? sc.ball.radius : p.ball.radius;
+  p.launch.speed    = rec->exit.speed;
+  p.launch.angle    = rec->exit.launch_angle;
+  p.launch.backspin = rec->after.spin;
+  PetscReal u[6];
+  FlightInitialState(p.launch, u);
+  PetscCheck(p.launch.height > 0 || p.launch.angle > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+             "-flight with -flight_height 0: the batted ball leaves at %g deg, downward, from the ground; give "
+             "-flight_height > 0",
+             (double)p.launch.angle);
+  PetscCheck(std::abs(p.launch.backspin) < FlightSpinMax(p.ball.radius), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+             "-flight: the batted ball leaves spinning at %g rad/s, its surface at %g m/s (-flight_ball_radius %g "
+             "m), beyond the speed of sound in air (%g m/s), where the flight's drag and "
+             "lift do not hold (check -ball_speed, -ball_spin and the swing)",
+             (double)p.launch.backspin, (double)(std::abs(p.launch.backspin) * p.ball.radius), (double)p.ball.radius,
+             (double)kSpeedOfSound);
+  PetscCall(FlightSolve(FlightModelOf(p), u, sc.flight.solve, &rec->flight));
+  rec->flew = true;
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, const ObliqueBeam &beam,
@@ -251,26 +278,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
   rec->exit = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
   if (sc.flight.on) {
     stage.Switch(ImpactStage::Flight);
-    FlightParams p    = sc.flight.params;
-    p.ball.mass       = sc.ball.mass; // the impact's own ball (its radius is required with -flight: FlightBallResolve)
-    p.ball.radius     = sc.ball.radius > 0 ? sc.ball.radius : p.ball.radius;
-    p.launch.speed    = rec->exit.speed;
-    p.launch.angle    = rec->exit.launch_angle;
-    p.launch.backspin = rec->after.spin;
-    PetscReal u[6];
-    FlightInitialState(p.launch, u);
-    PetscCheck(p.launch.height > 0 || p.launch.angle > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-               "-flight with -flight_height 0: the batted ball leaves at %g deg, downward, from the ground; give "
-               "-flight_height > 0",
-               (double)p.launch.angle);
-    PetscCheck(std::abs(p.launch.backspin) < FlightSpinMax(p.ball.radius), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-               "-flight: the batted ball leaves spinning at %g rad/s, its surface at %g m/s (-flight_ball_radius %g "
-               "m), beyond the speed of sound in air (%g m/s), where the flight's drag and "
-               "lift do not hold (check -ball_speed, -ball_spin and the swing)",
-               (double)p.launch.backspin, (double)(std::abs(p.launch.backspin) * p.ball.radius), (double)p.ball.radius,
-               (double)kSpeedOfSound);
-    PetscCall(FlightSolve(FlightModelOf(p), u, sc.flight.solve, &rec->flight));
-    rec->flew = true;
+    PetscCall(ObliqueFlight(sc, rec));
   }
   PetscFunctionReturn(0);
 }

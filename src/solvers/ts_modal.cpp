@@ -203,6 +203,45 @@ void WeightsBall(const ModalTS &m, PetscReal h, const PetscReal hq[3], PetscReal
 
 PetscInt folds = 0; // steps whose weights were folded from an earlier point's shapes (TSModalFoldCount)
 
+// WeightsCompute's mode k when damped (sigma_k > 0): its weights from ModalModeAt and ModeForced
+// (Wacc the ball's accumulated sums; the same operations in the same order as inline).
+template <PetscInt s>
+inline void DampedModeWeights(PetscInt k, PetscReal w, PetscReal sg, PetscReal gk, PetscReal g2, PetscReal h,
+                              const PetscReal *hq, PetscReal Wacc[3][3], StepWeights &W, StepShapes *Sh)
+{
+  const PetscReal *tau = s == 2 ? kTau2 : kTau4;
+  auto             Lc  = [](PetscInt j, PetscInt q) { return s == 2 ? kL2[j][q] : kL4[j][q]; };
+  ModalModeAt(w, sg, 1.0, 0.0, h, &W.a0[k], &W.a2[k]);
+  ModalModeAt(w, sg, 0.0, 1.0, h, &W.a1[k], &W.a3[k]);
+  W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
+  if (Sh) Sh->a0[k] = W.a0[k], Sh->a1[k] = W.a1[k], Sh->a2[k] = W.a2[k], Sh->a3[k] = W.a3[k];
+  if (s == 3) {
+    PetscReal dummy, am0, am1;
+    ModalModeAt(w, sg, 1.0, 0.0, 0.5 * h, &am0, &dummy);
+    ModalModeAt(w, sg, 0.0, 1.0, 0.5 * h, &am1, &dummy);
+    W.gm0[k] = gk * am0, W.gm1[k] = gk * am1;
+    if (Sh) Sh->m0[k] = am0, Sh->m1[k] = am1;
+  }
+  PetscReal Rk[3] = {0, 0, 0}, Vk[3] = {0, 0, 0};
+  for (PetscInt q = 0; q < s; ++q) { // the monomial (s/h)^q
+    PetscReal rz, rv;
+    ModeForced(w, sg, (int)q, h, &rz, &rv);
+    for (PetscInt j = 0; j < s; ++j) {
+      Rk[j] += Lc(j, q) * rz / hq[q];
+      Vk[j] += Lc(j, q) * rv / hq[q];
+    }
+    for (PetscInt i = 1; i < s; ++i) {
+      PetscReal rzi = rz, rvi;
+      if (tau[i] != 1.0) ModeForced(w, sg, (int)q, tau[i] * h, &rzi, &rvi);
+      for (PetscInt j = 0; j < s; ++j) Wacc[i][j] += g2 * Lc(j, q) * rzi / hq[q];
+      if (Sh) Sh->X[2 * q + i - 1][k] = rzi;
+    }
+  }
+  for (PetscInt j = 0; j < s; ++j) W.R[j][k] = gk * Rk[j], W.V[j][k] = gk * Vk[j];
+  if (Sh)
+    for (PetscInt j = 0; j < s; ++j) Sh->R[j][k] = Rk[j], Sh->V[j][k] = Vk[j];
+}
+
 // The weights of a step of length h into W (its arrays sized already), for s = StageCount
 // nodes (a template: the small loops over nodes and powers unroll into registers); with Sh (its
 // arrays sized) also their parts free of gamma_k (StepShapes, for WeightsFold).
@@ -261,35 +300,7 @@ void WeightsCompute(const ModalTS &m, PetscReal h, StepWeights &W, StepShapes *S
       if (Sh) Sh->a0[k] = W.a0[k], Sh->a1[k] = W.a1[k], Sh->a2[k] = W.a2[k], Sh->a3[k] = W.a3[k];
       continue;
     }
-    ModalModeAt(w, sg, 1.0, 0.0, h, &W.a0[k], &W.a2[k]);
-    ModalModeAt(w, sg, 0.0, 1.0, h, &W.a1[k], &W.a3[k]);
-    W.g0[k] = gk * W.a0[k], W.g1[k] = gk * W.a1[k];
-    if (Sh) Sh->a0[k] = W.a0[k], Sh->a1[k] = W.a1[k], Sh->a2[k] = W.a2[k], Sh->a3[k] = W.a3[k];
-    if (s == 3) {
-      PetscReal dummy, am0, am1;
-      ModalModeAt(w, sg, 1.0, 0.0, 0.5 * h, &am0, &dummy);
-      ModalModeAt(w, sg, 0.0, 1.0, 0.5 * h, &am1, &dummy);
-      W.gm0[k] = gk * am0, W.gm1[k] = gk * am1;
-      if (Sh) Sh->m0[k] = am0, Sh->m1[k] = am1;
-    }
-    PetscReal Rk[3] = {0, 0, 0}, Vk[3] = {0, 0, 0};
-    for (PetscInt q = 0; q < s; ++q) { // the monomial (s/h)^q
-      PetscReal rz, rv;
-      ModeForced(w, sg, (int)q, h, &rz, &rv);
-      for (PetscInt j = 0; j < s; ++j) {
-        Rk[j] += Lc(j, q) * rz / hq[q];
-        Vk[j] += Lc(j, q) * rv / hq[q];
-      }
-      for (PetscInt i = 1; i < s; ++i) {
-        PetscReal rzi = rz, rvi;
-        if (tau[i] != 1.0) ModeForced(w, sg, (int)q, tau[i] * h, &rzi, &rvi);
-        for (PetscInt j = 0; j < s; ++j) Wacc[i][j] += g2 * Lc(j, q) * rzi / hq[q];
-        if (Sh) Sh->X[2 * q + i - 1][k] = rzi;
-      }
-    }
-    for (PetscInt j = 0; j < s; ++j) W.R[j][k] = gk * Rk[j], W.V[j][k] = gk * Vk[j];
-    if (Sh)
-      for (PetscInt j = 0; j < s; ++j) Sh->R[j][k] = Rk[j], Sh->V[j][k] = Vk[j];
+    DampedModeWeights<s>(k, w, sg, gk, g2, h, hq, Wacc, W, Sh);
   }
   WeightsBall<s>(m, h, hq, Wacc, W);
 }

@@ -621,105 +621,127 @@ PetscErrorCode SweepGather(MPI_Comm comm, const SweepShare &mine, SweepStore &S)
   PetscFunctionReturn(0);
 }
 
-// Rank 0: what was computed, how fast, how evenly the ranks were loaded and what the farm
-// cost (journal appends on the leaders; rank 0's hand-outs, progress and rewrites), and
-// how many points of the file failed (printed also with -sweep_quiet). Every rank learns
-// the number of failed points (the exit status).
-PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P,
-                           double setup, double t0, double farm_time, const std::string &output, const SweepStore &S,
-                           PetscInt *failed_total)
+// What the ranks did, gathered on rank 0 (the failed count on every rank).
+struct SweepTally {
+  PetscInt    computed = 0, failed = 0, off_face = 0; // points
+  PetscInt    absurd = 0, absurd_wall = 0;            // points: compression beyond the radius, a wall pushed too far
+  double      busy_sum = 0, busy_min = 0, journal_sum = 0, handout_sum = 0; // s (the ranks' sums, the least busy)
+  PetscInt    contexts[2] = {0, 0};    // the integrator's per-structure contexts built, and the runs that reused one
+  PetscInt    reuse[3]    = {0, 0, 0}; // the points' readings and systems (all ranks)
+  std::string by_status;               // "2 with status 3 (diverged), ..."
+};
+
+// Rank 0's count of the file's rows by status: failed (by status), off the face, absurd.
+void SweepTallyRows(const SweepStore &S, SweepTally *T)
 {
-  PetscMPIInt rank, size;
-  PetscInt    computed = mine.computed, failed = 0, absurd = 0, absurd_wall = 0, off_face = 0;
-  double      busy_sum = 0, busy_min = 0, journal_sum = 0, handout_sum = 0;
-  std::string by_status;
+  std::map<int, PetscInt> count;
+  int                     beyond = -1, wall = -1; // the columns compression_beyond_radius and wall_deflection_large
+  for (size_t c = 0; c < S.columns.size(); ++c) {
+    if (S.columns[c].name == "compression_beyond_radius") beyond = (int)c;
+    if (S.columns[c].name == "wall_deflection_large") wall = (int)c;
+  }
+  for (auto &kv : S.rows) {
+    const double st = kv.second[S.status_column];
+    if (SweepFailed(st)) {
+      ++T->failed;
+      ++count[(int)st];
+    } else if (st == SweepOffFace) ++T->off_face;
+    else {
+      if (beyond >= 0 && kv.second[beyond] == 1) ++T->absurd;
+      if (wall >= 0 && kv.second[wall] == 1) ++T->absurd_wall;
+    }
+  }
+  for (auto &kv : count)
+    T->by_status += (T->by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " +
+                    std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
+}
+
+// The ranks' counts and times reduced to rank 0; the failed count broadcast to every rank.
+PetscErrorCode SweepTallyGather(MPI_Comm comm, const SweepShare &mine, const SweepStore &S, SweepTally *T)
+{
+  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : &computed, &computed, 1, MPIU_INT, MPI_SUM, 0, comm));
-  PetscCallMPI(MPI_Reduce(&mine.busy, &busy_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
-  PetscCallMPI(MPI_Reduce(&mine.busy, &busy_min, 1, MPI_DOUBLE, MPI_MIN, 0, comm));
-  PetscCallMPI(MPI_Reduce(&mine.journal, &journal_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
-  PetscCallMPI(MPI_Reduce(&mine.handout, &handout_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
-  PetscInt contexts[2]; // the integrator's per-structure contexts built, and the runs that reused one (all ranks)
-  TSStepperContextCounts(&contexts[0], &contexts[1]);
-  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : contexts, contexts, 2, MPIU_INT, MPI_SUM, 0, comm));
-  PetscInt reuse[3] = {mine.reuse[0], mine.reuse[1], mine.reuse[2]}; // the points' readings and systems (all ranks)
-  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : reuse, reuse, 3, MPIU_INT, MPI_SUM, 0, comm));
-  if (rank == 0 && S.status_column >= 0) {
-    std::map<int, PetscInt> count;
-    int                     beyond = -1, wall = -1; // the columns compression_beyond_radius and wall_deflection_large
-    for (size_t c = 0; c < S.columns.size(); ++c) {
-      if (S.columns[c].name == "compression_beyond_radius") beyond = (int)c;
-      if (S.columns[c].name == "wall_deflection_large") wall = (int)c;
-    }
-    for (auto &kv : S.rows) {
-      const double st = kv.second[S.status_column];
-      if (SweepFailed(st)) {
-        ++failed;
-        ++count[(int)st];
-      } else if (st == SweepOffFace) ++off_face;
-      else {
-        if (beyond >= 0 && kv.second[beyond] == 1) ++absurd;
-        if (wall >= 0 && kv.second[wall] == 1) ++absurd_wall;
-      }
-    }
-    for (auto &kv : count)
-      by_status += (by_status.empty() ? "" : ", ") + std::to_string((long long)kv.second) + " with status " +
-                   std::to_string(kv.first) + " (" + SweepStatusName(kv.first) + ")";
-  }
-  PetscCallMPI(MPI_Bcast(&failed, 1, MPIU_INT, 0, comm));
-  *failed_total        = failed;
-  const double elapsed = MPI_Wtime() - t0;
-  if (rank != 0) PetscFunctionReturn(0);
-  if (!plan.quiet) {
-    if (P.todo == 0)
+  T->computed = mine.computed;
+  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : &T->computed, &T->computed, 1, MPIU_INT, MPI_SUM, 0, comm));
+  PetscCallMPI(MPI_Reduce(&mine.busy, &T->busy_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
+  PetscCallMPI(MPI_Reduce(&mine.busy, &T->busy_min, 1, MPI_DOUBLE, MPI_MIN, 0, comm));
+  PetscCallMPI(MPI_Reduce(&mine.journal, &T->journal_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
+  PetscCallMPI(MPI_Reduce(&mine.handout, &T->handout_sum, 1, MPI_DOUBLE, MPI_SUM, 0, comm));
+  TSStepperContextCounts(&T->contexts[0], &T->contexts[1]);
+  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : T->contexts, T->contexts, 2, MPIU_INT, MPI_SUM, 0, comm));
+  for (int k = 0; k < 3; ++k) T->reuse[k] = mine.reuse[k];
+  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : T->reuse, T->reuse, 3, MPIU_INT, MPI_SUM, 0, comm));
+  if (rank == 0 && S.status_column >= 0) SweepTallyRows(S, T);
+  PetscCallMPI(MPI_Bcast(&T->failed, 1, MPIU_INT, 0, comm));
+  PetscFunctionReturn(0);
+}
+
+// Rank 0, unless quiet: what was computed, how fast, how evenly the ranks were loaded and what
+// the farm cost (journal appends on the leaders; rank 0's hand-outs, progress and rewrites).
+PetscErrorCode SweepPrintCost(const SweepProgress &P, const SweepTally &T, const SweepStore &S, double setup,
+                              double elapsed, double farm_time, PetscMPIInt size)
+{
+  const PetscInt  computed = T.computed;
+  const double    busy_sum = T.busy_sum, busy_min = T.busy_min, journal_sum = T.journal_sum;
+  const double    handout_sum = T.handout_sum;
+  const PetscInt *contexts = T.contexts, *reuse = T.reuse;
+
+  PetscFunctionBeginUser;
+  if (P.todo == 0)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "sweep: all %" PetscInt_FMT " points were already done; nothing to compute\n", P.ncases));
+  else {
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "sweep: computed %s in %.3f s (%.4g points/s) on %d rank(s), %" PetscInt_FMT
+                          " already done\n",
+                          Points(computed).c_str(), elapsed, computed / elapsed, size, P.already));
+    // Load balance: the share of the farm's time the ranks spent in cases
+    // (below 100%: waiting for the last cases, journaling, live rewrites).
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: ranks busy %.1f%% of the time on average, %.1f%% the least busy\n",
+                          100 * busy_sum / (size * farm_time), 100 * busy_min / farm_time));
+    // The farm's own cost per point: the rest of the ranks' time (hand-out, waiting for
+    // the counter, journal, rank 0's progress lines and rewrites, the last cases' tail).
+    // (hand-out: the counter and the broadcast in a group; journal: the leaders' appends;
+    // rewrites: rank 0's live rewrites of the file; the rest: waiting for the last cases).
+    if (computed > 0)
+      PetscCall(
+        PetscPrintf(PETSC_COMM_SELF,
+                    "sweep: per point: compute %.4g ms; farm overhead %.4g ms (%.2f%% of the ranks' time): hand-out "
+                    "%.4g ms, journal %.4g ms, rewrites %.4g ms (%d), idle at the end %.4g ms; set-up %.3f s\n",
+                    1e3 * busy_sum / computed, 1e3 * (size * farm_time - busy_sum) / computed,
+                    100 * (size * farm_time - busy_sum) / (size * farm_time), 1e3 * handout_sum / computed,
+                    1e3 * journal_sum / computed, 1e3 * S.write_total / computed, S.writes,
+                    1e3 * (size * farm_time - busy_sum - handout_sum - journal_sum - S.write_total) / computed, setup));
+    if (computed > 0) // solvers/ts_stepper.hpp: a point on a structure already run reuses its TS, layout and vectors
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                            "sweep: all %" PetscInt_FMT " points were already done; nothing to compute\n", P.ncases));
-    else {
+                            "sweep: integrator contexts: %" PetscInt_FMT " built, %" PetscInt_FMT
+                            " runs reused one (all ranks, the probe included)\n",
+                            contexts[0], contexts[1]));
+    if (computed > 0) // studies/sweep.hpp, SweepReuse: a point on the structure of the one before reads only its own
+                      // options and reuses the system
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                            "sweep: computed %s in %.3f s (%.4g points/s) on %d rank(s), %" PetscInt_FMT
-                            " already done\n",
-                            Points(computed).c_str(), elapsed, computed / elapsed, size, P.already));
-      // Load balance: the share of the farm's time the ranks spent in cases
-      // (below 100%: waiting for the last cases, journaling, live rewrites).
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "sweep: ranks busy %.1f%% of the time on average, %.1f%% the least busy\n",
-                            100 * busy_sum / (size * farm_time), 100 * busy_min / farm_time));
-      // The farm's own cost per point: the rest of the ranks' time (hand-out, waiting for
-      // the counter, journal, rank 0's progress lines and rewrites, the last cases' tail).
-      // (hand-out: the counter and the broadcast in a group; journal: the leaders' appends;
-      // rewrites: rank 0's live rewrites of the file; the rest: waiting for the last cases).
-      if (computed > 0)
-        PetscCall(
-          PetscPrintf(PETSC_COMM_SELF,
-                      "sweep: per point: compute %.4g ms; farm overhead %.4g ms (%.2f%% of the ranks' time): hand-out "
-                      "%.4g ms, journal %.4g ms, rewrites %.4g ms (%d), idle at the end %.4g ms; set-up %.3f s\n",
-                      1e3 * busy_sum / computed, 1e3 * (size * farm_time - busy_sum) / computed,
-                      100 * (size * farm_time - busy_sum) / (size * farm_time), 1e3 * handout_sum / computed,
-                      1e3 * journal_sum / computed, 1e3 * S.write_total / computed, S.writes,
-                      1e3 * (size * farm_time - busy_sum - handout_sum - journal_sum - S.write_total) / computed,
-                      setup));
-      if (computed > 0) // solvers/ts_stepper.hpp: a point on a structure already run reuses its TS, layout and vectors
-        PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                              "sweep: integrator contexts: %" PetscInt_FMT " built, %" PetscInt_FMT
-                              " runs reused one (all ranks, the probe included)\n",
-                              contexts[0], contexts[1]));
-      if (computed > 0) // studies/sweep.hpp, SweepReuse: a point on the structure of the one before reads only its own
-                        // options and reuses the system
-        PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                              "sweep: per structure: %" PetscInt_FMT " points read every option, %" PetscInt_FMT
-                              " only their own axes' (ball, bat, impact, ...); %" PetscInt_FMT
-                              " beam system(s) built (all ranks)\n",
-                              reuse[0], reuse[1], reuse[2]));
-    }
+                            "sweep: per structure: %" PetscInt_FMT " points read every option, %" PetscInt_FMT
+                            " only their own axes' (ball, bat, impact, ...); %" PetscInt_FMT
+                            " beam system(s) built (all ranks)\n",
+                            reuse[0], reuse[1], reuse[2]));
   }
+  PetscFunctionReturn(0);
+}
+
+// Rank 0, also with -sweep_quiet: the points that failed, fell off the face or mean nothing physically.
+PetscErrorCode SweepPrintWarnings(const SweepProgress &P, const SweepTally &T)
+{
+  const PetscInt failed = T.failed, off_face = T.off_face, absurd = T.absurd, absurd_wall = T.absurd_wall;
+
+  PetscFunctionBeginUser;
   if (failed)
     PetscCall(
       PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
                    "sweep: %" PetscInt_FMT " of %" PetscInt_FMT
                    " points failed: %s; their rows have status != 0, the reason in /results/reason and NaN numbers\n",
-                   failed, P.ncases, by_status.c_str()));
+                   failed, P.ncases, T.by_status.c_str()));
   if (off_face) // a map over a racket's face: the product of its axes reaches beyond the head's outline
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT,
                            "sweep: %" PetscInt_FMT " of %" PetscInt_FMT
@@ -744,6 +766,27 @@ PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShar
                            "their rows have status 0 but wall_deflection_large = 1 in /results: leave them out of "
                            "plots and fits\n",
                            absurd_wall, P.ncases, (double)kWallDeflectionLimit));
+  PetscFunctionReturn(0);
+}
+
+// Rank 0: the report of the sweep (cost unless quiet, the failed and absurd points always);
+// every rank learns the number of failed points (the exit status).
+PetscErrorCode SweepReport(MPI_Comm comm, const SweepPlan &plan, const SweepShare &mine, const SweepProgress &P,
+                           double setup, double t0, double farm_time, const std::string &output, const SweepStore &S,
+                           PetscInt *failed_total)
+{
+  PetscMPIInt rank, size;
+  SweepTally  T;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(SweepTallyGather(comm, mine, S, &T));
+  *failed_total        = T.failed;
+  const double elapsed = MPI_Wtime() - t0;
+  if (rank != 0) PetscFunctionReturn(0);
+  if (!plan.quiet) PetscCall(SweepPrintCost(P, T, S, setup, elapsed, farm_time, size));
+  PetscCall(SweepPrintWarnings(P, T));
   if (!plan.quiet) PetscCall(SweepUqPrint(S, S.uq));
   if (!plan.quiet) PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s (%s)\n", output.c_str(), Points(P.ncases).c_str()));
   PetscFunctionReturn(0);
