@@ -21,7 +21,8 @@
 #              (-tao_max_it 0): exit status 3, the violated constraint named with its value and bound, what to try,
 #              /design's converged_feasible 0 and status, the options file's second line INFEASIBLE; under
 #              acor@hit <= 0.5985 (the start 1.35e-4 beyond it, relative) the start is feasible at -tao_catol 1e-3
-#              (/design/feasible 1, exit 0) and infeasible at the default 1e-4 (exit 3);
+#              (/design/feasible 1, exit 0) and infeasible at the default 1e-4 (exit 3); -tao_almm_mu_init under PHR
+#              (which ignores it) a note;
 #   input      bad input: errors that name the option and what is allowed.
 #
 #   tests/design_cli.sh path/to/beamimpact scratch_dir mpiexec part
@@ -127,10 +128,11 @@ resume)
 infeasible)
   con=(-design_constraints "acor@hit<=0.597")
   start=(-design_variables "impact_x=0.55:1.0:0.682") # the ACOR's maximum, 0.59858: 2.6e-3 beyond 0.597 (relative)
-  "$exe" "${scene[@]}" "${design[@]}" "${start[@]}" "${con[@]}" -tao_gatol 1e-2 -output g.h5 >g.log 2>&1
+  "$exe" "${scene[@]}" "${design[@]}" "${start[@]}" "${con[@]}" -tao_gatol 1e-2 -tao_almm_mu_init 1e4 -output g.h5 >g.log 2>&1
   rc=$?
   ((rc == 0)) && grep -q "^design: feasible: every constraint holds within -tao_catol 0.0001" g.log && grep -q "keeps -tao_catol 0.0001" g.log \
     && pass "-tao_gatol 1e-2: almm (PHR) ends feasible, -tao_catol 1e-4 kept (the note says so)" || { fail "-tao_gatol 1e-2: exit $rc"; cat g.log; }
+  grep -q "^design: note: -tao_almm_mu_init has no effect: almm's PHR formulation" g.log && pass "-tao_almm_mu_init under PHR: a note, no effect" || fail "no note on -tao_almm_mu_init"
   "$exe" "${scene[@]}" "${design[@]}" "${start[@]}" "${con[@]}" -tao_max_it 0 -output s.h5 >s.log 2>&1
   rc=$?
   ((rc == 3)) && pass "stopped beyond the bound: exit status 3" || { fail "exit status $rc, not 3"; cat s.log; }

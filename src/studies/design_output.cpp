@@ -79,7 +79,7 @@ std::vector<std::string> ResultLines(const DesignProblem &d, const DesignResult 
     l.push_back(Fmt("  %-28s %.8g%s %s %g%s", c.q.text.c_str(), res.v.constraint[i], UnitText(c.q.unit).c_str(),
                     c.upper ? "<=" : ">=", c.bound, active ? "  (active)" : ""));
   }
-  if (!res.catol_note.empty()) l.push_back("note: " + res.catol_note);
+  for (const std::string &n : res.notes) l.push_back("note: " + n);
   if (res.feasible())
     l.push_back(d.m() ? Fmt("feasible: every constraint holds within -tao_catol %g of its bound (relative)", d.catol)
                       : "feasible: no constraints");

@@ -137,14 +137,14 @@ struct DesignResult {
   PetscInt                 iterations = 0;
   double                   kkt = NAN, cnorm = NAN; // the final gradient (of the Lagrangian) norm and constraint norm
   std::vector<std::string> active,
-    at_bound;                   // the constraints within 1e-3 of their bound (relative), the variables at a bound
-  std::vector<size_t> violated; // the constraints the optimum violates beyond -tao_catol (empty: feasible)
-  long                best_feasible = -1;  // the history's best feasible design (index; -1 none)
-  double              gatol         = NAN; // -tao_gatol as TAO used it (1)
-  PetscInt            max_it        = 0;   // -tao_max_it
-  std::string         almm_type;           // almm's formulation (classic, phr; "" another solver)
-  std::string         catol_note;          // almm's PHR replaced -tao_catol by -tao_gatol: what the program did
-  bool                feasible() const { return violated.empty(); }
+    at_bound;                        // the constraints within 1e-3 of their bound (relative), the variables at a bound
+  std::vector<size_t>      violated; // the constraints the optimum violates beyond -tao_catol (empty: feasible)
+  long                     best_feasible = -1;  // the history's best feasible design (index; -1 none)
+  double                   gatol         = NAN; // -tao_gatol as TAO used it (1)
+  PetscInt                 max_it        = 0;   // -tao_max_it
+  std::string              almm_type;           // almm's formulation (classic, phr; "" another solver)
+  std::vector<std::string> notes;               // about TAO's options: one with no effect, a tolerance almm replaced
+  bool                     feasible() const { return violated.empty(); }
 };
 PetscErrorCode DesignTaoDefaults(Tao tao, bool constrained);
 PetscErrorCode DesignSolve(DesignProblem &d, DesignResult *res);

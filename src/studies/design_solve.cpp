@@ -180,9 +180,9 @@ PetscErrorCode KeepConstraintTolerance(DesignProblem &d, Tao tao, DesignResult *
   PetscCall(TaoGetConstraintTolerances(tao, &used, NULL));
   if (used > catol) {
     PetscCall(TaoSetConstraintTolerances(tao, catol, crtol));
-    res->catol_note = Fmt("almm's PHR formulation sets -tao_catol to -tao_gatol %g (PETSc 3.18); the program keeps "
-                          "-tao_catol %g for TAO's test and the designs' feasibility",
-                          (double)used, (double)catol);
+    res->notes.push_back(Fmt("almm's PHR formulation sets -tao_catol to -tao_gatol %g (PETSc 3.18); the program keeps "
+                             "-tao_catol %g for TAO's test and the designs' feasibility",
+                             (double)used, (double)catol));
   }
   PetscFunctionReturn(0);
 }
@@ -215,6 +215,14 @@ PetscErrorCode SetUp(SolveContext &s, Tao tao, Vec x, Vec xl, Vec xu, Vec c, Mat
     TaoALMMType t;
     PetscCall(TaoALMMGetType(tao, &t));
     res->almm_type = t == TAO_ALMM_PHR ? "phr" : "classic";
+    for (const char *o : {"-tao_almm_mu_init", "-tao_almm_mu_factor"}) { // PHR sets both itself (PETSc 3.18)
+      PetscBool given;
+      PetscCall(PetscOptionsHasName(NULL, NULL, o, &given));
+      if (given && t == TAO_ALMM_PHR)
+        res->notes.push_back(Fmt("%s has no effect: almm's PHR formulation (the default) chooses its penalty itself; "
+                                 "-tao_almm_type classic reads it",
+                                 o));
+    }
   }
   PetscCall(PetscObjectTypeCompareAny((PetscObject)tao, &own_test, TAOBQNLS, TAOBLMVM, TAOALMM, ""));
   if (own_test) PetscCall(TaoSetConvergenceTest(tao, TaoConvergedDesign, &s));
