@@ -15,6 +15,14 @@
 #   resume     a design stopped after 6 runs (-design_stop_after) and run again: the rerun loads those 6
 #              from the journals and computes the fresh design's runs less 6, to the same optimum bit
 #              for bit; a third run computes nothing;
+#   infeasible feasibility within -tao_catol and a design that ends beyond it: from 0.682 m (ACOR 0.59858) under
+#              acor@hit <= 0.597 at -tao_gatol 1e-2 almm (PHR) ends feasible (PETSc 3.18's PHR set -tao_catol to
+#              -tao_gatol, 0.01, and stopped "converged" at the start, 2.6e-3 beyond the bound); stopped there
+#              (-tao_max_it 0): exit status 3, the violated constraint named with its value and bound, what to try,
+#              /design's converged_feasible 0 and status, the options file's second line INFEASIBLE; under
+#              acor@hit <= 0.5985 (the start 1.35e-4 beyond it, relative) the start is feasible at -tao_catol 1e-3
+#              (/design/feasible 1, exit 0) and infeasible at the default 1e-4 (exit 3); -tao_almm_mu_init under PHR
+#              (which ignores it) a note;
 #   input      bad input: errors that name the option and what is allowed.
 #
 #   tests/design_cli.sh path/to/beamimpact scratch_dir mpiexec part
@@ -66,6 +74,15 @@ i=np.nonzero((a[:-1]<0.597)&(a[1:]>=0.597))[0][0]; print('%.17g' % (x[i]+(0.597-
   x=$(optimum c.h5)
   near "$x" "$xc" 1e-3 && pass "constrained: impact_x $x m, the sweep's crossing of 0.597 at $xc m" || { fail "constrained optimum $x, the crossing $xc"; cat c.log; }
   grep -q "acor@hit .* <= 0.597  (active)" c.log && grep -q "^design: feasible" c.log && pass "the constraint is named active, the optimum feasible" || { fail "constraint report"; cat c.log; }
+  # almm's iterates are its outer iterations only (its subsolver's are not TAO's: no monitor of the program there)
+  n=$(sed -nE 's/^design: TAO almm: .* after ([0-9]+) iterations.*/\1/p' c.log)
+  "$python" - c.h5 "$n" <<'PY' && pass "almm: /design's iterates (role 0) one per outer iteration 0..$n" || fail "almm's iterates in /design"
+import h5py, numpy as np, sys
+d, n = h5py.File(sys.argv[1], "r")["design"], int(sys.argv[2])
+it = d["iteration"][()][d["role"][()] == 0]
+print("   iterations of the iterates:", sorted(int(i) for i in it), "TAO's:", n)
+sys.exit(0 if len(set(it)) == len(it) and set(it) <= set(range(n + 1)) else 1)
+PY
   ;;
 gradient)
   # d acor / d u of E = 5e10 + u 4e10 at 7e10 Pa (impact_x 0.62 m): smooth in E (no node crossed)
@@ -108,6 +125,39 @@ resume)
   [[ $(optimum r.h5) == $(optimum fresh.h5) ]] && pass "the same optimum bit for bit" || fail "optimum $(optimum r.h5), fresh $(optimum fresh.h5)"
   "$exe" "${scene[@]}" "${design[@]}" -output r.h5 >third.log 2>&1 && [[ $(computed third.log) == 0 ]] && pass "a third run computes nothing" || fail "the third run computed $(computed third.log)"
   ;;
+infeasible)
+  con=(-design_constraints "acor@hit<=0.597")
+  start=(-design_variables "impact_x=0.55:1.0:0.682") # the ACOR's maximum, 0.59858: 2.6e-3 beyond 0.597 (relative)
+  "$exe" "${scene[@]}" "${design[@]}" "${start[@]}" "${con[@]}" -tao_gatol 1e-2 -tao_almm_mu_init 1e4 -output g.h5 >g.log 2>&1
+  rc=$?
+  ((rc == 0)) && grep -q "^design: feasible: every constraint holds within -tao_catol 0.0001" g.log && grep -q "keeps -tao_catol 0.0001" g.log \
+    && pass "-tao_gatol 1e-2: almm (PHR) ends feasible, -tao_catol 1e-4 kept (the note says so)" || { fail "-tao_gatol 1e-2: exit $rc"; cat g.log; }
+  grep -q "^design: note: -tao_almm_mu_init has no effect: almm's PHR formulation" g.log && pass "-tao_almm_mu_init under PHR: a note, no effect" || fail "no note on -tao_almm_mu_init"
+  "$exe" "${scene[@]}" "${design[@]}" "${start[@]}" "${con[@]}" -tao_max_it 0 -output s.h5 >s.log 2>&1
+  rc=$?
+  ((rc == 3)) && pass "stopped beyond the bound: exit status 3" || { fail "exit status $rc, not 3"; cat s.log; }
+  grep -q "^design: INFEASIBLE: the run ended at a design that violates 1 constraint" s.log \
+    && grep -q "^design:   violated: acor@hit = 0.5985810.*, its bound <= 0.597" s.log && grep -q "^design: try: a smaller -tao_gatol" s.log \
+    && pass "the summary: INFEASIBLE, the constraint, its value and bound, what to try" || { fail "the summary"; cat s.log; }
+  ! grep -q "^design: feasible" s.log && pass "... and no feasible line" || fail "a feasible line beside INFEASIBLE"
+  "$python" -c "
+import h5py, sys; d = h5py.File('s.h5', 'r')['design']; s = d.attrs['status']; s = s.decode() if isinstance(s, bytes) else s
+print('   converged_feasible', d.attrs['converged_feasible'], 'status', s, 'feasible', list(d['feasible'][()]))
+sys.exit(0 if d.attrs['converged_feasible'] == 0 and s.startswith('INFEASIBLE') and 'acor@hit' in s and d['feasible'][0] == 0 else 1)" \
+    && pass "/design: converged_feasible 0, its status names the constraint" || fail "/design's status"
+  sed -n 2p s.opts | grep -q "^# INFEASIBLE: NOT an optimum" && pass "the options file's second line: INFEASIBLE" || { fail "s.opts"; head -3 s.opts; }
+  # within -tao_catol is feasible: the start 1.35e-4 beyond 0.5985
+  near=(-design_constraints "acor@hit<=0.5985" -tao_max_it 0)
+  "$exe" "${scene[@]}" "${design[@]}" "${start[@]}" "${near[@]}" -tao_catol 1e-3 -output w.h5 >w.log 2>&1
+  rc=$?
+  ((rc == 0)) && grep -q "^design: feasible: every constraint holds within -tao_catol 0.001" w.log \
+    && "$python" -c "import h5py,sys; d=h5py.File('w.h5','r')['design']; sys.exit(0 if d['feasible'][0] == 1 and d.attrs['converged_feasible'] == 1 else 1)" \
+    && pass "1.35e-4 beyond the bound, -tao_catol 1e-3: feasible (summary, /design/feasible, converged_feasible)" || { fail "within -tao_catol: exit $rc"; cat w.log; }
+  "$exe" "${scene[@]}" "${design[@]}" "${start[@]}" "${near[@]}" -output x.h5 >x.log 2>&1
+  rc=$?
+  ((rc == 3)) && "$python" -c "import h5py,sys; sys.exit(0 if h5py.File('x.h5','r')['design/feasible'][0] == 0 else 1)" \
+    && pass "... and at the default -tao_catol 1e-4: infeasible, exit 3" || { fail "beyond -tao_catol 1e-4: exit $rc"; cat x.log; }
+  ;;
 input)
   expect() { # expect REGEX ARGS...: the run fails with a message matching REGEX
     local re=$1; shift
@@ -124,6 +174,7 @@ input)
   expect "-design_studies: 'hit' is not NAME\{SETTING,...\}" "${design[@]}" -design_studies "hit"
   expect "neither REDUCTION\(COLUMN@STUDY\) nor COLUMN@STUDY nor a number of the bat" "${design[@]}" -design_objective "weight"
   expect "-tao_type almm needs constraints" "${design[@]}" -tao_type almm
+  expect "-tao_type bqnls ignores -design_constraints: with constraints the design needs almm" "${design[@]}" -design_constraints "acor@hit<=0.597" -tao_type bqnls
   ;;
 *) echo "unknown part $part"; exit 2 ;;
 esac

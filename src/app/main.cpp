@@ -11,6 +11,7 @@
 #include "app/tasks.hpp"
 #include "io/options_files.hpp"
 #include "io/text.hpp"
+#include "studies/design.hpp"
 #include "studies/sweep.hpp"
 
 #include <slepcsys.h>
@@ -203,5 +204,6 @@ int main(int argc, char **argv)
   }
   if (!traceback) PetscCall(PetscPopErrorHandler());
   PetscCall(SlepcFinalize());
-  return beamimpact::SweepExitStatus(); // 2: a sweep completed with failed points
+  // 2: a sweep completed with failed points; 3: a design ended beyond its constraints (studies/design.hpp)
+  return beamimpact::SweepExitStatus() ? beamimpact::SweepExitStatus() : beamimpact::DesignExitStatus();
 }

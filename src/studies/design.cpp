@@ -11,6 +11,8 @@ namespace beamimpact {
 
 namespace {
 
+int g_exit_status = 0; // DesignExitStatus()
+
 // The settings, the variables, the studies, the objective and the constraints, every error naming
 // what is wrong; then the case batch (its journal and the rows of an earlier design into -output).
 PetscErrorCode DesignSetUp(MPI_Comm comm, const std::string &output, DesignProblem *d)
@@ -103,6 +105,7 @@ PetscErrorCode TaskDesign(MPI_Comm comm, const std::string &output)
   DesignResult  res;
 
   PetscFunctionBeginUser;
+  g_exit_status = 0;
   struct Guard { // an error return: the lock released, the journals kept, no collective call
     DesignProblem &d;
     ~Guard()
@@ -120,8 +123,11 @@ PetscErrorCode TaskDesign(MPI_Comm comm, const std::string &output)
   PetscCall(DesignPrintSummary(d, res));
   PetscCall(DesignWriteOutputs(d, res, output));
   PetscCall(CaseBatchDestroy(&d.batch));
+  if (!res.feasible()) g_exit_status = kDesignInfeasibleStatus;
   PetscFunctionReturn(0);
 }
+
+int DesignExitStatus() { return g_exit_status; }
 
 PetscErrorCode DesignHelpOptions(MPI_Comm comm)
 {

@@ -25,6 +25,11 @@ const OptionModule &DesignOptionTable();
 // runs in /case_batch) and -design_options_output (the optimum as an options file).
 PetscErrorCode TaskDesign(MPI_Comm comm, const std::string &output);
 
+// The program's exit status after TaskDesign: 0, or kDesignInfeasibleStatus (3) when the design it returned violates
+// a constraint beyond -tao_catol (every output written, each saying so).
+constexpr int kDesignInfeasibleStatus = 3;
+int           DesignExitStatus();
+
 // Under -help: the -design_* block.
 PetscErrorCode DesignHelpOptions(MPI_Comm comm);
 

@@ -128,6 +128,15 @@ std::vector<double> DesignTaoConstraints(const DesignProblem &d, const DesignVal
   return c;
 }
 
+std::vector<size_t> DesignViolated(const DesignProblem &d, const DesignValues &v)
+{
+  std::vector<size_t>       out;
+  const std::vector<double> c = DesignTaoConstraints(d, v);
+  for (size_t i = 0; i < c.size(); ++i)
+    if (!(c[i] >= -d.catol)) out.push_back(i); // NaN too
+  return out;
+}
+
 static void PromoteRole(DesignRecord &r, int role)
 {
   auto rank = [](int x) { return x == 0 ? 2 : x == 2 ? 1 : 0; }; // iterate > a point TAO asked for > a difference's
@@ -162,9 +171,8 @@ PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<do
     v.constraint.resize(d.m());
     for (size_t i = 0; i < d.m(); ++i)
       PetscCall(Quantity(d, d.constraints[i].q, rows, e * per, bat, v.p, &v.constraint[i]));
-    v.feasible = true;
-    for (double c : DesignTaoConstraints(d, v)) v.feasible = v.feasible && c >= 0;
-    auto it = d.known.find(us[e]);
+    v.feasible = DesignViolated(d, v).empty();
+    auto it    = d.known.find(us[e]);
     if (it == d.known.end()) {
       DesignRecord r;
       r.v = v, r.iteration = d.iteration, r.role = role;

@@ -3,6 +3,8 @@
 // layout is in docs/design-studies.md.
 #include "studies/design_problem.hpp"
 
+#include "studies/design.hpp"
+
 #include "io/results_h5.hpp"
 #include "io/run_record.hpp"
 #include "studies/study_common.hpp"
@@ -20,6 +22,43 @@ namespace beamimpact {
 namespace {
 
 const char *const kOptionsMarker = "# beamimpact -task design: the optimum";
+
+std::string VariablesText(const DesignProblem &d, const std::vector<double> &p)
+{
+  std::string out;
+  for (size_t j = 0; j < d.n(); ++j)
+    out += Fmt("%s%s %.8g%s", j ? ", " : "", d.vars[j].name.c_str(), p[j], UnitText(d.vars[j].unit).c_str());
+  return out;
+}
+
+// An optimum beyond -tao_catol: each constraint violated, what to try, the best feasible design evaluated.
+std::vector<std::string> InfeasibleLines(const DesignProblem &d, const DesignResult &res)
+{
+  std::vector<std::string>  l;
+  const std::vector<double> c = DesignTaoConstraints(d, res.v);
+  l.push_back(Fmt("INFEASIBLE: the run ended at a design that violates %zu constraint(s) by more than -tao_catol %g "
+                  "(relative to the bound): not an optimum under the constraints, whatever TAO's reason says",
+                  res.violated.size(), d.catol));
+  for (size_t i : res.violated) {
+    const DesignConstraint &k = d.constraints[i];
+    l.push_back(Fmt("  violated: %s = %.8g%s, its bound %s %g (beyond it by %.3g of the bound)", k.q.text.c_str(),
+                    res.v.constraint[i], UnitText(k.q.unit).c_str(), k.upper ? "<=" : ">=", k.bound, -c[i]));
+  }
+  std::string a = Fmt("try: a smaller -tao_gatol (it is %g), more -tao_max_it (it is %d)", res.gatol, (int)res.max_it);
+  if (res.almm_type == "phr")
+    a += ", -tao_almm_type classic with a larger -tao_almm_mu_init (almm's first penalty; PHR, the default, "
+         "chooses its own and ignores it)";
+  else if (res.almm_type == "classic") a += ", a larger -tao_almm_mu_init (almm's first penalty)";
+  l.push_back(a + ", or a feasible start (-design_variables NAME=LO:HI:START)");
+  if (res.best_feasible < 0) l.push_back("no design evaluated was feasible");
+  else {
+    const DesignRecord &r = d.history[res.best_feasible];
+    l.push_back(Fmt("the best feasible design evaluated: /design row %ld (TAO's iteration %d): %s = %.10g; %s",
+                    res.best_feasible, (int)r.iteration, d.objective.text.c_str(), r.v.objective,
+                    VariablesText(d, r.v.p).c_str()));
+  }
+  return l;
+}
 
 // The optimum's lines, shared by the summary and the options file's header.
 std::vector<std::string> ResultLines(const DesignProblem &d, const DesignResult &res)
@@ -40,8 +79,12 @@ std::vector<std::string> ResultLines(const DesignProblem &d, const DesignResult 
     l.push_back(Fmt("  %-28s %.8g%s %s %g%s", c.q.text.c_str(), res.v.constraint[i], UnitText(c.q.unit).c_str(),
                     c.upper ? "<=" : ">=", c.bound, active ? "  (active)" : ""));
   }
-  l.push_back(res.v.feasible ? "feasible: every constraint holds"
-                             : "INFEASIBLE: a constraint does not hold at the optimum TAO returned");
+  for (const std::string &n : res.notes) l.push_back("note: " + n);
+  if (res.feasible())
+    l.push_back(d.m() ? Fmt("feasible: every constraint holds within -tao_catol %g of its bound (relative)", d.catol)
+                      : "feasible: no constraints");
+  else
+    for (const std::string &x : InfeasibleLines(d, res)) l.push_back(x);
   for (const std::string &b : res.at_bound) l.push_back("note: " + b + " is at a bound of -design_variables");
   return l;
 }
@@ -50,6 +93,10 @@ std::string OptionsText(const DesignProblem &d, const DesignResult &res, const s
 {
   std::ostringstream o;
   o << kOptionsMarker << ", ready to include: -options_file THIS_FILE\n";
+  if (!res.feasible())
+    o << "# INFEASIBLE: NOT an optimum under the constraints (a constraint beyond -tao_catol; the program's exit "
+         "status "
+      << kDesignInfeasibleStatus << "): see below\n";
   o << "# objective: " << (d.settings.maximize ? "maximise " : "minimise ") << d.objective.text
     << "; constraints: " << (d.settings.constraints.empty() ? "none" : d.settings.constraints) << "\n";
   o << "# studies: " << (d.settings.studies.empty() ? "none" : d.settings.studies) << "\n";
@@ -58,6 +105,17 @@ std::string OptionsText(const DesignProblem &d, const DesignResult &res, const s
   for (const std::string &l : ResultLines(d, res)) o << "# " << l << "\n";
   for (size_t j = 0; j < d.n(); ++j) o << Fmt("-%s %.17g\n", d.vars[j].name.c_str(), res.p[j]);
   return o.str();
+}
+
+std::string ViolatedText(const DesignProblem &d, const DesignResult &res)
+{
+  std::string out;
+  for (size_t i : res.violated) {
+    const DesignConstraint &k = d.constraints[i];
+    out += Fmt("%s%s = %.8g %s %g", out.empty() ? "" : ", ", k.q.text.c_str(), res.v.constraint[i], k.upper ? ">" : "<",
+               k.bound);
+  }
+  return out;
 }
 
 PetscErrorCode WriteDesignGroup(const DesignProblem &d, const DesignResult &res, hid_t file)
@@ -107,6 +165,12 @@ PetscErrorCode WriteDesignGroup(const DesignProblem &d, const DesignResult &res,
   PetscCall(H5WriteCounts1D(g, "role", role,
                             "1 (0: an iterate of TAO, 2: a point TAO asked for that no iteration took (a line search's "
                             "trial), 1: only a point of a difference)"));
+  RunRecord a; // the optimum's status
+  a.add("converged_feasible", (PetscInt)res.feasible());
+  a.add("status", res.feasible() ? std::string("feasible: every constraint within -tao_catol of its bound")
+                                 : "INFEASIBLE: the optimum violates " + ViolatedText(d, res) + " beyond -tao_catol");
+  a.add("catol", d.catol);
+  PetscCall(H5WriteAttributes(g, a));
   H5Gclose(g);
   PetscFunctionReturn(0);
 }
@@ -126,7 +190,7 @@ PetscErrorCode DesignRecordOf(const DesignProblem &d, const DesignResult &res, R
   rec->add("design_converged_reason", res.reason);
   rec->add("design_iterations", res.iterations);
   rec->add("design_objective_value", res.v.objective);
-  rec->add("design_feasible", (PetscInt)res.v.feasible);
+  rec->add("design_feasible", (PetscInt)res.feasible());
   rec->add("design_kkt_residual", res.kkt);
   rec->add("design_designs", (PetscInt)d.history.size());
   rec->add("design_runs_computed", d.batch.counts.computed);

@@ -65,8 +65,8 @@ struct DesignConstraint {
 struct DesignValues {
   std::vector<double> p; // the variables (their units)
   double              objective = 0;
-  std::vector<double> constraint; // each constraint's quantity (its unit)
-  bool                feasible = true;
+  std::vector<double> constraint;      // each constraint's quantity (its unit)
+  bool                feasible = true; // no constraint violated by more than -tao_catol (DesignViolated)
 };
 
 // One design evaluated, for /design.
@@ -93,8 +93,9 @@ struct DesignProblem {
   PetscInt                              iteration = 0; // TAO's current iteration
   std::vector<double>                   u_prev;        // the last iterate (the step test)
   std::string                           stop;          // the program's test that stopped TAO ("" none)
-  bool                                  options_checked = false;
-  bool                                  bat_numbers     = false; // some quantity is a number of the bat
+  double catol = 1e-4; // -tao_catol as TAO read it (1): a design is feasible when every scaled constraint c >= -catol
+  bool   options_checked = false;
+  bool   bat_numbers     = false; // some quantity is a number of the bat
 
   size_t              n() const { return vars.size(); }
   size_t              m() const { return constraints.size(); }
@@ -123,8 +124,10 @@ PetscErrorCode DesignEvaluate(DesignProblem &d, const std::vector<std::vector<do
 // forward or central differences (a variable at a bound steps inward), in one batch.
 PetscErrorCode DesignGradient(DesignProblem &d, const std::vector<double> &u, bool central, double step, double *f,
                               std::vector<double> *g, std::vector<double> *c, std::vector<double> *J);
-// TAO's constraints of a design's values (>= 0 feasible).
+// TAO's constraints of a design's values (>= 0 holds).
 std::vector<double> DesignTaoConstraints(const DesignProblem &d, const DesignValues &v);
+// The constraints a design violates by more than d.catol (c < -catol: Q <= B read as Q <= B + catol |B|), by index.
+std::vector<size_t> DesignViolated(const DesignProblem &d, const DesignValues &v);
 
 // design_solve.cpp. Collective: TAO from the start to the optimum.
 struct DesignResult {
@@ -134,7 +137,14 @@ struct DesignResult {
   PetscInt                 iterations = 0;
   double                   kkt = NAN, cnorm = NAN; // the final gradient (of the Lagrangian) norm and constraint norm
   std::vector<std::string> active,
-    at_bound; // the constraints within 1e-3 of their bound (relative), the variables at a bound
+    at_bound;                        // the constraints within 1e-3 of their bound (relative), the variables at a bound
+  std::vector<size_t>      violated; // the constraints the optimum violates beyond -tao_catol (empty: feasible)
+  long                     best_feasible = -1;  // the history's best feasible design (index; -1 none)
+  double                   gatol         = NAN; // -tao_gatol as TAO used it (1)
+  PetscInt                 max_it        = 0;   // -tao_max_it
+  std::string              almm_type;           // almm's formulation (classic, phr; "" another solver)
+  std::vector<std::string> notes;               // about TAO's options: one with no effect, a tolerance almm replaced
+  bool                     feasible() const { return violated.empty(); }
 };
 PetscErrorCode DesignTaoDefaults(Tao tao, bool constrained);
 PetscErrorCode DesignSolve(DesignProblem &d, DesignResult *res);

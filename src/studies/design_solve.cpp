@@ -134,8 +134,8 @@ PetscErrorCode TaoMonitorDesign(Tao tao, void *ctx)
   PetscFunctionReturn(0);
 }
 
-// bqnls, blmvm, almm: TAO's own tests, then no scaled variable moved by more than -design_xtol (almm: with
-// its constraints within -tao_catol).
+// bqnls, blmvm, almm: TAO's own tests, then no scaled variable moved by more than -design_xtol (almm: at a feasible
+// design, every constraint within -tao_catol).
 PetscErrorCode TaoConvergedDesign(Tao tao, void *ctx)
 {
   SolveContext      &s = *static_cast<SolveContext *>(ctx);
@@ -148,10 +148,10 @@ PetscErrorCode TaoConvergedDesign(Tao tao, void *ctx)
   PetscCall(TaoDefaultConvergenceTest(tao, NULL));
   PetscCall(TaoGetSolutionStatus(tao, &it, &fc, &gnorm, &cnorm, &xdiff, &reason));
   PetscCall(TaoGetSolution(tao, &X));
-  const std::vector<double> u = FromVec(X);
-  PetscReal                 catol, crtol;
-  PetscCall(TaoGetConstraintTolerances(tao, &catol, &crtol));
-  if (reason == TAO_CONTINUE_ITERATING && it > 0 && s.d->u_prev.size() == u.size() && cnorm <= catol) {
+  const std::vector<double> u        = FromVec(X);
+  const auto                known    = s.d->known.find(u); // the monitor evaluated the iterate
+  const bool                feasible = known != s.d->known.end() && s.d->history[known->second].v.feasible;
+  if (reason == TAO_CONTINUE_ITERATING && it > 0 && s.d->u_prev.size() == u.size() && feasible) {
     double moved = 0;
     for (size_t j = 0; j < u.size(); ++j) moved = std::max(moved, std::fabs(u[j] - s.d->u_prev[j]));
     if (moved <= s.d->settings.xtol) {
@@ -166,9 +166,31 @@ PetscErrorCode TaoConvergedDesign(Tao tao, void *ctx)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode SetUp(SolveContext &s, Tao tao, Vec x, Vec xl, Vec xu, Vec c, Mat J)
+// -tao_catol as TAO read it is the program's feasibility tolerance (DesignViolated). almm's PHR formulation
+// (PETSc 3.18's default) replaces it by -tao_gatol in its set-up when both are set (the program sets both): a larger
+// -tao_gatol would then let TAO stop "converged" at a design beyond -tao_catol, so a larger value is put back after
+// TaoSetUp.
+PetscErrorCode KeepConstraintTolerance(DesignProblem &d, Tao tao, DesignResult *res)
+{
+  PetscReal catol, crtol, used;
+  PetscFunctionBeginUser;
+  PetscCall(TaoGetConstraintTolerances(tao, &catol, &crtol));
+  d.catol = catol;
+  PetscCall(TaoSetUp(tao));
+  PetscCall(TaoGetConstraintTolerances(tao, &used, NULL));
+  if (used > catol) {
+    PetscCall(TaoSetConstraintTolerances(tao, catol, crtol));
+    res->notes.push_back(Fmt("almm's PHR formulation sets -tao_catol to -tao_gatol %g (PETSc 3.18); the program keeps "
+                             "-tao_catol %g for TAO's test and the designs' feasibility",
+                             (double)used, (double)catol));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SetUp(SolveContext &s, Tao tao, Vec x, Vec xl, Vec xu, Vec c, Mat J, DesignResult *res)
 {
   PetscBool almm, own_test;
+  TaoType   type;
   PetscFunctionBeginUser;
   PetscCall(DesignTaoDefaults(tao, s.d->m() > 0));
   PetscCall(TaoSetSolution(tao, x));
@@ -179,14 +201,32 @@ PetscErrorCode SetUp(SolveContext &s, Tao tao, Vec x, Vec xl, Vec xu, Vec c, Mat
     PetscCall(TaoSetInequalityConstraintsRoutine(tao, c, TaoConstraints, &s));
     PetscCall(TaoSetJacobianInequalityRoutine(tao, J, J, TaoConstraintsJacobian, &s));
   }
-  PetscCall(TaoSetMonitor(tao, TaoMonitorDesign, &s, NULL));
   PetscCall(TaoSetFromOptions(tao));
+  // after TaoSetFromOptions: almm copies the monitors set before it to its subsolver, whose iterates are not TAO's
+  PetscCall(TaoSetMonitor(tao, TaoMonitorDesign, &s, NULL));
+  PetscCall(TaoGetType(tao, &type));
   PetscCall(PetscObjectTypeCompare((PetscObject)tao, TAOALMM, &almm));
   PetscCheck(c || !almm, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
              "-tao_type almm needs constraints: give -design_constraints, or a bound-constrained solver (bqnls, "
              "blmvm)");
+  PetscCheck(!c || almm, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
+             "-tao_type %s ignores -design_constraints: with constraints the design needs almm (the default)", type);
+  if (almm) {
+    TaoALMMType t;
+    PetscCall(TaoALMMGetType(tao, &t));
+    res->almm_type = t == TAO_ALMM_PHR ? "phr" : "classic";
+    for (const char *o : {"-tao_almm_mu_init", "-tao_almm_mu_factor"}) { // PHR sets both itself (PETSc 3.18)
+      PetscBool given;
+      PetscCall(PetscOptionsHasName(NULL, NULL, o, &given));
+      if (given && t == TAO_ALMM_PHR)
+        res->notes.push_back(Fmt("%s has no effect: almm's PHR formulation (the default) chooses its penalty itself; "
+                                 "-tao_almm_type classic reads it",
+                                 o));
+    }
+  }
   PetscCall(PetscObjectTypeCompareAny((PetscObject)tao, &own_test, TAOBQNLS, TAOBLMVM, TAOALMM, ""));
   if (own_test) PetscCall(TaoSetConvergenceTest(tao, TaoConvergedDesign, &s));
+  PetscCall(KeepConstraintTolerance(*s.d, tao, res));
   PetscFunctionReturn(0);
 }
 
@@ -228,7 +268,7 @@ PetscErrorCode DesignSolve(DesignProblem &d, DesignResult *res)
     PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, (PetscInt)d.m(), (PetscInt)d.n(), NULL, &J));
   }
   PetscCall(TaoCreate(PETSC_COMM_SELF, &tao));
-  PetscCall(SetUp(s, tao, x, xl, xu, c, J));
+  PetscCall(SetUp(s, tao, x, xl, xu, c, J, res));
   PetscCall(TaoSolve(tao));
   PetscCall(TaoGetType(tao, &type));
   PetscCall(TaoGetSolutionStatus(tao, &res->iterations, &f, &res->kkt, &res->cnorm, &xdiff, &reason));
@@ -240,6 +280,16 @@ PetscErrorCode DesignSolve(DesignProblem &d, DesignResult *res)
   const std::vector<double> cs = DesignTaoConstraints(d, v[0]);
   for (size_t i = 0; i < d.m(); ++i)
     if (std::fabs(cs[i]) <= 1e-3) res->active.push_back(d.constraints[i].q.text);
+  res->violated = DesignViolated(d, v[0]);
+  PetscCall(TaoGetTolerances(tao, &res->gatol, NULL, NULL));
+  PetscCall(TaoGetMaximumIterations(tao, &res->max_it));
+  for (size_t k = 0; k < d.history.size(); ++k) {
+    const DesignRecord &r = d.history[k];
+    if (r.v.feasible &&
+        (res->best_feasible < 0 ||
+         (d.settings.maximize ? 1 : -1) * (r.v.objective - d.history[res->best_feasible].v.objective) > 0))
+      res->best_feasible = (long)k;
+  }
   for (size_t j = 0; j < d.n(); ++j)
     if (u[j] <= 1e-6 || u[j] >= 1 - 1e-6) res->at_bound.push_back(d.vars[j].name);
   PetscCall(TaoDestroy(&tao));

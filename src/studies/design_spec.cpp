@@ -36,8 +36,11 @@ const OptionModule &DesignOptionTable()
                  "over the study's points; COLUMN@STUDY for a study of one point) or a number of the bat: mass, drop, "
                  "balance, inertia_knob, inertia_pivot, inertia_cm, length, diameter"),
       OptionChoice("-design_goal", "Maximise or minimise -design_objective", {"maximize", "minimize"}, "maximize"),
-      OptionText("-design_constraints", "Inequalities the design must satisfy: QUANTITY<=BOUND or QUANTITY>=BOUND, "
-                                        "separated by ',' (a quantity as in -design_objective; the bound in its unit)"),
+      OptionText("-design_constraints",
+                 "Inequalities the design must satisfy: QUANTITY<=BOUND or QUANTITY>=BOUND, separated by ',' (a "
+                 "quantity as in -design_objective; the bound in its unit); a design is feasible when each holds "
+                 "within "
+                 "-tao_catol of its bound (relative; default 1e-4); an optimum beyond it: INFEASIBLE, exit status 3"),
       OptionChoice("-design_differences",
                    "The differences of the gradients: forward (n + 1 designs) or central (2n + 1)",
                    {"forward", "central"}, "forward"),
@@ -50,8 +53,8 @@ const OptionModule &DesignOptionTable()
                  "knob)",
                  "0.1524", NonNegative()),
       OptionReal("-design_xtol", "1",
-                 "bqnls or blmvm stop when no variable moves by more than this in its scaled range [0, 1] from one "
-                 "iteration to the next",
+                 "bqnls, blmvm or almm (at a feasible design) stop when no variable moves by more than this in its "
+                 "scaled range [0, 1] from one iteration to the next",
                  "1e-4", Positive()),
       OptionText("-design_options_output",
                  "The optimum as an options file to include (default: -output with .opts; none with -output none)"),
