@@ -10,7 +10,9 @@
 #   gradient   the forward-difference gradient of the ACOR over the scaled Young's modulus at the start
 #              (TAO's, from the two designs /design holds) at steps 1e-4 and 1e-3 against central differences
 #              of a separate sweep at two relative steps (1e-4, 1e-3): within 2e-3 relative (the
-#              forward difference's own error, O(step));
+#              forward difference's own error, O(step)); TAO's -tao_test_gradient at the start: TAO's
+#              differences and the design's gradient within 1e-2 relative, no option called unused
+#              (nor on a rerun that computes nothing);
 #   ranks      the same design on 1 and 2 ranks: the same optimum and history to 1e-12;
 #   resume     a design stopped after 6 runs (-design_stop_after) and run again: the rerun loads those 6
 #              from the journals and computes the fresh design's runs less 6, to the same optimum bit
@@ -35,7 +37,7 @@ exe=$(readlink -f "$exe")
 source "$(dirname "$0")/lib.sh" # MPI env, fail/pass, $python
 dir="$dir/$part"
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 2
-[[ -n "$python" ]] || { echo "SKIP: no Python with h5py"; exit 0; }
+[[ -n "$python" ]] || { echo "SKIP: no Python with h5py"; exit 77; }
 
 scene=(-beam_nodes 221 -ts_type modal -ball_law linear)
 design=(-task design -design_variables "impact_x=0.55:1.0:0.6" -design_studies "hit{}" -design_objective "acor@hit" -design_quiet)
@@ -98,6 +100,17 @@ gradient)
         && pass "gradient at step $s against central differences at h $h" || fail "gradient $g at step $s, central $gc at h $h"
     done
   done
+  # TAO's own gradient test (-tao_test_gradient: TAO's finite differences against the design's
+  # gradient at the start): the two within 1e-2 relative, the angle's cosine 1; the test's
+  # option read (no note), and on a rerun that computes nothing no option is called unused
+  "$exe" "${scene[@]}" "${gd[@]}" -tao_test_gradient -output t.h5 >t.log 2>&1 || { fail "the gradient test failed"; cat t.log; }
+  rel=$(sed -nE 's/^ *2-norm \|\|G - Gfd\|\|\/\|\|G\|\| = ([0-9.e+-]+),.*/\1/p' t.log | head -1)
+  [[ -n $rel ]] && "$python" -c "import sys; sys.exit(0 if float(sys.argv[1]) <= 1e-2 else 1)" "$rel" &&
+    grep -q "angle cosine = (Gfd'G)/||Gfd||||G|| = 1\." t.log &&
+    pass "TAO's gradient test: ||G - Gfd||/||G|| = $rel" || { fail "TAO's gradient test: '$rel'"; cat t.log; }
+  grep -q "not used" t.log && fail "a note calls an option unused: $(grep 'not used' t.log)" || pass "-tao_test_gradient read, no note"
+  "$exe" "${scene[@]}" "${gd[@]}" -tao_test_gradient -output t.h5 >t2.log 2>&1 && ! grep -q "not used" t2.log &&
+    pass "a rerun that computes nothing calls no option unused" || { fail "the rerun's notes"; cat t2.log; }
   ;;
 ranks)
   "$exe" "${scene[@]}" "${design[@]}" -output one.h5 >one.log 2>&1 || { fail "1 rank failed"; cat one.log; }

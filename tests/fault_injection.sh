@@ -44,7 +44,7 @@ elif [[ -n "$preload" && -f "$preload" ]]; then
   mode=preload
   echo "      disk full: no tmpfs can be mounted here (not root?): writes under $full fail with ENOSPC by LD_PRELOAD=$preload"
 else
-  echo "SKIP: disk full: neither a tmpfs can be mounted (not root) nor an LD_PRELOAD library was given"
+  skip "disk full: neither a tmpfs can be mounted (not root) nor an LD_PRELOAD library was given"
 fi
 
 # room KB: about KB kilobytes free in $full from now on

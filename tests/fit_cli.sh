@@ -26,7 +26,7 @@ source "$(dirname "$0")/lib.sh" # MPI env, fail/pass, $python
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 dir="$dir/$part"
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 2
-[[ -n "$python" ]] || { echo "SKIP: no Python with h5py"; exit 0; }
+[[ -n "$python" ]] || { echo "SKIP: no Python with h5py"; exit 77; }
 
 # The impact scene: the paper's beam (free-free, N = 21) struck by a linear ball, the modal integrator.
 scene=(-beam_nodes 21 -ts_type modal -ball_law linear)

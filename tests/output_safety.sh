@@ -240,7 +240,7 @@ if [[ -n "$python" ]]; then
   out=$("$python" "$src/scripts/plot_sweep.py" swing_sweep.h5 acor -o swing_acor.png 2>&1)
   (($? != 0)) && grep -q "not the ACOR of a bat at rest" <<<"$out" && pass "plot_sweep.py refuses the acor of a swinging bat" || fail "plot_sweep.py acor of a swinging bat: $out"
 else
-  echo "SKIP: plot scripts: no Python with h5py"
+  skip "plot scripts: no Python with h5py"
 fi
 
 echo "output_safety: $fails failure(s)"

@@ -31,7 +31,7 @@ rm -rf "$dir" && mkdir -p "$dir"
 # A quick scene: the 6 mm aluminium beam, free-free, N = 21, struck by the linear superball.
 scene=(-options_file options/base/aluminium-6mm.opts -options_file options/base/superball-linear.opts -beam_length 1.1 -beam_left free -beam_right free -beam_nodes 21)
 
-need_python() { [[ -n "$python" ]] || { echo "SKIP: no Python with h5py"; exit 0; }; }
+need_python() { [[ -n "$python" ]] || { echo "SKIP: no Python with h5py"; exit 77; }; }
 
 case $part in
 lock)

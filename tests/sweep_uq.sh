@@ -27,7 +27,7 @@ src=$(readlink -f "$(dirname "${BASH_SOURCE[0]}")/..")
 mkdir -p "$dir" && cd "$dir" || exit 1
 rm -rf uq_* uqdir
 source "$src/tests/lib.sh" # MPI env, fail/pass, $python
-[[ -n "$python" ]] || { echo "SKIP: no Python with h5py and numpy"; exit 0; }
+[[ -n "$python" ]] || { echo "SKIP: no Python with h5py and numpy"; exit 77; }
 
 scene=(-options_file "$src/options/base/default-scene.opts" -task sweep -sweep_quiet)
 

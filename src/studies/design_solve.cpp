@@ -41,8 +41,10 @@ PetscErrorCode AtPoint(SolveContext &s, const std::vector<double> &u)
   PetscCall(
     DesignGradient(*s.d, u, s.d->settings.central, s.d->settings.step, &s.cache.f, &s.cache.g, &s.cache.c, &s.cache.J));
   s.cache.u = u, s.cache.valid = true;
-  if (!s.d->options_checked) { // after TAO and the first runs read theirs: a typo stops the design now
-    PetscCall(OptionsCheckUnused(s.d->world));
+  // after TAO and the first runs read theirs: a typo stops the design now (a rerun that
+  // computes nothing reads no run's options: no check)
+  if (!s.d->options_checked && s.d->batch.counts.computed > 0) {
+    PetscCall(StudyOptionsCheckUnused(s.d->world));
     s.d->options_checked = true;
   }
   PetscFunctionReturn(0);

@@ -40,8 +40,10 @@ PetscErrorCode FitTaoResidual(Tao, Vec X, Vec F, void *ctx)
 
   PetscFunctionBeginUser;
   PetscCall(FitResidual(f, f.ToP(FromVec(X)), &fitted, &r));
-  if (!f.options_checked) { // after TAO and the first runs read theirs: a typo stops the fit now, not at its end
-    PetscCall(OptionsCheckUnused(f.world));
+  // after TAO and the first runs read theirs: a typo stops the fit now, not at its end (a rerun
+  // that computes nothing reads no run's options: no check)
+  if (!f.options_checked && f.batch.counts.computed > 0) {
+    PetscCall(StudyOptionsCheckUnused(f.world));
     f.options_checked = true;
   }
   PetscCall(ToVec(r, F));

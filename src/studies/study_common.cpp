@@ -1,6 +1,7 @@
 // What the studies that drive TAO share. See study_common.hpp.
 #include "studies/study_common.hpp"
 
+#include "base/options_util.hpp"
 #include "io/run_record.hpp"
 
 #include <fcntl.h>
@@ -152,5 +153,17 @@ std::string Fmt(const char *format, ...)
 }
 
 std::string UnitText(const std::string &unit) { return unit.empty() || unit == "1" ? "" : " " + unit; }
+
+PetscErrorCode StudyOptionsCheckUnused(MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  for (const char *name :
+       {"-tao_test_gradient", "-tao_test_gradient_view", "-tao_test_hessian", "-tao_test_hessian_view"}) {
+    PetscBool set; // PetscOptionsHasName marks the option used
+    PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
+  }
+  PetscCall(OptionsCheckUnused(comm));
+  PetscFunctionReturn(0);
+}
 
 } // namespace beamimpact

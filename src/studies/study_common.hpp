@@ -41,6 +41,11 @@ PetscErrorCode StudyWriteAtomically(const std::string &path, const std::string &
 PetscErrorCode StudyCheckOptionsOutput(MPI_Comm comm, const std::string &path, const std::string &output,
                                        const char *option, const char *marker, const char *who);
 
+// Collective: the study's check of unused options, once TAO and the first runs have read theirs.
+// TAO's -tao_test_gradient, -tao_test_hessian and their _view are read only when TAO computes
+// a gradient or Hessian (after the first runs): they count as read here.
+PetscErrorCode StudyOptionsCheckUnused(MPI_Comm comm);
+
 // A TAO vector's local entries as a std::vector, and back (the studies run TAO on one rank's data).
 std::vector<double> FromVec(Vec x);
 PetscErrorCode      ToVec(const std::vector<double> &v, Vec x);
