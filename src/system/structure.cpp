@@ -9,12 +9,14 @@ namespace beamimpact {
 
 // The parts, one file each in system/parts/: a part is its declaration here and its line in
 // PartList, last (the order appends their fields: the dof numbering).
+const StructurePart &AbsorberPart(); // system/parts/absorber.cpp
 
 namespace {
 
 std::vector<const StructurePart *> PartList()
 {
   std::vector<const StructurePart *> v;
+  v.push_back(&AbsorberPart());
   return v;
 }
 
