@@ -184,6 +184,16 @@ set(cases
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -impact_z 0.05 -beam_torsion_inertia 1e-14 -ts_type modal|set by the frame's roll at x = .* raise -beam_torsion_inertia at least 7.1 times"
   "-flight|-flight needs the ball's size for its drag and lift in the air: give -ball_radius"
   "-flight -ball_radius 0.03 -flight_ball_mass 0.1|-flight_ball_mass 0.1 with -flight: after an impact the flight flies the impact's own ball"
+  # issue 35: the tuned absorber (a structure part): off the beam, no mass, no frequency, negative
+  # damping, on a held node, a value short; its dashpot refused by the modal tools
+  "-absorber 1.2,0.05,30,0.1|-absorber 1.2,0.05,30,0.1 is not allowed: its x_a = 1.2 m is off the beam: it must be in \\[0, 1.1\\] m"
+  "-absorber 0.1,0,30,0.1|-absorber 0.1,0,30,0.1 is not allowed: its mass m_a = 0 kg must be > 0"
+  "-absorber 0.1,0.05,0,0.1|-absorber 0.1,0.05,0,0.1 is not allowed: its frequency f_a = 0 Hz must be > 0"
+  "-absorber 0.1,0.05,30,-0.1|-absorber 0.1,0.05,30,-0.1 is not allowed: its damping ratio zeta = -0.1 must be >= 0"
+  "-beam_left clamped -absorber 0,0.05,30,0.1|-absorber 0,0.05,30,0.1 is not allowed: x_a = 0 m is on a held node"
+  "-absorber 0.1,0.05,30|-absorber 0.1,0.05,30 is not allowed \\(3 values\\): it takes 4 values"
+  "-absorber 0.1,0.05,30,0.1 -ball_law linear -reference modal|-reference modal with -absorber's zeta > 0 is not possible: the absorber's dashpot is not proportional damping"
+  "-absorber 0.1,0.05,30,0.1 -ts_type modal|-ts_type modal needs the beam's modes: the absorber's dashpot \\(-absorber with zeta > 0\\) is not proportional damping"
 )
 foreach(c IN LISTS cases)
   string(FIND "${c}" "|" bar)

@@ -12,6 +12,8 @@
 #     at 25 and 30 cm from the tip;
 #   * energy (hysteretic ball, Crank-Nicolson): energy balance within 1e-5 of the incident;
 #   * damped-ringing (Rayleigh damping, RK4): balance incl. the dissipated energy within 1e-6;
+#   * bat-absorber: the knob's tuned absorber (Den Hartog's tuning) closes the balance with its
+#     dashpot and leaves less bending energy at 10 ms than a negligible absorber, ACOR unchanged;
 #   * racket-energy: the rigid translation and rotation fractions against momentum and angular
 #     momentum conservation (m_b (1+acor)^2/M, m_b (1+acor)^2 (x-x_cm)^2/I_cm), the energy balance;
 #     the handle's peak kinetic energy is positive and inside the 30 ms window;
@@ -160,6 +162,18 @@ if run animation 1 options/scenes/animation.opts; then
   f="$dir/animation.h5"
   check "animation: 101 snapshot times 0-10 ms on 41 nodes ($(dims "$f" /snapshots/y)), ball position per step ($(dims "$f" /series/ball_y) = $(dims "$f" /series/time)), one contact" \
     's == "101,41" && b == t && c == 1' s="$(dims "$f" /snapshots/y)" b="$(dims "$f" /series/ball_y)" t="$(dims "$f" /series/time)" c="$(col "$f" /results/contacts)"
+fi
+
+# --- bat-absorber: the knob's tuned absorber (a structure part) takes the bending energy ------
+if run bat-absorber 1 options/scenes/bat-absorber.opts -impact_window 0.01 &&
+  run bat-absorber-light 1 options/scenes/bat-absorber.opts -impact_window 0.01 -absorber 0.02,1e-9,154.2,0.192; then
+  f="$dir/bat-absorber.h5" g="$dir/bat-absorber-light.h5"
+  check "bat-absorber: balance with the dashpot $(col "$f" /results/energy_error) within 1e-8, its work $(col "$f" /results/damping_fraction) of E_in (> 0.005)" \
+    'e < 1e-8 && e > -1e-8 && d > 0.005' e="$(col "$f" /results/energy_error)" d="$(col "$f" /results/damping_fraction)"
+  check "bat-absorber: bending at 10 ms $(col "$f" /results/vibration_fraction) of E_in, < 0.9 x the negligible absorber's $(col "$g" /results/vibration_fraction); ACOR unchanged to 1e-4" \
+    'v < 0.9 * w && (a - b < 1e-4 && b - a < 1e-4)' v="$(col "$f" /results/vibration_fraction)" w="$(col "$g" /results/vibration_fraction)" a="$(col "$f" /results/acor)" b="$(col "$g" /results/acor)"
+  check "bat-absorber: its columns (energy peak $(col "$f" /results/absorber_energy_peak) >= end $(col "$f" /results/absorber_energy_end) > 0, stroke $(col "$f" /results/absorber_stroke_peak) m) and series ($(dims "$f" /series/absorber_energy) = $(dims "$f" /series/time))" \
+    'p >= e && e > 0 && s > 0 && n == t' p="$(col "$f" /results/absorber_energy_peak)" e="$(col "$f" /results/absorber_energy_end)" s="$(col "$f" /results/absorber_stroke_peak)" n="$(dims "$f" /series/absorber_energy)" t="$(dims "$f" /series/time)"
 fi
 
 # --- racket: clamped handle -> longer contact than the free racket ------------------------------

@@ -68,7 +68,7 @@ PetscReal PartitionSum(const Scenario &sc, const ImpactResult &r, std::string *l
   PetscReal sum = 0;
   for (const ResultColumn &c : ImpactResultColumns()) {
     const std::string n = c.name;
-    if (!EndsWith(n, "_fraction") || n == "rigid_loss_fraction" || n == "rigid_forced_loss_fraction" || n == "rebound_fraction" || !c.applies(sc)) continue;
+    if (!EndsWith(n, "_fraction") || n == "rigid_loss_fraction" || n == "rigid_forced_loss_fraction" || n == "rebound_fraction" || !c.Applies(sc)) continue;
     EXPECT_TRUE(std::isfinite(c.Get(r))) << n;
     sum += c.Get(r);
     *listing += " " + n + " = " + std::to_string(c.Get(r));

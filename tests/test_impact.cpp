@@ -368,9 +368,9 @@ void ExpectFileFollowsTable(const std::string &what, const std::map<std::string,
     ASSERT_GT(it->second.v.size(), row) << what << ": " << c.name;
     EXPECT_EQ(it->second.unit, c.unit) << what << ": " << c.name;
     if (it->second.applies >= 0) {
-      EXPECT_EQ(it->second.applies == 1, c.applies(sc)) << what << ": the attribute applies of /results/" << c.name;
+      EXPECT_EQ(it->second.applies == 1, c.Applies(sc)) << what << ": the attribute applies of /results/" << c.name;
     }
-    EXPECT_EQ(std::isnan(it->second.v[row]), !c.applies(sc)) << what << ": /results/" << c.name << " = " << it->second.v[row] << " where it " << (c.applies(sc) ? "applies" : "does not apply")
+    EXPECT_EQ(std::isnan(it->second.v[row]), !c.Applies(sc)) << what << ": /results/" << c.name << " = " << it->second.v[row] << " where it " << (c.Applies(sc) ? "applies" : "does not apply")
                                                            << " (" << c.applies_text << ")";
   }
 }
@@ -387,7 +387,7 @@ TEST(ResultsTable, EveryColumnDefinedOnce)
     EXPECT_STRNE(c.unit, "") << c.name;
     EXPECT_STRNE(c.description, "") << c.name;
     EXPECT_STRNE(c.applies_text, "") << c.name;
-    EXPECT_EQ((c.real != nullptr) + (c.count != nullptr) + (c.flag != nullptr), 1) << c.name;
+    EXPECT_EQ((c.real != nullptr) + (c.count != nullptr) + (c.flag != nullptr) + (c.keyed >= 0), 1) << c.name;
     if (c.integer) { EXPECT_EQ(c.applies, &ResultAlways) << c.name << ": a count cannot be NaN"; }
     EXPECT_EQ(ImpactResultColumn(c.name), &c);
   }
@@ -421,7 +421,7 @@ TEST(ResultsTable, ImpactFileNaNExactlyWhereAColumnDoesNotApply)
     if (k == cases.size()) sc.swing.bat_speed = 0.5;
     if (k == cases.size() + 1) sc.monitor.segment = PETSC_TRUE, sc.monitor.segment_x0 = 0.9, sc.monitor.segment_x1 = 1.1;
     const ImpactResult r = RunScene(sc);
-    for (const ResultColumn &c : ImpactResultColumns()) EXPECT_EQ(std::isnan(c.Get(r)), !c.applies(sc)) << what << ": " << c.name;
+    for (const ResultColumn &c : ImpactResultColumns()) EXPECT_EQ(std::isnan(c.Get(r)), !c.Applies(sc)) << what << ": " << c.name;
     const std::string path = std::string(dir) + "/impact" + std::to_string(k) + ".h5";
     RunRecord         rec;
     ASSERT_EQ(0, RunRecordBuild(sc, &r, &rec));

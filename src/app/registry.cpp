@@ -23,6 +23,7 @@
 #include "studies/design.hpp"
 #include "studies/fit_data.hpp"
 #include "studies/sweep_plan.hpp"
+#include "system/structure_part.hpp"
 
 namespace beamimpact {
 
@@ -57,6 +58,7 @@ PetscErrorCode RegisterAll()
   OptionModuleRegister(&FitOptionTable());
   OptionModuleRegister(&TaoOptionTable());
   OptionModuleRegister(&DesignOptionTable());
+  for (const StructurePart *part : StructureParts()) OptionModuleRegister(&part->Options()); // each part's own
   PetscFunctionReturn(0);
 }
 

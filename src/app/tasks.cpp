@@ -24,6 +24,7 @@
 #include "studies/sweep.hpp"
 #include "studies/sweep_plan.hpp"
 #include "solvers/leapfrog.hpp"
+#include "system/structure_part.hpp"
 
 #include <petscts.h>
 #include <slepceps.h>
@@ -186,6 +187,14 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                           "no recoil factor or BBCOR is reported (NaN in /results: they describe a "
                           "rig free to turn about its pivot); e_A %.6f\n",
                           (double)sc.beam.pivot_x, PivotHeldText(sc).c_str(), (double)r.collision_efficiency));
+  for (const StructurePart *part : StructureParts()) { // each registered part present: its line
+    const PartParams *q = sc.beam.parts.Find(part->Name());
+    if (!q) continue;
+    std::vector<double> values;
+    for (const PartColumn &c : part->Columns()) values.push_back(ImpactResultColumn(c.name)->Get(r));
+    const std::string line = part->Summary(*q, values);
+    if (!line.empty()) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  }
   PetscFunctionReturn(0);
 }
 

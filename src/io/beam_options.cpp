@@ -10,6 +10,7 @@
 #include "model/beam_theory.hpp"
 #include "model/shell.hpp"
 #include "model/torsion.hpp"
+#include "system/structure_part.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -790,6 +791,50 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, 
   PetscFunctionReturn(0);
 }
 
+// A registered structure part's rows (system/structure_part.hpp), read in its own -help block:
+// the given ones into *v (a flag as 1, a number as one value, a list as its values).
+PetscErrorCode StructurePartOptionsRead(MPI_Comm comm, const StructurePart &part, PartOptionValues *v)
+{
+  const OptionModule &T = part.Options();
+
+  PetscFunctionBeginUser;
+  v->given.clear();
+  PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
+  for (const OptionSpec &o : T.options) {
+    PetscBool              set = PETSC_FALSE;
+    std::vector<PetscReal> values;
+    if (o.kind == OptionKind::RealList) PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &values, &set));
+    else if (o.kind == OptionKind::Real) {
+      PetscReal x = 0;
+      PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &x, &set));
+      values = {x};
+    } else if (o.kind == OptionKind::Bool) {
+      PetscBool b = PETSC_FALSE;
+      PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &b, &set));
+      values = {b ? 1.0 : 0.0};
+    } else SETERRQ(comm, PETSC_ERR_PLIB, "%s: the part's reader takes numbers, lists and flags", o.name.c_str());
+    if (set) v->given[o.name] = values;
+  }
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+// Every registered structure part's options -> its parameters in p->parts (absent when not given),
+// once the beam's holds are known; a refusal names the option and its value.
+PetscErrorCode StructurePartsFromOptions(MPI_Comm comm, BeamParams *p)
+{
+  PetscFunctionBeginUser;
+  for (const StructurePart *part : StructureParts()) {
+    PartOptionValues                  v;
+    std::shared_ptr<const PartParams> q;
+    std::string                       why;
+    PetscCall(StructurePartOptionsRead(comm, *part, &v));
+    PetscCheck(part->Configure(v, *p, &q, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
+    p->parts.Set(part->Name(), q);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
 {
   BeamOptionValues o;
@@ -859,6 +904,7 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
       PetscCall(PrintOnce(comm, text));
     }
   }
+  PetscCall(StructurePartsFromOptions(comm, p)); // on the beam as held (the pivot on its node)
   PetscFunctionReturn(0);
 }
 

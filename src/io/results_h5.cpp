@@ -246,7 +246,7 @@ static PetscErrorCode H5WriteResults(hid_t file, const std::vector<ImpactResult>
     }
     RunRecord a;
     a.add("description", col.description);
-    a.add("applies", col.applies(sc) ? 1 : 0);
+    a.add("applies", col.Applies(sc) ? 1 : 0);
     a.add("applies_when", col.applies_text);
     hid_t ds = H5Dopen2(g, col.name, H5P_DEFAULT);
     PetscCheck(ds >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "HDF5: cannot open dataset %s", col.name);
@@ -390,6 +390,7 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
   PetscCall(opt("grip_moment", S.grip_moment, "N m"));
   PetscCall(opt("grip_stored", S.grip_stored, "J"));
   PetscCall(opt("hand_work", S.hand_work, "J"));
+  for (const ImpactSeries::Keyed &k : S.keyed) PetscCall(opt(k.name.c_str(), k.values, k.unit.c_str())); // parts'
   PetscCall(H5DimsTable(gs, "time"));
   H5Gclose(gs);
   PetscFunctionReturn(0);

@@ -45,6 +45,7 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
     m.m0 += sigma * h.area, m.m1 += sigma * h.area * c, m.m2 += sigma * (h.xx + h.area * c * c);
     if (p.torsion.on) m.roll += sigma * h.zz;
   }
+  for (const auto &part : p.parts.present) part.second->AddRigidBody(&m);
   BeamRigidBody b;
   b.mass         = m.m0;
   b.x_cm         = m.m1 / m.m0;
@@ -52,6 +53,24 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
   b.inertia_cm   = m.m2 - m.m1 * m.m1 / m.m0 + m.j;
   b.inertia_roll = m.roll;
   return b;
+}
+
+const PartParams *PartParamSet::Find(const char *name) const
+{
+  for (const auto &e : present)
+    if (e.first == name) return e.second.get();
+  return nullptr;
+}
+
+void PartParamSet::Set(const char *name, std::shared_ptr<const PartParams> p)
+{
+  for (auto it = present.begin(); it != present.end(); ++it)
+    if (it->first == name) {
+      if (p) it->second = std::move(p);
+      else present.erase(it);
+      return;
+    }
+  if (p) present.emplace_back(name, std::move(p));
 }
 
 PetscInt BeamPivotNode(const BeamParams &p)

@@ -16,7 +16,9 @@
 
 #include <petscsys.h>
 
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace beamimpact {
@@ -74,6 +76,23 @@ struct BeamTorsion {
   PetscReal inertia   = 0; // kg m, rho J per length of a uniform section (-beam_torsion_inertia; 0: the section's)
 };
 
+// A registered structure part's own parameters (system/structure_part.hpp: the registry of
+// parts, one file each in system/parts/): each part derives its struct, filled by its option
+// module; BeamParams holds those of the parts present, by the part's name. Only the part's own
+// file reads its struct; what the model needs of every part is here.
+struct PartParams {
+  virtual ~PartParams() = default;
+  // Its share of the rigid body (BeamRigidBodyOf): m0 kg, m1 kg m, m2 kg m^2 about x = 0, roll
+  // kg m^2 about the frame's axis. Nothing by default.
+  virtual void AddRigidBody(SectionMoments *) const { }
+};
+struct PartParamSet {
+  std::vector<std::pair<std::string, std::shared_ptr<const PartParams>>> present; // in registry order
+  const PartParams *Find(const char *name) const;                                 // nullptr: the part is absent
+  bool              Has(const char *name) const { return Find(name) != nullptr; }
+  void              Set(const char *name, std::shared_ptr<const PartParams> p); // replaces; nullptr removes
+};
+
 struct BeamParams {
   PetscReal         length = 1.1;   // m
   PetscReal         EI     = 0;     // N m^2, bending stiffness (uniform; with a profile or table, its mean)
@@ -96,6 +115,7 @@ struct BeamParams {
   BarrelShell       shell;                       // the barrel wall as a shell (none by default)
   BeamTorsion       torsion;                     // the frame's twist (none by default)
   StringBedParams   strings;                     // a racket's string bed on the frame (-strings_frame; none by default)
+  PartParamSet      parts;                       // the registered structure parts present (none by default)
   BeamMaterialInput input;
 };
 

@@ -106,6 +106,13 @@ struct ImpactSeries {
   // [snapshot][k * nodes + node] for the harmonic n = snapshot_wall_n[k] (NaN where the section is solid; rank 0)
   std::vector<std::vector<PetscReal>> snapshot_wall;
   std::vector<PetscInt>               snapshot_wall_n; // 1, the harmonics of snapshot_wall
+  // The registered structure parts' series (system/structure_part.hpp: a slot with `series`,
+  // under -monitor_energy): /series/<name> in its unit, one value per step.
+  struct Keyed {
+    std::string            name, unit;
+    std::vector<PetscReal> values;
+  };
+  std::vector<Keyed> keyed;
 };
 
 enum class ContactEventKind {
@@ -151,6 +158,10 @@ struct MonitorPeaks {
   // A racket's string bed (-strings_frame): its largest deflection from the frame (m) and its
   // largest energy (J) over the steps; NaN where no stepper measured them (the modal reference).
   PetscReal bed_deflection = NAN, bed_energy = NAN;
+  // The registered structure parts' slots with `peak` (system/structure_part.hpp): the largest
+  // |value| over the steps, by slot (StateMeasures::part_slot); NaN where not measured.
+  PetscReal part_peak[kMaxPartSlots] = {NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+  static_assert(kMaxPartSlots == 8, "part_peak's initialiser");
 };
 
 // The scales of one impact, for studies that judge a step or a run against them (the stability
@@ -287,6 +298,9 @@ struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
   std::vector<ContactEvent> events;
   ImpactSeries              series;
   ImpactScales              scales;
+  // The registered structure parts' columns (run/results_table.hpp, ResultColumn::keyed), by
+  // their index in the table's keyed columns; NaN (or beyond the end) where a part is absent.
+  std::vector<double> keyed;
 };
 
 // The run's time rules: after each separation the run continues for `window`; it never

@@ -432,13 +432,14 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   if (after_modal) PetscCall(FreeFlightTruncation(st.Comm(), sc, &truncation));
   truncation.at   = *ctx.g; // -modal_weight share: weighed under this load, as -ts_type modal's (one basis for both)
   rec->after_used = after_modal ? "modal" : "time";
-  // The series only an oblique impact's F_n (no monitor asked, no peaks of a wall, a string bed
-  // or the hands to follow): not sampled through a free flight (FreeFlightAdvance).
-  const BeamSystem &sys    = *ctx.sys;
-  const bool        peaks  = sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped();
-  const bool        sparse = sc.oblique.on && !sc.oblique.series_asked && !peaks;
-  ImpactStageScope  stage(ImpactStage::Contact);
-  double            last_progress = wall0;
+  // The series only an oblique impact's F_n (no monitor asked, no peaks of a wall, a string bed,
+  // the hands or a registered part to follow): not sampled through a free flight (FreeFlightAdvance).
+  const BeamSystem &sys   = *ctx.sys;
+  const bool        peaks = sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
+                     !sys.parts.empty(); // a registered part's peaks
+  const bool       sparse = sc.oblique.on && !sc.oblique.series_asked && !peaks;
+  ImpactStageScope stage(ImpactStage::Contact);
+  double           last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {
     if (ip.report_setup && ip.progress > 0 && MPI_Wtime() - last_progress >= ip.progress) { // a long single impact
       last_progress = MPI_Wtime();

@@ -73,11 +73,26 @@ bool SeparateParts(const BeamSystem &S)
 // momenta the projections above. Not with a monitor that asks for the physical state (point
 // velocities, a segment's energy), nor with parts whose energies are kept apart (a barrel wall,
 // the frame's roll, a string bed) or a grip (its springs and the hands' work): those are taken
-// over the dofs.
+// over the dofs, as are the registered parts' (their measures and rigid points).
 bool MeasuresInModes(const BeamSystem &S, const MeasureContext &ctx, const MonitorRequest *mon)
 {
   if (mon && (mon->segment || !mon->velocity_at.empty())) return false;
-  return !SeparateParts(S) && !S.Gripped() && !ForceOperatorDriven(S, ctx.frame);
+  return !SeparateParts(S) && !S.Gripped() && !ForceOperatorDriven(S, ctx.frame) && S.parts.empty();
+}
+
+// The registered parts' share of the owned dofs: their rigid points' momentum *p and moment *l
+// about x = 0, their slots.
+void PartsMeasure(const BeamSystem &S, const StateView &sv, PetscReal *p, PetscReal *l, PetscReal *slot)
+{
+  const PetscInt F = S.fields;
+  for (const RigidPoint &r : S.rigid_points) {
+    if (r.dof < sv.d0 || r.dof >= sv.d1 || S.held[r.dof]) continue;
+    const PetscReal mv = S.mass[r.dof] * sv.v[(r.dof / F) * sv.v_stride + r.dof % F];
+    *p += mv, *l += r.x * mv;
+  }
+  PartState ps;
+  ps.y = sv.y, ps.v = sv.v, ps.ys = sv.y_stride, ps.vs = sv.v_stride, ps.d0 = sv.d0, ps.d1 = sv.d1;
+  StructurePartsMeasure(S, ps, slot);
 }
 
 // The measures from the sums over the state (MeasureState's layout of `sums`, G the end of its
@@ -124,6 +139,7 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
     m->hand_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v -
                    ctx.frame->q0; // 0 for a frame at rest
   if (point_v) point_v->assign(sums.begin() + 5, sums.begin() + G);
+  for (size_t k = G + 13; k < sums.size(); ++k) m->part_slot[k - G - 13] = sums[k]; // the parts' slots, last
   PetscFunctionReturn(0);
 }
 
@@ -143,8 +159,9 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   const PetscInt
     G = 5 +
         np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
-  std::vector<PetscReal> sums(G + 13, 0.0); // + the wall's stored and kinetic energy and displacement, the twist's and
-                                            // bed's energies, the roll's momentum, the bed's three momenta
+  // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the
+  // roll's momentum, the bed's three momenta; then the registered parts' slots
+  std::vector<PetscReal> sums(G + 13 + StructurePartSlotCount(S), 0.0);
   if (MeasuresInModes(S, ctx,
                       mon)) { // -ts_type modal after a step: O(modes), without writing the physical state (O(n modes))
     std::shared_ptr<const BeamModes> modes;
@@ -215,6 +232,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
       bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + S.bed_first + j] - y - z * phi));
     }
   }
+  if (!S.parts.empty()) PartsMeasure(S, sv, &sums[2], &sums[3], &sums[G + 13]);
   if (mon && mon->segment) { // the frame's sections in [x0, x1]: every field of theirs (the deflections, a Timoshenko
                              // section's spin, the roll, a shell's wall) but a string bed's
     const PetscReal tol = 1e-9 * S.h;

@@ -41,6 +41,9 @@ struct StateMeasures {
   // the hands and its moment about x = 0 (0 without a grip).
   PetscReal grip_stored = 0, hand_work = 0;  // J
   PetscReal grip_force = 0, grip_moment = 0; // N, N m
+  // The registered structure parts' measures (system/structure_part.hpp: part p's slots from its
+  // PartInstance::slot0, in the units its Slots() declare); 0 without parts.
+  PetscReal part_slot[kMaxPartSlots] = {};
   // The conserved total: with the linear spring and an undamped beam, a constant.
   PetscReal total() const
   {

@@ -181,6 +181,13 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
     } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
     else if (f == sys.roll_field) r += S.mass[d] * run.qd[d];
   }
+  if (!sys.parts.empty()) { // the registered parts: their rigid points' momenta, their slots
+    for (const RigidPoint &pt : sys.rigid_points)
+      if (!sys.held[pt.dof]) p += sys.mass[pt.dof] * rate[pt.dof], l += sys.mass[pt.dof] * pt.x * rate[pt.dof];
+    PartState ps;
+    ps.y = shape.data(), ps.v = rate.data(), ps.ys = ps.vs = sys.fields, ps.d0 = 0, ps.d1 = sys.ndof;
+    StructurePartsMeasure(sys, ps, m.part_slot);
+  }
   m.ball_y       = run.q[S.n - 1];
   m.ball_v       = run.qd[S.n - 1];
   m.ball_kinetic = 0.5 * ball.mass * m.ball_v * m.ball_v;
@@ -227,6 +234,7 @@ bool ModalReferenceApplies(const Scenario &sc, std::string *why)
   if (sc.beam.grip.on)
     w = "with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal "
         "reference; use a tight TS run as the reference";
+  else if (!StructurePartsModalRefusal(sc.beam).empty()) w = StructurePartsModalRefusal(sc.beam);
   else if (!ContactLinear(sc.ball))
     w = std::string("needs -ball_law linear (the ") + ContactLawName(sc.ball.law) +
         " law is nonlinear: use a tight run of a high-order integrator as the reference)";

@@ -20,6 +20,12 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
 {
   series->velocity_at.assign(mon.velocity_at.size(), {});
   series->velocity_at_x = mon.velocity_at;
+  for (const PartInstance &p : ctx.sys->parts) // the registered parts' peaks and series, by slot
+    for (const PartSlot &slot : p.part->Slots()) {
+      part_peak_.push_back(slot.peak);
+      part_series_.push_back(slot.series && mon.energy ? (int)series->keyed.size() : -1);
+      if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}});
+    }
 }
 
 PetscErrorCode ImpactRecorder::Record(PetscReal t)
@@ -31,8 +37,14 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   PetscFunctionBeginUser;
   const bool wall = ctx_.sys->wall_dof >= 0 || ctx_.sys->shell.first >= 0; // a barrel wall (hoop oscillator or shell)
   const bool bed  = ctx_.sys->bed_first >= 0;                              // a racket's string bed
-  if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall && !bed) PetscFunctionReturn(0);
+  if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall && !bed && part_peak_.empty())
+    PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
+  for (size_t k = 0; k < part_peak_.size(); ++k) { // the parts' peaks, always (NaN until the first step)
+    if (part_peak_[k] && !(std::abs(m.part_slot[k]) <= peaks_->part_peak[k]))
+      peaks_->part_peak[k] = std::abs(m.part_slot[k]);
+    if (part_series_[k] >= 0) S.keyed[part_series_[k]].values.push_back(m.part_slot[k]);
+  }
   if (wall) { // the barrel wall's peaks, always (NaN until the first step)
     if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
       peaks_->wall_deflection = std::abs(m.wall_deflection);

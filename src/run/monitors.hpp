@@ -33,7 +33,9 @@ private:
   ImpactSeries         *series_;
   MonitorPeaks         *peaks_;
   size_t                next_ = 0;
-  ContactPhase          last_phase_; // the contact's phase at the last record (at construction: the contact's own)
+  std::vector<char>     part_peak_;   // per part slot: its peak is kept
+  std::vector<int>      part_series_; // per part slot: its index in series_->keyed (-1: none)
+  ContactPhase          last_phase_;  // the contact's phase at the last record (at construction: the contact's own)
 };
 
 } // namespace beamimpact

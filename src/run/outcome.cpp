@@ -26,6 +26,11 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
     } else if (S.Rotation(fld)) Mxx += m;   // rotary inertia of a Timoshenko section
     else if (fld == S.roll_field) Izz += m; // the sections' rho J
   }
+  for (const RigidPoint &r : S.rigid_points) { // a registered part's point masses
+    if (S.held[r.dof]) continue;
+    const PetscReal m = S.mass[r.dof];
+    M += m, Mx += m * r.x, Mxx += m * r.x * r.x;
+  }
   const PetscReal x_cm = Mx / M, I_cm = Mxx - M * x_cm * x_cm;
   f->beam_mass  = M;
   f->inertia_cm = I_cm;
@@ -33,6 +38,22 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
   if (S.roll_field < 0) return;
   f->inertia_roll = Izz; // about the axis z = 0: the bed is symmetric across it, its centre of mass on the axis
   f->moment_roll  = f->end.beam_roll;
+}
+
+// A registered part's column: computed from its slots where the part is in the system, else NaN.
+double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const OutcomeFacts &f)
+{
+  for (const PartInstance &p : sys.parts) {
+    if (p.part != c.owner) continue;
+    PartOutputFacts pf;
+    pf.start  = f.start.part_slot + p.slot0;
+    pf.end    = f.end.part_slot + p.slot0;
+    pf.peak   = f.peaks->part_peak + p.slot0;
+    pf.E_in   = f.E_in;
+    pf.params = p.params.get();
+    return c.part_compute(pf);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 } // namespace
@@ -65,6 +86,7 @@ void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord
   f.split = EnergySplitOf(sc.beam, sys, f.end);
   for (const ResultColumn &c : ImpactResultColumns())
     if (c.compute) c.Set(res, c.applies(sc) ? c.compute(f) : nan);
+    else if (c.part_compute) c.Set(res, PartColumnValue(c, sys, f));
   res->events = std::move(rec.contact.events);
   res->series = std::move(rec.series);
   if (rec.oblique.flew) {

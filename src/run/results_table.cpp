@@ -58,8 +58,11 @@ std::string PivotHeldText(const Scenario &sc)
   return held;
 }
 
+bool ResultColumn::Applies(const Scenario &sc) const { return owner ? sc.beam.parts.Has(owner->Name()) : applies(sc); }
+
 double ResultColumn::Get(const ImpactResult &r) const
 {
+  if (keyed >= 0) return keyed < (PetscInt)r.keyed.size() ? r.keyed[keyed] : std::numeric_limits<double>::quiet_NaN();
   if (real) return r.*real;
   if (count) return (double)(r.*count);
   return (double)(r.*flag);
@@ -67,7 +70,10 @@ double ResultColumn::Get(const ImpactResult &r) const
 
 void ResultColumn::Set(ImpactResult *r, double v) const
 {
-  if (real) r->*real = v;
+  if (keyed >= 0) {
+    if (keyed >= (PetscInt)r->keyed.size()) r->keyed.resize(keyed + 1, std::numeric_limits<double>::quiet_NaN());
+    r->keyed[keyed] = v;
+  } else if (real) r->*real = v;
   else if (count) r->*count = (PetscInt)v;
   else r->*flag = v != 0 ? PETSC_TRUE : PETSC_FALSE;
 }
@@ -504,6 +510,15 @@ std::vector<ResultColumn> BuildTable()
   std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns(), oblique = ObliqueColumns();
   t.insert(t.end(), more.begin(), more.end());
   t.insert(t.end(), oblique.begin(), oblique.end());
+  PetscInt keyed = 0; // the registered parts' columns, last
+  for (const StructurePart *p : StructureParts())
+    for (const PartColumn &pc : p->Columns()) {
+      ResultColumn c{pc.name, pc.unit, pc.description, nullptr, p->Presence()};
+      c.owner        = p;
+      c.part_compute = pc.compute;
+      c.keyed        = keyed++;
+      t.push_back(c);
+    }
   return t;
 }
 
@@ -515,7 +530,7 @@ std::string ImpactEnergyShareText(const Scenario &sc, const ImpactResult &r)
   PetscReal   sum = 0;
   char        item[96];
   for (const ResultColumn &c : ImpactResultColumns()) {
-    if (!c.share || !c.applies(sc)) continue;
+    if (!c.share || !c.Applies(sc)) continue;
     std::snprintf(item, sizeof item, "%s%s %.4g", text.empty() ? "" : ", ", c.share, c.Get(r));
     text += item;
     sum += c.Get(r);

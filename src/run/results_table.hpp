@@ -8,6 +8,9 @@
 //
 // The results reference docs/results.md is printed from this table (-help_markdown results;
 // `cmake --build --preset dev --target docs` rewrites it, the test docs_generated checks it).
+// A registered structure part's columns (system/structure_part.hpp) follow the table, in
+// registry order, each applying where its part is present (its applies_text the part's
+// Presence()) and stored in ImpactResult::keyed: a part adds its columns in its own file.
 // A new column is one row in results_table.cpp and its field in ImpactOutcome (run/impact.hpp);
 // a quantity the measures do not hold yet needs it in the record the driver hands the outcome
 // (run/outcome.hpp), from the events (ContactTally) or the monitors (MonitorPeaks).
@@ -80,7 +83,7 @@ struct ResultColumn {
   const char   *name;
   const char   *unit;            // never empty ("1": dimensionless)
   const char   *description;     // one line: what it is
-  ResultApplies applies;         // false: NaN in this row
+  ResultApplies applies;         // false: NaN in this row (nullptr for a part's column: Applies)
   const char   *applies_text;    // the same in words ("always", "with -grip")
   bool          integer = false; // a count: an integer dataset in an impact file (a count always applies)
   // A share of the energy brought in (the fractions that close to 1: docs/model.md section 4): its
@@ -93,7 +96,13 @@ struct ResultColumn {
   PetscReal ImpactResult::*real = nullptr;
   PetscInt ImpactResult::*count = nullptr;
   PetscBool ImpactResult::*flag = nullptr;
+  // A registered structure part's column: its part, how it is computed, and its index in
+  // ImpactResult::keyed (-1 for the rest).
+  const StructurePart *owner                       = nullptr;
+  double (*part_compute)(const PartOutputFacts &f) = nullptr;
+  PetscInt keyed                                   = -1;
 
+  bool   Applies(const Scenario &sc) const;    // applies(sc), or the owner present in sc.beam
   double Get(const ImpactResult &r) const;     // the value as a double
   void   Set(ImpactResult *r, double v) const; // (the outcome's writes)
 };

@@ -48,6 +48,8 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
     S.bed_patch_radius  = std::max<PetscReal>(0, p.strings.patch_radius);
     S.field_part.resize(d.fields, Part::Bed);
   }
+  S.parts = StructurePartsBuild(p, &d); // the registered parts' fields, last
+  S.field_part.resize(d.fields, Part::Beam);
   S.nodes          = p.nodes;
   S.fields         = d.fields;
   S.ndof           = p.nodes * d.fields;
@@ -58,6 +60,7 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S.strain         = std::move(d.strain);
   S.frequency_unit = d.frequency_unit;
   ForceOperatorCreate(p, &S); // the force terms (a grip adds the hands' mass)
+  StructurePartsFinish(&S);   // the parts' force terms after them, their rigid points
   BeamSystemAssemble(&S);
   return true;
 }
@@ -243,6 +246,8 @@ std::vector<PetscReal> RigidField(const BeamSystem &sys, PetscReal v0, PetscReal
     else if (sys.Rotation(f)) v[d] = slope;
     else if (f == sys.roll_field) v[d] = roll;
   }
+  for (const RigidPoint &r : sys.rigid_points) // a part's point deflections: the beam's motion there
+    if (!(holds && sys.held[r.dof])) v[r.dof] = v0 + slope * r.x;
   return v;
 }
 
@@ -311,6 +316,7 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys)
 {
   PetscReal M = 0;
   for (PetscInt d = 0; d < sys.ndof; ++d) M += sys.held[d] || !sys.Deflection(d % sys.fields) ? 0.0 : sys.mass[d];
+  for (const RigidPoint &r : sys.rigid_points) M += sys.held[r.dof] ? 0.0 : sys.mass[r.dof];
   return M;
 }
 
@@ -362,6 +368,8 @@ Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const Pe
 const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)
 {
   if (dof < 0) return "the ball's contact spring";
+  for (const PartInstance &p : sys.parts) // a registered part's fields
+    if (dof % sys.fields >= p.first && dof % sys.fields < p.first + p.count) return p.part->Words();
   switch (sys.PartOf(dof % sys.fields)) {
   case Part::Twist:
     return "the frame's roll";

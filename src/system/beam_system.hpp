@@ -24,6 +24,7 @@
 #include "model/swing.hpp"
 #include "system/force_operator.hpp"
 #include "system/string_bed_operator.hpp"
+#include "system/structure_part.hpp"
 
 #include <petscsys.h>
 
@@ -58,6 +59,10 @@ struct BeamSystem {
   std::vector<PetscReal>  band;         // N/m: K = df/dy of every force term, K(i, i+o-bw) = band[(2 bw + 1) i + o]
   PetscReal               frequency_unit = 0; // rad/s, sqrt(EI/mu)/L^2
   ForceOperator           forces;             // the force terms, and C = df/dv
+  // The registered structure parts present (system/structure_part.hpp), in registry order, and
+  // their dofs a rigid motion carries as the beam's deflection at a point (none without parts).
+  std::vector<PartInstance> parts;
+  std::vector<RigidPoint>   rigid_points;
 
   PetscInt  Dof(PetscInt node, PetscInt field = 0) const { return node * fields + field; }
   PetscReal NodeX(PetscInt node) const { return node * h; }
@@ -171,7 +176,7 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys
 std::vector<PetscReal> BeamSystemSwingVelocity(const BeamSystem &sys, const SwingParams &swing,
                                                const BeamRigidBody &body);
 
-// Mass (kg) of the deflection dofs (the beam's and a string bed's) that are not held.
+// Mass (kg) of the deflection dofs (the beam's, a string bed's, a part's rigid points) that are not held.
 PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 
 // Upper bound (Gershgorin) on the largest angular frequency (rad/s) of M^{-1} K plus a
@@ -189,7 +194,7 @@ Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const Pe
                             PetscReal *share);
 
 // Words for the part of the structure a dof belongs to ("the beam's bending", "the frame's roll",
-// "the barrel wall", "the string bed"), for messages.
+// "the barrel wall", "the string bed", a registered part's Words()), for messages.
 const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof);
 
 // f_i = (C v)_i (N) for dofs i in [d0, d1), C = df/dv of every force term (Rayleigh: alpha m_i v_i

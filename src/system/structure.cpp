@@ -1,0 +1,95 @@
+// The registry of structure parts and the loops over it. See structure_part.hpp.
+#include "system/structure_part.hpp"
+
+#include "system/beam_system.hpp"
+
+#include <cstring>
+
+namespace beamimpact {
+
+// The parts, one file each in system/parts/: a part is its declaration here and its line in
+// PartList, last (the order appends their fields: the dof numbering).
+const StructurePart &AbsorberPart(); // system/parts/absorber.cpp
+
+namespace {
+
+std::vector<const StructurePart *> PartList()
+{
+  std::vector<const StructurePart *> v;
+  v.push_back(&AbsorberPart());
+  return v;
+}
+
+} // namespace
+
+const std::vector<const StructurePart *> &StructureParts()
+{
+  static const std::vector<const StructurePart *> parts = [] {
+    const std::vector<const StructurePart *> v     = PartList();
+    size_t                                   slots = 0; // every part present at once must fit the fixed slots
+    for (const StructurePart *p : v) slots += p->Slots().size();
+    PetscCheckAbort(slots <= (size_t)kMaxPartSlots, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                    "the structure parts declare %zu measure slots, more than kMaxPartSlots = %d", slots,
+                    kMaxPartSlots);
+    return v;
+  }();
+  return parts;
+}
+
+const StructurePart *StructurePartFind(const char *name)
+{
+  for (const StructurePart *p : StructureParts())
+    if (!std::strcmp(p->Name(), name)) return p;
+  return nullptr;
+}
+
+std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d)
+{
+  std::vector<PartInstance> out;
+  for (const StructurePart *part : StructureParts()) {
+    const PartParams *q = p.parts.Find(part->Name());
+    if (!q) continue;
+    PartInstance s;
+    s.part = part;
+    for (const auto &e : p.parts.present)
+      if (e.second.get() == q) s.params = e.second;
+    s.first = d->fields;
+    s.count = part->Build(*q, p, d, &s.built);
+    out.push_back(s);
+  }
+  return out;
+}
+
+void StructurePartsFinish(BeamSystem *sys)
+{
+  PetscInt slot = 0;
+  for (PartInstance &s : sys->parts) {
+    s.part->ForceTerms(s, *sys, &sys->forces.terms);
+    s.part->RigidPoints(s, &sys->rigid_points);
+    s.slot0 = slot;
+    s.slots = (PetscInt)s.part->Slots().size();
+    slot += s.slots;
+  }
+}
+
+PetscInt StructurePartSlotCount(const BeamSystem &sys)
+{
+  PetscInt n = 0;
+  for (const PartInstance &s : sys.parts) n += s.slots;
+  return n;
+}
+
+void StructurePartsMeasure(const BeamSystem &sys, const PartState &st, PetscReal *slot)
+{
+  for (const PartInstance &s : sys.parts) s.part->Measure(s, sys, st, slot + s.slot0);
+}
+
+std::string StructurePartsModalRefusal(const BeamParams &p)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name()))
+      if (const char *why = part->ModalRefusal(*q)) return why;
+  return "";
+}
+
+} // namespace beamimpact

@@ -1,0 +1,148 @@
+// The registry of structure parts: a part of the structure beside the beam's theory fields, one
+// file each in system/parts/ and one line in StructureParts() (system/structure.cpp), in the
+// order their fields are appended (a new part goes last). A part brings its option module, its
+// parameters (model/beam.hpp: PartParams, held in BeamParams::parts), its fields, masses and
+// strain terms, its force terms (system/force_operator.hpp), the dofs a rigid motion carries,
+// its measures of a state and the results columns, series and summary line computed from them.
+// The system's build, the options' reader, the measures, the recorder, the outcome, the results
+// table, the run record, -help and the summary loop over the registered parts: no code outside
+// a part's file names it. (The parts that predate the registry, the frame's roll, the barrel
+// wall, the string bed and the grip, are still built by BeamSystemBuild itself.)
+//
+// How a part is added: docs/design.md, "Adding a structure part".
+#pragma once
+
+#include "base/option_table.hpp"
+#include "model/beam_theory.hpp"
+#include "system/force_operator.hpp"
+
+#include <petscsys.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+struct BeamSystem;
+class StructurePart;
+
+// What a part built (its dofs, the stencil it couples through); derived in the part's file.
+struct PartBuilt {
+  virtual ~PartBuilt() = default;
+};
+
+// One registered part present in a system.
+struct PartInstance {
+  const StructurePart              *part = nullptr;
+  std::shared_ptr<const PartParams> params;
+  std::shared_ptr<const PartBuilt>  built;
+  PetscInt                          first = -1, count = 0; // its fields [first, first + count) at every node
+  PetscInt slot0 = 0, slots = 0; // its measure slots [slot0, slot0 + slots) (StateMeasures::part_slot)
+};
+
+// A part's dof that is a deflection at a point x of the beam (m): a rigid motion v0 + slope x
+// moves it with the beam there, and it carries momentum m v and moment m x v about x = 0.
+struct RigidPoint {
+  PetscInt  dof = 0;
+  PetscReal x   = 0; // m
+};
+
+constexpr int kMaxPartSlots = 8; // the measure slots of all present parts together (fixed: no allocation per step)
+
+// One number a part measures on every recorded state (a sum over the owned dofs: the measures
+// add the ranks' shares). `peak`: the recorder keeps its largest |value| over the steps (NaN
+// where no stepper measured it: the modal reference); `series`: -monitor_energy records it per
+// step under /series/<name>.
+struct PartSlot {
+  const char *name; // "absorber_energy"
+  const char *unit; // "J"
+  bool        peak   = false;
+  bool        series = false;
+};
+
+// A state as a part's Measure reads it: dof d of y at y[(d / fields) * ys + d % fields] (by global
+// node, valid within the system's ghost width of [d0, d1)), v likewise; [d0, d1) the owned dofs.
+struct PartState {
+  const PetscReal *y = nullptr, *v = nullptr; // m (rad), m/s (rad/s)
+  PetscInt         ys = 1, vs = 1, d0 = 0, d1 = 0;
+};
+
+// What a part's column reads: its slots at t = 0, at the end and their peaks (in Slots()'s order).
+struct PartOutputFacts {
+  const PetscReal  *start = nullptr, *end = nullptr, *peak = nullptr;
+  PetscReal         E_in   = 0; // J, the energy brought into the impact (the fractions' denominator)
+  const PartParams *params = nullptr;
+};
+
+// A results column a part registers: name, unit ("1": dimensionless), description (one line) and
+// how the outcome computes it. It applies where the part is present (StructurePart::Presence),
+// NaN elsewhere.
+struct PartColumn {
+  const char *name, *unit, *description;
+  double (*compute)(const PartOutputFacts &f);
+};
+
+// A part's options as read: the rows given in the options database, by name (with the dash),
+// each as its numbers (a flag 1; a list its values).
+struct PartOptionValues {
+  std::map<std::string, std::vector<PetscReal>> given;
+  bool                                          Given(const char *name) const { return given.count(name) > 0; }
+};
+
+class StructurePart {
+public:
+  virtual ~StructurePart() = default;
+  // -- identity and options ---------------------------------------------------------------------
+  virtual const char         *Name() const     = 0;            // "absorber": registry key, BeamParams::parts key
+  virtual const char         *Presence() const = 0;            // "with -absorber": when its columns apply
+  virtual const char         *Words() const { return Name(); } // for messages: "the stability limit is set by ..."
+  virtual const OptionModule &Options() const = 0; // its rows: -help, the unknown-option check, the run record
+  // The rows as read (and the beam, its holds resolved) -> its parameters in *out (nullptr: the
+  // part is absent). False with *why naming the option, the value as written and what is allowed.
+  virtual bool Configure(const PartOptionValues &v, const BeamParams &beam, std::shared_ptr<const PartParams> *out,
+                         std::string *why) const = 0;
+  // Why the modal reference (-reference modal) cannot carry it, or nullptr.
+  virtual const char *ModalRefusal(const PartParams &) const { return nullptr; }
+  // -- the system ---------------------------------------------------------------------------------
+  // Appends its fields to d (BeamDiscretizationWiden: masses, held flags, strain terms); returns
+  // how many (0: none).
+  virtual PetscInt Build(const PartParams &, const BeamParams &, BeamDiscretization *,
+                         std::shared_ptr<const PartBuilt> *) const
+  {
+    return 0;
+  }
+  // Its dofs that a rigid motion carries as the beam's deflection at a point.
+  virtual void RigidPoints(const PartInstance &, std::vector<RigidPoint> *) const { }
+  // Its force terms, summed after the registered ones of force_operator.cpp.
+  virtual void ForceTerms(const PartInstance &, const BeamSystem &,
+                          std::vector<std::shared_ptr<const ForceTerm>> *) const
+  {
+  }
+  // -- measures and outputs -----------------------------------------------------------------------
+  virtual std::vector<PartSlot> Slots() const { return {}; }
+  // slot[k] += its k-th slot's share of the owned dofs [s.d0, s.d1).
+  virtual void Measure(const PartInstance &, const BeamSystem &, const PartState &, PetscReal *) const { }
+  virtual std::vector<PartColumn> Columns() const { return {}; }
+  // The run summary's line (without newline; "" for none) from its columns' values, in Columns()'s order.
+  virtual std::string Summary(const PartParams &, const std::vector<double> &) const { return ""; }
+};
+
+// The registry, in the order the parts' fields are appended (system/structure.cpp).
+const std::vector<const StructurePart *> &StructureParts();
+const StructurePart                      *StructurePartFind(const char *name); // nullptr if none
+
+// The parts present in p, appended to d in registry order (BeamSystemBuild).
+std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d);
+// Each present part's force terms appended to sys->forces.terms and its rigid points to
+// sys->rigid_points; its measure slots numbered (BeamSystemBuild, before the assembly).
+void StructurePartsFinish(BeamSystem *sys);
+// The measure slots of the present parts together (<= kMaxPartSlots).
+PetscInt StructurePartSlotCount(const BeamSystem &sys);
+// slot[k] += every present part's measures of s (its slots at slot0 + k).
+void StructurePartsMeasure(const BeamSystem &sys, const PartState &s, PetscReal *slot);
+// Why the modal reference cannot carry the parts present in p ("" when it can).
+std::string StructurePartsModalRefusal(const BeamParams &p);
+
+} // namespace beamimpact
