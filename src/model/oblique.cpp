@@ -881,7 +881,7 @@ void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal
 TangentialPlane BedInPlaneOf(const BedInPlaneModel &b, PetscInt *rigid)
 {
   TangentialPlane p;
-  const bool      held = std::isinf(b.frame_mass);
+  const bool      held = !(b.frame_mass < PETSC_INFINITY); // PETSC_INFINITY is finite
   const PetscReal M = b.frame_mass, m = b.strings_mass;
   *rigid = held ? 0 : 1;
   if (!held) p.omega.push_back(0), p.gamma.push_back(1 / std::sqrt(M + m));
@@ -895,7 +895,7 @@ TangentialPlane BedInPlaneOf(const BedInPlaneModel &b, PetscInt *rigid)
 PetscReal BedInPlaneSlide(const BedInPlaneModel &b, const TangentialPlane &p)
 {
   const size_t k = p.omega.size() - 1; // the flexible mode, the last
-  return (std::isinf(b.frame_mass) ? 1 : 1 + b.strings_mass / b.frame_mass) * p.gamma[k] * p.z[k];
+  return (b.frame_mass < PETSC_INFINITY ? 1 + b.strings_mass / b.frame_mass : 1) * p.gamma[k] * p.z[k];
 }
 
 PetscReal BedInPlaneEnergy(const TangentialPlane &p, PetscInt rigid)
