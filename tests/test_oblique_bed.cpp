@@ -13,6 +13,7 @@
 //   * the ball's angular momentum about the contact point kept whatever friction did;
 //   * snapback: the sliding mains give back what they stored, and the ball leaves spinning faster
 //     than rolling, and faster than off the locked bed (Cross; Lindsey's lubricated strings);
+//   * the brush (-bat_speed_face): the angle in the face's frame (Galilean along the face);
 //   * the refusals: -impact_angle off a bed, -impact_offset on one.
 #include "model/oblique.hpp"
 #include "model/string_bed.hpp"
@@ -173,7 +174,7 @@ TEST(ObliqueBed, BallAngularMomentumAboutTheContactKept)
 // the same friction (Cross; Kawazoe & Okimoto's and Lindsey's lubricated strings). The slide's
 // spring holds at most k s_peak^2 / 2 (the mains' mass is small: at the largest slide nearly all
 // their energy is strain) and its force k s is about the friction's mu F_n at most (the mains'
-// own inertia rings about it: measured 1.04 mu F_peak).
+// own inertia rings about it: measured 1.07 mu F_peak).
 TEST(ObliqueBed, SnapbackGivesMoreSpinThanTheLockedBed)
 {
   const Extra e    = {{"-ball_friction", "0.4"}, {"-ball_spin", "400"}};
@@ -191,6 +192,29 @@ TEST(ObliqueBed, SnapbackGivesMoreSpinThanTheLockedBed)
   EXPECT_NEAR(b.strings_inplane_energy_peak, 0.5 * k * sp * sp, 0.02 * b.strings_inplane_energy_peak);
   EXPECT_LT(k * sp, 1.1 * 0.4 * b.peak_force);
   EXPECT_GT(k * sp, 0.2 * b.peak_force); // the friction's force, not a sliver of it
+}
+
+// The brush (-bat_speed_face V): along the face the model is Galilean, so a ball coming in along
+// the normal at v onto a face moving at V is, in the face's frame, a ball at v' = hypot(v, V) and
+// the angle atan(-V/v) onto a face at rest: the same spin and slide, the lab's tangential exit the
+// face frame's plus V (a locked and a sliding bed).
+TEST(ObliqueBed, BrushIsTheAngleInTheFacesFrame)
+{
+  const PetscReal V = 8, v = 25;
+  for (PetscBool rigid : {PETSC_FALSE, PETSC_TRUE}) {
+    Scenario brushed                = HeldBed(0, {{"-ball_friction", "0.4"}});
+    brushed.swing.face_speed        = V;
+    brushed.impact.tangential_rigid = rigid;
+    Scenario angled                 = HeldBed(-std::atan(V / v) * 180 / M_PI, {{"-ball_friction", "0.4"}});
+    angled.ball.speed               = std::hypot(v, V);
+    angled.impact.tangential_rigid  = rigid;
+    const ImpactResult a = RunWith(PETSC_COMM_WORLD, brushed, kModal), b = RunWith(PETSC_COMM_WORLD, angled, kModal);
+    EXPECT_LT(a.spin, -50) << "topspin from the brush, rigid " << rigid;
+    EXPECT_NEAR(a.spin, b.spin, 1e-9 * std::abs(b.spin)) << "rigid " << rigid;
+    EXPECT_NEAR(TangentialExit(a), TangentialExit(b) + V, 1e-9 * v) << "rigid " << rigid;
+    EXPECT_NEAR(NormalExit(a), NormalExit(b), 1e-9 * v) << "rigid " << rigid;
+    if (!rigid) { EXPECT_NEAR(a.strings_slide_peak, b.strings_slide_peak, 1e-9 * b.strings_slide_peak); }
+  }
 }
 
 TEST(ObliqueBed, Refusals)

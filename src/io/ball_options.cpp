@@ -29,7 +29,7 @@ std::string LossFactorHelp()
 }
 
 // The condition of an oblique impact's tangential options (OptionSpec::needs).
-const char *const kOblique = "-impact_offset!=0|-ball_spin!=0|-impact_angle!=0";
+const char *const kOblique = "-impact_offset!=0|-ball_spin!=0|-impact_angle!=0|-bat_speed_face!=0";
 
 OptionModule BuildBallOptions()
 {

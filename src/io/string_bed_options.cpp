@@ -70,12 +70,14 @@ const OptionModule &StringBedOptionTable()
                              "section 13); default n T (1/a + 1/b), n = 2 r_p / s_m mains under the ball's patch, T "
                              "-strings_tension, a and b the struck main's lengths to its two ends",
                              "", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0", "-ball_friction!=0"}),
+                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0|-bat_speed_face!=0",
+                   "-ball_friction!=0"}),
       OptionNeeds(OptionReal("-strings_inplane_mass", "kg",
                              "An oblique impact on the bed: the mass of the mains under the ball in that slide; "
                              "default n lambda (a + b) / 3 (the triangle of a string pulled aside at a point)",
                              "", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0", "-ball_friction!=0"}),
+                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0|-bat_speed_face!=0",
+                   "-ball_friction!=0"}),
     },
   };
   return m;

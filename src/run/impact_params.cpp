@@ -69,7 +69,7 @@ const OptionModule &ImpactOptionTable()
                                "ball slide and snap back on the frame (-strings_inplane_*), rigid: they are locked, "
                                "the rigid-surface model on the frame's effective mass",
                                {"flexible", "rigid"}, "flexible"),
-                  {"-impact_offset!=0|-ball_spin!=0|-impact_angle!=0", "-ball_friction!=0"}),
+                  {"-impact_offset!=0|-ball_spin!=0|-impact_angle!=0|-bat_speed_face!=0", "-ball_friction!=0"}),
       OptionReal("-impact_window", "s",
                  "Time followed after each separation, >= 0 (0: nothing followed); default two fundamental periods of "
                  "the beam (the file records the value used)",

@@ -17,7 +17,7 @@ namespace beamimpact {
 
 bool ObliqueImpact(const Scenario &sc)
 {
-  return sc.impact.offset != 0 || sc.impact.angle != 0 || sc.ball.spin != 0 || sc.flight.on;
+  return sc.impact.offset != 0 || sc.impact.angle != 0 || sc.ball.spin != 0 || sc.swing.face_speed != 0 || sc.flight.on;
 }
 
 namespace {
@@ -48,6 +48,11 @@ PetscErrorCode ObliqueBatCheck(MPI_Comm comm, const Scenario &sc, PetscReal R)
              "impact is -impact_offset",
              OptionWritten("-impact_angle").c_str(), (double)sc.impact.x, (double)sc.impact.z,
              sc.beam.strings.On() ? "is off the head's outline" : "is on a beam without a string bed");
+  PetscCheck(sc.swing.face_speed == 0, comm, PETSC_ERR_ARG_INCOMP,
+             "-bat_speed_face %s is not allowed here: it is a racket's brush along its face, for an impact on a string "
+             "bed inside its head's outline; this point (-impact_x %g m, -impact_z %g m) %s",
+             OptionWritten("-bat_speed_face").c_str(), (double)sc.impact.x, (double)sc.impact.z,
+             sc.beam.strings.On() ? "is off the head's outline" : "is on a beam without a string bed");
   if (D == 0 && sc.ball.spin == 0) PetscFunctionReturn(0);
   const char *what = D != 0 ? "-impact_offset" : "-ball_spin";
   PetscCheck(R > 0, comm, PETSC_ERR_ARG_INCOMP,
@@ -74,8 +79,8 @@ PetscErrorCode ObliqueBedCheck(MPI_Comm comm, const Scenario &sc)
              "-impact_offset %s is not allowed on a string bed: it is a round bat's (the ball's line off the bat's "
              "axis); the bed's face is flat: give the ball's path from its normal, -impact_angle (deg)",
              OptionWritten("-impact_offset").c_str());
-  if (sc.impact.angle == 0 && sc.ball.spin == 0) PetscFunctionReturn(0);
-  const char *what = sc.impact.angle != 0 ? "-impact_angle" : "-ball_spin";
+  if (sc.impact.angle == 0 && sc.ball.spin == 0 && sc.swing.face_speed == 0) PetscFunctionReturn(0);
+  const char *what = sc.impact.angle != 0 ? "-impact_angle" : sc.ball.spin != 0 ? "-ball_spin" : "-bat_speed_face";
   PetscCheck(sc.ball.radius > 0, comm, PETSC_ERR_ARG_INCOMP,
              "%s %s: an oblique impact on the strings needs the ball's radius: give -ball_radius (m)", what,
              OptionWritten(what).c_str());
@@ -344,7 +349,7 @@ void BedInPlaneRun(const Scenario &sc, const ImpactSeries &series, ObliqueRecord
   b.stiffness              = s.inplane_stiffness > 0 ? s.inplane_stiffness : d.stiffness;
   b.strings_mass           = s.inplane_mass > 0 ? s.inplane_mass : d.mass;
   rec->plane               = BedInPlaneOf(b, &rec->plane_rigid_modes);
-  rec->plane.ball_side     = rec->before.v_ball - rec->model.ball_radius * rec->before.spin;
+  rec->plane.ball_side     = rec->before.v_ball - rec->before.v_bat - rec->model.ball_radius * rec->before.spin;
   rec->flexible            = true;
   rec->contact             = TangentialFlexibleStart(rec->model, rec->plane);
   TangentialFlexibleRun(rec->model, series, rec, [](ObliqueRecord *r) {
@@ -373,14 +378,16 @@ PetscErrorCode ObliqueBedFinish(const Scenario &sc, const ImpactSeries &series, 
   TangentialBallSet(sc.ball, series, &m);
   rec->model         = m;
   rec->before.v_ball = in.ball_speed * std::sin(in.angle);
-  rec->before.spin   = -sc.ball.spin; // counter-clockwise in (n, t), as the bat's
-  const PetscReal u0 = rec->before.v_ball - m.ball_radius * rec->before.spin;
+  rec->before.spin   = -sc.ball.spin;       // counter-clockwise in (n, t), as the bat's
+  rec->before.v_bat  = sc.swing.face_speed; // the brush; the plane moves relative to it (Galilean along t)
+  const PetscReal u0 = rec->before.v_ball - m.ball_radius * rec->before.spin - rec->before.v_bat;
   rec->contact       = TangentialStart(m, u0);
   if (u0 != 0 && m.friction > 0 && m.ball_radius > 0 && m.ball_inertia > 0) {
     if (sc.impact.tangential_rigid) TangentialRigidRun(m, series, &rec->contact);
     else BedInPlaneRun(sc, series, rec);
   }
   PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
   PetscFunctionReturn(0);
 }
 
@@ -430,6 +437,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     rec->model.bat_mass = PETSC_INFINITY; // the bat's translation is the plane's: the ball and the roll from J
   } else if (touches && u0 != 0) TangentialRigidRun(m, series, &rec->contact);
   PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
   PetscFunctionReturn(0);
 }
 
