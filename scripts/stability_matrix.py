@@ -394,6 +394,13 @@ def cases():
         Case("bed-held", "string bed in a held frame (circle R = 15 cm, N 16000 N/m, 41 nodes), linear ball 57 g, k = 3e4, load on a 16.5 mm disc, centre",
              {**BAT, **HELD_BED, **{"-beam_nodes": None, "-beam_left": None, "-beam_right": None, "-impact_x": 0.15}},
              why="the bed alone (a 2-D membrane on the system's fields); the exact modal solution as reference"),
+        # An oblique impact on the held bed (issue 39): the normal run at v cos(40 deg), the mains
+        # sliding sideways on their tension (the tangential plane's mode) under Coulomb friction;
+        # spin and launch angle against the exact modal reference's.
+        Case("bed-oblique", "the held bed struck at 40 deg with 20 rad/s of spin in, mu 0.4, the mains sliding (default in-plane spring), centre",
+             {**BAT, **HELD_BED, **{"-beam_nodes": None, "-beam_left": None, "-beam_right": None, "-impact_x": 0.15, "-ball_radius": 0.0335,
+                                    "-ball_inertia_factor": 0.55, "-impact_angle": 40.0, "-ball_spin": 20.0, "-ball_friction": 0.4}},
+             checks=("energy_bound", "oblique"), why="friction, spin and the strings' in-plane slide on the membrane's normal run"),
         Case("racket-offaxis", "free strung racket (racket-strung.opts), linear ball 57 g, k = 2e4, x = 15 cm, 5 cm off the axis",
              {**BAT, **RACKET, **{"-ball_mass": 0.057, "-ball_radius": 0.0335, "-ball_k": 2e4, "-impact_x": 0.15, "-impact_z": 0.05}},
              checks=("momenta",), why="the bed on the rolling frame; the exact modal solution as reference; momentum, angular momentum and roll momentum kept"),

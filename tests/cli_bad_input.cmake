@@ -164,6 +164,11 @@ set(cases
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -impact_z 0.2|-impact_x 0.15 with -impact_z 0.2 is not allowed: off the frame's axis the ball must strike the string bed"
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.15 -strings_tension 2.5e5 -ts_type rk -ts_rk_type 4 -ts_adapt_type none -ts_dt 1e-6|-ts_dt 1e-06 is above the stability limit .* set by the string bed\\)"
   "-options_file ${SRC}/options/base/racket-strung.opts -strings_patch_radius -1|-strings_patch_radius -1 is not allowed: it must be >= 0 \\(m\\)"
+  "-options_file ${SRC}/options/base/racket-strung.opts -ball_radius 0.0335 -impact_x 0.15 -impact_angle 90|-impact_angle 90 is not allowed"
+  "-ball_radius 0.02 -impact_angle 20|-impact_angle 20 is not allowed here: .*needs a racket's bed"
+  "-options_file ${SRC}/options/base/racket-strung.opts -ball_radius 0.0335 -impact_x 0.15 -impact_offset 0.01|-impact_offset 0.01 is not allowed on a string bed"
+  "-options_file ${SRC}/options/base/racket-strung.opts -ball_radius 0.0335 -impact_x 0.15 -impact_angle 30 -strings_inplane_stiffness 0|-strings_inplane_stiffness 0\\.? is not allowed"
+  "-ball_radius 0.02 -bat_speed_face 5|-bat_speed_face 5 is not allowed here"
   "-options_file ${SRC}/options/base/racket-strung.opts -impact_x 0.3 -strings_patch_radius 0.2|-strings_patch_radius 0.2 m is not allowed with this grid"
   "-strings_frame held -impact_x 0.5|-impact_x 0.5 is not allowed: the impact point must lie on the beam, 0 <= x <= L = 0.34"
   # issue 34: a negative window (it silently became the default), the barrel wall's absurd inputs

@@ -292,7 +292,7 @@ notes() {
   shift
   for item in "$@"; do grep -qF -- "$item" <<<"$line" || return 1; done
 }
-head_on="(it acts only with -impact_offset not 0 or -ball_spin not 0)"
+head_on="(it acts only with -impact_offset not 0 or -ball_spin not 0 or -impact_angle not 0 or -bat_speed_face not 0)"
 plain=$("$exe" "${bat[@]}" -flight 2>&1)
 out=$("$exe" "${bat[@]}" -flight -ball_friction 0.9 -ball_tangential_cor 0.3 -ball_inertia_factor 0.6 -impact_tangential_plane rigid 2>&1); rc=$?
 if [[ $rc -eq 0 ]] && notes "$out" "-ball_friction 0.9 $head_on" "-ball_inertia_factor 0.6 $head_on" "-ball_tangential_cor 0.3 $head_on" "-impact_tangential_plane rigid $head_on" &&

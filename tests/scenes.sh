@@ -21,6 +21,8 @@
 #     contact's e from the COR table, k1 from the characterisation;
 #   * r161-modes: the R161 bat's mass, centre of mass, fundamental and first-mode nodes against
 #     the published bat; r161-acor: e_A at 70 cm by the baseball at 40 m/s near 0.2;
+#   * racket-topspin: a forehand brushing up the ball leaves with topspin, clears the net and lands
+#     in the court;
 #   * waves, snapshots, the 10 mm and hysteretic sweeps, racket snapshots, animation: they run
 #     and write what the plots read (series shapes, snapshot times), with numbers in a sane range.
 # The long versions (every point, fine grids) run from scripts/run_paper.sh, not here.
@@ -301,6 +303,14 @@ if run oblique-pitches 1 options/scenes/oblique-pitches.opts -sweep "ball_spin=2
   f="$dir/oblique-pitches.h5"
   s="$(col "$f" /results/spin_rpm | paste -sd,)"
   check "oblique-pitches: batted spin $s rpm (fastball, curveball)" 'split(s, a, ",") == 2 && a[2] > a[1] && a[1] > 1000' s="$s"
+fi
+
+# --- racket-topspin (issue 39): a forehand brushing up the ball: topspin, over the net, into the court ---
+if run racket-topspin 1 options/scenes/racket-topspin.opts; then
+  f="$dir/racket-topspin.h5"
+  net=$(paste <(col "$f" /series/flight_y) <(col "$f" /series/flight_z) | awk '$1 >= 11.89 && !done { print z0 + (11.89 - y0) * ($2 - z0) / ($1 - y0); done = 1 } { y0 = $1; z0 = $2 }')
+  check "racket-topspin: leaves at $(col "$f" /results/launch_angle) deg with $(col "$f" /results/spin_rpm) rpm (< 0: topspin), the mains slid $(col "$f" /results/strings_slide_peak) m; crosses the net ${net} m high, lands at $(col "$f" /results/distance) m" \
+    'a > 3 && a < 15 && s < -1500 && s > -4000 && p > 1e-3 && p < 1e-2 && n > 0.914 && d > 11.89 && d < 23.77' a="$(col "$f" /results/launch_angle)" s="$(col "$f" /results/spin_rpm)" p="$(col "$f" /results/strings_slide_peak)" n="${net:-0}" d="$(col "$f" /results/distance)"
 fi
 
 # --- strings-modes (issue 25): the string bed's modes in a held frame, on 2 ranks (the DMDA split) ---

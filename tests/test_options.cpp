@@ -543,7 +543,7 @@ TEST(OptionTables, TheTangentialOptionsOfAHeadOnHitAreNotes)
     OptionsUsedClear();
     return why;
   };
-  const std::string head_on = "it acts only with -impact_offset not 0 or -ball_spin not 0";
+  const std::string head_on = "it acts only with -impact_offset not 0 or -ball_spin not 0 or -impact_angle not 0 or -bat_speed_face not 0";
   for (auto more : std::vector<std::vector<std::pair<const char *, const char *>>>{{}, {{"-flight", NULL}}, {{"-impact_offset", "0.0"}, {"-ball_spin", "-0"}}}) {
     std::map<std::string, std::string> why = noted(more);
     EXPECT_EQ(4u, why.size()) << (more.empty() ? "" : more[0].first);

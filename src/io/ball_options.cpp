@@ -29,7 +29,7 @@ std::string LossFactorHelp()
 }
 
 // The condition of an oblique impact's tangential options (OptionSpec::needs).
-const char *const kOblique = "-impact_offset!=0|-ball_spin!=0";
+const char *const kOblique = "-impact_offset!=0|-ball_spin!=0|-impact_angle!=0|-bat_speed_face!=0";
 
 OptionModule BuildBallOptions()
 {
@@ -52,7 +52,8 @@ OptionModule BuildBallOptions()
     // compliance only where there is friction.
     OptionReal("-ball_spin", "rad/s",
                "Incoming spin about the bat's axis direction (> 0: backspin of the incoming ball, as a fastball; < 0: "
-               "topspin, as a curveball); needs -ball_radius and a round bat (-beam_profile)",
+               "topspin, as a curveball); needs -ball_radius and a round bat (-beam_profile) or a string bed (there "
+               "about the mains' direction x, > 0 the same sense: its face at the bed moving toward +z)",
                "0"),
     OptionNeeds(OptionReal("-ball_inertia_factor", "1",
                            "Moment of inertia of the ball I/(m R^2) (0.4: a solid sphere; a baseball about 0.4, a "

@@ -23,6 +23,13 @@ const OptionModule &SwingOptionTable()
       OptionReal("-bat_angular_velocity", "rad/s",
                  "Angular velocity Omega about the centre of mass (> 0: the x = L end moves faster toward the ball)",
                  "0"),
+      OptionNeeds(OptionReal("-bat_speed_face", "m/s",
+                             "A racket's speed along its face at the impact point, toward +z (across the mains; > 0: "
+                             "brushing up the back of a ball on a face whose +z is up, a topspin forehand), beside "
+                             "its swing toward the ball; for an impact on a string bed (docs/model.md section 13, "
+                             "\"On the string bed\")",
+                             "0"),
+                  {"-strings_frame=held|-strings_frame=beam", "-ball_radius"}),
       OptionReal("-bat_swing_angular_velocity", "rad/s",
                  "The batter's swing as a law instead of -bat_speed/-bat_angular_velocity: the bat turns at omega_0 "
                  "about -bat_swing_pivot, both scaled by (I_s/I_0)^(-n) (Cross & Bower 2006)",
@@ -63,6 +70,7 @@ PetscErrorCode SwingFromOptions(MPI_Comm comm, const BeamParams &beam, SwingPara
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_speed", &s->bat_speed, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_angular_velocity", &s->bat_angular_velocity, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_speed_face", &s->face_speed, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_angular_velocity", &law.angular_velocity, &setlaw));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_pivot", &law.pivot, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-bat_swing_pivot_speed", &law.pivot_speed, NULL));

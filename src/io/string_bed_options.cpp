@@ -64,6 +64,20 @@ const OptionModule &StringBedOptionTable()
                             "Grid nodes across the head's width (default: from the aspect, so that h_z ~ h_x)", "",
                             AtLeast(5)),
                   {"-strings_frame=held|-strings_frame=beam"}),
+      OptionNeeds(OptionReal("-strings_inplane_stiffness", "N/m",
+                             "An oblique impact on the bed: the stiffness of the mains under the ball against their "
+                             "sideways slide (across their length, the friction force's direction; docs/model.md "
+                             "section 13); default n T (1/a + 1/b), n = 2 r_p / s_m mains under the ball's patch, T "
+                             "-strings_tension, a and b the struck main's lengths to its two ends",
+                             "", Positive()),
+                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0|-bat_speed_face!=0",
+                   "-ball_friction!=0"}),
+      OptionNeeds(OptionReal("-strings_inplane_mass", "kg",
+                             "An oblique impact on the bed: the mass of the mains under the ball in that slide; "
+                             "default n lambda (a + b) / 3 (the triangle of a string pulled aside at a point)",
+                             "", Positive()),
+                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0|-bat_speed_face!=0",
+                   "-ball_friction!=0"}),
     },
   };
   return m;
@@ -103,6 +117,8 @@ PetscErrorCode StringBedParamsFromOptions(MPI_Comm comm, StringBedParams *p)
   PetscCall(OptionsRead(PetscOptionsObject, t, "-head_center", &p->head_center, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_nodes", &p->nodes, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_patch_radius", &p->patch_radius, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_inplane_stiffness", &p->inplane_stiffness, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_inplane_mass", &p->inplane_mass, NULL));
   nw = StringBedGrid(*p).nz; // -help shows the aspect's count
   PetscCall(OptionsRead(PetscOptionsObject, t, "-strings_nodes_width", &nw, &set_nw));
   PetscOptionsEnd();

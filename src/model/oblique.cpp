@@ -878,4 +878,32 @@ void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal
   p->time = t1; // the sub-steps' sum, to round-off
 }
 
+TangentialPlane BedInPlaneOf(const BedInPlaneModel &b, PetscInt *rigid)
+{
+  TangentialPlane p;
+  const bool      held = !(b.frame_mass < PETSC_INFINITY); // PETSC_INFINITY is finite
+  const PetscReal M = b.frame_mass, m = b.strings_mass;
+  *rigid = held ? 0 : 1;
+  if (!held) p.omega.push_back(0), p.gamma.push_back(1 / std::sqrt(M + m));
+  p.omega.push_back(std::sqrt(b.stiffness * (1 / m + (held ? 0 : 1 / M))));
+  p.gamma.push_back(held ? 1 / std::sqrt(m) : std::sqrt(M / (m * (M + m))));
+  p.z.assign(p.omega.size(), 0.0);
+  p.zd.assign(p.omega.size(), 0.0);
+  return p;
+}
+
+PetscReal BedInPlaneSlide(const BedInPlaneModel &b, const TangentialPlane &p)
+{
+  const size_t k = p.omega.size() - 1; // the flexible mode, the last
+  return (b.frame_mass < PETSC_INFINITY ? 1 + b.strings_mass / b.frame_mass : 1) * p.gamma[k] * p.z[k];
+}
+
+PetscReal BedInPlaneEnergy(const TangentialPlane &p, PetscInt rigid)
+{
+  PetscReal E = 0;
+  for (size_t k = (size_t)rigid; k < p.omega.size(); ++k)
+    E += 0.5 * (p.zd[k] * p.zd[k] + p.omega[k] * p.omega[k] * p.z[k] * p.z[k]);
+  return E;
+}
+
 } // namespace beamimpact

@@ -214,6 +214,27 @@ void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal z
 void TangentialModeForced(PetscReal w, PetscReal sigma, PetscReal z, PetscReal zd, const ForceCubic &f, PetscReal tau,
                           PetscReal *q, PetscReal *qd);
 
+// The string bed in its own plane (docs/model.md section 13, "On the string bed"; MODEL.md section
+// 17): the frame's rigid motion along t at the point (its effective mass M_t; infinite: a held
+// frame) and the mains under the ball (model/string_bed.hpp, StringBedInPlane: k_s, m_s) on it,
+// the friction force acting on the mains. The two points, frame F and strings S (M = diag(M_t,
+// m_s), K = k_s [1 -1; -1 1], the force on S), in their modes: a held frame one mode, omega^2 =
+// k_s / m_s, gamma = 1/sqrt(m_s); a free one the rigid mode (1, 1)/sqrt(M_t + m_s) and the mode
+// omega^2 = k_s (1/m_s + 1/M_t) of shape b (-m_s/M_t, 1), b^2 = M_t / (m_s (M_t + m_s)); gamma is
+// a mode's value at S. The strings' slide from the frame (S less F) is the flexible mode's
+// (1 + m_s/M_t) b z.
+struct BedInPlaneModel {
+  PetscReal frame_mass   = PETSC_INFINITY; // kg, M_t (inf: a held frame)
+  PetscReal strings_mass = 0;              // kg, m_s
+  PetscReal stiffness    = 0;              // N/m, k_s
+};
+// The plane at rest; *rigid: its rigid modes (0 or 1, the first).
+TangentialPlane BedInPlaneOf(const BedInPlaneModel &b, PetscInt *rigid);
+// The strings' slide from the frame (m, along t) and the energy of the strings' vibration against
+// the frame (J, the flexible mode's) in the plane's state.
+PetscReal BedInPlaneSlide(const BedInPlaneModel &b, const TangentialPlane &p);
+PetscReal BedInPlaneEnergy(const TangentialPlane &p, PetscInt rigid);
+
 // The four motions after an impulse J, from their values at the first touch.
 struct TangentialBodies {
   PetscReal v_ball = 0, spin = 0, v_bat = 0, roll = 0; // m/s, rad/s (counter-clockwise), m/s, rad/s

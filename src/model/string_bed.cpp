@@ -123,4 +123,17 @@ PetscReal MembranePatchCentreDeflection(PetscReal N, PetscReal R, PetscReal c, P
   return F / (2 * M_PI * N) * (std::log(R / c) + 0.5);
 }
 
+StringBedInPlane StringBedInPlaneOf(const StringBedParams &p, PetscReal x, PetscReal z, PetscReal patch_radius)
+{
+  StringBedInPlane s;
+  BedGrid          g; // the outline alone
+  g.shape = p.shape, g.a = 0.5 * p.head_length, g.b = 0.5 * p.head_width;
+  s.mains     = std::max<PetscReal>(1, 2 * patch_radius / p.spacing);
+  s.to_ends_a = BedEdgeDistance(g, x, z, 1);
+  s.to_ends_b = BedEdgeDistance(g, x, z, 0);
+  s.stiffness = s.mains * p.tension * (1 / s.to_ends_a + 1 / s.to_ends_b);
+  s.mass      = s.mains * p.linear_density * (s.to_ends_a + s.to_ends_b) / 3;
+  return s;
+}
+
 } // namespace beamimpact

@@ -40,8 +40,11 @@ struct StringBedParams {
                                // bends and rolls)
   PetscReal patch_radius = -1; // m, the ball's load on the bed spread over a disc of this radius
                                // (-strings_patch_radius; < 0: not yet derived from the ball)
-  bool On() const { return frame != "none"; }
-  bool Held() const { return frame == "held"; }
+  // The mains under the ball in the bed's plane, for an oblique impact (StringBedInPlaneOf; < 0: from the tension)
+  PetscReal inplane_stiffness = -1; // N/m, -strings_inplane_stiffness
+  PetscReal inplane_mass      = -1; // kg, -strings_inplane_mass
+  bool      On() const { return frame != "none"; }
+  bool      Held() const { return frame == "held"; }
 };
 
 // The woven bed as a membrane: tension per length and areal mass.
@@ -92,6 +95,21 @@ bool BedInside(const BedGrid &g, PetscReal x, PetscReal z);
 // Distance (m) from the inside point (x, z) to the outline along the grid line in direction
 // dir (0: +x, 1: -x, 2: +z, 3: -z), exact for both shapes.
 PetscReal BedEdgeDistance(const BedGrid &g, PetscReal x, PetscReal z, int dir);
+
+// The bed in its own plane under the ball (MODEL.md section 17; docs/model.md section 13, "On the
+// string bed"): the mains under the ball's patch pulled sideways (along z, across their length) by the
+// friction force. A main of tension T pulled aside at a point a and b from its ends has the stiffness
+// T (1/a + 1/b) and, in the triangle that static pull gives it, the kinetic energy of a point of mass
+// lambda (a + b)/3 moving with the point (Rayleigh's lumped mass); the mains under the patch of
+// radius r_p (2 r_p / s_m of them, at least one) act together. At (x, z) from the head's centre.
+struct StringBedInPlane {
+  PetscReal mains     = 0; // 1, the mains under the patch (2 r_p / s_m, at least 1)
+  PetscReal to_ends_a = 0; // m, the struck main's length from the point to its end at -x
+  PetscReal to_ends_b = 0; // m, to its end at +x
+  PetscReal stiffness = 0; // N/m, mains T (1/a + 1/b)
+  PetscReal mass      = 0; // kg, mains lambda (a + b) / 3
+};
+StringBedInPlane StringBedInPlaneOf(const StringBedParams &p, PetscReal x, PetscReal z, PetscReal patch_radius);
 
 // References (scripts/references/membrane.py):
 // rectangle 2a x 2b: f_mn = 1/2 sqrt((N_x (m/(2a))^2 + N_z (n/(2b))^2) / sigma) (Hz);

@@ -20,7 +20,8 @@ namespace beamimpact {
 struct SwingParams {
   PetscReal bat_speed            = 0; // m/s, V_cm toward the ball
   PetscReal bat_angular_velocity = 0; // rad/s, Omega about the centre of mass
-  bool      Swings() const { return bat_speed != 0 || bat_angular_velocity != 0; }
+  PetscReal face_speed = 0; // m/s, a racket's speed along its face's +z at the impact point (a brush; -bat_speed_face)
+  bool      Swings() const { return bat_speed != 0 || bat_angular_velocity != 0; } // toward the ball (the brush apart)
 };
 
 // The batter's swing as a law (MODEL.md section 14; Cross & Bower, J. Sports Sci. 24 (2006) 23-30:

@@ -40,7 +40,8 @@ struct ImpactParams {
   PetscBool   after_set = PETSC_FALSE;        // -impact_after was given: modal where it cannot be is an error
   PetscReal   x         = 0.55;               // m, impact point measured from the x = 0 end
   PetscReal   z = 0; // m, -impact_z: across the face from the frame's axis (a racket's off-centre hit; 0: on the axis)
-  PetscReal   offset           = 0; // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
+  PetscReal   offset = 0; // m, -impact_offset: the ball's line of flight above the bat's axis (0: head-on)
+  PetscReal   angle  = 0; // deg, -impact_angle: a string bed's oblique impact, the ball's path from the face's normal
   PetscBool   tangential_rigid = PETSC_FALSE; // -impact_tangential_plane rigid: the bat rigid in its second plane
                                               // (default flexible, run/oblique.hpp)
   PetscReal
@@ -257,6 +258,9 @@ struct ImpactOutcome {
   PetscReal exit_speed = 0, launch_angle = 0, spin = 0, spin_rpm = 0, friction_dissipated = 0;
   PetscReal bat_vibration_tangential = 0; // J, the bat's vibration in its second plane after the hit (flexible plane)
   PetscReal bat_damping_tangential = 0; // J, what the bat's damping took in that plane during the hit (flexible plane)
+  // On a string bed (-impact_angle, run/oblique.hpp): the strings' largest slide from the frame (m), the energy of
+  // their in-plane vibration at most (J) and what of it they gave back by the separation (J: the peak less the end's)
+  PetscReal strings_slide_peak = 0, strings_inplane_energy_peak = 0, strings_inplane_energy_returned = 0;
   PetscReal distance = 0, apex = 0, hang_time = 0;
 };
 

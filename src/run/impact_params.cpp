@@ -53,12 +53,23 @@ const OptionModule &ImpactOptionTable()
                              "bat (-beam_profile) and -ball_radius; 0: head-on",
                              "0"),
                   {"-ball_radius"}),
+      OptionNeeds(OptionReal("-impact_angle", "deg",
+                             "An oblique impact on a racket's string bed: the ball's path at this angle from the "
+                             "face's normal, in the plane of the normal and the face's z (across the mains: > 0 the "
+                             "ball moving toward +z, leaving with backspin about x; < 0 toward -z, as a racket "
+                             "brushing up the back of the ball: topspin); needs a string bed struck inside its "
+                             "outline (-strings_frame), -ball_radius, and no -impact_offset (a bat's); 0: along the "
+                             "normal",
+                             "0", Between(-90, 90, true, true)),
+                  {"-ball_radius", "-strings_frame=held|-strings_frame=beam"}),
       OptionNeeds(OptionChoice("-impact_tangential_plane",
                                "An oblique impact: the bat in its second bending plane (across the line of centres), "
                                "flexible (the same beam in its modes, driven by the friction force) or rigid (its "
-                               "effective mass at the impact point)",
+                               "effective mass at the impact point); on a string bed, flexible: the mains under the "
+                               "ball slide and snap back on the frame (-strings_inplane_*), rigid: they are locked, "
+                               "the rigid-surface model on the frame's effective mass",
                                {"flexible", "rigid"}, "flexible"),
-                  {"-impact_offset!=0|-ball_spin!=0", "-ball_friction!=0"}),
+                  {"-impact_offset!=0|-ball_spin!=0|-impact_angle!=0|-bat_speed_face!=0", "-ball_friction!=0"}),
       OptionReal("-impact_window", "s",
                  "Time followed after each separation, >= 0 (0: nothing followed); default two fundamental periods of "
                  "the beam (the file records the value used)",
@@ -131,6 +142,7 @@ PetscErrorCode ImpactParamsFromOptions(MPI_Comm comm, const BeamParams &beam, Im
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_x", &p->x, &x_set));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_z", &p->z, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_offset", &p->offset, NULL));
+  PetscCall(OptionsRead(PetscOptionsObject, T, "-impact_angle", &p->angle, NULL));
   {
     PetscInt plane = p->tangential_rigid ? 1 : 0; // the row's choices: flexible, rigid
     PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-impact_tangential_plane", &plane, NULL));

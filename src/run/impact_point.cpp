@@ -7,15 +7,13 @@
 
 namespace beamimpact {
 
-namespace {
-bool OnBed(const BeamParams &beam, PetscReal x, PetscReal z)
+bool ImpactOnBed(const BeamParams &beam, PetscReal x, PetscReal z)
 {
   if (!beam.strings.On()) return false;
   BedGrid g; // the outline alone
   g.shape = beam.strings.shape, g.a = 0.5 * beam.strings.head_length, g.b = 0.5 * beam.strings.head_width;
   return BedInside(g, x - beam.strings.head_center, z);
 }
-} // namespace
 
 PetscReal FrameHalfWidth(const BeamParams &beam, PetscReal x, const char **source)
 {
@@ -32,7 +30,7 @@ PetscReal FrameHalfWidth(const BeamParams &beam, PetscReal x, const char **sourc
 ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x, PetscReal z)
 {
   if (!(x >= 0 && x <= beam.length)) return ImpactPointWhere::OffBeam;
-  if (OnBed(beam, x, z)) return ImpactPointWhere::Movable;
+  if (ImpactOnBed(beam, x, z)) return ImpactPointWhere::Movable;
   if (beam.strings.On() && z != 0) return ImpactPointWhere::OffFace;           // off the racket's face
   if (std::abs(z) > FrameHalfWidth(beam, x)) return ImpactPointWhere::OffFace; // off the frame's section
   const std::vector<NodeHold> hold          = BeamNodeHolds(beam);

@@ -17,6 +17,9 @@ namespace beamimpact {
 // than the racket is long). *source (may be null) says which, in words.
 PetscReal FrameHalfWidth(const BeamParams &beam, PetscReal x, const char **source = nullptr);
 
+// Whether (x, z) (m) lies inside a string bed's outline (false without a bed).
+bool ImpactOnBed(const BeamParams &beam, PetscReal x, PetscReal z);
+
 // Where (x, z) (m) lies: on the beam (or the bed) and free to move, off the beam (or off a
 // racket's face), or on a held point.
 enum class ImpactPointWhere {

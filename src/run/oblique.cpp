@@ -4,6 +4,7 @@
 #include "base/option_table.hpp"
 #include "model/rigid.hpp"
 #include "run/impact.hpp"
+#include "run/impact_point.hpp"
 #include "run/results_table.hpp"
 #include "run/scenario.hpp"
 
@@ -14,67 +15,131 @@
 
 namespace beamimpact {
 
-bool ObliqueImpact(const Scenario &sc) { return sc.impact.offset != 0 || sc.ball.spin != 0 || sc.flight.on; }
+bool ObliqueImpact(const Scenario &sc)
+{
+  return sc.impact.offset != 0 || sc.impact.angle != 0 || sc.ball.spin != 0 || sc.swing.face_speed != 0 || sc.flight.on;
+}
+
+namespace {
+
+// The incoming spin's bound: the ball's surface below the speed of sound.
+PetscErrorCode ObliqueSpinCheck(MPI_Comm comm, const BallParams &ball)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(std::abs(ball.spin) < FlightSpinMax(ball.radius), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-ball_spin %s is not allowed: it moves the ball's surface at %g m/s (-ball_radius %g m), beyond the "
+             "speed of sound in air (%g m/s), where neither the contact nor the flight "
+             "models hold; |spin| must be below %g rad/s",
+             OptionWritten("-ball_spin").c_str(), (double)(std::abs(ball.spin) * ball.radius), (double)ball.radius,
+             (double)kSpeedOfSound, (double)FlightSpinMax(ball.radius));
+  PetscFunctionReturn(0);
+}
+
+// A bat's oblique impact: a round section at the point, the ball's radius, an offset that hits.
+PetscErrorCode ObliqueBatCheck(MPI_Comm comm, const Scenario &sc, PetscReal R)
+{
+  const PetscReal D = sc.impact.offset, R_b = sc.ball.radius;
+
+  PetscFunctionBeginUser;
+  PetscCheck(sc.impact.angle == 0, comm, PETSC_ERR_ARG_INCOMP,
+             "-impact_angle %s is not allowed here: the angle to the face's normal is a string bed's oblique impact, "
+             "which needs a racket's bed struck inside its head's outline (-strings_frame held or beam, -impact_x "
+             "and -impact_z on the head); this point (-impact_x %g m, -impact_z %g m) %s; a round bat's oblique "
+             "impact is -impact_offset",
+             OptionWritten("-impact_angle").c_str(), (double)sc.impact.x, (double)sc.impact.z,
+             sc.beam.strings.On() ? "is off the head's outline" : "is on a beam without a string bed");
+  PetscCheck(sc.swing.face_speed == 0, comm, PETSC_ERR_ARG_INCOMP,
+             "-bat_speed_face %s is not allowed here: it is a racket's brush along its face, for an impact on a string "
+             "bed inside its head's outline; this point (-impact_x %g m, -impact_z %g m) %s",
+             OptionWritten("-bat_speed_face").c_str(), (double)sc.impact.x, (double)sc.impact.z,
+             sc.beam.strings.On() ? "is off the head's outline" : "is on a beam without a string bed");
+  if (D == 0 && sc.ball.spin == 0) PetscFunctionReturn(0);
+  const char *what = D != 0 ? "-impact_offset" : "-ball_spin";
+  PetscCheck(R > 0, comm, PETSC_ERR_ARG_INCOMP,
+             "%s %s: an oblique impact needs the bat's radius at the impact point, which only a round profile gives "
+             "(-beam_profile); this beam's section is %s, which has no radius (a strip or a "
+             "table of properties is not round)",
+             what, OptionWritten(what).c_str(), SectionSourceName(sc.beam.section.source));
+  PetscCheck(R_b > 0, comm, PETSC_ERR_ARG_INCOMP,
+             "%s %s: an oblique impact needs the ball's radius: give -ball_radius (m)", what,
+             OptionWritten(what).c_str());
+  PetscCall(ObliqueSpinCheck(comm, sc.ball));
+  PetscCheck(std::abs(D) < R_b + R, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-impact_offset %s misses the bat: |D| must be < R_b + R_bat = %g m (-ball_radius %g m plus the bat's "
+             "radius %g m at -impact_x %g m)",
+             OptionWritten("-impact_offset").c_str(), (double)(R_b + R), (double)R_b, (double)R, (double)sc.impact.x);
+  PetscFunctionReturn(0);
+}
+
+// A string bed's oblique impact: the ball's radius, no bat's offset.
+PetscErrorCode ObliqueBedCheck(MPI_Comm comm, const Scenario &sc)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(sc.impact.offset == 0, comm, PETSC_ERR_ARG_INCOMP,
+             "-impact_offset %s is not allowed on a string bed: it is a round bat's (the ball's line off the bat's "
+             "axis); the bed's face is flat: give the ball's path from its normal, -impact_angle (deg)",
+             OptionWritten("-impact_offset").c_str());
+  if (sc.impact.angle == 0 && sc.ball.spin == 0 && sc.swing.face_speed == 0) PetscFunctionReturn(0);
+  const char *what = sc.impact.angle != 0 ? "-impact_angle" : sc.ball.spin != 0 ? "-ball_spin" : "-bat_speed_face";
+  PetscCheck(sc.ball.radius > 0, comm, PETSC_ERR_ARG_INCOMP,
+             "%s %s: an oblique impact on the strings needs the ball's radius: give -ball_radius (m)", what,
+             OptionWritten(what).c_str());
+  PetscCall(ObliqueSpinCheck(comm, sc.ball));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
 
 PetscErrorCode ObliqueNormalScenario(MPI_Comm comm, const Scenario &sc, Scenario *normal)
 {
-  const PetscReal D = sc.impact.offset, R_b = sc.ball.radius;
-  const PetscReal R = RoundSectionRadiusAt(sc.beam.section, sc.impact.x);
+  const PetscReal D   = sc.impact.offset;
+  const PetscReal R   = RoundSectionRadiusAt(sc.beam.section, sc.impact.x);
+  const bool      bed = ImpactOnBed(sc.beam, sc.impact.x, sc.impact.z);
 
   PetscFunctionBeginUser;
-  if (D != 0 || sc.ball.spin != 0) {
-    const char *what = D != 0 ? "-impact_offset" : "-ball_spin";
-    PetscCheck(R > 0, comm, PETSC_ERR_ARG_INCOMP,
-               "%s %s: an oblique impact needs the bat's radius at the impact point, which only a round profile gives "
-               "(-beam_profile); this beam's section is %s, which has no radius (a strip or a "
-               "table of properties is not round)",
-               what, OptionWritten(what).c_str(), SectionSourceName(sc.beam.section.source));
-    PetscCheck(R_b > 0, comm, PETSC_ERR_ARG_INCOMP,
-               "%s %s: an oblique impact needs the ball's radius: give -ball_radius (m)", what,
-               OptionWritten(what).c_str());
-    PetscCheck(std::abs(sc.ball.spin) < FlightSpinMax(R_b), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-ball_spin %s is not allowed: it moves the ball's surface at %g m/s (-ball_radius %g m), beyond the "
-               "speed of sound in air (%g m/s), where neither the contact nor the flight "
-               "models hold; |spin| must be below %g rad/s",
-               OptionWritten("-ball_spin").c_str(), (double)(std::abs(sc.ball.spin) * R_b), (double)R_b,
-               (double)kSpeedOfSound, (double)FlightSpinMax(R_b));
-    PetscCheck(std::abs(D) < R_b + R, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-impact_offset %s misses the bat: |D| must be < R_b + R_bat = %g m (-ball_radius %g m plus the bat's "
-               "radius %g m at -impact_x %g m)",
-               OptionWritten("-impact_offset").c_str(), (double)(R_b + R), (double)R_b, (double)R, (double)sc.impact.x);
-  }
+  if (bed) PetscCall(ObliqueBedCheck(comm, sc));
+  else PetscCall(ObliqueBatCheck(comm, sc, R));
   *normal              = sc;
   ObliqueIncoming &in  = normal->oblique;
   in.on                = true;
   in.ball_speed        = sc.ball.speed;
   in.swing             = sc.swing;
-  in.bat_radius        = R;
+  in.bat_radius        = bed ? 0 : R;
+  in.bed               = bed;
   in.ball_series_asked = sc.monitor.ball;
   in.series_asked      = sc.monitor.any();
-  if (D != 0) in.geometry = ObliqueGeometryOf(D, R_b, R); // head-on: theta = 0, cos theta = 1 exactly
+  normal->monitor.ball = PETSC_TRUE; // F_n(t) for the tangential contact
+  if (bed) {                         // the bed's frame: theta 0; the swing is along the bed's normal already
+    in.angle           = sc.impact.angle * M_PI / 180;
+    normal->ball.speed = std::cos(in.angle) * sc.ball.speed;
+    PetscFunctionReturn(0);
+  }
+  if (D != 0) in.geometry = ObliqueGeometryOf(D, sc.ball.radius, R); // head-on: theta = 0, cos theta = 1 exactly
   const PetscReal c                  = in.geometry.cos_theta;
   normal->ball.speed                 = c * sc.ball.speed;
   normal->swing.bat_speed            = c * sc.swing.bat_speed;
   normal->swing.bat_angular_velocity = c * sc.swing.bat_angular_velocity;
-  normal->monitor.ball               = PETSC_TRUE; // F_n(t) for the tangential contact
   PetscFunctionReturn(0);
 }
 
 namespace {
 
-// The bat's rigid second plane at the impact point: its effective mass and roll inertia.
-void TangentialBat(const Scenario &sc, TangentialModel *m)
+// The bat's rigid second plane at the impact point: its effective mass and roll inertia. On a
+// string bed (face) the plane is the face's: the frame turns in it about the normal with about its
+// pitch and roll inertias together (sum m ((x - x_cm)^2 + z^2), the frame thin along the normal).
+void TangentialBat(const Scenario &sc, bool face, TangentialModel *m)
 {
   const BeamParams   &b         = sc.beam;
   const BeamRigidBody body      = BeamRigidBodyOf(b);
   const bool          ends_free = b.left == Support::Free && b.right == Support::Free && !b.has_clamp;
+  const PetscReal     yaw       = face ? body.inertia_roll : 0;
   if (ends_free && !b.has_pivot) {
-    m->bat_mass         = RigidEffectiveMass(body.mass, body.inertia_cm, std::abs(sc.impact.x - body.x_cm));
-    m->bat_roll_inertia = b.section.source == SectionSource::Profile
+    m->bat_mass         = RigidEffectiveMass(body.mass, body.inertia_cm + yaw, std::abs(sc.impact.x - body.x_cm));
+    m->bat_roll_inertia = b.section.source == SectionSource::Profile && !face
                           ? 2 * SectionMomentsOf(b.section, 0, SectionLength(b.section)).j
                           : PETSC_INFINITY;
   } else if (ends_free && sc.impact.x != b.pivot_x) {
-    m->bat_mass = PivotRigOf(body, b.pivot_x, sc.ball.mass, sc.impact.x).inertia_pivot /
+    m->bat_mass = (PivotRigOf(body, b.pivot_x, sc.ball.mass, sc.impact.x).inertia_pivot + yaw) /
                   ((sc.impact.x - b.pivot_x) * (sc.impact.x - b.pivot_x));
   }
 }
@@ -216,41 +281,147 @@ PetscErrorCode ObliqueFlight(const Scenario &sc, ObliqueRecord *rec)
 
 } // namespace
 
-PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, const ObliqueBeam &beam,
-                             ObliqueRecord *rec)
+namespace {
+
+// The ball's side of the tangential model, and l from e_T on the model's rigid effective mass (the
+// ball's property, the same for both planes' models); without friction the spring carries no
+// force: none (its zero-force steps left -6e-71 J of round-off). The bat's side: m->bat_* first.
+void TangentialBallSet(const BallParams &ball, const ImpactSeries &series, TangentialModel *m)
 {
-  const ObliqueIncoming &in   = sc.oblique;
-  const BallParams      &ball = sc.ball;
+  m->ball_mass    = ball.mass;
+  m->ball_radius  = ball.radius;
+  m->ball_inertia = ball.inertia_factor * ball.mass * ball.radius * ball.radius;
+  m->friction     = ball.friction;
+  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0 && ball.friction > 0)
+    m->compliance_length = TangentialComplianceLength(m->EffectiveMass(), ball.tangential_cor, series.time,
+                                                      series.force, series.force_rate);
+}
+
+size_t SeriesPieces(const ImpactSeries &S) { return std::min(S.time.size(), S.force.size()); }
+
+// The tangential contact on the rigid model over the run's F_n series.
+void TangentialRigidRun(const TangentialModel &m, const ImpactSeries &series, TangentialState *c)
+{
+  for (size_t k = 0; k + 1 < SeriesPieces(series); ++k) {
+    const NormalPiece f = NormalPieceOf(series, k);
+    TangentialAdvance(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, c);
+  }
+}
+
+// The tangential contact on the flexible plane rec->plane over the run's F_n series; after each
+// step, watch(rec) (may be empty).
+template <class Watch>
+void TangentialFlexibleRun(const TangentialModel &m, const ImpactSeries &series, ObliqueRecord *rec, Watch watch)
+{
+  for (size_t k = 0; k + 1 < SeriesPieces(series); ++k) {
+    const NormalPiece f = NormalPieceOf(series, k);
+    TangentialAdvanceFlexible(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, &rec->plane,
+                              &rec->contact);
+    watch(rec);
+  }
+}
+
+// The exit from the normal speed and the tangential contact's impulse; with -flight the flight.
+PetscErrorCode ObliqueExitAndFlight(const Scenario &sc, PetscReal u_n, ImpactStageScope *stage, ObliqueRecord *rec)
+{
+  const bool touches = rec->model.ball_radius > 0 && rec->model.ball_inertia > 0;
+
+  PetscFunctionBeginUser;
+  rec->after = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
+  if (rec->flexible) rec->after.v_bat = rec->plane.PointVelocity();
+  rec->exit = ObliqueExitOf(rec->geometry, u_n, rec->after.v_ball);
+  if (sc.flight.on) {
+    stage->Switch(ImpactStage::Flight);
+    PetscCall(ObliqueFlight(sc, rec));
+  }
+  PetscFunctionReturn(0);
+}
+
+// The string bed in its own plane (model/oblique.hpp, BedInPlaneModel): the mains under the ball
+// (-strings_inplane_*, else from the tension: StringBedInPlaneOf) on the frame's rigid motion
+// along t, driven by the friction force; their slide and energy watched at the run's steps.
+void BedInPlaneRun(const Scenario &sc, const ImpactSeries &series, ObliqueRecord *rec)
+{
+  const StringBedParams &s = sc.beam.strings;
+  const StringBedInPlane d = StringBedInPlaneOf(s, sc.impact.x - s.head_center, sc.impact.z, s.patch_radius);
+  BedInPlaneModel       &b = rec->bed_plane;
+  b.frame_mass             = rec->model.bat_mass;
+  b.stiffness              = s.inplane_stiffness > 0 ? s.inplane_stiffness : d.stiffness;
+  b.strings_mass           = s.inplane_mass > 0 ? s.inplane_mass : d.mass;
+  rec->plane               = BedInPlaneOf(b, &rec->plane_rigid_modes);
+  rec->plane.ball_side     = rec->before.v_ball - rec->before.v_bat - rec->model.ball_radius * rec->before.spin;
+  rec->flexible            = true;
+  rec->contact             = TangentialFlexibleStart(rec->model, rec->plane);
+  TangentialFlexibleRun(rec->model, series, rec, [](ObliqueRecord *r) {
+    r->bed_slide_peak  = std::max(r->bed_slide_peak, std::abs(BedInPlaneSlide(r->bed_plane, r->plane)));
+    r->bed_energy_peak = std::max(r->bed_energy_peak, BedInPlaneEnergy(r->plane, r->plane_rigid_modes));
+  });
+  const TangentialPlane &p = rec->plane;
+  rec->plane_vibration     = BedInPlaneEnergy(p, rec->plane_rigid_modes);
+  rec->plane_momentum      = rec->plane_rigid_modes ? p.zd[0] / p.gamma[0] : 0; // sqrt(M_t + m_s) zd_0; held: 0
+  rec->model.bat_mass      = PETSC_INFINITY; // the frame's motion is the plane's: the ball from J
+}
+
+// An oblique impact on a string bed (oblique.hpp): the bed's frame, a flat face (no radius, no
+// roll), the ball's path at -impact_angle from the normal, the swing along the normal.
+PetscErrorCode ObliqueBedFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, ObliqueRecord *rec)
+{
+  const ObliqueIncoming &in = sc.oblique;
   TangentialModel        m;
 
   PetscFunctionBeginUser;
   ImpactStageScope stage(ImpactStage::Tangential); // -log_view
-  rec->on        = true;
-  rec->geometry  = in.geometry;
-  m.ball_mass    = ball.mass;
-  m.ball_radius  = ball.radius;
-  m.ball_inertia = ball.inertia_factor * ball.mass * ball.radius * ball.radius;
-  m.bat_radius   = in.bat_radius;
-  m.friction     = ball.friction;
-  TangentialBat(sc, &m);
+  rec->on = rec->bed = true;
+  rec->geometry      = in.geometry; // theta 0: n the bed's normal
+  TangentialBat(sc, true, &m);      // the frame's effective mass along t at the point (held: infinite)
+  m.bat_roll_inertia = PETSC_INFINITY;
+  TangentialBallSet(sc.ball, series, &m);
+  rec->model         = m;
+  rec->before.v_ball = in.ball_speed * std::sin(in.angle);
+  rec->before.spin   = -sc.ball.spin;       // counter-clockwise in (n, t), as the bat's
+  rec->before.v_bat  = sc.swing.face_speed; // the brush; the plane moves relative to it (Galilean along t)
+  const PetscReal u0 = rec->before.v_ball - m.ball_radius * rec->before.spin - rec->before.v_bat;
+  rec->contact       = TangentialStart(m, u0);
+  if (u0 != 0 && m.friction > 0 && m.ball_radius > 0 && m.ball_inertia > 0) {
+    if (sc.impact.tangential_rigid) TangentialRigidRun(m, series, &rec->contact);
+    else BedInPlaneRun(sc, series, rec);
+  }
+  PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal u_n, const ObliqueBeam &beam,
+                             ObliqueRecord *rec)
+{
+  const ObliqueIncoming &in = sc.oblique;
+  TangentialModel        m;
+
+  PetscFunctionBeginUser;
+  if (in.bed) {
+    PetscCall(ObliqueBedFinish(sc, series, u_n, rec));
+    PetscFunctionReturn(0);
+  }
+  ImpactStageScope stage(ImpactStage::Tangential); // -log_view
+  rec->on       = true;
+  rec->geometry = in.geometry;
+  m.bat_radius  = in.bat_radius;
+  TangentialBat(sc, false, &m);
+  TangentialBallSet(sc.ball, series, &m);
   const BeamRigidBody body = BeamRigidBodyOf(sc.beam);
   const PetscReal     V_in = SwingSpeedAt(in.swing, body, sc.impact.x); // toward the ball, as given
   const PetscReal     s    = in.geometry.sin_theta;
-  // l from e_T on the rigid bat's effective mass (the ball's property, the same for both planes' models);
-  // without friction the spring carries no force: none (its zero-force steps left -6e-71 J of round-off)
-  if (ball.tangential_cor >= 0 && ball.radius > 0 && ball.inertia_factor > 0 && ball.friction > 0)
-    m.compliance_length = TangentialComplianceLength(m.EffectiveMass(), ball.tangential_cor, series.time, series.force,
-                                                     series.force_rate);
-  rec->model            = m;
-  rec->before.v_ball    = in.ball_speed * s;
-  rec->before.spin      = -ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise
-  rec->before.v_bat     = -V_in * s;
-  rec->before.roll      = 0;
-  const PetscReal u0    = (rec->before.v_ball - m.ball_radius * rec->before.spin) - rec->before.v_bat;
-  rec->contact          = TangentialStart(m, u0);
-  const bool   touches  = m.ball_radius > 0 && m.ball_inertia > 0;
-  const bool   flexible = touches && u0 != 0 && m.friction > 0 && !sc.impact.tangential_rigid;
-  const size_t n        = std::min(series.time.size(), series.force.size());
+  rec->model               = m;
+  rec->before.v_ball       = in.ball_speed * s;
+  rec->before.spin         = -sc.ball.spin; // counter-clockwise in (y, z): the incoming backspin turns clockwise
+  rec->before.v_bat        = -V_in * s;
+  rec->before.roll         = 0;
+  const PetscReal u0       = (rec->before.v_ball - m.ball_radius * rec->before.spin) - rec->before.v_bat;
+  rec->contact             = TangentialStart(m, u0);
+  const bool touches       = m.ball_radius > 0 && m.ball_inertia > 0;
+  const bool flexible      = touches && u0 != 0 && m.friction > 0 && !sc.impact.tangential_rigid;
   if (flexible) { // the swing's -V(x) per dof times sin theta: its component along t
     std::vector<PetscReal> v;
     PetscReal              L;
@@ -261,25 +432,12 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     rec->plane.ball_side = (rec->before.v_ball - m.ball_radius * rec->before.spin) - m.bat_radius * rec->before.roll;
     rec->flexible        = true;
     rec->contact         = TangentialFlexibleStart(m, rec->plane);
-    for (size_t k = 0; k + 1 < n; ++k) {
-      const NormalPiece f = NormalPieceOf(series, k);
-      TangentialAdvanceFlexible(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, &rec->plane,
-                                &rec->contact);
-    }
+    TangentialFlexibleRun(m, series, rec, [](ObliqueRecord *) {});
     PetscCall(TangentialPlaneFinish(beam, rec));
     rec->model.bat_mass = PETSC_INFINITY; // the bat's translation is the plane's: the ball and the roll from J
-  } else if (touches && u0 != 0)
-    for (size_t k = 0; k + 1 < n; ++k) {
-      const NormalPiece f = NormalPieceOf(series, k);
-      TangentialAdvance(m, series.time[k], series.time[k + 1], f.F0, f.F1, f.dF0, f.dF1, &rec->contact);
-    }
-  rec->after = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
-  if (flexible) rec->after.v_bat = rec->plane.PointVelocity();
-  rec->exit = ObliqueExitOf(in.geometry, u_n, rec->after.v_ball);
-  if (sc.flight.on) {
-    stage.Switch(ImpactStage::Flight);
-    PetscCall(ObliqueFlight(sc, rec));
-  }
+  } else if (touches && u0 != 0) TangentialRigidRun(m, series, &rec->contact);
+  PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
   PetscFunctionReturn(0);
 }
 

@@ -18,6 +18,14 @@
 //         damping (refused otherwise, naming the rigid plane);
 //       - rigid: its effective mass at the impact point (free bat: Eq. 11's M_e; a rig free
 //         about its pivot: I_p / (x - x_p)^2; otherwise held).
+// On a racket's string bed (-impact_angle, or -ball_spin with the point inside the head's outline;
+// docs/model.md section 13, "On the string bed"; MODEL.md section 17) the face is flat: n is the
+// bed's normal, t the face's z (across the mains), the ball's path at -impact_angle from n; along n
+// the run at v cos(angle) (the racket's swing is along n already), along t the tangential contact
+// on the bed in its own plane (model/oblique.hpp, BedInPlaneModel): the mains under the ball
+// sliding sideways on the frame's rigid motion along t (held, or its effective mass there); with
+// -impact_tangential_plane rigid the mains locked (the rigid-surface model on the frame's mass).
+// The exit is in the bed's frame: the launch angle from the normal, > 0 toward +z.
 // Then, with -flight, the batted ball's flight (solvers/flight_ts.hpp) from the exit speed,
 // launch angle and spin.
 #pragma once
@@ -52,7 +60,9 @@ struct ObliqueIncoming {
   PetscReal       ball_speed = 0; // m/s, as given
   SwingParams     swing;          // as given
   ObliqueGeometry geometry;
-  PetscReal       bat_radius        = 0; // m, at the impact point
+  PetscReal       bat_radius        = 0;     // m, at the impact point
+  bool            bed               = false; // on a string bed: n its normal, t its z (the bed's frame)
+  PetscReal       angle             = 0;     // rad, on a bed: the ball's path from n (-impact_angle)
   bool            ball_series_asked = false,
        series_asked                 = false; // -monitor_ball; any monitor (the run records the ball's series for F_n)
 };
@@ -71,16 +81,21 @@ struct ObliqueRecord {
   PetscReal        plane_vibration   = 0; // J, flexible: the energy of its flexible modes after the contact
   PetscReal
     plane_damped = 0; // J, flexible: the energy the beam's damping took in that plane up to the end of the contact
-  PetscReal    plane_momentum0 = 0, plane_momentum = 0; // N s, flexible: the bat's momentum along t before and after
-  bool         flew = false;
-  FlightResult flight;
+  PetscReal       plane_momentum0 = 0, plane_momentum = 0; // N s, flexible: the bat's momentum along t before and after
+  bool            bed = false;         // on a string bed: the plane is bed_plane (the mains on the frame)
+  BedInPlaneModel bed_plane;           // bed: the frame's mass, the mains' stiffness and mass in the face's plane
+  PetscReal       bed_slide_peak  = 0; // m, bed (flexible): the mains' largest slide from the frame, at the run's steps
+  PetscReal       bed_energy_peak = 0; // J, bed (flexible): the energy of their vibration on the frame at most
+  bool            flew            = false;
+  FlightResult    flight;
 };
 
-// Whether the impact is oblique: -impact_offset or -ball_spin not 0, or -flight.
+// Whether the impact is oblique: -impact_offset, -impact_angle or -ball_spin not 0, or -flight.
 bool ObliqueImpact(const Scenario &sc);
 
 // The scenario of the run along the normal: checks the geometry (a round section at the impact
-// point, -ball_radius, |D| < R_b + R_bat) and projects the ball's and the swing's speeds.
+// point, -ball_radius, |D| < R_b + R_bat; on a string bed -ball_radius and no -impact_offset;
+// -impact_angle only there) and projects the ball's and the swing's speeds.
 PetscErrorCode ObliqueNormalScenario(MPI_Comm comm, const Scenario &sc, Scenario *normal);
 
 // The beam of the run along the normal, for the flexible second plane.

@@ -3,6 +3,7 @@
 
 #include "model/rigid.hpp"
 #include "model/shell.hpp"
+#include "run/impact_point.hpp"
 #include "run/oblique.hpp"
 #include "run/scenario.hpp"
 
@@ -42,6 +43,10 @@ bool ResultTwistNoHeld(const Scenario &sc) { return ResultTwist(sc) && ResultNoH
 // one (the outcome): ObliqueImpact answers the same for both.
 bool ResultOblique(const Scenario &sc) { return sc.oblique.on || ObliqueImpact(sc); }
 bool ResultObliqueFlexible(const Scenario &sc) { return ResultOblique(sc) && !sc.impact.tangential_rigid; }
+bool ResultObliqueBed(const Scenario &sc)
+{
+  return ResultObliqueFlexible(sc) && ImpactOnBed(sc.beam, sc.impact.x, sc.impact.z);
+}
 
 bool ResultFlight(const Scenario &sc) { return sc.flight.on; }
 
@@ -418,11 +423,14 @@ std::vector<ResultColumn> OutcomeColumns()
 // The oblique impact (run/oblique.hpp) and the batted ball's flight. Along the line of centres
 // the columns above are the run's (acor, bbs: the normal components); these are the ball's
 // whole exit.
-const char *const kOblique = "an oblique impact: -impact_offset or -ball_spin not 0, or -flight (a head-on hit: "
+const char *const kOblique = "an oblique impact: -impact_offset, -impact_angle or -ball_spin not 0, or -flight (a "
+                             "head-on hit: "
                              "exit_speed = bbs, launch_angle 0, no spin)";
 const char *const kFlight  = "with -flight";
 const char *const kObliqueFlexible = "an oblique impact with -impact_tangential_plane flexible (the default; 0 where "
                                      "no friction force acts)";
+const char *const kObliqueBed      = "an oblique impact on a string bed (-impact_angle, -ball_spin) with "
+                                     "-impact_tangential_plane flexible (0 where no friction force acts)";
 std::vector<ResultColumn> ObliqueColumns()
 {
   return {
@@ -432,10 +440,12 @@ std::vector<ResultColumn> ObliqueColumns()
     Real(
       "launch_angle", "deg", &R::launch_angle, ResultOblique, kOblique,
       [](F f) -> double { return f.oblique->exit.launch_angle; },
-      "the batted ball's direction from the reversed incoming direction, > 0 upward"),
+      "the batted ball's direction from the reversed incoming direction, > 0 upward (on a string bed: from the bed's "
+      "normal, > 0 toward +z)"),
     Real(
       "spin", "rad/s", &R::spin, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin; },
-      "the batted ball's spin, > 0 backspin"),
+      "the batted ball's spin, > 0 backspin (on a string bed: about x, the sense of a ball leaving toward +z "
+      "rolling on the bed)"),
     Real(
       "spin_rpm", "rpm", &R::spin_rpm, ResultOblique, kOblique,
       [](F f) -> double { return f.oblique->after.spin * 30 / M_PI; }, "the same in revolutions per minute"),
@@ -454,6 +464,21 @@ std::vector<ResultColumn> ObliqueColumns()
       [](F f) -> double { return f.oblique->plane_damped; },
       "energy the bat's damping (-beam_damping_*) took in its second plane up to the end of the contact; 0 for an "
       "undamped bat; its own term, beside bat_vibration_tangential"),
+    Real(
+      "strings_slide_peak", "m", &R::strings_slide_peak, ResultObliqueBed, kObliqueBed,
+      [](F f) -> double { return f.oblique->bed_slide_peak; },
+      "the largest sideways slide of the mains under the ball from the frame (in the face's plane, across the mains; "
+      "at the run's steps)"),
+    Real(
+      "strings_inplane_energy_peak", "J", &R::strings_inplane_energy_peak, ResultObliqueBed, kObliqueBed,
+      [](F f) -> double { return f.oblique->bed_energy_peak; },
+      "the largest energy of the mains' vibration in the face's plane (their slide's strain and motion on the "
+      "frame) during the contact"),
+    Real(
+      "strings_inplane_energy_returned", "J", &R::strings_inplane_energy_returned, ResultObliqueBed, kObliqueBed,
+      [](F f) -> double { return f.oblique->bed_energy_peak - f.oblique->plane_vibration; },
+      "what of that peak the mains gave back by the separation (snapback): the peak less the energy left in their "
+      "vibration (bat_vibration_tangential)"),
     Real(
       "distance", "m", &R::distance, ResultFlight, kFlight,
       [](F f) -> double { return f.oblique->flight.landing.distance; },

@@ -65,7 +65,8 @@ bool ResultNoHeldDof(const Scenario &sc);
 bool ResultOblique(const Scenario &sc); // -impact_offset or -ball_spin not 0, or -flight (run/oblique.hpp)
 bool ResultObliqueFlexible(
   const Scenario &sc); // the same with the bat flexible in its second plane (-impact_tangential_plane flexible)
-bool ResultFlight(const Scenario &sc); // -flight          // no end clamped or pinned, no clamped region, no pivot
+bool ResultObliqueBed(const Scenario &sc); // the same on a string bed (-impact_angle, -ball_spin inside the head)
+bool ResultFlight(const Scenario &sc);     // -flight          // no end clamped or pinned, no clamped region, no pivot
 bool ResultMomentumInvariant(const Scenario &sc); // no held dof, no grip, no mass-proportional damping
 bool ResultFreeBeamAtRest(const Scenario &sc);    // no held dof, no grip, no swing (Eq. 11)
 bool ResultFreePivot(const Scenario &sc);         // -beam_pivot and no other support or grip: the rig turns freely
