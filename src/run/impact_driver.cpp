@@ -390,6 +390,45 @@ PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenar
   PetscFunctionReturn(0);
 }
 
+// The event indicators of the stepper's state: the compression and its rate, scaled; a state
+// that is not finite stops the run, naming the method.
+PetscErrorCode StateIndicators(Stepper &st, const ContactScales &scales, const IntegratorInfo &info, EventIndicators *g)
+{
+  PetscReal c, cd;
+
+  PetscFunctionBeginUser;
+  PetscCall(st.Compression(&c, &cd));
+  PetscCheck(std::isfinite(c) && std::isfinite(cd), st.Comm(), PETSC_ERR_FP,
+             "the solution is not finite (NaN/Inf) at t = %g s with %s: the step is unstable%s", (double)st.Time(),
+             st.Method().c_str(), info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
+  g->c    = c / scales.compression;
+  g->cdot = cd / scales.speed;
+  PetscFunctionReturn(0);
+}
+
+// A long single impact's progress line, -impact_progress seconds of wall time apart (*last: the
+// wall time of the last line).
+PetscErrorCode ImpactProgressLine(MPI_Comm comm, const ImpactParams &ip, PetscReal t, PetscReal t_stop,
+                                  const ImpactCost &cost, const ContactTally &tally, double wall0, double *last)
+{
+  PetscFunctionBeginUser;
+  if (ip.report_setup && ip.progress > 0 && MPI_Wtime() - *last >= ip.progress) {
+    *last = MPI_Wtime();
+    PetscCall(PetscPrintf(comm,
+                          "progress: t = %.4g s simulated (the run stops by %.4g s), %" PetscInt_FMT
+                          " steps, %" PetscInt_FMT " contact(s), %.0f s of wall time\n",
+                          (double)t, (double)t_stop, cost.steps + cost.event_steps, tally.contacts, *last - wall0));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Whether the recorder follows peaks of a part of the structure (a wall, a string bed, the hands
+// or a registered part): then the series are sampled through a free flight.
+bool SystemHasPeaks(const BeamSystem &sys)
+{
+  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() || !sys.parts.empty();
+}
+
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
 // stepper reads. The events and monitors write their records in *rec, the driver its steps and
 // time in *cost; info: the stepper's settings (for messages).
@@ -407,19 +446,9 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   ImpactRecorder recorder(st, ctx, sc.monitor, ip, rec->energy_in, &rec->series, &rec->peaks);
   PetscCall(recorder.Record(0.0));
   PetscCall(recorder.Snapshots(0.0));
-  auto indicators = [&](EventIndicators *g) -> PetscErrorCode {
-    PetscReal c, cd;
-    PetscFunctionBeginUser;
-    PetscCall(st.Compression(&c, &cd));
-    PetscCheck(std::isfinite(c) && std::isfinite(cd), st.Comm(), PETSC_ERR_FP,
-               "the solution is not finite (NaN/Inf) at t = %g s with %s: the step is unstable%s", (double)st.Time(),
-               st.Method().c_str(), info.dt_stable > 0 ? " (explicit: keep dt below dt_max)" : "");
-    g->c    = c / scales.compression;
-    g->cdot = cd / scales.speed;
-    PetscFunctionReturn(0);
-  };
-  const double    wall0 = MPI_Wtime();
-  PetscReal       t     = 0;
+  auto            indicators = [&](EventIndicators *g) { return StateIndicators(st, scales, info, g); };
+  const double    wall0      = MPI_Wtime();
+  PetscReal       t          = 0;
   ContactTimeline timeline;
   timeline.t_stop = times.max_time;
   EventIndicators g0, g1;
@@ -434,21 +463,11 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   rec->after_used = after_modal ? "modal" : "time";
   // The series only an oblique impact's F_n (no monitor asked, no peaks of a wall, a string bed,
   // the hands or a registered part to follow): not sampled through a free flight (FreeFlightAdvance).
-  const BeamSystem &sys   = *ctx.sys;
-  const bool        peaks = sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
-                     !sys.parts.empty(); // a registered part's peaks
-  const bool       sparse = sc.oblique.on && !sc.oblique.series_asked && !peaks;
+  const bool       sparse = sc.oblique.on && !sc.oblique.series_asked && !SystemHasPeaks(*ctx.sys);
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {
-    if (ip.report_setup && ip.progress > 0 && MPI_Wtime() - last_progress >= ip.progress) { // a long single impact
-      last_progress = MPI_Wtime();
-      PetscCall(PetscPrintf(st.Comm(),
-                            "progress: t = %.4g s simulated (the run stops by %.4g s), %" PetscInt_FMT
-                            " steps, %" PetscInt_FMT " contact(s), %.0f s of wall time\n",
-                            (double)t, (double)timeline.t_stop, cost->steps + cost->event_steps, tally.contacts,
-                            last_progress - wall0));
-    }
+    PetscCall(ImpactProgressLine(st.Comm(), ip, t, timeline.t_stop, *cost, tally, wall0, &last_progress));
     const PetscReal target = std::min(timeline.t_stop, recorder.NextSnapshot()); // land exactly on both
     PetscReal       dt;
     stage.Switch(contact->phase != ContactPhase::Separated ? ImpactStage::Contact : ImpactStage::FreeFlight);

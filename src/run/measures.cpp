@@ -143,55 +143,48 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
-PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m,
-                            std::vector<PetscReal> *point_v)
+// -ts_type modal after a step: the measures in modes, O(modes), without writing the physical
+// state (O(n modes)); *done false when the stepper's state is not in modes.
+PetscErrorCode MeasureInModes(Stepper &stepper, const MeasureContext &ctx, PetscInt G, std::vector<PetscReal> &sums,
+                              StateMeasures *m, std::vector<PetscReal> *point_v, bool *done)
 {
-  static const std::vector<PetscReal> none;
-  const std::vector<PetscReal>       &points = mon ? mon->velocity_at : none;
-  const BeamSystem                   &S      = *ctx.sys;
-  const PetscInt                      F      = S.fields;
-  StateView                           sv;
-
   PetscFunctionBeginUser;
-  const PetscInt np = (PetscInt)points.size();
-  const PetscInt
-    G = 5 +
-        np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
-  // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the
-  // roll's momentum, the bed's three momenta; then the registered parts' slots
-  std::vector<PetscReal> sums(G + 13 + StructurePartSlotCount(S), 0.0);
-  if (MeasuresInModes(S, ctx,
-                      mon)) { // -ts_type modal after a step: O(modes), without writing the physical state (O(n modes))
-    std::shared_ptr<const BeamModes> modes;
-    ModalState                       ms;
-    bool                             in_modes;
-    PetscCall(stepper.ModalStateUnwritten(&modes, &ms, &in_modes));
-    if (in_modes) {
-      const ModalMomenta &w     = ModalMomentaOf(modes);
-      const PetscReal    *omega = modes->B.omega.data();
-      PetscReal           T = 0, U = 0, P = 0, L = 0;
-      for (PetscInt k = 0; k < (PetscInt)ms.z.size(); ++k) {
-        T += ms.zd[k] * ms.zd[k];
-        U += omega[k] * omega[k] * ms.z[k] * ms.z[k];
-        P += w.momentum[k] * ms.zd[k];
-        L += w.moment[k] * ms.zd[k];
-      }
-      sums[0] = 0.5 * T, sums[1] = 0.5 * U, sums[2] = P, sums[3] = L;
-      m->ball_y = ms.ball_y;
-      m->ball_v = ms.ball_v;
-      PetscCall(MeasuresFinish(stepper, ctx, G, sums, 0.0, m, point_v)); // the same on every rank: no reduction
-      PetscFunctionReturn(0);
+  *done = false;
+  std::shared_ptr<const BeamModes> modes;
+  ModalState                       ms;
+  bool                             in_modes;
+  PetscCall(stepper.ModalStateUnwritten(&modes, &ms, &in_modes));
+  if (in_modes) {
+    const ModalMomenta &w     = ModalMomentaOf(modes);
+    const PetscReal    *omega = modes->B.omega.data();
+    PetscReal           T = 0, U = 0, P = 0, L = 0;
+    for (PetscInt k = 0; k < (PetscInt)ms.z.size(); ++k) {
+      T += ms.zd[k] * ms.zd[k];
+      U += omega[k] * omega[k] * ms.z[k] * ms.z[k];
+      P += w.momentum[k] * ms.zd[k];
+      L += w.moment[k] * ms.zd[k];
     }
+    sums[0] = 0.5 * T, sums[1] = 0.5 * U, sums[2] = P, sums[3] = L;
+    m->ball_y = ms.ball_y;
+    m->ball_v = ms.ball_v;
+    PetscCall(MeasuresFinish(stepper, ctx, G, sums, 0.0, m, point_v)); // the same on every rank: no reduction
+    *done = true;
   }
-  PetscCall(stepper.ViewBegin(&sv));
-  ForceState fs;
+  PetscFunctionReturn(0);
+}
+
+// The owned dofs' kinetic energy, the force operator's stored energy and frame terms, the parts'
+// energies and the wall's share of the compression (sums[0], sums[1], sums[G ... G + 8]).
+void MeasureEnergies(const BeamSystem &S, const MeasureContext &ctx, const StateView &sv, PetscReal t, PetscInt G,
+                     std::vector<PetscReal> &sums)
+{
+  const PetscInt F = S.fields;
+  ForceState     fs;
   fs.y     = sv.y;
   fs.ys    = sv.y_stride;
   fs.v     = sv.v;
   fs.vs    = sv.v_stride;
-  fs.t     = stepper.Time();
+  fs.t     = t;
   fs.frame = ctx.frame;
   sums[0]  = BeamSystemKineticEnergy(S, sv.v, sv.v_stride, sv.d0, sv.d1);
   ForceOperatorEnergy(S, fs, sv.d0, sv.d1, &sums[1], &sums[G]);
@@ -209,7 +202,14 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     const PetscInt d = ctx.g->dof[q];
     if (S.Wall(d % F) && d >= sv.d0 && d < sv.d1) sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
   }
-  // The deflections (the beam's field 0 and a string bed's) and the rotations of the owned nodes.
+}
+
+// The owned nodes' momenta (the deflections, the beam's field 0 and a string bed's, and the
+// rotations) into sums[2], sums[3], the roll's and the bed's, then the registered parts'; returns
+// the bed's largest deflection from the frame on this rank (0 without a bed).
+PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, std::vector<PetscReal> &sums)
+{
+  const PetscInt F   = S.fields;
   auto           vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
   const PetscInt n0 = sv.d0 / F, n1 = sv.d1 / F;
   PetscReal      bed_max = 0;
@@ -233,6 +233,16 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     }
   }
   if (!S.parts.empty()) PartsMeasure(S, sv, &sums[2], &sums[3], &sums[G + 13]);
+  return bed_max;
+}
+
+// The kinetic energy of -monitor_segment's sections (sums[4]) and the velocities at
+// -monitor_velocity_at's points (sums[5 ...]) on the owned nodes.
+void MeasureSegmentAndPoints(const BeamSystem &S, const StateView &sv, const MonitorRequest *mon,
+                             const std::vector<PetscReal> &points, std::vector<PetscReal> &sums)
+{
+  const PetscInt F = S.fields, np = (PetscInt)points.size(), n0 = sv.d0 / F, n1 = sv.d1 / F;
+  auto           vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
   if (mon && mon->segment) { // the frame's sections in [x0, x1]: every field of theirs (the deflections, a Timoshenko
                              // section's spin, the roll, a shell's wall) but a string bed's
     const PetscReal tol = 1e-9 * S.h;
@@ -251,6 +261,35 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
     if (st.j >= n0 && st.j < n1) sums[5 + q] += st.w * vel(st.j);
     if (st.j + 1 >= n0 && st.j + 1 < n1) sums[5 + q] += (1 - st.w) * vel(st.j + 1);
   }
+}
+
+} // namespace
+
+PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m,
+                            std::vector<PetscReal> *point_v)
+{
+  static const std::vector<PetscReal> none;
+  const std::vector<PetscReal>       &points = mon ? mon->velocity_at : none;
+  const BeamSystem                   &S      = *ctx.sys;
+  StateView                           sv;
+
+  PetscFunctionBeginUser;
+  const PetscInt np = (PetscInt)points.size();
+  const PetscInt
+    G = 5 +
+        np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
+  // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the
+  // roll's momentum, the bed's three momenta; then the registered parts' slots
+  std::vector<PetscReal> sums(G + 13 + StructurePartSlotCount(S), 0.0);
+  if (MeasuresInModes(S, ctx, mon)) { // -ts_type modal after a step
+    bool done;
+    PetscCall(MeasureInModes(stepper, ctx, G, sums, m, point_v, &done));
+    if (done) PetscFunctionReturn(0);
+  }
+  PetscCall(stepper.ViewBegin(&sv));
+  MeasureEnergies(S, ctx, sv, stepper.Time(), G, sums);
+  PetscReal bed_max = MeasureMomenta(S, sv, G, sums); // reduced in place below
+  MeasureSegmentAndPoints(S, sv, mon, points, sums);
   m->ball_y = sv.ball_y;
   m->ball_v = sv.ball_v;
   PetscCall(stepper.ViewEnd(&sv));

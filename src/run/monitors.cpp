@@ -28,6 +28,43 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
     }
 }
 
+namespace {
+
+// -monitor_ball's series at a record: the ball, its compression, force and the force's rate. At
+// a separation (the phase already Separated, the last record in contact) the rate from inside, on
+// the branch the ball left by: the force's end slope there (the linear law's k dc/dt).
+void BallSeriesAppend(const StateMeasures &m, const MeasureContext &ctx, ContactPhase last_phase, ImpactSeries *S)
+{
+  S->ball_y.push_back(m.ball_y);
+  S->ball_v.push_back(m.ball_v);
+  S->compression.push_back(m.c);
+  S->force.push_back(m.force);
+  PetscReal rate = m.force_rate;
+  if (ctx.contact->phase == ContactPhase::Separated && last_phase != ContactPhase::Separated) {
+    ContactState inside = *ctx.contact;
+    inside.phase        = last_phase;
+    rate                = ContactStiffness(*ctx.ball, inside, m.c) * m.c_rate;
+  }
+  S->force_rate.push_back(rate);
+}
+
+// -monitor_energy's series at a record (wall, bed: the system has a barrel wall, a string bed).
+void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall, bool bed, ImpactSeries *S)
+{
+  S->ball_kinetic.push_back(m.ball_kinetic);
+  S->ball_stored.push_back(m.ball_stored);
+  S->ball_dissipated.push_back(m.ball_work - m.ball_stored);
+  S->beam_kinetic.push_back(m.beam_kinetic);
+  S->beam_strain.push_back(m.beam_strain);
+  if (wall) S->shell_energy.push_back(m.shell_energy);
+  if (bed) S->bed_energy.push_back(m.bed_energy);
+  if (sys.roll_field >= 0) S->twist_energy.push_back(m.twist_energy);
+  S->total_energy.push_back(m.total());
+  if (sys.Damped()) S->beam_dissipated.push_back(m.beam_dissipated);
+}
+
+} // namespace
+
 PetscErrorCode ImpactRecorder::Record(PetscReal t)
 {
   StateMeasures          m;
@@ -66,33 +103,8 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   }
   if (!mon_.any()) PetscFunctionReturn(0);
   S.time.push_back(t);
-  if (mon_.ball) {
-    S.ball_y.push_back(m.ball_y);
-    S.ball_v.push_back(m.ball_v);
-    S.compression.push_back(m.c);
-    S.force.push_back(m.force);
-    // At a separation (the phase already Separated, the last record in contact) the rate from
-    // inside, on the branch the ball left by: the force's end slope there (the linear law's k dc/dt).
-    PetscReal rate = m.force_rate;
-    if (ctx_.contact->phase == ContactPhase::Separated && last_phase_ != ContactPhase::Separated) {
-      ContactState inside = *ctx_.contact;
-      inside.phase        = last_phase_;
-      rate                = ContactStiffness(*ctx_.ball, inside, m.c) * m.c_rate;
-    }
-    S.force_rate.push_back(rate);
-  }
-  if (mon_.energy) {
-    S.ball_kinetic.push_back(m.ball_kinetic);
-    S.ball_stored.push_back(m.ball_stored);
-    S.ball_dissipated.push_back(m.ball_work - m.ball_stored);
-    S.beam_kinetic.push_back(m.beam_kinetic);
-    S.beam_strain.push_back(m.beam_strain);
-    if (wall) S.shell_energy.push_back(m.shell_energy);
-    if (bed) S.bed_energy.push_back(m.bed_energy);
-    if (ctx_.sys->roll_field >= 0) S.twist_energy.push_back(m.twist_energy);
-    S.total_energy.push_back(m.total());
-    if (ctx_.sys->Damped()) S.beam_dissipated.push_back(m.beam_dissipated);
-  }
+  if (mon_.ball) { BallSeriesAppend(m, ctx_, last_phase_, &S); }
+  if (mon_.energy) EnergySeriesAppend(m, *ctx_.sys, wall, bed, &S);
   for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
   last_phase_ = ctx_.contact->phase;
   if (mon_.grip && ctx_.sys->Gripped()) {
