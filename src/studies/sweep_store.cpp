@@ -821,6 +821,9 @@ static void StoreCasesOnDisk(const SweepStore &S, std::set<PetscInt> *in_file, s
 // put there meanwhile), and where the rows computed that F does not hold are: in the journals in
 // F.parts (a resume reads them), in none (the journals could not be written either: those rows
 // are computed again), or that there are none (every row is in F, or no point had been computed).
+// The journals are read as they are on disk: a row another rank journaled before rank 0 received
+// it counts as kept; a point a rank is still finishing is journaled after the count (the message
+// says so: a resume may find more rows done than it says, never fewer).
 // full: the cause was a full disk (the same command resumes once there is room).
 static std::string StoreWriteLeft(const SweepStore &S, bool full)
 {
@@ -828,11 +831,8 @@ static std::string StoreWriteLeft(const SweepStore &S, bool full)
   std::set<PetscInt> in_file, in_journals;
   size_t             kept = 0, lost = 0; // rows not in F: in a journal, in none
   StoreCasesOnDisk(S, &in_file, &in_journals);
-  for (auto &kv : S.rows) {
-    if (in_file.count(kv.first)) continue;
-    if (in_journals.count(kv.first)) ++kept;
-    else ++lost;
-  }
+  for (PetscInt c : in_journals) kept += !in_file.count(c);
+  for (auto &kv : S.rows) lost += !in_file.count(kv.first) && !in_journals.count(kv.first);
   const bool        there    = ::lstat(S.output.c_str(), &st) == 0;
   const std::string left     = !there              ? "nothing was written at " + S.output
                              : S_ISREG(st.st_mode) ? S.output + " is as it was"
@@ -840,7 +840,7 @@ static std::string StoreWriteLeft(const SweepStore &S, bool full)
   const std::string again    = full ? "run the same command again once there is room"
                                     : "run the same command again once the cause is removed";
   const std::string journals = std::to_string(kept) + " row(s) not in it are kept by the journal(s) in " + S.parts +
-                               " for a resume";
+                               " for a resume (with any point a rank was finishing)";
   if (lost > 0)
     return left + "; " + std::to_string(lost) +
            " row(s) computed are neither in it nor in a journal (the journals could not be written either) and will be "
