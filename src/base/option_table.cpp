@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -187,6 +188,16 @@ const OptionModule *OptionModuleOf(const std::string &name)
   for (const OptionModule *m : Registry())
     if (m->Find(n)) return m;
   return nullptr;
+}
+
+std::string Fmt(const char *format, ...)
+{
+  char    buf[1024];
+  va_list ap;
+  va_start(ap, format);
+  std::vsnprintf(buf, sizeof buf, format, ap);
+  va_end(ap);
+  return buf;
 }
 
 std::string ShortestText(double v)

@@ -116,7 +116,10 @@ const OptionSpec                        *OptionSpecFind(const std::string &name)
 const OptionModule *OptionModuleOf(const std::string &name); // the module whose table has it; nullptr if none
 // v as the shortest text that reads back (strtod) as exactly v: "0.06", not %.17g's
 // "0.059999999999999998"; what a user would write, and the same double.
-std::string              ShortestText(double v);
+std::string ShortestText(double v);
+// printf into a std::string (a message, a summary line, an options file's header; at most 1023
+// characters).
+std::string              Fmt(const char *format, ...) __attribute__((format(printf, 1, 2)));
 std::vector<std::string> OptionNames();          // every registered name (with the dash), sorted
 std::string OptionUnit(const std::string &name); // "" when unknown or not a number; name with or without dash
 // Whether `name` (with the dash) falls under a prefix of a registered PETSc table (-ts_, -snes_, ...).

@@ -126,16 +126,6 @@ std::vector<ContactLawRecord> ContactLawRecordOf(const BallParams &b)
   return out;
 }
 
-std::string ContactLawMessage(const char *fmt, ...)
-{
-  char    buf[1024];
-  va_list ap;
-  va_start(ap, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, ap);
-  va_end(ap);
-  return buf;
-}
-
 PetscReal PowerLawWallIntegral(PetscReal p)
 {
   // B(1/p, 1/2) / p with B(a, b) = Gamma(a) Gamma(b) / Gamma(a + b), through lgamma (finite for any p >= 1).

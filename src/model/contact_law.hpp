@@ -162,11 +162,10 @@ int ContactLawValueIndex(const ContactLaw &law, const char *name);
 std::vector<ContactLawRecord> ContactLawRecordOf(const BallParams &b);
 
 // For the laws' files: the odd power sgn(c)|c|^p and its even antiderivative |c|^(p+1)/(p+1),
-// a message formatted like printf, and I(p) = integral_0^1 ds / sqrt(1 - s^p) = B(1/p, 1/2) / p
+// and I(p) = integral_0^1 ds / sqrt(1 - s^p) = B(1/p, 1/2) / p
 // (a power-law ball's wall times: t_load = (c_max/v) I(p+1)).
 inline PetscReal ContactOddPow(PetscReal c, PetscReal p) { return std::copysign(std::pow(std::abs(c), p), c); }
 inline PetscReal ContactPowAntiderivative(PetscReal c, PetscReal p) { return std::pow(std::abs(c), p + 1) / (p + 1); }
-std::string      ContactLawMessage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 PetscReal        PowerLawWallIntegral(PetscReal p);
 
 } // namespace beamimpact

@@ -142,16 +142,6 @@ PetscErrorCode ToVec(const std::vector<double> &v, Vec x)
   PetscFunctionReturn(0);
 }
 
-std::string Fmt(const char *format, ...)
-{
-  char    buf[1024];
-  va_list ap;
-  va_start(ap, format);
-  std::vsnprintf(buf, sizeof buf, format, ap);
-  va_end(ap);
-  return buf;
-}
-
 std::string UnitText(const std::string &unit) { return unit.empty() || unit == "1" ? "" : " " + unit; }
 
 PetscErrorCode StudyOptionsCheckUnused(MPI_Comm comm)

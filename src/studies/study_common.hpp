@@ -50,9 +50,6 @@ PetscErrorCode StudyOptionsCheckUnused(MPI_Comm comm);
 std::vector<double> FromVec(Vec x);
 PetscErrorCode      ToVec(const std::vector<double> &v, Vec x);
 
-// printf into a std::string (a summary line, an options file's header; at most 1023 characters).
-std::string Fmt(const char *format, ...) __attribute__((format(printf, 1, 2)));
-
 // A unit as it follows a number in a line: " m/s", nothing for "" or "1".
 std::string UnitText(const std::string &unit);
 

@@ -194,9 +194,9 @@ int CharacterisationConflict(const ContactLawInput &in, std::string *why)
     return PETSC_ERR_ARG_INCOMP;
   }
   if (set_tau != set_vt) {
-    *why = ContactLawMessage("%s needs %s: the contact time is measured at a test speed (k1 follows from the two)",
-                             set_tau ? "-ball_contact_time" : "-ball_test_speed",
-                             set_tau ? "-ball_test_speed" : "-ball_contact_time");
+    *why = Fmt("%s needs %s: the contact time is measured at a test speed (k1 follows from the two)",
+               set_tau ? "-ball_contact_time" : "-ball_test_speed",
+               set_tau ? "-ball_test_speed" : "-ball_contact_time");
     return PETSC_ERR_ARG_INCOMP;
   }
   return 0;
@@ -222,16 +222,16 @@ int HysteresisLaw::Configure(const ContactLawInput &in, BallParams *b, std::stri
     cor = WallCor(*b, vt);
     k1  = BallK1FromContactTime(b->mass, m, cor, tau, vt);
     if (!(std::isfinite(k1) && k1 > 0)) {
-      *why = ContactLawMessage("-ball_contact_time %g s at -ball_test_speed %g m/s gives k1 = %g N/m^m, which is not a "
-                               "usable number: check the contact time, the speed and -ball_m %g",
-                               (double)tau, (double)vt, (double)k1, (double)m);
+      *why = Fmt("-ball_contact_time %g s at -ball_test_speed %g m/s gives k1 = %g N/m^m, which is not a "
+                 "usable number: check the contact time, the speed and -ball_m %g",
+                 (double)tau, (double)vt, (double)k1, (double)m);
       return PETSC_ERR_ARG_OUTOFRANGE;
     }
   }
   if (!(n >= m)) {
-    *why = ContactLawMessage("-ball_n %g is not allowed: the unloading exponent must be >= m = %g (energy can only be "
-                             "lost)",
-                             (double)n, (double)m);
+    *why = Fmt("-ball_n %g is not allowed: the unloading exponent must be >= m = %g (energy can only be "
+               "lost)",
+               (double)n, (double)m);
     return PETSC_ERR_ARG_OUTOFRANGE;
   }
   return 0;

@@ -121,29 +121,25 @@ const OptionModule &AbsorberOptions()
 // The refusal of -absorber's values, naming them: "" when they are allowed on this beam.
 std::string AbsorberRefusal(const std::vector<PetscReal> &v, const BeamParams &beam)
 {
-  char head[160], why[320] = "";
-  std::snprintf(head, sizeof head, "-absorber %s is not allowed", OptionWritten("-absorber").c_str());
   const PetscReal x = v[0], m = v[1], f = v[2], zeta = v[3];
+  std::string     why;
   if (!(x >= 0 && x <= beam.length))
-    std::snprintf(why, sizeof why, "its x_a = %g m is off the beam: it must be in [0, %g] m (-beam_length)", (double)x,
-                  (double)beam.length);
-  else if (!(m > 0)) std::snprintf(why, sizeof why, "its mass m_a = %g kg must be > 0", (double)m);
-  else if (!(f > 0)) std::snprintf(why, sizeof why, "its frequency f_a = %g Hz must be > 0", (double)f);
-  else if (!(zeta >= 0)) std::snprintf(why, sizeof why, "its damping ratio zeta = %g must be >= 0", (double)zeta);
-  else if (beam.strings.Held())
-    std::snprintf(why, sizeof why, "a held string bed (-strings_frame held) has no frame to attach it to");
+    why = Fmt("its x_a = %g m is off the beam: it must be in [0, %g] m (-beam_length)", (double)x, (double)beam.length);
+  else if (!(m > 0)) why = Fmt("its mass m_a = %g kg must be > 0", (double)m);
+  else if (!(f > 0)) why = Fmt("its frequency f_a = %g Hz must be > 0", (double)f);
+  else if (!(zeta >= 0)) why = Fmt("its damping ratio zeta = %g must be >= 0", (double)zeta);
+  else if (beam.strings.Held()) why = "a held string bed (-strings_frame held) has no frame to attach it to";
   else {
     const ImpactStencil         st    = GridImpactStencil(beam.nodes, beam.length, x);
     const std::vector<NodeHold> hold  = BeamNodeHolds(beam);
     const bool                  left  = st.w > 0 && !HoldsDeflection(hold[st.j]);
     const bool                  right = st.w < 1 && !HoldsDeflection(hold[st.j + 1]);
     if (!left && !right)
-      std::snprintf(why, sizeof why,
-                    "x_a = %g m is on a held node (a support, -beam_clamp or -beam_pivot holds the deflection "
-                    "there): the absorber would not move; put it where the beam moves",
-                    (double)x);
+      why = Fmt("x_a = %g m is on a held node (a support, -beam_clamp or -beam_pivot holds the deflection there): the "
+                "absorber would not move; put it where the beam moves",
+                (double)x);
   }
-  return why[0] ? std::string(head) + ": " + why : "";
+  return why.empty() ? "" : "-absorber " + OptionWritten("-absorber") + " is not allowed: " + why;
 }
 
 std::string AbsorberSummary(const PartParams &q, const std::vector<double> &c)
