@@ -423,10 +423,11 @@ PetscErrorCode ImpactProgressLine(MPI_Comm comm, const ImpactParams &ip, PetscRe
 }
 
 // Whether the recorder follows peaks of a part of the structure (a wall, a string bed, the hands
-// or a registered part): then the series are sampled through a free flight.
+// or a registered part's measures): then the series are sampled through a free flight.
 bool SystemHasPeaks(const BeamSystem &sys)
 {
-  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() || !sys.parts.empty();
+  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
+         StructurePartSlotCount(sys) > 0;
 }
 
 // Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
