@@ -20,7 +20,7 @@ cd "$(dirname "$0")/.." || exit 2
 rm -rf "$dir" && mkdir -p "$dir"
 
 help=$("$exe" -help 2>&1)
-laws=$(sed -nE 's/^  -ball_law <.*\(choose one of\) (.*) \(\)$/\1/p' <<<"$help")
+laws=$(sed -nE 's/^  -ball_law <.*\(choose one of\) (.*) \(docs\/options\.md\)$/\1/p' <<<"$help")
 [[ $laws == *linear* && $laws == *hysteresis* ]] && pass "-help lists the laws: $laws" || fail "-help: -ball_law choices '$laws'"
 for opt in -ball_k -ball_k1 -ball_m -ball_n -ball_cor -ball_contact_time -ball_test_speed -ball_cor_table; do
   grep -qE -- "^  $opt <" <<<"$help" || fail "-help does not list $opt"
