@@ -1030,7 +1030,6 @@ PetscErrorCode TSStepperCreate(const StepperProblem &p, const TSStepperSettings 
   P.frame             = p.frame;
   P.g                 = p.g;
   P.ball              = ball;
-  P.approach          = scales.speed;
   P.truncation        = p.truncation;
   P.contact           = p.contact;
   P.form              = FormulationOfType(type);
