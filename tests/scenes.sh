@@ -22,7 +22,7 @@
 #   * r161-modes: the R161 bat's mass, centre of mass, fundamental and first-mode nodes against
 #     the published bat; r161-acor: e_A at 70 cm by the baseball at 40 m/s near 0.2;
 #   * racket-topspin: a forehand brushing up the ball leaves with topspin, clears the net and lands
-#     in the court;
+#     in the court; racket-spin-map: no spin without the brush, more where the mains slide farther;
 #   * waves, snapshots, the 10 mm and hysteretic sweeps, racket snapshots, animation: they run
 #     and write what the plots read (series shapes, snapshot times), with numbers in a sane range.
 # The long versions (every point, fine grids) run from scripts/run_paper.sh, not here.
@@ -311,6 +311,14 @@ if run racket-topspin 1 options/scenes/racket-topspin.opts; then
   net=$(paste <(col "$f" /series/flight_y) <(col "$f" /series/flight_z) | awk '$1 >= 11.89 && !done { print z0 + (11.89 - y0) * ($2 - z0) / ($1 - y0); done = 1 } { y0 = $1; z0 = $2 }')
   check "racket-topspin: leaves at $(col "$f" /results/launch_angle) deg with $(col "$f" /results/spin_rpm) rpm (< 0: topspin), the mains slid $(col "$f" /results/strings_slide_peak) m; crosses the net ${net} m high, lands at $(col "$f" /results/distance) m" \
     'a > 3 && a < 15 && s < -1500 && s > -4000 && p > 1e-3 && p < 1e-2 && n > 0.914 && d > 11.89 && d < 23.77' a="$(col "$f" /results/launch_angle)" s="$(col "$f" /results/spin_rpm)" p="$(col "$f" /results/strings_slide_peak)" n="${net:-0}" d="$(col "$f" /results/distance)"
+fi
+
+# --- racket-spin-map (issue 39): the brush x the mains' in-plane stiffness, 2 x 2 of its points on 2 ranks ---
+if run racket-spin-map 2 options/scenes/racket-spin-map.opts -sweep "bat_speed_face=0;16,strings_inplane_stiffness=1e4;1e6" -sweep_quiet; then
+  f="$dir/racket-spin-map.h5"
+  s="$(col "$f" /results/spin_rpm | paste -sd,)" l="$(col "$f" /results/launch_angle | paste -sd,)" p="$(col "$f" /results/strings_slide_peak | paste -sd,)"
+  check "racket-spin-map: spin $s rpm, launch $l deg, slide $p m (no brush, then 16 m/s; soft mains, then stiff): no spin without the brush, topspin with it, more where the mains slide farther" \
+    'split(s, a, ",") == 4 && split(l, b, ",") == 4 && split(p, c, ",") == 4 && a[1] < 1 && a[1] > -1 && a[2] < 1 && a[2] > -1 && b[1] < 0.01 && b[1] > -0.01 && a[4] < -1500 && a[3] < a[4] && b[3] > b[4] && c[3] > 10 * c[4]' s="$s" l="$l" p="$p"
 fi
 
 # --- strings-modes (issue 25): the string bed's modes in a held frame, on 2 ranks (the DMDA split) ---

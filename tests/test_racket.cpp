@@ -81,14 +81,27 @@ Scenario StrungRacket(PetscReal x, PetscReal z, const Extra &extra = {})
 
 using test::RunWith;
 
+// The beam with the frame's roll (G J N m^2, rho J kg m), through the roll part's own option
+// module (as -beam_torsion -beam_torsion_stiffness GJ -beam_torsion_inertia rhoJ would).
+BeamParams WithRoll(BeamParams p, PetscReal GJ, PetscReal rhoJ)
+{
+  const StructurePart *part = StructurePartFind("roll");
+  EXPECT_NE(part, nullptr) << "the roll is a registered structure part";
+  PartOptionValues v;
+  v.given["-beam_torsion"]           = {1};
+  v.given["-beam_torsion_stiffness"] = {GJ};
+  v.given["-beam_torsion_inertia"]   = {rhoJ};
+  std::shared_ptr<const PartParams> q;
+  std::string                       why;
+  EXPECT_TRUE(part->Configure(v, p, &q, &why)) << why;
+  p.parts.Set("roll", q);
+  return p;
+}
+
 // The aluminium strip of 1.1 m that twists: G J = 50 N m^2, rho J = 1e-4 kg m.
 BeamParams Shaft(PetscInt nodes, Support left = Support::Free)
 {
-  BeamParams p        = test::AluminiumBeam(1.1, nodes, left, Support::Free);
-  p.torsion.on        = true;
-  p.torsion.stiffness = 50;
-  p.torsion.inertia   = 1e-4;
-  return p;
+  return WithRoll(test::AluminiumBeam(1.1, nodes, left, Support::Free), 50, 1e-4);
 }
 
 const Extra kCn = {{"-ts_type", "cn"}, {"-ts_dt", "2e-5"}, {"-ts_adapt_type", "none"}};
@@ -113,6 +126,52 @@ TEST(Twist, FreeShaftFrequenciesOrderTwo)
     EXPECT_LT(std::abs(err[1][n]), 2e-3) << "mode " << n + 1;
     EXPECT_NEAR(err[0][n] / err[1][n], 4.0, 0.05) << "mode " << n + 1;
   }
+}
+
+// The frame's roll is a registered structure part (system/parts/roll.cpp): -beam_torsion through
+// its own option module gives the part, and the system, the rigid body and the coupling get the
+// roll from it alone. On the strip (G J 50 N m^2, rho J 1e-4 kg m, L 1.1 m): a rigid roll at
+// omega carries the roll momentum rho J L omega and the twist's kinetic energy rho J L omega^2/2
+// (lumped masses integrate a constant exactly), a uniform twist phi = a x stores G J a^2 L/2, the
+// rigid body's roll inertia is rho J L, and a point z off the axis couples through the roll with
+// the hat weights times z. Without the part none of it is there.
+TEST(RollPart, RegistryGivesTheFramesRoll)
+{
+  const PetscReal GJ = 50, rhoJ = 1e-4, L = 1.1, omega = 3, a = 0.7, z = 0.02, x = 0.4;
+  ASSERT_NE(StructurePartFind("roll"), nullptr);
+  const BeamParams p = Shaft(41), bare = test::AluminiumBeam(1.1, 41, Support::Free, Support::Free);
+  EXPECT_TRUE(p.parts.Rolls());
+  EXPECT_FALSE(bare.parts.Rolls());
+  const BeamSystem sys = SystemOf(p), plain = SystemOf(bare);
+  const PetscInt   F = sys.fields, phi = sys.RollField();
+  ASSERT_EQ(phi, sys.beam_fields) << "the roll's field comes right after the theory's";
+  EXPECT_EQ(F, plain.fields + 1);
+  EXPECT_EQ(plain.RollField(), -1);
+  EXPECT_STREQ(BeamSystemPartWords(sys, sys.Dof(5, phi)), "the frame's roll");
+
+  const std::vector<PetscReal> v = BeamSystemRigidVelocity(sys, 0, 0, omega), y0(sys.ndof, 0.0);
+  PetscReal                    r = 0, p_y = 0;
+  for (PetscInt i = 0; i < sys.nodes; ++i) r += sys.mass[sys.Dof(i, phi)] * v[sys.Dof(i, phi)], p_y += v[sys.Dof(i)];
+  EXPECT_NEAR(r, rhoJ * L * omega, 1e-12 * rhoJ * L * omega);
+  EXPECT_EQ(p_y, 0.0) << "a roll about the axis does not move the axis";
+  PetscReal stored[kParts], kinetic[kParts];
+  BeamSystemPartEnergies(sys, y0.data(), F, v.data(), F, 0, sys.ndof, stored, kinetic);
+  EXPECT_NEAR(kinetic[(int)Part::Twist], 0.5 * rhoJ * L * omega * omega, 1e-12);
+  EXPECT_EQ(kinetic[(int)Part::Beam], 0.0);
+  std::vector<PetscReal> twist(sys.ndof, 0.0);
+  for (PetscInt i = 0; i < sys.nodes; ++i) twist[sys.Dof(i, phi)] = a * sys.NodeX(i);
+  BeamSystemPartEnergies(sys, twist.data(), F, y0.data(), F, 0, sys.ndof, stored, kinetic);
+  EXPECT_NEAR(stored[(int)Part::Twist], 0.5 * GJ * a * a * L, 1e-12 * GJ * a * a * L);
+
+  EXPECT_NEAR(BeamRigidBodyOf(p).inertia_roll, rhoJ * L, 1e-15);
+  EXPECT_EQ(BeamRigidBodyOf(bare).inertia_roll, 0.0);
+
+  const ContactCoupling g = BeamSystemCoupling(sys, x, z), g0 = BeamSystemCoupling(plain, x, z);
+  const ImpactStencil   st = GridImpactStencil(sys.nodes, L, x);
+  ASSERT_EQ(g.n, 4);
+  EXPECT_EQ(g0.n, 2) << "without the roll a point off the axis couples as on it";
+  EXPECT_EQ(g.WeightOf(sys.Dof(st.j, phi)), st.w * z);
+  EXPECT_EQ(g.WeightOf(sys.Dof(st.j + 1, phi)), (1 - st.w) * z);
 }
 
 // A clamped end holds the roll: no rigid roll, the quarter-wave modes (2n - 1)/(4L) sqrt(GJ/rhoJ).

@@ -188,11 +188,6 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                           "energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
                           (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak,
                           (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
-  if (sc.beam.torsion.on && ResultNoHeldDof(sc) && sc.ball.speed > 0)
-    PetscCall(PetscPrintf(comm,
-                          "roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of E_in; its twist "
-                          "and spin hold %.4e J at the end\n",
-                          (double)r.roll_rate_end, (double)r.roll_fraction, (double)r.twist_energy_end));
   if (sc.beam.grip.on)
     PetscCall(PetscPrintf(comm,
                           "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end "
@@ -217,6 +212,7 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
     if (!q) continue;
     std::vector<double> values;
     for (const PartColumn &c : part->Columns()) values.push_back(ImpactResultColumn(c.name)->Get(r));
+    for (const char *name : part->SummaryColumns()) values.push_back(ImpactResultColumn(name)->Get(r));
     const std::string line = part->Summary(*q, values);
     if (!line.empty()) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   }
@@ -244,7 +240,9 @@ PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
                         SectionSourceName(beam.section.source), beam.section.file.empty() ? "" : " ",
                         beam.section.file.c_str(), (double)b.mass, (double)b.x_cm, (double)b.inertia_cm,
                         (double)b.inertia_end));
-  if (beam.torsion.on) PetscCall(PetscPrintf(comm, ", %.6f kg m^2 about its axis", (double)b.inertia_roll));
+  for (const StructurePart *part : StructureParts()) // each registered part present: its words on the body
+    if (const PartParams *q = beam.parts.Find(part->Name()))
+      PetscCall(PetscPrintf(comm, "%s", part->Describe(*q, b).c_str()));
   PetscCall(PetscPrintf(comm, "\n"));
   PetscFunctionReturn(0);
 }

@@ -243,6 +243,10 @@ std::string OptionWritten(const char *name)
 
 namespace {
 
+// PETSc's -help prints each option's manual page in parentheses after its help: ours is the
+// generated reference of every option (its units, defaults and what each needs).
+constexpr const char *kHelpWhere = "docs/options.md";
+
 // One condition of a row's `needs`: "-other" (that option given), "-other=value" or
 // "-other!=value" (its value as used; a number compared as a number: "-impact_offset!=0").
 struct NeedCondition {
@@ -449,7 +453,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
                "%s %s is not allowed: it must be a number; %s", name, written.c_str(), s->Allowed().c_str());
     PetscCall(CheckReal(*s, written, v));
   }
-  PetscCall(PetscOptionsReal(name, HelpForPetsc(PetscOptionsObject, *s).c_str(), "", *value, value, &given));
+  PetscCall(PetscOptionsReal(name, HelpForPetsc(PetscOptionsObject, *s).c_str(), kHelpWhere, *value, value, &given));
   if (given) *value = v; // PETSc's parse agrees; the checked value is the one kept
   LogNumber(*s, *value, given);
   if (set) *set = given;
@@ -480,7 +484,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
     std::snprintf(digits, sizeof digits, "%lld", (long long)v);
     if (written != digits) PetscCall(PetscOptionsSetValue(NULL, name, digits));
   }
-  PetscCall(PetscOptionsInt(name, HelpForPetsc(PetscOptionsObject, *s).c_str(), "", *value, value, &given));
+  PetscCall(PetscOptionsInt(name, HelpForPetsc(PetscOptionsObject, *s).c_str(), kHelpWhere, *value, value, &given));
   Log(*s, std::to_string((long long)*value), (double)*value, {}, given);
   if (set) *set = given;
   PetscFunctionReturn(0);
@@ -494,7 +498,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
 
   PetscFunctionBeginUser;
   PetscCall(Row(m, name, OptionKind::Bool, &s));
-  PetscCall(PetscOptionsBool(name, s->help.c_str(), "", *value, value, &given));
+  PetscCall(PetscOptionsBool(name, s->help.c_str(), kHelpWhere, *value, value, &given));
   Log(*s, *value ? "true" : "false", *value ? 1.0 : 0.0, {}, given);
   if (set) *set = given;
   PetscFunctionReturn(0);
@@ -517,8 +521,8 @@ PetscErrorCode OptionsReadChoice(PetscOptionItems *PetscOptionsObject, const Opt
   }
   std::vector<const char *> list;
   for (const std::string &c : s->choices) list.push_back(c.c_str());
-  PetscCall(
-    PetscOptionsEList(name, s->help.c_str(), "", list.data(), (PetscInt)list.size(), list[*index], index, &given));
+  PetscCall(PetscOptionsEList(name, s->help.c_str(), kHelpWhere, list.data(), (PetscInt)list.size(), list[*index],
+                              index, &given));
   Log(*s, s->choices[*index], (double)*index, {}, given);
   if (set) *set = given;
   PetscFunctionReturn(0);
@@ -543,7 +547,7 @@ PetscErrorCode OptionsRead(PetscOptionItems *PetscOptionsObject, const OptionMod
   std::vector<char> buf(std::max<size_t>(PETSC_MAX_PATH_LEN, OptionWritten(name).size() + 1) + 1,
                         0); // a long text (a sweep's axes) is read whole
   std::snprintf(buf.data(), buf.size(), "%s", value->c_str());
-  PetscCall(PetscOptionsString(name, s->help.c_str(), "", buf.data(), buf.data(), buf.size(), &given));
+  PetscCall(PetscOptionsString(name, s->help.c_str(), kHelpWhere, buf.data(), buf.data(), buf.size(), &given));
   if (given) {
     const std::string written = OptionWritten(name);
     PetscCheck(written.size() < buf.size() - 1, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,

@@ -9,7 +9,6 @@
 #include "model/barrel.hpp"
 #include "model/beam_theory.hpp"
 #include "model/shell.hpp"
-#include "model/torsion.hpp"
 #include "system/structure_part.hpp"
 
 #include <algorithm>
@@ -132,22 +131,6 @@ const OptionModule &BeamOptionTable()
                              "barrel wall (a hollow bat)",
                              "", AtLeast(1e-4)),
                   {"-beam_profile|-bat_length"}),
-      OptionNeeds(OptionFlag("-beam_torsion", "The frame's twist about its own axis: one more field per node, the roll "
-                                              "phi (G J phi'^2/2 per length, rho J per length), so that a hit off the "
-                                              "axis (-impact_z) rolls it (a racket's head; docs/model.md section 16; "
-                                              "not with -strings_frame held: the frame is held)"),
-                  {"-strings_frame=none|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-beam_torsion_stiffness", "N m^2",
-                             "Torsional stiffness G J of a uniform section (default: the section's: a round profile's "
-                             "G pi (D^4 - d^4)/32, a seven-column -beam_properties' GJ)",
-                             "", Positive()),
-                  {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-beam_torsion_inertia", "kg m",
-                             "Polar mass moment per length rho J of a uniform section about its axis (default: the "
-                             "section's: a round profile's rho pi (D^4 - d^4)/32, a seven-column -beam_properties' "
-                             "rhoJ)",
-                             "", Positive()),
-                  {"-beam_torsion", "-strings_frame=none|-strings_frame=beam"}),
       OptionReal("-barrel_hoop_frequency", "Hz",
                  "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the "
                  "ball at the impact point (with -barrel_hoop_mass); a hollow barrel's: needs -beam_profile with inner "
@@ -251,13 +234,6 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_contact_radius", &p->shell.contact_radius, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_youngs_modulus", &p->shell.youngs_modulus, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_wall_thickness", &o->wall, &o->setwall));
-  {
-    PetscBool torsion = PETSC_FALSE;
-    PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_torsion", &torsion, NULL));
-    PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_torsion_stiffness", &p->torsion.stiffness, NULL));
-    PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_torsion_inertia", &p->torsion.inertia, NULL));
-    p->torsion.on = torsion;
-  }
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();
@@ -651,11 +627,6 @@ PetscErrorCode GripCheck(MPI_Comm comm, const BeamParams &p)
              "-grip_torsion_stiffness %g is not allowed: it must be >= 0 (N m/rad per m)", (double)g.torsion_stiffness);
   PetscCheck(g.torsion_damping >= 0 && std::isfinite(g.torsion_damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-grip_torsion_damping %g is not allowed: it must be >= 0 (N m s/rad per m)", (double)g.torsion_damping);
-  PetscCheck(p.torsion.on || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm, PETSC_ERR_ARG_INCOMP,
-             "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion "
-             "gives it",
-             g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping",
-             (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
   const std::string end = HeldEnd(p, HoldsAnything);
   PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with %s is not allowed: the hands hold a free bat",
              (double)g.x_a, (double)g.x_b, end.c_str());
@@ -712,22 +683,22 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   PetscFunctionReturn(0);
 }
 
-// -beam_torsion: G J and rho J > 0 over the whole beam, from the uniform options or the section.
-PetscErrorCode TorsionCheck(MPI_Comm comm, const BeamParams &p)
+// What needs the frame's roll (a part that rolls, PartParams::Rolls: -beam_torsion), checked once
+// the parts are read: the hands' hold on it, a string bed on the frame.
+PetscErrorCode RollNeedsCheck(MPI_Comm comm, const BeamParams &p)
 {
+  const BeamGrip &g = p.grip;
+
   PetscFunctionBeginUser;
-  if (!p.torsion.on) PetscFunctionReturn(0);
-  const PetscInt n = 64;
-  for (PetscInt k = 0; k < n; ++k) {
-    PetscReal GJ, rhoJ;
-    TorsionSectionMean(p, k * p.length / n, (k + 1) * p.length / n, &GJ, &rhoJ);
-    PetscCheck(GJ > 0 && std::isfinite(GJ) && rhoJ > 0 && std::isfinite(rhoJ), comm, PETSC_ERR_ARG_WRONG,
-               "-beam_torsion needs the section's G J and rho J: give -beam_torsion_stiffness (N m^2) and "
-               "-beam_torsion_inertia (kg m), or a round -beam_profile, or a seven-column -beam_properties 'x EI mu "
-               "kappaGA rhoI GJ rhoJ' (%s gives G J = %g, rho J = %g near x = %g m)",
-               p.section.source == SectionSource::Uniform ? "the uniform section" : p.section.file.c_str(), (double)GJ,
-               (double)rhoJ, (double)((k + 0.5) * p.length / n));
-  }
+  PetscCheck(!g.on || p.parts.Rolls() || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm,
+             PETSC_ERR_ARG_INCOMP,
+             "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion "
+             "gives it",
+             g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping",
+             (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
+  PetscCheck(!p.strings.On() || p.strings.Held() || p.parts.Rolls(), comm, PETSC_ERR_ARG_WRONG,
+             "-strings_frame beam needs the frame's roll: give -beam_torsion (with its G J and rho J) so that the head "
+             "can roll under an off-centre hit");
   PetscFunctionReturn(0);
 }
 
@@ -766,8 +737,7 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, 
     p->has_clamp = true;
     p->clamp_x0 = 0, p->clamp_x1 = p->length;
     s.head_center = 0.5 * s.head_length;
-    p->section    = BeamSection(); // a held frame's section and roll are never used
-    p->torsion    = BeamTorsion();
+    p->section    = BeamSection(); // a held frame's section (and roll: the part is absent) are never used
     PetscFunctionReturn(0);
   }
   const PetscReal a = 0.5 * s.head_length, h = p->length / (p->nodes - 1);
@@ -776,9 +746,6 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, 
              "inside the beam, 0 < x < L",
              (double)s.head_center, (double)s.head_length, (double)p->length, (double)(s.head_center - a),
              (double)(s.head_center + a));
-  PetscCheck(p->torsion.on, comm, PETSC_ERR_ARG_WRONG,
-             "-strings_frame beam needs the frame's roll: give -beam_torsion (with its G J and rho J) so that the head "
-             "can roll under an off-centre hit");
   PetscCheck(s.head_length >= 4 * h, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-strings_frame beam: the head (-head_length %g m) spans fewer than 4 of the frame's cells (h = %g m): "
              "give more -beam_nodes",
@@ -864,7 +831,6 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
     PetscCall(BeamSectionFromRacket(comm, o, racket, p));
     PetscCall(TimoshenkoCheck(comm, o, *p));
   }
-  PetscCall(TorsionCheck(comm, *p));
   PetscCall(BeamParamsCheck(comm, *p));
   if (p->has_pivot) { // the pivot sits on a node: say where when that moves it
     const PetscReal h = p->length / (p->nodes - 1), xk = BeamPivotNode(*p) * h;
@@ -905,6 +871,7 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
     }
   }
   PetscCall(StructurePartsFromOptions(comm, p)); // on the beam as held (the pivot on its node)
+  PetscCall(RollNeedsCheck(comm, *p));
   PetscFunctionReturn(0);
 }
 

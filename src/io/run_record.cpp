@@ -142,11 +142,12 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_thickness", beam.input.thickness);
   rec->add("beam_width", beam.input.width);
   rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
-  if (beam.torsion.on) {                                        // the frame's roll
-    rec->add("beam_torsion_stiffness", beam.torsion.stiffness); // 0: the section's
-    rec->add("beam_torsion_inertia", beam.torsion.inertia);
-    rec->add("beam_inertia_roll", body.inertia_roll);
-  }
+  for (const StructurePart *part : StructureParts()) // each registered part present: its entries
+    if (const PartParams *q = beam.parts.Find(part->Name())) {
+      std::vector<std::pair<const char *, PetscReal>> entries;
+      part->Record(*q, beam, &entries);
+      for (const auto &[name, value] : entries) rec->add(name, value);
+    }
   if (beam.strings.On()) { // a racket's string bed
     const StringBedParams &b = beam.strings;
     const Membrane         m = StringBedMembrane(b);
@@ -189,7 +190,7 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   // The values used: a derived default (-impact_window, -impact_max_time < 0) as computed.
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
   rec->add("impact_x", sc.impact.x);
-  if (sc.impact.z != 0 || sc.beam.strings.On() || sc.beam.torsion.on) rec->add("impact_z", sc.impact.z);
+  if (sc.impact.z != 0 || sc.beam.strings.On() || sc.beam.parts.Rolls()) rec->add("impact_z", sc.impact.z);
   rec->add("impact_window", times.window);
   rec->add("impact_max_time", times.max_time);
   rec->add("impact_window_default", sc.impact.window < 0 ? 1 : 0);

@@ -35,23 +35,20 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
     m.m0 = p.mu * L, m.m1 = p.mu * L * L / 2, m.m2 = p.mu * L * L * L / 3, m.j = p.rhoI * L;
   } else m = SectionMomentsOf(p.section, 0, p.length);
   if (p.theory != "timoshenko") m.j = 0; // an Euler-Bernoulli beam's sections do not spin
-  if (p.torsion.on) {                    // the sections' roll inertia: the uniform options where given
-    if (p.torsion.inertia > 0) m.roll = p.torsion.inertia * p.length;
-    else if (p.section.source == SectionSource::Uniform) m.roll = 0;
-  } else m.roll = 0;
+  m.roll = 0; // about the frame's axis: the bed's, then the rolling part's (PartParams::Rolls) added to it
   if (p.strings.On() && !p.strings.Held()) { // a string bed on the frame: sigma over the head's outline
     const PetscReal   sigma = StringBedMembrane(p.strings).sigma, c = p.strings.head_center;
     const HeadMoments h = HeadMomentsOf(p.strings);
     m.m0 += sigma * h.area, m.m1 += sigma * h.area * c, m.m2 += sigma * (h.xx + h.area * c * c);
-    if (p.torsion.on) m.roll += sigma * h.zz;
+    m.roll += sigma * h.zz;
   }
-  for (const auto &part : p.parts.present) part.second->AddRigidBody(&m);
+  for (const auto &part : p.parts.present) part.second->AddRigidBodyOn(p, &m);
   BeamRigidBody b;
   b.mass         = m.m0;
   b.x_cm         = m.m1 / m.m0;
   b.inertia_end  = m.m2 + m.j;
   b.inertia_cm   = m.m2 - m.m1 * m.m1 / m.m0 + m.j;
-  b.inertia_roll = m.roll;
+  b.inertia_roll = p.parts.Rolls() ? m.roll : 0; // nothing rolls without the roll's part
   return b;
 }
 
@@ -60,6 +57,13 @@ const PartParams *PartParamSet::Find(const char *name) const
   for (const auto &e : present)
     if (e.first == name) return e.second.get();
   return nullptr;
+}
+
+bool PartParamSet::Rolls() const
+{
+  for (const auto &e : present)
+    if (e.second->Rolls()) return true;
+  return false;
 }
 
 void PartParamSet::Set(const char *name, std::shared_ptr<const PartParams> p)

@@ -69,9 +69,9 @@ struct BarrelShell {
 
 // The frame's twist about its own axis (-beam_torsion; model/torsion.hpp): one more field per
 // node, the roll phi (rad), with G J (phi')^2/2 per length and rho J phi_t^2/2. A racket's head
-// rolls under an off-axis hit (-impact_z). Off by default.
+// rolls under an off-axis hit (-impact_z). A structure part (system/parts/roll.cpp), present in
+// BeamParams::parts with -beam_torsion.
 struct BeamTorsion {
-  bool      on        = false;
   PetscReal stiffness = 0; // N m^2, G J of a uniform section (-beam_torsion_stiffness; 0: the section's)
   PetscReal inertia   = 0; // kg m, rho J per length of a uniform section (-beam_torsion_inertia; 0: the section's)
 };
@@ -80,17 +80,26 @@ struct BeamTorsion {
 // parts, one file each in system/parts/): each part derives its struct, filled by its option
 // module; BeamParams holds those of the parts present, by the part's name. Only the part's own
 // file reads its struct; what the model needs of every part is here.
+struct BeamParams;
 struct PartParams {
   virtual ~PartParams() = default;
   // Its share of the rigid body (BeamRigidBodyOf): m0 kg, m1 kg m, m2 kg m^2 about x = 0, roll
   // kg m^2 about the frame's axis. Nothing by default.
   virtual void AddRigidBody(SectionMoments *) const { }
+  // The same with the beam at hand (a part whose share depends on the beam's sections); by default
+  // AddRigidBody's.
+  virtual void AddRigidBodyOn(const BeamParams &, SectionMoments *m) const { AddRigidBody(m); }
+  // Whether it is the frame's roll about its own axis (the roll's part): a hit off the axis
+  // (-impact_z) turns it, a rigid motion of the structure includes the roll, a string bed on the
+  // frame rolls with it and the hands may hold it (-grip_torsion_*). No by default.
+  virtual bool Rolls() const { return false; }
 };
 struct PartParamSet {
   std::vector<std::pair<std::string, std::shared_ptr<const PartParams>>> present; // in registry order
   const PartParams *Find(const char *name) const;                                 // nullptr: the part is absent
   bool              Has(const char *name) const { return Find(name) != nullptr; }
   void              Set(const char *name, std::shared_ptr<const PartParams> p); // replaces; nullptr removes
+  bool              Rolls() const; // some part present is the frame's roll (PartParams::Rolls)
 };
 
 struct BeamParams {
@@ -113,7 +122,6 @@ struct BeamParams {
   BeamGrip          grip;                        // the hands on the handle (none by default)
   BarrelHoop        hoop;                        // the barrel wall's hoop oscillator (none by default)
   BarrelShell       shell;                       // the barrel wall as a shell (none by default)
-  BeamTorsion       torsion;                     // the frame's twist (none by default)
   StringBedParams   strings;                     // a racket's string bed on the frame (-strings_frame; none by default)
   PartParamSet      parts;                       // the registered structure parts present (none by default)
   BeamMaterialInput input;

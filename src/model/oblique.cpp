@@ -698,6 +698,45 @@ PlaneTrial PlaneTry(const TangentialPlane &p, const PlaneKernels &K, PetscReal i
   return t;
 }
 
+// Whether a rigid grip (l = 0) on p takes the cubic of RigidGripForce: a plane with modes and no
+// static flexibility (a string bed's mains, a bat's plane with every mode kept). With G_r > 0 the
+// grip's force has its own dynamics (u = 0 fixes its rate): a constant force that ends u at 0.
+bool RigidGripCubic(const TangentialPlane &p) { return p.flexibility == 0 && !p.omega.empty(); }
+
+// A rigid grip's force on a plane without static flexibility. u = w - V stays 0, so u' = 0 gives
+// F_t from the state, F = -sum g (w^2 z + 2 sigma z') / (1/m_e + sum g^2), and u'' = 0 its rate;
+// the cubic Hermite from those and, at the end, u(tau) and the integral of u over the sub-step as
+// if u stayed at its start (a constant force that only ends u at 0, as with G_r > 0, makes every
+// tangential output converge at order 2 in the step whatever the integrator: docs/convergence.md).
+ForceCubic RigidGripForce(PetscReal inv_me, const TangentialPlane &p, const PlaneKernels &K, const PlaneDrift &d)
+{
+  PetscReal g2 = 0, a = 0;
+  for (size_t k = 0; k < p.omega.size(); ++k) {
+    const PetscReal g = p.gamma[k];
+    g2 += g * g, a += g * (p.omega[k] * p.omega[k] * p.z[k] + 2 * p.Sigma(k) * p.zd[k]);
+  }
+  const PetscReal den = inv_me + g2, F0 = -a / den;
+  PetscReal       b = 0;
+  for (size_t k = 0; k < p.omega.size(); ++k) {
+    const PetscReal w2 = p.omega[k] * p.omega[k], zdd = -w2 * p.z[k] - 2 * p.Sigma(k) * p.zd[k] - p.gamma[k] * F0;
+    b += p.gamma[k] * (w2 * p.zd[k] + 2 * p.Sigma(k) * zdd);
+  }
+  const PetscReal D0 = -b / den, tau = K.tau;
+  PetscReal       w = 0; // rad/s, the plane's fastest mode: within 1e-6 rad of it (a switch's bisection)
+  for (PetscReal wk : p.omega) w = std::max(w, wk); // the line from F0, D0 is exact to round-off, and
+  if (w * tau < 1e-6) return ForceCubic::Hermite(tau, F0, F0 + D0 * tau, D0, D0); // the 2 x 2 below is not
+  const PlaneTrial A = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, F0, 0, D0, 0), &d);
+  const PlaneTrial B = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 1, 0, 0), nullptr);
+  const PlaneTrial C = PlaneTry(p, K, inv_me, ForceCubic::Hermite(tau, 0, 0, 0, 1), nullptr);
+  // u(tau) = A.U + Fe B.U + De C.U = u0, its integral A.X + Fe B.X + De C.X = u0 tau (X = ws_int -
+  // disp): u keeps the start's residual u0 (a switch's, to the bisection's resolution), which a
+  // correction to 0 would turn into a force ~ u0/tau on the switch's sub-step of ~1e-15 of a step
+  const PetscReal u0  = p.ball_side - p.PointVelocity();
+  const PetscReal a11 = B.U(), a12 = C.U(), a21 = B.ws_int - B.disp, a22 = C.ws_int - C.disp;
+  const PetscReal r1 = u0 - A.U(), r2 = u0 * tau - (A.ws_int - A.disp), det = a11 * a22 - a12 * a21;
+  return ForceCubic::Hermite(tau, F0, (r1 * a22 - a12 * r2) / det, D0, (a11 * r2 - a21 * r1) / det);
+}
+
 // The force over a sub-step of length K.tau the current phase gives (F_n = Fn(s); d: the state's drift over K).
 ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const TangentialPlane &p, const PlaneKernels &K,
                       const PlaneDrift &d, const TangentialState &s, const ForceCubic &Fn)
@@ -717,7 +756,8 @@ ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const Tangenti
     const PetscReal det = a11 * a22 - a12 * a21;
     return ForceCubic::Hermite(tau, p.force, (r1 * a22 - a12 * r2) / det, D0, (a11 * r2 - a21 * r1) / det);
   }
-  // rigid grip: a constant force over the sub-step that ends it at u = 0
+  if (RigidGripCubic(p)) return RigidGripForce(inv_me, p, K, d);
+  // rigid grip with G_r > 0: a constant force over the sub-step that ends it at u = 0
   ForceCubic unit, f;
   unit.c[0] = 1;
   f.c[0]    = -PlaneTry(p, K, inv_me, ForceCubic(), &d).U() / PlaneTry(p, K, inv_me, unit, nullptr).U();
@@ -725,13 +765,18 @@ ForceCubic PhaseForce(const TangentialModel &m, PetscReal inv_me, const Tangenti
 }
 
 // Whether the current phase ends within the sub-step tried.
-bool PhaseEnds(const TangentialModel &m, const TangentialState &s, const PlaneTrial &t, const ForceCubic &f,
-               PetscReal tau, const ForceCubic &Fn)
+bool PhaseEnds(const TangentialModel &m, const TangentialPlane &p, const TangentialState &s, const PlaneTrial &t,
+               const ForceCubic &f, PetscReal tau, const ForceCubic &Fn)
 {
   const PetscReal mu = m.friction, l = m.compliance_length;
   // (margins of round-off: a slip that starts from a rigid grip starts at u = 0)
   if (s.phase == TangentialPhase::Slip) return s.slip_sign * t.U() < -1e-13 * (std::abs(t.ws) + std::abs(t.vel));
   if (l > 0) return std::abs(s.xi + t.ws_int - t.disp) > mu * l;
+  if (RigidGripCubic(p)) { // the cubic force within the cone at its ends and three points between
+    for (int i = 0; i <= 4; ++i)
+      if (std::abs(f(tau * i / 4)) > (1 + 1e-12) * mu * Fn(tau * i / 4)) return true;
+    return false;
+  }
   return std::abs(f(0)) > (1 + 1e-12) * mu * std::min(Fn(0), Fn(tau));
 }
 
@@ -800,7 +845,7 @@ void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const
     ForceCubic          f    = PhaseForce(m, inv_me, *p, K, d, *s, Fb);
     if (s->phase == TangentialPhase::Slip) p->force = f(0); // continuous into a slip: -s mu F_n
     const PlaneTrial t = PlaneTry(*p, K, inv_me, f, &d);
-    if (!PhaseEnds(m, *s, t, f, rest, Fb) || it == 15) {
+    if (!PhaseEnds(m, *p, *s, t, f, rest, Fb) || it == 15) {
       PlaneCommit(m, inv_me, K, f, t, p, s);
       return;
     }
@@ -810,7 +855,7 @@ void PlaneSubStep(const TangentialModel &m, PetscReal inv_me, PetscReal h, const
       const auto       Km  = PlaneKernelsExact(*p, mid);
       const PlaneDrift dm  = PlaneDriftOf(*p, *Km);
       f                    = PhaseForce(m, inv_me, *p, *Km, dm, *s, Fb);
-      if (PhaseEnds(m, *s, PlaneTry(*p, *Km, inv_me, f, &dm), f, mid, Fb)) hi = mid;
+      if (PhaseEnds(m, *p, *s, PlaneTry(*p, *Km, inv_me, f, &dm), f, mid, Fb)) hi = mid;
       else lo = mid;
     }
     const auto       Kh = PlaneKernelsExact(*p, hi); // the switch at exactly hi (tau += hi below)
@@ -868,9 +913,13 @@ void TangentialAdvanceFlexible(const TangentialModel &m, PetscReal t0, PetscReal
   // Sub-steps: 100 per radian of the compliant grip's fastest oscillation, at least one.
   PetscReal G = p->flexibility;
   for (PetscReal g : p->gamma) G += g * g;
+  // A rigid grip's cubic (RigidGripForce): 100 per radian of the plane's fastest mode (the ball's
+  // mass at the point only lowers the gripped plane's frequencies).
   const PetscReal l = m.compliance_length;
-  const PetscReal w = l > 0 ? std::sqrt(std::max(F0, F1) / l * (inv_me + G)) : 0;
-  const PetscInt  n = std::max<PetscInt>(1, (PetscInt)std::ceil(100 * w * h));
+  PetscReal       w = l > 0 ? std::sqrt(std::max(F0, F1) / l * (inv_me + G)) : 0;
+  if (!(l > 0) && RigidGripCubic(*p))
+    for (PetscReal wk : p->omega) w = std::max(w, wk);
+  const PetscInt n = std::max<PetscInt>(1, (PetscInt)std::ceil(100 * w * h));
   for (PetscInt k = 0; k < n; ++k) {
     const PetscReal a = h * k / n, b = h * (k + 1) / n;
     PlaneSubStep(ball, inv_me, b - a, Fn.Shift(a), p, s);

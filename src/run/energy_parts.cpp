@@ -79,7 +79,7 @@ std::vector<RigidMotion> ReportedRigidMotions(const BeamParams &beam)
   if (beam.has_pivot) pins.insert(BeamPivotNode(beam));
   if (pins.empty()) out.push_back({RigidKind::Translation, 0}), out.push_back({RigidKind::Rotation, 0});
   else if (pins.size() == 1) out.push_back({RigidKind::Rotation, *pins.begin() * beam.length / (beam.nodes - 1)});
-  if (beam.torsion.on) out.push_back({RigidKind::Roll, 0});
+  if (beam.parts.Rolls()) out.push_back({RigidKind::Roll, 0});
   return out;
 }
 

@@ -107,10 +107,11 @@ PetscErrorCode ApplyEvent(const ImpactProblem &pb, Stepper &st, ContactEventKind
 }
 
 // Whether the recorder follows peaks of a part of the structure (a wall, a string bed, the hands
-// or a registered part): then the series are sampled through a free flight.
+// or a registered part's measures): then the series are sampled through a free flight.
 bool SystemHasPeaks(const BeamSystem &sys)
 {
-  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() || !sys.parts.empty();
+  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
+         StructurePartSlotCount(sys) > 0;
 }
 
 // Whether the series is only an oblique impact's F_n (no monitor asked, no peaks of a wall, a

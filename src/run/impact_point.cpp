@@ -74,7 +74,7 @@ PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal
 PetscErrorCode ImpactAcrossCheck(MPI_Comm comm, const BeamParams &beam, PetscReal z)
 {
   PetscFunctionBeginUser;
-  PetscCheck(z == 0 || beam.torsion.on || beam.strings.On(), comm, PETSC_ERR_ARG_INCOMP,
+  PetscCheck(z == 0 || beam.parts.Rolls() || beam.strings.On(), comm, PETSC_ERR_ARG_INCOMP,
              "-impact_z %g is not allowed on a beam that cannot roll: give -beam_torsion (the frame's twist) or a "
              "string bed (-strings_frame)",
              (double)z);

@@ -62,7 +62,7 @@ const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes
 // frame's roll, a string bed): without, their sums are 0 and BeamSystemPartEnergies is not needed.
 bool SeparateParts(const BeamSystem &S)
 {
-  if (S.wall_dof >= 0 || S.shell.first >= 0 || S.roll_field >= 0 || S.bed_first >= 0) return true;
+  if (S.wall_dof >= 0 || S.shell.first >= 0 || S.bed_first >= 0) return true; // the roll: its account below
   for (PetscInt f = 0; f < S.fields; ++f)
     if (S.PartOf(f) != Part::Beam) return true;
   return false;
@@ -213,6 +213,7 @@ PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, s
   auto           vel = [&](PetscInt node) { return sv.v[node * sv.v_stride]; };
   const PetscInt n0 = sv.d0 / F, n1 = sv.d1 / F;
   PetscReal      bed_max = 0;
+  const PetscInt roll    = S.RollField();
   for (PetscInt i = n0; i < n1; ++i) {
     const PetscReal mi = S.mass[S.Dof(i)], x = S.NodeX(i);
     sums[2] += mi * vel(i);
@@ -220,9 +221,9 @@ PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, s
     if (S.Rotation(1))
       sums[3] += S.mass[S.Dof(i, 1)] *
                  sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
-    if (S.roll_field >= 0) sums[G + 9] += S.mass[S.Dof(i, S.roll_field)] * sv.v[i * sv.v_stride + S.roll_field];
+    if (roll >= 0) sums[G + 9] += S.mass[S.Dof(i, roll)] * sv.v[i * sv.v_stride + roll];
     if (S.bed_first < 0) continue;
-    const PetscReal y = sv.y[i * sv.y_stride], phi = S.roll_field >= 0 ? sv.y[i * sv.y_stride + S.roll_field] : 0.0;
+    const PetscReal y = sv.y[i * sv.y_stride], phi = roll >= 0 ? sv.y[i * sv.y_stride + roll] : 0.0;
     for (PetscInt j = 0; j < S.bed.nz; ++j) {
       const PetscInt d = S.Dof(i, S.bed_first + j);
       if (S.held[d]) continue;
@@ -232,7 +233,7 @@ PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, s
       bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + S.bed_first + j] - y - z * phi));
     }
   }
-  if (!S.parts.empty()) PartsMeasure(S, sv, &sums[2], &sums[3], &sums[G + 13]);
+  if (!S.parts.empty()) PartsMeasure(S, sv, &sums[2], &sums[3], sums.data() + G + 13); // (no slots: its end)
   return bed_max;
 }
 

@@ -167,6 +167,7 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
   std::vector<PetscReal> shape(sys.ndof, 0.0), rate(sys.ndof, 0.0);
   StateMeasures          m;
   PetscReal              p = 0, l = 0, r = 0;
+  const PetscInt         roll = sys.RollField();
   for (PetscInt d = 0; d + 1 < S.n; ++d) {
     shape[S.dof[d]]    = run.q[d];
     rate[S.dof[d]]     = run.qd[d];
@@ -179,7 +180,7 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
         m.bed_momentum += S.mass[d] * run.qd[d], m.bed_moment += S.mass[d] * sys.NodeX(node) * run.qd[d],
           m.bed_roll += S.mass[d] * sys.DofZ(dof) * run.qd[d];
     } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
-    else if (f == sys.roll_field) r += S.mass[d] * run.qd[d];
+    else if (f == roll) r += S.mass[d] * run.qd[d];
   }
   if (!sys.parts.empty()) { // the registered parts: their rigid points' momenta, their slots
     for (const RigidPoint &pt : sys.rigid_points)
@@ -206,7 +207,7 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
     for (PetscInt d = 0; d < sys.ndof; ++d) {
       const PetscInt f = d % sys.fields, i = d / sys.fields;
       if (!sys.Bed(f) || sys.held[d]) continue;
-      const PetscReal phi = sys.roll_field >= 0 ? shape[sys.Dof(i, sys.roll_field)] : 0.0;
+      const PetscReal phi = roll >= 0 ? shape[sys.Dof(i, roll)] : 0.0;
       m.bed_deflection    = std::max(m.bed_deflection, std::abs(shape[d] - shape[sys.Dof(i)] - sys.DofZ(d) * phi));
     }
   m.beam_momentum    = p;

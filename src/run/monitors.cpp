@@ -58,7 +58,7 @@ void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall
   S->beam_strain.push_back(m.beam_strain);
   if (wall) S->shell_energy.push_back(m.shell_energy);
   if (bed) S->bed_energy.push_back(m.bed_energy);
-  if (sys.roll_field >= 0) S->twist_energy.push_back(m.twist_energy);
+  if (sys.RollField() >= 0) S->twist_energy.push_back(m.twist_energy);
   S->total_energy.push_back(m.total());
   if (sys.Damped()) S->beam_dissipated.push_back(m.beam_dissipated);
 }
@@ -138,8 +138,9 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
     if (S.bed_first >=
         0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
       std::vector<PetscReal> bed((size_t)S.bed.nz * S.nodes);
+      const PetscInt         roll = S.RollField();
       for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i) {
-        const PetscReal *node = &u[(size_t)i * S.fields], phi = S.roll_field >= 0 ? node[S.roll_field] : 0.0;
+        const PetscReal *node = &u[(size_t)i * S.fields], phi = roll >= 0 ? node[roll] : 0.0;
         for (PetscInt j = 0; j < S.bed.nz; ++j)
           bed[j * S.nodes + i] = S.held[S.Dof(i, S.bed_first + j)] ? NAN
                                                                    : node[S.bed_first + j] - node[0] - S.bed.Z(j) * phi;

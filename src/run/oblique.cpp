@@ -378,7 +378,7 @@ PetscErrorCode ObliqueBedFinish(const Scenario &sc, const ImpactSeries &series, 
   TangentialBallSet(sc.ball, series, &m);
   rec->model         = m;
   rec->before.v_ball = in.ball_speed * std::sin(in.angle);
-  rec->before.spin   = -sc.ball.spin;       // counter-clockwise in (n, t), as the bat's
+  rec->before.spin   = 0 - sc.ball.spin;    // counter-clockwise in (n, t), as the bat's (0 - s: no spin is +0, not -0)
   rec->before.v_bat  = sc.swing.face_speed; // the brush; the plane moves relative to it (Galilean along t)
   const PetscReal u0 = rec->before.v_ball - m.ball_radius * rec->before.spin - rec->before.v_bat;
   rec->contact       = TangentialStart(m, u0);

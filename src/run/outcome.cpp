@@ -15,7 +15,8 @@ namespace {
 // rigid rotation of a Timoshenko beam also turns its sections (psi = theta).
 void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
 {
-  PetscReal M = 0, Mx = 0, Mxx = 0, Izz = 0;
+  PetscReal      M = 0, Mx = 0, Mxx = 0, Izz = 0;
+  const PetscInt roll = S.RollField();
   for (PetscInt d = 0; d < S.ndof; ++d) {
     if (S.held[d]) continue;
     const PetscInt  fld = d % S.fields;
@@ -23,8 +24,8 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
     if (S.Deflection(fld)) { // the beam's and a string bed's deflections
       const PetscReal z = S.DofZ(d);
       M += m, Mx += m * x, Mxx += m * x * x, Izz += m * z * z;
-    } else if (S.Rotation(fld)) Mxx += m;   // rotary inertia of a Timoshenko section
-    else if (fld == S.roll_field) Izz += m; // the sections' rho J
+    } else if (S.Rotation(fld)) Mxx += m; // rotary inertia of a Timoshenko section
+    else if (fld == roll) Izz += m;       // the sections' rho J
   }
   for (const RigidPoint &r : S.rigid_points) { // a registered part's point masses
     if (S.held[r.dof]) continue;
@@ -35,7 +36,7 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
   f->beam_mass  = M;
   f->inertia_cm = I_cm;
   f->moment_cm  = f->end.beam_moment - x_cm * f->end.beam_momentum;
-  if (S.roll_field < 0) return;
+  if (roll < 0) return;
   f->inertia_roll = Izz; // about the axis z = 0: the bed is symmetric across it, its centre of mass on the axis
   f->moment_roll  = f->end.beam_roll;
 }

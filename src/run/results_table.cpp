@@ -35,7 +35,7 @@ bool ResultBarrelWall(const Scenario &sc) { return sc.beam.hoop.on || sc.beam.sh
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
 bool ResultStringBed(const Scenario &sc) { return sc.beam.strings.On(); }
-bool ResultTwist(const Scenario &sc) { return sc.beam.torsion.on; }
+bool ResultTwist(const Scenario &sc) { return sc.beam.parts.Rolls(); }
 bool ResultTwistInvariant(const Scenario &sc) { return ResultTwist(sc) && ResultMomentumInvariant(sc); }
 bool ResultTwistNoHeld(const Scenario &sc) { return ResultTwist(sc) && ResultNoHeldDof(sc) && sc.ball.speed > 0; }
 

@@ -170,7 +170,7 @@ static std::string SpreadRemedy(const BeamSystem &sys, PetscInt dof, double fact
   char            text[400];
   const PetscInt  f = dof % sys.fields;
   const PetscReal h = sys.L / (sys.nodes - 1);
-  if (f == sys.roll_field)
+  if (f == sys.RollField())
     std::snprintf(text, sizeof text,
                   "set by the frame's roll at x = %.3g m (rho J = %.3g kg m there against its G J): raise "
                   "-beam_torsion_inertia at least %.2g times (or lower -beam_torsion_stiffness)",

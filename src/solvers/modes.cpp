@@ -291,7 +291,7 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->period.assign(count, 0.0);
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
-  const bool wall = op.wall_dof >= 0 || op.shell.first >= 0, parts = op.roll_field >= 0 || op.bed_first >= 0;
+  const bool wall = op.wall_dof >= 0 || op.shell.first >= 0, parts = op.RollField() >= 0 || op.bed_first >= 0;
   if (wall) out->shell_n.assign(count, 0);
   if (parts) out->part.assign(count, 0), out->part_share.assign(count, 0.0);
   if (parts && shapes && op.bed_first >= 0) out->bed_shape.resize(count);

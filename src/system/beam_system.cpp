@@ -4,7 +4,6 @@
 
 #include "model/barrel.hpp"
 #include "model/shell.hpp"
-#include "model/torsion.hpp"
 
 #include <petscblaslapack.h>
 
@@ -27,29 +26,33 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S             = BeamSystem();
   S.beam_fields = d.fields;
   S.field_part.assign(d.fields, Part::Beam);
-  if (p.torsion.on) S.roll_field = TorsionAppend(p, &d), S.field_part.push_back(Part::Twist);
-  if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d);
-  if (p.shell.on) {
-    S.shell                = ShellAppend(p, &d);
-    S.shell_contact_radius = std::max<PetscReal>(0, p.shell.contact_radius);
-    S.shell_radius.assign(p.nodes, 0.0);
-    for (PetscInt i = 0; i < p.nodes; ++i) {
-      PetscReal t;
-      ShellWallAt(p, p.length * i / (p.nodes - 1), &S.shell_radius[i], &t);
+  const auto older = [&](const std::vector<PartInstance> &before) { // the wall and the bed, not registered yet
+    for (const PartInstance &s : before) S.field_part.resize(s.first + s.count, s.part->Account());
+    S.parts = before; // the roll's field for the bed
+    if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d);
+    if (p.shell.on) {
+      S.shell                = ShellAppend(p, &d);
+      S.shell_contact_radius = std::max<PetscReal>(0, p.shell.contact_radius);
+      S.shell_radius.assign(p.nodes, 0.0);
+      for (PetscInt i = 0; i < p.nodes; ++i) {
+        PetscReal t;
+        ShellWallAt(p, p.length * i / (p.nodes - 1), &S.shell_radius[i], &t);
+      }
     }
-  }
-  S.field_part.resize(d.fields, Part::Wall); // the hoop's or the shell's
-  if (p.strings.On()) {
-    const BedLayout bed = StringBedAppend(p.strings, StringBedFrameGrid(p.strings, p.nodes, p.length), S.roll_field,
-                                          &d);
-    S.bed_first         = bed.first;
-    S.bed               = bed.grid;
-    S.bed_head_center   = p.strings.head_center;
-    S.bed_patch_radius  = std::max<PetscReal>(0, p.strings.patch_radius);
-    S.field_part.resize(d.fields, Part::Bed);
-  }
-  S.parts = StructurePartsBuild(p, &d); // the registered parts' fields, last
-  S.field_part.resize(d.fields, Part::Beam);
+    S.field_part.resize(d.fields, Part::Wall); // the hoop's or the shell's
+    if (p.strings.On()) {
+      const BedLayout bed = StringBedAppend(p.strings, StringBedFrameGrid(p.strings, p.nodes, p.length), S.RollField(),
+                                            &d);
+      S.bed_first         = bed.first;
+      S.bed               = bed.grid;
+      S.bed_head_center   = p.strings.head_center;
+      S.bed_patch_radius  = std::max<PetscReal>(0, p.strings.patch_radius);
+      S.field_part.resize(d.fields, Part::Bed);
+    }
+  };
+  S.parts = StructurePartsBuild(p, &d, older); // the registered parts' fields at their place
+  for (const PartInstance &s : S.parts)
+    if (s.first >= (PetscInt)S.field_part.size()) S.field_part.resize(s.first + s.count, s.part->Account());
   S.nodes          = p.nodes;
   S.fields         = d.fields;
   S.ndof           = p.nodes * d.fields;
@@ -107,8 +110,9 @@ bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
 ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
 {
   ContactCoupling g;
-  g.x = x_imp;
-  g.z = z_imp;
+  g.x                 = x_imp;
+  g.z                 = z_imp;
+  const PetscInt roll = sys.RollField(); // the bed's frame rolls with it
   if (BeamSystemOnBed(sys, x_imp,
                       z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
     for (const BedPatchNode &e : BedPatch(sys.bed, x_imp - sys.bed_head_center, z_imp, sys.bed_patch_radius)) {
@@ -119,7 +123,7 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
         continue;
       }
       if (!CouplingAdd(sys, sys.Dof(e.i), e.w, &g)) return g;
-      if (sys.roll_field >= 0 && !CouplingAdd(sys, sys.Dof(e.i, sys.roll_field), e.w * sys.bed.Z(e.j), &g)) return g;
+      if (roll >= 0 && !CouplingAdd(sys, sys.Dof(e.i, roll), e.w * sys.bed.Z(e.j), &g)) return g;
     }
     return g;
   }
@@ -129,11 +133,8 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
   g.dof[1]               = sys.Dof(st.j + 1);
   g.w[0]                 = sys.held[g.dof[0]] ? 0.0 : st.w;
   g.w[1]                 = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
-  if (sys.roll_field >= 0 && z_imp != 0.0) { // off the axis: the sections' roll times z
-    g.dof[g.n] = sys.Dof(st.j, sys.roll_field), g.w[g.n] = sys.held[g.dof[g.n]] ? 0.0 : st.w * z_imp, g.n++;
-    g.dof[g.n] = sys.Dof(st.j + 1, sys.roll_field), g.w[g.n] = sys.held[g.dof[g.n]] ? 0.0 : (1.0 - st.w) * z_imp, g.n++;
-  }
-  if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0; // the wall under the ball, in series
+  for (const PartInstance &s : sys.parts) s.part->Couple(s, sys, st, z_imp, &g); // the parts' entries (the roll's)
+  if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0;            // the wall under the ball, in series
   if (sys.shell.harmonics.empty()) return g;
   // each harmonic's W_n under the ball's patch (outward: the inward displacement is -W_n)
   const PetscReal a = sys.shell_contact_radius,
@@ -239,12 +240,13 @@ namespace {
 std::vector<PetscReal> RigidField(const BeamSystem &sys, PetscReal v0, PetscReal slope, PetscReal roll, bool holds)
 {
   std::vector<PetscReal> v(sys.ndof, 0.0);
+  const PetscInt         phi = sys.RollField();
   for (PetscInt d = 0; d < sys.ndof; ++d) {
     const PetscInt f = d % sys.fields;
     if (holds && sys.held[d]) continue;
     if (sys.Deflection(f)) v[d] = v0 + slope * sys.NodeX(d / sys.fields) + roll * sys.DofZ(d);
     else if (sys.Rotation(f)) v[d] = slope;
-    else if (f == sys.roll_field) v[d] = roll;
+    else if (f == phi) v[d] = roll;
   }
   for (const RigidPoint &r : sys.rigid_points) // a part's point deflections: the beam's motion there
     if (!(holds && sys.held[r.dof])) v[r.dof] = v0 + slope * r.x;
@@ -263,7 +265,7 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidCandidates(const BeamSystem &
   std::vector<std::vector<PetscReal>> c;
   c.push_back(RigidField(sys, 1, 0, 0, false));
   c.push_back(RigidField(sys, 0, 1.0 / sys.L, 0, false)); // scaled like the translation (a slope of 1/L)
-  if (sys.roll_field >= 0) c.push_back(RigidField(sys, 0, 0, 1.0 / sys.L, false));
+  if (sys.RollField() >= 0) c.push_back(RigidField(sys, 0, 0, 1.0 / sys.L, false));
   return c;
 }
 
@@ -371,8 +373,6 @@ const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)
   for (const PartInstance &p : sys.parts) // a registered part's fields
     if (dof % sys.fields >= p.first && dof % sys.fields < p.first + p.count) return p.part->Words();
   switch (sys.PartOf(dof % sys.fields)) {
-  case Part::Twist:
-    return "the frame's roll";
   case Part::Wall:
     return "the barrel wall";
   case Part::Bed:

@@ -41,9 +41,8 @@ struct BeamSystem {
   PetscInt    wall_dof = -1; // the hoop oscillator's dof (model/barrel.hpp), -1 without
   ShellLayout shell; // the shell's fields (-beam_shell, model/shell.hpp; first -1 without): harmonic k's W_n is field
                      // shell.WField(k)
-  PetscReal shell_contact_radius = 0;     // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
-  std::vector<PetscReal> shell_radius;    // m, the wall's midsurface radius R per node (0 where solid)
-  PetscInt               roll_field = -1; // the frame's roll phi (rad; -beam_torsion), -1 without
+  PetscReal shell_contact_radius = 0;  // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
+  std::vector<PetscReal> shell_radius; // m, the wall's midsurface radius R per node (0 where solid)
   PetscInt  bed_first = -1; // the string bed's first field (-strings_frame): field bed_first + j is w at (x_i, z_j)
   BedGrid   bed;            // the bed's grid (its columns: the nodes), with bed_first
   PetscReal bed_head_center  = 0;       // m, the head's centre along the frame
@@ -68,6 +67,14 @@ struct BeamSystem {
   PetscReal NodeX(PetscInt node) const { return node * h; }
   bool      Damped() const { return forces.damped; }
   bool      Gripped() const { return forces.Find("grip") != nullptr; }
+  // The field of the frame's roll phi (rad): the first of the part present that rolls
+  // (PartParams::Rolls, -beam_torsion); -1 without. A lookup: keep it out of per-dof loops.
+  PetscInt RollField() const
+  {
+    for (const PartInstance &s : parts)
+      if (s.params->Rolls()) return s.first;
+    return -1;
+  }
   // Whether field f is a section rotation (Timoshenko's field 1), which a rigid rotation turns.
   bool Rotation(PetscInt f) const { return f == 1 && beam_fields > 1; }
   Part PartOf(PetscInt f) const

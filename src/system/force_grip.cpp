@@ -154,10 +154,11 @@ std::shared_ptr<const ForceTerm> GripTermCreate(const BeamParams &p, BeamSystem 
     holds.push_back({i, 0, p.grip.stiffness * w[i], p.grip.damping * w[i]});
     S.mass[d] += p.grip.mass * w[i] / span; // the hands
   }
-  const bool roll = S.roll_field >= 0 && (p.grip.torsion_stiffness > 0 || p.grip.torsion_damping > 0);
+  const PetscInt phi  = S.RollField(); // the hands' hold on the frame's roll
+  const bool     roll = phi >= 0 && (p.grip.torsion_stiffness > 0 || p.grip.torsion_damping > 0);
   for (PetscInt i = 0; roll && i < S.nodes; ++i)
-    if (w[i] != 0.0 && !S.held[S.Dof(i, S.roll_field)])
-      holds.push_back({i, S.roll_field, p.grip.torsion_stiffness * w[i], p.grip.torsion_damping * w[i]});
+    if (w[i] != 0.0 && !S.held[S.Dof(i, phi)])
+      holds.push_back({i, phi, p.grip.torsion_stiffness * w[i], p.grip.torsion_damping * w[i]});
   return std::make_shared<GripTerm>(std::move(holds));
 }
 

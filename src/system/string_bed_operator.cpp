@@ -120,25 +120,25 @@ std::vector<BedPatchNode> BedPatch(const BedGrid &g, PetscReal x, PetscReal z, P
   return out;
 }
 
-BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt roll_field, BeamDiscretization *d)
+BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, BeamDiscretization *d)
 {
   const Membrane m = StringBedMembrane(p);
   const PetscInt F = d->fields, N = g.nx, G = F + g.nz;
   BedLayout      out;
   out.first = F;
   out.grid  = g;
-  out.roll  = roll_field;
+  out.roll  = phi_field;
   BeamDiscretizationWiden(d, G, m.sigma * g.hx * g.hz);
   const auto w   = [&](PetscInt i, PetscInt j) { return i * G + F + j; };
   const auto y   = [&](PetscInt i) { return i * G; };
-  const auto phi = [&](PetscInt i) { return i * G + roll_field; };
+  const auto phi = [&](PetscInt i) { return i * G + phi_field; };
   // a term over (dof, b) entries, the roll's entries left out without a roll field or when 0
   const auto term = [&](PetscInt owner, PetscReal weight, std::initializer_list<std::pair<PetscInt, PetscReal>> e,
                         std::initializer_list<std::pair<PetscInt, PetscReal>> roll) {
     StrainTerm t;
     t.owner = owner, t.weight = weight, t.part = Part::Bed;
     for (const auto &q : e) t.dof[t.n] = q.first, t.b[t.n++] = q.second;
-    if (roll_field >= 0)
+    if (phi_field >= 0)
       for (const auto &q : roll)
         if (q.second != 0.0) t.dof[t.n] = q.first, t.b[t.n++] = q.second;
     d->strain.push_back(t);
@@ -149,7 +149,7 @@ BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt r
       if (!BedNodeFree(g, i, j)) { // in the head but not an unknown: its strings' mass moves with the frame
         if (area > 0) {
           d->mass[y(i)] += m.sigma * area;
-          if (roll_field >= 0) d->mass[phi(i)] += m.sigma * area * z * z;
+          if (phi_field >= 0) d->mass[phi(i)] += m.sigma * area * z * z;
         }
         continue;
       }

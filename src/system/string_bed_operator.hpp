@@ -77,6 +77,6 @@ struct BedLayout {
   BedGrid  grid;       // its grid (columns: the beam's nodes)
   PetscInt roll = -1;  // the frame's roll field (-1: none)
 };
-BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt roll_field, BeamDiscretization *d);
+BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, BeamDiscretization *d);
 
 } // namespace beamimpact

@@ -3,19 +3,24 @@
 
 #include "system/beam_system.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace beamimpact {
 
 // The parts, one file each in system/parts/: a part is its declaration here and its line in
 // PartList, last (the order appends their fields: the dof numbering).
+const StructurePart &RollPart();     // system/parts/roll.cpp
 const StructurePart &AbsorberPart(); // system/parts/absorber.cpp
 
 namespace {
 
+// nullptr: the place of the parts BeamSystemBuild still builds itself (the wall, the bed).
 std::vector<const StructurePart *> PartList()
 {
   std::vector<const StructurePart *> v;
+  v.push_back(&RollPart());
+  v.push_back(nullptr);
   v.push_back(&AbsorberPart());
   return v;
 }
@@ -25,8 +30,9 @@ std::vector<const StructurePart *> PartList()
 const std::vector<const StructurePart *> &StructureParts()
 {
   static const std::vector<const StructurePart *> parts = [] {
-    const std::vector<const StructurePart *> v     = PartList();
-    size_t                                   slots = 0; // every part present at once must fit the fixed slots
+    std::vector<const StructurePart *> v = PartList();
+    v.erase(std::remove(v.begin(), v.end(), nullptr), v.end());
+    size_t slots = 0; // every part present at once must fit the fixed slots
     for (const StructurePart *p : v) slots += p->Slots().size();
     PetscCheckAbort(slots <= (size_t)kMaxPartSlots, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                     "the structure parts declare %zu measure slots, more than kMaxPartSlots = %d", slots,
@@ -43,10 +49,15 @@ const StructurePart *StructurePartFind(const char *name)
   return nullptr;
 }
 
-std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d)
+std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d,
+                                              const std::function<void(const std::vector<PartInstance> &)> &older)
 {
   std::vector<PartInstance> out;
-  for (const StructurePart *part : StructureParts()) {
+  for (const StructurePart *part : PartList()) {
+    if (!part) {
+      older(out);
+      continue;
+    }
     const PartParams *q = p.parts.Find(part->Name());
     if (!q) continue;
     PartInstance s;

@@ -6,8 +6,10 @@
 // its measures of a state and the results columns, series and summary line computed from them.
 // The system's build, the options' reader, the measures, the recorder, the outcome, the results
 // table, the run record, -help and the summary loop over the registered parts: no code outside
-// a part's file names it. (The parts that predate the registry, the frame's roll, the barrel
-// wall, the string bed and the grip, are still built by BeamSystemBuild itself.)
+// a part's file names it. The registered parts: the frame's roll (parts/roll.cpp) and the tuned
+// absorber (parts/absorber.cpp). (The parts that predate the registry and have not moved yet, the
+// barrel wall, the string bed and the grip, are still built by BeamSystemBuild itself, at their
+// place in the registry's order: after the roll, before the absorber.)
 //
 // How a part is added: docs/design.md, "Adding a structure part".
 #pragma once
@@ -18,6 +20,7 @@
 
 #include <petscsys.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -26,6 +29,7 @@
 namespace beamimpact {
 
 struct BeamSystem;
+struct ContactCoupling;
 class StructurePart;
 
 // What a part built (its dofs, the stencil it couples through); derived in the part's file.
@@ -113,8 +117,17 @@ public:
   {
     return 0;
   }
+  // The energy account of its fields and strain terms (model/beam_theory.hpp's Part: the energy
+  // split's parts and -task modes' family label); the beam's by default.
+  virtual Part Account() const { return Part::Beam; }
   // Its dofs that a rigid motion carries as the beam's deflection at a point.
   virtual void RigidPoints(const PartInstance &, std::vector<RigidPoint> *) const { }
+  // Its entries in the ball's coupling at a point of the beam (after the beam's hat entries st, z
+  // m across from the axis), in order; none by default.
+  virtual void Couple(const PartInstance &, const BeamSystem &, const ImpactStencil &, PetscReal,
+                      ContactCoupling *) const
+  {
+  }
   // Its force terms, summed after the registered ones of force_operator.cpp.
   virtual void ForceTerms(const PartInstance &, const BeamSystem &,
                           std::vector<std::shared_ptr<const ForceTerm>> *) const
@@ -125,16 +138,28 @@ public:
   // slot[k] += its k-th slot's share of the owned dofs [s.d0, s.d1).
   virtual void Measure(const PartInstance &, const BeamSystem &, const PartState &, PetscReal *) const { }
   virtual std::vector<PartColumn> Columns() const { return {}; }
-  // The run summary's line (without newline; "" for none) from its columns' values, in Columns()'s order.
+  // The results columns its summary reads beyond its own (by name, any module's), after them.
+  virtual std::vector<const char *> SummaryColumns() const { return {}; }
+  // The run summary's line (without newline; "" for none) from its columns' values, in Columns()'s
+  // order, then SummaryColumns()'s.
   virtual std::string Summary(const PartParams &, const std::vector<double> &) const { return ""; }
+  // Its entries in the run record (/run attributes, in order: name, value in the row's unit).
+  virtual void Record(const PartParams &, const BeamParams &, std::vector<std::pair<const char *, PetscReal>> *) const
+  {
+  }
+  // Its line in the beam's description (PrintBeamBody), appended to the rigid body's: "" for none.
+  virtual std::string Describe(const PartParams &, const BeamRigidBody &) const { return ""; }
 };
 
 // The registry, in the order the parts' fields are appended (system/structure.cpp).
 const std::vector<const StructurePart *> &StructureParts();
 const StructurePart                      *StructurePartFind(const char *name); // nullptr if none
 
-// The parts present in p, appended to d in registry order (BeamSystemBuild).
-std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d);
+// The parts present in p, appended to d in registry order (BeamSystemBuild); `older` appends the
+// parts that predate the registry (the wall, the bed) at their place in that order, with the
+// instances built before it.
+std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d,
+                                              const std::function<void(const std::vector<PartInstance> &)> &older);
 // Each present part's force terms appended to sys->forces.terms and its rigid points to
 // sys->rigid_points; its measure slots numbered (BeamSystemBuild, before the assembly).
 void StructurePartsFinish(BeamSystem *sys);
