@@ -15,7 +15,9 @@
 # -modal_weight share at -modal_tolerance BENCH_SHARE_TOL (the modes from a partial eigen-solve
 # weighed under the ball's load; docs/model.md section 12): wall times, the modes kept and the
 # ACOR difference, for the racket at each N and the shelled bat in the rig at one point
-# (options/scenes/bbcor-shell.opts at 66 cm: its BBCOR difference).
+# (options/scenes/bbcor-shell.opts at 66 cm: its BBCOR difference; the scene ships with the share
+# route at 1e-6). Times: PETSc's -log_view total and, beside it, the process' wall time (which adds
+# ~0.45 s of MPI and PETSc start-up here).
 #
 #   scripts/bench_racket.sh [path/to/beamimpact]
 # Environment:
@@ -68,21 +70,26 @@ done
 
 # key FILE NAME: a result of the impact's file, all its digits
 key() { /usr/bin/python3 -c "import h5py; print(repr(float(h5py.File('$1')['results']['$2'][()])))"; }
+petsc() { sed -nE 's/^Time \(sec\): +([0-9.e+-]+).*/\1/p' "$tmp/log" | head -1; } # -log_view's total of the last run
 routes() { # routes LABEL KEY OPTIONS...: the dense route and the share route, one row
   local label=$1 k=$2; shift 2
-  local td ts kd ks ad as
-  td=$(wall "$exe" "$@" -ts_type modal -modal_modes all -output "$tmp/dense.h5")
+  local td ts pd ps kd ks ad as
+  td=$(wall "$exe" "$@" -ts_type modal -modal_modes all -log_view -output "$tmp/dense.h5")
+  pd=$(petsc)
   kd=$(sed -nE 's/.*modes ([0-9]+\/[0-9]+).*/\1/p' "$tmp/log" | tail -1)
-  ts=$(wall "$exe" "$@" -ts_type modal -modal_weight share -modal_tolerance "$tol" -output "$tmp/share.h5")
+  ts=$(wall "$exe" "$@" -ts_type modal -modal_weight share -modal_tolerance "$tol" -log_view -output "$tmp/share.h5")
+  ps=$(petsc)
   ks=$(sed -nE 's/.*modes ([0-9]+\/[0-9]+).*/\1/p' "$tmp/log" | tail -1)
   ad=$(key "$tmp/dense.h5" "$k") as=$(key "$tmp/share.h5" "$k")
-  printf "%-22s %10s %10s %12s %12s %-6s %.3e\n" "$label" "$td" "$ts" "$kd" "$ks" "$k" "$(awk -v a="$ad" -v b="$as" 'BEGIN { d = b - a; print d < 0 ? -d : d }')"
+  printf "%-22s %8.3f %8.3f %8.3f %8.3f %12s %12s %-6s %.3e\n" "$label" "$pd" "$td" "$ps" "$ts" "$kd" "$ks" "$k" \
+    "$(awk -v a="$ad" -v b="$as" 'BEGIN { d = b - a; print d < 0 ? -d : d }')"
 }
 if [[ ${BENCH_ROUTES:-1} != 0 ]]; then
   tol=${BENCH_SHARE_TOL:-1e-6}
   echo "the modal engine's routes: dense (-modal_modes all) and -modal_weight share -modal_tolerance $tol"
   uptime
-  printf "%-22s %10s %10s %12s %12s %-6s %s\n" case "dense (s)" "share (s)" "dense modes" "share modes" key "|difference|"
+  echo "times: PETSc's -log_view total (the run after MPI's and PETSc's start-up) and the process' wall time, s"
+  printf "%-22s %8s %8s %8s %8s %12s %12s %-6s %s\n" case "dense" "(wall)" "share" "(wall)" "dense modes" "share modes" key "|difference|"
   for n in $nodes; do routes "racket N = $n" acor "${base[@]}" -beam_nodes "$n"; done
   routes "shelled bat, 66 cm" bbcor -options_file options/scenes/bbcor-shell.opts -task impact -impact_x 0.66
 fi

@@ -52,11 +52,11 @@ enum class ModalModes {
 };
 // How Auto chooses the modes (-modal_weight): by each mode's quasi-static error alone (Mode:
 // every mode below the cut-off kept), or by that error weighed with the mode's share of the
-// flexibility under the ball's load (Share: the fewest lowest modes whose left-out rest has a
-// share-weighted error e = sum_k (gamma_k^2 / w_k^2 / G) (pi / (w_k T))^q, q = min(p, 2) from the
-// force's start F ~ c^p, at most the tolerance; under the coupling `at`, which the impact's
-// callers set; without it, Mode). The modes not computed enter e by their exact moment H_r
-// (q = 2: (pi/T)^2 H_r / G) or bounded by G_r/G (pi / (w_last T))^q (q < 2).
+// flexibility under the ball's load (Share: the fewest modes whose left-out set has a share-weighted error e = sum_k
+// (gamma_k^2 / w_k^2 / G) (pi / (w_k T))^q, q = min(p, 2) from the force's start F ~ c^p, at most the tolerance; under
+// the coupling `at`, which the impact's callers set; without it, Mode), from partial eigen-solves, one a group of free
+// dofs that K and M do not couple (the beam, each harmonic of a shell wall). The modes not computed enter e by their
+// moment H_r ((pi/T)^2 H_r/G, q = 2) or Hoelder's bound (pi/T)^q (G_r/G)^(1-q/2) (H_r/G)^(q/2) (q < 2).
 enum class ModalWeight {
   Mode,
   Share

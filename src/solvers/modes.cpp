@@ -154,7 +154,8 @@ static PetscErrorCode ModesProblemAssemble(MPI_Comm comm, const BeamSystem &op, 
 // Shift-and-invert at sigma = -unit^2 (below every eigenvalue, so K - sigma M is positive
 // definite even with rigid modes): the wanted modes are those nearest sigma. The Krylov start
 // vector is a hash of the free row, the same whatever the number of ranks.
-static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, PetscInt count, PetscReal unit, EPS *eps)
+static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, PetscInt count, PetscReal unit, EPS *eps,
+                                        PetscInt mpd = 0)
 {
   ST           st;
   KSP          ksp;
@@ -167,7 +168,7 @@ static PetscErrorCode ModesSolverCreate(MPI_Comm comm, const ModesProblem &pb, P
   PetscCall(EPSSetOperators(*eps, pb.K, pb.M));
   PetscCall(EPSSetProblemType(*eps, EPS_GHEP));
   PetscCall(EPSSetType(*eps, EPSKRYLOVSCHUR));
-  PetscCall(EPSSetDimensions(*eps, count, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(EPSSetDimensions(*eps, count, PETSC_DEFAULT, mpd > 0 ? mpd : PETSC_DEFAULT));
   PetscCall(EPSSetWhichEigenpairs(*eps, EPS_TARGET_MAGNITUDE));
   PetscCall(EPSSetTarget(*eps, -unit * unit));
   PetscCall(EPSSetTolerances(*eps, 1e-12, 1000));
@@ -435,7 +436,7 @@ static PetscErrorCode ModesProgressApplied(KSP, Vec, Vec, void *ctx)
 }
 
 PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress,
-                               std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis)
+                               std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis, PetscInt mpd)
 {
   ModesProblem  pb;
   EPS           eps;
@@ -445,7 +446,7 @@ PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt cou
   PetscFunctionBeginUser;
   PetscCall(ModesEnsureSlepc());
   PetscCall(ModesProblemAssemble(comm, op, count, &pb));
-  PetscCall(ModesSolverCreate(comm, pb, count, op.frequency_unit, &eps));
+  PetscCall(ModesSolverCreate(comm, pb, count, op.frequency_unit, &eps, mpd));
   prog.every = progress;
   prog.start = prog.last = MPI_Wtime();
   prog.want              = count;

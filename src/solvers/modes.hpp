@@ -106,9 +106,12 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
 // PETSc's LU, MUMPS on more ranks), ascending, each omega^2 the Rayleigh quotient of the strain
 // energy, each vector over all dofs, mass-normalised (0 at held dofs; signs as the solver's).
 // progress > 0: a line every `progress` seconds while the solver runs (checked at each restart and each
-// application of its operator; the converged count capped at `count`).
+// application of its operator; the converged count capped at `count`). mpd > 0: Krylov-Schur's
+// largest projected dimension (EPSSetDimensions; 0: SLEPc's default, ncv = 2 count, whose
+// orthogonalisation and projected problem grow as count^2 and count^3 per restart).
 PetscErrorCode BeamModesLowest(MPI_Comm comm, const BeamSystem &op, PetscInt count, PetscReal progress,
-                               std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis);
+                               std::vector<PetscReal> *lambda, std::vector<std::vector<PetscReal>> *phis,
+                               PetscInt mpd = 0);
 
 // The same from the factored form F of a statically determinate beam (BeamFactorCreate,
 // solvers/beam_flexibility.hpp), for grids where shift-and-invert on K loses the low modes to
