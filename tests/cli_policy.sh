@@ -20,6 +20,7 @@
 #     announces its set-up cost; a sweep whose remaining points are expected to take longer
 #     than -impact_cost_warn says so once;
 #   * -modal_tolerance under a stepped integrator acts (the free flight's modes): no note;
+#     -modal_modes is noted unused exactly where no consumer of the modes runs (a table of cases);
 #   * the barrel wall: a displacement beyond a quarter of its radius flagged, a thick wall noted.
 #   * the oblique impact's tangential options on a head-on hit, or without friction, and the
 #     error tolerances under a fixed step are notes, the numbers unchanged (issue 34).
@@ -186,6 +187,48 @@ else fail "cn -modal_tolerance: exit $rc: $out"; fi
 out=$("$exe" -ts_type cn -beam_nodes 641 -impact_x 0.9 -modal_tolerance 1e-6 -impact_after time -output none 2>&1); rc=$?
 [[ $rc -eq 0 ]] && grep -q "note: 1 option(s) set but not used by this task: -modal_tolerance 1e-6" <<<"$out" \
   && pass "-modal_tolerance with -impact_after time (no modes): a note" || fail "cn -impact_after time -modal_tolerance: exit $rc: $out"
+# Where the modal engine's options (-modal_modes, -modal_tolerance, -modal_weight) act, and so are
+# not noted unused: a consumer of the modes in the run (-ts_type modal, the free flight after the
+# separation with -impact_after modal and a window to follow, an oblique hit's second plane, the
+# exact -reference modal, a sweep's points). Elsewhere a one-line note. The truncation is read once,
+# at the run's set-up (run/impact_problem.cpp): this pins the set of options marked used there.
+base=(-options_file options/impact.opts -beam_nodes 41 -output none)
+modal_guard() { # expect(noted|quiet) description args...
+  local expect=$1 what=$2; shift 2
+  local out rc; out=$("$exe" "${base[@]}" "$@" 2>&1); rc=$?
+  local noted=quiet; grep -q "note: .*not used.*-modal_modes 8" <<<"$out" && noted=noted
+  if [[ $rc -eq ${guard_rc:-0} && $noted == "$expect" ]]; then pass "-modal_modes 8, $what: $expect"
+  else fail "-modal_modes 8, $what: exit $rc, expected $expect, got $noted: $out"; fi
+}
+modal_guard noted "rk head-on, -impact_after time" -ts_type rk -impact_after time -modal_modes 8
+modal_guard quiet "rk head-on, -impact_after modal" -ts_type rk -impact_after modal -modal_modes 8
+# (the cost note of rk's h^2 step bound reads them after the check; cut off in contact, an error, to be quick)
+guard_rc=1 modal_guard noted "rk head-on, -impact_after time, its h^2 cost note" -ts_type rk -impact_after time \
+  -beam_nodes 401 -impact_max_time 1e-5 -modal_modes 8
+modal_guard noted "rk head-on, -impact_after modal, -impact_window 0" -ts_type rk -impact_window 0 -modal_modes 8
+modal_guard quiet "-ts_type modal, -impact_after time" -ts_type modal -impact_after time -modal_modes 8
+modal_guard quiet "-ts_type modal, -impact_window 0" -ts_type modal -impact_window 0 -modal_modes 8
+base=(-options_file options/scenes/oblique.opts -beam_nodes 41 -flight 0 -output none)
+modal_guard quiet "rk oblique, -impact_after time" -ts_type rk -impact_after time -modal_modes 8
+modal_guard quiet "rk face-on with spin and friction (-impact_offset 0: still oblique), -impact_after time" -impact_offset 0 \
+  -ts_type rk -impact_after time -modal_modes 8
+base=(-options_file options/impact.opts -beam_nodes 41 -output none)
+# the exact reference reads its truncation before its check of unused options (was after: a
+# wrong note for the -modal_modes its 8 modes came from)
+modal_guard quiet "-reference modal (modes 8/41)" -reference modal -modal_modes 8
+# a sweep checks after its probe point: what the probe's set-up and cost notes read counts (the
+# cost note of rk's h^2 step bound estimates -ts_type modal's modes with them: -beam_nodes 401,
+# its points cut off in contact by -impact_max_time, status 7, so exit 2, to be quick)
+base=(-options_file options/impact.opts -beam_nodes 41 -task sweep -sweep_x 0.5:0.6:2)
+sweep_out() { rm -f "$dir/modal_guard.h5"; echo -output "$dir/modal_guard.h5"; }
+modal_guard noted "sweep, rk, -impact_after time" $(sweep_out) -ts_type rk -impact_after time -modal_modes 8
+modal_guard quiet "sweep, rk, -impact_after modal" $(sweep_out) -ts_type rk -modal_modes 8
+modal_guard quiet "sweep, -ts_type modal, -impact_after time" $(sweep_out) -ts_type modal -impact_after time -modal_modes 8
+guard_rc=2 modal_guard quiet "sweep, rk, -impact_after time, its h^2 cost note" $(sweep_out) -ts_type rk -impact_after time \
+  -beam_nodes 401 -impact_max_time 1e-5 -modal_modes 8
+# with -impact_window 0 no point has a free flight: noted, as -task impact notes it (was quiet:
+# the probe read the truncation for a free flight that never comes)
+modal_guard noted "sweep, rk, -impact_after modal, -impact_window 0" $(sweep_out) -ts_type rk -impact_window 0 -modal_modes 8
 out=$(output_until "^sweep: 1000001 points planned" 60 "$exe" -task sweep -sweep_x 0:1.1:1000001 -output "$dir/huge.h5")
 grep -q "^sweep: 1000001 points planned: checking every point's options takes about [0-9.e+]* s" <<<"$out" && pass "a sweep of 1e6 points announces its set-up cost" || fail "huge sweep: $out"
 rm -rf "$dir/huge.h5" "$dir/huge.h5.parts"

@@ -2,6 +2,7 @@
 // after a separation (run/free_flight.hpp): the cache, the exact rigid modes, the rigorous
 // first-root search against brute-force sampling, and the state it hands back.
 #include "run/free_flight.hpp"
+#include "run/impact_problem.hpp"
 #include "test_helpers.hpp"
 
 #include <cmath>
@@ -308,4 +309,50 @@ TEST(FreeFlight, ModeEnergiesSumToTheBeamEnergy)
       EXPECT_NEAR(P * P / (2 * Mtot), e[0].energy, 1e-12 * E);
     }
   }
+}
+
+// The run's problem (run/impact_problem.hpp) reads the modal engine's options once, where a
+// consumer of the modes runs, with the run's time scale and load: one truncation for -ts_type
+// modal and the free flight (T = ContactTimeScale at the approach speed, the ball's coupling as
+// the load), none where nothing uses modes (rk with -impact_after time, or a window of 0 after the
+// separation); the modal reference keeps every mode unless -modal_modes is given.
+TEST(ImpactProblem, TruncationReadOnceWhereTheModesAreUsed)
+{
+  Scenario sc{AluminiumBeam(1.1, 41), Superball(), ImpactParams()};
+  sc.impact.x     = 0.9;
+  sc.impact.after = ImpactAfter::Time;
+  ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-modal_modes", "8"));
+  const auto build = [&](const char *ts_type, ImpactMethod method, ImpactProblem *pb) {
+    ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-ts_type", ts_type));
+    ASSERT_EQ(0, ImpactProblemBuild(PETSC_COMM_WORLD, sc, method, nullptr, pb));
+  };
+  ImpactProblem pb;
+  build("rk", ImpactMethod::Stepped, &pb);
+  EXPECT_FALSE(pb.modal_used);
+  EXPECT_EQ(pb.truncation.modes, ModalModes::Auto); // not read: the engine's default
+  build("modal", ImpactMethod::Stepped, &pb);
+  EXPECT_TRUE(pb.modal_used);
+  EXPECT_EQ(pb.ts_type, "modal");
+  EXPECT_EQ(pb.truncation.modes, ModalModes::Count);
+  EXPECT_EQ(pb.truncation.count, 8);
+  EXPECT_EQ(pb.truncation.contact_time, ContactTimeScale(sc.ball, sc.ball.speed)); // a beam at rest: v_ball
+  EXPECT_EQ(pb.truncation.force_exponent, ContactStartExponent(sc.ball, sc.ball.speed));
+  ASSERT_GT(pb.g.n, 0);
+  ASSERT_EQ(pb.truncation.at.n, pb.g.n); // weighed under the ball's load (-modal_weight share)
+  for (PetscInt q = 0; q < pb.g.n; ++q) EXPECT_EQ(pb.truncation.at.dof[q], pb.g.dof[q]);
+  EXPECT_EQ(ImpactProblemPlaneTruncation(pb).at.n, 0); // an oblique hit's second plane: no load
+  sc.impact.after = ImpactAfter::Modal;                  // rk, the free flight in modes
+  build("rk", ImpactMethod::Stepped, &pb);
+  EXPECT_TRUE(pb.after_modal);
+  EXPECT_TRUE(pb.modal_used);
+  EXPECT_EQ(pb.truncation.count, 8);
+  sc.impact.window = 0; // no free flight follows
+  build("rk", ImpactMethod::Stepped, &pb);
+  EXPECT_FALSE(pb.modal_used);
+  build("rk", ImpactMethod::ModalReference, &pb);
+  EXPECT_EQ(pb.truncation.modes, ModalModes::Count); // -modal_modes given: the truncated exact solution
+  ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-modal_modes"));
+  build("rk", ImpactMethod::ModalReference, &pb);
+  EXPECT_EQ(pb.truncation.modes, ModalModes::All); // not given: every mode, the dense one
+  ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-ts_type"));
 }

@@ -3,6 +3,8 @@
 // See events.hpp.
 #include "run/events.hpp"
 
+#include "run/impact_problem.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -55,10 +57,16 @@ ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, Pe
   return e;
 }
 
-PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot,
-                                 const BallParams &ball, const ImpactTimes &times, const char *method,
-                                 ContactState *state, ContactTimeline *tl, ContactTally *tally, bool *force_changed)
+PetscErrorCode ContactEventApply(const ImpactProblem &pb, const char *method, ContactEventKind kind, const EventAt &at,
+                                 ImpactRunState *run, bool *force_changed)
 {
+  const MPI_Comm     comm  = pb.comm;
+  const BallParams  &ball  = pb.sc.ball;
+  const ImpactTimes &times = pb.times;
+  const PetscReal    te = at.te, c = at.c, cdot = at.cdot;
+  ContactState      *state = &run->contact;
+  ContactTimeline   *tl    = &run->timeline;
+  ContactTally      *tally = &run->record.contact;
   PetscFunctionBeginUser;
   *force_changed = true;
   switch (kind) {

@@ -34,19 +34,23 @@ struct ContactTimeline {
   PetscReal contact_start = 0; // s, start of the current (or last) contact
   PetscReal t_stop        = 0; // s, the run ends here unless another contact starts
 };
-// Applies a located event at time te with compression c (m) and compression rate cdot (m/s):
-// switches the law's phase, records the event, peak force, maximum compression, contacts and
-// contact times in the tally, moves the stop time. At a contact start cdot is the approach
-// speed: with -ball_cor_table the contact's unloading exponent n is set from e(cdot), and the
-// event records cdot, e and n. *force_changed tells whether the force law changed (the
-// integrator must restart). A separation still in the hysteretic loading branch (a missed
-// maximum compression) is an error: the result would lack the ball's loss. The caller checks
-// -impact_max_contacts.
+// Where a located event is: its time te (s), the compression c (m) and its rate cdot (m/s).
+struct EventAt {
+  PetscReal te = 0, c = 0, cdot = 0;
+};
+struct ImpactProblem;
+struct ImpactRunState;
+// Applies a located event `at` of the problem's run (run/impact_problem.hpp) to its state
+// (run->contact, run->timeline, the tally run->record.contact): switches the law's phase, records the event, peak
+// force, maximum compression, contacts and contact times in the tally, moves the stop time. At a contact start cdot is
+// the approach speed: with -ball_cor_table the contact's unloading exponent n is set from e(cdot), and the event
+// records cdot, e and n. *force_changed tells whether the force law changed (the integrator must restart). A separation
+// still in the hysteretic loading branch (a missed maximum compression) is an error: the result would lack the ball's
+// loss. The caller checks -impact_max_contacts. method: the stepper's, for the message of a missed maximum compression.
+PetscErrorCode ContactEventApply(const ImpactProblem &pb, const char *method, ContactEventKind kind, const EventAt &at,
+                                 ImpactRunState *run, bool *force_changed);
 // ContactStartEvent: the record of a contact that starts with approach speed v (m/s) in state s.
-ContactEvent   ContactStartEvent(const BallParams &ball, const ContactState &s, PetscReal te, PetscReal c, PetscReal v);
-PetscErrorCode ContactEventApply(MPI_Comm comm, ContactEventKind kind, PetscReal te, PetscReal c, PetscReal cdot,
-                                 const BallParams &ball, const ImpactTimes &times, const char *method,
-                                 ContactState *state, ContactTimeline *tl, ContactTally *tally, bool *force_changed);
+ContactEvent ContactStartEvent(const BallParams &ball, const ContactState &s, PetscReal te, PetscReal c, PetscReal v);
 // The first contact, at t = 0 with approach speed v (m/s), in the tally.
 void ContactTallyStart(const BallParams &ball, const ContactState &s, PetscReal v, ContactTally *tally);
 // The end of the run at time t (s) in `phase`: a contact still open is closed there (touching).

@@ -12,6 +12,7 @@
 #include "run/events.hpp"
 #include "run/free_flight.hpp"
 #include "run/impact.hpp"
+#include "run/impact_problem.hpp"
 #include "run/monitors.hpp"
 #include "run/outcome.hpp"
 #include "run/scenario.hpp"
@@ -67,82 +68,29 @@ void ImpactStageScope::Switch(ImpactStage s)
 
 namespace {
 
-// Everything one run holds apart from its stepper: built once per scenario.
-struct ImpactSetup {
-  std::shared_ptr<const BeamSystem> system; // built for this run, or the structure's (ImpactStructure)
-  const BeamSystem                 &sys() const { return *system; }
-  ContactCoupling                   g;
-  ContactScales                     scales;
-  ContactState                      contact;       // touching, loading: the phase the stepper's force law reads
-  PetscReal                         V_x      = 0;  // m/s, the swinging bat's speed toward the ball at the impact point
-  PetscReal                         approach = 0;  // m/s, v_ball + V_x: the first contact's approach speed
-  std::vector<PetscReal>            beam_velocity; // per dof at t = 0 (empty: at rest)
-  FrameMotion frame; // the swing's rigid frame, which a grip ties the handle to (at rest for a bat at rest)
-};
-
-PetscErrorCode ImpactSetupBuild(MPI_Comm comm, const Scenario &sc, ImpactSetup *s, ImpactStructure *structure)
+// What the measures of the run's state read: the problem's system, coupling, ball and frame,
+// the run's contact phase.
+MeasureContext RunMeasureContext(const ImpactProblem &pb, const ImpactRunState &run)
 {
-  std::string why;
-
-  PetscFunctionBeginUser;
-  if (structure && structure->sys) s->system = structure->sys;
-  else {
-    auto built = std::make_shared<BeamSystem>();
-    PetscCheck(BeamSystemBuild(sc.beam, built.get(), &why), comm, PETSC_ERR_ARG_WRONG, "%s", why.c_str());
-    s->system = built;
-    if (structure) structure->sys = s->system;
-  }
-  s->g        = BeamSystemCoupling(s->sys(), sc.impact.x, sc.impact.z);
-  s->approach = sc.ball.speed;
-  if (sc.swing.Swings()) { // the bat moves rigidly toward the ball (-y): V(x) = V_cm + Omega (x - x_cm)
-    const BeamRigidBody body = BeamRigidBodyOf(sc.beam);
-    s->V_x                   = SwingSpeedAt(sc.swing, body, sc.impact.x);
-    s->approach              = sc.ball.speed + s->V_x;
-    PetscCheck(s->approach > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-bat_speed %g, -bat_angular_velocity %g: the bat moves at %g m/s at x = %g m, so ball (-ball_speed %g) "
-               "and bat do not approach",
-               (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)s->V_x, (double)sc.impact.x,
-               (double)sc.ball.speed);
-    s->beam_velocity = BeamSystemSwingVelocity(s->sys(), sc.swing, body);
-    s->frame.v       = s->beam_velocity; // the frame moves with the bat's rigid swing
-  }
-  if (ForceOperatorDriven(s->sys(), &s->frame)) { // the hands' work is counted from Q(0)
-    const std::vector<PetscReal> zero(s->sys().ndof, 0.0);
-    ForceState                   at0; // t = 0: undeformed, moving with the frame
-    at0.y       = zero.data();
-    at0.ys      = s->sys().fields;
-    at0.v       = s->frame.v.data();
-    at0.vs      = s->sys().fields;
-    at0.frame   = &s->frame;
-    s->frame.q0 = ForceOperatorFrameMomentum(s->sys(), at0, 0, s->sys().ndof) +
-                  sc.ball.mass * FrameMotionAt(s->frame, s->g) * sc.ball.speed;
-  }
-  BallParams approaching = sc.ball; // the contact's scales are those of the approach speed
-  approaching.speed      = s->approach;
-  s->scales              = ContactScalesOf(s->sys(), approaching);
-  s->contact             = ContactState();
-  ContactBegin(sc.ball, &s->contact,
-               s->approach); // the first contact's law state (its exponent), from its approach speed
-  PetscFunctionReturn(0);
+  return MeasureContext{&pb.sys(), &pb.g, &pb.sc.ball, &run.contact, &pb.frame};
 }
 
 // A located event applied; an error when contacts exceed -impact_max_contacts (chatter, or
 // an integration gone wrong: the energy tells).
-PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ImpactTimes &times,
-                          ContactEventKind kind, PetscReal E0, ContactState *contact, ContactTimeline *tl,
-                          ContactTally *tally)
+PetscErrorCode ApplyEvent(const ImpactProblem &pb, Stepper &st, ContactEventKind kind, ImpactRunState *run)
 {
-  PetscReal c, cd;
-  bool      changed;
+  const Scenario &sc = pb.sc;
+  EventAt         at;
+  bool            changed;
 
   PetscFunctionBeginUser;
-  PetscCall(st.Compression(&c, &cd));
-  const PetscReal te = st.Time();
-  PetscCall(
-    ContactEventApply(st.Comm(), kind, te, c, cd, sc.ball, times, st.Method().c_str(), contact, tl, tally, &changed));
-  if (kind == ContactEventKind::ContactStart && tally->contacts > sc.impact.max_contacts) {
+  PetscCall(st.Compression(&at.c, &at.cdot));
+  at.te              = st.Time();
+  const PetscReal te = at.te, E0 = run->record.energy_in;
+  PetscCall(ContactEventApply(pb, st.Method().c_str(), kind, at, run, &changed));
+  if (kind == ContactEventKind::ContactStart && run->record.contact.contacts > sc.impact.max_contacts) {
     StateMeasures m;
-    PetscCall(MeasureState(st, ctx, nullptr, &m, nullptr));
+    PetscCall(MeasureState(st, RunMeasureContext(pb, *run), nullptr, &m, nullptr));
     const PetscReal growth = (m.total() - E0) / E0;
     PetscCheck(growth <= sc.impact.energy_growth_tol, st.Comm(), PETSC_ERR_NOT_CONVERGED,
                "more than -impact_max_contacts %" PetscInt_FMT
@@ -158,26 +106,19 @@ PetscErrorCode ApplyEvent(Stepper &st, const MeasureContext &ctx, const Scenario
   PetscFunctionReturn(0);
 }
 
-// Whether this run follows the free vibration in modes: -impact_after modal (the default)
-// where the beam allows it; with the default, a beam that does not is integrated in time and
-// the reason printed (once per process); asked for explicitly, it is an error.
-PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const BeamSystem &sys, bool *modal)
+// Whether the recorder follows peaks of a part of the structure (a wall, a string bed, the hands
+// or a registered part's measures): then the series are sampled through a free flight.
+bool SystemHasPeaks(const BeamSystem &sys)
 {
-  static bool said = false;
-  std::string why;
+  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
+         StructurePartSlotCount(sys) > 0;
+}
 
-  PetscFunctionBeginUser;
-  *modal = ip.after == ImpactAfter::Modal;
-  if (!*modal || BeamModesAvailable(sys, &why)) PetscFunctionReturn(0);
-  PetscCheck(!ip.after_set, comm, PETSC_ERR_SUP, "-impact_after modal is not possible: %s; use -impact_after time",
-             why.c_str());
-  if (!said)
-    PetscCall(PetscPrintf(comm,
-                          "note: the free vibration after separation is integrated in time (-impact_after time): %s\n",
-                          why.c_str()));
-  said   = true;
-  *modal = false;
-  PetscFunctionReturn(0);
+// Whether the series is only an oblique impact's F_n (no monitor asked, no peaks of a wall, a
+// string bed, the hands or a registered part to follow): not sampled through a free flight.
+bool SparseSeries(const ImpactProblem &pb)
+{
+  return pb.sc.oblique.on && !pb.sc.oblique.series_asked && !SystemHasPeaks(pb.sys());
 }
 
 // The free flight after a separation at the stepper's time, in closed form, up to t_stop (the
@@ -188,20 +129,23 @@ PetscErrorCode ImpactAfterResolve(MPI_Comm comm, const ImpactParams &ip, const B
 // at the separation and one sample after it only (F_n is 0 from there to the window's end,
 // where the driver records it: the tangential plane flies freely over that piece in closed form),
 // not every dt_sample (4000 states rebuilt from the modes, which nobody keeps: issue 38's cost).
-// *energies: the energy of each kept mode at t_stop when no contact comes back (else cleared: a
-// later flight's count).
-PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const ContactCoupling &g, ImpactRecorder &rec,
-                                 bool series, bool sparse, PetscReal dt_sample, PetscReal t_stop, PetscReal s_min,
-                                 const ModalTruncation &truncation, std::shared_ptr<const BeamModes> &modes,
-                                 bool *again, std::vector<ModeEnergy> *energies)
+// run->record.mode_energies: the energy of each kept mode at t_stop when no contact comes back
+// (else cleared: a later flight's count). The modes: the problem's truncation, once (run->modes).
+PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRecorder &rec, PetscReal dt_sample,
+                                 ImpactRunState *run, bool *again)
 {
-  FullState  s0, s;
-  FreeFlight ff;
-  PetscReal  root = 0, found = 0;
+  const BeamSystem                 &sys    = pb.sys();
+  const ContactCoupling            &g      = pb.g;
+  const bool                        series = pb.sc.monitor.any(), sparse = SparseSeries(pb);
+  const PetscReal                   t_stop = run->timeline.t_stop, s_min = 1e-13 * pb.scales.time;
+  std::shared_ptr<const BeamModes> &modes = run->modes;
+  FullState                         s0, s;
+  FreeFlight                        ff;
+  PetscReal                         root = 0, found = 0;
   *again = false;
 
   PetscFunctionBeginUser;
-  if (!modes) PetscCall(BeamModesShared(st.Comm(), sys, truncation, &modes));
+  if (!modes) PetscCall(BeamModesShared(st.Comm(), sys, pb.truncation, &modes));
   const PetscReal t0 = st.Time();
   ModalState      m0;
   bool            in_modes; // the stepper's own modes (-ts_type modal): no projection either way
@@ -233,8 +177,8 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
       if (tn < ts) --k; // a snapshot first: the sample is still due
     }
   }
-  if (*again) energies->clear();
-  else *energies = FreeFlightModeEnergies(ff, t_end - t0);
+  if (*again) run->record.mode_energies.clear();
+  else run->record.mode_energies = FreeFlightModeEnergies(ff, t_end - t0);
   bool set = false;
   if (in_modes) {
     FreeFlightModalState(ff, t_end - t0, &m0);
@@ -245,35 +189,6 @@ PetscErrorCode FreeFlightAdvance(Stepper &st, const BeamSystem &sys, const Conta
     PetscCall(st.SetState(t_end, s));
   }
   PetscCall(st.Restart());
-  PetscFunctionReturn(0);
-}
-
-// The modes the free flight keeps (-modal_modes, -modal_tolerance), chosen from the contact time
-// scale as -ts_type modal chooses them (one basis for both), with the run's cost line and progress.
-PetscErrorCode FreeFlightTruncation(MPI_Comm comm, const Scenario &sc, ModalTruncation *t)
-{
-  PetscFunctionBeginUser;
-  PetscCall(ModalTruncationFromOptions(comm, t));
-  t->contact_time   = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc)); // a ball at rest: the bat's approach
-  t->force_exponent = ContactStartExponent(sc.ball, ImpactApproachSpeed(sc));
-  t->cost_warn      = sc.impact.report_setup ? sc.impact.cost_warn : 0;
-  t->progress       = sc.impact.report_setup ? sc.impact.progress : 0;
-  PetscFunctionReturn(0);
-}
-
-// -modal_modes and -modal_tolerance read (so marked used) before the stepper's check of unused
-// options where they act in a run whose integrator does not read them (cn, rk, ...): the free
-// flight after a separation is modal and there is a window to follow (or an oblique impact's
-// second plane, which is modal). -ts_type modal reads them in its own set-up.
-PetscErrorCode FreeFlightOptionsRead(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys)
-{
-  bool            after_modal;
-  ModalTruncation t;
-
-  PetscFunctionBeginUser;
-  if (!sc.oblique.on && !(ImpactTimesOf(sc.beam, sc.ball, sc.impact).window > 0)) PetscFunctionReturn(0);
-  PetscCall(ImpactAfterResolve(comm, sc.impact, sys, &after_modal));
-  if (after_modal || sc.oblique.on) PetscCall(FreeFlightTruncation(comm, sc, &t));
   PetscFunctionReturn(0);
 }
 
@@ -299,14 +214,17 @@ constexpr double kCostModalDofStep  = 1.6e-8; // s
 // T_r/200 is said at set-up, with what -ts_type modal would take when it applies (a linear
 // beam with proportional damping and no grip, within the dense decomposition's size) and is at
 // least twice as fast: "rk's step is bound by h^2 ...".
-PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys,
-                                   const ContactScales &scales, const IntegratorInfo &info, PetscReal T, double seconds)
+PetscErrorCode ImpactStepBoundNote(const ImpactProblem &pb, const IntegratorInfo &info, PetscReal T, double seconds)
 {
+  const Scenario      &sc     = pb.sc;
+  const BeamSystem    &sys    = pb.sys();
+  const ContactScales &scales = pb.scales;
+  ModalTruncation      t;
+
   PetscFunctionBeginUser;
   if (!(info.dt_stable > 0) || !(0.9 * info.dt_stable < scales.time / 200) || !BeamModesAvailable(sys, nullptr))
     PetscFunctionReturn(0);
-  ModalTruncation t;
-  PetscCall(FreeFlightTruncation(comm, sc, &t));
+  PetscCall(ImpactProblemNoteTruncation(pb, &t));
   const double dofs   = (double)sys.ndof;
   const double modes  = BeamModesExpectedSeconds(sys, t);
   const bool   anyway = sc.impact.after == ImpactAfter::Modal; // the free flight computes them too
@@ -314,7 +232,7 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
   const double modal  = steps + (anyway ? 0 : modes);
   if (!(modal < 0.5 * seconds)) PetscFunctionReturn(0);
   PetscCall(
-    PetscPrintf(comm,
+    PetscPrintf(pb.comm,
                 "cost: -ts_type %s's step is bound by h^2: the stability limit dt_max = %.3g s at N = %" PetscInt_FMT
                 " (the contact itself needs only T_r/200 = %.3g s): at least %.3g s of stepping%s; "
                 "-ts_type modal takes %s in ~%.2g s at the same accuracy (%.0fx faster), after the beam's modes (~%.2g "
@@ -332,14 +250,17 @@ PetscErrorCode ImpactStepBoundNote(MPI_Comm comm, const Scenario &sc, const Beam
 // stepped time is the contact (T_r), and the window after it when the free flight is stepped
 // too; the step is the fixed step, or an explicit adaptive type's stability limit (a bound:
 // accuracy may ask for smaller steps); an implicit adaptive run has no estimate.
-PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys, const ContactScales &scales,
-                                  const IntegratorInfo &info)
+PetscErrorCode ImpactCostEstimate(const ImpactProblem &pb, const IntegratorInfo &info)
 {
+  const Scenario      &sc     = pb.sc;
+  const BeamSystem    &sys    = pb.sys();
+  const ContactScales &scales = pb.scales;
+
   PetscFunctionBeginUser;
   ImpactParams ip = sc.impact; // a probe (a sweep's 1 ns): the estimate is a whole point's
   if (ip.full_max_time != 0) ip.max_time = ip.full_max_time;
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, ip);
-  const bool        modal = sc.impact.after == ImpactAfter::Modal && BeamModesAvailable(sys, nullptr);
+  const bool        modal = pb.after_modal;
   const PetscReal   T     = std::min<PetscReal>(times.max_time, modal ? scales.time : scales.time + times.window);
   const PetscReal   dt    = info.fixed_step ? info.dt_nominal : info.dt_stable;
   if (!(dt > 0) || sc.impact.cost_warn <= 0) PetscFunctionReturn(0);
@@ -347,10 +268,10 @@ PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamS
   const double steps         = T / dt;
   const double per_step      = (explicit_type ? kCostNodeStepExplicit : kCostNodeStepImplicit) * sys.nodes * sys.fields;
   const double seconds       = steps * per_step;
-  if (explicit_type) PetscCall(ImpactStepBoundNote(comm, sc, sys, scales, info, T, seconds));
+  if (explicit_type) PetscCall(ImpactStepBoundNote(pb, info, T, seconds));
   if (seconds <= sc.impact.cost_warn) PetscFunctionReturn(0);
   PetscCall(
-    PetscPrintf(comm,
+    PetscPrintf(pb.comm,
                 "cost: at least %.3g steps%s (%.3g s stepped / dt %.3g s, %s) on %" PetscInt_FMT
                 " nodes: expected %.3g s of wall time (%.2g s a step); to shorten it: %s, fewer -beam_nodes%s%s\n",
                 steps, ip.full_max_time != 0 ? " a point" : "", (double)T, (double)dt,
@@ -365,14 +286,15 @@ PetscErrorCode ImpactCostEstimate(MPI_Comm comm, const Scenario &sc, const BeamS
 
 // The end of a run at time t: the contact still open (if any) closed, the final measures
 // (refused when not finite), and the stepper's counts.
-PetscErrorCode ImpactFinish(Stepper &st, const MeasureContext &ctx, const Scenario &sc, const ContactState &contact,
-                            const ContactTimeline &timeline, PetscReal t, const IntegratorInfo &info, ImpactRecord *rec,
-                            ImpactCost *cost)
+PetscErrorCode ImpactFinish(const ImpactProblem &pb, Stepper &st, const IntegratorInfo &info, PetscReal t,
+                            ImpactRunState *run, ImpactCost *cost)
 {
-  StateMeasures &m1 = rec->end;
+  const Scenario &sc  = pb.sc;
+  ImpactRecord   *rec = &run->record;
+  StateMeasures  &m1  = rec->end;
   PetscFunctionBeginUser;
-  ContactTallyClose(contact.phase, timeline, t, &rec->contact);
-  PetscCall(MeasureState(st, ctx, nullptr, &m1, nullptr));
+  ContactTallyClose(run->contact.phase, run->timeline, t, &rec->contact);
+  PetscCall(MeasureState(st, RunMeasureContext(pb, *run), nullptr, &m1, nullptr));
   PetscCheck(std::isfinite(m1.ball_v) && std::isfinite(m1.total()) && std::isfinite(m1.momentum) &&
                std::isfinite(m1.angular_momentum),
              st.Comm(), PETSC_ERR_FP,
@@ -422,24 +344,36 @@ PetscErrorCode ImpactProgressLine(MPI_Comm comm, const ImpactParams &ip, PetscRe
   PetscFunctionReturn(0);
 }
 
-// Whether the recorder follows peaks of a part of the structure (a wall, a string bed, the hands
-// or a registered part's measures): then the series are sampled through a free flight.
-bool SystemHasPeaks(const BeamSystem &sys)
+// After a located event: the free flight that follows a separation (-impact_after modal) unless
+// the window is already over (-impact_window 0: nothing to follow), and the contact it finds.
+PetscErrorCode FreeFlightAfter(const ImpactProblem &pb, Stepper &st, ContactEventKind kind, ImpactRecorder &recorder,
+                               ImpactStageScope &stage, ImpactRunState *run)
 {
-  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
-         StructurePartSlotCount(sys) > 0;
+  PetscReal dt_sample;
+  bool      again = false;
+
+  PetscFunctionBeginUser;
+  if (kind != ContactEventKind::Separation || !pb.after_modal || !(run->timeline.t_stop > st.Time() * (1 + 1e-14)))
+    PetscFunctionReturn(0);
+  PetscCall(st.NextStep(&dt_sample));
+  stage.Switch(ImpactStage::FreeFlight);
+  PetscCall(FreeFlightAdvance(pb, st, recorder, dt_sample, run, &again));
+  if (again) PetscCall(ApplyEvent(pb, st, ContactEventKind::ContactStart, run));
+  PetscFunctionReturn(0);
 }
 
-// Steps the stepper from t = 0 to the end of the run. ctx.contact is the contact state the
-// stepper reads. The events and monitors write their records in *rec, the driver its steps and
-// time in *cost; info: the stepper's settings (for messages).
-PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState *contact, const Scenario &sc,
-                           const ContactScales &scales, PetscReal approach, const IntegratorInfo &info,
-                           ImpactRecord *rec, ImpactCost *cost)
+// Steps the stepper from t = 0 to the end of the run. run->contact is the contact state the
+// stepper reads. The events and monitors write their records in run->record, the driver its
+// steps and time in *cost; info: the stepper's settings (for messages).
+PetscErrorCode ImpactDrive(const ImpactProblem &pb, Stepper &st, const IntegratorInfo &info, ImpactRunState *run,
+                           ImpactCost *cost)
 {
-  const ImpactParams &ip    = sc.impact;
-  const ImpactTimes   times = ImpactTimesOf(sc.beam, sc.ball, ip);
-  ContactTally       &tally = rec->contact;
+  const Scenario      &sc       = pb.sc;
+  const ImpactParams  &ip       = sc.impact;
+  const MeasureContext ctx      = RunMeasureContext(pb, *run);
+  ImpactRecord        *rec      = &run->record;
+  ContactTally        &tally    = rec->contact;
+  ContactTimeline     &timeline = run->timeline;
 
   PetscFunctionBeginUser;
   PetscCall(MeasureState(st, ctx, nullptr, &rec->start, nullptr));
@@ -447,55 +381,33 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
   ImpactRecorder recorder(st, ctx, sc.monitor, ip, rec->energy_in, &rec->series, &rec->peaks);
   PetscCall(recorder.Record(0.0));
   PetscCall(recorder.Snapshots(0.0));
-  auto            indicators = [&](EventIndicators *g) { return StateIndicators(st, scales, info, g); };
-  const double    wall0      = MPI_Wtime();
-  PetscReal       t          = 0;
-  ContactTimeline timeline;
-  timeline.t_stop = times.max_time;
+  auto         indicators = [&](EventIndicators *g) { return StateIndicators(st, pb.scales, info, g); };
+  const double wall0      = MPI_Wtime();
+  PetscReal    t          = 0;
+  timeline.t_stop         = pb.times.max_time;
   EventIndicators g0, g1;
   PetscCall(indicators(&g0));
-  ContactTallyStart(sc.ball, *contact, approach, &tally);
-  bool                             after_modal;
-  std::shared_ptr<const BeamModes> modes;
-  ModalTruncation                  truncation; // -modal_modes, -modal_tolerance (solvers/beam_modes.hpp)
-  PetscCall(ImpactAfterResolve(st.Comm(), ip, *ctx.sys, &after_modal));
-  if (after_modal) PetscCall(FreeFlightTruncation(st.Comm(), sc, &truncation));
-  truncation.at   = *ctx.g; // -modal_weight share: weighed under this load, as -ts_type modal's (one basis for both)
-  rec->after_used = after_modal ? "modal" : "time";
-  // The series only an oblique impact's F_n (no monitor asked, no peaks of a wall, a string bed,
-  // the hands or a registered part to follow): not sampled through a free flight (FreeFlightAdvance).
-  const bool       sparse = sc.oblique.on && !sc.oblique.series_asked && !SystemHasPeaks(*ctx.sys);
+  ContactTallyStart(sc.ball, run->contact, pb.approach, &tally);
+  rec->after_used = pb.after_modal ? "modal" : "time";
   ImpactStageScope stage(ImpactStage::Contact);
   double           last_progress = wall0;
   while (t < timeline.t_stop * (1 - 1e-14)) {
     PetscCall(ImpactProgressLine(st.Comm(), ip, t, timeline.t_stop, *cost, tally, wall0, &last_progress));
     const PetscReal target = std::min(timeline.t_stop, recorder.NextSnapshot()); // land exactly on both
     PetscReal       dt;
-    stage.Switch(contact->phase != ContactPhase::Separated ? ImpactStage::Contact : ImpactStage::FreeFlight);
+    stage.Switch(run->contact.phase != ContactPhase::Separated ? ImpactStage::Contact : ImpactStage::FreeFlight);
     PetscCall(st.NextStep(&dt));
     if (t + dt > target) dt = target - t;
     PetscCall(st.Step(dt));
     cost->steps++;
     PetscCall(indicators(&g1));
-    const int ev = ContactCrossedEvent(contact->phase, g0, g1, ip.event_tol);
+    const int ev = ContactCrossedEvent(run->contact.phase, g0, g1, ip.event_tol);
     if (ev >= 0) {
       const auto kind = static_cast<ContactEventKind>(ev);
       PetscCall(EventLocate(st, kind, t, ContactEventIndicator(kind, g0), ContactEventIndicator(kind, g1), ip.event_tol,
                             indicators, &cost->event_steps));
-      PetscCall(ApplyEvent(st, ctx, sc, times, kind, rec->energy_in, contact, &timeline, &tally));
-      // The free flight, unless the window is already over (-impact_window 0: nothing to follow).
-      if (kind == ContactEventKind::Separation && after_modal && timeline.t_stop > st.Time() * (1 + 1e-14)) {
-        PetscReal dt_sample;
-        bool      again = false;
-        PetscCall(st.NextStep(&dt_sample));
-        stage.Switch(ImpactStage::FreeFlight);
-        PetscCall(FreeFlightAdvance(st, *ctx.sys, *ctx.g, recorder, sc.monitor.any(), sparse, dt_sample,
-                                    timeline.t_stop, 1e-13 * scales.time, truncation, modes, &again,
-                                    &rec->mode_energies));
-        if (again)
-          PetscCall(
-            ApplyEvent(st, ctx, sc, times, ContactEventKind::ContactStart, rec->energy_in, contact, &timeline, &tally));
-      }
+      PetscCall(ApplyEvent(pb, st, kind, run));
+      PetscCall(FreeFlightAfter(pb, st, kind, recorder, stage, run));
       PetscCall(indicators(&g1));
     }
     t  = st.Time();
@@ -503,26 +415,27 @@ PetscErrorCode ImpactDrive(Stepper &st, const MeasureContext &ctx, ContactState 
     PetscCall(recorder.Record(t));
     PetscCall(recorder.Snapshots(t));
   }
-  cost->wall_time = MPI_Wtime() - wall0;
-  if (modes && !rec->mode_energies.empty())
-    ModeEnergiesLabel(sc.beam, *modes, &rec->mode_energies); // the free flight's
-  if (!modes) modes = st.Modes();                            // no free flight: -ts_type modal's basis, if it is
+  cost->wall_time                        = MPI_Wtime() - wall0;
+  std::shared_ptr<const BeamModes> modes = run->modes; // the free flight's
+  if (modes && !rec->mode_energies.empty()) ModeEnergiesLabel(sc.beam, *modes, &rec->mode_energies);
+  if (!modes) modes = st.Modes(); // no free flight: -ts_type modal's basis, if it is
   if (modes) rec->modal = {modes->Count(), modes->S.n, BeamModesCutoffHz(*modes)};
-  PetscCall(ImpactFinish(st, ctx, sc, *contact, timeline, t, info, rec, cost));
+  PetscCall(ImpactFinish(pb, st, info, t, run, cost));
   PetscFunctionReturn(0);
 }
 
 // An oblique impact's run along the normal is over: the tangential contact from its force, the
 // exit and the flight; the series the run recorded for it and nobody asked for are dropped.
-PetscErrorCode ObliqueRunFinish(MPI_Comm comm, const ImpactSetup &s, const Scenario &sc, ImpactRecord *rec)
+PetscErrorCode ObliqueRunFinish(const ImpactProblem &pb, ImpactRecord *rec)
 {
-  ImpactSeries &S = rec->series;
-  ObliqueBeam   beam; // the bat's second plane, in the modes of the same system
+  const Scenario &sc = pb.sc;
+  ImpactSeries   &S  = rec->series;
+  ObliqueBeam     beam; // the bat's second plane, in the modes of the same system
   PetscFunctionBeginUser;
-  beam.comm = comm;
-  beam.sys  = &s.sys();
-  beam.g    = &s.g;
-  PetscCall(FreeFlightTruncation(comm, sc, &beam.truncation));
+  beam.comm       = pb.comm;
+  beam.sys        = &pb.sys();
+  beam.g          = &pb.g;
+  beam.truncation = ImpactProblemPlaneTruncation(pb);
   PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, beam, &rec->oblique));
   if (!sc.oblique.ball_series_asked)
     S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear(), S.force_rate.clear();
@@ -531,17 +444,16 @@ PetscErrorCode ObliqueRunFinish(MPI_Comm comm, const ImpactSetup &s, const Scena
 }
 
 // Drives the stepper and hands what the run recorded to the outcome.
-PetscErrorCode ImpactDriveAndFinish(Stepper &st, ImpactSetup &s, const Scenario &sc, ImpactResult *res)
+PetscErrorCode ImpactDriveAndFinish(const ImpactProblem &pb, Stepper &st, ImpactRunState *run, ImpactResult *res)
 {
-  ImpactRecord rec;
+  ImpactRecord &rec = run->record;
 
   PetscFunctionBeginUser;
-  const MeasureContext ctx{&s.sys(), &s.g, &sc.ball, &s.contact, &s.frame};
-  PetscCall(ImpactDrive(st, ctx, &s.contact, sc, s.scales, s.approach, *res, &rec, res));
-  if (sc.oblique.on) PetscCall(ObliqueRunFinish(st.Comm(), s, sc, &rec));
-  rec.V_x    = s.V_x;
-  rec.scales = s.scales;
-  ImpactOutcomeFinish(sc, s.sys(), std::move(rec), res);
+  PetscCall(ImpactDrive(pb, st, *res, run, res));
+  if (pb.sc.oblique.on) PetscCall(ObliqueRunFinish(pb, &rec));
+  rec.V_x    = pb.V_x;
+  rec.scales = pb.scales;
+  ImpactOutcomeFinish(pb.sc, pb.sys(), std::move(rec), res);
   PetscFunctionReturn(0);
 }
 
@@ -556,46 +468,40 @@ PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res
 
 PetscErrorCode ImpactRun(MPI_Comm comm, const Scenario &given, ImpactResult *res, ImpactStructure *structure)
 {
-  ImpactSetup              s;
+  ImpactProblem            pb;
+  ImpactRunState           run; // run.contact: touching, loading, the phase the stepper's force law reads
   std::unique_ptr<Stepper> st;
   TSStepperSettings        set;
-  Scenario                 normal; // an oblique impact's run along the normal (run/oblique.hpp)
 
   PetscFunctionBeginUser;
-  if (ObliqueImpact(given)) PetscCall(ObliqueNormalScenario(comm, given, &normal));
-  const Scenario &sc = ObliqueImpact(given) ? normal : given;
-  *res               = ImpactResult();
+  *res = ImpactResult();
   ImpactStageScope stage(ImpactStage::Setup);
-  PetscCall(ImpactSetupBuild(comm, sc, &s, structure));
-  set.check_unused_options = sc.impact.check_unused_options;
-  if (set.check_unused_options) PetscCall(FreeFlightOptionsRead(comm, sc, s.sys()));
-  set.report_setup          = sc.impact.report_setup;
-  set.strict_solver_options = sc.impact.strict_solver_options;
-  set.modes_cost_warn       = sc.impact.report_setup ? sc.impact.cost_warn : 0; // as FreeFlightTruncation
-  set.modes_progress        = sc.impact.report_setup ? sc.impact.progress : 0;
+  PetscCall(ImpactProblemBuild(comm, given, ImpactMethod::Stepped, structure, &pb));
+  const ImpactParams &ip = pb.sc.impact;
+  ContactBegin(pb.sc.ball, &run.contact, pb.approach); // the first contact's law state (its exponent)
+  set.check_unused_options  = ip.check_unused_options;
+  set.report_setup          = ip.report_setup;
+  set.strict_solver_options = ip.strict_solver_options;
   set.context_key           = structure ? &structure->stepper_key : nullptr;
-  PetscCall(
-    TSStepperCreate(comm, s.sys(), s.g, sc.ball, s.scales, &s.contact, set, s.beam_velocity, &s.frame, &st, res));
+  PetscCall(TSStepperCreate(ImpactProblemStepper(pb, &run.contact), set, &st, res));
   stage.End(); // ImpactDrive holds the contact and free-flight stages
-  if (sc.impact.report_setup) PetscCall(ImpactCostEstimate(comm, sc, s.sys(), s.scales, *res));
-  PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
+  if (ip.report_setup) PetscCall(ImpactCostEstimate(pb, *res));
+  PetscCall(ImpactDriveAndFinish(pb, *st, &run, res));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode LeapfrogRun(const Scenario &given, const LeapfrogParams &lp, ImpactResult *res)
 {
-  ImpactSetup              s;
+  ImpactProblem            pb;
+  ImpactRunState           run; // run.contact: touching, loading, the phase the stepper's force law reads
   std::unique_ptr<Stepper> st;
-  Scenario                 normal; // an oblique impact's run along the normal (run/oblique.hpp)
 
   PetscFunctionBeginUser;
-  if (ObliqueImpact(given)) PetscCall(ObliqueNormalScenario(PETSC_COMM_SELF, given, &normal));
-  const Scenario &sc = ObliqueImpact(given) ? normal : given;
-  *res               = ImpactResult();
-  PetscCall(ImpactSetupBuild(PETSC_COMM_SELF, sc, &s, nullptr));
-  PetscCall(
-    LeapfrogStepperCreate(s.sys(), s.g, sc.ball, s.scales, &s.contact, lp, s.beam_velocity, &s.frame, &st, res));
-  PetscCall(ImpactDriveAndFinish(*st, s, sc, res));
+  *res = ImpactResult();
+  PetscCall(ImpactProblemBuild(PETSC_COMM_SELF, given, ImpactMethod::Leapfrog, nullptr, &pb));
+  ContactBegin(pb.sc.ball, &run.contact, pb.approach); // the first contact's law state (its exponent)
+  PetscCall(LeapfrogStepperCreate(ImpactProblemStepper(pb, &run.contact), lp, &st, res));
+  PetscCall(ImpactDriveAndFinish(pb, *st, &run, res));
   PetscFunctionReturn(0);
 }
 

@@ -3,6 +3,7 @@
 #include "run/reference.hpp"
 
 #include "base/options_util.hpp"
+#include "run/impact_problem.hpp"
 #include "run/modal_reference.hpp"
 #include "run/scenario.hpp"
 
@@ -41,20 +42,15 @@ PetscErrorCode ModalRun(MPI_Comm comm, const Scenario &sc, const ReferenceSettin
   PetscFunctionBeginUser;
   PetscCheck(!sc.monitor.any() && sc.monitor.snapshot_times.empty(), comm, PETSC_ERR_SUP,
              "-reference modal records no time series or snapshots: remove the -monitor_*/-snapshot_times options");
+  // The problem (run/impact_problem.hpp): an oblique impact's run along the normal, whose F_n(t)
+  // drives the tangential contact and the bat's second plane, as for a stepped run; the truncation
+  // (-modal_modes: the truncated model's exact solution; not given: every mode, the dense one),
+  // read before the check of unused options.
+  ImpactProblem pb;
+  PetscCall(ImpactProblemBuild(comm, sc, ImpactMethod::ModalReference, nullptr, &pb));
   if (sc.impact.check_unused_options)
     PetscCall(OptionsCheckUnused(comm, {"ts_", "snes_", "ksp_", "pc_"})); // integrator options have no effect here
-  ModalTruncation
-            truncation; // -modal_modes, -modal_tolerance: the truncated model's exact solution (all: the dense one)
-  PetscBool asked = PETSC_FALSE; // the dense exact reference unless -modal_modes is given
-  PetscCall(ModalTruncationFromOptions(comm, &truncation));
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-modal_modes", &asked));
-  if (!asked) truncation.modes = ModalModes::All;
-  // An oblique impact (run/oblique.hpp): the exact run along the normal, whose F_n(t) drives the
-  // tangential contact and the bat's second plane, as for a stepped run.
-  Scenario normal;
-  if (ObliqueImpact(sc)) PetscCall(ObliqueNormalScenario(comm, sc, &normal));
-  PetscCall(ModalReferenceRun(comm, ObliqueImpact(sc) ? normal : sc, truncation,
-                              &sol->result)); // collective on the run's comm (its modes)
+  PetscCall(ModalReferenceRun(comm, pb.sc, pb.truncation, &sol->result)); // collective on the run's comm (its modes)
   if (sc.impact.report_setup)
     PetscCall(PetscPrintf(comm, "ts %s (%s)  dt %.3e s\n", sol->result.ts_type.c_str(), sol->result.formulation.c_str(),
                           (double)sol->result.dt_nominal));

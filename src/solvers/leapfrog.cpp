@@ -284,19 +284,21 @@ PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, co
   return 2.0 / (w * (std::sqrt(1 + zeta * zeta) + zeta));
 }
 
-PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
-                                     const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
+PetscErrorCode LeapfrogStepperCreate(const StepperProblem &p, const LeapfrogParams &lp,
                                      std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
 {
-  auto S = std::make_unique<LeapfrogStepper>();
+  const BeamSystem      &sys    = *p.sys;
+  const ContactCoupling &g      = p.g;
+  const BallParams      &ball   = p.ball;
+  const ContactScales   &scales = p.scales;
+  auto                   S      = std::make_unique<LeapfrogStepper>();
 
   PetscFunctionBeginUser;
   S->sys           = &sys;
-  S->frame         = frame;
+  S->frame         = p.frame;
   S->g             = g;
   S->ball          = ball;
-  S->contact       = contact;
+  S->contact       = p.contact;
   S->n             = sys.ndof;
   S->bw            = sys.bw;
   const PetscInt W = 2 * sys.bw + 1;
@@ -345,9 +347,9 @@ PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCouplin
     s->a.assign(sys.ndof, 0.0);
   }
   S->A.vb = ball.speed;
-  if (!beam_velocity.empty()) S->A.v = beam_velocity; // a swinging bat: a rigid motion (no force)
+  if (!p.beam_velocity->empty()) S->A.v = *p.beam_velocity; // a swinging bat: a rigid motion (no force)
   S->damped = sys.Damped();
-  S->drives = ForceOperatorDriven(sys, frame);
+  S->drives = ForceOperatorDriven(sys, p.frame);
   if (S->drives) S->drive.assign(sys.ndof, 0.0);
   if (S->damped) {
     PetscReal P, Pdot;

@@ -35,6 +35,7 @@
 #include "base/option_table.hpp"
 #include "model/contact.hpp"
 #include "solvers/stepper.hpp"
+#include "solvers/stepper_problem.hpp"
 #include "system/beam_system.hpp"
 
 #include <memory>
@@ -56,13 +57,11 @@ PetscErrorCode      LeapfrogParamsFromOptions(MPI_Comm comm, LeapfrogParams *p);
 // or (2/omega_max)(sqrt(1 + zeta^2) - zeta), zeta = beta omega_max / 2, with damping.
 PetscReal LeapfrogStableStep(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball);
 
-// Creates the stepper at t = 0 (beam undeformed, moving with beam_velocity, empty: at rest;
-// ball touching, moving at its speed; frame: the swing's, owned by the caller); fills
-// *info (ts_type "leapfrog", formulation "explicit", dt_stable, dt_nominal). A step above the
-// stability limit or above 1/8 of the contact time is refused.
-PetscErrorCode LeapfrogStepperCreate(const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
-                                     const ContactScales &scales, ContactState *contact, const LeapfrogParams &lp,
-                                     const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
+// Creates the stepper at t = 0 (beam undeformed, moving with p.beam_velocity; ball touching,
+// moving at its speed; p.frame: the swing's, owned by the caller), serial (p.comm and p.ts_type
+// unused); fills *info (ts_type "leapfrog", formulation "explicit", dt_stable, dt_nominal). A
+// step above the stability limit or above 1/8 of the contact time is refused.
+PetscErrorCode LeapfrogStepperCreate(const StepperProblem &p, const LeapfrogParams &lp,
                                      std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 } // namespace beamimpact

@@ -959,15 +959,9 @@ PetscErrorCode PointSetUp(TS ts)
              "-ts_type modal needs the beam's modes: %s; use another -ts_type", why.c_str());
   const BeamModes *before = m.modes.get(); // alive until replaced: another basis has another address
   {
-    ModalTruncation tr;
-    PetscCall(ModalTruncationFromOptions(PetscObjectComm((PetscObject)ts), &tr));
-    tr.contact_time = ContactTimeScale(m.P->ball, m.P->approach);
-    tr.cost_warn    = m.P->modes_cost_warn; // the run's -impact_cost_warn and -impact_progress (0 in a sweep: its own
-                                            // lines)
-    tr.progress       = m.P->modes_progress;
-    tr.at             = m.P->g; // -modal_weight share: the modes weighed under this load and the force's start
-    tr.force_exponent = ContactStartExponent(m.P->ball, m.P->approach);
-    PetscCall(BeamModesShared(PetscObjectComm((PetscObject)ts), sys, tr, &m.modes));
+    // The run's truncation (run/impact_problem.cpp, read once): T and the force's start from the
+    // approach, the load g (-modal_weight share), the run's cost line and progress (0 in a sweep).
+    PetscCall(BeamModesShared(PetscObjectComm((PetscObject)ts), sys, m.P->truncation, &m.modes));
   }
   const ModalSystem &S          = m.modes->S;
   const ModalBasis  &B          = m.modes->B;

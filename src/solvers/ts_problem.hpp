@@ -9,6 +9,7 @@
 #pragma once
 
 #include "model/contact.hpp"
+#include "solvers/beam_modes.hpp"
 #include "system/beam_system.hpp"
 
 #include <petscts.h>
@@ -108,14 +109,11 @@ struct TSCounters {
 
 // Everything the TS callbacks need.
 struct TSProblem {
-  const BeamSystem  *sys   = nullptr;
-  const FrameMotion *frame = nullptr; // the swing's frame (owned by the run driver)
-  ContactCoupling    g;
-  BallParams         ball;
-  PetscReal
-    approach = 0; // m/s, the ball's and the beam's approach speed (the contact's scales; a ball at rest: the bat's)
-  PetscReal modes_cost_warn      = 0,
-            modes_progress       = 0;       // s: -ts_type modal's modes: cost line and progress (TSStepperSettings)
+  const BeamSystem      *sys   = nullptr;
+  const FrameMotion     *frame = nullptr; // the swing's frame (owned by the run driver)
+  ContactCoupling        g;
+  BallParams             ball;
+  ModalTruncation        truncation;        // -ts_type modal's modes (StepperProblem: read once by the run's set-up)
   ContactState          *contact = nullptr; // owned by the run driver
   Formulation            form    = Formulation::Explicit;
   TSLayout               L;

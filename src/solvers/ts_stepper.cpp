@@ -1001,18 +1001,17 @@ double TSStepperMemory(const BeamSystem &sys, Formulation form, const char *type
 
 } // namespace
 
-PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
-                               const ContactScales &scales, ContactState *contact, const TSStepperSettings &set,
-                               const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
-                               std::unique_ptr<Stepper> *stepper, IntegratorInfo *info)
+PetscErrorCode TSStepperCreate(const StepperProblem &p, const TSStepperSettings &set, std::unique_ptr<Stepper> *stepper,
+                               IntegratorInfo *info)
 {
-  char        type[256] = TSRK;
-  PetscBool   flg;
-  std::string key;
+  const MPI_Comm       comm   = p.comm;
+  const BeamSystem    &sys    = *p.sys;
+  const ContactScales &scales = p.scales;
+  const BallParams    &ball   = p.ball;
+  const char *const    type   = p.ts_type.c_str(); // the formulation depends on it (read by the run's set-up)
+  std::string          key;
 
   PetscFunctionBeginUser;
-  // The formulation depends on the TS type: read it before building the problem.
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-ts_type", type, sizeof(type), &flg));
   PetscCall(TSCheckTypeKnown(type, comm));
   // A run that checks its options builds its own TS (the check is of what that set-up read).
   const bool cacheable = !set.check_unused_options;
@@ -1028,13 +1027,11 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   auto       S        = std::make_unique<TSStepper>(C);
   TSProblem &P        = S->P;
   P.sys               = &sys;
-  P.frame             = frame;
-  P.g                 = g;
+  P.frame             = p.frame;
+  P.g                 = p.g;
   P.ball              = ball;
-  P.approach          = scales.speed;
-  P.modes_cost_warn   = set.modes_cost_warn;
-  P.modes_progress    = set.modes_progress;
-  P.contact           = contact;
+  P.truncation        = p.truncation;
+  P.contact           = p.contact;
   P.form              = FormulationOfType(type);
   P.jac.contact       = P.form == Formulation::Implicit || P.form == Formulation::SecondOrder;
   P.count             = TSCounters();
@@ -1043,7 +1040,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
   if (TSModalIsType(type))
     S->info
       .formulation = "modal (exact beam flow, polynomial contact force)"; // explicit right-hand side, exact beam flow
-  S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, g, scales.stiffness, ball.mass, &S->info.omega_max_dof);
+  S->info.omega_max_bound = BeamSystemMaxFrequencyBound(sys, p.g, scales.stiffness, ball.mass, &S->info.omega_max_dof);
   if (reuse) PetscCall(TSContextReuse(*S, type));
   else {
     char what[160];
@@ -1060,7 +1057,7 @@ PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const Conta
              "-ts_dt %g is not allowed: the time step must be > 0 (s)", (double)S->dt_nominal);
   S->info.dt_nominal = S->dt_nominal;
   if (set.report_setup) PetscCall(ReportSetup(*S));
-  PetscCall(SetInitialState(*S, ball.speed, beam_velocity));
+  PetscCall(SetInitialState(*S, ball.speed, *p.beam_velocity));
   if (reuse) PetscCall(TSRestartStep(S->ts)); // the last run's step history is not this run's
   S->damped = sys.Damped();
   if (S->damped) PetscCall(S->DissipationRestart());

@@ -8,6 +8,7 @@
 
 #include "model/contact.hpp"
 #include "solvers/stepper.hpp"
+#include "solvers/stepper_problem.hpp"
 #include "system/beam_system.hpp"
 
 #include <memory>
@@ -19,10 +20,6 @@ struct TSStepperSettings {
   bool report_setup          = false; // print the integrator, its step and stability limit, and resolution warnings
   bool strict_solver_options = false; // with check_unused_options: left-over PETSc solver options are errors too, not
                                       // notes
-  // -ts_type modal: its modes' cost line before a decomposition expected to take longer than
-  // modes_cost_warn, and a progress line every modes_progress during a partial solve (s of wall
-  // time; 0: none), as the free flight's (-impact_cost_warn, -impact_progress with report_setup)
-  PetscReal modes_cost_warn = 0, modes_progress = 0;
   // The key of the integrator's context (its communicator, grid, type and the -ts_, -snes_, -ksp_,
   // -pc_, -mat_ options) kept by a caller whose runs change none of these (a sweep's points on one
   // structure: ImpactStructure): used when not empty, else computed from the options database and
@@ -30,13 +27,11 @@ struct TSStepperSettings {
   std::string *context_key = nullptr;
 };
 
-// Creates the stepper at t = 0 with the beam undeformed, moving with beam_velocity (per dof;
-// empty: at rest), and the ball touching it at the impact point, moving at the ball's speed;
-// fills *info. contact and frame (the swing's frame the force operator ties a grip to), owned
-// by the caller, are the contact law's state and the frame the residuals use.
-PetscErrorCode TSStepperCreate(MPI_Comm comm, const BeamSystem &sys, const ContactCoupling &g, const BallParams &ball,
-                               const ContactScales &scales, ContactState *contact, const TSStepperSettings &settings,
-                               const std::vector<PetscReal> &beam_velocity, const FrameMotion *frame,
+// Creates the stepper of p.ts_type on p.comm at t = 0 with the beam undeformed, moving with
+// p.beam_velocity, and the ball touching it at the impact point, moving at the ball's speed;
+// fills *info. p.contact and p.frame (the swing's frame the force operator ties a grip to) are
+// the contact law's state and the frame the residuals use; -ts_type modal keeps p.truncation's modes.
+PetscErrorCode TSStepperCreate(const StepperProblem &p, const TSStepperSettings &settings,
                                std::unique_ptr<Stepper> *stepper, IntegratorInfo *info);
 
 // The per-structure contexts (the layout, the configured TS, its vectors and the Jacobian's
