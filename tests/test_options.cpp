@@ -401,6 +401,21 @@ TEST(UnusedOptions, AMisspeltPetscOptionIsAnErrorALeftOverOneANote)
   EXPECT_NE(std::string::npos, printed.find("WARNING: 1 option(s) unknown (set but read by no task): -ts_dtt 1 (did you mean -ts_dt?)")) << printed;
 }
 
+// A summary's number that rounds to 0 prints without a sign: "0.0000", never "-0.0000" (the
+// frame's roll of -1e-17 rad/s, a spin of -0), and every other number as it is.
+TEST(Shown, NoSignOnARoundedZero)
+{
+  const auto text = [](double v, int d) { return Fmt("%.*f", d, Shown(v, d)); };
+  EXPECT_EQ("0.0000", text(-1e-17, 4));
+  EXPECT_EQ("0.0000", text(-0.0, 4));
+  EXPECT_EQ("0.0000", text(-4.9e-5, 4));
+  EXPECT_EQ("-0.0001", text(-5.1e-5, 4));
+  EXPECT_EQ("0", text(-0.4, 0));
+  EXPECT_EQ("-1", text(-0.6, 0));
+  EXPECT_EQ("0.00", text(-0.0, 2));
+  EXPECT_EQ(-3.25, Shown(-3.25, 2));
+}
+
 // A number as a user writes it: the shortest text that strtod reads back as the same double
 // (the sweep's axis values, /options_used): never longer than %.17g's, and exactly the digits
 // a person wrote for decimal inputs (0.06, not 0.059999999999999998).

@@ -116,8 +116,8 @@ PetscErrorCode ObliqueSummary(MPI_Comm comm, const Scenario &sc, const ImpactRes
     PetscCall(PetscPrintf(comm,
                           "oblique on the strings: %g deg from the normal; the ball leaves at %.4f m/s, %.3f deg from "
                           "the normal (> 0 toward +z), spin %.2f rad/s (%.0f rpm); friction dissipated %.4e J\n",
-                          (double)sc.impact.angle, (double)r.exit_speed, (double)r.launch_angle, (double)r.spin,
-                          (double)r.spin_rpm, (double)r.friction_dissipated));
+                          (double)sc.impact.angle, (double)r.exit_speed, Shown(r.launch_angle, 3), Shown(r.spin, 2),
+                          Shown(r.spin_rpm, 0), (double)r.friction_dissipated));
     if (ResultObliqueBed(sc) && r.strings_inplane_energy_peak > 0)
       PetscCall(PetscPrintf(comm,
                             "oblique on the strings: the mains slid %.4e m on the frame, held %.4e J at most and "
@@ -128,8 +128,8 @@ PetscErrorCode ObliqueSummary(MPI_Comm comm, const Scenario &sc, const ImpactRes
     PetscCall(PetscPrintf(comm,
                           "oblique: offset %g m, batted ball %.4f m/s at %.3f deg, spin %.2f rad/s (%.0f rpm, > 0 "
                           "backspin); friction dissipated %.4e J (along the line of centres: acor and bbs above)\n",
-                          (double)sc.impact.offset, (double)r.exit_speed, (double)r.launch_angle, (double)r.spin,
-                          (double)r.spin_rpm, (double)r.friction_dissipated));
+                          (double)sc.impact.offset, (double)r.exit_speed, Shown(r.launch_angle, 3), Shown(r.spin, 2),
+                          Shown(r.spin_rpm, 0), (double)r.friction_dissipated));
     if (r.bat_vibration_tangential > 0)
       PetscCall(PetscPrintf(comm,
                             "oblique: the bat's vibration in its second plane took %.4e J (-impact_tangential_plane "

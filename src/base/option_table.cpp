@@ -200,6 +200,8 @@ std::string Fmt(const char *format, ...)
   return buf;
 }
 
+double Shown(double v, int decimals) { return std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v; }
+
 std::string ShortestText(double v)
 {
   char buf[64], whole[400];

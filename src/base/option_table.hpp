@@ -119,7 +119,10 @@ const OptionModule *OptionModuleOf(const std::string &name); // the module whose
 std::string ShortestText(double v);
 // printf into a std::string (a message, a summary line, an options file's header; at most 1023
 // characters).
-std::string              Fmt(const char *format, ...) __attribute__((format(printf, 1, 2)));
+std::string Fmt(const char *format, ...) __attribute__((format(printf, 1, 2)));
+// v for printing with %.<decimals>f: +0 where it rounds to 0 there (-1e-17 prints "0.0000", not
+// "-0.0000"), else v.
+double                   Shown(double v, int decimals);
 std::vector<std::string> OptionNames();          // every registered name (with the dash), sorted
 std::string OptionUnit(const std::string &name); // "" when unknown or not a number; name with or without dash
 // Whether `name` (with the dash) falls under a prefix of a registered PETSc table (-ts_, -snes_, ...).

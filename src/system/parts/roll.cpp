@@ -122,7 +122,7 @@ public:
     if (std::isnan(c[0])) return "";
     return Fmt("roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of E_in; its twist and spin "
                "hold %.4e J at the end",
-               c[0], c[1], c[2]);
+               Shown(c[0], 4), Shown(c[1], 4), c[2]);
   }
   void Record(const PartParams &q, const BeamParams &beam,
               std::vector<std::pair<const char *, PetscReal>> *out) const override
