@@ -219,3 +219,17 @@ foreach(c IN LISTS cases)
   endif()
   message(STATUS "ok: ${parts} -> ${regex}")
 endforeach()
+
+# SuperLU_DIST on more than one rank (PETSc 3.18's interface frees its process grid twice: the
+# run aborted with a corrupted heap after writing its file) is refused, naming the option.
+if(MPIEXEC)
+  execute_process(COMMAND ${MPIEXEC} -n 2 ${EXE} -ts_type cn -pc_factor_mat_solver_type superlu_dist -output none
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+  if(rc EQUAL 0 OR NOT "${out}${err}" MATCHES "-pc_factor_mat_solver_type superlu_dist is refused on 2 ranks: PETSc 3.18's SuperLU_DIST")
+    message(FATAL_ERROR "superlu_dist on 2 ranks: exit ${rc}, not the refusal:\n${out}${err}")
+  endif()
+  if("${out}${err}" MATCHES "malloc\\(\\)|linked list corrupted|Signal: ")
+    message(FATAL_ERROR "superlu_dist on 2 ranks: a crash, not the refusal:\n${out}${err}")
+  endif()
+  message(STATUS "ok: 2 ranks -pc_factor_mat_solver_type superlu_dist -> refused")
+endif()

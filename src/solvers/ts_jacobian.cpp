@@ -23,10 +23,34 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <string>
 
 namespace beamimpact {
 
 namespace {
+
+// The LU of a Jacobian: -pc_factor_mat_ordering_type and -pc_factor_mat_solver_type read (mumps
+// on more than one rank unless another is given). SuperLU_DIST on more than one rank is refused:
+// PETSc 3.18's interface frees its process grid twice when the factor and then the DM's
+// communicator are destroyed (valgrind: superlu_gridexit from MatDestroy, then again from
+// Petsc_Superlu_dist_keyval_Delete_Fn), which corrupted the heap and aborted the run after it.
+PetscErrorCode JacobianLUSetUp(PC pc, PetscMPIInt size)
+{
+  MatSolverType type = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCSetType(pc, PCLU));
+  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(PCSetFromOptions(pc));
+  PetscCall(PCFactorGetMatSolverType(pc, &type));
+  PetscCheck(size == 1 || !type || std::string(type) != MATSOLVERSUPERLU_DIST, PetscObjectComm((PetscObject)pc),
+             PETSC_ERR_SUP,
+             "-pc_factor_mat_solver_type superlu_dist is refused on %d ranks: PETSc 3.18's SuperLU_DIST interface "
+             "frees its process grid twice and corrupts the heap; use mumps (the default on more than one rank) or "
+             "superlu_dist on one rank",
+             (int)size);
+  PetscFunctionReturn(0);
+}
 
 // The coupling vector (dc/du over the coupled beam dofs and the ball, last) and its columns.
 struct CouplingBlock {
@@ -301,9 +325,7 @@ PetscErrorCode BeamFactorAt(TSProblem &P, PetscReal shift, PetscReal shiftV, Bea
       PetscCall(KSPSetType(f->ksp, KSPPREONLY));
       PC pc;
       PetscCall(KSPGetPC(f->ksp, &pc));
-      PetscCall(PCSetType(pc, PCLU));
-      if (P.L.size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-      PetscCall(PCSetFromOptions(pc)); // -pc_factor_mat_ordering_type, -pc_factor_mat_solver_type
+      PetscCall(JacobianLUSetUp(pc, P.L.size));
       PetscCall(VecDuplicate(jac.u, &f->w));
     } else PetscCall(MatCopy(jac.B0, f->B, SAME_NONZERO_PATTERN));
     if (jac.Bd) PetscCall(MatAXPY(f->B, shiftV, jac.Bd, SAME_NONZERO_PATTERN));
@@ -367,9 +389,7 @@ PetscErrorCode AssembledFallbackSolve(TSProblem &P, Vec b, Vec z, const char *wh
     PetscCall(KSPSetType(F.ksp, KSPPREONLY));
     PC pc;
     PetscCall(KSPGetPC(F.ksp, &pc));
-    PetscCall(PCSetType(pc, PCLU));
-    if (P.L.size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-    PetscCall(PCSetFromOptions(pc)); // -pc_factor_mat_ordering_type, -pc_factor_mat_solver_type
+    PetscCall(JacobianLUSetUp(pc, P.L.size));
   }
   if (F.shift != P.jac.shift || F.shiftV != P.jac.shiftV || F.kc != P.jac.kc) {
     PetscCall(AssembleShifted(P, F.J, F.J0, F.Jd, P.jac.shift, P.jac.shiftV, P.jac.kc));
