@@ -117,7 +117,10 @@ const OptionModule &PetscSolverOptionTable()
                  "Sherman-Morrison; lu: the whole Jacobian refactored at each change)",
                  "shell"),
       OptionText("-pc_factor_mat_ordering_type", "Ordering of the LU factorisation (nd, rcm, natural, ...)", "nd"),
-      OptionText("-pc_factor_mat_solver_type", "LU package (petsc; mumps on more than one rank)", "petsc"),
+      OptionText("-pc_factor_mat_solver_type",
+                 "LU package (petsc; mumps on more than one rank; superlu_dist on one rank only: PETSc 3.18 frees its "
+                 "grid twice in parallel)",
+                 "petsc"),
       // the modes' eigensolver (SLEPc, prefix modes_)
       OptionText("-modes_eps_type", "-task modes: SLEPc eigensolver", "krylovschur"),
       OptionReal("-modes_eps_tol", "1", "-task modes: eigensolver tolerance", "1e-12", Positive()),
