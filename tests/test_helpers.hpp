@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <map>
 #include <string>
 #include <unistd.h>
 #include <utility>
@@ -96,6 +98,31 @@ inline BeamSystem SystemOf(const BeamParams &p)
   std::string why;
   EXPECT_TRUE(BeamSystemBuild(p, &sys, &why)) << why;
   return sys;
+}
+
+// The beam with a registered structure part configured through the part's own option module, as
+// its options would (the rows given with their values: a flag 1, a list its values); the part
+// absent when its Configure says so. E.g. WithPart(p, "wall", {{"-beam_shell", {1}}}).
+inline BeamParams WithPart(BeamParams p, const char *name, const std::map<std::string, std::vector<PetscReal>> &given)
+{
+  const StructurePart *part = StructurePartFind(name);
+  EXPECT_NE(part, nullptr) << name << " is a registered structure part";
+  if (!part) return p;
+  PartOptionValues v;
+  v.given = given;
+  std::shared_ptr<const PartParams> q;
+  std::string                       why;
+  EXPECT_TRUE(part->Configure(v, p, &q, &why)) << why;
+  p.parts.Set(name, q);
+  return p;
+}
+
+// A registered part's instance in a system (its fields [first, first + count)), nullptr if absent.
+inline const PartInstance *PartIn(const BeamSystem &sys, const char *name)
+{
+  for (const PartInstance &s : sys.parts)
+    if (!std::strcmp(s.part->Name(), name)) return &s;
+  return nullptr;
 }
 
 // A hand-made two-field system: field 0 is the one-field system a, field 1 an uncoupled copy

@@ -5,7 +5,9 @@
 // the long-cylinder limit; the spatial convergence of the discrete shell at order 2; the shell's
 // fields apart from the beam's (the beam's rows unchanged, no coupling in K).
 #include "model/shell.hpp"
+#include "model/barrel.hpp"
 #include "run/modal_reference.hpp"
+#include "solvers/modes.hpp"
 
 #include "test_helpers.hpp"
 
@@ -23,8 +25,12 @@ struct Tube {
   PetscReal E, nu, rho, R, t, L; // Pa, 1, kg/m^3, m (midsurface radius), m (wall), m
 };
 
-// A uniform round tube as a profile (rows 'x D d'), its wall as a shell of harmonics ns.
-BeamParams TubeBeam(const Tube &c, PetscInt nodes, Support left, Support right, std::vector<PetscInt> ns = {2, 3, 4})
+using Given = std::map<std::string, std::vector<PetscReal>>;
+
+// A uniform round tube as a profile (rows 'x D d'), its wall as a shell of harmonics ns through the
+// wall part's options (-beam_shell -shell_harmonics ns, and more rows in `more`).
+BeamParams TubeBeam(const Tube &c, PetscInt nodes, Support left, Support right, std::vector<PetscInt> ns = {2, 3, 4},
+                    Given more = {})
 {
   BeamParams      p;
   const PetscReal D = 2 * c.R + c.t, d = 2 * c.R - c.t;
@@ -39,8 +45,23 @@ BeamParams TubeBeam(const Tube &c, PetscInt nodes, Support left, Support right, 
   p.section.material.nu    = c.nu;
   p.EI                     = c.E * RoundSecondMoment(D, d);
   p.mu                     = c.rho * RoundArea(D, d);
-  p.shell.on               = true;
-  p.shell.harmonics        = ns;
+  more["-beam_shell"] = {1};
+  more["-shell_harmonics"].assign(ns.begin(), ns.end());
+  return WithPart(p, "wall", more);
+}
+
+// The first of the shell's fields in a system (the wall part's).
+PetscInt ShellFirst(const BeamSystem &sys)
+{
+  const PartInstance *w = PartIn(sys, "wall");
+  EXPECT_NE(w, nullptr);
+  return w ? w->first : -1;
+}
+
+// The beam without its wall.
+BeamParams Bare(BeamParams p)
+{
+  p.parts.Set("wall", nullptr);
   return p;
 }
 
@@ -51,7 +72,7 @@ std::vector<PetscReal> HarmonicFrequencies(const BeamSystem &sys, size_t k)
   std::vector<PetscInt> dofs, index(sys.ndof, -1);
   for (PetscInt d = 0; d < sys.ndof; ++d) {
     const PetscInt f = d % sys.fields;
-    if (!sys.held[d] && f >= sys.shell.first + 3 * (PetscInt)k && f < sys.shell.first + 3 * (PetscInt)k + 3) index[d] = (PetscInt)dofs.size(), dofs.push_back(d);
+    if (!sys.held[d] && f >= ShellFirst(sys) + 3 * (PetscInt)k && f < ShellFirst(sys) + 3 * (PetscInt)k + 3) index[d] = (PetscInt)dofs.size(), dofs.push_back(d);
   }
   const PetscInt         n = (PetscInt)dofs.size();
   std::vector<PetscReal> A((size_t)n * n, 0.0);
@@ -86,10 +107,9 @@ TEST(Shell, FieldsApartFromTheBeam)
 {
   BeamParams       p    = TubeBeam(kBarrel, 21, Support::Free, Support::Free);
   const BeamSystem sys  = SystemOf(p);
-  p.shell.on            = false;
-  const BeamSystem bare = SystemOf(p);
+  const BeamSystem bare = SystemOf(Bare(p));
   ASSERT_EQ(sys.fields, bare.fields + 9);
-  EXPECT_EQ(sys.shell.first, 1);
+  EXPECT_EQ(ShellFirst(sys), 1);
   for (PetscInt i = 0; i < bare.nodes; ++i) {
     PetscInt  cb[16], cs[64];
     PetscReal vb[16], vs[64];
@@ -145,7 +165,7 @@ TEST(Shell, RayleighRingLimit)
   c.L    = 20 * c.R;
   const BeamSystem sys = SystemOf(TubeBeam(c, 81, Support::Free, Support::Free));
   for (size_t k = 0; k < 3; ++k) {
-    const PetscInt  n = sys.shell.harmonics[k];
+    const PetscInt  n = 2 + (PetscInt)k; // the default harmonics 2, 3, 4
     const PetscReal f = HarmonicFrequencies(sys, k).front(), ring = RayleighRingFrequency(c.E, c.rho, c.nu, c.R, c.t, n);
     PetscPrintf(PETSC_COMM_WORLD, "long free-free tube n = %d: %.3f Hz, Rayleigh's ring %.3f Hz (%+.3f %%)\n", (int)n, (double)f, (double)ring, (double)(100 * (f / ring - 1)));
     EXPECT_LT(f / ring, 1.0) << "n " << n;
@@ -164,8 +184,7 @@ TEST(Shell, ImpactInvariantsAndEveryTool)
   c.L    = 0.6;
   c.t    = 0.001; // a thin wall (the slow superball presses it 30 um)
   const BeamParams beam = TubeBeam(c, 41, Support::Free, Support::Free);
-  BeamParams       bare = beam;
-  bare.shell.on         = false;
+  const BeamParams bare = Bare(beam);
   const BallParams ball = Superball();
   ImpactParams     ip;
   ip.x      = 0.4;
@@ -198,7 +217,7 @@ PetscReal WallCompliance(const BeamSystem &sys, const ContactCoupling &g)
 {
   std::vector<PetscInt> dofs, at(sys.ndof, -1);
   for (PetscInt d = 0; d < sys.ndof; ++d)
-    if (d % sys.fields >= sys.shell.first && !sys.held[d]) at[d] = (PetscInt)dofs.size(), dofs.push_back(d);
+    if (d % sys.fields >= ShellFirst(sys) && !sys.held[d]) at[d] = (PetscInt)dofs.size(), dofs.push_back(d);
   const size_t           n = dofs.size();
   std::vector<PetscReal> K(n * n, 0.0), b(n, 0.0);
   for (size_t r = 0; r < n; ++r) {
@@ -235,12 +254,9 @@ PetscReal WallCompliance(const BeamSystem &sys, const ContactCoupling &g)
 // and momentum and the exact modal reference agrees with RK4.
 TEST(Shell, LoadPatch)
 {
-  BeamParams       p    = TubeBeam(kBarrel, 61, Support::Free, Support::Free);
-  const BeamSystem pt   = SystemOf(p);
-  p.shell.contact_radius = 1e-9;
-  const BeamSystem tiny = SystemOf(p);
-  p.shell.contact_radius = 0.015;
-  const BeamSystem wide = SystemOf(p);
+  const BeamSystem pt   = SystemOf(TubeBeam(kBarrel, 61, Support::Free, Support::Free));
+  const BeamSystem tiny = SystemOf(TubeBeam(kBarrel, 61, Support::Free, Support::Free, {2, 3, 4}, {{"-shell_contact_radius", {1e-9}}}));
+  const BeamSystem wide = SystemOf(TubeBeam(kBarrel, 61, Support::Free, Support::Free, {2, 3, 4}, {{"-shell_contact_radius", {0.015}}}));
   const PetscReal  x    = 0.1234;
   const ContactCoupling g0 = BeamSystemCoupling(pt, x), g1 = BeamSystemCoupling(tiny, x), g2 = BeamSystemCoupling(wide, x);
   ASSERT_EQ(g0.n, g1.n);
@@ -269,8 +285,7 @@ TEST(Shell, LoadPatch)
   Tube c = kBarrel;
   c.L    = 0.6;
   c.t    = 0.001;
-  BeamParams beam          = TubeBeam(c, 41, Support::Free, Support::Free);
-  beam.shell.contact_radius = 0.01;
+  const BeamParams beam = TubeBeam(c, 41, Support::Free, Support::Free, {2, 3, 4}, {{"-shell_contact_radius", {0.01}}});
   const BallParams ball     = Superball();
   ImpactParams     ip;
   ip.x      = 0.4;
@@ -293,12 +308,14 @@ TEST(Shell, LoadPatch)
 TEST(Shell, LowestFrequencyColumn)
 {
   const BeamParams ff = TubeBeam(kBarrel, 161, Support::Free, Support::Free), cc = TubeBeam(kADINA, 161, Support::Clamped, Support::Clamped);
-  EXPECT_NEAR(ShellLowestFrequency(ff, 2), 1607.910, 1e-4 * 1607.910) << "Ritz, free-free barrel";
-  EXPECT_NEAR(ShellLowestFrequency(TubeBeam(kBarrel, 161, Support::Clamped, Support::Clamped), 3), 4667.7, 1e-4 * 4667.7) << "Ritz, n = 3";
-  EXPECT_NEAR(ShellLowestFrequency(cc, 2), 1701.0, 2e-3 * 1701.0) << "ADINA's shell FE";
-  BeamParams stiff          = ff;
-  stiff.shell.youngs_modulus = 4 * kBarrel.E;
-  EXPECT_NEAR(ShellLowestFrequency(stiff, 2) / ShellLowestFrequency(ff, 2), 2.0, 1e-9);
+  const BarrelShell wall; // the profile's E
+  EXPECT_NEAR(ShellLowestFrequency(wall, ff, 2), 1607.910, 1e-4 * 1607.910) << "Ritz, free-free barrel";
+  EXPECT_NEAR(ShellLowestFrequency(wall, TubeBeam(kBarrel, 161, Support::Clamped, Support::Clamped), 3), 4667.7, 1e-4 * 4667.7) << "Ritz, n = 3";
+  EXPECT_NEAR(ShellLowestFrequency(wall, cc, 2), 1701.0, 2e-3 * 1701.0) << "ADINA's shell FE";
+  BarrelShell stiff_wall;
+  stiff_wall.youngs_modulus = 4 * kBarrel.E;
+  const BeamParams stiff = TubeBeam(kBarrel, 161, Support::Free, Support::Free, {2, 3, 4}, {{"-shell_youngs_modulus", {4 * kBarrel.E}}});
+  EXPECT_NEAR(ShellLowestFrequency(stiff_wall, stiff, 2) / ShellLowestFrequency(wall, ff, 2), 2.0, 1e-9);
   const BeamSystem a = SystemOf(ff), b = SystemOf(stiff);
   PetscInt         ca[64], cb[64];
   PetscReal        va[64], vb[64];
@@ -309,8 +326,103 @@ TEST(Shell, LowestFrequencyColumn)
   }
   const Tube long_tube = {kBarrel.E, kBarrel.nu, kBarrel.rho, kBarrel.R, kBarrel.t, 20 * kBarrel.R};
   const PetscReal ring = RayleighRingFrequency(long_tube.E, long_tube.rho, long_tube.nu, long_tube.R, long_tube.t, 2);
-  EXPECT_NEAR(ShellLowestFrequency(TubeBeam(long_tube, 81, Support::Free, Support::Free), 2), ring, 5e-3 * ring);
+  EXPECT_NEAR(ShellLowestFrequency(wall, TubeBeam(long_tube, 81, Support::Free, Support::Free), 2), ring, 5e-3 * ring);
   BeamParams solid = ff; // no wall: NaN
   solid.section.profile = {{0.0, 0.05, 0.0}, {kBarrel.L, 0.05, 0.0}};
-  EXPECT_TRUE(std::isnan(ShellLowestFrequency(solid, 2)));
+  EXPECT_TRUE(std::isnan(ShellLowestFrequency(wall, solid, 2)));
+}
+
+// The barrel wall is a registered structure part (system/parts/wall.cpp): its own options give
+// the hoop or the shell, and the system, the coupling, the energy account and -task modes' family
+// get the wall from it alone, its fields right after the frame's roll's. On a tube (kBarrel's
+// section, 0.6 m): the hoop's dof w stores k_h w^2/2 with k_h = m_h (2 pi f_h)^2 and carries
+// m_h v^2/2, couples with weight 1; a point load couples each harmonic's W_n at the hat's nodes
+// with -w_hat (sin(n a/R)/(n a/R) = 1 at a = 0); the lowest mode -task modes labels n = 2 is the
+// harmonic's own (ShellLowestFrequency, a separate band solve) and lies within Rayleigh's ring
+// (a long tube, L = 20 R: 0.6 % below); the patch radius defaults to the Hertz radius
+// sqrt(R_b delta) at the impact point, a patch wider than the ball is refused; the options refuse
+// the hoop on a uniform beam and the shell with the hoop.
+TEST(WallPart, RegistryGivesTheBarrelWall)
+{
+  ASSERT_NE(StructurePartFind("wall"), nullptr);
+  const PetscReal  f_h = 1200, m_h = 0.03, w = 2e-4, v = 0.7, x = 0.3217;
+  const BeamParams tube = Bare(TubeBeam(kBarrel, 41, Support::Free, Support::Free));
+  const BeamParams rolls =
+    WithPart(tube, "roll", {{"-beam_torsion", {1}}, {"-beam_torsion_stiffness", {50}}, {"-beam_torsion_inertia", {1e-4}}});
+  const BeamParams hoop = WithPart(rolls, "wall", {{"-barrel_hoop_frequency", {f_h}}, {"-barrel_hoop_mass", {m_h}}});
+  const BeamSystem sys = SystemOf(hoop), plain = SystemOf(rolls);
+  const PartInstance *wall = PartIn(sys, "wall");
+  ASSERT_NE(wall, nullptr);
+  EXPECT_EQ(PartIn(plain, "wall"), nullptr);
+  EXPECT_EQ(sys.fields, plain.fields + 1);
+  EXPECT_EQ(wall->first, sys.RollField() + 1) << "dof order: beam, roll, wall";
+  const PetscInt d = sys.Dof(0, wall->first);
+  EXPECT_STREQ(BeamSystemPartWords(sys, d), "the barrel wall");
+  std::vector<PetscReal> y(sys.ndof, 0.0), u(sys.ndof, 0.0);
+  y[d] = w, u[d] = v;
+  PetscReal stored[kParts], kinetic[kParts];
+  BeamSystemPartEnergies(sys, y.data(), sys.fields, u.data(), sys.fields, 0, sys.ndof, stored, kinetic);
+  const PetscReal k_h = m_h * std::pow(2 * PETSC_PI * f_h, 2);
+  EXPECT_NEAR(stored[(int)Part::Wall], 0.5 * k_h * w * w, 1e-12 * k_h * w * w);
+  EXPECT_NEAR(kinetic[(int)Part::Wall], 0.5 * m_h * v * v, 1e-15);
+  EXPECT_EQ(stored[(int)Part::Beam] + kinetic[(int)Part::Beam], 0.0);
+  const ContactCoupling g = BeamSystemCoupling(sys, x), g0 = BeamSystemCoupling(plain, x);
+  ASSERT_EQ(g.n, g0.n + 1);
+  EXPECT_EQ(g.dof[g.n - 1], d);
+  EXPECT_EQ(g.w[g.n - 1], 1.0);
+
+  // the shell, harmonics 2 and 3, a point load
+  const BeamSystem    shell = SystemOf(TubeBeam(kBarrel, 41, Support::Free, Support::Free, {2, 3}, {{"-shell_contact_radius", {0}}}));
+  const PartInstance *s     = PartIn(shell, "wall");
+  ASSERT_NE(s, nullptr);
+  ASSERT_EQ(s->count, 6);
+  const ImpactStencil   st = GridImpactStencil(shell.nodes, kBarrel.L, x);
+  const ContactCoupling gs = BeamSystemCoupling(shell, x);
+  ASSERT_EQ(gs.n, 2 + 2 * 2);
+  for (PetscInt k = 0; k < 2; ++k) {
+    EXPECT_EQ(gs.WeightOf(shell.Dof(st.j, s->first + 3 * k + 2)), -st.w) << "W_n at the left node, harmonic " << k;
+    EXPECT_EQ(gs.WeightOf(shell.Dof(st.j + 1, s->first + 3 * k + 2)), -(1 - st.w)) << "W_n at the right node";
+  }
+
+  // -task modes' family: the lowest mode labelled n = 2 is the harmonic's own, near Rayleigh's ring
+  Tube c = kBarrel;
+  c.L    = 20 * c.R;
+  const BeamParams long_tube = TubeBeam(c, 61, Support::Free, Support::Free, {2, 3});
+  ModesResult      r;
+  ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, SystemOf(long_tube), 16, &r, nullptr));
+  ASSERT_EQ(r.shell_n.size(), r.frequency.size());
+  PetscReal f2 = 0;
+  for (size_t m = 0; m < r.frequency.size() && f2 == 0; ++m)
+    if (r.shell_n[m] == 2) f2 = r.frequency[m];
+  const PetscReal band = ShellLowestFrequency(BarrelShell(), long_tube, 2);
+  const PetscReal ring = RayleighRingFrequency(c.E, c.rho, c.nu, c.R, c.t, 2);
+  EXPECT_NEAR(f2, band, 1e-6 * band) << "the family n = 2's lowest mode";
+  EXPECT_LT(f2 / ring, 1.0);
+  EXPECT_GT(f2 / ring, 1.0 - 6e-3);
+
+  // the patch radius at the impact point, from the ball
+  const StructurePart *part = StructurePartFind("wall");
+  const BeamParams     tb   = TubeBeam(kBarrel, 41, Support::Free, Support::Free);
+  BallParams           ball = Superball();
+  ball.radius               = 0.03;
+  PartPoint at;
+  at.ball = &ball, at.x = x, at.approach = 30;
+  std::shared_ptr<const PartParams> out;
+  std::string                       why;
+  ASSERT_TRUE(part->Resolve(*tb.parts.Find("wall"), tb, at, &out, &why)) << why;
+  ASSERT_NE(out, nullptr);
+  EXPECT_EQ(out->SystemKey(), std::vector<PetscReal>{ShellContactRadiusDefault(ball, 30)});
+  EXPECT_NEAR(out->SystemKey()[0], std::sqrt(ball.radius * ContactWallMaxCompression(ball, 30)), 1e-15);
+  const BeamParams wide = TubeBeam(kBarrel, 41, Support::Free, Support::Free, {2, 3, 4}, {{"-shell_contact_radius", {0.031}}});
+  EXPECT_FALSE(part->Resolve(*wide.parts.Find("wall"), wide, at, &out, &why));
+  EXPECT_NE(why.find("-shell_contact_radius 0.031 m is not allowed"), std::string::npos) << why;
+
+  // the options' refusals
+  PartOptionValues o;
+  o.given = {{"-barrel_hoop_frequency", {f_h}}, {"-barrel_hoop_mass", {m_h}}};
+  EXPECT_FALSE(part->Configure(o, AluminiumBeam(1.1, 41), &out, &why));
+  EXPECT_NE(why.find("-barrel_hoop_frequency 1200 is not allowed on a beam with no round hollow section"), std::string::npos) << why;
+  o.given["-beam_shell"] = {1};
+  EXPECT_FALSE(part->Configure(o, tube, &out, &why));
+  EXPECT_NE(why.find("-beam_shell with -barrel_hoop_frequency is not allowed"), std::string::npos) << why;
 }

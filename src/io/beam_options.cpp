@@ -102,28 +102,6 @@ const OptionModule &BeamOptionTable()
                              "The hands' damping of the frame's roll: torque -c'_phi phi_t per metre of handle", "0",
                              NonNegative()),
                   {"-grip"}),
-      OptionFlag("-beam_shell",
-                 "The barrel wall as a thin cylindrical shell (Sanders-Koiter harmonics) where the profile is hollow, "
-                 "in series with the ball (-beam_profile with inner diameters); a barrel wall thicker than 0.1 of its "
-                 "radius is noted (the thin-shell model drops terms of order t/R)"),
-      OptionNeeds(OptionList("-shell_harmonics", "1",
-                             "Circumferential orders n of the shell's harmonics (n >= 2, at most 3; default 2,3,4)", 1,
-                             3, AtLeast(2)),
-                  {"-beam_shell"}),
-      OptionNeeds(OptionReal("-shell_contact_radius", "m",
-                             "The ball's load on the shell as a patch of radius a: sin(n a/R)/(n a/R) per harmonic, a "
-                             "hat of half-width a along x (0: a point load; default sqrt(R_b delta), delta the ball's "
-                             "peak compression on a rigid wall at the approach speed, with -ball_radius); at most the "
-                             "ball's radius and the wall's midsurface radius at the impact point",
-                             "", NonNegative()),
-                  {"-beam_shell"}),
-      OptionNeeds(OptionReal("-shell_youngs_modulus", "Pa",
-                             "The wall's Young's modulus in the shell (its ovaling stiffness: a composite layup or "
-                             "another alloy moves the hoop frequency as sqrt(E)); the beam's bending keeps "
-                             "-beam_youngs_modulus (default: that); 1e8 (a soft polymer) to 1e12 (stiffer than any "
-                             "bat's wall)",
-                             "", Between(1e8, 1e12)),
-                  {"-beam_shell"}),
       OptionNeeds(OptionReal("-barrel_wall_thickness", "m",
                              "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the "
                              "barrel) get the inner diameter D - 2 t instead of the file's (the taper follows "
@@ -131,15 +109,6 @@ const OptionModule &BeamOptionTable()
                              "barrel wall (a hollow bat)",
                              "", AtLeast(1e-4)),
                   {"-beam_profile|-bat_length"}),
-      OptionReal("-barrel_hoop_frequency", "Hz",
-                 "The barrel wall's hoop frequency f_h: a wall mass on a spring m_h (2 pi f_h)^2 in series with the "
-                 "ball at the impact point (with -barrel_hoop_mass); a hollow barrel's: needs -beam_profile with inner "
-                 "diameters or a hollow -bat_length bat",
-                 "", Positive()),
-      OptionNeeds(OptionReal("-barrel_hoop_mass", "kg",
-                             "The barrel wall's mass m_h in its hoop mode (with -barrel_hoop_frequency)", "",
-                             Positive()),
-                  {"-barrel_hoop_frequency"}),
     },
   };
   return m;
@@ -174,30 +143,12 @@ std::string SupportHelp(const char *end)
   return s;
 }
 
-// -shell_harmonics: whole, distinct circumferential orders (the table's row checks n >= 2).
-PetscErrorCode ShellHarmonicsSet(MPI_Comm comm, const std::vector<PetscReal> &harmonics, BarrelShell *shell)
-{
-  PetscFunctionBeginUser;
-  shell->harmonics.clear();
-  for (PetscReal n : harmonics) {
-    PetscCheck(n == std::floor(n), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-shell_harmonics %g is not allowed: the circumferential orders are whole numbers n >= 2", (double)n);
-    for (PetscInt q : shell->harmonics)
-      PetscCheck(q != (PetscInt)n, comm, PETSC_ERR_ARG_OUTOFRANGE, "-shell_harmonics: %g is given twice", (double)n);
-    shell->harmonics.push_back((PetscInt)n);
-  }
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o)
 {
   const OptionModule    &T    = BeamOptionTable();
   std::string            left = p->left.Name(), right = p->right.Name();
   std::vector<PetscReal> clamp, grip;
-  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE, sethoop = PETSC_FALSE,
-            sethoopmass        = PETSC_FALSE;
-  PetscBool              shell = PETSC_FALSE, setharmonics = PETSC_FALSE;
-  std::vector<PetscReal> harmonics;
+  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
@@ -229,22 +180,8 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_mass", &p->grip.mass, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_torsion_stiffness", &p->grip.torsion_stiffness, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_torsion_damping", &p->grip.torsion_damping, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_shell", &shell, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_harmonics", &harmonics, &setharmonics));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_contact_radius", &p->shell.contact_radius, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-shell_youngs_modulus", &p->shell.youngs_modulus, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_wall_thickness", &o->wall, &o->setwall));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_frequency", &p->hoop.frequency, &sethoop));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_hoop_mass", &p->hoop.mass, &sethoopmass));
   PetscOptionsEnd();
-  PetscCheck(sethoop == sethoopmass, comm, PETSC_ERR_ARG_WRONGSTATE,
-             "%s %g without %s is not allowed: the hoop oscillator needs its frequency (Hz) and its mass (kg)",
-             sethoop ? "-barrel_hoop_frequency" : "-barrel_hoop_mass",
-             (double)(sethoop ? p->hoop.frequency : p->hoop.mass),
-             sethoop ? "-barrel_hoop_mass" : "-barrel_hoop_frequency");
-  p->hoop.on  = sethoop;
-  p->shell.on = shell;
-  if (setharmonics) PetscCall(ShellHarmonicsSet(comm, harmonics, &p->shell));
 
   PetscCheck(SupportFind(left, &p->left) && SupportFind(right, &p->right), comm, PETSC_ERR_PLIB,
              "a support the table allows is not registered");
@@ -577,37 +514,6 @@ PetscErrorCode PivotCheck(MPI_Comm comm, const BeamParams &p)
   PetscFunctionReturn(0);
 }
 
-// The barrel's wall: the shell on a round hollow profile, the hoop on a hollow one, not both.
-PetscErrorCode BarrelWallCheck(MPI_Comm comm, const BeamParams &p)
-{
-  PetscFunctionBeginUser;
-  if (p.shell.on) {
-    PetscCheck(p.section.source == SectionSource::Profile, comm, PETSC_ERR_ARG_INCOMP,
-               "-beam_shell needs a round hollow section: -beam_profile with rows 'x D d' (a uniform beam or "
-               "-beam_properties has no wall)");
-    bool hollow = false;
-    for (const ProfileRow &r : p.section.profile) hollow = hollow || r.d > 0;
-    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP,
-               "-beam_shell with a solid profile is not allowed: no row of -beam_profile has an inner diameter d > 0");
-    PetscCheck(!p.hoop.on, comm, PETSC_ERR_ARG_INCOMP,
-               "-beam_shell with -barrel_hoop_frequency is not allowed: the wall is either the shell or the lumped "
-               "hoop oscillator");
-  }
-  if (p.hoop.on) { // the hoop is a hollow barrel's wall, as the shell is
-    bool hollow = false;
-    for (const ProfileRow &r : p.section.profile)
-      hollow = hollow || (p.section.source == SectionSource::Profile && r.d > 0);
-    PetscCheck(hollow, comm, PETSC_ERR_ARG_INCOMP,
-               "-barrel_hoop_frequency %g is not allowed on %s: the hoop oscillator is a hollow barrel's wall; give "
-               "-beam_profile with rows 'x D d', d > 0",
-               (double)p.hoop.frequency,
-               p.section.source == SectionSource::Profile
-                 ? "a solid profile (no row of -beam_profile has an inner diameter d > 0)"
-                 : "a beam with no round hollow section (a uniform beam or -beam_properties has no wall)");
-  }
-  PetscFunctionReturn(0);
-}
-
 // -grip and its stiffnesses: an interval of a free bat, non-negative numbers.
 PetscErrorCode GripCheck(MPI_Comm comm, const BeamParams &p)
 {
@@ -676,7 +582,6 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: %s",
              p.theory.c_str(), BeamOptionTable().Find("-beam_theory")->Allowed().c_str());
   if (p.has_pivot) PetscCall(PivotCheck(comm, p));
-  PetscCall(BarrelWallCheck(comm, p));
   if (p.grip.on) PetscCall(GripCheck(comm, p));
   if (p.has_clamp && !p.strings.Held())
     PetscCall(ClampCheck(comm, p)); // a held string bed's frame is clamped everywhere
@@ -725,9 +630,6 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, 
     }
     RacketMakerHead(*racket, &s);
   }
-  PetscCheck(!p->shell.on && !p->hoop.on, comm, PETSC_ERR_ARG_INCOMP,
-             "-strings_frame %s with a barrel wall (%s) is not allowed: a racket has no barrel", s.frame.c_str(),
-             p->shell.on ? "-beam_shell" : "-barrel_hoop_frequency");
   if (s.Held()) {
     PetscCheck(!p->grip.on && !p->has_pivot, comm, PETSC_ERR_ARG_INCOMP,
                "-strings_frame held holds the whole frame: %s has nothing to hold",
@@ -798,6 +700,8 @@ PetscErrorCode StructurePartsFromOptions(MPI_Comm comm, BeamParams *p)
     PetscCall(StructurePartOptionsRead(comm, *part, &v));
     PetscCheck(part->Configure(v, *p, &q, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
     p->parts.Set(part->Name(), q);
+    const std::string note = q ? part->Note(*q, *p) : ""; // beyond the part's range: say so, once
+    if (!note.empty()) PetscCall(PrintOnce(comm, ("note: " + note + "\n").c_str()));
   }
   PetscFunctionReturn(0);
 }
@@ -843,18 +747,6 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
       PetscCall(PrintOnce(comm, text)); // once, also in a sweep
     }
     p->pivot_x = xk;
-  }
-  PetscReal R, t;
-  if (p->shell.on && ShellBarrelWall(*p, &R, &t) &&
-      t > kShellThinLimit * R) { // beyond the thin-shell model's range: say so, once
-    char text[512];
-    std::snprintf(text, sizeof text,
-                  "note: -beam_shell on a thick wall: the barrel's wall is t = %.4g m on a midsurface radius R = %.4g "
-                  "m (t/R = %.2f, above %g): the thin-shell model (Sanders-Koiter) drops terms "
-                  "of order t/R against 1, so the wall's frequencies and compliance are rough here (docs/model.md "
-                  "section 14)\n",
-                  (double)t, (double)R, (double)(t / R), (double)kShellThinLimit);
-    PetscCall(PrintOnce(comm, text));
   }
   if (p->has_clamp) { // the nodes inside [x0, x1] are held: say where the held region ends when an edge falls between
                       // nodes

@@ -100,36 +100,24 @@ PetscErrorCode SwingFromOptions(MPI_Comm comm, const BeamParams &beam, SwingPara
   PetscFunctionReturn(0);
 }
 
-// -shell_contact_radius: its default from the ball (model/shell.hpp) at the approach speed at the
-// impact point, and the patch's entries within the contact coupling's room.
-PetscErrorCode ShellContactRadiusResolve(MPI_Comm comm, Scenario *sc)
+// Each registered part present at the impact point (StructurePart::Resolve: the shell's patch
+// radius from the ball at the approach speed, its entries within the coupling's room).
+PetscErrorCode StructurePartsResolve(MPI_Comm comm, Scenario *sc)
 {
-  BarrelShell &shell = sc->beam.shell;
   PetscFunctionBeginUser;
-  if (shell.contact_radius >=
-      0) { // given: a patch wider than the ball or the wall spreads the load off the wall (sin(n a/R)/(n a/R) -> 0)
-    const PetscReal R = ShellRadiusAt(sc->beam, sc->impact.x), Rb = sc->ball.radius;
-    PetscReal       limit = PETSC_INFINITY;
-    const char     *what  = "";
-    if (Rb > 0) limit = Rb, what = "the ball's radius (-ball_radius)";
-    if (R > 0 && R < limit) limit = R, what = "the barrel wall's midsurface radius at the impact point";
-    PetscCheck(!(shell.contact_radius > limit), comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "-shell_contact_radius %g m is not allowed: the ball's patch on the wall can be no wider than %s, %g m; "
-               "allowed 0 <= a <= %g m (a wider patch spreads the load off the wall)",
-               (double)shell.contact_radius, what, (double)limit, (double)limit);
-  }
-  if (shell.contact_radius < 0) {
-    const PetscReal v = sc->ball.speed +
-                        (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
-    shell.contact_radius = ShellContactRadiusDefault(sc->ball, v);
-  }
-  const size_t per = ShellPatchNodeWeights(sc->beam.nodes, sc->beam.length, sc->impact.x, shell.contact_radius).size();
-  const PetscInt total = 2 + (sc->beam.hoop.on ? 1 : 0) + (PetscInt)(per * shell.harmonics.size());
-  PetscCheck(total <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-shell_contact_radius %g m is not allowed with -beam_nodes %" PetscInt_FMT
-             ": the patch covers %zu nodes per harmonic, %" PetscInt_FMT " coupled dofs in all (at most %" PetscInt_FMT
-             "); give a smaller radius or fewer -shell_harmonics",
-             (double)shell.contact_radius, sc->beam.nodes, per, total, ContactCoupling::kMaxEntries);
+  if (sc->beam.parts.present.empty()) PetscFunctionReturn(0);
+  PartPoint at;
+  at.ball     = &sc->ball;
+  at.x        = sc->impact.x;
+  at.approach = sc->ball.speed +
+                (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = sc->beam.parts.Find(part->Name())) {
+      std::shared_ptr<const PartParams> out;
+      std::string                       why;
+      PetscCheck(part->Resolve(*q, sc->beam, at, &out, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
+      if (out) sc->beam.parts.Set(part->Name(), out);
+    }
   PetscFunctionReturn(0);
 }
 
@@ -236,8 +224,9 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
              "(m/s), or swing the bat (-bat_speed, -bat_angular_velocity)");
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
   if (part(ScenarioImpact)) PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
-  const PetscReal radius_as_read = sc->beam.shell.contact_radius, patch_as_read = sc->beam.strings.patch_radius;
-  if (sc->beam.shell.on) PetscCall(ShellContactRadiusResolve(comm, sc));
+  const PartParamSet parts_as_read = sc->beam.parts;
+  const PetscReal    patch_as_read = sc->beam.strings.patch_radius;
+  PetscCall(StructurePartsResolve(comm, sc));
   if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
   if (part(ScenarioFlight))
@@ -246,7 +235,7 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   if (sc->flight.on && (part(ScenarioFlight) || part(ScenarioBall))) PetscCall(FlightBallResolve(comm, *sc));
   if (how.read_as) {
     *how.read_as                           = *sc;
-    how.read_as->beam.shell.contact_radius = radius_as_read;
+    how.read_as->beam.parts                = parts_as_read;
     how.read_as->beam.strings.patch_radius = patch_as_read;
   }
   PetscFunctionReturn(0);

@@ -66,6 +66,16 @@ bool PartParamSet::Rolls() const
   return false;
 }
 
+std::vector<PetscReal> PartParamSet::SystemKey() const
+{
+  std::vector<PetscReal> key;
+  for (const auto &e : present) {
+    const std::vector<PetscReal> k = e.second->SystemKey();
+    key.insert(key.end(), k.begin(), k.end());
+  }
+  return key;
+}
+
 void PartParamSet::Set(const char *name, std::shared_ptr<const PartParams> p)
 {
   for (auto it = present.begin(); it != present.end(); ++it)

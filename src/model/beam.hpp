@@ -49,17 +49,17 @@ struct BeamGrip {
 
 // The barrel wall's hoop oscillator in series with the ball (issue 23, MODEL.md section 9, the
 // lumped alternative; model/barrel.hpp): a wall mass on a spring k_h = m_h (2 pi f_h)^2 loaded by
-// the contact force, its displacement added to the compression. Off by default.
+// the contact force, its displacement added to the compression. Part of the barrel wall's
+// structure part (system/parts/wall.cpp), present in BeamParams::parts with -barrel_hoop_frequency.
 struct BarrelHoop {
-  bool      on        = false;
   PetscReal frequency = 0; // Hz, f_h (a bat lab's tap-test hoop frequency)
   PetscReal mass      = 0; // kg, m_h, the wall's mass in the hoop mode
 };
 
 // The barrel wall as a thin cylindrical shell (-beam_shell; model/shell.hpp): Sanders-Koiter
-// harmonics on the hollow part of a profile. Off by default.
+// harmonics on the hollow part of a profile. Part of the barrel wall's structure part
+// (system/parts/wall.cpp), present in BeamParams::parts with -beam_shell.
 struct BarrelShell {
-  bool                  on        = false;
   std::vector<PetscInt> harmonics = {2, 3, 4}; // circumferential orders n >= 2
   PetscReal contact_radius = -1; // m, the ball's load patch a (-shell_contact_radius; 0: a point load; < 0: not yet
                                  // derived from the ball)
@@ -93,13 +93,17 @@ struct PartParams {
   // (-impact_z) turns it, a rigid motion of the structure includes the roll, a string bed on the
   // frame rolls with it and the hands may hold it (-grip_torsion_*). No by default.
   virtual bool Rolls() const { return false; }
+  // The numbers a system built on the beam depends on beyond the options (a value resolved at the
+  // impact point: the shell's patch radius a, m): a sweep builds a new system when they change.
+  virtual std::vector<PetscReal> SystemKey() const { return {}; }
 };
 struct PartParamSet {
   std::vector<std::pair<std::string, std::shared_ptr<const PartParams>>> present; // in registry order
-  const PartParams *Find(const char *name) const;                                 // nullptr: the part is absent
-  bool              Has(const char *name) const { return Find(name) != nullptr; }
-  void              Set(const char *name, std::shared_ptr<const PartParams> p); // replaces; nullptr removes
-  bool              Rolls() const; // some part present is the frame's roll (PartParams::Rolls)
+  const PartParams      *Find(const char *name) const;                            // nullptr: the part is absent
+  bool                   Has(const char *name) const { return Find(name) != nullptr; }
+  void                   Set(const char *name, std::shared_ptr<const PartParams> p); // replaces; nullptr removes
+  bool                   Rolls() const;     // some part present is the frame's roll (PartParams::Rolls)
+  std::vector<PetscReal> SystemKey() const; // every present part's SystemKey, in order
 };
 
 struct BeamParams {
@@ -120,8 +124,6 @@ struct BeamParams {
   PetscReal         damping_mass      = 0;       // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
   PetscReal         damping_stiffness = 0;       // s,   beta
   BeamGrip          grip;                        // the hands on the handle (none by default)
-  BarrelHoop        hoop;                        // the barrel wall's hoop oscillator (none by default)
-  BarrelShell       shell;                       // the barrel wall as a shell (none by default)
   StringBedParams   strings;                     // a racket's string bed on the frame (-strings_frame; none by default)
   PartParamSet      parts;                       // the registered structure parts present (none by default)
   BeamMaterialInput input;

@@ -56,9 +56,9 @@ PetscReal ShellRadiusAt(const BeamParams &p, PetscReal x)
   return 0;
 }
 
-PetscReal ShellYoungsModulus(const BeamParams &p)
+PetscReal ShellYoungsModulus(const BarrelShell &shell, const BeamParams &p)
 {
-  return p.shell.youngs_modulus > 0 ? p.shell.youngs_modulus : p.section.material.E;
+  return shell.youngs_modulus > 0 ? shell.youngs_modulus : p.section.material.E;
 }
 
 PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n)
@@ -210,16 +210,16 @@ void ShellAppendCells(const ShellGrid &s, BeamDiscretization *d)
 
 } // namespace
 
-ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d)
+ShellLayout ShellAppend(const BarrelShell &shell, const BeamParams &p, BeamDiscretization *d)
 {
   ShellGrid s;
-  s.F = d->fields, s.N = p.nodes, s.nh = (PetscInt)p.shell.harmonics.size(), s.G = s.F + 3 * s.nh;
-  s.h = p.length / (s.N - 1), s.E = ShellYoungsModulus(p), s.rho = p.section.material.rho;
-  s.nu = p.section.material.nu, s.c = CellsOf(p), s.first = s.F, s.harmonics = p.shell.harmonics;
+  s.F = d->fields, s.N = p.nodes, s.nh = (PetscInt)shell.harmonics.size(), s.G = s.F + 3 * s.nh;
+  s.h = p.length / (s.N - 1), s.E = ShellYoungsModulus(shell, p), s.rho = p.section.material.rho;
+  s.nu = p.section.material.nu, s.c = CellsOf(p), s.first = s.F, s.harmonics = shell.harmonics;
   const std::vector<NodeHold> hold = BeamNodeHolds(p);
   ShellLayout                 out;
   out.first     = s.first;
-  out.harmonics = p.shell.harmonics;
+  out.harmonics = shell.harmonics;
   BeamDiscretizationWiden(d, s.G, 0.0); // every new dof's mass is set below
   ShellAppendNodes(s, hold, d);
   ShellAppendCells(s, d);
@@ -277,16 +277,16 @@ PetscReal ShellContactRadiusDefault(const BallParams &b, PetscReal v)
 
 namespace beamimpact {
 
-PetscReal ShellLowestFrequency(const BeamParams &p, PetscInt n)
+PetscReal ShellLowestFrequency(const BarrelShell &shell, const BeamParams &p, PetscInt n)
 {
   const PetscReal nan = std::numeric_limits<PetscReal>::quiet_NaN();
-  BeamParams      q   = p;
-  q.shell.harmonics   = {n};
+  BarrelShell     q   = shell;
+  q.harmonics         = {n};
   BeamDiscretization d; // a placeholder field per node, held: the harmonic's fields alone
   d.fields = 1;
   d.mass.assign(p.nodes, 1.0);
   d.held.assign(p.nodes, 1);
-  ShellAppend(q, &d);
+  ShellAppend(q, p, &d);
   std::vector<PetscInt> index(d.mass.size(), -1);
   PetscInt              size = 0;
   for (size_t i = 0; i < d.mass.size(); ++i)

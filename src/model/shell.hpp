@@ -44,8 +44,8 @@ struct ShellLayout {
 
 // Appends the shell's fields to a theory's discretization (its dofs renumbered node-major; the
 // shell's strain terms and lumped masses; held where no wall is, at a held beam and at a
-// junction with a solid part). p.shell.on, a Profile section. Returns the layout.
-ShellLayout ShellAppend(const BeamParams &p, BeamDiscretization *d);
+// junction with a solid part). A Profile section. Returns the layout.
+ShellLayout ShellAppend(const BarrelShell &shell, const BeamParams &p, BeamDiscretization *d);
 
 // The wall's midsurface radius R and thickness t (m) of a profile at x (m); false where solid.
 bool ShellWallAt(const BeamParams &p, PetscReal x, PetscReal *R, PetscReal *t);
@@ -82,14 +82,14 @@ std::vector<std::pair<PetscInt, PetscReal>> ShellPatchNodeWeights(PetscInt nodes
 PetscReal ShellContactRadiusDefault(const BallParams &b, PetscReal v);
 
 // The wall's Young's modulus in the shell (Pa): -shell_youngs_modulus, else the profile's E.
-PetscReal ShellYoungsModulus(const BeamParams &p);
+PetscReal ShellYoungsModulus(const BarrelShell &shell, const BeamParams &p);
 
 // The lowest frequency (Hz) of the wall's harmonic n alone: its U, V, W fields on the grid with
 // the ends, holds and junctions of ShellAppend (the harmonics are uncoupled from the beam and
 // from each other in K and M), the lowest eigenvalue of M^-1/2 K M^-1/2 in band form (LAPACK
 // dsbevx, O(N)). For n = 2 the barrel's lowest hoop (ovaling) mode: the results column
 // hoop_frequency. NaN without a wall (or if LAPACK fails).
-PetscReal ShellLowestFrequency(const BeamParams &p, PetscInt n);
+PetscReal ShellLowestFrequency(const BarrelShell &shell, const BeamParams &p, PetscInt n);
 
 // Rayleigh's inextensional ring (Hz) of harmonic n: sqrt(E t^2 n^2 (n^2-1)^2 / (12 rho (1-nu^2) R^4 (n^2+1)))/(2 pi).
 PetscReal RayleighRingFrequency(PetscReal E, PetscReal rho, PetscReal nu, PetscReal R, PetscReal t, PetscInt n);

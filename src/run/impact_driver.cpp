@@ -108,11 +108,7 @@ PetscErrorCode ApplyEvent(const ImpactProblem &pb, Stepper &st, ContactEventKind
 
 // Whether the recorder follows peaks of a part of the structure (a wall, a string bed, the hands
 // or a registered part's measures): then the series are sampled through a free flight.
-bool SystemHasPeaks(const BeamSystem &sys)
-{
-  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
-         StructurePartSlotCount(sys) > 0;
-}
+bool SystemHasPeaks(const BeamSystem &sys) { return sys.bed_first >= 0 || sys.Gripped() || StructurePartsPeaks(sys); }
 
 // Whether the series is only an oblique impact's F_n (no monitor asked, no peaks of a wall, a
 // string bed, the hands or a registered part to follow): not sampled through a free flight.

@@ -62,7 +62,7 @@ const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes
 // frame's roll, a string bed): without, their sums are 0 and BeamSystemPartEnergies is not needed.
 bool SeparateParts(const BeamSystem &S)
 {
-  if (S.wall_dof >= 0 || S.shell.first >= 0 || S.bed_first >= 0) return true; // the roll: its account below
+  if (S.bed_first >= 0) return true; // the registered parts (the roll, the wall): their accounts below
   for (PetscInt f = 0; f < S.fields; ++f)
     if (S.PartOf(f) != Part::Beam) return true;
   return false;
@@ -200,7 +200,8 @@ void MeasureEnergies(const BeamSystem &S, const MeasureContext &ctx, const State
   for (PetscInt q = 0; q < ctx.g->n;
        ++q) { // the wall's share of the compression: its displacement under the ball, into the bat
     const PetscInt d = ctx.g->dof[q];
-    if (S.Wall(d % F) && d >= sv.d0 && d < sv.d1) sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
+    if (S.PartOf(d % F) == Part::Wall && d >= sv.d0 && d < sv.d1)
+      sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
   }
 }
 

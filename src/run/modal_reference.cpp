@@ -202,7 +202,7 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
   m.twist_energy = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
   m.bed_energy   = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
   for (PetscInt d = 0; d < S.BeamDofs(); ++d) // the wall's share of the compression (S.g = dc/dq = -w)
-    if (sys.Wall(S.dof[d] % sys.fields)) m.wall_deflection -= S.g[d] * run.q[d];
+    if ((int)sys.PartOf(S.dof[d] % sys.fields) == W) m.wall_deflection -= S.g[d] * run.q[d];
   if (sys.bed_first >= 0)
     for (PetscInt d = 0; d < sys.ndof; ++d) {
       const PetscInt f = d % sys.fields, i = d / sys.fields;

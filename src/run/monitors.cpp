@@ -72,8 +72,9 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   ImpactSeries          &S = *series_;
 
   PetscFunctionBeginUser;
-  const bool wall = ctx_.sys->wall_dof >= 0 || ctx_.sys->shell.first >= 0; // a barrel wall (hoop oscillator or shell)
-  const bool bed  = ctx_.sys->bed_first >= 0;                              // a racket's string bed
+  bool wall = false; // a part whose peaks the outcome keeps (StructurePart::Peaks: the barrel wall)
+  for (const PartInstance &s : ctx_.sys->parts) wall = wall || s.part->Peaks();
+  const bool bed = ctx_.sys->bed_first >= 0; // a racket's string bed
   if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall && !bed && part_peak_.empty())
     PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
@@ -132,8 +133,14 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
     PetscCall(stepper_.GatherDisplacement(&y));
     series_->snapshot_time.push_back(mon_.snapshot_times[next_]);
     series_->snapshot_y.push_back(y);
-    const BeamSystem &S = *ctx_.sys;
-    if (S.bed_first >= 0 || S.shell.first >= 0) // rank 0: every field of every node
+    const BeamSystem &S   = *ctx_.sys;
+    bool              own = false; // a part with a field of its own in the snapshots (asked with no fields: the shell)
+    for (const PartInstance &s : S.parts) {
+      std::vector<PetscReal> values;
+      std::vector<PetscInt>  labels;
+      own = own || s.part->Snapshot(s, S, {}, &values, &labels);
+    }
+    if (S.bed_first >= 0 || own) // rank 0: every field of every node
       PetscCall(stepper_.GatherFields(0, S.fields, &u));
     if (S.bed_first >=
         0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
@@ -147,14 +154,12 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
       }
       series_->snapshot_bed.push_back(std::move(bed));
     }
-    if (S.shell.first >= 0) { // the wall's W_n of each harmonic k (field shell.WField(k)), [k][node] flattened
-      const size_t           H = S.shell.harmonics.size();
-      std::vector<PetscReal> wall(H * (size_t)S.nodes);
-      for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i)
-        for (size_t k = 0; k < H; ++k)
-          wall[k * S.nodes + i] = S.shell_radius[i] > 0 ? u[(size_t)i * S.fields + S.shell.WField(k)] : NAN;
-      series_->snapshot_wall.push_back(std::move(wall));
-      series_->snapshot_wall_n = S.shell.harmonics;
+    for (const PartInstance &s : S.parts) { // a part's own field (the shell's W_n of each harmonic n)
+      std::vector<PetscReal> values;
+      std::vector<PetscInt>  labels;
+      if (!s.part->Snapshot(s, S, u, &values, &labels)) continue;
+      series_->snapshot_wall.push_back(std::move(values));
+      series_->snapshot_wall_n = labels;
     }
     ++next_;
   }

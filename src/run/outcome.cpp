@@ -2,6 +2,7 @@
 #include "run/outcome.hpp"
 
 #include "model/shell.hpp"
+#include "system/structure_part.hpp"
 
 #include <cstdio>
 #include <limits>
@@ -118,18 +119,19 @@ std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &
 std::string WallDeflectionLargeText(const Scenario &sc, const ImpactResult &r)
 {
   if (!r.wall_deflection_large) return "";
-  const PetscReal R = ShellRadiusAt(sc.beam, sc.impact.x);
-  char            msg[640];
+  const PetscReal R      = ShellRadiusAt(sc.beam, sc.impact.x);
+  const char     *remedy = ""; // the wall part's options to check
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = sc.beam.parts.Find(part->Name()))
+      if (*part->Remedy(*q)) remedy = part->Remedy(*q);
+  char msg[640];
   std::snprintf(msg, sizeof msg,
                 "warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface "
                 "radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the "
                 "wall's model is linear (its displacements small against its thickness and radius); check %s and "
                 "-ball_speed %g m/s",
                 (double)r.wall_deflection_peak, (double)(r.wall_deflection_peak / R), (double)R, (double)sc.impact.x,
-                (double)kWallDeflectionLimit,
-                sc.beam.hoop.on ? "-barrel_hoop_frequency and -barrel_hoop_mass"
-                                : "-shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius",
-                (double)sc.ball.speed);
+                (double)kWallDeflectionLimit, remedy, (double)sc.ball.speed);
   return msg;
 }
 

@@ -31,7 +31,7 @@ bool ResultFreeBeamAtRest(const Scenario &sc) { return ResultNoHeldDof(sc) && !s
 bool ResultFreePivot(const Scenario &sc) { return sc.beam.has_pivot && PivotHeldText(sc).empty(); }
 
 bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
-bool ResultBarrelWall(const Scenario &sc) { return sc.beam.hoop.on || sc.beam.shell.on; }
+bool ResultBarrelWall(const Scenario &sc) { return sc.beam.parts.Has("wall"); } // system/parts/wall.cpp
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
 bool ResultStringBed(const Scenario &sc) { return sc.beam.strings.On(); }
@@ -353,15 +353,16 @@ std::vector<ResultColumn> OutcomeColumns()
       "wall_deflection_large", &R::wall_deflection_large,
       [](F f) -> double {
         const BeamParams &b = f.sc->beam;
-        const PetscReal   R = b.hoop.on || b.shell.on ? ShellRadiusAt(b, f.sc->impact.x) : 0;
+        const PetscReal   R = ResultBarrelWall(*f.sc) ? ShellRadiusAt(b, f.sc->impact.x) : 0;
         return R > 0 && f.peaks->wall_deflection > kWallDeflectionLimit * R ? 1 : 0;
       },
       "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear "
       "wall far outside its range, physically absurd"),
     Real(
       "hoop_frequency", "Hz", &R::hoop_frequency, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
-      [](F f) -> double {
-        return f.sc->beam.hoop.on ? f.sc->beam.hoop.frequency : ShellLowestFrequency(f.sc->beam, 2);
+      [](F f) -> double { // the wall part's (the shell's n = 2 alone, or f_h)
+        const PartParams *q = f.sc->beam.parts.Find("wall");
+        return q ? StructurePartFind("wall")->Value(*q, f.sc->beam, "hoop_frequency") : NAN;
       },
       "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h"),
     Real(

@@ -260,20 +260,36 @@ static std::vector<PetscReal> DeflectionField(const BeamSystem &op, std::vector<
   return w;
 }
 
-// The family of a mode (ModesResult::shell_n): the group of fields with the largest kinetic energy
-// m phi^2, the beam's (0) or a shell harmonic's (n); the hoop oscillator counts as n = 2.
-static PetscInt ModeFamily(const BeamSystem &op, const std::vector<PetscReal> &phi)
+// Each field's family detail (StructurePart::FamilyDetail: a shell harmonic's n, the hoop's 2; 0
+// the beam's), -1 for a field of another part (the roll, a string bed); empty when no field has one.
+static std::vector<PetscInt> FieldFamilies(const BeamSystem &op)
 {
-  const PetscInt         groups = 1 + (PetscInt)op.shell.harmonics.size();
-  std::vector<PetscReal> e(groups + 1, 0.0);
-  for (PetscInt d = 0; d < op.ndof; ++d) {
-    const PetscInt f = d % op.fields;
-    if (!op.Wall(f) && op.PartOf(f) != Part::Beam) continue;
-    const PetscInt g = !op.Wall(f) ? 0 : (op.shell.first >= 0 ? 1 + (f - op.shell.first) / 3 : groups);
-    e[g] += op.mass[d] * phi[d] * phi[d];
+  std::vector<PetscInt> detail(op.fields, 0);
+  bool                  any = false;
+  for (PetscInt f = 0; f < op.fields; ++f) {
+    for (const PartInstance &s : op.parts)
+      if (f >= s.first && f < s.first + s.count) detail[f] = s.part->FamilyDetail(s, f);
+    any = any || detail[f] > 0;
+    if (detail[f] == 0 && op.PartOf(f) != Part::Beam) detail[f] = -1;
   }
-  const PetscInt best = (PetscInt)(std::max_element(e.begin(), e.end()) - e.begin());
-  return best == 0 ? 0 : (best == groups ? 2 : op.shell.harmonics[best - 1]);
+  return any ? detail : std::vector<PetscInt>();
+}
+
+// The family of a mode (ModesResult::shell_n): the group of fields with the largest kinetic energy
+// m phi^2, the beam's (0) or a part's detail (a shell harmonic's n), groups in field order.
+static PetscInt ModeFamily(const BeamSystem &op, const std::vector<PetscInt> &detail, const std::vector<PetscReal> &phi)
+{
+  std::vector<PetscInt> key = {0}, group(op.fields, -1); // each field's group: an index into key
+  for (PetscInt f = 0; f < op.fields; ++f) {
+    if (detail[f] < 0) continue;
+    const size_t g = std::find(key.begin(), key.end(), detail[f]) - key.begin();
+    if (g == key.size()) key.push_back(detail[f]);
+    group[f] = (PetscInt)g;
+  }
+  std::vector<PetscReal> e(key.size(), 0.0);
+  for (PetscInt d = 0; d < op.ndof; ++d)
+    if (group[d % op.fields] >= 0) e[group[d % op.fields]] += op.mass[d] * phi[d] * phi[d];
+  return key[std::max_element(e.begin(), e.end()) - e.begin()];
 }
 
 // The result in ascending order (the solver's, up to round-off among nearly equal modes);
@@ -292,13 +308,14 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->period.assign(count, 0.0);
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
-  const bool wall = op.wall_dof >= 0 || op.shell.first >= 0, parts = op.RollField() >= 0 || op.bed_first >= 0;
+  const std::vector<PetscInt> families = FieldFamilies(op); // a barrel wall's harmonics: each mode's family
+  const bool                  wall = !families.empty(), parts = op.RollField() >= 0 || op.bed_first >= 0;
   if (wall) out->shell_n.assign(count, 0);
   if (parts) out->part.assign(count, 0), out->part_share.assign(count, 0.0);
   if (parts && shapes && op.bed_first >= 0) out->bed_shape.resize(count);
   for (PetscInt m = 0; m < count; ++m) {
     const std::vector<PetscReal> &phi = phis[order[m]];
-    if (wall) out->shell_n[m] = ModeFamily(op, phi);
+    if (wall) out->shell_n[m] = ModeFamily(op, families, phi);
     if (parts) {
       std::vector<PetscReal> e(op.ndof);
       for (PetscInt d = 0; d < op.ndof; ++d) e[d] = op.mass[d] * phi[d] * phi[d];

@@ -76,12 +76,13 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
     c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
     ImpactStructure *structure   = nullptr;
     if (reuse) { // the structure's system, unless this point is on another beam
-      const PetscReal radius = c.beam.shell.contact_radius,
-                      patch  = c.beam.strings.patch_radius; // follow the ball: a new one is a new system
-      if (!reuse->scenario.last_partial || std::memcmp(&radius, &reuse->shell_radius, sizeof radius) != 0 ||
+      const std::vector<PetscReal> key   = c.beam.parts.SystemKey();    // the parts' values at the point (a shell's a)
+      const PetscReal              patch = c.beam.strings.patch_radius; // follow the ball: a new one is a new system
+      if (!reuse->scenario.last_partial || key.size() != reuse->part_key.size() ||
+          (!key.empty() && std::memcmp(key.data(), reuse->part_key.data(), key.size() * sizeof key[0]) != 0) ||
           std::memcmp(&patch, &reuse->patch_radius, sizeof patch) != 0)
         reuse->structure = ImpactStructure();
-      reuse->shell_radius = radius;
+      reuse->part_key     = key;
       reuse->patch_radius = patch;
       structure           = &reuse->structure;
     }

@@ -51,11 +51,11 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
 // point is on another structure (a structure axis changes: beam_nodes, a beam_* property,
 // ts_type, ...) or a shell's contact radius, resolved per point from the ball, changes.
 struct SweepReuse {
-  SweepScenarioCache scenario;
-  ImpactStructure    structure;
-  PetscReal          shell_radius = 0; // m, the contact radius the structure's system has
-  PetscReal          patch_radius = 0; // m, the string bed's load disc the structure's system has
-  PetscInt           systems      = 0; // systems built (structure.sys set by a run)
+  SweepScenarioCache     scenario;
+  ImpactStructure        structure;
+  std::vector<PetscReal> part_key;         // the structure parts' SystemKey the structure's system has (a shell's a, m)
+  PetscReal              patch_radius = 0; // m, the string bed's load disc the structure's system has
+  PetscInt               systems      = 0; // systems built (structure.sys set by a run)
 };
 
 // The status of a failed run from its PETSc error code (SweepStatus).

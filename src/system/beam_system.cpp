@@ -2,9 +2,6 @@
 // beam_system.hpp.
 #include "system/beam_system.hpp"
 
-#include "model/barrel.hpp"
-#include "model/shell.hpp"
-
 #include <petscblaslapack.h>
 
 #include <algorithm>
@@ -26,20 +23,9 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S             = BeamSystem();
   S.beam_fields = d.fields;
   S.field_part.assign(d.fields, Part::Beam);
-  const auto older = [&](const std::vector<PartInstance> &before) { // the wall and the bed, not registered yet
+  const auto older = [&](const std::vector<PartInstance> &before) { // the bed, not registered yet
     for (const PartInstance &s : before) S.field_part.resize(s.first + s.count, s.part->Account());
     S.parts = before; // the roll's field for the bed
-    if (p.hoop.on) S.wall_dof = BarrelHoopAppend(p.hoop, &d);
-    if (p.shell.on) {
-      S.shell                = ShellAppend(p, &d);
-      S.shell_contact_radius = std::max<PetscReal>(0, p.shell.contact_radius);
-      S.shell_radius.assign(p.nodes, 0.0);
-      for (PetscInt i = 0; i < p.nodes; ++i) {
-        PetscReal t;
-        ShellWallAt(p, p.length * i / (p.nodes - 1), &S.shell_radius[i], &t);
-      }
-    }
-    S.field_part.resize(d.fields, Part::Wall); // the hoop's or the shell's
     if (p.strings.On()) {
       const BedLayout bed = StringBedAppend(p.strings, StringBedFrameGrid(p.strings, p.nodes, p.length), S.RollField(),
                                             &d);
@@ -133,22 +119,7 @@ ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, Petsc
   g.dof[1]               = sys.Dof(st.j + 1);
   g.w[0]                 = sys.held[g.dof[0]] ? 0.0 : st.w;
   g.w[1]                 = sys.held[g.dof[1]] ? 0.0 : 1.0 - st.w;
-  for (const PartInstance &s : sys.parts) s.part->Couple(s, sys, st, z_imp, &g); // the parts' entries (the roll's)
-  if (sys.wall_dof >= 0) g.dof[g.n] = sys.wall_dof, g.w[g.n++] = 1.0;            // the wall under the ball, in series
-  if (sys.shell.harmonics.empty()) return g;
-  // each harmonic's W_n under the ball's patch (outward: the inward displacement is -W_n)
-  const PetscReal a = sys.shell_contact_radius,
-                  R = st.w * sys.shell_radius[st.j] + (1 - st.w) * sys.shell_radius[st.j + 1];
-  const std::vector<std::pair<PetscInt, PetscReal>> nodes = ShellPatchNodeWeights(sys.nodes, sys.L, x_imp, a);
-  for (size_t k = 0; k < sys.shell.harmonics.size(); ++k) {
-    const PetscReal wn = ShellPatchHarmonicWeight(sys.shell.harmonics[k], a, R);
-    for (const auto &[i, wi] : nodes) {
-      if (g.n == ContactCoupling::kMaxEntries) return g; // refused before: ShellPatchEntries
-      const PetscInt d = i * sys.fields + sys.shell.WField(k);
-      g.dof[g.n]       = d;
-      g.w[g.n++]       = sys.held[d] ? 0.0 : -(wn * wi);
-    }
-  }
+  for (const PartInstance &s : sys.parts) s.part->Couple(s, sys, st, z_imp, &g); // the parts' (the roll's, the wall's)
   return g;
 }
 
@@ -373,8 +344,6 @@ const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)
   for (const PartInstance &p : sys.parts) // a registered part's fields
     if (dof % sys.fields >= p.first && dof % sys.fields < p.first + p.count) return p.part->Words();
   switch (sys.PartOf(dof % sys.fields)) {
-  case Part::Wall:
-    return "the barrel wall";
   case Part::Bed:
     return "the string bed";
   default:

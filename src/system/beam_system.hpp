@@ -11,16 +11,14 @@
 // share of the impact point between its two neighbouring nodes (held dofs get no share). Dofs
 // are node-major: dof = node x fields + field; field 0 is the transverse deflection (m). The
 // motion of the swing's frame is the run's (FrameMotion), passed to the operator, never stored
-// here. A barrel's hoop oscillator (-barrel_hoop_frequency, model/barrel.hpp) is one more field
-// per node, free only at node 0 (wall_dof), a coupled dof of weight 1; the frame's roll
-// (-beam_torsion, model/torsion.hpp) one more field; a racket's string bed
+// here. The registered structure parts (system/structure_part.hpp: the frame's roll, the barrel
+// wall, ...) append their fields after the theory's; a racket's string bed
 // (system/string_bed_operator.hpp) one field per node of the bed's column across the face, the
 // ball's coupling its nodes under the ball's patch. Plain arrays only.
 #pragma once
 
 #include "model/beam_theory.hpp"
 #include "model/contact.hpp"
-#include "model/shell.hpp"
 #include "model/swing.hpp"
 #include "system/force_operator.hpp"
 #include "system/string_bed_operator.hpp"
@@ -38,11 +36,6 @@ struct BeamSystem {
   PetscInt nodes = 0, fields = 1, ndof = 0;
   PetscInt
     beam_fields = 1; // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
-  PetscInt    wall_dof = -1; // the hoop oscillator's dof (model/barrel.hpp), -1 without
-  ShellLayout shell; // the shell's fields (-beam_shell, model/shell.hpp; first -1 without): harmonic k's W_n is field
-                     // shell.WField(k)
-  PetscReal shell_contact_radius = 0;  // m, the ball's load patch a on the wall (model/shell.hpp; 0: a point load)
-  std::vector<PetscReal> shell_radius; // m, the wall's midsurface radius R per node (0 where solid)
   PetscInt  bed_first = -1; // the string bed's first field (-strings_frame): field bed_first + j is w at (x_i, z_j)
   BedGrid   bed;            // the bed's grid (its columns: the nodes), with bed_first
   PetscReal bed_head_center  = 0;       // m, the head's centre along the frame
@@ -81,7 +74,6 @@ struct BeamSystem {
   {
     return f < (PetscInt)field_part.size() ? field_part[f] : Part::Beam;
   } // a system laid out by hand: the beam's
-  bool Wall(PetscInt f) const { return PartOf(f) == Part::Wall; }
   bool Bed(PetscInt f) const { return PartOf(f) == Part::Bed; }
   // Whether field f is a deflection (m) toward the ball: the beam's (field 0) or the bed's. Their
   // masses carry the momentum; a rigid motion y = a + b x + c z moves them all.

@@ -11,15 +11,17 @@ namespace beamimpact {
 // The parts, one file each in system/parts/: a part is its declaration here and its line in
 // PartList, last (the order appends their fields: the dof numbering).
 const StructurePart &RollPart();     // system/parts/roll.cpp
+const StructurePart &WallPart();     // system/parts/wall.cpp
 const StructurePart &AbsorberPart(); // system/parts/absorber.cpp
 
 namespace {
 
-// nullptr: the place of the parts BeamSystemBuild still builds itself (the wall, the bed).
+// nullptr: the place of the part BeamSystemBuild still builds itself (the string bed).
 std::vector<const StructurePart *> PartList()
 {
   std::vector<const StructurePart *> v;
   v.push_back(&RollPart());
+  v.push_back(&WallPart());
   v.push_back(nullptr);
   v.push_back(&AbsorberPart());
   return v;
@@ -93,6 +95,13 @@ PetscInt StructurePartSlotCount(const BeamSystem &sys)
 void StructurePartsMeasure(const BeamSystem &sys, const PartState &st, PetscReal *slot)
 {
   for (const PartInstance &s : sys.parts) s.part->Measure(s, sys, st, slot + s.slot0);
+}
+
+bool StructurePartsPeaks(const BeamSystem &sys)
+{
+  for (const PartInstance &s : sys.parts)
+    if (s.slots > 0 || s.part->Peaks()) return true;
+  return false;
 }
 
 std::string StructurePartsModalRefusal(const BeamParams &p)

@@ -6,10 +6,11 @@
 // its measures of a state and the results columns, series and summary line computed from them.
 // The system's build, the options' reader, the measures, the recorder, the outcome, the results
 // table, the run record, -help and the summary loop over the registered parts: no code outside
-// a part's file names it. The registered parts: the frame's roll (parts/roll.cpp) and the tuned
-// absorber (parts/absorber.cpp). (The parts that predate the registry and have not moved yet, the
-// barrel wall, the string bed and the grip, are still built by BeamSystemBuild itself, at their
-// place in the registry's order: after the roll, before the absorber.)
+// a part's file names it. The registered parts: the frame's roll (parts/roll.cpp), the barrel
+// wall (parts/wall.cpp: the hoop oscillator or the shell) and the tuned absorber
+// (parts/absorber.cpp). (The parts that predate the registry and have not moved yet, the string
+// bed and the grip, are still built by BeamSystemBuild itself, at their place in the registry's
+// order: after the wall, before the absorber.)
 //
 // How a part is added: docs/design.md, "Adding a structure part".
 #pragma once
@@ -20,6 +21,7 @@
 
 #include <petscsys.h>
 
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -28,6 +30,7 @@
 
 namespace beamimpact {
 
+struct BallParams;
 struct BeamSystem;
 struct ContactCoupling;
 class StructurePart;
@@ -88,6 +91,13 @@ struct PartColumn {
   double (*compute)(const PartOutputFacts &f);
 };
 
+// What a part's Resolve sees of the impact: the ball, its approach speed and the point.
+struct PartPoint {
+  const BallParams *ball     = nullptr;
+  PetscReal         approach = 0; // m/s, the ball's speed toward the beam at the point (with the swing's)
+  PetscReal         x        = 0; // m, the impact point along the beam
+};
+
 // A part's options as read: the rows given in the options database, by name (with the dash),
 // each as its numbers (a flag 1; a list its values).
 struct PartOptionValues {
@@ -107,6 +117,15 @@ public:
   // part is absent). False with *why naming the option, the value as written and what is allowed.
   virtual bool Configure(const PartOptionValues &v, const BeamParams &beam, std::shared_ptr<const PartParams> *out,
                          std::string *why) const = 0;
+  // A note on its parameters the run prints once (without "note: " and newline; "" for none).
+  virtual std::string Note(const PartParams &, const BeamParams &) const { return ""; }
+  // Its parameters at the impact point (a default from the ball, a check of the point): true with
+  // *out left as it was when nothing changes; false with *why naming the option and its value.
+  virtual bool Resolve(const PartParams &, const BeamParams &, const PartPoint &, std::shared_ptr<const PartParams> *,
+                       std::string *) const
+  {
+    return true;
+  }
   // Why the modal reference (-reference modal) cannot carry it, or nullptr.
   virtual const char *ModalRefusal(const PartParams &) const { return nullptr; }
   // -- the system ---------------------------------------------------------------------------------
@@ -133,7 +152,24 @@ public:
                           std::vector<std::shared_ptr<const ForceTerm>> *) const
   {
   }
+  // -task modes' family detail of its field f (a shell harmonic's n: ModesResult::shell_n), 0 for
+  // none: the modes' family is the beam's (0) or the detail whose fields hold the most energy.
+  virtual PetscInt FamilyDetail(const PartInstance &, PetscInt) const { return 0; }
   // -- measures and outputs -----------------------------------------------------------------------
+  // Whether the recorder follows the outcome's peaks of its fields (the wall's energy and
+  // displacement under the ball): the series are then sampled through a free flight.
+  virtual bool Peaks() const { return false; }
+  // A snapshot's field of its own from every field of every node (u, node-major), [label][node]
+  // flattened, and its labels (the shell's W_n of each harmonic n): false for none.
+  virtual bool Snapshot(const PartInstance &, const BeamSystem &, const std::vector<PetscReal> &,
+                        std::vector<PetscReal> *, std::vector<PetscInt> *) const
+  {
+    return false;
+  }
+  // A value of the outcome's table that only the part computes (by column name; NaN for none).
+  virtual double Value(const PartParams &, const BeamParams &, const char *) const { return NAN; }
+  // The options to check when its outcome is out of its range ("" for none).
+  virtual const char           *Remedy(const PartParams &) const { return ""; }
   virtual std::vector<PartSlot> Slots() const { return {}; }
   // slot[k] += its k-th slot's share of the owned dofs [s.d0, s.d1).
   virtual void Measure(const PartInstance &, const BeamSystem &, const PartState &, PetscReal *) const { }
@@ -156,7 +192,7 @@ const std::vector<const StructurePart *> &StructureParts();
 const StructurePart                      *StructurePartFind(const char *name); // nullptr if none
 
 // The parts present in p, appended to d in registry order (BeamSystemBuild); `older` appends the
-// parts that predate the registry (the wall, the bed) at their place in that order, with the
+// part that predates the registry (the string bed) at its place in that order, with the
 // instances built before it.
 std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d,
                                               const std::function<void(const std::vector<PartInstance> &)> &older);
@@ -167,6 +203,8 @@ void StructurePartsFinish(BeamSystem *sys);
 PetscInt StructurePartSlotCount(const BeamSystem &sys);
 // slot[k] += every present part's measures of s (its slots at slot0 + k).
 void StructurePartsMeasure(const BeamSystem &sys, const PartState &s, PetscReal *slot);
+// Whether a present part has peaks the recorder follows (Peaks or measure slots).
+bool StructurePartsPeaks(const BeamSystem &sys);
 // Why the modal reference cannot carry the parts present in p ("" when it can).
 std::string StructurePartsModalRefusal(const BeamParams &p);
 
