@@ -8,7 +8,6 @@
 #include "io/string_bed_options.hpp"
 #include "model/barrel.hpp"
 #include "model/beam_theory.hpp"
-#include "model/shell.hpp"
 #include "system/structure_part.hpp"
 
 #include <algorithm>

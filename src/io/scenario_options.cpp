@@ -109,8 +109,7 @@ PetscErrorCode StructurePartsResolve(MPI_Comm comm, Scenario *sc)
   PartPoint at;
   at.ball     = &sc->ball;
   at.x        = sc->impact.x;
-  at.approach = sc->ball.speed +
-                (sc->swing.Swings() ? SwingSpeedAt(sc->swing, BeamRigidBodyOf(sc->beam), sc->impact.x) : 0.0);
+  at.approach = ImpactApproachSpeed(*sc);
   for (const StructurePart *part : StructureParts())
     if (const PartParams *q = sc->beam.parts.Find(part->Name())) {
       std::shared_ptr<const PartParams> out;
