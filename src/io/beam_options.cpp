@@ -673,7 +673,7 @@ PetscErrorCode StructurePartOptionsRead(MPI_Comm comm, const StructurePart &part
     std::vector<PetscReal> values;
     if (o.kind == OptionKind::RealList) PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &values, &set));
     else if (o.kind == OptionKind::Real) {
-      PetscReal x = 0;
+      PetscReal x = part.Unset(o.name.c_str());
       PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &x, &set));
       values = {x};
     } else if (o.kind == OptionKind::Bool) {

@@ -113,6 +113,9 @@ public:
   virtual const char         *Presence() const = 0;            // "with -absorber": when its columns apply
   virtual const char         *Words() const { return Name(); } // for messages: "the stability limit is set by ..."
   virtual const OptionModule &Options() const = 0; // its rows: -help, the unknown-option check, the run record
+  // The value -help and /options_used show for its number row `name` when not given (its
+  // parameter's own default: the shell's -shell_contact_radius -1, not yet derived); 0 by default.
+  virtual PetscReal Unset(const char *) const { return 0; }
   // The rows as read (and the beam, its holds resolved) -> its parameters in *out (nullptr: the
   // part is absent). False with *why naming the option, the value as written and what is allowed.
   virtual bool Configure(const PartOptionValues &v, const BeamParams &beam, std::shared_ptr<const PartParams> *out,

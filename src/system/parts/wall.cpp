@@ -136,6 +136,10 @@ public:
   const char         *Presence() const override { return "with -barrel_hoop_frequency or -beam_shell"; }
   const char         *Words() const override { return "the barrel wall"; }
   const OptionModule &Options() const override { return WallOptions(); }
+  PetscReal           Unset(const char *name) const override
+  {
+    return std::strcmp(name, "-shell_contact_radius") ? 0 : BarrelShell().contact_radius;
+  }
   bool Configure(const PartOptionValues &v, const BeamParams &beam, std::shared_ptr<const PartParams> *out,
                  std::string *why) const override
   {
