@@ -6,6 +6,7 @@
 #include "io/beam_options.hpp"
 #include "io/options_files.hpp"
 #include "run/impact.hpp"
+#include "run/results_table.hpp"
 #include "run/scenario.hpp"
 #include "system/beam_system.hpp"
 
@@ -88,6 +89,35 @@ inline BallParams Superball(const char *law = "linear")
   BallParamsUseLaw(&b, ContactLawFind(law));
   return b;
 }
+
+// The beam with the hands g (g.on ignored), through the grip part's own option module, as
+// -grip x_a,x_b -grip_stiffness k' -grip_damping c' -grip_mass m -grip_torsion_stiffness ...
+// -grip_torsion_damping ... would; WithoutGrip(p): the same beam with no hands.
+inline BeamParams WithGrip(BeamParams p, const BeamGrip &g)
+{
+  const StructurePart *part = StructurePartFind("grip");
+  EXPECT_NE(part, nullptr) << "the hands are a registered structure part";
+  PartOptionValues v;
+  v.given["-grip"]                   = {g.x_a, g.x_b};
+  v.given["-grip_stiffness"]         = {g.stiffness};
+  v.given["-grip_damping"]           = {g.damping};
+  v.given["-grip_mass"]              = {g.mass};
+  v.given["-grip_torsion_stiffness"] = {g.torsion_stiffness};
+  v.given["-grip_torsion_damping"]   = {g.torsion_damping};
+  std::shared_ptr<const PartParams> q;
+  std::string                       why;
+  EXPECT_TRUE(part->Configure(v, p, &q, &why)) << why;
+  p.parts.Set("grip", q);
+  return p;
+}
+inline BeamParams WithoutGrip(BeamParams p)
+{
+  p.parts.Set("grip", nullptr);
+  return p;
+}
+
+// A column of the results table by name (a part's keyed column too).
+inline double ResultValue(const ImpactResult &r, const char *name) { return ImpactResultColumn(name)->Get(r); }
 
 // The semi-discrete system of a beam (Euler-Bernoulli unless p.theory says otherwise).
 inline BeamSystem SystemOf(const BeamParams &p)

@@ -188,12 +188,6 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                           "energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
                           (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak,
                           (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
-  if (sc.beam.grip.on)
-    PetscCall(PetscPrintf(comm,
-                          "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end "
-                          "%.4e J; work done by the hands %.4e J\n",
-                          (double)sc.beam.grip.x_a, (double)sc.beam.grip.x_b, (double)r.grip_force_peak,
-                          (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
   if (ResultFreePivot(sc)) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
     PetscCall(

@@ -386,10 +386,6 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
     PetscCall(H5DimsAttach(gs, "velocity_at", {"velocity_at_x", "time"}));
   }
   PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
-  PetscCall(opt("grip_force", S.grip_force, "N"));
-  PetscCall(opt("grip_moment", S.grip_moment, "N m"));
-  PetscCall(opt("grip_stored", S.grip_stored, "J"));
-  PetscCall(opt("hand_work", S.hand_work, "J"));
   for (const ImpactSeries::Keyed &k : S.keyed) PetscCall(opt(k.name.c_str(), k.values, k.unit.c_str())); // parts'
   PetscCall(H5DimsTable(gs, "time"));
   H5Gclose(gs);

@@ -74,9 +74,10 @@ struct MonitorRequest {
   PetscBool              segment    = PETSC_FALSE; // kinetic energy of the beam segment [segment_x0, segment_x1]
   PetscReal              segment_x0 = 0, segment_x1 = 0; // m
   PetscReal              segment_until = -1; // s, the segment's peak is taken over t <= this (< 0: whole run)
-  PetscBool
-       grip = PETSC_FALSE; // the force of the bat on the hands and its moment, the grip's energies per step (-grip)
-  bool any() const { return ball || energy || !velocity_at.empty() || segment || grip; }
+  // A structure part present had its own monitor row given (StructurePart::Monitors: the hands'):
+  // its series per step.
+  bool parts = false;
+  bool any() const { return ball || energy || !velocity_at.empty() || segment || parts; }
 };
 
 // Per-step time series (rank 0 holds them; only the requested ones are filled).
@@ -93,10 +94,9 @@ struct ImpactSeries {
   std::vector<PetscReal> shell_energy; // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
   std::vector<PetscReal> bed_energy,
     twist_energy; // J, the string bed's (-strings_frame) and the frame's roll (-beam_torsion), in beam_*
-  std::vector<PetscReal>              velocity_at_x;                      // m, the points of velocity_at
-  std::vector<std::vector<PetscReal>> velocity_at;                        // m/s, [point][step]
-  std::vector<PetscReal>              segment_kinetic;                    // J, kinetic energy of the monitored segment
-  std::vector<PetscReal> grip_force, grip_moment, grip_stored, hand_work; // N, N m about x = 0, J, J (-monitor_grip)
+  std::vector<PetscReal>              velocity_at_x;   // m, the points of velocity_at
+  std::vector<std::vector<PetscReal>> velocity_at;     // m/s, [point][step]
+  std::vector<PetscReal>              segment_kinetic; // J, kinetic energy of the monitored segment
   // -flight: the batted ball's trajectory (s; m, the flight's frame: y down the field, z up; rad/s)
   std::vector<PetscReal>              flight_time, flight_x, flight_y, flight_z, flight_spin;
   std::vector<PetscReal>              snapshot_time; // s
@@ -152,7 +152,7 @@ struct ContactTally {
 // What the monitors record for the outcome (run/monitors.cpp): the peaks over the steps.
 struct MonitorPeaks {
   PetscReal segment_kinetic = 0, segment_kinetic_time = 0; // J, s: -monitor_segment
-  PetscReal grip_force = 0, grip_force_time = 0;           // N, s: the largest |force of the bat on the hands| (-grip)
+  PetscReal frame_force = 0, frame_force_time = 0; // N, s: the largest |force of the bat on the swing's frame| (-grip)
   // The barrel wall (-barrel_hoop_frequency or -beam_shell): its largest displacement under the ball
   // (m, into the bat) and energy (J) over the steps; NaN where no stepper measured them (the modal reference).
   PetscReal wall_deflection = NAN, shell_energy = NAN;
@@ -225,11 +225,6 @@ struct ImpactOutcome {
   PetscReal recoil_factor = 0, bbcor = 0;
   // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
   PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
-  // With -grip: the peak force of the bat on the hands (N, largest |sum over the grip| over the
-  // steps taken) and when (s), and at the end the grip's stored energy and the work the hands
-  // have done on the bat (J; the grip's damper is in beam_dissipated_end).
-  PetscReal grip_force_peak = 0, grip_force_peak_time = 0, grip_stored_end = 0, hand_work_end = 0;
-  PetscReal grip_fraction = 0, hands_fraction = 0; // grip_stored_end / E_in, -hand_work_end / E_in
   // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;

@@ -110,7 +110,7 @@ PetscErrorCode ApplyEvent(const ImpactProblem &pb, Stepper &st, ContactEventKind
 // or a registered part's measures): then the series are sampled through a free flight.
 bool SystemHasPeaks(const BeamSystem &sys)
 {
-  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.Gripped() ||
+  return sys.wall_dof >= 0 || sys.shell.first >= 0 || sys.bed_first >= 0 || sys.TiedToFrame() ||
          StructurePartSlotCount(sys) > 0;
 }
 

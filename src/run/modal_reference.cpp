@@ -232,10 +232,7 @@ static PetscInt ModalReferenceFreeDofs(const BeamSystem &sys)
 bool ModalReferenceApplies(const Scenario &sc, std::string *why)
 {
   std::string w;
-  if (sc.beam.grip.on)
-    w = "with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal "
-        "reference; use a tight TS run as the reference";
-  else if (!StructurePartsModalRefusal(sc.beam).empty()) w = StructurePartsModalRefusal(sc.beam);
+  if (!StructurePartsModalRefusal(sc.beam).empty()) w = StructurePartsModalRefusal(sc.beam);
   else if (!ContactLinear(sc.ball))
     w = std::string("needs -ball_law linear (the ") + ContactLawName(sc.ball.law) +
         " law is nonlinear: use a tight run of a high-order integrator as the reference)";

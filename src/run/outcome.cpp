@@ -47,11 +47,13 @@ double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const Outco
   for (const PartInstance &p : sys.parts) {
     if (p.part != c.owner) continue;
     PartOutputFacts pf;
-    pf.start  = f.start.part_slot + p.slot0;
-    pf.end    = f.end.part_slot + p.slot0;
-    pf.peak   = f.peaks->part_peak + p.slot0;
-    pf.E_in   = f.E_in;
-    pf.params = p.params.get();
+    pf.start                 = f.start.part_slot + p.slot0;
+    pf.end                   = f.end.part_slot + p.slot0;
+    pf.peak                  = f.peaks->part_peak + p.slot0;
+    pf.E_in                  = f.E_in;
+    pf.params                = p.params.get();
+    pf.frame_force_peak      = f.peaks->frame_force;
+    pf.frame_force_peak_time = f.peaks->frame_force_time;
     return c.part_compute(pf);
   }
   return std::numeric_limits<double>::quiet_NaN();

@@ -7,8 +7,10 @@
 #include "run/oblique.hpp"
 #include "run/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 namespace beamimpact {
@@ -23,14 +25,16 @@ bool ResultNoHeldDof(const Scenario &sc)
 
 bool ResultMomentumInvariant(const Scenario &sc)
 {
-  return ResultNoHeldDof(sc) && !sc.beam.grip.on && sc.beam.damping_mass == 0;
+  return ResultNoHeldDof(sc) && !StructurePartsTieToFrame(sc.beam) && sc.beam.damping_mass == 0;
 }
 
-bool ResultFreeBeamAtRest(const Scenario &sc) { return ResultNoHeldDof(sc) && !sc.beam.grip.on && !sc.swing.Swings(); }
+bool ResultFreeBeamAtRest(const Scenario &sc)
+{
+  return ResultNoHeldDof(sc) && !StructurePartsTieToFrame(sc.beam) && !sc.swing.Swings();
+}
 
 bool ResultFreePivot(const Scenario &sc) { return sc.beam.has_pivot && PivotHeldText(sc).empty(); }
 
-bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
 bool ResultBarrelWall(const Scenario &sc) { return sc.beam.hoop.on || sc.beam.shell.on; }
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
@@ -58,8 +62,7 @@ std::string PivotHeldText(const Scenario &sc)
   if (!b.has_pivot) return "";
   if (b.left != Support::Free) add(std::string("-beam_left ") + SupportName(b.left));
   if (b.right != Support::Free) add(std::string("-beam_right ") + SupportName(b.right));
-  if (b.has_clamp) add("-beam_clamp");
-  if (b.grip.on) add("-grip");
+  if (b.has_clamp) add("-beam_clamp"); // (the hands and a pivot: refused)
   return held;
 }
 
@@ -137,7 +140,6 @@ bool EnergyInRoll(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc
 bool EnergyInTwist(const Scenario &sc) { return EnergyIn(sc) && ResultTwist(sc); }
 bool EnergyInBed(const Scenario &sc) { return EnergyIn(sc) && ResultStringBed(sc); }
 bool EnergyInWall(const Scenario &sc) { return EnergyIn(sc) && ResultBarrelWall(sc); }
-bool EnergyInGrip(const Scenario &sc) { return EnergyIn(sc) && ResultGripped(sc); }
 const char *const kEnergyIn    = "always (E_in > 0: a moving ball or a swinging bat)";
 const char *const kTranslation = "a structure with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
 const char *const kRotation = "a structure with no held dof, or held at one pin only (-beam_pivot or one pinned end, "
@@ -179,7 +181,7 @@ PetscReal RigidMassAt(const OutcomeFacts &f)
 using R = ImpactResult;
 using F = const OutcomeFacts &;
 
-// The impact, the energies, the bat and the grip.
+// The impact, the energies and the bat (the hands' columns follow bbcor: their part's).
 std::vector<ResultColumn> OutcomeColumns()
 {
   return {
@@ -312,27 +314,6 @@ std::vector<ResultColumn> OutcomeColumns()
       "with -beam_pivot and no other support or grip (a rig free to turn about its pivot)",
       [](F f) -> double { return PivotBBCOR(RigOf(f), CollisionEfficiency(f)); },
       "bat-ball COR e_A (1 + r) + r of the pivoted rig"),
-    Real(
-      "grip_force_peak", "N", &R::grip_force_peak, ResultGripped, "with -grip",
-      [](F f) -> double { return f.peaks->grip_force; }, "largest |force of the bat on the hands| over the steps"),
-    Real(
-      "grip_force_peak_time", "s", &R::grip_force_peak_time, ResultGripped, "with -grip",
-      [](F f) -> double { return f.peaks->grip_force_time; }, "when"),
-    Real(
-      "grip_stored_end", "J", &R::grip_stored_end, ResultGripped, "with -grip",
-      [](F f) -> double { return f.end.grip_stored; }, "the grip's stored energy at the end"),
-    Real(
-      "hand_work_end", "J", &R::hand_work_end, ResultGripped, "with -grip",
-      [](F f) -> double { return f.end.hand_work; }, "work the hands did on the bat by the end"),
-    Share(Real(
-            "grip_fraction", "1", &R::grip_fraction, EnergyInGrip, "with -grip",
-            [](F f) -> double { return f.end.grip_stored / f.E_in; }, "grip_stored_end / E_in"),
-          "grip"),
-    Share(Real(
-            "hands_fraction", "1", &R::hands_fraction, EnergyInGrip, "with -grip",
-            [](F f) -> double { return -f.end.hand_work / f.E_in; },
-            "the energy the bat gave the hands, -hand_work_end / E_in (< 0: the hands gave energy)"),
-          "to the hands"),
     Real(
       "shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
       [](F f) -> double { return f.end.shell_energy; },
@@ -535,15 +516,20 @@ std::vector<ResultColumn> BuildTable()
   std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns(), oblique = ObliqueColumns();
   t.insert(t.end(), more.begin(), more.end());
   t.insert(t.end(), oblique.begin(), oblique.end());
-  PetscInt keyed = 0; // the registered parts' columns, last
-  for (const StructurePart *p : StructureParts())
+  PetscInt keyed = 0; // the registered parts' columns, last (or after the column they name)
+  for (const StructurePart *p : StructureParts()) {
+    auto at = t.end();
+    if (const char *after = p->ColumnsAfter())
+      at = std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, after); }) + 1;
     for (const PartColumn &pc : p->Columns()) {
       ResultColumn c{pc.name, pc.unit, pc.description, nullptr, p->Presence()};
       c.owner        = p;
       c.part_compute = pc.compute;
       c.keyed        = keyed++;
-      t.push_back(c);
+      c.share        = pc.share;
+      at             = t.insert(at, c) + 1;
     }
+  }
   return t;
 }
 

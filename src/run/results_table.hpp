@@ -10,7 +10,8 @@
 // `cmake --build --preset dev --target docs` rewrites it, the test docs_generated checks it).
 // A registered structure part's columns (system/structure_part.hpp) follow the table, in
 // registry order, each applying where its part is present (its applies_text the part's
-// Presence()) and stored in ImpactResult::keyed: a part adds its columns in its own file.
+// Presence()) and stored in ImpactResult::keyed: a part adds its columns in its own file (or
+// after the column its ColumnsAfter names: the hands' follow bbcor, their place before).
 // A new column is one row in results_table.cpp and its field in ImpactOutcome (run/impact.hpp);
 // a quantity the measures do not hold yet needs it in the record the driver hands the outcome
 // (run/outcome.hpp), from the events (ContactTally) or the monitors (MonitorPeaks).
@@ -70,7 +71,6 @@ bool ResultFlight(const Scenario &sc);     // -flight          // no end clamped
 bool ResultMomentumInvariant(const Scenario &sc); // no held dof, no grip, no mass-proportional damping
 bool ResultFreeBeamAtRest(const Scenario &sc);    // no held dof, no grip, no swing (Eq. 11)
 bool ResultFreePivot(const Scenario &sc);         // -beam_pivot and no other support or grip: the rig turns freely
-bool ResultGripped(const Scenario &sc);           // -grip
 bool ResultStringBed(const Scenario &sc);         // -strings_frame held or beam
 bool ResultTwist(const Scenario &sc);             // -beam_torsion
 bool ResultBarrelWall(const Scenario &sc);        // -barrel_hoop_frequency or -beam_shell
