@@ -192,10 +192,12 @@ TEST(GripPart, RegistryGivesTheHands)
   EXPECT_TRUE(ResultMomentumInvariant(free_bat));
 
   // Its columns follow bbcor, in their order, and apply with -grip; their series under its own monitor.
-  const std::vector<std::string> names = {"bbcor",           "grip_force_peak", "grip_force_peak_time", "grip_stored_end",
-                                          "hand_work_end",   "grip_fraction",   "hands_fraction",       "shell_energy_end"};
+  const std::vector<std::string> names = {"bbcor",         "grip_force_peak", "grip_force_peak_time",
+                                          "grip_stored_end", "hand_work_end", "grip_fraction",
+                                          "hands_fraction",  "shell_energy_end"};
   const std::vector<ResultColumn> &table = ImpactResultColumns();
-  const auto at = std::find_if(table.begin(), table.end(), [](const ResultColumn &c) { return c.name == std::string("bbcor"); });
+  const auto at = std::find_if(table.begin(), table.end(),
+                               [](const ResultColumn &c) { return c.name == std::string("bbcor"); });
   ASSERT_LT(at + (names.size() - 1), table.end());
   for (size_t k = 0; k < names.size(); ++k) EXPECT_EQ(names[k], (at + k)->name);
   EXPECT_STREQ(ImpactResultColumn("grip_fraction")->share, "grip");
@@ -210,7 +212,8 @@ TEST(GripPart, RegistryGivesTheHands)
   EXPECT_NE(StructurePartsModalRefusal(p).find("-grip"), std::string::npos);
   BeamGrip twisted = g;
   twisted.torsion_stiffness = 5;
-  EXPECT_NE(StructurePartsRefusalWith(test::WithGrip(bare, twisted)).find("-grip_torsion_stiffness 5 without -beam_torsion"),
+  EXPECT_NE(StructurePartsRefusalWith(test::WithGrip(bare, twisted))
+              .find("-grip_torsion_stiffness 5 without -beam_torsion"),
             std::string::npos);
   BeamParams clamped = bare;
   clamped.left       = Support::Clamped;
