@@ -24,7 +24,7 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
     for (const PartSlot &slot : p.part->Slots()) {
       part_peak_.push_back(slot.peak);
       part_series_.push_back(slot.series && mon.energy ? (int)series->keyed.size() : -1);
-      if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}});
+      if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
 }
 

@@ -252,33 +252,6 @@ NormalPiece NormalPieceOf(const ImpactSeries &S, size_t k)
   return f;
 }
 
-// The batted ball's flight from the exit velocity and spin (-flight): rec->flight.
-PetscErrorCode ObliqueFlight(const Scenario &sc, ObliqueRecord *rec)
-{
-  PetscFunctionBeginUser;
-  FlightParams p    = sc.flight.params;
-  p.ball.mass       = sc.ball.mass; // the impact's own ball (its radius is required with -flight: FlightBallResolve)
-  p.ball.radius     = sc.ball.radius > 0 ? sc.ball.radius : p.ball.radius;
-  p.launch.speed    = rec->exit.speed;
-  p.launch.angle    = rec->exit.launch_angle;
-  p.launch.backspin = rec->after.spin;
-  PetscReal u[6];
-  FlightInitialState(p.launch, u);
-  PetscCheck(p.launch.height > 0 || p.launch.angle > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-             "-flight with -flight_height 0: the batted ball leaves at %g deg, downward, from the ground; give "
-             "-flight_height > 0",
-             (double)p.launch.angle);
-  PetscCheck(std::abs(p.launch.backspin) < FlightSpinMax(p.ball.radius), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "-flight: the batted ball leaves spinning at %g rad/s, its surface at %g m/s (-flight_ball_radius %g "
-             "m), beyond the speed of sound in air (%g m/s), where the flight's drag and "
-             "lift do not hold (check -ball_speed, -ball_spin and the swing)",
-             (double)p.launch.backspin, (double)(std::abs(p.launch.backspin) * p.ball.radius), (double)p.ball.radius,
-             (double)kSpeedOfSound);
-  PetscCall(FlightSolve(FlightModelOf(p), u, sc.flight.solve, &rec->flight));
-  rec->flew = true;
-  PetscFunctionReturn(0);
-}
-
 } // namespace
 
 namespace {
@@ -321,20 +294,13 @@ void TangentialFlexibleRun(const TangentialModel &m, const ImpactSeries &series,
   }
 }
 
-// The exit from the normal speed and the tangential contact's impulse; with -flight the flight.
-PetscErrorCode ObliqueExitAndFlight(const Scenario &sc, PetscReal u_n, ImpactStageScope *stage, ObliqueRecord *rec)
+// The exit from the normal speed and the tangential contact's impulse.
+void ExitOf(PetscReal u_n, ObliqueRecord *rec)
 {
   const bool touches = rec->model.ball_radius > 0 && rec->model.ball_inertia > 0;
-
-  PetscFunctionBeginUser;
-  rec->after = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
+  rec->after         = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
   if (rec->flexible) rec->after.v_bat = rec->plane.PointVelocity();
   rec->exit = ObliqueExitOf(rec->geometry, u_n, rec->after.v_ball);
-  if (sc.flight.on) {
-    stage->Switch(ImpactStage::Flight);
-    PetscCall(ObliqueFlight(sc, rec));
-  }
-  PetscFunctionReturn(0);
 }
 
 // The string bed in its own plane (model/oblique.hpp, BedInPlaneModel): the mains under the ball
@@ -370,7 +336,6 @@ PetscErrorCode ObliqueBedFinish(const Scenario &sc, const ImpactSeries &series, 
   TangentialModel        m;
 
   PetscFunctionBeginUser;
-  ImpactStageScope stage(ImpactStage::Tangential); // -log_view
   rec->on = rec->bed = true;
   rec->geometry      = in.geometry; // theta 0: n the bed's normal
   TangentialBat(sc, true, &m);      // the frame's effective mass along t at the point (held: infinite)
@@ -386,7 +351,7 @@ PetscErrorCode ObliqueBedFinish(const Scenario &sc, const ImpactSeries &series, 
     if (sc.impact.tangential_rigid) TangentialRigidRun(m, series, &rec->contact);
     else BedInPlaneRun(sc, series, rec);
   }
-  PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  ExitOf(u_n, rec);
   if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
   PetscFunctionReturn(0);
 }
@@ -404,7 +369,6 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     PetscCall(ObliqueBedFinish(sc, series, u_n, rec));
     PetscFunctionReturn(0);
   }
-  ImpactStageScope stage(ImpactStage::Tangential); // -log_view
   rec->on       = true;
   rec->geometry = in.geometry;
   m.bat_radius  = in.bat_radius;
@@ -436,7 +400,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     PetscCall(TangentialPlaneFinish(beam, rec));
     rec->model.bat_mass = PETSC_INFINITY; // the bat's translation is the plane's: the ball and the roll from J
   } else if (touches && u0 != 0) TangentialRigidRun(m, series, &rec->contact);
-  PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  ExitOf(u_n, rec);
   if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
   PetscFunctionReturn(0);
 }

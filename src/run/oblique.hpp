@@ -26,7 +26,8 @@
 // sliding sideways on the frame's rigid motion along t (held, or its effective mass there); with
 // -impact_tangential_plane rigid the mains locked (the rigid-surface model on the frame's mass).
 // The exit is in the bed's frame: the launch angle from the normal, > 0 toward +z.
-// Then, with -flight, the batted ball's flight (solvers/flight_ts.hpp) from the exit speed,
+// These are the first stage after the contact (run/stages/tangential.cpp); then, with -flight,
+// the next (run/stages/flight.cpp): the batted ball's flight (solvers/flight_ts.hpp) from the exit speed,
 // launch angle and spin.
 #pragma once
 
@@ -39,12 +40,14 @@
 
 #include <petscsys.h>
 
+#include <memory>
 #include <vector>
 
 namespace beamimpact {
 
 struct Scenario;
 struct ImpactSeries;
+struct StageResult;
 
 // -flight after an impact: the flight's ball, air and aerodynamics (-flight_*, -air_*; the
 // launch comes from the impact).
@@ -67,7 +70,8 @@ struct ObliqueIncoming {
        series_asked                 = false; // -monitor_ball; any monitor (the run records the ball's series for F_n)
 };
 
-// What the tangential contact and the flight hand the outcome.
+// What the stages after the contact (run/stage.hpp) hand the outcome: the tangential contact and
+// the exit, and each stage's own result.
 struct ObliqueRecord {
   bool             on = false;
   ObliqueGeometry  geometry;
@@ -86,8 +90,9 @@ struct ObliqueRecord {
   BedInPlaneModel bed_plane;           // bed: the frame's mass, the mains' stiffness and mass in the face's plane
   PetscReal       bed_slide_peak  = 0; // m, bed (flexible): the mains' largest slide from the frame, at the run's steps
   PetscReal       bed_energy_peak = 0; // J, bed (flexible): the energy of their vibration on the frame at most
-  bool            flew            = false;
-  FlightResult    flight;
+  // The stages after the contact (run/stage.hpp): each registered stage's own result, in the
+  // registry's order (nullptr: it did not run), the flight's (-flight) among them.
+  std::vector<std::shared_ptr<const StageResult>> stages;
 };
 
 // Whether the impact is oblique: -impact_offset, -impact_angle or -ball_spin not 0, or -flight.
@@ -117,7 +122,7 @@ PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<Pets
 PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlane &p, PetscReal *P, PetscReal *L);
 
 // After the run along the normal (sc: its projected scenario; series: its ball series, F_n at
-// every step): the tangential contact, the exit, and with -flight the flight.
+// every step): the tangential contact and the exit (the tangential stage's work).
 PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal ball_normal_speed_end,
                              const ObliqueBeam &beam, ObliqueRecord *rec);
 
