@@ -131,7 +131,7 @@ bool SystemHasPeaks(const BeamSystem &sys)
 // string bed, the hands or a registered part to follow): not sampled through a free flight.
 bool SparseSeries(const ImpactProblem &pb)
 {
-  return pb.sc.oblique.on && !pb.sc.oblique.series_asked && !SystemHasPeaks(pb.sys());
+  return pb.needs_force && !pb.sc.monitor.any() && !SystemHasPeaks(pb.sys());
 }
 
 // The free flight after a separation at the stepper's time, in closed form, up to t_stop (the
@@ -149,7 +149,7 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
 {
   const BeamSystem                 &sys    = pb.sys();
   const ContactCoupling            &g      = pb.g;
-  const bool                        series = pb.sc.monitor.any(), sparse = SparseSeries(pb);
+  const bool                        series = pb.sc.monitor.any() || pb.needs_force, sparse = SparseSeries(pb);
   const PetscReal                   t_stop = run->timeline.t_stop, s_min = 1e-13 * pb.scales.time;
   std::shared_ptr<const BeamModes> &modes = run->modes;
   FullState                         s0, s;
@@ -391,7 +391,8 @@ PetscErrorCode ImpactDrive(const ImpactProblem &pb, Stepper &st, const Integrato
   PetscFunctionBeginUser;
   PetscCall(MeasureState(st, ctx, nullptr, &rec->start, nullptr));
   rec->energy_in = rec->start.total();
-  ImpactRecorder recorder(st, ctx, sc.monitor, ip, rec->energy_in, &rec->series, &rec->peaks);
+  ImpactRecorder recorder(st, ctx, sc.monitor, ip, rec->energy_in, &rec->series, &rec->peaks,
+                          pb.needs_force ? &rec->drive : nullptr);
   PetscCall(recorder.Record(0.0));
   PetscCall(recorder.Snapshots(0.0));
   auto         indicators = [&](EventIndicators *g) { return StateIndicators(st, pb.scales, info, g); };
@@ -438,26 +439,22 @@ PetscErrorCode ImpactDrive(const ImpactProblem &pb, Stepper &st, const Integrato
 }
 
 // An oblique impact's run along the normal is over: the stages after it (run/stage.hpp: the
-// tangential contact from its force, the exit, the flight); the series the run recorded for them
-// and nobody asked for are dropped.
+// tangential contact from its force, the exit, the flight), from the F_n(t) the run recorded for
+// them (ImpactRecord::drive, then dropped).
 PetscErrorCode ObliqueRunFinish(const ImpactProblem &pb, ImpactRecord *rec)
 {
-  const Scenario &sc = pb.sc;
-  ImpactSeries   &S  = rec->series;
-  StageInput      in;
+  StageInput in;
 
   PetscFunctionBeginUser;
-  in.sc              = &sc;
-  in.series          = &S;
+  in.sc              = &pb.sc;
+  in.series          = &rec->drive;
   in.u_n             = -rec->end.ball_v;
   in.beam.comm       = pb.comm;
   in.beam.sys        = &pb.sys();
   in.beam.g          = &pb.g;
   in.beam.truncation = ImpactProblemPlaneTruncation(pb);
   PetscCall(RunStagesRun(in, &rec->oblique));
-  if (!sc.oblique.ball_series_asked)
-    S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear(), S.force_rate.clear();
-  if (!sc.oblique.series_asked) S.time.clear();
+  rec->drive = ImpactSeries();
   PetscFunctionReturn(0);
 }
 

@@ -292,7 +292,7 @@ PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamS
   if (!sc.oblique.on) PetscFunctionReturn(0);
   const ContactCoupling g = BeamSystemCoupling(sys, sc.impact.x, sc.impact.z);
   in.sc                   = &sc;
-  in.series               = &rec->series;
+  in.series               = &rec->drive;
   in.u_n                  = -rec->end.ball_v;
   in.beam.comm            = comm; // the modes of the second plane on the reference's ranks
   in.beam.sys             = &sys;
@@ -301,7 +301,7 @@ PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamS
   if (!(in.beam.truncation.contact_time > 0))
     in.beam.truncation.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
   PetscCall(RunStagesRun(in, &rec->oblique));
-  rec->series = ImpactSeries();
+  rec->drive = ImpactSeries();
   PetscFunctionReturn(0);
 }
 
@@ -454,7 +454,7 @@ PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const 
   run.S = &T.R, run.ball = &sc.ball, run.c_scale = T.c_scale;
   run.t_cap = times.max_time;
   run.s_min = 1e-13 * ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
-  if (sc.oblique.on) run.forces = &rec.series;
+  if (sc.oblique.on) run.forces = &rec.drive;
   FullToTruncated(m, full.q, run.q);
   FullToTruncated(m, full.qd, run.qd);
   rec.contact.contacts = 1;
@@ -557,7 +557,7 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
   run.ball                = &ball;
   run.t_cap               = times.max_time;
   run.s_min               = 1e-13 * ContactTimeScale(ball, ImpactApproachSpeed(sc));
-  if (sc.oblique.on) run.forces = &rec.series;
+  if (sc.oblique.on) run.forces = &rec.drive;
   ModalStart(sc, sys, &run, &V_x, &E0);
   rec.start            = ModalMeasures(run, ip.x, ip.z, 0);
   rec.contact.contacts = 1;

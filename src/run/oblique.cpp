@@ -99,17 +99,14 @@ PetscErrorCode ObliqueNormalScenario(MPI_Comm comm, const Scenario &sc, Scenario
   PetscFunctionBeginUser;
   if (bed) PetscCall(ObliqueBedCheck(comm, sc));
   else PetscCall(ObliqueBatCheck(comm, sc, R));
-  *normal              = sc;
-  ObliqueIncoming &in  = normal->oblique;
-  in.on                = true;
-  in.ball_speed        = sc.ball.speed;
-  in.swing             = sc.swing;
-  in.bat_radius        = bed ? 0 : R;
-  in.bed               = bed;
-  in.ball_series_asked = sc.monitor.ball;
-  in.series_asked      = sc.monitor.any();
-  normal->monitor.ball = PETSC_TRUE; // F_n(t) for the tangential contact
-  if (bed) {                         // the bed's frame: theta 0; the swing is along the bed's normal already
+  *normal             = sc;
+  ObliqueIncoming &in = normal->oblique;
+  in.on               = true;
+  in.ball_speed       = sc.ball.speed;
+  in.swing            = sc.swing;
+  in.bat_radius       = bed ? 0 : R;
+  in.bed              = bed;
+  if (bed) { // the bed's frame: theta 0; the swing is along the bed's normal already
     in.angle           = sc.impact.angle * M_PI / 180;
     normal->ball.speed = std::cos(in.angle) * sc.ball.speed;
     PetscFunctionReturn(0);

@@ -63,11 +63,9 @@ struct ObliqueIncoming {
   PetscReal       ball_speed = 0; // m/s, as given
   SwingParams     swing;          // as given
   ObliqueGeometry geometry;
-  PetscReal       bat_radius        = 0;     // m, at the impact point
-  bool            bed               = false; // on a string bed: n its normal, t its z (the bed's frame)
-  PetscReal       angle             = 0;     // rad, on a bed: the ball's path from n (-impact_angle)
-  bool            ball_series_asked = false,
-       series_asked                 = false; // -monitor_ball; any monitor (the run records the ball's series for F_n)
+  PetscReal       bat_radius = 0;     // m, at the impact point
+  bool            bed        = false; // on a string bed: n its normal, t its z (the bed's frame)
+  PetscReal       angle      = 0;     // rad, on a bed: the ball's path from n (-impact_angle)
 };
 
 // What the stages after the contact (run/stage.hpp) hand the outcome: the tangential contact and

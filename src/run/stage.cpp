@@ -30,6 +30,14 @@ PetscErrorCode RunStagesRun(const StageInput &in, ObliqueRecord *rec)
   PetscFunctionReturn(0);
 }
 
+bool RunStagesNeedForce(const Scenario &sc)
+{
+  if (!sc.oblique.on) return false;
+  for (const RunStage *s : RunStages())
+    if (s->Applies(sc) && s->NeedsForce()) return true;
+  return false;
+}
+
 void RunStagesSeries(const ObliqueRecord &rec, ImpactSeries *S)
 {
   const std::vector<const RunStage *> &stages = RunStages();

@@ -61,8 +61,11 @@ public:
   // Whether it runs on sc (the scenario as given or as run: an oblique impact's projection).
   virtual bool Applies(const Scenario &sc) const = 0;
   // Its work after the stages before it (in.sc as run), into the shared record and *own.
-  virtual PetscErrorCode           Run(const StageInput &in, ObliqueRecord *rec,
-                                       std::shared_ptr<const StageResult> *own) const = 0;
+  virtual PetscErrorCode Run(const StageInput &in, ObliqueRecord *rec,
+                             std::shared_ptr<const StageResult> *own) const = 0;
+  // Whether it reads the run's F_n(t) (StageInput::series): the run records it for the stages
+  // (ImpactRecord::drive), apart from the series a user asked for.
+  virtual bool                     NeedsForce() const { return false; }
   virtual std::vector<StageColumn> Columns() const { return {}; }
   // Its series from its own result, appended to S->keyed (/series/<name>).
   virtual void Series(const StageResult &, ImpactSeries *) const { }
@@ -78,6 +81,9 @@ const std::vector<const RunStage *> &RunStages();
 // Every stage that applies to in.sc, in order, each in its own -log_view stage; rec->stages[k]:
 // the k-th registered stage's own result (nullptr: it did not run).
 PetscErrorCode RunStagesRun(const StageInput &in, ObliqueRecord *rec);
+
+// Whether a stage that applies to sc (as run) needs the run's F_n(t).
+bool RunStagesNeedForce(const Scenario &sc);
 
 // Each stage's series from its own result, into S (the outcome).
 void RunStagesSeries(const ObliqueRecord &rec, ImpactSeries *S);

@@ -46,6 +46,7 @@ class Tangential final : public RunStage {
 public:
   const char *Name() const override { return "tangential"; }
   bool        Applies(const Scenario &sc) const override { return Oblique(sc); }
+  bool        NeedsForce() const override { return true; } // the friction's drive: F_n(t), dF_n/dt at each step
 
   PetscErrorCode Run(const StageInput &in, ObliqueRecord *rec, std::shared_ptr<const StageResult> *) const override
   {
