@@ -194,17 +194,21 @@ PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlan
 
   PetscFunctionBeginUser;
   PetscCall(BeamModesShared(beam.comm, *beam.sys, beam.truncation, &modes)); // from the cache
-  const PetscInt n = modes->S.n, f = beam.sys->fields;
+  const BeamSystem      &S = *beam.sys;
+  const PetscInt         n = modes->S.n, f = S.fields;
+  std::vector<PetscReal> at(S.ndof, std::nan("")); // m: the point each translational dof moves with (NaN: none)
+  for (PetscInt dof = 0; dof < S.ndof; dof += f) at[dof] = S.NodeX(dof / f);
+  for (const RigidPoint &r : S.rigid_points) at[r.dof] = r.x; // a registered part's point masses (an absorber)
   *P = 0, *L = 0;
   for (size_t k = 0; k < p.zd.size(); ++k) {
     const PetscReal *phi = &modes->B.Phi[k * n];
     PetscReal        r   = 0,
               x = 0; // sum m_d v_d and m_d x_d v_d per unit zd_k, over the translational dofs: v = M^{-1/2} phi zd
     for (PetscInt d = 0; d < n; ++d) {
-      const PetscInt dof = modes->S.dof[d];
-      if (dof % f) continue;
+      const PetscReal xd = at[modes->S.dof[d]];
+      if (std::isnan(xd)) continue;
       r += phi[d] * std::sqrt(modes->S.mass[d]);
-      x += phi[d] * std::sqrt(modes->S.mass[d]) * beam.sys->NodeX(dof / f);
+      x += phi[d] * std::sqrt(modes->S.mass[d]) * xd;
     }
     *P += r * p.zd[k];
     *L += x * p.zd[k];

@@ -116,7 +116,8 @@ struct ObliqueBeam {
 PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p,
                                  PetscInt *rigid);
 // The plane's momentum along t (N s) and its angular momentum about x = 0 in that plane (N m s,
-// sum m_d x_d v_d over the translational dofs: a Timoshenko section's spin is left out).
+// sum m_d x_d v_d over the translational dofs, a registered part's point masses (an absorber)
+// among them: a Timoshenko section's spin is left out).
 PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlane &p, PetscReal *P, PetscReal *L);
 
 // After the run along the normal (sc: its projected scenario; series: its ball series, F_n at
