@@ -86,9 +86,9 @@ TEST(Grip, EnergyBalanceWithGripDamping)
     const ImpactResult r = RunSc(sc, kRK4);
     EXPECT_LT(std::abs(r.energy_error), 1e-9) << "rk4, swing " << swing;
     EXPECT_GT(r.beam_dissipated_end, 0);
-    EXPECT_GT(test::ResultValue(r, "grip_force_peak"), 0);
-    if (swing) EXPECT_NE(test::ResultValue(r, "hand_work_end"), 0.0);
-    else EXPECT_EQ(test::ResultValue(r, "hand_work_end"), 0.0);
+    EXPECT_GT(test::Col(r, "grip_force_peak"), 0);
+    if (swing) EXPECT_NE(test::Col(r, "hand_work_end"), 0.0);
+    else EXPECT_EQ(test::Col(r, "hand_work_end"), 0.0);
     const ImpactResult c = RunSc(sc, {{"-ts_type", "cn"}, {"-ts_adapt_type", "none"}, {"-ts_dt", "2e-6"}});
     EXPECT_LT(std::abs(c.energy_error), 1e-5) << "cn, swing " << swing;
     const ImpactResult a = RunSc(sc, {{"-ts_type", "alpha2"}, {"-ts_adapt_type", "none"}, {"-ts_dt", "2e-6"}});

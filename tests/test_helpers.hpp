@@ -116,9 +116,6 @@ inline BeamParams WithoutGrip(BeamParams p)
   return p;
 }
 
-// A column of the results table by name (a part's keyed column too).
-inline double ResultValue(const ImpactResult &r, const char *name) { return ImpactResultColumn(name)->Get(r); }
-
 // The semi-discrete system of a beam (Euler-Bernoulli unless p.theory says otherwise).
 inline BeamSystem SystemOf(const BeamParams &p)
 {
@@ -210,6 +207,15 @@ inline ImpactResult RunImpact(MPI_Comm comm, const BeamParams &beam, const BallP
   EXPECT_EQ(ImpactRun(comm, Scenario{beam, ball, ip, mon}, &r), 0) << "ImpactRun failed";
   for (auto &kv : ts_options) EXPECT_EQ(PetscOptionsClearValue(NULL, kv.first.c_str()), 0);
   return r;
+}
+
+// The results column `name` of r, any module's (the table's, a stage's after the contact, a
+// registered part's): NaN where it does not apply; a failure when no module has it.
+inline double Col(const ImpactResult &r, const char *name)
+{
+  const ResultColumn *c = ImpactResultColumn(name);
+  EXPECT_NE(c, nullptr) << "no results column " << name;
+  return c ? c->Get(r) : std::nan("");
 }
 
 } // namespace beamimpact::test

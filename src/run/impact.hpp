@@ -97,12 +97,10 @@ struct ImpactSeries {
   std::vector<PetscReal>              velocity_at_x;   // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;     // m/s, [point][step]
   std::vector<PetscReal>              segment_kinetic; // J, kinetic energy of the monitored segment
-  // -flight: the batted ball's trajectory (s; m, the flight's frame: y down the field, z up; rad/s)
-  std::vector<PetscReal>              flight_time, flight_x, flight_y, flight_z, flight_spin;
-  std::vector<PetscReal>              snapshot_time; // s
-  std::vector<std::vector<PetscReal>> snapshot_y;    // m, [snapshot][node]
-  std::vector<std::vector<PetscReal>> snapshot_bed;  // m, a string bed's deflection from its frame, w - y - z phi,
-                                                     // [snapshot][z * nodes + x] (NaN off the bed; rank 0)
+  std::vector<PetscReal>              snapshot_time;   // s
+  std::vector<std::vector<PetscReal>> snapshot_y;      // m, [snapshot][node]
+  std::vector<std::vector<PetscReal>> snapshot_bed;    // m, a string bed's deflection from its frame, w - y - z phi,
+                                                       // [snapshot][z * nodes + x] (NaN off the bed; rank 0)
   // m, the barrel wall's radial displacement W_n(x) of each harmonic (-beam_shell; model/shell.hpp),
   // [snapshot][k * nodes + node] for the harmonic n = snapshot_wall_n[k] (NaN where the section is solid; rank 0)
   std::vector<std::vector<PetscReal>> snapshot_wall;
@@ -112,6 +110,7 @@ struct ImpactSeries {
   struct Keyed {
     std::string            name, unit;
     std::vector<PetscReal> values;
+    std::string            dim; // the series it is on ("": time; a stage's own axis, e.g. flight_time)
   };
   std::vector<Keyed> keyed;
 };
@@ -246,17 +245,6 @@ struct ImpactOutcome {
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
   // for which it gives acor_corrected (the forced fit).
   PetscReal rigid_acor = 0, rigid_forced_loss_fraction = 0;
-  // An oblique impact (-impact_offset, -ball_spin, -flight; run/oblique.hpp): the batted ball's
-  // speed (m/s), launch angle (deg from the reversed incoming direction, > 0 up), spin (rad/s and
-  // rpm, > 0 backspin), the energy friction dissipated (J); with -flight its distance (m), apex
-  // (m above the ground) and hang time (s). Along the normal, acor, bbs and the rest are the run's.
-  PetscReal exit_speed = 0, launch_angle = 0, spin = 0, spin_rpm = 0, friction_dissipated = 0;
-  PetscReal bat_vibration_tangential = 0; // J, the bat's vibration in its second plane after the hit (flexible plane)
-  PetscReal bat_damping_tangential = 0; // J, what the bat's damping took in that plane during the hit (flexible plane)
-  // On a string bed (-impact_angle, run/oblique.hpp): the strings' largest slide from the frame (m), the energy of
-  // their in-plane vibration at most (J) and what of it they gave back by the separation (J: the peak less the end's)
-  PetscReal strings_slide_peak = 0, strings_inplane_energy_peak = 0, strings_inplane_energy_returned = 0;
-  PetscReal distance = 0, apex = 0, hang_time = 0;
 };
 
 // The stepper's own counts, and the driver's.
@@ -297,8 +285,11 @@ struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
   std::vector<ContactEvent> events;
   ImpactSeries              series;
   ImpactScales              scales;
-  // The registered structure parts' columns (run/results_table.hpp, ResultColumn::keyed), by
-  // their index in the table's keyed columns; NaN (or beyond the end) where a part is absent.
+  // The columns of the stages after the contact (run/stage.hpp: an oblique impact's exit_speed,
+  // spin, ..., the flight's distance, ...) and of the registered structure parts
+  // (run/results_table.hpp, ResultColumn::keyed), by their index in the table's keyed columns;
+  // NaN (or beyond the end) where a stage does not apply or a part is absent. By name:
+  // ImpactResultColumn(name)->Get(r).
   std::vector<double> keyed;
 };
 
@@ -317,33 +308,34 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
 // stepper), "beamimpact: contact" (steps while the ball touches), "beamimpact: free flight"
 // (after a separation: the modal free flight, or the steps of -impact_after time),
 // "beamimpact: output" (the results file; a sweep's rewrites of its file too), "beamimpact:
-// modal reference" (-reference modal, the exact modal solution: its modes and phases),
-// "beamimpact: tangential" (an oblique impact's friction on the ball and the bat's second
-// plane, from the normal run's force, and its compliance length from e_T), "beamimpact:
-// flight" (-flight: the batted ball's flight). Registered on first use. A scope pushes a stage and
-// pops it when it ends (also on an error return, so a sweep's failed points keep the stack
-// balanced); Switch changes the stage it holds, End pops it early.
+// modal reference" (-reference modal, the exact modal solution: its modes and phases), and one
+// per stage after the contact, "beamimpact: <name>" (run/stage.hpp: "tangential", an oblique
+// impact's friction on the ball and the bat's second plane from the normal run's force, and
+// "flight", the batted ball's flight), registered after them. Registered on first use. A scope
+// pushes a stage and pops it when it ends (also on an error return, so a sweep's failed points
+// keep the stack balanced); Switch changes the stage it holds, End pops it early.
 enum class ImpactStage {
   Setup,
   Contact,
   FreeFlight,
   Output,
-  ModalReference,
-  Tangential,
-  Flight
+  ModalReference
 };
 class ImpactStageScope {
 public:
+  ImpactStageScope() = default; // holds no stage until a Switch
   explicit ImpactStageScope(ImpactStage s) { Switch(s); }
   ~ImpactStageScope();
   void Switch(ImpactStage s);
-  void End(); // pops the stage now
+  void Switch(const char *name); // a stage after the contact's (run/stage.hpp), by its name
+  void End();                    // pops the stage now
   ImpactStageScope(const ImpactStageScope &)            = delete;
   ImpactStageScope &operator=(const ImpactStageScope &) = delete;
 
 private:
-  bool        pushed_ = false;
-  ImpactStage stage_  = ImpactStage::Setup;
+  void          Push(PetscLogStage id);
+  bool          pushed_ = false;
+  PetscLogStage id_     = -1; // the stage it holds
 };
 
 struct Scenario;

@@ -8,13 +8,15 @@
 namespace beamimpact {
 
 ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon,
-                               const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks) :
+                               const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks,
+                               ImpactSeries *drive) :
   stepper_(stepper),
   ctx_(ctx),
   mon_(mon),
   ip_(ip),
   E0_(E0),
   series_(series),
+  drive_(drive),
   peaks_(peaks),
   last_phase_(ctx.contact ? ctx.contact->phase : ContactPhase::Loading)
 {
@@ -25,7 +27,7 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
       const bool asked = slot.own_monitor ? p.part->Monitors(*p.params) : (bool)mon.energy;
       part_peak_.push_back(slot.peak);
       part_series_.push_back(slot.series && asked ? (int)series->keyed.size() : -1);
-      if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}});
+      if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
 }
 
@@ -75,7 +77,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   PetscFunctionBeginUser;
   const bool wall = ctx_.sys->wall_dof >= 0 || ctx_.sys->shell.first >= 0; // a barrel wall (hoop oscillator or shell)
   const bool bed  = ctx_.sys->bed_first >= 0;                              // a racket's string bed
-  if (!mon_.any() && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
+  if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
     PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
   for (size_t k = 0; k < part_peak_.size(); ++k) { // the parts' peaks, always (NaN until the first step)
@@ -102,7 +104,14 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
                "energy grew by %.3g of the incident kinetic energy at t = %g s %s", (double)growth, (double)t,
                stepper_.EnergyGrowthCause().c_str());
   }
-  if (!mon_.any()) PetscFunctionReturn(0);
+  if (drive_) { // the stages' drive, whatever was asked
+    drive_->time.push_back(t);
+    BallSeriesAppend(m, ctx_, last_phase_, drive_);
+  }
+  if (!mon_.any()) {
+    last_phase_ = ctx_.contact->phase;
+    PetscFunctionReturn(0);
+  }
   S.time.push_back(t);
   if (mon_.ball) { BallSeriesAppend(m, ctx_, last_phase_, &S); }
   if (mon_.energy) EnergySeriesAppend(m, *ctx_.sys, wall, bed, &S);

@@ -4,7 +4,7 @@
 #include "model/rigid.hpp"
 #include "model/shell.hpp"
 #include "run/impact_point.hpp"
-#include "run/oblique.hpp"
+#include "run/stage.hpp"
 #include "run/scenario.hpp"
 
 #include <algorithm>
@@ -42,17 +42,6 @@ bool ResultStringBed(const Scenario &sc) { return sc.beam.strings.On(); }
 bool ResultTwist(const Scenario &sc) { return sc.beam.parts.Rolls(); }
 bool ResultTwistInvariant(const Scenario &sc) { return ResultTwist(sc) && ResultMomentumInvariant(sc); }
 bool ResultTwistNoHeld(const Scenario &sc) { return ResultTwist(sc) && ResultNoHeldDof(sc) && sc.ball.speed > 0; }
-
-// Asked of the scenario as given (the run record, a file's `applies`) and of the run's projected
-// one (the outcome): ObliqueImpact answers the same for both.
-bool ResultOblique(const Scenario &sc) { return sc.oblique.on || ObliqueImpact(sc); }
-bool ResultObliqueFlexible(const Scenario &sc) { return ResultOblique(sc) && !sc.impact.tangential_rigid; }
-bool ResultObliqueBed(const Scenario &sc)
-{
-  return ResultObliqueFlexible(sc) && ImpactOnBed(sc.beam, sc.impact.x, sc.impact.z);
-}
-
-bool ResultFlight(const Scenario &sc) { return sc.flight.on; }
 
 std::string PivotHeldText(const Scenario &sc)
 {
@@ -401,78 +390,6 @@ std::vector<ResultColumn> OutcomeColumns()
   };
 }
 
-// The oblique impact (run/oblique.hpp) and the batted ball's flight. Along the line of centres
-// the columns above are the run's (acor, bbs: the normal components); these are the ball's
-// whole exit.
-const char *const kOblique = "an oblique impact: -impact_offset, -impact_angle or -ball_spin not 0, or -flight (a "
-                             "head-on hit: "
-                             "exit_speed = bbs, launch_angle 0, no spin)";
-const char *const kFlight  = "with -flight";
-const char *const kObliqueFlexible = "an oblique impact with -impact_tangential_plane flexible (the default; 0 where "
-                                     "no friction force acts)";
-const char *const kObliqueBed      = "an oblique impact on a string bed (-impact_angle, -ball_spin) with "
-                                     "-impact_tangential_plane flexible (0 where no friction force acts)";
-std::vector<ResultColumn> ObliqueColumns()
-{
-  return {
-    Real(
-      "exit_speed", "m/s", &R::exit_speed, ResultOblique, kOblique, [](F f) -> double { return f.oblique->exit.speed; },
-      "the batted ball's speed, normal and tangential parts together (lab frame)"),
-    Real(
-      "launch_angle", "deg", &R::launch_angle, ResultOblique, kOblique,
-      [](F f) -> double { return f.oblique->exit.launch_angle; },
-      "the batted ball's direction from the reversed incoming direction, > 0 upward (on a string bed: from the bed's "
-      "normal, > 0 toward +z)"),
-    Real(
-      "spin", "rad/s", &R::spin, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin; },
-      "the batted ball's spin, > 0 backspin (on a string bed: about x, the sense of a ball leaving toward +z "
-      "rolling on the bed)"),
-    Real(
-      "spin_rpm", "rpm", &R::spin_rpm, ResultOblique, kOblique,
-      [](F f) -> double { return f.oblique->after.spin * 30 / M_PI; }, "the same in revolutions per minute"),
-    Real(
-      "friction_dissipated", "J", &R::friction_dissipated, ResultOblique, kOblique,
-      [](F f) -> double { return f.oblique->contact.dissipated - f.oblique->contact.stiffness_work; },
-      "energy the tangential contact took from the motions: friction's sliding, and the tangential spring's (its "
-      "stiffness follows F_n); its own term, not in energy_error's E (the normal run's)"),
-    Real(
-      "bat_vibration_tangential", "J", &R::bat_vibration_tangential, ResultObliqueFlexible, kObliqueFlexible,
-      [](F f) -> double { return f.oblique->plane_vibration; },
-      "energy left in the bat's vibration in its second plane (across the line of centres) by the friction force; its "
-      "own term, beside friction_dissipated"),
-    Real(
-      "bat_damping_tangential", "J", &R::bat_damping_tangential, ResultObliqueFlexible, kObliqueFlexible,
-      [](F f) -> double { return f.oblique->plane_damped; },
-      "energy the bat's damping (-beam_damping_*) took in its second plane up to the end of the contact; 0 for an "
-      "undamped bat; its own term, beside bat_vibration_tangential"),
-    Real(
-      "strings_slide_peak", "m", &R::strings_slide_peak, ResultObliqueBed, kObliqueBed,
-      [](F f) -> double { return f.oblique->bed_slide_peak; },
-      "the largest sideways slide of the mains under the ball from the frame (in the face's plane, across the mains; "
-      "at the run's steps)"),
-    Real(
-      "strings_inplane_energy_peak", "J", &R::strings_inplane_energy_peak, ResultObliqueBed, kObliqueBed,
-      [](F f) -> double { return f.oblique->bed_energy_peak; },
-      "the largest energy of the mains' vibration in the face's plane (their slide's strain and motion on the "
-      "frame) during the contact"),
-    Real(
-      "strings_inplane_energy_returned", "J", &R::strings_inplane_energy_returned, ResultObliqueBed, kObliqueBed,
-      [](F f) -> double { return f.oblique->bed_energy_peak - f.oblique->plane_vibration; },
-      "what of that peak the mains gave back by the separation (snapback): the peak less the energy left in their "
-      "vibration (bat_vibration_tangential)"),
-    Real(
-      "distance", "m", &R::distance, ResultFlight, kFlight,
-      [](F f) -> double { return f.oblique->flight.landing.distance; },
-      "the batted ball's carry: launch point to landing, horizontal"),
-    Real(
-      "apex", "m", &R::apex, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.apex; },
-      "the flight's highest point above the ground"),
-    Real(
-      "hang_time", "s", &R::hang_time, ResultFlight, kFlight,
-      [](F f) -> double { return f.oblique->flight.landing.hang_time; }, "the flight's time from launch to landing"),
-  };
-}
-
 // What the run cost (the stepper's and the driver's counts), the dissipated energy, Eq. (11).
 std::vector<ResultColumn> CostAndLaterColumns()
 {
@@ -513,10 +430,19 @@ std::vector<ResultColumn> CostAndLaterColumns()
 
 std::vector<ResultColumn> BuildTable()
 {
-  std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns(), oblique = ObliqueColumns();
+  std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns();
   t.insert(t.end(), more.begin(), more.end());
-  t.insert(t.end(), oblique.begin(), oblique.end());
-  PetscInt keyed = 0; // the registered parts' columns, last (or after the column they name)
+  PetscInt keyed = 0; // the stages' columns after the contact (along the line of centres the columns
+                      // above are the run's: acor, bbs the normal components), then the parts', last (or
+                      // after the column they name)
+  for (size_t k = 0; k < RunStages().size(); ++k)
+    for (const StageColumn &sc : RunStages()[k]->Columns()) {
+      ResultColumn c{sc.name, sc.unit, sc.description, sc.applies, sc.applies_text};
+      c.stage         = (PetscInt)k;
+      c.stage_compute = sc.compute;
+      c.keyed         = keyed++;
+      t.push_back(c);
+    }
   for (const StructurePart *p : StructureParts()) {
     auto at = t.end();
     if (const char *after = p->ColumnsAfter())
