@@ -63,6 +63,12 @@ out=$("$exe" -options_file options/impact.opts -ts_type rk -ts_rk_type 4 -ksp_co
 if [[ $rc -eq 0 ]] && grep -q "note: 1 PETSc solver option(s) set but not used by this integrator: -ksp_converged_reason" <<<"$out"; then
   pass "-ksp_converged_reason under rk4 (no linear solve) is a leftover note"
 else fail "rk4 -ksp_converged_reason: exit $rc: $out"; fi
+# the program's own LU reads -pc_factor_mat_solver_type at its first solve, after the set-up's
+# check: under cn it acts, and is not called unused
+out=$("$exe" -options_file options/impact.opts -ts_type cn -pc_factor_mat_solver_type superlu -output none 2>&1); rc=$?
+if [[ $rc -eq 0 ]] && grep -q "^ts cn " <<<"$out" && ! grep -q "note: .*not used" <<<"$out"; then
+  pass "-pc_factor_mat_solver_type under cn acts and is not called unused"
+else fail "cn -pc_factor_mat_solver_type: exit $rc: $out"; fi
 out=$("$exe" -options_file options/impact.opts -beam_thicknes 0.01 -output none 2>&1); rc=$?
 if [[ $rc -ne 0 ]] && grep -q "option(s) unknown (set but read by no task): -beam_thicknes 0.01 (did you mean -beam_thickness?)" <<<"$out" && ! grep -q "^x " <<<"$out"; then
   pass "a misspelt program option is an error before the run, suggesting the closest known option"

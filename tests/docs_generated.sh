@@ -7,7 +7,7 @@
 # 1. docs/options.md and docs/results.md are what `beamimpact -help_markdown options|results`
 #    prints now (scripts/make_docs.sh writes them into scratch_dir): a row or column changed or
 #    added without regenerating them fails with the diff and the command that rewrites them.
-# 2. docs/design.md cites only what exists: every path (`system/force_grip.cpp`, `src/...`,
+# 2. docs/design.md cites only what exists: every path (`system/force_elastic.cpp`, `src/...`,
 #    `tests/...`; `{hpp,cpp}` expanded, a stem such as `run/free_flight` as its .hpp or .cpp) is
 #    a file or folder of the repository, and every name of code (`BeamSystemBuild`,
 #    `Stepper::SetState`, `ContactWall*` as a prefix) a word of src/ or tests/ or of the headers in

@@ -222,7 +222,9 @@ TEST(ReferenceRegistry, MethodsChoicesAndWhenTheyApply)
   Scene       lin = Coarse(), hyst = Coarse(), grip = Coarse();
   std::string why;
   hyst.ball = Superball("hysteresis");
-  grip.beam.grip.on = true, grip.beam.grip.x_a = 0, grip.beam.grip.x_b = 0.1, grip.beam.grip.stiffness = 1e5;
+  BeamGrip hands;
+  hands.x_a = 0, hands.x_b = 0.1, hands.stiffness = 1e5;
+  grip.beam = WithGrip(grip.beam, hands);
   EXPECT_STREQ(ReferenceMethodDefault(lin)->name, "modal");
   EXPECT_STREQ(ReferenceMethodDefault(hyst)->name, "run");
   EXPECT_TRUE(ReferenceMethodFind("modal")->applies(lin, &why)) << why;

@@ -3,7 +3,8 @@
 // sqrt(k'/mu) = sqrt(k L / M); (b) the energy balance closes with the grip's stored energy, its
 // damper (in D) and the hands' work, at rest and swinging, TS and leapfrog; (c) the swinging-bat
 // identity holds with e_A of the gripped bat at rest (the grip ties to the moving frame) and
-// not with e_A of the free bat; (d) a grip of zero strength changes nothing.
+// not with e_A of the free bat; (d) a grip of zero strength changes nothing; (e) the registry of
+// structure parts gives the hands.
 #include "io/ball_options.hpp"
 #include "io/beam_options.hpp"
 #include "solvers/leapfrog.hpp"
@@ -14,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <unistd.h>
@@ -52,11 +54,10 @@ TEST(Grip, UniformGripRigidModesAreMassSpring)
   BeamSystem  sys, free_sys;
   std::string why;
   ASSERT_TRUE(BeamSystemBuild(beam, &sys, &why));
-  BeamParams nogrip = beam;
-  nogrip.grip       = BeamGrip();
+  const BeamParams nogrip = test::WithoutGrip(beam);
   ASSERT_TRUE(BeamSystemBuild(nogrip, &free_sys, &why));
   // the rigid motions are exact eigenvectors of the gripped K: K r = (k'/mu) M r
-  const PetscReal w0 = std::sqrt(beam.grip.stiffness * beam.length / (beam.mu * beam.length));
+  const PetscReal w0 = std::sqrt(2e4 * beam.length / (beam.mu * beam.length)); // -grip_stiffness
   for (const auto &r : {BeamSystemRigidVelocity(sys, 1.0, 0.0), BeamSystemRigidVelocity(sys, 0.0, 1.0)}) {
     std::vector<PetscReal> f(sys.ndof);
     BeamSystemStiffnessApply(sys, r.data(), sys.fields, 0, sys.ndof, f.data(), sys.fields);
@@ -85,9 +86,9 @@ TEST(Grip, EnergyBalanceWithGripDamping)
     const ImpactResult r = RunSc(sc, kRK4);
     EXPECT_LT(std::abs(r.energy_error), 1e-9) << "rk4, swing " << swing;
     EXPECT_GT(r.beam_dissipated_end, 0);
-    EXPECT_GT(r.grip_force_peak, 0);
-    if (swing) EXPECT_NE(r.hand_work_end, 0.0);
-    else EXPECT_EQ(r.hand_work_end, 0.0);
+    EXPECT_GT(test::Col(r, "grip_force_peak"), 0);
+    if (swing) EXPECT_NE(test::Col(r, "hand_work_end"), 0.0);
+    else EXPECT_EQ(test::Col(r, "hand_work_end"), 0.0);
     const ImpactResult c = RunSc(sc, {{"-ts_type", "cn"}, {"-ts_adapt_type", "none"}, {"-ts_dt", "2e-6"}});
     EXPECT_LT(std::abs(c.energy_error), 1e-5) << "cn, swing " << swing;
     const ImpactResult a = RunSc(sc, {{"-ts_type", "alpha2"}, {"-ts_adapt_type", "none"}, {"-ts_dt", "2e-6"}});
@@ -110,8 +111,7 @@ TEST(Grip, SwingingIdentityNeedsTheGrippedBatsACOR)
   BeamParams gripped, free_beam;
   BallParams ball;
   Paper({{"-grip", "0,0.15"}, {"-grip_stiffness", "1e6"}, {"-grip_damping", "500"}}, &gripped, &ball);
-  free_beam      = gripped;
-  free_beam.grip = BeamGrip();
+  free_beam = test::WithoutGrip(gripped);
   ImpactParams ip;
   ip.x                = 0.9;
   ip.window           = 0; // to the first separation
@@ -136,8 +136,7 @@ TEST(Grip, ZeroGripChangesNothing)
   BeamParams beam, none;
   BallParams ball;
   Paper({{"-grip", "0,0.15"}}, &beam, &ball);
-  none      = beam;
-  none.grip = BeamGrip();
+  none = test::WithoutGrip(beam);
   ImpactParams ip;
   ip.x                 = 0.9;
   ip.window            = 0;
@@ -145,4 +144,83 @@ TEST(Grip, ZeroGripChangesNothing)
   EXPECT_EQ(a.acor, b.acor);
   EXPECT_EQ(a.contact_time, b.contact_time);
   EXPECT_EQ(a.peak_force, b.peak_force);
+}
+
+// The registry gives the hands (system/structure_part.hpp): a part without fields that ties the
+// structure to the swing's frame. Against the formulas over [x_a, x_b] with its span s = x_b - x_a
+// (the nodes' shares add up to s exactly): a relative displacement u stores 1/2 k' s u^2, pushes
+// the frame with k' s u (plus c' s w for a relative velocity w), the hands add m_hand to the
+// beam; momentum is not an invariant; its columns keep their place after bbcor; its refusals.
+TEST(GripPart, RegistryGivesTheHands)
+{
+  const StructurePart *part = StructurePartFind("grip");
+  ASSERT_NE(part, nullptr) << "the hands are a registered structure part";
+  BeamGrip g;
+  g.x_a = 0.03, g.x_b = 0.17, g.stiffness = 1e5, g.damping = 40, g.mass = 0.2; // not on nodes: partial cells
+  const PetscReal  s = g.x_b - g.x_a, u = 2e-3, w = 0.3, vf = 0.7, t = 1e-3;
+  const BeamParams bare = test::AluminiumBeam(1.1, 23), p = test::WithGrip(bare, g);
+  ASSERT_TRUE(p.parts.Has("grip"));
+  EXPECT_TRUE(part->TiesToFrame(*p.parts.Find("grip")));
+  EXPECT_TRUE(StructurePartsTieToFrame(p));
+  EXPECT_FALSE(StructurePartsTieToFrame(bare));
+  const BeamSystem S = test::SystemOf(p), F = test::SystemOf(bare);
+  EXPECT_TRUE(S.TiedToFrame());
+  EXPECT_FALSE(F.TiedToFrame());
+  EXPECT_EQ(S.fields, F.fields) << "the hands have no fields";
+  PetscReal added = 0; // the hands' mass on the deflections
+  for (PetscInt d = 0; d < S.ndof; ++d) added += S.mass[d] - F.mass[d];
+  EXPECT_NEAR(added, g.mass, 1e-14);
+
+  // The frame moves uniformly at vf: the handle at vf t + u, moving at vf + w, relative u and w.
+  FrameMotion frame;
+  frame.v.assign(S.ndof, 0.0);
+  std::vector<PetscReal> y(S.ndof, 0.0), v(S.ndof, 0.0);
+  for (PetscInt i = 0; i < S.nodes; ++i) frame.v[S.Dof(i)] = vf, y[S.Dof(i)] = vf * t + u, v[S.Dof(i)] = vf + w;
+  ForceState fs;
+  fs.y = y.data(), fs.ys = S.fields, fs.v = v.data(), fs.vs = S.fields, fs.t = t, fs.frame = &frame;
+  PetscReal elastic = 0, stored = 0, force = 0, moment = 0;
+  ForceOperatorEnergy(S, fs, 0, S.ndof, &elastic, &stored);
+  EXPECT_NEAR(stored, 0.5 * g.stiffness * s * u * u, 1e-12 * g.stiffness * s * u * u);
+  ForceOperatorFrameReaction(S, fs, 0, S.ndof, &force, &moment);
+  EXPECT_NEAR(force, g.stiffness * s * u + g.damping * s * w, 1e-12 * g.stiffness * s * u);
+  EXPECT_NEAR(ForceOperatorDissipationRate(S, fs, 0, S.ndof), g.damping * s * w * w, 1e-12 * g.damping * s * w * w);
+
+  // Momentum is not an invariant with the hands: its error columns do not apply.
+  const Scenario held(p, test::Superball(), ImpactParams()), free_bat(bare, test::Superball(), ImpactParams());
+  EXPECT_FALSE(ResultMomentumInvariant(held));
+  EXPECT_FALSE(ResultFreeBeamAtRest(held));
+  EXPECT_TRUE(ResultMomentumInvariant(free_bat));
+
+  // Its columns follow bbcor, in their order, and apply with -grip; their series under its own monitor.
+  const std::vector<std::string> names = {"bbcor",         "grip_force_peak", "grip_force_peak_time",
+                                          "grip_stored_end", "hand_work_end", "grip_fraction",
+                                          "hands_fraction",  "shell_energy_end"};
+  const std::vector<ResultColumn> &table = ImpactResultColumns();
+  const auto at = std::find_if(table.begin(), table.end(),
+                               [](const ResultColumn &c) { return c.name == std::string("bbcor"); });
+  ASSERT_LT(at + (names.size() - 1), table.end());
+  for (size_t k = 0; k < names.size(); ++k) EXPECT_EQ(names[k], (at + k)->name);
+  EXPECT_STREQ(ImpactResultColumn("grip_fraction")->share, "grip");
+  EXPECT_STREQ(ImpactResultColumn("grip_force_peak")->applies_text, "with -grip");
+  EXPECT_FALSE(part->Monitors(*p.parts.Find("grip")));
+  for (const PartSlot &slot : part->Slots()) EXPECT_TRUE(slot.series && slot.own_monitor) << slot.name;
+
+  // Its line, its refusals: the modal reference, the roll's hold without a roll, a held end.
+  EXPECT_EQ(part->Summary(*p.parts.Find("grip"), {1, 2, 3, 4}),
+            "hands on 0.03-0.17 m: peak force on the hands 1.0000e+00 N at 2.0000e+00 s; grip energy stored at the end "
+            "3.0000e+00 J; work done by the hands 4.0000e+00 J");
+  EXPECT_NE(StructurePartsModalRefusal(p).find("-grip"), std::string::npos);
+  BeamGrip twisted = g;
+  twisted.torsion_stiffness = 5;
+  EXPECT_NE(StructurePartsRefusalWith(test::WithGrip(bare, twisted))
+              .find("-grip_torsion_stiffness 5 without -beam_torsion"),
+            std::string::npos);
+  BeamParams clamped = bare;
+  clamped.left       = Support::Clamped;
+  PartOptionValues ov;
+  ov.given["-grip"] = {g.x_a, g.x_b};
+  std::shared_ptr<const PartParams> q;
+  std::string                       why;
+  EXPECT_FALSE(part->Configure(ov, clamped, &q, &why));
+  EXPECT_NE(why.find("the hands hold a free bat"), std::string::npos) << why;
 }

@@ -6,6 +6,7 @@
 #include "io/beam_options.hpp"
 #include "io/options_files.hpp"
 #include "run/impact.hpp"
+#include "run/results_table.hpp"
 #include "run/scenario.hpp"
 #include "system/beam_system.hpp"
 
@@ -89,6 +90,32 @@ inline BallParams Superball(const char *law = "linear")
   BallParams b; // 42 g, 1 m/s, k = 2e4 N/m; hysteresis k1 = 2e4, m = 1, n = 1.768 (the laws' defaults)
   BallParamsUseLaw(&b, ContactLawFind(law));
   return b;
+}
+
+// The beam with the hands g (g.on ignored), through the grip part's own option module, as
+// -grip x_a,x_b -grip_stiffness k' -grip_damping c' -grip_mass m -grip_torsion_stiffness ...
+// -grip_torsion_damping ... would; WithoutGrip(p): the same beam with no hands.
+inline BeamParams WithGrip(BeamParams p, const BeamGrip &g)
+{
+  const StructurePart *part = StructurePartFind("grip");
+  EXPECT_NE(part, nullptr) << "the hands are a registered structure part";
+  PartOptionValues v;
+  v.given["-grip"]                   = {g.x_a, g.x_b};
+  v.given["-grip_stiffness"]         = {g.stiffness};
+  v.given["-grip_damping"]           = {g.damping};
+  v.given["-grip_mass"]              = {g.mass};
+  v.given["-grip_torsion_stiffness"] = {g.torsion_stiffness};
+  v.given["-grip_torsion_damping"]   = {g.torsion_damping};
+  std::shared_ptr<const PartParams> q;
+  std::string                       why;
+  EXPECT_TRUE(part->Configure(v, p, &q, &why)) << why;
+  p.parts.Set("grip", q);
+  return p;
+}
+inline BeamParams WithoutGrip(BeamParams p)
+{
+  p.parts.Set("grip", nullptr);
+  return p;
 }
 
 // The semi-discrete system of a beam (Euler-Bernoulli unless p.theory says otherwise).
@@ -207,6 +234,15 @@ inline ImpactResult RunImpact(MPI_Comm comm, const BeamParams &beam, const BallP
   EXPECT_EQ(ImpactRun(comm, Scenario{beam, ball, ip, mon}, &r), 0) << "ImpactRun failed";
   for (auto &kv : ts_options) EXPECT_EQ(PetscOptionsClearValue(NULL, kv.first.c_str()), 0);
   return r;
+}
+
+// The results column `name` of r, any module's (the table's, a stage's after the contact, a
+// registered part's): NaN where it does not apply; a failure when no module has it.
+inline double Col(const ImpactResult &r, const char *name)
+{
+  const ResultColumn *c = ImpactResultColumn(name);
+  EXPECT_NE(c, nullptr) << "no results column " << name;
+  return c ? c->Get(r) : std::nan("");
 }
 
 } // namespace beamimpact::test

@@ -140,8 +140,8 @@ TEST(IrkSwingingBat, ObliqueCompletesAndAgrees)
   EXPECT_FALSE(r.ended_in_contact);
   EXPECT_LE(r.linear_its, 2 * r.nonlinear_its);
   EXPECT_NEAR(r.bbs, e.bbs, 1e-6 * e.bbs);
-  EXPECT_NEAR(r.exit_speed, e.exit_speed, 1e-4 * e.exit_speed);
-  EXPECT_NEAR(r.spin, e.spin, 1e-3 * std::abs(e.spin));
+  EXPECT_NEAR(test::Col(r, "exit_speed"), test::Col(e, "exit_speed"), 1e-4 * test::Col(e, "exit_speed"));
+  EXPECT_NEAR(test::Col(r, "spin"), test::Col(e, "spin"), 1e-3 * std::abs(test::Col(e, "spin")));
 }
 
 // The same impact on one rank and on all (the stage LU by MUMPS on more than one).

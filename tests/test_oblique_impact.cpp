@@ -21,6 +21,7 @@
 #include "run/reference.hpp"
 #include "run/results_table.hpp"
 #include "run/scenario.hpp"
+#include "run/stage.hpp"
 #include "solvers/flight_ts.hpp"
 
 #include "test_helpers.hpp"
@@ -28,6 +29,7 @@
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -65,8 +67,8 @@ ImpactResult RunRK4(const Scenario &sc, const char *dt = "2e-7")
 PetscReal TangentialExit(const Scenario &sc, const ImpactResult &r)
 {
   const ObliqueGeometry g  = ObliqueGeometryOf(sc.impact.offset, sc.ball.radius, RoundSectionRadiusAt(sc.beam.section, sc.impact.x));
-  const PetscReal       a  = r.launch_angle * M_PI / 180;
-  return r.exit_speed * (-std::cos(a) * g.sin_theta + std::sin(a) * g.cos_theta);
+  const PetscReal       a  = test::Col(r, "launch_angle") * M_PI / 180;
+  return test::Col(r, "exit_speed") * (-std::cos(a) * g.sin_theta + std::sin(a) * g.cos_theta);
 }
 
 } // namespace
@@ -85,16 +87,52 @@ TEST(ObliqueImpact, HeadOnIsTodaysRunBitForBit)
     if (std::isnan(va)) EXPECT_TRUE(std::isnan(vb)) << c.name;
     else EXPECT_EQ(va, vb) << c.name;
   }
-  EXPECT_TRUE(std::isnan(a.exit_speed) && std::isnan(a.launch_angle) && std::isnan(a.spin) && std::isnan(a.distance));
-  EXPECT_EQ(b.exit_speed, b.bbs);
-  EXPECT_EQ(b.launch_angle, 0.0);
-  EXPECT_EQ(b.spin, 0.0);
-  EXPECT_EQ(b.friction_dissipated, 0.0);
-  EXPECT_EQ(b.bat_vibration_tangential, 0.0); // no friction force: the second plane not driven
-  EXPECT_EQ(b.bat_damping_tangential, 0.0);
-  EXPECT_GT(b.distance, 10.0); // a line drive at 0 deg from 1 m: it falls 1 m in about 0.45 s
-  EXPECT_LT(b.distance, 25.0);
-  EXPECT_GT(b.hang_time, 0.0);
+  EXPECT_TRUE(std::isnan(test::Col(a, "exit_speed")) && std::isnan(test::Col(a, "launch_angle")) && std::isnan(test::Col(a, "spin")) && std::isnan(test::Col(a, "distance")));
+  EXPECT_EQ(test::Col(b, "exit_speed"), b.bbs);
+  EXPECT_EQ(test::Col(b, "launch_angle"), 0.0);
+  EXPECT_EQ(test::Col(b, "spin"), 0.0);
+  EXPECT_EQ(test::Col(b, "friction_dissipated"), 0.0);
+  EXPECT_EQ(test::Col(b, "bat_vibration_tangential"), 0.0); // no friction force: the second plane not driven
+  EXPECT_EQ(test::Col(b, "bat_damping_tangential"), 0.0);
+  EXPECT_GT(test::Col(b, "distance"), 10.0); // a line drive at 0 deg from 1 m: it falls 1 m in about 0.45 s
+  EXPECT_LT(test::Col(b, "distance"), 25.0);
+  EXPECT_GT(test::Col(b, "hang_time"), 0.0);
+}
+
+// The stages after the contact (run/stage.hpp) bring their columns and series: each stage's
+// columns are in the results table once, its own and keyed, NaN in a head-on run; the flight's
+// trajectory is the stage's series on its own time axis, from the launch (t = 0, the impact
+// point 1 m up: -flight_height's default) to the landing (z = 0 at hang_time).
+TEST(ObliqueImpact, StagesAfterTheContactBringTheirColumnsAndSeries)
+{
+  ASSERT_EQ(RunStages().size(), 2u);
+  EXPECT_STREQ(RunStages()[0]->Name(), "tangential");
+  EXPECT_STREQ(RunStages()[1]->Name(), "flight");
+  for (size_t k = 0; k < RunStages().size(); ++k)
+    for (const StageColumn &sc : RunStages()[k]->Columns()) {
+      const ResultColumn *c = ImpactResultColumn(sc.name);
+      ASSERT_NE(c, nullptr) << sc.name;
+      EXPECT_EQ(c->stage, (PetscInt)k) << sc.name;
+      EXPECT_GE(c->keyed, 0) << sc.name;
+      EXPECT_STREQ(c->applies_text, sc.applies_text) << sc.name;
+    }
+  Scenario flown  = R161(24, 51);
+  flown.flight.on = PETSC_TRUE;
+  flown.flight.solve.series = true;
+  const ImpactResult r = RunRK4(flown);
+  const ImpactSeries::Keyed *t = nullptr, *z = nullptr;
+  for (const ImpactSeries::Keyed &k : r.series.keyed) {
+    if (k.name == "flight_time") t = &k;
+    if (k.name == "flight_z") z = &k;
+  }
+  ASSERT_TRUE(t && z);
+  EXPECT_EQ(z->dim, "flight_time");
+  ASSERT_EQ(t->values.size(), z->values.size());
+  ASSERT_GT(t->values.size(), 2u);
+  EXPECT_EQ(t->values.front(), 0.0);
+  EXPECT_NEAR(t->values.back(), test::Col(r, "hang_time"), 1e-9);
+  EXPECT_NEAR(z->values.back(), 0.0, 1e-6);
+  EXPECT_NEAR(*std::max_element(z->values.begin(), z->values.end()), test::Col(r, "apex"), 0.05 * test::Col(r, "apex"));
 }
 
 TEST(ObliqueImpact, FrictionlessKeepsTheTangentialSpeed)
@@ -104,8 +142,8 @@ TEST(ObliqueImpact, FrictionlessKeepsTheTangentialSpeed)
   sc.ball.friction   = 0;
   const ImpactResult r = RunRK4(sc);
   const ObliqueGeometry g = ObliqueGeometryOf(0.02, sc.ball.radius, RoundSectionRadiusAt(sc.beam.section, 0.7));
-  EXPECT_EQ(r.spin, 0.0);
-  EXPECT_EQ(r.friction_dissipated, 0.0);
+  EXPECT_EQ(test::Col(r, "spin"), 0.0);
+  EXPECT_EQ(test::Col(r, "friction_dissipated"), 0.0);
   EXPECT_NEAR(TangentialExit(sc, r), sc.ball.speed * g.sin_theta, 1e-12 * sc.ball.speed);
   // The run along the normal is the head-on run at v cos theta.
   Scenario head      = R161();
@@ -114,7 +152,7 @@ TEST(ObliqueImpact, FrictionlessKeepsTheTangentialSpeed)
   EXPECT_EQ(r.acor, h.acor);
   EXPECT_EQ(r.bbs, h.bbs);
   const PetscReal u_n = h.bbs, v_t = sc.ball.speed * g.sin_theta;
-  EXPECT_NEAR(r.launch_angle, std::atan2(u_n * g.sin_theta + v_t * g.cos_theta, u_n * g.cos_theta - v_t * g.sin_theta) * 180 / M_PI, 1e-10);
+  EXPECT_NEAR(test::Col(r, "launch_angle"), std::atan2(u_n * g.sin_theta + v_t * g.cos_theta, u_n * g.cos_theta - v_t * g.sin_theta) * 180 / M_PI, 1e-10);
 }
 
 TEST(ObliqueImpact, BallAngularMomentumAboutTheContactConserved)
@@ -129,11 +167,11 @@ TEST(ObliqueImpact, BallAngularMomentumAboutTheContactConserved)
       const ImpactResult    r = RunRK4(sc);
       const ObliqueGeometry g = ObliqueGeometryOf(0.02, sc.ball.radius, RoundSectionRadiusAt(sc.beam.section, 0.7));
       const PetscReal       m = sc.ball.mass, R = sc.ball.radius, I = sc.ball.inertia_factor * m * R * R;
-      const PetscReal L0 = I * (-spin_in) + m * R * sc.ball.speed * g.sin_theta, L1 = I * r.spin + m * R * TangentialExit(sc, r);
+      const PetscReal L0 = I * (-spin_in) + m * R * sc.ball.speed * g.sin_theta, L1 = I * test::Col(r, "spin") + m * R * TangentialExit(sc, r);
       EXPECT_NEAR(L1, L0, 1e-12 * std::abs(L0) + 1e-13 * m * R * sc.ball.speed) << "e_T " << e_T << " spin " << spin_in;
-      EXPECT_GT(r.spin, 0) << "e_T " << e_T << " spin " << spin_in; // an undercut: backspin
-      EXPECT_GT(r.launch_angle, 0);
-      EXPECT_GT(r.friction_dissipated, 0);
+      EXPECT_GT(test::Col(r, "spin"), 0) << "e_T " << e_T << " spin " << spin_in; // an undercut: backspin
+      EXPECT_GT(test::Col(r, "launch_angle"), 0);
+      EXPECT_GT(test::Col(r, "friction_dissipated"), 0);
     }
   }
   // A curveball's topspin leaves with more backspin than a fastball's backspin (Sawicki et al. 2003).
@@ -141,7 +179,7 @@ TEST(ObliqueImpact, BallAngularMomentumAboutTheContactConserved)
   fast.impact.offset = 0.02, fast.ball.spin = 200;
   curve              = fast;
   curve.ball.spin    = -200;
-  EXPECT_GT(RunRK4(curve).spin, RunRK4(fast).spin);
+  EXPECT_GT(test::Col(RunRK4(curve), "spin"), test::Col(RunRK4(fast), "spin"));
 }
 
 TEST(ObliqueImpact, Refusals)
@@ -184,19 +222,19 @@ TEST(ObliqueImpact, TangentialRestitutionOnTheBat)
   Scenario           flex    = sc;
   flex.impact.tangential_rigid = PETSC_FALSE;
   const ImpactResult rolling_flex = RunRK4(flex);
-  EXPECT_NEAR(rolling_flex.spin, rolling.spin, 0.02 * std::abs(rolling.spin + 150));
-  EXPECT_TRUE(std::isnan(rolling.bat_vibration_tangential)); // the rigid plane has no vibration
+  EXPECT_NEAR(test::Col(rolling_flex, "spin"), test::Col(rolling, "spin"), 0.02 * std::abs(test::Col(rolling, "spin") + 150));
+  EXPECT_TRUE(std::isnan(test::Col(rolling, "bat_vibration_tangential"))); // the rigid plane has no vibration
   for (PetscReal e_T : {0.2, 0.5}) {
     Scenario c            = sc;
     c.ball.tangential_cor = e_T;
     const ImpactResult r  = RunRK4(c);
-    EXPECT_NEAR((r.spin + 150) / (rolling.spin + 150), 1 + e_T, 2e-3) << "e_T " << e_T;
+    EXPECT_NEAR((test::Col(r, "spin") + 150) / (test::Col(rolling, "spin") + 150), 1 + e_T, 2e-3) << "e_T " << e_T;
     c.impact.tangential_rigid = PETSC_FALSE;
     const ImpactResult f      = RunRK4(c);
-    const PetscReal    ratio  = (f.spin + 150) / (rolling.spin + 150);
+    const PetscReal    ratio  = (test::Col(f, "spin") + 150) / (test::Col(rolling, "spin") + 150);
     EXPECT_LT(ratio, 1 + e_T - 5e-3) << "e_T " << e_T;
     EXPECT_GT(ratio, 1 + e_T - 0.05) << "e_T " << e_T;
-    EXPECT_GT(f.bat_vibration_tangential, 0) << "e_T " << e_T;
+    EXPECT_GT(test::Col(f, "bat_vibration_tangential"), 0) << "e_T " << e_T;
   }
 }
 
@@ -220,15 +258,15 @@ TEST(ObliqueImpact, ModalReferenceCarriesTheSecondPlane)
   ReferenceSolution ref;
   ASSERT_EQ(0, modal->run(PETSC_COMM_WORLD, sc, ReferenceSettings(), &ref));
   const ImpactResult &e = ref.result;
-  ASSERT_TRUE(std::isfinite(e.spin) && std::isfinite(e.bat_vibration_tangential));
-  EXPECT_GT(e.spin, 150); // an undercut adds backspin
+  ASSERT_TRUE(std::isfinite(test::Col(e, "spin")) && std::isfinite(test::Col(e, "bat_vibration_tangential")));
+  EXPECT_GT(test::Col(e, "spin"), 150); // an undercut adds backspin
   for (const char *dt : {"4e-7", "2e-7"}) {
     const ImpactResult r = RunRK4(sc, dt);
     EXPECT_NEAR(r.bbs, e.bbs, 1e-9 * e.bbs) << dt;
-    EXPECT_NEAR(r.spin, e.spin, 1e-12 * e.spin) << "rk4 at " << dt << " s against the reference";
-    EXPECT_NEAR(r.launch_angle, e.launch_angle, 1e-10) << dt;
-    EXPECT_NEAR(r.exit_speed, e.exit_speed, 1e-10 * e.exit_speed) << dt;
-    EXPECT_NEAR(r.bat_vibration_tangential, e.bat_vibration_tangential, 1e-9 * e.bat_vibration_tangential) << dt;
+    EXPECT_NEAR(test::Col(r, "spin"), test::Col(e, "spin"), 1e-12 * test::Col(e, "spin")) << "rk4 at " << dt << " s against the reference";
+    EXPECT_NEAR(test::Col(r, "launch_angle"), test::Col(e, "launch_angle"), 1e-10) << dt;
+    EXPECT_NEAR(test::Col(r, "exit_speed"), test::Col(e, "exit_speed"), 1e-10 * test::Col(e, "exit_speed")) << dt;
+    EXPECT_NEAR(test::Col(r, "bat_vibration_tangential"), test::Col(e, "bat_vibration_tangential"), 1e-9 * test::Col(e, "bat_vibration_tangential")) << dt;
   }
 }
 
@@ -248,8 +286,8 @@ TEST(ObliqueImpact, SpinConvergesAtTheIntegratorsOrder)
   sc.ball.tangential_cor = 0.3;
   ReferenceSolution ref;
   ASSERT_EQ(0, ReferenceMethodFind("modal")->run(PETSC_COMM_WORLD, sc, ReferenceSettings(), &ref));
-  const PetscReal s = ref.result.spin;
-  const PetscReal e1 = RunRK4(sc, "1.2e-5").spin - s, e2 = RunRK4(sc, "6e-6").spin - s;
+  const PetscReal s = test::Col(ref.result, "spin");
+  const PetscReal e1 = test::Col(RunRK4(sc, "1.2e-5"), "spin") - s, e2 = test::Col(RunRK4(sc, "6e-6"), "spin") - s;
   EXPECT_GT(std::abs(e1 / e2), 10) << "rk4, order 4: " << e1 << " then " << e2;
   EXPECT_LT(std::abs(e1 / e2), 24) << "rk4, order 4: " << e1 << " then " << e2;
   auto cn = [&](const char *dt) {
@@ -258,7 +296,7 @@ TEST(ObliqueImpact, SpinConvergesAtTheIntegratorsOrder)
     ImpactResult r;
     EXPECT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &r));
     for (auto &kv : o) EXPECT_EQ(0, PetscOptionsClearValue(NULL, kv.first.c_str()));
-    return r.spin - s;
+    return test::Col(r, "spin") - s;
   };
   const PetscReal c1 = cn("2.4e-5"), c2 = cn("1.2e-5");
   EXPECT_GT(std::abs(c1 / c2), 3.3) << "cn, order 2: " << c1 << " then " << c2;
@@ -300,13 +338,13 @@ TEST(ObliqueImpact, FlightFliesTheImpactsBall)
   ASSERT_EQ(0, PetscOptionsSetValue(NULL, "-ts_type", "modal"));
   ASSERT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &r));
   ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-ts_type"));
-  ASSERT_GT(r.exit_speed, 5.0);
+  ASSERT_GT(test::Col(r, "exit_speed"), 5.0);
   const auto fly = [&](const FlightBall &ball) {
     FlightParams p         = sc.flight.params;
     p.ball                 = ball;
-    p.launch.speed         = r.exit_speed;
-    p.launch.angle         = r.launch_angle;
-    p.launch.backspin      = r.spin;
+    p.launch.speed         = test::Col(r, "exit_speed");
+    p.launch.angle         = test::Col(r, "launch_angle");
+    p.launch.backspin      = test::Col(r, "spin");
     PetscReal    u[6];
     FlightResult f;
     FlightInitialState(p.launch, u);
@@ -314,7 +352,7 @@ TEST(ObliqueImpact, FlightFliesTheImpactsBall)
     return f.landing.distance;
   };
   const PetscReal tennis = fly(FlightBall{0.057, 0.0335}), baseball = fly(FlightBall());
-  EXPECT_NEAR(r.distance, tennis, 1e-9 * tennis);
+  EXPECT_NEAR(test::Col(r, "distance"), tennis, 1e-9 * tennis);
   EXPECT_GT(std::abs(baseball - tennis), 1e-3 * tennis); // the test tells the two balls apart
 }
 
@@ -345,10 +383,10 @@ TEST(ObliqueImpact, FreeFlightNotSampledForTheNormalForceAlone)
   ASSERT_EQ(0, PetscOptionsClearValue(NULL, "-ts_type"));
   EXPECT_LE(s1 - s0, 1) << "the free flight sampled the state for an F_n series nobody keeps";
   EXPECT_GT(s2 - s1, 100) << "-monitor_ball: the free flight's series (a sample a step)";
-  EXPECT_GT(sparse.friction_dissipated, 0);
-  EXPECT_GT(sparse.bat_vibration_tangential, 0);
+  EXPECT_GT(test::Col(sparse, "friction_dissipated"), 0);
+  EXPECT_GT(test::Col(sparse, "bat_vibration_tangential"), 0);
   EXPECT_EQ(sparse.bbs, sampled.bbs);
   EXPECT_EQ(sparse.acor, sampled.acor);
-  for (auto c : {&ImpactResult::exit_speed, &ImpactResult::launch_angle, &ImpactResult::spin, &ImpactResult::friction_dissipated, &ImpactResult::bat_vibration_tangential, &ImpactResult::distance})
-    EXPECT_NEAR(sparse.*c, sampled.*c, 1e-11 * std::abs(sampled.*c));
+  for (const char *c : {"exit_speed", "launch_angle", "spin", "friction_dissipated", "bat_vibration_tangential", "distance"})
+    EXPECT_NEAR(test::Col(sparse, c), test::Col(sampled, c), 1e-11 * std::abs(test::Col(sampled, c))) << c;
 }

@@ -92,23 +92,23 @@ std::vector<PetscReal> Omega2(const BeamSystem &S)
 
 // The paper's beam, free-free, held by the hands over [0, 0.15] m, Rayleigh-damped, and a swing's
 // frame (a rigid motion) for it.
-BeamParams GrippedDamped()
+BeamGrip Hands()
+{
+  BeamGrip g;
+  g.on = true, g.x_a = 0.0, g.x_b = 0.15, g.stiffness = 1e5, g.damping = 100, g.mass = 0.2;
+  return g;
+}
+BeamParams GrippedDamped(const BeamGrip &g = Hands())
 {
   BeamParams p        = AluminiumBeam(1.1, 23);
-  p.grip.on           = true;
-  p.grip.x_a          = 0.0;
-  p.grip.x_b          = 0.15;
-  p.grip.stiffness    = 1e5;
-  p.grip.damping      = 100;
-  p.grip.mass         = 0.2;
   p.damping_mass      = 3.0;
   p.damping_stiffness = 2e-6;
-  return p;
+  return WithGrip(p, g);
 }
-// The share of node i in the grip: |[x_i - h/2, x_i + h/2] n [x_a, x_b] n [0, L]| (m).
-PetscReal GripShare(const BeamParams &p, const BeamSystem &S, PetscInt i)
+// The share of node i in the grip g: |[x_i - h/2, x_i + h/2] n [x_a, x_b] n [0, L]| (m).
+PetscReal GripShare(const BeamGrip &g, const BeamSystem &S, PetscInt i)
 {
-  const PetscReal a = std::max({0.0, (i - 0.5) * S.h, p.grip.x_a}), b = std::min({p.length, (i + 0.5) * S.h, p.grip.x_b});
+  const PetscReal a = std::max({0.0, (i - 0.5) * S.h, g.x_a}), b = std::min({S.L, (i + 0.5) * S.h, g.x_b});
   return std::max(0.0, b - a);
 }
 FrameMotion Swing(const BeamSystem &S)
@@ -223,30 +223,31 @@ TEST(System, TimoshenkoRows)
 // m_hand w_i / (x_b - x_a); nothing else changes.
 TEST(System, GripSpringsDampersAndHandsOnTheDiagonal)
 {
-  BeamParams p        = GrippedDamped();
+  BeamGrip g          = Hands();
+  g.x_a               = 0.03; // not on a node: shares of partial cells
+  g.x_b               = 0.17;
+  BeamParams p        = GrippedDamped(g);
   p.damping_mass      = 0;
   p.damping_stiffness = 0;
-  p.grip.x_a          = 0.03; // not on a node: shares of partial cells
-  p.grip.x_b          = 0.17;
-  BeamParams free_p   = p;
-  free_p.grip         = BeamGrip();
+  BeamParams free_p   = WithoutGrip(p);
   const BeamSystem G = SystemOf(p), F = SystemOf(free_p);
-  ASSERT_TRUE(G.Gripped());
+  ASSERT_TRUE(G.TiedToFrame());
+  ASSERT_FALSE(F.TiedToFrame());
   ASSERT_TRUE(G.Damped());
   ASSERT_FALSE(F.Damped());
   const std::vector<PetscReal> KG = Dense(G, false), KF = Dense(F, false), CG = Dense(G, true);
   PetscReal                    span = 0;
   for (PetscInt i = 0; i < G.nodes; ++i) {
-    const PetscReal wi = GripShare(p, G, i);
+    const PetscReal wi = GripShare(g, G, i);
     span += wi;
     for (PetscInt j = 0; j < G.ndof; ++j) {
       const size_t ij = (size_t)i * G.ndof + j;
-      EXPECT_NEAR(KG[ij] - KF[ij], i == j ? p.grip.stiffness * wi : 0.0, 1e-12 * std::abs(KF[(size_t)i * G.ndof + i])) << i << "," << j;
-      EXPECT_NEAR(CG[ij], i == j ? p.grip.damping * wi : 0.0, 1e-12 * p.grip.damping * G.h) << i << "," << j;
+      EXPECT_NEAR(KG[ij] - KF[ij], i == j ? g.stiffness * wi : 0.0, 1e-12 * std::abs(KF[(size_t)i * G.ndof + i])) << i << "," << j;
+      EXPECT_NEAR(CG[ij], i == j ? g.damping * wi : 0.0, 1e-12 * g.damping * G.h) << i << "," << j;
     }
-    EXPECT_NEAR(G.mass[i] - F.mass[i], p.grip.mass * wi / (p.grip.x_b - p.grip.x_a), 1e-15) << "node " << i;
+    EXPECT_NEAR(G.mass[i] - F.mass[i], g.mass * wi / (g.x_b - g.x_a), 1e-15) << "node " << i;
   }
-  EXPECT_NEAR(span, p.grip.x_b - p.grip.x_a, 1e-15);
+  EXPECT_NEAR(span, g.x_b - g.x_a, 1e-15);
 }
 
 // C = alpha M + beta K: its rows, its action on random vectors (with and without a frame at
@@ -292,6 +293,7 @@ TEST(System, RayleighDampingIsAlphaMPlusBetaK)
 // damped beam with a moving frame, over a partition of the dofs (as ranks), at two times.
 TEST(ForceOperator, ForceIsAffineWithItsJacobians)
 {
+  const BeamGrip g = Hands();
   const BeamParams             p     = GrippedDamped();
   const BeamSystem             S     = SystemOf(p);
   const FrameMotion            frame = Swing(S);
@@ -309,7 +311,7 @@ TEST(ForceOperator, ForceIsAffineWithItsJacobians)
     for (PetscInt i = 0; i < S.ndof; ++i) scale = std::max(scale, std::abs(ky[i]) + std::abs(cv[i]));
     for (PetscInt i = 0; i < S.ndof; ++i) {
       // the drive by its formula: -k_i v_f,i t - c_i v_f,i on the gripped nodes
-      const PetscReal k_i = p.grip.stiffness * GripShare(p, S, i), c_i = p.grip.damping * GripShare(p, S, i);
+      const PetscReal k_i = g.stiffness * GripShare(g, S, i), c_i = g.damping * GripShare(g, S, i);
       EXPECT_NEAR(-k_i * frame.v[i] * t - c_i * frame.v[i], drive[i], 1e-14 * (std::abs(k_i * frame.v[i] * t) + std::abs(c_i * frame.v[i]))) << "dof " << i;
       EXPECT_NEAR(ky[i] + cv[i] + drive[i], f[i], 1e-12 * scale) << "t " << t << " dof " << i;
     }
@@ -321,10 +323,11 @@ TEST(ForceOperator, ForceIsAffineWithItsJacobians)
 // force C (v - v_ref) whose product with v gives it.
 TEST(ForceOperator, DissipationRateIsRelativeToTheFrame)
 {
+  const BeamGrip g = Hands();
   BeamParams       p = GrippedDamped();
   const BeamSystem S = SystemOf(p);
   BeamParams       q = p;
-  q.grip           = BeamGrip();
+  q                = WithoutGrip(q);
   q.damping_mass   = 0;
   q.damping_stiffness = 0;
   const BeamSystem             F     = SystemOf(q); // K of the beam alone
@@ -333,7 +336,7 @@ TEST(ForceOperator, DissipationRateIsRelativeToTheFrame)
   const std::vector<PetscReal> v = Random(S, 8, 1.0), kv = MatVec(K, v);
   PetscReal                    expect = 0, cv_expect = 0;
   for (PetscInt i = 0; i < S.ndof; ++i) {
-    const PetscReal c_i = p.grip.damping * GripShare(p, S, i); // the grip's damper
+    const PetscReal c_i = g.damping * GripShare(g, S, i); // the grip's damper
     const PetscReal u   = v[i] - frame.v[i];
     expect += p.damping_mass * S.mass[i] * v[i] * v[i] + p.damping_stiffness * v[i] * kv[i] + c_i * u * u;
     cv_expect += v[i] * (p.damping_mass * S.mass[i] * v[i] + p.damping_stiffness * kv[i] + c_i * u);
@@ -360,6 +363,7 @@ TEST(ForceOperator, DissipationRateIsRelativeToTheFrame)
 // moment are the grip's k_i (y_i - v_f,i t) + c_i (v_i - v_f,i) and their moment about x = 0.
 TEST(ForceOperator, HandsWorkIsTheFramesMomentumTerm)
 {
+  const BeamGrip g = Hands();
   const BeamParams             p     = GrippedDamped();
   const BeamSystem             S     = SystemOf(p);
   const FrameMotion            frame = Swing(S);
@@ -381,7 +385,7 @@ TEST(ForceOperator, HandsWorkIsTheFramesMomentumTerm)
   PetscReal force = 0, moment = 0, F = 0, Mx = 0;
   ForceOperatorFrameReaction(S, s, 0, S.ndof, &force, &moment);
   for (PetscInt i = 0; i < S.ndof; ++i) {
-    const PetscReal fi = p.grip.stiffness * GripShare(p, S, i) * (y[i] - frame.v[i] * s.t) + p.grip.damping * GripShare(p, S, i) * (v[i] - frame.v[i]);
+    const PetscReal fi = g.stiffness * GripShare(g, S, i) * (y[i] - frame.v[i] * s.t) + g.damping * GripShare(g, S, i) * (v[i] - frame.v[i]);
     F += fi;
     Mx += S.NodeX(i) * fi;
   }

@@ -16,6 +16,7 @@
 #include "run/impact_point.hpp"
 #include "run/outcome.hpp"
 #include "run/reference.hpp"
+#include "run/stage.hpp"
 #include "solvers/beam_modes.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/petsc_options.hpp"
@@ -108,37 +109,18 @@ static std::string ImpactSummaryLine(const ImpactResult &r)
 
 namespace {
 
-// The oblique impact's lines of the summary (run/oblique.hpp): a bat's, or a string bed's.
-PetscErrorCode ObliqueSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
+// The lines of the stages after the contact that apply (run/stage.hpp: an oblique impact's, the
+// flight's), from their columns.
+PetscErrorCode StageSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
-  if (ImpactOnBed(sc.beam, sc.impact.x, sc.impact.z)) {
-    PetscCall(PetscPrintf(comm,
-                          "oblique on the strings: %g deg from the normal; the ball leaves at %.4f m/s, %.3f deg from "
-                          "the normal (> 0 toward +z), spin %.2f rad/s (%.0f rpm); friction dissipated %.4e J\n",
-                          (double)sc.impact.angle, (double)r.exit_speed, Shown(r.launch_angle, 3), Shown(r.spin, 2),
-                          Shown(r.spin_rpm, 0), (double)r.friction_dissipated));
-    if (ResultObliqueBed(sc) && r.strings_inplane_energy_peak > 0)
-      PetscCall(PetscPrintf(comm,
-                            "oblique on the strings: the mains slid %.4e m on the frame, held %.4e J at most and "
-                            "gave %.4e J back (snapback), %.4e J left in their vibration\n",
-                            (double)r.strings_slide_peak, (double)r.strings_inplane_energy_peak,
-                            (double)r.strings_inplane_energy_returned, (double)r.bat_vibration_tangential));
-  } else {
-    PetscCall(PetscPrintf(comm,
-                          "oblique: offset %g m, batted ball %.4f m/s at %.3f deg, spin %.2f rad/s (%.0f rpm, > 0 "
-                          "backspin); friction dissipated %.4e J (along the line of centres: acor and bbs above)\n",
-                          (double)sc.impact.offset, (double)r.exit_speed, Shown(r.launch_angle, 3), Shown(r.spin, 2),
-                          Shown(r.spin_rpm, 0), (double)r.friction_dissipated));
-    if (r.bat_vibration_tangential > 0)
-      PetscCall(PetscPrintf(comm,
-                            "oblique: the bat's vibration in its second plane took %.4e J (-impact_tangential_plane "
-                            "flexible)\n",
-                            (double)r.bat_vibration_tangential));
+  for (const RunStage *stage : RunStages()) {
+    if (!stage->Applies(sc)) continue;
+    std::vector<double> values;
+    for (const StageColumn &c : stage->Columns()) values.push_back(ImpactResultColumn(c.name)->Get(r));
+    for (const char *name : stage->SummaryColumns()) values.push_back(ImpactResultColumn(name)->Get(r));
+    PetscCall(PetscPrintf(comm, "%s", stage->Summary(sc, values).c_str()));
   }
-  if (sc.flight.on)
-    PetscCall(PetscPrintf(comm, "flight: distance %.2f m (%.1f ft), apex %.2f m, hang time %.2f s\n",
-                          (double)r.distance, (double)(r.distance / 0.3048), (double)r.apex, (double)r.hang_time));
   PetscFunctionReturn(0);
 }
 
@@ -181,19 +163,13 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                           "efficiency q %.6f; bat after: V_cm %.4f m/s, Omega %.4f rad/s\n",
                           (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs,
                           (double)r.collision_efficiency, (double)r.bat_speed_end, (double)r.bat_angular_velocity_end));
-  if (ObliqueImpact(sc)) PetscCall(ObliqueSummary(comm, sc, r));
+  PetscCall(StageSummary(comm, sc, r));
   if (sc.beam.strings.On())
     PetscCall(PetscPrintf(comm,
                           "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its "
                           "energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
                           (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak,
                           (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
-  if (sc.beam.grip.on)
-    PetscCall(PetscPrintf(comm,
-                          "hands on %g-%g m: peak force on the hands %.4e N at %.4e s; grip energy stored at the end "
-                          "%.4e J; work done by the hands %.4e J\n",
-                          (double)sc.beam.grip.x_a, (double)sc.beam.grip.x_b, (double)r.grip_force_peak,
-                          (double)r.grip_force_peak_time, (double)r.grip_stored_end, (double)r.hand_work_end));
   if (ResultFreePivot(sc)) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
     PetscCall(

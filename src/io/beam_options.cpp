@@ -78,29 +78,6 @@ const OptionModule &BeamOptionTable()
                  "Rayleigh damping alpha: C = alpha M + beta K, zeta = alpha/(2 omega) + beta omega/2", "0",
                  NonNegative()),
       OptionReal("-beam_damping_stiffness", "s", "Rayleigh damping beta", "0", NonNegative()),
-      OptionList("-grip", "m",
-                 "The hands: grip x_a,x_b, a spring-damper per metre of handle tying it to the swing's rigid frame (a "
-                 "free beam)",
-                 2, 2, NonNegative()),
-      OptionNeeds(OptionReal("-grip_stiffness", "N/m^2",
-                             "Grip stiffness k' per metre of handle: force -k' (y - v_f t) per metre", "0",
-                             NonNegative()),
-                  {"-grip"}),
-      OptionNeeds(OptionReal("-grip_damping", "N s/m^2",
-                             "Grip damping c' per metre of handle: force -c' (v - v_f) per metre", "0", NonNegative()),
-                  {"-grip"}),
-      OptionNeeds(OptionReal("-grip_mass", "kg", "Mass of the hands, spread over the grip's translational dofs", "0",
-                             NonNegative()),
-                  {"-grip"}),
-      OptionNeeds(OptionReal("-grip_torsion_stiffness", "N m/rad/m",
-                             "The hands' hold on the frame's roll (-beam_torsion): torque -k'_phi phi per metre of "
-                             "handle",
-                             "0", NonNegative()),
-                  {"-grip"}),
-      OptionNeeds(OptionReal("-grip_torsion_damping", "N m s/rad/m",
-                             "The hands' damping of the frame's roll: torque -c'_phi phi_t per metre of handle", "0",
-                             NonNegative()),
-                  {"-grip"}),
       OptionNeeds(OptionReal("-barrel_wall_thickness", "m",
                              "The barrel's wall thickness t: the profile's rows at its largest outer diameter D (the "
                              "barrel) get the inner diameter D - 2 t instead of the file's (the taper follows "
@@ -146,8 +123,8 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
 {
   const OptionModule    &T    = BeamOptionTable();
   std::string            left = p->left.Name(), right = p->right.Name();
-  std::vector<PetscReal> clamp, grip;
-  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE, setgrip = PETSC_FALSE;
+  std::vector<PetscReal> clamp;
+  PetscBool              setclamp = PETSC_FALSE, setpivot = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, T.title.c_str(), "beamimpact");
@@ -173,12 +150,6 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
   PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_pivot", &p->pivot_x, &setpivot));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_damping_mass", &p->damping_mass, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-beam_damping_stiffness", &p->damping_stiffness, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip", &grip, &setgrip));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_stiffness", &p->grip.stiffness, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_damping", &p->grip.damping, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_mass", &p->grip.mass, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_torsion_stiffness", &p->grip.torsion_stiffness, NULL));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-grip_torsion_damping", &p->grip.torsion_damping, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-barrel_wall_thickness", &o->wall, &o->setwall));
   PetscOptionsEnd();
 
@@ -186,11 +157,6 @@ PetscErrorCode BeamOptionsRead(MPI_Comm comm, BeamParams *p, BeamOptionValues *o
              "a support the table allows is not registered");
   p->theory    = o->theory;
   p->has_pivot = setpivot;
-  if (setgrip) { // two values: the row's count
-    p->grip.on  = true;
-    p->grip.x_a = grip[0];
-    p->grip.x_b = grip[1];
-  }
   if (setclamp) {
     p->has_clamp = true;
     p->clamp_x0  = clamp[0];
@@ -475,8 +441,6 @@ PetscErrorCode TimoshenkoCheck(MPI_Comm comm, const BeamOptionValues &o, const B
   PetscFunctionReturn(0);
 }
 
-bool HoldsAnything(NodeHold h) { return h != NodeHold::None; }
-
 // "a clamped end (-beam_left clamped)": the first end whose support holds what `holds` tests;
 // "" when neither does.
 std::string HeldEnd(const BeamParams &p, bool (*holds)(NodeHold))
@@ -510,38 +474,6 @@ PetscErrorCode PivotCheck(MPI_Comm comm, const BeamParams &p)
   PetscCheck(k > 0 && k < p.nodes - 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-beam_pivot %g falls on an end node of the grid (h = %g m): move it inward or use more -beam_nodes",
              (double)p.pivot_x, (double)(p.length / (p.nodes - 1)));
-  PetscFunctionReturn(0);
-}
-
-// -grip and its stiffnesses: an interval of a free bat, non-negative numbers.
-PetscErrorCode GripCheck(MPI_Comm comm, const BeamParams &p)
-{
-  PetscFunctionBeginUser;
-  const BeamGrip &g = p.grip;
-  PetscCheck(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = "
-             "%g (m)",
-             (double)g.x_a, (double)g.x_b, (double)p.length);
-  PetscCheck(g.stiffness >= 0 && std::isfinite(g.stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-grip_stiffness %g is not allowed: it must be >= 0 (N/m^2)", (double)g.stiffness);
-  PetscCheck(g.damping >= 0 && std::isfinite(g.damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-grip_damping %g is not allowed: it must be >= 0 (N s/m^2)", (double)g.damping);
-  PetscCheck(g.mass >= 0 && std::isfinite(g.mass), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-grip_mass %g is not allowed: it must be >= 0 (kg)", (double)g.mass);
-  PetscCheck(g.torsion_stiffness >= 0 && std::isfinite(g.torsion_stiffness), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-grip_torsion_stiffness %g is not allowed: it must be >= 0 (N m/rad per m)", (double)g.torsion_stiffness);
-  PetscCheck(g.torsion_damping >= 0 && std::isfinite(g.torsion_damping), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-grip_torsion_damping %g is not allowed: it must be >= 0 (N m s/rad per m)", (double)g.torsion_damping);
-  const std::string end = HeldEnd(p, HoldsAnything);
-  PetscCheck(end.empty(), comm, PETSC_ERR_ARG_INCOMP, "-grip %g,%g with %s is not allowed: the hands hold a free bat",
-             (double)g.x_a, (double)g.x_b, end.c_str());
-  PetscCheck(!p.has_clamp, comm, PETSC_ERR_ARG_INCOMP,
-             "-grip %g,%g with a clamped region (-beam_clamp %g,%g) is not allowed: the hands hold a free bat",
-             (double)g.x_a, (double)g.x_b, (double)p.clamp_x0, (double)p.clamp_x1);
-  PetscCheck(!p.has_pivot, comm, PETSC_ERR_ARG_INCOMP,
-             "-grip %g,%g with a pivot (-beam_pivot %g) is not allowed: the hands hold a free bat (the pivot is the "
-             "certification rig's)",
-             (double)g.x_a, (double)g.x_b, (double)p.pivot_x);
   PetscFunctionReturn(0);
 }
 
@@ -581,25 +513,16 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: %s",
              p.theory.c_str(), BeamOptionTable().Find("-beam_theory")->Allowed().c_str());
   if (p.has_pivot) PetscCall(PivotCheck(comm, p));
-  if (p.grip.on) PetscCall(GripCheck(comm, p));
   if (p.has_clamp && !p.strings.Held())
     PetscCall(ClampCheck(comm, p)); // a held string bed's frame is clamped everywhere
   PetscFunctionReturn(0);
 }
 
 // What needs the frame's roll (a part that rolls, PartParams::Rolls: -beam_torsion), checked once
-// the parts are read: the hands' hold on it, a string bed on the frame.
+// the parts are read: a string bed on the frame (the hands' hold on it: the grip part's RefusalWith).
 PetscErrorCode RollNeedsCheck(MPI_Comm comm, const BeamParams &p)
 {
-  const BeamGrip &g = p.grip;
-
   PetscFunctionBeginUser;
-  PetscCheck(!g.on || p.parts.Rolls() || (g.torsion_stiffness == 0 && g.torsion_damping == 0), comm,
-             PETSC_ERR_ARG_INCOMP,
-             "%s %g without -beam_torsion is not allowed: the hands hold the frame's roll, which only -beam_torsion "
-             "gives it",
-             g.torsion_stiffness != 0 ? "-grip_torsion_stiffness" : "-grip_torsion_damping",
-             (double)(g.torsion_stiffness != 0 ? g.torsion_stiffness : g.torsion_damping));
   PetscCheck(!p.strings.On() || p.strings.Held() || p.parts.Rolls(), comm, PETSC_ERR_ARG_WRONG,
              "-strings_frame beam needs the frame's roll: give -beam_torsion (with its G J and rho J) so that the head "
              "can roll under an off-centre hit");
@@ -630,9 +553,8 @@ PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, 
     RacketMakerHead(*racket, &s);
   }
   if (s.Held()) {
-    PetscCheck(!p->grip.on && !p->has_pivot, comm, PETSC_ERR_ARG_INCOMP,
-               "-strings_frame held holds the whole frame: %s has nothing to hold",
-               p->grip.on ? "-grip" : "-beam_pivot");
+    PetscCheck(!p->has_pivot, comm, PETSC_ERR_ARG_INCOMP,
+               "-strings_frame held holds the whole frame: -beam_pivot has nothing to hold"); // -grip: its part
     p->length    = s.head_length; // the frame: the head's length on the bed's columns, held everywhere
     p->nodes     = s.nodes;
     p->has_clamp = true;
@@ -702,6 +624,8 @@ PetscErrorCode StructurePartsFromOptions(MPI_Comm comm, BeamParams *p)
     const std::string note = q ? part->Note(*q, *p) : ""; // beyond the part's range: say so, once
     if (!note.empty()) PetscCall(PrintOnce(comm, ("note: " + note + "\n").c_str()));
   }
+  const std::string why = StructurePartsRefusalWith(*p); // the checks of one part against another
+  PetscCheck(why.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", why.c_str());
   PetscFunctionReturn(0);
 }
 

@@ -350,7 +350,9 @@ static PetscErrorCode H5WriteModeEnergies(hid_t file, const ImpactResult &r)
 static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
 {
   PetscFunctionBeginUser;
-  if (S.time.empty() && S.flight_time.empty()) PetscFunctionReturn(0);
+  bool any = !S.time.empty(); // a flight's series may come without the steps'
+  for (const ImpactSeries::Keyed &k : S.keyed) any = any || !k.values.empty();
+  if (!any) PetscFunctionReturn(0);
   hid_t gs  = H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   auto  opt = [&](const char *name, const std::vector<double> &v, const char *unit) -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -358,14 +360,6 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
     PetscFunctionReturn(0);
   };
   PetscCall(opt("time", S.time, "s"));
-  // -flight: the batted ball's trajectory, on its own time axis from the launch
-  PetscCall(opt("flight_time", S.flight_time, "s"));
-  PetscCall(opt("flight_x", S.flight_x, "m, across the field"));
-  PetscCall(opt("flight_y", S.flight_y, "m, down the field"));
-  PetscCall(opt("flight_z", S.flight_z, "m, height above the ground"));
-  PetscCall(opt("flight_spin", S.flight_spin, "rad/s"));
-  for (const char *f : {"flight_x", "flight_y", "flight_z", "flight_spin"})
-    if (H5Lexists(gs, f, H5P_DEFAULT) > 0) PetscCall(H5DimsAttach(gs, f, {"flight_time"}));
   PetscCall(opt("ball_y", S.ball_y, "m"));
   PetscCall(opt("ball_v", S.ball_v, "m/s"));
   PetscCall(opt("compression", S.compression, "m"));
@@ -386,11 +380,10 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
     PetscCall(H5DimsAttach(gs, "velocity_at", {"velocity_at_x", "time"}));
   }
   PetscCall(opt("segment_kinetic", S.segment_kinetic, "J"));
-  PetscCall(opt("grip_force", S.grip_force, "N"));
-  PetscCall(opt("grip_moment", S.grip_moment, "N m"));
-  PetscCall(opt("grip_stored", S.grip_stored, "J"));
-  PetscCall(opt("hand_work", S.hand_work, "J"));
-  for (const ImpactSeries::Keyed &k : S.keyed) PetscCall(opt(k.name.c_str(), k.values, k.unit.c_str())); // parts'
+  for (const ImpactSeries::Keyed &k : S.keyed) { // the parts' and the stages' (a flight's on its own time axis)
+    PetscCall(opt(k.name.c_str(), k.values, k.unit.c_str()));
+    if (!k.dim.empty() && !k.values.empty()) PetscCall(H5DimsAttach(gs, k.name.c_str(), {k.dim.c_str()}));
+  }
   PetscCall(H5DimsTable(gs, "time"));
   H5Gclose(gs);
   PetscFunctionReturn(0);

@@ -36,7 +36,8 @@ struct BeamMaterialInput {
 
 // The hands (-grip x_a,x_b): a spring-damper per unit length over [x_a, x_b] tying the handle's
 // deflection to the swing's rigid frame, and an optional hand mass spread over the same span
-// (model/grip.hpp: the per-dof weights; system/beam_system.hpp: where it enters).
+// (GripNodeWeights: the per-dof weights; the hands' structure part in system/parts/: where it
+// enters, held in BeamParams::parts).
 struct BeamGrip {
   bool      on  = false;
   PetscReal x_a = 0, x_b = 0;      // m
@@ -123,7 +124,6 @@ struct BeamParams {
   std::string       theory            = "euler"; // beam theory (model/beam_theory.hpp registry)
   PetscReal         damping_mass      = 0;       // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
   PetscReal         damping_stiffness = 0;       // s,   beta
-  BeamGrip          grip;                        // the hands on the handle (none by default)
   StringBedParams   strings;                     // a racket's string bed on the frame (-strings_frame; none by default)
   PartParamSet      parts;                       // the registered structure parts present (none by default)
   BeamMaterialInput input;

@@ -74,9 +74,10 @@ struct MonitorRequest {
   PetscBool              segment    = PETSC_FALSE; // kinetic energy of the beam segment [segment_x0, segment_x1]
   PetscReal              segment_x0 = 0, segment_x1 = 0; // m
   PetscReal              segment_until = -1; // s, the segment's peak is taken over t <= this (< 0: whole run)
-  PetscBool
-       grip = PETSC_FALSE; // the force of the bat on the hands and its moment, the grip's energies per step (-grip)
-  bool any() const { return ball || energy || !velocity_at.empty() || segment || grip; }
+  // A structure part present had its own monitor row given (StructurePart::Monitors: the hands'):
+  // its series per step.
+  bool parts = false;
+  bool any() const { return ball || energy || !velocity_at.empty() || segment || parts; }
 };
 
 // Per-step time series (rank 0 holds them; only the requested ones are filled).
@@ -93,16 +94,13 @@ struct ImpactSeries {
   std::vector<PetscReal> shell_energy; // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
   std::vector<PetscReal> bed_energy,
     twist_energy; // J, the string bed's (-strings_frame) and the frame's roll (-beam_torsion), in beam_*
-  std::vector<PetscReal>              velocity_at_x;                      // m, the points of velocity_at
-  std::vector<std::vector<PetscReal>> velocity_at;                        // m/s, [point][step]
-  std::vector<PetscReal>              segment_kinetic;                    // J, kinetic energy of the monitored segment
-  std::vector<PetscReal> grip_force, grip_moment, grip_stored, hand_work; // N, N m about x = 0, J, J (-monitor_grip)
-  // -flight: the batted ball's trajectory (s; m, the flight's frame: y down the field, z up; rad/s)
-  std::vector<PetscReal>              flight_time, flight_x, flight_y, flight_z, flight_spin;
-  std::vector<PetscReal>              snapshot_time; // s
-  std::vector<std::vector<PetscReal>> snapshot_y;    // m, [snapshot][node]
-  std::vector<std::vector<PetscReal>> snapshot_bed;  // m, a string bed's deflection from its frame, w - y - z phi,
-                                                     // [snapshot][z * nodes + x] (NaN off the bed; rank 0)
+  std::vector<PetscReal>              velocity_at_x;   // m, the points of velocity_at
+  std::vector<std::vector<PetscReal>> velocity_at;     // m/s, [point][step]
+  std::vector<PetscReal>              segment_kinetic; // J, kinetic energy of the monitored segment
+  std::vector<PetscReal>              snapshot_time;   // s
+  std::vector<std::vector<PetscReal>> snapshot_y;      // m, [snapshot][node]
+  std::vector<std::vector<PetscReal>> snapshot_bed;    // m, a string bed's deflection from its frame, w - y - z phi,
+                                                       // [snapshot][z * nodes + x] (NaN off the bed; rank 0)
   // m, the barrel wall's radial displacement W_n(x) of each harmonic (-beam_shell; model/shell.hpp),
   // [snapshot][k * nodes + node] for the harmonic n = snapshot_wall_n[k] (NaN where the section is solid; rank 0)
   std::vector<std::vector<PetscReal>> snapshot_wall;
@@ -112,6 +110,7 @@ struct ImpactSeries {
   struct Keyed {
     std::string            name, unit;
     std::vector<PetscReal> values;
+    std::string            dim; // the series it is on ("": time; a stage's own axis, e.g. flight_time)
   };
   std::vector<Keyed> keyed;
 };
@@ -152,7 +151,7 @@ struct ContactTally {
 // What the monitors record for the outcome (run/monitors.cpp): the peaks over the steps.
 struct MonitorPeaks {
   PetscReal segment_kinetic = 0, segment_kinetic_time = 0; // J, s: -monitor_segment
-  PetscReal grip_force = 0, grip_force_time = 0;           // N, s: the largest |force of the bat on the hands| (-grip)
+  PetscReal frame_force = 0, frame_force_time = 0; // N, s: the largest |force of the bat on the swing's frame| (-grip)
   // The barrel wall (-barrel_hoop_frequency or -beam_shell): its largest displacement under the ball
   // (m, into the bat) and energy (J) over the steps; NaN where no stepper measured them (the modal reference).
   PetscReal wall_deflection = NAN, shell_energy = NAN;
@@ -225,11 +224,6 @@ struct ImpactOutcome {
   PetscReal recoil_factor = 0, bbcor = 0;
   // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
   PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
-  // With -grip: the peak force of the bat on the hands (N, largest |sum over the grip| over the
-  // steps taken) and when (s), and at the end the grip's stored energy and the work the hands
-  // have done on the bat (J; the grip's damper is in beam_dissipated_end).
-  PetscReal grip_force_peak = 0, grip_force_peak_time = 0, grip_stored_end = 0, hand_work_end = 0;
-  PetscReal grip_fraction = 0, hands_fraction = 0; // grip_stored_end / E_in, -hand_work_end / E_in
   // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
@@ -251,17 +245,6 @@ struct ImpactOutcome {
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
   // for which it gives acor_corrected (the forced fit).
   PetscReal rigid_acor = 0, rigid_forced_loss_fraction = 0;
-  // An oblique impact (-impact_offset, -ball_spin, -flight; run/oblique.hpp): the batted ball's
-  // speed (m/s), launch angle (deg from the reversed incoming direction, > 0 up), spin (rad/s and
-  // rpm, > 0 backspin), the energy friction dissipated (J); with -flight its distance (m), apex
-  // (m above the ground) and hang time (s). Along the normal, acor, bbs and the rest are the run's.
-  PetscReal exit_speed = 0, launch_angle = 0, spin = 0, spin_rpm = 0, friction_dissipated = 0;
-  PetscReal bat_vibration_tangential = 0; // J, the bat's vibration in its second plane after the hit (flexible plane)
-  PetscReal bat_damping_tangential = 0; // J, what the bat's damping took in that plane during the hit (flexible plane)
-  // On a string bed (-impact_angle, run/oblique.hpp): the strings' largest slide from the frame (m), the energy of
-  // their in-plane vibration at most (J) and what of it they gave back by the separation (J: the peak less the end's)
-  PetscReal strings_slide_peak = 0, strings_inplane_energy_peak = 0, strings_inplane_energy_returned = 0;
-  PetscReal distance = 0, apex = 0, hang_time = 0;
 };
 
 // The stepper's own counts, and the driver's.
@@ -302,8 +285,11 @@ struct ImpactResult : ImpactOutcome, ImpactCost, IntegratorInfo {
   std::vector<ContactEvent> events;
   ImpactSeries              series;
   ImpactScales              scales;
-  // The registered structure parts' columns (run/results_table.hpp, ResultColumn::keyed), by
-  // their index in the table's keyed columns; NaN (or beyond the end) where a part is absent.
+  // The columns of the stages after the contact (run/stage.hpp: an oblique impact's exit_speed,
+  // spin, ..., the flight's distance, ...) and of the registered structure parts
+  // (run/results_table.hpp, ResultColumn::keyed), by their index in the table's keyed columns;
+  // NaN (or beyond the end) where a stage does not apply or a part is absent. By name:
+  // ImpactResultColumn(name)->Get(r).
   std::vector<double> keyed;
 };
 
@@ -322,33 +308,34 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
 // stepper), "beamimpact: contact" (steps while the ball touches), "beamimpact: free flight"
 // (after a separation: the modal free flight, or the steps of -impact_after time),
 // "beamimpact: output" (the results file; a sweep's rewrites of its file too), "beamimpact:
-// modal reference" (-reference modal, the exact modal solution: its modes and phases),
-// "beamimpact: tangential" (an oblique impact's friction on the ball and the bat's second
-// plane, from the normal run's force, and its compliance length from e_T), "beamimpact:
-// flight" (-flight: the batted ball's flight). Registered on first use. A scope pushes a stage and
-// pops it when it ends (also on an error return, so a sweep's failed points keep the stack
-// balanced); Switch changes the stage it holds, End pops it early.
+// modal reference" (-reference modal, the exact modal solution: its modes and phases), and one
+// per stage after the contact, "beamimpact: <name>" (run/stage.hpp: "tangential", an oblique
+// impact's friction on the ball and the bat's second plane from the normal run's force, and
+// "flight", the batted ball's flight), registered after them. Registered on first use. A scope
+// pushes a stage and pops it when it ends (also on an error return, so a sweep's failed points
+// keep the stack balanced); Switch changes the stage it holds, End pops it early.
 enum class ImpactStage {
   Setup,
   Contact,
   FreeFlight,
   Output,
-  ModalReference,
-  Tangential,
-  Flight
+  ModalReference
 };
 class ImpactStageScope {
 public:
+  ImpactStageScope() = default; // holds no stage until a Switch
   explicit ImpactStageScope(ImpactStage s) { Switch(s); }
   ~ImpactStageScope();
   void Switch(ImpactStage s);
-  void End(); // pops the stage now
+  void Switch(const char *name); // a stage after the contact's (run/stage.hpp), by its name
+  void End();                    // pops the stage now
   ImpactStageScope(const ImpactStageScope &)            = delete;
   ImpactStageScope &operator=(const ImpactStageScope &) = delete;
 
 private:
-  bool        pushed_ = false;
-  ImpactStage stage_  = ImpactStage::Setup;
+  void          Push(PetscLogStage id);
+  bool          pushed_ = false;
+  PetscLogStage id_     = -1; // the stage it holds
 };
 
 struct Scenario;

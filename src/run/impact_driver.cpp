@@ -11,6 +11,7 @@
 // form, and the stepper is put on the exact state there (and restarted) or at the window's end.
 #include "run/events.hpp"
 #include "run/free_flight.hpp"
+#include "run/stage.hpp"
 #include "run/impact.hpp"
 #include "run/impact_problem.hpp"
 #include "run/monitors.hpp"
@@ -26,19 +27,23 @@ namespace beamimpact {
 
 namespace {
 
-PetscLogStage ImpactStageId(ImpactStage s)
+// The program's log stages, registered together on first use: the run's five, then one per
+// stage after the contact (run/stage.hpp), in the registry's order.
+const std::vector<std::pair<std::string, PetscLogStage>> &ImpactStageIds()
 {
-  constexpr int        kStages = 7;
-  static PetscLogStage ids[kStages];
-  static bool          registered = false;
-  if (!registered) {
-    const char *names[kStages] = {"beamimpact: set-up", "beamimpact: contact",         "beamimpact: free flight",
-                                  "beamimpact: output", "beamimpact: modal reference", "beamimpact: tangential",
-                                  "beamimpact: flight"};
-    for (int k = 0; k < kStages; ++k) (void)PetscLogStageRegister(names[k], &ids[k]);
-    registered = true;
-  }
-  return ids[static_cast<int>(s)];
+  static const std::vector<std::pair<std::string, PetscLogStage>> ids = [] {
+    std::vector<std::string> names = {"beamimpact: set-up", "beamimpact: contact", "beamimpact: free flight",
+                                      "beamimpact: output", "beamimpact: modal reference"};
+    for (const RunStage *s : RunStages()) names.push_back(std::string("beamimpact: ") + s->Name());
+    std::vector<std::pair<std::string, PetscLogStage>> v;
+    for (const std::string &name : names) {
+      PetscLogStage id = -1;
+      (void)PetscLogStageRegister(name.c_str(), &id);
+      v.push_back({name, id});
+    }
+    return v;
+  }();
+  return ids;
 }
 
 PetscInt free_flight_samples = 0; // ImpactFreeFlightSamples
@@ -58,12 +63,20 @@ void ImpactStageScope::End()
   pushed_ = false;
 }
 
-void ImpactStageScope::Switch(ImpactStage s)
+void ImpactStageScope::Push(PetscLogStage id)
 {
-  if (pushed_ && s == stage_) return;
+  if (pushed_ && id == id_) return;
   if (pushed_) (void)PetscLogStagePop();
-  pushed_ = PetscLogStagePush(ImpactStageId(s)) == 0;
-  stage_  = s;
+  pushed_ = PetscLogStagePush(id) == 0;
+  id_     = id;
+}
+
+void ImpactStageScope::Switch(ImpactStage s) { Push(ImpactStageIds()[static_cast<size_t>(s)].second); }
+
+void ImpactStageScope::Switch(const char *name)
+{
+  for (const auto &e : ImpactStageIds())
+    if (e.first.compare(0, 12, "beamimpact: ") == 0 && e.first.substr(12) == name) return Push(e.second);
 }
 
 namespace {
@@ -108,13 +121,16 @@ PetscErrorCode ApplyEvent(const ImpactProblem &pb, Stepper &st, ContactEventKind
 
 // Whether the recorder follows peaks of a part of the structure (a wall, a string bed, the hands
 // or a registered part's measures): then the series are sampled through a free flight.
-bool SystemHasPeaks(const BeamSystem &sys) { return sys.bed_first >= 0 || sys.Gripped() || StructurePartsPeaks(sys); }
+bool SystemHasPeaks(const BeamSystem &sys)
+{
+  return sys.bed_first >= 0 || sys.TiedToFrame() || StructurePartsPeaks(sys);
+}
 
 // Whether the series is only an oblique impact's F_n (no monitor asked, no peaks of a wall, a
 // string bed, the hands or a registered part to follow): not sampled through a free flight.
 bool SparseSeries(const ImpactProblem &pb)
 {
-  return pb.sc.oblique.on && !pb.sc.oblique.series_asked && !SystemHasPeaks(pb.sys());
+  return pb.needs_force && !pb.sc.monitor.any() && !SystemHasPeaks(pb.sys());
 }
 
 // The free flight after a separation at the stepper's time, in closed form, up to t_stop (the
@@ -132,7 +148,7 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
 {
   const BeamSystem                 &sys    = pb.sys();
   const ContactCoupling            &g      = pb.g;
-  const bool                        series = pb.sc.monitor.any(), sparse = SparseSeries(pb);
+  const bool                        series = pb.sc.monitor.any() || pb.needs_force, sparse = SparseSeries(pb);
   const PetscReal                   t_stop = run->timeline.t_stop, s_min = 1e-13 * pb.scales.time;
   std::shared_ptr<const BeamModes> &modes = run->modes;
   FullState                         s0, s;
@@ -374,7 +390,8 @@ PetscErrorCode ImpactDrive(const ImpactProblem &pb, Stepper &st, const Integrato
   PetscFunctionBeginUser;
   PetscCall(MeasureState(st, ctx, nullptr, &rec->start, nullptr));
   rec->energy_in = rec->start.total();
-  ImpactRecorder recorder(st, ctx, sc.monitor, ip, rec->energy_in, &rec->series, &rec->peaks);
+  ImpactRecorder recorder(st, ctx, sc.monitor, ip, rec->energy_in, &rec->series, &rec->peaks,
+                          pb.needs_force ? &rec->drive : nullptr);
   PetscCall(recorder.Record(0.0));
   PetscCall(recorder.Snapshots(0.0));
   auto         indicators = [&](EventIndicators *g) { return StateIndicators(st, pb.scales, info, g); };
@@ -420,22 +437,23 @@ PetscErrorCode ImpactDrive(const ImpactProblem &pb, Stepper &st, const Integrato
   PetscFunctionReturn(0);
 }
 
-// An oblique impact's run along the normal is over: the tangential contact from its force, the
-// exit and the flight; the series the run recorded for it and nobody asked for are dropped.
+// An oblique impact's run along the normal is over: the stages after it (run/stage.hpp: the
+// tangential contact from its force, the exit, the flight), from the F_n(t) the run recorded for
+// them (ImpactRecord::drive, then dropped).
 PetscErrorCode ObliqueRunFinish(const ImpactProblem &pb, ImpactRecord *rec)
 {
-  const Scenario &sc = pb.sc;
-  ImpactSeries   &S  = rec->series;
-  ObliqueBeam     beam; // the bat's second plane, in the modes of the same system
+  StageInput in;
+
   PetscFunctionBeginUser;
-  beam.comm       = pb.comm;
-  beam.sys        = &pb.sys();
-  beam.g          = &pb.g;
-  beam.truncation = ImpactProblemPlaneTruncation(pb);
-  PetscCall(ObliqueFinish(sc, S, -rec->end.ball_v, beam, &rec->oblique));
-  if (!sc.oblique.ball_series_asked)
-    S.ball_y.clear(), S.ball_v.clear(), S.compression.clear(), S.force.clear(), S.force_rate.clear();
-  if (!sc.oblique.series_asked) S.time.clear();
+  in.sc              = &pb.sc;
+  in.series          = &rec->drive;
+  in.u_n             = -rec->end.ball_v;
+  in.beam.comm       = pb.comm;
+  in.beam.sys        = &pb.sys();
+  in.beam.g          = &pb.g;
+  in.beam.truncation = ImpactProblemPlaneTruncation(pb);
+  PetscCall(RunStagesRun(in, &rec->oblique));
+  rec->drive = ImpactSeries();
   PetscFunctionReturn(0);
 }
 

@@ -119,10 +119,6 @@ const OptionModule &MonitorOptionTable()
       OptionList("-monitor_segment", "m",
                  "Record the kinetic energy of the beam segment x0,x1 at every step, and its peak", 2, 2,
                  NonNegative()),
-      OptionNeeds(OptionFlag("-monitor_grip", "With -grip: record the force of the bat on the hands (total, and its "
-                                              "moment about x = 0), the grip's stored energy and the hands' work at "
-                                              "every step"),
-                  {"-grip"}),
       OptionNeeds(OptionReal("-monitor_segment_until", "s",
                              "Take the segment's peak over t <= this; < 0: the whole run", "-1"),
                   {"-monitor_segment"}),
@@ -186,9 +182,10 @@ PetscErrorCode MonitorRequestFromOptions(MPI_Comm comm, const BeamParams &beam, 
   PetscCall(OptionsRead(PetscOptionsObject, T, "-monitor_velocity_at", &m->velocity_at, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-snapshot_times", &m->snapshot_times, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-monitor_segment", &seg, &m->segment));
-  PetscCall(OptionsRead(PetscOptionsObject, T, "-monitor_grip", &m->grip, NULL));
   PetscCall(OptionsRead(PetscOptionsObject, T, "-monitor_segment_until", &m->segment_until, NULL));
   PetscOptionsEnd();
+  // a part's own monitor row (the hands'), read with its options
+  m->parts = StructurePartsMonitor(beam);
   if (m->segment) { // two values >= 0: the row's; on the beam and in order: here
     PetscCheck(seg[0] < seg[1] && seg[1] <= beam.length, comm, PETSC_ERR_ARG_OUTOFRANGE,
                "-monitor_segment %g,%g is not allowed: it needs two points 0 <= x0 < x1 <= L = %g (m)", (double)seg[0],

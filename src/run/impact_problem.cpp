@@ -3,6 +3,7 @@
 // modal truncation, each resolved here once.
 #include "run/impact_problem.hpp"
 
+#include "run/stage.hpp"
 #include "solvers/ts_modal.hpp"
 
 #include <petscts.h>
@@ -129,6 +130,7 @@ PetscErrorCode ImpactProblemBuild(MPI_Comm comm, const Scenario &given, ImpactMe
   else pb->sc = given;
   const Scenario &sc = pb->sc;
   pb->times          = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
+  pb->needs_force    = RunStagesNeedForce(sc);
   if (method == ImpactMethod::ModalReference) { // its system is built in its own stage (run/modal_reference.cpp)
     pb->modal_used = true;
   } else {

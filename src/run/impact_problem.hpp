@@ -42,6 +42,7 @@ struct ImpactProblem {
   FrameMotion frame;   // the swing's rigid frame, which a grip ties the handle to (at rest for a bat at rest)
   std::string ts_type; // Stepped: -ts_type as the TS stepper takes it (default rk)
   bool        after_modal = false; // -impact_after resolved: the free flight after a separation is modal
+  bool        needs_force = false; // a stage after the contact reads F_n(t) (run/stage.hpp): the run records it
   // Whether some consumer of the modes runs (-ts_type modal, the modal free flight with a window
   // to follow, an oblique impact's second plane, the modal reference): then the truncation was
   // read, so its options are marked used before the stepper's check of unused options.

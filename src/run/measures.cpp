@@ -72,12 +72,12 @@ bool SeparateParts(const BeamSystem &S)
 // over the modes (mass-normalised: kinetic 1/2 sum zd_k^2, strain 1/2 sum w_k^2 z_k^2) and the
 // momenta the projections above. Not with a monitor that asks for the physical state (point
 // velocities, a segment's energy), nor with parts whose energies are kept apart (a barrel wall,
-// the frame's roll, a string bed) or a grip (its springs and the hands' work): those are taken
+// the frame's roll, a string bed) or a term tied to the frame (the hands' springs and work): those are taken
 // over the dofs, as are the registered parts' (their measures and rigid points).
 bool MeasuresInModes(const BeamSystem &S, const MeasureContext &ctx, const MonitorRequest *mon)
 {
   if (mon && (mon->segment || !mon->velocity_at.empty())) return false;
-  return !SeparateParts(S) && !S.Gripped() && !ForceOperatorDriven(S, ctx.frame) && S.parts.empty();
+  return !SeparateParts(S) && !S.TiedToFrame() && !ForceOperatorDriven(S, ctx.frame) && S.parts.empty();
 }
 
 // The registered parts' share of the owned dofs: their rigid points' momentum *p and moment *l
@@ -132,14 +132,17 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
   m->beam_moment         = sums[3];
   m->segment_kinetic     = sums[4];
   m->beam_dissipated     = stepper.Dissipated();
-  m->grip_stored         = sums[G];
-  m->grip_force          = sums[G + 2];
-  m->grip_moment         = sums[G + 3];
+  m->terms_stored        = sums[G];
+  m->frame_force         = sums[G + 2];
+  m->frame_moment        = sums[G + 3];
   if (ForceOperatorDriven(S, ctx.frame))
-    m->hand_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v -
-                   ctx.frame->q0; // 0 for a frame at rest
+    m->frame_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v -
+                    ctx.frame->q0; // 0 for a frame at rest
   if (point_v) point_v->assign(sums.begin() + 5, sums.begin() + G);
   for (size_t k = G + 13; k < sums.size(); ++k) m->part_slot[k - G - 13] = sums[k]; // the parts' slots, last
+  FrameMeasures fm; // the parts tied to the frame: their slots from its terms
+  fm.stored = m->terms_stored, fm.work = m->frame_work, fm.force = m->frame_force, fm.moment = m->frame_moment;
+  StructurePartsMeasureFrame(S, fm, m->part_slot);
   PetscFunctionReturn(0);
 }
 

@@ -35,20 +35,21 @@ struct StateMeasures {
   PetscReal bed_momentum = 0, bed_moment = 0, bed_roll = 0;
   PetscReal beam_dissipated = 0; // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its
                                  // damper's share too)
-  // The hands (-grip), from the force operator (system/force_operator.hpp): the energy stored in
-  // the force terms other than the elastic one (the grip's 1/2 sum k_i (y_i - v_f,i t)^2), the
-  // work the hands (the swing's frame) have done on the bat since t = 0, the force of the bat on
-  // the hands and its moment about x = 0 (0 without a grip).
-  PetscReal grip_stored = 0, hand_work = 0;  // J
-  PetscReal grip_force = 0, grip_moment = 0; // N, N m
+  // The force operator's frame terms (system/force_operator.hpp; the hands' part reads them as its
+  // slots): the energy stored in the force terms other than the elastic one (the hands' 1/2 sum
+  // k_i (y_i - v_f,i t)^2), the work the swing's frame has done on the bat since t = 0 (through
+  // the hands), the force of the bat on the frame and its moment about x = 0 (0 without a term
+  // tied to the frame).
+  PetscReal terms_stored = 0, frame_work = 0;  // J
+  PetscReal frame_force = 0, frame_moment = 0; // N, N m
   // The registered structure parts' measures (system/structure_part.hpp: part p's slots from its
   // PartInstance::slot0, in the units its Slots() declare); 0 without parts.
   PetscReal part_slot[kMaxPartSlots] = {};
   // The conserved total: with the linear spring and an undamped beam, a constant.
   PetscReal total() const
   {
-    return ball_kinetic + ball_work + beam_kinetic + beam_strain + shell_energy + beam_dissipated + grip_stored -
-           hand_work;
+    return ball_kinetic + ball_work + beam_kinetic + beam_strain + shell_energy + beam_dissipated + terms_stored -
+           frame_work;
   }
 };
 

@@ -3,7 +3,7 @@
 
 #include "base/memory.hpp"
 #include "run/impact.hpp"
-#include "run/oblique.hpp"
+#include "run/stage.hpp"
 #include "run/outcome.hpp"
 
 #include "run/scenario.hpp"
@@ -232,10 +232,7 @@ static PetscInt ModalReferenceFreeDofs(const BeamSystem &sys)
 bool ModalReferenceApplies(const Scenario &sc, std::string *why)
 {
   std::string w;
-  if (sc.beam.grip.on)
-    w = "with -grip is not possible: the hands' frame drive (a forcing in time) and damper are not in the modal "
-        "reference; use a tight TS run as the reference";
-  else if (!StructurePartsModalRefusal(sc.beam).empty()) w = StructurePartsModalRefusal(sc.beam);
+  if (!StructurePartsModalRefusal(sc.beam).empty()) w = StructurePartsModalRefusal(sc.beam);
   else if (!ContactLinear(sc.ball))
     w = std::string("needs -ball_law linear (the ") + ContactLawName(sc.ball.law) +
         " law is nonlinear: use a tight run of a high-order integrator as the reference)";
@@ -279,25 +276,29 @@ void ModalFinish(const Scenario &sc, const BeamSystem &sys, const ModalRun &run,
   rec->scales            = ContactScalesOf(sys, approaching);
 }
 
-// An oblique impact (sc: its run along the normal, sc.oblique.on): the tangential contact driven
-// by the sampled F_n(t), the bat's second plane in the modes of `truncation`, the exit and the
-// flight, as a stepped run finishes it (run/impact_driver.cpp); the samples are then dropped.
+// An oblique impact (sc: its run along the normal, sc.oblique.on): the stages after the contact
+// (run/stage.hpp: the tangential contact driven by the sampled F_n(t), the bat's second plane in
+// the modes of `truncation`, the exit, the flight), as a stepped run finishes it
+// (run/impact_driver.cpp); the samples are then dropped.
 PetscErrorCode ModalObliqueFinish(MPI_Comm comm, const Scenario &sc, const BeamSystem &sys,
                                   const ModalTruncation &truncation, ImpactRecord *rec)
 {
-  ObliqueBeam beam;
+  StageInput in;
 
   PetscFunctionBeginUser;
   if (!sc.oblique.on) PetscFunctionReturn(0);
   const ContactCoupling g = BeamSystemCoupling(sys, sc.impact.x, sc.impact.z);
-  beam.comm               = comm; // the modes of the second plane on the reference's ranks
-  beam.sys                = &sys;
-  beam.g                  = &g;
-  beam.truncation         = truncation;
-  if (!(beam.truncation.contact_time > 0))
-    beam.truncation.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
-  PetscCall(ObliqueFinish(sc, rec->series, -rec->end.ball_v, beam, &rec->oblique));
-  rec->series = ImpactSeries();
+  in.sc                   = &sc;
+  in.series               = &rec->drive;
+  in.u_n                  = -rec->end.ball_v;
+  in.beam.comm            = comm; // the modes of the second plane on the reference's ranks
+  in.beam.sys             = &sys;
+  in.beam.g               = &g;
+  in.beam.truncation      = truncation;
+  if (!(in.beam.truncation.contact_time > 0))
+    in.beam.truncation.contact_time = ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
+  PetscCall(RunStagesRun(in, &rec->oblique));
+  rec->drive = ImpactSeries();
   PetscFunctionReturn(0);
 }
 
@@ -450,7 +451,7 @@ PetscErrorCode ModalReferenceTruncated(MPI_Comm comm, const Scenario &sc, const 
   run.S = &T.R, run.ball = &sc.ball, run.c_scale = T.c_scale;
   run.t_cap = times.max_time;
   run.s_min = 1e-13 * ContactTimeScale(sc.ball, ImpactApproachSpeed(sc));
-  if (sc.oblique.on) run.forces = &rec.series;
+  if (sc.oblique.on) run.forces = &rec.drive;
   FullToTruncated(m, full.q, run.q);
   FullToTruncated(m, full.qd, run.qd);
   rec.contact.contacts = 1;
@@ -553,7 +554,7 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
   run.ball                = &ball;
   run.t_cap               = times.max_time;
   run.s_min               = 1e-13 * ContactTimeScale(ball, ImpactApproachSpeed(sc));
-  if (sc.oblique.on) run.forces = &rec.series;
+  if (sc.oblique.on) run.forces = &rec.drive;
   ModalStart(sc, sys, &run, &V_x, &E0);
   rec.start            = ModalMeasures(run, ip.x, ip.z, 0);
   rec.contact.contacts = 1;

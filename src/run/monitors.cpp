@@ -8,13 +8,15 @@
 namespace beamimpact {
 
 ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon,
-                               const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks) :
+                               const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks,
+                               ImpactSeries *drive) :
   stepper_(stepper),
   ctx_(ctx),
   mon_(mon),
   ip_(ip),
   E0_(E0),
   series_(series),
+  drive_(drive),
   peaks_(peaks),
   last_phase_(ctx.contact ? ctx.contact->phase : ContactPhase::Loading)
 {
@@ -22,9 +24,10 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
   series->velocity_at_x = mon.velocity_at;
   for (const PartInstance &p : ctx.sys->parts) // the registered parts' peaks and series, by slot
     for (const PartSlot &slot : p.part->Slots()) {
+      const bool asked = slot.own_monitor ? p.part->Monitors(*p.params) : (bool)mon.energy;
       part_peak_.push_back(slot.peak);
-      part_series_.push_back(slot.series && mon.energy ? (int)series->keyed.size() : -1);
-      if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}});
+      part_series_.push_back(slot.series && asked ? (int)series->keyed.size() : -1);
+      if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
 }
 
@@ -75,7 +78,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   bool wall = false; // a part whose peaks the outcome keeps (StructurePart::Peaks: the barrel wall)
   for (const PartInstance &s : ctx_.sys->parts) wall = wall || s.part->Peaks();
   const bool bed = ctx_.sys->bed_first >= 0; // a racket's string bed
-  if (!mon_.any() && !ip_.energy_check && !ctx_.sys->Gripped() && !wall && !bed && part_peak_.empty())
+  if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
     PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
   for (size_t k = 0; k < part_peak_.size(); ++k) { // the parts' peaks, always (NaN until the first step)
@@ -92,9 +95,9 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
     if (!(m.bed_deflection <= peaks_->bed_deflection)) peaks_->bed_deflection = m.bed_deflection;
     if (!(m.bed_energy <= peaks_->bed_energy)) peaks_->bed_energy = m.bed_energy;
   }
-  if (ctx_.sys->Gripped() && std::abs(m.grip_force) > peaks_->grip_force) { // the hands' peak force, always
-    peaks_->grip_force      = std::abs(m.grip_force);
-    peaks_->grip_force_time = t;
+  if (ctx_.sys->TiedToFrame() && std::abs(m.frame_force) > peaks_->frame_force) { // the hands' peak force, always
+    peaks_->frame_force      = std::abs(m.frame_force);
+    peaks_->frame_force_time = t;
   }
   if (ip_.energy_check) {
     const PetscReal growth = (m.total() - E0_) / E0_;
@@ -102,18 +105,19 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
                "energy grew by %.3g of the incident kinetic energy at t = %g s %s", (double)growth, (double)t,
                stepper_.EnergyGrowthCause().c_str());
   }
-  if (!mon_.any()) PetscFunctionReturn(0);
+  if (drive_) { // the stages' drive, whatever was asked
+    drive_->time.push_back(t);
+    BallSeriesAppend(m, ctx_, last_phase_, drive_);
+  }
+  if (!mon_.any()) {
+    last_phase_ = ctx_.contact->phase;
+    PetscFunctionReturn(0);
+  }
   S.time.push_back(t);
   if (mon_.ball) { BallSeriesAppend(m, ctx_, last_phase_, &S); }
   if (mon_.energy) EnergySeriesAppend(m, *ctx_.sys, wall, bed, &S);
   for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
   last_phase_ = ctx_.contact->phase;
-  if (mon_.grip && ctx_.sys->Gripped()) {
-    S.grip_force.push_back(m.grip_force);
-    S.grip_moment.push_back(m.grip_moment);
-    S.grip_stored.push_back(m.grip_stored);
-    S.hand_work.push_back(m.hand_work);
-  }
   if (mon_.segment) {
     S.segment_kinetic.push_back(m.segment_kinetic);
     if ((mon_.segment_until < 0 || t <= mon_.segment_until * (1 + 1e-12)) &&

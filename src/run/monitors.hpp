@@ -1,5 +1,6 @@
 // What a run records while it steps, only when asked (-monitor_*, -snapshot_times,
-// -impact_energy_check, -grip): per-step series, snapshots stepped onto exactly, the peaks the
+// -impact_energy_check, -grip; an oblique impact's F_n(t) for the stages after the contact, apart):
+// per-step series, snapshots stepped onto exactly, the peaks the
 // outcome reports (the segment's kinetic energy, the force on the hands), and the energy-growth
 // stop. It writes its own series and peaks; the outcome (run/outcome.hpp) reads them.
 #pragma once
@@ -13,7 +14,7 @@ namespace beamimpact {
 class ImpactRecorder {
 public:
   ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon, const ImpactParams &ip,
-                 PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks);
+                 PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks, ImpactSeries *drive = nullptr);
   // The series at time t (s), and the energy check.
   PetscErrorCode Record(PetscReal t);
   // Every snapshot due by time t.
@@ -31,6 +32,7 @@ private:
   const ImpactParams   &ip_;
   PetscReal             E0_;
   ImpactSeries         *series_;
+  ImpactSeries         *drive_; // the stages' F_n(t) (time, the ball's series) at every record, or nullptr
   MonitorPeaks         *peaks_;
   size_t                next_ = 0;
   std::vector<char>     part_peak_;   // per part slot: its peak is kept

@@ -99,17 +99,14 @@ PetscErrorCode ObliqueNormalScenario(MPI_Comm comm, const Scenario &sc, Scenario
   PetscFunctionBeginUser;
   if (bed) PetscCall(ObliqueBedCheck(comm, sc));
   else PetscCall(ObliqueBatCheck(comm, sc, R));
-  *normal              = sc;
-  ObliqueIncoming &in  = normal->oblique;
-  in.on                = true;
-  in.ball_speed        = sc.ball.speed;
-  in.swing             = sc.swing;
-  in.bat_radius        = bed ? 0 : R;
-  in.bed               = bed;
-  in.ball_series_asked = sc.monitor.ball;
-  in.series_asked      = sc.monitor.any();
-  normal->monitor.ball = PETSC_TRUE; // F_n(t) for the tangential contact
-  if (bed) {                         // the bed's frame: theta 0; the swing is along the bed's normal already
+  *normal             = sc;
+  ObliqueIncoming &in = normal->oblique;
+  in.on               = true;
+  in.ball_speed       = sc.ball.speed;
+  in.swing            = sc.swing;
+  in.bat_radius       = bed ? 0 : R;
+  in.bed              = bed;
+  if (bed) { // the bed's frame: theta 0; the swing is along the bed's normal already
     in.angle           = sc.impact.angle * M_PI / 180;
     normal->ball.speed = std::cos(in.angle) * sc.ball.speed;
     PetscFunctionReturn(0);
@@ -197,17 +194,21 @@ PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlan
 
   PetscFunctionBeginUser;
   PetscCall(BeamModesShared(beam.comm, *beam.sys, beam.truncation, &modes)); // from the cache
-  const PetscInt n = modes->S.n, f = beam.sys->fields;
+  const BeamSystem      &S = *beam.sys;
+  const PetscInt         n = modes->S.n, f = S.fields;
+  std::vector<PetscReal> at(S.ndof, std::nan("")); // m: the point each translational dof moves with (NaN: none)
+  for (PetscInt dof = 0; dof < S.ndof; dof += f) at[dof] = S.NodeX(dof / f);
+  for (const RigidPoint &r : S.rigid_points) at[r.dof] = r.x; // a registered part's point masses (an absorber)
   *P = 0, *L = 0;
   for (size_t k = 0; k < p.zd.size(); ++k) {
     const PetscReal *phi = &modes->B.Phi[k * n];
     PetscReal        r   = 0,
               x = 0; // sum m_d v_d and m_d x_d v_d per unit zd_k, over the translational dofs: v = M^{-1/2} phi zd
     for (PetscInt d = 0; d < n; ++d) {
-      const PetscInt dof = modes->S.dof[d];
-      if (dof % f) continue;
+      const PetscReal xd = at[modes->S.dof[d]];
+      if (std::isnan(xd)) continue;
       r += phi[d] * std::sqrt(modes->S.mass[d]);
-      x += phi[d] * std::sqrt(modes->S.mass[d]) * beam.sys->NodeX(dof / f);
+      x += phi[d] * std::sqrt(modes->S.mass[d]) * xd;
     }
     *P += r * p.zd[k];
     *L += x * p.zd[k];
@@ -252,33 +253,6 @@ NormalPiece NormalPieceOf(const ImpactSeries &S, size_t k)
   return f;
 }
 
-// The batted ball's flight from the exit velocity and spin (-flight): rec->flight.
-PetscErrorCode ObliqueFlight(const Scenario &sc, ObliqueRecord *rec)
-{
-  PetscFunctionBeginUser;
-  FlightParams p    = sc.flight.params;
-  p.ball.mass       = sc.ball.mass; // the impact's own ball (its radius is required with -flight: FlightBallResolve)
-  p.ball.radius     = sc.ball.radius > 0 ? sc.ball.radius : p.ball.radius;
-  p.launch.speed    = rec->exit.speed;
-  p.launch.angle    = rec->exit.launch_angle;
-  p.launch.backspin = rec->after.spin;
-  PetscReal u[6];
-  FlightInitialState(p.launch, u);
-  PetscCheck(p.launch.height > 0 || p.launch.angle > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP,
-             "-flight with -flight_height 0: the batted ball leaves at %g deg, downward, from the ground; give "
-             "-flight_height > 0",
-             (double)p.launch.angle);
-  PetscCheck(std::abs(p.launch.backspin) < FlightSpinMax(p.ball.radius), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "-flight: the batted ball leaves spinning at %g rad/s, its surface at %g m/s (-flight_ball_radius %g "
-             "m), beyond the speed of sound in air (%g m/s), where the flight's drag and "
-             "lift do not hold (check -ball_speed, -ball_spin and the swing)",
-             (double)p.launch.backspin, (double)(std::abs(p.launch.backspin) * p.ball.radius), (double)p.ball.radius,
-             (double)kSpeedOfSound);
-  PetscCall(FlightSolve(FlightModelOf(p), u, sc.flight.solve, &rec->flight));
-  rec->flew = true;
-  PetscFunctionReturn(0);
-}
-
 } // namespace
 
 namespace {
@@ -321,20 +295,13 @@ void TangentialFlexibleRun(const TangentialModel &m, const ImpactSeries &series,
   }
 }
 
-// The exit from the normal speed and the tangential contact's impulse; with -flight the flight.
-PetscErrorCode ObliqueExitAndFlight(const Scenario &sc, PetscReal u_n, ImpactStageScope *stage, ObliqueRecord *rec)
+// The exit from the normal speed and the tangential contact's impulse.
+void ExitOf(PetscReal u_n, ObliqueRecord *rec)
 {
   const bool touches = rec->model.ball_radius > 0 && rec->model.ball_inertia > 0;
-
-  PetscFunctionBeginUser;
-  rec->after = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
+  rec->after         = touches ? TangentialBodiesAfter(rec->model, rec->before, rec->contact.impulse) : rec->before;
   if (rec->flexible) rec->after.v_bat = rec->plane.PointVelocity();
   rec->exit = ObliqueExitOf(rec->geometry, u_n, rec->after.v_ball);
-  if (sc.flight.on) {
-    stage->Switch(ImpactStage::Flight);
-    PetscCall(ObliqueFlight(sc, rec));
-  }
-  PetscFunctionReturn(0);
 }
 
 // The string bed in its own plane (model/oblique.hpp, BedInPlaneModel): the mains under the ball
@@ -370,7 +337,6 @@ PetscErrorCode ObliqueBedFinish(const Scenario &sc, const ImpactSeries &series, 
   TangentialModel        m;
 
   PetscFunctionBeginUser;
-  ImpactStageScope stage(ImpactStage::Tangential); // -log_view
   rec->on = rec->bed = true;
   rec->geometry      = in.geometry; // theta 0: n the bed's normal
   TangentialBat(sc, true, &m);      // the frame's effective mass along t at the point (held: infinite)
@@ -386,7 +352,7 @@ PetscErrorCode ObliqueBedFinish(const Scenario &sc, const ImpactSeries &series, 
     if (sc.impact.tangential_rigid) TangentialRigidRun(m, series, &rec->contact);
     else BedInPlaneRun(sc, series, rec);
   }
-  PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  ExitOf(u_n, rec);
   if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
   PetscFunctionReturn(0);
 }
@@ -404,7 +370,6 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     PetscCall(ObliqueBedFinish(sc, series, u_n, rec));
     PetscFunctionReturn(0);
   }
-  ImpactStageScope stage(ImpactStage::Tangential); // -log_view
   rec->on       = true;
   rec->geometry = in.geometry;
   m.bat_radius  = in.bat_radius;
@@ -436,7 +401,7 @@ PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, Pet
     PetscCall(TangentialPlaneFinish(beam, rec));
     rec->model.bat_mass = PETSC_INFINITY; // the bat's translation is the plane's: the ball and the roll from J
   } else if (touches && u0 != 0) TangentialRigidRun(m, series, &rec->contact);
-  PetscCall(ObliqueExitAndFlight(sc, u_n, &stage, rec));
+  ExitOf(u_n, rec);
   if (rec->flexible) rec->after.v_bat += rec->before.v_bat; // the plane's point relative to the brush
   PetscFunctionReturn(0);
 }

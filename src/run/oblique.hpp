@@ -26,7 +26,8 @@
 // sliding sideways on the frame's rigid motion along t (held, or its effective mass there); with
 // -impact_tangential_plane rigid the mains locked (the rigid-surface model on the frame's mass).
 // The exit is in the bed's frame: the launch angle from the normal, > 0 toward +z.
-// Then, with -flight, the batted ball's flight (solvers/flight_ts.hpp) from the exit speed,
+// These are the first stage after the contact (run/stages/tangential.cpp); then, with -flight,
+// the next (run/stages/flight.cpp): the batted ball's flight (solvers/flight_ts.hpp) from the exit speed,
 // launch angle and spin.
 #pragma once
 
@@ -39,12 +40,14 @@
 
 #include <petscsys.h>
 
+#include <memory>
 #include <vector>
 
 namespace beamimpact {
 
 struct Scenario;
 struct ImpactSeries;
+struct StageResult;
 
 // -flight after an impact: the flight's ball, air and aerodynamics (-flight_*, -air_*; the
 // launch comes from the impact).
@@ -60,14 +63,13 @@ struct ObliqueIncoming {
   PetscReal       ball_speed = 0; // m/s, as given
   SwingParams     swing;          // as given
   ObliqueGeometry geometry;
-  PetscReal       bat_radius        = 0;     // m, at the impact point
-  bool            bed               = false; // on a string bed: n its normal, t its z (the bed's frame)
-  PetscReal       angle             = 0;     // rad, on a bed: the ball's path from n (-impact_angle)
-  bool            ball_series_asked = false,
-       series_asked                 = false; // -monitor_ball; any monitor (the run records the ball's series for F_n)
+  PetscReal       bat_radius = 0;     // m, at the impact point
+  bool            bed        = false; // on a string bed: n its normal, t its z (the bed's frame)
+  PetscReal       angle      = 0;     // rad, on a bed: the ball's path from n (-impact_angle)
 };
 
-// What the tangential contact and the flight hand the outcome.
+// What the stages after the contact (run/stage.hpp) hand the outcome: the tangential contact and
+// the exit, and each stage's own result.
 struct ObliqueRecord {
   bool             on = false;
   ObliqueGeometry  geometry;
@@ -86,8 +88,9 @@ struct ObliqueRecord {
   BedInPlaneModel bed_plane;           // bed: the frame's mass, the mains' stiffness and mass in the face's plane
   PetscReal       bed_slide_peak  = 0; // m, bed (flexible): the mains' largest slide from the frame, at the run's steps
   PetscReal       bed_energy_peak = 0; // J, bed (flexible): the energy of their vibration on the frame at most
-  bool            flew            = false;
-  FlightResult    flight;
+  // The stages after the contact (run/stage.hpp): each registered stage's own result, in the
+  // registry's order (nullptr: it did not run), the flight's (-flight) among them.
+  std::vector<std::shared_ptr<const StageResult>> stages;
 };
 
 // Whether the impact is oblique: -impact_offset, -impact_angle or -ball_spin not 0, or -flight.
@@ -113,11 +116,12 @@ struct ObliqueBeam {
 PetscErrorCode ObliquePlaneBuild(const ObliqueBeam &beam, const std::vector<PetscReal> &velocity, TangentialPlane *p,
                                  PetscInt *rigid);
 // The plane's momentum along t (N s) and its angular momentum about x = 0 in that plane (N m s,
-// sum m_d x_d v_d over the translational dofs: a Timoshenko section's spin is left out).
+// sum m_d x_d v_d over the translational dofs, a registered part's point masses (an absorber)
+// among them: a Timoshenko section's spin is left out).
 PetscErrorCode ObliquePlaneMomenta(const ObliqueBeam &beam, const TangentialPlane &p, PetscReal *P, PetscReal *L);
 
 // After the run along the normal (sc: its projected scenario; series: its ball series, F_n at
-// every step): the tangential contact, the exit, and with -flight the flight.
+// every step): the tangential contact and the exit (the tangential stage's work).
 PetscErrorCode ObliqueFinish(const Scenario &sc, const ImpactSeries &series, PetscReal ball_normal_speed_end,
                              const ObliqueBeam &beam, ObliqueRecord *rec);
 

@@ -48,11 +48,13 @@ double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const Outco
   for (const PartInstance &p : sys.parts) {
     if (p.part != c.owner) continue;
     PartOutputFacts pf;
-    pf.start  = f.start.part_slot + p.slot0;
-    pf.end    = f.end.part_slot + p.slot0;
-    pf.peak   = f.peaks->part_peak + p.slot0;
-    pf.E_in   = f.E_in;
-    pf.params = p.params.get();
+    pf.start                 = f.start.part_slot + p.slot0;
+    pf.end                   = f.end.part_slot + p.slot0;
+    pf.peak                  = f.peaks->part_peak + p.slot0;
+    pf.E_in                  = f.E_in;
+    pf.params                = p.params.get();
+    pf.frame_force_peak      = f.peaks->frame_force;
+    pf.frame_force_peak_time = f.peaks->frame_force_time;
     return c.part_compute(pf);
   }
   return std::numeric_limits<double>::quiet_NaN();
@@ -89,13 +91,11 @@ void ImpactOutcomeFinish(const Scenario &sc, const BeamSystem &sys, ImpactRecord
   for (const ResultColumn &c : ImpactResultColumns())
     if (c.compute) c.Set(res, c.applies(sc) ? c.compute(f) : nan);
     else if (c.part_compute) c.Set(res, PartColumnValue(c, sys, f));
+    else if (c.stage_compute)
+      c.Set(res, c.applies(sc) ? StageColumnValue(c.stage_compute, (size_t)c.stage, sc, rec.oblique) : nan);
   res->events = std::move(rec.contact.events);
   res->series = std::move(rec.series);
-  if (rec.oblique.flew) {
-    const FlightSeries &F   = rec.oblique.flight.series;
-    res->series.flight_time = F.t, res->series.flight_x = F.x, res->series.flight_y = F.y, res->series.flight_z = F.z;
-    res->series.flight_spin = F.spin;
-  }
+  RunStagesSeries(rec.oblique, &res->series); // a stage's own series (the flight's)
   res->after_used    = rec.after_used;
   res->mode_energies = std::move(rec.mode_energies);
   res->modal         = rec.modal;

@@ -18,9 +18,12 @@ namespace beamimpact {
 
 // What a run hands its outcome.
 struct ImpactRecord {
-  ContactTally  contact;        // run/events.cpp
-  MonitorPeaks  peaks;          // run/monitors.cpp
-  ImpactSeries  series;         // run/monitors.cpp (only what was asked)
+  ContactTally contact; // run/events.cpp
+  MonitorPeaks peaks;   // run/monitors.cpp
+  ImpactSeries series;  // run/monitors.cpp (only what was asked)
+  // The run's F_n(t) for the stages after it (run/stage.hpp; time, force and force_rate at every
+  // record, ball_y, ball_v, compression beside them): only when a stage needs it, never written.
+  ImpactSeries  drive;
   StateMeasures start, end;     // the measures at t = 0 and at the end
   PetscReal     energy_in  = 0; // J, the conserved total at t = 0 (start.total() for a stepper)
   PetscReal     energy_end = 0; // J, the same at the end

@@ -4,11 +4,13 @@
 #include "model/rigid.hpp"
 #include "model/shell.hpp"
 #include "run/impact_point.hpp"
-#include "run/oblique.hpp"
+#include "run/stage.hpp"
 #include "run/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 namespace beamimpact {
@@ -23,14 +25,16 @@ bool ResultNoHeldDof(const Scenario &sc)
 
 bool ResultMomentumInvariant(const Scenario &sc)
 {
-  return ResultNoHeldDof(sc) && !sc.beam.grip.on && sc.beam.damping_mass == 0;
+  return ResultNoHeldDof(sc) && !StructurePartsTieToFrame(sc.beam) && sc.beam.damping_mass == 0;
 }
 
-bool ResultFreeBeamAtRest(const Scenario &sc) { return ResultNoHeldDof(sc) && !sc.beam.grip.on && !sc.swing.Swings(); }
+bool ResultFreeBeamAtRest(const Scenario &sc)
+{
+  return ResultNoHeldDof(sc) && !StructurePartsTieToFrame(sc.beam) && !sc.swing.Swings();
+}
 
 bool ResultFreePivot(const Scenario &sc) { return sc.beam.has_pivot && PivotHeldText(sc).empty(); }
 
-bool ResultGripped(const Scenario &sc) { return sc.beam.grip.on; }
 bool ResultBarrelWall(const Scenario &sc) { return sc.beam.parts.Has("wall"); } // system/parts/wall.cpp
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
@@ -38,17 +42,6 @@ bool ResultStringBed(const Scenario &sc) { return sc.beam.strings.On(); }
 bool ResultTwist(const Scenario &sc) { return sc.beam.parts.Rolls(); }
 bool ResultTwistInvariant(const Scenario &sc) { return ResultTwist(sc) && ResultMomentumInvariant(sc); }
 bool ResultTwistNoHeld(const Scenario &sc) { return ResultTwist(sc) && ResultNoHeldDof(sc) && sc.ball.speed > 0; }
-
-// Asked of the scenario as given (the run record, a file's `applies`) and of the run's projected
-// one (the outcome): ObliqueImpact answers the same for both.
-bool ResultOblique(const Scenario &sc) { return sc.oblique.on || ObliqueImpact(sc); }
-bool ResultObliqueFlexible(const Scenario &sc) { return ResultOblique(sc) && !sc.impact.tangential_rigid; }
-bool ResultObliqueBed(const Scenario &sc)
-{
-  return ResultObliqueFlexible(sc) && ImpactOnBed(sc.beam, sc.impact.x, sc.impact.z);
-}
-
-bool ResultFlight(const Scenario &sc) { return sc.flight.on; }
 
 std::string PivotHeldText(const Scenario &sc)
 {
@@ -58,8 +51,7 @@ std::string PivotHeldText(const Scenario &sc)
   if (!b.has_pivot) return "";
   if (b.left != Support::Free) add(std::string("-beam_left ") + SupportName(b.left));
   if (b.right != Support::Free) add(std::string("-beam_right ") + SupportName(b.right));
-  if (b.has_clamp) add("-beam_clamp");
-  if (b.grip.on) add("-grip");
+  if (b.has_clamp) add("-beam_clamp"); // (the hands and a pivot: refused)
   return held;
 }
 
@@ -137,7 +129,6 @@ bool EnergyInRoll(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc
 bool EnergyInTwist(const Scenario &sc) { return EnergyIn(sc) && ResultTwist(sc); }
 bool EnergyInBed(const Scenario &sc) { return EnergyIn(sc) && ResultStringBed(sc); }
 bool EnergyInWall(const Scenario &sc) { return EnergyIn(sc) && ResultBarrelWall(sc); }
-bool EnergyInGrip(const Scenario &sc) { return EnergyIn(sc) && ResultGripped(sc); }
 const char *const kEnergyIn    = "always (E_in > 0: a moving ball or a swinging bat)";
 const char *const kTranslation = "a structure with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
 const char *const kRotation = "a structure with no held dof, or held at one pin only (-beam_pivot or one pinned end, "
@@ -179,7 +170,7 @@ PetscReal RigidMassAt(const OutcomeFacts &f)
 using R = ImpactResult;
 using F = const OutcomeFacts &;
 
-// The impact, the energies, the bat and the grip.
+// The impact, the energies and the bat (the hands' columns follow bbcor: their part's).
 std::vector<ResultColumn> OutcomeColumns()
 {
   return {
@@ -313,27 +304,6 @@ std::vector<ResultColumn> OutcomeColumns()
       [](F f) -> double { return PivotBBCOR(RigOf(f), CollisionEfficiency(f)); },
       "bat-ball COR e_A (1 + r) + r of the pivoted rig"),
     Real(
-      "grip_force_peak", "N", &R::grip_force_peak, ResultGripped, "with -grip",
-      [](F f) -> double { return f.peaks->grip_force; }, "largest |force of the bat on the hands| over the steps"),
-    Real(
-      "grip_force_peak_time", "s", &R::grip_force_peak_time, ResultGripped, "with -grip",
-      [](F f) -> double { return f.peaks->grip_force_time; }, "when"),
-    Real(
-      "grip_stored_end", "J", &R::grip_stored_end, ResultGripped, "with -grip",
-      [](F f) -> double { return f.end.grip_stored; }, "the grip's stored energy at the end"),
-    Real(
-      "hand_work_end", "J", &R::hand_work_end, ResultGripped, "with -grip",
-      [](F f) -> double { return f.end.hand_work; }, "work the hands did on the bat by the end"),
-    Share(Real(
-            "grip_fraction", "1", &R::grip_fraction, EnergyInGrip, "with -grip",
-            [](F f) -> double { return f.end.grip_stored / f.E_in; }, "grip_stored_end / E_in"),
-          "grip"),
-    Share(Real(
-            "hands_fraction", "1", &R::hands_fraction, EnergyInGrip, "with -grip",
-            [](F f) -> double { return -f.end.hand_work / f.E_in; },
-            "the energy the bat gave the hands, -hand_work_end / E_in (< 0: the hands gave energy)"),
-          "to the hands"),
-    Real(
       "shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
       [](F f) -> double { return f.end.shell_energy; },
       "the barrel wall's energy at the end (stored and kinetic): what it did not give back"),
@@ -421,78 +391,6 @@ std::vector<ResultColumn> OutcomeColumns()
   };
 }
 
-// The oblique impact (run/oblique.hpp) and the batted ball's flight. Along the line of centres
-// the columns above are the run's (acor, bbs: the normal components); these are the ball's
-// whole exit.
-const char *const kOblique = "an oblique impact: -impact_offset, -impact_angle or -ball_spin not 0, or -flight (a "
-                             "head-on hit: "
-                             "exit_speed = bbs, launch_angle 0, no spin)";
-const char *const kFlight  = "with -flight";
-const char *const kObliqueFlexible = "an oblique impact with -impact_tangential_plane flexible (the default; 0 where "
-                                     "no friction force acts)";
-const char *const kObliqueBed      = "an oblique impact on a string bed (-impact_angle, -ball_spin) with "
-                                     "-impact_tangential_plane flexible (0 where no friction force acts)";
-std::vector<ResultColumn> ObliqueColumns()
-{
-  return {
-    Real(
-      "exit_speed", "m/s", &R::exit_speed, ResultOblique, kOblique, [](F f) -> double { return f.oblique->exit.speed; },
-      "the batted ball's speed, normal and tangential parts together (lab frame)"),
-    Real(
-      "launch_angle", "deg", &R::launch_angle, ResultOblique, kOblique,
-      [](F f) -> double { return f.oblique->exit.launch_angle; },
-      "the batted ball's direction from the reversed incoming direction, > 0 upward (on a string bed: from the bed's "
-      "normal, > 0 toward +z)"),
-    Real(
-      "spin", "rad/s", &R::spin, ResultOblique, kOblique, [](F f) -> double { return f.oblique->after.spin; },
-      "the batted ball's spin, > 0 backspin (on a string bed: about x, the sense of a ball leaving toward +z "
-      "rolling on the bed)"),
-    Real(
-      "spin_rpm", "rpm", &R::spin_rpm, ResultOblique, kOblique,
-      [](F f) -> double { return f.oblique->after.spin * 30 / M_PI; }, "the same in revolutions per minute"),
-    Real(
-      "friction_dissipated", "J", &R::friction_dissipated, ResultOblique, kOblique,
-      [](F f) -> double { return f.oblique->contact.dissipated - f.oblique->contact.stiffness_work; },
-      "energy the tangential contact took from the motions: friction's sliding, and the tangential spring's (its "
-      "stiffness follows F_n); its own term, not in energy_error's E (the normal run's)"),
-    Real(
-      "bat_vibration_tangential", "J", &R::bat_vibration_tangential, ResultObliqueFlexible, kObliqueFlexible,
-      [](F f) -> double { return f.oblique->plane_vibration; },
-      "energy left in the bat's vibration in its second plane (across the line of centres) by the friction force; its "
-      "own term, beside friction_dissipated"),
-    Real(
-      "bat_damping_tangential", "J", &R::bat_damping_tangential, ResultObliqueFlexible, kObliqueFlexible,
-      [](F f) -> double { return f.oblique->plane_damped; },
-      "energy the bat's damping (-beam_damping_*) took in its second plane up to the end of the contact; 0 for an "
-      "undamped bat; its own term, beside bat_vibration_tangential"),
-    Real(
-      "strings_slide_peak", "m", &R::strings_slide_peak, ResultObliqueBed, kObliqueBed,
-      [](F f) -> double { return f.oblique->bed_slide_peak; },
-      "the largest sideways slide of the mains under the ball from the frame (in the face's plane, across the mains; "
-      "at the run's steps)"),
-    Real(
-      "strings_inplane_energy_peak", "J", &R::strings_inplane_energy_peak, ResultObliqueBed, kObliqueBed,
-      [](F f) -> double { return f.oblique->bed_energy_peak; },
-      "the largest energy of the mains' vibration in the face's plane (their slide's strain and motion on the "
-      "frame) during the contact"),
-    Real(
-      "strings_inplane_energy_returned", "J", &R::strings_inplane_energy_returned, ResultObliqueBed, kObliqueBed,
-      [](F f) -> double { return f.oblique->bed_energy_peak - f.oblique->plane_vibration; },
-      "what of that peak the mains gave back by the separation (snapback): the peak less the energy left in their "
-      "vibration (bat_vibration_tangential)"),
-    Real(
-      "distance", "m", &R::distance, ResultFlight, kFlight,
-      [](F f) -> double { return f.oblique->flight.landing.distance; },
-      "the batted ball's carry: launch point to landing, horizontal"),
-    Real(
-      "apex", "m", &R::apex, ResultFlight, kFlight, [](F f) -> double { return f.oblique->flight.apex; },
-      "the flight's highest point above the ground"),
-    Real(
-      "hang_time", "s", &R::hang_time, ResultFlight, kFlight,
-      [](F f) -> double { return f.oblique->flight.landing.hang_time; }, "the flight's time from launch to landing"),
-  };
-}
-
 // What the run cost (the stepper's and the driver's counts), the dissipated energy, Eq. (11).
 std::vector<ResultColumn> CostAndLaterColumns()
 {
@@ -533,18 +431,32 @@ std::vector<ResultColumn> CostAndLaterColumns()
 
 std::vector<ResultColumn> BuildTable()
 {
-  std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns(), oblique = ObliqueColumns();
+  std::vector<ResultColumn> t = OutcomeColumns(), more = CostAndLaterColumns();
   t.insert(t.end(), more.begin(), more.end());
-  t.insert(t.end(), oblique.begin(), oblique.end());
-  PetscInt keyed = 0; // the registered parts' columns, last
-  for (const StructurePart *p : StructureParts())
+  PetscInt keyed = 0; // the stages' columns after the contact (along the line of centres the columns
+                      // above are the run's: acor, bbs the normal components), then the parts', last (or
+                      // after the column they name)
+  for (size_t k = 0; k < RunStages().size(); ++k)
+    for (const StageColumn &sc : RunStages()[k]->Columns()) {
+      ResultColumn c{sc.name, sc.unit, sc.description, sc.applies, sc.applies_text};
+      c.stage         = (PetscInt)k;
+      c.stage_compute = sc.compute;
+      c.keyed         = keyed++;
+      t.push_back(c);
+    }
+  for (const StructurePart *p : StructureParts()) {
+    auto at = t.end();
+    if (const char *after = p->ColumnsAfter())
+      at = std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, after); }) + 1;
     for (const PartColumn &pc : p->Columns()) {
       ResultColumn c{pc.name, pc.unit, pc.description, nullptr, p->Presence()};
       c.owner        = p;
       c.part_compute = pc.compute;
       c.keyed        = keyed++;
-      t.push_back(c);
+      c.share        = pc.share;
+      at             = t.insert(at, c) + 1;
     }
+  }
   return t;
 }
 

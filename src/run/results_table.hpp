@@ -8,9 +8,12 @@
 //
 // The results reference docs/results.md is printed from this table (-help_markdown results;
 // `cmake --build --preset dev --target docs` rewrites it, the test docs_generated checks it).
-// A registered structure part's columns (system/structure_part.hpp) follow the table, in
-// registry order, each applying where its part is present (its applies_text the part's
-// Presence()) and stored in ImpactResult::keyed: a part adds its columns in its own file.
+// The columns of the stages after the contact (run/stage.hpp: the oblique impact's exit and
+// spin, the flight's carry) and then a registered structure part's (system/structure_part.hpp)
+// follow the table, in registry order, each applying by its stage's predicate or where its part
+// is present (its applies_text the part's Presence()), stored in ImpactResult::keyed: a stage or
+// a part adds its columns in its own file (a part after the column its ColumnsAfter names, if
+// any: the hands' follow bbcor, their place before).
 // A new column is one row in results_table.cpp and its field in ImpactOutcome (run/impact.hpp);
 // a quantity the measures do not hold yet needs it in the record the driver hands the outcome
 // (run/outcome.hpp), from the events (ContactTally) or the monitors (MonitorPeaks).
@@ -20,6 +23,7 @@
 #include "run/impact.hpp"
 #include "run/measures.hpp"
 #include "run/scenario.hpp"
+#include "run/stage.hpp"
 
 #include <string>
 #include <vector>
@@ -61,16 +65,10 @@ using ResultApplies = bool (*)(const Scenario &sc);
 
 // The predicates of the table (also for messages and tests).
 bool ResultAlways(const Scenario &sc);
-bool ResultNoHeldDof(const Scenario &sc);
-bool ResultOblique(const Scenario &sc); // -impact_offset or -ball_spin not 0, or -flight (run/oblique.hpp)
-bool ResultObliqueFlexible(
-  const Scenario &sc); // the same with the bat flexible in its second plane (-impact_tangential_plane flexible)
-bool ResultObliqueBed(const Scenario &sc); // the same on a string bed (-impact_angle, -ball_spin inside the head)
-bool ResultFlight(const Scenario &sc);     // -flight          // no end clamped or pinned, no clamped region, no pivot
+bool ResultNoHeldDof(const Scenario &sc);         // no end clamped or pinned, no clamped region, no pivot
 bool ResultMomentumInvariant(const Scenario &sc); // no held dof, no grip, no mass-proportional damping
 bool ResultFreeBeamAtRest(const Scenario &sc);    // no held dof, no grip, no swing (Eq. 11)
 bool ResultFreePivot(const Scenario &sc);         // -beam_pivot and no other support or grip: the rig turns freely
-bool ResultGripped(const Scenario &sc);           // -grip
 bool ResultStringBed(const Scenario &sc);         // -strings_frame held or beam
 bool ResultTwist(const Scenario &sc);             // -beam_torsion
 bool ResultBarrelWall(const Scenario &sc);        // -barrel_hoop_frequency or -beam_shell
@@ -97,10 +95,13 @@ struct ResultColumn {
   PetscReal ImpactResult::*real = nullptr;
   PetscInt ImpactResult::*count = nullptr;
   PetscBool ImpactResult::*flag = nullptr;
-  // A registered structure part's column: its part, how it is computed, and its index in
-  // ImpactResult::keyed (-1 for the rest).
+  // A registered structure part's column: its part and how it is computed; a stage's after the
+  // contact (run/stage.hpp): its index in the stages' registry and how it is computed; either's
+  // index in ImpactResult::keyed (-1 for the rest).
   const StructurePart *owner                       = nullptr;
   double (*part_compute)(const PartOutputFacts &f) = nullptr;
+  PetscInt stage                                   = -1;
+  double (*stage_compute)(const StageFacts &f)     = nullptr;
   PetscInt keyed                                   = -1;
 
   bool   Applies(const Scenario &sc) const;    // applies(sc), or the owner present in sc.beam

@@ -87,7 +87,7 @@ bool BeamFactorCreate(const BeamSystem &sys, BeamFactor *F, std::string *why)
       F->dof.push_back(d);
       F->mass.push_back(sys.mass[d]);
     }
-  if (sys.Gripped()) return Refuse(why, "the hands' springs are not strain terms");
+  if (sys.TiedToFrame()) return Refuse(why, "the hands' springs are not strain terms");
   std::vector<SEntry> entries;
   for (const StrainTerm &t : sys.strain) {
     bool touches = false;

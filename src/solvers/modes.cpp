@@ -350,7 +350,7 @@ PetscErrorCode BeamModesCompute(MPI_Comm comm, const BeamSystem &op, PetscInt co
 
   PetscFunctionBeginUser;
   // The rigid-mode test and the frequencies from the strain energy leave a grip's springs out.
-  PetscCheck(!op.Gripped(), comm, PETSC_ERR_SUP,
+  PetscCheck(!op.TiedToFrame(), comm, PETSC_ERR_SUP,
              "the modes of a beam held by the hands (-grip) are not computed yet: drop -grip for -task modes");
   PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "BeamModesCompute: out must not be NULL");
   PetscCheck(op.ndof >= 3 && op.frequency_unit > 0 && op.L > 0 && (PetscInt)op.mass.size() == op.ndof &&

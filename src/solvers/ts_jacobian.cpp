@@ -52,6 +52,25 @@ PetscErrorCode JacobianLUSetUp(PC pc, PetscMPIInt size)
   PetscFunctionReturn(0);
 }
 
+// The LU options as the program's own factor will read them at its first solve (JacobianLUSetUp,
+// after the set-up's check of unused options): read now, so that they count as used, and
+// superlu_dist on more than one rank refused before any step.
+PetscErrorCode JacobianLUOptionsRead(MPI_Comm comm, PetscMPIInt size)
+{
+  char      type[64] = "", ordering[64] = "";
+  PetscBool given;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-pc_factor_mat_ordering_type", ordering, sizeof ordering, &given));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-pc_factor_mat_solver_type", type, sizeof type, &given));
+  PetscCheck(size == 1 || !given || std::string(type) != MATSOLVERSUPERLU_DIST, comm, PETSC_ERR_SUP,
+             "-pc_factor_mat_solver_type superlu_dist is refused on %d ranks: PETSc 3.18's SuperLU_DIST interface "
+             "frees its process grid twice and corrupts the heap; use mumps (the default on more than one rank) or "
+             "superlu_dist on one rank",
+             (int)size);
+  PetscFunctionReturn(0);
+}
+
 // The coupling vector (dc/du over the coupled beam dofs and the ball, last) and its columns.
 struct CouplingBlock {
   PetscInt  n = 0; // the coupling's entries and the ball
@@ -624,6 +643,7 @@ PetscErrorCode TSJacobianInstall(TSProblem &P, TS ts)
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCSHELL, &shell));
   PetscCall(PetscObjectTypeCompare((PetscObject)ts, TSIRK, &irk));
   P.jac.rank_one = shell && !irk; // irk's shell is the stage LU (irk_stage_pc.hpp), built from the assembled J
+  if (P.jac.rank_one) PetscCall(JacobianLUOptionsRead(P.L.comm, P.L.size)); // the program's LU, at its first solve
   if (!P.jac.rank_one) {
     PetscCall(TSJacobianCreate(P));
     PetscCall(SetJacobianOnTS(P, ts));

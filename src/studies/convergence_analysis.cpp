@@ -1,6 +1,8 @@
 // -task convergence, the analysis. See convergence_analysis.hpp.
 #include "studies/convergence_analysis.hpp"
 
+#include "run/results_table.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -94,9 +96,10 @@ void ConvergenceMeasureAgainst(const ConvergenceReference &ref, ConvergenceRun *
     run->exit_speed_error = run->launch_angle_error = run->spin_error = NaN;
     return;
   }
-  run->exit_speed_error      = std::abs(r.exit_speed - R.exit_speed) / std::abs(R.exit_speed); // NaN unless oblique
-  run->launch_angle_error    = std::abs(r.launch_angle - R.launch_angle);
-  run->spin_error            = std::abs(r.spin - R.spin) / std::abs(R.spin);
+  auto col                   = [](const char *name, const ImpactResult &x) { return ImpactResultColumn(name)->Get(x); };
+  run->exit_speed_error      = std::abs(col("exit_speed", r) - col("exit_speed", R)) / std::abs(col("exit_speed", R));
+  run->launch_angle_error    = std::abs(col("launch_angle", r) - col("launch_angle", R)); // NaN unless oblique
+  run->spin_error            = std::abs(col("spin", r) - col("spin", R)) / std::abs(col("spin", R));
   run->acor_error            = std::abs(r.acor - R.acor);
   run->contact_time_error    = std::abs(r.contact_time - R.contact_time) / R.contact_time;
   run->peak_force_error      = std::abs(r.peak_force - R.peak_force) / R.peak_force;

@@ -48,8 +48,8 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S.held           = std::move(d.held);
   S.strain         = std::move(d.strain);
   S.frequency_unit = d.frequency_unit;
-  ForceOperatorCreate(p, &S); // the force terms (a grip adds the hands' mass)
-  StructurePartsFinish(&S);   // the parts' force terms after them, their rigid points
+  ForceOperatorCreate(p, &S); // the force terms
+  StructurePartsFinish(&S);   // the parts' masses (the hands), force terms after them, their rigid points
   BeamSystemAssemble(&S);
   return true;
 }

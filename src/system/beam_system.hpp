@@ -59,7 +59,13 @@ struct BeamSystem {
   PetscInt  Dof(PetscInt node, PetscInt field = 0) const { return node * fields + field; }
   PetscReal NodeX(PetscInt node) const { return node * h; }
   bool      Damped() const { return forces.damped; }
-  bool      Gripped() const { return forces.Find("grip") != nullptr; }
+  // Whether a force term ties the structure to the swing's frame (ForceTerm::TiesToFrame: the hands).
+  bool TiedToFrame() const
+  {
+    for (const auto &t : forces.terms)
+      if (t->TiesToFrame()) return true;
+    return false;
+  }
   // The field of the frame's roll phi (rad): the first of the part present that rolls
   // (PartParams::Rolls, -beam_torsion); -1 without. A lookup: keep it out of per-dof loops.
   PetscInt RollField() const

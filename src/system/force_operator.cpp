@@ -9,10 +9,9 @@
 namespace beamimpact {
 
 // The terms, one file each: the term for these parameters, or nullptr when the beam does not
-// have it (a term may add to the masses: the hands).
+// have it. (A structure part's terms, the hands', come from its part: StructurePartsFinish.)
 std::shared_ptr<const ForceTerm> ElasticTermCreate(const BeamParams &p, BeamSystem *sys);     // force_elastic.cpp
 std::shared_ptr<const ForceTerm> MassDampingTermCreate(const BeamParams &p, BeamSystem *sys); // force_mass_damping.cpp
-std::shared_ptr<const ForceTerm> GripTermCreate(const BeamParams &p, BeamSystem *sys);        // force_grip.cpp
 
 namespace {
 
@@ -25,7 +24,6 @@ struct ForceTermEntry {
 const ForceTermEntry kForceTerms[] = {
   {"elastic", ElasticTermCreate},
   {"mass-damping", MassDampingTermCreate},
-  {"grip", GripTermCreate},
 };
 
 inline PetscReal &At(PetscReal *a, PetscInt d, PetscInt F, PetscInt stride)

@@ -12,8 +12,10 @@
 //                                           their viscous (Kelvin-Voigt) part, the stiffness
 //                                           part beta K of Rayleigh damping, in one product
 //   mass damping  (force_mass_damping.cpp)  alpha M v: the mass part of Rayleigh damping
-//   grip          (force_grip.cpp)          k_i (y_i - v_f,i t) + c_i (v_i - v_f,i) on the
-//                                           handle's dofs: the hands, tied to the frame
+//
+// and after them the structure parts' terms (system/structure_part.hpp), in registry order: the
+// hands' k_i (y_i - v_f,i t) + c_i (v_i - v_f,i) on the handle's dofs, tied to the frame (the
+// hands' part in system/parts/), the absorber's dashpot;
 //
 // so K = df/dy, C = df/dv (Rayleigh: C = alpha M + beta K_elastic, plus the grip's c_i) and the
 // drive f(0, 0, t). Every consumer calls this operator: the TS residuals of every formulation

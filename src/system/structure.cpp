@@ -9,7 +9,10 @@
 namespace beamimpact {
 
 // The parts, one file each in system/parts/: a part is its declaration here and its line in
-// PartList, last (the order appends their fields: the dof numbering).
+// PartList, last (the order appends their fields: the dof numbering). The hands come first: they
+// have no fields, their force term is summed before the absorber's, their summary line precedes
+// the roll's, and their check against the roll (-grip_torsion_*) is made once all are configured.
+const StructurePart &GripPart();     // system/parts/grip.cpp
 const StructurePart &RollPart();     // system/parts/roll.cpp
 const StructurePart &WallPart();     // system/parts/wall.cpp
 const StructurePart &AbsorberPart(); // system/parts/absorber.cpp
@@ -20,6 +23,7 @@ namespace {
 std::vector<const StructurePart *> PartList()
 {
   std::vector<const StructurePart *> v;
+  v.push_back(&GripPart());
   v.push_back(&RollPart());
   v.push_back(&WallPart());
   v.push_back(nullptr);
@@ -77,6 +81,7 @@ void StructurePartsFinish(BeamSystem *sys)
 {
   PetscInt slot = 0;
   for (PartInstance &s : sys->parts) {
+    s.part->AddMasses(s, sys);
     s.part->ForceTerms(s, *sys, &sys->forces.terms);
     s.part->RigidPoints(s, &sys->rigid_points);
     s.slot0 = slot;
@@ -101,6 +106,37 @@ bool StructurePartsPeaks(const BeamSystem &sys)
 {
   for (const PartInstance &s : sys.parts)
     if (s.slots > 0 || s.part->Peaks()) return true;
+  return false;
+}
+
+void StructurePartsMeasureFrame(const BeamSystem &sys, const FrameMeasures &fm, PetscReal *slot)
+{
+  for (const PartInstance &s : sys.parts) s.part->MeasureFrame(s, fm, slot + s.slot0);
+}
+
+std::string StructurePartsRefusalWith(const BeamParams &p)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name())) {
+      const std::string why = part->RefusalWith(*q, p);
+      if (!why.empty()) return why;
+    }
+  return "";
+}
+
+bool StructurePartsTieToFrame(const BeamParams &p)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name()))
+      if (part->TiesToFrame(*q)) return true;
+  return false;
+}
+
+bool StructurePartsMonitor(const BeamParams &p)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name()))
+      if (part->Monitors(*q)) return true;
   return false;
 }
 

@@ -6,11 +6,12 @@
 // its measures of a state and the results columns, series and summary line computed from them.
 // The system's build, the options' reader, the measures, the recorder, the outcome, the results
 // table, the run record, -help and the summary loop over the registered parts: no code outside
-// a part's file names it. The registered parts: the frame's roll (parts/roll.cpp), the barrel
-// wall (parts/wall.cpp: the hoop oscillator or the shell) and the tuned absorber
-// (parts/absorber.cpp). (The parts that predate the registry and have not moved yet, the string
-// bed and the grip, are still built by BeamSystemBuild itself, at their place in the registry's
-// order: after the wall, before the absorber.)
+// a part's file names it. The registered parts: the hands (parts/grip.cpp: no fields, a force
+// term tying the handle to the swing's frame), the frame's roll (parts/roll.cpp), the barrel wall
+// (parts/wall.cpp: the hoop oscillator or the shell) and the tuned absorber (parts/absorber.cpp).
+// (The string bed, which predates the registry and has not moved yet, is still built by
+// BeamSystemBuild itself, at its place in the registry's order: after the wall, before the
+// absorber.)
 //
 // How a part is added: docs/design.md, "Adding a structure part".
 #pragma once
@@ -62,11 +63,23 @@ constexpr int kMaxPartSlots = 8; // the measure slots of all present parts toget
 // add the ranks' shares). `peak`: the recorder keeps its largest |value| over the steps (NaN
 // where no stepper measured it: the modal reference); `series`: -monitor_energy records it per
 // step under /series/<name>.
+// `own_monitor`: its series is recorded under the part's own monitor row (StructurePart::Monitors:
+// the hands' own), not -monitor_energy.
 struct PartSlot {
   const char *name; // "absorber_energy"
   const char *unit; // "J"
-  bool        peak   = false;
-  bool        series = false;
+  bool        peak        = false;
+  bool        series      = false;
+  bool        own_monitor = false;
+};
+
+// The force operator's frame terms of a state (system/force_operator.hpp: ForceOperatorEnergy,
+// ForceOperatorFrameMomentum, ForceOperatorFrameReaction; run/measures.hpp holds them): what a
+// part tying the structure to the swing's frame measures (StructurePart::MeasureFrame).
+struct FrameMeasures {
+  PetscReal stored = 0;            // J, the energy stored in the force terms other than the elastic one
+  PetscReal work   = 0;            // J, the work the frame has done on the structure since t = 0
+  PetscReal force = 0, moment = 0; // N, N m about x = 0: the force of the structure on the frame
 };
 
 // A state as a part's Measure reads it: dof d of y at y[(d / fields) * ys + d % fields] (by global
@@ -81,14 +94,19 @@ struct PartOutputFacts {
   const PetscReal  *start = nullptr, *end = nullptr, *peak = nullptr;
   PetscReal         E_in   = 0; // J, the energy brought into the impact (the fractions' denominator)
   const PartParams *params = nullptr;
+  // The largest |force of the structure on the swing's frame| over the steps (N, FrameMeasures::
+  // force) and when (s): 0 where no part ties to the frame.
+  PetscReal frame_force_peak = 0, frame_force_peak_time = 0;
 };
 
 // A results column a part registers: name, unit ("1": dimensionless), description (one line) and
 // how the outcome computes it. It applies where the part is present (StructurePart::Presence),
-// NaN elsewhere.
+// NaN elsewhere. `share`: a share of E_in, its short name in the summary's energy line (nullptr:
+// not a share; run/results_table.hpp's ResultColumn::share).
 struct PartColumn {
   const char *name, *unit, *description;
   double (*compute)(const PartOutputFacts &f);
+  const char *share = nullptr;
 };
 
 // What a part's Resolve sees of the impact: the ball, its approach speed and the point.
@@ -129,8 +147,16 @@ public:
   {
     return true;
   }
+  // Why it cannot be with the parts present in beam (all configured: a check against another
+  // part), naming the option and its value; "" when it can.
+  virtual std::string RefusalWith(const PartParams &, const BeamParams &) const { return ""; }
   // Why the modal reference (-reference modal) cannot carry it, or nullptr.
   virtual const char *ModalRefusal(const PartParams &) const { return nullptr; }
+  // Whether it ties the structure to the swing's frame (the hands): momentum is then not an
+  // invariant, nor is the beam free at rest. No by default.
+  virtual bool TiesToFrame(const PartParams &) const { return false; }
+  // Whether its own monitor row was given (its Slots() with own_monitor record their series).
+  virtual bool Monitors(const PartParams &) const { return false; }
   // -- the system ---------------------------------------------------------------------------------
   // Appends its fields to d (BeamDiscretizationWiden: masses, held flags, strain terms); returns
   // how many (0: none).
@@ -150,6 +176,8 @@ public:
                       ContactCoupling *) const
   {
   }
+  // What it adds to the masses of the dofs (kg: the hands), before its force terms.
+  virtual void AddMasses(const PartInstance &, BeamSystem *) const { }
   // Its force terms, summed after the registered ones of force_operator.cpp.
   virtual void ForceTerms(const PartInstance &, const BeamSystem &,
                           std::vector<std::shared_ptr<const ForceTerm>> *) const
@@ -176,7 +204,12 @@ public:
   virtual std::vector<PartSlot> Slots() const { return {}; }
   // slot[k] += its k-th slot's share of the owned dofs [s.d0, s.d1).
   virtual void Measure(const PartInstance &, const BeamSystem &, const PartState &, PetscReal *) const { }
+  // slot[k] set from the force operator's frame terms of the state (after the ranks' sums).
+  virtual void                    MeasureFrame(const PartInstance &, const FrameMeasures &, PetscReal *) const { }
   virtual std::vector<PartColumn> Columns() const { return {}; }
+  // The results table's column its columns follow (a part that predates the registry keeps its
+  // columns' place); nullptr: after the table, in registry order.
+  virtual const char *ColumnsAfter() const { return nullptr; }
   // The results columns its summary reads beyond its own (by name, any module's), after them.
   virtual std::vector<const char *> SummaryColumns() const { return {}; }
   // The run summary's line (without newline; "" for none) from its columns' values, in Columns()'s
@@ -199,8 +232,8 @@ const StructurePart                      *StructurePartFind(const char *name); /
 // instances built before it.
 std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d,
                                               const std::function<void(const std::vector<PartInstance> &)> &older);
-// Each present part's force terms appended to sys->forces.terms and its rigid points to
-// sys->rigid_points; its measure slots numbered (BeamSystemBuild, before the assembly).
+// Each present part's masses added, its force terms appended to sys->forces.terms and its rigid
+// points to sys->rigid_points; its measure slots numbered (BeamSystemBuild, before the assembly).
 void StructurePartsFinish(BeamSystem *sys);
 // The measure slots of the present parts together (<= kMaxPartSlots).
 PetscInt StructurePartSlotCount(const BeamSystem &sys);
@@ -208,7 +241,15 @@ PetscInt StructurePartSlotCount(const BeamSystem &sys);
 void StructurePartsMeasure(const BeamSystem &sys, const PartState &s, PetscReal *slot);
 // Whether a present part has peaks the recorder follows (Peaks or measure slots).
 bool StructurePartsPeaks(const BeamSystem &sys);
+// slot[k] set by every present part from the frame terms fm (its slots at slot0 + k).
+void StructurePartsMeasureFrame(const BeamSystem &sys, const FrameMeasures &fm, PetscReal *slot);
 // Why the modal reference cannot carry the parts present in p ("" when it can).
 std::string StructurePartsModalRefusal(const BeamParams &p);
+// Why a part present in p cannot be with the others (StructurePart::RefusalWith; "" when none).
+std::string StructurePartsRefusalWith(const BeamParams &p);
+// Whether a part present in p ties the structure to the swing's frame (StructurePart::TiesToFrame).
+bool StructurePartsTieToFrame(const BeamParams &p);
+// Whether a part present in p had its own monitor row given (StructurePart::Monitors).
+bool StructurePartsMonitor(const BeamParams &p);
 
 } // namespace beamimpact
