@@ -29,6 +29,19 @@ namespace beamimpact {
 
 namespace {
 
+// The LU's solver type on size ranks (nullptr: none given): SuperLU_DIST on more than one rank
+// refused (the reason below).
+PetscErrorCode SuperluDistCheck(MPI_Comm comm, PetscMPIInt size, const char *type)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(size == 1 || !type || std::string(type) != MATSOLVERSUPERLU_DIST, comm, PETSC_ERR_SUP,
+             "-pc_factor_mat_solver_type superlu_dist is refused on %d ranks: PETSc 3.18's SuperLU_DIST interface "
+             "frees its process grid twice and corrupts the heap; use mumps (the default on more than one rank) or "
+             "superlu_dist on one rank",
+             (int)size);
+  PetscFunctionReturn(0);
+}
+
 // The LU of a Jacobian: -pc_factor_mat_ordering_type and -pc_factor_mat_solver_type read (mumps
 // on more than one rank unless another is given). SuperLU_DIST on more than one rank is refused:
 // PETSc 3.18's interface frees its process grid twice when the factor and then the DM's
@@ -43,12 +56,7 @@ PetscErrorCode JacobianLUSetUp(PC pc, PetscMPIInt size)
   if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscCall(PCSetFromOptions(pc));
   PetscCall(PCFactorGetMatSolverType(pc, &type));
-  PetscCheck(size == 1 || !type || std::string(type) != MATSOLVERSUPERLU_DIST, PetscObjectComm((PetscObject)pc),
-             PETSC_ERR_SUP,
-             "-pc_factor_mat_solver_type superlu_dist is refused on %d ranks: PETSc 3.18's SuperLU_DIST interface "
-             "frees its process grid twice and corrupts the heap; use mumps (the default on more than one rank) or "
-             "superlu_dist on one rank",
-             (int)size);
+  PetscCall(SuperluDistCheck(PetscObjectComm((PetscObject)pc), size, type));
   PetscFunctionReturn(0);
 }
 
@@ -63,11 +71,7 @@ PetscErrorCode JacobianLUOptionsRead(MPI_Comm comm, PetscMPIInt size)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetString(NULL, NULL, "-pc_factor_mat_ordering_type", ordering, sizeof ordering, &given));
   PetscCall(PetscOptionsGetString(NULL, NULL, "-pc_factor_mat_solver_type", type, sizeof type, &given));
-  PetscCheck(size == 1 || !given || std::string(type) != MATSOLVERSUPERLU_DIST, comm, PETSC_ERR_SUP,
-             "-pc_factor_mat_solver_type superlu_dist is refused on %d ranks: PETSc 3.18's SuperLU_DIST interface "
-             "frees its process grid twice and corrupts the heap; use mumps (the default on more than one rank) or "
-             "superlu_dist on one rank",
-             (int)size);
+  PetscCall(SuperluDistCheck(comm, size, given ? type : nullptr));
   PetscFunctionReturn(0);
 }
 
