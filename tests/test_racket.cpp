@@ -17,6 +17,7 @@
 #include "model/shell.hpp"
 #include "model/torsion.hpp"
 #include "run/impact.hpp"
+#include "run/impact_point.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/string_bed_modes.hpp"
 #include "system/beam_system.hpp"
@@ -339,6 +340,7 @@ TEST(Racket, StiffMasslessBedIsTheFrame)
   for (PetscReal z : {0.0, 0.05}) {
     Scenario bare = StrungRacket(0.15, z);
     bare.beam.strings = StringBedParams(); // no bed: the ball strikes the frame at (x, z)
+    bare.beam.parts.Set("bed", nullptr);
     const ImpactResult frame = RunWith(PETSC_COMM_WORLD, bare, {{"-ts_type", "modal"}});
     PetscReal          dtc[2];
     int                k = 0;
@@ -446,7 +448,8 @@ TEST(BedLoad, MirrorImagesMirrorAndMomentaAreKept)
   for (const GridCase &gc : grids) {
     Extra e = {{"-beam_nodes", gc.nodes}, {"-strings_patch_radius", gc.patch}};
     if (*gc.width) e.push_back({"-strings_nodes_width", gc.width});
-    const BedGrid g = SystemOf(StrungRacket(0.15, 0.05, e).beam).bed;
+    const BeamParams beam = StrungRacket(0.15, 0.05, e).beam;
+    const BedGrid    g    = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
     for (int k = 0; k < 4; ++k) { // the head: centre 0.175 m, 0.32 x 0.24 m; a side near the rim, inside, a cell's centre
       const PetscReal rho = k == 0 ? 0.93 + 0.05 * rng.Next() : 0.2 + 0.6 * rng.Next(), th = (0.2 + 0.6 * rng.Next()) * M_PI;
       PetscReal       x = 0.175 + 0.16 * rho * std::cos(th), z = 0.12 * rho * std::sin(th);
@@ -508,6 +511,7 @@ TEST(Racket, CoarseImplicitStepsLocateTheEvents)
 {
   Scenario sc                  = StrungRacket(0.15, 0.05);
   sc.beam.strings.patch_radius = ShellContactRadiusDefault(sc.ball, sc.ball.speed); // 7.5 mm, below h = 1 cm
+  sc.beam                      = test::WithPart(sc.beam, "bed", {});                // the bed part takes it
   sc.impact.window             = 0;
   const ImpactResult exact     = RunWith(PETSC_COMM_WORLD, sc, {{"-ts_type", "modal"}});
   for (const Extra &ts : {Extra{{"-ts_type", "cn"}, {"-ts_dt", "5e-5"}, {"-ts_adapt_type", "none"}}, Extra{{"-ts_type", "alpha2"}, {"-ts_dt", "2e-4"}, {"-ts_adapt_type", "none"}}}) {
@@ -515,4 +519,61 @@ TEST(Racket, CoarseImplicitStepsLocateTheEvents)
     EXPECT_EQ(1, r.contacts) << ts[0].second;
     EXPECT_NEAR(r.acor, exact.acor, 1e-3) << ts[0].second;
   }
+}
+
+// The string bed is a registered structure part (system/parts/bed.cpp): present only with
+// -strings_frame, nz = round(width / h_x) + 1 fields per node after the roll's, the strings' mass
+// sigma h_x h_z per free node (sigma = lambda/s_m + lambda/s_c), a displaced node's strain energy
+// the four links' 1/2 delta^2 (2 N_x h_z/h_x + 2 N_z h_x/h_z) (N_x = T/s_m, N_z = T/s_c), the
+// ball's weights 1 over the patch with their first moments the point's, the rigid body's share
+// sigma pi a b, and its family label "the string bed" (racket-strung.opts' numbers).
+TEST(BedPart, RegistryGivesTheStringBed)
+{
+  ASSERT_NE(StructurePartFind("bed"), nullptr);
+  const Scenario sc = StrungRacket(0.15, 0.05, {{"-strings_patch_radius", "0.02"}});
+  BeamParams     bare = sc.beam;
+  bare.strings      = StringBedParams(); // -strings_frame none: the part's Configure leaves it out
+  bare              = test::WithPart(bare, "bed", {});
+  EXPECT_FALSE(bare.parts.Has("bed"));
+  EXPECT_TRUE(test::WithPart(sc.beam, "bed", {}).parts.Has("bed"));
+  const BeamSystem    sys = SystemOf(sc.beam), plain = SystemOf(bare);
+  const PartInstance *bed = test::PartIn(sys, "bed");
+  ASSERT_NE(bed, nullptr);
+  EXPECT_EQ(test::PartIn(plain, "bed"), nullptr);
+  const PetscReal L = 0.72, hx = L / (sys.nodes - 1), b = 0.12, T = 250, lambda = 1.51e-3, sm = 0.015, sc_ = 0.0179;
+  const PetscInt  nz = (PetscInt)std::lround(2 * b / hx) + 1;
+  const PetscReal hz = 2 * b / (nz - 1), sigma = lambda / sm + lambda / sc_;
+  EXPECT_EQ(bed->count, nz);
+  EXPECT_EQ(sys.fields, plain.fields + nz);
+  EXPECT_EQ(bed->first, sys.RollField() + 1) << "dof order: beam, roll, bed";
+  const PetscInt i = (PetscInt)std::lround(0.175 / hx), j = nz / 2, d = sys.Dof(i, bed->first + j); // near the centre
+  EXPECT_NEAR(sys.DofZ(d), -b + j * hz, 1e-15);
+  EXPECT_NEAR(sys.mass[d], sigma * hx * hz, 1e-12 * sigma * hx * hz);
+  EXPECT_STREQ(BeamSystemPartWords(sys, d), "the string bed");
+  std::vector<PetscReal> y(sys.ndof, 0.0), v(sys.ndof, 0.0), e(sys.ndof, 0.0);
+  const PetscReal        delta = 1e-3;
+  y[d]                         = delta;
+  PetscReal stored[kParts], kinetic[kParts];
+  BeamSystemPartEnergies(sys, y.data(), sys.fields, v.data(), sys.fields, 0, sys.ndof, stored, kinetic);
+  const PetscReal U = 0.5 * delta * delta * (2 * (T / sm) * hz / hx + 2 * (T / sc_) * hx / hz);
+  EXPECT_NEAR(stored[(int)Part::Bed], U, 1e-12 * U);
+  EXPECT_EQ(stored[(int)Part::Beam] + stored[(int)Part::Twist], 0.0);
+  e[d] = 1;
+  EXPECT_EQ(BeamSystemDominantPart(sys, nullptr, e.data(), sys.ndof, nullptr), Part::Bed) << "-task modes' family";
+  const ContactCoupling g = BeamSystemCoupling(sys, 0.15, 0.05); // the ball's disc on the bed's free nodes
+  PetscReal             w = 0, wx = 0, wz = 0;
+  for (PetscInt q = 0; q < g.n; ++q) {
+    EXPECT_TRUE(sys.Face(g.dof[q] % sys.fields)) << "entry " << q << ": inside the head every node is the bed's";
+    w += g.w[q], wx += g.w[q] * sys.NodeX(g.dof[q] / sys.fields), wz += g.w[q] * sys.DofZ(g.dof[q]);
+  }
+  EXPECT_GT(g.n, 4);
+  EXPECT_NEAR(w, 1.0, 1e-14);
+  EXPECT_NEAR(wx, 0.15, 1e-14);
+  EXPECT_NEAR(wz, 0.05, 1e-14);
+  EXPECT_TRUE(ImpactOnBed(sc.beam, 0.15, 0.05));
+  EXPECT_FALSE(ImpactOnBed(sc.beam, 0.15, 0.13)); // past the head's half-width
+  EXPECT_EQ(ImpactPointLocate(sc.beam, 0.15, 0.13), ImpactPointWhere::OffFace);
+  EXPECT_EQ(ImpactPointLocate(bare, 0.15, 0.005), ImpactPointWhere::Movable) << "a bare frame: within its section";
+  const PetscReal added = BeamRigidBodyOf(sc.beam).mass - BeamRigidBodyOf(bare).mass;
+  EXPECT_NEAR(added, sigma * PETSC_PI * 0.16 * b, 1e-9 * added) << "sigma times the ellipse's area pi a b";
 }

@@ -126,6 +126,24 @@ PetscErrorCode StageSummary(MPI_Comm comm, const Scenario &sc, const ImpactResul
 
 } // namespace
 
+// Each registered part present: its summary line (first: those before the pivot rig's lines).
+static PetscErrorCode PartSummaries(MPI_Comm comm, const Scenario &sc, const ImpactResult &r, bool first)
+{
+  PartPoint at;
+  at.ball = &sc.ball, at.x = sc.impact.x, at.z = sc.impact.z;
+  PetscFunctionBeginUser;
+  for (const StructurePart *part : StructureParts()) {
+    const PartParams *q = sc.beam.parts.Find(part->Name());
+    if (!q || part->SummaryFirst() != first) continue;
+    std::vector<double> values;
+    for (const PartColumn &c : part->Columns()) values.push_back(ImpactResultColumn(c.name)->Get(r));
+    for (const char *name : part->SummaryColumns()) values.push_back(ImpactResultColumn(name)->Get(r));
+    const std::string line = part->SummaryAt(*q, values, at);
+    if (!line.empty()) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
 {
   PetscFunctionBeginUser;
@@ -164,12 +182,7 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                           (double)sc.swing.bat_speed, (double)sc.swing.bat_angular_velocity, (double)r.bbs,
                           (double)r.collision_efficiency, (double)r.bat_speed_end, (double)r.bat_angular_velocity_end));
   PetscCall(StageSummary(comm, sc, r));
-  if (sc.beam.strings.On())
-    PetscCall(PetscPrintf(comm,
-                          "strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its "
-                          "energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)\n",
-                          (double)sc.impact.x, (double)sc.impact.z, (double)r.bed_deflection_peak,
-                          (double)r.bed_energy_peak, (double)r.bed_energy_end, (double)r.bed_fraction));
+  PetscCall(PartSummaries(comm, sc, r, true)); // the bed's line keeps its place
   if (ResultFreePivot(sc)) {
     const PivotRig rig = PivotRigOf(BeamRigidBodyOf(sc.beam), sc.beam.pivot_x, sc.ball.mass, r.x);
     PetscCall(
@@ -183,15 +196,7 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
                           "no recoil factor or BBCOR is reported (NaN in /results: they describe a "
                           "rig free to turn about its pivot); e_A %.6f\n",
                           (double)sc.beam.pivot_x, PivotHeldText(sc).c_str(), (double)r.collision_efficiency));
-  for (const StructurePart *part : StructureParts()) { // each registered part present: its line
-    const PartParams *q = sc.beam.parts.Find(part->Name());
-    if (!q) continue;
-    std::vector<double> values;
-    for (const PartColumn &c : part->Columns()) values.push_back(ImpactResultColumn(c.name)->Get(r));
-    for (const char *name : part->SummaryColumns()) values.push_back(ImpactResultColumn(name)->Get(r));
-    const std::string line = part->Summary(*q, values);
-    if (!line.empty()) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
-  }
+  PetscCall(PartSummaries(comm, sc, r, false));
   PetscFunctionReturn(0);
 }
 
@@ -200,16 +205,13 @@ PetscErrorCode PrintBeamBody(MPI_Comm comm, const BeamParams &beam)
 {
   const BeamRigidBody b = BeamRigidBodyOf(beam);
   PetscFunctionBeginUser;
-  if (beam.strings.On()) {
-    const StringBedParams &s = beam.strings;
-    const Membrane         m = StringBedMembrane(s);
-    PetscCall(
-      PetscPrintf(comm,
-                  "strings: %s %g x %g m, N_x %.6g N/m, N_z %.6g N/m, sigma %.4g kg/m^2, the ball's disc %.4g m, %s\n",
-                  HeadShapeName(s.shape), (double)s.head_length, (double)s.head_width, (double)m.N_x, (double)m.N_z,
-                  (double)m.sigma, (double)s.patch_radius, s.Held() ? "in a held frame" : "on the beam's frame"));
-    if (s.Held()) PetscFunctionReturn(0); // the frame is not a body
-  }
+  bool body = true; // a part's own line first (the bed's); a held frame is not a body
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = beam.parts.Find(part->Name())) {
+      const std::string line = part->Heading(*q, &body);
+      if (!line.empty()) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+    }
+  if (!body) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(comm,
                         "beam: %s section%s%s, mass %.4f kg, centre of mass %.4f m from x = 0, moment of inertia %.5f "
                         "kg m^2 about it, %.5f kg m^2 about x = 0",

@@ -518,17 +518,6 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   PetscFunctionReturn(0);
 }
 
-// What needs the frame's roll (a part that rolls, PartParams::Rolls: -beam_torsion), checked once
-// the parts are read: a string bed on the frame (the hands' hold on it: the grip part's RefusalWith).
-PetscErrorCode RollNeedsCheck(MPI_Comm comm, const BeamParams &p)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(!p.strings.On() || p.strings.Held() || p.parts.Rolls(), comm, PETSC_ERR_ARG_WRONG,
-             "-strings_frame beam needs the frame's roll: give -beam_torsion (with its G J and rho J) so that the head "
-             "can roll under an off-centre hit");
-  PetscFunctionReturn(0);
-}
-
 // A racket's string bed (-strings_frame, read only when given): held, the frame is the head's
 // outline held still (a beam of the head's length on the bed's columns, clamped everywhere); beam,
 // the beam is the frame, its head inside the beam and rolling with it.
@@ -618,7 +607,7 @@ PetscErrorCode StructurePartsFromOptions(MPI_Comm comm, BeamParams *p)
     PartOptionValues                  v;
     std::shared_ptr<const PartParams> q;
     std::string                       why;
-    PetscCall(StructurePartOptionsRead(comm, *part, &v));
+    if (!part->ReadWithBeam()) PetscCall(StructurePartOptionsRead(comm, *part, &v));
     PetscCheck(part->Configure(v, *p, &q, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
     p->parts.Set(part->Name(), q);
     const std::string note = q ? part->Note(*q, *p) : ""; // beyond the part's range: say so, once
@@ -686,7 +675,6 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
     }
   }
   PetscCall(StructurePartsFromOptions(comm, p)); // on the beam as held (the pivot on its node)
-  PetscCall(RollNeedsCheck(comm, *p));
   PetscFunctionReturn(0);
 }
 

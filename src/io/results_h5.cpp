@@ -391,10 +391,7 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
 
 // What /snapshots holds of the series S: the beam's deflection always, the string bed's and the
 // barrel wall's when recorded (the conditions H5WriteSnapshots writes them on).
-static bool SnapshotsHaveBed(const ImpactSeries &S, const BeamParams &beam)
-{
-  return !S.snapshot_bed.empty() && beam.strings.On();
-}
+static bool SnapshotsHaveBed(const ImpactSeries &S) { return !S.snapshot_bed.empty(); } // a bed's fields (FieldZ)
 static bool SnapshotsHaveWall(const ImpactSeries &S) { return !S.snapshot_wall.empty() && !S.snapshot_wall_n.empty(); }
 
 // /snapshots of one run: the nodes x, the times and the deflection y [time][x]; a string bed's
@@ -411,7 +408,7 @@ static PetscErrorCode H5WriteSnapshots(hid_t file, const ImpactSeries &S, const 
   PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
   PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
   PetscCall(H5DimsAttach(gn, "y", {"time", "x"}));
-  if (SnapshotsHaveBed(S, beam)) { // the string bed's deflection on its grid: [time][z * nodes + x]
+  if (SnapshotsHaveBed(S)) { // the string bed's deflection on its grid: [time][z * nodes + x]
     PetscCall(H5WriteBedGrid(gn, StringBedFrameGrid(beam.strings, beam.nodes, beam.length), "bed_x", "bed_z"));
     PetscCall(
       H5WriteDataset2D(gn, "bed", S.snapshot_bed,
@@ -441,7 +438,7 @@ static std::string SnapshotsXdmf(const std::string &path, const ImpactSeries &S,
   XdmfField              f;
   f.name = "beam", f.attribute = "y", f.x = "/snapshots/x", f.nx = beam.nodes, f.values = "/snapshots/y";
   fields.push_back(f);
-  if (SnapshotsHaveBed(S, beam)) {
+  if (SnapshotsHaveBed(S)) {
     const BedGrid g = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
     f.name = "bed", f.attribute = "w", f.x = "/snapshots/bed_x", f.y = "/snapshots/bed_z", f.nx = g.nx, f.ny = g.nz;
     f.values = "/snapshots/bed";

@@ -144,33 +144,15 @@ PetscErrorCode RunRecordBuild(const BeamParams &beam, RunRecord *rec)
   rec->add("beam_youngs_over_density", beam.input.youngs_over_density);
   for (const StructurePart *part : StructureParts()) // each registered part present: its entries
     if (const PartParams *q = beam.parts.Find(part->Name())) {
-      std::vector<std::pair<const char *, PetscReal>> entries;
+      std::vector<std::pair<const char *, PetscReal>>   entries;
+      std::vector<std::pair<const char *, std::string>> words;
+      std::vector<std::pair<const char *, long long>>   whole;
       part->Record(*q, beam, &entries);
+      part->RecordWords(*q, beam, &words, &whole);
       for (const auto &[name, value] : entries) rec->add(name, value);
+      for (const auto &[name, text] : words) rec->add(name, text);
+      for (const auto &[name, n] : whole) rec->add(name, n);
     }
-  if (beam.strings.On()) { // a racket's string bed
-    const StringBedParams &b = beam.strings;
-    const Membrane         m = StringBedMembrane(b);
-    rec->add("strings_frame", b.frame);
-    rec->add("head_shape", std::string(HeadShapeName(b.shape)));
-    rec->add("head_length", b.head_length);
-    rec->add("head_width", b.head_width);
-    rec->add("head_center", b.head_center);
-    rec->add("strings_tension", b.tension);
-    rec->add("strings_tension_crosses", b.tension_crosses);
-    rec->add("strings_spacing", b.spacing);
-    rec->add("strings_spacing_crosses", b.spacing_crosses);
-    rec->add("strings_linear_density", b.linear_density);
-    rec->add("membrane_N_x", m.N_x);
-    rec->add("membrane_N_z", m.N_z);
-    rec->add("membrane_sigma", m.sigma);
-    rec->add("strings_patch_radius",
-             b.patch_radius); // m, as used (< 0 in a sweep's structure record: each point's from its ball)
-    const BedGrid g = StringBedFrameGrid(b, beam.nodes, beam.length);
-    rec->add("strings_h_x", g.hx);
-    rec->add("strings_h_z", g.hz);
-    rec->add("strings_nodes_width", g.nz);
-  }
   PetscFunctionReturn(0);
 }
 
@@ -190,7 +172,7 @@ PetscErrorCode RunRecordBuild(const Scenario &sc, const ImpactResult *first, Run
   // The values used: a derived default (-impact_window, -impact_max_time < 0) as computed.
   const ImpactTimes times = ImpactTimesOf(sc.beam, sc.ball, sc.impact);
   rec->add("impact_x", sc.impact.x);
-  if (sc.impact.z != 0 || sc.beam.strings.On() || sc.beam.parts.Rolls()) rec->add("impact_z", sc.impact.z);
+  if (sc.impact.z != 0 || StructurePartsHaveFace(sc.beam) || sc.beam.parts.Rolls()) rec->add("impact_z", sc.impact.z);
   rec->add("impact_window", times.window);
   rec->add("impact_max_time", times.max_time);
   rec->add("impact_window_default", sc.impact.window < 0 ? 1 : 0);

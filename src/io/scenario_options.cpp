@@ -3,12 +3,10 @@
 
 #include "base/option_table.hpp"
 #include "io/text.hpp"
-#include "model/shell.hpp"
 #include "system/beam_system.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <set>
 
 namespace beamimpact {
 
@@ -109,6 +107,7 @@ PetscErrorCode StructurePartsResolve(MPI_Comm comm, Scenario *sc)
   PartPoint at;
   at.ball     = &sc->ball;
   at.x        = sc->impact.x;
+  at.z        = sc->impact.z;
   at.approach = ImpactApproachSpeed(*sc);
   for (const StructurePart *part : StructureParts())
     if (const PartParams *q = sc->beam.parts.Find(part->Name())) {
@@ -117,35 +116,6 @@ PetscErrorCode StructurePartsResolve(MPI_Comm comm, Scenario *sc)
       PetscCheck(part->Resolve(*q, sc->beam, at, &out, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
       if (out) sc->beam.parts.Set(part->Name(), out);
     }
-  PetscFunctionReturn(0);
-}
-
-// -strings_patch_radius: its default from the ball as the shell's (ShellContactRadiusDefault: the
-// Hertz radius on a rigid flat at the approach speed); the load's nodes (BedPatch) within the
-// frame's ends on a beam frame, and its coupled dofs within the contact coupling's room.
-PetscErrorCode StringBedPatchResolve(MPI_Comm comm, Scenario *sc)
-{
-  StringBedParams &bed = sc->beam.strings;
-  PetscFunctionBeginUser;
-  if (bed.patch_radius < 0) bed.patch_radius = ShellContactRadiusDefault(sc->ball, ImpactApproachSpeed(*sc));
-  const BedGrid      g = StringBedFrameGrid(bed, sc->beam.nodes, sc->beam.length);
-  const PetscReal    a = bed.patch_radius;
-  std::set<PetscInt> dofs; // the coupling's entries: a free node's own, or its frame section's deflection and roll
-  bool               beyond = false;
-  for (const BedPatchNode &e : BedPatch(g, sc->impact.x - bed.head_center, sc->impact.z, a)) {
-    beyond = beyond || e.beyond;
-    if (e.free) dofs.insert(e.i * (g.nz + 2) + 2 + e.j);
-    else if (!bed.Held()) dofs.insert(e.i * (g.nz + 2)), dofs.insert(e.i * (g.nz + 2) + 1); // a held frame's dofs: none
-  }
-  PetscCheck(!beyond || bed.Held(), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-impact_x %g with -strings_patch_radius %g m is not allowed: the ball's load on the bed (its disc, "
-             "spread over the nodes around the point, h_x %g m) reaches past the frame's end (0 <= x <= L = %g m); "
-             "strike further from the end or give a smaller -strings_patch_radius",
-             (double)sc->impact.x, (double)a, (double)g.hx, (double)sc->beam.length);
-  PetscCheck((PetscInt)dofs.size() <= ContactCoupling::kMaxEntries, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-strings_patch_radius %g m is not allowed with this grid (h_x %g, h_z %g m): the ball's disc covers %zu "
-             "coupled dofs of the bed (at most %" PetscInt_FMT "); give a smaller radius or a coarser grid",
-             (double)a, (double)g.hx, (double)g.hz, dofs.size(), ContactCoupling::kMaxEntries);
   PetscFunctionReturn(0);
 }
 
@@ -224,18 +194,15 @@ PetscErrorCode ScenarioFromOptions(MPI_Comm comm, const ScenarioReading &how, Sc
   if (how.after_bodies) PetscCall(how.after_bodies(*sc));
   if (part(ScenarioImpact)) PetscCall(ImpactParamsFromOptions(comm, sc->beam, &sc->impact));
   const PartParamSet parts_as_read = sc->beam.parts;
-  const PetscReal    patch_as_read = sc->beam.strings.patch_radius;
   PetscCall(StructurePartsResolve(comm, sc));
-  if (sc->beam.strings.On()) PetscCall(StringBedPatchResolve(comm, sc));
   if (how.monitors && part(ScenarioMonitors)) PetscCall(MonitorRequestFromOptions(comm, sc->beam, &sc->monitor));
   if (part(ScenarioFlight))
     PetscCall(FlightAfterImpactFromOptions(comm, &sc->flight.on, &sc->flight.params, &sc->flight.solve,
                                            how.monitors && how.flight_series));
   if (sc->flight.on && (part(ScenarioFlight) || part(ScenarioBall))) PetscCall(FlightBallResolve(comm, *sc));
   if (how.read_as) {
-    *how.read_as                           = *sc;
-    how.read_as->beam.parts                = parts_as_read;
-    how.read_as->beam.strings.patch_radius = patch_as_read;
+    *how.read_as            = *sc;
+    how.read_as->beam.parts = parts_as_read;
   }
   PetscFunctionReturn(0);
 }

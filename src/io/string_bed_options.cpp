@@ -1,87 +1,12 @@
 // The -strings_* and -head_* options. See string_bed_options.hpp.
 #include "io/string_bed_options.hpp"
 
+#include "system/structure_part.hpp"
+
 namespace beamimpact {
 
-const OptionModule &StringBedOptionTable()
-{
-  static const OptionModule m = {
-    "strings",
-    "The racket's string bed: a membrane on the head's outline (-strings_frame held -task modes: its modes in a held "
-    "frame)",
-    {
-      OptionChoice("-strings_frame",
-                   "The frame holding the bed: none (no string bed; the racket is the beam), held (a rigid frame, w = "
-                   "0 on the outline; -impact_x from the head's end, -task modes the bed's modes on a 2-D DMDA) or "
-                   "beam (the beam is the frame: the bed on its nodes, the head bending and rolling with it; needs "
-                   "-beam_torsion)",
-                   {"none", "held", "beam"}, "none"),
-      OptionNeeds(OptionReal("-strings_patch_radius", "m",
-                             "The ball's load on the bed: the point's bilinear hat weights on its cell's four nodes, "
-                             "each node's share spread over a disc of this radius about it with the weights 1 - "
-                             "r^2/a^2, so that the load's resultant and moments are the point's (0: the hat weights "
-                             "alone; default sqrt(R_b delta), delta the ball's peak compression on a rigid wall at the "
-                             "approach speed, with -ball_radius)",
-                             "", NonNegative()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-strings_tension", "N", "Tension of each main string (along the frame's axis)", "250",
-                             Positive()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-strings_tension_crosses", "N",
-                             "Tension of each cross string (default: -strings_tension)", "", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-strings_spacing", "m",
-                             "Spacing of the mains (centre to centre, across the face; < -head_width)", "0.0151",
-                             Positive()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-strings_spacing_crosses", "m",
-                             "Spacing of the crosses (along the frame's axis; default: -strings_spacing; < "
-                             "-head_length)",
-                             "", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-strings_linear_density", "kg/m", "Mass per length of a string (nylon 1.30 mm: 1.51e-3)",
-                             "1.51e-3", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionChoice("-head_shape", "Outline of the head", {"ellipse", "rectangle"}, "ellipse"),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-head_length", "m",
-                             "Length of the head's outline along the frame's axis (the ellipse's major axis)", "0.34",
-                             Positive()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-head_width", "m", "Width of the head's outline across the face", "0.24", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-head_center", "m",
-                             "Centre of the head along the frame's axis, from x = 0 (-strings_frame beam; held: the "
-                             "head's middle)",
-                             "0.175", NonNegative()),
-                  {"-strings_frame=beam"}),
-      OptionNeeds(OptionInt("-strings_nodes",
-                            "Grid nodes across the head's length, edges included (-strings_frame held; on a beam frame "
-                            "the bed's columns are the beam's nodes, -beam_nodes)",
-                            "61", AtLeast(5)),
-                  {"-strings_frame=held"}),
-      OptionNeeds(OptionInt("-strings_nodes_width",
-                            "Grid nodes across the head's width (default: from the aspect, so that h_z ~ h_x)", "",
-                            AtLeast(5)),
-                  {"-strings_frame=held|-strings_frame=beam"}),
-      OptionNeeds(OptionReal("-strings_inplane_stiffness", "N/m",
-                             "An oblique impact on the bed: the stiffness of the mains under the ball against their "
-                             "sideways slide (across their length, the friction force's direction; docs/model.md "
-                             "section 13); default n T (1/a + 1/b), n = 2 r_p / s_m mains under the ball's patch, T "
-                             "-strings_tension, a and b the struck main's lengths to its two ends",
-                             "", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0|-bat_speed_face!=0",
-                   "-ball_friction!=0"}),
-      OptionNeeds(OptionReal("-strings_inplane_mass", "kg",
-                             "An oblique impact on the bed: the mass of the mains under the ball in that slide; "
-                             "default n lambda (a + b) / 3 (the triangle of a string pulled aside at a point)",
-                             "", Positive()),
-                  {"-strings_frame=held|-strings_frame=beam", "-impact_angle!=0|-ball_spin!=0|-bat_speed_face!=0",
-                   "-ball_friction!=0"}),
-    },
-  };
-  return m;
-}
+// The rows are the bed part's (system/parts/bed.cpp).
+const OptionModule &StringBedOptionTable() { return StructurePartFind("bed")->Options(); }
 
 PetscErrorCode StringBedRequested(MPI_Comm comm, PetscBool *on)
 {

@@ -35,13 +35,7 @@ BeamRigidBody BeamRigidBodyOf(const BeamParams &p)
     m.m0 = p.mu * L, m.m1 = p.mu * L * L / 2, m.m2 = p.mu * L * L * L / 3, m.j = p.rhoI * L;
   } else m = SectionMomentsOf(p.section, 0, p.length);
   if (p.theory != "timoshenko") m.j = 0; // an Euler-Bernoulli beam's sections do not spin
-  m.roll = 0; // about the frame's axis: the bed's, then the rolling part's (PartParams::Rolls) added to it
-  if (p.strings.On() && !p.strings.Held()) { // a string bed on the frame: sigma over the head's outline
-    const PetscReal   sigma = StringBedMembrane(p.strings).sigma, c = p.strings.head_center;
-    const HeadMoments h = HeadMomentsOf(p.strings);
-    m.m0 += sigma * h.area, m.m1 += sigma * h.area * c, m.m2 += sigma * (h.xx + h.area * c * c);
-    m.roll += sigma * h.zz;
-  }
+  m.roll = 0; // about the frame's axis: the parts' (a string bed's sigma z^2, the rolling part's)
   for (const auto &part : p.parts.present) part.second->AddRigidBodyOn(p, &m);
   BeamRigidBody b;
   b.mass         = m.m0;

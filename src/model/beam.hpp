@@ -124,7 +124,7 @@ struct BeamParams {
   std::string       theory            = "euler"; // beam theory (model/beam_theory.hpp registry)
   PetscReal         damping_mass      = 0;       // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
   PetscReal         damping_stiffness = 0;       // s,   beta
-  StringBedParams   strings;                     // a racket's string bed on the frame (-strings_frame; none by default)
+  StringBedParams   strings;                     // the string bed's options as read (its part copies them)
   PartParamSet      parts;                       // the registered structure parts present (none by default)
   BeamMaterialInput input;
 };

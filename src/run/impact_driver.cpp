@@ -123,7 +123,7 @@ PetscErrorCode ApplyEvent(const ImpactProblem &pb, Stepper &st, ContactEventKind
 // or a registered part's measures): then the series are sampled through a free flight.
 bool SystemHasPeaks(const BeamSystem &sys)
 {
-  return sys.bed_first >= 0 || sys.TiedToFrame() || StructurePartsPeaks(sys);
+  return !sys.face_fields.empty() || sys.TiedToFrame() || StructurePartsPeaks(sys);
 }
 
 // Whether the series is only an oblique impact's F_n (no monitor asked, no peaks of a wall, a

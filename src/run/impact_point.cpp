@@ -2,18 +2,13 @@
 #include "run/impact_point.hpp"
 
 #include "model/oblique.hpp"
+#include "system/structure_part.hpp"
 
 #include <cmath>
 
 namespace beamimpact {
 
-bool ImpactOnBed(const BeamParams &beam, PetscReal x, PetscReal z)
-{
-  if (!beam.strings.On()) return false;
-  BedGrid g; // the outline alone
-  g.shape = beam.strings.shape, g.a = 0.5 * beam.strings.head_length, g.b = 0.5 * beam.strings.head_width;
-  return BedInside(g, x - beam.strings.head_center, z);
-}
+bool ImpactOnBed(const BeamParams &beam, PetscReal x, PetscReal z) { return StructurePartsStrike(beam, x, z); }
 
 PetscReal FrameHalfWidth(const BeamParams &beam, PetscReal x, const char **source)
 {
@@ -31,8 +26,8 @@ ImpactPointWhere ImpactPointLocate(const BeamParams &beam, PetscReal x, PetscRea
 {
   if (!(x >= 0 && x <= beam.length)) return ImpactPointWhere::OffBeam;
   if (ImpactOnBed(beam, x, z)) return ImpactPointWhere::Movable;
-  if (beam.strings.On() && z != 0) return ImpactPointWhere::OffFace;           // off the racket's face
-  if (std::abs(z) > FrameHalfWidth(beam, x)) return ImpactPointWhere::OffFace; // off the frame's section
+  if (z != 0 && StructurePartsHaveFace(beam)) return ImpactPointWhere::OffFace; // off the racket's face
+  if (std::abs(z) > FrameHalfWidth(beam, x)) return ImpactPointWhere::OffFace;  // off the frame's section
   const std::vector<NodeHold> hold          = BeamNodeHolds(beam);
   auto                        held          = [&](PetscInt i) { return hold[i] != NodeHold::None; };
   const ImpactStencil         st            = GridImpactStencil(beam.nodes, beam.length, x);
@@ -45,11 +40,8 @@ PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal
 {
   PetscFunctionBeginUser;
   const ImpactPointWhere where = ImpactPointLocate(beam, x, z);
-  PetscCheck(where != ImpactPointWhere::OffFace || !beam.strings.On(), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "%s with -impact_z %g is not allowed: off the frame's axis the ball must strike the string bed, inside "
-             "the head's outline (centre x = %g m, %g x %g m, -head_*)",
-             what, (double)z, (double)beam.strings.head_center, (double)beam.strings.head_length,
-             (double)beam.strings.head_width);
+  const std::string off = where == ImpactPointWhere::OffFace ? StructurePartsPointRefusal(beam, what, z, false) : "";
+  PetscCheck(off.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", off.c_str()); // off a part's face (the bed's head)
   const char     *source;
   const PetscReal half = FrameHalfWidth(beam, x, &source);
   PetscCheck(where != ImpactPointWhere::OffFace, comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -60,10 +52,8 @@ PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal
   PetscCheck(where != ImpactPointWhere::OffBeam, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "%s is not allowed: the impact point must lie on the beam, 0 <= x <= L = %.12g (m)", what,
              (double)beam.length);
-  PetscCheck(!(where == ImpactPointWhere::Held && beam.strings.Held()), comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "%s is not allowed: -strings_frame held holds the whole frame, so the ball must strike the bed, inside "
-             "the head's outline (x from 0 to -head_length %g m, the head's centre at %g m)",
-             what, (double)beam.strings.head_length, (double)(0.5 * beam.strings.head_length));
+  const std::string held = where == ImpactPointWhere::Held ? StructurePartsPointRefusal(beam, what, z, true) : "";
+  PetscCheck(held.empty(), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", held.c_str()); // a part's own (a held bed's frame)
   PetscCheck(where != ImpactPointWhere::Held, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "%s is not allowed: that point is held fixed (a clamped or pinned support or inside -beam_clamp); strike "
              "a point that can move",
@@ -74,7 +64,7 @@ PetscErrorCode ImpactPointCheck(MPI_Comm comm, const BeamParams &beam, PetscReal
 PetscErrorCode ImpactAcrossCheck(MPI_Comm comm, const BeamParams &beam, PetscReal z)
 {
   PetscFunctionBeginUser;
-  PetscCheck(z == 0 || beam.parts.Rolls() || beam.strings.On(), comm, PETSC_ERR_ARG_INCOMP,
+  PetscCheck(z == 0 || beam.parts.Rolls() || StructurePartsHaveFace(beam), comm, PETSC_ERR_ARG_INCOMP,
              "-impact_z %g is not allowed on a beam that cannot roll: give -beam_torsion (the frame's twist) or a "
              "string bed (-strings_frame)",
              (double)z);

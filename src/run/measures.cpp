@@ -62,7 +62,6 @@ const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes
 // frame's roll, a string bed): without, their sums are 0 and BeamSystemPartEnergies is not needed.
 bool SeparateParts(const BeamSystem &S)
 {
-  if (S.bed_first >= 0) return true; // the registered parts (the roll, the wall): their accounts below
   for (PetscInt f = 0; f < S.fields; ++f)
     if (S.PartOf(f) != Part::Beam) return true;
   return false;
@@ -226,15 +225,15 @@ PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, s
       sums[3] += S.mass[S.Dof(i, 1)] *
                  sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
     if (roll >= 0) sums[G + 9] += S.mass[S.Dof(i, roll)] * sv.v[i * sv.v_stride + roll];
-    if (S.bed_first < 0) continue;
+    if (S.face_fields.empty()) continue;
     const PetscReal y = sv.y[i * sv.y_stride], phi = roll >= 0 ? sv.y[i * sv.y_stride + roll] : 0.0;
-    for (PetscInt j = 0; j < S.bed.nz; ++j) {
-      const PetscInt d = S.Dof(i, S.bed_first + j);
+    for (const PetscInt f : S.face_fields) { // a string bed's nodes across the face (StructurePart::FieldZ)
+      const PetscInt d = S.Dof(i, f);
       if (S.held[d]) continue;
-      const PetscReal mv = S.mass[d] * sv.v[i * sv.v_stride + S.bed_first + j], z = S.bed.Z(j);
+      const PetscReal mv = S.mass[d] * sv.v[i * sv.v_stride + f], z = S.field_z[f];
       sums[2] += mv, sums[3] += x * mv, sums[G + 9] += z * mv;
       sums[G + 10] += mv, sums[G + 11] += x * mv, sums[G + 12] += z * mv;
-      bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + S.bed_first + j] - y - z * phi));
+      bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + f] - y - z * phi));
     }
   }
   if (!S.parts.empty()) PartsMeasure(S, sv, &sums[2], &sums[3], sums.data() + G + 13); // (no slots: its end)
@@ -255,7 +254,7 @@ void MeasureSegmentAndPoints(const BeamSystem &S, const StateView &sv, const Mon
       const PetscReal x = S.NodeX(i);
       if (x < mon->segment_x0 - tol || x > mon->segment_x1 + tol) continue;
       for (PetscInt f = 0; f < F; ++f) {
-        if (S.bed_first >= 0 && f >= S.bed_first && f < S.bed_first + S.bed.nz) continue;
+        if (S.Face(f)) continue;
         const PetscReal v = sv.v[i * sv.v_stride + f];
         sums[4] += 0.5 * S.mass[S.Dof(i, f)] * v * v;
       }
@@ -303,7 +302,7 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   if (size > 1)
     PetscCallMPI(
       MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, stepper.Comm()));
-  if (size > 1 && S.bed_first >= 0)
+  if (size > 1 && !S.face_fields.empty())
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bed_max, 1, MPIU_REAL, MPIU_MAX, stepper.Comm()));
   PetscCall(MeasuresFinish(stepper, ctx, G, sums, bed_max, m, point_v));
   PetscFunctionReturn(0);

@@ -176,7 +176,7 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
       p += S.mass[d] * run.qd[d];
       l += S.mass[d] * sys.NodeX(node) * run.qd[d];
       r += S.mass[d] * sys.DofZ(dof) * run.qd[d];
-      if (sys.Bed(f))
+      if (sys.Face(f))
         m.bed_momentum += S.mass[d] * run.qd[d], m.bed_moment += S.mass[d] * sys.NodeX(node) * run.qd[d],
           m.bed_roll += S.mass[d] * sys.DofZ(dof) * run.qd[d];
     } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
@@ -203,10 +203,10 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
   m.bed_energy   = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
   for (PetscInt d = 0; d < S.BeamDofs(); ++d) // the wall's share of the compression (S.g = dc/dq = -w)
     if ((int)sys.PartOf(S.dof[d] % sys.fields) == W) m.wall_deflection -= S.g[d] * run.q[d];
-  if (sys.bed_first >= 0)
+  if (!sys.face_fields.empty())
     for (PetscInt d = 0; d < sys.ndof; ++d) {
       const PetscInt f = d % sys.fields, i = d / sys.fields;
-      if (!sys.Bed(f) || sys.held[d]) continue;
+      if (!sys.Face(f) || sys.held[d]) continue;
       const PetscReal phi = roll >= 0 ? shape[sys.Dof(i, roll)] : 0.0;
       m.bed_deflection    = std::max(m.bed_deflection, std::abs(shape[d] - shape[sys.Dof(i)] - sys.DofZ(d) * phi));
     }

@@ -77,7 +77,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   PetscFunctionBeginUser;
   bool wall = false; // a part whose peaks the outcome keeps (StructurePart::Peaks: the barrel wall)
   for (const PartInstance &s : ctx_.sys->parts) wall = wall || s.part->Peaks();
-  const bool bed = ctx_.sys->bed_first >= 0; // a racket's string bed
+  const bool bed = !ctx_.sys->face_fields.empty(); // a racket's string bed (its fields across the face)
   if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
     PetscFunctionReturn(0);
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
@@ -144,17 +144,16 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
       std::vector<PetscInt>  labels;
       own = own || s.part->Snapshot(s, S, {}, &values, &labels);
     }
-    if (S.bed_first >= 0 || own) // rank 0: every field of every node
+    const std::vector<PetscInt> &face = S.face_fields; // a string bed's fields across the face
+    if (!face.empty() || own)                          // rank 0: every field of every node
       PetscCall(stepper_.GatherFields(0, S.fields, &u));
-    if (S.bed_first >=
-        0) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened (its columns are the nodes)
-      std::vector<PetscReal> bed((size_t)S.bed.nz * S.nodes);
+    if (!face.empty()) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened
+      std::vector<PetscReal> bed(face.size() * S.nodes);
       const PetscInt         roll = S.RollField();
       for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i) {
         const PetscReal *node = &u[(size_t)i * S.fields], phi = roll >= 0 ? node[roll] : 0.0;
-        for (PetscInt j = 0; j < S.bed.nz; ++j)
-          bed[j * S.nodes + i] = S.held[S.Dof(i, S.bed_first + j)] ? NAN
-                                                                   : node[S.bed_first + j] - node[0] - S.bed.Z(j) * phi;
+        for (size_t j = 0; j < face.size(); ++j)
+          bed[j * S.nodes + i] = S.held[S.Dof(i, face[j])] ? NAN : node[face[j]] - node[0] - S.field_z[face[j]] * phi;
       }
       series_->snapshot_bed.push_back(std::move(bed));
     }

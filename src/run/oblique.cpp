@@ -7,6 +7,7 @@
 #include "run/impact_point.hpp"
 #include "run/results_table.hpp"
 #include "run/scenario.hpp"
+#include "system/structure_part.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,12 +48,12 @@ PetscErrorCode ObliqueBatCheck(MPI_Comm comm, const Scenario &sc, PetscReal R)
              "and -impact_z on the head); this point (-impact_x %g m, -impact_z %g m) %s; a round bat's oblique "
              "impact is -impact_offset",
              OptionWritten("-impact_angle").c_str(), (double)sc.impact.x, (double)sc.impact.z,
-             sc.beam.strings.On() ? "is off the head's outline" : "is on a beam without a string bed");
+             StructurePartsHaveFace(sc.beam) ? "is off the head's outline" : "is on a beam without a string bed");
   PetscCheck(sc.swing.face_speed == 0, comm, PETSC_ERR_ARG_INCOMP,
              "-bat_speed_face %s is not allowed here: it is a racket's brush along its face, for an impact on a string "
              "bed inside its head's outline; this point (-impact_x %g m, -impact_z %g m) %s",
              OptionWritten("-bat_speed_face").c_str(), (double)sc.impact.x, (double)sc.impact.z,
-             sc.beam.strings.On() ? "is off the head's outline" : "is on a beam without a string bed");
+             StructurePartsHaveFace(sc.beam) ? "is off the head's outline" : "is on a beam without a string bed");
   if (D == 0 && sc.ball.spin == 0) PetscFunctionReturn(0);
   const char *what = D != 0 ? "-impact_offset" : "-ball_spin";
   PetscCheck(R > 0, comm, PETSC_ERR_ARG_INCOMP,
@@ -309,16 +310,13 @@ void ExitOf(PetscReal u_n, ObliqueRecord *rec)
 // along t, driven by the friction force; their slide and energy watched at the run's steps.
 void BedInPlaneRun(const Scenario &sc, const ImpactSeries &series, ObliqueRecord *rec)
 {
-  const StringBedParams &s = sc.beam.strings;
-  const StringBedInPlane d = StringBedInPlaneOf(s, sc.impact.x - s.head_center, sc.impact.z, s.patch_radius);
-  BedInPlaneModel       &b = rec->bed_plane;
-  b.frame_mass             = rec->model.bat_mass;
-  b.stiffness              = s.inplane_stiffness > 0 ? s.inplane_stiffness : d.stiffness;
-  b.strings_mass           = s.inplane_mass > 0 ? s.inplane_mass : d.mass;
-  rec->plane               = BedInPlaneOf(b, &rec->plane_rigid_modes);
-  rec->plane.ball_side     = rec->before.v_ball - rec->before.v_bat - rec->model.ball_radius * rec->before.spin;
-  rec->flexible            = true;
-  rec->contact             = TangentialFlexibleStart(rec->model, rec->plane);
+  BedInPlaneModel &b = rec->bed_plane;
+  b.frame_mass       = rec->model.bat_mass;
+  StructurePartsInPlane(sc.beam, sc.impact.x, sc.impact.z, &b.stiffness, &b.strings_mass); // the bed part's mains
+  rec->plane           = BedInPlaneOf(b, &rec->plane_rigid_modes);
+  rec->plane.ball_side = rec->before.v_ball - rec->before.v_bat - rec->model.ball_radius * rec->before.spin;
+  rec->flexible        = true;
+  rec->contact         = TangentialFlexibleStart(rec->model, rec->plane);
   TangentialFlexibleRun(rec->model, series, rec, [](ObliqueRecord *r) {
     r->bed_slide_peak  = std::max(r->bed_slide_peak, std::abs(BedInPlaneSlide(r->bed_plane, r->plane)));
     r->bed_energy_peak = std::max(r->bed_energy_peak, BedInPlaneEnergy(r->plane, r->plane_rigid_modes));

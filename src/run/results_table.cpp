@@ -38,7 +38,7 @@ bool ResultFreePivot(const Scenario &sc) { return sc.beam.has_pivot && PivotHeld
 bool ResultBarrelWall(const Scenario &sc) { return sc.beam.parts.Has("wall"); } // system/parts/wall.cpp
 
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
-bool ResultStringBed(const Scenario &sc) { return sc.beam.strings.On(); }
+bool ResultStringBed(const Scenario &sc) { return sc.beam.parts.Has("bed"); } // system/parts/bed.cpp
 bool ResultTwist(const Scenario &sc) { return sc.beam.parts.Rolls(); }
 bool ResultTwistInvariant(const Scenario &sc) { return ResultTwist(sc) && ResultMomentumInvariant(sc); }
 bool ResultTwistNoHeld(const Scenario &sc) { return ResultTwist(sc) && ResultNoHeldDof(sc) && sc.ball.speed > 0; }

@@ -175,7 +175,7 @@ static std::string SpreadRemedy(const BeamSystem &sys, PetscInt dof, double fact
                   "set by the frame's roll at x = %.3g m (rho J = %.3g kg m there against its G J): raise "
                   "-beam_torsion_inertia at least %.2g times (or lower -beam_torsion_stiffness)",
                   (double)sys.NodeX(dof / sys.fields), (double)(sys.mass[dof] / h), factor);
-  else if (sys.Bed(f))
+  else if (sys.Face(f))
     std::snprintf(text, sizeof text,
                   "set by the strings at x = %.3g m (their mass against their tension): raise -strings_linear_density "
                   "at least %.2g times (or lower -strings_tension)",

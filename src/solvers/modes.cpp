@@ -309,10 +309,10 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
   const std::vector<PetscInt> families = FieldFamilies(op); // a barrel wall's harmonics: each mode's family
-  const bool                  wall = !families.empty(), parts = op.RollField() >= 0 || op.bed_first >= 0;
+  const bool                  wall = !families.empty(), parts = op.RollField() >= 0 || !op.face_fields.empty();
   if (wall) out->shell_n.assign(count, 0);
   if (parts) out->part.assign(count, 0), out->part_share.assign(count, 0.0);
-  if (parts && shapes && op.bed_first >= 0) out->bed_shape.resize(count);
+  if (parts && shapes && !op.face_fields.empty()) out->bed_shape.resize(count);
   for (PetscInt m = 0; m < count; ++m) {
     const std::vector<PetscReal> &phi = phis[order[m]];
     if (wall) out->shell_n[m] = ModeFamily(op, families, phi);
@@ -321,10 +321,10 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
       for (PetscInt d = 0; d < op.ndof; ++d) e[d] = op.mass[d] * phi[d] * phi[d];
       out->part[m] = (PetscInt)BeamSystemDominantPart(op, nullptr, e.data(), op.ndof, &out->part_share[m]);
       if (!out->bed_shape.empty()) {
-        const BedGrid &g = op.bed;
-        out->bed_shape[m].assign((size_t)g.nx * g.nz, 0.0);
-        for (PetscInt j = 0; j < g.nz; ++j)
-          for (PetscInt i = 0; i < g.nx; ++i) out->bed_shape[m][j * g.nx + i] = phi[op.Dof(i, op.bed_first + j)];
+        const std::vector<PetscInt> &face = op.face_fields; // the bed's [z][x], its columns the nodes
+        out->bed_shape[m].assign(face.size() * op.nodes, 0.0);
+        for (size_t j = 0; j < face.size(); ++j)
+          for (PetscInt i = 0; i < op.nodes; ++i) out->bed_shape[m][j * op.nodes + i] = phi[op.Dof(i, face[j])];
       }
     }
     if (shapes) (*shapes)[m] = DeflectionField(op, std::move(phis[order[m]]));

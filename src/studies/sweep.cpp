@@ -76,15 +76,13 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
     c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
     ImpactStructure *structure   = nullptr;
     if (reuse) { // the structure's system, unless this point is on another beam
-      const std::vector<PetscReal> key   = c.beam.parts.SystemKey();    // the parts' values at the point (a shell's a)
-      const PetscReal              patch = c.beam.strings.patch_radius; // follow the ball: a new one is a new system
+      const std::vector<PetscReal> key = c.beam.parts.SystemKey(); // the parts' values at the point (a shell's a, the
+                                                                   // bed's disc): follow the ball
       if (!reuse->scenario.last_partial || key.size() != reuse->part_key.size() ||
-          (!key.empty() && std::memcmp(key.data(), reuse->part_key.data(), key.size() * sizeof key[0]) != 0) ||
-          std::memcmp(&patch, &reuse->patch_radius, sizeof patch) != 0)
+          (!key.empty() && std::memcmp(key.data(), reuse->part_key.data(), key.size() * sizeof key[0]) != 0))
         reuse->structure = ImpactStructure();
-      reuse->part_key     = key;
-      reuse->patch_radius = patch;
-      structure           = &reuse->structure;
+      reuse->part_key = key;
+      structure       = &reuse->structure;
     }
     const BeamSystem *kept = structure ? structure->sys.get() : nullptr;
     ierr                   = ImpactRun(comm, c, result, structure);

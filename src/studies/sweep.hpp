@@ -53,9 +53,8 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
 struct SweepReuse {
   SweepScenarioCache     scenario;
   ImpactStructure        structure;
-  std::vector<PetscReal> part_key;         // the structure parts' SystemKey the structure's system has (a shell's a, m)
-  PetscReal              patch_radius = 0; // m, the string bed's load disc the structure's system has
-  PetscInt               systems      = 0; // systems built (structure.sys set by a run)
+  std::vector<PetscReal> part_key;    // the structure parts' SystemKey the structure's system has (a shell's a, m)
+  PetscInt               systems = 0; // systems built (structure.sys set by a run)
 };
 
 // The status of a failed run from its PETSc error code (SweepStatus).

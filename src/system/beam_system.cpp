@@ -23,22 +23,14 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   S             = BeamSystem();
   S.beam_fields = d.fields;
   S.field_part.assign(d.fields, Part::Beam);
-  const auto older = [&](const std::vector<PartInstance> &before) { // the bed, not registered yet
-    for (const PartInstance &s : before) S.field_part.resize(s.first + s.count, s.part->Account());
-    S.parts = before; // the roll's field for the bed
-    if (p.strings.On()) {
-      const BedLayout bed = StringBedAppend(p.strings, StringBedFrameGrid(p.strings, p.nodes, p.length), S.RollField(),
-                                            &d);
-      S.bed_first         = bed.first;
-      S.bed               = bed.grid;
-      S.bed_head_center   = p.strings.head_center;
-      S.bed_patch_radius  = std::max<PetscReal>(0, p.strings.patch_radius);
-      S.field_part.resize(d.fields, Part::Bed);
-    }
-  };
-  S.parts = StructurePartsBuild(p, &d, older); // the registered parts' fields at their place
-  for (const PartInstance &s : S.parts)
-    if (s.first >= (PetscInt)S.field_part.size()) S.field_part.resize(s.first + s.count, s.part->Account());
+  S.parts = StructurePartsBuild(p, &d); // the registered parts' fields, in registry order
+  S.field_z.assign(d.fields, NAN);
+  for (const PartInstance &s : S.parts) {
+    S.field_part.resize(s.first + s.count, s.part->Account());
+    for (PetscInt f = s.first; f < s.first + s.count; ++f) S.field_z[f] = s.part->FieldZ(s, f);
+  }
+  for (PetscInt f = 0; f < d.fields; ++f)
+    if (S.Face(f)) S.face_fields.push_back(f);
   S.nodes          = p.nodes;
   S.fields         = d.fields;
   S.ndof           = p.nodes * d.fields;
@@ -72,47 +64,13 @@ void BeamSystemAssemble(BeamSystem *sys)
   ForceOperatorAssemble(&S); // K and C
 }
 
-namespace {
-
-// Adds weight w on dof d to g (merging a dof already there; a held dof's share is 0); false when
-// g is full.
-bool CouplingAdd(const BeamSystem &sys, PetscInt d, PetscReal w, ContactCoupling *g)
-{
-  if (sys.held[d] || w == 0.0) return true;
-  for (PetscInt q = 0; q < g->n; ++q)
-    if (g->dof[q] == d) return g->w[q] += w, true;
-  if (g->n == ContactCoupling::kMaxEntries) return false;
-  g->dof[g->n] = d, g->w[g->n++] = w;
-  return true;
-}
-
-} // namespace
-
-bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
-{
-  return sys.bed_first >= 0 && BedInside(sys.bed, x_imp - sys.bed_head_center, z_imp);
-}
-
 ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp)
 {
   ContactCoupling g;
-  g.x                 = x_imp;
-  g.z                 = z_imp;
-  const PetscInt roll = sys.RollField(); // the bed's frame rolls with it
-  if (BeamSystemOnBed(sys, x_imp,
-                      z_imp)) { // the bed under the ball's disc; a node the frame holds moves with its section
-    for (const BedPatchNode &e : BedPatch(sys.bed, x_imp - sys.bed_head_center, z_imp, sys.bed_patch_radius)) {
-      if (e.beyond) continue; // past a held frame's end (refused on a beam frame: StringBedPatchResolve)
-      if (e.free) {
-        if (!CouplingAdd(sys, sys.Dof(e.i, sys.bed_first + e.j), e.w, &g))
-          return g; // refused before: the scenario's check
-        continue;
-      }
-      if (!CouplingAdd(sys, sys.Dof(e.i), e.w, &g)) return g;
-      if (roll >= 0 && !CouplingAdd(sys, sys.Dof(e.i, roll), e.w * sys.bed.Z(e.j), &g)) return g;
-    }
-    return g;
-  }
+  g.x = x_imp;
+  g.z = z_imp;
+  for (const PartInstance &s : sys.parts) // a part the point strikes (the bed under the ball's disc)
+    if (s.part->CoupleInstead(s, sys, x_imp, z_imp, &g)) return g;
   const ImpactStencil st = GridImpactStencil(sys.nodes, sys.L, x_imp);
   g.n                    = 2; // the hat entries of the two nodes around the point
   g.dof[0]               = sys.Dof(st.j);
@@ -248,8 +206,8 @@ std::vector<std::vector<PetscReal>> BeamSystemRigidMotions(const BeamSystem &sys
   // eigenvalues below 1e-12 of its trace (LAPACK's syev on the k x k matrix, k <= 3).
   PetscReal A[9] = {0}, lambda[3] = {0}, work[32];
   for (PetscInt d = 0; d < sys.ndof; ++d)
-    if (sys.held[d] && !sys.Bed(d % sys.fields)) // a string bed's held dofs are not unknowns (their strings' mass moves
-                                                 // with the frame): they hold nothing
+    if (sys.held[d] && !sys.Face(d % sys.fields)) // a face's held dofs (a string bed's) are not unknowns: their
+                                                  // strings' mass moves with the frame, they hold nothing
       for (int a = 0; a < k; ++a)
         for (int b = 0; b < k; ++b) A[a * k + b] += c[a][d] * c[b][d];
   PetscReal trace = 0;
@@ -343,12 +301,7 @@ const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)
   if (dof < 0) return "the ball's contact spring";
   for (const PartInstance &p : sys.parts) // a registered part's fields
     if (dof % sys.fields >= p.first && dof % sys.fields < p.first + p.count) return p.part->Words();
-  switch (sys.PartOf(dof % sys.fields)) {
-  case Part::Bed:
-    return "the string bed";
-  default:
-    return sys.Rotation(1) ? "the beam's shear and its sections' rotation" : "the beam's bending";
-  }
+  return sys.Rotation(1) ? "the beam's shear and its sections' rotation" : "the beam's bending";
 }
 
 void BeamSystemDampingApply(const BeamSystem &sys, const PetscReal *v, PetscInt ns, PetscInt d0, PetscInt d1,

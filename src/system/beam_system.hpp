@@ -12,21 +12,21 @@
 // are node-major: dof = node x fields + field; field 0 is the transverse deflection (m). The
 // motion of the swing's frame is the run's (FrameMotion), passed to the operator, never stored
 // here. The registered structure parts (system/structure_part.hpp: the frame's roll, the barrel
-// wall, ...) append their fields after the theory's; a racket's string bed
-// (system/string_bed_operator.hpp) one field per node of the bed's column across the face, the
-// ball's coupling its nodes under the ball's patch. Plain arrays only.
+// wall, a racket's string bed, ...) append their fields after the theory's (the bed one field per
+// node of its column across the face, the ball's coupling its nodes under the ball's patch).
+// Plain arrays only.
 #pragma once
 
 #include "model/beam_theory.hpp"
 #include "model/contact.hpp"
 #include "model/swing.hpp"
 #include "system/force_operator.hpp"
-#include "system/string_bed_operator.hpp"
 #include "system/structure_part.hpp"
 
 #include <petscsys.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -36,11 +36,9 @@ struct BeamSystem {
   PetscInt nodes = 0, fields = 1, ndof = 0;
   PetscInt
     beam_fields = 1; // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
-  PetscInt  bed_first = -1; // the string bed's first field (-strings_frame): field bed_first + j is w at (x_i, z_j)
-  BedGrid   bed;            // the bed's grid (its columns: the nodes), with bed_first
-  PetscReal bed_head_center  = 0;       // m, the head's centre along the frame
-  PetscReal bed_patch_radius = 0;       // m, the ball's load disc on the bed (-strings_patch_radius)
-  std::vector<Part>       field_part;   // the part each field belongs to (model/beam_theory.hpp)
+  std::vector<Part>       field_part; // the part each field belongs to (model/beam_theory.hpp)
+  std::vector<PetscReal>  field_z;    // m, per field: a deflection at z across the axis (StructurePart::FieldZ), or NaN
+  std::vector<PetscInt>   face_fields;  // the fields with a z (ascending; none without a string bed)
   PetscReal               L = 0, h = 0; // m, length and node spacing
   std::vector<PetscReal>  mass;         // kg (or kg m^2), per dof (with a grip's hands)
   std::vector<char>       held;         // 1 where the dof is held at 0
@@ -80,12 +78,14 @@ struct BeamSystem {
   {
     return f < (PetscInt)field_part.size() ? field_part[f] : Part::Beam;
   } // a system laid out by hand: the beam's
-  bool Bed(PetscInt f) const { return PartOf(f) == Part::Bed; }
-  // Whether field f is a deflection (m) toward the ball: the beam's (field 0) or the bed's. Their
+  // Whether field f is a part's deflection at z across the axis (StructurePart::FieldZ: a string
+  // bed's): anchored on the frame's section, its held dofs move with it.
+  bool Face(PetscInt f) const { return f < (PetscInt)field_z.size() && !std::isnan(field_z[f]); }
+  // Whether field f is a deflection (m) toward the ball: the beam's (field 0) or a face's. Their
   // masses carry the momentum; a rigid motion y = a + b x + c z moves them all.
-  bool Deflection(PetscInt f) const { return f == 0 || Bed(f); }
+  bool Deflection(PetscInt f) const { return f == 0 || Face(f); }
   // The point (x along the beam, z across from its axis; m) of dof d's deflection.
-  PetscReal DofZ(PetscInt d) const { return Bed(d % fields) ? bed.Z(d % fields - bed_first) : 0.0; }
+  PetscReal DofZ(PetscInt d) const { return Face(d % fields) ? field_z[d % fields] : 0.0; }
   // Ghost width (nodes) a distributed state needs for the forces and the strain energy.
   PetscInt GhostNodes() const { return (std::max({bw, 2 * reach, forces.reach}) + fields - 1) / fields; }
 };
@@ -125,12 +125,11 @@ struct ContactCoupling {
     return s;
   }
 };
-// The coupling of a ball striking at x_imp along the beam and z_imp across it (m): on a string
-// bed's head, the bed's nodes under the ball's disc (BeamSystemBedPatch); elsewhere the hat of
-// the beam's nodes, and with a roll field their roll times z_imp.
+// The coupling of a ball striking at x_imp along the beam and z_imp across it (m): a part's own
+// where the point strikes it (StructurePart::CoupleInstead: a string bed's nodes under the ball's
+// disc); elsewhere the hat of the beam's nodes, then each part's entries (StructurePart::Couple:
+// with a roll field their roll times z_imp).
 ContactCoupling BeamSystemCoupling(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp = 0);
-// Whether (x_imp, z_imp) strikes the string bed (strictly inside its head's outline).
-bool BeamSystemOnBed(const BeamSystem &sys, PetscReal x_imp, PetscReal z_imp);
 
 // f_i = (K y)_i (N) for dofs i in [d0, d1), K = df/dy of every force term (the elastic
 // strain terms in the factored form B^T W B y, a grip's springs): the force of the deflection y

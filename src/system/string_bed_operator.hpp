@@ -77,6 +77,8 @@ struct BedLayout {
   BedGrid  grid;       // its grid (columns: the beam's nodes)
   PetscInt roll = -1;  // the frame's roll field (-1: none)
 };
-BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, BeamDiscretization *d);
+// Its strain terms in the energy account `account` (the bed part's, system/parts/bed.cpp).
+BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, Part account,
+                          BeamDiscretization *d);
 
 } // namespace beamimpact

@@ -15,18 +15,18 @@ namespace beamimpact {
 const StructurePart &GripPart();     // system/parts/grip.cpp
 const StructurePart &RollPart();     // system/parts/roll.cpp
 const StructurePart &WallPart();     // system/parts/wall.cpp
+const StructurePart &BedPart();      // system/parts/bed.cpp
 const StructurePart &AbsorberPart(); // system/parts/absorber.cpp
 
 namespace {
 
-// nullptr: the place of the part BeamSystemBuild still builds itself (the string bed).
 std::vector<const StructurePart *> PartList()
 {
   std::vector<const StructurePart *> v;
   v.push_back(&GripPart());
   v.push_back(&RollPart());
   v.push_back(&WallPart());
-  v.push_back(nullptr);
+  v.push_back(&BedPart());
   v.push_back(&AbsorberPart());
   return v;
 }
@@ -36,9 +36,8 @@ std::vector<const StructurePart *> PartList()
 const std::vector<const StructurePart *> &StructureParts()
 {
   static const std::vector<const StructurePart *> parts = [] {
-    std::vector<const StructurePart *> v = PartList();
-    v.erase(std::remove(v.begin(), v.end(), nullptr), v.end());
-    size_t slots = 0; // every part present at once must fit the fixed slots
+    const std::vector<const StructurePart *> v     = PartList();
+    size_t                                   slots = 0; // every part present at once must fit the fixed slots
     for (const StructurePart *p : v) slots += p->Slots().size();
     PetscCheckAbort(slots <= (size_t)kMaxPartSlots, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                     "the structure parts declare %zu measure slots, more than kMaxPartSlots = %d", slots,
@@ -55,15 +54,10 @@ const StructurePart *StructurePartFind(const char *name)
   return nullptr;
 }
 
-std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d,
-                                              const std::function<void(const std::vector<PartInstance> &)> &older)
+std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d)
 {
   std::vector<PartInstance> out;
-  for (const StructurePart *part : PartList()) {
-    if (!part) {
-      older(out);
-      continue;
-    }
+  for (const StructurePart *part : StructureParts()) {
     const PartParams *q = p.parts.Find(part->Name());
     if (!q) continue;
     PartInstance s;
@@ -71,7 +65,7 @@ std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretiz
     for (const auto &e : p.parts.present)
       if (e.second.get() == q) s.params = e.second;
     s.first = d->fields;
-    s.count = part->Build(*q, p, d, &s.built);
+    s.count = part->BuildAfter(*q, p, out, d, &s.built);
     out.push_back(s);
   }
   return out;
@@ -137,6 +131,40 @@ bool StructurePartsMonitor(const BeamParams &p)
   for (const StructurePart *part : StructureParts())
     if (const PartParams *q = p.parts.Find(part->Name()))
       if (part->Monitors(*q)) return true;
+  return false;
+}
+
+bool StructurePartsStrike(const BeamParams &p, PetscReal x, PetscReal z)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name()))
+      if (part->Strikes(*q, x, z)) return true;
+  return false;
+}
+
+bool StructurePartsHaveFace(const BeamParams &p)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name()))
+      if (part->HasFace(*q)) return true;
+  return false;
+}
+
+std::string StructurePartsPointRefusal(const BeamParams &p, const char *what, PetscReal z, bool held)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name())) {
+      const std::string why = part->PointRefusal(*q, what, z, held);
+      if (!why.empty()) return why;
+    }
+  return "";
+}
+
+bool StructurePartsInPlane(const BeamParams &p, PetscReal x, PetscReal z, PetscReal *stiffness, PetscReal *mass)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name()))
+      if (part->InPlane(*q, x, z, stiffness, mass)) return true;
   return false;
 }
 

@@ -8,10 +8,8 @@
 // table, the run record, -help and the summary loop over the registered parts: no code outside
 // a part's file names it. The registered parts: the hands (parts/grip.cpp: no fields, a force
 // term tying the handle to the swing's frame), the frame's roll (parts/roll.cpp), the barrel wall
-// (parts/wall.cpp: the hoop oscillator or the shell) and the tuned absorber (parts/absorber.cpp).
-// (The string bed, which predates the registry and has not moved yet, is still built by
-// BeamSystemBuild itself, at its place in the registry's order: after the wall, before the
-// absorber.)
+// (parts/wall.cpp: the hoop oscillator or the shell), a racket's string bed (parts/bed.cpp: its
+// nodes across the face, the ball's disc on its head) and the tuned absorber (parts/absorber.cpp).
 //
 // How a part is added: docs/design.md, "Adding a structure part".
 #pragma once
@@ -23,7 +21,6 @@
 #include <petscsys.h>
 
 #include <cmath>
-#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -109,11 +106,12 @@ struct PartColumn {
   const char *share = nullptr;
 };
 
-// What a part's Resolve sees of the impact: the ball, its approach speed and the point.
+// What a part's Resolve and SummaryAt see of the impact: the ball, its approach speed and the point.
 struct PartPoint {
   const BallParams *ball     = nullptr;
   PetscReal         approach = 0; // m/s, the ball's speed toward the beam at the point (with the swing's)
   PetscReal         x        = 0; // m, the impact point along the beam
+  PetscReal         z        = 0; // m, across the face from the frame's axis (-impact_z)
 };
 
 // A part's options as read: the rows given in the options database, by name (with the dash),
@@ -131,6 +129,10 @@ public:
   virtual const char         *Presence() const = 0;            // "with -absorber": when its columns apply
   virtual const char         *Words() const { return Name(); } // for messages: "the stability limit is set by ..."
   virtual const OptionModule &Options() const = 0; // its rows: -help, the unknown-option check, the run record
+  // Whether its rows are read with the beam's (the string bed's: a held frame sets the beam's length
+  // and holds, a racket's maker strings its frame); Configure then gets no values and takes the
+  // options from the beam as read. No by default.
+  virtual bool ReadWithBeam() const { return false; }
   // The value -help and /options_used show for its number row `name` when not given (its
   // parameter's own default: the shell's -shell_contact_radius -1, not yet derived); 0 by default.
   virtual PetscReal Unset(const char *) const { return 0; }
@@ -150,6 +152,20 @@ public:
   // Why it cannot be with the parts present in beam (all configured: a check against another
   // part), naming the option and its value; "" when it can.
   virtual std::string RefusalWith(const PartParams &, const BeamParams &) const { return ""; }
+  // -- the impact point ---------------------------------------------------------------------------
+  // Whether the ball at (x, z) (m: along the beam, across from its axis) strikes it rather than the
+  // beam (the bed: strictly inside the head's outline). No by default.
+  virtual bool Strikes(const PartParams &, PetscReal, PetscReal) const { return false; }
+  // Whether it is the structure's face off the axis (the bed): a point off the axis that it does not
+  // strike is off the face, and a hit off the axis needs no roll. No by default.
+  virtual bool HasFace(const PartParams &) const { return false; }
+  // Why `what` (the option that names the point) cannot strike at z (m) across the axis: off its
+  // face (held false) or on a point the beam holds (held true); "" leaves it to the beam's checks.
+  virtual std::string PointRefusal(const PartParams &, const char *, PetscReal, bool) const { return ""; }
+  // Its stiffness (N/m) and mass (kg) in its own plane under the ball at (x, z) (m), against the
+  // friction force of an oblique impact (the bed's mains pulled sideways: the tangential stage's
+  // plane); false (the default) for none.
+  virtual bool InPlane(const PartParams &, PetscReal, PetscReal, PetscReal *, PetscReal *) const { return false; }
   // Why the modal reference (-reference modal) cannot carry it, or nullptr.
   virtual const char *ModalRefusal(const PartParams &) const { return nullptr; }
   // Whether it ties the structure to the swing's frame (the hands): momentum is then not an
@@ -165,6 +181,18 @@ public:
   {
     return 0;
   }
+  // Build with the parts built before it at hand (the bed's anchoring on the roll's field); by
+  // default Build's.
+  virtual PetscInt BuildAfter(const PartParams &q, const BeamParams &beam, const std::vector<PartInstance> &,
+                              BeamDiscretization *d, std::shared_ptr<const PartBuilt> *out) const
+  {
+    return Build(q, beam, d, out);
+  }
+  // Its field f as a deflection w at z (m) across the frame's axis, anchored on the frame's
+  // section at x (the bed's nodes across the face): a rigid motion moves it as y + z phi, its mass
+  // carries momentum as the beam's deflection does, and its held dofs move with their section
+  // (they hold nothing in the rigid motions' null space). NaN: not such a field (the default).
+  virtual PetscReal FieldZ(const PartInstance &, PetscInt) const { return NAN; }
   // The energy account of its fields and strain terms (model/beam_theory.hpp's Part: the energy
   // split's parts and -task modes' family label); the beam's by default.
   virtual Part Account() const { return Part::Beam; }
@@ -175,6 +203,13 @@ public:
   virtual void Couple(const PartInstance &, const BeamSystem &, const ImpactStencil &, PetscReal,
                       ContactCoupling *) const
   {
+  }
+  // Its coupling when the point (x, z) strikes it (m: the bed under the ball's disc), in place of
+  // the beam's hat and every other part's entries: true when it does, with g's entries set; false
+  // (the default) when the point is not on it.
+  virtual bool CoupleInstead(const PartInstance &, const BeamSystem &, PetscReal, PetscReal, ContactCoupling *) const
+  {
+    return false;
   }
   // What it adds to the masses of the dofs (kg: the hands), before its force terms.
   virtual void AddMasses(const PartInstance &, BeamSystem *) const { }
@@ -215,10 +250,26 @@ public:
   // The run summary's line (without newline; "" for none) from its columns' values, in Columns()'s
   // order, then SummaryColumns()'s.
   virtual std::string Summary(const PartParams &, const std::vector<double> &) const { return ""; }
+  // Its line in the run summary at the point `at` (the impact's x and z), by default Summary's.
+  virtual std::string SummaryAt(const PartParams &q, const std::vector<double> &c, const PartPoint &) const
+  {
+    return Summary(q, c);
+  }
+  // Whether its summary line comes before the pivot rig's lines (a part that predates the registry
+  // keeps its line's place: the bed's); after them, in registry order, by default.
+  virtual bool SummaryFirst() const { return false; }
   // Its entries in the run record (/run attributes, in order: name, value in the row's unit).
   virtual void Record(const PartParams &, const BeamParams &, std::vector<std::pair<const char *, PetscReal>> *) const
   {
   }
+  // Its text and whole-number entries in the run record, in order (after the numbers of Record).
+  virtual void RecordWords(const PartParams &, const BeamParams &, std::vector<std::pair<const char *, std::string>> *,
+                           std::vector<std::pair<const char *, long long>> *) const
+  {
+  }
+  // A line of its own before the beam's description (PrintBeamBody; without newline, "" for none),
+  // and *body false when the beam is then not described as a body (a held frame). Nothing by default.
+  virtual std::string Heading(const PartParams &, bool *) const { return ""; }
   // Its line in the beam's description (PrintBeamBody), appended to the rigid body's: "" for none.
   virtual std::string Describe(const PartParams &, const BeamRigidBody &) const { return ""; }
 };
@@ -227,11 +278,8 @@ public:
 const std::vector<const StructurePart *> &StructureParts();
 const StructurePart                      *StructurePartFind(const char *name); // nullptr if none
 
-// The parts present in p, appended to d in registry order (BeamSystemBuild); `older` appends the
-// part that predates the registry (the string bed) at its place in that order, with the
-// instances built before it.
-std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d,
-                                              const std::function<void(const std::vector<PartInstance> &)> &older);
+// The parts present in p, appended to d in registry order (BeamSystemBuild).
+std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d);
 // Each present part's masses added, its force terms appended to sys->forces.terms and its rigid
 // points to sys->rigid_points; its measure slots numbered (BeamSystemBuild, before the assembly).
 void StructurePartsFinish(BeamSystem *sys);
@@ -243,6 +291,16 @@ void StructurePartsMeasure(const BeamSystem &sys, const PartState &s, PetscReal 
 bool StructurePartsPeaks(const BeamSystem &sys);
 // slot[k] set by every present part from the frame terms fm (its slots at slot0 + k).
 void StructurePartsMeasureFrame(const BeamSystem &sys, const FrameMeasures &fm, PetscReal *slot);
+// Whether the ball at (x, z) strikes a part present in p (StructurePart::Strikes: the bed's head).
+bool StructurePartsStrike(const BeamParams &p, PetscReal x, PetscReal z);
+// Whether a part present in p is the structure's face off the axis (StructurePart::HasFace).
+bool StructurePartsHaveFace(const BeamParams &p);
+// Why `what` cannot strike at z off a present part's face or on a held point (StructurePart::
+// PointRefusal; "" when no part refuses it).
+std::string StructurePartsPointRefusal(const BeamParams &p, const char *what, PetscReal z, bool held);
+// The in-plane stiffness and mass under the ball at (x, z) of the first present part that has them
+// (StructurePart::InPlane); false when none.
+bool StructurePartsInPlane(const BeamParams &p, PetscReal x, PetscReal z, PetscReal *stiffness, PetscReal *mass);
 // Why the modal reference cannot carry the parts present in p ("" when it can).
 std::string StructurePartsModalRefusal(const BeamParams &p);
 // Why a part present in p cannot be with the others (StructurePart::RefusalWith; "" when none).
