@@ -35,7 +35,9 @@ struct ModalSystem {
   PetscInt               n    = 0;
   PetscReal              k    = 0;    // N/m, the contact spring
   bool                   ball = true; // false: the beam alone (ModalSystemBeamOnly), no ball dof
-  bool     damping            = true; // false: the system's damping left out (the undamped modes of the same M and K)
+  bool damping                = true; // false: the system's damping left out (the undamped modes of the same M and K)
+  bool mirror                 = true; // the dense decomposition split by the structure's mirror z -> -z where it has
+                                      // one (-modal_mirror; ModalBasisBuild)
   PetscInt BeamDofs() const { return ball ? n - 1 : n; }
   // The beam's damping C = alpha M + beta K (the force operator's, ForceOperatorModal; 0, 0
   // without damping or with `damping` false). False when the system's forces are not modal.
@@ -57,14 +59,17 @@ struct ModalBasis {
   std::vector<PetscReal> gamma; // g^T M^{-1/2} Phi_k: contribution of mode k to c
   std::vector<PetscReal> rate;  // 1/s, sigma_k = zeta_k omega_k: z_k'' + 2 sigma_k z_k' + omega_k^2 z_k = 0
   PetscInt
-       refined = 0; // modes refined by inverse iteration (all of them where the band is narrow: ModalRefinesEveryMode)
-  bool by_need = false; // refined where the residual asked for it (a wide band), not every mode
+       refined  = 0; // modes refined by inverse iteration (all of them where the band is narrow: ModalRefinesEveryMode)
+  bool by_need  = false; // refined where the residual asked for it (a wide band), not every mode
+  bool mirrored = false; // decomposed as its even and odd halves under the structure's mirror z -> -z
 };
 // The basis in contact (K + k g g^T) or separated (K). With Rayleigh damping C = alpha M +
 // beta K on the beam dofs (ModalSystem::Rayleigh, from the force operator) the separated basis
 // decouples it exactly (sigma = alpha/2 + beta omega^2/2 a beam mode, alpha/2 a rigid one, 0
 // the ball's); in contact it does not (the ball and the spring are undamped): PETSC_ERR_SUP.
-// refine_all: every mode refined whatever the band (-modal_refine all).
+// refine_all: every mode refined whatever the band (-modal_refine all). Where the structure is
+// mirrored across the face (z -> -z: a racket's string bed about the frame's axis, the frame's
+// roll changing sign) and S.mirror, the even and odd halves are decomposed apart (B->mirrored).
 PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all = false);
 
 // The beam alone (S from ModalSystemBeamOnly), from `count` of its modes found elsewhere (a
