@@ -1190,6 +1190,20 @@ const OptionModule &ModalOptionTable()
   return m;
 }
 
+const std::vector<const char *> &BeamModes::PartLabels() const
+{
+  if (labels_.size() == (size_t)Count()) return labels_;
+  const PetscInt         n = S.n;
+  std::vector<PetscReal> e(n);
+  labels_.assign(Count(), "");
+  for (PetscInt k = 0; k < Count(); ++k) {
+    const PetscReal *phi = &B.Phi[(size_t)k * n];
+    for (PetscInt q = 0; q < n; ++q) e[q] = phi[q] * phi[q];
+    labels_[k] = BeamSystemPartName(BeamSystemDominantPart(sys, S.dof.data(), e.data(), n, nullptr));
+  }
+  return labels_;
+}
+
 std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
 {
   char buf[512];
