@@ -18,6 +18,7 @@
 #include "model/torsion.hpp"
 #include "run/impact.hpp"
 #include "solvers/beam_modes.hpp"
+#include "solvers/modal_basis.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/string_bed_modes.hpp"
 #include "system/beam_system.hpp"
@@ -573,6 +574,23 @@ TEST(Racket, SampledPeaksAreTheSteppedOnes)
   EXPECT_NEAR(sampled.bed_energy_peak, stepped.bed_energy_peak, 1e-12 * stepped.bed_energy_peak);
   EXPECT_EQ(sampled.acor, stepped.acor);
   EXPECT_GT(sampled.steps, 2 * 256);
+}
+
+// The racket's modes built on every rank together (ModalBasisBuild's comm: the mirror's two halves
+// one rank each, the residuals and the refined modes shared out mode by mode, each handed to
+// every rank) are the one rank's bit for bit.
+TEST(RacketParallel, ModesSharedOverRanksAreOneRanks)
+{
+  const BeamSystem  sys = SystemOf(StrungRacket(0.15, 0.05, {{"-beam_nodes", "37"}}).beam);
+  const ModalSystem S   = ModalSystemBeamOnly(sys);
+  ModalBasis        one, all;
+  ASSERT_EQ(0, ModalBasisBuild(S, false, &one, false, PETSC_COMM_SELF));
+  ASSERT_EQ(0, ModalBasisBuild(S, false, &all, false, PETSC_COMM_WORLD));
+  EXPECT_TRUE(all.mirrored);
+  EXPECT_GT(all.refined, 0);
+  EXPECT_EQ(one.refined, all.refined);
+  EXPECT_TRUE(one.omega == all.omega);
+  EXPECT_TRUE(one.Phi == all.Phi);
 }
 
 // The same off-axis hit on 1 and 4 ranks (the bed's columns split with the frame's nodes).

@@ -382,7 +382,7 @@ PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m,
                           "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT
                           " free dofs, expected to take about %.0f s (%s)\n",
                           m->S.n, expected, why));
-  PetscCall(ModalBasisBuild(m->S, false, &m->B, m->request.refine_all));
+  PetscCall(ModalBasisBuild(m->S, false, &m->B, m->request.refine_all, comm));
   m->method = m->B.mirrored ? "dense, mirror-split" : "dense";
   PetscFunctionReturn(0);
 }

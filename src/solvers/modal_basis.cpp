@@ -383,13 +383,14 @@ PetscReal ModalRefineResidual() { return kRefineResidual; }
 // |A phi - rho phi| / |rho| of each column of Phi (n x count), rho = phi^T A phi, A in the
 // factored form (ModalApply): O(n) per mode.
 std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi,
-                                      PetscInt count)
+                                      PetscInt count, PetscMPIInt rank, PetscMPIInt size)
 {
   const PetscInt         n = S.n;
   std::vector<PetscReal> q(S.sys->ndof), f(S.sys->ndof), ax(n), rel(count);
   for (PetscInt k = 0; k < count; ++k) {
     const PetscReal *phi = &Phi[(size_t)k * n];
     PetscReal        rho = 0, r2 = 0, nrm = 0;
+    if (k % size != rank) continue; // another rank's: 0 here
     ModalApply(S, contact, phi, q, f, ax.data());
     for (PetscInt d = 0; d < n; ++d) rho += phi[d] * ax[d], nrm += phi[d] * phi[d];
     rho /= nrm;
@@ -408,8 +409,23 @@ std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const 
 // modes whose residual asks for it, Gram-Schmidt among them in order, and every other mode
 // then made orthogonal to them (it was orthogonal to the old vectors to round-off; what the
 // refinement moved is ~|r| / gap) and normalised.
+// Columns of Phi (n each) computed one rank each, column j on rank j % size of comm, handed to
+// every rank: each rank's result is the one rank's, bit for bit, whatever the number of ranks.
+static PetscErrorCode ShareColumns(MPI_Comm comm, PetscInt n, const std::vector<PetscInt> &cols,
+                                   std::vector<PetscReal> &Phi)
+{
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (size == 1) PetscFunctionReturn(0);
+  for (size_t j = 0; j < cols.size(); ++j)
+    PetscCallMPI(MPI_Bcast(&Phi[(size_t)cols[j] * n], (PetscMPIInt)n, MPIU_REAL, (PetscMPIInt)(j % size), comm));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda,
-                                  ModalBasis *B, bool refine_all)
+                                  ModalBasis *B, bool refine_all, MPI_Comm comm)
 {
   const PetscInt               n       = S.n;
   const int                    kl      = BandHalfWidth(S);
@@ -418,28 +434,42 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   const PetscReal              scale   = *std::max_element(lambda.begin(), lambda.end());
   const PetscInt               count   = (PetscInt)lambda.size(); // the columns of Phi
 
+  PetscMPIInt rank, size;
+
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   if (refine_all || ModalRefinesEveryMode(n, kl, count)) {
-    for (PetscInt k = 0; k < count; ++k)
-      PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale,
-                               &B->Phi[k * n])); // just below: never exactly singular
+    std::vector<PetscInt> all(count);
+    for (PetscInt k = 0; k < count; ++k) {
+      all[k] = k;
+      if (k % size == rank) // the modes shared over the ranks (ShareColumns)
+        PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale,
+                                 &B->Phi[k * n])); // just below: never exactly singular
+    }
+    PetscCall(ShareColumns(comm, n, all, B->Phi));
     GramSchmidt(n, B->Phi);
     B->refined = count;
     PetscFunctionReturn(0);
   }
-  const std::vector<PetscReal> rel = ModalResiduals(S, contact, B->Phi, count);
-  std::vector<PetscInt>        need;
+  std::vector<PetscReal> rel = ModalResiduals(S, contact, B->Phi, count, rank, size);
+  if (size > 1) // each mode's from one rank, the others' 0
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, rel.data(), (PetscMPIInt)count, MPIU_REAL, MPIU_SUM, comm));
+  std::vector<PetscInt> need;
   for (PetscInt k = 0; k < count; ++k)
     if (!(rel[k] <= kRefineResidual)) need.push_back(k);
   if (!need.empty()) { // the sparse LU: the band is wide here
     SparseShift sp;
     PetscCall(SparseShiftCreate(n, entries, &sp));
-    for (PetscInt k : need) {
-      bool solved;
+    for (size_t j = 0; j < need.size(); ++j) {
+      const PetscInt k = need[j];
+      bool           solved;
+      if ((PetscMPIInt)(j % size) != rank) continue; // another rank's (ShareColumns)
       PetscCall(InverseIterateSparse(S, contact, &sp, lambda[k] - 1e-14 * scale, &B->Phi[k * n], &solved));
       if (!solved) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n]));
     }
     PetscCall(SparseShiftDestroy(&sp));
+    PetscCall(ShareColumns(comm, n, need, B->Phi));
   }
   std::vector<PetscReal> R((size_t)n *
                            need.size()); // the refined columns, orthonormal (modified Gram-Schmidt in order)
@@ -714,19 +744,29 @@ static PetscErrorCode SymmetricEigen(PetscInt n, std::vector<PetscReal> &A, std:
 // MirrorBases), merged in ascending order (even first at a tie); *done false where there is no
 // mirror A commutes with (then A is untouched).
 static PetscErrorCode MirrorEigen(const ModalSystem &S, std::vector<PetscReal> &A, std::vector<PetscReal> *w,
-                                  bool *done)
+                                  bool *done, MPI_Comm comm)
 {
   const PetscInt            n = S.n;
   ModalMirror               m;
   std::vector<MirrorColumn> Q[2];
+  PetscMPIInt               rank, size;
 
   PetscFunctionBeginUser;
   *done = false;
   if (!S.mirror || !ModalMirrorOf(S, &m) || !MirrorBases(A, n, m, &Q[0], &Q[1])) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   std::vector<PetscReal> V[2], lam[2];
-  for (int b = 0; b < 2; ++b) {
-    V[b] = MirrorBlock(A, n, Q[b]);
-    PetscCall(SymmetricEigen((PetscInt)Q[b].size(), V[b], &lam[b], [&] { return MirrorBlock(A, n, Q[b]); }));
+  for (int b = 0; b < 2; ++b) { // on several ranks, block b on rank b % size, then handed out
+    const PetscInt k = (PetscInt)Q[b].size();
+    if (b % size == rank) {
+      V[b] = MirrorBlock(A, n, Q[b]);
+      PetscCall(SymmetricEigen(k, V[b], &lam[b], [&] { return MirrorBlock(A, n, Q[b]); }));
+    } else V[b].resize((size_t)k * k), lam[b].resize(k);
+    if (size > 1) {
+      PetscCallMPI(MPI_Bcast(lam[b].data(), (PetscMPIInt)k, MPIU_REAL, b % size, comm));
+      PetscCallMPI(MPI_Bcast(V[b].data(), (PetscMPIInt)(k * k), MPIU_REAL, b % size, comm));
+    }
   }
   std::fill(A.begin(), A.end(), 0.0);
   w->assign(n, 0.0);
@@ -751,7 +791,7 @@ static PetscErrorCode MirrorEigen(const ModalSystem &S, std::vector<PetscReal> &
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all)
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all, MPI_Comm comm)
 {
   const PetscInt         n = S.n;
   std::vector<PetscReal> A, w(n);
@@ -768,14 +808,14 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
              (double)alpha, (double)beta);
   A             = ModalMatrix(S, contact);
   bool mirrored = false;
-  PetscCall(MirrorEigen(S, A, &w, &mirrored));
+  PetscCall(MirrorEigen(S, A, &w, &mirrored, comm));
   B->mirrored = mirrored;
   if (!mirrored) PetscCall(SymmetricEigen(n, A, &w, [&] { return ModalMatrix(S, contact); }));
   B->Phi = std::move(A);
   B->omega.assign(n, 0.0);
   B->gamma.assign(n, 0.0);
   B->rate.assign(n, 0.0);
-  PetscCall(RefineBasis(S, contact, w, B, refine_all));
+  PetscCall(RefineBasis(S, contact, w, B, refine_all, comm));
   if (!contact && damped && S.ball) IsolateBall(S, w, B);
   ModalQuotients(S, contact, B);
   PetscFunctionReturn(0);
@@ -793,7 +833,7 @@ PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<Petsc
   B->omega.assign(count, 0.0);
   B->gamma.assign(count, 0.0);
   B->rate.assign(count, 0.0);
-  if (refine) PetscCall(RefineBasis(S, false, lambda, B, refine_all));
+  if (refine) PetscCall(RefineBasis(S, false, lambda, B, refine_all, PETSC_COMM_SELF));
   ModalQuotients(S, false, B);
   PetscFunctionReturn(0);
 }

@@ -70,7 +70,11 @@ struct ModalBasis {
 // refine_all: every mode refined whatever the band (-modal_refine all). Where the structure is
 // mirrored across the face (z -> -z: a racket's string bed about the frame's axis, the frame's
 // roll changing sign) and S.mirror, the even and odd halves are decomposed apart (B->mirrored).
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all = false);
+// On a communicator of several ranks (comm) the work is shared out and the result handed to
+// every rank, the same bits as on one: the mirror's two halves one rank each, the residuals and
+// the refined modes mode by mode.
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all = false,
+                               MPI_Comm comm = PETSC_COMM_SELF);
 
 // The beam alone (S from ModalSystemBeamOnly), from `count` of its modes found elsewhere (a
 // partial eigen-solve): Phi (S.n x count, column-major) the columns M^{1/2} phi_k, lambda their
@@ -89,13 +93,15 @@ PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<Petsc
 // dense decomposition's share of a mode) or 2e9 flops in all (ModalRefinesEveryMode: every beam,
 // shell and hoop); elsewhere (a string bed: kl ~ 2 fields per node) only the modes whose
 // relative residual |A phi - rho phi| / rho in the factored form (ModalResiduals) exceeds
-// ModalRefineResidual() (1e-12).
+// ModalRefineResidual() (1e-12). ModalResiduals with (rank, size): only the modes k = rank mod
+// size, the others' 0 (a basis built on several ranks shares its modes' residuals and
+// refinements out, each mode on one rank: ModalBasisBuild's comm).
 PetscInt               ModalRefineHalfWidth(const ModalSystem &S);
 double                 ModalRefineModeFlops(PetscInt n, PetscInt kl);
 bool                   ModalRefinesEveryMode(PetscInt n, PetscInt kl, PetscInt count);
 PetscReal              ModalRefineResidual();
 std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi,
-                                      PetscInt count);
+                                      PetscInt count, PetscMPIInt rank = 0, PetscMPIInt size = 1);
 
 // Mode (omega w, rate sigma) from z, zd at s = 0: z and z' at s, exact for every damping
 // (under-, critically and overdamped, rigid). Bound: sup over s >= 0 of |d^p z / ds^p|.
