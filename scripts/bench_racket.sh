@@ -8,7 +8,9 @@
 #               contact, the modal free flight after it)
 #   cn          one impact, -ts_type cn at 20 us with -impact_after time (no modes at all)
 #   map         the face map (110 points, 98 on the face) with -ts_type modal, the sweep's own
-#               "computed N points in T s" (the modes once, every point on them)
+#               "computed N points in T s" (the modes once, every point on them), on one rank
+#   map/np      the same on BENCH_RANKS ranks (default: every local core; the sweep's farm hands
+#               the points out, each rank computes the modes once)
 # and writes a PNG (time against free dofs, log-log) when a Python with matplotlib is found.
 # Then the two routes of the modal engine in the same run (issue 39), one impact each, -ts_type
 # modal at the same step: the dense decomposition of every mode (-modal_modes all) and
@@ -23,6 +25,7 @@
 # Environment:
 #   BENCH_NODES   frame nodes (default "37 73 145")
 #   BENCH_MAP     0: skip the face map (default 1)
+#   BENCH_RANKS   ranks of the map's second run (default: nproc)
 #   BENCH_PNG     the figure's path (default out/bench-racket.png; "" for none)
 #   BENCH_ROUTES  0: skip the dense-against-share table (default 1)
 #   BENCH_SHARE_TOL  -modal_tolerance of the share route (default 1e-6)
@@ -51,20 +54,25 @@ wall() {
 }
 
 uptime
-printf "%6s %8s %12s %12s %12s %10s\n" N dofs "modal (s)" "cn (s)" "map (s)" "map pts/s"
+ranks=${BENCH_RANKS:-$(nproc)}
+printf "%6s %8s %12s %12s %12s %10s %12s\n" N dofs "modal (s)" "cn (s)" "map (s)" "map pts/s" "map/np$ranks (s)"
 rows=""
 for n in $nodes; do
   tm=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -output none)
   dofs=$(sed -nE 's/.*modes [0-9]+\/([0-9]+).*/\1/p' "$tmp/log" | tail -1) # the summary's "modes kept/free"
   tc=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type cn -ts_dt 2e-5 -ts_adapt_type none -impact_after time -output none)
-  tmap=nan rate=nan
+  tmap=nan rate=nan tnp=nan
   if [[ ${BENCH_MAP:-1} != 0 ]]; then
     wall "$exe" -options_file options/scenes/racket-face-map.opts -beam_nodes "$n" -output "$tmp/map.h5" >/dev/null
     tmap=$(sed -nE 's/.*computed ([0-9]+) points in ([0-9.e+-]+) s.*/\2/p' "$tmp/log")
     rate=$(sed -nE 's/.*computed [0-9]+ points in [0-9.e+-]+ s \(([0-9.e+-]+) points\/s\).*/\1/p' "$tmp/log")
     rm -rf "$tmp/map.h5" "$tmp/map.h5.parts"
+    wall mpirun -n "$ranks" "$exe" -options_file options/scenes/racket-face-map.opts -beam_nodes "$n" \
+      -output "$tmp/map.h5" >/dev/null
+    tnp=$(sed -nE 's/.*computed ([0-9]+) points in ([0-9.e+-]+) s.*/\2/p' "$tmp/log")
+    rm -rf "$tmp/map.h5" "$tmp/map.h5.parts"
   fi
-  printf "%6s %8s %12s %12s %12s %10s\n" "$n" "$dofs" "$tm" "$tc" "$tmap" "$rate"
+  printf "%6s %8s %12s %12s %12s %10s %12s\n" "$n" "$dofs" "$tm" "$tc" "$tmap" "$rate" "$tnp"
   rows+="$n $dofs $tm $tc $tmap"$'\n'
 done
 

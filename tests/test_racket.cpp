@@ -18,6 +18,8 @@
 #include "model/torsion.hpp"
 #include "run/impact.hpp"
 #include "run/impact_point.hpp"
+#include "solvers/beam_modes.hpp"
+#include "solvers/modal_basis.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/string_bed_modes.hpp"
 #include "system/beam_system.hpp"
@@ -489,6 +491,109 @@ TEST(Racket, NearlyMasslessRollRunsOnTheModes)
   EXPECT_LT(std::abs(light.linear_momentum_error), 1e-10);
   EXPECT_LT(std::abs(light.angular_momentum_error), 1e-10);
   EXPECT_LT(std::abs(light.roll_momentum_error), 1e-10);
+}
+
+// The racket is mirrored across its face (z -> -z: the bed about the frame's axis, the roll
+// changing sign), so the dense decomposition splits into its even and odd halves
+// (solvers/modal_basis.cpp, MirrorEigen; -modal_mirror). Against the decomposition of every dof
+// at once (-modal_mirror off, dsyevd on the whole): the same frequencies to 1e-10 of each (the
+// rigid ones to 1e-7 of the frequency unit), every split mode even or odd (phi at -z is +-phi at
+// z, the roll's sign flipped), and the same impact (ACOR, peak force, the bed's peak) to 1e-12.
+// A beam without a bed or roll has no mirror to split by.
+TEST(Racket, MirrorSplitModesAreTheWholeDecompositions)
+{
+  const Scenario  sc  = StrungRacket(0.15, 0.05, {{"-beam_nodes", "37"}});
+  const BeamSystem sys = SystemOf(sc.beam);
+  ModalTruncation all;
+  all.modes = ModalModes::All;
+  std::shared_ptr<const BeamModes> split, whole;
+  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, all, &split));
+  all.mirror = false;
+  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, sys, all, &whole));
+  EXPECT_TRUE(split->B.mirrored);
+  EXPECT_EQ(split->method, "dense, mirror-split");
+  EXPECT_FALSE(whole->B.mirrored);
+  ASSERT_EQ(split->Count(), whole->Count());
+  const PetscReal unit = sys.frequency_unit;
+  for (PetscInt k = 0; k < split->Count(); ++k) {
+    const PetscReal a = split->B.omega[k], b = whole->B.omega[k];
+    EXPECT_NEAR(a, b, std::max(1e-10 * b, 1e-7 * unit)) << "mode " << k;
+  }
+  // Parity: the free dof at the same node and -z (the test's own search by DofZ).
+  const ModalSystem    &S = split->S;
+  const PetscInt        n = S.n, F = sys.fields, roll = sys.RollField();
+  std::vector<PetscInt> free_of(sys.ndof, -1);
+  for (PetscInt r = 0; r < n; ++r) free_of[S.dof[r]] = r;
+  std::vector<PetscInt> image(n, -1);
+  std::vector<int>      sign(n, 1);
+  for (PetscInt r = 0; r < n; ++r) {
+    const PetscInt d = S.dof[r];
+    for (PetscInt f = 0; f < F && image[r] < 0; ++f) // on the axis (the frame, the bed's middle row): itself
+      if (std::abs(sys.DofZ((d / F) * F + f) + sys.DofZ(d)) < 1e-12) image[r] = free_of[sys.DofZ(d) == 0 ? d : (d / F) * F + f];
+    if (d % F == roll) sign[r] = -1;
+    ASSERT_GE(image[r], 0) << "dof " << d << " has its mirror image free";
+  }
+  PetscInt even = 0, odd = 0;
+  for (PetscInt k = split->rigid; k < split->Count(); ++k) {
+    const PetscReal *phi = &split->B.Phi[(size_t)k * n];
+    PetscReal        e = 0, o = 0, nrm = 0;
+    for (PetscInt r = 0; r < n; ++r) {
+      e   = std::max(e, std::abs(phi[r] - sign[r] * phi[image[r]]));
+      o   = std::max(o, std::abs(phi[r] + sign[r] * phi[image[r]]));
+      nrm = std::max(nrm, std::abs(phi[r]));
+    }
+    EXPECT_LT(std::min(e, o), 1e-8 * nrm) << "mode " << k << " is even or odd";
+    (e < o ? even : odd)++;
+  }
+  EXPECT_GT(even, 0);
+  EXPECT_GT(odd, 0);
+  const ImpactResult a = RunWith(PETSC_COMM_WORLD, sc, {{"-ts_type", "modal"}});
+  const ImpactResult b = RunWith(PETSC_COMM_WORLD, sc, {{"-ts_type", "modal"}, {"-modal_mirror", "off"}});
+  EXPECT_NEAR(a.acor, b.acor, 1e-12);
+  EXPECT_NEAR(a.peak_force, b.peak_force, 1e-12 * b.peak_force);
+  EXPECT_NEAR(a.bed_deflection_peak, b.bed_deflection_peak, 1e-12 * b.bed_deflection_peak);
+  std::shared_ptr<const BeamModes> beam;
+  all.mirror = true;
+  ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, SystemOf(test::AluminiumBeam(1.1, 41, Support::Free, Support::Free)),
+                               all, &beam));
+  EXPECT_FALSE(beam->B.mirrored);
+}
+
+// -ts_type modal keeps the bed's peaks from samples of its modal state, expanded many at once
+// (ImpactRecorder::Flush: one matrix product per 256 steps, run/monitors.cpp) where nothing else
+// asks for the state at each step; -monitor_energy asks, and then the state is written from the
+// modes at every step (TSModalSyncSolution) as before. The two routes' peaks agree to round-off;
+// the contact's ~600 steps of 10 us are three batches; at 4 ranks each rank expands its own dofs.
+TEST(Racket, SampledPeaksAreTheSteppedOnes)
+{
+  const Scenario     sc      = StrungRacket(0.15, 0.05, {{"-beam_nodes", "37"}});
+  Scenario           watched = sc;
+  watched.monitor.energy       = PETSC_TRUE;
+  const ImpactResult sampled   = RunWith(PETSC_COMM_WORLD, sc, {{"-ts_type", "modal"}, {"-ts_dt", "1e-5"}});
+  const ImpactResult stepped   = RunWith(PETSC_COMM_WORLD, watched, {{"-ts_type", "modal"}, {"-ts_dt", "1e-5"}});
+  ASSERT_FALSE(stepped.series.bed_energy.empty()); // the energy monitor ran: a state at every step
+  ASSERT_GT(stepped.bed_deflection_peak, 0.0);
+  EXPECT_NEAR(sampled.bed_deflection_peak, stepped.bed_deflection_peak, 1e-12 * stepped.bed_deflection_peak);
+  EXPECT_NEAR(sampled.bed_energy_peak, stepped.bed_energy_peak, 1e-12 * stepped.bed_energy_peak);
+  EXPECT_EQ(sampled.acor, stepped.acor);
+  EXPECT_GT(sampled.steps, 2 * 256);
+}
+
+// The racket's modes built on every rank together (ModalBasisBuild's comm: the mirror's two halves
+// one rank each, the residuals and the refined modes shared out mode by mode, each handed to
+// every rank) are the one rank's bit for bit.
+TEST(RacketParallel, ModesSharedOverRanksAreOneRanks)
+{
+  const BeamSystem  sys = SystemOf(StrungRacket(0.15, 0.05, {{"-beam_nodes", "37"}}).beam);
+  const ModalSystem S   = ModalSystemBeamOnly(sys);
+  ModalBasis        one, all;
+  ASSERT_EQ(0, ModalBasisBuild(S, false, &one, false, PETSC_COMM_SELF));
+  ASSERT_EQ(0, ModalBasisBuild(S, false, &all, false, PETSC_COMM_WORLD));
+  EXPECT_TRUE(all.mirrored);
+  EXPECT_GT(all.refined, 0);
+  EXPECT_EQ(one.refined, all.refined);
+  EXPECT_TRUE(one.omega == all.omega);
+  EXPECT_TRUE(one.Phi == all.Phi);
 }
 
 // The same off-axis hit on 1 and 4 ranks (the bed's columns split with the frame's nodes).

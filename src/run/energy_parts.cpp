@@ -171,7 +171,6 @@ void ModeEnergiesLabel(const BeamParams &beam, const BeamModes &modes, std::vect
     U.insert(U.end(), u.begin(), u.end());
     kinds.push_back(r.kind);
   }
-  std::vector<PetscReal> e(n);
   for (size_t k = 0; k < energies->size(); ++k) {
     ModeEnergy      &E   = (*energies)[k];
     const PetscReal *phi = &modes.B.Phi[k * n];
@@ -185,8 +184,7 @@ void ModeEnergiesLabel(const BeamParams &beam, const BeamModes &modes, std::vect
       }
       continue;
     }
-    for (PetscInt q = 0; q < n; ++q) e[q] = phi[q] * phi[q];
-    E.part = BeamSystemPartName(BeamSystemDominantPart(sys, S.dof.data(), e.data(), n, nullptr));
+    E.part = modes.PartLabels()[k];
   }
 }
 

@@ -428,6 +428,7 @@ PetscErrorCode ImpactDrive(const ImpactProblem &pb, Stepper &st, const Integrato
     PetscCall(recorder.Record(t));
     PetscCall(recorder.Snapshots(t));
   }
+  PetscCall(recorder.Flush()); // the samples' peaks
   cost->wall_time                        = MPI_Wtime() - wall0;
   std::shared_ptr<const BeamModes> modes = run->modes; // the free flight's
   if (modes && !rec->mode_energies.empty()) ModeEnergiesLabel(sc.beam, *modes, &rec->mode_energies);

@@ -94,6 +94,31 @@ void PartsMeasure(const BeamSystem &S, const StateView &sv, PetscReal *p, PetscR
   StructurePartsMeasure(S, ps, slot);
 }
 
+// The structure's measures from the sums over the state (MeasureState's layout of `sums`, G the
+// end of its point velocities) and the bed's largest deflection.
+void StructureFromSums(const BeamSystem &S, PetscInt G, const std::vector<PetscReal> &sums, PetscReal bed_max,
+                       StateMeasures *m)
+{
+  m->beam_kinetic    = sums[0] - sums[G + 5]; // without the wall's share (exact: 0 without a wall)
+  m->beam_strain     = sums[1] - sums[G + 4];
+  m->shell_energy    = sums[G + 4] + sums[G + 5];
+  m->wall_deflection = sums[G + 6];
+  m->twist_energy    = sums[G + 7];
+  m->bed_energy      = sums[G + 8];
+  m->bed_deflection  = bed_max;
+  m->beam_roll       = sums[G + 9];
+  m->bed_momentum    = sums[G + 10];
+  m->bed_moment      = sums[G + 11];
+  m->bed_roll        = sums[G + 12];
+  m->beam_momentum   = sums[2];
+  m->beam_moment     = sums[3];
+  m->segment_kinetic = sums[4];
+  m->terms_stored    = sums[G];
+  m->frame_force     = sums[G + 2];
+  m->frame_moment    = sums[G + 3];
+  for (size_t k = G + 13; k < sums.size(); ++k) m->part_slot[k - G - 13] = sums[k]; // the parts' slots, last
+}
+
 // The measures from the sums over the state (MeasureState's layout of `sums`, G the end of its
 // point velocities) and the bed's largest deflection, with the contact, the ball (m->ball_y and
 // m->ball_v set) and the stepper's dissipation.
@@ -113,32 +138,15 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
   m->ball_kinetic        = 0.5 * ball.mass * m->ball_v * m->ball_v;
   m->ball_stored         = ContactStoredEnergy(ball, *ctx.contact, m->c);
   m->ball_work           = ContactWork(ball, *ctx.contact, m->c);
-  m->beam_kinetic        = sums[0] - sums[G + 5]; // without the wall's share (exact: 0 without a wall)
-  m->beam_strain         = sums[1] - sums[G + 4];
-  m->shell_energy        = sums[G + 4] + sums[G + 5];
-  m->wall_deflection     = sums[G + 6];
-  m->twist_energy        = sums[G + 7];
-  m->bed_energy          = sums[G + 8];
-  m->bed_deflection      = bed_max;
-  m->beam_roll           = sums[G + 9];
-  m->bed_momentum        = sums[G + 10];
-  m->bed_moment          = sums[G + 11];
-  m->bed_roll            = sums[G + 12];
-  m->roll_momentum       = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
-  m->momentum            = sums[2] + ball.mass * m->ball_v;
-  m->angular_momentum    = sums[3] + ball.mass * ctx.g->x * m->ball_v;
-  m->beam_momentum       = sums[2];
-  m->beam_moment         = sums[3];
-  m->segment_kinetic     = sums[4];
-  m->beam_dissipated     = stepper.Dissipated();
-  m->terms_stored        = sums[G];
-  m->frame_force         = sums[G + 2];
-  m->frame_moment        = sums[G + 3];
+  StructureFromSums(S, G, sums, bed_max, m);
+  m->roll_momentum    = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
+  m->momentum         = sums[2] + ball.mass * m->ball_v;
+  m->angular_momentum = sums[3] + ball.mass * ctx.g->x * m->ball_v;
+  m->beam_dissipated  = stepper.Dissipated();
   if (ForceOperatorDriven(S, ctx.frame))
     m->frame_work = sums[G + 1] + ball.mass * FrameMotionAt(*ctx.frame, *ctx.g) * m->ball_v -
                     ctx.frame->q0; // 0 for a frame at rest
   if (point_v) point_v->assign(sums.begin() + 5, sums.begin() + G);
-  for (size_t k = G + 13; k < sums.size(); ++k) m->part_slot[k - G - 13] = sums[k]; // the parts' slots, last
   FrameMeasures fm; // the parts tied to the frame: their slots from its terms
   fm.stored = m->terms_stored, fm.work = m->frame_work, fm.force = m->frame_force, fm.moment = m->frame_moment;
   StructurePartsMeasureFrame(S, fm, m->part_slot);
@@ -305,6 +313,40 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   if (size > 1 && !S.face_fields.empty())
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bed_max, 1, MPIU_REAL, MPIU_MAX, stepper.Comm()));
   PetscCall(MeasuresFinish(stepper, ctx, G, sums, bed_max, m, point_v));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode MeasureStructureStates(MPI_Comm comm, const MeasureContext &ctx, const SampleRange &r,
+                                      const std::vector<PetscReal> &y, const std::vector<PetscReal> &v,
+                                      const std::vector<PetscReal> &t, std::vector<StateMeasures> *m)
+{
+  const BeamSystem &S = *ctx.sys;
+  const PetscInt    G = 5, width = G + 13 + StructurePartSlotCount(S), count = (PetscInt)t.size();
+  const size_t      ne = (size_t)(r.e1 - r.e0);
+  PetscMPIInt       size;
+
+  PetscFunctionBeginUser;
+  std::vector<PetscReal> sums((size_t)width * count, 0.0), bed_max(count, 0.0);
+  for (PetscInt s = 0; s < count; ++s) { // as MeasureState's view of the stepper's state
+    StateView sv;
+    sv.y = y.data() + s * ne - r.e0, sv.v = v.data() + s * ne - r.e0;
+    sv.y_stride = sv.v_stride = S.fields;
+    sv.d0 = r.d0, sv.d1 = r.d1;
+    std::vector<PetscReal> one(width, 0.0);
+    MeasureEnergies(S, ctx, sv, t[s], G, one);
+    bed_max[s] = MeasureMomenta(S, sv, G, one);
+    std::copy(one.begin(), one.end(), sums.begin() + (size_t)s * width);
+  }
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (size > 1) {
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (PetscMPIInt)sums.size(), MPIU_REAL, MPIU_SUM, comm));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, bed_max.data(), (PetscMPIInt)count, MPIU_REAL, MPIU_MAX, comm));
+  }
+  m->assign(count, StateMeasures());
+  for (PetscInt s = 0; s < count; ++s) {
+    const std::vector<PetscReal> one(sums.begin() + (size_t)s * width, sums.begin() + (size_t)(s + 1) * width);
+    StructureFromSums(S, G, one, bed_max[s], &(*m)[s]);
+  }
   PetscFunctionReturn(0);
 }
 

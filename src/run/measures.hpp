@@ -66,5 +66,14 @@ struct MeasureContext {
 // mon->velocity_at) and the segment's kinetic energy.
 PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m,
                             std::vector<PetscReal> *point_v);
+// The structure's measures of `count` states given on this rank's dofs [r.e0, r.e1) (its owned
+// ones [r.d0, r.d1) and its neighbours' the strain terms reach; state s's dof d at y[s (e1 - e0)
+// + d - e0], as Stepper::Expand gives them), state s at time t[s]: what
+// MeasureState computes from the structure (its energies, momenta, the wall's, the bed's and the
+// parts' measures), not the ball's, the contact's or the stepper's dissipation (left 0).
+// Collective: one reduction for all the states.
+PetscErrorCode MeasureStructureStates(MPI_Comm comm, const MeasureContext &ctx, const SampleRange &r,
+                                      const std::vector<PetscReal> &y, const std::vector<PetscReal> &v,
+                                      const std::vector<PetscReal> &t, std::vector<StateMeasures> *m);
 
 } // namespace beamimpact

@@ -531,13 +531,13 @@ PetscErrorCode ModalReferenceDense(MPI_Comm comm, const Scenario &sc, const Beam
              "as the reference",
              sys.nodes, ModalReferenceFreeDofs(sys), need / 1e9, sys.Damped() ? "damped first-order" : "modal",
              limit / 1e9);
-  const double wall0  = MPI_Wtime();
-  *res                = ImpactResult();
-  res->ts_type        = "modal";
-  res->formulation    = "exact";
-  rec.after_used      = "modal"; // exact throughout
-  const ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x, ip.z), ball.mass,
-                                         ContactLinearStiffness(ball));
+  const double wall0 = MPI_Wtime();
+  *res               = ImpactResult();
+  res->ts_type       = "modal";
+  res->formulation   = "exact";
+  rec.after_used     = "modal"; // exact throughout
+  ModalSystem S = ModalSystemBuild(sys, BeamSystemCoupling(sys, ip.x, ip.z), ball.mass, ContactLinearStiffness(ball));
+  S.mirror      = truncation.mirror;
   // A damped beam: the contact phases in the damped first-order modes (solvers/modal_damped.hpp),
   // which also give the dissipated energy of every phase exactly.
   const bool       damped = sys.Damped();

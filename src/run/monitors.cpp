@@ -3,9 +3,14 @@
 
 #include "model/contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace beamimpact {
+
+// Samples measured at once (Flush): a whole contact of a few hundred steps in one or two matrix
+// products (each reads the n x k modes once); 2 n doubles per sample (the 145-node racket: 11 MB).
+constexpr size_t kSampleBatch = 256;
 
 ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest &mon,
                                const ImpactParams &ip, PetscReal E0, ImpactSeries *series, MonitorPeaks *peaks,
@@ -29,6 +34,8 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
       part_series_.push_back(slot.series && asked ? (int)series->keyed.size() : -1);
       if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
+  defer_ = !mon.any() && !drive && !ip.energy_check && !ctx.sys->TiedToFrame() && ctx.contact &&
+           std::all_of(part_series_.begin(), part_series_.end(), [](int k) { return k < 0; });
 }
 
 namespace {
@@ -68,6 +75,48 @@ void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall
 
 } // namespace
 
+// The parts' peaks, the barrel wall's, the string bed's and the hands' from a state at time t,
+// always (NaN until the first step).
+void ImpactRecorder::KeepPeaks(const StateMeasures &m, PetscReal t)
+{
+  bool wall = false; // a part whose peaks the outcome keeps (StructurePart::Peaks: the barrel wall)
+  for (const PartInstance &s : ctx_.sys->parts) wall = wall || s.part->Peaks();
+  for (size_t k = 0; k < part_peak_.size(); ++k)
+    if (part_peak_[k] && !(std::abs(m.part_slot[k]) <= peaks_->part_peak[k]))
+      peaks_->part_peak[k] = std::abs(m.part_slot[k]);
+  if (wall) {
+    if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
+      peaks_->wall_deflection = std::abs(m.wall_deflection);
+    if (!(m.shell_energy <= peaks_->shell_energy)) peaks_->shell_energy = m.shell_energy;
+  }
+  if (!ctx_.sys->face_fields.empty()) { // a racket's string bed (its fields across the face)
+    if (!(m.bed_deflection <= peaks_->bed_deflection)) peaks_->bed_deflection = m.bed_deflection;
+    if (!(m.bed_energy <= peaks_->bed_energy)) peaks_->bed_energy = m.bed_energy;
+  }
+  if (ctx_.sys->TiedToFrame() && std::abs(m.frame_force) > peaks_->frame_force) { // the hands' peak force
+    peaks_->frame_force      = std::abs(m.frame_force);
+    peaks_->frame_force_time = t;
+  }
+}
+
+PetscErrorCode ImpactRecorder::Flush()
+{
+  SampleRange                r;
+  std::vector<PetscReal>     y, v, t;
+  std::vector<StateMeasures> m;
+
+  PetscFunctionBeginUser;
+  if (samples_.empty()) PetscFunctionReturn(0);
+  PetscCheck(stepper_.Modes() == sample_modes_, stepper_.Comm(), PETSC_ERR_PLIB,
+             "the stepper's modes changed with %zu samples of the old ones kept", samples_.size());
+  PetscCall(stepper_.Expand(samples_, &r, &y, &v));
+  for (const StateSample &s : samples_) t.push_back(s.t);
+  PetscCall(MeasureStructureStates(stepper_.Comm(), ctx_, r, y, v, t, &m));
+  for (size_t q = 0; q < m.size(); ++q) KeepPeaks(m[q], t[q]);
+  samples_.clear();
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ImpactRecorder::Record(PetscReal t)
 {
   StateMeasures          m;
@@ -80,25 +129,22 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   const bool bed = !ctx_.sys->face_fields.empty(); // a racket's string bed (its fields across the face)
   if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
     PetscFunctionReturn(0);
+  if (defer_) { // peaks only: a sample in modes, measured with the others at the next flush
+    StateSample s;
+    bool        ok;
+    PetscCall(stepper_.Sample(&s, &ok));
+    if (ok) {
+      if (samples_.empty()) sample_modes_ = stepper_.Modes();
+      samples_.push_back(std::move(s));
+      if (samples_.size() >= kSampleBatch) PetscCall(Flush());
+      last_phase_ = ctx_.contact->phase;
+      PetscFunctionReturn(0);
+    }
+  }
   PetscCall(MeasureState(stepper_, ctx_, &mon_, &m, &pv));
-  for (size_t k = 0; k < part_peak_.size(); ++k) { // the parts' peaks, always (NaN until the first step)
-    if (part_peak_[k] && !(std::abs(m.part_slot[k]) <= peaks_->part_peak[k]))
-      peaks_->part_peak[k] = std::abs(m.part_slot[k]);
+  KeepPeaks(m, t);
+  for (size_t k = 0; k < part_series_.size(); ++k)
     if (part_series_[k] >= 0) S.keyed[part_series_[k]].values.push_back(m.part_slot[k]);
-  }
-  if (wall) { // the barrel wall's peaks, always (NaN until the first step)
-    if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
-      peaks_->wall_deflection = std::abs(m.wall_deflection);
-    if (!(m.shell_energy <= peaks_->shell_energy)) peaks_->shell_energy = m.shell_energy;
-  }
-  if (bed) { // the string bed's peaks, always (NaN until the first step)
-    if (!(m.bed_deflection <= peaks_->bed_deflection)) peaks_->bed_deflection = m.bed_deflection;
-    if (!(m.bed_energy <= peaks_->bed_energy)) peaks_->bed_energy = m.bed_energy;
-  }
-  if (ctx_.sys->TiedToFrame() && std::abs(m.frame_force) > peaks_->frame_force) { // the hands' peak force, always
-    peaks_->frame_force      = std::abs(m.frame_force);
-    peaks_->frame_force_time = t;
-  }
   if (ip_.energy_check) {
     const PetscReal growth = (m.total() - E0_) / E0_;
     PetscCheck(growth <= ip_.energy_growth_tol, stepper_.Comm(), PETSC_ERR_NOT_CONVERGED,

@@ -76,14 +76,15 @@ bool SameTruncation(const ModalTruncation &a, const ModalTruncation &b)
   if (ModalWeighsShare(a) != ModalWeighsShare(b)) return false;
   if (ModalWeighsShare(a)) { // the same load, tolerance and time scale
     if (a.at.n != b.at.n || a.tolerance != b.tolerance || a.contact_time != b.contact_time ||
-        a.force_exponent != b.force_exponent || a.refine_all != b.refine_all)
+        a.force_exponent != b.force_exponent || a.refine_all != b.refine_all || a.mirror != b.mirror)
       return false;
     for (PetscInt q = 0; q < a.at.n; ++q)
       if (a.at.dof[q] != b.at.dof[q] || a.at.w[q] != b.at.w[q]) return false;
     return true;
   }
   return a.modes == b.modes && (a.modes != ModalModes::Count || a.count == b.count) &&
-         (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff()) && a.refine_all == b.refine_all;
+         (a.modes != ModalModes::Auto || a.Cutoff() == b.Cutoff()) && a.refine_all == b.refine_all &&
+         a.mirror == b.mirror;
 }
 
 // Whether the cached basis m is the one t asks for on the same beam: the same truncation, or
@@ -97,7 +98,7 @@ bool BasisFits(const BeamModes &m, const ModalTruncation &t)
   const bool every_mode = m.request.modes == ModalModes::Auto && !(m.cutoff < PETSC_INFINITY) &&
                           m.omega_bound > 0; // built dense, every mode below its cut-off
   return every_mode && t.modes == ModalModes::Auto && t.refine_all == m.request.refine_all &&
-         !(t.Cutoff() < m.omega_bound);
+         t.mirror == m.request.mirror && !(t.Cutoff() < m.omega_bound);
 }
 
 // One cache per group of processes (the ranks of MPI_COMM_WORLD a communicator holds, in its
@@ -381,8 +382,8 @@ PetscErrorCode DenseModes(MPI_Comm comm, BeamModes *m,
                           "beamimpact: the beam's modes: a dense decomposition of %" PetscInt_FMT
                           " free dofs, expected to take about %.0f s (%s)\n",
                           m->S.n, expected, why));
-  m->method = "dense";
-  PetscCall(ModalBasisBuild(m->S, false, &m->B, m->request.refine_all));
+  PetscCall(ModalBasisBuild(m->S, false, &m->B, m->request.refine_all, comm));
+  m->method = m->B.mirrored ? "dense, mirror-split" : "dense";
   PetscFunctionReturn(0);
 }
 
@@ -960,6 +961,7 @@ PetscErrorCode BeamModesShared(MPI_Comm comm, const BeamSystem &sys, const Modal
   const double w0 = MPI_Wtime();
   m->sys          = sys;
   m->S            = ModalSystemBeamOnly(m->sys);
+  m->S.mirror     = t.mirror;
   m->request      = t;
   PetscCall(BeamModesBuild(comm, m.get()));
   ExactRigidModes(m.get());
@@ -1178,9 +1180,28 @@ const OptionModule &ModalOptionTable()
                    "where it is wide, as a string bed's, the modes whose residual is above 1e-12 of their eigenvalue) "
                    "or all (every mode: the check)",
                    {"auto", "all"}, "auto"),
+      OptionChoice("-modal_mirror",
+                   "auto (where the structure is mirrored across the face, z -> -z: a racket's string bed about the "
+                   "frame's axis, with the frame's roll, the dense decomposition of its even and odd modes apart: a "
+                   "quarter of the cost, the same modes to round-off) or off (every mode at once: the check)",
+                   {"auto", "off"}, "auto"),
     },
   };
   return m;
+}
+
+const std::vector<const char *> &BeamModes::PartLabels() const
+{
+  if (labels_.size() == (size_t)Count()) return labels_;
+  const PetscInt         n = S.n;
+  std::vector<PetscReal> e(n);
+  labels_.assign(Count(), "");
+  for (PetscInt k = 0; k < Count(); ++k) {
+    const PetscReal *phi = &B.Phi[(size_t)k * n];
+    for (PetscInt q = 0; q < n; ++q) e[q] = phi[q] * phi[q];
+    labels_[k] = BeamSystemPartName(BeamSystemDominantPart(sys, S.dof.data(), e.data(), n, nullptr));
+  }
+  return labels_;
 }
 
 std::string BeamModesSummary(const BeamModes &m, const ModalCorrection *c)
@@ -1235,7 +1256,10 @@ PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t)
   t->refine_all   = refine == 1;
   PetscInt weight = t->weight == ModalWeight::Share ? 1 : 0;
   PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-modal_weight", &weight, NULL));
-  t->weight = weight == 1 ? ModalWeight::Share : ModalWeight::Mode;
+  t->weight       = weight == 1 ? ModalWeight::Share : ModalWeight::Mode;
+  PetscInt mirror = t->mirror ? 0 : 1;
+  PetscCall(OptionsReadChoice(PetscOptionsObject, T, "-modal_mirror", &mirror, NULL));
+  t->mirror = mirror == 0;
   PetscOptionsEnd();
   if (text == "all") t->modes = ModalModes::All;
   else if (text == "auto") t->modes = ModalModes::Auto;

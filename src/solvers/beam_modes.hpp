@@ -74,6 +74,7 @@ struct ModalTruncation {
   PetscReal progress     = 10;  // s: a progress line this often during a partial solve (0: none)
   bool refine_all = false; // -modal_refine all: every mode refined by inverse iteration (the check); false: by need
                            // where the band is wide (ModalRefinesEveryMode)
+  bool mirror = true; // -modal_mirror auto: the dense decomposition split by the structure's mirror where it has one
   // rad/s: the cut-off of Auto, pi / (T sqrt(tol)); infinite for All and Count
   PetscReal Cutoff() const
   {
@@ -86,8 +87,8 @@ inline bool ModalWeighsShare(const ModalTruncation &t)
 {
   return t.modes == ModalModes::Auto && t.weight == ModalWeight::Share && t.at.n > 0;
 }
-// -modal_modes, -modal_tolerance, -modal_refine and -modal_weight: the modal engine's table (registered by
-// app/registry.cpp).
+// -modal_modes, -modal_tolerance, -modal_refine, -modal_weight and -modal_mirror: the modal engine's table (registered
+// by app/registry.cpp).
 const OptionModule &ModalOptionTable();
 // Reads them (T, cost_warn and progress are the caller's).
 PetscErrorCode ModalTruncationFromOptions(MPI_Comm comm, ModalTruncation *t);
@@ -120,7 +121,7 @@ struct BeamModes {
   PetscReal       cutoff  = PETSC_INFINITY; // rad/s: the cut-off used (Auto), else infinite
   PetscReal   omega_bound = 0; // rad/s: Auto, the bound on the highest mode the cut-off was compared with (0: not Auto)
   bool        truncated   = false; // fewer modes than free dofs
-  std::string method;              // "dense", "slepc" or "slepc, factored form"
+  std::string method;              // "dense", "dense, mirror-split", "slepc" or "slepc, factored form"
   PetscReal share_error = -1; // Share: the share-weighted error of the modes left out under the load (ShareTrim); < 0:
                               // not weighed
   std::shared_ptr<const BeamFactor>
@@ -130,9 +131,14 @@ struct BeamModes {
   // The static correction at the point of coupling g (computed on first use, then cached).
   PetscErrorCode StaticCorrection(const ContactCoupling &g, const ModalCorrection **c) const;
   void           ForgetCorrections() const { corrections_.clear(); } // the basis changed (BeamModesBuild)
+  // Each kept mode's part, as -task modes names it (BeamSystemPartName of the part holding most of
+  // its phi^2: "bending", "roll", "wall", "strings"): computed on first use, O(n) per mode, then
+  // kept with the basis (a sweep's points label their free flights' modes from it).
+  const std::vector<const char *> &PartLabels() const;
 
 private:
   mutable std::vector<std::shared_ptr<ModalCorrection>> corrections_;
+  mutable std::vector<const char *>                     labels_;
 };
 
 // One line: the modes kept of the free dofs, the cut-off, how they were found and in what time,

@@ -5,6 +5,7 @@
 #include <petscmat.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 
@@ -382,13 +383,14 @@ PetscReal ModalRefineResidual() { return kRefineResidual; }
 // |A phi - rho phi| / |rho| of each column of Phi (n x count), rho = phi^T A phi, A in the
 // factored form (ModalApply): O(n) per mode.
 std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi,
-                                      PetscInt count)
+                                      PetscInt count, PetscMPIInt rank, PetscMPIInt size)
 {
   const PetscInt         n = S.n;
   std::vector<PetscReal> q(S.sys->ndof), f(S.sys->ndof), ax(n), rel(count);
   for (PetscInt k = 0; k < count; ++k) {
     const PetscReal *phi = &Phi[(size_t)k * n];
     PetscReal        rho = 0, r2 = 0, nrm = 0;
+    if (k % size != rank) continue; // another rank's: 0 here
     ModalApply(S, contact, phi, q, f, ax.data());
     for (PetscInt d = 0; d < n; ++d) rho += phi[d] * ax[d], nrm += phi[d] * phi[d];
     rho /= nrm;
@@ -407,8 +409,23 @@ std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const 
 // modes whose residual asks for it, Gram-Schmidt among them in order, and every other mode
 // then made orthogonal to them (it was orthogonal to the old vectors to round-off; what the
 // refinement moved is ~|r| / gap) and normalised.
+// Columns of Phi (n each) computed one rank each, column j on rank j % size of comm, handed to
+// every rank: each rank's result is the one rank's, bit for bit, whatever the number of ranks.
+static PetscErrorCode ShareColumns(MPI_Comm comm, PetscInt n, const std::vector<PetscInt> &cols,
+                                   std::vector<PetscReal> &Phi)
+{
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (size == 1) PetscFunctionReturn(0);
+  for (size_t j = 0; j < cols.size(); ++j)
+    PetscCallMPI(MPI_Bcast(&Phi[(size_t)cols[j] * n], (PetscMPIInt)n, MPIU_REAL, (PetscMPIInt)(j % size), comm));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda,
-                                  ModalBasis *B, bool refine_all)
+                                  ModalBasis *B, bool refine_all, MPI_Comm comm)
 {
   const PetscInt               n       = S.n;
   const int                    kl      = BandHalfWidth(S);
@@ -417,28 +434,42 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   const PetscReal              scale   = *std::max_element(lambda.begin(), lambda.end());
   const PetscInt               count   = (PetscInt)lambda.size(); // the columns of Phi
 
+  PetscMPIInt rank, size;
+
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   if (refine_all || ModalRefinesEveryMode(n, kl, count)) {
-    for (PetscInt k = 0; k < count; ++k)
-      PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale,
-                               &B->Phi[k * n])); // just below: never exactly singular
+    std::vector<PetscInt> all(count);
+    for (PetscInt k = 0; k < count; ++k) {
+      all[k] = k;
+      if (k % size == rank) // the modes shared over the ranks (ShareColumns)
+        PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale,
+                                 &B->Phi[k * n])); // just below: never exactly singular
+    }
+    PetscCall(ShareColumns(comm, n, all, B->Phi));
     GramSchmidt(n, B->Phi);
     B->refined = count;
     PetscFunctionReturn(0);
   }
-  const std::vector<PetscReal> rel = ModalResiduals(S, contact, B->Phi, count);
-  std::vector<PetscInt>        need;
+  std::vector<PetscReal> rel = ModalResiduals(S, contact, B->Phi, count, rank, size);
+  if (size > 1) // each mode's from one rank, the others' 0
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, rel.data(), (PetscMPIInt)count, MPIU_REAL, MPIU_SUM, comm));
+  std::vector<PetscInt> need;
   for (PetscInt k = 0; k < count; ++k)
     if (!(rel[k] <= kRefineResidual)) need.push_back(k);
   if (!need.empty()) { // the sparse LU: the band is wide here
     SparseShift sp;
     PetscCall(SparseShiftCreate(n, entries, &sp));
-    for (PetscInt k : need) {
-      bool solved;
+    for (size_t j = 0; j < need.size(); ++j) {
+      const PetscInt k = need[j];
+      bool           solved;
+      if ((PetscMPIInt)(j % size) != rank) continue; // another rank's (ShareColumns)
       PetscCall(InverseIterateSparse(S, contact, &sp, lambda[k] - 1e-14 * scale, &B->Phi[k * n], &solved));
       if (!solved) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n]));
     }
     PetscCall(SparseShiftDestroy(&sp));
+    PetscCall(ShareColumns(comm, n, need, B->Phi));
   }
   std::vector<PetscReal> R((size_t)n *
                            need.size()); // the refined columns, orthonormal (modified Gram-Schmidt in order)
@@ -602,7 +633,165 @@ static PetscErrorCode SymmetricEigenQR(PetscInt n, std::vector<PetscReal> &A, st
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all)
+// The structure's mirror across the face, z -> -z (a racket's bed about its frame's axis; the
+// frame's roll changes sign): R, a signed permutation of the free dofs, dof (node i, z) to the dof
+// of the same node at -z (DofZ), the roll field (RollField) to itself with sign -1, every other
+// dof (the beam's fields, the wall's, an absorber's, the ball) to itself. False where a dof has
+// no partner (a held one, a grid that is not symmetric) or R is the identity (nothing to split).
+struct ModalMirror {
+  std::vector<PetscInt> to;   // free dof -> its image
+  std::vector<int>      sign; // +1 or -1
+};
+static bool ModalMirrorOf(const ModalSystem &S, ModalMirror *m)
+{
+  const BeamSystem     &sys = *S.sys;
+  const PetscInt        n = S.n, F = sys.fields, roll = sys.RollField();
+  std::vector<PetscInt> free_of(sys.ndof, -1);
+  for (PetscInt d = 0; d < S.BeamDofs(); ++d) free_of[S.dof[d]] = d;
+  m->to.assign(n, -1);
+  m->sign.assign(n, 1);
+  bool moves = false;
+  for (PetscInt r = 0; r < n; ++r) {
+    const PetscInt d = S.dof[r];
+    if (d < 0) { // the ball
+      m->to[r] = r;
+      continue;
+    }
+    const PetscReal z     = sys.DofZ(d);
+    PetscInt        image = z == 0 ? d : -1;
+    for (PetscInt f = 0; f < F && image < 0; ++f) {
+      const PetscInt e = (d / F) * F + f;
+      if (std::abs(sys.DofZ(e) + z) <= 1e-9 * std::abs(z)) image = e;
+    }
+    if (image < 0 || free_of[image] < 0) return false;
+    m->to[r]   = free_of[image];
+    m->sign[r] = roll >= 0 && d % F == roll ? -1 : 1;
+    moves      = moves || m->to[r] != r || m->sign[r] < 0;
+  }
+  return moves;
+}
+
+// The even and odd bases of R (columns with at most two entries: e_r, or (e_r +- s e_t)/sqrt(2)
+// for a pair r < t = R r, s its sign), and whether A commutes with R, R A R = A, to within n eps
+// of A's largest entry (the racket's grid is mirrored to 4e-15 of it at 73 nodes, 1.3e-14 at
+// 145: the bed's masses and strings summed in another order). Then A is block-diagonal in them:
+// its even and odd blocks are decomposed apart (an eighth of the cost each at half the size).
+// What A and R A R differ by is left out, below dsyevd's own backward error (~n eps |A|), and
+// the refinement (RefineBasis, on K and M themselves) takes each mode whose residual asks for it
+// to round-off relative to its own eigenvalue, as it does dsyevd's.
+struct MirrorColumn {
+  PetscInt  r = 0, t = -1;  // its entries' rows (t < 0: one entry)
+  PetscReal cr = 1, ct = 0; // and values
+};
+static bool MirrorBases(const std::vector<PetscReal> &A, PetscInt n, const ModalMirror &m,
+                        std::vector<MirrorColumn> *even, std::vector<MirrorColumn> *odd)
+{
+  PetscReal big = 0, gap = 0;
+  for (PetscInt c = 0; c < n; ++c)
+    for (PetscInt r = 0; r < n; ++r) {
+      const PetscReal a = A[r + c * n];
+      big               = std::max(big, std::abs(a));
+      gap               = std::max(gap, std::abs(a - m.sign[r] * m.sign[c] * A[m.to[r] + m.to[c] * n]));
+    }
+  if (!(gap <= n * std::numeric_limits<PetscReal>::epsilon() * big)) return false;
+  const PetscReal h = 1 / std::sqrt(2.0);
+  for (PetscInt r = 0; r < n; ++r) {
+    const PetscInt t = m.to[r], s = m.sign[r];
+    if (m.to[t] != r || m.sign[t] != s) return false; // not an involution
+    if (t == r) (s > 0 ? even : odd)->push_back({r, -1, 1, 0});
+    else if (r < t) {
+      even->push_back({r, t, h, s * h});
+      odd->push_back({r, t, h, -s * h});
+    }
+  }
+  return !even->empty() && !odd->empty();
+}
+
+// The block Q^T A Q of A in the columns Q (dense, column-major).
+static std::vector<PetscReal> MirrorBlock(const std::vector<PetscReal> &A, PetscInt n,
+                                          const std::vector<MirrorColumn> &Q)
+{
+  const PetscInt         k = (PetscInt)Q.size();
+  std::vector<PetscReal> B((size_t)k * k);
+  auto                   at = [&](PetscInt r, const MirrorColumn &q) { // (A q)_r
+    return q.t < 0 ? q.cr * A[r + q.r * n] : q.cr * A[r + q.r * n] + q.ct * A[r + q.t * n];
+  };
+  for (PetscInt c = 0; c < k; ++c)
+    for (PetscInt p = 0; p < k; ++p) {
+      const MirrorColumn &q = Q[p];
+      B[p + c * k]          = q.cr * at(q.r, Q[c]) + (q.t < 0 ? 0.0 : q.ct * at(q.t, Q[c]));
+    }
+  return B;
+}
+
+// Every eigenpair of the symmetric A (ascending in w, the eigenvectors overwrite A), by dsyevd
+// (syev where it does not converge).
+static PetscErrorCode SymmetricEigen(PetscInt n, std::vector<PetscReal> &A, std::vector<PetscReal> *w,
+                                     const std::function<std::vector<PetscReal>()> &again)
+{
+  bool dc = false;
+
+  PetscFunctionBeginUser;
+  PetscCall(SymmetricEigenDC(n, A, w, &dc));
+  if (!dc) { // divide and conquer did not converge (rare): QR iteration on a fresh copy
+    A = again();
+    PetscCall(SymmetricEigenQR(n, A, w));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Every eigenpair of A from its even and odd blocks under the structure's mirror (ModalMirrorOf,
+// MirrorBases), merged in ascending order (even first at a tie); *done false where there is no
+// mirror A commutes with (then A is untouched).
+static PetscErrorCode MirrorEigen(const ModalSystem &S, std::vector<PetscReal> &A, std::vector<PetscReal> *w,
+                                  bool *done, MPI_Comm comm)
+{
+  const PetscInt            n = S.n;
+  ModalMirror               m;
+  std::vector<MirrorColumn> Q[2];
+  PetscMPIInt               rank, size;
+
+  PetscFunctionBeginUser;
+  *done = false;
+  if (!S.mirror || !ModalMirrorOf(S, &m) || !MirrorBases(A, n, m, &Q[0], &Q[1])) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<PetscReal> V[2], lam[2];
+  for (int b = 0; b < 2; ++b) { // on several ranks, block b on rank b % size, then handed out
+    const PetscInt k = (PetscInt)Q[b].size();
+    if (b % size == rank) {
+      V[b] = MirrorBlock(A, n, Q[b]);
+      PetscCall(SymmetricEigen(k, V[b], &lam[b], [&] { return MirrorBlock(A, n, Q[b]); }));
+    } else V[b].resize((size_t)k * k), lam[b].resize(k);
+    if (size > 1) {
+      PetscCallMPI(MPI_Bcast(lam[b].data(), (PetscMPIInt)k, MPIU_REAL, b % size, comm));
+      PetscCallMPI(MPI_Bcast(V[b].data(), (PetscMPIInt)(k * k), MPIU_REAL, b % size, comm));
+    }
+  }
+  std::fill(A.begin(), A.end(), 0.0);
+  w->assign(n, 0.0);
+  size_t i[2] = {0, 0};
+  for (PetscInt k = 0; k < n; ++k) {
+    const int        b  = i[1] >= lam[1].size() || (i[0] < lam[0].size() && lam[0][i[0]] <= lam[1][i[1]]) ? 0 : 1;
+    const size_t     kb = Q[b].size(), j = i[b]++;
+    const PetscReal *v   = &V[b][j * kb];
+    PetscReal       *phi = &A[(size_t)k * n];
+    (*w)[k]              = lam[b][j];
+    for (size_t p = 0; p < kb; ++p) {
+      const MirrorColumn &q = Q[b][p];
+      phi[q.r] += q.cr * v[p];
+      if (q.t >= 0) phi[q.t] += q.ct * v[p];
+    }
+  }
+  PetscCall(PetscInfo(NULL,
+                      "modal basis: the mirror z -> -z splits the %" PetscInt_FMT
+                      " free dofs into %zu even and %zu odd\n",
+                      n, Q[0].size(), Q[1].size()));
+  *done = true;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all, MPI_Comm comm)
 {
   const PetscInt         n = S.n;
   std::vector<PetscReal> A, w(n);
@@ -617,18 +806,16 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
              "ball and the contact spring carry none), so the coupled "
              "modes have no closed form; the exact modal solution needs both 0 (use a tight TS run as the reference)",
              (double)alpha, (double)beta);
-  A       = ModalMatrix(S, contact);
-  bool dc = false;
-  PetscCall(SymmetricEigenDC(n, A, &w, &dc));
-  if (!dc) { // divide and conquer did not converge (rare): QR iteration on a fresh copy
-    A = ModalMatrix(S, contact);
-    PetscCall(SymmetricEigenQR(n, A, &w));
-  }
+  A             = ModalMatrix(S, contact);
+  bool mirrored = false;
+  PetscCall(MirrorEigen(S, A, &w, &mirrored, comm));
+  B->mirrored = mirrored;
+  if (!mirrored) PetscCall(SymmetricEigen(n, A, &w, [&] { return ModalMatrix(S, contact); }));
   B->Phi = std::move(A);
   B->omega.assign(n, 0.0);
   B->gamma.assign(n, 0.0);
   B->rate.assign(n, 0.0);
-  PetscCall(RefineBasis(S, contact, w, B, refine_all));
+  PetscCall(RefineBasis(S, contact, w, B, refine_all, comm));
   if (!contact && damped && S.ball) IsolateBall(S, w, B);
   ModalQuotients(S, contact, B);
   PetscFunctionReturn(0);
@@ -646,7 +833,7 @@ PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<Petsc
   B->omega.assign(count, 0.0);
   B->gamma.assign(count, 0.0);
   B->rate.assign(count, 0.0);
-  if (refine) PetscCall(RefineBasis(S, false, lambda, B, refine_all));
+  if (refine) PetscCall(RefineBasis(S, false, lambda, B, refine_all, PETSC_COMM_SELF));
   ModalQuotients(S, false, B);
   PetscFunctionReturn(0);
 }

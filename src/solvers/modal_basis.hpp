@@ -35,7 +35,9 @@ struct ModalSystem {
   PetscInt               n    = 0;
   PetscReal              k    = 0;    // N/m, the contact spring
   bool                   ball = true; // false: the beam alone (ModalSystemBeamOnly), no ball dof
-  bool     damping            = true; // false: the system's damping left out (the undamped modes of the same M and K)
+  bool damping                = true; // false: the system's damping left out (the undamped modes of the same M and K)
+  bool mirror                 = true; // the dense decomposition split by the structure's mirror z -> -z where it has
+                                      // one (-modal_mirror; ModalBasisBuild)
   PetscInt BeamDofs() const { return ball ? n - 1 : n; }
   // The beam's damping C = alpha M + beta K (the force operator's, ForceOperatorModal; 0, 0
   // without damping or with `damping` false). False when the system's forces are not modal.
@@ -57,15 +59,22 @@ struct ModalBasis {
   std::vector<PetscReal> gamma; // g^T M^{-1/2} Phi_k: contribution of mode k to c
   std::vector<PetscReal> rate;  // 1/s, sigma_k = zeta_k omega_k: z_k'' + 2 sigma_k z_k' + omega_k^2 z_k = 0
   PetscInt
-       refined = 0; // modes refined by inverse iteration (all of them where the band is narrow: ModalRefinesEveryMode)
-  bool by_need = false; // refined where the residual asked for it (a wide band), not every mode
+       refined  = 0; // modes refined by inverse iteration (all of them where the band is narrow: ModalRefinesEveryMode)
+  bool by_need  = false; // refined where the residual asked for it (a wide band), not every mode
+  bool mirrored = false; // decomposed as its even and odd halves under the structure's mirror z -> -z
 };
 // The basis in contact (K + k g g^T) or separated (K). With Rayleigh damping C = alpha M +
 // beta K on the beam dofs (ModalSystem::Rayleigh, from the force operator) the separated basis
 // decouples it exactly (sigma = alpha/2 + beta omega^2/2 a beam mode, alpha/2 a rigid one, 0
 // the ball's); in contact it does not (the ball and the spring are undamped): PETSC_ERR_SUP.
-// refine_all: every mode refined whatever the band (-modal_refine all).
-PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all = false);
+// refine_all: every mode refined whatever the band (-modal_refine all). Where the structure is
+// mirrored across the face (z -> -z: a racket's string bed about the frame's axis, the frame's
+// roll changing sign) and S.mirror, the even and odd halves are decomposed apart (B->mirrored).
+// On a communicator of several ranks (comm) the work is shared out and the result handed to
+// every rank, the same bits as on one: the mirror's two halves one rank each, the residuals and
+// the refined modes mode by mode.
+PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all = false,
+                               MPI_Comm comm = PETSC_COMM_SELF);
 
 // The beam alone (S from ModalSystemBeamOnly), from `count` of its modes found elsewhere (a
 // partial eigen-solve): Phi (S.n x count, column-major) the columns M^{1/2} phi_k, lambda their
@@ -84,13 +93,15 @@ PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<Petsc
 // dense decomposition's share of a mode) or 2e9 flops in all (ModalRefinesEveryMode: every beam,
 // shell and hoop); elsewhere (a string bed: kl ~ 2 fields per node) only the modes whose
 // relative residual |A phi - rho phi| / rho in the factored form (ModalResiduals) exceeds
-// ModalRefineResidual() (1e-12).
+// ModalRefineResidual() (1e-12). ModalResiduals with (rank, size): only the modes k = rank mod
+// size, the others' 0 (a basis built on several ranks shares its modes' residuals and
+// refinements out, each mode on one rank: ModalBasisBuild's comm).
 PetscInt               ModalRefineHalfWidth(const ModalSystem &S);
 double                 ModalRefineModeFlops(PetscInt n, PetscInt kl);
 bool                   ModalRefinesEveryMode(PetscInt n, PetscInt kl, PetscInt count);
 PetscReal              ModalRefineResidual();
 std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const std::vector<PetscReal> &Phi,
-                                      PetscInt count);
+                                      PetscInt count, PetscMPIInt rank = 0, PetscMPIInt size = 1);
 
 // Mode (omega w, rate sigma) from z, zd at s = 0: z and z' at s, exact for every damping
 // (under-, critically and overdamped, rigid). Bound: sup over s >= 0 of |d^p z / ds^p|.

@@ -38,6 +38,20 @@ struct ModalState {
   PetscReal              ball_y = 0, ball_v = 0, dissipated = 0;
 };
 
+// A state kept to be expanded later with others (Stepper::Sample, Stepper::Expand): -ts_type
+// modal's state in its modes and the force the static shape of its modes left out carries.
+struct StateSample {
+  PetscReal              t = 0;            // s
+  std::vector<PetscReal> z, zd;            // m kg^{1/2}, m kg^{1/2}/s per kept mode
+  PetscReal              static_force = 0; // N: on the modes left out, quasi-statically (0: every mode kept)
+};
+
+// Where expanded samples lie (Stepper::Expand): this rank's owned beam dofs [d0, d1) and the
+// range [e0, e1) the arrays hold (the owned ones and the neighbours' the strain terms reach).
+struct SampleRange {
+  PetscInt d0 = 0, d1 = 0, e0 = 0, e1 = 0;
+};
+
 // What the stepper itself counted.
 struct StepperCounts {
   PetscInt rejected_steps = 0; // rejected by the error controller
@@ -119,6 +133,26 @@ public:
     (void)modes, (void)s;
     *done = false;
     return 0;
+  }
+  // The current state as a sample, O(modes), where writing the physical state costs O(n k) per
+  // state (-ts_type modal): samples are then expanded many at once (Expand, one matrix product
+  // that reads the modes once, instead of a pass over every mode per state). *done false for any
+  // other stepper. The same on every rank.
+  virtual PetscErrorCode Sample(StateSample *s, bool *done)
+  {
+    (void)s;
+    *done = false;
+    return 0;
+  }
+  // The physical states of samples taken by Sample since the last change of basis: on this rank's
+  // dofs [r->e0, r->e1) (its owned ones [r->d0, r->d1) and the neighbours' the strain terms reach),
+  // state s's displacement of dof d at (*y)[s (e1 - e0) + d - e0] and its velocity in *v
+  // (node-major, held dofs 0). Local (no communication).
+  virtual PetscErrorCode Expand(const std::vector<StateSample> &s, SampleRange *r, std::vector<PetscReal> *y,
+                                std::vector<PetscReal> *v)
+  {
+    (void)s, (void)r, (void)y, (void)v;
+    SETERRQ(Comm(), PETSC_ERR_SUP, "%s keeps no samples to expand", Method().c_str());
   }
 };
 

@@ -7,6 +7,7 @@
 #include "model/contact.hpp"
 
 #include <petsc/private/tsimpl.h>
+#include <petscblaslapack.h>
 
 #include <algorithm>
 #include <cmath>
@@ -704,6 +705,18 @@ PetscErrorCode Reconcile(TS ts)
   PetscFunctionReturn(0);
 }
 
+// The owned dofs' range [i0, i1) of free dofs (contiguous: the owned beam dofs [D0, D1)).
+void OwnedFree(const ModalTS &m, PetscInt *i0, PetscInt *i1)
+{
+  const TSLayout &L = m.P->L;
+  *i0 = m.nd, *i1 = 0;
+  for (PetscInt d = L.D0(); d < L.D1(); ++d)
+    if (m.free_of[d] >= 0) {
+      *i0 = std::min(*i0, m.free_of[d]);
+      *i1 = std::max(*i1, m.free_of[d] + 1);
+    }
+}
+
 // Writes the modal state into the physical vector (each rank its owned dofs). Collective.
 PetscErrorCode Sync(TS ts)
 {
@@ -717,13 +730,8 @@ PetscErrorCode Sync(TS ts)
   const PetscInt  nf = L.fields, n = m.nd, nm = m.n; // free dofs, modes
   PetscCall(Reconcile(ts));
   if (m.phys_valid) PetscFunctionReturn(0);
-  // The owned beam dofs [D0, D1) are a contiguous range [i0, i1) of free dofs.
-  PetscInt i0 = n, i1 = 0;
-  for (PetscInt d = L.D0(); d < L.D1(); ++d)
-    if (m.free_of[d] >= 0) {
-      i0 = std::min(i0, m.free_of[d]);
-      i1 = std::max(i1, m.free_of[d] + 1);
-    }
+  PetscInt i0, i1; // the owned beam dofs [D0, D1) are a contiguous range [i0, i1) of free dofs
+  OwnedFree(m, &i0, &i1);
   const PetscInt ni = std::max<PetscInt>(i1 - i0, 0);
   m.sy.assign(ni, 0.0);
   m.sv.assign(ni, 0.0);
@@ -770,6 +778,57 @@ PetscErrorCode Sync(TS ts)
   PetscCall(PetscObjectStateGet((PetscObject)X, &m.vec_state));
   m.phys_valid = true;
   m.syncs++;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Sample_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *F)
+{
+  ModalTS &m = *Data(ts);
+
+  PetscFunctionBeginUser;
+  PetscCall(Reconcile(ts));
+  z->assign(m.z.begin(), m.z.end());
+  zd->assign(m.zd.begin(), m.zd.end());
+  *F = m.Gr > 0 ? ContactForce(m.P->ball, *m.P->contact, CompressionNow(m, nullptr)) : 0.0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Expand_Modal(TS ts, const PetscReal *Z, const PetscReal *Zd, const PetscReal *F, PetscInt count,
+                            PetscInt e0, PetscInt e1, PetscReal *y, PetscReal *v)
+{
+  ModalTS &m  = *Data(ts);
+  PetscInt i0 = m.nd, i1 = 0; // the free dofs of [e0, e1): contiguous
+
+  PetscFunctionBeginUser;
+  for (PetscInt d = e0; d < e1; ++d)
+    if (m.free_of[d] >= 0) i0 = std::min(i0, m.free_of[d]), i1 = std::max(i1, m.free_of[d] + 1);
+  const PetscInt n = m.nd, ni = std::max<PetscInt>(i1 - i0, 0), ne = e1 - e0;
+  // [Y V] = Phi [Z Zd] in one product (the modes read once), Zd's columns right after Z's.
+  std::vector<PetscReal> YV((size_t)ni * 2 * count);
+  PetscReal             *Y = YV.data(), *V = Y + (size_t)ni * count;
+  PetscCheck(Zd == Z + (size_t)m.n * count, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONG,
+             "TSModalExpand: Zd's columns must follow Z's");
+  if (ni > 0 && count > 0) {
+    PetscBLASInt      bi, bc, bk, bn;
+    const PetscScalar one = 1, zero = 0;
+    PetscCall(PetscBLASIntCast(ni, &bi));
+    PetscCall(PetscBLASIntCast(2 * count, &bc));
+    PetscCall(PetscBLASIntCast(m.n, &bk));
+    PetscCall(PetscBLASIntCast(n, &bn));
+    const PetscReal *Phi = m.modes->B.Phi.data() + i0;
+    PetscCallBLAS("BLASgemm", BLASgemm_("N", "N", &bi, &bc, &bk, &one, Phi, &bn, Z, &bk, &zero, Y, &bi));
+  }
+  for (PetscInt s = 0; s < count; ++s) {
+    PetscReal *ys = Y + (size_t)s * ni;
+    if (F[s] != 0.0) // the modes left out, quasi-statically (their velocity left out), as Sync
+      for (PetscInt i = 0; i < ni; ++i) ys[i] += m.corr->ur[i0 + i] * F[s] / m.isqm[i0 + i];
+    for (PetscInt d = e0; d < e1; ++d) {
+      const PetscInt i = m.free_of[d];
+      const size_t   o = (size_t)s * ne + d - e0;
+      y[o]             = i < 0 ? 0.0 : m.isqm[i] * ys[i - i0];
+      v[o]             = i < 0 ? 0.0 : m.isqm[i] * V[(size_t)s * ni + i - i0];
+    }
+  }
   PetscFunctionReturn(0);
 }
 
@@ -1095,6 +1154,8 @@ PetscErrorCode TSCreate_Modal(TS ts)
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetState_C", GetState_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSetState_C", SetState_Modal));
   PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalGetUnwrittenState_C", UnwrittenState_Modal));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalSample_C", Sample_Modal));
+  PetscCall(PetscObjectComposeFunction((PetscObject)ts, "TSModalExpand_C", Expand_Modal));
   PetscFunctionReturn(0);
 }
 
@@ -1195,6 +1256,31 @@ PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::v
   *done = PETSC_FALSE;
   PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalGetUnwrittenState_C", &f));
   if (f) PetscCall((*f)(ts, z, zd, yb, vb, done));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSModalSample(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *static_force,
+                             PetscBool *done)
+{
+  PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *) = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalSample_C", &f));
+  *done = f ? PETSC_TRUE : PETSC_FALSE;
+  if (f) PetscCall((*f)(ts, z, zd, static_force));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSModalExpand(TS ts, const PetscReal *Z, const PetscReal *Zd, const PetscReal *F, PetscInt count,
+                             PetscInt e0, PetscInt e1, PetscReal *y, PetscReal *v, PetscBool *done)
+{
+  PetscErrorCode (*f)(TS, const PetscReal *, const PetscReal *, const PetscReal *, PetscInt, PetscInt, PetscInt,
+                      PetscReal *, PetscReal *) = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalExpand_C", &f));
+  *done = f ? PETSC_TRUE : PETSC_FALSE;
+  if (f) PetscCall((*f)(ts, Z, Zd, F, count, e0, e1, y, v));
   PetscFunctionReturn(0);
 }
 

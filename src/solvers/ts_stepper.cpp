@@ -14,6 +14,7 @@
 #include "system/dissipation.hpp"
 
 #include <petscdmcomposite.h>
+#include <petscdmda.h>
 
 #include <algorithm>
 #include <cctype>
@@ -293,6 +294,9 @@ public:
   PetscErrorCode GetModalState(const BeamModes &m, ModalState *s, bool *done) override;
   PetscErrorCode SetModalState(PetscReal t, const BeamModes &m, const ModalState &s, bool *done) override;
   PetscErrorCode ModalStateUnwritten(std::shared_ptr<const BeamModes> *modes, ModalState *s, bool *done) override;
+  PetscErrorCode Sample(StateSample *s, bool *done) override;
+  PetscErrorCode Expand(const std::vector<StateSample> &s, SampleRange *r, std::vector<PetscReal> *y,
+                        std::vector<PetscReal> *v) override;
   PetscErrorCode ViewBegin(StateView *v) override;
   PetscErrorCode ViewEnd(StateView *v) override;
   PetscErrorCode GatherFields(PetscInt f0, PetscInt nf, std::vector<PetscReal> *y) override;
@@ -421,6 +425,43 @@ PetscErrorCode TSStepper::ModalStateUnwritten(std::shared_ptr<const BeamModes> *
   PetscCall(TSModalGetUnwrittenState(ts, &s->z, &s->zd, &s->ball_y, &s->ball_v, &ok));
   s->dissipated = D.dissipated;
   *done         = ok;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::Sample(StateSample *s, bool *done)
+{
+  PetscBool ok = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  s->t = Time();
+  PetscCall(TSModalSample(ts, &s->z, &s->zd, &s->static_force, &ok));
+  *done = ok;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStepper::Expand(const std::vector<StateSample> &s, SampleRange *r, std::vector<PetscReal> *y,
+                                 std::vector<PetscReal> *v)
+{
+  const PetscInt count = (PetscInt)s.size(), k = count ? (PetscInt)s[0].z.size() : 0;
+  PetscBool      ok = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  std::vector<PetscReal> Z((size_t)k * 2 * count), F(count); // [Z Zd]: the rates' columns after the amplitudes'
+  for (PetscInt q = 0; q < count; ++q) {
+    PetscCheck((PetscInt)s[q].z.size() == k, Comm(), PETSC_ERR_ARG_SIZ, "samples of different bases");
+    std::copy(s[q].z.begin(), s[q].z.end(), Z.begin() + (size_t)q * k);
+    std::copy(s[q].zd.begin(), s[q].zd.end(), Z.begin() + (size_t)(count + q) * k);
+    F[q] = s[q].static_force;
+  }
+  PetscInt gxs, gxm; // the ghosted nodes: the owned ones and the neighbours' the stencil reaches
+  PetscCall(DMDAGetGhostCorners(P.L.da, &gxs, NULL, NULL, &gxm, NULL, NULL));
+  r->d0 = P.L.D0(), r->d1 = P.L.D1(), r->e0 = gxs * P.L.fields, r->e1 = (gxs + gxm) * P.L.fields;
+  const size_t ne = (size_t)(r->e1 - r->e0);
+  y->assign(ne * count, 0.0);
+  v->assign(ne * count, 0.0);
+  PetscCall(TSModalExpand(ts, Z.data(), Z.data() + (size_t)k * count, F.data(), count, r->e0, r->e1, y->data(),
+                          v->data(), &ok));
+  PetscCheck(ok, Comm(), PETSC_ERR_SUP, "%s keeps no samples to expand", Method().c_str());
   PetscFunctionReturn(0);
 }
 
