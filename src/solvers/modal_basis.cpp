@@ -638,11 +638,7 @@ static PetscErrorCode SymmetricEigenQR(PetscInt n, std::vector<PetscReal> &A, st
 // of the same node at -z (DofZ), the roll field (RollField) to itself with sign -1, every other
 // dof (the beam's fields, the wall's, an absorber's, the ball) to itself. False where a dof has
 // no partner (a held one, a grid that is not symmetric) or R is the identity (nothing to split).
-struct ModalMirror {
-  std::vector<PetscInt> to;   // free dof -> its image
-  std::vector<int>      sign; // +1 or -1
-};
-static bool ModalMirrorOf(const ModalSystem &S, ModalMirror *m)
+bool ModalMirrorOf(const ModalSystem &S, ModalMirror *m)
 {
   const BeamSystem     &sys = *S.sys;
   const PetscInt        n = S.n, F = sys.fields, roll = sys.RollField();

@@ -73,6 +73,16 @@ struct ModalBasis {
 // On a communicator of several ranks (comm) the work is shared out and the result handed to
 // every rank, the same bits as on one: the mirror's two halves one rank each, the residuals and
 // the refined modes mode by mode.
+// The structure's mirror across the face (z -> -z) on the free dofs of S: each dof's image at the
+// same node and -z (the frame's roll its own, with sign -1; every dof on the axis its own). False
+// where a dof has no free image or the map is the identity. Whether K and M commute with it is
+// the caller's to check.
+struct ModalMirror {
+  std::vector<PetscInt> to;   // free dof -> its image
+  std::vector<int>      sign; // +1 or -1
+};
+bool ModalMirrorOf(const ModalSystem &S, ModalMirror *m);
+
 PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B, bool refine_all = false,
                                MPI_Comm comm = PETSC_COMM_SELF);
 

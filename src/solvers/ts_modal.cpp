@@ -138,6 +138,117 @@ struct StepShapes {
   std::vector<PetscReal> R[3], V[3], X[6];
 };
 
+// The expansion of samples split by the modes' parity under the structure's mirror (ModalMirrorOf):
+// where every kept mode is even or odd (phi(R r) = +-s_r phi(r) to kParityTolerance of its largest
+// entry: a mirror-split basis, section 12), a dof and its image share their rows, y(r) = E + O and
+// y(R r) = s_r (E - O) with E, O the even and odd modes' sums on r alone: half the products. Built
+// once per basis and range of free dofs [i0, i1) (node-aligned, so a pair lies in it whole).
+constexpr PetscReal kParityTolerance = 1e-12;
+struct ParityPlan {
+  const BeamModes       *modes = nullptr;
+  PetscInt               i0 = -1, i1 = -1;
+  bool                   ok = false;
+  std::vector<PetscInt>  rep, image;       // free dofs r <= R r in [i0, i1), and R r
+  std::vector<int>       sign;             // s_r
+  std::vector<PetscInt>  even, odd, mixed; // the kept modes of each parity, and of neither (a refined pair's)
+  std::vector<PetscReal> Pe, Po, Pm;       // Phi on the rows rep: the even and the odd modes; on [i0, i1): the mixed
+};
+
+void ParityPlanBuild(const BeamModes &modes, PetscInt i0, PetscInt i1, ParityPlan *p)
+{
+  *p       = ParityPlan();
+  p->modes = &modes, p->i0 = i0, p->i1 = i1;
+  ModalMirror mir;
+  if (!modes.B.mirrored || !ModalMirrorOf(modes.S, &mir)) return;
+  const PetscInt   n = modes.S.n, k = modes.Count();
+  const PetscReal *Phi = modes.B.Phi.data();
+  for (PetscInt j = 0; j < k; ++j) { // each mode's parity, over every dof
+    const PetscReal *phi = Phi + (size_t)j * n;
+    PetscReal        e = 0, o = 0, big = 0;
+    for (PetscInt r = 0; r < n; ++r) {
+      const PetscReal im = mir.sign[r] * phi[mir.to[r]];
+      e = std::max(e, std::abs(phi[r] - im)), o = std::max(o, std::abs(phi[r] + im)),
+      big = std::max(big, std::abs(phi[r]));
+    }
+    if (e <= kParityTolerance * big) p->even.push_back(j);
+    else if (o <= kParityTolerance * big) p->odd.push_back(j);
+    else p->mixed.push_back(j);
+  }
+  for (PetscInt r = i0; r < i1; ++r) {
+    const PetscInt t = mir.to[r];
+    if (t < i0 || t >= i1) return;
+    if (r <= t) p->rep.push_back(r), p->image.push_back(t), p->sign.push_back(mir.sign[r]);
+  }
+  const size_t nr = p->rep.size();
+  for (auto [cols, P] : {std::make_pair(&p->even, &p->Pe), std::make_pair(&p->odd, &p->Po)}) {
+    P->resize(nr * cols->size());
+    for (size_t c = 0; c < cols->size(); ++c)
+      for (size_t q = 0; q < nr; ++q) (*P)[q + c * nr] = Phi[(size_t)(*cols)[c] * n + p->rep[q]];
+  }
+  const size_t ni = (size_t)(i1 - i0);
+  p->Pm.resize(ni * p->mixed.size());
+  for (size_t c = 0; c < p->mixed.size(); ++c)
+    std::copy_n(Phi + (size_t)p->mixed[c] * n + i0, ni, p->Pm.begin() + c * ni);
+  p->ok = 4 * p->mixed.size() < (size_t)k; // else the whole product is as quick
+}
+
+// The plan for the samples' rows, built when the basis or the rows change (-info says which).
+PetscErrorCode ParityPlanFor(const BeamModes &modes, PetscInt i0, PetscInt i1, ParityPlan *p)
+{
+  PetscFunctionBeginUser;
+  if (p->modes == &modes && p->i0 == i0 && p->i1 == i1) PetscFunctionReturn(0);
+  ParityPlanBuild(modes, i0, i1, p);
+  PetscCall(PetscInfo(NULL, "samples' expansion: %s (%zu even, %zu odd, %zu of neither parity)\n",
+                      p->ok ? "by parity under the mirror" : "every mode on every row", p->even.size(), p->odd.size(),
+                      p->mixed.size()));
+  PetscFunctionReturn(0);
+}
+
+// YV (ni x w, column-major, rows [i0, i1)) = Phi W (W: kept modes x w) by the parity plan p.
+PetscErrorCode ParityExpand(const ParityPlan &p, PetscInt k, const PetscReal *W, PetscInt w, PetscReal *YV)
+{
+  const PetscInt                ni = p.i1 - p.i0, nr = (PetscInt)p.rep.size();
+  const PetscScalar             one = 1, zero = 0;
+  std::vector<PetscReal>        part[2];
+  const std::vector<PetscInt>  *cols[2] = {&p.even, &p.odd};
+  const std::vector<PetscReal> *P[2]    = {&p.Pe, &p.Po};
+
+  PetscFunctionBeginUser;
+  for (int b = 0; b < 2; ++b) { // E and O on the representatives
+    const PetscInt         kb = (PetscInt)cols[b]->size();
+    std::vector<PetscReal> Wb((size_t)kb * w);
+    for (PetscInt c = 0; c < w; ++c)
+      for (PetscInt q = 0; q < kb; ++q) Wb[q + (size_t)c * kb] = W[(*cols[b])[q] + (size_t)c * k];
+    part[b].assign((size_t)nr * w, 0.0);
+    if (kb == 0 || nr == 0) continue;
+    PetscBLASInt bn, bw, bk;
+    PetscCall(PetscBLASIntCast(nr, &bn));
+    PetscCall(PetscBLASIntCast(w, &bw));
+    PetscCall(PetscBLASIntCast(kb, &bk));
+    PetscCallBLAS("BLASgemm", BLASgemm_("N", "N", &bn, &bw, &bk, &one, P[b]->data(), &bn, Wb.data(), &bk, &zero,
+                                        part[b].data(), &bn));
+  }
+  for (PetscInt c = 0; c < w; ++c)
+    for (PetscInt q = 0; q < nr; ++q) {
+      const PetscReal E = part[0][q + (size_t)c * nr], O = part[1][q + (size_t)c * nr];
+      YV[p.rep[q] - p.i0 + (size_t)c * ni]   = E + O;
+      YV[p.image[q] - p.i0 + (size_t)c * ni] = p.sign[q] * (E - O);
+    }
+  const PetscInt km = (PetscInt)p.mixed.size();
+  if (km > 0 && ni > 0) { // the modes of neither parity on every row, added
+    std::vector<PetscReal> Wm((size_t)km * w);
+    for (PetscInt c = 0; c < w; ++c)
+      for (PetscInt q = 0; q < km; ++q) Wm[q + (size_t)c * km] = W[p.mixed[q] + (size_t)c * k];
+    PetscBLASInt bn, bw, bk;
+    PetscCall(PetscBLASIntCast(ni, &bn));
+    PetscCall(PetscBLASIntCast(w, &bw));
+    PetscCall(PetscBLASIntCast(km, &bk));
+    PetscCallBLAS("BLASgemm",
+                  BLASgemm_("N", "N", &bn, &bw, &bk, &one, p.Pm.data(), &bn, Wm.data(), &bk, &one, YV, &bn));
+  }
+  PetscFunctionReturn(0);
+}
+
 struct ModalTS {
   PetscInt order = 4;
   // Set up once (TSSetUp_Modal).
@@ -170,6 +281,7 @@ struct ModalTS {
   Vec                    Xc = nullptr, all = nullptr;
   VecScatter             gather = nullptr;
   std::vector<PetscReal> sy, sv; // Project's scaled state
+  ParityPlan             parity; // Expand's, for the current basis and range
   PetscInt               projections = 0, syncs = 0, kept = 0, newton_fail = 0, weight_sets = 0;
 };
 
@@ -808,7 +920,9 @@ PetscErrorCode Expand_Modal(TS ts, const PetscReal *Z, const PetscReal *Zd, cons
   PetscReal             *Y = YV.data(), *V = Y + (size_t)ni * count;
   PetscCheck(Zd == Z + (size_t)m.n * count, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONG,
              "TSModalExpand: Zd's columns must follow Z's");
-  if (ni > 0 && count > 0) {
+  if (ni > 0 && count > 0) PetscCall(ParityPlanFor(*m.modes, i0, i1, &m.parity));
+  if (ni > 0 && count > 0 && m.parity.ok) PetscCall(ParityExpand(m.parity, m.n, Z, 2 * count, Y));
+  else if (ni > 0 && count > 0) {
     PetscBLASInt      bi, bc, bk, bn;
     const PetscScalar one = 1, zero = 0;
     PetscCall(PetscBLASIntCast(ni, &bi));
