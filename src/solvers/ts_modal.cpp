@@ -893,18 +893,6 @@ PetscErrorCode Sync(TS ts)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Sample_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *F)
-{
-  ModalTS &m = *Data(ts);
-
-  PetscFunctionBeginUser;
-  PetscCall(Reconcile(ts));
-  z->assign(m.z.begin(), m.z.end());
-  zd->assign(m.zd.begin(), m.zd.end());
-  *F = m.Gr > 0 ? ContactForce(m.P->ball, *m.P->contact, CompressionNow(m, nullptr)) : 0.0;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode Expand_Modal(TS ts, const PetscReal *Z, const PetscReal *Zd, const PetscReal *F, PetscInt count,
                             PetscInt e0, PetscInt e1, PetscReal *y, PetscReal *v)
 {
@@ -1028,6 +1016,18 @@ PetscErrorCode GetState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<Pets
   zd->assign(m.zd.begin(), m.zd.end());
   *yb = m.yb;
   *vb = m.vb;
+  PetscFunctionReturn(0);
+}
+
+// GetState_Modal's (z, zd) and the force on the static shape of the modes left out (0: none).
+PetscErrorCode Sample_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *F)
+{
+  ModalTS  &m = *Data(ts);
+  PetscReal yb, vb;
+
+  PetscFunctionBeginUser;
+  PetscCall(GetState_Modal(ts, z, zd, &yb, &vb));
+  *F = m.Gr > 0 ? ContactForce(m.P->ball, *m.P->contact, CompressionNow(m, nullptr)) : 0.0;
   PetscFunctionReturn(0);
 }
 
