@@ -400,15 +400,6 @@ std::vector<PetscReal> ModalResiduals(const ModalSystem &S, bool contact, const 
   return rel;
 }
 
-// The dense eigenvectors (dsyevd's or syev's) are accurate only to eps * lambda_max / gap: with the h^-4 spread of
-// the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
-// shifted by its eigenvalue, with a banded LU of A - sigma I and each solve corrected by its
-// residual in the factored form (InverseIterate), then modified Gram-Schmidt (which cleans up
-// (near-)degenerate pairs such as the rigid modes), bring each vector to round-off relative
-// to its own eigenvalue. Every mode where that is cheap (ModalRefinesEveryMode); elsewhere the
-// modes whose residual asks for it, Gram-Schmidt among them in order, and every other mode
-// then made orthogonal to them (it was orthogonal to the old vectors to round-off; what the
-// refinement moved is ~|r| / gap) and normalised.
 // Columns of Phi (n each) computed one rank each, column j on rank j % size of comm, handed to
 // every rank: each rank's result is the one rank's, bit for bit, whatever the number of ranks.
 static PetscErrorCode ShareColumns(MPI_Comm comm, PetscInt n, const std::vector<PetscInt> &cols,
@@ -424,6 +415,44 @@ static PetscErrorCode ShareColumns(MPI_Comm comm, PetscInt n, const std::vector<
   PetscFunctionReturn(0);
 }
 
+// The modes `need` refined with the sparse LU of A - sigma I (the band is wide: a string bed), one
+// rank each on several (ShareColumns), the banded LU where the sparse one fails.
+static PetscErrorCode RefineSparse(const ModalSystem &S, bool contact, const std::vector<BandEntry> &entries,
+                                   const std::vector<PetscReal> &lambda, const std::vector<PetscInt> &need,
+                                   ModalBasis *B, MPI_Comm comm)
+{
+  const PetscInt  n     = S.n;
+  const int       kl    = BandHalfWidth(S);
+  const PetscReal scale = *std::max_element(lambda.begin(), lambda.end());
+  PetscMPIInt     rank, size;
+  SparseShift     sp;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(SparseShiftCreate(n, entries, &sp));
+  for (size_t j = 0; j < need.size(); ++j) {
+    const PetscInt k = need[j];
+    bool           solved;
+    if ((PetscMPIInt)(j % size) != rank) continue; // another rank's
+    PetscCall(InverseIterateSparse(S, contact, &sp, lambda[k] - 1e-14 * scale, &B->Phi[k * n], &solved));
+    if (!solved)
+      PetscCall(InverseIterate(S, contact, entries, BandOrder(S), kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n]));
+  }
+  PetscCall(SparseShiftDestroy(&sp));
+  PetscCall(ShareColumns(comm, n, need, B->Phi));
+  PetscFunctionReturn(0);
+}
+
+// The dense eigenvectors (dsyevd's or syev's) are accurate only to eps * lambda_max / gap: with the h^-4 spread of
+// the beam's spectrum that is ~1e-6 at N = 641. Two steps of inverse iteration per mode,
+// shifted by its eigenvalue, with a banded LU of A - sigma I and each solve corrected by its
+// residual in the factored form (InverseIterate), then modified Gram-Schmidt (which cleans up
+// (near-)degenerate pairs such as the rigid modes), bring each vector to round-off relative
+// to its own eigenvalue. Every mode where that is cheap (ModalRefinesEveryMode); elsewhere the
+// modes whose residual asks for it, Gram-Schmidt among them in order, and every other mode
+// then made orthogonal to them (it was orthogonal to the old vectors to round-off; what the
+// refinement moved is ~|r| / gap) and normalised.
 static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std::vector<PetscReal> &lambda,
                                   ModalBasis *B, bool refine_all, MPI_Comm comm)
 {
@@ -458,19 +487,7 @@ static PetscErrorCode RefineBasis(const ModalSystem &S, bool contact, const std:
   std::vector<PetscInt> need;
   for (PetscInt k = 0; k < count; ++k)
     if (!(rel[k] <= kRefineResidual)) need.push_back(k);
-  if (!need.empty()) { // the sparse LU: the band is wide here
-    SparseShift sp;
-    PetscCall(SparseShiftCreate(n, entries, &sp));
-    for (size_t j = 0; j < need.size(); ++j) {
-      const PetscInt k = need[j];
-      bool           solved;
-      if ((PetscMPIInt)(j % size) != rank) continue; // another rank's (ShareColumns)
-      PetscCall(InverseIterateSparse(S, contact, &sp, lambda[k] - 1e-14 * scale, &B->Phi[k * n], &solved));
-      if (!solved) PetscCall(InverseIterate(S, contact, entries, pos, kl, lambda[k] - 1e-14 * scale, &B->Phi[k * n]));
-    }
-    PetscCall(SparseShiftDestroy(&sp));
-    PetscCall(ShareColumns(comm, n, need, B->Phi));
-  }
+  if (!need.empty()) PetscCall(RefineSparse(S, contact, entries, lambda, need, B, comm));
   std::vector<PetscReal> R((size_t)n *
                            need.size()); // the refined columns, orthonormal (modified Gram-Schmidt in order)
   for (size_t i = 0; i < need.size(); ++i) {
