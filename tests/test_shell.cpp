@@ -426,3 +426,51 @@ TEST(WallPart, RegistryGivesTheBarrelWall)
   EXPECT_FALSE(part->Configure(o, tube, &out, &why));
   EXPECT_NE(why.find("-beam_shell with -barrel_hoop_frequency is not allowed"), std::string::npos) << why;
 }
+
+// The wall's outputs are its own (issue 35): hoop_frequency is its PartColumn, right after
+// wall_deflection_large where the table had it, applying with the wall (its Presence()): the
+// shell's n = 2 band frequency (ShellLowestFrequency) or the hoop's given f_h; and the summary's
+// warning on a displacement beyond a quarter of the midsurface radius (R = 32.1 mm on kBarrel) is
+// its Warning, naming the options that set the wall's stiffness (the hoop's or the shell's).
+TEST(WallPart, OwnsHoopFrequencyAndTheWarning)
+{
+  const StructurePart *part = StructurePartFind("wall");
+  ASSERT_NE(part, nullptr);
+  const std::vector<ResultColumn> &t = ImpactResultColumns();
+  const auto at_name = [&](const char *name) {
+    return std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, name); });
+  };
+  const auto col = at_name("hoop_frequency");
+  ASSERT_NE(col, t.end());
+  ASSERT_NE(col, t.begin());
+  EXPECT_EQ(col->owner, part) << "the wall part's own column";
+  EXPECT_STREQ((col - 1)->name, "wall_deflection_large") << "at its place in the table";
+  EXPECT_STREQ(col->applies_text, "with -barrel_hoop_frequency or -beam_shell");
+  EXPECT_STREQ(col->unit, "Hz");
+  ASSERT_NE(col->part_compute, nullptr);
+
+  const BeamParams shell = TubeBeam(kBarrel, 41, Support::Free, Support::Free);
+  const BeamParams hoop  = WithPart(Bare(shell), "wall", {{"-barrel_hoop_frequency", {1234}}, {"-barrel_hoop_mass", {0.2}}});
+  PartOutputFacts  f;
+  f.params = shell.parts.Find("wall"), f.beam = &shell;
+  EXPECT_EQ(col->part_compute(f), ShellLowestFrequency(BarrelShell(), shell, 2)) << "the shell's n = 2 alone";
+  f.params = hoop.parts.Find("wall"), f.beam = &hoop;
+  EXPECT_EQ(col->part_compute(f), 1234.0) << "the given f_h";
+
+  BallParams ball = Superball();
+  ball.speed      = 30;
+  PartPoint at;
+  at.ball = &ball, at.x = 0.15;
+  const double R = kBarrel.R, f_h = 1234;
+  EXPECT_EQ(part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.5 * R, 0}, at), "") << "not flagged: no warning";
+  const std::string wh = part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.5 * R, 1}, at);
+  EXPECT_NE(wh.find("warning: the barrel wall's largest displacement under the ball, 0.01605 m, is 0.5 times its "
+                    "midsurface radius (R = 0.0321 m at x = 0.15 m), beyond 0.25 of it"),
+            std::string::npos)
+    << wh;
+  EXPECT_NE(wh.find("check -barrel_hoop_frequency and -barrel_hoop_mass and -ball_speed 30 m/s"), std::string::npos) << wh;
+  const std::string ws = part->Warning(*shell.parts.Find("wall"), shell, {1600, 0.5 * R, 1}, at);
+  EXPECT_NE(ws.find("check -shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius and -ball_speed 30"),
+            std::string::npos)
+    << ws;
+}

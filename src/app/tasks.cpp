@@ -126,19 +126,44 @@ PetscErrorCode StageSummary(MPI_Comm comm, const Scenario &sc, const ImpactResul
 
 } // namespace
 
-// Each registered part present: its summary line (first: those before the pivot rig's lines).
-static PetscErrorCode PartSummaries(MPI_Comm comm, const Scenario &sc, const ImpactResult &r, bool first)
+// A part's columns' values in r, in Columns()'s order, then SummaryColumns()'s.
+static std::vector<double> PartSummaryValues(const StructurePart &part, const ImpactResult &r)
+{
+  std::vector<double> values;
+  for (const PartColumn &c : part.Columns()) values.push_back(ImpactResultColumn(c.name)->Get(r));
+  for (const char *name : part.SummaryColumns()) values.push_back(ImpactResultColumn(name)->Get(r));
+  return values;
+}
+
+static PartPoint SummaryPoint(const Scenario &sc)
 {
   PartPoint at;
   at.ball = &sc.ball, at.x = sc.impact.x, at.z = sc.impact.z;
+  return at;
+}
+
+// Each registered part present: its summary line (first: those before the pivot rig's lines).
+static PetscErrorCode PartSummaries(MPI_Comm comm, const Scenario &sc, const ImpactResult &r, bool first)
+{
   PetscFunctionBeginUser;
   for (const StructurePart *part : StructureParts()) {
     const PartParams *q = sc.beam.parts.Find(part->Name());
     if (!q || part->SummaryFirst() != first) continue;
-    std::vector<double> values;
-    for (const PartColumn &c : part->Columns()) values.push_back(ImpactResultColumn(c.name)->Get(r));
-    for (const char *name : part->SummaryColumns()) values.push_back(ImpactResultColumn(name)->Get(r));
-    const std::string line = part->SummaryAt(*q, values, at);
+    const std::string line = part->SummaryAt(*q, PartSummaryValues(*part, r), SummaryPoint(sc));
+    if (!line.empty()) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Each registered part present: its warning on the outcome (StructurePart::Warning: the barrel
+// wall's displacement beyond its linear range).
+static PetscErrorCode PartWarnings(MPI_Comm comm, const Scenario &sc, const ImpactResult &r)
+{
+  PetscFunctionBeginUser;
+  for (const StructurePart *part : StructureParts()) {
+    const PartParams *q = sc.beam.parts.Find(part->Name());
+    if (!q) continue;
+    const std::string line = part->Warning(*q, sc.beam, PartSummaryValues(*part, r), SummaryPoint(sc));
     if (!line.empty()) PetscCall(PetscPrintf(comm, "%s\n", line.c_str()));
   }
   PetscFunctionReturn(0);
@@ -168,8 +193,7 @@ PetscErrorCode ImpactPrintSummary(MPI_Comm comm, const Scenario &sc, const Impac
   }
   const std::string absurd = CompressionBeyondRadiusText(sc, r);
   if (!absurd.empty()) PetscCall(PetscPrintf(comm, "%s\n", absurd.c_str()));
-  const std::string wall = WallDeflectionLargeText(sc, r);
-  if (!wall.empty()) PetscCall(PetscPrintf(comm, "%s\n", wall.c_str()));
+  PetscCall(PartWarnings(comm, sc, r));
   const std::string energy = ImpactEnergyShareText(sc, r); // where it went (docs/model.md section 4)
   if (!energy.empty()) PetscCall(PetscPrintf(comm, "%s\n", energy.c_str()));
   if (r.beam_dissipated_end > 0) // a damped beam

@@ -230,8 +230,6 @@ struct ImpactOutcome {
   PetscReal wall_fraction         = 0;           // shell_energy_end / E_in
   PetscBool wall_deflection_large = PETSC_FALSE; // wall_deflection_peak > kWallDeflectionLimit R (model/shell.hpp):
                                                  // physically absurd
-  PetscReal hoop_frequency = 0; // Hz, the wall's lowest n = 2 frequency (the shell's, model/shell.hpp) or
-                                // -barrel_hoop_frequency
   // A racket (-strings_frame, -beam_torsion): the string bed's energy at the end and its largest
   // over the steps (J), its largest deflection from the frame (m); the roll's energy at the end
   // (J: the twist's strain and the sections' spin); a free frame's roll rate at the end (rad/s)

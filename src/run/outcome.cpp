@@ -1,7 +1,6 @@
 // The outcome of a run. See outcome.hpp.
 #include "run/outcome.hpp"
 
-#include "model/shell.hpp"
 #include "system/structure_part.hpp"
 
 #include <cstdio>
@@ -53,6 +52,7 @@ double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const Outco
     pf.peak                  = f.peaks->part_peak + p.slot0;
     pf.E_in                  = f.E_in;
     pf.params                = p.params.get();
+    pf.beam                  = &f.sc->beam;
     pf.frame_force_peak      = f.peaks->frame_force;
     pf.frame_force_peak_time = f.peaks->frame_force_time;
     return c.part_compute(pf);
@@ -113,25 +113,6 @@ std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &
                 "(check -ball_speed %g m/s and the stiffness)",
                 (double)r.max_compression, (double)sc.ball.radius, (double)(r.max_compression / sc.ball.radius),
                 (double)sc.ball.speed);
-  return msg;
-}
-
-std::string WallDeflectionLargeText(const Scenario &sc, const ImpactResult &r)
-{
-  if (!r.wall_deflection_large) return "";
-  const PetscReal R      = ShellRadiusAt(sc.beam, sc.impact.x);
-  const char     *remedy = ""; // the wall part's options to check
-  for (const StructurePart *part : StructureParts())
-    if (const PartParams *q = sc.beam.parts.Find(part->Name()))
-      if (*part->Remedy(*q)) remedy = part->Remedy(*q);
-  char msg[640];
-  std::snprintf(msg, sizeof msg,
-                "warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface "
-                "radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the "
-                "wall's model is linear (its displacements small against its thickness and radius); check %s and "
-                "-ball_speed %g m/s",
-                (double)r.wall_deflection_peak, (double)(r.wall_deflection_peak / R), (double)R, (double)sc.impact.x,
-                (double)kWallDeflectionLimit, remedy, (double)sc.ball.speed);
   return msg;
 }
 

@@ -46,9 +46,6 @@ ImpactScales ImpactScalesOf(const ContactScales &scales);
 
 // The summary's warning line for compression_beyond_radius (empty if not flagged), naming both values.
 std::string CompressionBeyondRadiusText(const Scenario &sc, const ImpactResult &r);
-// The same for wall_deflection_large: the wall's displacement against its radius, what the linear
-// model assumes, and the options that set the wall's stiffness.
-std::string WallDeflectionLargeText(const Scenario &sc, const ImpactResult &r);
 
 // A run that reached its cap on the simulated time (-impact_max_time, or its default) while
 // the ball was still in contact has no outcome (its ACOR, peak force and compression are of a

@@ -329,13 +329,6 @@ std::vector<ResultColumn> OutcomeColumns()
       "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear "
       "wall far outside its range, physically absurd"),
     Real(
-      "hoop_frequency", "Hz", &R::hoop_frequency, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
-      [](F f) -> double { // the wall part's (the shell's n = 2 alone, or f_h)
-        const PartParams *q = f.sc->beam.parts.Find("wall");
-        return q ? StructurePartFind("wall")->Value(*q, f.sc->beam, "hoop_frequency") : NAN;
-      },
-      "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h"),
-    Real(
       "bed_energy_end", "J", &R::bed_energy_end, ResultStringBed, kStrings,
       [](F f) -> double { return f.end.bed_energy; },
       "the string bed's energy at the end (its strain relative to the frame and its strings' kinetic energy)"),

@@ -91,6 +91,7 @@ struct PartOutputFacts {
   const PetscReal  *start = nullptr, *end = nullptr, *peak = nullptr;
   PetscReal         E_in   = 0; // J, the energy brought into the impact (the fractions' denominator)
   const PartParams *params = nullptr;
+  const BeamParams *beam   = nullptr; // the scenario's beam (the wall's shell frequencies)
   // The largest |force of the structure on the swing's frame| over the steps (N, FrameMeasures::
   // force) and when (s): 0 where no part ties to the frame.
   PetscReal frame_force_peak = 0, frame_force_peak_time = 0;
@@ -232,10 +233,6 @@ public:
   {
     return false;
   }
-  // A value of the outcome's table that only the part computes (by column name; NaN for none).
-  virtual double Value(const PartParams &, const BeamParams &, const char *) const { return NAN; }
-  // The options to check when its outcome is out of its range ("" for none).
-  virtual const char           *Remedy(const PartParams &) const { return ""; }
   virtual std::vector<PartSlot> Slots() const { return {}; }
   // slot[k] += its k-th slot's share of the owned dofs [s.d0, s.d1).
   virtual void Measure(const PartInstance &, const BeamSystem &, const PartState &, PetscReal *) const { }
@@ -254,6 +251,14 @@ public:
   virtual std::string SummaryAt(const PartParams &q, const std::vector<double> &c, const PartPoint &) const
   {
     return Summary(q, c);
+  }
+  // A warning on its outcome (without newline; "" for none: the default) from its columns' values as
+  // Summary's, the beam and the impact point: the run summary prints it after the ball's own
+  // (the barrel wall's displacement beyond its linear range), before the energy line.
+  virtual std::string Warning(const PartParams &, const BeamParams &, const std::vector<double> &,
+                              const PartPoint &) const
+  {
+    return "";
   }
   // Whether its summary line comes before the pivot rig's lines (a part that predates the registry
   // keeps its line's place: the bed's); after them, in registry order, by default.

@@ -4,11 +4,12 @@
 // as a thin cylindrical shell (-beam_shell; model/shell.hpp: three fields U_n, V_n, W_n per
 // harmonic n where the profile is hollow, the ball's load a patch of radius a on each W_n). They
 // exclude each other and share the wall's columns (run/results_table.cpp: shell_energy_end,
-// wall_fraction, shell_energy_peak, wall_deflection_peak, wall_deflection_large, hoop_frequency)
-// and its energy account (Part::Wall). A structure part (system/structure_part.hpp): its option
-// rows and checks, the patch radius at the impact point, its fields, coupling, -task modes'
-// family detail (the harmonic n; the hoop counts as n = 2) and the shell's snapshots are this
-// file. Units: SI.
+// wall_fraction, shell_energy_peak, wall_deflection_peak, wall_deflection_large) and its energy
+// account (Part::Wall). A structure part (system/structure_part.hpp): its option rows and checks,
+// the patch radius at the impact point, its fields, coupling, -task modes' family detail (the
+// harmonic n; the hoop counts as n = 2), the shell's snapshots, its column hoop_frequency (after
+// wall_deflection_large) and the summary's warning on a displacement beyond the linear range are
+// this file. Units: SI.
 #include "model/barrel.hpp"
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
@@ -220,16 +221,24 @@ public:
     *labels = w.shell.harmonics;
     return true;
   }
-  double Value(const PartParams &q, const BeamParams &beam, const char *name) const override
+  const char             *ColumnsAfter() const override { return "wall_deflection_large"; }
+  std::vector<PartColumn> Columns() const override
   {
-    if (std::strcmp(name, "hoop_frequency")) return NAN; // the lowest n = 2 frequency: the shell's, or f_h
-    return P(q).shell_on ? ShellLowestFrequency(P(q).shell, beam, 2) : P(q).hoop.frequency;
+    return {
+      {"hoop_frequency", "Hz",
+       "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h",
+       [](const PartOutputFacts &f) -> double {
+         const WallParams &w = P(*f.params);
+         return w.shell_on ? ShellLowestFrequency(w.shell, *f.beam, 2) : w.hoop.frequency;
+       }},
+    };
   }
-  const char *Remedy(const PartParams &q) const override
+  std::vector<const char *> SummaryColumns() const override
   {
-    return P(q).shell_on ? "-shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius"
-                         : "-barrel_hoop_frequency and -barrel_hoop_mass";
+    return {"wall_deflection_peak", "wall_deflection_large"};
   }
+  std::string Warning(const PartParams &q, const BeamParams &beam, const std::vector<double> &c,
+                      const PartPoint &at) const override;
 };
 
 // -shell_contact_radius: its default from the ball (model/shell.hpp) at the approach speed at the
@@ -265,6 +274,23 @@ bool Wall::Resolve(const PartParams &q, const BeamParams &beam, const PartPoint 
   }
   *out = w;
   return true;
+}
+
+// c: hoop_frequency, wall_deflection_peak, wall_deflection_large. The flag set: the displacement under
+// the ball beyond kWallDeflectionLimit of the wall's midsurface radius at the point, and the options
+// that set the wall's stiffness.
+std::string Wall::Warning(const PartParams &q, const BeamParams &beam, const std::vector<double> &c,
+                          const PartPoint &at) const
+{
+  if (c[2] == 0) return "";
+  const PetscReal R = ShellRadiusAt(beam, at.x), peak = c[1];
+  return Fmt("warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface "
+             "radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the wall's model is linear (its "
+             "displacements small against its thickness and radius); check %s and -ball_speed %g m/s",
+             peak, (double)(peak / R), (double)R, (double)at.x, (double)kWallDeflectionLimit,
+             P(q).shell_on ? "-shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius"
+                           : "-barrel_hoop_frequency and -barrel_hoop_mass",
+             (double)at.ball->speed);
 }
 
 // The hoop: the wall under the ball, in series (weight 1). The shell: each harmonic's W_n under
