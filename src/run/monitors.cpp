@@ -34,6 +34,7 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
       part_series_.push_back(slot.series && asked ? (int)series->keyed.size() : -1);
       if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
+  for (const PartInstance &s : ctx.sys->parts) wall_ = wall_ || s.part->Peaks();
   defer_ = !mon.any() && !drive && !ip.energy_check && !ctx.sys->TiedToFrame() && ctx.contact &&
            std::all_of(part_series_.begin(), part_series_.end(), [](int k) { return k < 0; });
 }
@@ -79,12 +80,10 @@ void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall
 // always (NaN until the first step).
 void ImpactRecorder::KeepPeaks(const StateMeasures &m, PetscReal t)
 {
-  bool wall = false; // a part whose peaks the outcome keeps (StructurePart::Peaks: the barrel wall)
-  for (const PartInstance &s : ctx_.sys->parts) wall = wall || s.part->Peaks();
   for (size_t k = 0; k < part_peak_.size(); ++k)
     if (part_peak_[k] && !(std::abs(m.part_slot[k]) <= peaks_->part_peak[k]))
       peaks_->part_peak[k] = std::abs(m.part_slot[k]);
-  if (wall) {
+  if (wall_) {
     if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
       peaks_->wall_deflection = std::abs(m.wall_deflection);
     if (!(m.shell_energy <= peaks_->shell_energy)) peaks_->shell_energy = m.shell_energy;
@@ -124,9 +123,8 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   ImpactSeries          &S = *series_;
 
   PetscFunctionBeginUser;
-  bool wall = false; // a part whose peaks the outcome keeps (StructurePart::Peaks: the barrel wall)
-  for (const PartInstance &s : ctx_.sys->parts) wall = wall || s.part->Peaks();
-  const bool bed = !ctx_.sys->face_fields.empty(); // a racket's string bed (its fields across the face)
+  const bool wall = wall_;
+  const bool bed  = !ctx_.sys->face_fields.empty(); // a racket's string bed (its fields across the face)
   if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
     PetscFunctionReturn(0);
   if (defer_) { // peaks only: a sample in modes, measured with the others at the next flush

@@ -893,8 +893,8 @@ PetscErrorCode Sync(TS ts)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Expand_Modal(TS ts, const PetscReal *Z, const PetscReal *Zd, const PetscReal *F, PetscInt count,
-                            PetscInt e0, PetscInt e1, PetscReal *y, PetscReal *v)
+PetscErrorCode Expand_Modal(TS ts, const PetscReal *Z, const PetscReal *F, PetscInt count, PetscInt e0, PetscInt e1,
+                            PetscReal *y, PetscReal *v)
 {
   ModalTS &m  = *Data(ts);
   PetscInt i0 = m.nd, i1 = 0; // the free dofs of [e0, e1): contiguous
@@ -903,11 +903,9 @@ PetscErrorCode Expand_Modal(TS ts, const PetscReal *Z, const PetscReal *Zd, cons
   for (PetscInt d = e0; d < e1; ++d)
     if (m.free_of[d] >= 0) i0 = std::min(i0, m.free_of[d]), i1 = std::max(i1, m.free_of[d] + 1);
   const PetscInt n = m.nd, ni = std::max<PetscInt>(i1 - i0, 0), ne = e1 - e0;
-  // [Y V] = Phi [Z Zd] in one product (the modes read once), Zd's columns right after Z's.
+  // [Y V] = Phi [Z Zd] in one product (the modes read once): Z holds the rates' columns after the amplitudes'.
   std::vector<PetscReal> YV((size_t)ni * 2 * count);
   PetscReal             *Y = YV.data(), *V = Y + (size_t)ni * count;
-  PetscCheck(Zd == Z + (size_t)m.n * count, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONG,
-             "TSModalExpand: Zd's columns must follow Z's");
   if (ni > 0 && count > 0) PetscCall(ParityPlanFor(*m.modes, i0, i1, &m.parity));
   if (ni > 0 && count > 0 && m.parity.ok) PetscCall(ParityExpand(m.parity, m.n, Z, 2 * count, Y));
   else if (ni > 0 && count > 0) {
@@ -1385,16 +1383,16 @@ PetscErrorCode TSModalSample(TS ts, std::vector<PetscReal> *z, std::vector<Petsc
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSModalExpand(TS ts, const PetscReal *Z, const PetscReal *Zd, const PetscReal *F, PetscInt count,
-                             PetscInt e0, PetscInt e1, PetscReal *y, PetscReal *v, PetscBool *done)
+PetscErrorCode TSModalExpand(TS ts, const PetscReal *Z, const PetscReal *F, PetscInt count, PetscInt e0, PetscInt e1,
+                             PetscReal *y, PetscReal *v, PetscBool *done)
 {
-  PetscErrorCode (*f)(TS, const PetscReal *, const PetscReal *, const PetscReal *, PetscInt, PetscInt, PetscInt,
-                      PetscReal *, PetscReal *) = nullptr;
+  PetscErrorCode (*f)(TS, const PetscReal *, const PetscReal *, PetscInt, PetscInt, PetscInt, PetscReal *,
+                      PetscReal *) = nullptr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalExpand_C", &f));
   *done = f ? PETSC_TRUE : PETSC_FALSE;
-  if (f) PetscCall((*f)(ts, Z, Zd, F, count, e0, e1, y, v));
+  if (f) PetscCall((*f)(ts, Z, F, count, e0, e1, y, v));
   PetscFunctionReturn(0);
 }
 

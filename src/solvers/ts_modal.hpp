@@ -91,11 +91,11 @@ PetscErrorCode TSModalSample(TS ts, std::vector<PetscReal> *z, std::vector<Petsc
                              PetscBool *done);
 // The physical states of `count` such samples on the beam dofs [e0, e1) (this rank's owned ones
 // and the neighbours' a stencil reaches): y = M^{-1/2} (Phi Z + u_r F) and v = M^{-1/2} Phi Zd in
-// one BLAS 3 product (Z, Zd: kept modes x count, column-major, Zd's columns right after Z's),
+// one BLAS 3 product (Z = [Z Zd]: kept modes x 2 count, column-major, the rates after the amplitudes),
 // state s's dof d at y[s (e1 - e0) + d - e0] (held dofs 0). The same values as the state written
 // at each step (TSModalSyncSolution) to round-off (another order of the sums over the modes).
 // Local; *done false for any other type.
-PetscErrorCode TSModalExpand(TS ts, const PetscReal *Z, const PetscReal *Zd, const PetscReal *F, PetscInt count,
-                             PetscInt e0, PetscInt e1, PetscReal *y, PetscReal *v, PetscBool *done);
+PetscErrorCode TSModalExpand(TS ts, const PetscReal *Z, const PetscReal *F, PetscInt count, PetscInt e0, PetscInt e1,
+                             PetscReal *y, PetscReal *v, PetscBool *done);
 
 } // namespace beamimpact

@@ -459,8 +459,7 @@ PetscErrorCode TSStepper::Expand(const std::vector<StateSample> &s, SampleRange 
   const size_t ne = (size_t)(r->e1 - r->e0);
   y->assign(ne * count, 0.0);
   v->assign(ne * count, 0.0);
-  PetscCall(TSModalExpand(ts, Z.data(), Z.data() + (size_t)k * count, F.data(), count, r->e0, r->e1, y->data(),
-                          v->data(), &ok));
+  PetscCall(TSModalExpand(ts, Z.data(), F.data(), count, r->e0, r->e1, y->data(), v->data(), &ok));
   PetscCheck(ok, Comm(), PETSC_ERR_SUP, "%s keeps no samples to expand", Method().c_str());
   PetscFunctionReturn(0);
 }
