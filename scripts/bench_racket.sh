@@ -6,6 +6,8 @@
 #   dofs        the system's free dofs (frame, roll and bed; the modal run's "modes kept/free")
 #   modal       one impact, -ts_type modal: wall time of the whole process (the modes once, the
 #               contact, the modal free flight after it)
+#   modal/np    the same impact on BENCH_RANKS ranks (the modes' mirror halves, residuals and
+#               refinements shared out over them): PETSc's -log_view total, and the process' wall
 #   cn          one impact, -ts_type cn at 20 us with -impact_after time (no modes at all)
 #   map         the face map (110 points, 98 on the face) with -ts_type modal, the sweep's own
 #               "computed N points in T s" (the modes once, every point on them), on one rank
@@ -55,11 +57,15 @@ wall() {
 
 uptime
 ranks=${BENCH_RANKS:-$(nproc)}
-printf "%6s %8s %12s %12s %12s %10s %12s\n" N dofs "modal (s)" "cn (s)" "map (s)" "map pts/s" "map/np$ranks (s)"
+petsc() { sed -nE 's/^Time \(sec\): +([0-9.e+-]+).*/\1/p' "$tmp/log" | head -1; } # -log_view's total of the last run
+printf "%6s %8s %12s %18s %12s %12s %10s %12s\n" N dofs "modal (s)" "modal/np$ranks (s)" "cn (s)" "map (s)" "map pts/s" \
+  "map/np$ranks (s)"
 rows=""
 for n in $nodes; do
   tm=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -output none)
   dofs=$(sed -nE 's/.*modes [0-9]+\/([0-9]+).*/\1/p' "$tmp/log" | tail -1) # the summary's "modes kept/free"
+  tmw=$(wall mpirun -n "$ranks" "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -output none -log_view)
+  tmn="$(printf %.3f "$(petsc)") ($tmw)"
   tc=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type cn -ts_dt 2e-5 -ts_adapt_type none -impact_after time -output none)
   tmap=nan rate=nan tnp=nan
   if [[ ${BENCH_MAP:-1} != 0 ]]; then
@@ -72,13 +78,12 @@ for n in $nodes; do
     tnp=$(sed -nE 's/.*computed ([0-9]+) points in ([0-9.e+-]+) s.*/\2/p' "$tmp/log")
     rm -rf "$tmp/map.h5" "$tmp/map.h5.parts"
   fi
-  printf "%6s %8s %12s %12s %12s %10s %12s\n" "$n" "$dofs" "$tm" "$tc" "$tmap" "$rate" "$tnp"
+  printf "%6s %8s %12s %18s %12s %12s %10s %12s\n" "$n" "$dofs" "$tm" "$tmn" "$tc" "$tmap" "$rate" "$tnp"
   rows+="$n $dofs $tm $tc $tmap"$'\n'
 done
 
 # key FILE NAME: a result of the impact's file, all its digits
 key() { /usr/bin/python3 -c "import h5py; print(repr(float(h5py.File('$1')['results']['$2'][()])))"; }
-petsc() { sed -nE 's/^Time \(sec\): +([0-9.e+-]+).*/\1/p' "$tmp/log" | head -1; } # -log_view's total of the last run
 routes() { # routes LABEL KEY OPTIONS...: the dense route and the share route, one row
   local label=$1 k=$2; shift 2
   local td ts pd ps kd ks ad as

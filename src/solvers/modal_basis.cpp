@@ -19,6 +19,27 @@ extern "C" void dsyevd_(const char *jobz, const char *uplo, const int *n, double
 extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const int *ku, const int *nrhs,
                         const double *ab, const int *ldab, const int *ipiv, double *b, const int *ldb, int *info);
 
+namespace {
+// The dense modes' phases as -log_view events, registered together on first use: the matrix, its
+// decomposition, the refinement (residuals, sparse LUs, re-orthogonalisation) and the quotients.
+enum ModalPhase { kModalMatrix, kModalEigen, kModalRefine, kModalQuotients };
+PetscLogEvent ModalEvent(ModalPhase p)
+{
+  static const std::vector<PetscLogEvent> ids = [] {
+    PetscClassId  cid = 0;
+    PetscLogEvent id  = 0;
+    (void)PetscClassIdRegister("beamimpact modes", &cid);
+    std::vector<PetscLogEvent> v;
+    for (const char *name : {"ModalMatrix", "ModalEigen", "ModalRefine", "ModalQuotients"}) {
+      (void)PetscLogEventRegister(name, cid, &id);
+      v.push_back(id);
+    }
+    return v;
+  }();
+  return ids[p];
+}
+} // namespace
+
 ModalSystem ModalSystemBuild(const BeamSystem &sys, const ContactCoupling &g, PetscReal ball_mass, PetscReal k)
 {
   ModalSystem S;
@@ -543,8 +564,9 @@ static std::vector<PetscReal> ModalMatrix(const ModalSystem &S, bool contact)
   if (contact)
     for (PetscInt r = 0; r < n; ++r)
       for (PetscInt c = 0; c < n; ++c) A[r + c * n] += S.k * S.g[r] * S.g[c];
-  for (PetscInt r = 0; r < n; ++r)
-    for (PetscInt c = 0; c < n; ++c) A[r + c * n] /= std::sqrt(S.mass[r] * S.mass[c]);
+  for (PetscInt c = 0; c < n; ++c) // without the contact's term A is sparse: its zeros stay zeros
+    for (PetscInt r = 0; r < n; ++r)
+      if (contact || A[r + c * n] != 0) A[r + c * n] /= std::sqrt(S.mass[r] * S.mass[c]);
   return A;
 }
 
@@ -580,17 +602,25 @@ static void IsolateBall(const ModalSystem &S, const std::vector<PetscReal> &lamb
 // Each mode's omega as its Rayleigh quotient in the energy form (a sum of squares: accurate
 // relative to the mode itself, where the dense solver's is only relative to the largest), its share gamma
 // of c, and its decay rate sigma = phi^T C phi / 2 (C = alpha M + beta K on the beam dofs:
-// alpha/2 + beta omega^2/2 for a beam mode, alpha/2 for its rigid modes, 0 for the ball).
-static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
+// alpha/2 + beta omega^2/2 for a beam mode, alpha/2 for its rigid modes, 0 for the ball). Mode k
+// on rank k % size of comm, then summed over the ranks (the others' 0): each rank's the one rank's.
+static PetscErrorCode ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B, MPI_Comm comm)
 {
   const PetscInt         n   = S.n;
   const BeamSystem      &sys = *S.sys;
   std::vector<PetscReal> shape(sys.ndof);
   PetscReal              alpha, beta;
+  PetscMPIInt            rank, size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   S.Rayleigh(&alpha, &beta);
-  const bool damped = alpha != 0 || beta != 0;
-  for (PetscInt k = 0; k < (PetscInt)B->omega.size(); ++k) {
+  const bool     damped = alpha != 0 || beta != 0;
+  const PetscInt count  = (PetscInt)B->omega.size();
+  for (PetscInt k = 0; k < count; ++k) {
     const PetscReal *phi = &B->Phi[k * n];
+    if (k % size != rank) continue; // another rank's: 0 here
     std::fill(shape.begin(), shape.end(), 0.0);
     PetscReal norm = 0, c = 0, beam_norm = 0;
     for (PetscInt d = 0; d < n; ++d) {
@@ -606,6 +636,10 @@ static void ModalQuotients(const ModalSystem &S, bool contact, ModalBasis *B)
     B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
     B->gamma[k] = c;
   }
+  if (size > 1)
+    for (std::vector<PetscReal> *v : {&B->omega, &B->gamma, &B->rate})
+      PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, v->data(), (PetscMPIInt)count, MPIU_REAL, MPIU_SUM, comm));
+  PetscFunctionReturn(0);
 }
 
 // Every eigenpair of the symmetric n x n A (column-major; its upper triangle): LAPACK dsyevd,
@@ -770,16 +804,17 @@ static PetscErrorCode MirrorEigen(const ModalSystem &S, std::vector<PetscReal> &
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   std::vector<PetscReal> V[2], lam[2];
-  for (int b = 0; b < 2; ++b) { // on several ranks, block b on rank b % size, then handed out
+  for (int b = 0; b < 2; ++b) { // on several ranks, block b on rank b % size, at once; then handed out
     const PetscInt k = (PetscInt)Q[b].size();
     if (b % size == rank) {
       V[b] = MirrorBlock(A, n, Q[b]);
       PetscCall(SymmetricEigen(k, V[b], &lam[b], [&] { return MirrorBlock(A, n, Q[b]); }));
     } else V[b].resize((size_t)k * k), lam[b].resize(k);
-    if (size > 1) {
-      PetscCallMPI(MPI_Bcast(lam[b].data(), (PetscMPIInt)k, MPIU_REAL, b % size, comm));
-      PetscCallMPI(MPI_Bcast(V[b].data(), (PetscMPIInt)(k * k), MPIU_REAL, b % size, comm));
-    }
+  }
+  for (int b = 0; b < 2 && size > 1; ++b) { // after both: a broadcast between them would hold the second back
+    const PetscInt k = (PetscInt)Q[b].size();
+    PetscCallMPI(MPI_Bcast(lam[b].data(), (PetscMPIInt)k, MPIU_REAL, b % size, comm));
+    PetscCallMPI(MPI_Bcast(V[b].data(), (PetscMPIInt)(k * k), MPIU_REAL, b % size, comm));
   }
   std::fill(A.begin(), A.end(), 0.0);
   w->assign(n, 0.0);
@@ -819,18 +854,26 @@ PetscErrorCode ModalBasisBuild(const ModalSystem &S, bool contact, ModalBasis *B
              "ball and the contact spring carry none), so the coupled "
              "modes have no closed form; the exact modal solution needs both 0 (use a tight TS run as the reference)",
              (double)alpha, (double)beta);
-  A             = ModalMatrix(S, contact);
+  PetscCall(PetscLogEventBegin(ModalEvent(kModalMatrix), 0, 0, 0, 0));
+  A = ModalMatrix(S, contact);
+  PetscCall(PetscLogEventEnd(ModalEvent(kModalMatrix), 0, 0, 0, 0));
   bool mirrored = false;
+  PetscCall(PetscLogEventBegin(ModalEvent(kModalEigen), 0, 0, 0, 0));
   PetscCall(MirrorEigen(S, A, &w, &mirrored, comm));
   B->mirrored = mirrored;
   if (!mirrored) PetscCall(SymmetricEigen(n, A, &w, [&] { return ModalMatrix(S, contact); }));
+  PetscCall(PetscLogEventEnd(ModalEvent(kModalEigen), 0, 0, 0, 0));
   B->Phi = std::move(A);
   B->omega.assign(n, 0.0);
   B->gamma.assign(n, 0.0);
   B->rate.assign(n, 0.0);
+  PetscCall(PetscLogEventBegin(ModalEvent(kModalRefine), 0, 0, 0, 0));
   PetscCall(RefineBasis(S, contact, w, B, refine_all, comm));
+  PetscCall(PetscLogEventEnd(ModalEvent(kModalRefine), 0, 0, 0, 0));
   if (!contact && damped && S.ball) IsolateBall(S, w, B);
-  ModalQuotients(S, contact, B);
+  PetscCall(PetscLogEventBegin(ModalEvent(kModalQuotients), 0, 0, 0, 0));
+  PetscCall(ModalQuotients(S, contact, B, comm));
+  PetscCall(PetscLogEventEnd(ModalEvent(kModalQuotients), 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -847,7 +890,7 @@ PetscErrorCode ModalBasisFromModes(const ModalSystem &S, const std::vector<Petsc
   B->gamma.assign(count, 0.0);
   B->rate.assign(count, 0.0);
   if (refine) PetscCall(RefineBasis(S, false, lambda, B, refine_all, PETSC_COMM_SELF));
-  ModalQuotients(S, false, B);
+  PetscCall(ModalQuotients(S, false, B, PETSC_COMM_SELF));
   PetscFunctionReturn(0);
 }
 
