@@ -181,8 +181,15 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
     for (PetscInt k = 1;; ++k) {
       const PetscReal ts = k <= k_last ? t0 + k * dt : PETSC_INFINITY, tn = std::min(ts, rec.NextSnapshot());
       if (!(tn < t_end * (1 - 1e-14))) break;
-      FreeFlightState(ff, tn - t0, &s);
-      PetscCall(st.SetState(tn, s));
+      bool set = false; // the stepper's own modes: the modal state (O(k)), expanded on this rank's rows when read
+      if (in_modes) {
+        FreeFlightModalState(ff, tn - t0, &m0);
+        PetscCall(st.SetModalState(tn, *modes, m0, &set));
+      }
+      if (!set) {
+        FreeFlightState(ff, tn - t0, &s);
+        PetscCall(st.SetState(tn, s));
+      }
       free_flight_samples++;
       if (series) PetscCall(rec.Record(tn));
       PetscCall(rec.Snapshots(tn));
