@@ -14,7 +14,9 @@
 #   map/np      the same on BENCH_RANKS ranks (default: every local core; the sweep's farm hands
 #               the points out, each rank computes the modes once)
 # and writes a PNG (time against free dofs, log-log) when a Python with matplotlib is found.
-# Then the two routes of the modal engine in the same run (issue 39), one impact each, -ts_type
+# Then the racket's dense route split by its mirror against the whole decomposition
+# (-modal_mirror off: the ACOR difference, issue 39's 1e-9), and the two routes of the modal
+# engine in the same run (issue 39), one impact each, -ts_type
 # modal at the same step: the dense decomposition of every mode (-modal_modes all) and
 # -modal_weight share at -modal_tolerance BENCH_SHARE_TOL (the modes from a partial eigen-solve
 # weighed under the ball's load; docs/model.md section 12): wall times, the modes kept and the
@@ -98,6 +100,18 @@ routes() { # routes LABEL KEY OPTIONS...: the dense route and the share route, o
     "$(awk -v a="$ad" -v b="$as" 'BEGIN { d = b - a; print d < 0 ? -d : d }')"
 }
 if [[ ${BENCH_ROUTES:-1} != 0 ]]; then
+  echo "the racket's dense route split by its mirror (-modal_mirror auto, the default) against the whole decomposition"
+  echo "(-modal_mirror off), one impact each on one rank: PETSc's -log_view total and the process' wall, s"
+  printf "%-22s %8s %8s %8s %8s %-6s %s\n" case "mirror" "(wall)" "off" "(wall)" key "|difference|"
+  for n in $nodes; do
+    ta=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -log_view -output "$tmp/mirror.h5")
+    pa=$(petsc)
+    to=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -modal_mirror off -log_view -output "$tmp/off.h5")
+    po=$(petsc)
+    ka=$(key "$tmp/mirror.h5" acor) ko=$(key "$tmp/off.h5" acor)
+    printf "%-22s %8.3f %8.3f %8.3f %8.3f %-6s %.3e\n" "racket N = $n" "$pa" "$ta" "$po" "$to" acor \
+      "$(awk -v a="$ka" -v b="$ko" 'BEGIN { d = b - a; print d < 0 ? -d : d }')"
+  done
   tol=${BENCH_SHARE_TOL:-1e-6}
   echo "the modal engine's routes: dense (-modal_modes all) and -modal_weight share -modal_tolerance $tol"
   uptime
