@@ -16,8 +16,7 @@
 # and writes a PNG (time against free dofs, log-log) when a Python with matplotlib is found.
 # Then the racket's dense route split by its mirror against the whole decomposition
 # (-modal_mirror off: the ACOR difference, issue 39's 1e-9), and the two routes of the modal
-# engine in the same run (issue 39), one impact each, -ts_type
-# modal at the same step: the dense decomposition of every mode (-modal_modes all) and
+# engine in the same run (issue 39), one impact each, -ts_type modal at the same step: the dense decomposition of every mode (-modal_modes all) and
 # -modal_weight share at -modal_tolerance BENCH_SHARE_TOL (the modes from a partial eigen-solve
 # weighed under the ball's load; docs/model.md section 12): wall times, the modes kept and the
 # ACOR difference, for the racket at each N and the shelled bat in the rig at one point
@@ -29,7 +28,7 @@
 # Environment:
 #   BENCH_NODES   frame nodes (default "37 73 145")
 #   BENCH_MAP     0: skip the face map (default 1)
-#   BENCH_RANKS   ranks of the map's second run (default: nproc)
+#   BENCH_RANKS   ranks of the impact's and the map's second runs (default: nproc)
 #   BENCH_PNG     the figure's path (default out/bench-racket.png; "" for none)
 #   BENCH_ROUTES  0: skip the dense-against-share table (default 1)
 #   BENCH_SHARE_TOL  -modal_tolerance of the share route (default 1e-6)
@@ -59,7 +58,8 @@ wall() {
 
 uptime
 ranks=${BENCH_RANKS:-$(nproc)}
-petsc() { sed -nE 's/^Time \(sec\): +([0-9.e+-]+).*/\1/p' "$tmp/log" | head -1; } # -log_view's total of the last run
+# -log_view's total of the last run
+petsc() { sed -nE 's/^Time \(sec\): +([0-9.e+-]+).*/\1/p' "$tmp/log" | head -1; }
 printf "%6s %8s %12s %18s %12s %12s %10s %12s\n" N dofs "modal (s)" "modal/np$ranks (s)" "cn (s)" "map (s)" "map pts/s" \
   "map/np$ranks (s)"
 rows=""
@@ -104,9 +104,10 @@ if [[ ${BENCH_ROUTES:-1} != 0 ]]; then
   echo "(-modal_mirror off), one impact each on one rank: PETSc's -log_view total and the process' wall, s"
   printf "%-22s %8s %8s %8s %8s %-6s %s\n" case "mirror" "(wall)" "off" "(wall)" key "|difference|"
   for n in $nodes; do
-    ta=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -log_view -output "$tmp/mirror.h5")
+    ta=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -modal_modes all -log_view -output "$tmp/mirror.h5")
     pa=$(petsc)
-    to=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -modal_mirror off -log_view -output "$tmp/off.h5")
+    to=$(wall "$exe" "${base[@]}" -beam_nodes "$n" -ts_type modal -modal_modes all -modal_mirror off -log_view \
+      -output "$tmp/off.h5")
     po=$(petsc)
     ka=$(key "$tmp/mirror.h5" acor) ko=$(key "$tmp/off.h5" acor)
     printf "%-22s %8.3f %8.3f %8.3f %8.3f %-6s %.3e\n" "racket N = $n" "$pa" "$ta" "$po" "$to" acor \

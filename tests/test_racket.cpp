@@ -584,16 +584,29 @@ TEST(Racket, SampledPeaksAreTheSteppedOnes)
 // every rank) are the one rank's bit for bit.
 TEST(RacketParallel, ModesSharedOverRanksAreOneRanks)
 {
-  const BeamSystem  sys = SystemOf(StrungRacket(0.15, 0.05, {{"-beam_nodes", "37"}}).beam);
-  const ModalSystem S   = ModalSystemBeamOnly(sys);
-  ModalBasis        one, all;
-  ASSERT_EQ(0, ModalBasisBuild(S, false, &one, false, PETSC_COMM_SELF));
-  ASSERT_EQ(0, ModalBasisBuild(S, false, &all, false, PETSC_COMM_WORLD));
-  EXPECT_TRUE(all.mirrored);
-  EXPECT_GT(all.refined, 0);
-  EXPECT_EQ(one.refined, all.refined);
-  EXPECT_TRUE(one.omega == all.omega);
-  EXPECT_TRUE(one.Phi == all.Phi);
+  // Undamped, and with Rayleigh damping (each mode's decay rate from its quotient, shared out too)
+  for (const char *beta : {"0", "1e-6"}) {
+    const char       *alpha = beta[0] == '0' ? "0" : "2";
+    const BeamSystem  sys   = SystemOf(StrungRacket(0.15, 0.05,
+                                                    {{"-beam_nodes", "37"},
+                                                     {"-beam_damping_mass", alpha},
+                                                     {"-beam_damping_stiffness", beta}})
+                                         .beam);
+    const ModalSystem S = ModalSystemBeamOnly(sys);
+    ModalBasis        one, all;
+    ASSERT_EQ(0, ModalBasisBuild(S, false, &one, false, PETSC_COMM_SELF));
+    ASSERT_EQ(0, ModalBasisBuild(S, false, &all, false, PETSC_COMM_WORLD));
+    EXPECT_TRUE(all.mirrored) << beta;
+    EXPECT_GT(all.refined, 0) << beta;
+    EXPECT_EQ(one.refined, all.refined) << beta;
+    EXPECT_TRUE(one.omega == all.omega) << beta;
+    EXPECT_TRUE(one.gamma == all.gamma) << beta;
+    EXPECT_TRUE(one.rate == all.rate) << beta;
+    EXPECT_TRUE(one.Phi == all.Phi) << beta;
+    if (beta[0] != '0') { // damped
+      EXPECT_GT(*std::max_element(all.rate.begin(), all.rate.end()), 0.0);
+    }
+  }
 }
 
 // The same off-axis hit on 1 and 4 ranks (the bed's columns split with the frame's nodes).

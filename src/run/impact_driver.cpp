@@ -171,25 +171,30 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
   PetscReal pair[2] = {0, 0};
   if (FreeFlightFirstContact(ff, t_stop - t0, s_min, &root)) pair[0] = 1, pair[1] = root;
   PetscCallMPI(MPI_Bcast(pair, 2, MPIU_REAL, 0, st.Comm())); // one decision on every rank
-  found                 = pair[0];
-  root                  = pair[1];
-  *again                = found != 0;
-  const PetscReal t_end = *again ? t0 + root : t_stop;
+  found                  = pair[0];
+  root                   = pair[1];
+  *again                 = found != 0;
+  const PetscReal t_end  = *again ? t0 + root : t_stop;
+  auto            set_at = [&](PetscReal t) -> PetscErrorCode { // the stepper at t of the free flight
+    bool set = false; // the stepper's own modes: the modal state (O(k)), expanded on this rank's rows when read
+    PetscFunctionBeginUser;
+    if (in_modes) {
+                 FreeFlightModalState(ff, t - t0, &m0);
+                 PetscCall(st.SetModalState(t, *modes, m0, &set));
+    }
+    if (!set) {
+                 FreeFlightState(ff, t - t0, &s);
+                 PetscCall(st.SetState(t, s));
+    }
+    PetscFunctionReturn(0);
+  };
   if (series || rec.NextSnapshot() < t_end) {
     const PetscReal dt     = series && dt_sample > 0 ? std::max(dt_sample, (t_end - t0) / 4000) : PETSC_INFINITY;
     const PetscInt  k_last = series && sparse && !*again ? 1 : PETSC_MAX_INT; // the samples recorded (snapshots apart)
     for (PetscInt k = 1;; ++k) {
       const PetscReal ts = k <= k_last ? t0 + k * dt : PETSC_INFINITY, tn = std::min(ts, rec.NextSnapshot());
       if (!(tn < t_end * (1 - 1e-14))) break;
-      bool set = false; // the stepper's own modes: the modal state (O(k)), expanded on this rank's rows when read
-      if (in_modes) {
-        FreeFlightModalState(ff, tn - t0, &m0);
-        PetscCall(st.SetModalState(tn, *modes, m0, &set));
-      }
-      if (!set) {
-        FreeFlightState(ff, tn - t0, &s);
-        PetscCall(st.SetState(tn, s));
-      }
+      PetscCall(set_at(tn));
       free_flight_samples++;
       if (series) PetscCall(rec.Record(tn));
       PetscCall(rec.Snapshots(tn));
@@ -198,15 +203,7 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
   }
   if (*again) run->record.mode_energies.clear();
   else run->record.mode_energies = FreeFlightModeEnergies(ff, t_end - t0);
-  bool set = false;
-  if (in_modes) {
-    FreeFlightModalState(ff, t_end - t0, &m0);
-    PetscCall(st.SetModalState(t_end, *modes, m0, &set));
-  }
-  if (!set) {
-    FreeFlightState(ff, t_end - t0, &s);
-    PetscCall(st.SetState(t_end, s));
-  }
+  PetscCall(set_at(t_end));
   PetscCall(st.Restart());
   PetscFunctionReturn(0);
 }

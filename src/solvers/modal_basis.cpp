@@ -22,7 +22,12 @@ extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const in
 namespace {
 // The dense modes' phases as -log_view events, registered together on first use: the matrix, its
 // decomposition, the refinement (residuals, sparse LUs, re-orthogonalisation) and the quotients.
-enum ModalPhase { kModalMatrix, kModalEigen, kModalRefine, kModalQuotients };
+enum ModalPhase {
+  kModalMatrix,
+  kModalEigen,
+  kModalRefine,
+  kModalQuotients
+};
 PetscLogEvent ModalEvent(ModalPhase p)
 {
   static const std::vector<PetscLogEvent> ids = [] {
@@ -619,8 +624,11 @@ static PetscErrorCode ModalQuotients(const ModalSystem &S, bool contact, ModalBa
   const bool     damped = alpha != 0 || beta != 0;
   const PetscInt count  = (PetscInt)B->omega.size();
   for (PetscInt k = 0; k < count; ++k) {
+    if (k % size != rank) { // another rank's: 0 here
+      B->omega[k] = B->gamma[k] = B->rate[k] = 0;
+      continue;
+    }
     const PetscReal *phi = &B->Phi[k * n];
-    if (k % size != rank) continue; // another rank's: 0 here
     std::fill(shape.begin(), shape.end(), 0.0);
     PetscReal norm = 0, c = 0, beam_norm = 0;
     for (PetscInt d = 0; d < n; ++d) {
@@ -636,9 +644,15 @@ static PetscErrorCode ModalQuotients(const ModalSystem &S, bool contact, ModalBa
     B->omega[k] = std::sqrt(std::max<PetscReal>(0.0, twoU / norm));
     B->gamma[k] = c;
   }
-  if (size > 1)
-    for (std::vector<PetscReal> *v : {&B->omega, &B->gamma, &B->rate})
-      PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, v->data(), (PetscMPIInt)count, MPIU_REAL, MPIU_SUM, comm));
+  if (size > 1) { // one reduction of the three
+    std::vector<PetscReal> all(B->omega);
+    all.insert(all.end(), B->gamma.begin(), B->gamma.end());
+    all.insert(all.end(), B->rate.begin(), B->rate.end());
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, all.data(), (PetscMPIInt)all.size(), MPIU_REAL, MPIU_SUM, comm));
+    std::copy_n(all.begin(), count, B->omega.begin());
+    std::copy_n(all.begin() + count, count, B->gamma.begin());
+    std::copy_n(all.begin() + 2 * count, count, B->rate.begin());
+  }
   PetscFunctionReturn(0);
 }
 
