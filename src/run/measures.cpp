@@ -127,17 +127,10 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
                               std::vector<PetscReal> *point_v)
 {
   const BeamSystem &S = *ctx.sys;
-  PetscReal         cdot;
 
   PetscFunctionBeginUser;
-  PetscCall(stepper.Compression(&m->c, &cdot));
+  PetscCall(MeasureBall(stepper, ctx, m));
   const BallParams &ball = *ctx.ball;
-  m->force               = ContactForce(ball, *ctx.contact, m->c);
-  m->c_rate              = cdot;
-  m->force_rate          = ContactStiffness(ball, *ctx.contact, m->c) * cdot;
-  m->ball_kinetic        = 0.5 * ball.mass * m->ball_v * m->ball_v;
-  m->ball_stored         = ContactStoredEnergy(ball, *ctx.contact, m->c);
-  m->ball_work           = ContactWork(ball, *ctx.contact, m->c);
   StructureFromSums(S, G, sums, bed_max, m);
   m->roll_momentum    = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
   m->momentum         = sums[2] + ball.mass * m->ball_v;
@@ -276,6 +269,22 @@ void MeasureSegmentAndPoints(const BeamSystem &S, const StateView &sv, const Mon
 }
 
 } // namespace
+
+PetscErrorCode MeasureBall(Stepper &stepper, const MeasureContext &ctx, StateMeasures *m)
+{
+  const BallParams &ball = *ctx.ball;
+  PetscReal         cdot;
+
+  PetscFunctionBeginUser;
+  PetscCall(stepper.Compression(&m->c, &cdot));
+  m->force        = ContactForce(ball, *ctx.contact, m->c);
+  m->c_rate       = cdot;
+  m->force_rate   = ContactStiffness(ball, *ctx.contact, m->c) * cdot;
+  m->ball_kinetic = 0.5 * ball.mass * m->ball_v * m->ball_v;
+  m->ball_stored  = ContactStoredEnergy(ball, *ctx.contact, m->c);
+  m->ball_work    = ContactWork(ball, *ctx.contact, m->c);
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m,
                             std::vector<PetscReal> *point_v)

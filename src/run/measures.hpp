@@ -62,6 +62,11 @@ struct MeasureContext {
   const FrameMotion     *frame   = nullptr; // the swing's frame (nullptr: at rest)
 };
 
+// The ball's measures at the current state, m->ball_y and m->ball_v set: its compression and rate
+// (the stepper's, O(modes) for -ts_type modal), the contact force and its rate, the ball's kinetic
+// and stored energy and the law's work. Collective.
+PetscErrorCode MeasureBall(Stepper &stepper, const MeasureContext &ctx, StateMeasures *m);
+
 // Measures the current state; with a monitor request also the point velocities (m/s, at
 // mon->velocity_at) and the segment's kinetic energy.
 PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const MonitorRequest *mon, StateMeasures *m,

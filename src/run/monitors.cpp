@@ -35,7 +35,7 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
       if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
   for (const PartInstance &s : ctx.sys->parts) wall_ = wall_ || s.part->Peaks();
-  defer_ = !mon.any() && !drive && !ip.energy_check && !ctx.sys->TiedToFrame() && ctx.contact &&
+  defer_ = !mon.any() && !ip.energy_check && !ctx.sys->TiedToFrame() && ctx.contact &&
            std::all_of(part_series_.begin(), part_series_.end(), [](int k) { return k < 0; });
 }
 
@@ -127,11 +127,17 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   const bool bed  = !ctx_.sys->face_fields.empty(); // a racket's string bed (its fields across the face)
   if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
     PetscFunctionReturn(0);
-  if (defer_) { // peaks only: a sample in modes, measured with the others at the next flush
+  if (defer_) { // the peaks: a sample in modes, measured with the others at the next flush
     StateSample s;
     bool        ok;
     PetscCall(stepper_.Sample(&s, &ok));
     if (ok) {
+      if (drive_) { // the stages' drive: the ball's measures alone, O(modes), now (the law's state is now's)
+        m.ball_y = s.ball_y, m.ball_v = s.ball_v;
+        PetscCall(MeasureBall(stepper_, ctx_, &m));
+        drive_->time.push_back(t);
+        BallSeriesAppend(m, ctx_, last_phase_, drive_);
+      }
       if (samples_.empty()) sample_modes_ = stepper_.Modes();
       samples_.push_back(std::move(s));
       if (samples_.size() >= kSampleBatch) PetscCall(Flush());

@@ -41,9 +41,10 @@ struct ModalState {
 // A state kept to be expanded later with others (Stepper::Sample, Stepper::Expand): -ts_type
 // modal's state in its modes and the force the static shape of its modes left out carries.
 struct StateSample {
-  PetscReal              t = 0;            // s
-  std::vector<PetscReal> z, zd;            // m kg^{1/2}, m kg^{1/2}/s per kept mode
-  PetscReal              static_force = 0; // N: on the modes left out, quasi-statically (0: every mode kept)
+  PetscReal              t = 0;                  // s
+  std::vector<PetscReal> z, zd;                  // m kg^{1/2}, m kg^{1/2}/s per kept mode
+  PetscReal              static_force = 0;       // N: on the modes left out, quasi-statically (0: every mode kept)
+  PetscReal              ball_y = 0, ball_v = 0; // m, m/s: the ball's centre (the state's own, as written)
 };
 
 // Where expanded samples lie (Stepper::Expand): this rank's owned beam dofs [d0, d1) and the

@@ -1017,14 +1017,14 @@ PetscErrorCode GetState_Modal(TS ts, std::vector<PetscReal> *z, std::vector<Pets
   PetscFunctionReturn(0);
 }
 
-// GetState_Modal's (z, zd) and the force on the static shape of the modes left out (0: none).
-PetscErrorCode Sample_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *F)
+// GetState_Modal's state and the force on the static shape of the modes left out (0: none).
+PetscErrorCode Sample_Modal(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb, PetscReal *vb,
+                            PetscReal *F)
 {
-  ModalTS  &m = *Data(ts);
-  PetscReal yb, vb;
+  ModalTS &m = *Data(ts);
 
   PetscFunctionBeginUser;
-  PetscCall(GetState_Modal(ts, z, zd, &yb, &vb));
+  PetscCall(GetState_Modal(ts, z, zd, yb, vb));
   *F = m.Gr > 0 ? ContactForce(m.P->ball, *m.P->contact, CompressionNow(m, nullptr)) : 0.0;
   PetscFunctionReturn(0);
 }
@@ -1371,15 +1371,16 @@ PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::v
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode TSModalSample(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *static_force,
-                             PetscBool *done)
+PetscErrorCode TSModalSample(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *ball_y,
+                             PetscReal *ball_v, PetscReal *static_force, PetscBool *done)
 {
-  PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *) = nullptr;
+  PetscErrorCode (*f)(TS, std::vector<PetscReal> *, std::vector<PetscReal> *, PetscReal *, PetscReal *,
+                      PetscReal *) = nullptr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectQueryFunction((PetscObject)ts, "TSModalSample_C", &f));
   *done = f ? PETSC_TRUE : PETSC_FALSE;
-  if (f) PetscCall((*f)(ts, z, zd, static_force));
+  if (f) PetscCall((*f)(ts, z, zd, ball_y, ball_v, static_force));
   PetscFunctionReturn(0);
 }
 

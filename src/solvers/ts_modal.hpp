@@ -84,11 +84,11 @@ PetscErrorCode TSModalSetState(TS ts, const std::vector<PetscReal> &z, const std
 // (the vector holds the state: read it), and for any other type. Collective.
 PetscErrorCode TSModalGetUnwrittenState(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *yb,
                                         PetscReal *vb, PetscBool *done);
-// The modal state (z, zd) and the force on the static shape of the modes left out (0 when every
-// mode is kept), an outside write projected first: O(modes), the physical vector left as it is.
-// Collective; *done false for any other type.
-PetscErrorCode TSModalSample(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *static_force,
-                             PetscBool *done);
+// The modal state (z, zd), the ball's (ball_y, ball_v: m, m/s) and the force on the static shape of
+// the modes left out (0 when every mode is kept), an outside write projected first: O(modes), the
+// physical vector left as it is. Collective; *done false for any other type.
+PetscErrorCode TSModalSample(TS ts, std::vector<PetscReal> *z, std::vector<PetscReal> *zd, PetscReal *ball_y,
+                             PetscReal *ball_v, PetscReal *static_force, PetscBool *done);
 // The physical states of `count` such samples on the beam dofs [e0, e1) (this rank's owned ones
 // and the neighbours' a stencil reaches): y = M^{-1/2} (Phi Z + u_r F) and v = M^{-1/2} Phi Zd in
 // one BLAS 3 product (Z = [Z Zd]: kept modes x 2 count, column-major, the rates after the amplitudes),

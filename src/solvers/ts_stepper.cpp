@@ -434,7 +434,7 @@ PetscErrorCode TSStepper::Sample(StateSample *s, bool *done)
 
   PetscFunctionBeginUser;
   s->t = Time();
-  PetscCall(TSModalSample(ts, &s->z, &s->zd, &s->static_force, &ok));
+  PetscCall(TSModalSample(ts, &s->z, &s->zd, &s->ball_y, &s->ball_v, &s->static_force, &ok));
   *done = ok;
   PetscFunctionReturn(0);
 }
