@@ -579,6 +579,26 @@ TEST(Racket, SampledPeaksAreTheSteppedOnes)
   EXPECT_GT(sampled.steps, 2 * 256);
 }
 
+// The same for an oblique hit with friction: the stages' drive (the ball's F_n(t) at every step)
+// from the samples (the ball's state and the modal compression) is the per-step state's bit for
+// bit, so the spin and the launch are; the peaks to round-off.
+TEST(Racket, SampledDriveIsTheSteppedOne)
+{
+  Scenario sc            = StrungRacket(0.15, 0.0, {{"-beam_nodes", "37"}, {"-ball_friction", "0.4"}});
+  sc.impact.angle        = 30;
+  Scenario watched       = sc;
+  watched.monitor.energy = PETSC_TRUE;
+  const ImpactResult sampled = RunWith(PETSC_COMM_WORLD, sc, {{"-ts_type", "modal"}, {"-ts_dt", "1e-5"}});
+  const ImpactResult stepped = RunWith(PETSC_COMM_WORLD, watched, {{"-ts_type", "modal"}, {"-ts_dt", "1e-5"}});
+  ASSERT_FALSE(stepped.series.bed_energy.empty()); // the energy monitor ran: a state at every step
+  ASSERT_GT(std::abs(test::Col(stepped, "spin")), 1.0); // the friction spun the ball
+  EXPECT_EQ(test::Col(sampled, "spin"), test::Col(stepped, "spin"));
+  EXPECT_EQ(test::Col(sampled, "launch_angle"), test::Col(stepped, "launch_angle"));
+  EXPECT_EQ(test::Col(sampled, "exit_speed"), test::Col(stepped, "exit_speed"));
+  EXPECT_NEAR(sampled.bed_deflection_peak, stepped.bed_deflection_peak, 1e-12 * stepped.bed_deflection_peak);
+  EXPECT_NEAR(sampled.bed_energy_peak, stepped.bed_energy_peak, 1e-12 * stepped.bed_energy_peak);
+}
+
 // The racket's modes built on every rank together (ModalBasisBuild's comm: the mirror's two halves
 // one rank each, the residuals and the refined modes shared out mode by mode, each handed to
 // every rank) are the one rank's bit for bit.
