@@ -204,6 +204,7 @@ TEST(EnergyAccounts, TheRegistryDeclaresThem)
   EXPECT_STREQ(StructureAccountName(StructureAccountOf(*StructurePartFind("bed"))), "strings");
   EXPECT_TRUE(StructureAccountApart(StructureAccountOf(*StructurePartFind("wall")))) << "not in beam_kinetic, beam_strain";
   EXPECT_FALSE(StructureAccountApart(StructureAccountOf(*StructurePartFind("bed"))));
+  EXPECT_FALSE(StructureAccountApart(0));
 }
 
 namespace {

@@ -231,8 +231,8 @@ void MeasureEnergies(const BeamSystem &S, const MeasureContext &ctx, const State
 
 // The owned nodes' momenta (the deflections, the beam's field 0 and a string bed's, and the
 // rotations) into sums[2], sums[3], the roll's and each account's deflections' (AccountSums), then
-// the registered parts'; returns
-// the bed's largest deflection from the frame on this rank (0 without a bed).
+// the registered parts'; returns the bed's largest deflection from the frame on this rank (0
+// without a bed).
 PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, std::vector<PetscReal> &sums)
 {
   const PetscInt F   = S.fields;

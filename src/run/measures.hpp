@@ -20,7 +20,7 @@ struct StateMeasures {
   PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
   PetscReal segment_kinetic = 0;                // J, the monitored segment
-  // The accounts of the parts whose peaks are followed (StructurePart::Peaks: the barrel wall,
+  // The accounts kept apart from the beam's (StructurePart::AccountApart: the barrel wall,
   // -barrel_hoop_frequency or -beam_shell): their stored and kinetic energy (J), not in
   // beam_kinetic and beam_strain; their displacement under the ball (m, into the bat). 0 without.
   PetscReal shell_energy = 0, wall_deflection = 0;

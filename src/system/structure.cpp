@@ -76,7 +76,7 @@ const StructurePart *StructureAccountPart(PetscInt a)
 bool StructureAccountApart(PetscInt a)
 {
   const StructurePart *p = StructureAccountPart(a);
-  return p && p->Peaks();
+  return p && p->AccountApart();
 }
 
 const char *StructureAccountName(PetscInt a) { return a == 0 ? "bending" : StructureAccountPart(a)->AccountName(); }

@@ -206,6 +206,10 @@ public:
   // its fields and strain terms are the beam's account. See StructureAccountOf.
   virtual const char *AccountName() const { return nullptr; }
   virtual const char *AccountSeries() const { return nullptr; }
+  // Whether its account is kept apart from the beam's kinetic and strain energies (the barrel wall,
+  // in series with the ball: StateMeasures::shell_energy, not in beam_kinetic and beam_strain) and
+  // its share of the compression measured (StateMeasures::wall_deflection). No by default.
+  virtual bool AccountApart() const { return false; }
   // Its dofs that a rigid motion carries as the beam's deflection at a point.
   virtual void RigidPoints(const PartInstance &, std::vector<RigidPoint> *) const { }
   // Its entries in the ball's coupling at a point of the beam (after the beam's hat entries st, z
@@ -233,9 +237,7 @@ public:
   virtual PetscInt FamilyDetail(const PartInstance &, PetscInt) const { return 0; }
   // -- measures and outputs -----------------------------------------------------------------------
   // Whether the recorder follows the outcome's peaks of its fields (the wall's energy and
-  // displacement under the ball): the series are then sampled through a free flight. Its account's
-  // energy is then kept apart from the beam's (StateMeasures::shell_energy, not in beam_kinetic and
-  // beam_strain) and its share of the compression measured (StateMeasures::wall_deflection).
+  // displacement under the ball): the series are then sampled through a free flight.
   virtual bool Peaks() const { return false; }
   // A snapshot's field of its own from every field of every node (u, node-major), [label][node]
   // flattened, and its labels (the shell's W_n of each harmonic n): false for none.
@@ -302,7 +304,7 @@ const char *StructureAccountName(PetscInt a);           // "bending", "roll", "w
 PetscInt    StructureAccountOf(const StructurePart &p); // its account (0: the beam's)
 // The part whose account a is (nullptr for the beam's).
 const StructurePart *StructureAccountPart(PetscInt a);
-// Whether account a's energy is kept apart from the beam's (its part's Peaks(): the wall's).
+// Whether account a's energy is kept apart from the beam's (its part's AccountApart: the wall's).
 bool StructureAccountApart(PetscInt a);
 
 // The parts present in p, appended to d in registry order, the strain terms each appends in its

@@ -5,10 +5,10 @@
 // harmonic n where the profile is hollow, the ball's load a patch of radius a on each W_n). They
 // exclude each other and share the wall's columns (run/results_table.cpp: shell_energy_end,
 // shell_energy_peak, wall_deflection_peak, wall_deflection_large; its own wall_fraction) and its
-// energy account ("wall", kept apart from the beam's: Peaks). A structure part (system/structure_part.hpp): its option
-// rows and checks, the patch radius at the impact point, its fields, coupling, -task modes' family detail (the harmonic
-// n; the hoop counts as n = 2), the shell's snapshots, its column hoop_frequency (after wall_deflection_large) and the
-// summary's warning on a displacement beyond the linear range are this file. Units: SI.
+// energy account ("wall", kept apart from the beam's: AccountApart). A structure part (system/structure_part.hpp): its
+// option rows and checks, the patch radius at the impact point, its fields, coupling, -task modes' family detail (the
+// harmonic n; the hoop counts as n = 2), the shell's snapshots, its column hoop_frequency (after wall_deflection_large)
+// and the summary's warning on a displacement beyond the linear range are this file. Units: SI.
 #include "model/barrel.hpp"
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
@@ -199,6 +199,7 @@ public:
     return d->fields - first;
   }
   const char *AccountName() const override { return "wall"; }
+  bool        AccountApart() const override { return true; }
   void        Couple(const PartInstance &s, const BeamSystem &sys, const ImpactStencil &st, PetscReal,
                      ContactCoupling *g) const override;
   PetscInt    FamilyDetail(const PartInstance &s, PetscInt f) const override
