@@ -18,6 +18,8 @@
 // strings, whose modes the bed shares with its frame (there the labels' total is checked).
 #include "model/rigid.hpp"
 #include "model/swing.hpp"
+#include "run/energy_parts.hpp"
+#include "run/measures.hpp"
 #include "run/results_table.hpp"
 #include "test_helpers.hpp"
 
@@ -176,4 +178,160 @@ TEST(EnergyClosure, EveryStructure)
       CheckModeParts(c, r);
     }
   }
+}
+
+// The energy accounts (issue 35): the split's parts, the measures' sums and -task modes' families
+// come from the registry, account 0 the beam's, then each part with an AccountName in registry
+// order, each name once (StructureAccountName).
+TEST(EnergyAccounts, TheRegistryDeclaresThem)
+{
+  ASSERT_EQ(StructureAccountCount(), 4);
+  EXPECT_STREQ(StructureAccountName(0), "bending");
+  EXPECT_EQ(StructureAccountPart(0), nullptr) << "the beam's account is no part's";
+  PetscInt own = 0;
+  for (const StructurePart *p : StructureParts()) {
+    const PetscInt a = StructureAccountOf(*p);
+    if (!p->AccountName()) {
+      EXPECT_EQ(a, 0) << p->Name() << ": no account of its own, the beam's";
+      continue;
+    }
+    EXPECT_EQ(a, ++own) << p->Name() << ": numbered in registry order";
+    EXPECT_STREQ(StructureAccountName(a), p->AccountName());
+    EXPECT_EQ(StructureAccountPart(a), p);
+  }
+  EXPECT_STREQ(StructureAccountName(StructureAccountOf(*StructurePartFind("roll"))), "roll");
+  EXPECT_STREQ(StructureAccountName(StructureAccountOf(*StructurePartFind("wall"))), "wall");
+  EXPECT_STREQ(StructureAccountName(StructureAccountOf(*StructurePartFind("bed"))), "strings");
+  EXPECT_TRUE(StructureAccountApart(StructureAccountOf(*StructurePartFind("wall")))) << "not in beam_kinetic, beam_strain";
+  EXPECT_FALSE(StructureAccountApart(StructureAccountOf(*StructurePartFind("bed"))));
+  EXPECT_FALSE(StructureAccountApart(0));
+}
+
+namespace {
+
+// The structure's measures of one state (y, v over every dof), as the recorder takes them.
+StateMeasures MeasuresOf(const BeamSystem &sys, const std::vector<PetscReal> &y, const std::vector<PetscReal> &v)
+{
+  const ContactCoupling g = BeamSystemCoupling(sys, 0.5 * sys.L);
+  MeasureContext        ctx;
+  ctx.sys = &sys, ctx.g = &g;
+  SampleRange r;
+  r.d1 = r.e1 = sys.ndof;
+  std::vector<StateMeasures> m;
+  EXPECT_EQ(0, MeasureStructureStates(PETSC_COMM_SELF, ctx, r, y, v, {0.0}, &m));
+  return m.empty() ? StateMeasures() : m[0];
+}
+
+// A state of every free dof of the fields in `account` (all accounts: -1), 0 elsewhere.
+void StateOn(const BeamSystem &sys, PetscInt account, std::vector<PetscReal> *y, std::vector<PetscReal> *v)
+{
+  y->assign(sys.ndof, 0.0), v->assign(sys.ndof, 0.0);
+  for (PetscInt d = 0; d < sys.ndof; ++d)
+    if (!sys.held[d] && (account < 0 || sys.AccountOf(d % sys.fields) == account))
+      (*y)[d] = 1e-3 * std::sin(1.3 * d + 0.7), (*v)[d] = std::cos(0.9 * d);
+}
+
+// Each account's energies of state (y, v), and their sums against the system's totals.
+void CheckAccountsSum(const BeamSystem &sys, const std::vector<PetscReal> &y, const std::vector<PetscReal> &v,
+                      PetscReal stored[kMaxAccounts], PetscReal kinetic[kMaxAccounts])
+{
+  BeamSystemAccountEnergies(sys, y.data(), sys.fields, v.data(), sys.fields, 0, sys.ndof, stored, kinetic);
+  const PetscReal U = BeamSystemStrainEnergy(sys, y.data(), sys.fields, 0, sys.ndof);
+  const PetscReal T = BeamSystemKineticEnergy(sys, v.data(), sys.fields, 0, sys.ndof);
+  PetscReal       su = 0, st = 0;
+  for (PetscInt a = 0; a < StructureAccountCount(); ++a) su += stored[a], st += kinetic[a];
+  EXPECT_NEAR(su, U, 1e-13 * U) << "the accounts' strain energies sum to the structure's";
+  EXPECT_NEAR(st, T, 1e-13 * T) << "the accounts' kinetic energies sum to the structure's";
+}
+
+} // namespace
+
+// A strung racket (the beam's bending, the roll, the bed): any state's accounts sum to its strain
+// and kinetic energy; a state of the bed's dofs alone (the frame at rest: its links strain against
+// the frame's sections y + z phi = 0) is all the bed's account's, in the measures as in the system,
+// and its momenta its account's (sum m v, m x v, m z v over its nodes); a rigid translation or
+// roll of the whole structure is all rigid in the split, no account's flexible energy. Each fails
+// if an account's energy, or a part's momenta, are summed into another's.
+TEST(EnergyAccounts, RacketStatesByAccount)
+{
+  BeamParams beam;
+  BallParams ball;
+  test::ReadScene({"options/base/racket-strung.opts"}, {{"-strings_patch_radius", "0.015"}}, &beam, &ball);
+  const BeamSystem sys = test::SystemOf(beam);
+  const PetscInt   bed = StructureAccountOf(*StructurePartFind("bed")), roll = StructureAccountOf(*StructurePartFind("roll"));
+  ASSERT_GE(sys.RollField(), 0);
+  ASSERT_FALSE(sys.face_fields.empty());
+  PetscReal              stored[kMaxAccounts], kinetic[kMaxAccounts];
+  std::vector<PetscReal> y, v;
+  StateOn(sys, -1, &y, &v);
+  CheckAccountsSum(sys, y, v, stored, kinetic);
+  for (PetscInt a : {(PetscInt)0, roll, bed}) EXPECT_GT(stored[a] * kinetic[a], 0.0) << "account " << a << " moves";
+
+  StateOn(sys, bed, &y, &v); // the bed alone
+  CheckAccountsSum(sys, y, v, stored, kinetic);
+  const PetscReal E = stored[bed] + kinetic[bed];
+  ASSERT_GT(E, 0.0);
+  EXPECT_EQ(stored[0] + kinetic[0] + stored[roll] + kinetic[roll], 0.0) << "no other account's";
+  const StateMeasures m = MeasuresOf(sys, y, v);
+  EXPECT_NEAR(m.account_energy[bed], E, 1e-13 * E);
+  EXPECT_EQ(m.account_energy[roll], 0.0);
+  EXPECT_NEAR(m.beam_kinetic + m.beam_strain, E, 1e-13 * E) << "the bed's energy is in the beam's sums";
+  EXPECT_EQ(m.shell_energy, 0.0);
+  PetscReal P[3] = {0, 0, 0}; // the bed's momenta from its nodes
+  for (PetscInt d = 0; d < sys.ndof; ++d)
+    if (sys.Face(d % sys.fields) && !sys.held[d])
+      P[0] += sys.mass[d] * v[d], P[1] += sys.mass[d] * sys.NodeX(d / sys.fields) * v[d], P[2] += sys.mass[d] * sys.DofZ(d) * v[d];
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(m.account_momentum[bed][k], P[k], 1e-13 * (std::abs(P[k]) + std::abs(P[0]))) << k;
+    EXPECT_EQ(m.account_momentum[roll][k], 0.0) << k;
+  }
+
+  const struct {
+    RigidKind kind;
+    PetscReal v0, roll;
+  } rigid[] = {{RigidKind::Translation, 1.0, 0.0}, {RigidKind::Roll, 0.0, 1.0}};
+  const std::vector<PetscReal> at_rest(sys.ndof, 0.0);
+  for (const auto &r : rigid) {
+    const std::vector<PetscReal> w  = BeamSystemRigidVelocity(sys, r.v0, 0.0, r.roll);
+    const StateMeasures          mr = MeasuresOf(sys, at_rest, w);
+    const EnergySplit            s  = EnergySplitOf(beam, sys, mr);
+    const PetscReal              T  = mr.beam_kinetic;
+    ASSERT_GT(T, 0.0);
+    EXPECT_NEAR(s.rigid[(int)r.kind], T, 1e-12 * T) << RigidKindName(r.kind);
+    for (PetscInt a = 0; a < StructureAccountCount(); ++a)
+      EXPECT_NEAR(s.flexible[a], 0.0, 1e-12 * T) << RigidKindName(r.kind) << ": account " << StructureAccountName(a);
+  }
+}
+
+// A bat with the barrel's hoop: the wall's account is kept apart from the beam's sums. A state of
+// the wall's dof alone is all shell_energy and the wall's account, none of beam_kinetic and
+// beam_strain; any state's accounts sum to the structure's energies.
+TEST(EnergyAccounts, WallKeptApart)
+{
+  BeamParams beam;
+  BallParams ball;
+  test::ReadScene({"options/bats/aluminium-bat.opts"}, {{"-beam_nodes", "41"}}, &beam, &ball);
+  beam                 = test::WithPart(beam, "wall", {{"-barrel_hoop_frequency", {1500}}, {"-barrel_hoop_mass", {0.27}}});
+  const BeamSystem sys  = test::SystemOf(beam);
+  const PetscInt   wall = StructureAccountOf(*StructurePartFind("wall"));
+  PetscReal        stored[kMaxAccounts], kinetic[kMaxAccounts];
+  std::vector<PetscReal> y, v;
+  StateOn(sys, -1, &y, &v);
+  CheckAccountsSum(sys, y, v, stored, kinetic);
+  const StateMeasures all = MeasuresOf(sys, y, v);
+  const PetscReal     U = BeamSystemStrainEnergy(sys, y.data(), sys.fields, 0, sys.ndof);
+  const PetscReal     T = BeamSystemKineticEnergy(sys, v.data(), sys.fields, 0, sys.ndof);
+  EXPECT_NEAR(all.beam_kinetic + all.beam_strain + all.shell_energy, U + T, 1e-13 * (U + T));
+  EXPECT_NEAR(all.shell_energy, stored[wall] + kinetic[wall], 1e-13 * (U + T));
+
+  StateOn(sys, wall, &y, &v); // the hoop's dof alone
+  const StateMeasures m = MeasuresOf(sys, y, v);
+  const PetscReal     E = BeamSystemStrainEnergy(sys, y.data(), sys.fields, 0, sys.ndof) +
+                      BeamSystemKineticEnergy(sys, v.data(), sys.fields, 0, sys.ndof);
+  ASSERT_GT(E, 0.0);
+  EXPECT_NEAR(m.shell_energy, E, 1e-13 * E);
+  EXPECT_NEAR(m.account_energy[wall], E, 1e-13 * E);
+  EXPECT_NEAR(m.beam_kinetic, 0.0, 1e-13 * E);
+  EXPECT_NEAR(m.beam_strain, 0.0, 1e-13 * E);
+  EXPECT_NEAR(EnergySplitOf(beam, sys, m).flexible[wall], E, 1e-13 * E) << "rigid motions do not move the wall";
 }

@@ -152,6 +152,12 @@ inline const PartInstance *PartIn(const BeamSystem &sys, const char *name)
   return nullptr;
 }
 
+// The energy account of the registered part `name` (StructureAccountOf: 0 the beam's).
+inline PetscInt AccountOfPart(const char *name) { return StructureAccountOf(*StructurePartFind(name)); }
+
+// A results column's value by name (a part's own column: ImpactResult::keyed).
+inline double ColumnOf(const ImpactResult &r, const char *name) { return ImpactResultColumn(name)->Get(r); }
+
 // A hand-made two-field system: field 0 is the one-field system a, field 1 an uncoupled copy
 // of it with every mass times mass_factor (no strain term couples the fields), dof = 2 node +
 // field. Its modes are those of a and those of a with omega / sqrt(mass_factor); a ball
@@ -161,7 +167,7 @@ inline BeamSystem TwoFieldCopies(const BeamSystem &a, PetscReal mass_factor)
   EXPECT_EQ(1, a.fields);
   BeamSystem s = a; // L, h, nodes, frequency unit, force terms
   s.fields     = 2;
-  s.field_part.assign(2, Part::Beam);
+  s.field_account.assign(2, 0);
   s.ndof       = 2 * a.ndof;
   s.mass.assign(s.ndof, 0.0);
   s.held.assign(s.ndof, 0);

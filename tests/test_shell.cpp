@@ -360,12 +360,12 @@ TEST(WallPart, RegistryGivesTheBarrelWall)
   EXPECT_STREQ(BeamSystemPartWords(sys, d), "the barrel wall");
   std::vector<PetscReal> y(sys.ndof, 0.0), u(sys.ndof, 0.0);
   y[d] = w, u[d] = v;
-  PetscReal stored[kParts], kinetic[kParts];
-  BeamSystemPartEnergies(sys, y.data(), sys.fields, u.data(), sys.fields, 0, sys.ndof, stored, kinetic);
+  PetscReal stored[kMaxAccounts], kinetic[kMaxAccounts];
+  BeamSystemAccountEnergies(sys, y.data(), sys.fields, u.data(), sys.fields, 0, sys.ndof, stored, kinetic);
   const PetscReal k_h = m_h * std::pow(2 * PETSC_PI * f_h, 2);
-  EXPECT_NEAR(stored[(int)Part::Wall], 0.5 * k_h * w * w, 1e-12 * k_h * w * w);
-  EXPECT_NEAR(kinetic[(int)Part::Wall], 0.5 * m_h * v * v, 1e-15);
-  EXPECT_EQ(stored[(int)Part::Beam] + kinetic[(int)Part::Beam], 0.0);
+  EXPECT_NEAR(stored[AccountOfPart("wall")], 0.5 * k_h * w * w, 1e-12 * k_h * w * w);
+  EXPECT_NEAR(kinetic[AccountOfPart("wall")], 0.5 * m_h * v * v, 1e-15);
+  EXPECT_EQ(stored[0] + kinetic[0], 0.0);
   const ContactCoupling g = BeamSystemCoupling(sys, x), g0 = BeamSystemCoupling(plain, x);
   ASSERT_EQ(g.n, g0.n + 1);
   EXPECT_EQ(g.dof[g.n - 1], d);
@@ -462,14 +462,14 @@ TEST(WallPart, OwnsHoopFrequencyAndTheWarning)
   PartPoint at;
   at.ball = &ball, at.x = 0.15;
   const double R = kBarrel.R, f_h = 1234;
-  EXPECT_EQ(part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.5 * R, 0}, at), "") << "not flagged: no warning";
-  const std::string wh = part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.5 * R, 1}, at);
+  EXPECT_EQ(part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.1, 0.5 * R, 0}, at), "") << "not flagged: no warning";
+  const std::string wh = part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.1, 0.5 * R, 1}, at);
   EXPECT_NE(wh.find("warning: the barrel wall's largest displacement under the ball, 0.01605 m, is 0.5 times its "
                     "midsurface radius (R = 0.0321 m at x = 0.15 m), beyond 0.25 of it"),
             std::string::npos)
     << wh;
   EXPECT_NE(wh.find("check -barrel_hoop_frequency and -barrel_hoop_mass and -ball_speed 30 m/s"), std::string::npos) << wh;
-  const std::string ws = part->Warning(*shell.parts.Find("wall"), shell, {1600, 0.5 * R, 1}, at);
+  const std::string ws = part->Warning(*shell.parts.Find("wall"), shell, {1600, 0.1, 0.5 * R, 1}, at);
   EXPECT_NE(ws.find("check -shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius and -ball_speed 30"),
             std::string::npos)
     << ws;

@@ -308,7 +308,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
     std::string nodes;
     if (modes.omega[q] != 0 && !(!modes.shell_n.empty() && modes.shell_n[q] != 0) &&
         !(!modes.part.empty() &&
-          modes.part[q] != (PetscInt)Part::Beam)) // a wall's, roll's or bed's mode: no bending nodes
+          modes.part[q] != 0)) // a wall's, roll's or bed's mode (not the beam's account): no bending nodes
       for (PetscReal x : ModeNodes(shapes[q], beam.length / (beam.nodes - 1)))
         nodes += " " + std::to_string(x).substr(0, 6);
     const std::string number = modes.omega[q] == 0 ? "r" + std::to_string(++rigid) : std::to_string(++flexible);
@@ -319,7 +319,7 @@ PetscErrorCode TaskModes(MPI_Comm comm, const std::string &output)
     if (!modes.part
            .empty()) { // a roll field or a string bed: the part with most of the mode's kinetic energy, and its share
       char text[64];
-      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", BeamSystemPartName((Part)modes.part[q]),
+      std::snprintf(text, sizeof text, " %-8s %3.0f%% ", StructureAccountName(modes.part[q]),
                     (double)(100 * modes.part_share[q]));
       family = text;
     }

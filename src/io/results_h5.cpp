@@ -370,8 +370,9 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
   PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
   PetscCall(opt("beam_strain", S.beam_strain, "J"));
   PetscCall(opt("shell_energy", S.shell_energy, "J"));
-  PetscCall(opt("bed_energy", S.bed_energy, "J"));
-  PetscCall(opt("twist_energy", S.twist_energy, "J"));
+  for (size_t a = 0; a < S.account_energy.size(); ++a) // a part's account's (StructurePart::AccountSeries)
+    if (const StructurePart *p = StructureAccountPart((PetscInt)a))
+      PetscCall(opt(p->AccountSeries(), S.account_energy[a], "J"));
   PetscCall(opt("beam_dissipated", S.beam_dissipated, "J"));
   PetscCall(opt("total_energy", S.total_energy, "J"));
   if (!S.velocity_at.empty()) {
@@ -719,8 +720,7 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
     }
     const PetscReal h = beam.length / (beam.nodes - 1);
     for (size_t m = modes.rigid_count, k = 1; m < shapes.size() && k <= 2; ++m) // the first two bending modes
-      if ((modes.shell_n.empty() || modes.shell_n[m] == 0) &&
-          (modes.part.empty() || modes.part[m] == (PetscInt)Part::Beam))
+      if ((modes.shell_n.empty() || modes.shell_n[m] == 0) && (modes.part.empty() || modes.part[m] == 0))
         PetscCall(H5WriteDataset1D(g, k++ == 1 ? "nodes_1" : "nodes_2", ModeNodes(shapes[m], h), "m"));
     for (const char *name : {"nodes_1", "nodes_2"}) // positions of a mode's nodes: each its own coordinate
       if (H5Lexists(g, name, H5P_DEFAULT) > 0) PetscCall(H5DimsAttach(g, name, {name}));

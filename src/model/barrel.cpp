@@ -24,7 +24,6 @@ PetscInt BarrelHoopAppend(const BarrelHoop &hoop, BeamDiscretization *d)
   s.b[0]   = 1.0;
   s.weight = BarrelHoopStiffness(hoop);
   s.owner  = wall;
-  s.part   = Part::Wall;
   d->strain.push_back(s);
   return wall;
 }

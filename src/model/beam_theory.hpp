@@ -21,27 +21,15 @@
 
 namespace beamimpact {
 
-// The parts of a structure whose energies a run reports apart: the beam's bending (and shear),
-// the frame's twist about its axis (model/torsion.hpp), the barrel's wall (model/barrel.hpp,
-// model/shell.hpp) and a racket's string bed (system/string_bed_operator.hpp). Every dof and
-// every strain term belongs to one.
-enum class Part : int {
-  Beam  = 0,
-  Twist = 1,
-  Wall  = 2,
-  Bed   = 3
-};
-constexpr int kParts = 4;
-
 // One term of the strain energy: weight (b . y)^2 / 2 over at most six dofs (the beams use up to
 // four; a shell's membrane strain ex + nu et six, a string bed's link along the frame six).
 struct StrainTerm {
-  PetscInt  n      = 0; // entries used
-  PetscInt  dof[6] = {0, 0, 0, 0, 0, 0};
-  PetscReal b[6]   = {0, 0, 0, 0, 0, 0}; // 1/m^2 (curvature), 1/m or 1 (shear, strain)
-  PetscReal weight = 0;                  // N m^2 x m (EI h), or N x m (kappa G A h)
-  PetscInt  owner  = 0;                  // the dof whose rank evaluates this term (sums over ranks partition U)
-  Part      part   = Part::Beam;         // whose energy it is
+  PetscInt  n       = 0; // entries used
+  PetscInt  dof[6]  = {0, 0, 0, 0, 0, 0};
+  PetscReal b[6]    = {0, 0, 0, 0, 0, 0}; // 1/m^2 (curvature), 1/m or 1 (shear, strain)
+  PetscReal weight  = 0;                  // N m^2 x m (EI h), or N x m (kappa G A h)
+  PetscInt  owner   = 0;                  // the dof whose rank evaluates this term (sums over ranks partition U)
+  PetscInt  account = 0; // its energy account: 0 the beam's; a structure part's own (system/structure_part.hpp)
 };
 
 // The discrete beam of a theory (every array over dofs = nodes x fields, node-major).

@@ -75,7 +75,6 @@ StrainTerm Term(PetscInt owner, PetscReal weight, std::initializer_list<std::pai
   StrainTerm t;
   t.owner  = owner;
   t.weight = weight;
-  t.part   = Part::Wall;
   for (const auto &e : entries)
     if (e.second != 0.0) t.dof[t.n] = e.first, t.b[t.n++] = e.second;
   return t;

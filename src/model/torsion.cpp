@@ -41,7 +41,6 @@ PetscInt TorsionAppend(const BeamTorsion &tor, const BeamParams &p, BeamDiscreti
     t.dof[1] = roll(k + 1), t.b[1] = 1.0 / h;
     t.weight = GJ * h;
     t.owner  = roll(k);
-    t.part   = Part::Twist;
     d->strain.push_back(t);
   }
   return F;

@@ -22,29 +22,34 @@ std::vector<PetscReal> RigidField(const BeamSystem &sys, const RigidMotion &r)
   }
 }
 
-// Part p's momenta along the three kinds of field: sum m v over its deflections (kg m/s), sum m x v
-// plus a section's spin (kg m^2/s), sum m z v plus the roll's rho J phi_t (kg m^2/s).
-void PartMomenta(const StateMeasures &m, int p, PetscReal out[3])
+// Account a's momenta along the three kinds of field: sum m v over its deflections (kg m/s), sum m x v
+// plus a section's spin (kg m^2/s), sum m z v plus the roll's rho J phi_t (kg m^2/s). A part's are
+// its deflections' across the face (StateMeasures::account_momentum); the beam's account holds the
+// translation and moment the others do not, the rolling part's (BeamSystem::RollField) the roll.
+void AccountMomenta(const BeamSystem &sys, const StateMeasures &m, PetscInt a, PetscReal out[3])
 {
-  out[0] = out[1] = out[2] = 0;
-  if (p == (int)Part::Beam) out[0] = m.beam_momentum - m.bed_momentum, out[1] = m.beam_moment - m.bed_moment;
-  else if (p == (int)Part::Twist) out[2] = m.beam_roll - m.bed_roll;
-  else if (p == (int)Part::Bed) out[0] = m.bed_momentum, out[1] = m.bed_moment, out[2] = m.bed_roll;
+  const PetscInt A = StructureAccountCount(), roll = sys.RollField() >= 0 ? sys.AccountOf(sys.RollField()) : -1;
+  for (int k = 0; k < 3; ++k) out[k] = a == 0 ? 0 : m.account_momentum[a][k];
+  if (a == 0) {
+    out[0] = m.beam_momentum, out[1] = m.beam_moment;
+    for (PetscInt b = 1; b < A; ++b) out[0] -= m.account_momentum[b][0], out[1] -= m.account_momentum[b][1];
+  }
+  if (a == roll) {
+    out[2] = m.beam_roll;
+    for (PetscInt b = 0; b < A; ++b)
+      if (b != roll) out[2] -= m.account_momentum[b][2];
+  }
 }
 
-// Part p's energy, kinetic and strain (J).
-PetscReal PartEnergy(const StateMeasures &m, int p)
+// Account a's energy, kinetic and strain (J): a part's as measured, the beam's the rest of beam_kinetic
+// and beam_strain (an account apart, the wall's, is not in them).
+PetscReal AccountEnergy(const StateMeasures &m, PetscInt a)
 {
-  switch ((Part)p) {
-  case Part::Twist:
-    return m.twist_energy;
-  case Part::Bed:
-    return m.bed_energy;
-  case Part::Wall:
-    return m.shell_energy;
-  default:
-    return m.beam_kinetic + m.beam_strain - m.twist_energy - m.bed_energy;
-  }
+  if (a != 0) return m.account_energy[a];
+  PetscReal e = m.beam_kinetic + m.beam_strain;
+  for (PetscInt b = 1; b < StructureAccountCount(); ++b)
+    if (!StructureAccountApart(b)) e -= m.account_energy[b];
+  return e;
 }
 
 // The momentum of part p along motion r: <c_r, v> over its dofs.
@@ -97,17 +102,18 @@ EnergySplit EnergySplitOf(const BeamParams &beam, const BeamSystem &sys, const S
   EnergySplit                    out;
   for (PetscReal &e : out.rigid) e = std::numeric_limits<PetscReal>::quiet_NaN();
   // The Gram matrices <c_a, c_b> of the fields per part, and the momenta <c_a, v> per part.
-  PetscReal                           Gp[kParts][3][3] = {}, G[3][3] = {}, mup[kParts][3] = {}, mu[3] = {};
+  const PetscInt                      A                      = StructureAccountCount();
+  PetscReal                           Gp[kMaxAccounts][3][3] = {}, G[3][3] = {}, mup[kMaxAccounts][3] = {}, mu[3] = {};
   std::vector<std::vector<PetscReal>> c;
   for (const RigidMotion &r : motions) c.push_back(RigidField(sys, r));
   for (PetscInt d = 0; d < sys.ndof; ++d) {
-    const int p = (int)sys.PartOf(d % sys.fields);
+    const PetscInt p = sys.AccountOf(d % sys.fields);
     for (int a = 0; a < k; ++a)
       for (int b = 0; b < k; ++b) Gp[p][a][b] += sys.mass[d] * c[a][d] * c[b][d];
   }
-  for (int p = 0; p < kParts; ++p) {
+  for (PetscInt p = 0; p < A; ++p) {
     PetscReal P[3];
-    PartMomenta(m, p, P);
+    AccountMomenta(sys, m, p, P);
     for (int a = 0; a < k; ++a) mup[p][a] = MomentumAlong(motions[a], P), mu[a] += mup[p][a];
     for (int a = 0; a < k; ++a)
       for (int b = 0; b < k; ++b) G[a][b] += Gp[p][a][b];
@@ -140,13 +146,13 @@ EnergySplit EnergySplitOf(const BeamParams &beam, const BeamSystem &sys, const S
   }
   // Each part's flexible energy: its energy less its dofs' share of the rigid velocity field,
   // 1/2 sum_p m (v - v_r)^2 = T_p - <v_r, v>_p + 1/2 <v_r, v_r>_p, the strain unchanged.
-  for (int p = 0; p < kParts; ++p) {
+  for (PetscInt p = 0; p < A; ++p) {
     PetscReal cross = 0, self = 0;
     for (int a = 0; a < k; ++a) {
       cross += alpha[a] * mup[p][a];
       for (int b = 0; b < k; ++b) self += alpha[a] * Gp[p][a][b] * alpha[b];
     }
-    out.flexible[p] = PartEnergy(m, p) - cross + 0.5 * self;
+    out.flexible[p] = AccountEnergy(m, p) - cross + 0.5 * self;
   }
   return out;
 }

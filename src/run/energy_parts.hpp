@@ -47,17 +47,18 @@ std::vector<RigidMotion> ReportedRigidMotions(const BeamParams &beam);
 bool HasRigidMotion(const BeamParams &beam, RigidKind k);
 
 // The split at the end of a run (J): rigid[k] the energy of the rigid motion of kind k after the
-// orthogonalisation (NaN where the structure has none), flexible[p] the rest of part p's energy
-// (the wall's is all flexible: rigid motions do not move it).
+// orthogonalisation (NaN where the structure has none), flexible[a] the rest of energy account a's
+// energy (system/structure_part.hpp: StructureAccountCount of them, 0 the beam's; the wall's is all
+// flexible: rigid motions do not move it).
 struct EnergySplit {
   PetscReal rigid[kRigidKinds];
-  PetscReal flexible[kParts];
+  PetscReal flexible[kMaxAccounts];
 };
 EnergySplit EnergySplitOf(const BeamParams &beam, const BeamSystem &sys, const StateMeasures &m);
 
 // Labels the modes of a modal free flight's energies (ModeEnergy::part): a rigid mode by the
 // reported rigid motion it is (the largest overlap in the mass inner product), a flexible one by the
-// part holding most of its kinetic energy, as -task modes names them (BeamSystemPartName).
+// account holding most of its kinetic energy, as -task modes names them (StructureAccountName).
 void ModeEnergiesLabel(const BeamParams &beam, const BeamModes &modes, std::vector<ModeEnergy> *energies);
 
 } // namespace beamimpact

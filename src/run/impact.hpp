@@ -92,8 +92,9 @@ struct ImpactSeries {
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;    // J
   std::vector<PetscReal> beam_dissipated;                            // J, by the beam's damping (damped beams only)
   std::vector<PetscReal> shell_energy; // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
-  std::vector<PetscReal> bed_energy,
-    twist_energy; // J, the string bed's (-strings_frame) and the frame's roll (-beam_torsion), in beam_*
+  // J, [account][step]: the energy of each present part's account with a series of its own
+  // (StructurePart::AccountSeries: the string bed's bed_energy, the roll's twist_energy; in beam_*).
+  std::vector<std::vector<PetscReal>> account_energy;
   std::vector<PetscReal>              velocity_at_x;   // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;     // m/s, [point][step]
   std::vector<PetscReal>              segment_kinetic; // J, kinetic energy of the monitored segment
@@ -155,9 +156,12 @@ struct MonitorPeaks {
   // The barrel wall (-barrel_hoop_frequency or -beam_shell): its largest displacement under the ball
   // (m, into the bat) and energy (J) over the steps; NaN where no stepper measured them (the modal reference).
   PetscReal wall_deflection = NAN, shell_energy = NAN;
-  // A racket's string bed (-strings_frame): its largest deflection from the frame (m) and its
-  // largest energy (J) over the steps; NaN where no stepper measured them (the modal reference).
-  PetscReal bed_deflection = NAN, bed_energy = NAN;
+  // A racket's string bed (-strings_frame): its largest deflection from the frame (m) over the steps;
+  // each energy account's largest energy (J, StateMeasures::account_energy: a present part's own); NaN
+  // where no stepper measured them (the modal reference).
+  PetscReal bed_deflection               = NAN;
+  PetscReal account_energy[kMaxAccounts] = {NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+  static_assert(kMaxAccounts == 8, "account_energy's initialiser");
   // The registered structure parts' slots with `peak` (system/structure_part.hpp): the largest
   // |value| over the steps, by slot (StateMeasures::part_slot); NaN where not measured.
   PetscReal part_peak[kMaxPartSlots] = {NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
@@ -207,8 +211,8 @@ struct ImpactOutcome {
   // in energy_error's E; 0 for an undamped beam), and as a fraction of the incident kinetic energy.
   PetscReal beam_dissipated_end = 0, damping_fraction = 0;
   // Where the energy brought in (E_in: the ball's and a swinging bat's kinetic energy) went, as
-  // fractions of it, at the end of the run (docs/model.md section 4; with damping_fraction and
-  // the wall's, bed's, twist's, roll's, grip's and hands' fractions below they add up to 1): lost
+  // fractions of it, at the end of the run (docs/model.md section 4; with damping_fraction, the
+  // roll's fraction below and the parts' own, they add up to 1): lost
   // in the ball (hysteresis; for an elastic law 1 - loss_factor^2 of the rebound energy), the
   // ball's rebound (an elastic law: loss_factor^2 of it), the structure's rigid translation P^2/2M
   // and rotation (about its centre of mass, or its pin), and its bending vibration (the beam's
@@ -227,18 +231,14 @@ struct ImpactOutcome {
   // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
   // its largest energy and displacement over the steps (J, m into the bat).
   PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
-  PetscReal wall_fraction         = 0;           // shell_energy_end / E_in
   PetscBool wall_deflection_large = PETSC_FALSE; // wall_deflection_peak > kWallDeflectionLimit R (model/shell.hpp):
                                                  // physically absurd
-  // A racket (-strings_frame, -beam_torsion): the string bed's energy at the end and its largest
-  // over the steps (J), its largest deflection from the frame (m); the roll's energy at the end
-  // (J: the twist's strain and the sections' spin); a free frame's roll rate at the end (rad/s)
-  // and its rigid roll energy L_x^2 / 2 I_x as a fraction of E_in; the angular momentum about
-  // the frame's axis, its change over the run / (m_b v_i L).
-  PetscReal bed_energy_end = 0, bed_energy_peak = 0, bed_deflection_peak = 0, twist_energy_end = 0;
+  // A racket (-strings_frame, -beam_torsion): the string bed's largest deflection from the frame
+  // (m); a free frame's roll rate at the end (rad/s) and its rigid roll energy L_x^2 / 2 I_x as a
+  // fraction of E_in; the angular momentum about the frame's axis, its change over the run / (m_b
+  // v_i L). (The bed's and the roll's energies and fractions are their parts' columns.)
+  PetscReal bed_deflection_peak = 0;
   PetscReal roll_rate_end = 0, roll_fraction = 0, roll_momentum_error = 0;
-  // The string bed's and the twist's energies at the end less their shares of the rigid motions, / E_in.
-  PetscReal bed_fraction = 0, twist_fraction = 0;
   // The rigid-body model, Eq. (11), for a free beam at rest (no support, pivot, grip or swing):
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction
   // for which it gives acor_corrected (the forced fit).

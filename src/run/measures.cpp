@@ -59,13 +59,22 @@ const ModalMomenta &ModalMomentaOf(const std::shared_ptr<const BeamModes> &modes
 }
 
 // Whether the system has parts whose energies are kept apart from the beam's (a barrel wall, the
-// frame's roll, a string bed): without, their sums are 0 and BeamSystemPartEnergies is not needed.
+// frame's roll, a string bed): without, their sums are 0 and BeamSystemAccountEnergies is not needed.
 bool SeparateParts(const BeamSystem &S)
 {
   for (PetscInt f = 0; f < S.fields; ++f)
-    if (S.PartOf(f) != Part::Beam) return true;
+    if (S.AccountOf(f) != 0) return true;
   return false;
 }
+
+// MeasureState's layout of `sums` after G (the end of its point velocities): the force operator's
+// four frame terms, the wall's share of the compression (G + 4), the roll momentum (G + 5), then
+// kAccountSums for each energy account (AccountSums), then the registered parts' slots (PartSlots).
+constexpr PetscInt kAccountSums = 5;
+// Account a's sums: its stored and kinetic energy (an account apart from the beam's: the wall's), or
+// its stored plus kinetic energy and 0; its deflections' momentum, moment and roll momentum.
+PetscInt AccountSums(PetscInt G, PetscInt a) { return G + 6 + kAccountSums * a; }
+PetscInt PartSlots(PetscInt G) { return AccountSums(G, StructureAccountCount()); }
 
 // Whether the measures of a state held in modes can be taken in them: the energies are then sums
 // over the modes (mass-normalised: kinetic 1/2 sum zd_k^2, strain 1/2 sum w_k^2 z_k^2) and the
@@ -99,24 +108,26 @@ void PartsMeasure(const BeamSystem &S, const StateView &sv, PetscReal *p, PetscR
 void StructureFromSums(const BeamSystem &S, PetscInt G, const std::vector<PetscReal> &sums, PetscReal bed_max,
                        StateMeasures *m)
 {
-  m->beam_kinetic    = sums[0] - sums[G + 5]; // without the wall's share (exact: 0 without a wall)
-  m->beam_strain     = sums[1] - sums[G + 4];
-  m->shell_energy    = sums[G + 4] + sums[G + 5];
-  m->wall_deflection = sums[G + 6];
-  m->twist_energy    = sums[G + 7];
-  m->bed_energy      = sums[G + 8];
+  PetscReal T = sums[0], U = sums[1]; // without the shares of the accounts apart (the wall's)
+  m->shell_energy = 0;
+  for (PetscInt a = 1; a < StructureAccountCount(); ++a) {
+    const PetscReal *e   = &sums[AccountSums(G, a)];
+    m->account_energy[a] = e[0] + e[1];
+    for (int k = 0; k < 3; ++k) m->account_momentum[a][k] = e[2 + k];
+    if (StructureAccountApart(a)) T -= e[1], U -= e[0], m->shell_energy += e[0] + e[1];
+  }
+  m->beam_kinetic    = T;
+  m->beam_strain     = U;
+  m->wall_deflection = sums[G + 4];
   m->bed_deflection  = bed_max;
-  m->beam_roll       = sums[G + 9];
-  m->bed_momentum    = sums[G + 10];
-  m->bed_moment      = sums[G + 11];
-  m->bed_roll        = sums[G + 12];
+  m->beam_roll       = sums[G + 5];
   m->beam_momentum   = sums[2];
   m->beam_moment     = sums[3];
   m->segment_kinetic = sums[4];
   m->terms_stored    = sums[G];
   m->frame_force     = sums[G + 2];
   m->frame_moment    = sums[G + 3];
-  for (size_t k = G + 13; k < sums.size(); ++k) m->part_slot[k - G - 13] = sums[k]; // the parts' slots, last
+  for (size_t k = PartSlots(G); k < sums.size(); ++k) m->part_slot[k - PartSlots(G)] = sums[k]; // the parts' slots
 }
 
 // The measures from the sums over the state (MeasureState's layout of `sums`, G the end of its
@@ -132,7 +143,7 @@ PetscErrorCode MeasuresFinish(Stepper &stepper, const MeasureContext &ctx, Petsc
   PetscCall(MeasureBall(stepper, ctx, m));
   const BallParams &ball = *ctx.ball;
   StructureFromSums(S, G, sums, bed_max, m);
-  m->roll_momentum    = sums[G + 9] + ball.mass * ctx.g->z * m->ball_v;
+  m->roll_momentum    = sums[G + 5] + ball.mass * ctx.g->z * m->ball_v;
   m->momentum         = sums[2] + ball.mass * m->ball_v;
   m->angular_momentum = sums[3] + ball.mass * ctx.g->x * m->ball_v;
   m->beam_dissipated  = stepper.Dissipated();
@@ -176,8 +187,9 @@ PetscErrorCode MeasureInModes(Stepper &stepper, const MeasureContext &ctx, Petsc
   PetscFunctionReturn(0);
 }
 
-// The owned dofs' kinetic energy, the force operator's stored energy and frame terms, the parts'
-// energies and the wall's share of the compression (sums[0], sums[1], sums[G ... G + 8]).
+// The owned dofs' kinetic energy, the force operator's stored energy and frame terms, the
+// accounts' energies and the wall's share of the compression (sums[0], sums[1], sums[G ... G + 4],
+// AccountSums).
 void MeasureEnergies(const BeamSystem &S, const MeasureContext &ctx, const StateView &sv, PetscReal t, PetscInt G,
                      std::vector<PetscReal> &sums)
 {
@@ -194,23 +206,26 @@ void MeasureEnergies(const BeamSystem &S, const MeasureContext &ctx, const State
   sums[G + 1] = ForceOperatorFrameMomentum(S, fs, sv.d0, sv.d1);
   ForceOperatorFrameReaction(S, fs, sv.d0, sv.d1, &sums[G + 2], &sums[G + 3]);
   if (SeparateParts(S)) { // else 0
-    PetscReal stored[kParts], kinetic[kParts];
-    BeamSystemPartEnergies(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, stored, kinetic);
-    sums[G + 4] = stored[(int)Part::Wall], sums[G + 5] = kinetic[(int)Part::Wall];
-    sums[G + 7] = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
-    sums[G + 8] = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
+    PetscReal stored[kMaxAccounts], kinetic[kMaxAccounts];
+    BeamSystemAccountEnergies(S, sv.y, sv.y_stride, sv.v, sv.v_stride, sv.d0, sv.d1, stored, kinetic);
+    for (PetscInt a = 1; a < StructureAccountCount(); ++a) {
+      PetscReal *e = &sums[AccountSums(G, a)];
+      if (StructureAccountApart(a)) e[0] = stored[a], e[1] = kinetic[a];
+      else e[0] = stored[a] + kinetic[a];
+    }
   }
   for (PetscInt q = 0; q < ctx.g->n;
        ++q) { // the wall's share of the compression: its displacement under the ball, into the bat
     const PetscInt d = ctx.g->dof[q];
-    if (S.PartOf(d % F) == Part::Wall && d >= sv.d0 && d < sv.d1)
-      sums[G + 6] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
+    if (d >= sv.d0 && d < sv.d1 && StructureAccountApart(S.AccountOf(d % F)))
+      sums[G + 4] += ctx.g->w[q] * sv.y[(d / F) * sv.y_stride + d % F];
   }
 }
 
 // The owned nodes' momenta (the deflections, the beam's field 0 and a string bed's, and the
-// rotations) into sums[2], sums[3], the roll's and the bed's, then the registered parts'; returns
-// the bed's largest deflection from the frame on this rank (0 without a bed).
+// rotations) into sums[2], sums[3], the roll's and each account's deflections' (AccountSums), then
+// the registered parts'; returns the bed's largest deflection from the frame on this rank (0
+// without a bed).
 PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, std::vector<PetscReal> &sums)
 {
   const PetscInt F   = S.fields;
@@ -225,19 +240,20 @@ PetscReal MeasureMomenta(const BeamSystem &S, const StateView &sv, PetscInt G, s
     if (S.Rotation(1))
       sums[3] += S.mass[S.Dof(i, 1)] *
                  sv.v[i * sv.v_stride + 1]; // sections' spin (Timoshenko): conserved with the rest
-    if (roll >= 0) sums[G + 9] += S.mass[S.Dof(i, roll)] * sv.v[i * sv.v_stride + roll];
+    if (roll >= 0) sums[G + 5] += S.mass[S.Dof(i, roll)] * sv.v[i * sv.v_stride + roll];
     if (S.face_fields.empty()) continue;
     const PetscReal y = sv.y[i * sv.y_stride], phi = roll >= 0 ? sv.y[i * sv.y_stride + roll] : 0.0;
     for (const PetscInt f : S.face_fields) { // a string bed's nodes across the face (StructurePart::FieldZ)
       const PetscInt d = S.Dof(i, f);
       if (S.held[d]) continue;
       const PetscReal mv = S.mass[d] * sv.v[i * sv.v_stride + f], z = S.field_z[f];
-      sums[2] += mv, sums[3] += x * mv, sums[G + 9] += z * mv;
-      sums[G + 10] += mv, sums[G + 11] += x * mv, sums[G + 12] += z * mv;
+      PetscReal      *own = &sums[AccountSums(G, S.AccountOf(f)) + 2];
+      sums[2] += mv, sums[3] += x * mv, sums[G + 5] += z * mv;
+      own[0] += mv, own[1] += x * mv, own[2] += z * mv;
       bed_max = std::max(bed_max, std::abs(sv.y[i * sv.y_stride + f] - y - z * phi));
     }
   }
-  if (!S.parts.empty()) PartsMeasure(S, sv, &sums[2], &sums[3], sums.data() + G + 13); // (no slots: its end)
+  if (!S.parts.empty()) PartsMeasure(S, sv, &sums[2], &sums[3], sums.data() + PartSlots(G)); // (no slots: its end)
   return bed_max;
 }
 
@@ -299,9 +315,8 @@ PetscErrorCode MeasureState(Stepper &stepper, const MeasureContext &ctx, const M
   const PetscInt
     G = 5 +
         np; // the force operator's other terms: stored energy, the frame's momentum term, force on the frame, moment
-  // + the wall's stored and kinetic energy and displacement, the twist's and bed's energies, the
-  // roll's momentum, the bed's three momenta; then the registered parts' slots
-  std::vector<PetscReal> sums(G + 13 + StructurePartSlotCount(S), 0.0);
+  // + the wall's displacement, the roll's momentum, each account's sums; then the registered parts' slots
+  std::vector<PetscReal> sums(PartSlots(G) + StructurePartSlotCount(S), 0.0);
   if (MeasuresInModes(S, ctx, mon)) { // -ts_type modal after a step
     bool done;
     PetscCall(MeasureInModes(stepper, ctx, G, sums, m, point_v, &done));
@@ -330,7 +345,7 @@ PetscErrorCode MeasureStructureStates(MPI_Comm comm, const MeasureContext &ctx, 
                                       const std::vector<PetscReal> &t, std::vector<StateMeasures> *m)
 {
   const BeamSystem &S = *ctx.sys;
-  const PetscInt    G = 5, width = G + 13 + StructurePartSlotCount(S), count = (PetscInt)t.size();
+  const PetscInt    G = 5, width = PartSlots(G) + StructurePartSlotCount(S), count = (PetscInt)t.size();
   const size_t      ne = (size_t)(r.e1 - r.e0);
   PetscMPIInt       size;
 

@@ -20,19 +20,23 @@ struct StateMeasures {
   PetscReal momentum = 0, angular_momentum = 0; // kg m/s, kg m^2/s about x = 0 (beam and ball)
   PetscReal beam_momentum = 0, beam_moment = 0; // sum m_i v_i (kg m/s), sum m_i x_i v_i (kg m^2/s)
   PetscReal segment_kinetic = 0;                // J, the monitored segment
-  // The barrel wall (-barrel_hoop_frequency or -beam_shell): its stored and kinetic energy (J), not
-  // in beam_kinetic and beam_strain; its displacement under the ball (m, into the bat). 0 without.
+  // The accounts kept apart from the beam's (StructurePart::AccountApart: the barrel wall,
+  // -barrel_hoop_frequency or -beam_shell): their stored and kinetic energy (J), not in
+  // beam_kinetic and beam_strain; their displacement under the ball (m, into the bat). 0 without.
   PetscReal shell_energy = 0, wall_deflection = 0;
-  // The frame's roll (-beam_torsion) and a racket's string bed (-strings_frame), each stored plus
-  // kinetic (J; in beam_kinetic and beam_strain); the bed's largest deflection from its frame,
-  // max |w - y - z phi| over its nodes (m); the angular momentum about the frame's axis of the
-  // structure and the ball (kg m^2/s: sum rho J phi_t + sum m z v + m_b z_b v_b). 0 without.
-  PetscReal twist_energy = 0, bed_energy = 0, bed_deflection = 0, roll_momentum = 0;
+  // A racket's string bed's largest deflection from its frame, max |w - y - z phi| over its nodes
+  // (m); the angular momentum about the frame's axis of the structure and the ball (kg m^2/s: sum
+  // rho J phi_t + sum m z v + m_b z_b v_b). 0 without.
+  PetscReal bed_deflection = 0, roll_momentum = 0;
   PetscReal beam_roll = 0; // kg m^2/s, the structure's share of roll_momentum
-  // The string bed's share of beam_momentum, beam_moment and beam_roll (kg m/s, kg m^2/s, kg m^2/s:
-  // sum m v, sum m x v, sum m z v over its deflections; 0 without a bed), for the split of the
-  // energy into rigid motions and parts (run/energy_parts.hpp).
-  PetscReal bed_momentum = 0, bed_moment = 0, bed_roll = 0;
+  // Each energy account a > 0 (system/structure_part.hpp, StructureAccountOf: a part's own), for the
+  // split of the energy into rigid motions and parts (run/energy_parts.hpp): its stored plus kinetic
+  // energy (J; in beam_kinetic and beam_strain but for the accounts of shell_energy) and its
+  // deflections' share of beam_momentum, beam_moment and beam_roll (sum m v, sum m x v, sum m z v
+  // over the fields across the face, StructurePart::FieldZ: kg m/s, kg m^2/s, kg m^2/s). The beam's
+  // account (0) is the rest; 0 without parts.
+  PetscReal account_energy[kMaxAccounts]      = {};
+  PetscReal account_momentum[kMaxAccounts][3] = {};
   PetscReal beam_dissipated = 0; // J, dissipated by the beam's damping since t = 0 (0 when undamped; with a grip its
                                  // damper's share too)
   // The force operator's frame terms (system/force_operator.hpp; the hands' part reads them as its

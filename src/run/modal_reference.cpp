@@ -176,9 +176,11 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
       p += S.mass[d] * run.qd[d];
       l += S.mass[d] * sys.NodeX(node) * run.qd[d];
       r += S.mass[d] * sys.DofZ(dof) * run.qd[d];
-      if (sys.Face(f))
-        m.bed_momentum += S.mass[d] * run.qd[d], m.bed_moment += S.mass[d] * sys.NodeX(node) * run.qd[d],
-          m.bed_roll += S.mass[d] * sys.DofZ(dof) * run.qd[d];
+      if (sys.Face(f)) { // a part's deflections across the face: its account's share
+        PetscReal *own = m.account_momentum[sys.AccountOf(f)];
+        own[0] += S.mass[d] * run.qd[d], own[1] += S.mass[d] * sys.NodeX(node) * run.qd[d],
+          own[2] += S.mass[d] * sys.DofZ(dof) * run.qd[d];
+      }
     } else if (sys.Rotation(f)) l += S.mass[d] * run.qd[d];
     else if (f == roll) r += S.mass[d] * run.qd[d];
   }
@@ -192,17 +194,15 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
   m.ball_y       = run.q[S.n - 1];
   m.ball_v       = run.qd[S.n - 1];
   m.ball_kinetic = 0.5 * ball.mass * m.ball_v * m.ball_v;
-  PetscReal stored[kParts], kinetic[kParts]; // each part's, as run/measures.cpp keeps them
-  BeamSystemPartEnergies(sys, shape.data(), sys.fields, rate.data(), sys.fields, 0, sys.ndof, stored, kinetic);
-  const int W    = (int)Part::Wall;
+  PetscReal stored[kMaxAccounts], kinetic[kMaxAccounts]; // each account's, as run/measures.cpp keeps them
+  BeamSystemAccountEnergies(sys, shape.data(), sys.fields, rate.data(), sys.fields, 0, sys.ndof, stored, kinetic);
   m.beam_kinetic = m.beam_strain = 0;
-  for (int q = 0; q < kParts; ++q)
-    if (q != W) m.beam_kinetic += kinetic[q], m.beam_strain += stored[q];
-  m.shell_energy = stored[W] + kinetic[W];
-  m.twist_energy = stored[(int)Part::Twist] + kinetic[(int)Part::Twist];
-  m.bed_energy   = stored[(int)Part::Bed] + kinetic[(int)Part::Bed];
+  for (PetscInt a = 0; a < StructureAccountCount(); ++a) // an account apart (the wall's): not the beam's
+    if (StructureAccountApart(a)) m.shell_energy += stored[a] + kinetic[a];
+    else m.beam_kinetic += kinetic[a], m.beam_strain += stored[a];
+  for (PetscInt a = 1; a < StructureAccountCount(); ++a) m.account_energy[a] = stored[a] + kinetic[a];
   for (PetscInt d = 0; d < S.BeamDofs(); ++d) // the wall's share of the compression (S.g = dc/dq = -w)
-    if ((int)sys.PartOf(S.dof[d] % sys.fields) == W) m.wall_deflection -= S.g[d] * run.q[d];
+    if (StructureAccountApart(sys.AccountOf(S.dof[d] % sys.fields))) m.wall_deflection -= S.g[d] * run.q[d];
   if (!sys.face_fields.empty())
     for (PetscInt d = 0; d < sys.ndof; ++d) {
       const PetscInt f = d % sys.fields, i = d / sys.fields;

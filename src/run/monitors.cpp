@@ -59,8 +59,9 @@ void BallSeriesAppend(const StateMeasures &m, const MeasureContext &ctx, Contact
   S->force_rate.push_back(rate);
 }
 
-// -monitor_energy's series at a record (wall, bed: the system has a barrel wall, a string bed).
-void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall, bool bed, ImpactSeries *S)
+// -monitor_energy's series at a record (wall: the system has a barrel wall), each present part's
+// account with a series (StructurePart::AccountSeries) its own.
+void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall, ImpactSeries *S)
 {
   S->ball_kinetic.push_back(m.ball_kinetic);
   S->ball_stored.push_back(m.ball_stored);
@@ -68,8 +69,12 @@ void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall
   S->beam_kinetic.push_back(m.beam_kinetic);
   S->beam_strain.push_back(m.beam_strain);
   if (wall) S->shell_energy.push_back(m.shell_energy);
-  if (bed) S->bed_energy.push_back(m.bed_energy);
-  if (sys.RollField() >= 0) S->twist_energy.push_back(m.twist_energy);
+  for (const PartInstance &s : sys.parts) {
+    if (!s.part->AccountSeries()) continue;
+    const PetscInt a = StructureAccountOf(*s.part);
+    S->account_energy.resize(StructureAccountCount());
+    S->account_energy[a].push_back(m.account_energy[a]);
+  }
   S->total_energy.push_back(m.total());
   if (sys.Damped()) S->beam_dissipated.push_back(m.beam_dissipated);
 }
@@ -90,7 +95,10 @@ void ImpactRecorder::KeepPeaks(const StateMeasures &m, PetscReal t)
   }
   if (!ctx_.sys->face_fields.empty()) { // a racket's string bed (its fields across the face)
     if (!(m.bed_deflection <= peaks_->bed_deflection)) peaks_->bed_deflection = m.bed_deflection;
-    if (!(m.bed_energy <= peaks_->bed_energy)) peaks_->bed_energy = m.bed_energy;
+  }
+  for (const PartInstance &s : ctx_.sys->parts) { // each present part's own account
+    const PetscInt a = StructureAccountOf(*s.part);
+    if (a > 0 && !(m.account_energy[a] <= peaks_->account_energy[a])) peaks_->account_energy[a] = m.account_energy[a];
   }
   if (ctx_.sys->TiedToFrame() && std::abs(m.frame_force) > peaks_->frame_force) { // the hands' peak force
     peaks_->frame_force      = std::abs(m.frame_force);
@@ -165,7 +173,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   }
   S.time.push_back(t);
   if (mon_.ball) { BallSeriesAppend(m, ctx_, last_phase_, &S); }
-  if (mon_.energy) EnergySeriesAppend(m, *ctx_.sys, wall, bed, &S);
+  if (mon_.energy) EnergySeriesAppend(m, *ctx_.sys, wall, &S);
   for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
   last_phase_ = ctx_.contact->phase;
   if (mon_.segment) {

@@ -41,7 +41,8 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
   f->moment_roll  = f->end.beam_roll;
 }
 
-// A registered part's column: computed from its slots where the part is in the system, else NaN.
+// A registered part's column: computed from its slots and its account's energies where the part is
+// in the system, else NaN.
 double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const OutcomeFacts &f)
 {
   for (const PartInstance &p : sys.parts) {
@@ -50,6 +51,10 @@ double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const Outco
     pf.start                 = f.start.part_slot + p.slot0;
     pf.end                   = f.end.part_slot + p.slot0;
     pf.peak                  = f.peaks->part_peak + p.slot0;
+    const PetscInt a         = StructureAccountOf(*p.part); // its own energy account (0: none)
+    pf.account_end           = a > 0 ? f.end.account_energy[a] : 0;
+    pf.account_peak          = a > 0 ? f.peaks->account_energy[a] : 0;
+    pf.account_flexible      = a > 0 ? f.split.flexible[a] : 0;
     pf.E_in                  = f.E_in;
     pf.params                = p.params.get();
     pf.beam                  = &f.sc->beam;

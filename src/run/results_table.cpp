@@ -126,9 +126,6 @@ bool EnergyIn(const Scenario &sc) { return sc.ball.speed > 0 || sc.swing.Swings(
 bool EnergyInTranslation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Translation); }
 bool EnergyInRotation(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Rotation); }
 bool EnergyInRoll(const Scenario &sc) { return EnergyIn(sc) && HasRigidMotion(sc.beam, RigidKind::Roll); }
-bool EnergyInTwist(const Scenario &sc) { return EnergyIn(sc) && ResultTwist(sc); }
-bool EnergyInBed(const Scenario &sc) { return EnergyIn(sc) && ResultStringBed(sc); }
-bool EnergyInWall(const Scenario &sc) { return EnergyIn(sc) && ResultBarrelWall(sc); }
 const char *const kEnergyIn    = "always (E_in > 0: a moving ball or a swinging bat)";
 const char *const kTranslation = "a structure with no held dof (both ends free, no -beam_clamp, no -beam_pivot)";
 const char *const kRotation = "a structure with no held dof, or held at one pin only (-beam_pivot or one pinned end, "
@@ -275,7 +272,7 @@ std::vector<ResultColumn> OutcomeColumns()
           "rotation"),
     Share(Real(
             "vibration_fraction", "1", &R::vibration_fraction, EnergyIn, kEnergyIn,
-            [](F f) -> double { return f.split.flexible[(int)Part::Beam] / f.E_in; },
+            [](F f) -> double { return f.split.flexible[0] / f.E_in; },
             "the beam's bending (and shear) at the end / E_in: its kinetic and strain energy less its share of the "
             "rigid motions"),
           "bending"),
@@ -307,10 +304,6 @@ std::vector<ResultColumn> OutcomeColumns()
       "shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
       [](F f) -> double { return f.end.shell_energy; },
       "the barrel wall's energy at the end (stored and kinetic): what it did not give back"),
-    Share(Real(
-            "wall_fraction", "1", &R::wall_fraction, EnergyInWall, "with -barrel_hoop_frequency or -beam_shell",
-            [](F f) -> double { return f.split.flexible[(int)Part::Wall] / f.E_in; }, "shell_energy_end / E_in"),
-          "wall"),
     Real(
       "shell_energy_peak", "J", &R::shell_energy_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
       [](F f) -> double { return f.peaks->shell_energy; },
@@ -329,33 +322,10 @@ std::vector<ResultColumn> OutcomeColumns()
       "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear "
       "wall far outside its range, physically absurd"),
     Real(
-      "bed_energy_end", "J", &R::bed_energy_end, ResultStringBed, kStrings,
-      [](F f) -> double { return f.end.bed_energy; },
-      "the string bed's energy at the end (its strain relative to the frame and its strings' kinetic energy)"),
-    Share(Real(
-            "bed_fraction", "1", &R::bed_fraction, EnergyInBed, kStrings,
-            [](F f) -> double { return f.split.flexible[(int)Part::Bed] / f.E_in; },
-            "the string bed's vibration at the end / E_in: bed_energy_end less its share of the rigid motions"),
-          "strings"),
-    Real(
-      "bed_energy_peak", "J", &R::bed_energy_peak, ResultStringBed, kStrings,
-      [](F f) -> double { return f.peaks->bed_energy; },
-      "the string bed's largest energy over the steps (NaN from the modal reference)"),
-    Real(
       "bed_deflection_peak", "m", &R::bed_deflection_peak, ResultStringBed, kStrings,
       [](F f) -> double { return f.peaks->bed_deflection; },
       "the string bed's largest deflection from its frame, max |w - y - z phi| over its nodes and the steps (NaN from "
       "the modal reference)"),
-    Real(
-      "twist_energy_end", "J", &R::twist_energy_end, ResultTwist, "with -beam_torsion",
-      [](F f) -> double { return f.end.twist_energy; },
-      "the frame's roll energy at the end: the twist's strain and the sections' spin rho J phi_t^2/2 (a string bed's "
-      "roll is in bed_energy_end)"),
-    Share(Real(
-            "twist_fraction", "1", &R::twist_fraction, EnergyInTwist, "with -beam_torsion",
-            [](F f) -> double { return f.split.flexible[(int)Part::Twist] / f.E_in; },
-            "the frame's twisting at the end / E_in: twist_energy_end less its share of the rigid roll"),
-          "twist"),
     Real(
       "roll_rate_end", "rad/s", &R::roll_rate_end, ResultTwistNoHeld,
       "with -beam_torsion, a moving ball and no held dof",
@@ -442,6 +412,9 @@ std::vector<ResultColumn> BuildTable()
     if (const char *after = p->ColumnsAfter())
       at = std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, after); }) + 1;
     for (const PartColumn &pc : p->Columns()) {
+      if (pc.after)
+        at = std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, pc.after); }) +
+             1;
       ResultColumn c{pc.name, pc.unit, pc.description, nullptr, p->Presence()};
       c.owner        = p;
       c.part_compute = pc.compute;

@@ -1199,7 +1199,7 @@ const std::vector<const char *> &BeamModes::PartLabels() const
   for (PetscInt k = 0; k < Count(); ++k) {
     const PetscReal *phi = &B.Phi[(size_t)k * n];
     for (PetscInt q = 0; q < n; ++q) e[q] = phi[q] * phi[q];
-    labels_[k] = BeamSystemPartName(BeamSystemDominantPart(sys, S.dof.data(), e.data(), n, nullptr));
+    labels_[k] = StructureAccountName(BeamSystemDominantAccount(sys, S.dof.data(), e.data(), n, nullptr));
   }
   return labels_;
 }

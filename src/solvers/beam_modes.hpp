@@ -131,7 +131,7 @@ struct BeamModes {
   // The static correction at the point of coupling g (computed on first use, then cached).
   PetscErrorCode StaticCorrection(const ContactCoupling &g, const ModalCorrection **c) const;
   void           ForgetCorrections() const { corrections_.clear(); } // the basis changed (BeamModesBuild)
-  // Each kept mode's part, as -task modes names it (BeamSystemPartName of the part holding most of
+  // Each kept mode's part, as -task modes names it (StructureAccountName of the account holding most of
   // its phi^2: "bending", "roll", "wall", "strings"): computed on first use, O(n) per mode, then
   // kept with the basis (a sweep's points label their free flights' modes from it).
   const std::vector<const char *> &PartLabels() const;

@@ -270,7 +270,7 @@ static std::vector<PetscInt> FieldFamilies(const BeamSystem &op)
     for (const PartInstance &s : op.parts)
       if (f >= s.first && f < s.first + s.count) detail[f] = s.part->FamilyDetail(s, f);
     any = any || detail[f] > 0;
-    if (detail[f] == 0 && op.PartOf(f) != Part::Beam) detail[f] = -1;
+    if (detail[f] == 0 && op.AccountOf(f) != 0) detail[f] = -1;
   }
   return any ? detail : std::vector<PetscInt>();
 }
@@ -319,7 +319,7 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
     if (parts) {
       std::vector<PetscReal> e(op.ndof);
       for (PetscInt d = 0; d < op.ndof; ++d) e[d] = op.mass[d] * phi[d] * phi[d];
-      out->part[m] = (PetscInt)BeamSystemDominantPart(op, nullptr, e.data(), op.ndof, &out->part_share[m]);
+      out->part[m] = BeamSystemDominantAccount(op, nullptr, e.data(), op.ndof, &out->part_share[m]);
       if (!out->bed_shape.empty()) {
         const std::vector<PetscInt> &face = op.face_fields; // the bed's [z][x], its columns the nodes
         out->bed_shape[m].assign(face.size() * op.nodes, 0.0);

@@ -60,7 +60,7 @@ struct ModesResult {
   // hoop oscillator; empty without a wall.
   std::vector<PetscInt> shell_n;
   // With a roll field or a string bed (-beam_torsion, -strings_frame): each mode's part
-  // (model/beam_theory.hpp's Part: the beam's bending, the twist, the bed) holding most of its
+  // (its energy account, StructureAccountOf: the beam's bending 0, the roll, the bed) holding most of its
   // kinetic energy, and that part's share of it (a coupled mode has none near 1); the bed's
   // deflection of each mode on its grid, [z][x] (mass-normalised, 0 where not an unknown; with
   // the shapes only). Empty without them.

@@ -77,18 +77,19 @@ PetscErrorCode ImpactCaseRun(MPI_Comm comm, const SweepPlan &plan, const std::ve
 // modes: the flexible modes' frequencies and the structure as a rigid body
 // ---------------------------------------------------------------------------
 
-// A frequency column: "frequency_3" (the third flexible mode), "bending_frequency_1", ...: the
-// family ("" for any) and k (>= 1); false when name is none.
+// A frequency column: "frequency_3" (the third flexible mode), "bending_frequency_1", ... (a
+// family is an energy account's name, StructureAccountName): the family ("" for any) and k (>= 1);
+// false when name is none.
 bool ParseFrequency(const std::string &name, std::string *family, int *k)
 {
-  static const char *const families[] = {"", "bending_", "roll_", "wall_", "strings_"};
-  for (const char *f : families) {
-    const std::string head = std::string(f) + "frequency_";
+  for (PetscInt a = -1; a < StructureAccountCount(); ++a) {
+    const std::string f    = a < 0 ? "" : StructureAccountName(a);
+    const std::string head = f + (f.empty() ? "" : "_") + "frequency_";
     if (name.compare(0, head.size(), head) != 0 || name.size() == head.size()) continue;
     char      *end = nullptr;
     const long v   = std::strtol(name.c_str() + head.size(), &end, 10);
     if (*end || v < 1 || v > 10000) return false;
-    *family = std::string(f).substr(0, std::string(f).empty() ? 0 : std::string(f).size() - 1);
+    *family = f;
     *k      = (int)v;
     return true;
   }
@@ -123,21 +124,25 @@ bool ModesColumn(const std::string &name, std::string *unit, std::string *why)
       *unit = c.unit;
       return true;
     }
-  *why = "the columns of -task modes are frequency_K (the K-th flexible mode), bending_frequency_K, roll_frequency_K, "
-         "wall_frequency_K, strings_frequency_K (the K-th of the modes whose kinetic energy is "
-         "mostly in that part), mass, centre_of_mass (from x = 0), moment_of_inertia (about the centre of mass), "
+  std::string families; // each energy account's
+  for (PetscInt a = 0; a < StructureAccountCount(); ++a)
+    families += std::string(a ? ", " : "") + StructureAccountName(a) + "_frequency_K";
+  *why = "the columns of -task modes are frequency_K (the K-th flexible mode), " + families +
+         " (the K-th of the modes whose kinetic energy is mostly in that part), mass, centre_of_mass (from x = 0), "
+         "moment_of_inertia (about the centre of mass), "
          "inertia_end (about x = 0), inertia_roll (about the axis), swingweight (about x = 0.1 m: a "
          "racket's with its butt at x = 0)";
   return false;
 }
 
-// The family of mode q: the part holding most of its kinetic energy.
+// The family of mode q: the energy account holding most of its kinetic energy (a wall's mode, by
+// its family detail ModesResult::shell_n, the wall's).
 std::string ModeFamily(const ModesResult &m, size_t q)
 {
-  static const char *const names[kParts] = {"bending", "roll", "wall", "strings"};
-  if (!m.part.empty()) return names[m.part[q]];
-  if (!m.shell_n.empty() && m.shell_n[q] != 0) return "wall";
-  return "bending";
+  if (!m.part.empty()) return StructureAccountName(m.part[q]);
+  if (!m.shell_n.empty() && m.shell_n[q] != 0)
+    return StructureAccountName(StructureAccountOf(*StructurePartFind("wall")));
+  return StructureAccountName(0);
 }
 
 // The modes the columns need: -modes_count when given, else the rigid ones and a margin above the
@@ -201,7 +206,7 @@ PetscErrorCode HeldBedModes(MPI_Comm comm, const std::vector<std::string> &colum
   ModesResult m; // as a beam's modes: every one the strings', none rigid
   m.omega     = modes.omega;
   m.frequency = modes.frequency;
-  m.part.assign(modes.frequency.size(), (PetscInt)Part::Bed);
+  m.part.assign(modes.frequency.size(), StructureAccountOf(*StructurePartFind("bed")));
   ModesValues(m, BeamRigidBody(), (PetscInt)modes.frequency.size(), columns, row);
   for (size_t k = 0; k < columns.size(); ++k)
     for (const BodyColumn &c : kBodyColumns)

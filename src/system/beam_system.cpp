@@ -22,11 +22,11 @@ bool BeamSystemBuild(const BeamParams &p, BeamSystem *sys, std::string *why)
   BeamSystem &S = *sys;
   S             = BeamSystem();
   S.beam_fields = d.fields;
-  S.field_part.assign(d.fields, Part::Beam);
+  S.field_account.assign(d.fields, 0);
   S.parts = StructurePartsBuild(p, &d); // the registered parts' fields, in registry order
   S.field_z.assign(d.fields, NAN);
   for (const PartInstance &s : S.parts) {
-    S.field_part.resize(s.first + s.count, s.part->Account());
+    S.field_account.resize(s.first + s.count, StructureAccountOf(*s.part));
     for (PetscInt f = s.first; f < s.first + s.count; ++f) S.field_z[f] = s.part->FieldZ(s, f);
   }
   for (PetscInt f = 0; f < d.fields; ++f)
@@ -133,20 +133,20 @@ PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, Pets
   return 0.5 * U;
 }
 
-void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs,
-                            PetscInt d0, PetscInt d1, PetscReal stored[kParts], PetscReal kinetic[kParts])
+void BeamSystemAccountEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt ys, const PetscReal *v, PetscInt vs,
+                               PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic)
 {
   const PetscInt F = sys.fields;
-  for (int p = 0; p < kParts; ++p) stored[p] = kinetic[p] = 0.0;
+  for (PetscInt a = 0; a < StructureAccountCount(); ++a) stored[a] = kinetic[a] = 0.0;
   for (PetscInt i = d0; i < d1; ++i) {
     const PetscReal vi = v[(i / F) * vs + i % F];
-    kinetic[(int)sys.PartOf(i % F)] += 0.5 * sys.mass[i] * vi * vi;
+    kinetic[sys.AccountOf(i % F)] += 0.5 * sys.mass[i] * vi * vi;
   }
   for (PetscInt k = sys.strain_begin[d0]; k < sys.strain_begin[d1]; ++k) {
     const StrainTerm &t = sys.strain[k];
     PetscReal         e = 0.0;
     for (PetscInt q = 0; q < t.n; ++q) e += t.b[q] * y[(t.dof[q] / F) * ys + t.dof[q] % F];
-    stored[(int)t.part] += 0.5 * t.weight * e * e;
+    stored[t.account] += 0.5 * t.weight * e * e;
   }
 }
 
@@ -280,20 +280,14 @@ PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupli
   return std::sqrt(lam);
 }
 
-const char *BeamSystemPartName(Part p)
+PetscInt BeamSystemDominantAccount(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n,
+                                   PetscReal *share)
 {
-  static const char *const names[kParts] = {"bending", "roll", "wall", "strings"};
-  return names[(int)p];
-}
-
-Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n,
-                            PetscReal *share)
-{
-  PetscReal sum = 0, by[kParts] = {0};
-  for (PetscInt r = 0; r < n; ++r) by[(int)sys.PartOf((dof ? dof[r] : r) % sys.fields)] += e[r], sum += e[r];
-  const int best = (int)(std::max_element(by, by + kParts) - by);
+  PetscReal sum = 0, by[kMaxAccounts] = {0};
+  for (PetscInt r = 0; r < n; ++r) by[sys.AccountOf((dof ? dof[r] : r) % sys.fields)] += e[r], sum += e[r];
+  const PetscInt best = (PetscInt)(std::max_element(by, by + StructureAccountCount()) - by);
   if (share) *share = sum > 0 ? by[best] / sum : 0;
-  return (Part)best;
+  return best;
 }
 
 const char *BeamSystemPartWords(const BeamSystem &sys, PetscInt dof)

@@ -36,8 +36,8 @@ struct BeamSystem {
   PetscInt nodes = 0, fields = 1, ndof = 0;
   PetscInt
     beam_fields = 1; // the theory's fields per node (1, or 2 with a rotation); fields after them are the barrel wall's
-  std::vector<Part>       field_part; // the part each field belongs to (model/beam_theory.hpp)
-  std::vector<PetscReal>  field_z;    // m, per field: a deflection at z across the axis (StructurePart::FieldZ), or NaN
+  std::vector<PetscInt>   field_account; // each field's energy account (StructureAccountOf: 0 the beam's)
+  std::vector<PetscReal>  field_z; // m, per field: a deflection at z across the axis (StructurePart::FieldZ), or NaN
   std::vector<PetscInt>   face_fields;  // the fields with a z (ascending; none without a string bed)
   PetscReal               L = 0, h = 0; // m, length and node spacing
   std::vector<PetscReal>  mass;         // kg (or kg m^2), per dof (with a grip's hands)
@@ -74,10 +74,8 @@ struct BeamSystem {
   }
   // Whether field f is a section rotation (Timoshenko's field 1), which a rigid rotation turns.
   bool Rotation(PetscInt f) const { return f == 1 && beam_fields > 1; }
-  Part PartOf(PetscInt f) const
-  {
-    return f < (PetscInt)field_part.size() ? field_part[f] : Part::Beam;
-  } // a system laid out by hand: the beam's
+  // The energy account of field f (a system laid out by hand: the beam's, 0).
+  PetscInt AccountOf(PetscInt f) const { return f < (PetscInt)field_account.size() ? field_account[f] : 0; }
   // Whether field f is a part's deflection at z across the axis (StructurePart::FieldZ: a string
   // bed's): anchored on the frame's section, its held dofs move with it.
   bool Face(PetscInt f) const { return f < (PetscInt)field_z.size() && !std::isnan(field_z[f]); }
@@ -148,13 +146,12 @@ PetscInt BeamSystemDampingRow(const BeamSystem &sys, PetscInt i, PetscInt *cols,
 PetscReal BeamSystemStrainEnergy(const BeamSystem &sys, const PetscReal *y, PetscInt node_stride, PetscInt d0,
                                  PetscInt d1);
 
-// The energies (J) of each part (model/beam_theory.hpp: the beam, the twist, the barrel's wall,
-// the string bed) over the dofs [d0, d1): stored[p] the strain terms of part p owned there,
-// kinetic[p] its dofs'; they sum to BeamSystemStrainEnergy and BeamSystemKineticEnergy. y, v as
+// The energies (J) of each energy account (StructureAccountCount of them: the beam's, then the
+// parts' own) over the dofs [d0, d1): stored[a] the strain terms of account a owned there,
+// kinetic[a] its dofs'; they sum to BeamSystemStrainEnergy and BeamSystemKineticEnergy. y, v as
 // y above.
-void BeamSystemPartEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v,
-                            PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal stored[kParts],
-                            PetscReal kinetic[kParts]);
+void BeamSystemAccountEnergies(const BeamSystem &sys, const PetscReal *y, PetscInt y_stride, const PetscReal *v,
+                               PetscInt v_stride, PetscInt d0, PetscInt d1, PetscReal *stored, PetscReal *kinetic);
 
 // Kinetic energy (J) of dofs [d0, d1); v as y above.
 PetscReal BeamSystemKineticEnergy(const BeamSystem &sys, const PetscReal *v, PetscInt node_stride, PetscInt d0,
@@ -189,13 +186,11 @@ PetscReal BeamSystemFreeMass(const BeamSystem &sys);
 PetscReal BeamSystemMaxFrequencyBound(const BeamSystem &sys, const ContactCoupling &g, PetscReal k_extra,
                                       PetscReal m_extra, PetscInt *where = nullptr);
 
-// The short name of a part, as -task modes and /modes_energy label a mode by it: "bending", "roll"
-// (the frame's twisting), "wall", "strings".
-const char *BeamSystemPartName(Part p);
-// The part holding most of a motion's kinetic energy: e[r] the kinetic energy (any unit) of dof
-// dof[r] (dof == nullptr: of dof r), r < n; *share (if given) its fraction of the sum (0 if the sum is 0).
-Part BeamSystemDominantPart(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n,
-                            PetscReal *share);
+// The energy account holding most of a motion's kinetic energy (-task modes and /modes_energy label
+// a mode by its StructureAccountName): e[r] the kinetic energy (any unit) of dof dof[r] (dof ==
+// nullptr: of dof r), r < n; *share (if given) its fraction of the sum (0 if the sum is 0).
+PetscInt BeamSystemDominantAccount(const BeamSystem &sys, const PetscInt *dof, const PetscReal *e, PetscInt n,
+                                   PetscReal *share);
 
 // Words for the part of the structure a dof belongs to ("the beam's bending", "the frame's roll",
 // "the barrel wall", "the string bed", a registered part's Words()), for messages.

@@ -120,8 +120,7 @@ std::vector<BedPatchNode> BedPatch(const BedGrid &g, PetscReal x, PetscReal z, P
   return out;
 }
 
-BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, Part account,
-                          BeamDiscretization *d)
+BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, BeamDiscretization *d)
 {
   const Membrane m = StringBedMembrane(p);
   const PetscInt F = d->fields, N = g.nx, G = F + g.nz;
@@ -137,7 +136,7 @@ BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt p
   const auto term = [&](PetscInt owner, PetscReal weight, std::initializer_list<std::pair<PetscInt, PetscReal>> e,
                         std::initializer_list<std::pair<PetscInt, PetscReal>> roll) {
     StrainTerm t;
-    t.owner = owner, t.weight = weight, t.part = account;
+    t.owner = owner, t.weight = weight;
     for (const auto &q : e) t.dof[t.n] = q.first, t.b[t.n++] = q.second;
     if (phi_field >= 0)
       for (const auto &q : roll)

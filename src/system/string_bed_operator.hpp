@@ -77,8 +77,7 @@ struct BedLayout {
   BedGrid  grid;       // its grid (columns: the beam's nodes)
   PetscInt roll = -1;  // the frame's roll field (-1: none)
 };
-// Its strain terms in the energy account `account` (the bed part's, system/parts/bed.cpp).
-BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, Part account,
-                          BeamDiscretization *d);
+// (Its strain terms are the bed part's energy account: system/structure.cpp sets it.)
+BedLayout StringBedAppend(const StringBedParams &p, const BedGrid &g, PetscInt phi_field, BeamDiscretization *d);
 
 } // namespace beamimpact

@@ -42,6 +42,11 @@ const std::vector<const StructurePart *> &StructureParts()
     PetscCheckAbort(slots <= (size_t)kMaxPartSlots, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                     "the structure parts declare %zu measure slots, more than kMaxPartSlots = %d", slots,
                     kMaxPartSlots);
+    const auto accounts = 1 +
+                          std::count_if(v.begin(), v.end(), [](const StructurePart *p) { return p->AccountName(); });
+    PetscCheckAbort(accounts <= kMaxAccounts, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                    "the structure parts declare %d energy accounts with the beam's, more than kMaxAccounts = %d",
+                    (int)accounts, kMaxAccounts);
     return v;
   }();
   return parts;
@@ -54,6 +59,38 @@ const StructurePart *StructurePartFind(const char *name)
   return nullptr;
 }
 
+PetscInt StructureAccountCount()
+{
+  PetscInt n = 1;
+  for (const StructurePart *p : StructureParts()) n += p->AccountName() ? 1 : 0;
+  return n;
+}
+
+const StructurePart *StructureAccountPart(PetscInt a)
+{
+  for (const StructurePart *p : StructureParts())
+    if (p->AccountName() && --a == 0) return p;
+  return nullptr;
+}
+
+bool StructureAccountApart(PetscInt a)
+{
+  const StructurePart *p = StructureAccountPart(a);
+  return p && p->AccountApart();
+}
+
+const char *StructureAccountName(PetscInt a) { return a == 0 ? "bending" : StructureAccountPart(a)->AccountName(); }
+
+PetscInt StructureAccountOf(const StructurePart &part)
+{
+  PetscInt a = 0;
+  for (const StructurePart *p : StructureParts()) {
+    a += p->AccountName() ? 1 : 0;
+    if (p == &part) return p->AccountName() ? a : 0;
+  }
+  return 0;
+}
+
 std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d)
 {
   std::vector<PartInstance> out;
@@ -64,8 +101,10 @@ std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretiz
     s.part = part;
     for (const auto &e : p.parts.present)
       if (e.second.get() == q) s.params = e.second;
-    s.first = d->fields;
-    s.count = part->BuildAfter(*q, p, out, d, &s.built);
+    s.first             = d->fields;
+    const size_t before = d->strain.size();
+    s.count             = part->BuildAfter(*q, p, out, d, &s.built);
+    for (size_t k = before; k < d->strain.size(); ++k) d->strain[k].account = StructureAccountOf(*part);
     out.push_back(s);
   }
   return out;

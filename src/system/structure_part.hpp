@@ -6,10 +6,11 @@
 // its measures of a state and the results columns, series and summary line computed from them.
 // The system's build, the options' reader, the measures, the recorder, the outcome, the results
 // table, the run record, -help and the summary loop over the registered parts: no code outside
-// a part's file names it. The registered parts: the hands (parts/grip.cpp: no fields, a force
-// term tying the handle to the swing's frame), the frame's roll (parts/roll.cpp), the barrel wall
-// (parts/wall.cpp: the hoop oscillator or the shell), a racket's string bed (parts/bed.cpp: its
-// nodes across the face, the ball's disc on its head) and the tuned absorber (parts/absorber.cpp).
+// a part's file names it; the energy accounts (the split's parts, -task modes' families) are the
+// beam's and those the parts declare (AccountName, StructureAccountCount). The registered parts: the hands
+// (parts/grip.cpp: no fields, a force term tying the handle to the swing's frame), the frame's roll (parts/roll.cpp),
+// the barrel wall (parts/wall.cpp: the hoop oscillator or the shell), a racket's string bed (parts/bed.cpp: its nodes
+// across the face, the ball's disc on its head) and the tuned absorber (parts/absorber.cpp).
 //
 // How a part is added: docs/design.md, "Adding a structure part".
 #pragma once
@@ -54,6 +55,7 @@ struct RigidPoint {
   PetscReal x   = 0; // m
 };
 
+constexpr int kMaxAccounts  = 8; // the energy accounts of all registered parts and the beam's (fixed: no allocation)
 constexpr int kMaxPartSlots = 8; // the measure slots of all present parts together (fixed: no allocation per step)
 
 // One number a part measures on every recorded state (a sum over the owned dofs: the measures
@@ -88,7 +90,11 @@ struct PartState {
 
 // What a part's column reads: its slots at t = 0, at the end and their peaks (in Slots()'s order).
 struct PartOutputFacts {
-  const PetscReal  *start = nullptr, *end = nullptr, *peak = nullptr;
+  const PetscReal *start = nullptr, *end = nullptr, *peak = nullptr;
+  // Its energy account's (StructureAccountOf; 0 without one): the energy at the end and its largest
+  // over the steps (J, stored and kinetic; the peak NaN where not measured: the modal reference),
+  // and the flexible energy at the end, less its share of the rigid motions (J, run/energy_parts.hpp).
+  PetscReal         account_end = 0, account_peak = 0, account_flexible = 0;
   PetscReal         E_in   = 0; // J, the energy brought into the impact (the fractions' denominator)
   const PartParams *params = nullptr;
   const BeamParams *beam   = nullptr; // the scenario's beam (the wall's shell frequencies)
@@ -105,6 +111,7 @@ struct PartColumn {
   const char *name, *unit, *description;
   double (*compute)(const PartOutputFacts &f);
   const char *share = nullptr;
+  const char *after = nullptr; // the column it follows (nullptr: the part's previous one, or its ColumnsAfter())
 };
 
 // What a part's Resolve and SummaryAt see of the impact: the ball, its approach speed and the point.
@@ -194,9 +201,15 @@ public:
   // carries momentum as the beam's deflection does, and its held dofs move with their section
   // (they hold nothing in the rigid motions' null space). NaN: not such a field (the default).
   virtual PetscReal FieldZ(const PartInstance &, PetscInt) const { return NAN; }
-  // The energy account of its fields and strain terms (model/beam_theory.hpp's Part: the energy
-  // split's parts and -task modes' family label); the beam's by default.
-  virtual Part Account() const { return Part::Beam; }
+  // Its own energy account: its name, the label of the energy split's part and of -task modes' family
+  // ("wall"), and its energy's series under -monitor_energy (nullptr: none); nullptr (the default):
+  // its fields and strain terms are the beam's account. See StructureAccountOf.
+  virtual const char *AccountName() const { return nullptr; }
+  virtual const char *AccountSeries() const { return nullptr; }
+  // Whether its account is kept apart from the beam's kinetic and strain energies (the barrel wall,
+  // in series with the ball: StateMeasures::shell_energy, not in beam_kinetic and beam_strain) and
+  // its share of the compression measured (StateMeasures::wall_deflection). No by default.
+  virtual bool AccountApart() const { return false; }
   // Its dofs that a rigid motion carries as the beam's deflection at a point.
   virtual void RigidPoints(const PartInstance &, std::vector<RigidPoint> *) const { }
   // Its entries in the ball's coupling at a point of the beam (after the beam's hat entries st, z
@@ -283,7 +296,19 @@ public:
 const std::vector<const StructurePart *> &StructureParts();
 const StructurePart                      *StructurePartFind(const char *name); // nullptr if none
 
-// The parts present in p, appended to d in registry order (BeamSystemBuild).
+// The energy accounts (the parts of the energy split, -task modes' families): 0 the beam's bending
+// (and shear; its fields and terms, and those of a part without an account of its own), then one
+// for each registered part with an AccountName, in registry order; at most kMaxAccounts.
+PetscInt    StructureAccountCount();
+const char *StructureAccountName(PetscInt a);           // "bending", "roll", "wall", "strings"
+PetscInt    StructureAccountOf(const StructurePart &p); // its account (0: the beam's)
+// The part whose account a is (nullptr for the beam's).
+const StructurePart *StructureAccountPart(PetscInt a);
+// Whether account a's energy is kept apart from the beam's (its part's AccountApart: the wall's).
+bool StructureAccountApart(PetscInt a);
+
+// The parts present in p, appended to d in registry order, the strain terms each appends in its
+// account (StructureAccountOf) (BeamSystemBuild).
 std::vector<PartInstance> StructurePartsBuild(const BeamParams &p, BeamDiscretization *d);
 // Each present part's masses added, its force terms appended to sys->forces.terms and its rigid
 // points to sys->rigid_points; its measure slots numbered (BeamSystemBuild, before the assembly).

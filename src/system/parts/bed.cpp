@@ -6,15 +6,16 @@
 // frame's sections y + z phi (phi the roll's field: the bed rolls with the frame), the strings'
 // mass sigma |cell ∩ head| per node (on the frame's section where the frame holds the node). The
 // ball inside the head's outline strikes the bed: its disc of nodes (BedPatch) in place of the
-// beam's hat. Its energy account is Part::Bed. A structure part (system/structure_part.hpp): its
+// beam's hat. Its energy account is "strings". A structure part (system/structure_part.hpp): its
 // option rows (the module 'strings'), parameters, rigid-body share, the refusal without the roll,
 // the impact point's checks on the head, the patch radius at the point (the sweep's system key),
 // its fields, coupling, in-plane mains for an oblique impact, its heading and summary lines and its
 // run-record entries are this file. Its options are read with the beam's (ReadWithBeam:
 // io/beam_options.cpp's StringBedOnFrame, since a held frame sets the beam's length and holds and a
-// racket's maker strings its frame) into BeamParams::strings, which Configure copies. Its measures,
-// results columns, series, peaks and snapshots are still the outcome's, found through its fields
-// (BeamSystem::face_fields) and its account. Units: SI.
+// racket's maker strings its frame) into BeamParams::strings, which Configure copies. Its account's
+// columns (bed_energy_end, bed_fraction, bed_energy_peak) and series (bed_energy) are this file; its
+// deflection from the frame (bed_deflection_peak) and snapshots are still the outcome's, found
+// through its fields (BeamSystem::face_fields). Units: SI.
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
 #include "system/string_bed_operator.hpp"
@@ -86,7 +87,7 @@ BedGrid Outline(const StringBedParams &s) // the head's outline alone (its shape
 class Bed : public StructurePart {
 public:
   const char         *Name() const override { return "bed"; }
-  const char         *Presence() const override { return "with -strings_frame held or beam"; }
+  const char         *Presence() const override { return "with a string bed (-strings_frame held or beam)"; }
   const char         *Words() const override { return "the string bed"; }
   const OptionModule &Options() const override { return BedOptions(); }
   bool                ReadWithBeam() const override { return true; }
@@ -145,7 +146,7 @@ public:
     for (const PartInstance &p : before)
       if (roll < 0 && p.params->Rolls()) roll = p.first;
     auto b          = std::make_shared<BedBuilt>();
-    b->layout       = StringBedAppend(s, StringBedFrameGrid(s, beam.nodes, beam.length), roll, Account(), d);
+    b->layout       = StringBedAppend(s, StringBedFrameGrid(s, beam.nodes, beam.length), roll, d);
     b->head_center  = s.head_center;
     b->patch_radius = std::max<PetscReal>(0, s.patch_radius);
     *out            = b;
@@ -156,20 +157,34 @@ public:
   {
     return BuildAfter(q, beam, {}, d, out);
   }
-  PetscReal FieldZ(const PartInstance &s, PetscInt f) const override { return B(s).layout.grid.Z(f - s.first); }
-  Part      Account() const override { return Part::Bed; }
-  bool      CoupleInstead(const PartInstance &s, const BeamSystem &sys, PetscReal x, PetscReal z,
-                          ContactCoupling *g) const override;
+  PetscReal   FieldZ(const PartInstance &s, PetscInt f) const override { return B(s).layout.grid.Z(f - s.first); }
+  const char *AccountName() const override { return "strings"; }
+  const char *AccountSeries() const override { return "bed_energy"; }
+  bool        CoupleInstead(const PartInstance &s, const BeamSystem &sys, PetscReal x, PetscReal z,
+                            ContactCoupling *g) const override;
 
-  std::vector<const char *> SummaryColumns() const override
+  // Its energy account's columns, where the table had them (after the wall's).
+  const char             *ColumnsAfter() const override { return "hoop_frequency"; }
+  std::vector<PartColumn> Columns() const override
   {
-    return {"bed_deflection_peak", "bed_energy_peak", "bed_energy_end", "bed_fraction"};
+    return {
+      {"bed_energy_end", "J",
+       "the string bed's energy at the end (its strain relative to the frame and its strings' kinetic energy)",
+       [](const PartOutputFacts &f) -> double { return f.account_end; }},
+      {"bed_fraction", "1",
+       "the string bed's vibration at the end / E_in: bed_energy_end less its share of the rigid motions",
+       [](const PartOutputFacts &f) -> double { return f.account_flexible / f.E_in; }, "strings"},
+      {"bed_energy_peak", "J", "the string bed's largest energy over the steps (NaN from the modal reference)",
+       [](const PartOutputFacts &f) -> double { return f.account_peak; }},
+    };
   }
+  std::vector<const char *> SummaryColumns() const override { return {"bed_deflection_peak"}; }
+  // c: bed_energy_end, bed_fraction, bed_energy_peak, bed_deflection_peak.
   std::string SummaryAt(const PartParams &, const std::vector<double> &c, const PartPoint &at) const override
   {
     return PetscFmt("strings: struck at x %g m, z %g m; the bed's largest deflection from its frame %.4e m, its "
                     "energy %.4e J at most, %.4e J at the end (its vibration %.4f of E_in)",
-                    (double)at.x, (double)at.z, c[0], c[1], c[2], c[3]);
+                    (double)at.x, (double)at.z, c[3], c[2], c[0], c[1]);
   }
   bool SummaryFirst() const override { return true; }
   void Record(const PartParams                                &q, const BeamParams &,

@@ -1,14 +1,15 @@
 // The frame's roll about its own axis (-beam_torsion; docs/model.md section 16, the physics in
 // model/torsion.hpp): one more field per node after the beam's theory, the roll phi (rad), with
-// G J (phi')^2/2 per length (its strain terms, the energy account Part::Twist) and rho J phi_t^2/2
+// G J (phi')^2/2 per length (its strain terms, in its energy account "roll") and rho J phi_t^2/2
 // (its lumped masses, kg m^2). A racket's head rolls under a hit off the axis (-impact_z): the ball
 // couples to the sections' roll times z at the point's two nodes. A rigid roll about the axis turns
 // the field at the roll's rate (PartParams::Rolls: BeamSystem::RollField, the rigid motions, the
 // roll momentum); the rigid body's roll inertia is int rho J (and a string bed's sigma z^2 on the
 // frame, which rolls with it). A structure part (system/structure_part.hpp): its option rows,
-// checks, fields, coupling, run-record entries, summary line and description are this file.
-// (Its results columns, series and measures, twist_energy and the roll momentum, are still the
-// outcome's: run/results_table.cpp, run/measures.cpp.) Units: SI.
+// checks, fields, coupling, energy account (its columns twist_energy_end and twist_fraction, its
+// series twist_energy), run-record entries, summary line and description are this file. (Its rigid
+// roll's columns and the roll momentum are still the outcome's: run/results_table.cpp,
+// run/measures.cpp.) Units: SI.
 #include "model/torsion.hpp"
 #include "system/beam_system.hpp"
 #include "system/structure_part.hpp"
@@ -103,7 +104,8 @@ public:
     TorsionAppend(P(q).torsion, beam, d);
     return 1;
   }
-  Part Account() const override { return Part::Twist; }
+  const char *AccountName() const override { return "roll"; }
+  const char *AccountSeries() const override { return "twist_energy"; }
   // Off the axis (z != 0): the sections' roll at the point's two nodes times z (held: weight 0).
   void Couple(const PartInstance &s, const BeamSystem &sys, const ImpactStencil &st, PetscReal z,
               ContactCoupling *g) const override
@@ -112,17 +114,29 @@ public:
     g->dof[g->n] = sys.Dof(st.j, s.first), g->w[g->n] = sys.held[g->dof[g->n]] ? 0.0 : st.w * z, g->n++;
     g->dof[g->n] = sys.Dof(st.j + 1, s.first), g->w[g->n] = sys.held[g->dof[g->n]] ? 0.0 : (1.0 - st.w) * z, g->n++;
   }
-  std::vector<const char *> SummaryColumns() const override
+  // Its energy account's columns, where the table had them.
+  const char             *ColumnsAfter() const override { return "bed_deflection_peak"; }
+  std::vector<PartColumn> Columns() const override
   {
-    return {"roll_rate_end", "roll_fraction", "twist_energy_end"};
+    return {
+      {"twist_energy_end", "J",
+       "the frame's roll energy at the end: the twist's strain and the sections' spin rho J phi_t^2/2 (a string "
+       "bed's roll is in bed_energy_end)",
+       [](const PartOutputFacts &f) -> double { return f.account_end; }},
+      {"twist_fraction", "1",
+       "the frame's twisting at the end / E_in: twist_energy_end less its share of the rigid roll",
+       [](const PartOutputFacts &f) -> double { return f.account_flexible / f.E_in; }, "twist"},
+    };
   }
-  // After a hit on a structure free to roll (roll_rate_end applies: no held dof, a moving ball).
+  std::vector<const char *> SummaryColumns() const override { return {"roll_rate_end", "roll_fraction"}; }
+  // After a hit on a structure free to roll (roll_rate_end applies: no held dof, a moving ball): c is
+  // twist_energy_end, twist_fraction, roll_rate_end, roll_fraction.
   std::string Summary(const PartParams &, const std::vector<double> &c) const override
   {
-    if (std::isnan(c[0])) return "";
+    if (std::isnan(c[2])) return "";
     return Fmt("roll: the frame rolls at %.4f rad/s about its axis after the hit, %.4f of E_in; its twist and spin "
                "hold %.4e J at the end",
-               Shown(c[0], 4), Shown(c[1], 4), c[2]);
+               Shown(c[2], 4), Shown(c[3], 4), c[0]);
   }
   void Record(const PartParams &q, const BeamParams &beam,
               std::vector<std::pair<const char *, PetscReal>> *out) const override

@@ -4,12 +4,11 @@
 // as a thin cylindrical shell (-beam_shell; model/shell.hpp: three fields U_n, V_n, W_n per
 // harmonic n where the profile is hollow, the ball's load a patch of radius a on each W_n). They
 // exclude each other and share the wall's columns (run/results_table.cpp: shell_energy_end,
-// wall_fraction, shell_energy_peak, wall_deflection_peak, wall_deflection_large) and its energy
-// account (Part::Wall). A structure part (system/structure_part.hpp): its option rows and checks,
-// the patch radius at the impact point, its fields, coupling, -task modes' family detail (the
-// harmonic n; the hoop counts as n = 2), the shell's snapshots, its column hoop_frequency (after
-// wall_deflection_large) and the summary's warning on a displacement beyond the linear range are
-// this file. Units: SI.
+// shell_energy_peak, wall_deflection_peak, wall_deflection_large; its own wall_fraction) and its
+// energy account ("wall", kept apart from the beam's: AccountApart). A structure part (system/structure_part.hpp): its
+// option rows and checks, the patch radius at the impact point, its fields, coupling, -task modes' family detail (the
+// harmonic n; the hoop counts as n = 2), the shell's snapshots, its column hoop_frequency (after wall_deflection_large)
+// and the summary's warning on a displacement beyond the linear range are this file. Units: SI.
 #include "model/barrel.hpp"
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
@@ -199,10 +198,11 @@ public:
     *out = w;
     return d->fields - first;
   }
-  Part     Account() const override { return Part::Wall; }
-  void     Couple(const PartInstance &s, const BeamSystem &sys, const ImpactStencil &st, PetscReal,
-                  ContactCoupling *g) const override;
-  PetscInt FamilyDetail(const PartInstance &s, PetscInt f) const override
+  const char *AccountName() const override { return "wall"; }
+  bool        AccountApart() const override { return true; }
+  void        Couple(const PartInstance &s, const BeamSystem &sys, const ImpactStencil &st, PetscReal,
+                     ContactCoupling *g) const override;
+  PetscInt    FamilyDetail(const PartInstance &s, PetscInt f) const override
   {
     const WallBuilt &w = B(s);
     return w.hoop_dof >= 0 ? 2 : w.shell.harmonics[(f - w.shell.first) / 3];
@@ -231,6 +231,8 @@ public:
          const WallParams &w = P(*f.params);
          return w.shell_on ? ShellLowestFrequency(w.shell, *f.beam, 2) : w.hoop.frequency;
        }},
+      {"wall_fraction", "1", "shell_energy_end / E_in",
+       [](const PartOutputFacts &f) -> double { return f.account_flexible / f.E_in; }, "wall", "shell_energy_end"},
     };
   }
   std::vector<const char *> SummaryColumns() const override
@@ -276,14 +278,14 @@ bool Wall::Resolve(const PartParams &q, const BeamParams &beam, const PartPoint 
   return true;
 }
 
-// c: hoop_frequency, wall_deflection_peak, wall_deflection_large. The flag set: the displacement under
+// c: hoop_frequency, wall_fraction, wall_deflection_peak, wall_deflection_large. The flag set: the displacement under
 // the ball beyond kWallDeflectionLimit of the wall's midsurface radius at the point, and the options
 // that set the wall's stiffness.
 std::string Wall::Warning(const PartParams &q, const BeamParams &beam, const std::vector<double> &c,
                           const PartPoint &at) const
 {
-  if (c[2] == 0) return "";
-  const PetscReal R = ShellRadiusAt(beam, at.x), peak = c[1];
+  if (c[3] == 0) return "";
+  const PetscReal R = ShellRadiusAt(beam, at.x), peak = c[2];
   return Fmt("warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface "
              "radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the wall's model is linear (its "
              "displacements small against its thickness and radius); check %s and -ball_speed %g m/s",
