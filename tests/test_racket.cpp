@@ -553,7 +553,8 @@ TEST(Racket, MirrorSplitModesAreTheWholeDecompositions)
   const ImpactResult b = RunWith(PETSC_COMM_WORLD, sc, {{"-ts_type", "modal"}, {"-modal_mirror", "off"}});
   EXPECT_NEAR(a.acor, b.acor, 1e-12);
   EXPECT_NEAR(a.peak_force, b.peak_force, 1e-12 * b.peak_force);
-  EXPECT_NEAR(ColumnOf(a, "bed_deflection_peak"), ColumnOf(b, "bed_deflection_peak"), 1e-12 * ColumnOf(b, "bed_deflection_peak"));
+  EXPECT_NEAR(ColumnOf(a, "bed_deflection_peak"), ColumnOf(b, "bed_deflection_peak"),
+              1e-12 * ColumnOf(b, "bed_deflection_peak"));
   std::shared_ptr<const BeamModes> beam;
   all.mirror = true;
   ASSERT_EQ(0, BeamModesShared(PETSC_COMM_SELF, SystemOf(test::AluminiumBeam(1.1, 41, Support::Free, Support::Free)),
@@ -576,7 +577,8 @@ TEST(Racket, SampledPeaksAreTheSteppedOnes)
   ASSERT_GT(stepped.series.account_energy.size(), (size_t)AccountOfPart("bed"));
   ASSERT_FALSE(stepped.series.account_energy[AccountOfPart("bed")].empty()); // the energy monitor ran: a state at every step
   ASSERT_GT(ColumnOf(stepped, "bed_deflection_peak"), 0.0);
-  EXPECT_NEAR(ColumnOf(sampled, "bed_deflection_peak"), ColumnOf(stepped, "bed_deflection_peak"), 1e-12 * ColumnOf(stepped, "bed_deflection_peak"));
+  EXPECT_NEAR(ColumnOf(sampled, "bed_deflection_peak"), ColumnOf(stepped, "bed_deflection_peak"),
+              1e-12 * ColumnOf(stepped, "bed_deflection_peak"));
   EXPECT_NEAR(ColumnOf(sampled, "bed_energy_peak"), ColumnOf(stepped, "bed_energy_peak"), 1e-12 * ColumnOf(stepped, "bed_energy_peak"));
   EXPECT_EQ(sampled.acor, stepped.acor);
   EXPECT_GT(sampled.steps, 2 * 256);
@@ -599,7 +601,8 @@ TEST(Racket, SampledDriveIsTheSteppedOne)
   EXPECT_EQ(test::Col(sampled, "spin"), test::Col(stepped, "spin"));
   EXPECT_EQ(test::Col(sampled, "launch_angle"), test::Col(stepped, "launch_angle"));
   EXPECT_EQ(test::Col(sampled, "exit_speed"), test::Col(stepped, "exit_speed"));
-  EXPECT_NEAR(ColumnOf(sampled, "bed_deflection_peak"), ColumnOf(stepped, "bed_deflection_peak"), 1e-12 * ColumnOf(stepped, "bed_deflection_peak"));
+  EXPECT_NEAR(ColumnOf(sampled, "bed_deflection_peak"), ColumnOf(stepped, "bed_deflection_peak"),
+              1e-12 * ColumnOf(stepped, "bed_deflection_peak"));
   EXPECT_NEAR(ColumnOf(sampled, "bed_energy_peak"), ColumnOf(stepped, "bed_energy_peak"),
               1e-12 * ColumnOf(stepped, "bed_energy_peak"));
 }

@@ -196,7 +196,8 @@ TEST(Shell, ImpactInvariantsAndEveryTool)
   ImpactResult       ref;
   ASSERT_EQ(0, ModalReferenceRun(Scenario(beam, ball, ip), &ref));
   PetscPrintf(PETSC_COMM_WORLD, "shell impact: acor rk4 %.10f, modal %.10f, reference %.10f; without the shell %.10f; wall peak %.3g m, energy %.3g J; contact %.4g ms against %.4g\n",
-              (double)r.acor, (double)md.acor, (double)ref.acor, (double)b.acor, ColumnOf(r, "wall_deflection_peak"), ColumnOf(r, "shell_energy_peak"), (double)(r.contact_time * 1e3),
+              (double)r.acor, (double)md.acor, (double)ref.acor, (double)b.acor, ColumnOf(r, "wall_deflection_peak"),
+              ColumnOf(r, "shell_energy_peak"), (double)(r.contact_time * 1e3),
               (double)(b.contact_time * 1e3));
   EXPECT_LT(std::abs(r.energy_error), 1e-8);
   EXPECT_LT(std::abs(r.linear_momentum_error), 1e-12);
@@ -294,7 +295,8 @@ TEST(Shell, LoadPatch)
   const ImpactResult r = RunImpact(PETSC_COMM_WORLD, beam, ball, ip, rk4);
   ImpactResult       ref;
   ASSERT_EQ(0, ModalReferenceRun(Scenario(beam, ball, ip), &ref));
-  PetscPrintf(PETSC_COMM_WORLD, "shell impact with a 10 mm patch: acor rk4 %.10f, reference %.10f; wall peak %.3g m\n", (double)r.acor, (double)ref.acor, (double)ColumnOf(r, "wall_deflection_peak"));
+  PetscPrintf(PETSC_COMM_WORLD, "shell impact with a 10 mm patch: acor rk4 %.10f, reference %.10f; wall peak %.3g m\n", (double)r.acor,
+              (double)ref.acor, ColumnOf(r, "wall_deflection_peak"));
   EXPECT_LT(std::abs(r.energy_error), 1e-8);
   EXPECT_LT(std::abs(r.linear_momentum_error), 1e-12);
   EXPECT_LT(std::abs(r.angular_momentum_error), 1e-12);
