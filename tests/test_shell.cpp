@@ -196,13 +196,14 @@ TEST(Shell, ImpactInvariantsAndEveryTool)
   ImpactResult       ref;
   ASSERT_EQ(0, ModalReferenceRun(Scenario(beam, ball, ip), &ref));
   PetscPrintf(PETSC_COMM_WORLD, "shell impact: acor rk4 %.10f, modal %.10f, reference %.10f; without the shell %.10f; wall peak %.3g m, energy %.3g J; contact %.4g ms against %.4g\n",
-              (double)r.acor, (double)md.acor, (double)ref.acor, (double)b.acor, (double)r.wall_deflection_peak, (double)r.shell_energy_peak, (double)(r.contact_time * 1e3),
+              (double)r.acor, (double)md.acor, (double)ref.acor, (double)b.acor, ColumnOf(r, "wall_deflection_peak"),
+              ColumnOf(r, "shell_energy_peak"), (double)(r.contact_time * 1e3),
               (double)(b.contact_time * 1e3));
   EXPECT_LT(std::abs(r.energy_error), 1e-8);
   EXPECT_LT(std::abs(r.linear_momentum_error), 1e-12);
   EXPECT_LT(std::abs(r.angular_momentum_error), 1e-12);
-  EXPECT_GT(r.wall_deflection_peak, 0);
-  EXPECT_GT(r.shell_energy_peak, 1e-3 * 0.5 * ball.mass * ball.speed * ball.speed);
+  EXPECT_GT(ColumnOf(r, "wall_deflection_peak"), 0);
+  EXPECT_GT(ColumnOf(r, "shell_energy_peak"), 1e-3 * 0.5 * ball.mass * ball.speed * ball.speed);
   EXPECT_NEAR(r.acor, ref.acor, 1e-7);
   EXPECT_NEAR(md.acor, ref.acor, 1e-6);
   EXPECT_GT(r.contact_time, b.contact_time);
@@ -294,7 +295,8 @@ TEST(Shell, LoadPatch)
   const ImpactResult r = RunImpact(PETSC_COMM_WORLD, beam, ball, ip, rk4);
   ImpactResult       ref;
   ASSERT_EQ(0, ModalReferenceRun(Scenario(beam, ball, ip), &ref));
-  PetscPrintf(PETSC_COMM_WORLD, "shell impact with a 10 mm patch: acor rk4 %.10f, reference %.10f; wall peak %.3g m\n", (double)r.acor, (double)ref.acor, (double)r.wall_deflection_peak);
+  PetscPrintf(PETSC_COMM_WORLD, "shell impact with a 10 mm patch: acor rk4 %.10f, reference %.10f; wall peak %.3g m\n", (double)r.acor,
+              (double)ref.acor, ColumnOf(r, "wall_deflection_peak"));
   EXPECT_LT(std::abs(r.energy_error), 1e-8);
   EXPECT_LT(std::abs(r.linear_momentum_error), 1e-12);
   EXPECT_LT(std::abs(r.angular_momentum_error), 1e-12);
@@ -427,9 +429,10 @@ TEST(WallPart, RegistryGivesTheBarrelWall)
   EXPECT_NE(why.find("-beam_shell with -barrel_hoop_frequency is not allowed"), std::string::npos) << why;
 }
 
-// The wall's outputs are its own (issue 35): hoop_frequency is its PartColumn, right after
-// wall_deflection_large where the table had it, applying with the wall (its Presence()): the
-// shell's n = 2 band frequency (ShellLowestFrequency) or the hoop's given f_h; and the summary's
+// The wall's outputs are its own (issue 35): its six columns are its PartColumns, after the hands'
+// where the table had them, applying with the wall (its Presence()) but the flag wall_deflection_large
+// (always, an integer: set beyond a quarter of the midsurface radius at the impact point);
+// hoop_frequency is the shell's n = 2 band frequency (ShellLowestFrequency) or the hoop's given f_h; the summary's
 // warning on a displacement beyond a quarter of the midsurface radius (R = 32.1 mm on kBarrel) is
 // its Warning, naming the options that set the wall's stiffness (the hoop's or the shell's).
 TEST(WallPart, OwnsHoopFrequencyAndTheWarning)
@@ -445,6 +448,13 @@ TEST(WallPart, OwnsHoopFrequencyAndTheWarning)
   ASSERT_NE(col, t.begin());
   EXPECT_EQ(col->owner, part) << "the wall part's own column";
   EXPECT_STREQ((col - 1)->name, "wall_deflection_large") << "at its place in the table";
+  const char *own[] = {"shell_energy_end",     "wall_fraction",         "shell_energy_peak",
+                       "wall_deflection_peak", "wall_deflection_large", "hoop_frequency"};
+  EXPECT_STREQ((at_name(own[0]) - 1)->name, "hands_fraction") << "after the hands' columns";
+  for (size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(at_name(own[k]), at_name(own[0]) + (long)k) << own[k];
+    EXPECT_EQ(at_name(own[k])->owner, part) << own[k] << ": the wall part's own column";
+  }
   EXPECT_STREQ(col->applies_text, "with -barrel_hoop_frequency or -beam_shell");
   EXPECT_STREQ(col->unit, "Hz");
   ASSERT_NE(col->part_compute, nullptr);
@@ -456,20 +466,29 @@ TEST(WallPart, OwnsHoopFrequencyAndTheWarning)
   EXPECT_EQ(col->part_compute(f), ShellLowestFrequency(BarrelShell(), shell, 2)) << "the shell's n = 2 alone";
   f.params = hoop.parts.Find("wall"), f.beam = &hoop;
   EXPECT_EQ(col->part_compute(f), 1234.0) << "the given f_h";
+  const auto large = at_name("wall_deflection_large");
+  EXPECT_TRUE(large->integer);
+  EXPECT_STREQ(large->applies_text, "always");
+  EXPECT_TRUE(large->Applies(Scenario())) << "a flag applies without the wall too (0 there)";
+  f.impact_x              = 0.15; // R = kBarrel.R there
+  f.apart_deflection_peak = 0.26 * kBarrel.R;
+  EXPECT_EQ(large->part_compute(f), 1.0) << "beyond a quarter of R";
+  f.apart_deflection_peak = 0.24 * kBarrel.R;
+  EXPECT_EQ(large->part_compute(f), 0.0) << "within a quarter of R";
 
   BallParams ball = Superball();
   ball.speed      = 30;
   PartPoint at;
   at.ball = &ball, at.x = 0.15;
   const double R = kBarrel.R, f_h = 1234;
-  EXPECT_EQ(part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.1, 0.5 * R, 0}, at), "") << "not flagged: no warning";
-  const std::string wh = part->Warning(*hoop.parts.Find("wall"), hoop, {f_h, 0.1, 0.5 * R, 1}, at);
+  EXPECT_EQ(part->Warning(*hoop.parts.Find("wall"), hoop, {0.2, 0.1, 0.3, 0.5 * R, 0, f_h}, at), "") << "not flagged: no warning";
+  const std::string wh = part->Warning(*hoop.parts.Find("wall"), hoop, {0.2, 0.1, 0.3, 0.5 * R, 1, f_h}, at);
   EXPECT_NE(wh.find("warning: the barrel wall's largest displacement under the ball, 0.01605 m, is 0.5 times its "
                     "midsurface radius (R = 0.0321 m at x = 0.15 m), beyond 0.25 of it"),
             std::string::npos)
     << wh;
   EXPECT_NE(wh.find("check -barrel_hoop_frequency and -barrel_hoop_mass and -ball_speed 30 m/s"), std::string::npos) << wh;
-  const std::string ws = part->Warning(*shell.parts.Find("wall"), shell, {1600, 0.1, 0.5 * R, 1}, at);
+  const std::string ws = part->Warning(*shell.parts.Find("wall"), shell, {0.2, 0.1, 0.3, 0.5 * R, 1, 1600}, at);
   EXPECT_NE(ws.find("check -shell_youngs_modulus, -barrel_wall_thickness, -shell_contact_radius and -ball_speed 30"),
             std::string::npos)
     << ws;

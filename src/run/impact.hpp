@@ -154,8 +154,9 @@ struct MonitorPeaks {
   PetscReal segment_kinetic = 0, segment_kinetic_time = 0; // J, s: -monitor_segment
   PetscReal frame_force = 0, frame_force_time = 0; // N, s: the largest |force of the bat on the swing's frame| (-grip)
   // The barrel wall (-barrel_hoop_frequency or -beam_shell): its largest displacement under the ball
-  // (m, into the bat) and energy (J) over the steps; NaN where no stepper measured them (the modal reference).
-  PetscReal wall_deflection = NAN, shell_energy = NAN;
+  // (m, into the bat) over the steps (its energy's: its account's); NaN where no stepper measured it
+  // (the modal reference).
+  PetscReal wall_deflection = NAN;
   // A racket's string bed (-strings_frame): its largest deflection from the frame (m) over the steps;
   // each energy account's largest energy (J, StateMeasures::account_energy: a present part's own); NaN
   // where no stepper measured them (the modal reference).
@@ -228,16 +229,9 @@ struct ImpactOutcome {
   PetscReal recoil_factor = 0, bbcor = 0;
   // With -monitor_segment: the peak kinetic energy (J) of the segment and when (s).
   PetscReal segment_kinetic_peak = 0, segment_kinetic_peak_time = 0;
-  // With -barrel_hoop_frequency or -beam_shell: the wall's energy at the end (J; what it did not give back),
-  // its largest energy and displacement over the steps (J, m into the bat).
-  PetscReal shell_energy_end = 0, shell_energy_peak = 0, wall_deflection_peak = 0;
-  PetscBool wall_deflection_large = PETSC_FALSE; // wall_deflection_peak > kWallDeflectionLimit R (model/shell.hpp):
-                                                 // physically absurd
-  // A racket (-strings_frame, -beam_torsion): the string bed's largest deflection from the frame
-  // (m); a free frame's roll rate at the end (rad/s) and its rigid roll energy L_x^2 / 2 I_x as a
-  // fraction of E_in; the angular momentum about the frame's axis, its change over the run / (m_b
-  // v_i L). (The bed's and the roll's energies and fractions are their parts' columns.)
-  PetscReal bed_deflection_peak = 0;
+  // A racket (-beam_torsion): a free frame's roll rate at the end (rad/s) and its rigid roll energy
+  // L_x^2 / 2 I_x as a fraction of E_in; the angular momentum about the frame's axis, its change over
+  // the run / (m_b v_i L). (The wall's, the bed's and the roll's own columns are their parts'.)
   PetscReal roll_rate_end = 0, roll_fraction = 0, roll_momentum_error = 0;
   // The rigid-body model, Eq. (11), for a free beam at rest (no support, pivot, grip or swing):
   // its ACOR with the loss fraction ImpactParams::rigid_loss_fraction, and the loss fraction

@@ -88,11 +88,8 @@ void ImpactRecorder::KeepPeaks(const StateMeasures &m, PetscReal t)
   for (size_t k = 0; k < part_peak_.size(); ++k)
     if (part_peak_[k] && !(std::abs(m.part_slot[k]) <= peaks_->part_peak[k]))
       peaks_->part_peak[k] = std::abs(m.part_slot[k]);
-  if (wall_) {
-    if (!(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
-      peaks_->wall_deflection = std::abs(m.wall_deflection);
-    if (!(m.shell_energy <= peaks_->shell_energy)) peaks_->shell_energy = m.shell_energy;
-  }
+  if (wall_ && !(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
+    peaks_->wall_deflection = std::abs(m.wall_deflection);
   if (!ctx_.sys->face_fields.empty()) { // a racket's string bed (its fields across the face)
     if (!(m.bed_deflection <= peaks_->bed_deflection)) peaks_->bed_deflection = m.bed_deflection;
   }

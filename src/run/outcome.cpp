@@ -42,7 +42,7 @@ void RigidPartAtEnd(const BeamSystem &S, OutcomeFacts *f)
 }
 
 // A registered part's column: computed from its slots and its account's energies where the part is
-// in the system, else NaN.
+// in the system, else NaN (a flag 0).
 double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const OutcomeFacts &f)
 {
   for (const PartInstance &p : sys.parts) {
@@ -55,6 +55,9 @@ double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const Outco
     pf.account_end           = a > 0 ? f.end.account_energy[a] : 0;
     pf.account_peak          = a > 0 ? f.peaks->account_energy[a] : 0;
     pf.account_flexible      = a > 0 ? f.split.flexible[a] : 0;
+    pf.apart_deflection_peak = f.peaks->wall_deflection;
+    pf.face_deflection_peak  = f.peaks->bed_deflection;
+    pf.impact_x              = f.sc->impact.x;
     pf.E_in                  = f.E_in;
     pf.params                = p.params.get();
     pf.beam                  = &f.sc->beam;
@@ -62,7 +65,7 @@ double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const Outco
     pf.frame_force_peak_time = f.peaks->frame_force_time;
     return c.part_compute(pf);
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  return c.integer ? 0 : std::numeric_limits<double>::quiet_NaN(); // a flag always applies
 }
 
 } // namespace

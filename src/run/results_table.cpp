@@ -2,7 +2,6 @@
 #include "run/results_table.hpp"
 
 #include "model/rigid.hpp"
-#include "model/shell.hpp"
 #include "run/impact_point.hpp"
 #include "run/stage.hpp"
 #include "run/scenario.hpp"
@@ -35,10 +34,7 @@ bool ResultFreeBeamAtRest(const Scenario &sc)
 
 bool ResultFreePivot(const Scenario &sc) { return sc.beam.has_pivot && PivotHeldText(sc).empty(); }
 
-bool ResultBarrelWall(const Scenario &sc) { return sc.beam.parts.Has("wall"); } // system/parts/wall.cpp
-
 bool ResultSegment(const Scenario &sc) { return sc.monitor.segment; }
-bool ResultStringBed(const Scenario &sc) { return sc.beam.parts.Has("bed"); } // system/parts/bed.cpp
 bool ResultTwist(const Scenario &sc) { return sc.beam.parts.Rolls(); }
 bool ResultTwistInvariant(const Scenario &sc) { return ResultTwist(sc) && ResultMomentumInvariant(sc); }
 bool ResultTwistNoHeld(const Scenario &sc) { return ResultTwist(sc) && ResultNoHeldDof(sc) && sc.ball.speed > 0; }
@@ -55,7 +51,10 @@ std::string PivotHeldText(const Scenario &sc)
   return held;
 }
 
-bool ResultColumn::Applies(const Scenario &sc) const { return owner ? sc.beam.parts.Has(owner->Name()) : applies(sc); }
+bool ResultColumn::Applies(const Scenario &sc) const
+{
+  return owner && !integer ? sc.beam.parts.Has(owner->Name()) : applies(sc);
+}
 
 double ResultColumn::Get(const ImpactResult &r) const
 {
@@ -301,32 +300,6 @@ std::vector<ResultColumn> OutcomeColumns()
       [](F f) -> double { return PivotBBCOR(RigOf(f), CollisionEfficiency(f)); },
       "bat-ball COR e_A (1 + r) + r of the pivoted rig"),
     Real(
-      "shell_energy_end", "J", &R::shell_energy_end, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
-      [](F f) -> double { return f.end.shell_energy; },
-      "the barrel wall's energy at the end (stored and kinetic): what it did not give back"),
-    Real(
-      "shell_energy_peak", "J", &R::shell_energy_peak, ResultBarrelWall, "with -barrel_hoop_frequency or -beam_shell",
-      [](F f) -> double { return f.peaks->shell_energy; },
-      "the barrel wall's largest energy over the steps (NaN from the modal reference)"),
-    Real(
-      "wall_deflection_peak", "m", &R::wall_deflection_peak, ResultBarrelWall,
-      "with -barrel_hoop_frequency or -beam_shell", [](F f) -> double { return f.peaks->wall_deflection; },
-      "the barrel wall's largest displacement under the ball over the steps (NaN from the modal reference)"),
-    Flag(
-      "wall_deflection_large", &R::wall_deflection_large,
-      [](F f) -> double {
-        const BeamParams &b = f.sc->beam;
-        const PetscReal   R = ResultBarrelWall(*f.sc) ? ShellRadiusAt(b, f.sc->impact.x) : 0;
-        return R > 0 && f.peaks->wall_deflection > kWallDeflectionLimit * R ? 1 : 0;
-      },
-      "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear "
-      "wall far outside its range, physically absurd"),
-    Real(
-      "bed_deflection_peak", "m", &R::bed_deflection_peak, ResultStringBed, kStrings,
-      [](F f) -> double { return f.peaks->bed_deflection; },
-      "the string bed's largest deflection from its frame, max |w - y - z phi| over its nodes and the steps (NaN from "
-      "the modal reference)"),
-    Real(
       "roll_rate_end", "rad/s", &R::roll_rate_end, ResultTwistNoHeld,
       "with -beam_torsion, a moving ball and no held dof",
       [](F f) -> double { return f.inertia_roll > 0 ? f.moment_roll / f.inertia_roll : 0; },
@@ -416,6 +389,7 @@ std::vector<ResultColumn> BuildTable()
         at = std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, pc.after); }) +
              1;
       ResultColumn c{pc.name, pc.unit, pc.description, nullptr, p->Presence()};
+      if (pc.integer) c.applies = ResultAlways, c.applies_text = kAlways, c.integer = true; // a flag: always
       c.owner        = p;
       c.part_compute = pc.compute;
       c.keyed        = keyed++;

@@ -69,9 +69,7 @@ bool ResultNoHeldDof(const Scenario &sc);         // no end clamped or pinned, n
 bool ResultMomentumInvariant(const Scenario &sc); // no held dof, no grip, no mass-proportional damping
 bool ResultFreeBeamAtRest(const Scenario &sc);    // no held dof, no grip, no swing (Eq. 11)
 bool ResultFreePivot(const Scenario &sc);         // -beam_pivot and no other support or grip: the rig turns freely
-bool ResultStringBed(const Scenario &sc);         // -strings_frame held or beam
 bool ResultTwist(const Scenario &sc);             // -beam_torsion
-bool ResultBarrelWall(const Scenario &sc);        // -barrel_hoop_frequency or -beam_shell
 bool ResultSegment(const Scenario &sc);           // -monitor_segment
 
 // Why a pivoted rig does not turn freely about its pivot (the supports and grip that also hold
@@ -104,7 +102,7 @@ struct ResultColumn {
   double (*stage_compute)(const StageFacts &f)     = nullptr;
   PetscInt keyed                                   = -1;
 
-  bool   Applies(const Scenario &sc) const;    // applies(sc), or the owner present in sc.beam
+  bool   Applies(const Scenario &sc) const;    // applies(sc), or the owner present in sc.beam (a flag: always)
   double Get(const ImpactResult &r) const;     // the value as a double
   void   Set(ImpactResult *r, double v) const; // (the outcome's writes)
 };

@@ -94,10 +94,16 @@ struct PartOutputFacts {
   // Its energy account's (StructureAccountOf; 0 without one): the energy at the end and its largest
   // over the steps (J, stored and kinetic; the peak NaN where not measured: the modal reference),
   // and the flexible energy at the end, less its share of the rigid motions (J, run/energy_parts.hpp).
-  PetscReal         account_end = 0, account_peak = 0, account_flexible = 0;
-  PetscReal         E_in   = 0; // J, the energy brought into the impact (the fractions' denominator)
-  const PartParams *params = nullptr;
-  const BeamParams *beam   = nullptr; // the scenario's beam (the wall's shell frequencies)
+  PetscReal account_end = 0, account_peak = 0, account_flexible = 0;
+  // The largest displacement under the ball of an account kept apart (AccountApart: the wall's,
+  // StateMeasures::wall_deflection) and the largest deflection of the face's fields from their frame
+  // (the bed's, StateMeasures::bed_deflection) over the steps (m; NaN where not measured: the modal
+  // reference).
+  PetscReal         apart_deflection_peak = 0, face_deflection_peak = 0;
+  PetscReal         impact_x = 0; // m, the impact point along the beam
+  PetscReal         E_in     = 0; // J, the energy brought into the impact (the fractions' denominator)
+  const PartParams *params   = nullptr;
+  const BeamParams *beam     = nullptr; // the scenario's beam (the wall's shell frequencies)
   // The largest |force of the structure on the swing's frame| over the steps (N, FrameMeasures::
   // force) and when (s): 0 where no part ties to the frame.
   PetscReal frame_force_peak = 0, frame_force_peak_time = 0;
@@ -106,12 +112,14 @@ struct PartOutputFacts {
 // A results column a part registers: name, unit ("1": dimensionless), description (one line) and
 // how the outcome computes it. It applies where the part is present (StructurePart::Presence),
 // NaN elsewhere. `share`: a share of E_in, its short name in the summary's energy line (nullptr:
-// not a share; run/results_table.hpp's ResultColumn::share).
+// not a share; run/results_table.hpp's ResultColumn::share). `integer`: a flag (0 or 1), an integer
+// dataset that, as the table's counts and flags, always applies: 0 where the part is absent.
 struct PartColumn {
   const char *name, *unit, *description;
   double (*compute)(const PartOutputFacts &f);
-  const char *share = nullptr;
-  const char *after = nullptr; // the column it follows (nullptr: the part's previous one, or its ColumnsAfter())
+  const char *share   = nullptr;
+  const char *after   = nullptr; // the column it follows (nullptr: the part's previous one, or its ColumnsAfter())
+  bool        integer = false;
 };
 
 // What a part's Resolve and SummaryAt see of the impact: the ball, its approach speed and the point.

@@ -12,10 +12,11 @@
 // its fields, coupling, in-plane mains for an oblique impact, its heading and summary lines and its
 // run-record entries are this file. Its options are read with the beam's (ReadWithBeam:
 // io/beam_options.cpp's StringBedOnFrame, since a held frame sets the beam's length and holds and a
-// racket's maker strings its frame) into BeamParams::strings, which Configure copies. Its account's
-// columns (bed_energy_end, bed_fraction, bed_energy_peak) and series (bed_energy) are this file; its
-// deflection from the frame (bed_deflection_peak) and snapshots are still the outcome's, found
-// through its fields (BeamSystem::face_fields). Units: SI.
+// racket's maker strings its frame) into BeamParams::strings, which Configure copies. Its columns
+// (bed_energy_end, bed_fraction, bed_energy_peak, bed_deflection_peak) and its account's series
+// (bed_energy) are this file; the measure of its deflection from the frame (StateMeasures::
+// bed_deflection) and its snapshots are still the outcome's, found through its fields
+// (BeamSystem::face_fields). Units: SI.
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
 #include "system/string_bed_operator.hpp"
@@ -163,7 +164,7 @@ public:
   bool        CoupleInstead(const PartInstance &s, const BeamSystem &sys, PetscReal x, PetscReal z,
                             ContactCoupling *g) const override;
 
-  // Its energy account's columns, where the table had them (after the wall's).
+  // Its columns, where the table had them (after the wall's).
   const char             *ColumnsAfter() const override { return "hoop_frequency"; }
   std::vector<PartColumn> Columns() const override
   {
@@ -176,9 +177,12 @@ public:
        [](const PartOutputFacts &f) -> double { return f.account_flexible / f.E_in; }, "strings"},
       {"bed_energy_peak", "J", "the string bed's largest energy over the steps (NaN from the modal reference)",
        [](const PartOutputFacts &f) -> double { return f.account_peak; }},
+      {"bed_deflection_peak", "m",
+       "the string bed's largest deflection from its frame, max |w - y - z phi| over its nodes and the steps (NaN "
+       "from the modal reference)",
+       [](const PartOutputFacts &f) -> double { return f.face_deflection_peak; }},
     };
   }
-  std::vector<const char *> SummaryColumns() const override { return {"bed_deflection_peak"}; }
   // c: bed_energy_end, bed_fraction, bed_energy_peak, bed_deflection_peak.
   std::string SummaryAt(const PartParams &, const std::vector<double> &c, const PartPoint &at) const override
   {

@@ -114,8 +114,9 @@ public:
     g->dof[g->n] = sys.Dof(st.j, s.first), g->w[g->n] = sys.held[g->dof[g->n]] ? 0.0 : st.w * z, g->n++;
     g->dof[g->n] = sys.Dof(st.j + 1, s.first), g->w[g->n] = sys.held[g->dof[g->n]] ? 0.0 : (1.0 - st.w) * z, g->n++;
   }
-  // Its energy account's columns, where the table had them.
-  const char             *ColumnsAfter() const override { return "bed_deflection_peak"; }
+  // Its energy account's columns, where the table had them: after the hands' (the wall's and the bed's,
+  // registered after it, go between).
+  const char             *ColumnsAfter() const override { return "hands_fraction"; }
   std::vector<PartColumn> Columns() const override
   {
     return {

@@ -3,11 +3,11 @@
 // model/barrel.hpp: one more field per node, free only at node 0, a coupled dof of weight 1) or
 // as a thin cylindrical shell (-beam_shell; model/shell.hpp: three fields U_n, V_n, W_n per
 // harmonic n where the profile is hollow, the ball's load a patch of radius a on each W_n). They
-// exclude each other and share the wall's columns (run/results_table.cpp: shell_energy_end,
-// shell_energy_peak, wall_deflection_peak, wall_deflection_large; its own wall_fraction) and its
-// energy account ("wall", kept apart from the beam's: AccountApart). A structure part (system/structure_part.hpp): its
-// option rows and checks, the patch radius at the impact point, its fields, coupling, -task modes' family detail (the
-// harmonic n; the hoop counts as n = 2), the shell's snapshots, its column hoop_frequency (after wall_deflection_large)
+// exclude each other and share the wall's columns and its energy account ("wall", kept apart from
+// the beam's: AccountApart). A structure part (system/structure_part.hpp): its option rows and checks,
+// the patch radius at the impact point, its fields, coupling, -task modes' family detail (the harmonic
+// n; the hoop counts as n = 2), the shell's snapshots, its columns (shell_energy_end, wall_fraction,
+// shell_energy_peak, wall_deflection_peak, wall_deflection_large, hoop_frequency: after the hands')
 // and the summary's warning on a displacement beyond the linear range are this file. Units: SI.
 #include "model/barrel.hpp"
 #include "model/shell.hpp"
@@ -221,23 +221,35 @@ public:
     *labels = w.shell.harmonics;
     return true;
   }
-  const char             *ColumnsAfter() const override { return "wall_deflection_large"; }
+  // Its columns where the table had them (after the hands', before the roll's).
+  const char             *ColumnsAfter() const override { return "hands_fraction"; }
   std::vector<PartColumn> Columns() const override
   {
     return {
+      {"shell_energy_end", "J", "the barrel wall's energy at the end (stored and kinetic): what it did not give back",
+       [](const PartOutputFacts &f) -> double { return f.account_end; }},
+      {"wall_fraction", "1", "shell_energy_end / E_in",
+       [](const PartOutputFacts &f) -> double { return f.account_flexible / f.E_in; }, "wall"},
+      {"shell_energy_peak", "J", "the barrel wall's largest energy over the steps (NaN from the modal reference)",
+       [](const PartOutputFacts &f) -> double { return f.account_peak; }},
+      {"wall_deflection_peak", "m",
+       "the barrel wall's largest displacement under the ball over the steps (NaN from the modal reference)",
+       [](const PartOutputFacts &f) -> double { return f.apart_deflection_peak; }},
+      {"wall_deflection_large", "1",
+       "1 if wall_deflection_peak exceeds a quarter of the wall's midsurface radius at the impact point: the linear "
+       "wall far outside its range, physically absurd",
+       [](const PartOutputFacts &f) -> double {
+         const PetscReal R = ShellRadiusAt(*f.beam, f.impact_x);
+         return R > 0 && f.apart_deflection_peak > kWallDeflectionLimit * R ? 1 : 0;
+       },
+       nullptr, nullptr, true},
       {"hoop_frequency", "Hz",
        "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h",
        [](const PartOutputFacts &f) -> double {
          const WallParams &w = P(*f.params);
          return w.shell_on ? ShellLowestFrequency(w.shell, *f.beam, 2) : w.hoop.frequency;
        }},
-      {"wall_fraction", "1", "shell_energy_end / E_in",
-       [](const PartOutputFacts &f) -> double { return f.account_flexible / f.E_in; }, "wall", "shell_energy_end"},
     };
-  }
-  std::vector<const char *> SummaryColumns() const override
-  {
-    return {"wall_deflection_peak", "wall_deflection_large"};
   }
   std::string Warning(const PartParams &q, const BeamParams &beam, const std::vector<double> &c,
                       const PartPoint &at) const override;
@@ -278,14 +290,14 @@ bool Wall::Resolve(const PartParams &q, const BeamParams &beam, const PartPoint 
   return true;
 }
 
-// c: hoop_frequency, wall_fraction, wall_deflection_peak, wall_deflection_large. The flag set: the displacement under
-// the ball beyond kWallDeflectionLimit of the wall's midsurface radius at the point, and the options
-// that set the wall's stiffness.
+// c: shell_energy_end, wall_fraction, shell_energy_peak, wall_deflection_peak, wall_deflection_large, hoop_frequency.
+// The flag set: the displacement under the ball beyond kWallDeflectionLimit of the wall's midsurface radius at
+// the point, and the options that set the wall's stiffness.
 std::string Wall::Warning(const PartParams &q, const BeamParams &beam, const std::vector<double> &c,
                           const PartPoint &at) const
 {
-  if (c[3] == 0) return "";
-  const PetscReal R = ShellRadiusAt(beam, at.x), peak = c[2];
+  if (c[4] == 0) return "";
+  const PetscReal R = ShellRadiusAt(beam, at.x), peak = c[3];
   return Fmt("warning: the barrel wall's largest displacement under the ball, %.4g m, is %.3g times its midsurface "
              "radius (R = %.4g m at x = %g m), beyond %g of it: physically absurd, the wall's model is linear (its "
              "displacements small against its thickness and radius); check %s and -ball_speed %g m/s",
