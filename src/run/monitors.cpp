@@ -35,7 +35,8 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
       if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
   for (const PartInstance &s : ctx.sys->parts) wall_ = wall_ || s.part->Peaks();
-  defer_ = !mon.any() && !ip.energy_check && !ctx.sys->TiedToFrame() && ctx.contact &&
+  const bool keeps = wall_ || !ctx.sys->face_fields.empty() || !part_peak_.empty(); // else nothing to sample for
+  defer_           = keeps && !mon.any() && !ip.energy_check && !ctx.sys->TiedToFrame() && ctx.contact &&
            std::all_of(part_series_.begin(), part_series_.end(), [](int k) { return k < 0; });
 }
 
