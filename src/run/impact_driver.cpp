@@ -133,6 +133,26 @@ bool SparseSeries(const ImpactProblem &pb)
   return pb.needs_force && !pb.sc.monitor.any() && !SystemHasPeaks(pb.sys());
 }
 
+// The stepper at time t of the free flight ff (started at ff.t0): its own modes (in_modes: the
+// modal state, O(k), expanded on this rank's rows when read), else the physical state; m and s
+// are the caller's storage, kept over the samples.
+PetscErrorCode FreeFlightSetAt(const FreeFlight &ff, bool in_modes, PetscReal t, Stepper &st, ModalState *m,
+                               FullState *s)
+{
+  bool set = false;
+
+  PetscFunctionBeginUser;
+  if (in_modes) {
+    FreeFlightModalState(ff, t - ff.t0, m);
+    PetscCall(st.SetModalState(t, *ff.modes, *m, &set));
+  }
+  if (!set) {
+    FreeFlightState(ff, t - ff.t0, s);
+    PetscCall(st.SetState(t, *s));
+  }
+  PetscFunctionReturn(0);
+}
+
 // The free flight after a separation at the stepper's time, in closed form, up to t_stop (the
 // window's end) or the next contact (*again): the stepper is left on the exact state there.
 // With series monitors the state is recorded from the modes every dt_sample and at the
@@ -171,30 +191,17 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
   PetscReal pair[2] = {0, 0};
   if (FreeFlightFirstContact(ff, t_stop - t0, s_min, &root)) pair[0] = 1, pair[1] = root;
   PetscCallMPI(MPI_Bcast(pair, 2, MPIU_REAL, 0, st.Comm())); // one decision on every rank
-  found                  = pair[0];
-  root                   = pair[1];
-  *again                 = found != 0;
-  const PetscReal t_end  = *again ? t0 + root : t_stop;
-  auto            set_at = [&](PetscReal t) -> PetscErrorCode { // the stepper at t of the free flight
-    bool set = false; // the stepper's own modes: the modal state (O(k)), expanded on this rank's rows when read
-    PetscFunctionBeginUser;
-    if (in_modes) {
-                 FreeFlightModalState(ff, t - t0, &m0);
-                 PetscCall(st.SetModalState(t, *modes, m0, &set));
-    }
-    if (!set) {
-                 FreeFlightState(ff, t - t0, &s);
-                 PetscCall(st.SetState(t, s));
-    }
-    PetscFunctionReturn(0);
-  };
+  found                 = pair[0];
+  root                  = pair[1];
+  *again                = found != 0;
+  const PetscReal t_end = *again ? t0 + root : t_stop;
   if (series || rec.NextSnapshot() < t_end) {
     const PetscReal dt     = series && dt_sample > 0 ? std::max(dt_sample, (t_end - t0) / 4000) : PETSC_INFINITY;
     const PetscInt  k_last = series && sparse && !*again ? 1 : PETSC_MAX_INT; // the samples recorded (snapshots apart)
     for (PetscInt k = 1;; ++k) {
       const PetscReal ts = k <= k_last ? t0 + k * dt : PETSC_INFINITY, tn = std::min(ts, rec.NextSnapshot());
       if (!(tn < t_end * (1 - 1e-14))) break;
-      PetscCall(set_at(tn));
+      PetscCall(FreeFlightSetAt(ff, in_modes, tn, st, &m0, &s));
       free_flight_samples++;
       if (series) PetscCall(rec.Record(tn));
       PetscCall(rec.Snapshots(tn));
@@ -203,7 +210,7 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
   }
   if (*again) run->record.mode_energies.clear();
   else run->record.mode_energies = FreeFlightModeEnergies(ff, t_end - t0);
-  PetscCall(set_at(t_end));
+  PetscCall(FreeFlightSetAt(ff, in_modes, t_end, st, &m0, &s));
   PetscCall(st.Restart());
   PetscFunctionReturn(0);
 }
