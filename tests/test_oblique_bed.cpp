@@ -15,6 +15,7 @@
 //     than rolling, and faster than off the locked bed (Cross; Lindsey's lubricated strings);
 //   * the brush (-bat_speed_face): the angle in the face's frame (Galilean along the face);
 //   * the refusals: -impact_angle off a bed, -impact_offset on one.
+#include "system/parts/bed.hpp"
 #include "model/oblique.hpp"
 #include "model/string_bed.hpp"
 #include "run/impact.hpp"
@@ -187,7 +188,7 @@ TEST(ObliqueBed, SnapbackGivesMoreSpinThanTheLockedBed)
   EXPECT_GT(test::Col(b, "spin") * R, 1.5 * TangentialExit(b));          // over-spin
   EXPECT_GT(test::Col(b, "spin"), 1.5 * test::Col(a, "spin"));
   EXPECT_GT(test::Col(b, "strings_inplane_energy_returned"), 0.9 * test::Col(b, "strings_inplane_energy_peak"));
-  const StringBedParams &s = slide.beam.strings;
+  const StringBedParams &s = *StringBedOf(slide.beam);
   const PetscReal k = StringBedInPlaneOf(s, 0, 0, 0.03).stiffness, sp = test::Col(b, "strings_slide_peak");
   EXPECT_NEAR(test::Col(b, "strings_inplane_energy_peak"), 0.5 * k * sp * sp, 0.02 * test::Col(b, "strings_inplane_energy_peak"));
   EXPECT_LT(k * sp, 1.1 * 0.4 * b.peak_force);

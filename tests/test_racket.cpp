@@ -14,6 +14,7 @@
 //     bed is the frame struck at the same point.
 //
 //   mpiexec -n 4 ./test_racket --gtest_filter='RacketParallel.*'
+#include "system/parts/bed.hpp"
 #include "model/shell.hpp"
 #include "model/torsion.hpp"
 #include "run/impact.hpp"
@@ -200,12 +201,12 @@ TEST(StringBedOnFields, HeldCircleModesAreTheBeds)
   EXPECT_EQ(0, BeamSystemRigidCount(sys));
   ModesResult r;
   ASSERT_EQ(0, BeamModesCompute(PETSC_COMM_WORLD, sys, 4, &r, nullptr));
-  const Membrane m = StringBedMembrane(sc.beam.strings);
+  const Membrane m = StringBedMembrane(*StringBedOf(sc.beam));
   EXPECT_NEAR(r.frequency[0], MembraneCircleFrequency(m, 0.15, 2.404826), 2e-3 * r.frequency[0]);
   EXPECT_NEAR(r.frequency[1], MembraneCircleFrequency(m, 0.15, 3.831706), 6e-3 * r.frequency[1]);
   EXPECT_NEAR(r.frequency[1], r.frequency[2], 1e-9 * r.frequency[1]); // the (1,1) pair
   StringBedModes own;
-  ASSERT_EQ(0, StringBedModesCompute(PETSC_COMM_WORLD, StringBedGrid(sc.beam.strings), m, 4, &own));
+  ASSERT_EQ(0, StringBedModesCompute(PETSC_COMM_WORLD, StringBedGrid(*StringBedOf(sc.beam)), m, 4, &own));
   for (int q = 0; q < 4; ++q) EXPECT_NEAR(r.frequency[q], own.frequency[q], 1e-9 * own.frequency[q]) << "mode " << q;
   for (int q = 0; q < 4; ++q) EXPECT_EQ(AccountOfPart("bed"), r.part[q]);
 }
@@ -343,8 +344,7 @@ TEST(Racket, StiffMasslessBedIsTheFrame)
 {
   for (PetscReal z : {0.0, 0.05}) {
     Scenario bare = StrungRacket(0.15, z);
-    bare.beam.strings = StringBedParams(); // no bed: the ball strikes the frame at (x, z)
-    bare.beam.parts.Set("bed", nullptr);
+    StringBedSet(&bare.beam, StringBedParams()); // no bed: the ball strikes the frame at (x, z)
     const ImpactResult frame = RunWith(PETSC_COMM_WORLD, bare, {{"-ts_type", "modal"}});
     PetscReal          dtc[2];
     int                k = 0;
@@ -453,7 +453,7 @@ TEST(BedLoad, MirrorImagesMirrorAndMomentaAreKept)
     Extra e = {{"-beam_nodes", gc.nodes}, {"-strings_patch_radius", gc.patch}};
     if (*gc.width) e.push_back({"-strings_nodes_width", gc.width});
     const BeamParams beam = StrungRacket(0.15, 0.05, e).beam;
-    const BedGrid    g    = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
+    const BedGrid    g    = StringBedFrameGrid(*StringBedOf(beam), beam.nodes, beam.length);
     for (int k = 0; k < 4; ++k) { // the head: centre 0.175 m, 0.32 x 0.24 m; a side near the rim, inside, a cell's centre
       const PetscReal rho = k == 0 ? 0.93 + 0.05 * rng.Next() : 0.2 + 0.6 * rng.Next(), th = (0.2 + 0.6 * rng.Next()) * M_PI;
       PetscReal       x = 0.175 + 0.16 * rho * std::cos(th), z = 0.12 * rho * std::sin(th);
@@ -656,8 +656,9 @@ TEST(RacketParallel, SameOnOneAndManyRanks)
 TEST(Racket, CoarseImplicitStepsLocateTheEvents)
 {
   Scenario sc                  = StrungRacket(0.15, 0.05);
-  sc.beam.strings.patch_radius = ShellContactRadiusDefault(sc.ball, sc.ball.speed); // 7.5 mm, below h = 1 cm
-  sc.beam                      = test::WithPart(sc.beam, "bed", {});                // the bed part takes it
+  StringBedParams bed = *StringBedOf(sc.beam);
+  bed.patch_radius    = ShellContactRadiusDefault(sc.ball, sc.ball.speed); // 7.5 mm, below h = 1 cm
+  StringBedSet(&sc.beam, bed);
   sc.impact.window             = 0;
   const ImpactResult exact     = RunWith(PETSC_COMM_WORLD, sc, {{"-ts_type", "modal"}});
   for (const Extra &ts : {Extra{{"-ts_type", "cn"}, {"-ts_dt", "5e-5"}, {"-ts_adapt_type", "none"}}, Extra{{"-ts_type", "alpha2"}, {"-ts_dt", "2e-4"}, {"-ts_adapt_type", "none"}}}) {
@@ -678,10 +679,9 @@ TEST(BedPart, RegistryGivesTheStringBed)
   ASSERT_NE(StructurePartFind("bed"), nullptr);
   const Scenario sc = StrungRacket(0.15, 0.05, {{"-strings_patch_radius", "0.02"}});
   BeamParams     bare = sc.beam;
-  bare.strings      = StringBedParams(); // -strings_frame none: the part's Configure leaves it out
-  bare              = test::WithPart(bare, "bed", {});
+  StringBedSet(&bare, StringBedParams()); // -strings_frame none: no bed
   EXPECT_FALSE(bare.parts.Has("bed"));
-  EXPECT_TRUE(test::WithPart(sc.beam, "bed", {}).parts.Has("bed"));
+  EXPECT_TRUE(sc.beam.parts.Has("bed"));
   const BeamSystem    sys = SystemOf(sc.beam), plain = SystemOf(bare);
   const PartInstance *bed = test::PartIn(sys, "bed");
   ASSERT_NE(bed, nullptr);

@@ -352,15 +352,19 @@ PetscErrorCode BeamSectionFromMaker(MPI_Comm comm, const BeamOptionValues &o, Be
 }
 
 // -racket_length: the frame's table of a racket by its maker's numbers (model/racket_maker.hpp),
-// strung with the bed the options give (the head's outline the maker's). Called after the bed is read.
+// strung with the parts that weigh on it (a string bed, its head's outline the maker's). Called
+// after the parts that make the frame (StructurePartsFrame).
 PetscErrorCode BeamSectionFromRacket(MPI_Comm comm, const BeamOptionValues &o, const RacketMakerParams &r,
                                      BeamParams *p)
 {
   BeamSection &s = p->section;
   std::string  why;
+  RacketStrung strung; // what the parts present weigh on the frame (a string bed: StructurePart::Strung)
   PetscFunctionBeginUser;
-  PetscCheck(RacketMakerTable(r, p->strings.On() ? &p->strings : nullptr, &s.table, &why), comm,
-             PETSC_ERR_ARG_OUTOFRANGE, "the racket's maker's numbers describe no racket: %s", why.c_str());
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p->parts.Find(part->Name())) part->Strung(*q, &strung);
+  PetscCheck(RacketMakerTable(r, strung, &s.table, &why), comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "the racket's maker's numbers describe no racket: %s", why.c_str());
   s.source            = SectionSource::Table;
   s.file              = "(the racket maker's numbers: -racket_*)";
   s.table_has_shear   = true;
@@ -513,60 +517,7 @@ PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p)
   PetscCheck(BeamTheoryFind(p.theory.c_str()), comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-beam_theory %s is not known: %s",
              p.theory.c_str(), BeamOptionTable().Find("-beam_theory")->Allowed().c_str());
   if (p.has_pivot) PetscCall(PivotCheck(comm, p));
-  if (p.has_clamp && !p.strings.Held())
-    PetscCall(ClampCheck(comm, p)); // a held string bed's frame is clamped everywhere
-  PetscFunctionReturn(0);
-}
-
-// A racket's string bed (-strings_frame, read only when given): held, the frame is the head's
-// outline held still (a beam of the head's length on the bed's columns, clamped everywhere); beam,
-// the beam is the frame, its head inside the beam and rolling with it.
-PetscErrorCode StringBedOnFrame(MPI_Comm comm, const RacketMakerParams *racket, BeamParams *p)
-{
-  PetscBool given;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-strings_frame", &given));
-  if (!given) PetscFunctionReturn(0);
-  PetscCall(StringBedParamsFromOptions(comm, &p->strings));
-  StringBedParams &s = p->strings;
-  if (!s.On()) PetscFunctionReturn(0);
-  if (racket) { // the maker's head
-    for (const char *o : {"-head_length", "-head_width", "-head_center"}) {
-      PetscBool set;
-      PetscCall(PetscOptionsHasName(NULL, NULL, o, &set));
-      PetscCheck(!set, comm, PETSC_ERR_ARG_INCOMP,
-                 "%s with -racket_length is not allowed: the racket's maker's numbers place the head "
-                 "(-racket_head_size, -racket_head_aspect, -racket_head_margin)",
-                 o);
-    }
-    RacketMakerHead(*racket, &s);
-  }
-  if (s.Held()) {
-    PetscCheck(!p->has_pivot, comm, PETSC_ERR_ARG_INCOMP,
-               "-strings_frame held holds the whole frame: -beam_pivot has nothing to hold"); // -grip: its part
-    p->length    = s.head_length; // the frame: the head's length on the bed's columns, held everywhere
-    p->nodes     = s.nodes;
-    p->has_clamp = true;
-    p->clamp_x0 = 0, p->clamp_x1 = p->length;
-    s.head_center = 0.5 * s.head_length;
-    p->section    = BeamSection(); // a held frame's section (and roll: the part is absent) are never used
-    PetscFunctionReturn(0);
-  }
-  const PetscReal a = 0.5 * s.head_length, h = p->length / (p->nodes - 1);
-  PetscCheck(s.head_center - a > 0 && s.head_center + a < p->length, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-head_center %g with -head_length %g is not allowed on this %g m frame: the head (%g to %g m) must lie "
-             "inside the beam, 0 < x < L",
-             (double)s.head_center, (double)s.head_length, (double)p->length, (double)(s.head_center - a),
-             (double)(s.head_center + a));
-  PetscCheck(s.head_length >= 4 * h, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-strings_frame beam: the head (-head_length %g m) spans fewer than 4 of the frame's cells (h = %g m): "
-             "give more -beam_nodes",
-             (double)s.head_length, (double)h);
-  const BedGrid g = StringBedFrameGrid(s, p->nodes, p->length);
-  PetscCheck(g.nz >= 5, comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-strings_frame beam: %" PetscInt_FMT " nodes across the head's width (h_x %g m from -beam_nodes): at "
-             "least 5 are needed (more -beam_nodes, or -strings_nodes_width)",
-             g.nz, (double)h);
+  if (p.has_clamp && !p.frame_held) PetscCall(ClampCheck(comm, p)); // a held frame is clamped everywhere
   PetscFunctionReturn(0);
 }
 
@@ -584,14 +535,20 @@ PetscErrorCode StructurePartOptionsRead(MPI_Comm comm, const StructurePart &part
     std::vector<PetscReal> values;
     if (o.kind == OptionKind::RealList) PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &values, &set));
     else if (o.kind == OptionKind::Real) {
-      PetscReal x = part.Unset(o.name.c_str());
+      PetscReal x = part.Unset(o.name.c_str(), *v);
       PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &x, &set));
       values = {x};
     } else if (o.kind == OptionKind::Bool) {
       PetscBool b = PETSC_FALSE;
       PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &b, &set));
       values = {b ? 1.0 : 0.0};
-    } else SETERRQ(comm, PETSC_ERR_PLIB, "%s: the part's reader takes numbers, lists and flags", o.name.c_str());
+    } else if (o.kind == OptionKind::Int || o.kind == OptionKind::Choice) { // a whole number, a choice's index
+      PetscInt n = (PetscInt)part.Unset(o.name.c_str(), *v);
+      if (o.kind == OptionKind::Int) PetscCall(OptionsRead(PetscOptionsObject, T, o.name.c_str(), &n, &set));
+      else PetscCall(OptionsReadChoice(PetscOptionsObject, T, o.name.c_str(), &n, &set));
+      values = {(PetscReal)n};
+    } else
+      SETERRQ(comm, PETSC_ERR_PLIB, "%s: the part's reader takes numbers, choices, lists and flags", o.name.c_str());
     if (set) v->given[o.name] = values;
   }
   PetscOptionsEnd();
@@ -607,7 +564,8 @@ PetscErrorCode StructurePartsFromOptions(MPI_Comm comm, BeamParams *p)
     PartOptionValues                  v;
     std::shared_ptr<const PartParams> q;
     std::string                       why;
-    if (!part->ReadWithBeam()) PetscCall(StructurePartOptionsRead(comm, *part, &v));
+    if (part->Frames()) continue; // set up with the beam (StructurePartsFrame)
+    PetscCall(StructurePartOptionsRead(comm, *part, &v));
     PetscCheck(part->Configure(v, *p, &q, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
     p->parts.Set(part->Name(), q);
     const std::string note = q ? part->Note(*q, *p) : ""; // beyond the part's range: say so, once
@@ -615,6 +573,23 @@ PetscErrorCode StructurePartsFromOptions(MPI_Comm comm, BeamParams *p)
   }
   const std::string why = StructurePartsRefusalWith(*p); // the checks of one part against another
   PetscCheck(why.empty(), comm, PETSC_ERR_ARG_INCOMP, "%s", why.c_str());
+  PetscFunctionReturn(0);
+}
+
+// The parts that make the frame they sit on (StructurePart::Frames: a string bed), on the beam as
+// read so far: each may make the beam its frame, and a racket maker's numbers place them.
+PetscErrorCode StructurePartsFrame(MPI_Comm comm, const RacketMakerParams *racket, BeamParams *p)
+{
+  PetscFunctionBeginUser;
+  for (const StructurePart *part : StructureParts()) {
+    if (!part->Frames()) continue;
+    PartOptionValues                  v;
+    std::shared_ptr<const PartParams> q;
+    std::string                       why;
+    PetscCall(StructurePartOptionsRead(comm, *part, &v));
+    PetscCheck(part->Frame(v, racket, p, &q, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
+    p->parts.Set(part->Name(), q);
+  }
   PetscFunctionReturn(0);
 }
 
@@ -642,8 +617,8 @@ PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p)
   else if (o.setprofile || o.setproperties) PetscCall(BeamSectionFromFile(comm, o, p));
   else PetscCall(BeamUniformSection(comm, o, p));
   if (!racket_on) PetscCall(TimoshenkoCheck(comm, o, *p));
-  PetscCall(StringBedOnFrame(comm, racket_on ? &racket : nullptr, p));
-  if (racket_on && !p->strings.Held()) { // a held bed has no frame
+  PetscCall(StructurePartsFrame(comm, racket_on ? &racket : nullptr, p));
+  if (racket_on && !p->frame_held) { // a held frame is no racket's
     PetscCall(BeamSectionFromRacket(comm, o, racket, p));
     PetscCall(TimoshenkoCheck(comm, o, *p));
   }

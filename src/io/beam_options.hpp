@@ -12,11 +12,19 @@
 
 namespace beamimpact {
 
+struct PartOptionValues;
+class StructurePart;
+
 // The -beam_* and -grip* options: the beam module's table (registered by app/registry.cpp).
 const OptionModule &BeamOptionTable();
 
 // Reads the options, converts the parameter set to sections, checks every range.
 PetscErrorCode BeamParamsFromOptions(MPI_Comm comm, BeamParams *p);
+
+// A registered structure part's rows (system/structure_part.hpp), read in its own -help block:
+// the given ones into *v (a flag as 1, a number as one value, a choice as its index, a list as its
+// values).
+PetscErrorCode StructurePartOptionsRead(MPI_Comm comm, const StructurePart &part, PartOptionValues *v);
 
 // Range and consistency checks, with messages naming the option and the value.
 PetscErrorCode BeamParamsCheck(MPI_Comm comm, const BeamParams &p);

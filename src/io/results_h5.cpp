@@ -6,6 +6,8 @@
 #include "io/h5_dims.hpp"
 #include "io/text.hpp"
 #include "io/xdmf.hpp"
+#include "model/string_bed.hpp"
+#include "system/structure_part.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -409,8 +411,9 @@ static PetscErrorCode H5WriteSnapshots(hid_t file, const ImpactSeries &S, const 
   PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
   PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
   PetscCall(H5DimsAttach(gn, "y", {"time", "x"}));
-  if (SnapshotsHaveBed(S)) { // the string bed's deflection on its grid: [time][z * nodes + x]
-    PetscCall(H5WriteBedGrid(gn, StringBedFrameGrid(beam.strings, beam.nodes, beam.length), "bed_x", "bed_z"));
+  BedGrid face;                                                     // the string bed's grid (StructurePartsFaceGrid)
+  if (SnapshotsHaveBed(S) && StructurePartsFaceGrid(beam, &face)) { // its deflection: [time][z * nodes + x]
+    PetscCall(H5WriteBedGrid(gn, face, "bed_x", "bed_z"));
     PetscCall(
       H5WriteDataset2D(gn, "bed", S.snapshot_bed,
                        "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] "
@@ -439,8 +442,8 @@ static std::string SnapshotsXdmf(const std::string &path, const ImpactSeries &S,
   XdmfField              f;
   f.name = "beam", f.attribute = "y", f.x = "/snapshots/x", f.nx = beam.nodes, f.values = "/snapshots/y";
   fields.push_back(f);
-  if (SnapshotsHaveBed(S)) {
-    const BedGrid g = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
+  BedGrid g; // the string bed's grid (StructurePartsFaceGrid)
+  if (SnapshotsHaveBed(S) && StructurePartsFaceGrid(beam, &g)) {
     f.name = "bed", f.attribute = "w", f.x = "/snapshots/bed_x", f.y = "/snapshots/bed_z", f.nx = g.nx, f.ny = g.nz;
     f.values = "/snapshots/bed";
     fields.push_back(f);
@@ -705,9 +708,8 @@ PetscErrorCode ResultsWriteModesFile(MPI_Comm comm, const std::string &path, con
       PetscCall(
         H5WriteDataset1D(g, "part_share", modes.part_share, "1 (that part's share of the mode's kinetic energy)"));
     }
-    if (!modes.bed_shape
-           .empty()) { // the string bed's deflection of each mode on its grid, [z][x], as the held bed's /modes/shape_k
-      const BedGrid g2 = StringBedFrameGrid(beam.strings, beam.nodes, beam.length);
+    BedGrid g2; // the string bed's deflection of each mode on its grid, [z][x], as the held bed's /modes/shape_k
+    if (!modes.bed_shape.empty() && StructurePartsFaceGrid(beam, &g2)) {
       PetscCall(H5WriteBedGrid(g, g2, "bed_x", "bed_z"));
       for (size_t m = 0; m < modes.bed_shape.size(); ++m) {
         std::vector<std::vector<PetscReal>> rows(g2.nz, std::vector<PetscReal>(g2.nx));

@@ -11,7 +11,6 @@
 #pragma once
 
 #include "model/section.hpp"
-#include "model/string_bed.hpp"
 #include "model/support.hpp"
 
 #include <petscsys.h>
@@ -124,9 +123,11 @@ struct BeamParams {
   std::string       theory            = "euler"; // beam theory (model/beam_theory.hpp registry)
   PetscReal         damping_mass      = 0;       // 1/s, alpha of the Rayleigh damping C = alpha M + beta K
   PetscReal         damping_stiffness = 0;       // s,   beta
-  StringBedParams   strings;                     // the string bed's options as read (its part copies them)
   PartParamSet      parts;                       // the registered structure parts present (none by default)
   BeamMaterialInput input;
+  // The whole beam is a frame held still (a held string bed's, set up by its part: StructurePart::
+  // Frame): nothing to grip, pivot, roll or attach.
+  bool frame_held = false;
 };
 
 // The section at x (m): the uniform scalars or the profile/table rows.

@@ -40,24 +40,29 @@ void RacketMakerHead(const RacketMakerParams &r, StringBedParams *bed)
   bed->head_center  = r.length - r.head_margin - bed->head_length / 2;
 }
 
-bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, std::vector<PropertiesRow> *rows,
+RacketStrung RacketStrungBy(const StringBedParams &bed)
+{
+  RacketStrung      q;
+  const HeadMoments h = HeadMomentsOf(bed);
+  const PetscReal   s = StringBedMembrane(bed).sigma;
+  q.mass = s * h.area, q.moment = q.mass * bed.head_center, q.roll = s * h.zz;
+  q.head_start = bed.head_center - bed.head_length / 2, q.head_length = bed.head_length;
+  return q;
+}
+
+bool RacketMakerTable(const RacketMakerParams &r, const RacketStrung &strung, std::vector<PropertiesRow> *rows,
                       std::string *why)
 {
   char            text[512];
   const PetscReal L = r.length, xh = r.handle_length;
-  PetscReal       ms = 0, mx = 0, mzz = 0; // the strings' mass, first moment, moment about the axis
-  if (bed && bed->On()) {
-    const HeadMoments h = HeadMomentsOf(*bed);
-    const PetscReal   s = StringBedMembrane(*bed).sigma;
-    ms = s * h.area, mx = ms * bed->head_center, mzz = s * h.zz;
-    if (!(bed->head_center - bed->head_length / 2 > xh + kRacketRamp)) {
-      std::snprintf(text, sizeof text,
-                    "the head (%g m long, -racket_head_size %g m^2) reaches into the handle (-racket_handle_length %g "
-                    "m): a longer -racket_length or a smaller head",
-                    (double)bed->head_length, (double)r.head_size, (double)xh);
-      *why = text;
-      return false;
-    }
+  const PetscReal ms = strung.mass, mx = strung.moment, mzz = strung.roll; // the strings' mass and moments
+  if (strung.head_length > 0 && !(strung.head_start > xh + kRacketRamp)) {
+    std::snprintf(text, sizeof text,
+                  "the head (%g m long, -racket_head_size %g m^2) reaches into the handle (-racket_handle_length %g "
+                  "m): a longer -racket_length or a smaller head",
+                  (double)strung.head_length, (double)r.head_size, (double)xh);
+    *why = text;
+    return false;
   }
   if (!(xh > 0 && xh + kRacketRamp < L)) {
     std::snprintf(text, sizeof text,

@@ -43,10 +43,22 @@ struct RacketMakerParams {
 // head_center; the shape as given).
 void RacketMakerHead(const RacketMakerParams &r, StringBedParams *bed);
 
-// The frame's table for a racket strung with `bed` (nullptr: no strings). False, with the reason
-// naming the option and the value, when the numbers make no racket (a level of mass or of rho J
-// not > 0, a head longer than the racket).
-bool RacketMakerTable(const RacketMakerParams &r, const StringBedParams *bed, std::vector<PropertiesRow> *rows,
+// What a racket's frame carries besides itself (its strings: RacketStrungBy), which the levels of
+// mass and of rho J balance; all 0 for a frame with no strings.
+struct RacketStrung {
+  PetscReal mass        = 0; // kg, the strings' sigma A
+  PetscReal moment      = 0; // kg m, their first moment about the butt (x = 0)
+  PetscReal roll        = 0; // kg m^2, their moment about the frame's axis, sigma int z^2 dA
+  PetscReal head_start  = 0; // m, where the strung head begins along the frame (checked against the handle)
+  PetscReal head_length = 0; // m, the head's length along the frame (0: no head)
+};
+// The bed's share (its own moments, HeadMomentsOf, at its centre -head_center).
+RacketStrung RacketStrungBy(const StringBedParams &bed);
+
+// The frame's table for a racket carrying `strung`. False, with the reason naming the option and
+// the value, when the numbers make no racket (a level of mass or of rho J not > 0, a head longer
+// than the racket).
+bool RacketMakerTable(const RacketMakerParams &r, const RacketStrung &strung, std::vector<PropertiesRow> *rows,
                       std::string *why);
 
 // The ramp (m) between the handle's and the head's levels.

@@ -173,6 +173,14 @@ bool StructurePartsMonitor(const BeamParams &p)
   return false;
 }
 
+bool StructurePartsFaceGrid(const BeamParams &p, BedGrid *g)
+{
+  for (const StructurePart *part : StructureParts())
+    if (const PartParams *q = p.parts.Find(part->Name()))
+      if (part->FaceGrid(*q, p, g)) return true;
+  return false;
+}
+
 bool StructurePartsStrike(const BeamParams &p, PetscReal x, PetscReal z)
 {
   for (const StructurePart *part : StructureParts())

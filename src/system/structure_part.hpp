@@ -30,7 +30,10 @@
 namespace beamimpact {
 
 struct BallParams;
+struct BedGrid;
 struct BeamSystem;
+struct RacketMakerParams;
+struct RacketStrung;
 struct ContactCoupling;
 class StructurePart;
 
@@ -145,17 +148,39 @@ public:
   virtual const char         *Presence() const = 0;            // "with -absorber": when its columns apply
   virtual const char         *Words() const { return Name(); } // for messages: "the stability limit is set by ..."
   virtual const OptionModule &Options() const = 0; // its rows: -help, the unknown-option check, the run record
-  // Whether its rows are read with the beam's (the string bed's: a held frame sets the beam's length
-  // and holds, a racket's maker strings its frame); Configure then gets no values and takes the
-  // options from the beam as read. No by default.
-  virtual bool ReadWithBeam() const { return false; }
+  // Whether it makes the frame it sits on (the string bed: a held bed's frame is the head's outline
+  // held whole, a racket maker's numbers place its head and its strings weigh on the frame's
+  // levels). Such a part is set up by Frame while the beam is read, before the beam's section by a
+  // racket maker and the beam's checks, not by Configure. No by default.
+  virtual bool Frames() const { return false; }
+  // Its rows as read -> its parameters in *out (nullptr: absent), the head placed by a racket
+  // maker's numbers (racket; nullptr without -racket_length); may make the beam its frame (length,
+  // nodes, holds, BeamParams::frame_held). False with *why naming the option, the value and what
+  // is allowed.
+  virtual bool Frame(const PartOptionValues &, const RacketMakerParams *, BeamParams *,
+                     std::shared_ptr<const PartParams> *out, std::string *) const
+  {
+    *out = nullptr;
+    return true;
+  }
+  // What it weighs on a racket maker's frame (its mass and moments, model/racket_maker.hpp).
+  virtual void Strung(const PartParams &, RacketStrung *) const { }
+  // The grid of its face, where its snapshots and mode shapes are written (the bed's nodes across
+  // the head); false for a part with no face.
+  virtual bool FaceGrid(const PartParams &, const BeamParams &, BedGrid *) const { return false; }
   // The value -help and /options_used show for its number row `name` when not given (its
-  // parameter's own default: the shell's -shell_contact_radius -1, not yet derived); 0 by default.
-  virtual PetscReal Unset(const char *) const { return 0; }
+  // parameter's own default: the shell's -shell_contact_radius -1, not yet derived; one derived
+  // from the rows read before it, `before`); 0 by default.
+  virtual PetscReal Unset(const char *, const PartOptionValues & /* before */) const { return 0; }
   // The rows as read (and the beam, its holds resolved) -> its parameters in *out (nullptr: the
   // part is absent). False with *why naming the option, the value as written and what is allowed.
-  virtual bool Configure(const PartOptionValues &v, const BeamParams &beam, std::shared_ptr<const PartParams> *out,
-                         std::string *why) const = 0;
+  // Every part but one that Frames has it.
+  virtual bool Configure(const PartOptionValues &, const BeamParams &, std::shared_ptr<const PartParams> *out,
+                         std::string *) const
+  {
+    *out = nullptr;
+    return true;
+  }
   // A note on its parameters the run prints once (without "note: " and newline; "" for none).
   virtual std::string Note(const PartParams &, const BeamParams &) const { return ""; }
   // Its parameters at the impact point (a default from the ball, a check of the point): true with
@@ -347,5 +372,8 @@ std::string StructurePartsRefusalWith(const BeamParams &p);
 bool StructurePartsTieToFrame(const BeamParams &p);
 // Whether a part present in p had its own monitor row given (StructurePart::Monitors).
 bool StructurePartsMonitor(const BeamParams &p);
+// The grid of the face of a part present in p (StructurePart::FaceGrid: the string bed's); false
+// when no part has a face.
+bool StructurePartsFaceGrid(const BeamParams &p, BedGrid *g);
 
 } // namespace beamimpact

@@ -128,7 +128,7 @@ std::string AbsorberRefusal(const std::vector<PetscReal> &v, const BeamParams &b
   else if (!(m > 0)) why = Fmt("its mass m_a = %g kg must be > 0", (double)m);
   else if (!(f > 0)) why = Fmt("its frequency f_a = %g Hz must be > 0", (double)f);
   else if (!(zeta >= 0)) why = Fmt("its damping ratio zeta = %g must be >= 0", (double)zeta);
-  else if (beam.strings.Held()) why = "a held string bed (-strings_frame held) has no frame to attach it to";
+  else if (beam.frame_held) why = "a held string bed (-strings_frame held) has no frame to attach it to";
   else {
     const ImpactStencil         st    = GridImpactStencil(beam.nodes, beam.length, x);
     const std::vector<NodeHold> hold  = BeamNodeHolds(beam);

@@ -10,13 +10,16 @@
 // option rows (the module 'strings'), parameters, rigid-body share, the refusal without the roll,
 // the impact point's checks on the head, the patch radius at the point (the sweep's system key),
 // its fields, coupling, in-plane mains for an oblique impact, its heading and summary lines and its
-// run-record entries are this file. Its options are read with the beam's (ReadWithBeam:
-// io/beam_options.cpp's StringBedOnFrame, since a held frame sets the beam's length and holds and a
-// racket's maker strings its frame) into BeamParams::strings, which Configure copies. Its columns
+// run-record entries are this file. It makes its frame (Frames): its rows are read with the
+// beam's, since a held bed's frame is the head's outline held whole (the beam's length, nodes and
+// holds) and a racket maker's numbers place its head and weigh its strings on the frame. Its columns
 // (bed_energy_end, bed_fraction, bed_energy_peak, bed_deflection_peak) and its account's series
 // (bed_energy) are this file; the measure of its deflection from the frame (StateMeasures::
 // bed_deflection) and its snapshots are still the outcome's, found through its fields
 // (BeamSystem::face_fields). Units: SI.
+#include "system/parts/bed.hpp"
+
+#include "model/racket_maker.hpp"
 #include "model/shell.hpp"
 #include "system/beam_system.hpp"
 #include "system/string_bed_operator.hpp"
@@ -91,16 +94,14 @@ public:
   const char         *Presence() const override { return "with a string bed (-strings_frame held or beam)"; }
   const char         *Words() const override { return "the string bed"; }
   const OptionModule &Options() const override { return BedOptions(); }
-  bool                ReadWithBeam() const override { return true; }
-  // Present with -strings_frame held or beam (the options as the beam's reader read them).
-  bool Configure(const PartOptionValues &, const BeamParams &beam, std::shared_ptr<const PartParams> *out,
-                 std::string *) const override
+  bool                Frames() const override { return true; }
+  PetscReal           Unset(const char *name, const PartOptionValues &before) const override;
+  bool                Frame(const PartOptionValues &v, const RacketMakerParams *racket, BeamParams *beam,
+                            std::shared_ptr<const PartParams> *out, std::string *why) const override;
+  void                Strung(const PartParams &q, RacketStrung *s) const override { *s = RacketStrungBy(P(q).bed); }
+  bool                FaceGrid(const PartParams &q, const BeamParams &beam, BedGrid *g) const override
   {
-    *out = nullptr;
-    if (!beam.strings.On()) return true;
-    auto p = std::make_shared<BedParams>();
-    p->bed = beam.strings;
-    *out   = p;
+    *g = StringBedFrameGrid(P(q).bed, beam.nodes, beam.length);
     return true;
   }
   bool Resolve(const PartParams &q, const BeamParams &beam, const PartPoint &at, std::shared_ptr<const PartParams> *out,
@@ -296,6 +297,80 @@ const OptionModule &Bed::BedOptions()
   return m;
 }
 
+// The value -help and /options_used show for a row not given: StringBedParams' own default (-1:
+// derived later); the width's nodes from the aspect of the head as read before it.
+PetscReal Bed::Unset(const char *name, const PartOptionValues &before) const
+{
+  StringBedParams d;
+  StringBedParamsFill(before, &d);
+  const std::map<std::string, PetscReal> unset = {
+    {"-strings_patch_radius", d.patch_radius},
+    {"-strings_tension", d.tension},
+    {"-strings_tension_crosses", d.tension_crosses},
+    {"-strings_spacing", d.spacing},
+    {"-strings_spacing_crosses", d.spacing_crosses},
+    {"-strings_linear_density", d.linear_density},
+    {"-head_length", d.head_length},
+    {"-head_width", d.head_width},
+    {"-head_center", d.head_center},
+    {"-strings_nodes", (PetscReal)d.nodes},
+    {"-strings_nodes_width", (PetscReal)StringBedGrid(d).nz}, // the aspect's count
+    {"-strings_inplane_stiffness", d.inplane_stiffness},
+    {"-strings_inplane_mass", d.inplane_mass},
+  };
+  const auto it = unset.find(name);
+  return it == unset.end() ? 0 : it->second; // the choices' first: none, ellipse
+}
+
+// Set up with the beam (Frames): the bed's options, its head placed by a racket maker's numbers;
+// held, the beam becomes its frame: the head's length on the bed's columns, held everywhere.
+bool Bed::Frame(const PartOptionValues &v, const RacketMakerParams *racket, BeamParams *beam,
+                std::shared_ptr<const PartParams> *out, std::string *why) const
+{
+  auto             p = std::make_shared<BedParams>();
+  StringBedParams &s = p->bed;
+  *out               = nullptr;
+  if (!StringBedParamsFrom(v, &s, why)) return false;
+  if (!s.On()) return true;
+  if (racket) { // the maker's head
+    for (const char *o : {"-head_length", "-head_width", "-head_center"})
+      if (v.Given(o))
+        return *why = PetscFmt("%s with -racket_length is not allowed: the racket's maker's numbers place the head "
+                               "(-racket_head_size, -racket_head_aspect, -racket_head_margin)",
+                               o),
+               false;
+    RacketMakerHead(*racket, &s);
+  }
+  *out = p;
+  if (s.Held()) {
+    if (beam->has_pivot) // -grip, -beam_torsion, -absorber: their parts refuse a held frame
+      return *why = "-strings_frame held holds the whole frame: -beam_pivot has nothing to hold", false;
+    beam->length     = s.head_length; // the frame: the head's length on the bed's columns, held everywhere
+    beam->nodes      = s.nodes;
+    beam->has_clamp  = true;
+    beam->frame_held = true;
+    beam->clamp_x0 = 0, beam->clamp_x1 = beam->length;
+    s.head_center = 0.5 * s.head_length;
+    beam->section = BeamSection(); // a held frame's section (and roll: the part is absent) are never used
+    return true;
+  }
+  const PetscReal a = 0.5 * s.head_length, h = beam->length / (beam->nodes - 1);
+  if (!(s.head_center - a > 0 && s.head_center + a < beam->length))
+    *why = PetscFmt("-head_center %g with -head_length %g is not allowed on this %g m frame: the head (%g to %g m) "
+                    "must lie inside the beam, 0 < x < L",
+                    (double)s.head_center, (double)s.head_length, (double)beam->length, (double)(s.head_center - a),
+                    (double)(s.head_center + a));
+  else if (!(s.head_length >= 4 * h))
+    *why = PetscFmt("-strings_frame beam: the head (-head_length %g m) spans fewer than 4 of the frame's cells (h = "
+                    "%g m): give more -beam_nodes",
+                    (double)s.head_length, (double)h);
+  else if (const BedGrid g = StringBedFrameGrid(s, beam->nodes, beam->length); g.nz < 5)
+    *why = PetscFmt("-strings_frame beam: %" PetscInt_FMT " nodes across the head's width (h_x %g m from -beam_nodes): "
+                    "at least 5 are needed (more -beam_nodes, or -strings_nodes_width)",
+                    g.nz, (double)h);
+  return why->empty();
+}
+
 // -strings_patch_radius: its default from the ball as the shell's (ShellContactRadiusDefault: the
 // Hertz radius on a rigid flat at the approach speed); the load's nodes (BedPatch) within the
 // frame's ends on a beam frame, and its coupled dofs within the contact coupling's room.
@@ -376,6 +451,76 @@ bool Bed::CoupleInstead(const PartInstance &s, const BeamSystem &sys, PetscReal 
 }
 
 } // namespace
+
+// The rows given in v -> *p, over its values; the crosses' tension and spacing default to the
+// mains'.
+void StringBedParamsFill(const PartOptionValues &v, StringBedParams *p)
+{
+  const auto real = [&](const char *name, PetscReal *x) {
+    if (v.Given(name)) *x = v.given.at(name)[0];
+  };
+  const auto whole = [&](const char *name, PetscInt *n) {
+    if (v.Given(name)) *n = (PetscInt)v.given.at(name)[0];
+  };
+  PetscInt frame = 0, shape = p->shape == HeadShape::Ellipse ? 0 : 1, nw = 0;
+  whole("-strings_frame", &frame);
+  real("-strings_tension", &p->tension);
+  p->tension_crosses = p->tension; // the default is the mains'
+  real("-strings_tension_crosses", &p->tension_crosses);
+  real("-strings_spacing", &p->spacing);
+  p->spacing_crosses = p->spacing;
+  real("-strings_spacing_crosses", &p->spacing_crosses);
+  real("-strings_linear_density", &p->linear_density);
+  whole("-head_shape", &shape);
+  real("-head_length", &p->head_length);
+  real("-head_width", &p->head_width);
+  real("-head_center", &p->head_center);
+  whole("-strings_nodes", &p->nodes);
+  real("-strings_patch_radius", &p->patch_radius);
+  real("-strings_inplane_stiffness", &p->inplane_stiffness);
+  real("-strings_inplane_mass", &p->inplane_mass);
+  whole("-strings_nodes_width", &nw);
+  p->shape       = shape == 0 ? HeadShape::Ellipse : HeadShape::Rectangle;
+  p->frame       = frame == 1 ? "held" : frame == 2 ? "beam" : "none";
+  p->nodes_width = nw;
+}
+
+// The rows as read -> the bed's parameters; checks across options: at least one string of each
+// kind across the head, 5 nodes across a held bed's width.
+bool StringBedParamsFrom(const PartOptionValues &v, StringBedParams *p, std::string *why)
+{
+  StringBedParamsFill(v, p);
+  if (!p->On()) return true;           // no bed: its options have no effect (a note)
+  const BedGrid g = StringBedGrid(*p); // the held frame's grid (a beam frame's: Frame)
+  if (!(p->spacing < p->head_width))
+    *why = PetscFmt("-strings_spacing %g m is not allowed with -head_width %g m: the mains, %g m apart across the "
+                    "face, leave no string on the head; it must be < -head_width (m)",
+                    (double)p->spacing, (double)p->head_width, (double)p->spacing);
+  else if (!(p->spacing_crosses < p->head_length))
+    *why = PetscFmt("%s %g m is not allowed with -head_length %g m: the crosses, %g m apart along the frame, leave no "
+                    "string on the head; it must be < -head_length (m)",
+                    v.Given("-strings_spacing_crosses") ? "-strings_spacing_crosses"
+                                                        : "-strings_spacing (the crosses' default)",
+                    (double)p->spacing_crosses, (double)p->head_length, (double)p->spacing_crosses);
+  else if (p->Held() && g.nz < 5)
+    *why = PetscFmt("-strings_nodes %" PetscInt_FMT " with -head_length %g and -head_width %g puts %" PetscInt_FMT
+                    " nodes across the width: at least 5 are needed (more -strings_nodes, or -strings_nodes_width)",
+                    p->nodes, (double)p->head_length, (double)p->head_width, g.nz);
+  return why->empty();
+}
+
+const StringBedParams *StringBedOf(const BeamParams &beam)
+{
+  const PartParams *q = beam.parts.Find(BedPart().Name());
+  return q ? &P(*q).bed : nullptr;
+}
+
+void StringBedSet(BeamParams *beam, const StringBedParams &bed)
+{
+  auto p = std::make_shared<BedParams>();
+  p->bed = bed;
+  beam->parts.Set(BedPart().Name(), bed.On() ? p : nullptr);
+}
 
 const StructurePart &BedPart()
 {

@@ -209,7 +209,7 @@ const OptionModule &GripOptions()
 std::string GripRefusal(const BeamGrip &g, const BeamParams &p)
 {
   const double a = g.x_a, b = g.x_b;
-  if (p.strings.Held()) return "-strings_frame held holds the whole frame: -grip has nothing to hold";
+  if (p.frame_held) return "-strings_frame held holds the whole frame: -grip has nothing to hold";
   if (!(g.x_a >= 0 && g.x_b <= p.length && g.x_a < g.x_b))
     return Fmt("-grip %g,%g is not allowed: the grip must be a non-empty interval of the beam, 0 <= x_a < x_b <= L = "
                "%g (m)",

@@ -90,7 +90,7 @@ public:
                  std::string *why) const override
   {
     *out = nullptr;
-    if (!v.Given("-beam_torsion") || v.given.at("-beam_torsion")[0] == 0 || beam.strings.Held()) return true;
+    if (!v.Given("-beam_torsion") || v.given.at("-beam_torsion")[0] == 0 || beam.frame_held) return true;
     auto p = std::make_shared<RollParams>();
     if (v.Given("-beam_torsion_stiffness")) p->torsion.stiffness = v.given.at("-beam_torsion_stiffness")[0];
     if (v.Given("-beam_torsion_inertia")) p->torsion.inertia = v.given.at("-beam_torsion_inertia")[0];

@@ -108,9 +108,9 @@ bool HollowProfile(const BeamParams &beam)
 // on a racket's frame: "" or the refusal.
 std::string WallRefusal(const WallParams &w, bool hoop, const BeamParams &beam)
 {
-  if (beam.strings.On())
+  if (StructurePartsHaveFace(beam)) // a racket's string bed (set up with the frame, before the wall)
     return Fmt("-strings_frame %s with a barrel wall (%s) is not allowed: a racket has no barrel",
-               beam.strings.frame.c_str(), w.shell_on ? "-beam_shell" : "-barrel_hoop_frequency");
+               beam.frame_held ? "held" : "beam", w.shell_on ? "-beam_shell" : "-barrel_hoop_frequency");
   if (w.shell_on) {
     if (beam.section.source != SectionSource::Profile)
       return "-beam_shell needs a round hollow section: -beam_profile with rows 'x D d' (a uniform beam or "
@@ -136,7 +136,7 @@ public:
   const char         *Presence() const override { return "with -barrel_hoop_frequency or -beam_shell"; }
   const char         *Words() const override { return "the barrel wall"; }
   const OptionModule &Options() const override { return WallOptions(); }
-  PetscReal           Unset(const char *name) const override
+  PetscReal           Unset(const char *name, const PartOptionValues &) const override
   {
     return std::strcmp(name, "-shell_contact_radius") ? 0 : BarrelShell().contact_radius;
   }
