@@ -4,12 +4,12 @@
 // and an end cap, a cupped end), read through the options as a run reads them; the drop; numbers
 // that describe no bat refused with the option named; the batter's swing law (-bat_swing_*); a
 // racket by its maker's numbers (-racket_*).
-#include "system/parts/bed.hpp"
 #include "io/beam_options.hpp"
 #include "io/scenario_options.hpp"
 #include "model/bat_maker.hpp"
 #include "model/racket_maker.hpp"
 #include "model/swing.hpp"
+#include "system/parts/bed.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,11 +27,10 @@ namespace {
 // 2 r0 r1 + 3 r1^2)/12 and rho pi h^3 (r0^2 + 3 r0 r1 + 6 r1^2)/30.
 struct Moments {
   double m0 = 0, m1 = 0, m2 = 0;
-  void   Cone(double rho, double a, double b, double D0, double D1, double sign = 1)
+  void Cone(double rho, double a, double b, double D0, double D1, double sign = 1)
   {
     const double h = b - a, r0 = D0 / 2, r1 = D1 / 2, k = sign * rho * M_PI;
-    const double m = k * h * (r0 * r0 + r0 * r1 + r1 * r1) / 3,
-                 f = k * h * h * (r0 * r0 + 2 * r0 * r1 + 3 * r1 * r1) / 12;
+    const double m = k * h * (r0 * r0 + r0 * r1 + r1 * r1) / 3, f = k * h * h * (r0 * r0 + 2 * r0 * r1 + 3 * r1 * r1) / 12;
     const double s = k * h * h * h * (r0 * r0 + 3 * r0 * r1 + 6 * r1 * r1) / 30;
     m0 += m, m1 += m * a + f, m2 += m * a * a + 2 * a * f + s;
   }
@@ -68,21 +67,11 @@ void ExpectBody(const BeamParams &p, const Moments &want, const char *what)
 // handle, taper, barrel, end taper as six solid pieces.
 TEST(BatMaker, SolidBatIsItsCylindersAndCones)
 {
-  const double rho = 650, L = 0.8636, k = 0.011, Dk = 0.0445, Dh = 0.0240, x1 = 0.28, x2 = 0.50, Db = 0.0663, x3 = 0.72,
-               De    = 0.0560;
-  const BeamParams p = Read({{"-bat_length", "0.8636"},
-                             {"-bat_knob_length", "0.011"},
-                             {"-bat_knob_diameter", "0.0445"},
-                             {"-bat_handle_diameter", "0.0240"},
-                             {"-bat_taper_start", "0.28"},
-                             {"-bat_taper_end", "0.50"},
-                             {"-bat_barrel_diameter", "0.0663"},
-                             {"-bat_end_taper_start", "0.72"},
-                             {"-bat_end_diameter", "0.056"},
-                             {"-beam_youngs_modulus", "1.2e10"},
-                             {"-beam_density", "650"},
-                             {"-beam_nodes", "87"}});
-  Moments          want;
+  const double rho = 650, L = 0.8636, k = 0.011, Dk = 0.0445, Dh = 0.0240, x1 = 0.28, x2 = 0.50, Db = 0.0663, x3 = 0.72, De = 0.0560;
+  const BeamParams p = Read({{"-bat_length", "0.8636"}, {"-bat_knob_length", "0.011"}, {"-bat_knob_diameter", "0.0445"}, {"-bat_handle_diameter", "0.0240"}, {"-bat_taper_start", "0.28"},
+                             {"-bat_taper_end", "0.50"}, {"-bat_barrel_diameter", "0.0663"}, {"-bat_end_taper_start", "0.72"}, {"-bat_end_diameter", "0.056"},
+                             {"-beam_youngs_modulus", "1.2e10"}, {"-beam_density", "650"}, {"-beam_nodes", "87"}});
+  Moments want;
   want.Cone(rho, 0, k, Dk, Dk);
   want.Cone(rho, k, k + kBatKnobFlare, Dk, Dh);
   want.Cone(rho, k + kBatKnobFlare, x1, Dh, Dh);
@@ -98,17 +87,11 @@ TEST(BatMaker, SolidBatIsItsCylindersAndCones)
 // 60 g, and the moments by the bore's change (a 1 mm step, then the cap's bore d_c over the rest).
 TEST(BatMaker, HollowBatWithEndCap)
 {
-  const double rho = 2810, L = 0.84, k = 0.012, Dk = 0.046, Dh = 0.0254, x1 = 0.20, x2 = 0.53, Db = 0.066675,
-               t = 0.0025, th = 0.003, lc = 0.02, mc = 0.06;
-  std::vector<std::pair<std::string, std::string>> opts = {{"-bat_length", "0.84"},
-                                                           {"-bat_taper_start", "0.20"},
-                                                           {"-bat_taper_end", "0.53"},
-                                                           {"-barrel_wall_thickness", "0.0025"},
-                                                           {"-bat_handle_wall_thickness", "0.003"},
-                                                           {"-beam_youngs_modulus", "7.2e10"},
-                                                           {"-beam_density", "2810"}};
-  const double                                     dh = Dh - 2 * th, db = Db - 2 * t;
-  Moments                                          want;
+  const double rho = 2810, L = 0.84, k = 0.012, Dk = 0.046, Dh = 0.0254, x1 = 0.20, x2 = 0.53, Db = 0.066675, t = 0.0025, th = 0.003, lc = 0.02, mc = 0.06;
+  std::vector<std::pair<std::string, std::string>> opts = {{"-bat_length", "0.84"}, {"-bat_taper_start", "0.20"}, {"-bat_taper_end", "0.53"}, {"-barrel_wall_thickness", "0.0025"},
+                                                           {"-bat_handle_wall_thickness", "0.003"}, {"-beam_youngs_modulus", "7.2e10"}, {"-beam_density", "2810"}};
+  const double dh = Dh - 2 * th, db = Db - 2 * t;
+  Moments      want;
   want.Cone(rho, 0, k, Dk, Dk);
   want.Cone(rho, k, k + kBatKnobFlare, Dk, Dh);
   want.Cone(rho, k + kBatKnobFlare, x1, Dh, Dh);
@@ -126,7 +109,7 @@ TEST(BatMaker, HollowBatWithEndCap)
   const double dc = capped.section.profile.back().d;
   EXPECT_GT(dc, 0);
   EXPECT_LT(dc, db);
-  want.Cone(rho, L - lc, L, db, db);                        // the bore filled ...
+  want.Cone(rho, L - lc, L, db, db); // the bore filled ...
   want.Cone(rho, L - lc, L - lc + kBatEndStep, db, dc, -1); // ... but for the cap's: its step and its bore
   want.Cone(rho, L - lc + kBatEndStep, L, dc, dc, -1);
   ExpectBody(capped, want, "hollow bat with an end cap");
@@ -135,15 +118,10 @@ TEST(BatMaker, HollowBatWithEndCap)
 // A cupped wood bat: its end bored 1 in deep to 1.5 in.
 TEST(BatMaker, CuppedEnd)
 {
-  const double rho = 700, L = 0.8382, k = 0.012, Dk = 0.046, Dh = 0.0254, x1 = 0.30, x2 = 0.53, Db = 0.066, c = 0.0254,
-               dcup  = 0.0381;
-  const BeamParams p = Read({{"-bat_length", "0.8382"},
-                             {"-bat_barrel_diameter", "0.066"},
-                             {"-bat_cup_depth", "0.0254"},
-                             {"-bat_cup_diameter", "0.0381"},
-                             {"-beam_youngs_modulus", "1.2e10"},
+  const double rho = 700, L = 0.8382, k = 0.012, Dk = 0.046, Dh = 0.0254, x1 = 0.30, x2 = 0.53, Db = 0.066, c = 0.0254, dcup = 0.0381;
+  const BeamParams p = Read({{"-bat_length", "0.8382"}, {"-bat_barrel_diameter", "0.066"}, {"-bat_cup_depth", "0.0254"}, {"-bat_cup_diameter", "0.0381"}, {"-beam_youngs_modulus", "1.2e10"},
                              {"-beam_density", "700"}});
-  Moments          want;
+  Moments want;
   want.Cone(rho, 0, k, Dk, Dk);
   want.Cone(rho, k, k + kBatKnobFlare, Dk, Dh);
   want.Cone(rho, k + kBatKnobFlare, x1, Dh, Dh);
@@ -170,7 +148,7 @@ TEST(BatMaker, RefusedWithTheOptionNamed)
   b.taper_end = 0.9; // beyond the 0.8382 m bat
   EXPECT_FALSE(BatMakerProfile(b, 700, &rows, &why));
   EXPECT_NE(why.find("-bat_taper_end 0.9"), std::string::npos) << why;
-  b              = BatMakerParams();
+  b             = BatMakerParams();
   b.end_cap_mass = 0.05; // a solid bat
   EXPECT_FALSE(BatMakerProfile(b, 700, &rows, &why));
   EXPECT_NE(why.find("-bat_end_cap_mass 0.05 kg on a solid bat"), std::string::npos) << why;
@@ -184,11 +162,7 @@ TEST(BatMaker, RefusedWithTheOptionNamed)
   EXPECT_NE(why.find("does not fit"), std::string::npos) << why;
   PetscErrorCode ierr = 0;
   EXPECT_EQ(0, PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  Read({{"-bat_length", "0.84"},
-        {"-beam_profile", "x.profile"},
-        {"-beam_youngs_modulus", "7e10"},
-        {"-beam_density", "2700"}},
-       &ierr);
+  Read({{"-bat_length", "0.84"}, {"-beam_profile", "x.profile"}, {"-beam_youngs_modulus", "7e10"}, {"-beam_density", "2700"}}, &ierr);
   EXPECT_EQ(0, PetscPopErrorHandler());
   EXPECT_NE(ierr, 0) << "-bat_length with -beam_profile must be refused";
 }
@@ -199,12 +173,9 @@ TEST(BatMaker, RefusedWithTheOptionNamed)
 // s (v_s + omega_0 (x - x_s)).
 TEST(SwingLaw, NathansGameCaseAndTheInertiaLaw)
 {
-  const std::string profile = std::string(BEAMIMPACT_SOURCE_DIR) + "/options/bats/r161.profile";
-  std::vector<std::pair<std::string, std::string>> bat   = {{"-beam_profile", profile},
-                                                            {"-beam_youngs_modulus", "1.814e10"},
-                                                            {"-beam_density", "649"},
-                                                            {"-impact_x", "0.7"}};
-  auto                                             scene = [&](std::vector<std::pair<std::string, std::string>> extra) {
+  const std::string     profile = std::string(BEAMIMPACT_SOURCE_DIR) + "/options/bats/r161.profile";
+  std::vector<std::pair<std::string, std::string>> bat = {{"-beam_profile", profile}, {"-beam_youngs_modulus", "1.814e10"}, {"-beam_density", "649"}, {"-impact_x", "0.7"}};
+  auto scene = [&](std::vector<std::pair<std::string, std::string>> extra) {
     for (auto &kv : bat) extra.push_back(kv);
     for (auto &kv : extra) EXPECT_EQ(0, PetscOptionsSetValue(NULL, kv.first.c_str(), kv.second.c_str()));
     Scenario sc;
@@ -225,20 +196,13 @@ TEST(SwingLaw, NathansGameCaseAndTheInertiaLaw)
   EXPECT_NEAR(Is, body.inertia_cm + body.mass * (24.0 / 51.0) * (24.0 / 51.0), 1e-15);
   char i0[40];
   std::snprintf(i0, sizeof i0, "%.17g", Is / 2);
-  const Scenario slower = scene({{"-bat_swing_angular_velocity", "51"},
-                                 {"-bat_swing_pivot", xs},
-                                 {"-bat_swing_reference_inertia", i0},
-                                 {"-bat_swing_exponent", "0.27"}});
+  const Scenario slower = scene({{"-bat_swing_angular_velocity", "51"}, {"-bat_swing_pivot", xs}, {"-bat_swing_reference_inertia", i0}, {"-bat_swing_exponent", "0.27"}});
   const double   s      = std::pow(2.0, -0.27);
   EXPECT_NEAR(slower.swing.bat_angular_velocity, 51 * s, 1e-12);
-  for (double x : {0.0, 0.5, 0.84})
-    EXPECT_NEAR(SwingSpeedAt(slower.swing, body, x), s * 51 * (x - l.pivot), 1e-12) << "x = " << x;
+  for (double x : {0.0, 0.5, 0.84}) EXPECT_NEAR(SwingSpeedAt(slower.swing, body, x), s * 51 * (x - l.pivot), 1e-12) << "x = " << x;
   // a point that moves: V(x) = s (v_s + omega_0 (x - x_s))
-  const Scenario moving = scene({{"-bat_swing_angular_velocity", "40"},
-                                 {"-bat_swing_pivot", "0.15"},
-                                 {"-bat_swing_pivot_speed", "3"},
-                                 {"-bat_swing_reference_inertia", i0}});
-  const double s2 = std::pow((body.inertia_cm + body.mass * (body.x_cm - 0.15) * (body.x_cm - 0.15)) / (Is / 2), -0.26);
+  const Scenario moving = scene({{"-bat_swing_angular_velocity", "40"}, {"-bat_swing_pivot", "0.15"}, {"-bat_swing_pivot_speed", "3"}, {"-bat_swing_reference_inertia", i0}});
+  const double   s2     = std::pow((body.inertia_cm + body.mass * (body.x_cm - 0.15) * (body.x_cm - 0.15)) / (Is / 2), -0.26);
   EXPECT_NEAR(SwingSpeedAt(moving.swing, body, 0.7), s2 * (3 + 40 * (0.7 - 0.15)), 1e-12);
 }
 
@@ -290,11 +254,10 @@ TEST(RacketMaker, TheBedMakesItsFrame)
 // balance no two positive levels can make refused with the range it allows.
 TEST(RacketMaker, StrungMassBalanceTwistweightAndHead)
 {
-  std::vector<std::pair<std::string, std::string>> opts =
-    {{"-racket_length", "0.685"},     {"-racket_mass", "0.305"},         {"-racket_balance", "0.335"},
-     {"-racket_head_size", "0.0632"}, {"-racket_twistweight", "0.0015"}, {"-racket_frame_stiffness", "180"},
-     {"-beam_torsion", "true"},       {"-strings_frame", "beam"},        {"-beam_nodes", "70"}};
-  const BeamParams    p = Read(opts);
+  std::vector<std::pair<std::string, std::string>> opts = {{"-racket_length", "0.685"}, {"-racket_mass", "0.305"}, {"-racket_balance", "0.335"}, {"-racket_head_size", "0.0632"},
+                                                           {"-racket_twistweight", "0.0015"}, {"-racket_frame_stiffness", "180"}, {"-beam_torsion", "true"}, {"-strings_frame", "beam"},
+                                                           {"-beam_nodes", "70"}};
+  const BeamParams p = Read(opts);
   const BeamRigidBody b = BeamRigidBodyOf(p);
   EXPECT_NEAR(b.mass, 0.305, 1e-14);
   EXPECT_NEAR(b.x_cm, 0.335, 1e-14);

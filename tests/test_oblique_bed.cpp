@@ -15,12 +15,12 @@
 //     than rolling, and faster than off the locked bed (Cross; Lindsey's lubricated strings);
 //   * the brush (-bat_speed_face): the angle in the face's frame (Galilean along the face);
 //   * the refusals: -impact_angle off a bed, -impact_offset on one.
-#include "system/parts/bed.hpp"
 #include "model/oblique.hpp"
 #include "model/string_bed.hpp"
 #include "run/impact.hpp"
 #include "run/scenario.hpp"
 
+#include "system/parts/bed.hpp"
 #include "test_helpers.hpp"
 
 #include <gtest/gtest.h>

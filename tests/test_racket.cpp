@@ -14,7 +14,6 @@
 //     bed is the frame struck at the same point.
 //
 //   mpiexec -n 4 ./test_racket --gtest_filter='RacketParallel.*'
-#include "system/parts/bed.hpp"
 #include "model/shell.hpp"
 #include "model/torsion.hpp"
 #include "run/impact.hpp"
@@ -24,6 +23,7 @@
 #include "solvers/modes.hpp"
 #include "solvers/string_bed_modes.hpp"
 #include "system/beam_system.hpp"
+#include "system/parts/bed.hpp"
 #include "system/string_bed_operator.hpp"
 
 #include "test_helpers.hpp"
