@@ -276,7 +276,7 @@ TEST(EnergyAccounts, RacketStatesByAccount)
   EXPECT_NEAR(m.account_energy[bed], E, 1e-13 * E);
   EXPECT_EQ(m.account_energy[roll], 0.0);
   EXPECT_NEAR(m.beam_kinetic + m.beam_strain, E, 1e-13 * E) << "the bed's energy is in the beam's sums";
-  EXPECT_EQ(m.shell_energy, 0.0);
+  EXPECT_EQ(m.apart_energy, 0.0);
   PetscReal P[3] = {0, 0, 0}; // the bed's momenta from its nodes
   for (PetscInt d = 0; d < sys.ndof; ++d)
     if (sys.Face(d % sys.fields) && !sys.held[d])
@@ -304,7 +304,7 @@ TEST(EnergyAccounts, RacketStatesByAccount)
 }
 
 // A bat with the barrel's hoop: the wall's account is kept apart from the beam's sums. A state of
-// the wall's dof alone is all shell_energy and the wall's account, none of beam_kinetic and
+// the wall's dof alone is all apart_energy and the wall's account, none of beam_kinetic and
 // beam_strain; any state's accounts sum to the structure's energies.
 TEST(EnergyAccounts, WallKeptApart)
 {
@@ -321,15 +321,15 @@ TEST(EnergyAccounts, WallKeptApart)
   const StateMeasures all = MeasuresOf(sys, y, v);
   const PetscReal     U = BeamSystemStrainEnergy(sys, y.data(), sys.fields, 0, sys.ndof);
   const PetscReal     T = BeamSystemKineticEnergy(sys, v.data(), sys.fields, 0, sys.ndof);
-  EXPECT_NEAR(all.beam_kinetic + all.beam_strain + all.shell_energy, U + T, 1e-13 * (U + T));
-  EXPECT_NEAR(all.shell_energy, stored[wall] + kinetic[wall], 1e-13 * (U + T));
+  EXPECT_NEAR(all.beam_kinetic + all.beam_strain + all.apart_energy, U + T, 1e-13 * (U + T));
+  EXPECT_NEAR(all.apart_energy, stored[wall] + kinetic[wall], 1e-13 * (U + T));
 
   StateOn(sys, wall, &y, &v); // the hoop's dof alone
   const StateMeasures m = MeasuresOf(sys, y, v);
   const PetscReal     E = BeamSystemStrainEnergy(sys, y.data(), sys.fields, 0, sys.ndof) +
                       BeamSystemKineticEnergy(sys, v.data(), sys.fields, 0, sys.ndof);
   ASSERT_GT(E, 0.0);
-  EXPECT_NEAR(m.shell_energy, E, 1e-13 * E);
+  EXPECT_NEAR(m.apart_energy, E, 1e-13 * E);
   EXPECT_NEAR(m.account_energy[wall], E, 1e-13 * E);
   EXPECT_NEAR(m.beam_kinetic, 0.0, 1e-13 * E);
   EXPECT_NEAR(m.beam_strain, 0.0, 1e-13 * E);

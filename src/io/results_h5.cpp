@@ -371,7 +371,6 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
   PetscCall(opt("ball_dissipated", S.ball_dissipated, "J"));
   PetscCall(opt("beam_kinetic", S.beam_kinetic, "J"));
   PetscCall(opt("beam_strain", S.beam_strain, "J"));
-  PetscCall(opt("shell_energy", S.shell_energy, "J"));
   for (size_t a = 0; a < S.account_energy.size(); ++a) // a part's account's (StructurePart::AccountSeries)
     if (const StructurePart *p = StructureAccountPart((PetscInt)a))
       PetscCall(opt(p->AccountSeries(), S.account_energy[a], "J"));

@@ -91,7 +91,6 @@ struct ImpactSeries {
   std::vector<PetscReal> ball_kinetic, ball_stored, ball_dissipated; // J
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;    // J
   std::vector<PetscReal> beam_dissipated;                            // J, by the beam's damping (damped beams only)
-  std::vector<PetscReal> shell_energy; // J, the barrel wall's (-barrel_hoop_frequency, -beam_shell)
   // J, [account][step]: the energy of each present part's account with a series of its own
   // (StructurePart::AccountSeries: the string bed's bed_energy, the roll's twist_energy; in beam_*).
   std::vector<std::vector<PetscReal>> account_energy;
@@ -153,14 +152,14 @@ struct ContactTally {
 struct MonitorPeaks {
   PetscReal segment_kinetic = 0, segment_kinetic_time = 0; // J, s: -monitor_segment
   PetscReal frame_force = 0, frame_force_time = 0; // N, s: the largest |force of the bat on the swing's frame| (-grip)
-  // The barrel wall (-barrel_hoop_frequency or -beam_shell): its largest displacement under the ball
-  // (m, into the bat) over the steps (its energy's: its account's); NaN where no stepper measured it
-  // (the modal reference).
-  PetscReal wall_deflection = NAN;
-  // A racket's string bed (-strings_frame): its largest deflection from the frame (m) over the steps;
+  // The accounts kept apart (the barrel wall, -barrel_hoop_frequency or -beam_shell): their largest
+  // displacement under the ball (m, into the bat) over the steps (its energy's: its account's); NaN
+  // where no stepper measured it (the modal reference).
+  PetscReal apart_deflection = NAN;
+  // The face (a racket's string bed, -strings_frame): its largest deflection from the frame (m) over the steps;
   // each energy account's largest energy (J, StateMeasures::account_energy: a present part's own); NaN
   // where no stepper measured them (the modal reference).
-  PetscReal bed_deflection               = NAN;
+  PetscReal face_deflection              = NAN;
   PetscReal account_energy[kMaxAccounts] = {NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
   static_assert(kMaxAccounts == 8, "account_energy's initialiser");
   // The registered structure parts' slots with `peak` (system/structure_part.hpp): the largest

@@ -109,24 +109,24 @@ void StructureFromSums(const BeamSystem &S, PetscInt G, const std::vector<PetscR
                        StateMeasures *m)
 {
   PetscReal T = sums[0], U = sums[1]; // without the shares of the accounts apart (the wall's)
-  m->shell_energy = 0;
+  m->apart_energy = 0;
   for (PetscInt a = 1; a < StructureAccountCount(); ++a) {
     const PetscReal *e   = &sums[AccountSums(G, a)];
     m->account_energy[a] = e[0] + e[1];
     for (int k = 0; k < 3; ++k) m->account_momentum[a][k] = e[2 + k];
-    if (StructureAccountApart(a)) T -= e[1], U -= e[0], m->shell_energy += e[0] + e[1];
+    if (StructureAccountApart(a)) T -= e[1], U -= e[0], m->apart_energy += e[0] + e[1];
   }
-  m->beam_kinetic    = T;
-  m->beam_strain     = U;
-  m->wall_deflection = sums[G + 4];
-  m->bed_deflection  = bed_max;
-  m->beam_roll       = sums[G + 5];
-  m->beam_momentum   = sums[2];
-  m->beam_moment     = sums[3];
-  m->segment_kinetic = sums[4];
-  m->terms_stored    = sums[G];
-  m->frame_force     = sums[G + 2];
-  m->frame_moment    = sums[G + 3];
+  m->beam_kinetic     = T;
+  m->beam_strain      = U;
+  m->apart_deflection = sums[G + 4];
+  m->face_deflection  = bed_max;
+  m->beam_roll        = sums[G + 5];
+  m->beam_momentum    = sums[2];
+  m->beam_moment      = sums[3];
+  m->segment_kinetic  = sums[4];
+  m->terms_stored     = sums[G];
+  m->frame_force      = sums[G + 2];
+  m->frame_moment     = sums[G + 3];
   for (size_t k = PartSlots(G); k < sums.size(); ++k) m->part_slot[k - PartSlots(G)] = sums[k]; // the parts' slots
 }
 

@@ -23,15 +23,15 @@ struct StateMeasures {
   // The accounts kept apart from the beam's (StructurePart::AccountApart: the barrel wall,
   // -barrel_hoop_frequency or -beam_shell): their stored and kinetic energy (J), not in
   // beam_kinetic and beam_strain; their displacement under the ball (m, into the bat). 0 without.
-  PetscReal shell_energy = 0, wall_deflection = 0;
-  // A racket's string bed's largest deflection from its frame, max |w - y - z phi| over its nodes
-  // (m); the angular momentum about the frame's axis of the structure and the ball (kg m^2/s: sum
-  // rho J phi_t + sum m z v + m_b z_b v_b). 0 without.
-  PetscReal bed_deflection = 0, roll_momentum = 0;
+  PetscReal apart_energy = 0, apart_deflection = 0;
+  // The largest deflection of the fields across the face from their frame (a racket's string bed),
+  // max |w - y - z phi| over its nodes (m); the angular momentum about the frame's axis of the structure and the ball
+  // (kg m^2/s: sum rho J phi_t + sum m z v + m_b z_b v_b). 0 without.
+  PetscReal face_deflection = 0, roll_momentum = 0;
   PetscReal beam_roll = 0; // kg m^2/s, the structure's share of roll_momentum
   // Each energy account a > 0 (system/structure_part.hpp, StructureAccountOf: a part's own), for the
   // split of the energy into rigid motions and parts (run/energy_parts.hpp): its stored plus kinetic
-  // energy (J; in beam_kinetic and beam_strain but for the accounts of shell_energy) and its
+  // energy (J; in beam_kinetic and beam_strain but for the accounts of apart_energy) and its
   // deflections' share of beam_momentum, beam_moment and beam_roll (sum m v, sum m x v, sum m z v
   // over the fields across the face, StructurePart::FieldZ: kg m/s, kg m^2/s, kg m^2/s). The beam's
   // account (0) is the rest; 0 without parts.
@@ -52,7 +52,7 @@ struct StateMeasures {
   // The conserved total: with the linear spring and an undamped beam, a constant.
   PetscReal total() const
   {
-    return ball_kinetic + ball_work + beam_kinetic + beam_strain + shell_energy + beam_dissipated + terms_stored -
+    return ball_kinetic + ball_work + beam_kinetic + beam_strain + apart_energy + beam_dissipated + terms_stored -
            frame_work;
   }
 };

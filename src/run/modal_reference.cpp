@@ -198,17 +198,17 @@ StateMeasures ModalMeasures(const ModalRun &run, PetscReal x_imp, PetscReal z_im
   BeamSystemAccountEnergies(sys, shape.data(), sys.fields, rate.data(), sys.fields, 0, sys.ndof, stored, kinetic);
   m.beam_kinetic = m.beam_strain = 0;
   for (PetscInt a = 0; a < StructureAccountCount(); ++a) // an account apart (the wall's): not the beam's
-    if (StructureAccountApart(a)) m.shell_energy += stored[a] + kinetic[a];
+    if (StructureAccountApart(a)) m.apart_energy += stored[a] + kinetic[a];
     else m.beam_kinetic += kinetic[a], m.beam_strain += stored[a];
   for (PetscInt a = 1; a < StructureAccountCount(); ++a) m.account_energy[a] = stored[a] + kinetic[a];
   for (PetscInt d = 0; d < S.BeamDofs(); ++d) // the wall's share of the compression (S.g = dc/dq = -w)
-    if (StructureAccountApart(sys.AccountOf(S.dof[d] % sys.fields))) m.wall_deflection -= S.g[d] * run.q[d];
+    if (StructureAccountApart(sys.AccountOf(S.dof[d] % sys.fields))) m.apart_deflection -= S.g[d] * run.q[d];
   if (!sys.face_fields.empty())
     for (PetscInt d = 0; d < sys.ndof; ++d) {
       const PetscInt f = d % sys.fields, i = d / sys.fields;
       if (!sys.Face(f) || sys.held[d]) continue;
       const PetscReal phi = roll >= 0 ? shape[sys.Dof(i, roll)] : 0.0;
-      m.bed_deflection    = std::max(m.bed_deflection, std::abs(shape[d] - shape[sys.Dof(i)] - sys.DofZ(d) * phi));
+      m.face_deflection   = std::max(m.face_deflection, std::abs(shape[d] - shape[sys.Dof(i)] - sys.DofZ(d) * phi));
     }
   m.beam_momentum    = p;
   m.beam_moment      = l;

@@ -34,8 +34,8 @@ ImpactRecorder::ImpactRecorder(Stepper &stepper, const MeasureContext &ctx, cons
       part_series_.push_back(slot.series && asked ? (int)series->keyed.size() : -1);
       if (part_series_.back() >= 0) series->keyed.push_back({slot.name, slot.unit, {}, ""});
     }
-  for (const PartInstance &s : ctx.sys->parts) wall_ = wall_ || s.part->Peaks();
-  const bool keeps = wall_ || !ctx.sys->face_fields.empty() || !part_peak_.empty(); // else nothing to sample for
+  for (const PartInstance &s : ctx.sys->parts) apart_ = apart_ || s.part->Peaks();
+  const bool keeps = apart_ || !ctx.sys->face_fields.empty() || !part_peak_.empty(); // else nothing to sample for
   defer_           = keeps && !mon.any() && !ip.energy_check && !ctx.sys->TiedToFrame() && ctx.contact &&
            std::all_of(part_series_.begin(), part_series_.end(), [](int k) { return k < 0; });
 }
@@ -60,16 +60,15 @@ void BallSeriesAppend(const StateMeasures &m, const MeasureContext &ctx, Contact
   S->force_rate.push_back(rate);
 }
 
-// -monitor_energy's series at a record (wall: the system has a barrel wall), each present part's
-// account with a series (StructurePart::AccountSeries) its own.
-void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, bool wall, ImpactSeries *S)
+// -monitor_energy's series at a record, each present part's account with a series
+// (StructurePart::AccountSeries: the wall's apart_energy, the bed's bed_energy) its own.
+void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, ImpactSeries *S)
 {
   S->ball_kinetic.push_back(m.ball_kinetic);
   S->ball_stored.push_back(m.ball_stored);
   S->ball_dissipated.push_back(m.ball_work - m.ball_stored);
   S->beam_kinetic.push_back(m.beam_kinetic);
   S->beam_strain.push_back(m.beam_strain);
-  if (wall) S->shell_energy.push_back(m.shell_energy);
   for (const PartInstance &s : sys.parts) {
     if (!s.part->AccountSeries()) continue;
     const PetscInt a = StructureAccountOf(*s.part);
@@ -89,10 +88,10 @@ void ImpactRecorder::KeepPeaks(const StateMeasures &m, PetscReal t)
   for (size_t k = 0; k < part_peak_.size(); ++k)
     if (part_peak_[k] && !(std::abs(m.part_slot[k]) <= peaks_->part_peak[k]))
       peaks_->part_peak[k] = std::abs(m.part_slot[k]);
-  if (wall_ && !(std::abs(m.wall_deflection) <= peaks_->wall_deflection))
-    peaks_->wall_deflection = std::abs(m.wall_deflection);
+  if (apart_ && !(std::abs(m.apart_deflection) <= peaks_->apart_deflection))
+    peaks_->apart_deflection = std::abs(m.apart_deflection);
   if (!ctx_.sys->face_fields.empty()) { // a racket's string bed (its fields across the face)
-    if (!(m.bed_deflection <= peaks_->bed_deflection)) peaks_->bed_deflection = m.bed_deflection;
+    if (!(m.face_deflection <= peaks_->face_deflection)) peaks_->face_deflection = m.face_deflection;
   }
   for (const PartInstance &s : ctx_.sys->parts) { // each present part's own account
     const PetscInt a = StructureAccountOf(*s.part);
@@ -129,9 +128,8 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   ImpactSeries          &S = *series_;
 
   PetscFunctionBeginUser;
-  const bool wall = wall_;
-  const bool bed  = !ctx_.sys->face_fields.empty(); // a racket's string bed (its fields across the face)
-  if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !wall && !bed && part_peak_.empty())
+  const bool face = !ctx_.sys->face_fields.empty(); // a racket's string bed (its fields across the face)
+  if (!mon_.any() && !drive_ && !ip_.energy_check && !ctx_.sys->TiedToFrame() && !apart_ && !face && part_peak_.empty())
     PetscFunctionReturn(0);
   if (defer_) { // the peaks: a sample in modes, measured with the others at the next flush
     StateSample s;
@@ -171,7 +169,7 @@ PetscErrorCode ImpactRecorder::Record(PetscReal t)
   }
   S.time.push_back(t);
   if (mon_.ball) { BallSeriesAppend(m, ctx_, last_phase_, &S); }
-  if (mon_.energy) EnergySeriesAppend(m, *ctx_.sys, wall, &S);
+  if (mon_.energy) EnergySeriesAppend(m, *ctx_.sys, &S);
   for (size_t q = 0; q < pv.size(); ++q) S.velocity_at[q].push_back(pv[q]);
   last_phase_ = ctx_.contact->phase;
   if (mon_.segment) {

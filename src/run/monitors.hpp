@@ -44,7 +44,7 @@ private:
   std::vector<char>        part_peak_;   // per part slot: its peak is kept
   std::vector<int>         part_series_; // per part slot: its index in series_->keyed (-1: none)
   ContactPhase             last_phase_;  // the contact's phase at the last record (at construction: the contact's own)
-  bool                     wall_  = false;        // a part whose peaks the outcome keeps (StructurePart::Peaks)
+  bool                     apart_ = false;        // a part whose peaks the outcome keeps (StructurePart::Peaks)
   bool                     defer_ = false;        // the states may be sampled for the peaks (Record; a drive at once)
   std::vector<StateSample> samples_;              // kept since the last flush
   std::shared_ptr<const BeamModes> sample_modes_; // their basis

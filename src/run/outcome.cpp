@@ -55,8 +55,8 @@ double PartColumnValue(const ResultColumn &c, const BeamSystem &sys, const Outco
     pf.account_end           = a > 0 ? f.end.account_energy[a] : 0;
     pf.account_peak          = a > 0 ? f.peaks->account_energy[a] : 0;
     pf.account_flexible      = a > 0 ? f.split.flexible[a] : 0;
-    pf.apart_deflection_peak = f.peaks->wall_deflection;
-    pf.face_deflection_peak  = f.peaks->bed_deflection;
+    pf.apart_deflection_peak = f.peaks->apart_deflection;
+    pf.face_deflection_peak  = f.peaks->face_deflection;
     pf.impact_x              = f.sc->impact.x;
     pf.E_in                  = f.E_in;
     pf.params                = p.params.get();

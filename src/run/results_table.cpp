@@ -384,10 +384,7 @@ std::vector<ResultColumn> BuildTable()
     auto at = t.end();
     if (const char *after = p->ColumnsAfter())
       at = std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, after); }) + 1;
-    for (const PartColumn &pc : p->Columns()) {
-      if (pc.after)
-        at = std::find_if(t.begin(), t.end(), [&](const ResultColumn &c) { return !std::strcmp(c.name, pc.after); }) +
-             1;
+    for (const PartColumn &pc : p->Columns()) { // after the part's previous one
       ResultColumn c{pc.name, pc.unit, pc.description, nullptr, p->Presence()};
       if (pc.integer) c.applies = ResultAlways, c.applies_text = kAlways, c.integer = true; // a flag: always
       c.owner        = p;

@@ -262,13 +262,15 @@ static std::vector<PetscReal> DeflectionField(const BeamSystem &op, std::vector<
 
 // Each field's family detail (StructurePart::FamilyDetail: a shell harmonic's n, the hoop's 2; 0
 // the beam's), -1 for a field of another part (the roll, a string bed); empty when no field has one.
-static std::vector<PetscInt> FieldFamilies(const BeamSystem &op)
+// *account: the energy account of the part that gives them.
+static std::vector<PetscInt> FieldFamilies(const BeamSystem &op, PetscInt *account)
 {
   std::vector<PetscInt> detail(op.fields, 0);
   bool                  any = false;
   for (PetscInt f = 0; f < op.fields; ++f) {
     for (const PartInstance &s : op.parts)
       if (f >= s.first && f < s.first + s.count) detail[f] = s.part->FamilyDetail(s, f);
+    if (detail[f] > 0 && !any) *account = op.AccountOf(f);
     any = any || detail[f] > 0;
     if (detail[f] == 0 && op.AccountOf(f) != 0) detail[f] = -1;
   }
@@ -308,7 +310,7 @@ static void ModesReport(const BeamSystem &op, const std::vector<PetscReal> &lamb
   out->period.assign(count, 0.0);
   out->rigid_count = 0;
   if (shapes) shapes->resize(count);
-  const std::vector<PetscInt> families = FieldFamilies(op); // a barrel wall's harmonics: each mode's family
+  const std::vector<PetscInt> families = FieldFamilies(op, &out->detail_account); // a wall's harmonics: families
   const bool                  wall = !families.empty(), parts = op.RollField() >= 0 || !op.face_fields.empty();
   if (wall) out->shell_n.assign(count, 0);
   if (parts) out->part.assign(count, 0), out->part_share.assign(count, 0.0);

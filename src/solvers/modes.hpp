@@ -57,8 +57,10 @@ struct ModesResult {
   PetscInt               rigid_count = 0; // number of rigid modes among the reported ones
   // With a barrel wall (-beam_shell, -barrel_hoop_frequency): each mode's family, the group of
   // fields holding most of its kinetic energy: 0 the beam's bending, n a shell harmonic's, 2 the
-  // hoop oscillator; empty without a wall.
+  // hoop oscillator; empty without a wall. detail_account: the energy account of the part whose
+  // details they are (StructureAccountOf: the wall's).
   std::vector<PetscInt> shell_n;
+  PetscInt              detail_account = 0;
   // With a roll field or a string bed (-beam_torsion, -strings_frame): each mode's part
   // (its energy account, StructureAccountOf: the beam's bending 0, the roll, the bed) holding most of its
   // kinetic energy, and that part's share of it (a coupled mode has none near 1); the bed's

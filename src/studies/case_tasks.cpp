@@ -12,6 +12,7 @@
 #include "solvers/flight_ts.hpp"
 #include "solvers/modes.hpp"
 #include "solvers/string_bed_modes.hpp"
+#include "system/parts/bed.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -135,13 +136,12 @@ bool ModesColumn(const std::string &name, std::string *unit, std::string *why)
   return false;
 }
 
-// The family of mode q: the energy account holding most of its kinetic energy (a wall's mode, by
-// its family detail ModesResult::shell_n, the wall's).
+// The family of mode q: the energy account holding most of its kinetic energy (a mode with a
+// family detail, ModesResult::shell_n: the account of the part that gives it, the wall's).
 std::string ModeFamily(const ModesResult &m, size_t q)
 {
   if (!m.part.empty()) return StructureAccountName(m.part[q]);
-  if (!m.shell_n.empty() && m.shell_n[q] != 0)
-    return StructureAccountName(StructureAccountOf(*StructurePartFind("wall")));
+  if (!m.shell_n.empty() && m.shell_n[q] != 0) return StructureAccountName(m.detail_account);
   return StructureAccountName(0);
 }
 
@@ -206,7 +206,7 @@ PetscErrorCode HeldBedModes(MPI_Comm comm, const std::vector<std::string> &colum
   ModesResult m; // as a beam's modes: every one the strings', none rigid
   m.omega     = modes.omega;
   m.frequency = modes.frequency;
-  m.part.assign(modes.frequency.size(), StructureAccountOf(*StructurePartFind("bed")));
+  m.part.assign(modes.frequency.size(), StructureAccountOf(BedPart()));
   ModesValues(m, BeamRigidBody(), (PetscInt)modes.frequency.size(), columns, row);
   for (size_t k = 0; k < columns.size(); ++k)
     for (const BodyColumn &c : kBodyColumns)

@@ -99,8 +99,8 @@ struct PartOutputFacts {
   // and the flexible energy at the end, less its share of the rigid motions (J, run/energy_parts.hpp).
   PetscReal account_end = 0, account_peak = 0, account_flexible = 0;
   // The largest displacement under the ball of an account kept apart (AccountApart: the wall's,
-  // StateMeasures::wall_deflection) and the largest deflection of the face's fields from their frame
-  // (the bed's, StateMeasures::bed_deflection) over the steps (m; NaN where not measured: the modal
+  // StateMeasures::apart_deflection) and the largest deflection of the face's fields from their frame
+  // (the bed's, StateMeasures::face_deflection) over the steps (m; NaN where not measured: the modal
   // reference).
   PetscReal         apart_deflection_peak = 0, face_deflection_peak = 0;
   PetscReal         impact_x = 0; // m, the impact point along the beam
@@ -121,7 +121,6 @@ struct PartColumn {
   const char *name, *unit, *description;
   double (*compute)(const PartOutputFacts &f);
   const char *share   = nullptr;
-  const char *after   = nullptr; // the column it follows (nullptr: the part's previous one, or its ColumnsAfter())
   bool        integer = false;
 };
 
@@ -240,8 +239,8 @@ public:
   virtual const char *AccountName() const { return nullptr; }
   virtual const char *AccountSeries() const { return nullptr; }
   // Whether its account is kept apart from the beam's kinetic and strain energies (the barrel wall,
-  // in series with the ball: StateMeasures::shell_energy, not in beam_kinetic and beam_strain) and
-  // its share of the compression measured (StateMeasures::wall_deflection). No by default.
+  // in series with the ball: StateMeasures::apart_energy, not in beam_kinetic and beam_strain) and
+  // its share of the compression measured (StateMeasures::apart_deflection). No by default.
   virtual bool AccountApart() const { return false; }
   // Its dofs that a rigid motion carries as the beam's deflection at a point.
   virtual void RigidPoints(const PartInstance &, std::vector<RigidPoint> *) const { }

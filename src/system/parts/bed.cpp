@@ -15,7 +15,7 @@
 // holds) and a racket maker's numbers place its head and weigh its strings on the frame. Its columns
 // (bed_energy_end, bed_fraction, bed_energy_peak, bed_deflection_peak) and its account's series
 // (bed_energy) are this file; the measure of its deflection from the frame (StateMeasures::
-// bed_deflection) and its snapshots are still the outcome's, found through its fields
+// face_deflection) and its snapshots are still the outcome's, found through its fields
 // (BeamSystem::face_fields). Units: SI.
 #include "system/parts/bed.hpp"
 

@@ -199,6 +199,7 @@ public:
     return d->fields - first;
   }
   const char *AccountName() const override { return "wall"; }
+  const char *AccountSeries() const override { return "shell_energy"; } // -monitor_energy's
   bool        AccountApart() const override { return true; }
   void        Couple(const PartInstance &s, const BeamSystem &sys, const ImpactStencil &st, PetscReal,
                      ContactCoupling *g) const override;
@@ -242,7 +243,7 @@ public:
          const PetscReal R = ShellRadiusAt(*f.beam, f.impact_x);
          return R > 0 && f.apart_deflection_peak > kWallDeflectionLimit * R ? 1 : 0;
        },
-       nullptr, nullptr, true},
+       nullptr, true},
       {"hoop_frequency", "Hz",
        "the barrel wall's lowest hoop (n = 2, ovaling) frequency: the shell's harmonic alone, or the given f_h",
        [](const PartOutputFacts &f) -> double {
