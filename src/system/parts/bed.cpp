@@ -34,7 +34,7 @@ namespace beamimpact {
 namespace {
 
 struct BedParams : PartParams {
-  StringBedParams bed; // the options as read (BeamParams::strings), the patch radius as resolved at the point
+  StringBedParams bed; // the options as read (Frame: the head placed), the patch radius as resolved at the point
   // sigma over the head's outline at its centre c: sigma A, sigma A c, sigma (I_xx + A c^2); sigma I_zz
   // about the frame's axis (the roll's part adds its own to it). None in a held frame (not a body).
   void AddRigidBody(SectionMoments *m) const override
