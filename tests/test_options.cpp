@@ -436,6 +436,19 @@ TEST(ShortestText, ReadsBackExactlyAndIsShortest)
     ASSERT_EQ(v, std::strtod(t.c_str(), nullptr)) << t;
     ASSERT_LE(t.size(), std::string(full).size()) << t << " against " << full;
   }
+  // The definition, digit by digit: the first %.{d}g that reads back (not a whole number here).
+  // Powers of two too: their lower rounding gap is half the upper one.
+  for (int k = 0; k < 40000; ++k) {
+    const double v = k % 2 ? std::ldexp((double)std::rand() / RAND_MAX + 0.5, std::rand() % 600 - 300)
+                           : std::ldexp(1.0, std::rand() % 2000 - 1000);
+    if (v == std::floor(v)) continue;
+    char shortest[64];
+    for (int d = 1; d <= 17; ++d) {
+      std::snprintf(shortest, sizeof shortest, "%.*g", d, v);
+      if (std::strtod(shortest, nullptr) == v) break;
+    }
+    ASSERT_EQ(std::string(shortest), ShortestText(v));
+  }
 }
 
 // The run record holds every option the readers read, as used, with its unit: the hands, the

@@ -2,6 +2,7 @@
 #include "base/option_table.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdarg>
@@ -205,7 +206,14 @@ double Shown(double v, int decimals) { return std::abs(v) < 0.5 * std::pow(10.0,
 std::string ShortestText(double v)
 {
   char buf[64], whole[400];
-  for (int digits = 1; digits <= 17; ++digits) { // %.17g always reads back (IEEE double)
+  int  first = 1; // no fewer digits than the shortest decimal that reads back (to_chars'): ~10x fewer tries
+  if (std::isfinite(v)) {
+    char       s[64];
+    const auto r = std::to_chars(s, s + sizeof s, v, std::chars_format::scientific);
+    first        = 0;
+    for (const char *c = s; c < r.ptr && *c != 'e'; ++c) first += *c >= '0' && *c <= '9';
+  }
+  for (int digits = std::max(first, 1); digits <= 17; ++digits) { // %.17g always reads back (IEEE double)
     std::snprintf(buf, sizeof buf, "%.*g", digits, v);
     if (std::strtod(buf, nullptr) == v || std::isnan(v)) break;
   }
