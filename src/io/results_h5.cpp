@@ -391,14 +391,17 @@ static PetscErrorCode H5WriteSeries(hid_t file, const ImpactSeries &S)
   PetscFunctionReturn(0);
 }
 
-// What /snapshots holds of the series S: the beam's deflection always, the string bed's and the
-// barrel wall's when recorded (the conditions H5WriteSnapshots writes them on).
-static bool SnapshotsHaveBed(const ImpactSeries &S) { return !S.snapshot_bed.empty(); } // a bed's fields (FieldZ)
-static bool SnapshotsHaveWall(const ImpactSeries &S) { return !S.snapshot_wall.empty() && !S.snapshot_wall_n.empty(); }
+// The grid of the face a part's snapshot lies on (StructurePart::FaceGrid); false without.
+static bool SnapshotFaceGrid(const ImpactSeries::PartSnapshots &p, const BeamParams &beam, BedGrid *g)
+{
+  const PartParams *q = beam.parts.Find(p.part->Name());
+  return q && p.part->FaceGrid(*q, beam, g);
+}
 
-// /snapshots of one run: the nodes x, the times and the deflection y [time][x]; a string bed's
-// deflection on its grid (bed_x, bed_z), [time][bed_point] with bed_point = z * len(bed_x) + x;
-// the barrel wall's W_n, [time][wall_n][x].
+// /snapshots of one run: the nodes x, the times and the deflection y [time][x]; each present
+// part's own field as its spec lays it out (StructurePart::Snapshot): [time][label][x] with its
+// labels' dataset (the barrel wall's W_n, wall_n), or [time][point] on its face's grid (the string
+// bed's deflection on bed_x, bed_z, point = z * len(bed_x) + x).
 static PetscErrorCode H5WriteSnapshots(hid_t file, const ImpactSeries &S, const BeamParams &beam)
 {
   PetscFunctionBeginUser;
@@ -410,23 +413,20 @@ static PetscErrorCode H5WriteSnapshots(hid_t file, const ImpactSeries &S, const 
   PetscCall(H5WriteDataset1D(gn, "time", S.snapshot_time, "s"));
   PetscCall(H5WriteDataset2D(gn, "y", S.snapshot_y, "m, [time][node]"));
   PetscCall(H5DimsAttach(gn, "y", {"time", "x"}));
-  BedGrid face;                                                     // the string bed's grid (StructurePartsFaceGrid)
-  if (SnapshotsHaveBed(S) && StructurePartsFaceGrid(beam, &face)) { // its deflection: [time][z * nodes + x]
-    PetscCall(H5WriteBedGrid(gn, face, "bed_x", "bed_z"));
-    PetscCall(
-      H5WriteDataset2D(gn, "bed", S.snapshot_bed,
-                       "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] "
-                       "(NaN off the bed)"));
-    PetscCall(H5DimsAttach(gn, "bed", {"time", "bed_point"}));
-    for (const char *axis : {"bed_x", "bed_z"}) PetscCall(H5DimsAttach(gn, axis, {axis})); // the grid's coordinates
-  }
-  if (SnapshotsHaveWall(S)) {
-    std::vector<double> n(S.snapshot_wall_n.begin(), S.snapshot_wall_n.end());
-    PetscCall(H5WriteDataset1D(gn, "wall_n", n, "1 (the harmonic n of the wall's cos n theta)"));
-    PetscCall(H5WriteDataset3D(gn, "wall", S.snapshot_wall, n.size(), (size_t)beam.nodes,
-                               "m, the barrel wall's radial displacement W_n (outward; w = sum_n W_n cos n theta, "
-                               "theta = 0 under the ball), [time][wall_n][node] (NaN where solid)"));
-    PetscCall(H5DimsAttach(gn, "wall", {"time", "wall_n", "x"}));
+  for (const ImpactSeries::PartSnapshots &p : S.snapshot_parts) {
+    const PartSnapshotSpec &f = p.spec;
+    BedGrid                 face;
+    if (f.labels && !p.labels.empty()) { // [time][label][node]
+      std::vector<double> n(p.labels.begin(), p.labels.end());
+      PetscCall(H5WriteDataset1D(gn, f.labels, n, f.labels_description));
+      PetscCall(H5WriteDataset3D(gn, f.name, p.values, n.size(), (size_t)beam.nodes, f.description));
+      PetscCall(H5DimsAttach(gn, f.name, {"time", f.labels, "x"}));
+    } else if (!f.labels && SnapshotFaceGrid(p, beam, &face)) { // [time][point] on its face's grid
+      PetscCall(H5WriteBedGrid(gn, face, f.face_x, f.face_z));
+      PetscCall(H5WriteDataset2D(gn, f.name, p.values, f.description));
+      PetscCall(H5DimsAttach(gn, f.name, {"time", f.face_point}));
+      for (const char *axis : {f.face_x, f.face_z}) PetscCall(H5DimsAttach(gn, axis, {axis})); // its coordinates
+    }
   }
   PetscCall(H5DimsTable(gn, "time"));
   H5Gclose(gn);
@@ -441,16 +441,18 @@ static std::string SnapshotsXdmf(const std::string &path, const ImpactSeries &S,
   XdmfField              f;
   f.name = "beam", f.attribute = "y", f.x = "/snapshots/x", f.nx = beam.nodes, f.values = "/snapshots/y";
   fields.push_back(f);
-  BedGrid g; // the string bed's grid (StructurePartsFaceGrid)
-  if (SnapshotsHaveBed(S) && StructurePartsFaceGrid(beam, &g)) {
-    f.name = "bed", f.attribute = "w", f.x = "/snapshots/bed_x", f.y = "/snapshots/bed_z", f.nx = g.nx, f.ny = g.nz;
-    f.values = "/snapshots/bed";
-    fields.push_back(f);
-  }
-  if (SnapshotsHaveWall(S)) {
-    f.name = "wall", f.attribute = "W", f.x = "/snapshots/x", f.y = "/snapshots/wall_n", f.nx = beam.nodes;
-    f.ny     = (PetscInt)S.snapshot_wall_n.size();
-    f.values = "/snapshots/wall", f.flat = false;
+  for (const ImpactSeries::PartSnapshots &p : S.snapshot_parts) {
+    const std::string at = std::string("/snapshots/") + p.spec.name;
+    BedGrid           g;
+    f      = XdmfField();
+    f.name = p.spec.name, f.attribute = p.spec.attribute, f.values = at;
+    if (p.spec.labels && !p.labels.empty()) { // on the nodes x, one row a label
+      f.x = "/snapshots/x", f.y = std::string("/snapshots/") + p.spec.labels, f.nx = beam.nodes;
+      f.ny = (PetscInt)p.labels.size(), f.flat = false;
+    } else if (!p.spec.labels && SnapshotFaceGrid(p, beam, &g)) { // on its face's grid
+      f.x = std::string("/snapshots/") + p.spec.face_x, f.y = std::string("/snapshots/") + p.spec.face_z;
+      f.nx = g.nx, f.ny = g.nz;
+    } else continue;
     fields.push_back(f);
   }
   const size_t slash = path.find_last_of('/');

@@ -99,12 +99,16 @@ struct ImpactSeries {
   std::vector<PetscReal>              segment_kinetic; // J, kinetic energy of the monitored segment
   std::vector<PetscReal>              snapshot_time;   // s
   std::vector<std::vector<PetscReal>> snapshot_y;      // m, [snapshot][node]
-  std::vector<std::vector<PetscReal>> snapshot_bed;    // m, a string bed's deflection from its frame, w - y - z phi,
-                                                       // [snapshot][z * nodes + x] (NaN off the bed; rank 0)
-  // m, the barrel wall's radial displacement W_n(x) of each harmonic (-beam_shell; model/shell.hpp),
-  // [snapshot][k * nodes + node] for the harmonic n = snapshot_wall_n[k] (NaN where the section is solid; rank 0)
-  std::vector<std::vector<PetscReal>> snapshot_wall;
-  std::vector<PetscInt>               snapshot_wall_n; // 1, the harmonics of snapshot_wall
+  // The present parts' own fields (StructurePart::Snapshot: the barrel wall's W_n, the string bed's
+  // deflection from its frame), in registry order: each [snapshot][values as its spec lays them
+  // out] (rank 0), its labels and the spec /snapshots writes them by.
+  struct PartSnapshots {
+    PartSnapshotSpec                    spec;
+    const StructurePart                *part = nullptr;
+    std::vector<std::vector<PetscReal>> values;
+    std::vector<PetscInt>               labels;
+  };
+  std::vector<PartSnapshots> snapshot_parts;
   // The registered structure parts' series (system/structure_part.hpp: a slot with `series`,
   // under -monitor_energy): /series/<name> in its unit, one value per step.
   struct Keyed {

@@ -192,31 +192,22 @@ PetscErrorCode ImpactRecorder::Snapshots(PetscReal t)
     series_->snapshot_time.push_back(mon_.snapshot_times[next_]);
     series_->snapshot_y.push_back(y);
     const BeamSystem &S   = *ctx_.sys;
-    bool              own = false; // a part with a field of its own in the snapshots (asked with no fields: the shell)
+    bool              own = false; // a part with a field of its own in the snapshots (asked with no fields)
     for (const PartInstance &s : S.parts) {
       std::vector<PetscReal> values;
       std::vector<PetscInt>  labels;
-      own = own || s.part->Snapshot(s, S, {}, &values, &labels);
+      PartSnapshotSpec       spec;
+      own = own || s.part->Snapshot(s, S, {}, &values, &labels, &spec);
     }
-    const std::vector<PetscInt> &face = S.face_fields; // a string bed's fields across the face
-    if (!face.empty() || own)                          // rank 0: every field of every node
-      PetscCall(stepper_.GatherFields(0, S.fields, &u));
-    if (!face.empty()) { // the string bed's deflection from its frame, w - y - z phi, [z][x] flattened
-      std::vector<PetscReal> bed(face.size() * S.nodes);
-      const PetscInt         roll = S.RollField();
-      for (PetscInt i = 0; i < S.nodes && !u.empty(); ++i) {
-        const PetscReal *node = &u[(size_t)i * S.fields], phi = roll >= 0 ? node[roll] : 0.0;
-        for (size_t j = 0; j < face.size(); ++j)
-          bed[j * S.nodes + i] = S.held[S.Dof(i, face[j])] ? NAN : node[face[j]] - node[0] - S.field_z[face[j]] * phi;
-      }
-      series_->snapshot_bed.push_back(std::move(bed));
-    }
-    for (const PartInstance &s : S.parts) { // a part's own field (the shell's W_n of each harmonic n)
-      std::vector<PetscReal> values;
-      std::vector<PetscInt>  labels;
-      if (!s.part->Snapshot(s, S, u, &values, &labels)) continue;
-      series_->snapshot_wall.push_back(std::move(values));
-      series_->snapshot_wall_n = labels;
+    if (own) PetscCall(stepper_.GatherFields(0, S.fields, &u)); // rank 0: every field of every node
+    size_t k = 0; // the parts' own fields (the shell's W_n of each harmonic n, the bed's w - y - z phi)
+    for (const PartInstance &s : S.parts) {
+      ImpactSeries::PartSnapshots one;
+      std::vector<PetscReal>      values;
+      if (!s.part->Snapshot(s, S, u, &values, &one.labels, &one.spec)) continue;
+      if (k == series_->snapshot_parts.size()) one.part = s.part, series_->snapshot_parts.push_back(std::move(one));
+      else series_->snapshot_parts[k].labels = one.labels;
+      series_->snapshot_parts[k++].values.push_back(std::move(values));
     }
     ++next_;
   }

@@ -75,6 +75,17 @@ struct PartSlot {
   bool        own_monitor = false;
 };
 
+// How /snapshots/<name> holds a part's own field in -snapshot_times (StructurePart::Snapshot):
+// with `labels`, [time][label][node] on the beam's nodes x and the labels' dataset (the wall's W_n,
+// wall_n); without, [time][point] on its face's grid (FaceGrid: the datasets face_x, face_z and the
+// point z * len(face_x) + x; the bed's w). `attribute`: its name in the XDMF description.
+struct PartSnapshotSpec {
+  const char *name = nullptr, *attribute = nullptr;
+  const char *description = nullptr; // the dataset's unit and text
+  const char *labels = nullptr, *labels_description = nullptr;
+  const char *face_x = nullptr, *face_z = nullptr, *face_point = nullptr;
+};
+
 // The force operator's frame terms of a state (system/force_operator.hpp: ForceOperatorEnergy,
 // ForceOperatorFrameMomentum, ForceOperatorFrameReaction; run/measures.hpp holds them): what a
 // part tying the structure to the swing's frame measures (StructurePart::MeasureFrame).
@@ -271,10 +282,12 @@ public:
   // Whether the recorder follows the outcome's peaks of its fields (the wall's energy and
   // displacement under the ball): the series are then sampled through a free flight.
   virtual bool Peaks() const { return false; }
-  // A snapshot's field of its own from every field of every node (u, node-major), [label][node]
-  // flattened, and its labels (the shell's W_n of each harmonic n): false for none.
+  // A snapshot's field of its own from every field of every node (u, node-major; empty on the
+  // ranks but 0, which still size it), as its spec lays it out ([label][node] flattened and its
+  // labels: the shell's W_n of each harmonic n; or [z][x] on its face: the bed's w - y - z phi), and
+  // how /snapshots writes it: false for none.
   virtual bool Snapshot(const PartInstance &, const BeamSystem &, const std::vector<PetscReal> &,
-                        std::vector<PetscReal> *, std::vector<PetscInt> *) const
+                        std::vector<PetscReal> *, std::vector<PetscInt> *, PartSnapshotSpec *) const
   {
     return false;
   }

@@ -159,7 +159,24 @@ public:
   {
     return BuildAfter(q, beam, {}, d, out);
   }
-  PetscReal   FieldZ(const PartInstance &s, PetscInt f) const override { return B(s).layout.grid.Z(f - s.first); }
+  PetscReal FieldZ(const PartInstance &s, PetscInt f) const override { return B(s).layout.grid.Z(f - s.first); }
+  // Its deflection from its frame, w - y - z phi, [z][x] flattened on its face's grid (NaN where held).
+  bool Snapshot(const PartInstance &s, const BeamSystem &sys, const std::vector<PetscReal> &u,
+                std::vector<PetscReal> *values, std::vector<PetscInt> *, PartSnapshotSpec *spec) const override
+  {
+    spec->name = "bed", spec->attribute = "w", spec->face_x = "bed_x", spec->face_z = "bed_z";
+    spec->face_point  = "bed_point";
+    spec->description = "m, the string bed's deflection from its frame w - y - z phi, [time][z * len(bed_x) + x] (NaN "
+                        "off the bed)";
+    values->assign((size_t)s.count * sys.nodes, 0.0);
+    const PetscInt roll = sys.RollField();
+    for (PetscInt i = 0; i < sys.nodes && !u.empty(); ++i) {
+      const PetscReal *node = &u[(size_t)i * sys.fields], phi = roll >= 0 ? node[roll] : 0.0;
+      for (PetscInt j = 0, f = s.first; j < s.count; ++j, ++f)
+        (*values)[j * sys.nodes + i] = sys.held[sys.Dof(i, f)] ? NAN : node[f] - node[0] - sys.field_z[f] * phi;
+    }
+    return true;
+  }
   const char *AccountName() const override { return "strings"; }
   const char *AccountSeries() const override { return "bed_energy"; }
   bool        CoupleInstead(const PartInstance &s, const BeamSystem &sys, PetscReal x, PetscReal z,

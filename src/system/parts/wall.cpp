@@ -210,11 +210,15 @@ public:
   }
   bool Peaks() const override { return true; }
   bool Snapshot(const PartInstance &s, const BeamSystem &sys, const std::vector<PetscReal> &u,
-                std::vector<PetscReal> *values, std::vector<PetscInt> *labels) const override
+                std::vector<PetscReal> *values, std::vector<PetscInt> *labels, PartSnapshotSpec *spec) const override
   {
     const WallBuilt &w = B(s); // the wall's W_n of each harmonic k (field shell.WField(k)), [k][node] flattened
     if (w.shell.first < 0) return false;
-    const size_t H = w.shell.harmonics.size();
+    spec->name = "wall", spec->attribute = "W", spec->labels = "wall_n";
+    spec->description = "m, the barrel wall's radial displacement W_n (outward; w = sum_n W_n cos n theta, theta = 0 "
+                        "under the ball), [time][wall_n][node] (NaN where solid)";
+    spec->labels_description = "1 (the harmonic n of the wall's cos n theta)";
+    const size_t H           = w.shell.harmonics.size();
     values->assign(H * (size_t)sys.nodes, 0.0);
     for (PetscInt i = 0; i < sys.nodes && !u.empty(); ++i)
       for (size_t k = 0; k < H; ++k)
