@@ -63,6 +63,9 @@ struct ImpactParams {
                                                  // configuration)
   PetscReal rigid_loss_fraction = 0; // not an option here: f of Eq. (11) for the rigid_acor column (a sweep's
                                      // -rigid_loss_fraction; 0 for -task impact)
+  // Not an option: the energy of each kept mode at the end (/modes_energy of -task impact's file);
+  // a sweep's points keep no file of their own and skip it.
+  PetscBool mode_energies = PETSC_TRUE;
 };
 
 // What to record during the run (nothing by default): -monitor_* and -snapshot_times.

@@ -208,7 +208,7 @@ PetscErrorCode FreeFlightAdvance(const ImpactProblem &pb, Stepper &st, ImpactRec
       if (tn < ts) --k; // a snapshot first: the sample is still due
     }
   }
-  if (*again) run->record.mode_energies.clear();
+  if (*again || !pb.sc.impact.mode_energies) run->record.mode_energies.clear(); // none, or nobody keeps them
   else run->record.mode_energies = FreeFlightModeEnergies(ff, t_end - t0);
   PetscCall(FreeFlightSetAt(ff, in_modes, t_end, st, &m0, &s));
   PetscCall(st.Restart());

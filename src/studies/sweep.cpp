@@ -74,6 +74,7 @@ PetscErrorCode SweepCaseRun(MPI_Comm comm, const SweepPlan &plan, PetscInt index
   ierr = SweepCaseScenario(comm, plan, index, true, &c, &status, reason, reuse ? &reuse->scenario : nullptr);
   if (!ierr && status == SweepOk) {
     c.impact.rigid_loss_fraction = plan.rigid_loss_fraction; // the rigid_acor column's f
+    c.impact.mode_energies       = PETSC_FALSE;              // the points' files are rows: no /modes_energy
     ImpactStructure *structure   = nullptr;
     if (reuse) { // the structure's system, unless this point is on another beam
       const std::vector<PetscReal> key = c.beam.parts.SystemKey(); // the parts' values at the point (a shell's a, the
