@@ -226,6 +226,13 @@ TEST(RacketMaker, TheBedMakesItsFrame)
   const BeamParams none = Read({{"-strings_frame", "none"}});
   EXPECT_FALSE(none.frame_held);
   EXPECT_EQ(StringBedOf(none), nullptr);
+  // without its gate -strings_frame the bed's rows are not read at all: a bat's bad -strings_*
+  // is no error (the unused-option note says it), as before the bed was a part
+  ierr                 = 0;
+  const BeamParams bat = Read({{"-strings_tension", "-1"}, {"-head_shape", "oval"}}, &ierr);
+  EXPECT_EQ(ierr, 0);
+  EXPECT_EQ(StringBedOf(bat), nullptr);
+  EXPECT_FALSE(bat.frame_held);
 
   StringBedParams   bed; // the default bed on a maker's default racket
   RacketMakerParams r;

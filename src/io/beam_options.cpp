@@ -5,7 +5,6 @@
 #include "io/racket_maker_options.hpp"
 #include "io/section_file.hpp"
 #include "io/text.hpp"
-#include "io/string_bed_options.hpp"
 #include "model/barrel.hpp"
 #include "model/beam_theory.hpp"
 #include "system/structure_part.hpp"
@@ -586,8 +585,13 @@ PetscErrorCode StructurePartsFrame(MPI_Comm comm, const RacketMakerParams *racke
     PartOptionValues                  v;
     std::shared_ptr<const PartParams> q;
     std::string                       why;
-    PetscCall(StructurePartOptionsRead(comm, *part, &v));
-    PetscCheck(part->Frame(v, racket, p, &q, &why), comm, PETSC_ERR_ARG_OUTOFRANGE, "%s", why.c_str());
+    PetscBool                         gate = PETSC_TRUE;
+    if (part->Gate()) PetscCall(PetscOptionsHasName(NULL, NULL, part->Gate(), &gate));
+    if (gate) { // its rows read, checked and recorded only with its gate
+      PetscCall(StructurePartOptionsRead(comm, *part, &v));
+      const int code = part->Frame(v, racket, p, &q, &why);
+      PetscCheck(!code, comm, (PetscErrorCode)code, "%s", why.c_str());
+    }
     p->parts.Set(part->Name(), q);
   }
   PetscFunctionReturn(0);

@@ -50,6 +50,13 @@ RacketStrung RacketStrungBy(const StringBedParams &bed)
   return q;
 }
 
+void RacketStrungAdd(const StringBedParams &bed, RacketStrung *s)
+{
+  const RacketStrung b = RacketStrungBy(bed);
+  s->mass += b.mass, s->moment += b.moment, s->roll += b.roll;
+  s->head_start = b.head_start, s->head_length = b.head_length;
+}
+
 bool RacketMakerTable(const RacketMakerParams &r, const RacketStrung &strung, std::vector<PropertiesRow> *rows,
                       std::string *why)
 {

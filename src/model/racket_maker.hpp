@@ -54,6 +54,8 @@ struct RacketStrung {
 };
 // The bed's share (its own moments, HeadMomentsOf, at its centre -head_center).
 RacketStrung RacketStrungBy(const StringBedParams &bed);
+// *s plus the bed's share: mass and moments summed, the head's span the bed's.
+void RacketStrungAdd(const StringBedParams &bed, RacketStrung *s);
 
 // The frame's table for a racket carrying `strung`. False, with the reason naming the option and
 // the value, when the numbers make no racket (a level of mass or of rho J not > 0, a head longer

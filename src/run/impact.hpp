@@ -95,7 +95,8 @@ struct ImpactSeries {
   std::vector<PetscReal> beam_kinetic, beam_strain, total_energy;    // J
   std::vector<PetscReal> beam_dissipated;                            // J, by the beam's damping (damped beams only)
   // J, [account][step]: the energy of each present part's account with a series of its own
-  // (StructurePart::AccountSeries: the string bed's bed_energy, the roll's twist_energy; in beam_*).
+  // (StructurePart::AccountSeries: the string bed's bed_energy, the roll's twist_energy, in beam_*;
+  // the barrel wall's shell_energy, kept apart from beam_*).
   std::vector<std::vector<PetscReal>> account_energy;
   std::vector<PetscReal>              velocity_at_x;   // m, the points of velocity_at
   std::vector<std::vector<PetscReal>> velocity_at;     // m/s, [point][step]

@@ -61,7 +61,7 @@ void BallSeriesAppend(const StateMeasures &m, const MeasureContext &ctx, Contact
 }
 
 // -monitor_energy's series at a record, each present part's account with a series
-// (StructurePart::AccountSeries: the wall's apart_energy, the bed's bed_energy) its own.
+// (StructurePart::AccountSeries: the wall's shell_energy, the bed's bed_energy) its own.
 void EnergySeriesAppend(const StateMeasures &m, const BeamSystem &sys, ImpactSeries *S)
 {
   S->ball_kinetic.push_back(m.ball_kinetic);

@@ -163,17 +163,21 @@ public:
   // levels). Such a part is set up by Frame while the beam is read, before the beam's section by a
   // racket maker and the beam's checks, not by Configure. No by default.
   virtual bool Frames() const { return false; }
+  // The option without which such a part is absent and its rows are not read at all (the bed's
+  // -strings_frame: a bat's run neither reads, checks nor records the bed's rows); nullptr: read
+  // always.
+  virtual const char *Gate() const { return nullptr; }
   // Its rows as read -> its parameters in *out (nullptr: absent), the head placed by a racket
   // maker's numbers (racket; nullptr without -racket_length); may make the beam its frame (length,
-  // nodes, holds, BeamParams::frame_held). False with *why naming the option, the value and what
-  // is allowed.
-  virtual bool Frame(const PartOptionValues &, const RacketMakerParams *, BeamParams *,
-                     std::shared_ptr<const PartParams> *out, std::string *) const
+  // nodes, holds, BeamParams::frame_held). 0, or the PETSc error class with *why naming the
+  // option, the value and what is allowed (ContactLaw::Configure's contract).
+  virtual int Frame(const PartOptionValues &, const RacketMakerParams *, BeamParams *,
+                    std::shared_ptr<const PartParams> *out, std::string *) const
   {
     *out = nullptr;
-    return true;
+    return 0;
   }
-  // What it weighs on a racket maker's frame (its mass and moments, model/racket_maker.hpp).
+  // Adds what it weighs on a racket maker's frame (its mass and moments, model/racket_maker.hpp).
   virtual void Strung(const PartParams &, RacketStrung *) const { }
   // The grid of its face, where its snapshots and mode shapes are written (the bed's nodes across
   // the head); false for a part with no face.

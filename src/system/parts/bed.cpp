@@ -14,9 +14,9 @@
 // beam's, since a held bed's frame is the head's outline held whole (the beam's length, nodes and
 // holds) and a racket maker's numbers place its head and weigh its strings on the frame. Its columns
 // (bed_energy_end, bed_fraction, bed_energy_peak, bed_deflection_peak) and its account's series
-// (bed_energy) are this file; the measure of its deflection from the frame (StateMeasures::
-// face_deflection) and its snapshots are still the outcome's, found through its fields
-// (BeamSystem::face_fields). Units: SI.
+// (bed_energy) and its snapshot (Snapshot: w - y - z phi on its face's grid) are this file; the
+// measure of its deflection from the frame (StateMeasures::face_deflection) is still the
+// outcome's, found through its fields (BeamSystem::face_fields). Units: SI.
 #include "system/parts/bed.hpp"
 
 #include "model/racket_maker.hpp"
@@ -96,9 +96,10 @@ public:
   const OptionModule &Options() const override { return BedOptions(); }
   bool                Frames() const override { return true; }
   PetscReal           Unset(const char *name, const PartOptionValues &before) const override;
-  bool                Frame(const PartOptionValues &v, const RacketMakerParams *racket, BeamParams *beam,
+  const char         *Gate() const override { return "-strings_frame"; }
+  int                 Frame(const PartOptionValues &v, const RacketMakerParams *racket, BeamParams *beam,
                             std::shared_ptr<const PartParams> *out, std::string *why) const override;
-  void                Strung(const PartParams &q, RacketStrung *s) const override { *s = RacketStrungBy(P(q).bed); }
+  void                Strung(const PartParams &q, RacketStrung *s) const override { RacketStrungAdd(P(q).bed, s); }
   bool                FaceGrid(const PartParams &q, const BeamParams &beam, BedGrid *g) const override
   {
     *g = StringBedFrameGrid(P(q).bed, beam.nodes, beam.length);
@@ -341,27 +342,27 @@ PetscReal Bed::Unset(const char *name, const PartOptionValues &before) const
 
 // Set up with the beam (Frames): the bed's options, its head placed by a racket maker's numbers;
 // held, the beam becomes its frame: the head's length on the bed's columns, held everywhere.
-bool Bed::Frame(const PartOptionValues &v, const RacketMakerParams *racket, BeamParams *beam,
-                std::shared_ptr<const PartParams> *out, std::string *why) const
+int Bed::Frame(const PartOptionValues &v, const RacketMakerParams *racket, BeamParams *beam,
+               std::shared_ptr<const PartParams> *out, std::string *why) const
 {
   auto             p = std::make_shared<BedParams>();
   StringBedParams &s = p->bed;
   *out               = nullptr;
-  if (!StringBedParamsFrom(v, &s, why)) return false;
-  if (!s.On()) return true;
+  if (!StringBedParamsFrom(v, &s, why)) return PETSC_ERR_ARG_OUTOFRANGE;
+  if (!s.On()) return 0;
   if (racket) { // the maker's head
     for (const char *o : {"-head_length", "-head_width", "-head_center"})
       if (v.Given(o))
         return *why = PetscFmt("%s with -racket_length is not allowed: the racket's maker's numbers place the head "
                                "(-racket_head_size, -racket_head_aspect, -racket_head_margin)",
                                o),
-               false;
+               PETSC_ERR_ARG_INCOMP;
     RacketMakerHead(*racket, &s);
   }
   *out = p;
   if (s.Held()) {
     if (beam->has_pivot) // -grip, -beam_torsion, -absorber: their parts refuse a held frame
-      return *why = "-strings_frame held holds the whole frame: -beam_pivot has nothing to hold", false;
+      return *why = "-strings_frame held holds the whole frame: -beam_pivot has nothing to hold", PETSC_ERR_ARG_INCOMP;
     beam->length     = s.head_length; // the frame: the head's length on the bed's columns, held everywhere
     beam->nodes      = s.nodes;
     beam->has_clamp  = true;
@@ -369,7 +370,7 @@ bool Bed::Frame(const PartOptionValues &v, const RacketMakerParams *racket, Beam
     beam->clamp_x0 = 0, beam->clamp_x1 = beam->length;
     s.head_center = 0.5 * s.head_length;
     beam->section = BeamSection(); // a held frame's section (and roll: the part is absent) are never used
-    return true;
+    return 0;
   }
   const PetscReal a = 0.5 * s.head_length, h = beam->length / (beam->nodes - 1);
   if (!(s.head_center - a > 0 && s.head_center + a < beam->length))
@@ -385,7 +386,7 @@ bool Bed::Frame(const PartOptionValues &v, const RacketMakerParams *racket, Beam
     *why = PetscFmt("-strings_frame beam: %" PetscInt_FMT " nodes across the head's width (h_x %g m from -beam_nodes): "
                     "at least 5 are needed (more -beam_nodes, or -strings_nodes_width)",
                     g.nz, (double)h);
-  return why->empty();
+  return why->empty() ? 0 : PETSC_ERR_ARG_OUTOFRANGE;
 }
 
 // -strings_patch_radius: its default from the ball as the shell's (ShellContactRadiusDefault: the
