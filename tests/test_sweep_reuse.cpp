@@ -176,3 +176,24 @@ TEST(SweepReuse, ShellRadiusFollowsTheBall)
   EXPECT_EQ(kept.reuse.scenario.full, 1);
   EXPECT_EQ(kept.reuse.systems, 3) << "one system per contact radius (per ball speed)";
 }
+
+// A sweep's point keeps no energy per mode at the end (ImpactParams::mode_energies: only -task
+// impact's file writes /modes_energy), while the same impact run alone has one per kept mode.
+TEST(SweepReuse, PointsSkipTheModeEnergies)
+{
+  Database  d(PaperSweep("impact_x=0.3"));
+  SweepPlan plan;
+  ASSERT_EQ(0, SweepPlanFromOptions(PETSC_COMM_WORLD, &plan));
+  std::vector<double> row;
+  std::string         reason;
+  ImpactResult        point, alone;
+  ASSERT_EQ(0, SweepCaseRun(PETSC_COMM_WORLD, plan, 0, &row, &reason, &point, nullptr));
+  EXPECT_GT(point.contacts, 0);
+  EXPECT_TRUE(point.mode_energies.empty());
+  Scenario sc;
+  ASSERT_EQ(0, ScenarioFromOptions(PETSC_COMM_WORLD, &sc));
+  sc.impact.x = 0.3;
+  ASSERT_EQ(0, ImpactRun(PETSC_COMM_WORLD, sc, &alone));
+  EXPECT_FALSE(alone.mode_energies.empty()) << "the impact alone ends in a modal free flight";
+  EXPECT_EQ(point.acor, alone.acor);
+}

@@ -31,6 +31,9 @@
 
 namespace beamimpact {
 
+// The rows given in v -> *p, over its values (no checks; the -help defaults and StringBedParamsFrom).
+void StringBedParamsFill(const PartOptionValues &v, StringBedParams *p);
+
 namespace {
 
 struct BedParams : PartParams {

@@ -13,8 +13,6 @@ namespace beamimpact {
 
 const StructurePart &BedPart();
 
-// The rows given in v -> *p, over its values (no checks).
-void StringBedParamsFill(const PartOptionValues &v, StringBedParams *p);
 // Its rows as read (StructurePart::Options, the module 'strings') -> *p, from StringBedParams'
 // defaults; false with *why naming the options and values when the strings do not fit the head.
 bool StringBedParamsFrom(const PartOptionValues &v, StringBedParams *p, std::string *why);
